@@ -1,0 +1,130 @@
+//! The one error type of the core. Every message names the offending quantity, its value and
+//! what is allowed, so that the Python layer and the CLI can show it to a user unchanged.
+
+use thiserror::Error;
+
+/// Everything that can go wrong in `pendulab-core`.
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum Error {
+    /// A scalar parameter is outside its allowed range (or not finite).
+    #[error("invalid {name} = {value:e}: {allowed}")]
+    InvalidParameter {
+        /// Parameter name as the user wrote it (e.g. `"length"`, `"dt"`).
+        name: &'static str,
+        /// The value that was given.
+        value: f64,
+        /// Human-readable description of the allowed range, with units.
+        allowed: &'static str,
+    },
+    /// A state is not on TS² (|x| = l, x·v = 0) within the stated tolerance.
+    #[error(
+        "state is not on TS² (|x| = l, x·v = 0): {what} = {value:e} exceeds the tolerance {tolerance:e}; \
+         pass project=True to move it onto TS²"
+    )]
+    NotOnTangentBundle {
+        /// Which residual failed: `"(|x| - l)/l"` or `"x·v/(l·|v|)"`.
+        what: &'static str,
+        /// The residual's value (dimensionless).
+        value: f64,
+        /// The tolerance it was compared against (dimensionless).
+        tolerance: f64,
+    },
+    /// A component of a state vector is NaN or infinite.
+    #[error("{name}[{index}] = {value} is not a finite number")]
+    NonFinite {
+        /// `"x"` or `"v"` (or an angle name).
+        name: &'static str,
+        /// Component index (0, 1, 2).
+        index: usize,
+        /// The bad value.
+        value: f64,
+    },
+    /// The state cannot be projected onto TS² (x = 0 has no direction).
+    #[error("cannot project x = 0 onto the sphere |x| = l: the position has no direction")]
+    DegeneratePosition,
+    /// An unknown integrator name.
+    #[error("unknown method {name:?}; available: {available}")]
+    UnknownMethod {
+        /// The name that was asked for.
+        name: String,
+        /// Comma-separated list of registered names.
+        available: String,
+    },
+    /// The spherical-angle integrator came too close to a pole, where T-2.5 is singular.
+    #[error(
+        "method 'rk4_angles' refuses to continue at t = {t} s: sin θ = {sin_theta:e} is below {limit:e} \
+         (θ = {theta} rad is within reach of a pole, where the angle equations T-2.5 are singular); \
+         use a Cartesian method such as 'rattle' or 'dop853'"
+    )]
+    PoleSingularity {
+        /// Time of the refusal [s].
+        t: f64,
+        /// Polar angle from the downward vertical [rad].
+        theta: f64,
+        /// sin θ at that moment.
+        sin_theta: f64,
+        /// The smallest sin θ the method accepts.
+        limit: f64,
+    },
+    /// The adaptive integrator could not meet the tolerance.
+    #[error(
+        "step size underflow at t = {t} s: h = {h:e} s is too small for rtol = {rtol:e}, atol = {atol:e}"
+    )]
+    StepSizeUnderflow {
+        /// Time at which it happened [s].
+        t: f64,
+        /// Step size reached [s].
+        h: f64,
+        /// Relative tolerance in force.
+        rtol: f64,
+        /// Absolute tolerance in force.
+        atol: f64,
+    },
+    /// The state became NaN or infinite during integration.
+    #[error("the solution became non-finite at t = {t} s with method '{method}' (dt = {dt:e} s); reduce dt or use 'rattle'")]
+    Diverged {
+        /// Time [s].
+        t: f64,
+        /// Method name.
+        method: &'static str,
+        /// Step size [s].
+        dt: f64,
+    },
+    /// The requested output does not fit in memory.
+    #[error("{samples} saved samples would need {bytes} bytes, above the limit of {limit} bytes; save less often (raise save_every) or shorten t_end")]
+    TooManySamples {
+        /// Number of samples requested.
+        samples: u64,
+        /// Memory they would need [bytes].
+        bytes: u64,
+        /// The limit [bytes].
+        limit: u64,
+    },
+    /// The save times are not usable.
+    #[error("invalid save times: {reason}")]
+    InvalidSaveTimes {
+        /// What is wrong.
+        reason: String,
+    },
+}
+
+/// Result alias of the core.
+pub type Result<T> = std::result::Result<T, Error>;
+
+/// Checks that `value` is finite and strictly positive.
+pub fn require_positive(name: &'static str, value: f64, allowed: &'static str) -> Result<f64> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter { name, value, allowed })
+    }
+}
+
+/// Checks that `value` is finite.
+pub fn require_finite(name: &'static str, value: f64, allowed: &'static str) -> Result<f64> {
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter { name, value, allowed })
+    }
+}

@@ -1,0 +1,183 @@
+//! Integrators, one file per method family, and the one registry [`Method`] that every test and
+//! every front end iterates. Each method declares its order and its structural properties up front.
+//!
+//! | name | order | what it keeps |
+//! |---|---|---|
+//! | `rk4` | 4 | nothing: classic RK4 on T-2.4, drifts off TS² (the baseline) |
+//! | `dop853` | 8 (adaptive) | optionally TS² by projection after each step; dense output of order 7 |
+//! | `rattle` | 2 | TS² and J₃ to round-off; symplectic (the default) |
+//! | `rattle4`, `rattle6`, `rattle8` | 4, 6, 8 | symmetric compositions of RATTLE: TS², J₃, symplectic |
+//! | `rkmk4` | 4 | the sphere exactly (Lie-group RKMK with the SO(3) exponential) and x·v = 0 |
+//! | `rk4_angles` | 4 | RK4 in (θ, φ), T-2.5; refuses to go near a pole |
+
+pub mod composition;
+pub mod dop853;
+mod dop853_tableau;
+pub mod rattle;
+pub mod rk4;
+pub mod rk4_angles;
+pub mod rkmk4;
+
+use crate::error::{Error, Result};
+use crate::model::Model;
+use crate::state::State;
+
+/// Work counters owned by the framework, not by the methods.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Accepted steps.
+    pub steps: u64,
+    /// Rejected steps (adaptive methods only).
+    pub rejected: u64,
+    /// Evaluations of the applied acceleration / right-hand side.
+    pub rhs_evals: u64,
+}
+
+/// A fixed-step one-step method on TS² (everything except `dop853`).
+pub trait FixedStep {
+    /// Advances `s` from time `t` [s] by `dt` [s] (dt may be negative for symmetric methods).
+    fn step<M: Model>(&mut self, model: &M, t: f64, s: &mut State, dt: f64) -> Result<()>;
+    /// Right-hand-side evaluations per step (for [`Stats::rhs_evals`]).
+    fn evals_per_step(&self) -> u64;
+}
+
+/// Declared order and structural properties of a method.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct MethodInfo {
+    /// Registry name (lower case, as used in Python, TOML and the CLI).
+    pub name: &'static str,
+    /// Classical order of convergence.
+    pub order: u32,
+    /// Symplectic on T*S² for conservative models.
+    pub symplectic: bool,
+    /// Keeps |x| = l and x·v = 0 to round-off.
+    pub preserves_ts2: bool,
+    /// Keeps J₃ to round-off for axisymmetric models.
+    pub preserves_j3: bool,
+    /// Chooses its own step size from rtol/atol.
+    pub adaptive: bool,
+    /// Can interpolate between steps (save at arbitrary times without shortening steps).
+    pub dense_output: bool,
+    /// One-line description.
+    pub summary: &'static str,
+}
+
+/// The registry: every integrator Pendulab has.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Method {
+    /// Classic RK4 on the Cartesian ODE T-2.4, no projection.
+    Rk4,
+    /// Dormand–Prince 8(5,3), adaptive, dense output, optional projection onto TS².
+    Dop853,
+    /// RATTLE (constrained Störmer–Verlet), order 2.
+    Rattle,
+    /// Triple-jump composition of RATTLE, order 4.
+    Rattle4,
+    /// Yoshida composition of RATTLE, order 6.
+    Rattle6,
+    /// Yoshida composition of RATTLE, order 8.
+    Rattle8,
+    /// Runge–Kutta–Munthe-Kaas of order 4 on S² with the SO(3) exponential.
+    Rkmk4,
+    /// Classic RK4 in spherical angles (T-2.5), for teaching: fails at the poles.
+    Rk4Angles,
+}
+
+impl Method {
+    /// Every registered method, in display order.
+    pub const ALL: [Method; 8] = [
+        Method::Rattle,
+        Method::Rattle4,
+        Method::Rattle6,
+        Method::Rattle8,
+        Method::Dop853,
+        Method::Rkmk4,
+        Method::Rk4,
+        Method::Rk4Angles,
+    ];
+
+    /// The default method: RATTLE.
+    pub const DEFAULT: Method = Method::Rattle;
+
+    /// Order and properties.
+    pub fn info(self) -> MethodInfo {
+        let base = MethodInfo {
+            name: "",
+            order: 0,
+            symplectic: false,
+            preserves_ts2: false,
+            preserves_j3: false,
+            adaptive: false,
+            dense_output: false,
+            summary: "",
+        };
+        let geometric = MethodInfo { symplectic: true, preserves_ts2: true, preserves_j3: true, ..base };
+        match self {
+            Method::Rk4 => MethodInfo {
+                name: "rk4",
+                order: 4,
+                summary: "classic Runge-Kutta 4 on the Cartesian ODE T-2.4, no projection: drifts off TS2 (baseline)",
+                ..base
+            },
+            Method::Dop853 => MethodInfo {
+                name: "dop853",
+                order: 8,
+                adaptive: true,
+                dense_output: true,
+                summary: "Dormand-Prince 8(5,3), adaptive, dense output of order 7; project=True keeps TS2",
+                ..base
+            },
+            Method::Rattle => MethodInfo {
+                name: "rattle",
+                order: 2,
+                summary: "RATTLE, constrained Stormer-Verlet: symplectic, keeps TS2 and J3 to round-off (default)",
+                ..geometric
+            },
+            Method::Rattle4 => MethodInfo {
+                name: "rattle4",
+                order: 4,
+                summary: "symmetric triple-jump composition of RATTLE (Yoshida 1990, Suzuki 1990)",
+                ..geometric
+            },
+            Method::Rattle6 => MethodInfo {
+                name: "rattle6",
+                order: 6,
+                summary: "symmetric 7-stage composition of RATTLE (Yoshida 1990, solution A)",
+                ..geometric
+            },
+            Method::Rattle8 => MethodInfo {
+                name: "rattle8",
+                order: 8,
+                summary: "symmetric 15-stage composition of RATTLE (Yoshida 1990, solution D)",
+                ..geometric
+            },
+            Method::Rkmk4 => MethodInfo {
+                name: "rkmk4",
+                order: 4,
+                preserves_ts2: true,
+                summary: "Runge-Kutta-Munthe-Kaas 4 on S2 with the SO(3) exponential: keeps TS2 exactly",
+                ..base
+            },
+            Method::Rk4Angles => MethodInfo {
+                name: "rk4_angles",
+                order: 4,
+                preserves_ts2: true,
+                summary: "classic RK4 in spherical angles (T-2.5): singular at the poles, refuses near them (teaching)",
+                ..base
+            },
+        }
+    }
+
+    /// Looks a method up by its registry name.
+    pub fn from_name(name: &str) -> Result<Method> {
+        Method::ALL.iter().copied().find(|m| m.info().name == name).ok_or_else(|| Error::UnknownMethod {
+            name: name.to_string(),
+            available: Method::ALL.iter().map(|m| m.info().name).collect::<Vec<_>>().join(", "),
+        })
+    }
+}
+
+/// Order and properties of every registered method.
+pub fn all() -> Vec<MethodInfo> {
+    Method::ALL.iter().map(|m| m.info()).collect()
+}

@@ -1,0 +1,37 @@
+//! # pendulab-core
+//!
+//! Physics and numerics of the spherical pendulum — a point mass on a rigid rod of length l swinging
+//! about a fixed pivot under uniform gravity — as a particle on the sphere S² in a linear potential.
+//! Pure Rust; the Python package `pendulab` binds it.
+//!
+//! ## Conventions (THEORY.md §1)
+//! - SI units throughout: m, kg, s, rad, J, N.
+//! - z axis up; for g > 0 gravity acts along −z and the bob hangs at rest at z = −l. Any finite g
+//!   is allowed (g < 0 pulls up, g = 0 leaves only the rod).
+//! - A state is (x, v) ∈ TS²: position x [m] relative to the pivot with |x| = l, velocity v [m/s]
+//!   with x·v = 0 ([`State`]).
+//! - Polar angle θ from the downward vertical, azimuth φ = atan2(y, x).
+//!
+//! ## Modules
+//! - [`state`]: parameters, states on TS², angles, projection.
+//! - [`model`]: models (applied forces) and the constrained equations T-2.2/T-2.4, diagnostics
+//!   E, J₃, tension (T-2.3, T-2.6).
+//! - [`integrate`]: the integrators and their registry [`Method`].
+//! - [`stepper`]: incremental integration (init / step / state).
+//! - [`solve`]: batch solving with saving rules, chunked for progress and cancellation.
+//! - [`error`]: the error type.
+
+pub mod error;
+pub mod integrate;
+pub mod model;
+pub mod solve;
+pub mod state;
+pub mod stepper;
+
+pub use error::{Error, Result};
+pub use glam::DVec3;
+pub use integrate::{Method, MethodInfo, Stats};
+pub use model::{IdealPendulum, Model};
+pub use solve::{solve, Samples, SaveAt, Solver};
+pub use state::{Params, State};
+pub use stepper::{SolveOptions, Stepper};

@@ -1,0 +1,64 @@
+//! Models: what acts on the bob besides the rod. A model supplies the *applied* acceleration
+//! f(t, x, v) (force per unit mass); the rod's constraint force is added here, once, for all
+//! models and integrators.
+//!
+//! Equations (THEORY.md):
+//! - T-2.2 Newton with multiplier: ẍ = f + λx with λ = −(|v|² + x·f)/l², the unique λ that keeps
+//!   d²(|x|²)/dt² = 0 on TS². For the ideal pendulum f = −g e₃, so λ = (g z − |v|²)/l².
+//! - T-2.4 Hamiltonian form on T*R³ (y = ẋ): ẋ = y, ẏ = f + λ(x, y) x, the same vector field
+//!   extended off TS² (TS² is invariant but unstable, so unprojected methods drift away).
+//! - T-2.3 Rod tension T = −m λ l = m(|v|² + x·f)/l [N], positive when the rod pulls.
+//! - T-2.6 Energy E = m(½|v|² + V(x)) [J] and vertical angular momentum J₃ = m (x × v)·e₃ [kg m²/s].
+
+pub mod ideal;
+
+pub use ideal::IdealPendulum;
+
+use crate::state::{Params, State};
+use glam::DVec3;
+
+/// A pendulum model: the rod (length l, mass m) plus applied forces.
+pub trait Model: Send + Sync {
+    /// Name used in the registry and in files (e.g. `"ideal"`).
+    fn name(&self) -> &'static str;
+    /// Length, mass and gravity.
+    fn params(&self) -> &Params;
+    /// Applied acceleration f(t, x, v) [m/s²]: every force per unit mass except the rod's.
+    fn applied_acceleration(&self, t: f64, x: DVec3, v: DVec3) -> DVec3;
+    /// Potential energy per unit mass V(x) [J/kg] of the conservative part of f.
+    fn potential_per_mass(&self, x: DVec3) -> f64;
+    /// True when f = −∇V(x) only (no t or v dependence): RATTLE is then symplectic.
+    fn is_conservative(&self) -> bool;
+    /// True when f commutes with rotations about e₃, so that J₃ is conserved.
+    fn is_axisymmetric(&self) -> bool;
+}
+
+/// The rod's multiplier λ [1/s²] of T-2.2 for applied acceleration `f`.
+#[inline(always)]
+pub fn multiplier(length: f64, x: DVec3, v: DVec3, f: DVec3) -> f64 {
+    -(v.length_squared() + x.dot(f)) / (length * length)
+}
+
+/// Acceleration ẍ = f + λx of T-2.2 / T-2.4 [m/s²].
+#[inline(always)]
+pub fn acceleration<M: Model + ?Sized>(model: &M, t: f64, x: DVec3, v: DVec3) -> DVec3 {
+    let f = model.applied_acceleration(t, x, v);
+    f + x * multiplier(model.params().length, x, v, f)
+}
+
+/// Total energy E = m(½|v|² + V(x)) [J] (T-2.6).
+pub fn energy<M: Model + ?Sized>(model: &M, s: &State) -> f64 {
+    model.params().mass * (0.5 * s.v.length_squared() + model.potential_per_mass(s.x))
+}
+
+/// Vertical angular momentum J₃ = m (x × v)·e₃ [kg m²/s] (T-2.6).
+pub fn j3<M: Model + ?Sized>(model: &M, s: &State) -> f64 {
+    model.params().mass * (s.x.x * s.v.y - s.x.y * s.v.x)
+}
+
+/// Rod tension T = m(|v|² + x·f)/l [N] (T-2.3); T < 0 means the rod pushes (a string would go slack).
+pub fn tension<M: Model + ?Sized>(model: &M, t: f64, s: &State) -> f64 {
+    let p = model.params();
+    let f = model.applied_acceleration(t, s.x, s.v);
+    -p.mass * multiplier(p.length, s.x, s.v, f) * p.length
+}

@@ -1,0 +1,302 @@
+//! Batch solving: a [`Stepper`] plus what to keep ([`SaveAt`]). Stepping and saving are separate,
+//! so 10⁸ and more steps cost memory only for the samples kept. The [`Solver`] advances in
+//! bounded chunks so that a caller (the Python layer, the CLI) can show progress and stop cleanly
+//! between chunks, keeping everything computed so far.
+//!
+//! Saving rules (times in s):
+//! - [`SaveAt::Every`]`(n)`: the initial state, every n-th step, and always the final state at t_end.
+//!   Fixed-step methods step on the grid t₀ + k·dt; the last step is shortened to land on t_end.
+//! - [`SaveAt::Times`]: exactly the given times (sorted, within [t₀, t_end]). `dop853` interpolates
+//!   with its dense output (order 7); fixed-step methods land on each time by shortening the one
+//!   step that would cross it.
+
+use crate::error::{Error, Result};
+use crate::integrate::Stats;
+use crate::model::Model;
+use crate::state::State;
+use crate::stepper::{SolveOptions, Stepper};
+
+/// What to save.
+#[derive(Debug, Clone, PartialEq)]
+pub enum SaveAt {
+    /// The initial state, every n-th step (n ≥ 1) and the final state.
+    Every(u64),
+    /// Exactly these times [s], increasing, within [t₀, t_end].
+    Times(Vec<f64>),
+}
+
+/// Bytes one saved sample takes (t, x, v as f64).
+pub const BYTES_PER_SAMPLE: u64 = 7 * 8;
+/// Default limit on the memory of saved samples: 4 GiB.
+pub const DEFAULT_MAX_SAVED_BYTES: u64 = 4 << 30;
+
+/// Saved samples: times [s] and states.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Samples {
+    /// Times [s].
+    pub t: Vec<f64>,
+    /// States at those times.
+    pub states: Vec<State>,
+}
+
+/// A batch solver: stepper, save rule, end time and the samples kept so far.
+#[derive(Debug, Clone)]
+pub struct Solver<M: Model> {
+    stepper: Stepper<M>,
+    t0: f64,
+    t_end: f64,
+    save: SaveAt,
+    next_time: usize,
+    since_save: u64,
+    samples: Samples,
+    saved_total: u64,
+    max_samples: u64,
+    done: bool,
+}
+
+fn too_many(samples: u64, max_samples: u64) -> Result<()> {
+    if samples > max_samples {
+        return Err(Error::TooManySamples {
+            samples,
+            bytes: samples.saturating_mul(BYTES_PER_SAMPLE),
+            limit: max_samples.saturating_mul(BYTES_PER_SAMPLE),
+        });
+    }
+    Ok(())
+}
+
+impl<M: Model> Solver<M> {
+    /// Validates everything up front: t_end > t₀ finite, save rule, expected memory.
+    pub fn new(
+        model: M,
+        t0: f64,
+        state: State,
+        t_end: f64,
+        options: &SolveOptions,
+        save: SaveAt,
+        max_saved_bytes: u64,
+    ) -> Result<Self> {
+        let stepper = Stepper::new(model, t0, state, options)?;
+        if !(t_end.is_finite() && t_end > t0) {
+            return Err(Error::InvalidParameter {
+                name: "t_end",
+                value: t_end,
+                allowed: "the end time must be a finite number of seconds after the start time",
+            });
+        }
+        let max_samples = max_saved_bytes / BYTES_PER_SAMPLE;
+        match &save {
+            SaveAt::Every(0) => {
+                return Err(Error::InvalidParameter {
+                    name: "save_every",
+                    value: 0.0,
+                    allowed: "save_every must be an integer ≥ 1 (steps between saved samples)",
+                })
+            }
+            SaveAt::Every(n) => {
+                if !options.method.info().adaptive {
+                    let steps = ((t_end - t0) / options.dt).ceil();
+                    too_many((steps / *n as f64).ceil() as u64 + 2, max_samples)?;
+                }
+            }
+            SaveAt::Times(ts) => {
+                if ts.is_empty() {
+                    return Err(Error::InvalidSaveTimes { reason: "no save times were given".into() });
+                }
+                if let Some(bad) = ts.iter().find(|t| !t.is_finite() || **t < t0 || **t > t_end) {
+                    return Err(Error::InvalidSaveTimes {
+                        reason: format!(
+                            "{bad} s is not a finite time within [t0, t_end] = [{t0}, {t_end}] s"
+                        ),
+                    });
+                }
+                if let Some(w) = ts.windows(2).find(|w| w[1] <= w[0]) {
+                    return Err(Error::InvalidSaveTimes {
+                        reason: format!(
+                            "times must be strictly increasing, but {} s is followed by {} s",
+                            w[0], w[1]
+                        ),
+                    });
+                }
+                too_many(ts.len() as u64, max_samples)?;
+            }
+        }
+        let mut solver = Self {
+            stepper,
+            t0,
+            t_end,
+            save,
+            next_time: 0,
+            since_save: 0,
+            samples: Samples::default(),
+            saved_total: 0,
+            max_samples,
+            done: false,
+        };
+        let starts_saved = match &solver.save {
+            SaveAt::Every(_) => true,
+            SaveAt::Times(ts) => ts[0] == t0,
+        };
+        if starts_saved {
+            solver.push(t0, state)?;
+            solver.next_time = usize::from(matches!(solver.save, SaveAt::Times(_)));
+        }
+        Ok(solver)
+    }
+
+    fn push(&mut self, t: f64, s: State) -> Result<()> {
+        if !s.is_finite() {
+            return Err(Error::Diverged {
+                t,
+                method: self.stepper.method().info().name,
+                dt: self.stepper.dt(),
+            });
+        }
+        self.saved_total += 1;
+        too_many(self.saved_total, self.max_samples)?;
+        self.samples.t.push(t);
+        self.samples.states.push(s);
+        Ok(())
+    }
+
+    /// True once t_end is reached.
+    pub fn is_done(&self) -> bool {
+        self.done
+    }
+    /// Fraction of [t₀, t_end] covered so far, in [0, 1].
+    pub fn progress(&self) -> f64 {
+        ((self.stepper.t() - self.t0) / (self.t_end - self.t0)).clamp(0.0, 1.0)
+    }
+    /// The stepper (current time, state, counters).
+    pub fn stepper(&self) -> &Stepper<M> {
+        &self.stepper
+    }
+    /// Work counters.
+    pub fn stats(&self) -> Stats {
+        self.stepper.stats()
+    }
+    /// Removes and returns the samples saved since the last call (lets callers stream them out).
+    pub fn take_samples(&mut self) -> Samples {
+        std::mem::take(&mut self.samples)
+    }
+
+    /// Advances by at most about `budget` steps (≥ 1); returns whether t_end has been reached.
+    pub fn advance(&mut self, budget: u64) -> Result<bool> {
+        let budget = budget.max(1);
+        let mut used = 0u64;
+        let adaptive = self.stepper.method().info().adaptive;
+        while !self.done && used < budget {
+            match self.save.clone() {
+                SaveAt::Every(n) => {
+                    let want = (n - self.since_save).min(budget - used);
+                    let taken = if adaptive { self.adaptive_steps(want)? } else { self.fixed_steps(want)? };
+                    used += taken;
+                    self.since_save += taken;
+                    let at_end = self.stepper.t() >= self.t_end;
+                    if self.since_save == n || at_end {
+                        self.since_save = 0;
+                        let (t, s) = (self.stepper.t(), *self.stepper.state());
+                        self.push(t, s)?;
+                    }
+                    self.done = at_end;
+                }
+                SaveAt::Times(ts) => {
+                    if self.next_time >= ts.len() {
+                        self.done = true;
+                        break;
+                    }
+                    let target = ts[self.next_time];
+                    used += self.towards_time(target, budget - used)?;
+                    if let Some(s) = self.sample_at(target) {
+                        self.next_time += 1;
+                        self.push(target, s)?;
+                    }
+                }
+            }
+        }
+        self.stepper.check_finite()?;
+        Ok(self.done)
+    }
+
+    /// Up to `n` fixed steps, never past t_end (the last one shortened); returns steps taken.
+    fn fixed_steps(&mut self, n: u64) -> Result<u64> {
+        let dt = self.stepper.dt();
+        let room = ((self.t_end - self.stepper.t()) / dt - 1e-9).floor().max(0.0) as u64;
+        let bulk = n.min(room.saturating_sub(1));
+        self.stepper.step_n(bulk)?;
+        let mut taken = bulk;
+        while taken < n && self.stepper.t() < self.t_end {
+            self.stepper.step_towards(self.t_end)?;
+            taken += 1;
+        }
+        Ok(taken)
+    }
+
+    /// Up to `n` accepted adaptive steps, never past t_end; returns steps taken.
+    fn adaptive_steps(&mut self, n: u64) -> Result<u64> {
+        let mut taken = 0;
+        while taken < n && self.stepper.t() < self.t_end {
+            self.stepper.step_towards(self.t_end)?;
+            taken += 1;
+        }
+        Ok(taken)
+    }
+
+    /// Steps towards `target` (at most `budget` steps); returns steps taken.
+    fn towards_time(&mut self, target: f64, budget: u64) -> Result<u64> {
+        let adaptive = self.stepper.method().info().adaptive;
+        let mut taken = 0;
+        if adaptive {
+            while taken < budget && self.stepper.t() < target {
+                self.stepper.step_towards(self.t_end)?;
+                taken += 1;
+            }
+        } else {
+            let dt = self.stepper.dt();
+            let room = ((target - self.stepper.t()) / dt - 1e-9).floor().max(0.0) as u64;
+            let bulk = budget.min(room.saturating_sub(1));
+            self.stepper.step_n(bulk)?;
+            taken += bulk;
+            while taken < budget && self.stepper.t() < target {
+                self.stepper.step_towards(target)?;
+                taken += 1;
+            }
+        }
+        Ok(taken)
+    }
+
+    /// The state at `target` if the stepper has reached it (dense output for `dop853`).
+    fn sample_at(&self, target: f64) -> Option<State> {
+        let t = self.stepper.t();
+        if t == target {
+            Some(*self.stepper.state())
+        } else if t > target {
+            self.stepper.dense_output(target)
+        } else {
+            None
+        }
+    }
+}
+
+/// Solves from (t₀, state) to t_end in one call, calling `progress(fraction)` between chunks;
+/// when it returns `false` the solve stops and the samples so far are returned with
+/// `interrupted = true`.
+pub fn solve<M: Model>(
+    model: M,
+    t0: f64,
+    state: State,
+    t_end: f64,
+    options: &SolveOptions,
+    save: SaveAt,
+    mut progress: impl FnMut(f64) -> bool,
+) -> Result<(Samples, Stats, bool)> {
+    let mut solver = Solver::new(model, t0, state, t_end, options, save, DEFAULT_MAX_SAVED_BYTES)?;
+    let mut interrupted = false;
+    while !solver.advance(1 << 16)? {
+        if !progress(solver.progress()) {
+            interrupted = true;
+            break;
+        }
+    }
+    Ok((solver.take_samples(), solver.stats(), interrupted))
+}

@@ -1,0 +1,257 @@
+//! The incremental stepper: one integrator, one model, one state, advanced step by step
+//! (init / step / state), as a live viewer or the batch solver in [`crate::solve`] needs it.
+//!
+//! Fixed-step methods take steps of `dt` on the grid t = t_anchor + k·dt (computed by
+//! multiplication, so 10⁸ steps accumulate no round-off in t); [`Stepper::step_to`] shortens the
+//! last step to land exactly on a requested time and re-anchors the grid there. The adaptive
+//! `dop853` takes one accepted step per call and interpolates with its dense output.
+
+use crate::error::{require_positive, Error, Result};
+use crate::integrate::composition::Composition;
+use crate::integrate::dop853::Dop853;
+use crate::integrate::rattle::Rattle;
+use crate::integrate::rk4::Rk4;
+use crate::integrate::rk4_angles::Rk4Angles;
+use crate::integrate::rkmk4::Rkmk4;
+use crate::integrate::{FixedStep, Method, Stats};
+use crate::model::Model;
+use crate::state::State;
+
+/// How to integrate: the method and its step-size or tolerance settings.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SolveOptions {
+    /// The integrator (default: RATTLE).
+    pub method: Method,
+    /// Step size [s] of fixed-step methods; for `dop853` the initial step guess (0 = automatic).
+    pub dt: f64,
+    /// Relative tolerance of `dop853` (ignored by fixed-step methods).
+    pub rtol: f64,
+    /// Absolute tolerance of `dop853` [m and m/s] (ignored by fixed-step methods).
+    pub atol: f64,
+    /// `dop853` only: project onto TS² after every step (recommended; T-2.4 is unstable off TS²).
+    pub project: bool,
+}
+
+impl Default for SolveOptions {
+    fn default() -> Self {
+        Self { method: Method::DEFAULT, dt: 1e-3, rtol: 1e-10, atol: 1e-12, project: true }
+    }
+}
+
+#[derive(Debug, Clone)]
+enum Scheme {
+    Rk4(Rk4),
+    Rattle(Rattle),
+    Composition(Composition),
+    Rkmk4(Rkmk4),
+    Rk4Angles(Rk4Angles),
+    Dop853(Box<Dop853>),
+}
+
+/// Runs `$body` with `$s` bound to the fixed-step scheme inside `$scheme` (monomorphised per method).
+macro_rules! with_fixed {
+    ($scheme:expr, $s:ident => $body:expr, $adaptive:expr) => {
+        match $scheme {
+            Scheme::Rk4($s) => $body,
+            Scheme::Rattle($s) => $body,
+            Scheme::Composition($s) => $body,
+            Scheme::Rkmk4($s) => $body,
+            Scheme::Rk4Angles($s) => $body,
+            Scheme::Dop853(_) => $adaptive,
+        }
+    };
+}
+
+/// Incremental integration of one trajectory.
+#[derive(Debug, Clone)]
+pub struct Stepper<M: Model> {
+    model: M,
+    scheme: Scheme,
+    method: Method,
+    dt: f64,
+    t_anchor: f64,
+    k: u64,
+    t: f64,
+    state: State,
+    stats: Stats,
+}
+
+impl<M: Model> Stepper<M> {
+    /// A stepper at time `t0` [s] in `state`, validated: dt > 0 for fixed-step methods, valid
+    /// tolerances for `dop853`, a finite t0.
+    pub fn new(model: M, t0: f64, state: State, options: &SolveOptions) -> Result<Self> {
+        if !t0.is_finite() {
+            return Err(Error::InvalidParameter {
+                name: "t0",
+                value: t0,
+                allowed: "the start time must be finite (s)",
+            });
+        }
+        let info = options.method.info();
+        let scheme = match options.method {
+            Method::Rk4 => Scheme::Rk4(Rk4),
+            Method::Rattle => Scheme::Rattle(Rattle),
+            Method::Rattle4 => Scheme::Composition(Composition::of_order(4)),
+            Method::Rattle6 => Scheme::Composition(Composition::of_order(6)),
+            Method::Rattle8 => Scheme::Composition(Composition::of_order(8)),
+            Method::Rkmk4 => Scheme::Rkmk4(Rkmk4),
+            Method::Rk4Angles => Scheme::Rk4Angles(Rk4Angles),
+            Method::Dop853 => {
+                let h_init = if options.dt > 0.0 && options.dt.is_finite() { Some(options.dt) } else { None };
+                Scheme::Dop853(Box::new(Dop853::new(
+                    options.rtol,
+                    options.atol,
+                    options.project,
+                    f64::INFINITY,
+                    h_init,
+                )?))
+            }
+        };
+        if !info.adaptive {
+            require_positive("dt", options.dt, "the step size dt must be a finite number > 0 s")?;
+        }
+        Ok(Self {
+            model,
+            scheme,
+            method: options.method,
+            dt: options.dt,
+            t_anchor: t0,
+            k: 0,
+            t: t0,
+            state,
+            stats: Stats::default(),
+        })
+    }
+
+    /// Current time [s].
+    pub fn t(&self) -> f64 {
+        self.t
+    }
+    /// Current state.
+    pub fn state(&self) -> &State {
+        &self.state
+    }
+    /// The model.
+    pub fn model(&self) -> &M {
+        &self.model
+    }
+    /// The method.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+    /// Work counters so far.
+    pub fn stats(&self) -> Stats {
+        self.stats
+    }
+    /// Fixed step size [s] (for `dop853`: the initial step guess).
+    pub fn dt(&self) -> f64 {
+        self.dt
+    }
+
+    /// Replaces the state (e.g. after a user drags the bob); the grid is re-anchored at the current time.
+    pub fn set_state(&mut self, state: State) {
+        self.state = state;
+        self.t_anchor = self.t;
+        self.k = 0;
+        if let Scheme::Dop853(d) = &mut self.scheme {
+            d.reset();
+        }
+    }
+
+    /// One step: `dt` for fixed-step methods, one accepted step for `dop853`.
+    pub fn step(&mut self) -> Result<()> {
+        self.step_towards(f64::INFINITY)
+    }
+
+    /// One step, but never past `t_stop` [s]; a fixed step that would pass it is shortened to land on it.
+    pub fn step_towards(&mut self, t_stop: f64) -> Result<()> {
+        let (model, state, stats) = (&self.model, &mut self.state, &mut self.stats);
+        let t = self.t;
+        with_fixed!(&mut self.scheme, s => {
+            let t_next = self.t_anchor + (self.k + 1) as f64 * self.dt;
+            if t_stop - t <= 1e-12 * self.dt {
+                // Already there up to round-off of the grid: a step this short would only add noise.
+                self.t = t_stop;
+                self.t_anchor = t_stop;
+                self.k = 0;
+            } else if t_next < t_stop - 1e-12 * self.dt {
+                s.step(model, t, state, t_next - t)?;
+                self.k += 1;
+                self.t = t_next;
+            } else {
+                s.step(model, t, state, t_stop - t)?;
+                self.t = t_stop;
+                self.t_anchor = t_stop;
+                self.k = 0;
+            }
+            if self.t != t {
+                stats.steps += 1;
+                stats.rhs_evals += s.evals_per_step();
+            }
+            Ok(())
+        }, {
+            let Scheme::Dop853(d) = &mut self.scheme else { unreachable!() };
+            let mut t = self.t;
+            d.step(model, &mut t, state, t_stop, stats)?;
+            self.t = t;
+            Ok(())
+        })
+    }
+
+    /// Takes `n` full steps (fixed-step methods) in a tight loop; for `dop853`, `n` accepted steps.
+    pub fn step_n(&mut self, n: u64) -> Result<()> {
+        let (model, state) = (&self.model, &mut self.state);
+        with_fixed!(&mut self.scheme, s => {
+            for _ in 0..n {
+                let t = self.t_anchor + self.k as f64 * self.dt;
+                s.step(model, t, state, self.dt)?;
+                self.k += 1;
+            }
+            self.t = self.t_anchor + self.k as f64 * self.dt;
+            self.stats.steps += n;
+            self.stats.rhs_evals += n * s.evals_per_step();
+            Ok(())
+        }, {
+            for _ in 0..n {
+                self.step()?;
+            }
+            Ok(())
+        })
+    }
+
+    /// Advances to exactly `t_target` [s] (≥ the current time): fixed-step methods take full steps
+    /// and shorten the last; `dop853` steps past nothing and lands on `t_target`.
+    pub fn step_to(&mut self, t_target: f64) -> Result<()> {
+        if !(t_target >= self.t) {
+            return Err(Error::InvalidParameter {
+                name: "t_target",
+                value: t_target,
+                allowed: "the target time must be finite and not before the stepper's current time (s)",
+            });
+        }
+        while self.t < t_target {
+            self.step_towards(t_target)?;
+        }
+        Ok(())
+    }
+
+    /// Dense output of `dop853` at `t_out` [s] inside its last step; `None` for other methods.
+    pub fn dense_output(&self, t_out: f64) -> Option<State> {
+        match &self.scheme {
+            Scheme::Dop853(d) => {
+                let (a, b) = d.last_step_interval();
+                (a <= t_out && t_out <= b).then(|| d.dense_output(t_out))
+            }
+            _ => None,
+        }
+    }
+
+    /// Fails with [`Error::Diverged`] when the state is not finite.
+    pub fn check_finite(&self) -> Result<()> {
+        if self.state.is_finite() {
+            Ok(())
+        } else {
+            Err(Error::Diverged { t: self.t, method: self.method.info().name, dt: self.dt })
+        }
+    }
+}

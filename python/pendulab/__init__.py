@@ -1,0 +1,32 @@
+"""Pendulab: the spherical pendulum, simulated right.
+
+SI units throughout (m, kg, s, rad); z axis up; gravity along −z for g > 0; the polar angle θ is
+measured from the downward vertical. Quick start::
+
+    import numpy as np, pendulab as pl
+    p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)
+    s0 = p.state_from_angles(theta=np.radians(60), phi=0.0, theta_dot=0.0, phi_dot=2.0)
+    tr = pl.simulate(p, s0, t_end=100.0, method="rattle", dt=1e-3, save_every=10)
+    print(tr.summary())
+"""
+
+from ._core import IntegrationError, InvalidInputError, __version__
+from .model import Pendulum, State
+from .scenario import Scenario, load_scenario
+from .simulate import Stepper, method_names, methods, simulate
+from .trajectory import Trajectory
+
+__all__ = [
+    "IntegrationError",
+    "InvalidInputError",
+    "Pendulum",
+    "Scenario",
+    "State",
+    "Stepper",
+    "Trajectory",
+    "__version__",
+    "load_scenario",
+    "method_names",
+    "methods",
+    "simulate",
+]

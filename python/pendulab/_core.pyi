@@ -1,0 +1,106 @@
+"""Type stubs of the compiled core ``pendulab._core`` (hand-written; keep in sync with python/rust/lib.rs).
+
+Units are SI: m, kg, s, rad. Vectors are float64 arrays of shape (3,), sequences (N, 3).
+"""
+
+from typing import TypedDict
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+FloatArray = npt.NDArray[np.float64]
+
+class InvalidInputError(ValueError):
+    """Bad input: the message names the value and what is allowed."""
+
+class IntegrationError(RuntimeError):
+    """The integration could not continue (diverged, near a pole for rk4_angles, step underflow)."""
+
+class MethodInfo(TypedDict):
+    name: str
+    order: int
+    symplectic: bool
+    preserves_ts2: bool
+    preserves_j3: bool
+    adaptive: bool
+    dense_output: bool
+    default: bool
+    summary: str
+
+class StatsDict(TypedDict):
+    steps: int
+    rejected: int
+    rhs_evals: int
+
+def methods() -> list[MethodInfo]: ...
+def check_params(length: float, mass: float, g: float) -> None: ...
+def state_on_ts2(
+    length: float, mass: float, g: float, x: FloatArray, v: FloatArray
+) -> tuple[FloatArray, FloatArray]: ...
+def project_state(
+    length: float, mass: float, g: float, x: FloatArray, v: FloatArray
+) -> tuple[FloatArray, FloatArray, float, float]: ...
+def state_from_angles(
+    length: float, mass: float, g: float, theta: float, phi: float, theta_dot: float, phi_dot: float
+) -> tuple[FloatArray, FloatArray]: ...
+def diagnostics(length: float, mass: float, g: float, x: FloatArray, v: FloatArray) -> dict[str, FloatArray]: ...
+
+class Solver:
+    def __init__(
+        self,
+        length: float,
+        mass: float,
+        g: float,
+        x0: FloatArray,
+        v0: FloatArray,
+        t0: float,
+        t_end: float,
+        method: str,
+        dt: float,
+        rtol: float,
+        atol: float,
+        project: bool,
+        save_every: int | None = None,
+        save_times: FloatArray | None = None,
+        max_saved_bytes: int | None = None,
+    ) -> None: ...
+    def advance(self, budget: int) -> bool: ...
+    def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
+    @property
+    def progress(self) -> float: ...
+    @property
+    def t(self) -> float: ...
+    @property
+    def done(self) -> bool: ...
+    @property
+    def stats(self) -> StatsDict: ...
+
+class Stepper:
+    def __init__(
+        self,
+        length: float,
+        mass: float,
+        g: float,
+        x0: FloatArray,
+        v0: FloatArray,
+        t0: float,
+        method: str,
+        dt: float,
+        rtol: float,
+        atol: float,
+        project: bool,
+    ) -> None: ...
+    def step(self, n: int = 1) -> None: ...
+    def step_to(self, t: float) -> None: ...
+    def set_state(self, x: FloatArray, v: FloatArray) -> None: ...
+    @property
+    def t(self) -> float: ...
+    @property
+    def x(self) -> FloatArray: ...
+    @property
+    def v(self) -> FloatArray: ...
+    @property
+    def stats(self) -> StatsDict: ...
+

@@ -1,0 +1,104 @@
+"""Writing trajectories to disk: CSV, Parquet and NetCDF, chosen by the file suffix.
+
+Every file carries units and the run's parameters in its metadata (CSV: ``#`` header lines;
+Parquet: schema metadata; NetCDF: attributes). Files are written atomically: to a temporary file
+in the same directory, then renamed over the target, so a crash never leaves a half-written file.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import tempfile
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from .trajectory import Trajectory
+
+FORMATS = {".csv": "csv", ".parquet": "parquet", ".nc": "netcdf"}
+
+
+@contextlib.contextmanager
+def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
+    """Yields a temporary path beside ``path``; renames it onto ``path`` only if the block succeeds."""
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
+    os.close(fd)
+    try:
+        yield Path(tmp)
+        os.replace(tmp, target)
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+        raise
+
+
+def format_of(path: str | os.PathLike[str]) -> str:
+    """The file format from the suffix: .csv, .parquet or .nc; a clear error otherwise."""
+    suffix = Path(path).suffix.lower()
+    if suffix not in FORMATS:
+        raise ValueError(f"unknown output suffix {suffix!r} in {str(path)!r}; use one of .csv, .parquet, .nc")
+    return FORMATS[suffix]
+
+
+def _require(module: str, extra: str = "io") -> Any:
+    try:
+        return __import__(module)
+    except ImportError as e:  # pragma: no cover - depends on the environment
+        raise ImportError(f"writing this format needs {module!r}: pip install 'pendulab[{extra}]'") from e
+
+
+def write_csv(tr: Trajectory, path: str | os.PathLike[str]) -> None:
+    """CSV with a ``#`` header of metadata (JSON) and one row per sample, columns with units."""
+    import numpy as np
+
+    cols = tr.columns()
+    header = "\n".join(
+        [f"# pendulab trajectory; metadata (JSON): {json.dumps(tr.metadata(), sort_keys=True)}"]
+        + [",".join(f"{name} [{unit}]" for name, (unit, _) in cols.items())]
+    )
+    data = np.column_stack([values for _, values in cols.values()])
+    with atomic_path(path) as tmp:
+        np.savetxt(tmp, data, delimiter=",", header=header, comments="", fmt="%.17g")
+
+
+def write_parquet(tr: Trajectory, path: str | os.PathLike[str]) -> None:
+    """Parquet, one row per sample; units per column in field metadata, run metadata in the schema."""
+    _require("pyarrow")
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    fields, arrays = [], []
+    for name, (unit, values) in tr.columns().items():
+        fields.append(pa.field(name, pa.float64(), metadata={"unit": unit}))
+        arrays.append(pa.array(values))
+    schema = pa.schema(fields, metadata={"pendulab": json.dumps(tr.metadata(), sort_keys=True)})
+    table = pa.Table.from_arrays(arrays, schema=schema)
+    with atomic_path(path) as tmp:
+        pq.write_table(table, tmp)
+
+
+def write_netcdf(tr: Trajectory, path: str | os.PathLike[str]) -> None:
+    """NetCDF (via xarray; the scipy engine, NetCDF3 classic) with units and metadata as attributes."""
+    _require("xarray")
+    _require("scipy")
+    ds = tr.to_xarray()
+    with atomic_path(path) as tmp:
+        ds.to_netcdf(tmp, engine="scipy")
+
+
+WRITERS: dict[str, Callable[[Trajectory, str | os.PathLike[str]], None]] = {
+    "csv": write_csv,
+    "parquet": write_parquet,
+    "netcdf": write_netcdf,
+}
+
+
+def save(tr: Trajectory, path: str | os.PathLike[str]) -> Path:
+    """Writes ``tr`` to ``path`` in the format its suffix names; returns the path."""
+    WRITERS[format_of(path)](tr, path)
+    return Path(path)

@@ -1,0 +1,188 @@
+"""Batch simulation and the incremental stepper, on top of the core's chunked solver.
+
+``simulate`` advances the core solver in chunks of about 0.1 s of work with the GIL released,
+updating a tqdm progress bar between chunks; Ctrl-C stops cleanly after the current chunk and
+returns what was computed so far (``Trajectory.interrupted`` is True, and a warning says so).
+Saving is separate from stepping: 10⁸ steps with ``save_every=10_000`` keep only 10⁴ samples.
+"""
+
+from __future__ import annotations
+
+import time
+import warnings
+from typing import Any
+
+import numpy as np
+from tqdm.auto import tqdm
+
+from . import _core
+from .model import FloatArray, Pendulum, State
+from .trajectory import Trajectory
+
+DEFAULTS: dict[str, Any] = {"method": "rattle", "dt": 1e-3, "rtol": 1e-10, "atol": 1e-12, "project": True}
+_CHUNK_SECONDS = 0.1
+_PROGRESS_AFTER_STEPS = 5_000_000
+
+
+def methods() -> list[_core.MethodInfo]:
+    """The registered integrators: name, order, symplectic, preserves_ts2, preserves_j3, adaptive, …"""
+    return _core.methods()
+
+
+def method_names() -> list[str]:
+    """Names of the registered integrators."""
+    return [m["name"] for m in _core.methods()]
+
+
+def simulate(
+    pendulum: Pendulum,
+    state: State,
+    t_end: float,
+    *,
+    method: str = "rattle",
+    dt: float | None = None,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+    project: bool = True,
+    save_every: int | None = None,
+    save_at: Any = None,
+    t0: float = 0.0,
+    progress: bool | None = None,
+    max_saved_bytes: int | None = None,
+) -> Trajectory:
+    """Integrates from ``state`` at time ``t0`` [s] to ``t_end`` [s].
+
+    Parameters
+    ----------
+    method : a name from :func:`methods` (default ``"rattle"``).
+    dt : step size [s] of fixed-step methods (default 1e-3 s); for ``dop853`` an optional initial step.
+    rtol, atol : tolerances of ``dop853`` (atol in m and m/s).
+    project : ``dop853`` only: project onto TS² after every step (default True).
+    save_every : keep every n-th step (default 1), plus the initial and final states.
+    save_at : array of times [s] to keep instead (dense output for ``dop853``; fixed-step methods
+        land on each time exactly).
+    progress : show a progress bar (default: only for runs of more than 5·10⁶ steps).
+    max_saved_bytes : memory limit for saved samples (default 4 GiB); exceeding it is an error
+        raised before the run starts (fixed-step methods) or when reached (``dop853``).
+    """
+    info = {m["name"]: m for m in _core.methods()}.get(method)
+    if info is None:
+        raise _core.InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")
+    if dt is None:
+        dt = 0.0 if info["adaptive"] else DEFAULTS["dt"]
+    if save_every is not None and save_at is not None:
+        raise _core.InvalidInputError("give either save_every or save_at, not both")
+    if save_every is not None and (isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1):
+        raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+    times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
+    solver = _core.Solver(
+        *pendulum._core_args(),
+        np.ascontiguousarray(state.x),
+        np.ascontiguousarray(state.v),
+        float(t0),
+        float(t_end),
+        method,
+        float(dt),
+        float(rtol),
+        float(atol),
+        bool(project),
+        None if save_every is None else int(save_every),
+        times,
+        max_saved_bytes,
+    )
+    expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
+    show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
+    parts: list[tuple[FloatArray, FloatArray, FloatArray]] = []
+    interrupted = False
+    budget = 10_000
+    with tqdm(total=1000, disable=not show, unit="‰", desc=f"{method} to t={t_end:g} s", leave=False) as bar:
+        try:
+            done = False
+            while not done:
+                start = time.perf_counter()
+                done = solver.advance(budget)
+                elapsed = time.perf_counter() - start
+                budget = int(min(max(budget * _CHUNK_SECONDS / max(elapsed, 1e-6), 1_000), 1e9))
+                parts.append(solver.take_samples())
+                bar.update(int(1000 * solver.progress) - bar.n)
+        except KeyboardInterrupt:
+            interrupted = True
+            parts.append(solver.take_samples())
+            warnings.warn(
+                f"simulation interrupted at t = {solver.t:g} s; returning the samples computed so far",
+                RuntimeWarning,
+                stacklevel=2,
+            )
+    t = np.concatenate([p[0] for p in parts])
+    x = np.concatenate([p[1] for p in parts])
+    v = np.concatenate([p[2] for p in parts])
+    options = {"dt": dt, "t0": t0, "t_end": t_end}
+    if info["adaptive"]:
+        options |= {"rtol": rtol, "atol": atol, "project": project}
+    if save_every is not None:
+        options["save_every"] = int(save_every)
+    return Trajectory(pendulum, t, x, v, method, options, dict(solver.stats), interrupted)
+
+
+class Stepper:
+    """Incremental integration for live viewing: ``step(n)``, ``step_to(t)``, ``state``, ``t``.
+
+    Same methods and options as :func:`simulate`; ``set_state`` replaces the state (e.g. after the
+    user drags the bob).
+    """
+
+    def __init__(
+        self,
+        pendulum: Pendulum,
+        state: State,
+        *,
+        method: str = "rattle",
+        dt: float = 1e-3,
+        rtol: float = 1e-10,
+        atol: float = 1e-12,
+        project: bool = True,
+        t0: float = 0.0,
+    ) -> None:
+        self.pendulum = pendulum
+        self._core = _core.Stepper(
+            *pendulum._core_args(),
+            np.ascontiguousarray(state.x),
+            np.ascontiguousarray(state.v),
+            float(t0),
+            method,
+            float(dt),
+            float(rtol),
+            float(atol),
+            bool(project),
+        )
+
+    @property
+    def t(self) -> float:
+        """Current time [s]."""
+        return self._core.t
+
+    @property
+    def state(self) -> State:
+        """Current state."""
+        return State(self._core.x, self._core.v)
+
+    @property
+    def stats(self) -> dict[str, int]:
+        """Work counters: steps, rejected, rhs_evals."""
+        return dict(self._core.stats)
+
+    def step(self, n: int = 1) -> State:
+        """Takes n steps and returns the new state."""
+        if isinstance(n, bool) or int(n) != n or n < 0:
+            raise _core.InvalidInputError(f"n = {n!r} must be an integer >= 0")
+        self._core.step(int(n))
+        return self.state
+
+    def step_to(self, t: float) -> State:
+        """Advances to exactly time t [s] and returns the state there."""
+        self._core.step_to(float(t))
+        return self.state
+
+    def set_state(self, state: State) -> None:
+        """Replaces the current state (must lie on TS²)."""
+        self._core.set_state(np.ascontiguousarray(state.x), np.ascontiguousarray(state.v))

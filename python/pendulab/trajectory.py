@@ -1,0 +1,177 @@
+"""A computed trajectory: saved times and states plus the diagnostics that prove it right.
+
+Arrays (N samples): ``t`` [s], ``x`` [m] (N, 3), ``v`` [m/s] (N, 3); derived on first use:
+``energy`` [J], ``j3`` [kg m²/s], ``tension`` [N] (T-2.3, T-2.6), ``radius_error`` = |x| − l [m],
+``constraint_error`` = (|x| − l)/l (dimensionless), ``tangency`` = x·v [m²/s], ``theta``, ``phi`` [rad].
+"""
+
+from __future__ import annotations
+
+import functools
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+from . import io
+from .model import FloatArray, Pendulum, State
+
+UNITS = {
+    "t": "s",
+    "x": "m",
+    "v": "m/s",
+    "energy": "J",
+    "j3": "kg m^2/s",
+    "tension": "N",
+    "radius_error": "m",
+    "constraint_error": "1",
+    "tangency": "m^2/s",
+}
+
+
+@dataclass(frozen=True)
+class Trajectory:
+    """Samples of one run. ``interrupted`` is True when the run was stopped (Ctrl-C) before t_end."""
+
+    pendulum: Pendulum
+    t: FloatArray
+    x: FloatArray
+    v: FloatArray
+    method: str
+    options: dict[str, Any] = field(default_factory=dict)
+    stats: dict[str, int] = field(default_factory=dict)
+    interrupted: bool = False
+
+    def __len__(self) -> int:
+        return int(self.t.shape[0])
+
+    @functools.cached_property
+    def _diag(self) -> dict[str, FloatArray]:
+        return self.pendulum.diagnostics(self.x, self.v)
+
+    @property
+    def energy(self) -> FloatArray:
+        """E = m(½|v|² + g z) [J] at each sample."""
+        return self._diag["energy"]
+
+    @property
+    def j3(self) -> FloatArray:
+        """J₃ = m (x × v)·e₃ [kg m²/s] at each sample."""
+        return self._diag["j3"]
+
+    @property
+    def tension(self) -> FloatArray:
+        """Rod tension [N] at each sample (T-2.3)."""
+        return self._diag["tension"]
+
+    @property
+    def radius_error(self) -> FloatArray:
+        """|x| − l [m]."""
+        return self._diag["radius_error"]
+
+    @property
+    def constraint_error(self) -> FloatArray:
+        """(|x| − l)/l, dimensionless; 0 on the sphere."""
+        return self._diag["radius_error"] / self.pendulum.length
+
+    @property
+    def tangency(self) -> FloatArray:
+        """x·v [m²/s]; 0 on TS²."""
+        return self._diag["tangency"]
+
+    @property
+    def theta(self) -> FloatArray:
+        """Polar angle from the downward vertical [rad]."""
+        return np.arctan2(np.hypot(self.x[:, 0], self.x[:, 1]), -self.x[:, 2])
+
+    @property
+    def phi(self) -> FloatArray:
+        """Azimuth atan2(y, x) [rad], unwrapped to be continuous."""
+        return np.unwrap(np.arctan2(self.x[:, 1], self.x[:, 0]))
+
+    def state(self, i: int) -> State:
+        """The i-th saved state."""
+        return State(self.x[i].copy(), self.v[i].copy())
+
+    def metadata(self) -> dict[str, Any]:
+        """Parameters, method, options, counters and units (what every output file carries)."""
+        return {
+            "software": "pendulab",
+            "pendulum": self.pendulum.params(),
+            "method": self.method,
+            "options": self.options,
+            "stats": self.stats,
+            "interrupted": self.interrupted,
+            "units": UNITS | {"length": "m", "mass": "kg", "g": "m/s^2"},
+            "conventions": "SI units, z up, gravity along -z for g > 0, theta from the downward vertical",
+        }
+
+    def columns(self) -> dict[str, tuple[str, npt.NDArray[np.float64]]]:
+        """Flat columns name -> (unit, values) for tabular files."""
+        cols: dict[str, tuple[str, npt.NDArray[np.float64]]] = {"t": ("s", self.t)}
+        for k, axis in enumerate("xyz"):
+            cols[axis] = ("m", self.x[:, k])
+        for k, axis in enumerate("xyz"):
+            cols[f"v{axis}"] = ("m/s", self.v[:, k])
+        for name in ("energy", "j3", "tension", "constraint_error", "tangency"):
+            cols[name] = (UNITS[name], getattr(self, name))
+        return cols
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` with dims (time, axis), units as attributes, metadata in ``attrs``."""
+        import json
+
+        xr = io._require("xarray")
+        ds = xr.Dataset(
+            {
+                "x": (("time", "axis"), self.x, {"units": "m", "long_name": "bob position"}),
+                "v": (("time", "axis"), self.v, {"units": "m/s", "long_name": "bob velocity"}),
+                "energy": ("time", self.energy, {"units": "J"}),
+                "j3": ("time", self.j3, {"units": "kg m^2/s", "long_name": "vertical angular momentum"}),
+                "tension": ("time", self.tension, {"units": "N"}),
+                "constraint_error": ("time", self.constraint_error, {"units": "1", "long_name": "(|x|-l)/l"}),
+                "tangency": ("time", self.tangency, {"units": "m^2/s", "long_name": "x.v"}),
+            },
+            coords={"time": ("time", self.t, {"units": "s"}), "axis": ["x", "y", "z"]},
+            attrs={"pendulab": json.dumps(self.metadata(), sort_keys=True)},
+        )
+        return ds
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Writes the trajectory atomically; the format comes from the suffix (.csv, .parquet, .nc)."""
+        return io.save(self, path)
+
+    def to_csv(self, path: str | os.PathLike[str]) -> Path:
+        """Writes CSV (see :func:`pendulab.io.write_csv`)."""
+        io.write_csv(self, path)
+        return Path(path)
+
+    def to_parquet(self, path: str | os.PathLike[str]) -> Path:
+        """Writes Parquet (needs pyarrow)."""
+        io.write_parquet(self, path)
+        return Path(path)
+
+    def to_netcdf(self, path: str | os.PathLike[str]) -> Path:
+        """Writes NetCDF (needs xarray and scipy)."""
+        io.write_netcdf(self, path)
+        return Path(path)
+
+    def summary(self) -> str:
+        """A few lines: span, samples, conservation of E and J₃, constraint residuals, work."""
+        e, j = self.energy, self.j3
+        e_scale = max(abs(e[0]), self.pendulum.mass * max(abs(self.pendulum.g), 1e-300) * self.pendulum.length)
+        lines = [
+            f"pendulum: l = {self.pendulum.length} m, m = {self.pendulum.mass} kg, g = {self.pendulum.g} m/s^2",
+            f"method:   {self.method}  {self.options}",
+            f"span:     t = {self.t[0]:g} .. {self.t[-1]:g} s, {len(self)} samples, {self.stats.get('steps', 0)} steps"
+            + ("  (INTERRUPTED)" if self.interrupted else ""),
+            f"energy:   E0 = {e[0]:.12g} J, max |E - E0| / (m |g| l) = {np.max(np.abs(e - e[0])) / e_scale:.3e}",
+            f"J3:       J3_0 = {j[0]:.12g} kg m^2/s, max |J3 - J3_0| = {np.max(np.abs(j - j[0])):.3e}",
+            f"sphere:   max ||x| - l| / l = {np.max(np.abs(self.constraint_error)):.3e}, "
+            f"max |x.v| = {np.max(np.abs(self.tangency)):.3e} m^2/s",
+            f"height:   z in [{self.x[:, 2].min():.6f}, {self.x[:, 2].max():.6f}] m",
+        ]
+        return "\n".join(lines)
