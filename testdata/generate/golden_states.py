@@ -84,6 +84,7 @@ import itertools
 import json
 import math
 import os
+import re
 import sys
 import tempfile
 import time
@@ -209,17 +210,13 @@ def load_scenarios(directory: Path = SCENARIO_DIR) -> list[Scenario]:
             pend, init = doc["pendulum"], doc["initial"]
             model = pend.get("model", "ideal")
             if model != "ideal":
-                raise GoldenError(
-                    f"{f.name}: model {model!r} is not the ideal pendulum"
-                )
+                raise GoldenError(f"{f.name}: model {model!r} is not the ideal pendulum")
             length, mass, g = (
                 float(pend["length"]),
                 float(pend["mass"]),
                 float(pend["g"]),
             )
-            angles = [
-                float(init[k]) for k in ("theta_deg", "phi_deg", "theta_dot", "phi_dot")
-            ]
+            angles = [float(init[k]) for k in ("theta_deg", "phi_deg", "theta_dot", "phi_dot")]
         except KeyError as e:
             raise GoldenError(f"{f.name}: missing key {e}") from e
         x0, v0 = float_initial_state(length, *angles)
@@ -292,9 +289,7 @@ class GenericSolution(Solution):
             u1, u2, u3 = self._roots(eps, j, u0, up0)
             tol = mp.mpf(10) ** (-mp.dps + 8)
             if not (u1 > -1 and u2 < 1 < u3 and u1 - tol <= u0 <= u2 + tol):
-                raise GoldenError(
-                    f"roots out of order: u1={u1}, u0={u0}, u2={u2}, u3={u3}"
-                )
+                raise GoldenError(f"roots out of order: u1={u1}, u0={u0}, u2={u2}, u3={u3}")
             d = u2 - u1
             if d <= 0:
                 raise GoldenError("exactly conical (u1 == u2): not supported")
@@ -312,9 +307,7 @@ class GenericSolution(Solution):
                 mp.sqrt((u3 - u1) / 2),
             ]
             consts += [1 + u1, 1 - u1, 1 + u2, 1 - u2, (u0 - u1) / d, (u2 - u0) / d]
-        w0, u0, up0, eps, j, u1, u2, u3, d, m, lam, p1, q1, p2, q2, r1, r2 = (
-            +c for c in consts
-        )
+        w0, u0, up0, eps, j, u1, u2, u3, d, m, lam, p1, q1, p2, q2, r1, r2 = (+c for c in consts)
         big_k = mpmath.ellipk(m)
         n_plus, n_minus = d / q1, -d / p1
         self.w0, self.j, self.eps = w0, j, eps
@@ -433,9 +426,7 @@ class PlanarSolution(Solution):
             hx, hy = v0[0], v0[1]
             hn = mp.sqrt(hx * hx + hy * hy)
         if hn == 0:
-            raise GoldenError(
-                "planar case on the vertical axis with no horizontal velocity"
-            )
+            raise GoldenError("planar case on the vertical axis with no horizontal velocity")
         e_h = [hx / hn, hy / hn, mpf(0)]
         sin_t, cos_t = dot(x0, e_h) / ell, -x0[2] / ell
         theta0 = mp.atan2(sin_t, cos_t)
@@ -443,9 +434,7 @@ class PlanarSolution(Solution):
         eps = (thetadot0 / w0) ** 2 / 2 - cos_t
         k2 = (1 + eps) / 2
         if k2 >= 1:
-            raise GoldenError(
-                "planar motion over the top (or on the separatrix): not supported"
-            )
+            raise GoldenError("planar motion over the top (or on the separatrix): not supported")
         if k2 <= 0:
             raise GoldenError("planar case at rest at the bottom: nothing to compute")
         k = mp.sqrt(k2)
@@ -572,9 +561,7 @@ def initial_state(sc: Scenario) -> State:
     return project(mpf(sc.length), to_mp(sc.x0), to_mp(sc.v0))
 
 
-def verify(
-    sc: Scenario, sol: Solution, x0: Vec, v0: Vec, log: Callable[[str], None]
-) -> dict[str, float]:
+def verify(sc: Scenario, sol: Solution, x0: Vec, v0: Vec, log: Callable[[str], None]) -> dict[str, float]:
     """Checks 1 to 4; raises GoldenError on failure, returns the worst error of each."""
     ell, g, mass = mpf(sc.length), mpf(sc.g), mpf(sc.mass)
     vs = v_scale(ell, g, v0)
@@ -586,18 +573,14 @@ def verify(
     def need(name: str, err: Any, tol: Any) -> None:
         res[name] = max(res.get(name, 0.0), float(err))
         if not err <= tol:
-            raise GoldenError(
-                f"{sc.name}: check {name} failed: {mpmath.nstr(err, 5)} > {tol}"
-            )
+            raise GoldenError(f"{sc.name}: check {name} failed: {mpmath.nstr(err, 5)} > {tol}")
 
     # 1. initial state
     need("1_initial", state_error(ell, vs, sol.state(mpf(0)), (x0, v0)), TOL_STATE)
     raw = (to_mp(sc.x0), to_mp(sc.v0))
     res["projection_shift"] = float(state_error(ell, vs, raw, (x0, v0)))
     if res["projection_shift"] > 1e-15:
-        raise GoldenError(
-            f"{sc.name}: float64 start is far from TS^2 ({res['projection_shift']})"
-        )
+        raise GoldenError(f"{sc.name}: float64 start is far from TS^2 ({res['projection_shift']})")
 
     # 2. invariants at the output times
     for t in TIMES:
@@ -651,9 +634,7 @@ def floor_patterns() -> list[tuple[int, ...]]:
     return list(itertools.product((-1, 1), repeat=6))
 
 
-def conditioning_floors(
-    sc: Scenario, samples: list[State], normwise: bool
-) -> list[float]:
+def conditioning_floors(sc: Scenario, samples: list[State], normwise: bool) -> list[float]:
     """Worst relative state error at each output time from a 2^-53 change of the start.
 
     Componentwise (normwise=False): each component c -> c (1 +- 2^-53), the rounding of
@@ -669,8 +650,7 @@ def conditioning_floors(
     for signs in floor_patterns():
         if normwise:
             y = [
-                c + s * rel * (ell if i < 3 else vs0)
-                for i, (c, s) in enumerate(zip(raw, signs, strict=True))
+                c + s * rel * (ell if i < 3 else vs0) for i, (c, s) in enumerate(zip(raw, signs, strict=True))
             ]
         else:
             y = [c * (1 + s * rel) for c, s in zip(raw, signs, strict=True)]
@@ -699,14 +679,10 @@ def run_case(sc: Scenario, log: Callable[[str], None]) -> CaseResult:
         worst = mpf(0)
         for t, ref in zip(TIMES, samples, strict=True):
             hi = sol_h.state(mpf(t))
-            worst = max(
-                worst, state_error(ell, v_scale(ell, mpf(sc.g), hi[1]), hi, ref)
-            )
+            worst = max(worst, state_error(ell, v_scale(ell, mpf(sc.g), hi[1]), hi, ref))
     checks["5_high_precision"] = float(worst)
     if not worst <= TOL_HIGH:
-        raise GoldenError(
-            f"{sc.name}: {DPS}-digit and {HIGH_DPS}-digit results differ by {worst}"
-        )
+        raise GoldenError(f"{sc.name}: {DPS}-digit and {HIGH_DPS}-digit results differ by {worst}")
 
     floors = conditioning_floors(sc, samples, normwise=False)
     floors_nw = conditioning_floors(sc, samples, normwise=True)
@@ -776,9 +752,7 @@ def case_json(r: CaseResult) -> dict[str, Any]:
             "floor": f,
             "floor_normwise": fn,
         }
-        for t, (x, v), f, fn in zip(
-            TIMES, r.samples, r.floors, r.floors_normwise, strict=True
-        )
+        for t, (x, v), f, fn in zip(TIMES, r.samples, r.floors, r.floors_normwise, strict=True)
     ]
     return out
 
@@ -801,6 +775,19 @@ def document(results: list[CaseResult]) -> dict[str, Any]:
     }
 
 
+def to_json(doc: dict[str, Any]) -> str:
+    """Indented JSON with every list of numbers or strings on one line."""
+    text = json.dumps(doc, indent=1)
+    text = re.sub(
+        r"\[\s*([^\[\]{}\n]*(?:\n[^\[\]{}\n]*)*?)\s*\]",
+        lambda mo: "[" + " ".join(mo.group(1).split()) + "]",
+        text,
+    )
+    if json.loads(text) != doc:  # pragma: no cover - guards the regex
+        raise GoldenError("internal error: compacted JSON does not round-trip")
+    return text + "\n"
+
+
 def write_atomic(path: Path, text: str) -> None:
     fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.name + ".", suffix=".tmp")
     try:
@@ -808,6 +795,9 @@ def write_atomic(path: Path, text: str) -> None:
             fh.write(text)
             fh.flush()
             os.fsync(fh.fileno())
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes it 0600
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
@@ -824,31 +814,22 @@ def compare(new: dict[str, Any], old: dict[str, Any]) -> list[str]:
     new_cases = {c["name"]: c for c in new["cases"]}
     old_cases = {c["name"]: c for c in old.get("cases", [])}
     if set(new_cases) != set(old_cases):
-        problems.append(
-            f"case names differ: {sorted(old_cases)} vs {sorted(new_cases)}"
-        )
+        problems.append(f"case names differ: {sorted(old_cases)} vs {sorted(new_cases)}")
     for name in sorted(set(new_cases) & set(old_cases)):
         a, b = new_cases[name], old_cases[name]
         for key in ("scenario", "length", "mass", "g", "x0", "v0", "kind"):
             if a[key] != b.get(key):
-                problems.append(
-                    f"{name}.{key}: committed {b.get(key)!r}, now {a[key]!r}"
-                )
+                problems.append(f"{name}.{key}: committed {b.get(key)!r}, now {a[key]!r}")
         for sa, sb in zip(a["samples"], b.get("samples", []), strict=False):
             for key in ("x_str", "v_str"):
                 va = [mpf(s) for s in sa[key]]
                 vb = [mpf(s) for s in sb[key]]
                 sc = max(norm(va), mpf(1e-300))
                 if norm(sub(va, vb)) / sc > mpf("1e-28"):
-                    problems.append(
-                        f"{name} t={sa['t']} {key}: committed {sb[key]}, now {sa[key]}"
-                    )
+                    problems.append(f"{name} t={sa['t']} {key}: committed {sb[key]}, now {sa[key]}")
             for key in ("floor", "floor_normwise"):
                 if not math.isclose(sa[key], sb.get(key, math.nan), rel_tol=0.05):
-                    problems.append(
-                        f"{name} t={sa['t']} {key}: "
-                        f"committed {sb.get(key)}, now {sa[key]}"
-                    )
+                    problems.append(f"{name} t={sa['t']} {key}: committed {sb.get(key)}, now {sa[key]}")
         if len(a["samples"]) != len(b.get("samples", [])):
             problems.append(f"{name}: number of samples differs")
     return problems
@@ -861,9 +842,7 @@ def main(argv: list[str] | None = None) -> int:
         action="store_true",
         help="recompute and compare to the committed JSON",
     )
-    ap.add_argument(
-        "--out", type=Path, default=OUTPUT, help="output file (default: %(default)s)"
-    )
+    ap.add_argument("--out", type=Path, default=OUTPUT, help="output file (default: %(default)s)")
     args = ap.parse_args(argv)
     mp.dps = DPS
     t0 = time.perf_counter()
@@ -877,7 +856,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"error: {e}", file=sys.stderr)
         return 1
     doc = document(results)
-    text = json.dumps(doc, indent=1) + "\n"
+    text = to_json(doc)
     elapsed = time.perf_counter() - t0
     if args.check:
         try:
@@ -888,9 +867,7 @@ def main(argv: list[str] | None = None) -> int:
         problems = compare(doc, old)
         for p in problems:
             print(f"MISMATCH {p}", file=sys.stderr)
-        print(
-            f"{'FAILED' if problems else 'OK'}: {args.out} checked in {elapsed:.0f} s"
-        )
+        print(f"{'FAILED' if problems else 'OK'}: {args.out} checked in {elapsed:.0f} s")
         return 1 if problems else 0
     write_atomic(args.out, text)
     print(f"wrote {args.out} ({len(results)} cases) in {elapsed:.0f} s")

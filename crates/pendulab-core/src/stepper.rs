@@ -168,26 +168,30 @@ impl<M: Model> Stepper<M> {
         let (model, state, stats) = (&self.model, &mut self.state, &mut self.stats);
         let t = self.t;
         with_fixed!(&mut self.scheme, s => {
+            // Full steps are exactly dt (as in `step_n`, so both paths give identical numbers); only
+            // a step that would pass t_stop is shortened, and a grid point within 1e-9 dt of t_stop
+            // counts as t_stop.
             let t_next = self.t_anchor + (self.k + 1) as f64 * self.dt;
-            if t_stop - t <= 1e-12 * self.dt {
+            let slack = 1e-9 * self.dt;
+            if t_stop - t <= slack {
                 // Already there up to round-off of the grid: a step this short would only add noise.
                 self.t = t_stop;
                 self.t_anchor = t_stop;
                 self.k = 0;
-            } else if t_next < t_stop - 1e-12 * self.dt {
-                s.step(model, t, state, t_next - t)?;
+                return Ok(());
+            }
+            if t_next <= t_stop + slack {
+                s.step(model, t, state, self.dt)?;
                 self.k += 1;
-                self.t = t_next;
+                self.t = if (t_next - t_stop).abs() <= slack { t_stop } else { t_next };
             } else {
                 s.step(model, t, state, t_stop - t)?;
                 self.t = t_stop;
                 self.t_anchor = t_stop;
                 self.k = 0;
             }
-            if self.t != t {
-                stats.steps += 1;
-                stats.rhs_evals += s.evals_per_step();
-            }
+            stats.steps += 1;
+            stats.rhs_evals += s.evals_per_step();
             Ok(())
         }, {
             let Scheme::Dop853(d) = &mut self.scheme else { unreachable!() };
