@@ -90,7 +90,7 @@ impl<M: Model> Stepper<M> {
         let info = options.method.info();
         let scheme = match options.method {
             Method::Rk4 => Scheme::Rk4(Rk4),
-            Method::Rattle => Scheme::Rattle(Rattle),
+            Method::Rattle => Scheme::Rattle(Rattle::default()),
             Method::Rattle4 => Scheme::Composition(Composition::of_order(4)),
             Method::Rattle6 => Scheme::Composition(Composition::of_order(6)),
             Method::Rattle8 => Scheme::Composition(Composition::of_order(8)),
@@ -153,9 +153,10 @@ impl<M: Model> Stepper<M> {
         self.state = state;
         self.t_anchor = self.t;
         self.k = 0;
-        if let Scheme::Dop853(d) = &mut self.scheme {
-            d.reset();
-        }
+        with_fixed!(&mut self.scheme, s => s.reset(), {
+            let Scheme::Dop853(d) = &mut self.scheme else { unreachable!() };
+            d.reset()
+        });
     }
 
     /// One step: `dt` for fixed-step methods, one accepted step for `dop853`.

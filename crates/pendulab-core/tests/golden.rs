@@ -5,8 +5,10 @@
 //! Physics checked: DOP853 at rtol 1e-12 (projected onto TS²) reproduces the exact flow at
 //! t = 1, 10, 100 s to a relative error ≤ max(1e-9, 100 × floor), where the floor is the change that
 //! rounding the initial state to float64 alone causes (large near the separatrix, e.g. `near_top`).
-//! The 8th-order RATTLE composition at dt = 1e-3 s must meet the same bound: two independent
-//! integrators against one exact solution. Error measure: max(|Δx|/l, |Δv|/(l ω₀ + |v|)).
+//! The 8th-order RATTLE composition at dt = 2e-3 s must meet the same bound: two independent
+//! integrators against one exact solution. (`near_top` is the hard case: the bob passes within
+//! 2.4e-5 l of the bottom pole at 6 m/s and its small J₃ makes the azimuth sensitive to round-off;
+//! with compensated summation in RATTLE the error there is 4.4e-10, without it 1.5e-8.) Error measure: max(|Δx|/l, |Δv|/(l ω₀ + |v|)).
 
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
 use pendulab_core::{DVec3, IdealPendulum, Method, Model, SaveAt, SolveOptions, Solver, State};
@@ -26,7 +28,8 @@ fn vec3(v: &Value) -> DVec3 {
 
 fn load() -> Vec<Golden> {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../testdata/golden_states.json");
-    let text = std::fs::read_to_string(path).expect("testdata/golden_states.json is missing: run `make golden`");
+    let text =
+        std::fs::read_to_string(path).expect("testdata/golden_states.json is missing: run `make golden`");
     let json: Value = serde_json::from_str(&text).unwrap();
     json["cases"]
         .as_array()
@@ -40,7 +43,13 @@ fn load() -> Vec<Golden> {
                 .as_array()
                 .unwrap()
                 .iter()
-                .map(|s| (s["t"].as_f64().unwrap(), State { x: vec3(&s["x"]), v: vec3(&s["v"]) }, s["floor"].as_f64().unwrap()))
+                .map(|s| {
+                    (
+                        s["t"].as_f64().unwrap(),
+                        State { x: vec3(&s["x"]), v: vec3(&s["v"]) },
+                        s["floor"].as_f64().unwrap(),
+                    )
+                })
                 .filter(|(t, _, _)| *t <= 100.0)
                 .collect();
             Golden { name: c["name"].as_str().unwrap().to_string(), model, s0, samples }
@@ -60,15 +69,32 @@ fn check(method: Method, dt: f64) {
         let times: Vec<f64> = case.samples.iter().map(|s| s.0).collect();
         let opts = SolveOptions { method, dt, rtol: 1e-12, atol: 1e-14, project: true };
         let t_end = *times.last().unwrap();
-        let mut solver =
-            Solver::new(case.model, 0.0, case.s0, t_end, &opts, SaveAt::Times(times), DEFAULT_MAX_SAVED_BYTES).unwrap();
+        let mut solver = Solver::new(
+            case.model,
+            0.0,
+            case.s0,
+            t_end,
+            &opts,
+            SaveAt::Times(times),
+            DEFAULT_MAX_SAVED_BYTES,
+        )
+        .unwrap();
         while !solver.advance(1 << 20).unwrap() {}
         let got = solver.take_samples();
         for ((t, exact, floor), s) in case.samples.iter().zip(&got.states) {
             let err = relative_error(&case.model, s, exact);
             let bound = (1e-9f64).max(100.0 * floor);
-            eprintln!("{:>13} {:>8} t = {t:>5}: error {err:.2e} (floor {floor:.1e}, bound {bound:.1e})", case.name, method.info().name);
-            assert!(err <= bound, "{} with {} at t = {t}: error {err:e} > {bound:e}", case.name, method.info().name);
+            eprintln!(
+                "{:>13} {:>8} t = {t:>5}: error {err:.2e} (floor {floor:.1e}, bound {bound:.1e})",
+                case.name,
+                method.info().name
+            );
+            assert!(
+                err <= bound,
+                "{} with {} at t = {t}: error {err:e} > {bound:e}",
+                case.name,
+                method.info().name
+            );
         }
     }
 }
@@ -80,5 +106,5 @@ fn dop853_matches_the_exact_solution() {
 
 #[test]
 fn rattle8_matches_the_exact_solution() {
-    check(Method::Rattle8, 1e-3);
+    check(Method::Rattle8, 2e-3);
 }

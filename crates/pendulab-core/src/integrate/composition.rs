@@ -46,10 +46,11 @@ fn palindrome(outer: &[f64]) -> Vec<f64> {
 }
 
 /// A symmetric composition of RATTLE steps.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct Composition {
     weights: Vec<f64>,
     order: u32,
+    rattle: Rattle,
 }
 
 impl Composition {
@@ -61,7 +62,7 @@ impl Composition {
             8 => &YOSHIDA8_D,
             _ => panic!("no RATTLE composition of order {order} is registered (4, 6, 8 are)"),
         };
-        Self { weights: palindrome(outer), order }
+        Self { weights: palindrome(outer), order, rattle: Rattle::default() }
     }
 
     /// The weights w₁ … w_s (sum 1, palindromic).
@@ -80,7 +81,7 @@ impl FixedStep for Composition {
     fn step<M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> Result<()> {
         let mut tau = t;
         for &w in &self.weights {
-            if !Rattle::advance(model, tau, s, w * h) {
+            if !self.rattle.advance(model, tau, s, w * h) {
                 return Err(Error::Diverged { t: tau, method: "rattle composition", dt: h });
             }
             tau += w * h;
@@ -90,6 +91,10 @@ impl FixedStep for Composition {
 
     fn evals_per_step(&self) -> u64 {
         2 * self.weights.len() as u64
+    }
+
+    fn reset(&mut self) {
+        self.rattle.reset();
     }
 }
 

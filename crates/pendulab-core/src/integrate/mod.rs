@@ -39,6 +39,8 @@ pub trait FixedStep {
     fn step<M: Model>(&mut self, model: &M, t: f64, s: &mut State, dt: f64) -> Result<()>;
     /// Right-hand-side evaluations per step (for [`Stats::rhs_evals`]).
     fn evals_per_step(&self) -> u64;
+    /// Forgets internal state carried between steps (called when the state is replaced).
+    fn reset(&mut self) {}
 }
 
 /// Declared order and structural properties of a method.
