@@ -112,7 +112,7 @@ class Pendulum:
         """
         xa, va = _vec3("x", x), _vec3("v", v)
         if project:
-            xp, vp, dx, dv = _core.project_state(*self._core_args(), xa, va)
+            (xp, vp), dx, dv = _core.project_state(*self._core_args(), xa, va)
             return State(_frozen(xp), _frozen(vp), (dx, dv))
         xs, vs = _core.state_on_ts2(*self._core_args(), xa, va)
         return State(_frozen(xs), _frozen(vs))

@@ -61,6 +61,8 @@ fn options(method: &str, dt: f64, rtol: f64, atol: f64, project: bool) -> PyResu
 }
 
 type Arrays<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>);
+/// A state as two numpy vectors (x [m], v [m/s]).
+type StatePair<'py> = (Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>);
 
 fn samples_to_numpy(py: Python<'_>, s: Samples) -> Arrays<'_> {
     let n = s.t.len();
@@ -112,7 +114,7 @@ fn state_on_ts2<'py>(
     g: f64,
     x: PyReadonlyArray1<'py, f64>,
     v: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)> {
+) -> PyResult<StatePair<'py>> {
     let m = model(length, mass, g)?;
     let s = State::on_tangent_bundle(m.params(), vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
     Ok((arr3(py, s.x), arr3(py, s.v)))
@@ -127,10 +129,10 @@ fn project_state<'py>(
     g: f64,
     x: PyReadonlyArray1<'py, f64>,
     v: PyReadonlyArray1<'py, f64>,
-) -> PyResult<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>, f64, f64)> {
+) -> PyResult<(StatePair<'py>, f64, f64)> {
     let m = model(length, mass, g)?;
     let (s, p) = State::projected(m.params(), vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
-    Ok((arr3(py, s.x), arr3(py, s.v), p.dx, p.dv))
+    Ok(((arr3(py, s.x), arr3(py, s.v)), p.dx, p.dv))
 }
 
 /// The state at polar angle θ [rad] from the downward vertical, azimuth φ [rad], rates [rad/s].
@@ -145,7 +147,7 @@ fn state_from_angles(
     phi: f64,
     theta_dot: f64,
     phi_dot: f64,
-) -> PyResult<(Bound<'_, PyArray1<f64>>, Bound<'_, PyArray1<f64>>)> {
+) -> PyResult<StatePair<'_>> {
     let m = model(length, mass, g)?;
     let s = State::from_angles(m.params(), theta, phi, theta_dot, phi_dot).map_err(to_py)?;
     Ok((arr3(py, s.x), arr3(py, s.v)))

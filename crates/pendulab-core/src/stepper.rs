@@ -227,7 +227,7 @@ impl<M: Model> Stepper<M> {
     /// Advances to exactly `t_target` [s] (≥ the current time): fixed-step methods take full steps
     /// and shorten the last; `dop853` steps past nothing and lands on `t_target`.
     pub fn step_to(&mut self, t_target: f64) -> Result<()> {
-        if !(t_target >= self.t) {
+        if t_target.is_nan() || t_target < self.t {
             return Err(Error::InvalidParameter {
                 name: "t_target",
                 value: t_target,

@@ -65,7 +65,7 @@ impl Rattle {
         let b = q + h * xw;
         let c = (q - l * l) + h * (2.0 * xw + h * w.length_squared());
         let disc = b * b - q * c;
-        if !(disc >= 0.0) || b <= 0.0 {
+        if disc.is_nan() || disc < 0.0 || b <= 0.0 {
             return false;
         }
         // μ = m/h with m the root near 0; then x₁ = x₀ + h v½ exactly as RATTLE writes it, so that x₁
