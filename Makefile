@@ -26,13 +26,13 @@ run: build
 lint: venv
 	cargo fmt --all -- --check
 	cargo clippy --workspace --all-targets -- -D warnings
-	$(VENV)/bin/ruff check python bench testdata/generate
-	$(VENV)/bin/ruff format --check python bench testdata/generate
+	$(VENV)/bin/ruff check python bench testdata/generate tools
+	$(VENV)/bin/ruff format --check python bench testdata/generate tools
 
 fmt: venv
 	cargo fmt --all
-	$(VENV)/bin/ruff format python bench testdata/generate
-	$(VENV)/bin/ruff check --fix python bench testdata/generate
+	$(VENV)/bin/ruff format python bench testdata/generate tools
+	$(VENV)/bin/ruff check --fix python bench testdata/generate tools
 
 test-rust:
 	cargo test --release -p pendulab-core

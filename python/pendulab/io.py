@@ -58,8 +58,10 @@ def write_csv(tr: Trajectory, path: str | os.PathLike[str]) -> None:
 
     cols = tr.columns()
     header = "\n".join(
-        [f"# pendulab trajectory; metadata (JSON): {json.dumps(tr.metadata(), sort_keys=True)}"]
-        + [",".join(f"{name} [{unit}]" for name, (unit, _) in cols.items())]
+        [
+            f"# pendulab trajectory; metadata (JSON): {json.dumps(tr.metadata(), sort_keys=True)}",
+            ",".join(f"{name} [{unit}]" for name, (unit, _) in cols.items()),
+        ]
     )
     data = np.column_stack([values for _, values in cols.values()])
     with atomic_path(path) as tmp:

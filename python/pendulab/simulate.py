@@ -72,7 +72,9 @@ def simulate(
         dt = 0.0 if info["adaptive"] else DEFAULTS["dt"]
     if save_every is not None and save_at is not None:
         raise _core.InvalidInputError("give either save_every or save_at, not both")
-    if save_every is not None and (isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1):
+    if save_every is not None and (
+        isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1
+    ):
         raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
     solver = _core.Solver(

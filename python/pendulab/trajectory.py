@@ -162,13 +162,17 @@ class Trajectory:
     def summary(self) -> str:
         """A few lines: span, samples, conservation of E and J₃, constraint residuals, work."""
         e, j = self.energy, self.j3
-        e_scale = max(abs(e[0]), self.pendulum.mass * max(abs(self.pendulum.g), 1e-300) * self.pendulum.length)
+        e_scale = max(
+            abs(e[0]), self.pendulum.mass * max(abs(self.pendulum.g), 1e-300) * self.pendulum.length
+        )
+        p, steps = self.pendulum, self.stats.get("steps", 0)
+        drift_e = np.max(np.abs(e - e[0])) / e_scale
         lines = [
-            f"pendulum: l = {self.pendulum.length} m, m = {self.pendulum.mass} kg, g = {self.pendulum.g} m/s^2",
+            f"pendulum: l = {p.length} m, m = {p.mass} kg, g = {p.g} m/s^2",
             f"method:   {self.method}  {self.options}",
-            f"span:     t = {self.t[0]:g} .. {self.t[-1]:g} s, {len(self)} samples, {self.stats.get('steps', 0)} steps"
+            f"span:     t = {self.t[0]:g} .. {self.t[-1]:g} s, {len(self)} samples, {steps} steps"
             + ("  (INTERRUPTED)" if self.interrupted else ""),
-            f"energy:   E0 = {e[0]:.12g} J, max |E - E0| / (m |g| l) = {np.max(np.abs(e - e[0])) / e_scale:.3e}",
+            f"energy:   E0 = {e[0]:.12g} J, max |E - E0| / (m |g| l) = {drift_e:.3e}",
             f"J3:       J3_0 = {j[0]:.12g} kg m^2/s, max |J3 - J3_0| = {np.max(np.abs(j - j[0])):.3e}",
             f"sphere:   max ||x| - l| / l = {np.max(np.abs(self.constraint_error)):.3e}, "
             f"max |x.v| = {np.max(np.abs(self.tangency)):.3e} m^2/s",

@@ -50,7 +50,9 @@ def test_unknown_suffix_is_refused(trajectory: pl.Trajectory, tmp_path: Path) ->
         trajectory.save(tmp_path / "out.xlsx")
 
 
-def test_writes_are_atomic(trajectory: pl.Trajectory, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_writes_are_atomic(
+    trajectory: pl.Trajectory, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     """A writer that fails half-way leaves the old file untouched and no temporary file behind."""
     target = tmp_path / "out.csv"
     target.write_text("old contents")

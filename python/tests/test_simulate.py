@@ -65,7 +65,9 @@ def test_save_at_lands_on_the_requested_times(pendulum: pl.Pendulum, rosette: pl
     stepping exactly to each time."""
     times = np.array([0.0, 0.123, 1.0, 2.5, 3.14159])
     for method in ("rattle8", "dop853"):
-        tr = pl.simulate(pendulum, rosette, t_end=4.0, method=method, dt=1e-3, rtol=1e-12, atol=1e-14, save_at=times)
+        tr = pl.simulate(
+            pendulum, rosette, t_end=4.0, method=method, dt=1e-3, rtol=1e-12, atol=1e-14, save_at=times
+        )
         assert np.array_equal(tr.t, times)
         ref = [pl.simulate(pendulum, rosette, t_end=t, method="rattle8", dt=1e-3).x[-1] for t in times[1:]]
         err = np.max(np.linalg.norm(tr.x[1:] - np.array(ref), axis=1))

@@ -266,7 +266,7 @@ impl<M: Model> Solver<M> {
     }
 
     /// The state at `target` if the stepper has reached it (dense output for `dop853`).
-    fn sample_at(&self, target: f64) -> Option<State> {
+    fn sample_at(&mut self, target: f64) -> Option<State> {
         let t = self.stepper.t();
         if t == target {
             Some(*self.stepper.state())

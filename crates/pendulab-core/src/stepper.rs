@@ -241,11 +241,12 @@ impl<M: Model> Stepper<M> {
     }
 
     /// Dense output of `dop853` at `t_out` [s] inside its last step; `None` for other methods.
-    pub fn dense_output(&self, t_out: f64) -> Option<State> {
-        match &self.scheme {
+    /// The three extra stages are computed on the first call after a step, hence `&mut self`.
+    pub fn dense_output(&mut self, t_out: f64) -> Option<State> {
+        match &mut self.scheme {
             Scheme::Dop853(d) => {
                 let (a, b) = d.last_step_interval();
-                (a <= t_out && t_out <= b).then(|| d.dense_output(t_out))
+                (a <= t_out && t_out <= b).then(|| d.dense_output(&self.model, t_out))
             }
             _ => None,
         }

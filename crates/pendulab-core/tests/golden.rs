@@ -2,7 +2,7 @@
 //! `testdata/generate/golden_states.py` from the exact elliptic-function solution at 40 digits,
 //! itself checked against mpmath's Taylor integrator).
 //!
-//! Physics checked: DOP853 at rtol 1e-12 (projected onto TS²) reproduces the exact flow at
+//! Physics checked: DOP853 at rtol 1e-13 (projected onto TS²; `near_top` at 1e-15, see below) reproduces the exact flow at
 //! t = 1, 10, 100 s to a relative error ≤ max(1e-9, 100 × floor), where the floor is the change that
 //! rounding the initial state to float64 alone causes (large near the separatrix, e.g. `near_top`).
 //! The 8th-order RATTLE composition at dt = 2e-3 s must meet the same bound: two independent
@@ -62,12 +62,13 @@ fn relative_error(model: &IdealPendulum, a: &State, b: &State) -> f64 {
     ((a.x - b.x).length() / p.length).max((a.v - b.v).length() / (p.length * p.omega0() + b.v.length()))
 }
 
-fn check(method: Method, dt: f64) {
+fn check(method: Method, dt: f64, rtol_for: impl Fn(&str) -> f64) {
     let cases = load();
     assert!(cases.len() >= 6, "expected the six scenarios and more, found {}", cases.len());
     for case in cases {
         let times: Vec<f64> = case.samples.iter().map(|s| s.0).collect();
-        let opts = SolveOptions { method, dt, rtol: 1e-12, atol: 1e-14, project: true };
+        let rtol = rtol_for(&case.name);
+        let opts = SolveOptions { method, dt, rtol, atol: rtol * 1e-2, project: true };
         let t_end = *times.last().unwrap();
         let mut solver = Solver::new(
             case.model,
@@ -99,12 +100,19 @@ fn check(method: Method, dt: f64) {
     }
 }
 
+/// DOP853 at rtol 1e-13, the tightest tolerance the engine issue requires, except `near_top`:
+/// its energy lies 1.5e-3 J/kg below the separatrix, so the z-period is log-singular in E
+/// (∂T_z/∂E ≈ 1/(m g l − E) ≈ 700 s/J) and an energy error ΔE displaces the bob by ≈ 700·|v|·ΔE per
+/// period. DOP853 does not conserve E (ΔE ≈ 5e-13 J at rtol 1e-13 after 10 s, measured), which puts
+/// it at 2e-8 at t = 100 s; the conditioning floor of the golden data does not show this because
+/// rounding the start changes E by far less than one step of any integrator. At rtol 1e-15 it is
+/// 2e-10, inside the common bound. The symplectic RATTLE8 needs no such allowance.
 #[test]
 fn dop853_matches_the_exact_solution() {
-    check(Method::Dop853, 0.0);
+    check(Method::Dop853, 0.0, |name| if name == "near_top" { 1e-15 } else { 1e-13 });
 }
 
 #[test]
 fn rattle8_matches_the_exact_solution() {
-    check(Method::Rattle8, 2e-3);
+    check(Method::Rattle8, 2e-3, |_| 1e-13);
 }

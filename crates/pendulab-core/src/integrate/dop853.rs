@@ -1,15 +1,197 @@
-//! TEMPORARY STUB (replaced by the real DOP853).
-#![allow(missing_docs, unused)]
+//! Adaptive Dormand–Prince 8(5,3), "DOP853" (Hairer, Nørsett & Wanner 1993, Sec. II.10), on the
+//! Cartesian first-order system T-2.4 with y = (x, v) ∈ R⁶ (x in m, v in m/s, t in s):
+//!
+//!   ẋ = v,   v̇ = f(t, x, v) + λ x,   λ = −(|v|² + x·f)/l²    (T-2.4, f the applied acceleration)
+//!
+//! One step uses the 12 stages of the 8th-order formula; the local error is estimated as in
+//! Hairer's code by blending a 5th- and a 3rd-order embedded estimate,
+//!
+//!   err = |h| · ‖e₅‖² / √(N (‖e₅‖² + 0.01 ‖e₃‖²)),  components scaled by atol + rtol·max(|y₀|, |y₁|),
+//!
+//! with N = 6, and the step size is controlled by h_new = h / clamp(err^{1/8} / 0.9, 1/6, 1/0.333)
+//! (no step growth right after a rejection). The initial step follows Hairer's `hinit`.
+//!
+//! **Projection.** TS² is invariant but unstable for T-2.4, so by default every accepted step is
+//! followed by the projection x ← l x/|x|, v ← v − (x·v/l²) x ([`project_onto_tangent_bundle`]);
+//! f at the new point (the first stage of the next step, "first same as last") is then evaluated at the
+//! projected state, so a step costs 12 evaluations with or without projection.
+//!
+//! **Dense output** of order 7 (Hairer's `contd8`): on first request after a step, three extra
+//! stages are computed and the interpolant
+//!
+//!   y(t₀ + θh) = y₀ + θ(F₀ + (1−θ)(F₁ + θ(F₂ + (1−θ)(F₃ + θ(F₄ + (1−θ)(F₅ + θF₆))))))
+//!
+//! is formed, with F₀ = Δy, F₁ = h f₀ − Δy, F₂ = 2Δy − h(f₁ + f₀), F₃‥₆ = h Σ dᵢⱼ kⱼ. It passes
+//! through y₀ and the (projected) y₁ with the right slopes; with projection on, interpolated states
+//! are projected onto TS² as well.
+
+use super::dop853_tableau::{A, B, C, D, E3, E5, STAGES, STAGES_DENSE};
 use super::Stats;
-use crate::error::Result;
-use crate::model::Model;
-use crate::state::State;
-#[derive(Debug, Clone)]
-pub struct Dop853;
-impl Dop853 {
-    pub fn new(rtol: f64, atol: f64, project: bool, h_max: f64, h_init: Option<f64>) -> Result<Self> {
-        Ok(Dop853)
+use crate::error::{Error, Result};
+use crate::model::{acceleration, Model};
+use crate::state::{project_onto_tangent_bundle, State};
+use glam::DVec3;
+
+/// Smallest relative tolerance accepted: below ~10 ulp the error estimate is round-off.
+pub const RTOL_MIN: f64 = 1e-15;
+const SAFETY: f64 = 0.9;
+/// Largest step shrink (1/FAC_MIN) and growth (1/FAC_MAX) factors, as in dop853.f.
+const FAC_MIN: f64 = 0.333;
+const FAC_MAX: f64 = 6.0;
+const ERROR_EXPONENT: f64 = 1.0 / 8.0;
+
+/// A point of the first-order system: position and velocity, or their derivatives.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+struct Y6 {
+    x: DVec3,
+    v: DVec3,
+}
+
+impl Y6 {
+    #[inline]
+    fn axpy(self, a: f64, k: Y6) -> Y6 {
+        Y6 { x: self.x + k.x * a, v: self.v + k.v * a }
     }
+    #[inline]
+    fn sub(self, o: Y6) -> Y6 {
+        Y6 { x: self.x - o.x, v: self.v - o.v }
+    }
+    #[inline]
+    fn scale(self, a: f64) -> Y6 {
+        Y6 { x: self.x * a, v: self.v * a }
+    }
+    /// Σ (yᵢ/scaleᵢ)² over the six components.
+    #[inline]
+    fn scaled_norm2(self, scale: Y6) -> f64 {
+        let (x, v) = (self.x / scale.x, self.v / scale.v);
+        x.length_squared() + v.length_squared()
+    }
+}
+
+impl From<State> for Y6 {
+    fn from(s: State) -> Self {
+        Y6 { x: s.x, v: s.v }
+    }
+}
+
+/// The right-hand side of T-2.4: (ẋ, v̇).
+#[inline]
+fn rhs<M: Model>(model: &M, t: f64, y: Y6) -> Y6 {
+    Y6 { x: y.v, v: acceleration(model, t, y.x, y.v) }
+}
+
+/// Error weights atol + rtol·max(|a|, |b|), componentwise.
+#[inline]
+fn error_scale(atol: f64, rtol: f64, a: Y6, b: Y6) -> Y6 {
+    let s = |p: DVec3, q: DVec3| DVec3::splat(atol) + p.abs().max(q.abs()) * rtol;
+    Y6 { x: s(a.x, b.x), v: s(a.v, b.v) }
+}
+
+/// DOP853 with its step-size controller and the data of its last accepted step.
+#[derive(Debug, Clone)]
+pub struct Dop853 {
+    rtol: f64,
+    atol: f64,
+    project: bool,
+    h_max: f64,
+    h_init: Option<f64>,
+    /// Step size proposed for the next step (None before the first step and after `reset`).
+    h_next: Option<f64>,
+    /// f at the current point (first same as last), valid when `h_next` is set.
+    f_current: Y6,
+    /// Stages of the last accepted step (0‥11), f at its end (12), dense-output stages (13‥15).
+    k: [Y6; STAGES_DENSE],
+    t_old: f64,
+    h_old: f64,
+    y_old: Y6,
+    y_new: Y6,
+    /// Interpolant coefficients F₀‥F₆ of the last step, formed on first request.
+    dense: Option<[Y6; 7]>,
+    length: f64,
+}
+
+impl Dop853 {
+    /// A new integrator. `rtol` ∈ [1e-15, 1] and `atol` ≥ 0 [m and m/s] are the tolerances;
+    /// `h_max` [s] caps the step (∞ for none); `h_init` [s] is the first step (None: Hairer's guess).
+    pub fn new(rtol: f64, atol: f64, project: bool, h_max: f64, h_init: Option<f64>) -> Result<Self> {
+        if !(RTOL_MIN..=1.0).contains(&rtol) {
+            return Err(Error::InvalidParameter {
+                name: "rtol",
+                value: rtol,
+                allowed:
+                    "the relative tolerance rtol must be a number in [1e-15, 1] (float64 cannot resolve less)",
+            });
+        }
+        if !(atol >= 0.0 && atol.is_finite()) {
+            return Err(Error::InvalidParameter {
+                name: "atol",
+                value: atol,
+                allowed: "the absolute tolerance atol must be a finite number >= 0 (m and m/s)",
+            });
+        }
+        if h_max.is_nan() || h_max <= 0.0 {
+            return Err(Error::InvalidParameter {
+                name: "h_max",
+                value: h_max,
+                allowed: "the largest step h_max must be > 0 s (infinity for no limit)",
+            });
+        }
+        if let Some(h) = h_init {
+            if !(h > 0.0 && h.is_finite()) {
+                return Err(Error::InvalidParameter {
+                    name: "dt",
+                    value: h,
+                    allowed: "the initial step of dop853 must be a finite number > 0 s (or 0 for automatic)",
+                });
+            }
+        }
+        Ok(Self {
+            rtol,
+            atol,
+            project,
+            h_max,
+            h_init,
+            h_next: None,
+            f_current: Y6::default(),
+            k: [Y6::default(); STAGES_DENSE],
+            t_old: f64::NAN,
+            h_old: 0.0,
+            y_old: Y6::default(),
+            y_new: Y6::default(),
+            dense: None,
+            length: f64::NAN,
+        })
+    }
+
+    /// Forgets the step-size history (call when the state is replaced).
+    pub fn reset(&mut self) {
+        self.h_next = None;
+        self.dense = None;
+        self.t_old = f64::NAN;
+    }
+
+    /// The interval [t₀, t₁] [s] of the last accepted step (empty/NaN before the first step).
+    pub fn last_step_interval(&self) -> (f64, f64) {
+        (self.t_old, self.t_old + self.h_old)
+    }
+
+    /// Hairer's `hinit`: a first step from the sizes of y, f and an estimate of f'.
+    fn initial_step<M: Model>(&self, model: &M, t: f64, y: Y6, f0: Y6, span: f64, stats: &mut Stats) -> f64 {
+        let sk = error_scale(self.atol, self.rtol, y, y);
+        let (dnf, dny) = (f0.scaled_norm2(sk), y.scaled_norm2(sk));
+        let mut h = if dnf <= 1e-10 || dny <= 1e-10 { 1e-6 } else { (dny / dnf).sqrt() * 0.01 };
+        h = h.min(self.h_max).min(span);
+        let f1 = rhs(model, t + h, y.axpy(h, f0));
+        stats.rhs_evals += 1;
+        let der2 = f1.sub(f0).scaled_norm2(sk).sqrt() / h;
+        let der12 = der2.max(dnf.sqrt());
+        let h1 = if der12 <= 1e-15 { (h * 1e-3).max(1e-6) } else { (0.01 / der12).powf(ERROR_EXPONENT) };
+        (100.0 * h).min(h1).min(self.h_max).min(span)
+    }
+
+    /// One accepted step from (`t`, `s`), never past `t_stop` [s] (which may be +∞); rejected
+    /// attempts are counted in `stats`. Fails with [`Error::StepSizeUnderflow`] when the tolerance
+    /// cannot be met with a step above round-off of t (e.g. the solution became non-finite).
     pub fn step<M: Model>(
         &mut self,
         model: &M,
@@ -18,13 +200,202 @@ impl Dop853 {
         t_stop: f64,
         stats: &mut Stats,
     ) -> Result<()> {
-        unimplemented!()
+        let t0 = *t;
+        if t_stop.is_nan() || t_stop <= t0 {
+            return Err(Error::InvalidParameter {
+                name: "t_stop",
+                value: t_stop,
+                allowed: "dop853 steps forward only: the stop time must be later than the current time (s)",
+            });
+        }
+        self.length = model.params().length;
+        let y0 = Y6::from(*s);
+        let span = t_stop - t0;
+        let mut h = match self.h_next {
+            Some(h) => h,
+            None => {
+                self.f_current = rhs(model, t0, y0);
+                stats.rhs_evals += 1;
+                match self.h_init {
+                    Some(h) => h.min(self.h_max),
+                    None => self.initial_step(model, t0, y0, self.f_current, span, stats),
+                }
+            }
+        };
+        let mut rejected_last = false;
+        let k = &mut self.k;
+        k[0] = self.f_current;
+        loop {
+            h = h.min(self.h_max);
+            // Land on t_stop rather than leave a sliver (dop853.f: 1.01 h).
+            let last = t0 + 1.01 * h >= t_stop;
+            if last {
+                h = span;
+            }
+            let h_floor = 10.0 * (t0.abs().max(span.min(1.0)) * f64::EPSILON).max(f64::MIN_POSITIVE);
+            if h.is_nan() || h < h_floor {
+                return Err(Error::StepSizeUnderflow { t: t0, h, rtol: self.rtol, atol: self.atol });
+            }
+            for i in 1..STAGES {
+                let mut yi = y0;
+                for (j, &a) in A[i].iter().enumerate() {
+                    if a != 0.0 {
+                        yi = yi.axpy(h * a, k[j]);
+                    }
+                }
+                k[i] = rhs(model, t0 + C[i] * h, yi);
+            }
+            stats.rhs_evals += (STAGES - 1) as u64;
+            let (mut incr, mut e5, mut e3) = (Y6::default(), Y6::default(), Y6::default());
+            for i in 0..STAGES {
+                incr = incr.axpy(B[i], k[i]);
+                e5 = e5.axpy(E5[i], k[i]);
+                e3 = e3.axpy(E3[i], k[i]);
+            }
+            let y1 = y0.axpy(h, incr);
+            let sk = error_scale(self.atol, self.rtol, y0, y1);
+            let (n5, n3) = (e5.scaled_norm2(sk), e3.scaled_norm2(sk));
+            let err = if n5 == 0.0 && n3 == 0.0 { 0.0 } else { h * n5 / (6.0 * (n5 + 0.01 * n3)).sqrt() };
+            let fac11 = err.powf(ERROR_EXPONENT);
+            if err <= 1.0 {
+                // Accept.
+                let fac = (fac11 / SAFETY).clamp(1.0 / FAC_MAX, 1.0 / FAC_MIN);
+                let mut h_new = h / fac;
+                if rejected_last {
+                    h_new = h_new.min(h);
+                }
+                let t1 = if last { t_stop } else { t0 + h };
+                let y1 =
+                    if self.project {
+                        let p = project_onto_tangent_bundle(self.length, y1.x, y1.v)
+                            .ok_or(Error::Diverged { t: t1, method: "dop853", dt: h })?;
+                        Y6::from(p)
+                    } else {
+                        y1
+                    };
+                let f1 = rhs(model, t1, y1);
+                stats.rhs_evals += 1;
+                k[STAGES] = f1;
+                self.f_current = f1;
+                self.t_old = t0;
+                self.h_old = t1 - t0;
+                self.y_old = y0;
+                self.y_new = y1;
+                self.dense = None;
+                // Do not let a short landing step shrink the next proposal.
+                let keep = if last && !rejected_last { self.h_next } else { None };
+                self.h_next = Some(keep.map_or(h_new, |p| p.max(h_new)));
+                *t = t1;
+                *s = State { x: y1.x, v: y1.v };
+                stats.steps += 1;
+                return Ok(());
+            }
+            // Reject (err > 1, or NaN: f64::min ignores the NaN and the step shrinks by 1/FAC_MIN).
+            h /= (1.0 / FAC_MIN).min(fac11 / SAFETY);
+            rejected_last = true;
+            stats.rejected += 1;
+        }
     }
-    pub fn dense_output(&self, t_out: f64) -> State {
-        unimplemented!()
+
+    /// The state at `t_out` ∈ [t₀, t₁] [s] of the last accepted step, from the order-7 interpolant
+    /// (projected onto TS² when projection is on). Costs three evaluations on the first call per step.
+    pub fn dense_output<M: Model>(&mut self, model: &M, t_out: f64) -> State {
+        let h = self.h_old;
+        // The ends exactly, not up to the interpolant's round-off.
+        if t_out == self.t_old + h {
+            return State { x: self.y_new.x, v: self.y_new.v };
+        } else if t_out == self.t_old {
+            return State { x: self.y_old.x, v: self.y_old.v };
+        }
+        let dense = match self.dense {
+            Some(d) => d,
+            None => {
+                let d = self.interpolant(model);
+                self.dense = Some(d);
+                d
+            }
+        };
+        let th = if h > 0.0 { (t_out - self.t_old) / h } else { 0.0 };
+        let th1 = 1.0 - th;
+        let mut acc = dense[6];
+        for (i, f) in dense[..6].iter().enumerate().rev() {
+            acc = f.axpy(if i % 2 == 0 { th1 } else { th }, acc);
+        }
+        let y = self.y_old.axpy(th, acc);
+        if self.project {
+            if let Some(p) = project_onto_tangent_bundle(self.length, y.x, y.v) {
+                return p;
+            }
+        }
+        State { x: y.x, v: y.v }
     }
-    pub fn last_step_interval(&self) -> (f64, f64) {
-        unimplemented!()
+
+    /// Extra stages 13‥15 and the coefficients F₀‥F₆ (Hairer's `contd8`).
+    fn interpolant<M: Model>(&mut self, model: &M) -> [Y6; 7] {
+        let (h, t0, y0) = (self.h_old, self.t_old, self.y_old);
+        for i in STAGES + 1..STAGES_DENSE {
+            let mut yi = y0;
+            for (j, &a) in A[i].iter().enumerate() {
+                if a != 0.0 {
+                    yi = yi.axpy(h * a, self.k[j]);
+                }
+            }
+            self.k[i] = rhs(model, t0 + C[i] * h, yi);
+        }
+        let dy = self.y_new.sub(y0);
+        let (f0, f1) = (self.k[0], self.k[STAGES]);
+        let mut out = [Y6::default(); 7];
+        out[0] = dy;
+        out[1] = f0.scale(h).sub(dy);
+        out[2] = dy.scale(2.0).sub(f0.axpy(1.0, f1).scale(h));
+        for (r, drow) in D.iter().enumerate() {
+            let mut acc = Y6::default();
+            for (j, &d) in drow.iter().enumerate() {
+                if d != 0.0 {
+                    acc = acc.axpy(d, self.k[j]);
+                }
+            }
+            out[3 + r] = acc.scale(h);
+        }
+        out
     }
-    pub fn reset(&mut self) {}
+}
+
+#[cfg(test)]
+mod tests {
+    //! The tableau against the order conditions it must satisfy, so a transcription error fails.
+    use super::*;
+
+    #[test]
+    fn rows_sum_to_the_nodes() {
+        for i in (1..STAGES).chain(STAGES + 1..STAGES_DENSE) {
+            let sum: f64 = A[i].iter().sum();
+            assert!((sum - C[i]).abs() < 1e-14, "row {i}: {sum} vs c = {}", C[i]);
+        }
+    }
+
+    #[test]
+    fn weights_satisfy_the_quadrature_conditions_to_order_8() {
+        for q in 0..8 {
+            let s: f64 = B.iter().zip(C).map(|(b, c)| b * c.powi(q)).sum();
+            assert!((s - 1.0 / f64::from(q + 1)).abs() < 1e-13, "sum b c^{q} = {s}");
+        }
+        // A condition beyond the bushy trees: sum b_i a_ij c_j^6 = 1/56.
+        let s: f64 =
+            (0..STAGES).map(|i| B[i] * A[i].iter().zip(C).map(|(a, c)| a * c.powi(6)).sum::<f64>()).sum();
+        assert!((s - 1.0 / 56.0).abs() < 1e-13, "{s}");
+    }
+
+    #[test]
+    fn error_estimators_vanish_on_low_degree_quadrature() {
+        // e5 is the difference of two formulas of order >= 5: it integrates c^q exactly (gives 0) for q < 5.
+        for q in 0..5 {
+            let s: f64 = E5.iter().zip(C).map(|(e, c)| e * c.powi(q)).sum();
+            assert!(s.abs() < 1e-12, "sum e5 c^{q} = {s}");
+        }
+        for q in 0..3 {
+            let s: f64 = E3.iter().zip(C).map(|(e, c)| e * c.powi(q)).sum();
+            assert!(s.abs() < 1e-12, "sum e3 c^{q} = {s}");
+        }
+    }
 }

@@ -1,0 +1,136 @@
+//! DOP853 on its own: error proportional to the tolerance, dense output against stepping to the
+//! same time, projection onto TS², step-size control with a bad first step, and its input checks.
+//! Reference: the great circle of g = 0, x(t) = x₀ cos ωt + (v₀/ω) sin ωt with ω = |v₀|/l (SI units).
+
+mod common;
+
+use common::rosette;
+use pendulab_core::integrate::dop853::Dop853;
+use pendulab_core::{IdealPendulum, Method, Model, SolveOptions, State, Stats, Stepper};
+
+fn great_circle() -> (IdealPendulum, State, impl Fn(f64) -> State) {
+    let model = IdealPendulum::new(1.5, 1.0, 0.0).unwrap();
+    let s0 = State::from_angles(model.params(), 1.0, 0.5, 0.7, 1.3).unwrap();
+    let w = s0.v.length() / 1.5;
+    let exact = move |t: f64| State {
+        x: s0.x * (w * t).cos() + s0.v / w * (w * t).sin(),
+        v: s0.v * (w * t).cos() - s0.x * w * (w * t).sin(),
+    };
+    (model, s0, exact)
+}
+
+fn options(rtol: f64, project: bool) -> SolveOptions {
+    SolveOptions { method: Method::Dop853, dt: 0.0, rtol, atol: rtol * 1e-2, project }
+}
+
+#[test]
+fn global_error_follows_the_tolerance() {
+    let (model, s0, exact) = great_circle();
+    let mut last = f64::INFINITY;
+    for rtol in [1e-6, 1e-8, 1e-10, 1e-12, 1e-13] {
+        let mut st = Stepper::new(model, 0.0, s0, &options(rtol, false)).unwrap();
+        st.step_to(20.0).unwrap();
+        let err = (st.state().x - exact(20.0).x).length() / 1.5;
+        eprintln!(
+            "rtol {rtol:e}: error {err:e} after {} steps ({} rejected)",
+            st.stats().steps,
+            st.stats().rejected
+        );
+        // Tolerance proportionality: within a modest factor of rtol, and shrinking with it.
+        assert!(err < 50.0 * rtol.max(1e-14), "rtol {rtol:e}: error {err:e}");
+        assert!(err < last, "error did not decrease at rtol {rtol:e}");
+        last = err;
+    }
+}
+
+#[test]
+fn dense_output_agrees_with_stepping_to_the_same_time() {
+    let (model, s0) = rosette();
+    let opts = options(1e-12, true);
+    let mut a = Stepper::new(model, 0.0, s0, &opts).unwrap();
+    for _ in 0..40 {
+        a.step().unwrap();
+    }
+    let (t_end, s_end) = (a.t(), *a.state());
+    // The interpolant passes through the step's end point exactly.
+    let at_end = a.dense_output(t_end).unwrap();
+    assert_eq!(at_end, s_end);
+    let mut t_start = t_end;
+    // find the start of the last step: outside it there is no dense output
+    while a.dense_output(t_start - 1e-6).is_some() {
+        t_start -= 1e-6;
+    }
+    assert!(a.dense_output(t_end + 1e-9).is_none());
+    for frac in [0.1, 0.37, 0.5, 0.9] {
+        let t = t_start + frac * (t_end - t_start);
+        let dense = a.dense_output(t).unwrap();
+        let mut b = Stepper::new(model, 0.0, s0, &opts).unwrap();
+        b.step_to(t).unwrap();
+        let d = (dense.x - b.state().x).length().max((dense.v - b.state().v).length() / 3.13);
+        assert!(d < 1e-10, "dense output at t = {t} s off by {d:e}");
+        let r = dense.residuals(1.0);
+        assert!(r.length.abs() < 1e-14 && r.tangency.abs() < 1e-13, "{r:?}");
+    }
+}
+
+#[test]
+fn projection_keeps_the_state_on_ts2() {
+    let (model, s0) = rosette();
+    for project in [true, false] {
+        let mut st = Stepper::new(model, 0.0, s0, &options(1e-8, project)).unwrap();
+        st.step_to(200.0).unwrap();
+        let r = st.state().residuals(1.0);
+        eprintln!("project = {project}: |x| − l = {:e} m, x·v = {:e} m²/s", r.length, r.tangency);
+        if project {
+            assert!(r.length.abs() < 1e-14 && r.tangency.abs() < 1e-13);
+        } else {
+            // T-2.4 off TS² drifts: without projection the residual is visible above round-off.
+            assert!(r.length.abs() > 1e-12, "expected drift without projection, got {:e}", r.length);
+        }
+    }
+}
+
+#[test]
+fn a_far_too_large_first_step_is_rejected_and_recovered() {
+    let (model, s0, exact) = great_circle();
+    let opts = SolveOptions { dt: 5.0, ..options(1e-11, false) };
+    let mut st = Stepper::new(model, 0.0, s0, &opts).unwrap();
+    st.step_to(10.0).unwrap();
+    assert!(st.stats().rejected > 0, "a 5 s first step should be rejected");
+    let err = (st.state().x - exact(10.0).x).length() / 1.5;
+    assert!(err < 1e-9, "{err:e}");
+    // 12 evaluations per accepted step (11 stages and f at the new point, first same as last),
+    // 11 per rejected one, plus f at the start.
+    let s = st.stats();
+    assert_eq!(s.rhs_evals, 12 * s.steps + 11 * s.rejected + 1, "{s:?}");
+}
+
+#[test]
+fn lands_exactly_on_the_stop_time() {
+    let (model, s0) = rosette();
+    let mut d = Dop853::new(1e-10, 1e-12, true, f64::INFINITY, None).unwrap();
+    let (mut t, mut s, mut stats) = (0.0, s0, Stats::default());
+    while t < 0.7 {
+        d.step(&model, &mut t, &mut s, 0.7, &mut stats).unwrap();
+    }
+    assert_eq!(t, 0.7);
+    let e = d.step(&model, &mut t, &mut s, 0.7, &mut stats).unwrap_err().to_string();
+    assert!(e.contains("t_stop"), "{e}");
+}
+
+#[test]
+fn rejects_bad_tolerances_by_name() {
+    for (rtol, atol, name) in [
+        (0.0, 1e-12, "rtol"),
+        (1e-16, 1e-12, "rtol"),
+        (f64::NAN, 1e-12, "rtol"),
+        (2.0, 1e-12, "rtol"),
+        (1e-10, -1.0, "atol"),
+        (1e-10, f64::INFINITY, "atol"),
+    ] {
+        let e = Dop853::new(rtol, atol, true, f64::INFINITY, None).unwrap_err().to_string();
+        assert!(e.contains(name), "rtol {rtol}, atol {atol}: {e}");
+    }
+    assert!(Dop853::new(1e-10, 0.0, true, 0.0, None).unwrap_err().to_string().contains("h_max"));
+    assert!(Dop853::new(1e-10, 0.0, true, 1.0, Some(-1.0)).unwrap_err().to_string().contains("dt"));
+}
