@@ -12,7 +12,7 @@ measured from the downward vertical. Quick start::
 
 from ._core import IntegrationError, InvalidInputError, __version__
 from .model import Pendulum, State
-from .scenario import Scenario, load_scenario
+from .scenario import Scenario, ScenarioError, load_scenario
 from .simulate import Stepper, method_names, methods, simulate
 from .trajectory import Trajectory
 
@@ -21,6 +21,7 @@ __all__ = [
     "InvalidInputError",
     "Pendulum",
     "Scenario",
+    "ScenarioError",
     "State",
     "Stepper",
     "Trajectory",
