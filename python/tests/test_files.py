@@ -66,3 +66,16 @@ def test_writes_are_atomic(
         io.write_csv(trajectory, target)
     assert target.read_text() == "old contents"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["out.csv"]
+
+
+def test_written_files_get_the_usual_permissions(trajectory: pl.Trajectory, tmp_path: Path) -> None:
+    """Atomic writes must not leave files readable only by their owner (mkstemp's 0600)."""
+    import os
+
+    umask = os.umask(0o022)
+    try:
+        target = tmp_path / "out.csv"
+        trajectory.save(target)
+        assert target.stat().st_mode & 0o777 == 0o644
+    finally:
+        os.umask(umask)

@@ -1,0 +1,317 @@
+"""The ``pendulab`` command: run scenario files, list the integrators, validate and list scenarios.
+
+Units are SI throughout: --dt and --t-end in s, --atol in m and m/s. Exit codes: 0 success; 2 a
+user error (bad scenario file, option, output path), reported as one line ``error: …`` on stderr
+without a traceback; 130 interrupted by Ctrl-C (``run`` still writes what was computed). The
+commands and options are described in ``docs/cli.md``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import sys
+import warnings
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Annotated, NoReturn
+
+import typer
+
+from . import _core, io
+from .scenario import Scenario, ScenarioError, load_scenario
+from .simulate import methods as method_table
+
+EXIT_USER_ERROR = 2
+EXIT_INTERRUPTED = 130
+
+_USER_ERRORS = (ScenarioError, _core.InvalidInputError, _core.IntegrationError, OSError, ImportError)
+
+app = typer.Typer(
+    name="pendulab",
+    help="Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up.",
+    epilog="Scenario files: docs/scenarios.md. This command: docs/cli.md. "
+    "Exit codes: 0 ok, 2 user error, 130 interrupted (Ctrl-C).",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+
+def _say(message: str, *, err: bool = False) -> None:
+    typer.echo(message, err=err)
+
+
+def _fail(message: str, code: int = EXIT_USER_ERROR) -> NoReturn:
+    _say(f"error: {message}", err=True)
+    raise typer.Exit(code)
+
+
+def _describe(e: BaseException) -> str:
+    """One line for a user error (no traceback)."""
+    if isinstance(e, OSError) and e.strerror:
+        where = e.filename if e.filename is not None else ""
+        return f"{where}: {e.strerror}" if where else e.strerror
+    return " ".join(str(e).split()) or type(e).__name__
+
+
+@contextlib.contextmanager
+def _user_errors() -> Iterator[None]:
+    """Turns user errors into ``error: …`` and exit code 2, Ctrl-C into exit code 130."""
+    try:
+        yield
+    except _USER_ERRORS as e:
+        _fail(_describe(e))
+    except KeyboardInterrupt:
+        _fail("interrupted (Ctrl-C)", EXIT_INTERRUPTED)
+
+
+def _version(value: bool) -> None:
+    if value:
+        _say(f"pendulab {_core.__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: Annotated[
+        bool,
+        typer.Option("--version", help="Print the version and exit.", is_eager=True, callback=_version),
+    ] = False,
+) -> None:
+    """Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up."""
+
+
+def _check_output(out: Path) -> None:
+    """Everything about --out that can be checked before the run: suffix, writer, directory."""
+    try:
+        fmt = io.format_of(out)
+    except ValueError as e:
+        _fail(str(e))
+    if fmt == "parquet":
+        io._require("pyarrow")
+    elif fmt == "netcdf":
+        io._require("xarray")
+        io._require("scipy")
+    if out.is_dir():
+        _fail(f"--out {str(out)!r} is a directory; give a file name ending in .csv, .parquet or .nc")
+    parent = out.resolve().parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+        _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")
+
+
+def _settings(sc: Scenario) -> str:
+    sim = sc.spec.simulation
+    step = f"dt = {sim.dt:g} s" if sim.dt is not None else "dt = default"
+    if sim.is_adaptive():
+        rtol, atol = sim.resolved_tolerances()
+        step = f"rtol = {rtol:g}, atol = {atol:g}" + (f", initial dt = {sim.dt:g} s" if sim.dt else "")
+    elif sim.dt is None:
+        step = f"dt = {sim.resolved_dt():g} s"
+    n = sc.expected_samples()
+    saved = f"{n} samples" if n is not None else f"every {sim.save_every or 1}-th step"
+    return f"{sim.method}, {step}, t = {sim.t0:g} .. {sim.t_end:g} s, saving {saved}"
+
+
+@app.command(short_help="Run a scenario file; print a summary, write the trajectory.")
+def run(
+    scenario: Annotated[
+        Path,
+        typer.Argument(
+            metavar="SCENARIO", help="Scenario file (TOML); see docs/scenarios.md.", show_default=False
+        ),
+    ],
+    out: Annotated[
+        Path | None,
+        typer.Option(
+            "--out",
+            "-o",
+            help="Write the trajectory to this file; the format comes from the suffix: "
+            ".csv, .parquet or .nc. Checked before the run.",
+            show_default=False,
+        ),
+    ] = None,
+    method: Annotated[
+        str | None,
+        typer.Option(
+            help="Integrator (see `pendulab methods`); replaces the file's method.", show_default=False
+        ),
+    ] = None,
+    dt: Annotated[
+        float | None, typer.Option(help="Step size in s (> 0); replaces the file's dt.", show_default=False)
+    ] = None,
+    t_end: Annotated[
+        float | None,
+        typer.Option("--t-end", help="End time in s; replaces the file's t_end.", show_default=False),
+    ] = None,
+    save_every: Annotated[
+        int | None,
+        typer.Option(
+            "--save-every",
+            help="Keep every N-th step (N >= 1) and the first and last state; replaces save_every/save_at.",
+            show_default=False,
+        ),
+    ] = None,
+    rtol: Annotated[
+        float | None,
+        typer.Option(help="Relative tolerance of adaptive methods (dop853).", show_default=False),
+    ] = None,
+    atol: Annotated[
+        float | None,
+        typer.Option(help="Absolute tolerance of adaptive methods, in m and m/s.", show_default=False),
+    ] = None,
+    progress: Annotated[
+        bool | None,
+        typer.Option(
+            "--progress/--no-progress",
+            help="Show a progress bar on stderr (default: only for runs of more than 5 million steps).",
+            show_default=False,
+        ),
+    ] = None,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
+) -> None:
+    """Run a scenario: print a summary (energy, J3 and constraint errors) and optionally write the
+    trajectory. Ctrl-C stops the run, writes what was computed and exits with code 130."""
+    with _user_errors():
+        if out is not None:
+            _check_output(out)
+        sc = load_scenario(scenario).with_overrides(
+            method=method, dt=dt, t_end=t_end, save_every=save_every, rtol=rtol, atol=atol
+        )
+        projection = sc.initial_state().projection
+        if not quiet:
+            _say(f"running {scenario}" + (f": {sc.title}" if sc.title else ""), err=True)
+            _say(f"  {_settings(sc)}", err=True)
+            if projection is not None:
+                _say(
+                    f"  projected the start onto TS²: moved x by {projection[0]:.3g} m, "
+                    f"v by {projection[1]:.3g} m/s",
+                    err=True,
+                )
+        with warnings.catch_warnings():
+            # The interruption is reported below, from Trajectory.interrupted.
+            warnings.filterwarnings("ignore", message="simulation interrupted", category=RuntimeWarning)
+            tr = sc.run(progress=progress)
+        if not quiet:
+            _say(tr.summary())
+        if out is not None:
+            tr.save(out)
+            if not quiet:
+                _say(f"wrote {out} ({len(tr)} samples)")
+    if tr.interrupted:
+        written = (
+            f"wrote the {len(tr)} samples computed so far to {out}" if out is not None else "nothing written"
+        )
+        _say(f"interrupted (Ctrl-C) at t = {tr.t[-1]:g} s; {written}", err=True)
+        raise typer.Exit(EXIT_INTERRUPTED)
+
+
+def _mark(flag: bool) -> str:
+    return "yes" if flag else "-"
+
+
+@app.command(short_help="List the integrators with order and properties.")
+def methods(
+    as_json: Annotated[
+        bool, typer.Option("--json", help="Print the table as JSON (a list of objects).")
+    ] = False,
+) -> None:
+    """List the integrators with their order and structural properties."""
+    table = method_table()
+    if as_json:
+        _say(json.dumps(table, indent=2))
+        return
+    header = ("name", "order", "symplectic", "keeps TS2", "keeps J3", "adaptive", "dense", "summary")
+    rows = [
+        (
+            m["name"] + (" (default)" if m["default"] else ""),
+            str(m["order"]),
+            _mark(m["symplectic"]),
+            _mark(m["preserves_ts2"]),
+            _mark(m["preserves_j3"]),
+            _mark(m["adaptive"]),
+            _mark(m["dense_output"]),
+            m["summary"],
+        )
+        for m in table
+    ]
+    widths = [max(len(r[k]) for r in (header, *rows)) for k in range(len(header) - 1)]
+    for r in (header, *rows):
+        _say("  ".join(c.ljust(w) for c, w in zip(r, widths, strict=False)) + "  " + r[-1])
+
+
+@app.command(short_help="Check scenario files without running them.")
+def validate(
+    scenarios: Annotated[
+        list[Path],
+        typer.Argument(metavar="SCENARIO", help="Scenario files (TOML) to check.", show_default=False),
+    ],
+) -> None:
+    """Check scenario files without running them: print OK or every problem; exit code 2 if any is bad."""
+    bad = 0
+    for path in scenarios:
+        try:
+            sc = load_scenario(path)
+        except ScenarioError as e:
+            bad += 1
+            for problem in e.problems:
+                _say(f"error: {e.location}: {problem}", err=True)
+        except OSError as e:
+            bad += 1
+            _say(f"error: {_describe(e)}", err=True)
+        else:
+            _say(f"{path}: OK" + (f" ({sc.title})" if sc.title else ""))
+    if bad:
+        raise typer.Exit(EXIT_USER_ERROR)
+
+
+def scenario_dirs() -> list[Path]:
+    """Where the example scenarios are looked for: ./examples/scenarios, then the source tree's."""
+    candidates = [
+        Path.cwd() / "examples" / "scenarios",
+        Path(__file__).resolve().parents[2] / "examples" / "scenarios",
+    ]
+    found: list[Path] = []
+    for d in candidates:
+        if d.is_dir() and d.resolve() not in found:
+            found.append(d.resolve())
+    return found
+
+
+@app.command(short_help="List the example scenarios with their titles.")
+def scenarios() -> None:
+    """List the example scenarios shipped in examples/scenarios, with their titles."""
+    dirs = scenario_dirs()
+    files = {f.stem: f for d in reversed(dirs) for f in sorted(d.glob("*.toml"))}
+    if not files:
+        _fail(
+            "no example scenarios found: looked for examples/scenarios in the current directory "
+            "and beside the package"
+        )
+    width = max(map(len, files))
+    for name, path in sorted(files.items()):
+        try:
+            title = load_scenario(path).title or ""
+        except (ScenarioError, OSError) as e:
+            title = f"INVALID: {_describe(e)}"
+        _say(f"{name.ljust(width)}  {title}  ({_display(path)})")
+
+
+def _display(path: Path) -> str:
+    with contextlib.suppress(ValueError):
+        return str(path.relative_to(Path.cwd()))
+    return str(path)
+
+
+def main() -> None:
+    """Entry point of the ``pendulab`` script."""
+    app(prog_name="pendulab")
+
+
+if __name__ == "__main__":  # pragma: no cover - `python -m pendulab.cli`
+    sys.exit(main())
