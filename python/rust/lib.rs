@@ -30,9 +30,10 @@ create_exception!(
 
 fn to_py(err: Error) -> PyErr {
     match err {
-        Error::PoleSingularity { .. } | Error::Diverged { .. } | Error::StepSizeUnderflow { .. } => {
-            IntegrationError::new_err(err.to_string())
-        }
+        Error::PoleSingularity { .. }
+        | Error::ReducedFlowPole { .. }
+        | Error::Diverged { .. }
+        | Error::StepSizeUnderflow { .. } => IntegrationError::new_err(err.to_string()),
         _ => InvalidInputError::new_err(err.to_string()),
     }
 }

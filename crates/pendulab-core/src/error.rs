@@ -100,6 +100,17 @@ pub enum Error {
         /// The limit [bytes].
         limit: u64,
     },
+    /// The reduced flow with reconstruction (T-3.4, T-3.6) came too close to a pole.
+    #[error(
+        "the reduced flow reached a pole at t = {t} s (σ₁ = z/l = {sigma1}), where the reconstruction \
+         φ̇ = J₃/(m(l² − z²)) is singular; use the exact solution or a Cartesian integrator there"
+    )]
+    ReducedFlowPole {
+        /// Time [s].
+        t: f64,
+        /// σ₁ = z/l at that time.
+        sigma1: f64,
+    },
     /// The save times are not usable.
     #[error("invalid save times: {reason}")]
     InvalidSaveTimes {

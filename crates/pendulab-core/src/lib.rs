@@ -19,11 +19,15 @@
 //! - [`integrate`]: the integrators and their registry [`Method`].
 //! - [`stepper`]: incremental integration (init / step / state).
 //! - [`solve`]: batch solving with saving rules, chunked for progress and cancellation.
+//! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
+//! - [`quadrature`]: adaptive Gauss–Kronrod quadrature.
 //! - [`error`]: the error type.
 
 pub mod error;
 pub mod integrate;
 pub mod model;
+pub mod quadrature;
+pub mod reduce;
 pub mod solve;
 pub mod state;
 pub mod stepper;
