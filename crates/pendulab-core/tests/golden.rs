@@ -62,13 +62,13 @@ fn relative_error(model: &IdealPendulum, a: &State, b: &State) -> f64 {
     ((a.x - b.x).length() / p.length).max((a.v - b.v).length() / (p.length * p.omega0() + b.v.length()))
 }
 
-fn check(method: Method, dt: f64, horizon: impl Fn(&str) -> f64) {
+fn check(method: Method, dt: f64, rtol: f64, horizon: impl Fn(&str) -> f64) {
     let cases = load();
     assert!(cases.len() >= 6, "expected the six scenarios and more, found {}", cases.len());
     for case in cases {
         let t_max = horizon(&case.name);
         let samples: Vec<_> = case.samples.iter().filter(|s| s.0 <= t_max).collect();
-        let opts = SolveOptions { method, dt, rtol: 1e-13, atol: 1e-15, project: true };
+        let opts = SolveOptions { method, dt, rtol, atol: rtol * 1e-2, project: true };
         let times: Vec<f64> = samples.iter().map(|s| s.0).collect();
         let t_end = *times.last().unwrap();
         let mut solver = Solver::new(
@@ -112,10 +112,23 @@ fn check(method: Method, dt: f64, horizon: impl Fn(&str) -> f64) {
 /// whose energy error is bounded, meets the bound at t = 100 s (1.2e-10).
 #[test]
 fn dop853_matches_the_exact_solution() {
-    check(Method::Dop853, 0.0, |name| if name == "near_top" { 10.0 } else { 100.0 });
+    check(Method::Dop853, 0.0, 1e-13, |name| if name == "near_top" { 10.0 } else { 100.0 });
+}
+
+/// The engine issue's own figure: rtol 1e-12, error ≤ 1e-9 at t = 100 s, met by five of the seven
+/// scenarios. The two whose energy is close to the separatrix value m g l are checked for a shorter
+/// time, for the reason above: `near_top` to t = 1 s (4e-9 at 10 s) and `planar_large` (a swing to
+/// 150°, m = 0.93, ∂T/∂E large) to t = 10 s (4e-9 at 100 s; 2.4e-10 at rtol 1e-13, tested above).
+#[test]
+fn dop853_at_rtol_1e12_matches_the_exact_solution() {
+    check(Method::Dop853, 0.0, 1e-12, |name| match name {
+        "near_top" => 1.0,
+        "planar_large" => 10.0,
+        _ => 100.0,
+    });
 }
 
 #[test]
 fn rattle8_matches_the_exact_solution() {
-    check(Method::Rattle8, 2e-3, |_| 100.0);
+    check(Method::Rattle8, 2e-3, 1e-13, |_| 100.0);
 }
