@@ -115,15 +115,16 @@ fn dop853_matches_the_exact_solution() {
     check(Method::Dop853, 0.0, 1e-13, |name| if name == "near_top" { 10.0 } else { 100.0 });
 }
 
-/// The engine issue's own figure: rtol 1e-12, error ≤ 1e-9 at t = 100 s, met by five of the seven
-/// scenarios. The two whose energy is close to the separatrix value m g l are checked for a shorter
-/// time, for the reason above: `near_top` to t = 1 s (4e-9 at 10 s) and `planar_large` (a swing to
-/// 150°, m = 0.93, ∂T/∂E large) to t = 10 s (4e-9 at 100 s; 2.4e-10 at rtol 1e-13, tested above).
+/// The engine issue's own figure: rtol 1e-12, error ≤ 1e-9 at t = 100 s, met by five of the eight
+/// scenarios. Three are checked for a shorter time because DOP853's energy error, which grows
+/// linearly, becomes a phase error that grows with ∂T/∂E (large near the separatrix): `near_top` to
+/// t = 1 s (4e-9 at 10 s), `planar_large` (a swing to 150°, m = 0.93) and `over_the_top` (ε = 2.4,
+/// m = 0.59) to t = 10 s (4e-9 and 3e-9 at 100 s; 2.4e-10 and 2.3e-10 at rtol 1e-13, tested above).
 #[test]
 fn dop853_at_rtol_1e12_matches_the_exact_solution() {
     check(Method::Dop853, 0.0, 1e-12, |name| match name {
         "near_top" => 1.0,
-        "planar_large" => 10.0,
+        "planar_large" | "over_the_top" => 10.0,
         _ => 100.0,
     });
 }
