@@ -3,6 +3,8 @@
 //!
 //! Units are SI throughout (m, kg, s, rad). Arrays of 3-vectors are float64 with shape (N, 3).
 
+mod exact;
+
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pendulab_core::model::{energy, j3, tension};
@@ -28,7 +30,7 @@ create_exception!(
     "The integration could not continue (diverged, pole, step underflow)."
 );
 
-fn to_py(err: Error) -> PyErr {
+pub(crate) fn to_py(err: Error) -> PyErr {
     match err {
         Error::PoleSingularity { .. }
         | Error::ReducedFlowPole { .. }
@@ -38,7 +40,7 @@ fn to_py(err: Error) -> PyErr {
     }
 }
 
-fn vec3(name: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<DVec3> {
+pub(crate) fn vec3(name: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<DVec3> {
     let a = a.as_array();
     if a.len() != 3 {
         return Err(InvalidInputError::new_err(format!(
@@ -49,7 +51,7 @@ fn vec3(name: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<DVec3> {
     Ok(DVec3::new(a[0], a[1], a[2]))
 }
 
-fn model(length: f64, mass: f64, g: f64) -> PyResult<IdealPendulum> {
+pub(crate) fn model(length: f64, mass: f64, g: f64) -> PyResult<IdealPendulum> {
     IdealPendulum::new(length, mass, g).map_err(to_py)
 }
 
@@ -366,6 +368,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(diagnostics, m)?)?;
     m.add_class::<Solver_>()?;
     m.add_class::<Stepper_>()?;
+    exact::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -19,11 +19,15 @@
 //! - [`integrate`]: the integrators and their registry [`Method`].
 //! - [`stepper`]: incremental integration (init / step / state).
 //! - [`solve`]: batch solving with saving rules, chunked for progress and cancellation.
+//! - [`exact`]: the exact solution by elliptic functions (§4), phases (§5), energy–momentum map (T-6.4).
 //! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
 //! - [`quadrature`]: adaptive Gauss–Kronrod quadrature.
 //! - [`error`]: the error type.
 
+/// Elliptic integrals (Legendre, via Carlson) and Jacobi elliptic functions for the exact solution.
+pub mod elliptic;
 pub mod error;
+pub mod exact;
 pub mod integrate;
 pub mod model;
 pub mod quadrature;
