@@ -12,7 +12,7 @@ $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet "maturin>=1.7,<2" "numpy>=1.26" "typer>=0.12" "tqdm>=4.66" "pydantic>=2.6" \
-		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "scipy>=1.11" "pyarrow>=15" "xarray>=2024.1"
+		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "scipy>=1.11" "pyarrow>=15" "xarray>=2024.1" "matplotlib>=3.8"
 	touch $@
 
 venv: $(VENV)/.deps

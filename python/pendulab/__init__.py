@@ -8,26 +8,43 @@ measured from the downward vertical. Quick start::
     s0 = p.state_from_angles(theta=np.radians(60), phi=0.0, theta_dot=0.0, phi_dot=2.0)
     tr = pl.simulate(p, s0, t_end=100.0, method="rattle", dt=1e-3, save_every=10)
     print(tr.summary())
+    sol = pl.exact(p, s0)               # the exact solution (THEORY §4): sol.state(t), sol.phases()
+
+Plots (matplotlib, optional): ``pendulab.plot``.
 """
 
 from ._core import IntegrationError, InvalidInputError, __version__
+from .advance import MeasuredAdvance, measured_azimuth_advance
+from .em_map import EMMap, em_map
+from .exact import ExactSolution, Phases, exact
 from .model import Pendulum, State
+from .reduce import Reduced, reduce, reduced_flow
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulate import Stepper, method_names, methods, simulate
 from .trajectory import Trajectory
 
 __all__ = [
+    "EMMap",
+    "ExactSolution",
     "IntegrationError",
     "InvalidInputError",
+    "MeasuredAdvance",
     "Pendulum",
+    "Phases",
+    "Reduced",
     "Scenario",
     "ScenarioError",
     "State",
     "Stepper",
     "Trajectory",
     "__version__",
+    "em_map",
+    "exact",
     "load_scenario",
+    "measured_azimuth_advance",
     "method_names",
     "methods",
+    "reduce",
+    "reduced_flow",
     "simulate",
 ]

@@ -1,4 +1,5 @@
-"""The ``pendulab`` command: run scenario files, list the integrators, validate and list scenarios.
+"""The ``pendulab`` command: run scenario files, list the integrators, validate and list scenarios;
+the exact solution's commands (exact, phases, em-map, reduced) are in :mod:`pendulab.cli_exact`.
 
 Units are SI throughout: --dt and --t-end in s, --atol in m and m/s. Exit codes: 0 success; 2 a
 user error (bad scenario file, option, output path), reported as one line ``error: …`` on stderr
@@ -308,10 +309,17 @@ def _display(path: Path) -> str:
     return str(path)
 
 
+# The commands of the exact solution (exact, phases, em-map, reduced) live in their own module.
+from . import cli_exact  # noqa: E402, F401
+
+
 def main() -> None:
     """Entry point of the ``pendulab`` script."""
     app(prog_name="pendulab")
 
 
 if __name__ == "__main__":  # pragma: no cover - `python -m pendulab.cli`
-    sys.exit(main())
+    # Run the imported module's app: cli_exact registers its commands there, not on this __main__ copy.
+    from pendulab.cli import main as _main
+
+    sys.exit(_main())

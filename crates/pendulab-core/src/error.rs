@@ -111,6 +111,32 @@ pub enum Error {
         /// σ₁ = z/l at that time.
         sigma1: f64,
     },
+    /// An unknown model name.
+    #[error("unknown model {name:?}; available: {available}")]
+    UnknownModel {
+        /// The name that was asked for.
+        name: String,
+        /// The registered names.
+        available: String,
+    },
+    /// A parameter the model does not have.
+    #[error("the '{model}' model has no parameter {name:?}; its parameters: length, mass, g, {available}")]
+    UnknownParameter {
+        /// Model name.
+        model: &'static str,
+        /// The unknown key.
+        name: String,
+        /// The model's own parameters.
+        available: String,
+    },
+    /// A method that cannot integrate this model.
+    #[error("method '{method}' cannot integrate the '{model}' model (it supports only the ideal pendulum); use 'rattle' or 'dop853'")]
+    UnsupportedModel {
+        /// Method name.
+        method: &'static str,
+        /// Model name.
+        model: &'static str,
+    },
     /// The save times are not usable.
     #[error("invalid save times: {reason}")]
     InvalidSaveTimes {

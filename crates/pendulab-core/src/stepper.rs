@@ -88,6 +88,9 @@ impl<M: Model> Stepper<M> {
             });
         }
         let info = options.method.info();
+        if options.method == Method::Rk4Angles && !model.is_ideal() {
+            return Err(Error::UnsupportedModel { method: info.name, model: model.name() });
+        }
         let scheme = match options.method {
             Method::Rk4 => Scheme::Rk4(Rk4),
             Method::Rattle => Scheme::Rattle(Rattle::default()),

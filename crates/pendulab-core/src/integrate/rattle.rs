@@ -17,6 +17,10 @@
 //! Properties: order 2, symmetric, symplectic on T*S² for conservative f; |x| = l and x·v = 0
 //! hold to round-off after every step (each step re-imposes them, so errors do not accumulate);
 //! J₃ is conserved exactly for axisymmetric f (all forces lie in the plane of e₃ and x).
+//!
+//! Velocity-dependent forces (damping, drag, Coriolis) are not kicked: the model gives their exact
+//! flow at fixed x ([`Model::velocity_flow`]), applied for h/2 before and after the step (Strang
+//! splitting; second order, conformal symplectic for linear damping).
 
 use super::FixedStep;
 use crate::error::{Error, Result};
@@ -54,9 +58,13 @@ impl Rattle {
         // 1/l² is a loop invariant the compiler hoists out of a stepping loop: one division fewer
         // on each step's dependency chain.
         let inv_l2 = 1.0 / (l * l);
-        let (x0, v0) = (s.x, s.v);
         let half = 0.5 * h;
-        let kick0 = model.applied_acceleration(t, x0, v0) * half;
+        if model.has_velocity_forces() {
+            // Strang splitting: the exact velocity flow for h/2 on either side (see model::extended).
+            s.v = model.velocity_flow(s.x, s.v, half);
+        }
+        let (x0, v0) = (s.x, s.v);
+        let kick0 = model.kick_acceleration(t, x0) * half;
         let w = v0 + kick0;
         // b = a·x₀ and c = |a|² − l² for a = x₀ + h w, expanded so that the large terms l² cancel
         // exactly and the small ones keep their relative precision even for tiny h.
@@ -74,13 +82,16 @@ impl Rattle {
         let mu = -c / (h * (b + disc.sqrt()));
         let v_half = w + x0 * mu;
         let x1 = compensated_add(x0, v_half * h, &mut self.comp_x);
-        let kick1 = model.applied_acceleration(t + h, x1, v_half) * half;
+        let kick1 = model.kick_acceleration(t + h, x1) * half;
         let u = v_half + kick1;
         // v₁ = u − x₁ (x₁·u)/l², written as the increment Δv = v₁ − v₀ (|x₁|² = l² to round-off, so
         // x₁·v₁ = (x₁·u)(1 − |x₁|²/l²) is round-off of an O(h) quantity).
         let dv = kick0 + x0 * mu + kick1 - x1 * (x1.dot(u) * inv_l2);
         s.x = x1;
         s.v = compensated_add(v0, dv, &mut self.comp_v);
+        if model.has_velocity_forces() {
+            s.v = model.velocity_flow(s.x, s.v, half);
+        }
         true
     }
 }

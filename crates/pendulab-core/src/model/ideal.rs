@@ -62,6 +62,9 @@ impl Model for IdealPendulum {
     fn is_axisymmetric(&self) -> bool {
         true
     }
+    fn is_ideal(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]

@@ -9,10 +9,17 @@
 //!   extended off TS² (TS² is invariant but unstable, so unprojected methods drift away).
 //! - T-2.3 Rod tension T = −m λ l = m(|v|² + x·f)/l [N], positive when the rod pulls.
 //! - T-2.6 Energy E = m(½|v|² + V(x)) [J] and vertical angular momentum J₃ = m (x × v)·e₃ [kg m²/s].
+//!
+//! Models: [`IdealPendulum`] (§2) and [`Extended`] (damping, drag, periodic force, any gravity
+//! direction, rotating frame; §7). The registry of names and parameters is [`registry`].
 
+pub mod extended;
 pub mod ideal;
+pub mod registry;
 
+pub use extended::Extended;
 pub use ideal::IdealPendulum;
+pub use registry::AnyModel;
 
 use crate::state::{Params, State};
 use glam::DVec3;
@@ -31,6 +38,30 @@ pub trait Model: Send + Sync {
     fn is_conservative(&self) -> bool;
     /// True when f commutes with rotations about e₃, so that J₃ is conserved.
     fn is_axisymmetric(&self) -> bool;
+    /// True only for the ideal pendulum (the angle form T-2.5 exists only for it).
+    fn is_ideal(&self) -> bool {
+        false
+    }
+    /// The part of f that depends on (t, x) only: what RATTLE kicks with. The rest of f, if any,
+    /// must be given by [`Model::velocity_flow`]. Default: f(t, x, 0).
+    #[inline(always)]
+    fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {
+        self.applied_acceleration(t, x, DVec3::ZERO)
+    }
+    /// True when f depends on v; then [`Model::velocity_flow`] must be its exact flow.
+    fn has_velocity_forces(&self) -> bool {
+        false
+    }
+    /// The exact flow over `h` [s] of v̇ = P(x)(f(t, x, v) − kick) at fixed x, taking tangent
+    /// vectors to tangent vectors (used by RATTLE's Strang splitting). Default: identity.
+    #[inline(always)]
+    fn velocity_flow(&self, _x: DVec3, v: DVec3, _h: f64) -> DVec3 {
+        v
+    }
+    /// Power per unit mass of the non-conservative forces at (t, x, v) [W/kg]: dE/dt = m·this.
+    fn power_per_mass(&self, _t: f64, _x: DVec3, _v: DVec3) -> f64 {
+        0.0
+    }
 }
 
 /// The rod's multiplier λ [1/s²] of T-2.2 for applied acceleration `f`.

@@ -1,0 +1,262 @@
+//! The model registry: every model's name, parameters with units, defaults and limits, and one
+//! builder from named values — what Python, scenario files, the CLI (`pendulab models`) and the web
+//! lab's controls are generated from. All models share length l [m], mass m [kg] and gravity g
+//! [m/s²]; the extra parameters switch on the terms of [`Extended`] (THEORY.md §7).
+
+use super::{Extended, IdealPendulum, Model};
+use crate::error::{Error, Result};
+use crate::state::{Params, State};
+use glam::DVec3;
+
+/// One parameter of a model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ParamSpec {
+    /// Key in Python, TOML and JSON.
+    pub name: &'static str,
+    /// SI unit.
+    pub unit: &'static str,
+    /// Default value.
+    pub default: f64,
+    /// Smallest allowed value (−∞ for none).
+    pub min: f64,
+    /// Largest allowed value (+∞ for none).
+    pub max: f64,
+    /// What it is.
+    pub description: &'static str,
+    /// The allowed values, in words.
+    pub allowed: &'static str,
+}
+
+/// A registered model.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ModelSpec {
+    /// Registry name.
+    pub name: &'static str,
+    /// One line.
+    pub summary: &'static str,
+    /// Its parameters beyond length, mass and g.
+    pub params: &'static [ParamSpec],
+}
+
+const INF: f64 = f64::INFINITY;
+
+const fn p(
+    name: &'static str,
+    unit: &'static str,
+    default: f64,
+    min: f64,
+    description: &'static str,
+) -> ParamSpec {
+    let allowed = if min == 0.0 { "a finite number >= 0" } else { "a finite number" };
+    ParamSpec { name, unit, default, min, max: INF, description, allowed }
+}
+
+/// The shared parameters.
+pub const COMMON: &[ParamSpec] = &[
+    ParamSpec {
+        name: "length",
+        unit: "m",
+        default: 1.0,
+        min: 0.0,
+        max: INF,
+        description: "rod length l",
+        allowed: "a finite number > 0",
+    },
+    ParamSpec {
+        name: "mass",
+        unit: "kg",
+        default: 1.0,
+        min: 0.0,
+        max: INF,
+        description: "bob mass m",
+        allowed: "a finite number > 0",
+    },
+    ParamSpec {
+        name: "g",
+        unit: "m/s^2",
+        default: 9.81,
+        min: -INF,
+        max: INF,
+        description: "gravity along gravity_direction (any sign; 0 allowed)",
+        allowed: "a finite number",
+    },
+];
+
+const GRAVITY_DIR: [ParamSpec; 3] = [
+    p("gravity_x", "1", 0.0, -INF, "gravity direction, x component (normalised)"),
+    p("gravity_y", "1", 0.0, -INF, "gravity direction, y component"),
+    p("gravity_z", "1", -1.0, -INF, "gravity direction, z component"),
+];
+
+const DAMPED: &[ParamSpec] = &[
+    p("damping", "1/s", 0.0, 0.0, "linear viscous damping c: force −m c v"),
+    p("drag", "1/m", 0.0, 0.0, "quadratic air drag c_q: force −m c_q |v| v"),
+    p("forcing_amplitude", "m/s^2", 0.0, 0.0, "periodic force per unit mass A in A cos(ω t + ψ) e"),
+    p("forcing_omega", "rad/s", 0.0, -INF, "forcing angular frequency ω"),
+    p("forcing_phase", "rad", 0.0, -INF, "forcing phase ψ"),
+    p("forcing_x", "1", 1.0, -INF, "forcing direction e, x component (normalised)"),
+    p("forcing_y", "1", 0.0, -INF, "forcing direction e, y component"),
+    p("forcing_z", "1", 0.0, -INF, "forcing direction e, z component"),
+    GRAVITY_DIR[0],
+    GRAVITY_DIR[1],
+    GRAVITY_DIR[2],
+];
+
+const ROTATING: &[ParamSpec] = &[
+    p("frame_rate", "rad/s", 7.292e-5, -INF, "rotation rate |Ω| of the frame (Earth: 7.292e-5)"),
+    ParamSpec {
+        name: "latitude",
+        unit: "rad",
+        default: 0.8552113334772214,
+        min: -std::f64::consts::FRAC_PI_2,
+        max: std::f64::consts::FRAC_PI_2,
+        description: "latitude λ; Ω = |Ω|(0, cos λ, sin λ) in (east, north, up) axes",
+        allowed: "a latitude in [-π/2, π/2] rad",
+    },
+    p("damping", "1/s", 0.0, 0.0, "linear viscous damping c: force −m c v"),
+];
+
+/// Every registered model.
+pub const MODELS: &[ModelSpec] = &[
+    ModelSpec { name: "ideal", summary: "the ideal spherical pendulum (THEORY §2)", params: &[] },
+    ModelSpec {
+        name: "damped",
+        summary: "damping, quadratic drag, periodic forcing, any gravity direction (T-7.1)",
+        params: DAMPED,
+    },
+    ModelSpec {
+        name: "rotating",
+        summary: "in a rotating frame (Foucault, T-7.3), optionally damped",
+        params: ROTATING,
+    },
+];
+
+/// The spec of model `name`, or an error listing the models.
+pub fn spec(name: &str) -> Result<&'static ModelSpec> {
+    MODELS.iter().find(|m| m.name == name).ok_or_else(|| Error::UnknownModel {
+        name: name.to_string(),
+        available: MODELS.iter().map(|m| m.name).collect::<Vec<_>>().join(", "),
+    })
+}
+
+/// A model built from the registry: the ideal pendulum stays [`IdealPendulum`] (its fast path).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum AnyModel {
+    /// The ideal pendulum.
+    Ideal(IdealPendulum),
+    /// Any of the extended models.
+    Extended(Extended, &'static str),
+}
+
+impl AnyModel {
+    /// Builds model `name` from l, m, g and named extra parameters (unknown names and values outside
+    /// the limits are errors naming them; missing ones take their defaults).
+    pub fn build(name: &str, params: Params, extra: &[(&str, f64)]) -> Result<Self> {
+        let spec = spec(name)?;
+        let mut values: Vec<f64> = spec.params.iter().map(|p| p.default).collect();
+        for &(key, value) in extra {
+            let Some(i) = spec.params.iter().position(|p| p.name == key) else {
+                return Err(Error::UnknownParameter {
+                    model: spec.name,
+                    name: key.to_string(),
+                    available: spec.params.iter().map(|p| p.name).collect::<Vec<_>>().join(", "),
+                });
+            };
+            let ps = spec.params[i];
+            if !(value >= ps.min && value <= ps.max) || value.is_nan() || value.is_infinite() {
+                return Err(Error::InvalidParameter { name: ps.name, value, allowed: ps.allowed });
+            }
+            values[i] = value;
+        }
+        let get = |k: &str| spec.params.iter().position(|p| p.name == k).map(|i| values[i]);
+        let vec = |a: &str, b: &str, c: &str| DVec3::new(get(a).unwrap(), get(b).unwrap(), get(c).unwrap());
+        Ok(match spec.name {
+            "ideal" => AnyModel::Ideal(IdealPendulum::from_params(params)),
+            "damped" => AnyModel::Extended(
+                Extended::ideal(params)
+                    .with_gravity_direction(vec("gravity_x", "gravity_y", "gravity_z"))?
+                    .with_damping(get("damping").unwrap(), get("drag").unwrap())?
+                    .with_forcing(
+                        get("forcing_amplitude").unwrap(),
+                        get("forcing_omega").unwrap(),
+                        get("forcing_phase").unwrap(),
+                        vec("forcing_x", "forcing_y", "forcing_z"),
+                    )?,
+                "damped",
+            ),
+            _ => AnyModel::Extended(
+                Extended::ideal(params)
+                    .with_damping(get("damping").unwrap(), 0.0)?
+                    .with_latitude_frame(get("frame_rate").unwrap(), get("latitude").unwrap())?,
+                "rotating",
+            ),
+        })
+    }
+}
+
+macro_rules! both {
+    ($self:expr, $m:ident => $e:expr) => {
+        match $self {
+            AnyModel::Ideal($m) => $e,
+            AnyModel::Extended($m, _) => $e,
+        }
+    };
+}
+
+impl Model for AnyModel {
+    fn name(&self) -> &'static str {
+        match self {
+            AnyModel::Ideal(_) => "ideal",
+            AnyModel::Extended(_, name) => name,
+        }
+    }
+    fn params(&self) -> &Params {
+        both!(self, m => m.params())
+    }
+    #[inline(always)]
+    fn applied_acceleration(&self, t: f64, x: DVec3, v: DVec3) -> DVec3 {
+        both!(self, m => m.applied_acceleration(t, x, v))
+    }
+    fn potential_per_mass(&self, x: DVec3) -> f64 {
+        both!(self, m => m.potential_per_mass(x))
+    }
+    fn is_conservative(&self) -> bool {
+        both!(self, m => m.is_conservative())
+    }
+    fn is_axisymmetric(&self) -> bool {
+        both!(self, m => m.is_axisymmetric())
+    }
+    fn is_ideal(&self) -> bool {
+        matches!(self, AnyModel::Ideal(_))
+    }
+    #[inline(always)]
+    fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {
+        both!(self, m => m.kick_acceleration(t, x))
+    }
+    fn has_velocity_forces(&self) -> bool {
+        both!(self, m => m.has_velocity_forces())
+    }
+    #[inline(always)]
+    fn velocity_flow(&self, x: DVec3, v: DVec3, h: f64) -> DVec3 {
+        both!(self, m => m.velocity_flow(x, v, h))
+    }
+    fn power_per_mass(&self, t: f64, x: DVec3, v: DVec3) -> f64 {
+        both!(self, m => m.power_per_mass(t, x, v))
+    }
+}
+
+/// E(t) − E(0) − m∫P dt along samples (t, state) by the trapezoidal rule [J]: the power-balance
+/// residual of T-7.1 (zero to quadrature and integration error).
+pub fn power_balance_residual<M: Model>(model: &M, t: &[f64], states: &[State]) -> Vec<f64> {
+    let mass = model.params().mass;
+    let e0 = super::energy(model, &states[0]);
+    let mut work = 0.0;
+    let mut out = vec![0.0];
+    for k in 1..states.len() {
+        let p0 = model.power_per_mass(t[k - 1], states[k - 1].x, states[k - 1].v);
+        let p1 = model.power_per_mass(t[k], states[k].x, states[k].v);
+        work += 0.5 * (t[k] - t[k - 1]) * (p0 + p1) * mass;
+        out.push(super::energy(model, &states[k]) - e0 - work);
+    }
+    out
+}

@@ -1,0 +1,267 @@
+"""The exact solution of the ideal spherical pendulum (THEORY.md §4–5), from any state on TS², any g.
+
+``pl.exact(pendulum, state)`` sets the solution up once (roots of the cubic T-4.1, the elliptic
+parameter, the start's phase); afterwards a state at any time t [s], negative too, costs the same
+whether t = 1 s or t = 10⁶ s (T-4.2 … T-4.4 with the argument reduced by the period). Units: SI —
+t [s], x [m], v [m/s], heights [m], periods [s], angles [rad]. The motion is classified as in T-4.6:
+
+=================== ==========================================================================
+``kind``            motion
+=================== ==========================================================================
+``generic``         J₃ ≠ 0: z swings between z₁ and z₂ while the azimuth advances (T-4.2, T-4.4)
+``conical``         J₃ ≠ 0 at constant height (z₂ − z₁ at round-off, T-6.1)
+``planar``          J₃ = 0, swinging through the bottom; φ jumps by π at the pole
+``planar_rotating`` J₃ = 0, going over the top
+``separatrix``      J₃ = 0 at exactly the energy of the top: creeps towards it forever
+``rest``            at rest at an equilibrium (or anywhere when g = 0)
+``great_circle``    g = 0: uniform motion along a great circle
+=================== ==========================================================================
+
+For g < 0 the solution is the mirror image z → −z of the one with gravity |g| (J₃ and φ unchanged).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, overload
+
+import numpy as np
+
+from . import _core
+from .model import FloatArray, Pendulum, State, _frozen
+from .trajectory import Trajectory
+
+KINDS = ("generic", "conical", "planar", "planar_rotating", "separatrix", "rest", "great_circle")
+"""The kinds of motion (T-4.6), as ``ExactSolution.kind`` names them."""
+
+_PHASE_KINDS = ("generic", "conical")
+
+
+@dataclass(frozen=True)
+class Phases:
+    """The azimuthal advance per z-period and its split (T-5.1), all in rad.
+
+    ``total`` is Δφ from T-4.5 (elliptic integrals of the third kind); ``dynamic`` = 2 T_z⟨K⟩/J₃
+    (K the kinetic energy per unit mass, in the dimensionless form of §1) and ``geometric`` =
+    −(area enclosed by the reduced orbit in the (z, p_z) plane)/J₃, computed independently by
+    quadrature. ``sum`` = dynamic + geometric equals ``total`` to ~1e-14; ``difference`` = total − sum.
+    """
+
+    total: float
+    dynamic: float
+    geometric: float
+
+    @property
+    def sum(self) -> float:
+        """Δφ_dyn + Δφ_geom [rad]."""
+        return self.dynamic + self.geometric
+
+    @property
+    def difference(self) -> float:
+        """total − (dynamic + geometric) [rad]: zero up to rounding."""
+        return self.total - self.sum
+
+
+def _times(t: Any) -> tuple[FloatArray, bool]:
+    """t as a contiguous float64 array and whether it was a scalar; a clear error if not finite."""
+    arr = np.asarray(t, dtype=np.float64)
+    scalar = arr.ndim == 0
+    if scalar and not math.isfinite(float(arr)):
+        raise _core.InvalidInputError(f"t = {float(arr)!r} is not a finite time (s)")
+    return np.ascontiguousarray(arr.reshape(-1)), scalar
+
+
+class ExactSolution:
+    """The exact motion through ``state`` at t = 0 (build it with :func:`exact`).
+
+    Time-independent properties: ``kind``, ``turning_heights`` [m], ``modulus``, ``period_z`` [s],
+    ``azimuth_advance`` [rad], ``rotation_number``; per-orbit results: :meth:`phases`,
+    :meth:`constants`; at given times: :meth:`state`, :meth:`azimuth`, :meth:`trajectory`.
+    """
+
+    def __init__(self, pendulum: Pendulum, state: State) -> None:
+        if not isinstance(pendulum, Pendulum):
+            raise _core.InvalidInputError(
+                f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}"
+            )
+        if not isinstance(state, State):
+            raise _core.InvalidInputError(
+                f"state must be a pendulab.State (from Pendulum.state or state_from_angles), "
+                f"got {type(state).__name__}"
+            )
+        self._pendulum = pendulum
+        self._start = state
+        self._core = _core.ExactSolution(
+            *pendulum._core_args(), np.ascontiguousarray(state.x), np.ascontiguousarray(state.v)
+        )
+
+    # --- the orbit ---
+
+    @property
+    def pendulum(self) -> Pendulum:
+        """The pendulum (l [m], m [kg], g [m/s²])."""
+        return self._pendulum
+
+    @property
+    def start(self) -> State:
+        """The state at t = 0."""
+        return self._start
+
+    @property
+    def kind(self) -> str:
+        """One of :data:`KINDS` (T-4.6)."""
+        return self._core.kind
+
+    @property
+    def omega0(self) -> float:
+        """ω₀ = √(|g|/l) [1/s] (0 when g = 0)."""
+        return self._core.omega0
+
+    @property
+    def turning_heights(self) -> tuple[float, ...]:
+        """Heights [m] between which z moves, ``(z₁, z₂)`` with z₁ ≤ z₂, plus z₃ for generic and conical
+        orbits: ``(z₁, z₂, z₃)``, the third root of the cubic T-4.1, outside [−l, l] (above l for
+        g > 0, below −l for g < 0, mirrored). Planar swings give (−l, z₂) (g > 0), motion over the
+        top (−l, l), rest (z₀, z₀), great circles (−A, A) with A the highest point reached."""
+        z1, z2, z3 = self._core.turning_heights
+        return (z1, z2) if z3 is None else (z1, z2, z3)
+
+    @property
+    def modulus(self) -> float | None:
+        """The parameter m = k² of the Jacobi functions (dimensionless), None at rest and on great circles."""
+        return self._core.modulus
+
+    @property
+    def period_z(self) -> float | None:
+        """Period of z(t) [s] (T-4.3). Planar swings: the swing period 4K/ω₀ (z itself repeats after
+        half of it); over the top: one revolution; great circles: 2πl/|v|; separatrix: ``inf``;
+        None at rest."""
+        return self._core.period_z
+
+    @property
+    def azimuth_advance(self) -> float | None:
+        """Δφ [rad] per z-period (T-4.5), with the sign of J₃; None unless the kind is generic or conical."""
+        return self._core.azimuth_advance
+
+    @property
+    def rotation_number(self) -> float | None:
+        """W = Δφ/2π (dimensionless, T-4.5; 1/2 < |W| < 1 by Puiseux), None where Δφ is."""
+        dphi = self.azimuth_advance
+        return None if dphi is None else dphi / (2.0 * math.pi)
+
+    def phases(self) -> Phases:
+        """Δφ per z-period and its dynamic and geometric parts (T-5.1), in rad.
+
+        Defined for orbits with J₃ ≠ 0 and g ≠ 0 (kinds ``generic`` and ``conical``; a conical orbit
+        has geometric part 0). Any other kind raises :class:`pendulab.InvalidInputError` saying why:
+        the split divides by J₃, planar motion has no azimuthal advance, and with g = 0 there is no
+        potential (great circles).
+        """
+        p = self._core.phases()
+        if p is None and self._pendulum.g == 0.0:
+            raise _core.InvalidInputError(
+                f"phases need gravity: with g = 0 m/s^2 the orbit is a {self.kind!r} (uniform motion on a "
+                "great circle), with no oscillation of z about a potential minimum to split the advance over"
+            )
+        if p is None:
+            raise _core.InvalidInputError(
+                f"phases are defined for orbits with J3 != 0 (kinds {', '.join(_PHASE_KINDS)}); "
+                f"this orbit is {self.kind!r} (J3 = {self._pendulum.j3(self._start):.6g} kg m^2/s, "
+                f"g = {self._pendulum.g:g} m/s^2)"
+            )
+        return Phases(*p)
+
+    def constants(self) -> dict[str, float]:
+        """The orbit's constants. Always ``omega0`` [1/s]; for g ≠ 0 also ``epsilon`` = E/(m|g|l) and
+        ``j`` = J₃/(m l² ω₀) (dimensionless, §1) and ``m`` where defined; for generic and conical orbits
+        the dimensionless roots ``u1`` ≤ ``u2`` ≤ ``u3`` of T-4.1 (u = z/l, or −z/l when g < 0),
+        ``lambda``, ``n_plus``, ``n_minus``, ``K`` (T-4.2 … T-4.5)."""
+        out: dict[str, float] = {"omega0": self.omega0}
+        core = self._core.constants()
+        if core is not None:
+            return out | {k: float(v) for k, v in core.items()}
+        p = self._pendulum
+        if p.g != 0.0:
+            out["epsilon"] = p.energy(self._start) / (p.mass * abs(p.g) * p.length)
+            out["j"] = p.j3(self._start) / (p.mass * p.length**2 * self.omega0)
+        if self.modulus is not None:
+            out["m"] = self.modulus
+        return out
+
+    # --- states at given times ---
+
+    @overload
+    def state(self, t: float) -> State: ...
+    @overload
+    def state(self, t: Any) -> tuple[FloatArray, FloatArray]: ...
+
+    def state(self, t: Any) -> State | tuple[FloatArray, FloatArray]:
+        """The state at time t [s] (any finite t, negative too).
+
+        A scalar t gives a :class:`State`; an array of times gives ``(x, v)`` with shapes
+        ``t.shape + (3,)``: position [m] and velocity [m/s].
+        """
+        times, scalar = _times(t)
+        x, v, _ = self._core.states(times)
+        if scalar:
+            return State(_frozen(x[0]), _frozen(v[0]))
+        shape = (*np.shape(t), 3)
+        return x.reshape(shape), v.reshape(shape)
+
+    def azimuth(self, t: Any) -> Any:
+        """The continuous azimuth φ(t) [rad] (a float for scalar t, else an array of t's shape).
+
+        It continues across the branch cut of atan2 (no 2π jumps); for planar motion (J₃ = 0) it jumps
+        by π where the bob passes through a pole, and only there. NaN at rest at a pole."""
+        times, scalar = _times(t)
+        _, _, phi = self._core.states(times)
+        return float(phi[0]) if scalar else phi.reshape(np.shape(t))
+
+    def trajectory(self, t: Any) -> Trajectory:
+        """The exact states at the times t [s] (1-D, any order) as a :class:`Trajectory` with method
+        ``"exact"``, so its diagnostics, summary and file writers apply."""
+        times = np.asarray(t, dtype=np.float64)
+        if times.ndim != 1 or times.size == 0:
+            raise _core.InvalidInputError(
+                f"t must be a non-empty 1-D array of times (s), got shape {times.shape}"
+            )
+        x, v = self.state(times)
+        return Trajectory(
+            self._pendulum,
+            times.copy(),
+            x,
+            v,
+            "exact",
+            {"kind": self.kind},
+            {"steps": 0, "samples": len(times)},
+        )
+
+    def summary(self) -> str:
+        """A few lines: kind, turning heights, z-period, Δφ and W (SI units)."""
+        p = self._pendulum
+        heights = ", ".join(f"{z:.9g}" for z in self.turning_heights)
+        lines = [
+            f"pendulum: l = {p.length} m, m = {p.mass} kg, g = {p.g} m/s^2",
+            f"kind:     {self.kind}",
+            f"heights:  z1, z2{', z3' if len(self.turning_heights) == 3 else ''} = {heights} m",
+        ]
+        if self.modulus is not None:
+            lines.append(f"modulus:  m = k^2 = {self.modulus:.15g}")
+        if self.period_z is not None:
+            lines.append(f"period:   T_z = {self.period_z:.15g} s")
+        if self.azimuth_advance is not None:
+            dphi, w = self.azimuth_advance, self.rotation_number
+            lines.append(f"advance:  dphi = {dphi:.15g} rad per z-period, W = {w:.15g}")
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        return f"ExactSolution(kind={self.kind!r}, pendulum={self._pendulum!r})"
+
+
+def exact(pendulum: Pendulum, state: State) -> ExactSolution:
+    """The exact solution through ``state`` (on TS², at t = 0) of the ideal pendulum, any g (THEORY §4).
+
+    Raises :class:`pendulab.InvalidInputError` for a state off TS² or non-finite values.
+    """
+    return ExactSolution(pendulum, state)

@@ -1,0 +1,67 @@
+"""Holm's Figure 2 (THEORY T-3.3): the reduced motion in (σ₁, σ₂, σ₃) space.
+
+σ₁ = z/l [1], σ₂ = ż/l [1/s], σ₃ = |v|²/l² [1/s²] (see :mod:`pendulab.reduce`). Drawn: the orbit
+manifold C = σ₃(1 − σ₁²) − σ₂² − J² = 0 of the orbit's J = σ₆ = J₃/(m l²), a surface
+σ₃ = (σ₂² + J²)/(1 − σ₁²); the energy plane H = ½σ₃ + (g/l)σ₁ = E/(m l²); and the orbit, which runs
+along their intersection (drawn on top). Both surfaces are cut off at 1.4 times the orbit's largest σ₃.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any
+
+import numpy as np
+
+from ..reduce import Reduced, reduce
+from ..trajectory import Trajectory
+
+
+def plot_reduced(
+    data: Trajectory | Reduced,
+    path: str | os.PathLike[str] | None = None,
+    *,
+    figsize: tuple[float, float] = (7.5, 6.5),
+    resolution: int = 60,
+) -> Any:
+    """Draws the surface C = 0, the plane H = const and the orbit of ``data`` (a trajectory, or its
+    :func:`pendulab.reduce`); saves atomically to ``path`` if given (.png, .svg, .pdf). Returns the Figure."""
+    from . import new_figure, save_figure
+
+    red = data if isinstance(data, Reduced) else reduce(data)
+    s = red.sigma
+    s1, s2, s3 = s[:, 0], s[:, 1], s[:, 2]
+    j, h, gamma = float(np.mean(red.j)), float(np.mean(red.hamiltonian)), red.gamma
+
+    span1 = max(float(np.ptp(s1)), 0.1)
+    lo1 = max(float(s1.min()) - 0.3 * span1, -0.99)
+    hi1 = min(float(s1.max()) + 0.3 * span1, 0.99)
+    if hi1 <= lo1:  # a pole at rest: show a little of the sphere around it
+        lo1, hi1 = -0.99, 0.99
+    span2 = max(float(np.max(np.abs(s2))), 0.1 * float(np.sqrt(max(np.max(s3), 1e-300))), 1e-3)
+    cap = 1.4 * max(float(np.max(s3)), 1e-12)
+    a, b = np.meshgrid(np.linspace(lo1, hi1, resolution), np.linspace(-1.3 * span2, 1.3 * span2, resolution))
+    surface = (b * b + j * j) / (1.0 - a * a)
+    surface[surface > cap] = np.nan  # cut off (matplotlib leaves those cells out)
+    plane = 2.0 * (h - gamma * a)
+    plane[(plane > cap) | (plane < 0.0)] = np.nan
+
+    fig = new_figure(figsize=figsize, layout="constrained")
+    # Draw in the order given (mplot3d's depth sorting of whole artists would hide the orbit).
+    ax = fig.add_subplot(projection="3d", computed_zorder=False)
+    ax.plot_surface(a, b, surface, color="tab:blue", alpha=0.35, linewidth=0, antialiased=True)
+    ax.plot_surface(a, b, plane, color="tab:orange", alpha=0.35, linewidth=0, antialiased=True)
+    ax.plot(s1, s2, s3, color="black", lw=2.5, label="orbit (intersection)", zorder=10)
+    # proxies for the legend (surfaces have none)
+    ax.plot([], [], color="tab:blue", lw=6, alpha=0.5, label=f"C = 0 for J₃/(m l²) = {j:.4g} 1/s")
+    ax.plot([], [], color="tab:orange", lw=6, alpha=0.5, label=f"H = ½σ₃ + (g/l)σ₁ = {h:.4g} 1/s²")
+    ax.set_xlabel("σ₁ = z/l [1]")
+    ax.set_ylabel("σ₂ = ż/l [1/s]")
+    ax.set_zlabel("σ₃ = |v|²/l² [1/s²]")
+    ax.set_zlim(0.0, cap)
+    p = red.pendulum
+    ax.set_title(f"Reduced space (Holm, Fig. 2): l = {p.length:g} m, g = {p.g:g} m/s²")
+    ax.legend(loc="upper left", fontsize="small")
+    if path is not None:
+        save_figure(fig, path)
+    return fig

@@ -1,0 +1,125 @@
+"""Symmetry reduction by rotations about the vertical (THEORY.md §3) and the azimuth it reconstructs.
+
+Holm's invariants are taken in unit-length variables (positions in units of l, time in s):
+
+====== ============================== ========
+σ₁     z/l                            1
+σ₂     ż/l                            1/s
+σ₃     |v|²/l²                        1/s²
+σ₄     (x² + y²)/l²                   1
+σ₅     (x ẋ + y ẏ)/l²                 1/s
+σ₆     (x ẏ − y ẋ)/l² = J₃/(m l²)     1/s
+====== ============================== ========
+
+with γ = g/l [1/s²] in place of g. Then (T-3.2, T-3.3) the relations σ₅² + σ₆² = σ₄(σ₃ − σ₂²),
+σ₄ + σ₁² = 1, σ₅ + σ₁σ₂ = 0, σ₂² + σ₆² = σ₃(1 − σ₁²) hold on TS²; the Casimir
+C = σ₃(1 − σ₁²) − σ₂² − σ₆² [1/s²] vanishes; the reduced Hamiltonian H = ½σ₃ + γσ₁ [1/s²] is
+E/(m l²). The motion lies on the intersection of the surface C = 0 with the plane H = const
+(Holm's Figure 2; see :mod:`pendulab.plot.reduced`).
+
+- :func:`reduce` evaluates all of that along a trajectory.
+- :func:`reduced_flow` integrates the reduced flow T-3.4 with the reconstruction T-3.6 — a path to
+  x(t) independent of the Cartesian integrators and of the elliptic solution.
+
+Measuring Δφ per z-period from a trajectory: :mod:`pendulab.advance`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import _core
+from .model import FloatArray, Pendulum, State
+from .trajectory import Trajectory
+
+SIGMA_UNITS = ("1", "1/s", "1/s^2", "1", "1/s", "1/s")
+"""Units of σ₁ … σ₆ (unit-length variables, time in s)."""
+
+RESIDUAL_UNITS = ("1/s^2", "1", "1/s", "1/s^2")
+"""Units of the four relation residuals (T-3.2, in the order of :attr:`Reduced.relation_residuals`)."""
+
+MAX_REDUCED_STEPS = 20_000_000
+"""Largest number of RK4 steps :func:`reduced_flow` accepts (every step is kept: ~1 GB)."""
+
+
+@dataclass(frozen=True)
+class Reduced:
+    """The reduced description of a trajectory (N samples); units in the module docstring.
+
+    ``sigma`` (N, 6): σ₁ … σ₆. ``relation_residuals`` (N, 4): σ₅² + σ₆² − σ₄(σ₃ − σ₂²) [1/s²],
+    σ₄ + σ₁² − 1 [1], σ₅ + σ₁σ₂ [1/s], σ₂² + σ₆² − σ₃(1 − σ₁²) [1/s²] — all zero on TS².
+    ``casimir`` (N,): C = σ₃(1 − σ₁²) − σ₂² − σ₆² [1/s²] (zero on the orbit manifold, T-3.3).
+    ``hamiltonian`` (N,): H = ½σ₃ + (g/l)σ₁ [1/s²] = E/(m l²), conserved along the motion.
+    """
+
+    pendulum: Pendulum
+    t: FloatArray
+    sigma: FloatArray
+    relation_residuals: FloatArray
+    casimir: FloatArray
+    hamiltonian: FloatArray
+
+    @property
+    def j(self) -> FloatArray:
+        """σ₆ = J₃/(m l²) [1/s] at each sample (constant along the ideal motion)."""
+        return self.sigma[:, 5]
+
+    @property
+    def gamma(self) -> float:
+        """γ = g/l [1/s²]."""
+        return self.pendulum.g / self.pendulum.length
+
+
+def invariants(pendulum: Pendulum, x: object, v: object) -> FloatArray:
+    """σ₁ … σ₆ (T-3.1, units in the module docstring) for positions x [m] and velocities v [m/s] of
+    shape (N, 3) (or (3,)): an array of shape (N, 6)."""
+    xa = np.ascontiguousarray(np.atleast_2d(np.asarray(x, dtype=np.float64)))
+    va = np.ascontiguousarray(np.atleast_2d(np.asarray(v, dtype=np.float64)))
+    return _core.invariants(pendulum.length, xa, va)
+
+
+def reduce(traj: Trajectory) -> Reduced:
+    """σ₁ … σ₆, the relation residuals, the Casimir and H along a trajectory (T-3.1 … T-3.3)."""
+    if not isinstance(traj, Trajectory):
+        raise _core.InvalidInputError(f"reduce needs a pendulab.Trajectory, got {type(traj).__name__}")
+    p = traj.pendulum
+    sigma = invariants(p, traj.x, traj.v)
+    s1, s2, s3, s6 = sigma[:, 0], sigma[:, 1], sigma[:, 2], sigma[:, 5]
+    casimir = s3 * (1.0 - s1 * s1) - s2 * s2 - s6 * s6
+    hamiltonian = 0.5 * s3 + (p.g / p.length) * s1
+    residuals = _core.relation_residuals(np.ascontiguousarray(sigma))
+    return Reduced(p, traj.t.copy(), sigma, residuals, casimir, hamiltonian)
+
+
+def reduced_flow(pendulum: Pendulum, state: State, t_end: float, dt: float = 1e-3) -> Trajectory:
+    """Integrates the reduced (Nambu) flow T-3.4 on (σ₁, σ₂, σ₃) with the azimuth φ̇ = σ₆/(1 − σ₁²)
+    (T-3.6) by classical RK4 from ``state`` at t = 0 to ``t_end`` [s], and rebuilds x [m], v [m/s].
+
+    Every step is kept; ``dt`` [s] is shortened so that a whole number of steps ends exactly at
+    ``t_end``. Like the angle form, the reconstruction is singular at the poles: J₃ = 0 is refused
+    (:class:`pendulab.IntegrationError`), and so is an orbit that passes so close to a pole that
+    φ̇·dt would exceed 0.05 rad (use a smaller dt there). Method name of the result:
+    ``"reduced_rk4"``; its error is O(dt⁴).
+    """
+    t_end, dt = float(t_end), float(dt)
+    if not (math.isfinite(t_end) and t_end > 0.0):
+        raise _core.InvalidInputError(f"t_end = {t_end!r} must be a finite time > 0 s")
+    if not (math.isfinite(dt) and dt > 0.0):
+        raise _core.InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
+    n = math.ceil(t_end / dt * (1.0 - 1e-12))
+    if n > MAX_REDUCED_STEPS:
+        raise _core.InvalidInputError(
+            f"t_end / dt = {t_end / dt:.3g} steps exceeds the limit of {MAX_REDUCED_STEPS} "
+            "(every step is kept); use a larger dt or a shorter t_end"
+        )
+    n = max(n, 1)
+    h = t_end / n
+    x, v = _core.reduced_flow(
+        *pendulum._core_args(), np.ascontiguousarray(state.x), np.ascontiguousarray(state.v), h, n
+    )
+    t = h * np.arange(n + 1, dtype=np.float64)
+    t[-1] = t_end
+    return Trajectory(pendulum, t, x, v, "reduced_rk4", {"dt": h, "t0": 0.0, "t_end": t_end}, {"steps": n})
