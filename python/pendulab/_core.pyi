@@ -29,6 +29,20 @@ class MethodInfo(TypedDict):
     default: bool
     summary: str
 
+class ParamSpec(TypedDict):
+    name: str
+    unit: str
+    default: float
+    min: float
+    max: float
+    description: str
+    allowed: str
+
+class ModelInfo(TypedDict):
+    name: str
+    summary: str
+    params: list[ParamSpec]
+
 class StatsDict(TypedDict):
     steps: int
     rejected: int
@@ -36,6 +50,14 @@ class StatsDict(TypedDict):
 
 def methods() -> list[MethodInfo]: ...
 def check_params(length: float, mass: float, g: float) -> None: ...
+def models() -> list[ModelInfo]: ...
+def check_model(
+    length: float,
+    mass: float,
+    g: float,
+    model_name: str | None = None,
+    extra: list[tuple[str, float]] | None = None,
+) -> None: ...
 def state_on_ts2(
     length: float, mass: float, g: float, x: FloatArray, v: FloatArray
 ) -> tuple[FloatArray, FloatArray]: ...
@@ -46,7 +68,14 @@ def state_from_angles(
     length: float, mass: float, g: float, theta: float, phi: float, theta_dot: float, phi_dot: float
 ) -> tuple[FloatArray, FloatArray]: ...
 def diagnostics(
-    length: float, mass: float, g: float, x: FloatArray, v: FloatArray
+    length: float,
+    mass: float,
+    g: float,
+    x: FloatArray,
+    v: FloatArray,
+    model_name: str | None = None,
+    extra: list[tuple[str, float]] | None = None,
+    t: FloatArray | None = None,
 ) -> dict[str, FloatArray]: ...
 
 class Solver:
@@ -67,6 +96,8 @@ class Solver:
         save_every: int | None = None,
         save_times: FloatArray | None = None,
         max_saved_bytes: int | None = None,
+        model_name: str | None = None,
+        extra: list[tuple[str, float]] | None = None,
     ) -> None: ...
     def advance(self, budget: int) -> bool: ...
     def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
@@ -93,6 +124,8 @@ class Stepper:
         rtol: float,
         atol: float,
         project: bool,
+        model_name: str | None = None,
+        extra: list[tuple[str, float]] | None = None,
     ) -> None: ...
     def step(self, n: int = 1) -> None: ...
     def step_to(self, t: float) -> None: ...

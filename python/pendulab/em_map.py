@@ -197,8 +197,12 @@ def em_map(
     """The rotation number W(E, J₃) on a grid of ``grid = (n_J3, n_E)`` points over ``j_range``
     [kg m²/s] × ``e_range`` [J]. Defaults: j ∈ [−2.4, 2.4] m l² ω₀ and ε ∈ [−1.1, 2.5] m|g|l, which hold
     the bottom, the top and the monodromy loop. Grid points within 1e-12 (relative to the J₃ range) of
-    J₃ = 0 are put on it. g < 0 is mapped as its mirror image (module docstring); g = 0, bad ranges
-    and grids raise :class:`pendulab.InvalidInputError`."""
+    J₃ = 0 are put on it. g < 0 is mapped as its mirror image (module docstring); g = 0, models other
+    than the ideal pendulum, bad ranges and grids raise :class:`pendulab.InvalidInputError`."""
+    if not pendulum.is_ideal:
+        raise _core.InvalidInputError(
+            f"the energy–momentum map is that of the ideal pendulum, not the {pendulum.model!r} model"
+        )
     eu, mu = _units(pendulum)
     jr = (
         _check_range("j_range", j_range, "kg m^2/s")

@@ -90,6 +90,11 @@ class ExactSolution:
                 f"state must be a pendulab.State (from Pendulum.state or state_from_angles), "
                 f"got {type(state).__name__}"
             )
+        if not pendulum.is_ideal:
+            raise _core.InvalidInputError(
+                f"the exact solution exists only for the ideal pendulum, not the {pendulum.model!r} model "
+                "(damping, forcing and rotating frames break integrability); simulate it instead"
+            )
         self._pendulum = pendulum
         self._start = state
         self._core = _core.ExactSolution(

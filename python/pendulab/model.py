@@ -53,25 +53,49 @@ class State:
 
 
 class Pendulum:
-    """The ideal spherical pendulum: a mass on a rigid massless rod under uniform gravity.
+    """A spherical pendulum: a mass on a rigid massless rod, under gravity and, optionally, the forces
+    of the real-pendulum models (THEORY.md §7; ``pendulab.models()`` lists them with units).
 
     Parameters
     ----------
     length : rod length l [m], > 0.
-    g : gravitational acceleration [m/s²], any finite value; g > 0 pulls along −z, g < 0 along +z,
-        g = 0 leaves only the rod (great circles).
+    g : gravitational acceleration [m/s²], any finite value; g > 0 pulls along −z (or along
+        ``gravity_direction``), g < 0 the other way, g = 0 leaves only the rod (great circles).
     mass : bob mass m [kg], > 0.
+    model : registry name: ``"ideal"`` (default), ``"damped"`` (damping [1/s], drag [1/m], a periodic
+        force forcing_amplitude [m/s²], forcing_omega [rad/s], forcing_phase [rad], forcing_x/y/z,
+        and the gravity direction gravity_x/y/z), ``"rotating"`` (frame_rate [rad/s], latitude
+        [rad], damping [1/s]). When omitted it is inferred from the keywords: frame_rate or latitude
+        → ``"rotating"``, any other extra → ``"damped"``.
+    **extra : the model's parameters, e.g. ``Pendulum(length=1.0, g=9.81, mass=1.0, damping=0.003)``.
 
     Raises ``InvalidInputError`` (a ``ValueError``) naming the bad value and the allowed range.
     """
 
-    model = "ideal"
-
-    def __init__(self, length: float = 1.0, g: float = 9.81, mass: float = 1.0) -> None:
-        _core.check_params(float(length), float(mass), float(g))
+    def __init__(
+        self,
+        length: float = 1.0,
+        g: float = 9.81,
+        mass: float = 1.0,
+        *,
+        model: str | None = None,
+        **extra: float,
+    ) -> None:
+        if model is None:
+            rotating = {"frame_rate", "latitude"} & extra.keys()
+            model = "rotating" if rotating else ("damped" if extra else "ideal")
+        self._extra = {str(k): float(v) for k, v in extra.items()}
+        # validates everything (names, ranges) once, in the core
+        _core.check_model(float(length), float(mass), float(g), model, list(self._extra.items()))
+        self.model = model
         self._length = float(length)
         self._g = float(g)
         self._mass = float(mass)
+
+    @property
+    def extra(self) -> dict[str, float]:
+        """The model's own parameters as given (SI units; see ``pendulab.models()``)."""
+        return dict(self._extra)
 
     @property
     def length(self) -> float:
@@ -94,14 +118,25 @@ class Pendulum:
         return float(np.sqrt(abs(self._g) / self._length))
 
     def params(self) -> dict[str, float | str]:
-        """Model name and parameters with SI values (length [m], mass [kg], g [m/s²])."""
-        return {"model": self.model, "length": self._length, "mass": self._mass, "g": self._g}
+        """Model name and parameters with SI values (length [m], mass [kg], g [m/s²], extras)."""
+        return {"model": self.model, "length": self._length, "mass": self._mass, "g": self._g, **self._extra}
+
+    @property
+    def is_ideal(self) -> bool:
+        """True for the ideal pendulum (the exact solution and the angle method need it)."""
+        return self.model == "ideal"
 
     def _core_args(self) -> tuple[float, float, float]:
         return self._length, self._mass, self._g
 
+    def _model_kwargs(self) -> dict[str, Any]:
+        return {"model_name": self.model, "extra": list(self._extra.items())}
+
     def __repr__(self) -> str:
-        return f"Pendulum(length={self._length!r}, g={self._g!r}, mass={self._mass!r})"
+        extras = "".join(f", {k}={v!r}" for k, v in self._extra.items())
+        implied = self.model == "ideal" or (bool(self._extra) and self.model == "damped")
+        model = "" if implied else f", model={self.model!r}"
+        return f"Pendulum(length={self._length!r}, g={self._g!r}, mass={self._mass!r}{model}{extras})"
 
     def state(self, x: Any, v: Any, *, project: bool = False) -> State:
         """State from Cartesian position x [m] and velocity v [m/s] (3 numbers each).
@@ -131,7 +166,7 @@ class Pendulum:
         for arrays x, v of shape (N, 3) or (3,)."""
         xa = np.ascontiguousarray(np.atleast_2d(np.asarray(x, dtype=np.float64)))
         va = np.ascontiguousarray(np.atleast_2d(np.asarray(v, dtype=np.float64)))
-        return _core.diagnostics(*self._core_args(), xa, va)
+        return _core.diagnostics(*self._core_args(), xa, va, **self._model_kwargs())
 
     def energy(self, state: State) -> float:
         """Total energy E = m(½|v|² + g z) [J] (T-2.6)."""

@@ -107,6 +107,10 @@ def reduced_flow(pendulum: Pendulum, state: State, t_end: float, dt: float = 1e-
     t_end, dt = float(t_end), float(dt)
     if not (math.isfinite(t_end) and t_end > 0.0):
         raise _core.InvalidInputError(f"t_end = {t_end!r} must be a finite time > 0 s")
+    if not pendulum.is_ideal:
+        raise _core.InvalidInputError(
+            f"the reduced flow (T-3.4) is that of the ideal pendulum, not the {pendulum.model!r} model"
+        )
     if not (math.isfinite(dt) and dt > 0.0):
         raise _core.InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
     n = math.ceil(t_end / dt * (1.0 - 1e-12))

@@ -91,6 +91,7 @@ def simulate(
         None if save_every is None else int(save_every),
         times,
         max_saved_bytes,
+        **pendulum._model_kwargs(),
     )
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
@@ -156,6 +157,7 @@ class Stepper:
             float(rtol),
             float(atol),
             bool(project),
+            **pendulum._model_kwargs(),
         )
 
     @property

@@ -7,10 +7,11 @@ mod exact;
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
+use pendulab_core::model::registry::{AnyModel, COMMON, MODELS};
 use pendulab_core::model::{energy, j3, tension};
 use pendulab_core::solve::{Samples, DEFAULT_MAX_SAVED_BYTES};
 use pendulab_core::{
-    DVec3, Error, IdealPendulum, Method, Model, SaveAt, SolveOptions, Solver, State, Stepper,
+    DVec3, Error, IdealPendulum, Method, Model, Params, SaveAt, SolveOptions, Solver, State, Stepper,
 };
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
@@ -53,6 +54,64 @@ pub(crate) fn vec3(name: &str, a: &PyReadonlyArray1<'_, f64>) -> PyResult<DVec3>
 
 pub(crate) fn model(length: f64, mass: f64, g: f64) -> PyResult<IdealPendulum> {
     IdealPendulum::new(length, mass, g).map_err(to_py)
+}
+
+/// A registry model by name with its extra parameters (None: the ideal pendulum).
+pub(crate) fn any_model(
+    length: f64,
+    mass: f64,
+    g: f64,
+    name: Option<&str>,
+    extra: Option<Vec<(String, f64)>>,
+) -> PyResult<AnyModel> {
+    let params = Params::new(length, mass, g).map_err(to_py)?;
+    let extra = extra.unwrap_or_default();
+    let pairs: Vec<(&str, f64)> = extra.iter().map(|(k, v)| (k.as_str(), *v)).collect();
+    AnyModel::build(name.unwrap_or("ideal"), params, &pairs).map_err(to_py)
+}
+
+fn param_dict<'py>(
+    py: Python<'py>,
+    p: &pendulab_core::model::registry::ParamSpec,
+) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("name", p.name)?;
+    d.set_item("unit", p.unit)?;
+    d.set_item("default", p.default)?;
+    d.set_item("min", p.min)?;
+    d.set_item("max", p.max)?;
+    d.set_item("description", p.description)?;
+    d.set_item("allowed", p.allowed)?;
+    Ok(d)
+}
+
+/// Validates a model: l > 0 m, m > 0 kg, finite g, a registered name and its parameters.
+#[pyfunction]
+#[pyo3(signature = (length, mass, g, model_name=None, extra=None))]
+fn check_model(
+    length: f64,
+    mass: f64,
+    g: f64,
+    model_name: Option<&str>,
+    extra: Option<Vec<(String, f64)>>,
+) -> PyResult<()> {
+    any_model(length, mass, g, model_name, extra).map(|_| ())
+}
+
+/// The model registry: name, summary, and parameters (common ones first) with units and limits.
+#[pyfunction]
+fn models(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
+    MODELS
+        .iter()
+        .map(|m| {
+            let d = PyDict::new(py);
+            d.set_item("name", m.name)?;
+            d.set_item("summary", m.summary)?;
+            let params: PyResult<Vec<_>> = COMMON.iter().chain(m.params).map(|p| param_dict(py, p)).collect();
+            d.set_item("params", params?)?;
+            Ok(d)
+        })
+        .collect()
 }
 
 fn arr3<'py>(py: Python<'py>, v: DVec3) -> Bound<'py, PyArray1<f64>> {
@@ -159,6 +218,8 @@ fn state_from_angles(
 /// Diagnostics along arrays x, v of shape (N, 3): energy [J], j3 [kg m²/s], tension [N],
 /// radius_error = |x| − l [m], tangency = x·v [m²/s].
 #[pyfunction]
+#[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None))]
+#[allow(clippy::too_many_arguments)]
 fn diagnostics<'py>(
     py: Python<'py>,
     length: f64,
@@ -166,8 +227,12 @@ fn diagnostics<'py>(
     g: f64,
     x: PyReadonlyArray2<'py, f64>,
     v: PyReadonlyArray2<'py, f64>,
+    model_name: Option<&str>,
+    extra: Option<Vec<(String, f64)>>,
+    t: Option<PyReadonlyArray1<'py, f64>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let m = model(length, mass, g)?;
+    let m = any_model(length, mass, g, model_name, extra)?;
+    let times = t.map(|t| t.as_array().to_vec());
     let (x, v) = (x.as_array(), v.as_array());
     if x.ncols() != 3 || v.dim() != x.dim() {
         return Err(InvalidInputError::new_err(format!(
@@ -177,7 +242,15 @@ fn diagnostics<'py>(
         )));
     }
     let n = x.nrows();
-    let mut out = [vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+    if let Some(ts) = &times {
+        if ts.len() != n {
+            return Err(InvalidInputError::new_err(format!(
+                "t must have {n} entries (one per state), got {}",
+                ts.len()
+            )));
+        }
+    }
+    let mut out = [vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]];
     for i in 0..n {
         let s = State {
             x: DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]]),
@@ -186,12 +259,16 @@ fn diagnostics<'py>(
         let r = s.residuals(length);
         out[0][i] = energy(&m, &s);
         out[1][i] = j3(&m, &s);
-        out[2][i] = tension(&m, 0.0, &s);
+        let ti = times.as_ref().map_or(0.0, |ts| ts[i]);
+        out[2][i] = tension(&m, ti, &s);
+        out[5][i] = m.params().mass * m.power_per_mass(ti, s.x, s.v);
         out[3][i] = r.length;
         out[4][i] = r.tangency;
     }
     let d = PyDict::new(py);
-    for (name, values) in ["energy", "j3", "tension", "radius_error", "tangency"].into_iter().zip(out) {
+    for (name, values) in
+        ["energy", "j3", "tension", "radius_error", "tangency", "power"].into_iter().zip(out)
+    {
         d.set_item(name, values.into_pyarray(py))?;
     }
     Ok(d)
@@ -208,13 +285,13 @@ fn stats_dict<'py>(py: Python<'py>, s: pendulab_core::Stats) -> PyResult<Bound<'
 /// A batch solver advanced in chunks from Python (progress bars, Ctrl-C between chunks).
 #[pyclass(module = "pendulab._core", name = "Solver")]
 struct Solver_ {
-    inner: Solver<IdealPendulum>,
+    inner: Solver<AnyModel>,
 }
 
 #[pymethods]
 impl Solver_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -232,8 +309,10 @@ impl Solver_ {
         save_every: Option<u64>,
         save_times: Option<PyReadonlyArray1<'_, f64>>,
         max_saved_bytes: Option<u64>,
+        model_name: Option<&str>,
+        extra: Option<Vec<(String, f64)>>,
     ) -> PyResult<Self> {
-        let m = model(length, mass, g)?;
+        let m = any_model(length, mass, g, model_name, extra)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
         let save = match (save_every, save_times) {
             (Some(_), Some(_)) => {
@@ -285,13 +364,13 @@ impl Solver_ {
 /// Incremental integration: step / step_to / state, for live viewing.
 #[pyclass(module = "pendulab._core", name = "Stepper")]
 struct Stepper_ {
-    inner: Stepper<IdealPendulum>,
+    inner: Stepper<AnyModel>,
 }
 
 #[pymethods]
 impl Stepper_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -305,8 +384,10 @@ impl Stepper_ {
         rtol: f64,
         atol: f64,
         project: bool,
+        model_name: Option<&str>,
+        extra: Option<Vec<(String, f64)>>,
     ) -> PyResult<Self> {
-        let m = model(length, mass, g)?;
+        let m = any_model(length, mass, g, model_name, extra)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
         let opts = options(method, dt, rtol, atol, project)?;
         Ok(Self { inner: Stepper::new(m, t0, s, &opts).map_err(to_py)? })
@@ -361,6 +442,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("InvalidInputError", m.py().get_type::<InvalidInputError>())?;
     m.add("IntegrationError", m.py().get_type::<IntegrationError>())?;
     m.add_function(wrap_pyfunction!(methods, m)?)?;
+    m.add_function(wrap_pyfunction!(models, m)?)?;
+    m.add_function(wrap_pyfunction!(check_model, m)?)?;
     m.add_function(wrap_pyfunction!(check_params, m)?)?;
     m.add_function(wrap_pyfunction!(state_on_ts2, m)?)?;
     m.add_function(wrap_pyfunction!(project_state, m)?)?;
