@@ -76,9 +76,7 @@ impl Exact {
             return Err(InvalidInputError::new_err(format!("t[{i}] = {bad} is not a finite time (s)")));
         }
         let inner = &self.inner;
-        let pairs: Vec<(State, f64)> = py
-            .allow_threads(|| t.iter().map(|&ti| inner.state_and_azimuth(ti)).collect::<Result<_, _>>())
-            .map_err(to_py)?;
+        let pairs: Vec<(State, f64)> = py.allow_threads(|| inner.states_at(&t)).map_err(to_py)?;
         let (states, phi): (Vec<State>, Vec<f64>) = pairs.into_iter().unzip();
         let (x, v) = to_arrays(py, &states);
         Ok((x, v, Array1::from(phi).into_pyarray(py)))

@@ -190,6 +190,17 @@ impl ExactSolution {
         }
     }
 
+    /// States and continuous azimuths at many times [s]; long arrays are split over all cores
+    /// (feature `parallel`, on by default). Fails on the first non-finite time.
+    pub fn states_at(&self, t: &[f64]) -> Result<Vec<(State, f64)>> {
+        #[cfg(feature = "parallel")]
+        if t.len() >= 4096 {
+            use rayon::prelude::*;
+            return t.par_iter().with_min_len(1024).map(|&ti| self.state_and_azimuth(ti)).collect();
+        }
+        t.iter().map(|&ti| self.state_and_azimuth(ti)).collect()
+    }
+
     fn to_si(&self, u: UnitState, l: f64) -> (State, f64) {
         let lw = l * self.omega0;
         let x = DVec3::new(u.x[0] * l, u.x[1] * l, self.mirror * u.x[2] * l);
