@@ -1,0 +1,271 @@
+//! Many ideal pendulums at once with RATTLE (T-2.1, T-2.2; the same step as `integrate/rattle.rs`,
+//! operation for operation, so each trajectory gets the single-trajectory numbers exactly):
+//!
+//!   v½ = v₀ − (h/2) g e₃ + μ x₀ (|x₁| = l),  x₁ = x₀ + h v½,  v₁ = v½ − (h/2) g e₃ − x₁ (x₁·u)/l²,
+//!
+//! with Kahan-compensated updates. Layout: blocks of [`LANES`] trajectories in structure-of-arrays
+//! form (each coordinate a fixed-size array), so the lane loop has no branches and the compiler
+//! vectorises it; blocks run in parallel with rayon (feature `parallel`). Per-trajectory length l [m]
+//! and gravity g [m/s²]. Memory is bounded by what is saved (final state, every n-th step, or a
+//! summary), never by trajectories × steps. Progress is a shared step counter and a cancel flag is
+//! checked every [`CHECK_EVERY`] steps. SI units throughout.
+
+use crate::error::{Error, Result};
+use crate::state::State;
+use glam::DVec3;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+
+/// Trajectories per block (the vector width the lane loop is written for).
+pub const LANES: usize = 64;
+/// Steps between progress updates and cancel checks in each block.
+pub const CHECK_EVERY: u64 = 1024;
+
+type Lanes = [f64; LANES];
+
+/// One block: positions, velocities, Kahan compensations and parameters of LANES trajectories.
+#[derive(Clone)]
+struct Block {
+    x: [Lanes; 3],
+    v: [Lanes; 3],
+    cx: [Lanes; 3],
+    cv: [Lanes; 3],
+    length: Lanes,
+    g: Lanes,
+    /// Number of real lanes (the rest repeat lane 0 and are ignored).
+    len: usize,
+    /// Per-lane summary: min z, max z, min E/m, max E/m, min J₃/m, max J₃/m.
+    summary: [Lanes; 6],
+}
+
+#[inline(always)]
+fn kahan(s: f64, d: f64, c: &mut f64) -> f64 {
+    let y = d - *c;
+    let t = s + y;
+    *c = (t - s) - y;
+    t
+}
+
+impl Block {
+    /// One RATTLE step of every lane (identical arithmetic to `Rattle::advance` for f = −g e₃).
+    #[inline(always)]
+    fn step(&mut self, h: f64) {
+        let half = 0.5 * h;
+        for i in 0..LANES {
+            let l = self.length[i];
+            let inv_l2 = 1.0 / (l * l);
+            let (x0, y0, z0) = (self.x[0][i], self.x[1][i], self.x[2][i]);
+            let (vx, vy, vz) = (self.v[0][i], self.v[1][i], self.v[2][i]);
+            let k0 = -self.g[i] * half;
+            let (wx, wy, wz) = (vx + 0.0 * half, vy + 0.0 * half, vz + k0);
+            let q = x0 * x0 + y0 * y0 + z0 * z0;
+            let xw = x0 * wx + y0 * wy + z0 * wz;
+            let b = q + h * xw;
+            let c = (q - l * l) + h * (2.0 * xw + h * (wx * wx + wy * wy + wz * wz));
+            let disc = b * b - q * c;
+            // no branch: a failed step (disc < 0, h far too large) gives NaN, caught after the run
+            let mu = -c / (h * (b + disc.sqrt()));
+            let (hx, hy, hz) = (wx + x0 * mu, wy + y0 * mu, wz + z0 * mu);
+            let x1 = kahan(x0, hx * h, &mut self.cx[0][i]);
+            let y1 = kahan(y0, hy * h, &mut self.cx[1][i]);
+            let z1 = kahan(z0, hz * h, &mut self.cx[2][i]);
+            let (ux, uy, uz) = (hx + 0.0 * half, hy + 0.0 * half, hz + k0);
+            let p = (x1 * ux + y1 * uy + z1 * uz) * inv_l2;
+            let dvx = 0.0 * half + x0 * mu + 0.0 * half - x1 * p;
+            let dvy = 0.0 * half + y0 * mu + 0.0 * half - y1 * p;
+            let dvz = k0 + z0 * mu + k0 - z1 * p;
+            self.x[0][i] = x1;
+            self.x[1][i] = y1;
+            self.x[2][i] = z1;
+            self.v[0][i] = kahan(vx, dvx, &mut self.cv[0][i]);
+            self.v[1][i] = kahan(vy, dvy, &mut self.cv[1][i]);
+            self.v[2][i] = kahan(vz, dvz, &mut self.cv[2][i]);
+        }
+    }
+
+    #[inline(always)]
+    fn update_summary(&mut self) {
+        for i in 0..LANES {
+            let (x, y, z) = (self.x[0][i], self.x[1][i], self.x[2][i]);
+            let (vx, vy, vz) = (self.v[0][i], self.v[1][i], self.v[2][i]);
+            let e = 0.5 * (vx * vx + vy * vy + vz * vz) + self.g[i] * z;
+            let j = x * vy - y * vx;
+            let s = &mut self.summary;
+            s[0][i] = s[0][i].min(z);
+            s[1][i] = s[1][i].max(z);
+            s[2][i] = s[2][i].min(e);
+            s[3][i] = s[3][i].max(e);
+            s[4][i] = s[4][i].min(j);
+            s[5][i] = s[5][i].max(j);
+        }
+    }
+
+    fn state(&self, i: usize) -> State {
+        State {
+            x: DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]),
+            v: DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]),
+        }
+    }
+}
+
+/// What an ensemble run keeps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EnsembleSave {
+    /// The final states only.
+    Final,
+    /// The initial state, every n-th step and the final state (n ≥ 1).
+    Every(u64),
+}
+
+/// Per-trajectory extremes over the run (per unit mass): z [m], E/m [J/kg], J₃/m [m²/s].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Summary {
+    /// min z, max z.
+    pub z: (f64, f64),
+    /// min and max of E/m = ½|v|² + g z.
+    pub energy_per_mass: (f64, f64),
+    /// min and max of J₃/m = (x × v)·e₃.
+    pub j3_per_mass: (f64, f64),
+}
+
+/// The result of [`run`]: saved states per trajectory (trajectory-major: `states[traj][sample]`),
+/// the sample times [s], per-trajectory summaries, and whether the run was cancelled.
+#[derive(Debug, Clone)]
+pub struct EnsembleResult {
+    /// Saved times [s] (shared by all trajectories).
+    pub t: Vec<f64>,
+    /// `states[k]` holds trajectory k's saved states.
+    pub states: Vec<Vec<State>>,
+    /// Per-trajectory extremes (when requested).
+    pub summary: Option<Vec<Summary>>,
+    /// True when the cancel flag stopped the run early (states are those reached).
+    pub cancelled: bool,
+    /// Steps taken by every trajectory.
+    pub steps: u64,
+}
+
+/// Integrates `starts` (with per-trajectory `length` [m] and `g` [m/s²], each of length 1 — broadcast
+/// — or of the ensemble's length) by `n_steps` RATTLE steps of `dt` [s]. `progress` counts
+/// trajectory-steps done; setting `cancel` stops every block at its next check.
+#[allow(clippy::too_many_arguments)]
+pub fn run(
+    starts: &[State],
+    length: &[f64],
+    g: &[f64],
+    dt: f64,
+    n_steps: u64,
+    save: EnsembleSave,
+    with_summary: bool,
+    progress: &AtomicU64,
+    cancel: &AtomicBool,
+) -> Result<EnsembleResult> {
+    let n = starts.len();
+    crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
+    for (name, a) in [("length", length), ("g", g)] {
+        if a.len() != 1 && a.len() != n {
+            return Err(Error::InvalidParameter {
+                name,
+                value: a.len() as f64,
+                allowed: "one value for all trajectories or one per trajectory",
+            });
+        }
+    }
+    let pick = |a: &[f64], k: usize| if a.len() == 1 { a[0] } else { a[k] };
+    for k in 0..n {
+        let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
+        State::on_tangent_bundle(&p, starts[k].x, starts[k].v)?;
+    }
+    let every = match save {
+        EnsembleSave::Final => n_steps.max(1),
+        EnsembleSave::Every(0) => {
+            return Err(Error::InvalidParameter {
+                name: "save_every",
+                value: 0.0,
+                allowed: "an integer >= 1",
+            })
+        }
+        EnsembleSave::Every(e) => e,
+    };
+    let mut blocks: Vec<Block> = (0..n.div_ceil(LANES))
+        .map(|b| {
+            let idx = |i: usize| (b * LANES + i).min(n - 1);
+            let len = (n - b * LANES).min(LANES);
+            let lanes = |f: &dyn Fn(usize) -> f64| -> Lanes { std::array::from_fn(|i| f(idx(i))) };
+            let mut blk = Block {
+                x: [0, 1, 2].map(|c| lanes(&|k| starts[k].x[c])),
+                v: [0, 1, 2].map(|c| lanes(&|k| starts[k].v[c])),
+                cx: [[0.0; LANES]; 3],
+                cv: [[0.0; LANES]; 3],
+                length: lanes(&|k| pick(length, k)),
+                g: lanes(&|k| pick(g, k)),
+                len,
+                summary: std::array::from_fn(|r| {
+                    [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
+                }),
+            };
+            blk.update_summary();
+            blk
+        })
+        .collect();
+    let work = |blk: &mut Block| -> (Vec<Vec<State>>, u64, bool) {
+        let mut saved: Vec<Vec<State>> = (0..blk.len).map(|i| vec![blk.state(i)]).collect();
+        let mut done = 0u64;
+        while done < n_steps {
+            let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
+            for _ in 0..chunk {
+                blk.step(dt);
+                if with_summary {
+                    blk.update_summary();
+                }
+            }
+            done += chunk;
+            progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
+            if done % every == 0 || done == n_steps {
+                for (i, s) in saved.iter_mut().enumerate() {
+                    s.push(blk.state(i));
+                }
+            }
+            if cancel.load(Ordering::Relaxed) {
+                return (saved, done, true);
+            }
+        }
+        (saved, done, false)
+    };
+    #[cfg(feature = "parallel")]
+    let outputs: Vec<_> = {
+        use rayon::prelude::*;
+        blocks.par_iter_mut().map(work).collect()
+    };
+    #[cfg(not(feature = "parallel"))]
+    let outputs: Vec<_> = blocks.iter_mut().map(work).collect();
+    let cancelled = outputs.iter().any(|o| o.2);
+    let steps = outputs.iter().map(|o| o.1).min().unwrap_or(0);
+    let mut t: Vec<f64> = vec![0.0];
+    let mut k = 0;
+    while k < steps {
+        k = (k + every - k % every).min(n_steps);
+        if k > steps {
+            break;
+        }
+        t.push(k as f64 * dt);
+    }
+    let mut states: Vec<Vec<State>> = outputs.into_iter().flat_map(|o| o.0).collect();
+    for s in &mut states {
+        s.truncate(t.len());
+    }
+    if states.iter().any(|s| !s.last().is_some_and(State::is_finite)) {
+        return Err(Error::Diverged { t: steps as f64 * dt, method: "rattle (ensemble)", dt });
+    }
+    let summary = with_summary.then(|| {
+        blocks
+            .iter()
+            .flat_map(|b| {
+                (0..b.len).map(|i| Summary {
+                    z: (b.summary[0][i], b.summary[1][i]),
+                    energy_per_mass: (b.summary[2][i], b.summary[3][i]),
+                    j3_per_mass: (b.summary[4][i], b.summary[5][i]),
+                })
+            })
+            .collect()
+    });
+    Ok(EnsembleResult { t, states, summary, cancelled, steps })
+}
