@@ -170,9 +170,9 @@ pub fn run(
         }
     }
     let pick = |a: &[f64], k: usize| if a.len() == 1 { a[0] } else { a[k] };
-    for k in 0..n {
+    for (k, s) in starts.iter().enumerate() {
         let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
-        State::on_tangent_bundle(&p, starts[k].x, starts[k].v)?;
+        State::on_tangent_bundle(&p, s.x, s.v)?;
     }
     let every = match save {
         EnsembleSave::Final => n_steps.max(1),
