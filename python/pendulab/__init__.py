@@ -16,6 +16,7 @@ Plots (matplotlib, optional): ``pendulab.plot``.
 from ._core import IntegrationError, InvalidInputError, __version__
 from .advance import MeasuredAdvance, measured_azimuth_advance
 from .em_map import EMMap, em_map
+from .ensemble import EnsembleResult, simulate_ensemble, states_from_angles
 from .exact import ExactSolution, Phases, exact
 from .model import Pendulum, State
 from .reduce import Reduced, reduce, reduced_flow
@@ -25,6 +26,7 @@ from .trajectory import Trajectory
 
 __all__ = [
     "EMMap",
+    "EnsembleResult",
     "ExactSolution",
     "IntegrationError",
     "InvalidInputError",
@@ -47,4 +49,6 @@ __all__ = [
     "reduce",
     "reduced_flow",
     "simulate",
+    "simulate_ensemble",
+    "states_from_angles",
 ]

@@ -3,7 +3,7 @@
 Units are SI: m, kg, s, rad. Vectors are float64 arrays of shape (3,), sequences (N, 3).
 """
 
-from typing import TypedDict
+from typing import Any, TypedDict
 
 import numpy as np
 import numpy.typing as npt
@@ -167,3 +167,24 @@ def reduced_flow(
 def rotation_numbers(eps: FloatArray, j: FloatArray) -> FloatArray: ...
 def conical_curve(u: FloatArray) -> tuple[FloatArray, FloatArray]: ...
 def monodromy(r: float = 0.5, n: int = 720) -> float: ...
+
+# --- python/rust/ensemble.rs: many trajectories at once ---
+
+class EnsembleRun:
+    def __init__(
+        self,
+        x: FloatArray,
+        v: FloatArray,
+        length: FloatArray,
+        g: FloatArray,
+        dt: float,
+        n_steps: int,
+        save_every: int | None = None,
+        summary: bool = True,
+    ) -> None: ...
+    @property
+    def progress(self) -> float: ...
+    @property
+    def done(self) -> bool: ...
+    def cancel(self) -> None: ...
+    def result(self) -> dict[str, Any]: ...

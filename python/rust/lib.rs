@@ -3,6 +3,7 @@
 //!
 //! Units are SI throughout (m, kg, s, rad). Arrays of 3-vectors are float64 with shape (N, 3).
 
+mod ensemble;
 mod exact;
 
 use numpy::ndarray::Array2;
@@ -452,6 +453,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Solver_>()?;
     m.add_class::<Stepper_>()?;
     exact::register(m)?;
+    ensemble::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -1,0 +1,148 @@
+//! Binding of the ensemble kernel (`pendulab_core::ensemble`): the run goes on a background thread
+//! so that Python can show progress and cancel (Ctrl-C) while it works. Conversions only; SI units.
+
+use crate::{to_py, InvalidInputError};
+use numpy::ndarray::{Array1, Array3};
+use numpy::{IntoPyArray, PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
+use pendulab_core::ensemble::{run, EnsembleResult, EnsembleSave};
+use pendulab_core::{DVec3, Result as CoreResult, State};
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::Arc;
+use std::thread::JoinHandle;
+
+/// An ensemble run in progress (RATTLE, ideal pendulum, per-trajectory l and g).
+#[pyclass(module = "pendulab._core", name = "EnsembleRun")]
+pub struct EnsembleRun {
+    progress: Arc<AtomicU64>,
+    cancel: Arc<AtomicBool>,
+    total: u64,
+    handle: Option<JoinHandle<CoreResult<EnsembleResult>>>,
+}
+
+#[pymethods]
+impl EnsembleRun {
+    /// Starts `n_steps` steps of `dt` [s] from x, v (N, 3) [m, m/s] with length and g arrays of
+    /// length 1 or N; saves every `save_every` steps (None: final only); `summary`: extremes of z,
+    /// E/m and J₃/m per trajectory.
+    #[new]
+    #[pyo3(signature = (x, v, length, g, dt, n_steps, save_every=None, summary=true))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        x: PyReadonlyArray2<'_, f64>,
+        v: PyReadonlyArray2<'_, f64>,
+        length: PyReadonlyArray1<'_, f64>,
+        g: PyReadonlyArray1<'_, f64>,
+        dt: f64,
+        n_steps: u64,
+        save_every: Option<u64>,
+        summary: bool,
+    ) -> PyResult<Self> {
+        let (xa, va) = (x.as_array(), v.as_array());
+        if xa.ncols() != 3 || va.dim() != xa.dim() || xa.nrows() == 0 {
+            return Err(InvalidInputError::new_err(format!(
+                "x and v must both have shape (N, 3) with N >= 1, got {:?} and {:?}",
+                xa.dim(),
+                va.dim()
+            )));
+        }
+        let starts: Vec<State> = (0..xa.nrows())
+            .map(|i| State {
+                x: DVec3::new(xa[[i, 0]], xa[[i, 1]], xa[[i, 2]]),
+                v: DVec3::new(va[[i, 0]], va[[i, 1]], va[[i, 2]]),
+            })
+            .collect();
+        let (length, g) = (length.as_array().to_vec(), g.as_array().to_vec());
+        let save = save_every.map_or(EnsembleSave::Final, EnsembleSave::Every);
+        let progress = Arc::new(AtomicU64::new(0));
+        let cancel = Arc::new(AtomicBool::new(false));
+        let total = n_steps.saturating_mul(starts.len() as u64);
+        // Validate before starting the thread, so bad input raises here and not later.
+        let (p0, c0) = (AtomicU64::new(0), AtomicBool::new(false));
+        run(&starts, &length, &g, dt, 0, save, false, &p0, &c0).map_err(to_py)?;
+        let (p, c) = (progress.clone(), cancel.clone());
+        let handle =
+            std::thread::spawn(move || run(&starts, &length, &g, dt, n_steps, save, summary, &p, &c));
+        Ok(Self { progress, cancel, total, handle: Some(handle) })
+    }
+
+    /// Fraction of trajectory-steps done.
+    #[getter]
+    fn progress(&self) -> f64 {
+        if self.total == 0 {
+            1.0
+        } else {
+            self.progress.load(Ordering::Relaxed) as f64 / self.total as f64
+        }
+    }
+
+    /// True when the run has finished (or stopped after a cancel).
+    #[getter]
+    fn done(&self) -> bool {
+        self.handle.as_ref().map_or(true, JoinHandle::is_finished)
+    }
+
+    /// Asks every block to stop at its next check (within 1024 steps).
+    fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+
+    /// Waits for the run and returns a dict: t (n_save,), x, v (N, n_save, 3), cancelled, steps and,
+    /// with a summary, z_min, z_max, e_min, e_max (per unit mass, J/kg), j3_min, j3_max (m²/s).
+    fn result<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let handle =
+            self.handle.take().ok_or_else(|| PyRuntimeError::new_err("the result was already taken"))?;
+        let res = py
+            .allow_threads(|| handle.join())
+            .map_err(|_| PyRuntimeError::new_err("the ensemble thread panicked"))?
+            .map_err(to_py)?;
+        let (n, ns) = (res.states.len(), res.t.len());
+        let mut x = Array3::<f64>::zeros((n, ns, 3));
+        let mut v = Array3::<f64>::zeros((n, ns, 3));
+        for (i, traj) in res.states.iter().enumerate() {
+            for (j, s) in traj.iter().enumerate() {
+                for k in 0..3 {
+                    x[[i, j, k]] = s.x[k];
+                    v[[i, j, k]] = s.v[k];
+                }
+            }
+        }
+        let d = PyDict::new(py);
+        d.set_item("t", Array1::from(res.t).into_pyarray(py))?;
+        let (xs, vs): (Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>) =
+            (x.into_pyarray(py), v.into_pyarray(py));
+        d.set_item("x", xs)?;
+        d.set_item("v", vs)?;
+        d.set_item("cancelled", res.cancelled)?;
+        d.set_item("steps", res.steps)?;
+        if let Some(s) = res.summary {
+            let col = |f: &dyn Fn(&pendulab_core::ensemble::Summary) -> f64| -> Bound<'py, PyArray1<f64>> {
+                Array1::from(s.iter().map(f).collect::<Vec<_>>()).into_pyarray(py)
+            };
+            d.set_item("z_min", col(&|q| q.z.0))?;
+            d.set_item("z_max", col(&|q| q.z.1))?;
+            d.set_item("e_min", col(&|q| q.energy_per_mass.0))?;
+            d.set_item("e_max", col(&|q| q.energy_per_mass.1))?;
+            d.set_item("j3_min", col(&|q| q.j3_per_mass.0))?;
+            d.set_item("j3_max", col(&|q| q.j3_per_mass.1))?;
+        }
+        Ok(d)
+    }
+}
+
+impl Drop for EnsembleRun {
+    fn drop(&mut self) {
+        // Never leave a thread running behind a dropped handle.
+        self.cancel.store(true, Ordering::Relaxed);
+        if let Some(h) = self.handle.take() {
+            let _ = h.join();
+        }
+    }
+}
+
+/// Registers the class.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<EnsembleRun>()
+}
