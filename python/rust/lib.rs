@@ -272,6 +272,17 @@ fn diagnostics<'py>(
     {
         d.set_item(name, values.into_pyarray(py))?;
     }
+    // A moving pivot: its position p(t) [m] (the bob is at p + x in the inertial frame).
+    if let (Some(path), Some(ts)) = (m.pivot(), &times) {
+        let mut p = Array2::<f64>::zeros((n, 3));
+        for (i, &ti) in ts.iter().enumerate() {
+            let q = path.position(ti);
+            for k in 0..3 {
+                p[[i, k]] = q[k];
+            }
+        }
+        d.set_item("pivot", p.into_pyarray(py))?;
+    }
     Ok(d)
 }
 

@@ -15,10 +15,12 @@
 
 pub mod extended;
 pub mod ideal;
+pub mod pivot;
 pub mod registry;
 
 pub use extended::Extended;
 pub use ideal::IdealPendulum;
+pub use pivot::{MovingPivot, PivotPath};
 pub use registry::AnyModel;
 
 use crate::state::{Params, State};

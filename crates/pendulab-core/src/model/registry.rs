@@ -3,6 +3,7 @@
 //! lab's controls are generated from. All models share length l [m], mass m [kg] and gravity g
 //! [m/s²]; the extra parameters switch on the terms of [`Extended`] (THEORY.md §7).
 
+use super::pivot::{MovingPivot, PivotPath};
 use super::{Extended, IdealPendulum, Model};
 use crate::error::{Error, Result};
 use crate::state::{Params, State};
@@ -116,6 +117,19 @@ const ROTATING: &[ParamSpec] = &[
     p("damping", "1/s", 0.0, 0.0, "linear viscous damping c: force −m c v"),
 ];
 
+const SLEWING: &[ParamSpec] = &[
+    p("radius", "m", 5.0, -INF, "slewing crane: boom radius R of the pivot circle"),
+    p("rate", "rad/s", 0.1, -INF, "slewing rate ω (pivot at (R cos ωt, R sin ωt, h))"),
+    p("height", "m", 0.0, -INF, "pivot height h"),
+    p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
+];
+
+const VIBRATING: &[ParamSpec] = &[
+    p("amplitude", "m", 0.05, -INF, "vertical vibration amplitude A (pivot at (0, 0, A cos νt))"),
+    p("frequency", "rad/s", 200.0, -INF, "vibration angular frequency ν; Kapitza: (Aν)² > 2 g l"),
+    p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
+];
+
 /// Every registered model.
 pub const MODELS: &[ModelSpec] = &[
     ModelSpec { name: "ideal", summary: "the ideal spherical pendulum (THEORY §2)", params: &[] },
@@ -129,6 +143,12 @@ pub const MODELS: &[ModelSpec] = &[
         summary: "in a rotating frame (Foucault, T-7.3), optionally damped",
         params: ROTATING,
     },
+    ModelSpec { name: "slewing", summary: "pivot on a slewing crane's boom tip (T-7.2)", params: SLEWING },
+    ModelSpec {
+        name: "vibrating",
+        summary: "vertically vibrated pivot (Kapitza's inverted pendulum, T-7.2)",
+        params: VIBRATING,
+    },
 ];
 
 /// The spec of model `name`, or an error listing the models.
@@ -139,6 +159,16 @@ pub fn spec(name: &str) -> Result<&'static ModelSpec> {
     })
 }
 
+impl AnyModel {
+    /// The pivot path of a moving-pivot model (None for a fixed pivot).
+    pub fn pivot(&self) -> Option<&PivotPath> {
+        match self {
+            AnyModel::Pivot(m) => Some(m.path()),
+            _ => None,
+        }
+    }
+}
+
 /// A model built from the registry: the ideal pendulum stays [`IdealPendulum`] (its fast path).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum AnyModel {
@@ -146,6 +176,8 @@ pub enum AnyModel {
     Ideal(IdealPendulum),
     /// Any of the extended models.
     Extended(Extended, &'static str),
+    /// A moving pivot.
+    Pivot(MovingPivot),
 }
 
 impl AnyModel {
@@ -184,12 +216,29 @@ impl AnyModel {
                     )?,
                 "damped",
             ),
-            _ => AnyModel::Extended(
+            "rotating" => AnyModel::Extended(
                 Extended::ideal(params)
                     .with_damping(get("damping").unwrap(), 0.0)?
                     .with_latitude_frame(get("frame_rate").unwrap(), get("latitude").unwrap())?,
                 "rotating",
             ),
+            "slewing" => AnyModel::Pivot(MovingPivot::new(
+                params,
+                PivotPath::Slewing {
+                    radius: get("radius").unwrap(),
+                    rate: get("rate").unwrap(),
+                    height: get("height").unwrap(),
+                },
+                get("damping").unwrap(),
+            )?),
+            _ => AnyModel::Pivot(MovingPivot::new(
+                params,
+                PivotPath::Vertical {
+                    amplitude: get("amplitude").unwrap(),
+                    frequency: get("frequency").unwrap(),
+                },
+                get("damping").unwrap(),
+            )?),
         })
     }
 }
@@ -199,6 +248,7 @@ macro_rules! both {
         match $self {
             AnyModel::Ideal($m) => $e,
             AnyModel::Extended($m, _) => $e,
+            AnyModel::Pivot($m) => $e,
         }
     };
 }
@@ -208,6 +258,7 @@ impl Model for AnyModel {
         match self {
             AnyModel::Ideal(_) => "ideal",
             AnyModel::Extended(_, name) => name,
+            AnyModel::Pivot(m) => m.name(),
         }
     }
     fn params(&self) -> &Params {

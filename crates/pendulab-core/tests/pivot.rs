@@ -1,0 +1,103 @@
+//! Moving pivot (THEORY.md T-7.2): the slewing crane's static offset ω²R/(ω₀² − ω²) and its natural
+//! frequencies ω₀ ± ω in the boom frame (spectral peaks of a nonlinear small-amplitude run), the
+//! power balance with the pivot's inertial force, and Kapitza's stabilised inverted pendulum for
+//! (Aν)² > 2 g l. SI units; l = 1 m, g = 9.81 m/s².
+
+use pendulab_core::model::registry::{power_balance_residual, AnyModel};
+use pendulab_core::{DVec3, Method, Model, Params, SolveOptions, State, Stepper};
+
+fn model(name: &str, extra: &[(&str, f64)]) -> AnyModel {
+    AnyModel::build(name, Params::new(1.0, 1.0, 9.81).unwrap(), extra).unwrap()
+}
+
+fn opts(dt: f64) -> SolveOptions {
+    SolveOptions { method: Method::Rattle4, dt, ..SolveOptions::default() }
+}
+
+/// (radial, tangential) displacement of the bob in the boom frame at time t [m].
+fn boom_frame(x: DVec3, rate: f64, t: f64) -> (f64, f64) {
+    let (s, c) = (rate * t).sin_cos();
+    (x.x * c + x.y * s, -x.x * s + x.y * c)
+}
+
+#[test]
+fn slewing_static_offset() {
+    let (r, w, w0sq) = (0.02, 0.5, 9.81);
+    let m = model("slewing", &[("radius", r), ("rate", w), ("damping", 0.2)]);
+    let s0 = State { x: DVec3::new(0.0, 0.0, -1.0), v: DVec3::ZERO };
+    let mut st = Stepper::new(m, 0.0, s0, &opts(5e-3)).unwrap();
+    st.step_to(150.0).unwrap(); // transients decay like e^{−ct/2}
+    let (radial, tangential) = boom_frame(st.state().x, w, st.t());
+    let want = w * w * r / (w0sq - w * w);
+    eprintln!("static offset {radial:e} m (linear theory {want:e} m), tangential {tangential:e} m");
+    assert!((radial - want).abs() < 1e-3 * want, "{radial} vs {want}");
+    // damping relative to the pivot adds a lag: (ω₀² − ω²) y = −c ω x in the linear theory
+    let lag = -0.2 * w * want / (w0sq - w * w);
+    assert!((tangential - lag).abs() < 0.05 * lag.abs(), "{tangential} vs {lag}");
+}
+
+#[test]
+fn slewing_natural_frequencies_are_omega0_plus_minus_omega() {
+    let (w, w0) = (0.5, 9.81f64.sqrt());
+    let m = model("slewing", &[("radius", 0.0), ("rate", w)]);
+    let s0 = State::from_angles(m.params(), 0.02, 0.0, 0.0, 0.0).unwrap();
+    let (dt, n) = (0.02, 10_000); // 200 s
+    let mut st = Stepper::new(m, 0.0, s0, &opts(1e-3)).unwrap();
+    let mut xs = Vec::with_capacity(n);
+    for k in 0..n {
+        st.step_to(k as f64 * dt).unwrap();
+        xs.push(boom_frame(st.state().x, w, st.t()).0);
+    }
+    // power spectrum on a fine grid of angular frequencies
+    let power = |f: f64| {
+        let (mut re, mut im) = (0.0, 0.0);
+        for (k, x) in xs.iter().enumerate() {
+            let (s, c) = (f * k as f64 * dt).sin_cos();
+            re += x * c;
+            im += x * s;
+        }
+        re * re + im * im
+    };
+    let grid: Vec<f64> = (0..1200).map(|i| 1.5 + i as f64 * 0.0025).collect();
+    let p: Vec<f64> = grid.iter().map(|&f| power(f)).collect();
+    let mut peaks: Vec<(f64, f64)> =
+        (1..p.len() - 1).filter(|&i| p[i] > p[i - 1] && p[i] > p[i + 1]).map(|i| (p[i], grid[i])).collect();
+    peaks.sort_by(|a, b| b.0.total_cmp(&a.0));
+    let mut top: Vec<f64> = peaks.iter().take(2).map(|q| q.1).collect();
+    top.sort_by(f64::total_cmp);
+    eprintln!("spectral peaks at {top:?} rad/s; theory {} and {}", w0 - w, w0 + w);
+    let resolution = 2.0 * std::f64::consts::PI / (n as f64 * dt);
+    assert!((top[0] - (w0 - w)).abs() < resolution && (top[1] - (w0 + w)).abs() < resolution, "{top:?}");
+}
+
+#[test]
+fn moving_pivot_power_balance() {
+    let m = model("slewing", &[("radius", 1.0), ("rate", 0.8), ("damping", 0.05)]);
+    let s0 = State::from_angles(m.params(), 0.4, 0.0, 0.0, 1.0).unwrap();
+    let mut st = Stepper::new(m, 0.0, s0, &opts(1e-3)).unwrap();
+    let (mut t, mut s) = (vec![0.0], vec![s0]);
+    for k in 1..=10_000 {
+        st.step_to(k as f64 * 1e-3).unwrap();
+        t.push(st.t());
+        s.push(*st.state());
+    }
+    let worst = power_balance_residual(&m, &t, &s).iter().fold(0.0f64, |a, r| a.max(r.abs()));
+    assert!(worst < 1e-5, "{worst:e} J");
+}
+
+#[test]
+fn kapitza_stabilises_the_inverted_pendulum() {
+    // (Aν)² = 100 > 2 g l = 19.6: stable near the top; without vibration it falls.
+    let s0 = |m: &AnyModel| State::from_angles(m.params(), 170f64.to_radians(), 0.0, 0.0, 0.0).unwrap();
+    for (amplitude, stays) in [(0.05, true), (0.0, false)] {
+        let m = model("vibrating", &[("amplitude", amplitude), ("frequency", 200.0)]);
+        let mut st = Stepper::new(m, 0.0, s0(&m), &opts(2e-4)).unwrap();
+        let mut lowest = f64::INFINITY;
+        while st.t() < 10.0 {
+            st.step_n(50).unwrap();
+            lowest = lowest.min(st.state().x.z);
+        }
+        eprintln!("A = {amplitude} m: lowest z = {lowest} m");
+        assert_eq!(lowest > 0.9, stays, "A = {amplitude}: lowest z {lowest}");
+    }
+}
