@@ -22,10 +22,12 @@
 //! - [`exact`]: the exact solution by elliptic functions (§4), phases (§5), energy–momentum map (T-6.4).
 //! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
 //! - [`quadrature`]: adaptive Gauss–Kronrod quadrature.
+//! - [`elastic`]: the swinging spring (T-7.4) with its own symplectic integrators.
 //! - [`ensemble`]: many trajectories at once (SoA blocks, rayon), RATTLE.
 //! - [`error`]: the error type.
 
 /// Elliptic integrals (Legendre, via Carlson) and Jacobi elliptic functions for the exact solution.
+pub mod elastic;
 pub mod elliptic;
 pub mod ensemble;
 pub mod error;

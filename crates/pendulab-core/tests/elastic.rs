@@ -1,0 +1,110 @@
+//! The swinging spring (THEORY.md T-7.4): observed orders 2 and 4, E bounded and J₃ kept to round-off
+//! over 10⁶ steps (symplectic, axisymmetric), and at the 1:1:2 resonance the energy exchange between
+//! bouncing and swinging and the stepwise turning of the swing plane. SI units: l = 1 m equilibrium,
+//! g = 9.81 m/s², m = 1 kg.
+
+use pendulab_core::elastic::SwingingSpring;
+use pendulab_core::{DVec3, State};
+
+fn spring() -> SwingingSpring {
+    SwingingSpring::resonant(1.0, 9.81, 1.0).unwrap()
+}
+
+fn run(sp: &SwingingSpring, s0: State, t: f64, dt: f64, order: u32) -> State {
+    let n = (t / dt).round() as u64;
+    *sp.simulate(s0, dt, n, n, order).unwrap().1.last().unwrap()
+}
+
+#[test]
+fn observed_orders() {
+    let sp = spring();
+    let s0 = State { x: DVec3::new(0.1, 0.05, -1.05), v: DVec3::new(0.0, 0.2, 0.1) };
+    let reference = run(&sp, s0, 2.0, 1e-4, 4);
+    for (order, dt) in [(2u32, 4e-3), (4, 2e-2)] {
+        let err = |dt: f64| (run(&sp, s0, 2.0, dt, order).x - reference.x).length();
+        let observed = (err(dt) / err(dt / 2.0)).log2();
+        assert!((observed - order as f64).abs() < 0.3, "order {order}: observed {observed}");
+    }
+}
+
+#[test]
+fn energy_bounded_and_j3_kept_over_a_million_steps() {
+    let sp = spring();
+    let s0 = State { x: DVec3::new(0.1, 0.05, -1.05), v: DVec3::new(0.0, 0.2, 0.1) };
+    let (_, states) = sp.simulate(s0, 1e-3, 1_000_000, 1000, 2).unwrap();
+    let (e0, j0) = (sp.energy(&s0), sp.j3(&s0));
+    let de: Vec<f64> = states.iter().map(|s| (sp.energy(s) - e0).abs()).collect();
+    let half = de.len() / 2;
+    let (first, second) =
+        (de[..half].iter().cloned().fold(0.0, f64::max), de[half..].iter().cloned().fold(0.0, f64::max));
+    assert!(second <= 1.5 * first, "energy drifts: {first:e} then {second:e}");
+    let dj = states.iter().map(|s| (sp.j3(s) - j0).abs()).fold(0.0, f64::max);
+    assert!(dj < 1e-12 * j0.abs().max(1e-3), "J₃ changed by {dj:e}");
+}
+
+/// Bouncing energy: spring stretch and radial motion about the equilibrium length [J].
+fn bounce(sp: &SwingingSpring, s: &State) -> f64 {
+    let r = s.x.length();
+    let rdot = s.x.dot(s.v) / r;
+    let dl = r - sp.equilibrium_length();
+    sp.mass * (0.5 * rdot * rdot + 0.5 * sp.k_over_m * dl * dl)
+}
+
+#[test]
+fn resonance_exchanges_energy_and_turns_the_swing_plane_in_steps() {
+    let sp = spring();
+    // mostly bouncing, with a small swing slightly out of one plane
+    let s0 = State { x: DVec3::new(0.01, 0.002, -1.0 - 0.05), v: DVec3::new(0.0, 0.003, 0.0) };
+    let (t, states) = sp.simulate(s0, 1e-3, 200_000, 10, 4).unwrap();
+    let b: Vec<f64> = states.iter().map(|s| bounce(&sp, s)).collect();
+    let b0 = b[0];
+    // the bouncing energy drains to a small fraction and comes back, periodically
+    let coarse: Vec<String> = b.iter().step_by(500).map(|v| format!("{:.2}", v / b0)).collect();
+    eprintln!("bouncing energy / start, every 5 s: {}", coarse.join(" "));
+    let first_low = b.iter().position(|&v| v < 0.1 * b0).expect("bouncing energy never fell below 10 %");
+    let back = b[first_low..].iter().cloned().fold(0.0, f64::max);
+    assert!(back > 0.8 * b0, "energy did not return to bouncing ({:.2})", back / b0);
+    // swing plane azimuth during each swinging episode (bouncing energy < 20 %): nearly constant
+    // inside an episode, different between successive episodes
+    let mut episodes: Vec<Vec<f64>> = vec![];
+    let mut starts: Vec<f64> = vec![];
+    let mut inside = false;
+    for (k, s) in states.iter().enumerate() {
+        let swinging = b[k] < 0.2 * b0;
+        if swinging && !inside {
+            episodes.push(vec![]);
+            starts.push(t[k]);
+        }
+        inside = swinging;
+        let rho = s.x.x.hypot(s.x.y);
+        if swinging && rho > 0.5 * 0.1 {
+            // direction of the swing (a line: fold to (−π/2, π/2])
+            let mut a = s.x.y.atan2(s.x.x);
+            if a > std::f64::consts::FRAC_PI_2 {
+                a -= std::f64::consts::PI;
+            } else if a <= -std::f64::consts::FRAC_PI_2 {
+                a += std::f64::consts::PI;
+            }
+            episodes.last_mut().unwrap().push(a);
+        }
+    }
+    let mean = |v: &Vec<f64>| v.iter().sum::<f64>() / v.len() as f64;
+    let full: Vec<&Vec<f64>> = episodes.iter().filter(|e| e.len() > 20).collect();
+    eprintln!(
+        "{} swinging episodes in {} s; plane azimuths {:?}",
+        full.len(),
+        t.last().unwrap(),
+        full.iter().map(|e| mean(e)).collect::<Vec<_>>()
+    );
+    assert!(full.len() >= 2, "expected at least two swinging episodes");
+    // the exchange is periodic: successive swinging episodes start a fixed time apart
+    let gaps: Vec<f64> = starts.windows(2).map(|w| w[1] - w[0]).collect();
+    let mean_gap = gaps.iter().sum::<f64>() / gaps.len() as f64;
+    eprintln!("exchange period {mean_gap:.2} s (gaps {gaps:?})");
+    assert!(gaps.iter().all(|g| (g - mean_gap).abs() < 0.1 * mean_gap), "not periodic: {gaps:?}");
+    for w in full.windows(2) {
+        let step = (mean(w[1]) - mean(w[0])).abs();
+        let spread = w[0].iter().map(|a| (a - mean(w[0])).abs()).fold(0.0, f64::max);
+        assert!(step > 2.0 * spread, "plane turned by {step} between episodes, spread {spread} inside one");
+    }
+}
