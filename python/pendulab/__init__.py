@@ -22,6 +22,7 @@ from .model import Pendulum, State
 from .reduce import Reduced, reduce, reduced_flow
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulate import Stepper, method_names, methods, simulate
+from .spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .trajectory import Trajectory
 
 __all__ = [
@@ -36,8 +37,10 @@ __all__ = [
     "Reduced",
     "Scenario",
     "ScenarioError",
+    "SpringTrajectory",
     "State",
     "Stepper",
+    "SwingingSpring",
     "Trajectory",
     "__version__",
     "em_map",
@@ -50,5 +53,6 @@ __all__ = [
     "reduced_flow",
     "simulate",
     "simulate_ensemble",
+    "simulate_spring",
     "states_from_angles",
 ]

@@ -188,3 +188,18 @@ class EnsembleRun:
     def done(self) -> bool: ...
     def cancel(self) -> None: ...
     def result(self) -> dict[str, Any]: ...
+
+# --- python/rust/spring.rs: the swinging spring ---
+
+def spring_simulate(
+    k_over_m: float,
+    rest_length: float,
+    g: float,
+    mass: float,
+    x0: FloatArray,
+    v0: FloatArray,
+    dt: float,
+    n_steps: int,
+    save_every: int = 1,
+    order: int = 2,
+) -> dict[str, Any]: ...

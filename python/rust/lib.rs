@@ -5,6 +5,7 @@
 
 mod ensemble;
 mod exact;
+mod spring;
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
@@ -465,6 +466,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<Stepper_>()?;
     exact::register(m)?;
     ensemble::register(m)?;
+    spring::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -133,6 +133,7 @@ impl SwingingSpring {
             });
         }
         let mut s = start;
+        self.step(&mut s, 0.0, order)?; // a zero step: checks the order, changes nothing
         let (mut t, mut states) = (vec![0.0], vec![start]);
         for k in 1..=n_steps {
             self.step(&mut s, dt, order).map_err(|_| Error::Diverged {
