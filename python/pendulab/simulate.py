@@ -44,6 +44,7 @@ def simulate(
     rtol: float = 1e-10,
     atol: float = 1e-12,
     project: bool = True,
+    conserve: bool = False,
     save_every: int | None = None,
     save_at: Any = None,
     t0: float = 0.0,
@@ -58,6 +59,9 @@ def simulate(
     dt : step size [s] of fixed-step methods (default 1e-3 s); for ``dop853`` an optional initial step.
     rtol, atol : tolerances of ``dop853`` (atol in m and m/s).
     project : ``dop853`` only: project onto TS² after every step (default True).
+    conserve : ``dop853`` only (with ``project``): also project the velocity so that E (conservative
+        models) and J₃ (axisymmetric ones) keep their initial values — removes the linear energy drift
+        that near the separatrix turns into a growing phase error (docs/integrators.md).
     save_every : keep every n-th step (default 1), plus the initial and final states.
     save_at : array of times [s] to keep instead (dense output for ``dop853``; fixed-step methods
         land on each time exactly).
@@ -92,6 +96,7 @@ def simulate(
         times,
         max_saved_bytes,
         **pendulum._model_kwargs(),
+        conserve=bool(conserve),
     )
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
@@ -145,6 +150,7 @@ class Stepper:
         atol: float = 1e-12,
         project: bool = True,
         t0: float = 0.0,
+        conserve: bool = False,
     ) -> None:
         self.pendulum = pendulum
         self._core = _core.Stepper(
@@ -158,6 +164,7 @@ class Stepper:
             float(atol),
             bool(project),
             **pendulum._model_kwargs(),
+            conserve=bool(conserve),
         )
 
     @property

@@ -304,7 +304,7 @@ struct Solver_ {
 #[pymethods]
 impl Solver_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, conserve=false))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -324,6 +324,7 @@ impl Solver_ {
         max_saved_bytes: Option<u64>,
         model_name: Option<&str>,
         extra: Option<Vec<(String, f64)>>,
+        conserve: bool,
     ) -> PyResult<Self> {
         let m = any_model(length, mass, g, model_name, extra)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
@@ -335,9 +336,10 @@ impl Solver_ {
             (n, None) => SaveAt::Every(n.unwrap_or(1)),
         };
         let opts = options(method, dt, rtol, atol, project)?;
-        let inner =
+        let mut inner =
             Solver::new(m, t0, s, t_end, &opts, save, max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES))
                 .map_err(to_py)?;
+        inner.stepper_mut().set_invariant_projection(conserve);
         Ok(Self { inner })
     }
 
@@ -383,7 +385,7 @@ struct Stepper_ {
 #[pymethods]
 impl Stepper_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None, conserve=false))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -399,11 +401,14 @@ impl Stepper_ {
         project: bool,
         model_name: Option<&str>,
         extra: Option<Vec<(String, f64)>>,
+        conserve: bool,
     ) -> PyResult<Self> {
         let m = any_model(length, mass, g, model_name, extra)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
         let opts = options(method, dt, rtol, atol, project)?;
-        Ok(Self { inner: Stepper::new(m, t0, s, &opts).map_err(to_py)? })
+        let mut inner = Stepper::new(m, t0, s, &opts).map_err(to_py)?;
+        inner.set_invariant_projection(conserve);
+        Ok(Self { inner })
     }
 
     /// Takes `n` steps (dt each; accepted steps for dop853).

@@ -180,3 +180,17 @@ def test_angle_method_refuses_at_the_pole(pendulum: pl.Pendulum) -> None:
     s0 = pendulum.state_from_angles(theta=0.5)
     with pytest.raises(pl.IntegrationError, match="pole"):
         pl.simulate(pendulum, s0, t_end=2.0, method="rk4_angles")
+
+
+def test_dop853_conserve_keeps_energy_and_j3(pendulum: pl.Pendulum) -> None:
+    """conserve=True projects v onto E = E0, J3 = J3_0 after each DOP853 step (GNI IV.4): near the
+    separatrix that removes the energy drift, so the phase error falls by orders of magnitude."""
+    s0 = pendulum.state_from_angles(theta=np.radians(179), phi_dot=0.5)
+    ref = pl.simulate(pendulum, s0, t_end=30.0, method="rattle8", dt=1e-3, save_every=10**9)
+    errs = []
+    for conserve in (False, True):
+        tr = pl.simulate(pendulum, s0, t_end=30.0, method="dop853", rtol=1e-12, atol=1e-14, conserve=conserve)
+        errs.append(np.linalg.norm(tr.x[-1] - ref.x[-1]))
+        if conserve:
+            assert abs(tr.energy[-1] - tr.energy[0]) < 1e-13 and abs(tr.j3[-1] - tr.j3[0]) < 1e-15
+    assert errs[1] < 0.01 * errs[0], errs

@@ -171,6 +171,10 @@ impl<M: Model> Solver<M> {
     pub fn stepper(&self) -> &Stepper<M> {
         &self.stepper
     }
+    /// The stepper, to adjust it before the run (e.g. [`Stepper::set_invariant_projection`]).
+    pub fn stepper_mut(&mut self) -> &mut Stepper<M> {
+        &mut self.stepper
+    }
     /// Work counters.
     pub fn stats(&self) -> Stats {
         self.stepper.stats()

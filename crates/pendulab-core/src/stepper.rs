@@ -255,6 +255,15 @@ impl<M: Model> Stepper<M> {
         }
     }
 
+    /// `dop853` only: also keep E (conservative models) and J₃ (axisymmetric ones) at their values at
+    /// the current state by projecting v after every step. No effect on other methods (the RATTLE
+    /// family keeps J₃ exactly and E without drift by itself).
+    pub fn set_invariant_projection(&mut self, on: bool) {
+        if let Scheme::Dop853(d) = &mut self.scheme {
+            d.set_invariant_projection(on);
+        }
+    }
+
     /// Fails with [`Error::Diverged`] when the state is not finite.
     pub fn check_finite(&self) -> Result<()> {
         if self.state.is_finite() {

@@ -57,22 +57,23 @@ fn matches_the_golden_states_at_all_times() {
 
 #[test]
 fn agrees_with_dop853_and_rattle8_at_100_s() {
+    // DOP853 at rtol 1e-13 with E and J₃ projected after each step (`set_invariant_projection`):
+    // without it, its linearly growing energy error becomes a phase error near the separatrix
+    // (near_top 1.8e-8, planar_large 2.4e-10, over_the_top 2.3e-10 at 100 s; golden.rs); with it all
+    // scenarios but near_top are at ≤ 1.4e-11. near_top's passes near the unstable top amplify every
+    // local error: the symplectic RATTLE8 is at 0.9e-10 there and DOP853 at 1.2e-10 (measured), the
+    // float64 limit of this orbit at t = 100 s, so DOP853 is checked against 2e-10 on it.
     for c in golden() {
         let (m, s0, sol) = case_solution(&c);
         let name = c["name"].as_str().unwrap();
         for (method, dt) in [(Method::Dop853, 0.0), (Method::Rattle8, 2e-3)] {
             let opts = SolveOptions { method, dt, rtol: 1e-13, atol: 1e-15, project: true };
             let mut st = Stepper::new(m, 0.0, s0, &opts).unwrap();
-            // DOP853 does not conserve energy; near the separatrix its phase error grows (golden.rs).
-            let t_end = if method == Method::Dop853 && name == "near_top" { 10.0 } else { 100.0 };
-            st.step_to(t_end).unwrap();
-            let err = rel_err(m.params(), st.state(), &sol.state(t_end).unwrap());
-            eprintln!("{name:>14} {:>8} t = {t_end}: {err:.2e}", method.info().name);
-            // 1e-10, except where DOP853's linearly growing energy error meets a large ∂T/∂E
-            // (near_top, planar_large, over_the_top: 4e-10, 2.4e-10, 2.3e-10; see golden.rs).
-            let slow =
-                matches!(name, "near_top" | "planar_large" | "over_the_top") && method == Method::Dop853;
-            let bound = if slow { 1e-9 } else { 1e-10 };
+            st.set_invariant_projection(true);
+            st.step_to(100.0).unwrap();
+            let err = rel_err(m.params(), st.state(), &sol.state(100.0).unwrap());
+            eprintln!("{name:>14} {:>8} t = 100: {err:.2e}", method.info().name);
+            let bound = if name == "near_top" && method == Method::Dop853 { 2e-10 } else { 1e-10 };
             assert!(err < bound, "{name} {}: {err:e}", method.info().name);
         }
     }

@@ -108,6 +108,10 @@ pub struct Dop853 {
     /// Interpolant coefficients F₀‥F₆ of the last step, formed on first request.
     dense: Option<[Y6; 7]>,
     length: f64,
+    /// Project also onto the level set of E (conservative models) and J₃ (axisymmetric ones).
+    invariants: bool,
+    /// E/m and J₃/m at the start (captured at the first step after `new` or `reset`).
+    targets: Option<(f64, f64)>,
 }
 
 impl Dop853 {
@@ -160,7 +164,16 @@ impl Dop853 {
             y_new: Y6::default(),
             dense: None,
             length: f64::NAN,
+            invariants: false,
+            targets: None,
         })
+    }
+
+    /// Also projects v after every step so that E (conservative models) and J₃ (axisymmetric models)
+    /// keep their initial values (GNI IV.4 projection, velocity only): see [`project_invariants`].
+    pub fn set_invariant_projection(&mut self, on: bool) {
+        self.invariants = on;
+        self.targets = None;
     }
 
     /// Forgets the step-size history (call when the state is replaced).
@@ -168,6 +181,7 @@ impl Dop853 {
         self.h_next = None;
         self.dense = None;
         self.t_old = f64::NAN;
+        self.targets = None;
     }
 
     /// The interval [t₀, t₁] [s] of the last accepted step (empty/NaN before the first step).
@@ -209,6 +223,10 @@ impl Dop853 {
             });
         }
         self.length = model.params().length;
+        if self.invariants && self.targets.is_none() {
+            let e = 0.5 * s.v.length_squared() + model.potential_per_mass(s.x);
+            self.targets = Some((e, s.x.x * s.v.y - s.x.y * s.v.x));
+        }
         let y0 = Y6::from(*s);
         let span = t_stop - t0;
         let mut h = match self.h_next {
@@ -265,14 +283,18 @@ impl Dop853 {
                     h_new = h_new.min(h);
                 }
                 let t1 = if last { t_stop } else { t0 + h };
-                let y1 =
-                    if self.project {
-                        let p = project_onto_tangent_bundle(self.length, y1.x, y1.v)
-                            .ok_or(Error::Diverged { t: t1, method: "dop853", dt: h })?;
-                        Y6::from(p)
-                    } else {
-                        y1
-                    };
+                let y1 = if self.project {
+                    let mut p = project_onto_tangent_bundle(self.length, y1.x, y1.v)
+                        .ok_or(Error::Diverged { t: t1, method: "dop853", dt: h })?;
+                    if let (true, Some((e0, j0))) = (self.invariants, self.targets) {
+                        let e = model.is_conservative().then(|| e0 - model.potential_per_mass(p.x));
+                        let j = model.is_axisymmetric().then_some(j0);
+                        p.v = project_invariants(p.x, p.v, e, j);
+                    }
+                    Y6::from(p)
+                } else {
+                    y1
+                };
                 let f1 = rhs(model, t1, y1);
                 stats.rhs_evals += 1;
                 k[STAGES] = f1;
@@ -359,6 +381,39 @@ impl Dop853 {
         }
         out
     }
+}
+
+/// Moves a tangent velocity v at x (along v and e₃ × x, both tangent) so that ½|v|² = `kinetic`
+/// [J/kg] and (x × v)·e₃ = `j3` [m²/s] (each only when given), by two Gauss–Newton steps of the
+/// minimal-norm correction. Where v ∥ e₃ × x (the turning points of z) the two conditions are
+/// dependent and only J₃ is imposed there.
+pub fn project_invariants(x: DVec3, v: DVec3, kinetic: Option<f64>, j3: Option<f64>) -> DVec3 {
+    let w = DVec3::new(-x.y, x.x, 0.0);
+    let mut v = v;
+    for _ in 0..2 {
+        let r1 = kinetic.map(|k| k - 0.5 * v.length_squared());
+        let r2 = j3.map(|j| j - w.dot(v));
+        let (vv, vw, ww) = (v.length_squared(), v.dot(w), w.length_squared());
+        let dv = match (r1, r2) {
+            (Some(r1), Some(r2)) => {
+                let det = vv * ww - vw * vw;
+                if det > 1e-8 * vv * ww {
+                    let a = (r1 * ww - r2 * vw) / det;
+                    let b = (r2 * vv - r1 * vw) / det;
+                    v * a + w * b
+                } else if ww > 0.0 {
+                    w * (r2 / ww)
+                } else {
+                    DVec3::ZERO
+                }
+            }
+            (Some(r1), None) if vv > 0.0 => v * (r1 / vv),
+            (None, Some(r2)) if ww > 0.0 => w * (r2 / ww),
+            _ => DVec3::ZERO,
+        };
+        v += dv;
+    }
+    v
 }
 
 #[cfg(test)]
