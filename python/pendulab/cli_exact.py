@@ -1,11 +1,13 @@
 """The ``pendulab`` commands of the exact solution (THEORY §3–6): ``exact``, ``phases``, ``em-map``,
-``reduced``. Registered on :data:`pendulab.cli.app`; same conventions: SI units (times in s, E in J,
+``reduced``, and ``plot`` (a scenario's path on the sphere, its top view, or its phase split).
+Registered on :data:`pendulab.cli.app`; same conventions: SI units (times in s, E in J,
 J₃ in kg m²/s, angles in rad), exit code 0 on success, 2 on a user error (one ``error: …`` line),
 130 on Ctrl-C. Described in ``docs/cli.md`` and ``docs/exact.md``.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from pathlib import Path
 from typing import Annotated
@@ -25,6 +27,12 @@ MAX_TIMES = 20_000_000
 """Most times ``pendulab exact --t`` accepts (~1 GB of states)."""
 
 IMAGE_SUFFIXES = (".png", ".svg", ".pdf")
+
+PLOT_KINDS = ("both", "sphere", "top", "phases")
+"""What ``pendulab plot --kind`` draws."""
+
+PLOT_SAMPLES_PER_PERIOD = 400
+"""Exact states per z-period that ``pendulab plot --exact`` draws (at least 2001, at most 200001)."""
 
 _SCENARIO = typer.Argument(
     metavar="SCENARIO", help="Scenario file (TOML); see docs/scenarios.md.", show_default=False
@@ -61,6 +69,14 @@ def parse_times(spec: str) -> np.ndarray:
 
 def _solution(sc: Scenario) -> ExactSolution:
     return exact(sc.pendulum(), sc.initial_state())
+
+
+def _check_image(option: str, path: Path) -> None:
+    """An image path's suffix must be one matplotlib writes (checked before any work)."""
+    if path.suffix.lower() not in IMAGE_SUFFIXES:
+        _fail(f"{option}: unknown image suffix {path.suffix!r} in {str(path)!r}; use .png, .svg or .pdf")
+    if path.is_dir():
+        _fail(f"{option} {str(path)!r} is a directory; give a file name ending in .png, .svg or .pdf")
 
 
 @app.command(
@@ -121,12 +137,23 @@ def phases(
             help="RATTLE8 step in s (default: the smaller of 2e-3 s and T_z/500).", show_default=False
         ),
     ] = None,
+    plot: Annotated[
+        Path | None,
+        typer.Option(
+            "--plot",
+            help="Also draw the split and the reduced orbit to this image (.png, .svg, .pdf).",
+            show_default=False,
+        ),
+    ] = None,
 ) -> None:
     """Δφ per z-period from T-4.5, its dynamic and geometric parts (T-5.1), their sum and the difference,
     and Δφ measured from a RATTLE8 simulation of a few z-periods (between upward crossings of the mid
-    height, located by interpolation; see pendulab.advance).
+    height, located by interpolation; see pendulab.advance). --plot draws the split as bars and the
+    reduced orbit in the (z, p_z) plane with its area shaded.
     Needs an orbit with J3 != 0 (kind generic or conical)."""
     with _user_errors():
+        if plot is not None:
+            _check_image("--plot", plot)
         sc = load_scenario(scenario)
         sol = _solution(sc)
         ph = sol.phases()
@@ -141,22 +168,30 @@ def phases(
         _row("dphi - (dphi_dyn + dphi_geom)", f"{ph.difference:.3e} rad")
         if sol.kind == "conical":
             _say("  measured: skipped (a conical orbit has constant height: no z-period to measure over)")
-            return
-        if tz is None or not math.isfinite(tz):
-            _fail(f"the z-period is {tz}; cannot simulate whole periods")
-        step = dt if dt is not None else min(2e-3, tz / 500.0)
-        if not (math.isfinite(step) and step > 0.0):
-            _fail(f"--dt {step!r} must be a finite step > 0 s")
-        t_end = (periods + 1.05) * tz
-        if t_end / step > 5e7:
-            _fail(
-                f"{periods} periods of {tz:g} s at dt = {step:g} s are {t_end / step:.3g} steps; at most 5e7"
-            )
-        tr = simulate(sc.pendulum(), sc.initial_state(), t_end, method="rattle8", dt=step)
-        m = measured_azimuth_advance(tr)
-        n = len(m.per_period)
-        _row(f"measured (rattle8, dt {step:g} s, {n} periods)", f"{m.delta_phi:.15g} rad")
-        _row("measured - dphi", f"{m.delta_phi - ph.total:.3e} rad")
+        else:
+            _measure(sc, ph.total, tz, periods, dt)
+        if plot is not None:
+            from .plot import plot_phases
+
+            plot_phases({scenario.stem: sol}, plot)
+            _say(f"wrote {plot}")
+
+
+def _measure(sc: Scenario, total: float, tz: float | None, periods: int, dt: float | None) -> None:
+    """Prints Δφ measured from a RATTLE8 run of ``periods`` z-periods and its difference from ``total``."""
+    if tz is None or not math.isfinite(tz):
+        _fail(f"the z-period is {tz}; cannot simulate whole periods")
+    step = dt if dt is not None else min(2e-3, tz / 500.0)
+    if not (math.isfinite(step) and step > 0.0):
+        _fail(f"--dt {step!r} must be a finite step > 0 s")
+    t_end = (periods + 1.05) * tz
+    if t_end / step > 5e7:
+        _fail(f"{periods} periods of {tz:g} s at dt = {step:g} s are {t_end / step:.3g} steps; at most 5e7")
+    tr = simulate(sc.pendulum(), sc.initial_state(), t_end, method="rattle8", dt=step)
+    m = measured_azimuth_advance(tr)
+    n = len(m.per_period)
+    _row(f"measured (rattle8, dt {step:g} s, {n} periods)", f"{m.delta_phi:.15g} rad")
+    _row("measured - dphi", f"{m.delta_phi - total:.3e} rad")
 
 
 def _row(label: str, value: str) -> None:
@@ -278,4 +313,72 @@ def reduced(
 
         plot_reduced(tr, out)
         _say(f"reduced space of {scenario} ({sol.kind}, t = 0 .. {span:.6g} s)")
+        _say(f"wrote {out}")
+
+
+@app.command("plot", short_help="Draw a scenario: its path on the sphere, the top view, or the phase split.")
+def plot_cmd(
+    scenario: Annotated[Path, _SCENARIO],
+    out: Annotated[
+        Path, typer.Option("--out", "-o", help="Image file (.png, .svg, .pdf).", show_default=False)
+    ],
+    kind: Annotated[
+        str,
+        typer.Option(
+            metavar="|".join(PLOT_KINDS),
+            help="both: 3-D and top view side by side; sphere: 3-D; top: the (x, y) rosette; "
+            "phases: the T-5.1 split and the reduced orbit.",
+        ),
+    ] = "both",
+    t_end: Annotated[
+        float | None,
+        typer.Option("--t-end", help="End time in s (default: the scenario's t_end).", show_default=False),
+    ] = None,
+    use_exact: Annotated[
+        bool,
+        typer.Option(
+            "--exact",
+            help=f"Draw the exact solution ({PLOT_SAMPLES_PER_PERIOD} states per z-period) "
+            "instead of simulating.",
+        ),
+    ] = False,
+) -> None:
+    """Draws the scenario's motion from t0 to t_end: simulated with its [simulation] settings (method,
+    dt, tolerances, saving), or with --exact the exact solution (ideal pendulum only). For the ideal
+    pendulum the turning heights z1, z2 of the exact solution are drawn as horizontal circles.
+    --kind phases draws the dynamic/geometric split of Δφ (T-5.1) instead (needs J3 != 0; --t-end and
+    --exact do not apply)."""
+    with _user_errors():
+        _check_image("--out", out)
+        if kind not in PLOT_KINDS:
+            _fail(f"--kind {kind!r}: use one of {', '.join(PLOT_KINDS)}")
+        sc = load_scenario(scenario)
+        if t_end is not None:
+            sc = sc.with_overrides(t_end=t_end)
+        from . import plot as plotting
+
+        if kind == "phases":
+            sol = _solution(sc)
+            plotting.plot_phases({scenario.stem: sol}, out)
+            _say(f"phase split of {scenario} ({sol.kind}): dphi = {sol.phases().total:.15g} rad per z-period")
+            _say(f"wrote {out}")
+            return
+        sol = _solution(sc) if use_exact or sc.pendulum().is_ideal else None
+        sim = sc.spec.simulation
+        if use_exact:
+            assert sol is not None
+            tz = sol.period_z
+            per = tz if tz is not None and math.isfinite(tz) and tz > 0 else sim.t_end - sim.t0
+            n = int(min(max(PLOT_SAMPLES_PER_PERIOD * (sim.t_end - sim.t0) / per, 2001), 200_001))
+            times = np.linspace(sim.t0, sim.t_end, n)
+            # the scenario's start is the state at t0, as for a simulation
+            tr = dataclasses.replace(sol.trajectory(times - sim.t0), t=times)
+        else:
+            tr = sc.run()
+        plotting.plot_trajectory(tr, out, exact=sol, kind=kind)
+        _say(
+            f"{kind} plot of {scenario}"
+            + (f": {sc.title}" if sc.title else "")
+            + f" ({tr.method}, t = {tr.t[0]:g} .. {tr.t[-1]:g} s, {len(tr)} samples)"
+        )
         _say(f"wrote {out}")

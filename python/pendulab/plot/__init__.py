@@ -4,6 +4,11 @@
   J₃ = 0 with the bottom and the top, and the monodromy loop around the top with its W values.
 - :func:`plot_reduced`: Holm's Figure 2 — the surface C = 0 of the orbit's J₃, the plane H = const
   and the orbit on their intersection, in (σ₁, σ₂, σ₃) space.
+- :func:`plot_trajectory`: the path on the sphere in 3-D and/or seen from above (the rosette), with
+  the turning heights z₁, z₂ of the exact solution as horizontal circles.
+- :func:`plot_phases`: the split Δφ = Δφ_dyn + Δφ_geom (T-5.1) as bars with their values, for one
+  orbit or several side by side; for one orbit also the reduced orbit in the (z, p_z) plane with
+  its enclosed area A shaded (Δφ_geom = −A/J).
 
 Each returns a ``matplotlib.figure.Figure`` (shown inline by notebooks) built without pyplot, so no
 global backend is touched; files are rendered with the Agg canvas and written atomically (temporary
@@ -63,6 +68,17 @@ def save_figure(fig: Any, path: str | os.PathLike[str], dpi: int = 150) -> Path:
 
 
 from .em_map import plot_em_map  # noqa: E402
+from .phases import plot_phases  # noqa: E402
 from .reduced import plot_reduced  # noqa: E402
+from .trajectory import plot_trajectory  # noqa: E402
 
-__all__ = ["FORMATS", "new_figure", "plot_em_map", "plot_reduced", "require_matplotlib", "save_figure"]
+__all__ = [
+    "FORMATS",
+    "new_figure",
+    "plot_em_map",
+    "plot_phases",
+    "plot_reduced",
+    "plot_trajectory",
+    "require_matplotlib",
+    "save_figure",
+]
