@@ -164,3 +164,20 @@ fn invariant_projection_keeps_energy_and_j3_and_removes_the_phase_drift() {
     }
     assert!(errors[1] < 0.01 * errors[0], "projection should cut the phase error: {errors:?}");
 }
+
+#[test]
+fn zero_atol_works_from_rest_and_with_zero_components() {
+    // atol = 0 leaves zero weights on components that are exactly 0 (here: the start at rest has
+    // v = 0, and y = 0): a purely relative error control must still start and converge.
+    let m = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
+    let s0 = State::from_angles(m.params(), 0.5, 0.0, 0.0, 0.0).unwrap();
+    let opts = SolveOptions { method: Method::Dop853, dt: 0.0, rtol: 1e-12, atol: 0.0, project: true };
+    let mut st = Stepper::new(m, 0.0, s0, &opts).unwrap();
+    st.step_to(5.0).unwrap();
+    let reference = {
+        let mut r = Stepper::new(m, 0.0, s0, &options(1e-13, true)).unwrap();
+        r.step_to(5.0).unwrap();
+        *r.state()
+    };
+    assert!((st.state().x - reference.x).length() < 1e-10, "{:?}", st.state());
+}

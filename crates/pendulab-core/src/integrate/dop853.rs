@@ -63,8 +63,20 @@ impl Y6 {
     /// Σ (yᵢ/scaleᵢ)² over the six components.
     #[inline]
     fn scaled_norm2(self, scale: Y6) -> f64 {
-        let (x, v) = (self.x / scale.x, self.v / scale.v);
-        x.length_squared() + v.length_squared()
+        // A zero weight (atol = 0 and a component exactly 0) counts a zero as 0 and anything else as ∞.
+        let q = |d: f64, s: f64| {
+            if s > 0.0 {
+                d / s
+            } else if d == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY
+            }
+        };
+        let (a, b) = (self.x, self.v);
+        let (sa, sb) = (scale.x, scale.v);
+        let c = [q(a.x, sa.x), q(a.y, sa.y), q(a.z, sa.z), q(b.x, sb.x), q(b.y, sb.y), q(b.z, sb.z)];
+        c.iter().map(|v| v * v).sum()
     }
 }
 
@@ -193,13 +205,20 @@ impl Dop853 {
     fn initial_step<M: Model>(&self, model: &M, t: f64, y: Y6, f0: Y6, span: f64, stats: &mut Stats) -> f64 {
         let sk = error_scale(self.atol, self.rtol, y, y);
         let (dnf, dny) = (f0.scaled_norm2(sk), y.scaled_norm2(sk));
-        let mut h = if dnf <= 1e-10 || dny <= 1e-10 { 1e-6 } else { (dny / dnf).sqrt() * 0.01 };
+        let usable = dnf.is_finite() && dny.is_finite() && dnf > 1e-10 && dny > 1e-10;
+        let mut h = if usable { (dny / dnf).sqrt() * 0.01 } else { 1e-6 };
         h = h.min(self.h_max).min(span);
         let f1 = rhs(model, t + h, y.axpy(h, f0));
         stats.rhs_evals += 1;
         let der2 = f1.sub(f0).scaled_norm2(sk).sqrt() / h;
         let der12 = der2.max(dnf.sqrt());
-        let h1 = if der12 <= 1e-15 { (h * 1e-3).max(1e-6) } else { (0.01 / der12).powf(ERROR_EXPONENT) };
+        let h1 = if !der12.is_finite() {
+            h
+        } else if der12 <= 1e-15 {
+            (h * 1e-3).max(1e-6)
+        } else {
+            (0.01 / der12).powf(ERROR_EXPONENT)
+        };
         (100.0 * h).min(h1).min(self.h_max).min(span)
     }
 
