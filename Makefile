@@ -1,18 +1,24 @@
-# Pendulab: `make run` runs the default scenario, `make test` runs every test suite (CI calls it).
-# Everything Python lives in a local virtual environment .venv (created on first use).
+# Pendulab: `make run` starts the lab (web server + browser page), `make test` runs every test suite
+# (CI calls it). Everything Python lives in a local virtual environment .venv (created on first use);
+# the web front end's Node packages in web/node_modules (npm ci, from web/package-lock.json).
 
 PYTHON ?= python3
 VENV   := .venv
 PY     := $(VENV)/bin/python
 SCENARIO ?= examples/scenarios/rosette.toml
+HOST ?= 127.0.0.1
+PORT ?= 8000
+STATIC := python/pendulab/server/static
 
-.PHONY: run test build venv lint fmt test-rust test-python bench bench-compare golden clean
+.PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-web bench bench-compare \
+	golden clean
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet "maturin>=1.7,<2" "numpy>=1.26" "typer>=0.12" "tqdm>=4.66" "pydantic>=2.6" \
-		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "scipy>=1.11" "pyarrow>=15" "xarray>=2024.1" "matplotlib>=3.8"
+		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "scipy>=1.11" "pyarrow>=15" "xarray>=2024.1" "matplotlib>=3.8" \
+		"fastapi>=0.115" "uvicorn>=0.30" "websockets>=13" "httpx>=0.27" "httpx2>=2"
 	touch $@
 
 venv: $(VENV)/.deps
@@ -20,8 +26,33 @@ venv: $(VENV)/.deps
 build: venv
 	VIRTUAL_ENV=$(CURDIR)/$(VENV) $(VENV)/bin/maturin develop --release --quiet -m python/Cargo.toml
 
-run: build
+# The lab: builds the core, the Python package and the web bundle, then serves SCENARIO at
+# http://$(HOST):$(PORT) (opens a browser where there is one; Ctrl-C stops it).
+run: build web
+	$(VENV)/bin/pendulab serve $(SCENARIO) --host $(HOST) --port $(PORT)
+
+# The lab with the web bundle already in the package (no Node needed).
+serve: build
+	$(VENV)/bin/pendulab serve $(SCENARIO) --host $(HOST) --port $(PORT)
+
+# A batch run of SCENARIO without the browser: prints a summary, writes rosette.csv.
+simulate: build
 	$(VENV)/bin/pendulab run $(SCENARIO) --out rosette.csv
+
+# The web front end: npm ci (only when the lock file changed), type check + Vite build, and the bundle
+# copied into the Python package ($(STATIC), committed so that the package alone serves the lab).
+web/node_modules/.package-lock.json: web/package.json web/package-lock.json
+	cd web && npm ci --no-audit --no-fund
+	touch $@
+
+web: web/node_modules/.package-lock.json
+	cd web && npm run build
+	rm -rf $(STATIC)
+	cp -r web/dist $(STATIC)
+
+test-web: web/node_modules/.package-lock.json
+	cd web && node_modules/.bin/tsc --noEmit
+	cd web && node_modules/.bin/vitest run
 
 lint: venv
 	cargo fmt --all -- --check
@@ -40,7 +71,7 @@ test-rust:
 test-python: build
 	$(VENV)/bin/pytest python/tests -q
 
-test: lint test-rust test-python
+test: lint test-rust test-python test-web
 
 bench:
 	cargo bench -p pendulab-core

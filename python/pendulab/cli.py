@@ -312,6 +312,9 @@ def _display(path: Path) -> str:
 # The commands of the exact solution (exact, phases, em-map, reduced) live in their own module.
 from . import cli_exact  # noqa: E402, F401
 
+# isort: split
+from . import cli_serve  # noqa: E402, F401  (`pendulab serve`, the web lab; docs/web.md)
+
 
 def main() -> None:
     """Entry point of the ``pendulab`` script."""

@@ -1,0 +1,131 @@
+"""``pendulab serve``: the interactive 3-D lab in the browser (docs/web.md).
+
+Registered on :data:`pendulab.cli.app`. Starts the FastAPI server of :mod:`pendulab.server` with uvicorn,
+prints its URL and opens it in a browser where one exists. The server and its dependencies (the
+``lab`` extra) are imported only when the command runs, so other commands stay fast without them.
+Exit codes: 0 after Ctrl-C (the normal way to stop a server), 2 on a user error (bad scenario, port
+in use, missing extra).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import ipaddress
+import os
+import socket
+import sys
+import threading
+import time
+import webbrowser
+from typing import Annotated
+
+import typer
+
+from .cli import _fail, _say, _user_errors, app
+
+DEFAULT_HOST = "127.0.0.1"
+DEFAULT_PORT = 8000
+
+_CONSOLE_BROWSERS = ("www-browser", "lynx", "links", "elinks", "w3m")
+
+
+def browser_available() -> bool:
+    """True where opening a browser makes sense: not in CI, and on Linux/BSD only with a display.
+
+    ``webbrowser`` would otherwise start a text browser (lynx, w3m) in the terminal of a headless machine.
+    """
+    if os.environ.get("CI") or os.environ.get("PENDULAB_NO_BROWSER"):
+        return False
+    if sys.platform.startswith(("linux", "freebsd", "openbsd", "netbsd")) and not (
+        os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")
+    ):
+        return False
+    try:
+        browser = webbrowser.get()
+    except webbrowser.Error:
+        return False
+    return getattr(browser, "name", "") not in _CONSOLE_BROWSERS
+
+
+def url_for(host: str, port: int) -> str:
+    """The address to print and open: a wildcard host is shown as the loopback address."""
+    shown = host
+    try:
+        ip = ipaddress.ip_address(host)
+        if ip.is_unspecified:
+            shown = "127.0.0.1" if ip.version == 4 else "::1"
+        if ip.version == 6:
+            shown = f"[{ipaddress.ip_address(shown)}]"
+    except ValueError:  # a host name
+        pass
+    return f"http://{shown}:{port}"
+
+
+def _check_port(host: str, port: int) -> None:
+    """Fails early with one line when the address cannot be bound (in use, not local, no permission)."""
+    try:
+        infos = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM)
+    except socket.gaierror as e:
+        _fail(f"--host {host!r}: {e.strerror or e}")
+    family, kind, proto, _, addr = infos[0]
+    with socket.socket(family, kind, proto) as s:
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+        try:
+            s.bind(addr)
+        except OSError as e:
+            _fail(f"cannot listen on {host}:{port}: {e.strerror or e}; choose another --port or --host")
+
+
+def _open_when_up(server: object, url: str) -> None:
+    for _ in range(200):  # up to 10 s
+        if getattr(server, "started", False):
+            with contextlib.suppress(Exception):  # no browser after all: the URL is printed
+                webbrowser.open(url)
+            return
+        time.sleep(0.05)
+
+
+@app.command(short_help="Start the interactive 3-D lab in the browser.")
+def serve(
+    scenario: Annotated[
+        str | None,
+        typer.Argument(
+            metavar="SCENARIO",
+            help="An example name (see `pendulab scenarios`) or a scenario file; default rosette.",
+            show_default=False,
+        ),
+    ] = None,
+    host: Annotated[
+        str, typer.Option(help="Address to listen on; 0.0.0.0 makes the lab reachable from other machines.")
+    ] = DEFAULT_HOST,
+    port: Annotated[int, typer.Option(min=1, max=65535, help="TCP port.")] = DEFAULT_PORT,
+    no_browser: Annotated[bool, typer.Option("--no-browser", help="Do not open a browser.")] = False,
+) -> None:
+    """Start the lab: a web server with the 3-D pendulum, controls, live plots and the exact solution.
+
+    Prints the URL (http://127.0.0.1:8000 by default) and opens it where a browser exists. Every page
+    gets its own simulation, computed here by the core and streamed to the page. Ctrl-C stops it.
+    """
+    try:
+        import uvicorn
+
+        from .server import create_app
+    except ImportError as e:
+        _fail(
+            f"pendulab serve needs FastAPI, uvicorn and websockets ({e}); "
+            "install them with: pip install 'pendulab[lab]'"
+        )
+    with _user_errors():
+        lab = create_app(scenario)
+    _check_port(host, port)
+    url = url_for(host, port)
+    config = uvicorn.Config(lab, host=host, port=port, log_level="warning", ws_max_size=65536)
+    server = uvicorn.Server(config)
+    _say(f"Pendulab lab: {url}   (Ctrl-C stops the server)")
+    if host not in ("127.0.0.1", "localhost", "::1"):
+        _say(f"listening on {host}: reachable from other machines; anyone there can use the lab")
+    if not no_browser and browser_available():
+        threading.Thread(target=_open_when_up, args=(server, url), daemon=True).start()
+    server.run()
+    if not server.started:
+        _fail(f"the server could not start on {host}:{port}")

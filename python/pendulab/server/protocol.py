@@ -1,0 +1,283 @@
+"""The lab's wire protocol (docs/web.md): binary state frames out, JSON commands in, JSON notices out.
+
+**Frames** (server → page): every binary WebSocket message holds one or more *records* of
+:data:`FRAME_FIELDS` as little-endian float64 — ``[t, x1, x2, x3, v1, v2, v3, energy, j3, tension]``
+in s, m, m/s, J, kg m²/s, N (80 bytes each). The layout is read from ``frame.json`` beside this file,
+which the page's ``web/src/protocol.ts`` imports too, so the two cannot disagree.
+
+**Commands** (page → server): one JSON object per text message, told apart by ``"type"``
+(a pydantic discriminated union, :data:`COMMAND`): ``set_params``, ``set_state``, ``set_method``,
+``set_time_scale``, ``pause``, ``resume``, ``step``, ``reset``, ``load_scenario``. Unknown keys,
+wrong types, NaN/inf and out-of-range values are refused with an ``error`` notice naming the problem.
+
+**Notices** (server → page, JSON text): ``{"type": "status", …}`` after every change (see
+:meth:`pendulab.server.session.Session.status`) and ``{"type": "error", "message": …, "command": …}``.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
+
+from ..model import Pendulum, State
+from ..simulate import method_names
+
+_LAYOUT = json.loads((Path(__file__).with_name("frame.json")).read_text(encoding="utf-8"))
+
+FRAME_FIELDS: tuple[str, ...] = tuple(_LAYOUT["fields"])
+"""Names of the float64 values of one frame record, in wire order."""
+
+FRAME_UNITS: tuple[str, ...] = tuple(_LAYOUT["units"])
+"""SI unit of each value of :data:`FRAME_FIELDS`."""
+
+RECORD_LEN = len(FRAME_FIELDS)
+RECORD_BYTES = 8 * RECORD_LEN
+_WIRE = np.dtype("<f8")
+
+MAX_MESSAGE_BYTES = 4096
+"""Longest command the server reads (a command is a few hundred bytes)."""
+
+# Limits of the live controls (the core itself accepts any finite g and any positive l, m).
+LIMITS: dict[str, dict[str, float]] = {
+    "length": {"min": 1e-3, "max": 1e3, "ui_min": 0.1, "ui_max": 5.0, "step": 0.01},
+    "mass": {"min": 1e-3, "max": 1e3, "ui_min": 0.1, "ui_max": 10.0, "step": 0.01},
+    "g": {"min": -1e3, "max": 1e3, "ui_min": -30.0, "ui_max": 30.0, "step": 0.01},
+    "dt": {"min": 1e-6, "max": 0.1, "ui_min": 1e-4, "ui_max": 0.05, "step": 1e-4, "default": 1e-3},
+    "time_scale": {"min": 1e-3, "max": 1e3, "ui_min": 0.01, "ui_max": 100.0, "step": 0.01, "default": 1.0},
+    "step_n": {"min": 1, "max": 100_000},
+}
+
+
+def encode_records(records: np.ndarray) -> bytes:
+    """Records of shape (N, RECORD_LEN) (or one record) as the bytes of one binary message."""
+    arr = np.asarray(records, dtype=np.float64).reshape(-1, RECORD_LEN)
+    return arr.astype(_WIRE, copy=False).tobytes()
+
+
+def decode_records(data: bytes) -> np.ndarray:
+    """The inverse of :func:`encode_records`: an array (N, RECORD_LEN); ValueError on a bad length."""
+    if len(data) == 0 or len(data) % RECORD_BYTES:
+        raise ValueError(f"a frame message has a multiple of {RECORD_BYTES} bytes, got {len(data)}")
+    return np.frombuffer(data, dtype=_WIRE).astype(np.float64).reshape(-1, RECORD_LEN)
+
+
+# --- commands -----------------------------------------------------------------------------------------
+
+
+class _Command(BaseModel):
+    model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
+
+
+def _lim(name: str) -> dict[str, float]:
+    return {"ge": LIMITS[name]["min"], "le": LIMITS[name]["max"]}
+
+
+class SetParams(_Command):
+    """Change the pendulum; omitted values stay. A new length rescales the state (same angles and rates)."""
+
+    type: Literal["set_params"]
+    length: float | None = Field(None, description="rod length l in m", **_lim("length"))
+    mass: float | None = Field(None, description="bob mass m in kg", **_lim("mass"))
+    g: float | None = Field(None, description="gravity g in m/s² (g > 0 pulls along -z)", **_lim("g"))
+
+    @model_validator(mode="after")
+    def _something(self) -> SetParams:
+        if self.length is None and self.mass is None and self.g is None:
+            raise ValueError("give at least one of length (m), mass (kg), g (m/s²)")
+        return self
+
+
+Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
+
+
+class StateSpec(_Command):
+    """A state on TS²: either Cartesian ``x`` [m] and ``v`` [m/s] (on TS², or moved there with
+    ``project: true``) or angles ``theta`` (from the downward vertical), ``phi`` [rad] and rates
+    ``theta_dot``, ``phi_dot`` [rad/s] (omitted ones are 0)."""
+
+    x: Vec3 | None = None
+    v: Vec3 | None = None
+    project: bool = False
+    theta: float | None = None
+    phi: float | None = None
+    theta_dot: float | None = None
+    phi_dot: float | None = None
+
+    @model_validator(mode="after")
+    def _one_form(self) -> StateSpec:
+        cartesian = [k for k in ("x", "v") if getattr(self, k) is not None]
+        angles = [k for k in ("theta", "phi", "theta_dot", "phi_dot") if getattr(self, k) is not None]
+        if cartesian and angles:
+            raise ValueError(
+                f"give either x and v or angles (theta, phi, theta_dot, phi_dot), not both: "
+                f"got {', '.join(cartesian + angles)}"
+            )
+        if cartesian and len(cartesian) != 2:
+            raise ValueError("a Cartesian state needs both x (3 numbers, m) and v (3 numbers, m/s)")
+        if not cartesian and self.theta is None:
+            raise ValueError("give x and v (m, m/s), or at least theta (rad) with phi, theta_dot, phi_dot")
+        return self
+
+    def to_state(self, pendulum: Pendulum) -> State:
+        """The state for ``pendulum``; ``InvalidInputError`` when it is off TS² (and not projected)."""
+        if self.x is not None and self.v is not None:
+            return pendulum.state(self.x, self.v, project=self.project)
+        return pendulum.state_from_angles(
+            float(self.theta or 0.0),
+            float(self.phi or 0.0),
+            float(self.theta_dot or 0.0),
+            float(self.phi_dot or 0.0),
+        )
+
+
+class SetState(StateSpec):
+    """Replace the state and the start that ``reset`` returns to; t is kept. Fields: :class:`StateSpec`."""
+
+    type: Literal["set_state"]
+
+
+class ExactRequest(StateSpec):
+    """Body of ``POST /api/exact``: the pendulum (defaults l = 1 m, m = 1 kg, g = 9.81 m/s²) and a state."""
+
+    length: float = Field(1.0, description="rod length l in m", **_lim("length"))
+    mass: float = Field(1.0, description="bob mass m in kg", **_lim("mass"))
+    g: float = Field(9.81, description="gravity g in m/s²", **_lim("g"))
+
+
+class SetMethod(_Command):
+    """Change the integrator (a name of ``pendulab.method_names()``) and/or its step dt [s]."""
+
+    type: Literal["set_method"]
+    method: str | None = None
+    dt: float | None = Field(None, description="step size in s", **_lim("dt"))
+
+    @model_validator(mode="after")
+    def _known(self) -> SetMethod:
+        if self.method is None and self.dt is None:
+            raise ValueError("give method, dt (s) or both")
+        if self.method is not None and self.method not in method_names():
+            raise ValueError(f"unknown method {self.method!r}; available: {', '.join(method_names())}")
+        return self
+
+
+class SetTimeScale(_Command):
+    """Simulated seconds per wall-clock second."""
+
+    type: Literal["set_time_scale"]
+    time_scale: float = Field(**_lim("time_scale"))
+
+
+class Pause(_Command):
+    type: Literal["pause"]
+
+
+class Resume(_Command):
+    type: Literal["resume"]
+
+
+class Step(_Command):
+    """Take n integrator steps at once (``dop853``: n accepted steps) and send the frame; pauses first."""
+
+    type: Literal["step"]
+    n: int = Field(1, ge=int(LIMITS["step_n"]["min"]), le=int(LIMITS["step_n"]["max"]))
+
+
+class Reset(_Command):
+    """Back to the start (the scenario's or the last ``set_state``), t = t0, with the current parameters."""
+
+    type: Literal["reset"]
+
+
+class LoadScenario(_Command):
+    """Load an example scenario by name (``GET /api/scenarios``): pendulum, start, method, dt."""
+
+    type: Literal["load_scenario"]
+    name: str = Field(min_length=1, max_length=100)
+
+
+Command = SetParams | SetState | SetMethod | SetTimeScale | Pause | Resume | Step | Reset | LoadScenario
+COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])
+COMMAND_TYPES: tuple[str, ...] = (
+    "set_params",
+    "set_state",
+    "set_method",
+    "set_time_scale",
+    "pause",
+    "resume",
+    "step",
+    "reset",
+    "load_scenario",
+)
+
+
+class CommandError(ValueError):
+    """A message that is not a valid command; ``command`` is its type when that could be read."""
+
+    def __init__(self, message: str, command: str | None = None) -> None:
+        super().__init__(message)
+        self.command = command
+
+
+def _show(value: Any) -> str:
+    text = json.dumps(value, allow_nan=True) if not isinstance(value, str) else repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def parse_command(text: str | bytes) -> Command:
+    """A validated command from one message; :class:`CommandError` naming every problem otherwise."""
+    if isinstance(text, bytes | bytearray):
+        raise CommandError("commands are JSON text messages; binary messages are not accepted")
+    if len(text) > MAX_MESSAGE_BYTES:
+        raise CommandError(f"message of {len(text)} characters is too long (at most {MAX_MESSAGE_BYTES})")
+    try:
+        raw = json.loads(text)
+    except (json.JSONDecodeError, RecursionError) as e:
+        raise CommandError(f"not JSON: {e}") from None
+    if not isinstance(raw, dict):
+        raise CommandError(f"a command is a JSON object with a 'type', got {type(raw).__name__}")
+    kind = raw.get("type")
+    if kind not in COMMAND_TYPES:
+        what = "missing 'type'" if kind is None else f"unknown command type {_show(kind)}"
+        raise CommandError(f"{what}; expected one of: {', '.join(COMMAND_TYPES)}")
+    try:
+        return COMMAND.validate_python(raw)
+    except ValidationError as e:
+        raise CommandError(validation_problems(e, skip=1), command=kind) from None
+
+
+def validation_problems(e: ValidationError, skip: int = 0) -> str:
+    """One line naming every problem of a pydantic error (``skip`` leading location parts, e.g. the
+    union tag)."""
+    return "; ".join(_problem(err, skip) for err in e.errors())
+
+
+def _problem(err: Any, skip: int) -> str:
+    loc = [str(p) for p in err["loc"][skip:]]
+    key = ".".join(loc)
+    msg = str(err["msg"])
+    if err["type"] == "value_error":
+        msg = str(err.get("ctx", {}).get("error", msg))
+        return f"{key}: {msg}" if key else msg
+    if err["type"] == "extra_forbidden":
+        return f"unknown key {key!r}"
+    if err["type"] == "missing":
+        return f"{key} is missing"
+    shown = _show(err.get("input"))
+    return f"{key} = {shown}: {msg[:1].lower()}{msg[1:]}"
+
+
+def error_notice(message: str, command: str | None = None) -> dict[str, Any]:
+    """The JSON ``error`` notice."""
+    return {"type": "error", "message": message, "command": command}
+
+
+def finite_or_none(value: float | None) -> float | None:
+    """JSON has no inf/NaN: such values (and None) become null."""
+    if value is None or not math.isfinite(value):
+        return None
+    return float(value)

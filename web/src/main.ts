@@ -1,0 +1,184 @@
+// Wires the lab together: the store (state.ts) receives from the connection; the scene and panels draw
+// from the store; controls send commands. Nothing here integrates: the server's core does all physics.
+import 'uplot/dist/uPlot.min.css';
+import './style.css';
+import { Connection, socketUrl } from './connection';
+import { DataPanel } from './panels/data';
+import { Controls } from './panels/controls';
+import { Plots } from './panels/plots';
+import type { Command, ExactQuantities, Frame, ScenarioInfo, Schema, Status } from './protocol';
+import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
+import { LabStore } from './state';
+import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
+
+declare global {
+  interface Window {
+    /** For debugging and end-to-end tests: the store, frames drawn, a command sender, a screenshot. */
+    pendulab?: { store: LabStore; drawn: () => number; send: (cmd: Command) => void; screenshot: () => string };
+  }
+}
+
+function byId(id: string): HTMLElement {
+  const el = document.getElementById(id);
+  if (el === null) throw new Error(`#${id} missing from index.html`);
+  return el;
+}
+
+async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
+  const r = await fetch(path, init);
+  const body: unknown = await r.json();
+  if (!r.ok) {
+    const detail = (body as { detail?: unknown }).detail;
+    throw new Error(typeof detail === 'string' ? detail : `${path}: HTTP ${r.status}`);
+  }
+  return body as T;
+}
+
+function download(name: string, href: string): void {
+  const a = document.createElement('a');
+  a.href = href;
+  a.download = name;
+  document.body.appendChild(a);
+  a.click();
+  a.remove();
+}
+
+async function main(): Promise<void> {
+  const store = new LabStore();
+  const message = byId('message');
+  let messageTimer: ReturnType<typeof setTimeout> | null = null;
+  const explain = (text: string) => {
+    message.textContent = text;
+    message.classList.add('shown');
+    if (messageTimer !== null) clearTimeout(messageTimer);
+    messageTimer = setTimeout(() => message.classList.remove('shown'), 6000);
+  };
+
+  const [schema, scenarios] = await Promise.all([
+    getJSON<Schema>('api/schema'),
+    getJSON<ScenarioInfo[]>('api/scenarios'),
+  ]);
+  store.tickHz = schema.tick_hz;
+
+  const scene = new PendulumScene(byId('scene'));
+  const view = { ...DEFAULT_VIEW };
+  const plots = new Plots(byId('plots'));
+  const data = new DataPanel(byId('data'));
+
+  const fromUrl = decodeUrl(window.location.search);
+  if (fromUrl.problems.length > 0) explain(`link: ${fromUrl.problems.join('; ')}`);
+  let startup: Command[] = commandsFor(fromUrl.value);
+  let conn: Connection | null = null;
+  const send = (cmd: Command) => {
+    if (conn === null || !conn.send(cmd)) explain('not connected to the server');
+  };
+
+  const controls = new Controls(byId('gui'), schema, scenarios, view, {
+    send,
+    explain,
+    downloadCSV: () => {
+      const blob = new Blob([store.toCSV()], { type: 'text/csv' });
+      const url = URL.createObjectURL(blob);
+      download(`pendulab-${store.status?.scenario ?? 'lab'}.csv`, url);
+      setTimeout(() => URL.revokeObjectURL(url), 10_000);
+    },
+    screenshot: () => download(`pendulab-${store.status?.scenario ?? 'lab'}.png`, scene.screenshot()),
+    copyLink: () => {
+      const link = window.location.href;
+      navigator.clipboard?.writeText(link).then(
+        () => explain('link copied: it reproduces this scenario'),
+        () => explain(link),
+      ) ?? explain(link);
+    },
+    viewChanged: (_v, top) => scene.setTopView(top),
+  });
+
+  let exactEpoch = -1;
+  const fetchExact = (status: Status, f: Frame) => {
+    exactEpoch = status.epoch;
+    const body = { length: status.params.length, mass: status.params.mass, g: status.params.g, x: f.x, v: f.v };
+    getJSON<ExactQuantities>('api/exact', {
+      method: 'POST',
+      headers: { 'content-type': 'application/json' },
+      body: JSON.stringify(body),
+    }).then(
+      (q) => {
+        if (store.status?.epoch === status.epoch) store.setExact(q);
+      },
+      (e: unknown) => {
+        if (store.status?.epoch === status.epoch) store.setExact(null, String(e instanceof Error ? e.message : e));
+      },
+    );
+  };
+
+  const onStatus = (s: Status) => {
+    store.onStatus(s);
+    controls.sync(s);
+    scene.setLength(s.params.length);
+    if (startup.length === 0) window.history.replaceState(null, '', `?${encodeUrl(fromStatus(s))}`);
+  };
+
+  conn = new Connection(socketUrl(window.location), {
+    onOpen: () => {
+      store.setConnected(true);
+      byId('conn').textContent = 'connected';
+    },
+    onClose: () => {
+      store.setConnected(false);
+      byId('conn').textContent = 'disconnected: retrying…';
+      // a new server session starts from the default scenario: bring back the one shown
+      if (store.status !== null) startup = commandsFor(fromStatus(store.status));
+    },
+    onFrames: (frames) => {
+      store.onFrames(frames);
+      const s = store.status;
+      const first = store.trajectory[0];
+      if (s !== null && first !== undefined && exactEpoch !== s.epoch) fetchExact(s, first);
+    },
+    onNotice: (n) => {
+      if (n.type === 'error') {
+        store.onError(n);
+        explain(n.command ? `${n.command}: ${n.message}` : n.message);
+        return;
+      }
+      onStatus(n);
+      if (startup.length > 0) {
+        const cmds = startup;
+        startup = [];
+        for (const c of cmds) send(c);
+      }
+    },
+    onProtocolError: (msg) => explain(`protocol: ${msg}`),
+  });
+
+  let drawn = 0;
+  window.pendulab = { store, drawn: () => drawn, send, screenshot: () => scene.screenshot() };
+  let lastWall = performance.now();
+  let lastPanels = 0;
+  const frame = (now: number) => {
+    const dt = (now - lastWall) / 1000;
+    lastWall = now;
+    store.advancePlayhead(dt);
+    const f = store.displayed();
+    const p = store.status?.params;
+    scene.update(f, store.trailWindow(view.trailSeconds), view, p?.mass ?? 1, p?.g ?? 9.81);
+    scene.render();
+    drawn++;
+    if (now - lastPanels > 100) {
+      lastPanels = now;
+      plots.update(store.history);
+      data.update(f, store);
+    }
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+}
+
+main().catch((e: unknown) => {
+  const el = document.getElementById('message');
+  if (el) {
+    el.textContent = `the lab could not start: ${e instanceof Error ? e.message : String(e)}`;
+    el.classList.add('shown');
+  }
+  console.error(e);
+});

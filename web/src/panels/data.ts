@@ -1,0 +1,93 @@
+// The data panel: the numbers at the playhead (t, E, J₃, tension, z, drifts) and the exact-solution
+// quantities of the current orbit (POST /api/exact): kind, turning heights, z-period, azimuthal advance,
+// rotation number and its dynamic and geometric parts.
+import type { ExactQuantities, Frame } from '../protocol';
+import type { LabStore } from '../state';
+
+export function fmt(v: number | null | undefined, digits = 6): string {
+  if (v === null || v === undefined || Number.isNaN(v)) return '—';
+  if (!Number.isFinite(v)) return v > 0 ? '∞' : '−∞';
+  if (v === 0) return '0';
+  const a = Math.abs(v);
+  return a >= 1e-3 && a < 1e6 ? v.toPrecision(digits) : v.toExponential(digits - 1);
+}
+
+type Row = [label: string, value: string, unit: string];
+
+/** The rows of the live section. */
+export function liveRows(f: Frame | null, store: LabStore): Row[] {
+  const ref = store.reference;
+  const s = store.status;
+  return [
+    ['t', fmt(f?.t, 7), 's'],
+    ['E', fmt(f?.energy, 10), 'J'],
+    ['E − E₀', f && ref ? fmt(f.energy - ref.energy, 3) : '—', 'J'],
+    ['J₃', fmt(f?.j3, 10), 'kg m²/s'],
+    ['J₃ − J₃(0)', f && ref ? fmt(f.j3 - ref.j3, 3) : '—', 'kg m²/s'],
+    ['tension', fmt(f?.tension, 6), 'N'],
+    ['z', fmt(f?.x[2], 6), 'm'],
+    ['method', s ? `${s.method}${s.adaptive ? '' : `, dt = ${s.dt} s`}` : '—', ''],
+    ['state', s ? `${s.paused ? 'paused' : 'running'}${s.lagging ? ' (lagging: slower than asked)' : ''}` : '—', ''],
+  ];
+}
+
+/** The rows of the exact-solution section. */
+export function exactRows(q: ExactQuantities | null): Row[] {
+  if (q === null) return [];
+  const h = q.turning_heights;
+  const rows: Row[] = [
+    ['kind', q.kind, ''],
+    ['z₁, z₂', `${fmt(h[0])}, ${fmt(h[1])}`, 'm'],
+  ];
+  if (h.length > 2) rows.push(['z₃ (outside)', fmt(h[2]), 'm']);
+  rows.push(['T_z', q.period_z_infinite ? '∞' : fmt(q.period_z), 's']);
+  if (q.azimuth_advance !== null) rows.push(['Δφ per T_z', fmt(q.azimuth_advance), 'rad']);
+  if (q.rotation_number !== null) rows.push(['W = Δφ/2π', fmt(q.rotation_number), '']);
+  if (q.phases !== null) {
+    rows.push(['Δφ dynamic', fmt(q.phases.dynamic), 'rad']);
+    rows.push(['Δφ geometric', fmt(q.phases.geometric), 'rad']);
+  }
+  return rows;
+}
+
+export class DataPanel {
+  private readonly live: HTMLTableElement;
+  private readonly exactTable: HTMLTableElement;
+  private readonly note: HTMLElement;
+
+  constructor(container: HTMLElement) {
+    const title = (text: string) => {
+      const h = document.createElement('h3');
+      h.textContent = text;
+      container.appendChild(h);
+    };
+    title('Now (from the server)');
+    this.live = document.createElement('table');
+    container.appendChild(this.live);
+    title('Exact solution of this orbit');
+    this.exactTable = document.createElement('table');
+    container.appendChild(this.exactTable);
+    this.note = document.createElement('p');
+    this.note.className = 'note';
+    container.appendChild(this.note);
+  }
+
+  private fill(table: HTMLTableElement, rows: Row[]): void {
+    while (table.rows.length > rows.length) table.deleteRow(-1);
+    rows.forEach(([label, value, unit], i) => {
+      const tr = table.rows[i] ?? table.insertRow();
+      while (tr.cells.length < 3) tr.insertCell();
+      const [a, b, c] = [tr.cells[0], tr.cells[1], tr.cells[2]];
+      if (a && a.textContent !== label) a.textContent = label;
+      if (b && b.textContent !== value) b.textContent = value;
+      if (c && c.textContent !== unit) c.textContent = unit;
+    });
+  }
+
+  update(f: Frame | null, store: LabStore): void {
+    this.fill(this.live, liveRows(f, store));
+    this.fill(this.exactTable, exactRows(store.exact));
+    const note = store.exactError ?? store.exact?.phases_note ?? '';
+    if (this.note.textContent !== note) this.note.textContent = note;
+  }
+}

@@ -1,0 +1,234 @@
+// The wire protocol between `pendulab serve` and the page (docs/web.md), with no DOM: types of the JSON
+// commands and notices, and the decoding of binary state frames.
+//
+// Frames: every binary WebSocket message holds one or more records of little-endian float64 values in the
+// order of `frame.json` (shared with the Python server, pendulab/server/frame.json):
+//   [t, x1, x2, x3, v1, v2, v3, energy, j3, tension]   in s, m, m/s, J, kg m²/s, N.
+import layout from '../../python/pendulab/server/frame.json';
+
+export type Vec3 = [number, number, number];
+
+/** Names of the float64 values of one record, in wire order. */
+export const FRAME_FIELDS: readonly string[] = layout.fields;
+/** SI unit of each field. */
+export const FRAME_UNITS: readonly string[] = layout.units;
+export const RECORD_LEN = FRAME_FIELDS.length;
+export const RECORD_BYTES = 8 * RECORD_LEN;
+
+function fieldIndex(name: string): number {
+  const i = FRAME_FIELDS.indexOf(name);
+  if (i < 0) throw new Error(`frame.json lacks the field ${name}`);
+  return i;
+}
+const I = {
+  t: fieldIndex('t'),
+  x: [fieldIndex('x1'), fieldIndex('x2'), fieldIndex('x3')] as const,
+  v: [fieldIndex('v1'), fieldIndex('v2'), fieldIndex('v3')] as const,
+  energy: fieldIndex('energy'),
+  j3: fieldIndex('j3'),
+  tension: fieldIndex('tension'),
+};
+
+/** One state as computed by the server's core: time [s], position [m], velocity [m/s], E [J], J₃, T [N]. */
+export interface Frame {
+  t: number;
+  x: Vec3;
+  v: Vec3;
+  energy: number;
+  j3: number;
+  tension: number;
+}
+
+export class ProtocolError extends Error {}
+
+/** Decodes one binary message into its records. Throws ProtocolError on a length that is not whole records. */
+export function decodeFrames(buf: ArrayBuffer): Frame[] {
+  if (buf.byteLength === 0 || buf.byteLength % RECORD_BYTES !== 0) {
+    throw new ProtocolError(`a frame message has a multiple of ${RECORD_BYTES} bytes, got ${buf.byteLength}`);
+  }
+  const view = new DataView(buf);
+  const n = buf.byteLength / RECORD_BYTES;
+  const out: Frame[] = [];
+  for (let k = 0; k < n; k++) {
+    const base = k * RECORD_BYTES;
+    const at = (i: number): number => view.getFloat64(base + 8 * i, true);
+    out.push({
+      t: at(I.t),
+      x: [at(I.x[0]), at(I.x[1]), at(I.x[2])],
+      v: [at(I.v[0]), at(I.v[1]), at(I.v[2])],
+      energy: at(I.energy),
+      j3: at(I.j3),
+      tension: at(I.tension),
+    });
+  }
+  return out;
+}
+
+/** The inverse of decodeFrames (used by tests and to replay recordings). */
+export function encodeFrames(frames: readonly Frame[]): ArrayBuffer {
+  const buf = new ArrayBuffer(frames.length * RECORD_BYTES);
+  const view = new DataView(buf);
+  frames.forEach((f, k) => {
+    const base = k * RECORD_BYTES;
+    const put = (i: number, value: number): void => view.setFloat64(base + 8 * i, value, true);
+    put(I.t, f.t);
+    I.x.forEach((i, c) => put(i, f.x[c] ?? NaN));
+    I.v.forEach((i, c) => put(i, f.v[c] ?? NaN));
+    put(I.energy, f.energy);
+    put(I.j3, f.j3);
+    put(I.tension, f.tension);
+  });
+  return buf;
+}
+
+// --- commands (page → server), one JSON object per text message ---
+
+export type Command =
+  | { type: 'set_params'; length?: number; mass?: number; g?: number }
+  | { type: 'set_state'; x: Vec3; v: Vec3; project?: boolean }
+  | { type: 'set_state'; theta: number; phi?: number; theta_dot?: number; phi_dot?: number }
+  | { type: 'set_method'; method?: string; dt?: number }
+  | { type: 'set_time_scale'; time_scale: number }
+  | { type: 'pause' }
+  | { type: 'resume' }
+  | { type: 'step'; n?: number }
+  | { type: 'reset' }
+  | { type: 'load_scenario'; name: string };
+
+// --- notices (server → page), JSON text ---
+
+export interface Params {
+  length: number;
+  mass: number;
+  g: number;
+}
+
+export interface Status {
+  type: 'status';
+  epoch: number;
+  scenario: string | null;
+  title: string | null;
+  paused: boolean;
+  time_scale: number;
+  method: string;
+  adaptive: boolean;
+  dt: number;
+  params: Params;
+  t: number;
+  t0: number;
+  start: { x: Vec3; v: Vec3 };
+  lagging: boolean;
+  frame_fields: string[];
+}
+
+export interface ErrorNotice {
+  type: 'error';
+  message: string;
+  command: string | null;
+}
+
+export type Notice = Status | ErrorNotice;
+
+function isObject(v: unknown): v is Record<string, unknown> {
+  return typeof v === 'object' && v !== null && !Array.isArray(v);
+}
+
+/** A notice from one text message, or a ProtocolError saying what is wrong with it. */
+export function parseNotice(text: string): Notice {
+  let raw: unknown;
+  try {
+    raw = JSON.parse(text);
+  } catch (e) {
+    throw new ProtocolError(`notice is not JSON: ${String(e)}`);
+  }
+  if (!isObject(raw)) throw new ProtocolError('notice is not a JSON object');
+  if (raw['type'] === 'error' && typeof raw['message'] === 'string') {
+    const command = typeof raw['command'] === 'string' ? raw['command'] : null;
+    return { type: 'error', message: raw['message'], command };
+  }
+  if (raw['type'] === 'status') {
+    const p = raw['params'];
+    if (!isObject(p) || typeof raw['epoch'] !== 'number' || typeof raw['method'] !== 'string') {
+      throw new ProtocolError('status notice lacks epoch, method or params');
+    }
+    const fields = raw['frame_fields'];
+    if (Array.isArray(fields) && fields.join(',') !== FRAME_FIELDS.join(',')) {
+      throw new ProtocolError(`server frame layout ${fields.join(',')} differs from the page's`);
+    }
+    return raw as unknown as Status;
+  }
+  throw new ProtocolError(`unknown notice type ${JSON.stringify(raw['type'])}`);
+}
+
+// --- REST (GET /api/schema, GET /api/scenarios, POST /api/exact) ---
+
+export interface ParamSchema {
+  name: string;
+  unit: string;
+  description: string;
+  default: number;
+  min: number;
+  max: number;
+  ui_min: number;
+  ui_max: number;
+  step: number;
+}
+
+export interface ControlSchema {
+  unit: string;
+  description: string;
+  min: number;
+  max: number;
+  ui_min?: number;
+  ui_max?: number;
+  step?: number;
+  default?: number;
+}
+
+export interface MethodInfo {
+  name: string;
+  order: number;
+  symplectic: boolean;
+  preserves_ts2: boolean;
+  preserves_j3: boolean;
+  adaptive: boolean;
+  dense_output: boolean;
+  default: boolean;
+  summary: string;
+}
+
+export interface Schema {
+  version: string;
+  model: { name: string; summary: string; params: ParamSchema[] };
+  controls: { dt: ControlSchema; time_scale: ControlSchema; step_n: ControlSchema };
+  methods: MethodInfo[];
+  frame: { fields: string[]; units: string[]; dtype: string; byte_order: string; record_bytes: number };
+  commands: string[];
+  tick_hz: number;
+}
+
+export interface ScenarioInfo {
+  name: string;
+  title?: string | null;
+  params?: Params;
+  start?: { x: Vec3; v: Vec3 };
+  method?: string;
+  dt?: number;
+  t0?: number;
+  error?: string;
+}
+
+export interface ExactQuantities {
+  kind: string;
+  energy: number;
+  j3: number;
+  omega0: number;
+  turning_heights: (number | null)[];
+  modulus: number | null;
+  period_z: number | null;
+  period_z_infinite: boolean;
+  azimuth_advance: number | null;
+  rotation_number: number | null;
+  phases: { total: number; dynamic: number; geometric: number } | null;
+  phases_note: string | null;
+}

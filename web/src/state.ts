@@ -1,0 +1,253 @@
+// The lab's state store: everything the page knows, with no DOM and no WebGL, so it is unit-tested alone.
+//
+// It receives what the server sends (status notices, frame records, errors) and offers what the views
+// draw: the state at the playhead (interpolated between received frames — the page never integrates),
+// the trail, the histories of ΔE, ΔJ₃, z and tension for the plots, and the trajectory as CSV.
+import type { ErrorNotice, ExactQuantities, Frame, Status, Vec3 } from './protocol';
+
+/** Frames kept for interpolation. */
+export const BUFFER_MAX = 512;
+/** Frames kept for the trail. */
+export const TRAIL_MAX = 4000;
+/** Points per plotted series before the history is thinned (every other point dropped). */
+export const HISTORY_MAX = 4000;
+/** Frames kept for the CSV download (about 16 MB). */
+export const TRAJECTORY_MAX = 200_000;
+/** Most simulated time the playhead trails the newest frame, in ticks of the server. */
+export const MAX_LAG_TICKS = 3;
+
+/** Columns of the CSV download, in SI units. */
+export const CSV_COLUMNS = [
+  't [s]',
+  'x1 [m]',
+  'x2 [m]',
+  'x3 [m]',
+  'v1 [m/s]',
+  'v2 [m/s]',
+  'v3 [m/s]',
+  'energy [J]',
+  'j3 [kg m^2/s]',
+  'tension [N]',
+] as const;
+
+export interface History {
+  t: number[];
+  dE: number[];
+  dJ3: number[];
+  z: number[];
+  tension: number[];
+}
+
+function emptyHistory(): History {
+  return { t: [], dE: [], dJ3: [], z: [], tension: [] };
+}
+
+type Listener = () => void;
+
+export function lerp(a: number, b: number, s: number): number {
+  return a + (b - a) * s;
+}
+
+/** Linear interpolation of two frames at parameter s ∈ [0, 1]; the position is put back on the sphere of
+ *  radius lerp(|x_a|, |x_b|) so the bob never cuts the chord. Drawing only: no dynamics. */
+export function interpolateFrames(a: Frame, b: Frame, s: number): Frame {
+  const x: Vec3 = [lerp(a.x[0], b.x[0], s), lerp(a.x[1], b.x[1], s), lerp(a.x[2], b.x[2], s)];
+  const r = lerp(Math.hypot(...a.x), Math.hypot(...b.x), s);
+  const n = Math.hypot(...x);
+  if (n > 0) for (let i = 0; i < 3; i++) x[i] = (x[i] as number) * (r / n);
+  return {
+    t: lerp(a.t, b.t, s),
+    x,
+    v: [lerp(a.v[0], b.v[0], s), lerp(a.v[1], b.v[1], s), lerp(a.v[2], b.v[2], s)],
+    energy: lerp(a.energy, b.energy, s),
+    j3: lerp(a.j3, b.j3, s),
+    tension: lerp(a.tension, b.tension, s),
+  };
+}
+
+export class LabStore {
+  status: Status | null = null;
+  /** Recent frames of the current epoch, oldest first (for interpolation). */
+  frames: Frame[] = [];
+  /** Frames for the trail, oldest first. */
+  trail: Frame[] = [];
+  history: History = emptyHistory();
+  /** Every frame of the current epoch (up to TRAJECTORY_MAX), for the CSV download. */
+  trajectory: Frame[] = [];
+  trajectoryTruncated = false;
+  /** E and J₃ of the epoch's first frame: the references of the drift plots. */
+  reference: { energy: number; j3: number } | null = null;
+  /** Simulated time shown [s], or null before the first frame. */
+  playT: number | null = null;
+  exact: ExactQuantities | null = null;
+  exactError: string | null = null;
+  errors: ErrorNotice[] = [];
+  connected = false;
+  tickHz = 60;
+
+  private historyStride = 1;
+  private historyCount = 0;
+  private listeners = new Set<Listener>();
+
+  subscribe(fn: Listener): () => void {
+    this.listeners.add(fn);
+    return () => this.listeners.delete(fn);
+  }
+
+  private emit(): void {
+    for (const fn of this.listeners) fn();
+  }
+
+  /** A status notice. A new epoch (new state, parameters, scenario, reset) clears frames, trail and plots. */
+  onStatus(s: Status): void {
+    const newEpoch = this.status === null || s.epoch !== this.status.epoch;
+    this.status = s;
+    if (newEpoch) this.clear();
+    this.emit();
+  }
+
+  clear(): void {
+    this.frames = [];
+    this.trail = [];
+    this.history = emptyHistory();
+    this.trajectory = [];
+    this.trajectoryTruncated = false;
+    this.reference = null;
+    this.playT = null;
+    this.exact = null;
+    this.exactError = null;
+    this.historyStride = 1;
+    this.historyCount = 0;
+  }
+
+  onError(e: ErrorNotice): void {
+    this.errors.push(e);
+    if (this.errors.length > 20) this.errors.shift();
+    this.emit();
+  }
+
+  setConnected(c: boolean): void {
+    this.connected = c;
+    this.emit();
+  }
+
+  setExact(q: ExactQuantities | null, error: string | null = null): void {
+    this.exact = q;
+    this.exactError = error;
+    this.emit();
+  }
+
+  /** Frames of one binary message. Frames older than the newest one held (a late message) are ignored. */
+  onFrames(frames: readonly Frame[]): void {
+    for (const f of frames) {
+      const last = this.frames[this.frames.length - 1];
+      if (last !== undefined && f.t < last.t) continue;
+      if (last !== undefined && f.t === last.t) this.frames.pop(); // same time: the newer numbers win
+      this.frames.push(f);
+      if (this.reference === null) this.reference = { energy: f.energy, j3: f.j3 };
+      this.pushTrail(f);
+      this.pushHistory(f);
+      if (this.trajectory.length < TRAJECTORY_MAX) this.trajectory.push(f);
+      else this.trajectoryTruncated = true;
+      if (this.playT === null) this.playT = f.t;
+    }
+    if (this.frames.length > BUFFER_MAX) this.frames.splice(0, this.frames.length - BUFFER_MAX);
+  }
+
+  private pushTrail(f: Frame): void {
+    const last = this.trail[this.trail.length - 1];
+    if (last !== undefined && last.t === f.t) this.trail.pop();
+    this.trail.push(f);
+    if (this.trail.length > TRAIL_MAX) this.trail.splice(0, this.trail.length - TRAIL_MAX);
+  }
+
+  private pushHistory(f: Frame): void {
+    const ref = this.reference;
+    if (ref === null) return;
+    const h = this.history;
+    if (h.t.length > 0 && f.t <= (h.t[h.t.length - 1] as number)) return;
+    if (this.historyCount++ % this.historyStride !== 0) return;
+    h.t.push(f.t);
+    h.dE.push(f.energy - ref.energy);
+    h.dJ3.push(f.j3 - ref.j3);
+    h.z.push(f.x[2]);
+    h.tension.push(f.tension);
+    if (h.t.length > HISTORY_MAX) {
+      // thin: keep every other point (always the first), take every other future point
+      const keep = <T>(a: T[]): T[] => a.filter((_, i) => i % 2 === 0);
+      this.history = { t: keep(h.t), dE: keep(h.dE), dJ3: keep(h.dJ3), z: keep(h.z), tension: keep(h.tension) };
+      this.historyStride *= 2;
+      this.historyCount = 1;
+    }
+  }
+
+  latest(): Frame | null {
+    return this.frames[this.frames.length - 1] ?? null;
+  }
+
+  /** Moves the playhead by wallDt seconds of wall clock × time scale, kept within MAX_LAG_TICKS ticks of the
+   *  newest frame (and at it while paused). Returns the time shown, or null without frames. */
+  advancePlayhead(wallDt: number): number | null {
+    const latest = this.latest();
+    const first = this.frames[0];
+    if (latest === undefined || latest === null || first === undefined) return (this.playT = null);
+    const s = this.status;
+    if (s === null || s.paused || this.playT === null) {
+      this.playT = latest.t;
+      return this.playT;
+    }
+    const maxLag = (MAX_LAG_TICKS * s.time_scale) / this.tickHz;
+    let t = this.playT + Math.max(0, wallDt) * s.time_scale;
+    t = Math.min(t, latest.t);
+    t = Math.max(t, latest.t - maxLag, first.t);
+    this.playT = t;
+    return t;
+  }
+
+  /** The state at the playhead: the received frames interpolated (never integrated). */
+  displayed(): Frame | null {
+    const t = this.playT;
+    const fs = this.frames;
+    if (t === null || fs.length === 0) return null;
+    const last = fs[fs.length - 1] as Frame;
+    if (t >= last.t) return last;
+    // binary search for the last frame with time <= t
+    let lo = 0;
+    let hi = fs.length - 1;
+    if (t <= (fs[0] as Frame).t) return fs[0] as Frame;
+    while (hi - lo > 1) {
+      const mid = (lo + hi) >> 1;
+      if ((fs[mid] as Frame).t <= t) lo = mid;
+      else hi = mid;
+    }
+    const a = fs[lo] as Frame;
+    const b = fs[hi] as Frame;
+    const span = b.t - a.t;
+    return interpolateFrames(a, b, span > 0 ? (t - a.t) / span : 1);
+  }
+
+  /** Trail frames with time in [playT − seconds, playT]. */
+  trailWindow(seconds: number): Frame[] {
+    const t = this.playT;
+    if (t === null) return [];
+    return this.trail.filter((f) => f.t <= t && f.t >= t - seconds);
+  }
+
+  /** The trajectory received in this epoch as CSV: a `#` line of JSON metadata, a header with units, rows. */
+  toCSV(): string {
+    const s = this.status;
+    const meta = {
+      source: 'pendulab lab',
+      scenario: s?.scenario ?? null,
+      params: s?.params ?? null,
+      method: s?.method ?? null,
+      dt: s?.dt ?? null,
+      truncated: this.trajectoryTruncated,
+    };
+    const header = CSV_COLUMNS.join(',');
+    const rows = this.trajectory.map((f) =>
+      [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension].map((v) => String(v)).join(','),
+    );
+    return [`# ${JSON.stringify(meta)}`, header, ...rows].join('\n') + '\n';
+  }
+}

@@ -1,0 +1,167 @@
+import { beforeEach, describe, expect, it } from 'vitest';
+import type { Frame, Status } from '../../src/protocol';
+import { BUFFER_MAX, HISTORY_MAX, LabStore, TRAIL_MAX, interpolateFrames } from '../../src/state';
+
+function status(over: Partial<Status> = {}): Status {
+  return {
+    type: 'status',
+    epoch: 0,
+    scenario: 'rosette',
+    title: null,
+    paused: false,
+    time_scale: 1,
+    method: 'rattle',
+    adaptive: false,
+    dt: 0.001,
+    params: { length: 1, mass: 1, g: 9.81 },
+    t: 0,
+    t0: 0,
+    start: { x: [0, 0, -1], v: [1, 0, 0] },
+    lagging: false,
+    frame_fields: [],
+    ...over,
+  };
+}
+
+/** A frame on the unit circle in the xy plane at angle ω t (not physics: just data to draw). */
+function frame(t: number, energy = -9.81, j3 = 1): Frame {
+  return {
+    t,
+    x: [Math.cos(t), Math.sin(t), 0],
+    v: [-Math.sin(t), Math.cos(t), 0],
+    energy,
+    j3,
+    tension: 1,
+  };
+}
+
+describe('LabStore', () => {
+  let store: LabStore;
+  beforeEach(() => {
+    store = new LabStore();
+    store.onStatus(status());
+  });
+
+  it('starts the playhead at the first frame and keeps drift references', () => {
+    store.onFrames([frame(0, -9.81, 1), frame(1 / 60, -9.8, 1.5)]);
+    expect(store.playT).toBe(0);
+    expect(store.reference).toEqual({ energy: -9.81, j3: 1 });
+    expect(store.history.dE[1]).toBeCloseTo(0.01, 12);
+    expect(store.history.dJ3).toEqual([0, 0.5]);
+    expect(store.history.z).toEqual([0, 0]);
+  });
+
+  it('advances the playhead with wall clock × time scale, never past the newest frame', () => {
+    store.onStatus(status({ time_scale: 2 }));
+    store.onFrames([frame(0), frame(0.05), frame(0.1)]);
+    expect(store.advancePlayhead(0.01)).toBeCloseTo(0.02, 12);
+    expect(store.advancePlayhead(1)).toBe(0.1);
+  });
+
+  it('keeps the playhead within a few ticks of the newest frame', () => {
+    store.onFrames([frame(0)]);
+    store.onFrames([frame(10)]);
+    // max lag = 3 ticks × time scale 1 / 60 Hz
+    expect(store.advancePlayhead(0)).toBeCloseTo(10 - 3 / 60, 12);
+  });
+
+  it('shows the newest frame while paused', () => {
+    store.onFrames([frame(0), frame(0.5)]);
+    store.onStatus(status({ paused: true }));
+    expect(store.advancePlayhead(0)).toBe(0.5);
+    expect(store.displayed()).toEqual(frame(0.5));
+  });
+
+  it('interpolates between frames and keeps the bob on the sphere (drawing only)', () => {
+    store.onFrames([frame(0), frame(Math.PI / 2)]);
+    store.playT = Math.PI / 4;
+    const f = store.displayed();
+    expect(f).not.toBeNull();
+    expect(Math.hypot(...(f as Frame).x)).toBeCloseTo(1, 14);
+    expect((f as Frame).x[0]).toBeCloseTo(Math.SQRT1_2, 14);
+    const mid = interpolateFrames(frame(0, 1, 1), frame(1, 3, 5), 0.5);
+    expect(mid.energy).toBe(2);
+    expect(mid.j3).toBe(3);
+  });
+
+  it('clears frames, trail, plots and the exact solution on a new epoch only', () => {
+    store.onFrames([frame(0), frame(0.1)]);
+    store.setExact({
+      kind: 'generic',
+      energy: 0,
+      j3: 0,
+      omega0: 1,
+      turning_heights: [-1, 0],
+      modulus: 0.5,
+      period_z: 1,
+      period_z_infinite: false,
+      azimuth_advance: 3,
+      rotation_number: 0.5,
+      phases: null,
+      phases_note: null,
+    });
+    store.onStatus(status({ paused: true })); // same epoch
+    expect(store.frames).toHaveLength(2);
+    expect(store.exact).not.toBeNull();
+    store.onStatus(status({ epoch: 1 }));
+    expect(store.frames).toHaveLength(0);
+    expect(store.trail).toHaveLength(0);
+    expect(store.history.t).toHaveLength(0);
+    expect(store.reference).toBeNull();
+    expect(store.exact).toBeNull();
+    expect(store.playT).toBeNull();
+  });
+
+  it('ignores late frames and lets a frame at the same time replace the last', () => {
+    store.onFrames([frame(0), frame(1)]);
+    store.onFrames([frame(0.5)]);
+    expect(store.frames.map((f) => f.t)).toEqual([0, 1]);
+    store.onFrames([frame(1, -1)]);
+    expect(store.frames).toHaveLength(2);
+    expect(store.latest()?.energy).toBe(-1);
+  });
+
+  it('bounds the buffers: frames, trail, and a thinned history covering the whole run', () => {
+    const n = 3 * HISTORY_MAX + 7;
+    const frames = Array.from({ length: n }, (_, i) => frame(i / 60));
+    store.onFrames(frames);
+    expect(store.frames).toHaveLength(BUFFER_MAX);
+    expect(store.trail).toHaveLength(Math.min(n, TRAIL_MAX));
+    expect(store.history.t.length).toBeLessThanOrEqual(HISTORY_MAX);
+    expect(store.history.t.length).toBeGreaterThan(HISTORY_MAX / 4);
+    expect(store.history.t[0]).toBe(0);
+    const last = store.history.t[store.history.t.length - 1] as number;
+    expect(last).toBeGreaterThan(((n - 1) / 60) * 0.99);
+    const ts = store.history.t;
+    expect(ts.every((t, i) => i === 0 || t > (ts[i - 1] as number))).toBe(true);
+    expect(store.trajectory).toHaveLength(n);
+  });
+
+  it('gives a trail window ending at the playhead', () => {
+    store.onFrames([0, 1, 2, 3, 4].map((t) => frame(t)));
+    store.playT = 3.5;
+    expect(store.trailWindow(2).map((f) => f.t)).toEqual([2, 3]);
+  });
+
+  it('writes the trajectory as CSV with metadata and units', () => {
+    store.onFrames([frame(0), frame(0.5)]);
+    const lines = store.toCSV().trim().split('\n');
+    expect(lines).toHaveLength(4);
+    expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ scenario: 'rosette', method: 'rattle' });
+    expect(lines[1]).toBe(
+      't [s],x1 [m],x2 [m],x3 [m],v1 [m/s],v2 [m/s],v3 [m/s],energy [J],j3 [kg m^2/s],tension [N]',
+    );
+    const row = (lines[3] as string).split(',').map(Number);
+    expect(row).toEqual([0.5, Math.cos(0.5), Math.sin(0.5), 0, -Math.sin(0.5), Math.cos(0.5), 0, -9.81, 1, 1]);
+  });
+
+  it('notifies subscribers and keeps the last errors', () => {
+    let calls = 0;
+    const off = store.subscribe(() => calls++);
+    store.onError({ type: 'error', message: 'x', command: null });
+    off();
+    store.onError({ type: 'error', message: 'y', command: null });
+    expect(calls).toBe(1);
+    expect(store.errors.map((e) => e.message)).toEqual(['x', 'y']);
+  });
+});

@@ -1,0 +1,68 @@
+import { describe, expect, it } from 'vitest';
+import type { Status } from '../../src/protocol';
+import type { UrlScenario } from '../../src/url';
+import { commandsFor, decodeUrl, encodeUrl, fromStatus } from '../../src/url';
+
+const status: Status = {
+  type: 'status',
+  epoch: 3,
+  scenario: 'rosette',
+  title: 'Rosette',
+  paused: true,
+  time_scale: 0.25,
+  method: 'rattle4',
+  adaptive: false,
+  dt: 0.0005,
+  params: { length: 0.7, mass: 2.5, g: -9.81 },
+  t: 12.3,
+  t0: 0,
+  start: { x: [0.6062177826491071, 0.1 + 0.2, -0.35000000000000003], v: [-0, 1.2124355652982142, 1e-300] },
+  lagging: false,
+  frame_fields: [],
+};
+
+describe('URL round trip', () => {
+  it('reproduces every value bit for bit, negative g and awkward floats included', () => {
+    const u = fromStatus(status);
+    const { value, problems } = decodeUrl(encodeUrl(u));
+    expect(problems).toEqual([]);
+    expect(value).toEqual(u);
+    expect(Object.is(value.v?.[0], -0)).toBe(true);
+    expect(value.x?.[1]).toBe(0.1 + 0.2);
+    expect(value.g).toBe(-9.81);
+  });
+
+  it('round-trips through a full URL with a leading ?', () => {
+    const u: UrlScenario = { length: 1e-3, g: 1e21, method: 'dop853', timeScale: 100 };
+    const url = new URL(`http://127.0.0.1:8000/?${encodeUrl(u)}`);
+    expect(decodeUrl(url.search).value).toEqual(u);
+  });
+
+  it('names unreadable values and leaves them out', () => {
+    const { value, problems } = decodeUrl('?l=abc&g=Infinity&x=1,2&v=0,0,0&method=%3Cscript%3E&zz=1&m=2');
+    expect(value).toEqual({ mass: 2 });
+    expect(problems).toEqual([
+      'unknown URL key zz',
+      'l = "abc" is not a finite number',
+      'g = "Infinity" is not a finite number',
+      'method = "<script>" is not a name',
+      'x = "1,2" is not three finite numbers',
+    ]);
+  });
+
+  it('gives the commands that rebuild the scenario, in order, ending with reset (and pause)', () => {
+    const cmds = commandsFor(fromStatus(status));
+    expect(cmds.map((c) => c.type)).toEqual([
+      'load_scenario',
+      'set_params',
+      'set_method',
+      'set_time_scale',
+      'set_state',
+      'reset',
+      'pause',
+    ]);
+    expect(cmds[1]).toEqual({ type: 'set_params', length: 0.7, mass: 2.5, g: -9.81 });
+    expect(cmds[4]).toEqual({ type: 'set_state', x: status.start.x, v: status.start.v });
+    expect(commandsFor({})).toEqual([]);
+  });
+});
