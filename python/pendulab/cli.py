@@ -246,6 +246,25 @@ def methods(
         _say("  ".join(c.ljust(w) for c, w in zip(r, widths, strict=False)) + "  " + r[-1])
 
 
+@app.command(short_help="List the models with their parameters, units, defaults and limits.")
+def models(
+    as_json: Annotated[
+        bool, typer.Option("--json", help="Print the registry as JSON (a list of objects).")
+    ] = False,
+) -> None:
+    """List the pendulum models (THEORY.md §7) and their parameters (SI units), as scenario files and
+    ``pendulab.Pendulum(model=..., **params)`` take them."""
+    table = _core.models()
+    if as_json:
+        _say(json.dumps(table, indent=2, default=str))
+        return
+    for m in table:
+        _say(f"{m['name']}: {m['summary']}")
+        for p in m["params"]:
+            head = f"    {p['name']:<18} [{p['unit']}]  default {p['default']:g}"
+            _say(f"{head}  ({p['allowed']}): {p['description']}")
+
+
 @app.command(short_help="Check scenario files without running them.")
 def validate(
     scenarios: Annotated[

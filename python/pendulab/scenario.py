@@ -47,8 +47,8 @@ from .model import Pendulum, State
 from .simulate import DEFAULTS, method_names, simulate
 from .trajectory import Trajectory
 
-MODELS = ("ideal",)
-"""Pendulum models a scenario may name (``[pendulum] model``)."""
+MODELS = tuple(m["name"] for m in _core.models())
+"""Pendulum models a scenario may name (``[pendulum] model``; their parameters: ``pendulab models``)."""
 
 _DEG = math.pi / 180
 _U64_LIMIT = 2**63  # save_every must fit the core's unsigned 64-bit counter
@@ -89,8 +89,15 @@ class _Section(BaseModel):
 _VEC3 = {"min_length": 3, "max_length": 3}
 
 
+_MODEL_PARAMS: dict[str, set[str]] = {
+    m["name"]: {p["name"] for p in m["params"]} - {"length", "mass", "g"} for m in _core.models()
+}
+
+
 class PendulumSection(_Section):
-    """``[pendulum]``: the model and its parameters."""
+    """``[pendulum]``: the model and its parameters. Besides length, mass and g, the keys of the chosen
+    model are allowed (``pendulab models``; SI units, e.g. ``damping = 0.05`` in 1/s); they are
+    collected into ``params`` and checked by the core (ranges) when the scenario is built."""
 
     model: str = Field("ideal", description=f"the pendulum model, one of: {', '.join(map(repr, MODELS))}")
     length: float = Field(gt=0, description="rod length l in m, a finite number > 0")
@@ -98,6 +105,22 @@ class PendulumSection(_Section):
     g: float = Field(
         9.81, description="gravitational acceleration in m/s², any finite number (g > 0 pulls along -z)"
     )
+    params: dict[str, float] = Field(
+        default_factory=dict, description="the model's own parameters (SI units; `pendulab models`)"
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _collect_params(cls, data: Any) -> Any:
+        """Moves the chosen model's own keys into ``params``; anything else stays and, if unknown, is
+        reported as an unknown key."""
+        if isinstance(data, dict):
+            own = _MODEL_PARAMS.get(str(data.get("model", "ideal")), set())
+            moved = {k: v for k, v in data.items() if k in own}
+            if moved:
+                data = {k: v for k, v in data.items() if k not in own}
+                data["params"] = {**dict(data.get("params") or {}), **moved}
+        return data
 
     @field_validator("model")
     @classmethod
@@ -105,6 +128,10 @@ class PendulumSection(_Section):
         if name not in MODELS:
             raise ValueError(f"unknown model {name!r}; allowed: {', '.join(map(repr, MODELS))}")
         return name
+
+    def extras(self) -> dict[str, float]:
+        """The model's own parameters (SI units)."""
+        return {k: float(v) for k, v in self.params.items()}
 
 
 _ANGLE_KEYS = ("theta", "theta_deg", "phi", "phi_deg", "theta_dot", "phi_dot")
@@ -450,7 +477,7 @@ class Scenario:
     def __post_init__(self) -> None:
         p, sim = self.spec.pendulum, self.spec.simulation
         try:
-            pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass)
+            pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, model=p.model, **p.extras())
         except _core.InvalidInputError as e:
             raise ScenarioError(self.source, f"[pendulum] {e}") from None
         object.__setattr__(self, "_pendulum", pendulum)
@@ -469,6 +496,7 @@ class Scenario:
                 sim.save_every,
                 None if sim.save_at is None else np.asarray(sim.save_at, dtype=np.float64),
                 None,
+                **pendulum._model_kwargs(),
             )
         except _core.InvalidInputError as e:
             raise ScenarioError(self.source, f"[simulation] {e}") from None
@@ -615,7 +643,9 @@ class Scenario:
 
     def to_dict(self) -> dict[str, Any]:
         """The settings as nested dicts (defaults filled in, unset optional keys left out)."""
-        return self.spec.model_dump(exclude_none=True)
+        data = self.spec.model_dump(exclude_none=True)
+        data["pendulum"].update(data["pendulum"].pop("params", {}))
+        return data
 
     def to_toml(self) -> str:
         """The scenario as TOML text (units as comments); loading it gives an equal scenario."""
