@@ -236,7 +236,7 @@ def load_scenarios(directory: Path = SCENARIO_DIR) -> list[Scenario]:
             pend, init = doc["pendulum"], doc["initial"]
             model = pend.get("model", "ideal")
             if model != "ideal":
-                raise GoldenError(f"{f.name}: model {model!r} is not the ideal pendulum")
+                continue  # the exact solution exists for the ideal pendulum only (damped, pivot, ...)
             length, mass, g = (
                 float(pend["length"]),
                 float(pend["mass"]),
