@@ -181,3 +181,19 @@ fn zero_atol_works_from_rest_and_with_zero_components() {
     };
     assert!((st.state().x - reference.x).length() < 1e-10, "{:?}", st.state());
 }
+
+#[test]
+fn invariant_projection_leaves_a_decaying_j3_alone() {
+    // With linear damping J₃ is not conserved but decays as e^{−ct}: conserve must not pin it.
+    use pendulab_core::model::j3;
+    use pendulab_core::model::registry::AnyModel;
+    let m =
+        AnyModel::build("damped", pendulab_core::Params::new(1.0, 1.0, 9.81).unwrap(), &[("damping", 0.3)])
+            .unwrap();
+    let s0 = State::from_angles(m.params(), 1.0, 0.0, 0.0, 2.0).unwrap();
+    let mut st = Stepper::new(m, 0.0, s0, &options(1e-12, true)).unwrap();
+    st.set_invariant_projection(true);
+    st.step_to(5.0).unwrap();
+    let want = j3(&m, &s0) * (-0.3f64 * 5.0).exp();
+    assert!((j3(&m, st.state()) - want).abs() < 1e-9 * want.abs(), "{} vs {want}", j3(&m, st.state()));
+}

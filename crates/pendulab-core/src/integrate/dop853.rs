@@ -307,7 +307,12 @@ impl Dop853 {
                         .ok_or(Error::Diverged { t: t1, method: "dop853", dt: h })?;
                     if let (true, Some((e0, j0))) = (self.invariants, self.targets) {
                         let e = model.is_conservative().then(|| e0 - model.potential_per_mass(p.x));
-                        let j = model.is_axisymmetric().then_some(j0);
+                        // J₃ is an invariant only without damping, drag, forcing or a frame: axisymmetry
+                        // alone is not enough (damping makes J₃ decay like e^{−ct}).
+                        let kept = model.is_axisymmetric()
+                            && model.is_conservative()
+                            && !model.has_velocity_forces();
+                        let j = kept.then_some(j0);
                         p.v = project_invariants(p.x, p.v, e, j);
                     }
                     Y6::from(p)
