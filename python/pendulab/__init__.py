@@ -9,6 +9,7 @@ measured from the downward vertical. Quick start::
     tr = pl.simulate(p, s0, t_end=100.0, method="rattle", dt=1e-3, save_every=10)
     print(tr.summary())
     sol = pl.exact(p, s0)               # the exact solution (THEORY §4): sol.state(t), sol.phases()
+    pl.models()                         # the real-pendulum models (§7): damped, rotating, ... (SI units)
 
 Plots (matplotlib, optional): ``pendulab.plot``.
 """
@@ -18,7 +19,7 @@ from .advance import MeasuredAdvance, measured_azimuth_advance
 from .em_map import EMMap, em_map
 from .ensemble import EnsembleResult, simulate_ensemble, states_from_angles
 from .exact import ExactSolution, Phases, exact
-from .model import Pendulum, State
+from .model import Pendulum, State, models
 from .reduce import Reduced, reduce, reduced_flow
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulate import Stepper, method_names, methods, simulate
@@ -49,6 +50,7 @@ __all__ = [
     "measured_azimuth_advance",
     "method_names",
     "methods",
+    "models",
     "reduce",
     "reduced_flow",
     "simulate",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import json
+import math
 import os
 import sys
 import warnings
@@ -21,6 +22,7 @@ from typing import Annotated, NoReturn
 import typer
 
 from . import _core, io
+from .model import models as model_table
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulate import methods as method_table
 
@@ -246,23 +248,66 @@ def methods(
         _say("  ".join(c.ljust(w) for c, w in zip(r, widths, strict=False)) + "  " + r[-1])
 
 
+def _json_number(value: float) -> float | None:
+    """JSON has no infinity: an unbounded limit is written as null."""
+    return value if math.isfinite(value) else None
+
+
 @app.command(short_help="List the models with their parameters, units, defaults and limits.")
 def models(
+    name: Annotated[
+        str | None,
+        typer.Argument(metavar="[MODEL]", help="Show only this model.", show_default=False),
+    ] = None,
     as_json: Annotated[
-        bool, typer.Option("--json", help="Print the registry as JSON (a list of objects).")
+        bool, typer.Option("--json", help="Print the registry as JSON (a list of objects; no limit: null).")
     ] = False,
 ) -> None:
-    """List the pendulum models (THEORY.md §7) and their parameters (SI units), as scenario files and
-    ``pendulab.Pendulum(model=..., **params)`` take them."""
-    table = _core.models()
+    """List the pendulum models (THEORY.md §7) and their parameters: SI unit, default, allowed values
+    and meaning, as scenario files (keys of [pendulum]) and ``pendulab.Pendulum(model=..., **params)``
+    take them. Every model has length [m], mass [kg] and g [m/s^2]."""
+    with _user_errors():
+        table = model_table()
+        if name is not None:
+            table = [m for m in table if m["name"] == name]
+            if not table:
+                names = ", ".join(m["name"] for m in model_table())
+                raise _core.InvalidInputError(f"unknown model {name!r}; available: {names}")
     if as_json:
-        _say(json.dumps(table, indent=2, default=str))
+        plain = [
+            {
+                **m,
+                "params": [
+                    {**p, "min": _json_number(p["min"]), "max": _json_number(p["max"])} for p in m["params"]
+                ],
+            }
+            for m in table
+        ]
+        _say(json.dumps(plain, indent=2, ensure_ascii=False, allow_nan=False))
         return
-    for m in table:
+    common = ("length", "mass", "g")
+    if name is None:
+        shared = [p for p in table[0]["params"] if p["name"] in common]
+        _say(
+            "every model: "
+            + ", ".join(f"{p['name']} [{p['unit']}] (default {p['default']:g})" for p in shared)
+        )
+    for i, m in enumerate(table):
+        if name is None or i > 0:
+            _say("")
         _say(f"{m['name']}: {m['summary']}")
-        for p in m["params"]:
-            head = f"    {p['name']:<18} [{p['unit']}]  default {p['default']:g}"
-            _say(f"{head}  ({p['allowed']}): {p['description']}")
+        own = [p for p in m["params"] if name is not None or p["name"] not in common]
+        if not own:
+            _say("    (no parameters of its own)")
+        rows = [(p["name"], f"[{p['unit']}]", f"default {p['default']:g}", p) for p in own]
+        widths = [max((len(r[k]) for r in rows), default=0) for k in range(3)]
+        for *cells, p in rows:
+            head = "  ".join(c.ljust(w) for c, w in zip(cells, widths, strict=True))
+            _say(f"    {head}  {p['allowed']}: {p['description']}")
+    degrees = [f"{p['name']}_deg" for m in table for p in m["params"] if p["unit"] == "rad"]
+    if degrees:
+        _say("")
+        _say(f"Scenario files take an angle in rad also in degrees as <name>_deg ({', '.join(degrees)}).")
 
 
 @app.command(short_help="Check scenario files without running them.")

@@ -1,7 +1,9 @@
-"""The ideal spherical pendulum and its states on TS² (THEORY.md §1–2).
+"""The spherical pendulum and its states on TS² (THEORY.md §1–2), with the real-pendulum models of
+the core's registry (§7: damping, drag, forcing, any gravity direction, rotating frame, moving pivot).
 
 Units: length l [m], mass m [kg], gravity g [m/s²] (any sign; g > 0 pulls along −z), position x [m],
-velocity v [m/s], angles [rad], energy [J], J₃ [kg m²/s], tension [N].
+velocity v [m/s], time t [s], angles [rad], energy [J], J₃ [kg m²/s], tension [N], power [W]; the
+models' own parameters in the units :func:`models` lists.
 """
 
 from __future__ import annotations
@@ -22,6 +24,27 @@ def _vec3(name: str, a: Any) -> FloatArray:
     if arr.shape != (3,):
         raise _core.InvalidInputError(f"{name} must be a vector of 3 numbers, got shape {arr.shape}")
     return np.ascontiguousarray(arr)
+
+
+def models() -> list[_core.ModelInfo]:
+    """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary`` and ``params``,
+    a list of dicts ``name``, ``unit`` (SI), ``default``, ``min``, ``max`` (±inf for none),
+    ``description`` and ``allowed`` (in words). Length [m], mass [kg] and g [m/s²] come first in every
+    model; the rest are the model's own keywords of :class:`Pendulum` and keys of scenario files.
+    ``pendulab models`` prints the same table.
+    """
+    return _core.models()
+
+
+def _infer_model(keys: set[str]) -> str:
+    """The first registered model whose parameters include all of ``keys`` (``"ideal"`` for none);
+    ``"damped"`` when none has them all (the core then names the parameter it does not know)."""
+    if not keys:
+        return "ideal"
+    for m in _core.models():
+        if keys <= {p["name"] for p in m["params"]}:
+            return m["name"]
+    return "damped"
 
 
 def _frozen(a: FloatArray) -> FloatArray:
@@ -65,8 +88,9 @@ class Pendulum:
     model : registry name: ``"ideal"`` (default), ``"damped"`` (damping [1/s], drag [1/m], a periodic
         force forcing_amplitude [m/s²], forcing_omega [rad/s], forcing_phase [rad], forcing_x/y/z,
         and the gravity direction gravity_x/y/z), ``"rotating"`` (frame_rate [rad/s], latitude
-        [rad], damping [1/s]). When omitted it is inferred from the keywords: frame_rate or latitude
-        → ``"rotating"``, any other extra → ``"damped"``.
+        [rad], damping [1/s]), ``"slewing"`` and ``"vibrating"`` (moving pivots). When omitted it is
+        inferred from the keywords: the first model of :func:`models` that has all of them (so
+        ``damping`` alone → ``"damped"``, ``frame_rate``/``latitude`` → ``"rotating"``).
     **extra : the model's parameters, e.g. ``Pendulum(length=1.0, g=9.81, mass=1.0, damping=0.003)``.
 
     Raises ``InvalidInputError`` (a ``ValueError``) naming the bad value and the allowed range.
@@ -82,8 +106,7 @@ class Pendulum:
         **extra: float,
     ) -> None:
         if model is None:
-            rotating = {"frame_rate", "latitude"} & extra.keys()
-            model = "rotating" if rotating else ("damped" if extra else "ideal")
+            model = _infer_model(set(extra))
         self._extra = {str(k): float(v) for k, v in extra.items()}
         # validates everything (names, ranges) once, in the core
         _core.check_model(float(length), float(mass), float(g), model, list(self._extra.items()))
@@ -104,7 +127,7 @@ class Pendulum:
 
     @property
     def g(self) -> float:
-        """Gravity g [m/s²] along −z."""
+        """Gravity g [m/s²], along −z (or the model's gravity_x/y/z direction) for g > 0."""
         return self._g
 
     @property
@@ -134,8 +157,7 @@ class Pendulum:
 
     def __repr__(self) -> str:
         extras = "".join(f", {k}={v!r}" for k, v in self._extra.items())
-        implied = self.model == "ideal" or (bool(self._extra) and self.model == "damped")
-        model = "" if implied else f", model={self.model!r}"
+        model = "" if _infer_model(set(self._extra)) == self.model else f", model={self.model!r}"
         return f"Pendulum(length={self._length!r}, g={self._g!r}, mass={self._mass!r}{model}{extras})"
 
     def state(self, x: Any, v: Any, *, project: bool = False) -> State:
@@ -161,21 +183,38 @@ class Pendulum:
         )
         return State(_frozen(x), _frozen(v))
 
-    def diagnostics(self, x: Any, v: Any) -> dict[str, FloatArray]:
-        """Energy [J], j3 [kg m²/s], tension [N], radius_error |x| − l [m], tangency x·v [m²/s]
-        for arrays x, v of shape (N, 3) or (3,)."""
+    def diagnostics(self, x: Any, v: Any, t: Any = None) -> dict[str, FloatArray]:
+        """Diagnostics along arrays x [m], v [m/s] of shape (N, 3) or (3,), at times t [s] (N values or
+        a scalar; default 0 — give them for time-dependent models, whose forcing, pivot and tension
+        depend on t): ``energy`` [J] (including the model's potential, T-2.6), ``j3`` [kg m²/s],
+        ``tension`` [N] (T-2.3), ``radius_error`` |x| − l [m], ``tangency`` x·v [m²/s], ``power`` [W]
+        = dE/dt of the non-conservative forces (T-7.1; 0 for the ideal pendulum) and, for a moving
+        pivot when t is given, ``pivot`` (N, 3) [m]."""
         xa = np.ascontiguousarray(np.atleast_2d(np.asarray(x, dtype=np.float64)))
         va = np.ascontiguousarray(np.atleast_2d(np.asarray(v, dtype=np.float64)))
-        return _core.diagnostics(*self._core_args(), xa, va, **self._model_kwargs())
+        ta = None
+        if t is not None:
+            ta = np.asarray(t, dtype=np.float64)
+            if ta.ndim == 0:
+                ta = np.full(xa.shape[0], float(ta))
+            ta = np.ascontiguousarray(ta.ravel())
+        return _core.diagnostics(*self._core_args(), xa, va, **self._model_kwargs(), t=ta)
 
     def energy(self, state: State) -> float:
-        """Total energy E = m(½|v|² + g z) [J] (T-2.6)."""
+        """Total energy E = m(½|v|² + V(x)) [J] (T-2.6); V = g z for the ideal pendulum, plus the
+        model's potential (tilted gravity, centrifugal) otherwise."""
         return float(self.diagnostics(state.x, state.v)["energy"][0])
 
     def j3(self, state: State) -> float:
         """Vertical angular momentum J₃ = m (x × v)·e₃ [kg m²/s] (T-2.6)."""
         return float(self.diagnostics(state.x, state.v)["j3"][0])
 
-    def tension(self, state: State) -> float:
-        """Rod tension T = m(|v|² − g z)/l [N] (T-2.3); negative means the rod pushes."""
-        return float(self.diagnostics(state.x, state.v)["tension"][0])
+    def tension(self, state: State, t: float = 0.0) -> float:
+        """Rod tension T = m(|v|² + x·f)/l [N] at time t [s] (T-2.3; f the applied force per unit
+        mass, −g e₃ for the ideal pendulum); negative means the rod pushes."""
+        return float(self.diagnostics(state.x, state.v, t)["tension"][0])
+
+    def power(self, state: State, t: float = 0.0) -> float:
+        """Power of the non-conservative forces at time t [s], dE/dt = m P [W] (T-7.1): forcing,
+        damping and drag, or the moving pivot's inertial force; 0 for conservative models."""
+        return float(self.diagnostics(state.x, state.v, t)["power"][0])

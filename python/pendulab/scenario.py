@@ -19,6 +19,10 @@ format, every key and its default are described in ``docs/scenarios.md``; an exa
     dt = 1.0e-3       # s
     save_every = 10
 
+Other models (THEORY.md §7; ``pendulab models``) take their own keys in ``[pendulum]`` next to
+``model``, in the units the registry gives (e.g. ``model = "damped"``, ``damping = 0.05`` in 1/s); an
+angle in rad may instead be given in degrees as ``<name>_deg`` (``latitude_deg = 49.0``).
+
 Files are validated with pydantic (unknown keys, wrong types, NaN/inf, out-of-range values and
 contradictions are refused) and then by the core (the start must lie on TS², the saved samples
 must fit in memory). Every problem raises :class:`ScenarioError` naming the file, the dotted key,
@@ -89,14 +93,37 @@ class _Section(BaseModel):
 _VEC3 = {"min_length": 3, "max_length": 3}
 
 
-_MODEL_PARAMS: dict[str, set[str]] = {
-    m["name"]: {p["name"] for p in m["params"]} - {"length", "mass", "g"} for m in _core.models()
-}
+_COMMON_KEYS = ("model", "length", "mass", "g")
+_MODEL_SPECS = {m["name"]: m for m in _core.models()}
+
+
+def _own_params(model: str) -> dict[str, _core.ParamSpec]:
+    """The model's own parameters (beyond length, mass and g) by name."""
+    spec = _MODEL_SPECS.get(model)
+    return {} if spec is None else {p["name"]: p for p in spec["params"] if p["name"] not in _COMMON_KEYS}
+
+
+def _degree_keys(model: str) -> dict[str, str]:
+    """``<name>_deg`` -> ``<name>`` for the model's angles in rad (e.g. latitude_deg, forcing_phase_deg)."""
+    return {f"{name}_deg": name for name, p in _own_params(model).items() if p["unit"] == "rad"}
+
+
+def _model_keys(model: str) -> list[str]:
+    """Every key of ``[pendulum]`` for ``model``: the common ones, the model's own, their ``_deg`` forms."""
+    degrees = {rad: deg for deg, rad in _degree_keys(model).items()}
+    own = [k for name in _own_params(model) for k in (name, degrees.get(name)) if k is not None]
+    return [*_COMMON_KEYS, *own]
+
+
+def _models_with(key: str) -> list[str]:
+    """The models that take ``key`` in ``[pendulum]``."""
+    return [name for name in _MODEL_SPECS if key in _model_keys(name)[len(_COMMON_KEYS) :]]
 
 
 class PendulumSection(_Section):
     """``[pendulum]``: the model and its parameters. Besides length, mass and g, the keys of the chosen
-    model are allowed (``pendulab models``; SI units, e.g. ``damping = 0.05`` in 1/s); they are
+    model are allowed (``pendulab models``; SI units, e.g. ``damping = 0.05`` in 1/s; an angle in rad
+    may instead be given in degrees as ``<name>_deg``, e.g. ``latitude_deg = 49.0``); they are
     collected into ``params`` and checked by the core (ranges) when the scenario is built."""
 
     model: str = Field("ideal", description=f"the pendulum model, one of: {', '.join(map(repr, MODELS))}")
@@ -113,13 +140,19 @@ class PendulumSection(_Section):
     @classmethod
     def _collect_params(cls, data: Any) -> Any:
         """Moves the chosen model's own keys into ``params``; anything else stays and, if unknown, is
-        reported as an unknown key."""
+        reported as an unknown key (``params`` itself is internal, not a key of the file)."""
         if isinstance(data, dict):
-            own = _MODEL_PARAMS.get(str(data.get("model", "ideal")), set())
+            if "params" in data:
+                raise ValueError(
+                    f"unknown key params = {_show(data['params'])}: write the model's parameters directly "
+                    f"in [pendulum] (e.g. damping = 0.05); keys of model {data.get('model', 'ideal')!r}: "
+                    f"{', '.join(_model_keys(str(data.get('model', 'ideal'))))}"
+                )
+            own = set(_model_keys(str(data.get("model", "ideal")))[len(_COMMON_KEYS) :])
             moved = {k: v for k, v in data.items() if k in own}
             if moved:
                 data = {k: v for k, v in data.items() if k not in own}
-                data["params"] = {**dict(data.get("params") or {}), **moved}
+                data["params"] = moved
         return data
 
     @field_validator("model")
@@ -129,9 +162,22 @@ class PendulumSection(_Section):
             raise ValueError(f"unknown model {name!r}; allowed: {', '.join(map(repr, MODELS))}")
         return name
 
+    @model_validator(mode="after")
+    def _rad_or_deg(self) -> PendulumSection:
+        for deg, rad in _degree_keys(self.model).items():
+            if deg in self.params and rad in self.params:
+                raise ValueError(
+                    f"give either {rad} (rad) or {deg} (degrees), not both: "
+                    f"{rad} = {self.params[rad]!r}, {deg} = {self.params[deg]!r}"
+                )
+        return self
+
     def extras(self) -> dict[str, float]:
-        """The model's own parameters (SI units)."""
-        return {k: float(v) for k, v in self.params.items()}
+        """The model's own parameters in SI units (``<name>_deg`` converted to ``<name>`` in rad)."""
+        degrees = _degree_keys(self.model)
+        return {
+            degrees.get(k, k): float(v) * _DEG if k in degrees else float(v) for k, v in self.params.items()
+        }
 
 
 _ANGLE_KEYS = ("theta", "theta_deg", "phi", "phi_deg", "theta_dot", "phi_dot")
@@ -387,11 +433,42 @@ def _key(loc: tuple[int | str, ...]) -> str:
     return out
 
 
-def _problem(err: ErrorDetails) -> str:
-    """One readable line for one pydantic error: the dotted key, the bad value, what is allowed."""
+def _pendulum_model(data: Any) -> str:
+    """The model named in the raw ``[pendulum]`` table (``"ideal"`` when absent or not a string)."""
+    table = data.get("pendulum") if isinstance(data, dict) else None
+    model = table.get("model", "ideal") if isinstance(table, dict) else "ideal"
+    return model if isinstance(model, str) else "ideal"
+
+
+def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
+    """An unknown key of ``[pendulum]``: the keys of the chosen model, and which models take it."""
+    keys = _model_keys(model)
+    text = f"unknown key pendulum.{name} = {_show(value)}"
+    if others := _models_with(name):
+        text += f" (a parameter of the model{'s' if len(others) > 1 else ''} {', '.join(map(repr, others))}"
+        text += f", not of {model!r}: set model = {others[0]!r}?)"
+    elif hint := difflib.get_close_matches(name, keys, n=1):
+        text += f" (did you mean {hint[0]!r}?)"
+    return text + f"; allowed keys in [pendulum] for model {model!r}: {', '.join(keys)}"
+
+
+def _problem(err: ErrorDetails, data: Any = None) -> str:
+    """One readable line for one pydantic error: the dotted key, the bad value, what is allowed.
+    ``data`` is the raw input (it names the model whose keys ``[pendulum]`` takes)."""
     loc = tuple(err["loc"])
-    key, kind, value = _key(loc), err["type"], err.get("input")
+    kind, value = err["type"], err.get("input")
+    if kind == "extra_forbidden" and len(loc) == 2 and loc[0] == "pendulum":
+        return _unknown_pendulum_key(str(loc[1]), value, _pendulum_model(data))
     allowed = _allowed(loc)
+    if loc[:2] == ("pendulum", "params") and len(loc) == 3:  # a model parameter: shown as written
+        model = _pendulum_model(data)
+        name = str(loc[2])
+        spec = _own_params(model).get(_degree_keys(model).get(name, name))
+        if spec is not None:
+            unit = "degrees" if name.endswith("_deg") else spec["unit"]
+            allowed = f"{spec['allowed']} (in {unit}; {spec['description']})"
+        loc = ("pendulum", name)
+    key = _key(loc)
     if kind == "missing" and len(loc) == 1 and loc[0] in SECTIONS:
         return f"the table [{key}] is missing"
     if kind == "missing":
@@ -479,7 +556,12 @@ class Scenario:
         try:
             pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, model=p.model, **p.extras())
         except _core.InvalidInputError as e:
-            raise ScenarioError(self.source, f"[pendulum] {e}") from None
+            given = "".join(
+                f" (given as {deg} = {p.params[deg]!r} degrees)"
+                for deg, rad in _degree_keys(p.model).items()
+                if deg in p.params and rad in str(e)
+            )
+            raise ScenarioError(self.source, f"[pendulum] {e}{given}") from None
         object.__setattr__(self, "_pendulum", pendulum)
         object.__setattr__(self, "_state", self._make_state(pendulum))
         try:  # the core's own up-front checks (memory of the saved samples, save times), no stepping
@@ -532,7 +614,7 @@ class Scenario:
             spec = ScenarioSpec.model_validate(data)
         except ValidationError as e:
             errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
-            raise ScenarioError(source, [_problem(err) for err in errors]) from None
+            raise ScenarioError(source, [_problem(err, data) for err in errors]) from None
         return cls(spec, source)
 
     @classmethod
@@ -650,12 +732,16 @@ class Scenario:
     def to_toml(self) -> str:
         """The scenario as TOML text (units as comments); loading it gives an equal scenario."""
         data = self.to_dict()
+        model = self.spec.pendulum.model
+        units = {section: dict(table) for section, table in UNITS.items()}
+        units["pendulum"] |= {k: p["unit"] for k, p in _own_params(model).items() if p["unit"] != "1"}
+        units["pendulum"] |= dict.fromkeys(_degree_keys(model), "degrees")
         lines = [f"# Pendulab scenario (pendulab {_core.__version__}); SI units, angles *_deg in degrees"]
         lines += [f"{k} = {_toml_value(data[k])}" for k in ("title", "description") if k in data]
         for section in SECTIONS:
             lines += ["", f"[{section}]"]
             for key, value in data[section].items():
-                unit = UNITS[section].get(key)
+                unit = units[section].get(key)
                 entry = f"{key} = {_toml_value(value)}"
                 lines.append(f"{entry:<24}  # {unit}" if unit else entry)
         return "\n".join(lines) + "\n"

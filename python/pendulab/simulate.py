@@ -24,6 +24,20 @@ _CHUNK_SECONDS = 0.1
 _PROGRESS_AFTER_STEPS = 5_000_000
 
 
+def _check_conserve(pendulum: Pendulum, conserve: bool) -> None:
+    """``conserve`` holds E (conservative models) and J₃ (axisymmetric ones) at their initial values;
+    damping or drag make both decay (J₃(t) = J₃(0) e^{−ct} for linear damping, T-7.1), so holding them
+    would be wrong physics: refused with the reason."""
+    lossy = {k: v for k, v in pendulum.extra.items() if k in ("damping", "drag") and v != 0.0}
+    if conserve and lossy:
+        given = ", ".join(f"{k} = {v!r}" for k, v in lossy.items())
+        raise _core.InvalidInputError(
+            f"conserve=True would hold E and J₃ at their initial values, but they decay with {given} "
+            "(J₃(t) = J₃(0)·e^(−c t)); run without conserve (DOP853 then follows the decay to its "
+            "tolerance) or with a RATTLE method, whose exact damping flow keeps the decay of J₃ exactly"
+        )
+
+
 def methods() -> list[_core.MethodInfo]:
     """The registered integrators: name, order, symplectic, preserves_ts2, preserves_j3, adaptive, …"""
     return _core.methods()
@@ -61,7 +75,8 @@ def simulate(
     project : ``dop853`` only: project onto TS² after every step (default True).
     conserve : ``dop853`` only (with ``project``): also project the velocity so that E (conservative
         models) and J₃ (axisymmetric ones) keep their initial values — removes the linear energy drift
-        that near the separatrix turns into a growing phase error (docs/integrators.md).
+        that near the separatrix turns into a growing phase error (docs/integrators.md). Refused for
+        models with damping or drag, whose E and J₃ decay.
     save_every : keep every n-th step (default 1), plus the initial and final states.
     save_at : array of times [s] to keep instead (dense output for ``dop853``; fixed-step methods
         land on each time exactly).
@@ -80,6 +95,7 @@ def simulate(
         isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1
     ):
         raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+    _check_conserve(pendulum, conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
     solver = _core.Solver(
         *pendulum._core_args(),
@@ -152,6 +168,7 @@ class Stepper:
         t0: float = 0.0,
         conserve: bool = False,
     ) -> None:
+        _check_conserve(pendulum, conserve)
         self.pendulum = pendulum
         self._core = _core.Stepper(
             *pendulum._core_args(),

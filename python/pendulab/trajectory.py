@@ -2,7 +2,9 @@
 
 Arrays (N samples): ``t`` [s], ``x`` [m] (N, 3), ``v`` [m/s] (N, 3); derived on first use:
 ``energy`` [J], ``j3`` [kg m²/s], ``tension`` [N] (T-2.3, T-2.6), ``radius_error`` = |x| − l [m],
-``constraint_error`` = (|x| − l)/l (dimensionless), ``tangency`` = x·v [m²/s], ``theta``, ``phi`` [rad].
+``constraint_error`` = (|x| − l)/l (dimensionless), ``tangency`` = x·v [m²/s], ``theta``, ``phi`` [rad],
+and for the real-pendulum models (THEORY.md §7) ``power`` [W] of the non-conservative forces,
+``power_balance_residual`` E(t) − E(0) − ∫P dt [J] (the check of T-7.1) and ``pivot`` [m] (moving pivot).
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import io
-from .model import FloatArray, Pendulum, State
+from .model import FloatArray, Pendulum, State, models
 
 UNITS = {
     "t": "s",
@@ -29,6 +31,9 @@ UNITS = {
     "radius_error": "m",
     "constraint_error": "1",
     "tangency": "m^2/s",
+    "power": "W",
+    "power_balance_residual": "J",
+    "pivot": "m",
 }
 
 
@@ -50,7 +55,8 @@ class Trajectory:
 
     @functools.cached_property
     def _diag(self) -> dict[str, FloatArray]:
-        return self.pendulum.diagnostics(self.x, self.v)
+        # with the times: forcing, pivot and tension of time-dependent models depend on t
+        return self.pendulum.diagnostics(self.x, self.v, self.t)
 
     @property
     def energy(self) -> FloatArray:
@@ -83,6 +89,35 @@ class Trajectory:
         return self._diag["tangency"]
 
     @property
+    def power(self) -> FloatArray:
+        """Power of the non-conservative forces P = dE/dt [W] at each sample (T-7.1): forcing, damping
+        and drag, or a moving pivot's inertial force. Identically 0 for conservative models (the ideal
+        pendulum, tilted gravity, an undamped rotating frame — Coriolis does no work)."""
+        return self._diag["power"]
+
+    @functools.cached_property
+    def power_balance_residual(self) -> FloatArray:
+        """E(t) − E(0) − ∫₀ᵗ P dt [J] at each sample, the work integrated by the trapezoidal rule over
+        the saved samples (T-7.1). Zero up to the integrator's error and the rule's O(Δt²) error,
+        Δt the sample spacing: save densely (``save_every=1``) to check the balance tightly. For a
+        conservative model it is E(t) − E(0), the energy error."""
+        e, p = self.energy, self.power
+        work = np.concatenate([[0.0], np.cumsum(0.5 * np.diff(self.t) * (p[1:] + p[:-1]))])
+        return e - e[0] - work
+
+    @property
+    def is_conservative(self) -> bool:
+        """True when no non-conservative force did work at any sample (``power`` is 0 throughout):
+        then E is conserved and the summary reports its drift; otherwise the power balance."""
+        return not bool(np.any(self.power != 0.0))
+
+    @property
+    def pivot(self) -> FloatArray | None:
+        """The pivot position p(t) [m], (N, 3), for the moving-pivot models (``slewing``,
+        ``vibrating``); the bob is at p + x in the inertial frame. ``None`` for a fixed pivot."""
+        return self._diag.get("pivot")
+
+    @property
     def theta(self) -> FloatArray:
         """Polar angle from the downward vertical [rad]."""
         return np.arctan2(np.hypot(self.x[:, 0], self.x[:, 1]), -self.x[:, 2])
@@ -105,12 +140,18 @@ class Trajectory:
             "options": self.options,
             "stats": self.stats,
             "interrupted": self.interrupted,
-            "units": UNITS | {"length": "m", "mass": "kg", "g": "m/s^2"},
+            "units": UNITS | self._param_units(),
             "conventions": "SI units, z up, gravity along -z for g > 0, theta from the downward vertical",
         }
 
+    def _param_units(self) -> dict[str, str]:
+        """Units of the pendulum's parameters: length, mass, g and the model's own (registry)."""
+        spec = next(m for m in models() if m["name"] == self.pendulum.model)
+        return {p["name"]: p["unit"] for p in spec["params"]}
+
     def columns(self) -> dict[str, tuple[str, npt.NDArray[np.float64]]]:
-        """Flat columns name -> (unit, values) for tabular files."""
+        """Flat columns name -> (unit, values) for tabular files. Models other than the ideal pendulum
+        add ``power`` [W] and ``power_balance_residual`` [J], a moving pivot ``pivot_x/y/z`` [m]."""
         cols: dict[str, tuple[str, npt.NDArray[np.float64]]] = {"t": ("s", self.t)}
         for k, axis in enumerate("xyz"):
             cols[axis] = ("m", self.x[:, k])
@@ -118,6 +159,12 @@ class Trajectory:
             cols[f"v{axis}"] = ("m/s", self.v[:, k])
         for name in ("energy", "j3", "tension", "constraint_error", "tangency"):
             cols[name] = (UNITS[name], getattr(self, name))
+        if not self.pendulum.is_ideal:
+            for name in ("power", "power_balance_residual"):
+                cols[name] = (UNITS[name], getattr(self, name))
+        if self.pivot is not None:
+            for k, axis in enumerate("xyz"):
+                cols[f"pivot_{axis}"] = ("m", self.pivot[:, k])
         return cols
 
     def to_xarray(self) -> Any:
@@ -125,6 +172,17 @@ class Trajectory:
         import json
 
         xr = io._require("xarray")
+        extra: dict[str, Any] = {}
+        if not self.pendulum.is_ideal:
+            power = {"units": "W", "long_name": "power of the non-conservative forces"}
+            extra["power"] = ("time", self.power, power)
+            extra["power_balance_residual"] = (
+                "time",
+                self.power_balance_residual,
+                {"units": "J", "long_name": "E(t) - E(0) - integral of P dt (trapezoid)"},
+            )
+        if self.pivot is not None:
+            extra["pivot"] = (("time", "axis"), self.pivot, {"units": "m", "long_name": "pivot position"})
         ds = xr.Dataset(
             {
                 "x": (("time", "axis"), self.x, {"units": "m", "long_name": "bob position"}),
@@ -134,6 +192,7 @@ class Trajectory:
                 "tension": ("time", self.tension, {"units": "N"}),
                 "constraint_error": ("time", self.constraint_error, {"units": "1", "long_name": "(|x|-l)/l"}),
                 "tangency": ("time", self.tangency, {"units": "m^2/s", "long_name": "x.v"}),
+                **extra,
             },
             coords={"time": ("time", self.t, {"units": "s"}), "axis": ["x", "y", "z"]},
             attrs={"pendulab": json.dumps(self.metadata(), sort_keys=True)},
@@ -160,20 +219,50 @@ class Trajectory:
         return Path(path)
 
     def summary(self) -> str:
-        """A few lines: span, samples, conservation of E and J₃, constraint residuals, work."""
+        """A few lines: span, samples, conservation of E and J₃ (or, for non-conservative models, the
+        power balance E(t) − E(0) − ∫P dt of T-7.1 instead of an energy drift), constraint residuals,
+        work."""
         e, j = self.energy, self.j3
         e_scale = max(
             abs(e[0]), self.pendulum.mass * max(abs(self.pendulum.g), 1e-300) * self.pendulum.length
         )
         p, steps = self.pendulum, self.stats.get("steps", 0)
-        drift_e = np.max(np.abs(e - e[0])) / e_scale
+        described = f"l = {p.length} m, m = {p.mass} kg, g = {p.g} m/s^2"
+        if not p.is_ideal:
+            units = self._param_units()
+            extras = "".join(
+                f", {k} = {v:g}" + (f" {units[k]}" if units.get(k, "1") != "1" else "")
+                for k, v in p.extra.items()
+            )
+            described = f"{p.model} model, {described}{extras}"
         lines = [
-            f"pendulum: l = {p.length} m, m = {p.mass} kg, g = {p.g} m/s^2",
+            f"pendulum: {described}",
             f"method:   {self.method}  {self.options}",
             f"span:     t = {self.t[0]:g} .. {self.t[-1]:g} s, {len(self)} samples, {steps} steps"
             + ("  (INTERRUPTED)" if self.interrupted else ""),
-            f"energy:   E0 = {e[0]:.12g} J, max |E - E0| / (m |g| l) = {drift_e:.3e}",
-            f"J3:       J3_0 = {j[0]:.12g} kg m^2/s, max |J3 - J3_0| = {np.max(np.abs(j - j[0])):.3e}",
+        ]
+        if self.is_conservative:
+            drift_e = np.max(np.abs(e - e[0])) / e_scale
+            lines.append(f"energy:   E0 = {e[0]:.12g} J, max |E - E0| / (m |g| l) = {drift_e:.3e}")
+        else:
+            residual = np.max(np.abs(self.power_balance_residual))
+            work = e[-1] - e[0] - self.power_balance_residual[-1]
+            lines += [
+                f"energy:   E0 = {e[0]:.12g} J, E(end) = {e[-1]:.12g} J, work of the non-conservative "
+                f"forces {work:.6g} J",
+                f"balance:  max |E - E0 - int P dt| = {residual:.3e} J, / (m |g| l) = "
+                f"{residual / e_scale:.3e}  (T-7.1, trapezoid rule over the saved samples)",
+            ]
+        if p.is_ideal:
+            lines.append(
+                f"J3:       J3_0 = {j[0]:.12g} kg m^2/s, max |J3 - J3_0| = {np.max(np.abs(j - j[0])):.3e}"
+            )
+        else:
+            lines.append(
+                f"J3:       J3_0 = {j[0]:.12g} kg m^2/s, J3(end) = {j[-1]:.12g} kg m^2/s, "
+                f"max |J3 - J3_0| = {np.max(np.abs(j - j[0])):.3e}"
+            )
+        lines += [
             f"sphere:   max ||x| - l| / l = {np.max(np.abs(self.constraint_error)):.3e}, "
             f"max |x.v| = {np.max(np.abs(self.tangency)):.3e} m^2/s",
             f"height:   z in [{self.x[:, 2].min():.6f}, {self.x[:, 2].max():.6f}] m",

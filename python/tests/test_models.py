@@ -1,0 +1,360 @@
+"""The real-pendulum models from Python (THEORY.md §7): the registry, construction from Python and
+from scenario files, the reduction to the ideal pendulum, the power balance T-7.1, the exact J₃ decay
+of linear damping, Foucault's turn T-7.3, tilted gravity, files and the command line, and clear
+errors for bad input. SI units throughout (m, kg, s, rad; power in W, energy in J)."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from conftest import SCENARIOS
+from typer.testing import CliRunner
+
+import pendulab as pl
+from pendulab.cli import app
+
+ROSETTE = (math.radians(60.0), 0.0, 0.0, 2.0)  # θ₀ [rad], φ₀ [rad], θ̇₀, φ̇₀ [rad/s]
+# damping c [1/s], drag c_q [1/m], a force per unit mass 0.8 m/s² cos(2.7 rad/s · t) along e_y
+FORCED = {
+    "damping": 0.05,
+    "drag": 0.02,
+    "forcing_amplitude": 0.8,
+    "forcing_omega": 2.7,
+    "forcing_x": 0.0,
+    "forcing_y": 1.0,
+}
+COMMON = ("length", "mass", "g")
+
+
+def own_defaults(name: str) -> dict[str, float]:
+    """The model's own parameters at their registry defaults."""
+    spec = next(m for m in pl.models() if m["name"] == name)
+    return {p["name"]: p["default"] for p in spec["params"] if p["name"] not in COMMON}
+
+
+def rotation(axis: np.ndarray, angle: float) -> np.ndarray:
+    """The rotation matrix about the unit vector ``axis`` by ``angle`` [rad] (Rodrigues)."""
+    k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
+    return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * k @ k
+
+
+def scenario_text(model: str, params: dict[str, float], t_end: float = 0.2) -> str:
+    keys = "\n".join(f"{k} = {v!r}" for k, v in params.items())
+    return (
+        f'title = "{model}"\n[pendulum]\nmodel = "{model}"\nlength = 1.0\nmass = 2.0\ng = 9.81\n{keys}\n'
+        f"[initial]\ntheta_deg = 30.0\nphi_dot = 1.0\n[simulation]\nt_end = {t_end}\ndt = 1e-3\n"
+    )
+
+
+# --- the registry and construction ------------------------------------------------------------------
+
+
+def test_models_lists_the_registry_with_units_and_sane_defaults() -> None:
+    """pl.models() is the core's registry; every parameter has a unit and a default inside its limits."""
+    table = pl.models()
+    assert table == pl._core.models()
+    assert {"ideal", "damped", "rotating"} <= {m["name"] for m in table}
+    for m in table:
+        assert [p["name"] for p in m["params"][:3]] == list(COMMON), m["name"]
+        for p in m["params"]:
+            assert p["unit"] and p["allowed"] and p["description"], p
+            assert p["min"] <= p["default"] <= p["max"], p
+    damped = {p["name"]: p for p in next(m for m in table if m["name"] == "damped")["params"]}
+    assert damped["damping"]["unit"] == "1/s" and damped["drag"]["unit"] == "1/m"
+    assert damped["forcing_amplitude"]["unit"] == "m/s^2" and damped["forcing_omega"]["unit"] == "rad/s"
+
+
+@pytest.mark.parametrize("name", [m["name"] for m in pl.models()])
+def test_every_model_is_constructible_from_python_and_from_a_scenario_file(name: str) -> None:
+    """Each model with every own parameter given (at its default) builds from Python and from a file;
+    the file round-trips through to_toml and runs."""
+    params = own_defaults(name)
+    p = pl.Pendulum(length=1.0, g=9.81, mass=2.0, model=name, **params)
+    assert p.model == name and p.extra == params and p.is_ideal == (name == "ideal")
+    sc = pl.Scenario.from_toml_str(scenario_text(name, params), source=f"{name}.toml")
+    assert sc.pendulum().params() == p.params()
+    again = pl.Scenario.from_toml_str(sc.to_toml())
+    assert again == sc and again.pendulum().params() == p.params()
+    tr = sc.run(progress=False)
+    assert tr.t[-1] == pytest.approx(0.2) and np.all(np.isfinite(tr.x))
+    assert np.max(np.abs(tr.constraint_error)) < 1e-14  # RATTLE stays on the sphere for every model
+
+
+def test_the_model_is_inferred_from_the_keywords() -> None:
+    """No model= given: the first model that has all the keywords (damping alone → damped)."""
+    assert pl.Pendulum(damping=0.003).model == "damped"
+    assert pl.Pendulum(frame_rate=0.1, damping=0.1).model == "rotating"
+    assert pl.Pendulum(radius=3.0, rate=0.2).model == "slewing"
+    assert pl.Pendulum().model == "ideal"
+    assert repr(pl.Pendulum(frame_rate=0.1)) == "Pendulum(length=1.0, g=9.81, mass=1.0, frame_rate=0.1)"
+
+
+# --- physics ----------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("method", ["rattle", "rattle4", "dop853"])
+def test_zero_extras_give_the_ideal_trajectory_to_round_off(method: str) -> None:
+    """Every model with its extra forces switched off (zero damping, drag, forcing, frame rate, pivot
+    motion; gravity along −e₃) follows the ideal pendulum to round-off, not merely to the step error."""
+    ideal = pl.Pendulum()
+    s0 = ideal.state_from_angles(*ROSETTE)
+    off = {
+        "damped": {"damping": 0.0, "drag": 0.0, "forcing_amplitude": 0.0, "forcing_omega": 3.0},
+        "rotating": {"frame_rate": 0.0, "latitude": 0.3},
+        "slewing": {"radius": 0.0, "rate": 0.0},
+        "vibrating": {"amplitude": 0.0},
+    }
+    ref = pl.simulate(ideal, s0, 2.0, method=method, save_every=100)
+    for name, params in off.items():
+        tr = pl.simulate(pl.Pendulum(model=name, **params), s0, 2.0, method=method, save_every=100)
+        assert np.array_equal(tr.t, ref.t), name
+        gap = np.max(np.abs(tr.x - ref.x)) + np.max(np.abs(tr.v - ref.v))
+        assert gap < 1e-13, f"{name} with {method}: {gap:.3e} from the ideal pendulum"
+
+
+def test_a_damped_file_with_zero_damping_runs_like_the_ideal_rosette() -> None:
+    """damped.toml with damping = 0 and rosette.toml (the same start) give the same trajectory."""
+    text = (SCENARIOS / "damped.toml").read_text().replace("damping = 0.05", "damping = 0.0")
+    damped = pl.Scenario.from_toml_str(text).run(t_end=1.0, progress=False)
+    ideal = pl.load_scenario(SCENARIOS / "rosette.toml").run(
+        t_end=1.0, method="rattle4", save_every=10, progress=False
+    )
+    assert np.max(np.abs(damped.x - ideal.x)) < 1e-14
+
+
+def test_power_is_force_times_velocity_at_the_given_time() -> None:
+    """P = m(A cos(ωt + ψ) e·v − c|v|² − c_q|v|³) [W] (T-7.1) at a state, with the time-dependence."""
+    p = pl.Pendulum(mass=2.0, forcing_phase=0.4, **FORCED)
+    s = p.state_from_angles(0.7, 0.3, 0.5, 1.5)
+    speed = float(np.linalg.norm(s.v))
+    for t in (0.0, 1.3):
+        forced = FORCED["forcing_amplitude"] * math.cos(FORCED["forcing_omega"] * t + 0.4) * s.v[1]
+        want = 2.0 * (forced - FORCED["damping"] * speed**2 - FORCED["drag"] * speed**3)
+        assert p.power(s, t) == pytest.approx(want, rel=1e-14)
+    assert p.power(s, 0.0) != pytest.approx(p.power(s, 1.3))  # the forcing really depends on t
+
+
+def test_power_balance_residual_is_small_and_shrinks_like_dt_squared() -> None:
+    """E(t) − E(0) = ∫P dt (T-7.1) on a damped, dragged and forced run: the residual is RATTLE's and the
+    trapezoid rule's O(Δt²) error, so halving Δt divides it by 4 — a wrong power (or forcing taken at
+    the wrong time) would leave an O(1) residual that does not shrink."""
+    p = pl.Pendulum(**FORCED)
+    s0 = p.state_from_angles(*ROSETTE)
+    runs = [pl.simulate(p, s0, 10.0, method="rattle", dt=dt) for dt in (2e-3, 1e-3)]
+    coarse, fine = (float(np.max(np.abs(tr.power_balance_residual))) for tr in runs)
+    lost = runs[1].energy[-1] - runs[1].energy[0]
+    assert lost < -2.0, f"the test needs a real energy change, got {lost} J"
+    assert fine < 2e-5 and fine < 1e-5 * abs(lost), f"residual {fine:.3e} J of {lost:.3f} J"
+    assert 3.8 < coarse / fine < 4.2, f"residual does not shrink like Δt²: {coarse:.3e} → {fine:.3e} J"
+    assert not runs[1].is_conservative and "balance:" in runs[1].summary()
+
+
+def test_linear_damping_decays_j3_exactly_as_exp_minus_ct() -> None:
+    """dJ₃/dt = −c J₃ for the axisymmetric pendulum with force −m c v: J₃(t) = J₃(0) e^{−ct}. RATTLE's
+    splitting with the exact damping flow keeps this to round-off at every sample."""
+    c = 0.3
+    p = pl.Pendulum(damping=c)
+    tr = pl.simulate(p, p.state_from_angles(*ROSETTE), 10.0, method="rattle", dt=1e-3, save_every=100)
+    want = tr.j3[0] * np.exp(-c * tr.t)
+    assert np.max(np.abs(tr.j3 - want) / want) < 1e-12
+    assert tr.j3[-1] < 0.06 * tr.j3[0]  # it did decay: e^{−3} ≈ 0.05
+
+
+@pytest.mark.parametrize("hemisphere", [1.0, -1.0])
+def test_foucault_plane_turns_at_minus_omega_sin_latitude(hemisphere: float) -> None:
+    """T-7.3: the swing plane turns at −|Ω| sin λ to first order in |Ω|/ω₀ (foucault.toml: Ω = 0.02
+    rad/s, λ = ±49°, l = 10 m, ω₀ ≈ 0.99 rad/s): clockwise seen from above in the north, anticlockwise
+    in the south. Measured: the azimuth of the turning points (mod π) fitted by a line over 120 s."""
+    text = (SCENARIOS / "foucault.toml").read_text()
+    sc = pl.Scenario.from_toml_str(text.replace("latitude_deg = 49.0", f"latitude_deg = {49.0 * hemisphere}"))
+    tr = sc.run(progress=False)
+    rho = np.hypot(tr.x[:, 0], tr.x[:, 1])
+    turning = np.flatnonzero((rho[1:-1] > rho[:-2]) & (rho[1:-1] >= rho[2:])) + 1
+    plane = np.unwrap(2 * np.arctan2(tr.x[turning, 1], tr.x[turning, 0])) / 2  # a line: angle mod π
+    rate = np.polyfit(tr.t[turning], plane, 1)[0]
+    p = sc.pendulum()
+    want = -p.extra["frame_rate"] * math.sin(p.extra["latitude"])
+    assert p.extra["latitude"] == pytest.approx(hemisphere * math.radians(49.0), rel=1e-15)
+    assert abs(plane[-1] - plane[0]) > 1.5  # a visible turn (about 100°)
+    assert rate == pytest.approx(want, rel=0.05), f"turn rate {rate:.5f} rad/s, first order {want:.5f}"
+
+
+def test_tilted_gravity_is_a_rotated_ideal_pendulum() -> None:
+    """Gravity along d = R(−e₃): the motion is R applied to the ideal motion from R⁻¹(start), with the
+    same energy; and it is really different from the untilted motion from the same start."""
+    axis = np.array([1.0, 2.0, 0.5]) / np.linalg.norm([1.0, 2.0, 0.5])
+    r = rotation(axis, 0.7)
+    d = r @ np.array([0.0, 0.0, -1.0])
+    tilted = pl.Pendulum(model="damped", gravity_x=d[0], gravity_y=d[1], gravity_z=d[2])
+    ideal = pl.Pendulum()
+    s0 = ideal.state_from_angles(*ROSETTE)
+    start = tilted.state(r @ s0.x, r @ s0.v, project=True)
+    assert max(start.projection or (1.0, 1.0)) < 1e-15
+    a = pl.simulate(tilted, start, 3.0, method="rattle4", dt=1e-3, save_every=100)
+    b = pl.simulate(ideal, s0, 3.0, method="rattle4", dt=1e-3, save_every=100)
+    assert np.max(np.abs(a.x - b.x @ r.T)) < 1e-10
+    assert np.max(np.abs(a.energy - b.energy)) < 1e-12 and a.is_conservative
+    untilted = pl.simulate(ideal, start, 3.0, method="rattle4", dt=1e-3, save_every=100)
+    assert np.max(np.abs(a.x - untilted.x)) > 0.1
+
+
+# --- files, summary and command line -----------------------------------------------------------------
+
+
+def test_files_carry_the_model_its_parameters_and_the_power(tmp_path: Path) -> None:
+    """CSV, Parquet and NetCDF record the model name, its parameters with units, and the power and
+    power-balance columns."""
+    import pyarrow.parquet as pq
+    import xarray as xr
+
+    p = pl.Pendulum(model="damped", forcing_phase=0.25, **FORCED)
+    tr = pl.simulate(p, p.state_from_angles(*ROSETTE), 0.5, save_every=50)
+    meta = json.loads(tr.save(tmp_path / "r.csv").read_text().splitlines()[0].split("(JSON): ", 1)[1])
+    assert meta["pendulum"] == {"model": "damped", "length": 1.0, "mass": 1.0, "g": 9.81, **p.extra}
+    assert meta["units"]["damping"] == "1/s" and meta["units"]["power"] == "W"
+    header = (tmp_path / "r.csv").read_text().splitlines()[1]
+    assert header.endswith("power [W],power_balance_residual [J]")
+    table = pq.read_table(tr.save(tmp_path / "r.parquet"))
+    assert json.loads(table.schema.metadata[b"pendulab"])["pendulum"]["model"] == "damped"
+    assert np.array_equal(table.column("power").to_numpy(), tr.power)
+    with xr.open_dataset(tr.save(tmp_path / "r.nc"), engine="scipy") as ds:
+        assert json.loads(ds.attrs["pendulab"])["pendulum"]["forcing_phase"] == 0.25
+        assert ds["power"].attrs["units"] == "W"
+        assert np.array_equal(ds["power_balance_residual"].values, tr.power_balance_residual)
+
+
+def test_the_summary_reports_energy_drift_only_when_energy_is_conserved() -> None:
+    """Conservative models (here an undamped rotating frame: Coriolis does no work) get the energy
+    drift; damped ones the power balance instead."""
+    spinning = pl.Pendulum(model="rotating", frame_rate=0.5)
+    tr = pl.simulate(spinning, spinning.state_from_angles(*ROSETTE), 1.0, method="rattle4")
+    assert tr.is_conservative and np.max(np.abs(tr.energy - tr.energy[0])) < 1e-9
+    assert "max |E - E0|" in tr.summary() and "balance:" not in tr.summary()
+    damped = pl.load_scenario(SCENARIOS / "damped.toml").run(t_end=1.0, progress=False)
+    text = damped.summary()
+    assert "balance:" in text and "max |E - E0| /" not in text and "damping = 0.05 1/s" in text
+
+
+def test_cli_lists_the_models_and_runs_a_damped_file(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """`pendulab models [--json]` lists every model with units (strict JSON: no limit is null), and
+    `pendulab run damped.toml --t-end 1 --out x.csv` writes the power balance."""
+    runner = CliRunner()
+    out = runner.invoke(app, ["models"])
+    assert out.exit_code == 0, out.output
+    for m in pl.models():
+        assert f"\n{m['name']}: " in out.output
+    assert "damping" in out.output and "[1/s]" in out.output and "latitude_deg" in out.output
+
+    def no_constant(name: str) -> None:
+        raise AssertionError(f"not strict JSON: {name}")
+
+    out = runner.invoke(app, ["models", "--json"])
+    table = json.loads(out.output, parse_constant=no_constant)
+    assert [m["name"] for m in table] == [m["name"] for m in pl.models()]
+    length = table[0]["params"][0]
+    assert length["name"] == "length" and length["unit"] == "m" and length["max"] is None
+    out = runner.invoke(app, ["models", "springy"])
+    assert out.exit_code == 2 and "springy" in out.output
+
+    monkeypatch.chdir(tmp_path)
+    result = runner.invoke(app, ["run", str(SCENARIOS / "damped.toml"), "--t-end", "1", "--out", "x.csv"])
+    assert result.exit_code == 0, result.output
+    assert "balance:" in result.output and "damped model" in result.output
+    data = np.genfromtxt(tmp_path / "x.csv", delimiter=",", skip_header=1, names=True)
+    assert data.shape == (101,) and np.max(np.abs(data["power_balance_residual_J"])) < 1e-5
+    assert np.all(data["power_W"] <= 0)  # damping alone only takes energy out
+
+
+# --- bad input --------------------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "needles"),
+    [
+        ({"damping": -0.1}, ["damping", ">= 0"]),
+        ({"model": "damped", "dampnig": 0.1}, ["dampnig", "damping"]),
+        ({"model": "rotating", "latitude": 2.0}, ["latitude", "π/2"]),
+        ({"model": "rotating", "frame_rate": math.inf}, ["frame_rate", "finite"]),
+        ({"model": "damped", "gravity_x": 0.0, "gravity_y": 0.0, "gravity_z": 0.0}, ["gravity"]),
+        ({"model": "springy"}, ["springy", "damped", "rotating"]),
+    ],
+)
+def test_bad_parameters_are_named(kwargs: dict[str, object], needles: list[str]) -> None:
+    with pytest.raises(pl.InvalidInputError) as err:
+        pl.Pendulum(**kwargs)  # type: ignore[arg-type]
+    assert all(n in str(err.value) for n in needles), str(err.value)
+
+
+def test_methods_and_solutions_of_the_ideal_pendulum_refuse_other_models() -> None:
+    """rk4_angles (T-2.5) and the exact solution (§4) exist only for the ideal pendulum."""
+    p = pl.Pendulum(damping=0.1)
+    s0 = p.state_from_angles(*ROSETTE)
+    with pytest.raises(pl.InvalidInputError, match=r"rk4_angles.*'damped'.*rattle"):
+        pl.simulate(p, s0, 1.0, method="rk4_angles")
+    with pytest.raises(pl.InvalidInputError, match=r"only for the ideal pendulum.*'damped'"):
+        pl.exact(p, s0)
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "needles"),
+    [
+        (
+            "frame_rate = 0.02    #",
+            "frame_rte = 0.02 #",
+            ["frame_rte", "did you mean 'frame_rate'", "latitude_deg"],
+        ),
+        ("frame_rate = 0.02    #", "damping = -1.0\nframe_rate = 0.02 #", ["damping", ">= 0"]),
+        ("frame_rate = 0.02    #", "radius = 5.0\nframe_rate = 0.02 #", ["radius", "model = 'slewing'"]),
+        (
+            "frame_rate = 0.02    #",
+            "latitude = 0.9\nframe_rate = 0.02 #",
+            ["latitude", "latitude_deg", "not both"],
+        ),
+        ("latitude_deg = 49.0", "latitude_deg = 100.0", ["latitude", "latitude_deg = 100.0 degrees"]),
+        ("latitude_deg = 49.0", 'latitude_deg = "49 N"', ["pendulum.latitude_deg", "not a number"]),
+        ("frame_rate = 0.02    #", "params = {frame_rate = 0.02} #", ["unknown key params", "frame_rate"]),
+        ('model = "rotating"', 'model = "ideal"', ["frame_rate", "model = 'rotating'"]),
+    ],
+)
+def test_bad_model_keys_in_files_are_named(old: str, new: str, needles: list[str]) -> None:
+    text = (SCENARIOS / "foucault.toml").read_text()
+    assert old in text
+    with pytest.raises(pl.ScenarioError) as err:
+        pl.Scenario.from_toml_str(text.replace(old, new), source="foucault.toml")
+    assert all(n in str(err.value) for n in needles), str(err.value)
+    assert str(err.value).startswith("foucault.toml: ")
+
+
+def test_latitude_in_degrees_round_trips_as_degrees() -> None:
+    """latitude_deg stays latitude_deg in to_toml (the file's form is kept), ±90° are allowed."""
+    sc = pl.load_scenario(SCENARIOS / "foucault.toml")
+    assert "latitude_deg = 49.0" in sc.to_toml() and pl.Scenario.from_toml_str(sc.to_toml()) == sc
+    text = (SCENARIOS / "foucault.toml").read_text()
+    for pole in (90.0, -90.0):
+        p = pl.Scenario.from_toml_str(
+            text.replace("latitude_deg = 49.0", f"latitude_deg = {pole}")
+        ).pendulum()
+        assert abs(p.extra["latitude"]) == pytest.approx(math.pi / 2, rel=1e-16)
+
+
+def test_conserve_is_refused_when_damping_makes_e_and_j3_decay() -> None:
+    """DOP853's invariant projection would pin J₃ at J₃(0) although damping makes it decay as e^{−ct}
+    (measured: J₃(5 s) = 1.5 instead of 0.335 kg m²/s for c = 0.3 1/s); without it DOP853 follows the
+    decay to its tolerance."""
+    p = pl.Pendulum(damping=0.3)
+    s0 = p.state_from_angles(*ROSETTE)
+    for run in (
+        lambda: pl.simulate(p, s0, 1.0, method="dop853", conserve=True),
+        lambda: pl.Stepper(p, s0, method="dop853", conserve=True),
+    ):
+        with pytest.raises(pl.InvalidInputError, match=r"conserve=True.*damping = 0\.3"):
+            run()
+    tr = pl.simulate(p, s0, 5.0, method="dop853", rtol=1e-12, atol=1e-14)
+    assert tr.j3[-1] == pytest.approx(tr.j3[0] * math.exp(-0.3 * 5.0), rel=1e-9)
+    spinning = pl.Pendulum(model="rotating", frame_rate=0.5)  # conservative: conserve stays allowed
+    tr = pl.simulate(spinning, spinning.state_from_angles(*ROSETTE), 1.0, method="dop853", conserve=True)
+    assert np.max(np.abs(tr.energy - tr.energy[0])) < 1e-12
