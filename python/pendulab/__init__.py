@@ -14,6 +14,7 @@ measured from the downward vertical. Quick start::
 Plots (matplotlib, optional): ``pendulab.plot``.
 """
 
+from . import sweep_design
 from ._core import IntegrationError, InvalidInputError, __version__
 from .advance import MeasuredAdvance, measured_azimuth_advance
 from .em_map import EMMap, em_map
@@ -24,6 +25,8 @@ from .reduce import Reduced, reduce, reduced_flow
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulate import Stepper, method_names, methods, simulate
 from .spring import SpringTrajectory, SwingingSpring, simulate_spring
+from .sweep import sweep
+from .sweep_io import SweepResult, read_sweep
 from .trajectory import Trajectory
 
 __all__ = [
@@ -41,6 +44,7 @@ __all__ = [
     "SpringTrajectory",
     "State",
     "Stepper",
+    "SweepResult",
     "SwingingSpring",
     "Trajectory",
     "__version__",
@@ -51,10 +55,13 @@ __all__ = [
     "method_names",
     "methods",
     "models",
+    "read_sweep",
     "reduce",
     "reduced_flow",
     "simulate",
     "simulate_ensemble",
     "simulate_spring",
     "states_from_angles",
+    "sweep",
+    "sweep_design",
 ]

@@ -376,6 +376,8 @@ def _display(path: Path) -> str:
 # The commands of the exact solution (exact, phases, em-map, reduced) live in their own module.
 from . import cli_exact  # noqa: E402, F401
 
+from . import cli_sweep  # noqa: E402, F401  # isort: skip
+
 # isort: split
 from . import cli_serve  # noqa: E402, F401  (`pendulab serve`, the web lab; docs/web.md)
 

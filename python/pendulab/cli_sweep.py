@@ -1,0 +1,143 @@
+"""``pendulab sweep``: run a sweep file (``docs/sweeps.md``) on threads or Dask, chunk by chunk into
+Parquet, resumable. Registered on :data:`pendulab.cli.app`; the same conventions: SI units, exit code 0
+on success, 2 on a user error (one ``error: …`` line), 130 on Ctrl-C (the finished chunks are kept;
+``--resume`` computes the rest).
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Annotated, Any
+
+import numpy as np
+import typer
+
+from .cli import EXIT_INTERRUPTED, _fail, _say, _user_errors, app
+from .sweep import BACKENDS, sweep
+from .sweep_file import SweepFile, load_sweep_file
+from .sweep_io import MANIFEST
+
+_SWEEP = typer.Argument(metavar="SWEEP", help="Sweep file (TOML); see docs/sweeps.md.", show_default=False)
+
+
+def _plan(sf: SweepFile, kwargs: dict[str, Any]) -> str:
+    d = sf.design
+    if d.kind == "grid":
+        points = f"grid {' x '.join(str(s) for s in d.shape)} ({', '.join(d.names)})"
+    else:
+        points = f"{d.kind} design over {', '.join(d.names)}"
+        if d.kind == "random":
+            points += f" (seed {d.info['seed']}, {d.info['method']})"
+    q = kwargs["quantity"]
+    what = q if isinstance(q, str) else ", ".join(str(x) for x in q)
+    sim = f"; RATTLE to t = {kwargs['t_end']:g} s, dt = {kwargs['dt']:g} s" if kwargs["t_end"] else ""
+    return f"  {d.n} points: {points} -> {what}{sim}"
+
+
+def _done_so_far(out: Path) -> str:
+    """'k of n chunks' from the manifest beside or in ``out`` ('' if there is none)."""
+    for directory in (out, out.parent / f".{out.name}.chunks"):
+        path = directory / MANIFEST
+        if path.is_file():
+            try:
+                m = json.loads(path.read_text())
+                return f"{len(m['chunks_done'])} of {m['n_chunks']} chunks are in {directory}"
+            except (OSError, ValueError, KeyError):  # pragma: no cover - a damaged manifest
+                return ""
+    return ""
+
+
+@app.command("sweep", short_help="Run a sweep file: a quantity over a grid or random design, to Parquet.")
+def sweep_cmd(
+    sweep_file: Annotated[Path, _SWEEP],
+    out: Annotated[
+        Path,
+        typer.Option(
+            "--out",
+            "-o",
+            help="A directory (one Parquet file per chunk + _manifest.json) or a FILE.parquet.",
+            show_default=False,
+        ),
+    ],
+    workers: Annotated[
+        int | None,
+        typer.Option(min=1, max=1024, help="Threads (or LocalCluster workers with --backend dask)."),
+    ] = None,
+    scheduler: Annotated[
+        str | None,
+        typer.Option(metavar="tcp://HOST:8786", help="Run on this Dask scheduler.", show_default=False),
+    ] = None,
+    backend: Annotated[
+        str | None,
+        typer.Option(
+            metavar="|".join(BACKENDS), help="Where chunks run (default: the file's, else threads)."
+        ),
+    ] = None,
+    chunk_size: Annotated[
+        int | None,
+        typer.Option("--chunk-size", min=1, help="Points per chunk (default: the file's or auto)."),
+    ] = None,
+    resume: Annotated[
+        bool, typer.Option("--resume", help="Continue the sweep in --out: skip the chunks already written.")
+    ] = False,
+    progress: Annotated[
+        bool | None,
+        typer.Option(
+            "--progress/--no-progress", help="Progress bar over chunks on stderr.", show_default=False
+        ),
+    ] = None,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
+) -> None:
+    """Computes the sweep file's quantity at every point of its [grid] or [random] design, in chunks on
+    a thread pool (default) or Dask (--backend dask: a LocalCluster of --workers processes; --scheduler:
+    a running cluster), writing each chunk to --out as it finishes. Prints the plan, then per result
+    column its range and NaN count. Ctrl-C keeps the finished chunks; --resume does the rest."""
+    with _user_errors():
+        if workers is not None and scheduler is not None:
+            _fail("--workers and --scheduler exclude each other (the scheduler's cluster has its workers)")
+        if backend is not None and backend not in BACKENDS:
+            _fail(f"--backend {backend!r}: use one of {', '.join(BACKENDS)}")
+        sf = load_sweep_file(sweep_file)
+        kwargs = sf.sweep_kwargs()
+        for key, value in (
+            ("workers", workers),
+            ("scheduler", scheduler),
+            ("backend", backend),
+            ("chunk_size", chunk_size),
+        ):
+            if value is not None:
+                kwargs[key] = value
+        if scheduler is not None and backend is None:
+            kwargs["backend"] = "dask"
+        if workers is not None and scheduler is None:
+            kwargs["scheduler"] = None
+        if kwargs["scheduler"] is not None:
+            kwargs["workers"] = None
+        if not quiet:
+            _say(f"sweep {sweep_file}" + (f": {sf.title}" if sf.title else ""), err=True)
+            _say(_plan(sf, kwargs), err=True)
+        try:
+            show = False if quiet else progress
+            res = sweep(sf.design, out=out, resume=resume, progress=show, **kwargs)  # type: ignore[arg-type]
+        except KeyboardInterrupt:
+            where = _done_so_far(out)
+            _fail(
+                f"interrupted (Ctrl-C){': ' + where if where else ''}; run again with --resume to finish",
+                EXIT_INTERRUPTED,
+            )
+        if quiet:
+            return
+        st = res.stats
+        _say(
+            f"{st['chunks']} chunks of {st['chunk_size']} points: computed {st['computed']}, "
+            f"skipped {st['skipped']} (already in --out); {st['backend']}, {st['seconds']:.3g} s"
+        )
+        for name, unit in res.units.items():
+            if name == "point" or name in sf.design.names:
+                continue
+            col = res[name]
+            finite = col[np.isfinite(col)]
+            span = f"{finite.min():.9g} .. {finite.max():.9g}" if finite.size else "no finite values"
+            _say(f"  {name} [{unit}]: {span}, NaN {int(np.isnan(col).sum())}, inf {int(np.isinf(col).sum())}")
+        _say(f"wrote {out} ({len(res)} rows)")

@@ -1,0 +1,185 @@
+"""Where the chunks of a sweep run (:func:`pendulab.sweep`): a thread pool, or a ``dask.distributed``
+cluster; and the driver that keeps a few chunks in flight, hands each finished one over for writing,
+and stops cleanly on Ctrl-C (``docs/sweeps.md``)."""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import contextlib
+import logging
+import os
+import signal
+import threading
+import uuid
+from collections.abc import Callable, Iterator
+from typing import Any
+
+from . import _core
+
+CONNECT_TIMEOUT = 5.0
+"""Seconds to wait for a Dask scheduler before giving up."""
+
+POLL = 0.1
+"""Seconds between the driver's checks (progress, Ctrl-C)."""
+
+
+class Threads:
+    """A small thread pool: the core releases the GIL (and the ensemble kernel uses every core)."""
+
+    def __init__(self, workers: int) -> None:
+        self.pool = cf.ThreadPoolExecutor(workers, thread_name_prefix="pendulab-sweep")
+        self.cancel = threading.Event()
+        self.slots = 2 * workers
+        self.name = f"threads ({workers} worker{'s' if workers > 1 else ''})"
+
+    def submit(self, fn: Callable[..., Any], task: Any) -> Any:
+        return self.pool.submit(fn, task, self.cancel)
+
+    def wait(self, pending: Iterator[Any], timeout: float) -> set[Any]:
+        return cf.wait(list(pending), timeout=timeout, return_when=cf.FIRST_COMPLETED).done
+
+    def stop(self, pending: list[Any]) -> list[Any]:
+        """Cancels what has not finished; waits for the running chunks to stop; returns the finished."""
+        self.cancel.set()
+        for f in pending:
+            f.cancel()
+        cf.wait(pending)
+        return [f for f in pending if not f.cancelled() and f.exception() is None]
+
+    def close(self) -> None:
+        self.pool.shutdown(wait=True, cancel_futures=True)
+
+
+class Dask:
+    """A ``dask.distributed`` client: on a new LocalCluster (``scheduler`` None), on the scheduler at an
+    address (``tcp://HOST:8786``), or a ``distributed.Client`` given by the caller (left open)."""
+
+    def __init__(self, scheduler: Any, workers: int | None) -> None:
+        try:
+            import distributed
+        except ImportError as e:
+            raise ImportError("backend 'dask' needs dask.distributed: pip install 'pendulab[sweep]'") from e
+        self.distributed = distributed
+        self.cluster: Any = None
+        self.own_client = True
+        if isinstance(scheduler, distributed.Client):
+            self.client, self.own_client = scheduler, False
+        elif scheduler is None:
+            self.cluster = distributed.LocalCluster(
+                n_workers=workers or os.cpu_count() or 1,
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=None,
+                silence_logs=logging.ERROR,
+            )
+            self.client = distributed.Client(self.cluster)
+        else:
+            self.client = connect(str(scheduler))
+        nthreads = sum(self.client.nthreads().values()) or 1
+        where = "LocalCluster" if self.cluster is not None else self.client.scheduler.address
+        self.name = f"dask ({where}, {nthreads} worker thread{'s' if nthreads > 1 else ''})"
+        self.slots = 2 * nthreads
+        self.run = uuid.uuid4().hex[:8]
+
+    def submit(self, fn: Callable[..., Any], task: Any) -> Any:
+        return self.client.submit(
+            fn, task, key=f"pendulab-sweep-{self.run}-{task.index}", pure=False, retries=1
+        )
+
+    def wait(self, pending: Iterator[Any], timeout: float) -> set[Any]:
+        try:
+            res = self.distributed.wait(list(pending), timeout=timeout, return_when="FIRST_COMPLETED")
+            return set(res.done)
+        except TimeoutError:
+            return set()
+
+    def stop(self, pending: list[Any]) -> list[Any]:
+        done = [f for f in pending if f.status == "finished"]
+        self.client.cancel([f for f in pending if f.status != "finished"])
+        return done
+
+    def close(self) -> None:
+        if self.own_client:
+            self.client.close()
+        if self.cluster is not None:
+            self.cluster.close()
+
+
+def connect(address: str, timeout: float | None = None) -> Any:
+    """A ``distributed.Client`` on the scheduler at ``address``; a clear ``OSError`` naming it when it
+    cannot be reached within ``timeout`` s (default :data:`CONNECT_TIMEOUT`)."""
+    import distributed
+
+    if "://" not in address:
+        raise _core.InvalidInputError(f"scheduler {address!r}: give an address such as tcp://HOST:8786")
+    wait = CONNECT_TIMEOUT if timeout is None else timeout
+    try:
+        return distributed.Client(address, timeout=f"{wait}s")
+    except Exception as e:  # OSError (refused, timed out) or garbage from a non-Dask server
+        raise OSError(
+            f"cannot reach the Dask scheduler at {address} within {wait:g} s "
+            f"({type(e).__name__}: {' '.join(str(e).split())[:200]})"
+        ) from None
+
+
+@contextlib.contextmanager
+def _deferred_ctrl_c() -> Iterator[threading.Event]:
+    """While the sweep runs in the main thread with Python's default SIGINT handler, a Ctrl-C only sets
+    the yielded flag (the driver stops at its next safe point, never in the middle of writing a chunk)
+    and restores the default handler, so that a second Ctrl-C interrupts at once."""
+    flag = threading.Event()
+    if (
+        threading.current_thread() is not threading.main_thread()
+        or signal.getsignal(signal.SIGINT) is not signal.default_int_handler
+    ):
+        yield flag
+        return
+
+    def handler(signum: int, frame: Any) -> None:
+        flag.set()
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+    signal.signal(signal.SIGINT, handler)
+    try:
+        yield flag
+    finally:
+        signal.signal(signal.SIGINT, signal.default_int_handler)
+
+
+def drive(
+    runner: Threads | Dask,
+    fn: Callable[..., Any],
+    todo: list[int],
+    task: Callable[[int], Any],
+    done: Callable[[int, Any], None],
+    bar: Any,
+) -> None:
+    """Runs ``fn(task(i))`` for the chunks i in ``todo`` with at most ``runner.slots`` in flight and
+    hands each result to ``done(i, result)`` in the calling thread. On any error or Ctrl-C it stops the
+    others, still hands over (on Ctrl-C) the chunks that finished, and re-raises."""
+    pending: dict[Any, int] = {}
+    queue = iter(todo)
+    with _deferred_ctrl_c() as ctrl_c:
+        try:
+            while True:
+                while len(pending) < runner.slots and (i := next(queue, None)) is not None:
+                    pending[runner.submit(fn, task(i))] = i
+                if not pending:
+                    break
+                for f in runner.wait(iter(pending), POLL):
+                    i = pending.pop(f)
+                    done(i, f.result())
+                    bar.update(1)
+                if ctrl_c.is_set():
+                    raise KeyboardInterrupt
+        except BaseException as e:
+            finished = runner.stop(list(pending))
+            if isinstance(e, KeyboardInterrupt):  # keep what is done; resume computes the rest
+                for f in finished:
+                    try:
+                        done(pending[f], f.result())
+                    except Exception:  # pragma: no cover - e.g. the disk filled up meanwhile
+                        break
+            raise
+        finally:
+            runner.close()

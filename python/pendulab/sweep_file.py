@@ -1,0 +1,249 @@
+"""Sweep files: a small TOML format for ``pendulab sweep`` (described in ``docs/sweeps.md``).
+
+::
+
+    title = "Rotation number over the start's polar angle and azimuthal rate"
+    quantity = "rotation_number"           # or a list: ["max_sway", "energy_drift"]
+
+    [pendulum]                             # the ideal pendulum (defaults: 1 m, 9.81 m/s^2, 1 kg)
+    length = 1.0                           # m
+    g = 9.81                               # m/s^2
+
+    [grid]                                 # full factorial; or [random] (n, seed, method, ranges)
+    theta0 = { start = 0.1, stop = 3.0, num = 100 }    # rad: 100 values, ends included
+    phi_dot0 = [-2.0, -1.0, 1.0, 2.0]                  # rad/s: explicit values
+
+    [fixed]                                # initial conditions that are not axes (default 0)
+    theta_dot0 = 0.0                       # rad/s
+
+    [simulation]                           # needed by final_state, max_sway, energy_drift
+    t_end = 20.0                           # s
+    dt = 1e-3                              # s
+
+    [run]                                  # optional; the command line overrides these
+    chunk_size = 2000
+    backend = "threads"                    # or "dask"
+    workers = 2
+    scheduler = "tcp://10.0.0.5:8786"      # a Dask scheduler (implies backend = "dask")
+
+Everything is checked when the file is loaded; a problem raises :class:`SweepFileError` naming the
+file, the key, the bad value and what is allowed.
+"""
+
+from __future__ import annotations
+
+import difflib
+import os
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic_core import ErrorDetails
+
+from . import _core, sweep_design
+from .model import Pendulum
+from .scenario import ScenarioError
+from .sweep import QUANTITIES, make_spec
+from .sweep_design import Design
+
+MAX_AXIS_VALUES = 10_000_000
+
+
+class SweepFileError(ScenarioError):
+    """A sweep file cannot be used: ``source`` the file, ``problems`` one message per problem (each
+    naming the key, the bad value and what is allowed), ``line`` for TOML syntax errors."""
+
+
+class _Strict(BaseModel):
+    model_config = ConfigDict(extra="forbid", strict=False)
+
+
+class PendulumTable(_Strict):
+    length: float = Field(1.0, gt=0, allow_inf_nan=False, description="rod length in m, > 0")
+    g: float = Field(9.81, allow_inf_nan=False, description="gravity in m/s^2, any finite value")
+    mass: float = Field(1.0, gt=0, allow_inf_nan=False, description="bob mass in kg, > 0")
+
+
+class RandomTable(_Strict):
+    n: int = Field(ge=1, le=sweep_design.MAX_POINTS, description="number of points, >= 1")
+    seed: int = Field(0, ge=0, description="seed of NumPy's default_rng, >= 0")
+    method: Literal["uniform", "lhs"] = Field("uniform", description='"uniform" or "lhs"')
+    ranges: dict[str, tuple[float, float]] = Field(description="axis = [lo, hi] in the axis's unit")
+
+
+class SimulationTable(_Strict):
+    t_end: float = Field(gt=0, allow_inf_nan=False, description="end time in s, > 0, a multiple of dt")
+    dt: float = Field(1e-3, gt=0, allow_inf_nan=False, description="RATTLE step in s, > 0")
+
+
+class RunTable(_Strict):
+    chunk_size: int | None = Field(None, ge=1, description="points per chunk, >= 1")
+    backend: Literal["threads", "dask"] | None = Field(None, description='"threads" or "dask"')
+    workers: int | None = Field(None, ge=1, le=1024, description="threads or LocalCluster workers")
+    scheduler: str | None = Field(None, description="a Dask scheduler address, tcp://HOST:8786")
+
+
+class SweepSpecFile(_Strict):
+    title: str = ""
+    quantity: str | list[str] = Field(description=f"one of {', '.join(QUANTITIES)}, or a list of them")
+    pendulum: PendulumTable = Field(default_factory=PendulumTable)
+    grid: dict[str, Any] | None = None
+    random: RandomTable | None = None
+    fixed: dict[str, float] = Field(default_factory=dict)
+    simulation: SimulationTable | None = None
+    run: RunTable = Field(default_factory=RunTable)
+
+    @model_validator(mode="after")
+    def _one_design(self) -> SweepSpecFile:
+        if (self.grid is None) == (self.random is None):
+            raise ValueError("give exactly one of the tables [grid] and [random]")
+        return self
+
+
+@dataclass(frozen=True)
+class SweepFile:
+    """A validated sweep file: ``design``, ``quantities``, ``pendulum``, ``fixed``, the simulation's
+    ``t_end`` and ``dt`` [s] (None for exact quantities), the ``[run]`` settings and the ``title``."""
+
+    spec: SweepSpecFile
+    design: Design
+    pendulum: Pendulum
+    source: str
+
+    @property
+    def title(self) -> str:
+        return self.spec.title
+
+    def sweep_kwargs(self) -> dict[str, Any]:
+        """The keywords of :func:`pendulab.sweep` this file sets (not out, resume, progress)."""
+        sim, run = self.spec.simulation, self.spec.run
+        return {
+            "quantity": self.spec.quantity,
+            "pendulum": self.pendulum,
+            "fixed": self.spec.fixed,
+            "t_end": None if sim is None else sim.t_end,
+            "dt": None if sim is None else sim.dt,
+            "chunk_size": run.chunk_size,
+            "backend": run.backend,
+            "workers": run.workers,
+            "scheduler": run.scheduler,
+        }
+
+
+def _key(loc: tuple[int | str, ...]) -> str:
+    out = ""
+    for part in loc:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else str(part))
+    return out
+
+
+def _problem(err: ErrorDetails) -> str:
+    loc = tuple(err["loc"])
+    key, kind, value = _key(loc), err["type"], err.get("input")
+    if kind == "missing":
+        return f"{key} is missing"
+    if kind == "extra_forbidden":
+        model: Any = SweepSpecFile
+        for part in loc[:-1]:
+            model = getattr(model, "model_fields", {}).get(part)
+            model = getattr(model, "annotation", None)
+        names = list(getattr(model, "model_fields", {}))
+        hint = difflib.get_close_matches(str(loc[-1]), names, n=1)
+        did = f" (did you mean {hint[0]!r}?)" if hint else ""
+        where = f"[{_key(loc[:-1])}]" if len(loc) > 1 else "the top level"
+        return f"unknown key {key}{did}; allowed keys in {where}: {', '.join(names)}"
+    msg = str(err.get("ctx", {}).get("error", err["msg"])) if kind == "value_error" else err["msg"]
+    msg = msg.replace("Input should be", "must be").replace("Value error, ", "")
+    return f"{key} = {_show(value)}: {msg}" if key else msg
+
+
+def _show(value: Any) -> str:
+    """A value as it looks in TOML."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, dict):
+        return "{" + ", ".join(f"{k} = {_show(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, list | tuple):
+        return "[" + ", ".join(_show(v) for v in value) + "]"
+    return repr(value)
+
+
+def _axis_values(name: str, spec: Any) -> np.ndarray:
+    """A [grid] entry: a list of numbers, or {start, stop, num} (num values, both ends included)."""
+    if isinstance(spec, dict):
+        extra = set(spec) - {"start", "stop", "num"}
+        if extra or not {"start", "stop", "num"} <= set(spec):
+            raise _core.InvalidInputError(
+                f"[grid] {name} = {_show(spec)}: a table needs exactly start, stop (axis unit), num"
+            )
+        start, stop, num = spec["start"], spec["stop"], spec["num"]
+        if isinstance(num, bool) or not isinstance(num, int) or not 1 <= num <= MAX_AXIS_VALUES:
+            raise _core.InvalidInputError(
+                f"[grid] {name}.num = {num!r}: must be an integer from 1 to {MAX_AXIS_VALUES}"
+            )
+        if not all(isinstance(v, int | float) and not isinstance(v, bool) for v in (start, stop)):
+            raise _core.InvalidInputError(f"[grid] {name}: start and stop must be numbers, got {_show(spec)}")
+        return np.linspace(float(start), float(stop), num)
+    if isinstance(spec, list):
+        if not all(isinstance(v, int | float) and not isinstance(v, bool) for v in spec):
+            raise _core.InvalidInputError(f"[grid] {name} = {_show(spec)}: the values must be numbers")
+        return np.asarray(spec, dtype=np.float64)
+    raise _core.InvalidInputError(
+        f"[grid] {name} = {_show(spec)}: give a list of values or {{start, stop, num}} "
+        "(a single fixed value goes in [fixed])"
+    )
+
+
+def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepFile:
+    """A sweep file from its parsed TOML (nested dicts); :class:`SweepFileError` if it is not valid."""
+    try:
+        spec = SweepSpecFile.model_validate(data)
+    except ValidationError as e:
+        errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
+        raise SweepFileError(source, [_problem(err) for err in errors]) from None
+    try:
+        if spec.grid is not None:
+            design = sweep_design.grid({k: _axis_values(k, v) for k, v in spec.grid.items()})
+        else:
+            assert spec.random is not None
+            r = spec.random
+            design = sweep_design.random(r.n, r.ranges, r.seed, r.method)
+    except _core.InvalidInputError as e:
+        section = "[grid]" if spec.grid is not None else "[random]"
+        text = str(e)
+        raise SweepFileError(source, text if text.startswith(section) else f"{section} {text}") from None
+    p = spec.pendulum
+    try:
+        pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass)
+    except _core.InvalidInputError as e:
+        raise SweepFileError(source, f"[pendulum] {e}") from None
+    sim = spec.simulation
+    try:
+        make_spec(
+            design,
+            spec.quantity,
+            pendulum,
+            spec.fixed,
+            None if sim is None else sim.t_end,
+            None if sim is None else sim.dt,
+        )
+    except _core.InvalidInputError as e:
+        text = str(e).replace("give t_end [s] (and dt [s])", "add [simulation] t_end (in s) and dt (in s)")
+        if text.startswith(("t_end", "dt")):
+            text = f"[simulation] {text}"
+        raise SweepFileError(source, text) from None
+    return SweepFile(spec, design, pendulum, source)
+
+
+def load_sweep_file(path: str | os.PathLike[str]) -> SweepFile:
+    """Reads and checks a sweep file (TOML); :class:`SweepFileError` names any problem."""
+    source = str(path)
+    text = Path(path).read_text(encoding="utf-8")
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as e:
+        raise SweepFileError(source, f"invalid TOML: {e}") from None
+    return sweep_file_from_dict(data, source)
