@@ -22,6 +22,7 @@ from .ensemble import EnsembleResult, simulate_ensemble, states_from_angles
 from .exact import ExactSolution, Phases, exact
 from .model import Pendulum, State, models
 from .reduce import Reduced, reduce, reduced_flow
+from .save import Save
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulate import Stepper, method_names, methods, simulate
 from .spring import SpringTrajectory, SwingingSpring, simulate_spring
@@ -39,6 +40,7 @@ __all__ = [
     "Pendulum",
     "Phases",
     "Reduced",
+    "Save",
     "Scenario",
     "ScenarioError",
     "SpringTrajectory",

@@ -183,6 +183,8 @@ class EnsembleRun:
         n_steps: int,
         save_every: int | None = None,
         summary: bool = True,
+        damping: FloatArray | None = None,
+        settle_angle: float | None = None,
     ) -> None: ...
     @property
     def progress(self) -> float: ...

@@ -1,9 +1,14 @@
 """Many trajectories at once: ``simulate_ensemble`` on the core's ensemble kernel (RATTLE on blocks
 of 64 trajectories, vectorised, all cores). Every trajectory gets exactly the numbers of
-``simulate(..., method="rattle")`` with the same dt. Ideal pendulum; length l [m] and gravity g
-[m/s²] may differ per trajectory. Memory is bounded by what is saved (final states, every n-th
-step, a summary), never by trajectories × steps. A tqdm bar shows progress for long runs; Ctrl-C
-stops cleanly within 1024 steps and returns the states reached (``EnsembleResult.interrupted``).
+``simulate(..., method="rattle")`` with the same dt. Ideal pendulum, optionally with linear damping
+c [1/s] (force −m c v; the ``damped`` model without drag or forcing, T-7.1); length l [m], gravity
+g [m/s²] and damping may differ per trajectory. With ``settle_angle`` [rad] each trajectory's
+settle time is tracked: the time after which its sway from the stable equilibrium (−sign(g) e₃)
+stays within the angle (to one step dt; 0 if never outside, +inf if still outside at the end).
+Memory is bounded by what is saved (final states, every n-th step, a summary), never by
+trajectories × steps. Start rows with NaN or inf are reported (``invalid_rows``, a warning) and get
+NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C stops cleanly within
+1024 steps and returns the states reached (``EnsembleResult.interrupted``).
 """
 
 from __future__ import annotations
@@ -14,10 +19,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 from tqdm.auto import tqdm
 
 from . import _core
 from .model import FloatArray, Pendulum, State
+from .save import Save
 
 _POLL_SECONDS = 0.05
 _PROGRESS_AFTER = 5e7  # trajectory-steps
@@ -27,7 +34,9 @@ _PROGRESS_AFTER = 5e7  # trajectory-steps
 class EnsembleResult:
     """Saved states of N trajectories: ``t`` (n_save,) [s], ``x`` and ``v`` (N, n_save, 3) [m, m/s];
     ``summary`` (if asked): per trajectory z_min, z_max [m], e_min, e_max [J/kg] (E/m), j3_min, j3_max
-    [m²/s] (J₃/m), and derived ``energy_drift`` = (e_max − e_min)/(|g| l) and ``j3_drift``."""
+    [m²/s] (J₃/m), and derived ``energy_drift`` = (e_max − e_min)/(|g| l), ``j3_drift`` [m²/s] and
+    ``max_sway`` [rad] (largest angle from the stable equilibrium −sign(g) e₃); ``settle_time`` (N,)
+    [s] when a settle angle was given."""
 
     t: FloatArray
     x: FloatArray
@@ -36,6 +45,9 @@ class EnsembleResult:
     interrupted: bool
     steps: int
     metadata: dict[str, Any] = field(default_factory=dict)
+    settle_time: FloatArray | None = None
+    invalid_rows: npt.NDArray[np.int64] = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    """Rows of the input whose start was not finite (NaN or inf): not integrated, all results NaN."""
 
     def __len__(self) -> int:
         return int(self.x.shape[0])
@@ -73,30 +85,77 @@ def _per_trajectory(name: str, value: Any, default: float, n: int) -> FloatArray
     return np.ascontiguousarray(a)
 
 
+_DAMPED_ONLY = {"damping", "forcing_x", "forcing_y", "forcing_z", "forcing_omega", "forcing_phase"}
+
+
+def model_damping(pendulum: Pendulum) -> float:
+    """The linear damping c [1/s] of an ideal or ``damped`` pendulum the kernel can run, else an error."""
+    if pendulum.is_ideal:
+        return 0.0
+    extra = pendulum.extra
+    gravity = (extra.get("gravity_x", 0.0), extra.get("gravity_y", 0.0), extra.get("gravity_z", -1.0))
+    other = {
+        k: v for k, v in extra.items() if k not in _DAMPED_ONLY and not k.startswith("gravity_") and v != 0.0
+    }
+    if (
+        pendulum.model != "damped"
+        or other
+        or extra.get("forcing_amplitude", 0.0) != 0.0
+        or (gravity[0] != 0.0 or gravity[1] != 0.0 or gravity[2] >= 0.0)
+    ):
+        raise _core.InvalidInputError(
+            f"simulate_ensemble runs the ideal pendulum with optional linear damping, not {pendulum!r}; "
+            "use simulate() for drag, forcing, tilted gravity and the other models"
+        )
+    return float(extra.get("damping", 0.0))
+
+
 def simulate_ensemble(
     pendulum: Pendulum,
     states: Any,
     t_end: float,
     *,
+    method: str = "rattle",
     dt: float = 1e-3,
+    save: Save | None = None,
     save_every: int | None = None,
-    summary: bool = True,
+    summary: bool | None = None,
     length: Any = None,
     g: Any = None,
+    damping: Any = None,
+    settle_angle: float | None = None,
     progress: bool | None = None,
 ) -> EnsembleResult:
     """Integrates N starts (an (N, 6) array of (x, v) or a list of ``State``) to ``t_end`` [s] with
-    RATTLE at step ``dt`` [s]. ``length`` [m] and ``g`` [m/s²] default to the pendulum's; give arrays of
-    N values for per-trajectory parameters. ``save_every``: keep every n-th step (default: the final
-    state only). The number of steps is round(t_end/dt); t_end must be a multiple of dt to 1e-9."""
-    if not pendulum.is_ideal:
+    RATTLE at step ``dt`` [s]. ``length`` [m], ``g`` [m/s²] and ``damping`` c [1/s] default to the
+    pendulum's (an ideal pendulum, or a ``damped`` one with only linear damping); give arrays of N
+    values for per-trajectory parameters. ``save``: what to keep, e.g. ``pl.Save.every(1000) |
+    pl.Save.summary()`` (see :class:`~pendulab.save.Save`); or the older keywords ``save_every`` (keep
+    every n-th step; default the final state only) and ``summary`` (default True).
+    ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. ``method``: only
+    ``"rattle"``. The number of steps is round(t_end/dt); t_end must be a multiple of dt to 1e-9."""
+    if method != "rattle":
         raise _core.InvalidInputError(
-            f"simulate_ensemble supports the ideal pendulum, not {pendulum.model!r}"
+            f"method = {method!r}: the ensemble kernel runs 'rattle' (vectorised); loop over "
+            "pl.simulate for the other methods"
         )
+    if save is not None:
+        if not isinstance(save, Save):
+            raise _core.InvalidInputError(f"save must be a pl.Save rule, got {save!r}")
+        if save_every is not None or summary is not None:
+            raise _core.InvalidInputError("give save=pl.Save... or save_every/summary, not both")
+        save_every, summary = save.every_n, save.with_summary
+    summary = True if summary is None else bool(summary)
+    c_model = model_damping(pendulum)
     x, v = _as_states(states)
     n = x.shape[0]
     lengths = _per_trajectory("length", length, pendulum.length, n)
     gs = _per_trajectory("g", g, pendulum.g, n)
+    cs = _per_trajectory("damping", damping, c_model, n)
+    finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
+    invalid = np.flatnonzero(~finite)
+    if invalid.size == n:
+        raise _core.InvalidInputError(f"every start row is non-finite (NaN or inf): {n} rows")
     if not (np.isfinite(dt) and dt > 0):
         raise _core.InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
     steps = round(t_end / dt)
@@ -110,7 +169,31 @@ def simulate_ensemble(
             f"{n} trajectories × {n_save} samples need {n * n_save * 48 / 2**30:.1f} GiB (limit 4 GiB); "
             "save less often"
         )
-    run = _core.EnsembleRun(x, v, lengths, gs, float(dt), int(steps), save_every, bool(summary))
+    settle = None if settle_angle is None else float(settle_angle)
+    if invalid.size:
+        rows = ", ".join(str(i) for i in invalid[:10]) + (", …" if invalid.size > 10 else "")
+        warnings.warn(
+            f"{invalid.size} of {n} start rows are not finite (rows {rows}): not integrated, their "
+            "results are NaN (EnsembleResult.invalid_rows)",
+            RuntimeWarning,
+            stacklevel=2,
+        )
+
+    def good(a: FloatArray) -> FloatArray:
+        return np.ascontiguousarray(a if (a.shape[0] != n or not invalid.size) else a[finite])
+
+    run = _core.EnsembleRun(
+        good(x),
+        good(v),
+        good(lengths),
+        good(gs),
+        float(dt),
+        int(steps),
+        save_every,
+        bool(summary),
+        good(cs),
+        settle,
+    )
     show = progress if progress is not None else n * steps > _PROGRESS_AFTER
     interrupted = False
     with tqdm(total=1000, disable=not show, unit="‰", desc=f"{n} trajectories", leave=False) as bar:
@@ -122,6 +205,12 @@ def simulate_ensemble(
             run.cancel()
             interrupted = True
     out = run.result()
+    if invalid.size:  # back to the input's rows, NaN where the start was not finite
+        for key, a in list(out.items()):
+            if isinstance(a, np.ndarray) and a is not out["t"]:
+                full = np.full((n, *a.shape[1:]), np.nan)
+                full[finite] = a
+                out[key] = full
     if interrupted:
         warnings.warn("interrupted: returning the states reached so far", RuntimeWarning, stacklevel=2)
     summ = None
@@ -130,9 +219,22 @@ def simulate_ensemble(
         scale = np.maximum(np.abs(gs) * lengths, 1e-300)
         summ["energy_drift"] = (summ["e_max"] - summ["e_min"]) / scale
         summ["j3_drift"] = summ["j3_max"] - summ["j3_min"]
+        # the farthest point from the stable equilibrium −sign(g) e₃ (g = 0: from the bottom)
+        cos_sway = np.where(gs < 0.0, summ["z_min"], -summ["z_max"]) / lengths
+        summ["max_sway"] = np.arccos(np.clip(cos_sway, -1.0, 1.0))
     meta = {"method": "rattle", "dt": dt, "t_end": t_end, "pendulum": pendulum.params(), "n": n}
+    if settle is not None:
+        meta["settle_angle"] = settle
     return EnsembleResult(
-        out["t"], out["x"], out["v"], summ, interrupted or out["cancelled"], out["steps"], meta
+        out["t"],
+        out["x"],
+        out["v"],
+        summ,
+        interrupted or out["cancelled"],
+        out["steps"],
+        meta,
+        out.get("settle_time"),
+        invalid.astype(np.int64),
     )
 
 

@@ -44,6 +44,7 @@ import numpy as np
 from tqdm.auto import tqdm
 
 from . import _core
+from .ensemble import model_damping
 from .model import FloatArray, Pendulum
 from .sweep_backends import Dask, Threads, connect, drive
 from .sweep_design import AXES, INITIAL_AXES, Design, as_design, check_axis_name
@@ -55,10 +56,11 @@ QUANTITIES: dict[str, dict[str, str]] = {
     "period": {"period": "s"},
     "max_sway": {"max_sway": "rad"},
     "energy_drift": {"energy_drift": "1"},
+    "settle_time": {"settle_time": "s"},
 }
 """Quantity name → the result columns it makes, with their units."""
 
-SIMULATED = ("final_state", "max_sway", "energy_drift")
+SIMULATED = ("final_state", "max_sway", "energy_drift", "settle_time")
 """The quantities that integrate (RATTLE to t_end); the others come from the exact solution."""
 
 BACKENDS = ("threads", "dask")
@@ -87,7 +89,8 @@ def _bad(message: str) -> _core.InvalidInputError:
 class SweepSpec:
     """Everything but the points: the quantities, the pendulum (l [m], g [m/s²], m [kg]) used where
     the design does not vary length or g, the fixed initial conditions (``fixed``: axis → value; 0
-    for those not given), and for simulated quantities ``t_end`` [s] and ``dt`` [s]."""
+    for those not given), for simulated quantities ``t_end`` [s] and ``dt`` [s], the linear damping
+    c [1/s] where the design does not vary it, and for ``settle_time`` the ``settle_angle`` [rad]."""
 
     quantities: tuple[str, ...]
     length: float
@@ -96,6 +99,8 @@ class SweepSpec:
     fixed: dict[str, float]
     t_end: float | None = None
     dt: float | None = None
+    damping: float = 0.0
+    settle_angle: float | None = None
 
     @property
     def simulated(self) -> bool:
@@ -110,7 +115,12 @@ class SweepSpec:
         return {c: u for q in self.quantities for c, u in QUANTITIES[q].items()}
 
     def describe(self) -> dict[str, Any]:
-        return asdict(self) | {"quantities": list(self.quantities)}
+        d = asdict(self) | {"quantities": list(self.quantities)}
+        # settings at their defaults are left out, so that sweeps written before they existed resume
+        for key, default in (("damping", 0.0), ("settle_angle", None)):
+            if d[key] == default:
+                del d[key]
+        return d
 
 
 def _quantities(quantity: str | Sequence[str]) -> tuple[str, ...]:
@@ -132,14 +142,34 @@ def make_spec(
     fixed: Mapping[str, float] | None = None,
     t_end: float | None = None,
     dt: float | None = None,
+    settle_angle: float | None = None,
 ) -> SweepSpec:
     """Checks and collects the settings of a sweep over ``design`` (see :func:`sweep`)."""
     quantities = _quantities(quantity)
     p = Pendulum() if pendulum is None else pendulum
     if not isinstance(p, Pendulum):
         raise _bad(f"pendulum must be a pendulab.Pendulum, got {type(p).__name__}")
-    if not p.is_ideal:
-        raise _bad(f"sweeps run the ideal pendulum (exact solution, ensemble kernel), not {p.model!r}")
+    try:
+        damping = model_damping(p)
+    except _core.InvalidInputError:
+        raise _bad(
+            f"sweeps run the ideal pendulum, optionally with linear damping (exact solution, ensemble "
+            f"kernel), not {p!r}"
+        ) from None
+    exact = [q for q in quantities if q not in SIMULATED]
+    if exact and (damping != 0.0 or "damping" in design.names):
+        raise _bad(
+            f"{', '.join(exact)} come from the exact solution of the undamped pendulum: "
+            "remove the damping or compute simulated quantities only"
+        )
+    if "settle_time" in quantities:
+        if settle_angle is None:
+            raise _bad("settle_time needs settle_angle [rad]: the sway angle that counts as settled")
+        if not (isinstance(settle_angle, int | float) and 0 < settle_angle < math.pi):
+            raise _bad(f"settle_angle = {settle_angle!r} must be a sway angle in (0, π) rad")
+        settle_angle = float(settle_angle)
+    else:
+        settle_angle = None
     fixed_values: dict[str, float] = {}
     for name, value in (fixed or {}).items():
         check_axis_name(name, "fixed value")
@@ -173,7 +203,8 @@ def make_spec(
         t_end, dt = float(t_end), float(dt)
     else:
         t_end = dt = None  # not used: not part of what the results depend on
-    return SweepSpec(quantities, p.length, p.g, p.mass, dict(sorted(fixed_values.items())), t_end, dt)
+    fixed_sorted = dict(sorted(fixed_values.items()))
+    return SweepSpec(quantities, p.length, p.g, p.mass, fixed_sorted, t_end, dt, damping, settle_angle)
 
 
 def fingerprint(design: Design, spec: SweepSpec) -> str:
@@ -198,7 +229,7 @@ class ChunkTask:
 
 def _full(task: ChunkTask) -> dict[str, FloatArray]:
     m, s = task.stop - task.start, task.spec
-    base = {"length": s.length, "g": s.g, **s.fixed}
+    base = {"length": s.length, "g": s.g, "damping": s.damping, **s.fixed}
     return {k: np.asarray(task.inputs[k]) if k in task.inputs else np.full(m, float(base[k])) for k in AXES}
 
 
@@ -255,7 +286,9 @@ def _simulate(
     x, v = _states(c, spec.mass)
     length, g = np.ascontiguousarray(c["length"]), np.ascontiguousarray(c["g"])
     need_summary = "max_sway" in spec.quantities or "energy_drift" in spec.quantities
-    run = _core.EnsembleRun(x, v, length, g, float(spec.dt or 0.0), spec.steps, None, need_summary)
+    damping = np.ascontiguousarray(c["damping"])
+    dt, settle = float(spec.dt or 0.0), spec.settle_angle
+    run = _core.EnsembleRun(x, v, length, g, dt, spec.steps, None, need_summary, damping, settle)
     pause = 1e-3
     while not run.done:
         if cancel is not None and cancel.wait(pause):
@@ -275,7 +308,11 @@ def _simulate(
             out[name] = np.ascontiguousarray(xf[:, k])
             out["v" + name] = np.ascontiguousarray(vf[:, k])
     if "max_sway" in spec.quantities:
-        out["max_sway"] = np.arccos(np.clip(-res["z_max"] / length, -1.0, 1.0))
+        # from the stable equilibrium −sign(g) e₃ (the bottom for g >= 0)
+        cos_sway = np.where(g < 0.0, res["z_min"], -res["z_max"]) / length
+        out["max_sway"] = np.arccos(np.clip(cos_sway, -1.0, 1.0))
+    if "settle_time" in spec.quantities:
+        out["settle_time"] = res["settle_time"]
     if "energy_drift" in spec.quantities:
         scale = np.abs(g) * length
         scale = np.where(g != 0.0, scale, 0.5 * np.einsum("ij,ij->i", v, v))
@@ -329,6 +366,7 @@ def sweep(
     fixed: Mapping[str, float] | None = None,
     t_end: float | None = None,
     dt: float | None = None,
+    settle_angle: float | None = None,
     backend: str | None = None,
     scheduler: Any = None,
     workers: int | None = None,
@@ -341,10 +379,13 @@ def sweep(
 
     ``design``: a dict of axis name → 1-D array (a full factorial grid) or a design from
     :mod:`pendulab.sweep_design`; axes ``theta0``, ``phi0`` [rad], ``theta_dot0``, ``phi_dot0`` [rad/s],
-    ``length`` [m], ``g`` [m/s²]. ``pendulum`` (ideal; default l = 1 m, g = 9.81 m/s², m = 1 kg) gives
-    length and g where the design does not vary them; ``fixed`` sets initial conditions that are not
-    axes (default 0). Simulated quantities integrate with RATTLE to ``t_end`` [s] at step ``dt`` [s]
-    (default 1e-3 s; t_end a multiple of dt).
+    ``length`` [m], ``g`` [m/s²], ``damping`` [1/s]. ``pendulum`` (ideal, or ``damped`` with linear
+    damping only; default l = 1 m, g = 9.81 m/s², m = 1 kg) gives length, g and damping where the
+    design does not vary them; ``fixed`` sets initial conditions that are not axes (default 0).
+    Simulated quantities integrate with RATTLE to ``t_end`` [s] at step ``dt`` [s] (default 1e-3 s;
+    t_end a multiple of dt). ``settle_time`` (the time after which the sway from the stable
+    equilibrium stays within ``settle_angle`` [rad]; +inf if not settled by t_end) needs
+    ``settle_angle``. The exact quantities (rotation_number, period) need an undamped pendulum.
 
     The points are split into chunks of ``chunk_size`` (default :func:`default_chunk_size`), each one
     ensemble run or one vectorised exact evaluation, run by ``backend``: ``"threads"`` (default; a
@@ -362,7 +403,7 @@ def sweep(
     """
     t0 = time.perf_counter()
     d = as_design(design)
-    spec = make_spec(d, quantity, pendulum, fixed, t_end, dt)
+    spec = make_spec(d, quantity, pendulum, fixed, t_end, dt, settle_angle)
     if backend is None:
         backend = "threads" if scheduler is None else "dask"
     if backend not in BACKENDS:

@@ -11,6 +11,7 @@ axis           unit    meaning (default when the design does not vary it)
 ``phi_dot0``   rad/s   dφ/dt at t = 0 (0)
 ``length``     m       rod length l, > 0 (the pendulum's)
 ``g``          m/s²    gravity, any finite value (the pendulum's)
+``damping``    1/s     linear damping c ≥ 0, force −m c v (the pendulum's; simulated only)
 ============== ======= =================================================================
 
 Three kinds of design, all with points numbered 0 … n − 1 (the ``point`` column of the results):
@@ -44,11 +45,13 @@ AXES: dict[str, str] = {
     "phi_dot0": "rad/s",
     "length": "m",
     "g": "m/s^2",
+    "damping": "1/s",
 }
 """The axes a design may vary, with their SI units."""
 
 INITIAL_AXES = ("theta0", "phi0", "theta_dot0", "phi_dot0")
-"""The axes that set the start (the others, ``length`` and ``g``, are the pendulum's parameters)."""
+"""The axes that set the start (the others, ``length``, ``g`` and ``damping``, are the pendulum's
+parameters)."""
 
 RANDOM_METHODS = ("uniform", "lhs")
 """How :func:`random` draws: independent uniform values, or a Latin hypercube (one point per 1/n slice
@@ -73,7 +76,7 @@ def check_axis_name(name: Any, where: str = "axis") -> str:
 
 def check_values(name: str, values: Any) -> FloatArray:
     """The values of axis ``name`` as a contiguous float64 1-D array: non-empty, finite, and > 0 for
-    ``length``; an error naming the axis and the bad value otherwise."""
+    ``length``, >= 0 for ``damping``; an error naming the axis and the bad value otherwise."""
     check_axis_name(name)
     try:
         a = np.asarray(values, dtype=np.float64)
@@ -84,11 +87,13 @@ def check_values(name: str, values: Any) -> FloatArray:
     if a.size == 0:
         raise _bad(f"axis {name!r} is empty: give at least one value (in {AXES[name]})")
     bad = ~np.isfinite(a)
+    need = {"length": "finite and > 0", "damping": "finite and >= 0"}.get(name, "finite")
     if name == "length":
         bad |= ~(a > 0)
+    if name == "damping":
+        bad |= ~(a >= 0)
     if bad.any():
         k = int(np.argmax(bad))
-        need = "finite and > 0" if name == "length" else "finite"
         raise _bad(f"axis {name!r}: value [{k}] = {float(a[k])!r} {AXES[name]} must be {need}")
     return np.ascontiguousarray(a)
 

@@ -8,6 +8,7 @@
     [pendulum]                             # the ideal pendulum (defaults: 1 m, 9.81 m/s^2, 1 kg)
     length = 1.0                           # m
     g = 9.81                               # m/s^2
+    damping = 0.0                          # 1/s, linear damping (simulated quantities only)
 
     [grid]                                 # full factorial; or [random] (n, seed, method, ranges)
     theta0 = { start = 0.1, stop = 3.0, num = 100 }    # rad: 100 values, ends included
@@ -16,9 +17,10 @@
     [fixed]                                # initial conditions that are not axes (default 0)
     theta_dot0 = 0.0                       # rad/s
 
-    [simulation]                           # needed by final_state, max_sway, energy_drift
+    [simulation]                           # needed by final_state, max_sway, energy_drift, settle_time
     t_end = 20.0                           # s
     dt = 1e-3                              # s
+    settle_angle = 0.01                    # rad, needed by settle_time
 
     [run]                                  # optional; the command line overrides these
     chunk_size = 2000
@@ -65,6 +67,7 @@ class PendulumTable(_Strict):
     length: float = Field(1.0, gt=0, allow_inf_nan=False, description="rod length in m, > 0")
     g: float = Field(9.81, allow_inf_nan=False, description="gravity in m/s^2, any finite value")
     mass: float = Field(1.0, gt=0, allow_inf_nan=False, description="bob mass in kg, > 0")
+    damping: float = Field(0.0, ge=0, allow_inf_nan=False, description="linear damping in 1/s, >= 0")
 
 
 class RandomTable(_Strict):
@@ -77,6 +80,9 @@ class RandomTable(_Strict):
 class SimulationTable(_Strict):
     t_end: float = Field(gt=0, allow_inf_nan=False, description="end time in s, > 0, a multiple of dt")
     dt: float = Field(1e-3, gt=0, allow_inf_nan=False, description="RATTLE step in s, > 0")
+    settle_angle: float | None = Field(
+        None, gt=0, lt=3.141592653589793, allow_inf_nan=False, description="sway angle in rad, in (0, pi)"
+    )
 
 
 class RunTable(_Strict):
@@ -126,6 +132,7 @@ class SweepFile:
             "fixed": self.spec.fixed,
             "t_end": None if sim is None else sim.t_end,
             "dt": None if sim is None else sim.dt,
+            "settle_angle": None if sim is None else sim.settle_angle,
             "chunk_size": run.chunk_size,
             "backend": run.backend,
             "workers": run.workers,
@@ -217,7 +224,8 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
         raise SweepFileError(source, text if text.startswith(section) else f"{section} {text}") from None
     p = spec.pendulum
     try:
-        pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass)
+        extra = {"damping": p.damping} if p.damping != 0.0 else {}
+        pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, **extra)
     except _core.InvalidInputError as e:
         raise SweepFileError(source, f"[pendulum] {e}") from None
     sim = spec.simulation
@@ -229,6 +237,7 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
             spec.fixed,
             None if sim is None else sim.t_end,
             None if sim is None else sim.dt,
+            None if sim is None else sim.settle_angle,
         )
     except _core.InvalidInputError as e:
         text = str(e).replace("give t_end [s] (and dt [s])", "add [simulation] t_end (in s) and dt (in s)")

@@ -4,7 +4,7 @@
 use crate::{to_py, InvalidInputError};
 use numpy::ndarray::{Array1, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
-use pendulab_core::ensemble::{run, EnsembleResult, EnsembleSave};
+use pendulab_core::ensemble::{run_with, EnsembleResult, EnsembleSave, Extras};
 use pendulab_core::{DVec3, Result as CoreResult, State};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
@@ -13,7 +13,8 @@ use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 use std::sync::Arc;
 use std::thread::JoinHandle;
 
-/// An ensemble run in progress (RATTLE, ideal pendulum, per-trajectory l and g).
+/// An ensemble run in progress (RATTLE; ideal pendulum with optional linear damping; per-trajectory
+/// l, g and damping c).
 #[pyclass(module = "pendulab._core", name = "EnsembleRun")]
 pub struct EnsembleRun {
     progress: Arc<AtomicU64>,
@@ -26,9 +27,10 @@ pub struct EnsembleRun {
 impl EnsembleRun {
     /// Starts `n_steps` steps of `dt` [s] from x, v (N, 3) [m, m/s] with length and g arrays of
     /// length 1 or N; saves every `save_every` steps (None: final only); `summary`: extremes of z,
-    /// E/m and J₃/m per trajectory.
+    /// E/m and J₃/m per trajectory; `damping`: c [1/s] (length 0, 1 or N); `settle_angle` [rad]:
+    /// track each trajectory's settle time.
     #[new]
-    #[pyo3(signature = (x, v, length, g, dt, n_steps, save_every=None, summary=true))]
+    #[pyo3(signature = (x, v, length, g, dt, n_steps, save_every=None, summary=true, damping=None, settle_angle=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         x: PyReadonlyArray2<'_, f64>,
@@ -39,6 +41,8 @@ impl EnsembleRun {
         n_steps: u64,
         save_every: Option<u64>,
         summary: bool,
+        damping: Option<PyReadonlyArray1<'_, f64>>,
+        settle_angle: Option<f64>,
     ) -> PyResult<Self> {
         let (xa, va) = (x.as_array(), v.as_array());
         if xa.ncols() != 3 || va.dim() != xa.dim() || xa.nrows() == 0 {
@@ -55,16 +59,20 @@ impl EnsembleRun {
             })
             .collect();
         let (length, g) = (length.as_array().to_vec(), g.as_array().to_vec());
+        let damping: Vec<f64> = damping.map_or_else(Vec::new, |d| d.as_array().to_vec());
         let save = save_every.map_or(EnsembleSave::Final, EnsembleSave::Every);
         let progress = Arc::new(AtomicU64::new(0));
         let cancel = Arc::new(AtomicBool::new(false));
         let total = n_steps.saturating_mul(starts.len() as u64);
         // Validate before starting the thread, so bad input raises here and not later.
         let (p0, c0) = (AtomicU64::new(0), AtomicBool::new(false));
-        run(&starts, &length, &g, dt, 0, save, false, &p0, &c0).map_err(to_py)?;
+        let extras = Extras { damping: &damping, settle_angle };
+        run_with(&starts, &length, &g, &extras, dt, 0, save, false, &p0, &c0).map_err(to_py)?;
         let (p, c) = (progress.clone(), cancel.clone());
-        let handle =
-            std::thread::spawn(move || run(&starts, &length, &g, dt, n_steps, save, summary, &p, &c));
+        let handle = std::thread::spawn(move || {
+            let extras = Extras { damping: &damping, settle_angle };
+            run_with(&starts, &length, &g, &extras, dt, n_steps, save, summary, &p, &c)
+        });
         Ok(Self { progress, cancel, total, handle: Some(handle) })
     }
 
@@ -90,7 +98,8 @@ impl EnsembleRun {
     }
 
     /// Waits for the run and returns a dict: t (n_save,), x, v (N, n_save, 3), cancelled, steps and,
-    /// with a summary, z_min, z_max, e_min, e_max (per unit mass, J/kg), j3_min, j3_max (m²/s).
+    /// with a summary, z_min, z_max, e_min, e_max (per unit mass, J/kg), j3_min, j3_max (m²/s); with a
+    /// settle angle, settle_time [s] (0: never outside, inf: outside at the end).
     fn result<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let handle =
             self.handle.take().ok_or_else(|| PyRuntimeError::new_err("the result was already taken"))?;
@@ -117,6 +126,9 @@ impl EnsembleRun {
         d.set_item("v", vs)?;
         d.set_item("cancelled", res.cancelled)?;
         d.set_item("steps", res.steps)?;
+        if let Some(ts) = res.settle_time {
+            d.set_item("settle_time", Array1::from(ts).into_pyarray(py))?;
+        }
         if let Some(s) = res.summary {
             let col = |f: &dyn Fn(&pendulab_core::ensemble::Summary) -> f64| -> Bound<'py, PyArray1<f64>> {
                 Array1::from(s.iter().map(f).collect::<Vec<_>>()).into_pyarray(py)

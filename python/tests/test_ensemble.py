@@ -44,5 +44,101 @@ def test_bad_input(pendulum: pl.Pendulum) -> None:
         pl.simulate_ensemble(pendulum, np.array([[0.0, 0, -1, 0.1, 0, 0]] * 2), t_end=1.0, length=[1, 2, 3])
     with pytest.raises(pl.InvalidInputError, match="TS"):
         pl.simulate_ensemble(pendulum, np.array([[0.0, 0, -1.5, 0.1, 0, 0]]), t_end=1.0)
-    with pytest.raises(pl.InvalidInputError, match="ideal"):
-        pl.simulate_ensemble(pl.Pendulum(damping=0.1), np.array([[0.0, 0, -1, 0.1, 0, 0]]), t_end=1.0)
+    with pytest.raises(pl.InvalidInputError, match="linear damping"):
+        pl.simulate_ensemble(pl.Pendulum(drag=0.1), np.array([[0.0, 0, -1, 0.1, 0, 0]]), t_end=1.0)
+    with pytest.raises(pl.InvalidInputError, match="linear damping"):
+        pl.simulate_ensemble(
+            pl.Pendulum(damping=0.1, gravity_x=1.0), np.array([[0.0, 0, -1, 0.1, 0, 0]]), t_end=1.0
+        )
+    start = np.array([[0.0, 0, -1, 0.1, 0, 0]])
+    with pytest.raises(pl.InvalidInputError, match="damping"):
+        pl.simulate_ensemble(pendulum, start, t_end=1.0, damping=-0.5)
+    with pytest.raises(pl.InvalidInputError, match="damping"):
+        pl.simulate_ensemble(pendulum, start, t_end=1.0, damping=np.nan)
+    with pytest.raises(pl.InvalidInputError, match="settle_angle"):
+        pl.simulate_ensemble(pendulum, start, t_end=1.0, settle_angle=-0.1)
+
+
+def test_damped_ensemble_matches_the_damped_model() -> None:
+    """Per-trajectory damping c [1/s]: each trajectory equals simulate() of the ``damped`` model."""
+    p = pl.Pendulum(length=1.0, g=9.81, damping=0.3)
+    states = pl.states_from_angles(p, theta=[0.3, 1.0, 2.0], phi_dot=[0.5, -1.0, 0.0])
+    cs = np.array([0.3, 0.0, 1.5])
+    res = pl.simulate_ensemble(p, states, t_end=3.0, damping=cs, save_every=1000)
+    for k, c in enumerate(cs):
+        pk = pl.Pendulum(length=1.0, g=9.81, damping=c)
+        tr = pl.simulate(
+            pk, pk.state(states[k, :3], states[k, 3:]), t_end=3.0, method="rattle", dt=1e-3, save_every=1000
+        )
+        assert np.array_equal(tr.x, res.x[k]) and np.array_equal(tr.v, res.v[k])
+    # the model's own damping is the default
+    res2 = pl.simulate_ensemble(p, states, t_end=3.0)
+    tr0 = pl.simulate(p, p.state(states[0, :3], states[0, 3:]), t_end=3.0, method="rattle", dt=1e-3)
+    assert np.array_equal(res2.final_x[0], tr0.x[-1])
+
+
+def test_settle_time_follows_the_exponential_envelope() -> None:
+    """A small swing of the linearly damped pendulum, θ = A e^{−γt} cos(ω_d t − ψ) with γ = c/2 and
+    A = θ₀ (1 + γ²/ω_d²)^{1/2}, stays inside its envelope: the settle time to θ_s is at most
+    ln(A/θ_s)/γ and at least half a period less (the last exceedance is at a peak)."""
+    g, c, theta_s = 9.81, 0.4, 0.002
+    p = pl.Pendulum(length=1.0, g=g, damping=c)
+    theta0 = np.array([0.02, 0.01, 0.005, 0.001])
+    res = pl.simulate_ensemble(
+        p, pl.states_from_angles(p, theta=theta0), t_end=30.0, settle_angle=theta_s, summary=True
+    )
+    assert res.settle_time is not None and res.summary is not None
+    gamma = c / 2
+    omega_d = np.sqrt(g - gamma**2)
+    envelope = np.log(theta0[:3] * np.sqrt(1 + (gamma / omega_d) ** 2) / theta_s) / gamma
+    half_period = np.pi / omega_d
+    ts = res.settle_time[:3]
+    # resolution one step (1 ms) plus the O(θ₀²) nonlinear correction
+    assert np.all(ts <= envelope + 2e-3) and np.all(ts >= envelope - half_period), (ts, envelope)
+    assert res.settle_time[3] == 0.0
+    assert np.allclose(res.summary["max_sway"], theta0, rtol=1e-6)
+    # undamped: outside the band at the end, never settles
+    ideal = pl.Pendulum(length=1.0, g=g)
+    res = pl.simulate_ensemble(
+        ideal, pl.states_from_angles(ideal, theta=[0.02]), t_end=2.0, settle_angle=theta_s
+    )
+    assert res.settle_time is not None and np.isinf(res.settle_time[0])
+
+
+def test_non_finite_rows_are_reported_per_row(pendulum: pl.Pendulum) -> None:
+    """A NaN or inf start row does not stop the run: its results are NaN, the others are exact."""
+    states = pl.states_from_angles(pendulum, theta=[0.3, 0.5, 0.7, 0.9])
+    bad = states.copy()
+    bad[1, 4] = np.nan
+    bad[3, 0] = np.inf
+    with pytest.warns(RuntimeWarning, match=r"2 of 4 start rows are not finite \(rows 1, 3\)"):
+        res = pl.simulate_ensemble(pendulum, bad, t_end=0.5, settle_angle=0.1, damping=[0.1, 0.2, 0.3, 0.4])
+    ref = pl.simulate_ensemble(pendulum, states[[0, 2]], t_end=0.5, settle_angle=0.1, damping=[0.1, 0.3])
+    assert list(res.invalid_rows) == [1, 3] and res.x.shape == (4, 2, 3)
+    assert np.isnan(res.x[[1, 3]]).all() and np.array_equal(res.x[[0, 2]], ref.x)
+    assert res.summary is not None and ref.summary is not None and res.settle_time is not None
+    assert np.array_equal(res.summary["max_sway"][[0, 2]], ref.summary["max_sway"])
+    assert np.isnan(res.settle_time[1]) and np.isnan(res.summary["energy_drift"][3])
+    with pytest.raises(pl.InvalidInputError, match="every start row is non-finite"):
+        pl.simulate_ensemble(pendulum, np.full((2, 6), np.nan), t_end=0.5)
+
+
+def test_save_rules_combine(pendulum: pl.Pendulum) -> None:
+    """pl.Save.final() | pl.Save.every(n) | pl.Save.summary() is the same run as the keywords."""
+    states = pl.states_from_angles(pendulum, theta=[0.4, 1.2])
+    res = pl.simulate_ensemble(
+        pendulum, states, t_end=1.0, save=pl.Save.final() | pl.Save.every(250) | pl.Save.summary()
+    )
+    ref = pl.simulate_ensemble(pendulum, states, t_end=1.0, save_every=250, summary=True)
+    assert res.x.shape == (2, 5, 3) and np.array_equal(res.x, ref.x) and res.summary is not None
+    only = pl.simulate_ensemble(pendulum, states, t_end=1.0, save=pl.Save.final())
+    assert only.x.shape == (2, 2, 3) and only.summary is None
+    assert repr(pl.Save.every(3) | pl.Save.summary()) == "Save.final() | Save.every(3) | Save.summary()"
+    with pytest.raises(pl.InvalidInputError, match="give one interval"):
+        pl.Save.every(2) | pl.Save.every(3)
+    with pytest.raises(pl.InvalidInputError, match=r"Save.every\(0\)"):
+        pl.Save.every(0)
+    with pytest.raises(pl.InvalidInputError, match="method = 'rk4'"):
+        pl.simulate_ensemble(pendulum, states, t_end=1.0, method="rk4")
+    with pytest.raises(pl.InvalidInputError, match="not both"):
+        pl.simulate_ensemble(pendulum, states, t_end=1.0, save=pl.Save.final(), save_every=10)

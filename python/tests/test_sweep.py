@@ -280,6 +280,25 @@ def test_example_sweep_files() -> None:
     assert np.isfinite(w).all() and np.abs(w).min() > 0.5 and np.abs(w).max() < 1.0  # Puiseux: 1/2 < |W| < 1
     sway = load_sweep_file(EXAMPLES / "sway.toml")
     assert sway.design.names == ("theta0", "length") and sway.sweep_kwargs()["t_end"] == 20.0
+    settle = load_sweep_file(EXAMPLES / "crane_settle.toml")
+    assert settle.design.names == ("theta0", "damping") and settle.sweep_kwargs()["settle_angle"] == 0.01745
+
+
+def test_settle_time_over_damping_and_start() -> None:
+    """settle_time over a damping x theta0 grid equals simulate_ensemble with per-trajectory damping
+    and a settle angle, point by point; more damping settles sooner, a bigger swing later."""
+    grid = {"damping": [0.2, 0.5, 1.0], "theta0": [0.05, 0.2, 0.6]}
+    res = pl.sweep(grid, "settle_time", t_end=40.0, dt=1e-3, settle_angle=0.02, chunk_size=4)
+    c, th = (a.ravel() for a in np.meshgrid(grid["damping"], grid["theta0"], indexing="ij"))
+    p = pl.Pendulum()
+    ens = pl.simulate_ensemble(
+        p, pl.states_from_angles(p, theta=th), 40.0, damping=c, settle_angle=0.02, summary=False
+    )
+    assert ens.settle_time is not None
+    assert np.array_equal(res["settle_time"], ens.settle_time)
+    ts = res["settle_time"].reshape(3, 3)
+    assert np.isfinite(ts).all() and np.all(np.diff(ts, axis=0) < 0) and np.all(np.diff(ts, axis=1) > 0), ts
+    assert res.units["settle_time"] == "s"
 
 
 @pytest.mark.parametrize(
@@ -302,7 +321,18 @@ def test_example_sweep_files() -> None:
         (lambda: pl.sweep({"theta0": [1.0]}, "period", resume=True), ["resume=True needs out"]),
         (
             lambda: pl.sweep({"theta0": [1.0]}, "period", pendulum=pl.Pendulum(damping=0.1)),
-            ["ideal", "damped"],
+            ["period come from the exact solution of the undamped pendulum"],
+        ),
+        (
+            lambda: pl.sweep({"theta0": [1.0]}, "max_sway", t_end=1.0, pendulum=pl.Pendulum(drag=0.1)),
+            ["optionally with linear damping", "drag=0.1"],
+        ),
+        (lambda: pl.sweep({"damping": [0.1]}, "rotation_number"), ["undamped"]),
+        (lambda: pl.sweep({"damping": [0.1, -1.0]}, "max_sway", t_end=1.0), ["[1] = -1.0 1/s", ">= 0"]),
+        (lambda: pl.sweep({"theta0": [1.0]}, "settle_time", t_end=1.0), ["needs settle_angle"]),
+        (
+            lambda: pl.sweep({"theta0": [1.0]}, "settle_time", t_end=1.0, settle_angle=4.0),
+            ["settle_angle = 4.0", "(0, π)"],
         ),
         (lambda: pl.sweep([1.0, 2.0], "period"), ["got list"]),
         (lambda: pl.sweep_design.random(0, {"theta0": (0, 1)}), ["n = 0"]),

@@ -1,9 +1,13 @@
-//! Many ideal pendulums at once with RATTLE (T-2.1, T-2.2; the same step as `integrate/rattle.rs`,
+//! Many pendulums at once with RATTLE (T-2.1, T-2.2; the same step as `integrate/rattle.rs`,
 //! operation for operation, so each trajectory gets the single-trajectory numbers exactly):
 //!
 //!   v½ = v₀ − (h/2) g e₃ + μ x₀ (|x₁| = l),  x₁ = x₀ + h v½,  v₁ = v½ − (h/2) g e₃ − x₁ (x₁·u)/l²,
 //!
-//! with Kahan-compensated updates. Layout: blocks of [`LANES`] trajectories in structure-of-arrays
+//! with Kahan-compensated updates. Optional linear damping c [1/s] (force −m c v, T-7.1) enters as in
+//! the single-trajectory path of the `damped` model: the exact damping flow v ↦ e^{−c h/2} v before
+//! and after each step (Strang splitting, conformal symplectic). Optional settle tracking records, per
+//! trajectory, the time after which the sway angle from the stable equilibrium −sign(g) e₃ stays at
+//! or below a threshold (cos sway = −sign(g) z/l; resolution one step). Layout: blocks of [`LANES`] trajectories in structure-of-arrays
 //! form (each coordinate a fixed-size array), so the lane loop has no branches and the compiler
 //! vectorises it; blocks run in parallel with rayon (feature `parallel`). Per-trajectory length l [m]
 //! and gravity g [m/s²]. Memory is bounded by what is saved (final state, every n-th step, or a
@@ -31,6 +35,14 @@ struct Block {
     cv: [Lanes; 3],
     length: Lanes,
     g: Lanes,
+    /// e^{−c dt/2} per lane (1 without damping) and whether any lane is damped.
+    decay_half: Lanes,
+    damped: bool,
+    /// −sign(g)/l per lane (cos sway = z · down) and cos of the settle threshold.
+    down: Lanes,
+    cos_settle: Lanes,
+    /// Index of the last sample whose sway exceeded the threshold (−1: none).
+    last_out: Lanes,
     /// Number of real lanes (the rest repeat lane 0 and are ignored).
     len: usize,
     /// Per-lane summary: min z, max z, min E/m, max E/m, min J₃/m, max J₃/m.
@@ -46,9 +58,42 @@ fn kahan(s: f64, d: f64, c: &mut f64) -> f64 {
 }
 
 impl Block {
-    /// One RATTLE step of every lane (identical arithmetic to `Rattle::advance` for f = −g e₃).
+    /// One step of every lane (identical arithmetic to `Rattle::advance` for f = −g e₃, with the
+    /// damping flow on either side when a lane is damped).
     #[inline(always)]
     fn step(&mut self, h: f64) {
+        if self.damped {
+            self.decay();
+        }
+        self.rattle(h);
+        if self.damped {
+            self.decay();
+        }
+    }
+
+    /// The exact flow of linear damping for dt/2: v ↦ e^{−c dt/2} v (the `damped` model's
+    /// `velocity_flow` without drag or frame rotation, same arithmetic).
+    #[inline(always)]
+    fn decay(&mut self) {
+        for c in 0..3 {
+            for i in 0..LANES {
+                self.v[c][i] *= self.decay_half[i];
+            }
+        }
+    }
+
+    /// Records sample `k` as outside the settle band where the sway exceeds the threshold.
+    #[inline(always)]
+    fn track_settle(&mut self, k: f64) {
+        for i in 0..LANES {
+            let out = self.x[2][i] * self.down[i] < self.cos_settle[i];
+            self.last_out[i] = if out { k } else { self.last_out[i] };
+        }
+    }
+
+    /// One undamped RATTLE step of every lane.
+    #[inline(always)]
+    fn rattle(&mut self, h: f64) {
         let half = 0.5 * h;
         for i in 0..LANES {
             let l = self.length[i];
@@ -137,10 +182,25 @@ pub struct EnsembleResult {
     pub states: Vec<Vec<State>>,
     /// Per-trajectory extremes (when requested).
     pub summary: Option<Vec<Summary>>,
+    /// Per trajectory (with [`Extras::settle_angle`]): the time [s] after which the sway stayed at or
+    /// below the threshold until the end of the run (0: never above; +∞: above at the last step; to
+    /// within one step dt).
+    pub settle_time: Option<Vec<f64>>,
     /// True when the cancel flag stopped the run early (states are those reached).
     pub cancelled: bool,
     /// Steps taken by every trajectory.
     pub steps: u64,
+}
+
+/// Optional per-trajectory extras of an ensemble run ([`run_with`]).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Extras<'a> {
+    /// Linear damping c [1/s] (force −m c v, T-7.1): empty (undamped), one value for all
+    /// trajectories, or one per trajectory; each ≥ 0 and finite.
+    pub damping: &'a [f64],
+    /// Sway angle [rad] in (0, π) from the stable equilibrium at or below which a trajectory counts as
+    /// settled; when given, the result holds each trajectory's settle time.
+    pub settle_angle: Option<f64>,
 }
 
 /// Integrates `starts` (with per-trajectory `length` [m] and `g` [m/s²], each of length 1 — broadcast
@@ -158,9 +218,27 @@ pub fn run(
     progress: &AtomicU64,
     cancel: &AtomicBool,
 ) -> Result<EnsembleResult> {
+    run_with(starts, length, g, &Extras::default(), dt, n_steps, save, with_summary, progress, cancel)
+}
+
+/// [`run`] with damping and settle tracking ([`Extras`]).
+#[allow(clippy::too_many_arguments)]
+pub fn run_with(
+    starts: &[State],
+    length: &[f64],
+    g: &[f64],
+    extras: &Extras<'_>,
+    dt: f64,
+    n_steps: u64,
+    save: EnsembleSave,
+    with_summary: bool,
+    progress: &AtomicU64,
+    cancel: &AtomicBool,
+) -> Result<EnsembleResult> {
     let n = starts.len();
     crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
-    for (name, a) in [("length", length), ("g", g)] {
+    let damping: &[f64] = if extras.damping.is_empty() { &[0.0] } else { extras.damping };
+    for (name, a) in [("length", length), ("g", g), ("damping", damping)] {
         if a.len() != 1 && a.len() != n {
             return Err(Error::InvalidParameter {
                 name,
@@ -173,7 +251,27 @@ pub fn run(
     for (k, s) in starts.iter().enumerate() {
         let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
         State::on_tangent_bundle(&p, s.x, s.v)?;
+        let c = pick(damping, k);
+        if !c.is_finite() || c < 0.0 {
+            return Err(Error::InvalidParameter {
+                name: "damping",
+                value: c,
+                allowed: "a finite damping rate c >= 0 [1/s]",
+            });
+        }
     }
+    let cos_settle = match extras.settle_angle {
+        None => f64::NEG_INFINITY,
+        Some(a) if a.is_finite() && a > 0.0 && a < std::f64::consts::PI => a.cos(),
+        Some(a) => {
+            return Err(Error::InvalidParameter {
+                name: "settle_angle",
+                value: a,
+                allowed: "a sway angle in (0, π) rad",
+            })
+        }
+    };
+    let track = extras.settle_angle.is_some();
     let every = match save {
         EnsembleSave::Final => n_steps.max(1),
         EnsembleSave::Every(0) => {
@@ -197,12 +295,20 @@ pub fn run(
                 cv: [[0.0; LANES]; 3],
                 length: lanes(&|k| pick(length, k)),
                 g: lanes(&|k| pick(g, k)),
+                decay_half: lanes(&|k| (-pick(damping, k) * (0.5 * dt)).exp()),
+                damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
+                down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
+                cos_settle: [cos_settle; LANES],
+                last_out: [-1.0; LANES],
                 len,
                 summary: std::array::from_fn(|r| {
                     [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
                 }),
             };
             blk.update_summary();
+            if track {
+                blk.track_settle(0.0);
+            }
             blk
         })
         .collect();
@@ -211,10 +317,13 @@ pub fn run(
         let mut done = 0u64;
         while done < n_steps {
             let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
-            for _ in 0..chunk {
+            for j in 1..=chunk {
                 blk.step(dt);
                 if with_summary {
                     blk.update_summary();
+                }
+                if track {
+                    blk.track_settle((done + j) as f64);
                 }
             }
             done += chunk;
@@ -267,5 +376,21 @@ pub fn run(
             })
             .collect()
     });
-    Ok(EnsembleResult { t, states, summary, cancelled, steps })
+    let settle_time = track.then(|| {
+        blocks
+            .iter()
+            .flat_map(|b| {
+                (0..b.len).map(|i| {
+                    let k = b.last_out[i];
+                    // outside at the last sample: not settled within the run
+                    if k >= steps as f64 {
+                        f64::INFINITY
+                    } else {
+                        (k + 1.0) * dt
+                    }
+                })
+            })
+            .collect()
+    });
+    Ok(EnsembleResult { t, states, summary, settle_time, cancelled, steps })
 }

@@ -72,3 +72,98 @@ fn bad_input_is_named() {
     assert!(e(run(&s, &[2.0], &[9.81], 1e-3, 10, EnsembleSave::Final, false, &p, &c)).contains("TS"));
     assert!(e(run(&s, &[1.0], &[9.81], 50.0, 10, EnsembleSave::Final, false, &p, &c)).contains("non-finite"));
 }
+
+#[test]
+fn damped_trajectories_match_the_damped_model_bit_for_bit() {
+    use pendulab_core::ensemble::{run_with, Extras};
+    use pendulab_core::model::AnyModel;
+    use pendulab_core::Params;
+    let n = LANES + 5;
+    let s = starts(n, 1.0);
+    // per-trajectory damping, including undamped lanes inside a damped block
+    let damping: Vec<f64> =
+        (0..n).map(|k| if k % 3 == 0 { 0.0 } else { 0.05 * k as f64 / n as f64 }).collect();
+    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+    let extras = Extras { damping: &damping, settle_angle: None };
+    let res =
+        run_with(&s, &[1.0], &[9.81], &extras, 1e-3, 2000, EnsembleSave::Every(500), true, &p, &c).unwrap();
+    for k in [0, 1, 2, LANES - 1, LANES, n - 1] {
+        let params = Params::new(1.0, 1.0, 9.81).unwrap();
+        let m = AnyModel::build("damped", params, &[("damping", damping[k])]).unwrap();
+        let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..SolveOptions::default() };
+        let mut st = Stepper::new(m, 0.0, s[k], &opts).unwrap();
+        for (j, &t) in res.t.iter().enumerate() {
+            st.step_to(t).unwrap();
+            assert_eq!(res.states[k][j], *st.state(), "trajectory {k} (c = {}) at t = {t}", damping[k]);
+        }
+    }
+    // energy decays where c > 0 (E/m max is the start, min is far below it)
+    let sum = res.summary.unwrap();
+    assert!(sum[1].energy_per_mass.1 - sum[1].energy_per_mass.0 > 1e-4);
+}
+
+/// θ(t) of the linearised damped pendulum θ'' + c θ' + ω₀² θ = 0 from θ₀ at rest.
+fn linear_sway(theta0: f64, c: f64, omega0: f64, t: f64) -> f64 {
+    let gamma = 0.5 * c;
+    let wd = (omega0 * omega0 - gamma * gamma).sqrt();
+    theta0 * (-gamma * t).exp() * ((wd * t).cos() + gamma / wd * (wd * t).sin())
+}
+
+#[test]
+fn settle_time_of_a_small_damped_swing_matches_linear_theory() {
+    use pendulab_core::ensemble::{run_with, Extras};
+    let (g, l, c, theta_s, dt) = (9.81, 1.0, 0.2, 0.003, 1e-3);
+    let thetas = [0.01, 0.007, 0.002];
+    let p0 = IdealPendulum::new(l, 1.0, g).unwrap();
+    let s: Vec<State> =
+        thetas.iter().map(|&th| State::from_angles(p0.params(), th, 0.4, 0.0, 0.0).unwrap()).collect();
+    let (p, cn) = (AtomicU64::new(0), AtomicBool::new(false));
+    let extras = Extras { damping: &[c], settle_angle: Some(theta_s) };
+    let res = run_with(&s, &[l], &[g], &extras, dt, 40_000, EnsembleSave::Final, false, &p, &cn).unwrap();
+    let settle = res.settle_time.unwrap();
+    for (k, &th0) in thetas.iter().enumerate() {
+        let omega0 = (g / l).sqrt();
+        // last time the linear sway exceeds the threshold, on a fine grid
+        let expected = if th0 <= theta_s {
+            0.0
+        } else {
+            let h = 1e-5;
+            let last =
+                (0..4_000_000).rev().find(|&i| linear_sway(th0, c, omega0, i as f64 * h).abs() > theta_s);
+            (last.unwrap() as f64 + 1.0) * h
+        };
+        // nonlinear corrections O(θ₀²) shift the crossing by ≲ 1e-4 s here; resolution is one step
+        assert!(
+            (settle[k] - expected).abs() <= dt + 5e-4,
+            "θ₀ = {th0}: settle time {} s, linear theory {expected} s",
+            settle[k]
+        );
+    }
+    assert!(settle[0] > 10.0, "the damped swing must take a while to settle: {}", settle[0]);
+    // undamped: a swing outside the band never settles; one inside is settled from the start
+    let extras = Extras { damping: &[], settle_angle: Some(theta_s) };
+    let res = run_with(&s, &[l], &[g], &extras, dt, 5000, EnsembleSave::Final, false, &p, &cn).unwrap();
+    let settle = res.settle_time.unwrap();
+    assert!(settle[0].is_infinite() && settle[2] == 0.0, "{settle:?}");
+    // negative g: the stable equilibrium is on top, the sway is measured from there
+    let up: Vec<State> = s.iter().map(|st| State { x: -st.x, v: -st.v }).collect();
+    let res = run_with(&up, &[l], &[-g], &extras, dt, 100, EnsembleSave::Final, false, &p, &cn).unwrap();
+    assert_eq!(res.settle_time.unwrap()[2], 0.0);
+}
+
+#[test]
+fn bad_damping_and_settle_angle_are_named() {
+    use pendulab_core::ensemble::{run_with, Extras};
+    let s = starts(3, 1.0);
+    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+    let go = |extras: Extras<'_>| {
+        run_with(&s, &[1.0], &[9.81], &extras, 1e-3, 10, EnsembleSave::Final, false, &p, &c)
+            .unwrap_err()
+            .to_string()
+    };
+    assert!(go(Extras { damping: &[-0.1], settle_angle: None }).contains("damping"));
+    assert!(go(Extras { damping: &[f64::NAN], settle_angle: None }).contains("damping"));
+    assert!(go(Extras { damping: &[0.1, 0.2], settle_angle: None }).contains("damping"));
+    assert!(go(Extras { damping: &[], settle_angle: Some(0.0) }).contains("settle_angle"));
+    assert!(go(Extras { damping: &[], settle_angle: Some(4.0) }).contains("settle_angle"));
+}
