@@ -13,9 +13,11 @@ NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C sto
 
 from __future__ import annotations
 
+import os
 import time
 import warnings
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -61,6 +63,19 @@ class EnsembleResult:
     def final_v(self) -> FloatArray:
         """Final velocities (N, 3) [m/s]."""
         return self.v[:, -1, :]
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` with dims (trajectory, time, axis), units as attributes
+        (:mod:`pendulab.ensemble_io`)."""
+        from . import ensemble_io
+
+        return ensemble_io.to_xarray(self)
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Writes the arrays to ``path``: ``.nc`` (NetCDF) or ``.zarr`` (a Zarr store), atomically."""
+        from . import ensemble_io
+
+        return ensemble_io.save(self, path)
 
 
 def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:

@@ -4,6 +4,9 @@ and bad input. Units SI; l = 1 m, g = 9.81 m/s²."""
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -142,3 +145,39 @@ def test_save_rules_combine(pendulum: pl.Pendulum) -> None:
         pl.simulate_ensemble(pendulum, states, t_end=1.0, method="rk4")
     with pytest.raises(pl.InvalidInputError, match="not both"):
         pl.simulate_ensemble(pendulum, states, t_end=1.0, save=pl.Save.final(), save_every=10)
+
+
+@pytest.mark.parametrize("suffix", [".nc", ".zarr"])
+def test_arrays_to_xarray_netcdf_and_zarr(pendulum: pl.Pendulum, tmp_path: Path, suffix: str) -> None:
+    """save() writes x, v, the summary and settle times with units; reading back gives the same numbers."""
+    xr = pytest.importorskip("xarray")
+    states = pl.states_from_angles(pendulum, theta=[0.3, 0.6, 0.9])
+    states[1, 0] = np.nan
+    with pytest.warns(RuntimeWarning, match="not finite"):
+        res = pl.simulate_ensemble(
+            pendulum,
+            states,
+            t_end=1.0,
+            damping=0.5,
+            settle_angle=0.2,
+            save=pl.Save.every(100) | pl.Save.summary(),
+        )
+    ds = res.to_xarray()
+    assert ds["x"].dims == ("trajectory", "time", "axis") and ds["x"].attrs["units"] == "m"
+    assert ds["settle_time"].attrs["units"] == "s" and list(ds["valid"].values) == [True, False, True]
+    path = res.save(tmp_path / f"ens{suffix}")
+    back = xr.open_zarr(path) if suffix == ".zarr" else xr.open_dataset(path)
+    try:
+        np.testing.assert_array_equal(back["x"].values, res.x)
+        np.testing.assert_array_equal(back["time"].values, res.t)
+        assert res.summary is not None and res.settle_time is not None
+        np.testing.assert_array_equal(back["max_sway"].values, res.summary["max_sway"])
+        np.testing.assert_array_equal(back["settle_time"].values, res.settle_time)
+        assert back["v"].attrs["units"] == "m/s"
+        assert json.loads(back.attrs["pendulab"])["settle_angle"] == 0.2
+    finally:
+        back.close()
+    res.save(path)  # overwriting a store of ours works
+    assert sorted(p.name for p in tmp_path.iterdir()) == [f"ens{suffix}"]  # no temporary left behind
+    with pytest.raises(ValueError, match=r"use \.nc or \.zarr"):
+        res.save(tmp_path / "ens.csv")

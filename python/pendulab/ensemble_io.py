@@ -1,0 +1,110 @@
+"""Ensemble results as arrays on disk: ``EnsembleResult.to_xarray()`` and ``EnsembleResult.save(path)``.
+
+The dataset has dims ``trajectory`` (N), ``time`` (n_save) and ``axis`` (0, 1, 2 = x, y, z) and holds
+``x`` [m], ``v`` [m/s], ``t`` [s] as the time coordinate, the per-trajectory summary (``z_min``,
+``z_max`` [m], ``e_min``, ``e_max`` [J/kg], ``j3_min``, ``j3_max`` [m²/s], ``energy_drift`` [1],
+``j3_drift`` [m²/s], ``max_sway`` [rad]) and ``settle_time`` [s] when they were asked for, a
+``valid`` flag per trajectory (False for non-finite start rows), and the run's settings as JSON in
+``attrs["pendulab"]``. Formats by suffix: ``.nc`` (NetCDF 3 through SciPy) and ``.zarr`` (a Zarr
+store, chunked by trajectory, for runs larger than memory readers want to load at once). Both are
+written atomically: to a temporary name beside the target, renamed when complete. Read them back
+with ``xarray.open_dataset(path)`` or ``xarray.open_zarr(path)``.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import json
+import os
+import shutil
+import tempfile
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from . import io
+
+if TYPE_CHECKING:
+    from .ensemble import EnsembleResult
+
+SUMMARY_UNITS = {
+    "z_min": "m",
+    "z_max": "m",
+    "e_min": "J/kg",
+    "e_max": "J/kg",
+    "j3_min": "m^2/s",
+    "j3_max": "m^2/s",
+    "energy_drift": "1",
+    "j3_drift": "m^2/s",
+    "max_sway": "rad",
+}
+
+ARRAY_SUFFIXES = (".nc", ".zarr")
+
+
+def to_xarray(res: EnsembleResult) -> Any:
+    """The result as an ``xarray.Dataset`` (see the module doc for variables and units)."""
+    xr = io._require("xarray")
+    n = len(res)
+    valid = np.ones(n, dtype=bool)
+    valid[res.invalid_rows] = False
+    data: dict[str, Any] = {
+        "x": (("trajectory", "time", "axis"), res.x, {"units": "m", "long_name": "bob position (x, y, z)"}),
+        "v": (("trajectory", "time", "axis"), res.v, {"units": "m/s", "long_name": "bob velocity (x, y, z)"}),
+        "valid": ("trajectory", valid, {"long_name": "start row was finite and was integrated"}),
+    }
+    for name, values in (res.summary or {}).items():
+        data[name] = ("trajectory", values, {"units": SUMMARY_UNITS.get(name, "1")})
+    if res.settle_time is not None:
+        long = "time after which the sway stays within the settle angle (inf: not settled)"
+        data["settle_time"] = ("trajectory", res.settle_time, {"units": "s", "long_name": long})
+    coords = {
+        "trajectory": np.arange(n),
+        "time": ("time", res.t, {"units": "s"}),
+    }
+    attrs = {
+        "pendulab": json.dumps(res.metadata, sort_keys=True, default=float),
+        "interrupted": int(res.interrupted),
+        "steps": int(res.steps),
+    }
+    return xr.Dataset(data, coords=coords, attrs=attrs)
+
+
+def save(res: EnsembleResult, path: str | os.PathLike[str]) -> Path:
+    """Writes ``res`` to ``path`` (``.nc`` or ``.zarr``) atomically; returns the path."""
+    target = Path(path)
+    suffix = target.suffix.lower()
+    if suffix not in ARRAY_SUFFIXES:
+        raise ValueError(f"unknown ensemble output suffix {suffix!r} in {str(path)!r}; use .nc or .zarr")
+    ds = to_xarray(res)
+    if suffix == ".nc":
+        io._require("scipy")
+        ds = ds.assign(valid=ds["valid"].astype(np.int8))  # NetCDF 3 has no booleans
+        with io.atomic_path(target) as tmp:
+            ds.to_netcdf(tmp, engine="scipy")
+        return target
+    io._require("zarr")
+    if target.exists() and not (target / "zarr.json").exists() and not (target / ".zgroup").exists():
+        raise FileExistsError(f"{str(target)!r} exists and is not a Zarr store: not overwriting it")
+    target.parent.mkdir(parents=True, exist_ok=True)
+    tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent))
+    try:
+        # chunks of whole trajectories, about 8 MiB each for x and v
+        ns = res.x.shape[1]
+        chunk = max(1, min(len(res), 2**20 // (3 * max(1, ns))))
+        encoding = {k: {"chunks": (chunk, ns, 3)} for k in ("x", "v")}
+        # Zarr format 2 with consolidated metadata: readable by every Zarr library and xr.open_zarr
+        ds.to_zarr(tmp, mode="w", encoding=encoding, zarr_format=2, consolidated=True)
+        if target.exists():  # replace an older store: move it aside, then swap
+            old = tmp.with_name(tmp.name + ".old")
+            target.rename(old)
+            tmp.rename(target)
+            shutil.rmtree(old, ignore_errors=True)
+        else:
+            tmp.rename(target)
+    except BaseException:
+        with contextlib.suppress(FileNotFoundError):
+            shutil.rmtree(tmp)
+        raise
+    return target
