@@ -358,3 +358,14 @@ def test_conserve_is_refused_when_damping_makes_e_and_j3_decay() -> None:
     spinning = pl.Pendulum(model="rotating", frame_rate=0.5)  # conservative: conserve stays allowed
     tr = pl.simulate(spinning, spinning.state_from_angles(*ROSETTE), 1.0, method="dop853", conserve=True)
     assert np.max(np.abs(tr.energy - tr.energy[0])) < 1e-12
+
+
+def test_forcing_direction_defaults_only_when_no_component_is_given() -> None:
+    """Regression: ``forcing_y=1`` alone is a force along e₂ (it used to be normalised together with
+    the default forcing_x = 1 into a diagonal); the power F·v at a state moving along e₂ says so."""
+    state = pl.Pendulum().state([0.0, 0.0, -1.0], [0.0, 1.0, 0.0])
+    amp = {"forcing_amplitude": 2.0, "forcing_omega": 0.0}
+    assert pl.Pendulum(**amp, forcing_y=1.0).power(state) == pytest.approx(2.0, abs=1e-15)
+    assert pl.Pendulum(**amp).power(state) == 0.0  # default e₁, perpendicular to v
+    diagonal = pl.Pendulum(**amp, forcing_x=1.0, forcing_y=1.0).power(state)
+    assert diagonal == pytest.approx(2.0 / math.sqrt(2.0), rel=1e-15)

@@ -199,3 +199,27 @@ fn bad_parameters_are_named() {
     let angles = Stepper::new(build("damped", &[("damping", 0.1)]), 0.0, s0, &opts(Method::Rk4Angles, 1e-3));
     assert!(angles.unwrap_err().to_string().contains("rk4_angles"));
 }
+
+#[test]
+fn direction_components_default_only_when_none_is_given() {
+    // Regression: forcing_y = 1 alone used to be normalised together with the default forcing_x = 1
+    // into a diagonal force (e₁ + e₂)/√2. Now the default direction applies only when no component is
+    // given; otherwise omitted components are 0.
+    let force = |extra: &[(&str, f64)]| {
+        let mut all = vec![("forcing_amplitude", 2.0), ("forcing_omega", 0.0)];
+        all.extend_from_slice(extra);
+        let m = build("damped", &all);
+        let bottom = DVec3::new(0.0, 0.0, -1.0);
+        m.applied_acceleration(0.0, bottom, DVec3::ZERO) - DVec3::new(0.0, 0.0, -9.81)
+    };
+    assert_eq!(force(&[]), DVec3::new(2.0, 0.0, 0.0));
+    assert_eq!(force(&[("forcing_y", 1.0)]), DVec3::new(0.0, 2.0, 0.0));
+    assert_eq!(force(&[("forcing_z", -3.0)]), DVec3::new(0.0, 0.0, -2.0));
+    let diagonal = force(&[("forcing_x", 1.0), ("forcing_y", 1.0)]);
+    assert!((diagonal - DVec3::new(2.0, 2.0, 0.0) / 2f64.sqrt()).length() < 1e-15);
+    // the same rule for gravity: gravity_x alone is gravity along +e₁, not (e₁ − e₃)/√2
+    let g = |extra: &[(&str, f64)]| build("damped", extra).applied_acceleration(0.0, DVec3::X, DVec3::ZERO);
+    assert_eq!(g(&[]), DVec3::new(0.0, 0.0, -9.81));
+    assert_eq!(g(&[("gravity_x", 1.0)]), DVec3::new(9.81, 0.0, 0.0));
+    assert!(AnyModel::build("damped", params(), &[("forcing_x", 0.0)]).is_err(), "zero direction");
+}

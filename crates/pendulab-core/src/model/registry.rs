@@ -84,9 +84,21 @@ pub const COMMON: &[ParamSpec] = &[
 ];
 
 const GRAVITY_DIR: [ParamSpec; 3] = [
-    p("gravity_x", "1", 0.0, -INF, "gravity direction, x component (normalised)"),
-    p("gravity_y", "1", 0.0, -INF, "gravity direction, y component"),
-    p("gravity_z", "1", -1.0, -INF, "gravity direction, z component"),
+    p(
+        "gravity_x",
+        "1",
+        0.0,
+        -INF,
+        "gravity direction d, x component (d normalised; −e₃ if no component is given, else 0 if omitted)",
+    ),
+    p("gravity_y", "1", 0.0, -INF, "gravity direction d, y component (0 if omitted)"),
+    p(
+        "gravity_z",
+        "1",
+        -1.0,
+        -INF,
+        "gravity direction d, z component (−1 if no component is given, else 0 if omitted)",
+    ),
 ];
 
 const DAMPED: &[ParamSpec] = &[
@@ -95,9 +107,15 @@ const DAMPED: &[ParamSpec] = &[
     p("forcing_amplitude", "m/s^2", 0.0, 0.0, "periodic force per unit mass A in A cos(ω t + ψ) e"),
     p("forcing_omega", "rad/s", 0.0, -INF, "forcing angular frequency ω"),
     p("forcing_phase", "rad", 0.0, -INF, "forcing phase ψ"),
-    p("forcing_x", "1", 1.0, -INF, "forcing direction e, x component (normalised)"),
-    p("forcing_y", "1", 0.0, -INF, "forcing direction e, y component"),
-    p("forcing_z", "1", 0.0, -INF, "forcing direction e, z component"),
+    p(
+        "forcing_x",
+        "1",
+        1.0,
+        -INF,
+        "forcing direction e, x component (e normalised; e₁ if no component is given, else 0 if omitted)",
+    ),
+    p("forcing_y", "1", 0.0, -INF, "forcing direction e, y component (0 if omitted)"),
+    p("forcing_z", "1", 0.0, -INF, "forcing direction e, z component (0 if omitted)"),
     GRAVITY_DIR[0],
     GRAVITY_DIR[1],
     GRAVITY_DIR[2],
@@ -186,6 +204,7 @@ impl AnyModel {
     pub fn build(name: &str, params: Params, extra: &[(&str, f64)]) -> Result<Self> {
         let spec = spec(name)?;
         let mut values: Vec<f64> = spec.params.iter().map(|p| p.default).collect();
+        let mut given = vec![false; values.len()];
         for &(key, value) in extra {
             let Some(i) = spec.params.iter().position(|p| p.name == key) else {
                 return Err(Error::UnknownParameter {
@@ -199,9 +218,28 @@ impl AnyModel {
                 return Err(Error::InvalidParameter { name: ps.name, value, allowed: ps.allowed });
             }
             values[i] = value;
+            given[i] = true;
         }
+        let index = |k: &str| spec.params.iter().position(|p| p.name == k).unwrap();
         let get = |k: &str| spec.params.iter().position(|p| p.name == k).map(|i| values[i]);
-        let vec = |a: &str, b: &str, c: &str| DVec3::new(get(a).unwrap(), get(b).unwrap(), get(c).unwrap());
+        // A direction given by components: the default vector when no component is given; otherwise
+        // exactly the given components, the omitted ones 0 (so forcing_y = 1 alone means e₂, not a
+        // diagonal normalised together with the default e₁).
+        let vec = |a: &str, b: &str, c: &str| {
+            let (i, j, k) = (index(a), index(b), index(c));
+            let pick = |n: usize| {
+                if given[i] || given[j] || given[k] {
+                    if given[n] {
+                        values[n]
+                    } else {
+                        0.0
+                    }
+                } else {
+                    values[n]
+                }
+            };
+            DVec3::new(pick(i), pick(j), pick(k))
+        };
         Ok(match spec.name {
             "ideal" => AnyModel::Ideal(IdealPendulum::from_params(params)),
             "damped" => AnyModel::Extended(
