@@ -137,6 +137,16 @@ pub enum Error {
         /// Model name.
         model: &'static str,
     },
+    /// A hybrid model (taut and slack phases) given to the plain stepper.
+    #[error(
+        "the '{model}' model is hybrid (the string goes slack and snaps taut again): it has its own \
+             driver — pendulab.simulate in Python, pendulab run for scenario files, \
+             pendulab_core::model::string_run in Rust — not the incremental stepper"
+    )]
+    HybridModel {
+        /// Model name.
+        model: &'static str,
+    },
     /// The save times are not usable.
     #[error("invalid save times: {reason}")]
     InvalidSaveTimes {

@@ -194,7 +194,7 @@ fn bad_parameters_are_named() {
     assert!(e("rotating", &[("latitude", 2.0)]).contains("latitude"));
     let unknown = e("damped", &[("dampnig", 0.1)]);
     assert!(unknown.contains("dampnig") && unknown.contains("damping"), "{unknown}");
-    assert!(e("spring", &[]).contains("ideal"));
+    assert!(e("springy", &[]).contains("ideal"));
     let (_, s0) = rosette();
     let angles = Stepper::new(build("damped", &[("damping", 0.1)]), 0.0, s0, &opts(Method::Rk4Angles, 1e-3));
     assert!(angles.unwrap_err().to_string().contains("rk4_angles"));

@@ -4,7 +4,7 @@
 //! [m/s²]; the extra parameters switch on the terms of [`Extended`] (THEORY.md §7).
 
 use super::pivot::{MovingPivot, PivotPath};
-use super::{Extended, IdealPendulum, Model};
+use super::{Extended, IdealPendulum, Model, StringPendulum};
 use crate::error::{Error, Result};
 use crate::state::{Params, State};
 use glam::DVec3;
@@ -148,6 +148,17 @@ const VIBRATING: &[ParamSpec] = &[
     p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
 ];
 
+const STRING: &[ParamSpec] = &[ParamSpec {
+    name: "restitution",
+    unit: "1",
+    default: 0.0,
+    min: 0.0,
+    max: 1.0,
+    description: "restitution e of the snap when the slack string goes taut: v_radial -> -e v_radial \
+                  (0 inelastic, 1 elastic)",
+    allowed: "a number in [0, 1]",
+}];
+
 /// Every registered model.
 pub const MODELS: &[ModelSpec] = &[
     ModelSpec { name: "ideal", summary: "the ideal spherical pendulum (THEORY §2)", params: &[] },
@@ -166,6 +177,11 @@ pub const MODELS: &[ModelSpec] = &[
         name: "vibrating",
         summary: "vertically vibrated pivot (Kapitza's inverted pendulum, T-7.2)",
         params: VIBRATING,
+    },
+    ModelSpec {
+        name: "string",
+        summary: "a string instead of a rod: slack (free flight) where the tension T-2.3 would be < 0",
+        params: STRING,
     },
 ];
 
@@ -196,6 +212,8 @@ pub enum AnyModel {
     Extended(Extended, &'static str),
     /// A moving pivot.
     Pivot(MovingPivot),
+    /// A string instead of a rod (hybrid: simulated by [`StringPendulum::simulate`]).
+    String(StringPendulum),
 }
 
 impl AnyModel {
@@ -269,6 +287,7 @@ impl AnyModel {
                 },
                 get("damping").unwrap(),
             )?),
+            "string" => AnyModel::String(StringPendulum::new(params, get("restitution").unwrap())?),
             _ => AnyModel::Pivot(MovingPivot::new(
                 params,
                 PivotPath::Vertical {
@@ -287,6 +306,7 @@ macro_rules! both {
             AnyModel::Ideal($m) => $e,
             AnyModel::Extended($m, _) => $e,
             AnyModel::Pivot($m) => $e,
+            AnyModel::String($m) => $e,
         }
     };
 }
@@ -297,6 +317,7 @@ impl Model for AnyModel {
             AnyModel::Ideal(_) => "ideal",
             AnyModel::Extended(_, name) => name,
             AnyModel::Pivot(m) => m.name(),
+            AnyModel::String(m) => m.name(),
         }
     }
     fn params(&self) -> &Params {
@@ -317,6 +338,9 @@ impl Model for AnyModel {
     }
     fn is_ideal(&self) -> bool {
         matches!(self, AnyModel::Ideal(_))
+    }
+    fn is_hybrid(&self) -> bool {
+        both!(self, m => m.is_hybrid())
     }
     #[inline(always)]
     fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {
