@@ -205,3 +205,20 @@ def spring_simulate(
     save_every: int = 1,
     order: int = 2,
 ) -> dict[str, Any]: ...
+
+# --- python/rust/string.rs: the string pendulum (hybrid: taut, slack, snaps) ---
+
+def string_simulate(
+    length: float,
+    mass: float,
+    g: float,
+    restitution: float,
+    x0: FloatArray,
+    v0: FloatArray,
+    t0: float,
+    t_end: float,
+    method: str,
+    dt: float,
+    save_every: int = 1,
+    max_saved_bytes: int | None = None,
+) -> dict[str, Any]: ...

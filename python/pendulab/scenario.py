@@ -564,6 +564,14 @@ class Scenario:
             raise ScenarioError(self.source, f"[pendulum] {e}{given}") from None
         object.__setattr__(self, "_pendulum", pendulum)
         object.__setattr__(self, "_state", self._make_state(pendulum))
+        if pendulum.model == "string":  # hybrid (string_pendulum.py): its own, fewer settings
+            from .string_pendulum import check_string_settings
+
+            try:
+                check_string_settings(sim.method, sim.save_at)
+            except _core.InvalidInputError as e:
+                raise ScenarioError(self.source, f"[simulation] {e}") from None
+            return
         try:  # the core's own up-front checks (memory of the saved samples, save times), no stepping
             _core.Solver(
                 *pendulum._core_args(),

@@ -83,7 +83,27 @@ def simulate(
     progress : show a progress bar (default: only for runs of more than 5·10⁶ steps).
     max_saved_bytes : memory limit for saved samples (default 4 GiB); exceeding it is an error
         raised before the run starts (fixed-step methods) or when reached (``dop853``).
+
+    The ``"string"`` model (a rope that goes slack) is hybrid and runs in
+    :func:`pendulab.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
+    rkmk4 with ``dt`` in the taut phases, ``save_every`` only, in one call (no progress bar).
     """
+    if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
+        from .string_pendulum import check_string_settings, simulate_string
+
+        check_string_settings(method, save_at, conserve)
+        if save_every is not None and (isinstance(save_every, bool) or int(save_every) != save_every):
+            raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+        return simulate_string(
+            pendulum,
+            state,
+            t_end,
+            method=method,
+            dt=dt,
+            save_every=save_every,
+            t0=t0,
+            max_saved_bytes=max_saved_bytes,
+        )
     info = {m["name"]: m for m in _core.methods()}.get(method)
     if info is None:
         raise _core.InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")

@@ -6,6 +6,7 @@
 mod ensemble;
 mod exact;
 mod spring;
+mod string;
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
@@ -472,6 +473,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     exact::register(m)?;
     ensemble::register(m)?;
     spring::register(m)?;
+    string::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
