@@ -222,3 +222,15 @@ def string_simulate(
     save_every: int = 1,
     max_saved_bytes: int | None = None,
 ) -> dict[str, Any]: ...
+
+# --- python/rust/slewing.rs: the linearised slewing crane (T-7.2) ---
+
+def slewing_linear(
+    length: float,
+    g: float,
+    radius: float,
+    rate: float,
+    damping: float,
+    start: list[float],
+    t: FloatArray,
+) -> dict[str, Any]: ...

@@ -34,6 +34,7 @@ UNITS = {
     "power": "W",
     "power_balance_residual": "J",
     "pivot": "m",
+    "boom": "m",
     "taut": "1",
 }
 
@@ -138,6 +139,20 @@ class Trajectory:
         return self._diag.get("pivot")
 
     @property
+    def boom(self) -> FloatArray | None:
+        """The slewing crane (``model="slewing"``): the payload's position relative to the boom tip in
+        the frame turning with the boom [m], (N, 3) = (radial, tangential, vertical) — x rotated by −ωt
+        about e₃. Compare with :func:`pendulab.slewing_sway` (the linear theory, T-7.2). ``None`` for
+        other models."""
+        return self._diag.get("boom")
+
+    @property
+    def sway_angle(self) -> FloatArray:
+        """The cable's angle from the downward vertical [rad] (the polar angle θ; for a moving pivot
+        measured at the pivot)."""
+        return self.theta
+
+    @property
     def theta(self) -> FloatArray:
         """Polar angle from the downward vertical [rad]."""
         return np.arctan2(np.hypot(self.x[:, 0], self.x[:, 1]), -self.x[:, 2])
@@ -194,6 +209,9 @@ class Trajectory:
         if self.pivot is not None:
             for k, axis in enumerate("xyz"):
                 cols[f"pivot_{axis}"] = ("m", self.pivot[:, k])
+        if self.boom is not None:
+            for k, axis in enumerate(("radial", "tangential", "vertical")):
+                cols[f"boom_{axis}"] = ("m", self.boom[:, k])
         if self.taut is not None:
             cols["taut"] = ("1", self.taut.astype(np.float64))
             cols["energy_lost"] = ("J", self.energy_lost)
@@ -215,6 +233,8 @@ class Trajectory:
             )
         if self.pivot is not None:
             extra["pivot"] = (("time", "axis"), self.pivot, {"units": "m", "long_name": "pivot position"})
+        if self.boom is not None:
+            extra["boom"] = (("time", "axis"), self.boom, {"units": "m", "long_name": "x in the boom frame"})
         if self.taut is not None:
             extra["taut"] = ("time", self.taut.astype(np.int8), {"units": "1", "long_name": "string taut"})
             extra["energy_lost"] = ("time", self.energy_lost, {"units": "J", "long_name": "lost in snaps"})

@@ -5,6 +5,7 @@
 
 mod ensemble;
 mod exact;
+mod slewing;
 mod spring;
 mod string;
 
@@ -284,6 +285,17 @@ fn diagnostics<'py>(
             }
         }
         d.set_item("pivot", p.into_pyarray(py))?;
+        // the slewing crane: x in the frame turning with the boom (radial, tangential, vertical)
+        if path.boom_frame(0.0, DVec3::ZERO).is_some() {
+            let mut b = Array2::<f64>::zeros((n, 3));
+            for (i, &ti) in ts.iter().enumerate() {
+                let q = path.boom_frame(ti, DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]])).unwrap();
+                for k in 0..3 {
+                    b[[i, k]] = q[k];
+                }
+            }
+            d.set_item("boom", b.into_pyarray(py))?;
+        }
     }
     Ok(d)
 }
@@ -474,6 +486,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     ensemble::register(m)?;
     spring::register(m)?;
     string::register(m)?;
+    slewing::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -18,6 +18,7 @@ pub mod extended;
 pub mod ideal;
 pub mod pivot;
 pub mod registry;
+pub mod slewing_linear;
 pub mod string;
 pub mod string_run;
 

@@ -55,6 +55,17 @@ impl PivotPath {
             }
         }
     }
+    /// The slewing crane's boom frame: `x` (pivot-relative [m]) at time t [s] rotated by −ωt about e₃,
+    /// i.e. (radial, tangential, vertical) components with respect to the boom; `None` for other paths.
+    pub fn boom_frame(&self, t: f64, x: DVec3) -> Option<DVec3> {
+        match *self {
+            PivotPath::Slewing { rate, .. } => {
+                let (s, c) = (rate * t).sin_cos();
+                Some(DVec3::new(x.x * c + x.y * s, -x.x * s + x.y * c, x.z))
+            }
+            _ => None,
+        }
+    }
     /// Pivot velocity ṗ(t) [m/s].
     pub fn velocity(&self, t: f64) -> DVec3 {
         match *self {

@@ -1,0 +1,86 @@
+"""The slewing crane's linear theory (THEORY.md T-7.2) against the nonlinear model: the closed-form
+static offset ω²R/(ω₀² − ω² + icω) and the track of a damped run, and the natural frequencies ω₀ ± ω
+as the two spectral peaks (FFT) of a small undamped sway; the resonance ω = ω₀ is refused; the
+payload track in the boom frame (``Trajectory.boom``) from Python and in files. SI units."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import pendulab as pl
+
+G = 9.81
+
+
+def test_static_offset_and_damped_track_match_the_nonlinear_model() -> None:
+    p = pl.Pendulum(model="slewing", radius=0.02, rate=0.5, damping=0.2)  # m, rad/s, 1/s
+    s0 = p.state([0.0, 0.0, -1.0], [0.0, 0.0, 0.0])
+    tr = pl.simulate(p, s0, 150.0, method="rattle4", dt=5e-3, save_every=100)
+    sway = pl.slewing_sway(p, tr.t, s0)
+    w, w0sq, c = 0.5, G, 0.2
+    offset = w * w * 0.02 / complex(w0sq - w * w, c * w)
+    assert sway.static_offset == pytest.approx((offset.real, offset.imag), rel=1e-15)
+    assert offset.real == pytest.approx(w * w * 0.02 / (w0sq - w * w), rel=2e-4)  # T-7.2 for small c
+    assert tr.boom is not None
+    # transients have decayed as e^{−ct/2} = 3e-7; what is left is the nonlinearity, O(offset²/l²)
+    assert tr.boom[-1, 0] == pytest.approx(offset.real, rel=1e-6)
+    assert tr.boom[-1, 1] == pytest.approx(offset.imag, rel=1e-4)
+    # the whole track: the linear theory is exact to O(offset³/l²) here
+    assert np.max(np.abs(tr.boom[:, 0] - sway.radial)) < 2e-5 * offset.real
+    assert np.max(np.abs(tr.boom[:, 1] - sway.tangential)) < 2e-5 * offset.real
+
+
+def test_natural_frequencies_are_the_spectral_peaks_of_a_small_sway() -> None:
+    p = pl.Pendulum(model="slewing", radius=0.0, rate=0.5)
+    theta0 = 0.02  # rad
+    s0 = p.state_from_angles(theta0, 0.0, 0.0, 0.0)
+    tr = pl.simulate(p, s0, 200.0, method="rattle4", dt=1e-3, save_every=20)  # samples every 0.02 s
+    sway = pl.slewing_sway(p, tr.t, s0)
+    w0, w = math.sqrt(G), 0.5
+    assert sway.frequencies == pytest.approx((w0 - w, w0 + w), rel=1e-15)
+    radial = tr.boom[:, 0]
+    n_pad = 16 * len(radial)
+    spectrum = np.abs(np.fft.rfft(radial - radial.mean(), n_pad))
+    omega = 2 * np.pi * np.fft.rfftfreq(n_pad, d=0.02)
+    inner = np.flatnonzero((spectrum[1:-1] > spectrum[:-2]) & (spectrum[1:-1] > spectrum[2:])) + 1
+    top = np.sort(omega[inner[np.argsort(spectrum[inner])[-2:]]])
+    resolution = 2 * np.pi / 200.0
+    assert np.all(np.abs(top - np.array(sway.frequencies)) < resolution), (top, sway.frequencies)
+    # the track itself, over 20 s: apart from the amplitude's frequency shift ω₀θ₀²/16 (nonlinear),
+    # the same; bound twice the phase drift it causes
+    early = tr.t <= 20.0
+    bound = 2 * theta0 * (w0 * theta0**2 / 16) * 20.0
+    assert np.max(np.abs(tr.boom[early, 0] - sway.radial[early])) < bound
+    assert np.max(np.abs(tr.boom[early, 1] - sway.tangential[early])) < bound
+
+
+def test_resonance_and_bad_input_are_refused() -> None:
+    resonant = pl.Pendulum(model="slewing", radius=5.0, rate=math.sqrt(G / 1.0))
+    with pytest.raises(pl.InvalidInputError, match="resonance"):
+        pl.slewing_sway(resonant, [0.0, 1.0])
+    damped = pl.Pendulum(model="slewing", radius=5.0, rate=math.sqrt(G), damping=0.1)
+    assert np.isfinite(pl.slewing_sway(damped, [0.0, 1.0]).radial).all()  # damping bounds it
+    with pytest.raises(pl.InvalidInputError, match="model='slewing'"):
+        pl.slewing_sway(pl.Pendulum(), [0.0])
+    with pytest.raises(pl.InvalidInputError, match="underdamped"):
+        pl.slewing_sway(pl.Pendulum(model="slewing", damping=7.0), [0.0])
+    with pytest.raises(pl.InvalidInputError, match="non-finite"):
+        pl.slewing_sway(pl.Pendulum(model="slewing"), [0.0, float("nan")])
+
+
+def test_boom_frame_in_trajectories_and_files(tmp_path: Path) -> None:
+    p = pl.Pendulum(model="slewing", radius=2.0, rate=0.4)
+    tr = pl.simulate(p, p.state_from_angles(0.1, 0.3, 0.0, 0.0), 1.0, dt=1e-3, save_every=100)
+    assert tr.boom is not None
+    rot = tr.t * 0.4
+    np.testing.assert_allclose(tr.boom[:, 0], tr.x[:, 0] * np.cos(rot) + tr.x[:, 1] * np.sin(rot), atol=1e-15)
+    np.testing.assert_allclose(np.linalg.norm(tr.boom, axis=1), 1.0, atol=1e-14)
+    np.testing.assert_array_equal(tr.sway_angle, tr.theta)
+    header = (tr.save(tmp_path / "crane.csv")).read_text().splitlines()[1]
+    assert "boom_radial [m]" in header and "boom_tangential [m]" in header
+    plain = pl.simulate(pl.Pendulum(), pl.Pendulum().state_from_angles(0.1), 0.1)
+    assert plain.boom is None
