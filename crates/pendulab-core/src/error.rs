@@ -147,6 +147,12 @@ pub enum Error {
         /// Model name.
         model: &'static str,
     },
+    /// Pivot samples that cannot define a path.
+    #[error("invalid pivot samples: {reason}")]
+    InvalidPivotSamples {
+        /// What is wrong.
+        reason: String,
+    },
     /// The save times are not usable.
     #[error("invalid save times: {reason}")]
     InvalidSaveTimes {

@@ -19,6 +19,7 @@ pub mod ideal;
 pub mod pivot;
 pub mod registry;
 pub mod slewing_linear;
+pub mod spline;
 pub mod string;
 pub mod string_run;
 

@@ -4,6 +4,7 @@
 //! [m/s²]; the extra parameters switch on the terms of [`Extended`] (THEORY.md §7).
 
 use super::pivot::{MovingPivot, PivotPath};
+use super::spline::PivotSamples;
 use super::{Extended, IdealPendulum, Model, StringPendulum};
 use crate::error::{Error, Result};
 use crate::state::{Params, State};
@@ -148,6 +149,9 @@ const VIBRATING: &[ParamSpec] = &[
     p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
 ];
 
+const SAMPLED: &[ParamSpec] =
+    &[p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot (the path: pivot samples)")];
+
 const STRING: &[ParamSpec] = &[ParamSpec {
     name: "restitution",
     unit: "1",
@@ -179,6 +183,11 @@ pub const MODELS: &[ModelSpec] = &[
         params: VIBRATING,
     },
     ModelSpec {
+        name: "sampled_pivot",
+        summary: "pivot on a path given as samples (times, positions; C² cubic spline), T-7.2",
+        params: SAMPLED,
+    },
+    ModelSpec {
         name: "string",
         summary: "a string instead of a rod: slack (free flight) where the tension T-2.3 would be < 0",
         params: STRING,
@@ -204,7 +213,7 @@ impl AnyModel {
 }
 
 /// A model built from the registry: the ideal pendulum stays [`IdealPendulum`] (its fast path).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum AnyModel {
     /// The ideal pendulum.
     Ideal(IdealPendulum),
@@ -217,6 +226,14 @@ pub enum AnyModel {
 }
 
 impl AnyModel {
+    /// The `sampled_pivot` model: the pivot on the spline through `times` [s] and `positions` [m]
+    /// ([`PivotSamples`]), with linear damping c ≥ 0 [1/s] relative to the pivot.
+    pub fn sampled_pivot(params: Params, times: &[f64], positions: &[DVec3], damping: f64) -> Result<Self> {
+        let samples = PivotSamples::new(times, positions)?;
+        let path = PivotPath::Samples(std::sync::Arc::new(samples));
+        Ok(AnyModel::Pivot(MovingPivot::new(params, path, damping)?))
+    }
+
     /// Builds model `name` from l, m, g and named extra parameters (unknown names and values outside
     /// the limits are errors naming them; missing ones take their defaults).
     pub fn build(name: &str, params: Params, extra: &[(&str, f64)]) -> Result<Self> {
@@ -287,6 +304,13 @@ impl AnyModel {
                 },
                 get("damping").unwrap(),
             )?),
+            "sampled_pivot" => {
+                return Err(Error::InvalidPivotSamples {
+                    reason: "the 'sampled_pivot' model needs the path: pivot times [s] and positions [m] \
+                             (AnyModel::sampled_pivot; Python: Pendulum(pivot_samples=(times, positions)))"
+                        .into(),
+                })
+            }
             "string" => AnyModel::String(StringPendulum::new(params, get("restitution").unwrap())?),
             _ => AnyModel::Pivot(MovingPivot::new(
                 params,
