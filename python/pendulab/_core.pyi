@@ -57,6 +57,7 @@ def check_model(
     g: float,
     model_name: str | None = None,
     extra: list[tuple[str, float]] | None = None,
+    pivot: tuple[FloatArray, FloatArray] | None = None,
 ) -> None: ...
 def state_on_ts2(
     length: float, mass: float, g: float, x: FloatArray, v: FloatArray
@@ -76,6 +77,7 @@ def diagnostics(
     model_name: str | None = None,
     extra: list[tuple[str, float]] | None = None,
     t: FloatArray | None = None,
+    pivot: tuple[FloatArray, FloatArray] | None = None,
 ) -> dict[str, FloatArray]: ...
 
 class Solver:
@@ -99,6 +101,7 @@ class Solver:
         model_name: str | None = None,
         extra: list[tuple[str, float]] | None = None,
         conserve: bool = False,
+        pivot: tuple[FloatArray, FloatArray] | None = None,
     ) -> None: ...
     def advance(self, budget: int) -> bool: ...
     def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
@@ -128,6 +131,7 @@ class Stepper:
         model_name: str | None = None,
         extra: list[tuple[str, float]] | None = None,
         conserve: bool = False,
+        pivot: tuple[FloatArray, FloatArray] | None = None,
     ) -> None: ...
     def step(self, n: int = 1) -> None: ...
     def step_to(self, t: float) -> None: ...

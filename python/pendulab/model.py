@@ -91,6 +91,10 @@ class Pendulum:
         [rad], damping [1/s]), ``"slewing"`` and ``"vibrating"`` (moving pivots). When omitted it is
         inferred from the keywords: the first model of :func:`models` that has all of them (so
         ``damping`` alone → ``"damped"``, ``frame_rate``/``latitude`` → ``"rotating"``).
+    pivot_samples : ``(times, positions)``, times [s] (n,) strictly increasing, positions [m] (n, 3),
+        n ≥ 4: the pivot moves along the C² (not-a-knot) cubic spline through them, whose second
+        derivative is the pivot acceleration p̈ of T-7.2 (model ``"sampled_pivot"``, inferred when
+        given; its only parameter is ``damping`` [1/s]). Runs must stay within [times[0], times[-1]].
     **extra : the model's parameters, e.g. ``Pendulum(length=1.0, g=9.81, mass=1.0, damping=0.003)``.
 
     Raises ``InvalidInputError`` (a ``ValueError``) naming the bad value and the allowed range.
@@ -103,13 +107,23 @@ class Pendulum:
         mass: float = 1.0,
         *,
         model: str | None = None,
+        pivot_samples: tuple[Any, Any] | None = None,
         **extra: float,
     ) -> None:
         if model is None:
-            model = _infer_model(set(extra))
+            model = "sampled_pivot" if pivot_samples is not None else _infer_model(set(extra))
         self._extra = {str(k): float(v) for k, v in extra.items()}
-        # validates everything (names, ranges) once, in the core
-        _core.check_model(float(length), float(mass), float(g), model, list(self._extra.items()))
+        self._pivot: tuple[FloatArray, FloatArray] | None = None
+        if pivot_samples is not None:
+            times, positions = pivot_samples
+            self._pivot = (
+                _frozen(np.ascontiguousarray(np.asarray(times, dtype=np.float64).ravel())),
+                _frozen(np.ascontiguousarray(np.asarray(positions, dtype=np.float64))),
+            )
+        # validates everything (names, ranges, pivot samples) once, in the core
+        _core.check_model(
+            float(length), float(mass), float(g), model, list(self._extra.items()), pivot=self._pivot
+        )
         self.model = model
         self._length = float(length)
         self._g = float(g)
@@ -119,6 +133,11 @@ class Pendulum:
     def extra(self) -> dict[str, float]:
         """The model's own parameters as given (SI units; see ``pendulab.models()``)."""
         return dict(self._extra)
+
+    @property
+    def pivot_samples(self) -> tuple[FloatArray, FloatArray] | None:
+        """The ``sampled_pivot`` model's samples: times [s] (n,) and positions [m] (n, 3); else None."""
+        return self._pivot
 
     @property
     def length(self) -> float:
@@ -153,11 +172,16 @@ class Pendulum:
         return self._length, self._mass, self._g
 
     def _model_kwargs(self) -> dict[str, Any]:
-        return {"model_name": self.model, "extra": list(self._extra.items())}
+        kwargs: dict[str, Any] = {"model_name": self.model, "extra": list(self._extra.items())}
+        if self._pivot is not None:
+            kwargs["pivot"] = self._pivot
+        return kwargs
 
     def __repr__(self) -> str:
         extras = "".join(f", {k}={v!r}" for k, v in self._extra.items())
         model = "" if _infer_model(set(self._extra)) == self.model else f", model={self.model!r}"
+        if self._pivot is not None:
+            model = f", pivot_samples=<{len(self._pivot[0])} samples>"
         return f"Pendulum(length={self._length!r}, g={self._g!r}, mass={self._mass!r}{model}{extras})"
 
     def state(self, x: Any, v: Any, *, project: bool = False) -> State:

@@ -135,6 +135,14 @@ class PendulumSection(_Section):
     params: dict[str, float] = Field(
         default_factory=dict, description="the model's own parameters (SI units; `pendulab models`)"
     )
+    pivot_times: list[float] | None = Field(
+        None,
+        min_length=4,
+        description="model 'sampled_pivot': times of the pivot samples in s (>= 4, strictly increasing)",
+    )
+    pivot_positions: list[list[float]] | None = Field(
+        None, description="model 'sampled_pivot': pivot positions in m, one [x, y, z] per time"
+    )
 
     @model_validator(mode="before")
     @classmethod
@@ -171,6 +179,25 @@ class PendulumSection(_Section):
                     f"{rad} = {self.params[rad]!r}, {deg} = {self.params[deg]!r}"
                 )
         return self
+
+    @model_validator(mode="after")
+    def _pivot_samples(self) -> PendulumSection:
+        given = self.pivot_times is not None or self.pivot_positions is not None
+        if self.model == "sampled_pivot" and (self.pivot_times is None or self.pivot_positions is None):
+            raise ValueError(
+                "model 'sampled_pivot' needs pivot_times (s) and pivot_positions (m, [x, y, z] per time)"
+            )
+        if given and self.model != "sampled_pivot":
+            raise ValueError(
+                f"pivot_times and pivot_positions belong to model 'sampled_pivot', not {self.model!r}"
+            )
+        return self
+
+    def pivot_samples(self) -> tuple[list[float], list[list[float]]] | None:
+        """The ``sampled_pivot`` model's samples (times [s], positions [m]), else None."""
+        if self.pivot_times is None or self.pivot_positions is None:
+            return None
+        return self.pivot_times, self.pivot_positions
 
     def extras(self) -> dict[str, float]:
         """The model's own parameters in SI units (``<name>_deg`` converted to ``<name>`` in rad)."""
@@ -347,7 +374,7 @@ SECTIONS: dict[str, type[_Section]] = {
 }
 
 UNITS: dict[str, dict[str, str]] = {
-    "pendulum": {"length": "m", "mass": "kg", "g": "m/s²"},
+    "pendulum": {"length": "m", "mass": "kg", "g": "m/s²", "pivot_times": "s", "pivot_positions": "m"},
     "initial": {
         "theta": "rad",
         "theta_deg": "degrees",
@@ -554,7 +581,14 @@ class Scenario:
     def __post_init__(self) -> None:
         p, sim = self.spec.pendulum, self.spec.simulation
         try:
-            pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, model=p.model, **p.extras())
+            pendulum = Pendulum(
+                length=p.length,
+                g=p.g,
+                mass=p.mass,
+                model=p.model,
+                pivot_samples=p.pivot_samples(),
+                **p.extras(),
+            )
         except _core.InvalidInputError as e:
             given = "".join(
                 f" (given as {deg} = {p.params[deg]!r} degrees)"
@@ -563,6 +597,14 @@ class Scenario:
             )
             raise ScenarioError(self.source, f"[pendulum] {e}{given}") from None
         object.__setattr__(self, "_pendulum", pendulum)
+        if (samples := pendulum.pivot_samples) is not None:
+            first, last = float(samples[0][0]), float(samples[0][-1])
+            if not (first <= sim.t0 and sim.t_end <= last):
+                raise ScenarioError(
+                    self.source,
+                    f"[simulation] the run [t0, t_end] = [{sim.t0!r}, {sim.t_end!r}] s leaves the pivot "
+                    f"samples' span [{first!r}, {last!r}] s (pendulum.pivot_times)",
+                )
         object.__setattr__(self, "_state", self._make_state(pendulum))
         if pendulum.model == "string":  # hybrid (string_pendulum.py): its own, fewer settings
             from .string_pendulum import check_string_settings

@@ -104,6 +104,13 @@ def simulate(
             t0=t0,
             max_saved_bytes=max_saved_bytes,
         )
+    if pendulum.pivot_samples is not None:
+        first, last = float(pendulum.pivot_samples[0][0]), float(pendulum.pivot_samples[0][-1])
+        if not (first <= t0 and t_end <= last):
+            raise _core.InvalidInputError(
+                f"the run [t0, t_end] = [{t0!r}, {t_end!r}] s leaves the pivot samples' span "
+                f"[{first!r}, {last!r}] s: give samples covering the whole run"
+            )
     info = {m["name"]: m for m in _core.methods()}.get(method)
     if info is None:
         raise _core.InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")

@@ -60,18 +60,50 @@ pub(crate) fn model(length: f64, mass: f64, g: f64) -> PyResult<IdealPendulum> {
     IdealPendulum::new(length, mass, g).map_err(to_py)
 }
 
-/// A registry model by name with its extra parameters (None: the ideal pendulum).
+/// Pivot samples from Python: times [s] (n,) and positions [m] (n, 3).
+pub(crate) type PivotArrays<'py> = (PyReadonlyArray1<'py, f64>, PyReadonlyArray2<'py, f64>);
+
+/// A registry model by name with its extra parameters (None: the ideal pendulum); the
+/// `sampled_pivot` model takes its path from `pivot` (times, positions).
 pub(crate) fn any_model(
     length: f64,
     mass: f64,
     g: f64,
     name: Option<&str>,
     extra: Option<Vec<(String, f64)>>,
+    pivot: Option<PivotArrays<'_>>,
 ) -> PyResult<AnyModel> {
     let params = Params::new(length, mass, g).map_err(to_py)?;
     let extra = extra.unwrap_or_default();
     let pairs: Vec<(&str, f64)> = extra.iter().map(|(k, v)| (k.as_str(), *v)).collect();
-    AnyModel::build(name.unwrap_or("ideal"), params, &pairs).map_err(to_py)
+    let name = name.unwrap_or("ideal");
+    match (name, pivot) {
+        ("sampled_pivot", Some((t, p))) => {
+            // validates the keys and ranges (and that only damping is given) by building without samples
+            if let Some((key, _)) = pairs.iter().find(|(k, _)| *k != "damping") {
+                return Err(to_py(Error::UnknownParameter {
+                    model: "sampled_pivot",
+                    name: key.to_string(),
+                    available: "damping".into(),
+                }));
+            }
+            let damping = pairs.iter().find(|(k, _)| *k == "damping").map_or(0.0, |(_, v)| *v);
+            let (t, p) = (t.as_array(), p.as_array());
+            if p.ncols() != 3 {
+                return Err(InvalidInputError::new_err(format!(
+                    "pivot positions must have shape (n, 3) in m, got {:?}",
+                    p.dim()
+                )));
+            }
+            let times: Vec<f64> = t.iter().copied().collect();
+            let positions: Vec<DVec3> = p.rows().into_iter().map(|r| DVec3::new(r[0], r[1], r[2])).collect();
+            AnyModel::sampled_pivot(params, &times, &positions, damping).map_err(to_py)
+        }
+        (_, Some(_)) => Err(InvalidInputError::new_err(format!(
+            "pivot samples belong to the 'sampled_pivot' model, not to {name:?}"
+        ))),
+        (_, None) => AnyModel::build(name, params, &pairs).map_err(to_py),
+    }
 }
 
 fn param_dict<'py>(
@@ -89,17 +121,19 @@ fn param_dict<'py>(
     Ok(d)
 }
 
-/// Validates a model: l > 0 m, m > 0 kg, finite g, a registered name and its parameters.
+/// Validates a model: l > 0 m, m > 0 kg, finite g, a registered name and its parameters (and the
+/// pivot samples of `sampled_pivot`).
 #[pyfunction]
-#[pyo3(signature = (length, mass, g, model_name=None, extra=None))]
+#[pyo3(signature = (length, mass, g, model_name=None, extra=None, pivot=None))]
 fn check_model(
     length: f64,
     mass: f64,
     g: f64,
     model_name: Option<&str>,
     extra: Option<Vec<(String, f64)>>,
+    pivot: Option<PivotArrays<'_>>,
 ) -> PyResult<()> {
-    any_model(length, mass, g, model_name, extra).map(|_| ())
+    any_model(length, mass, g, model_name, extra, pivot).map(|_| ())
 }
 
 /// The model registry: name, summary, and parameters (common ones first) with units and limits.
@@ -222,7 +256,7 @@ fn state_from_angles(
 /// Diagnostics along arrays x, v of shape (N, 3): energy [J], j3 [kg m²/s], tension [N],
 /// radius_error = |x| − l [m], tangency = x·v [m²/s].
 #[pyfunction]
-#[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None))]
+#[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None, pivot=None))]
 #[allow(clippy::too_many_arguments)]
 fn diagnostics<'py>(
     py: Python<'py>,
@@ -234,8 +268,9 @@ fn diagnostics<'py>(
     model_name: Option<&str>,
     extra: Option<Vec<(String, f64)>>,
     t: Option<PyReadonlyArray1<'py, f64>>,
+    pivot: Option<PivotArrays<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let m = any_model(length, mass, g, model_name, extra)?;
+    let m = any_model(length, mass, g, model_name, extra, pivot)?;
     let times = t.map(|t| t.as_array().to_vec());
     let (x, v) = (x.as_array(), v.as_array());
     if x.ncols() != 3 || v.dim() != x.dim() {
@@ -317,7 +352,7 @@ struct Solver_ {
 #[pymethods]
 impl Solver_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, conserve=false))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, conserve=false, pivot=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -338,8 +373,9 @@ impl Solver_ {
         model_name: Option<&str>,
         extra: Option<Vec<(String, f64)>>,
         conserve: bool,
+        pivot: Option<PivotArrays<'_>>,
     ) -> PyResult<Self> {
-        let m = any_model(length, mass, g, model_name, extra)?;
+        let m = any_model(length, mass, g, model_name, extra, pivot)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
         let save = match (save_every, save_times) {
             (Some(_), Some(_)) => {
@@ -398,7 +434,7 @@ struct Stepper_ {
 #[pymethods]
 impl Stepper_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None, conserve=false))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None, conserve=false, pivot=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -415,8 +451,9 @@ impl Stepper_ {
         model_name: Option<&str>,
         extra: Option<Vec<(String, f64)>>,
         conserve: bool,
+        pivot: Option<PivotArrays<'_>>,
     ) -> PyResult<Self> {
-        let m = any_model(length, mass, g, model_name, extra)?;
+        let m = any_model(length, mass, g, model_name, extra, pivot)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
         let opts = options(method, dt, rtol, atol, project)?;
         let mut inner = Stepper::new(m, t0, s, &opts).map_err(to_py)?;

@@ -73,9 +73,18 @@ def test_every_model_is_constructible_from_python_and_from_a_scenario_file(name:
     """Each model with every own parameter given (at its default) builds from Python and from a file;
     the file round-trips through to_toml and runs."""
     params = own_defaults(name)
-    p = pl.Pendulum(length=1.0, g=9.81, mass=2.0, model=name, **params)
+    # the sampled pivot's path: a small circle, sampled every 0.05 s over 1 s (arrays, not parameters)
+    times = [0.05 * k for k in range(21)]
+    positions = [[0.1 * math.cos(t), 0.1 * math.sin(t), 0.0] for t in times]
+    samples = (times, positions) if name == "sampled_pivot" else None
+    p = pl.Pendulum(length=1.0, g=9.81, mass=2.0, model=name, pivot_samples=samples, **params)
     assert p.model == name and p.extra == params and p.is_ideal == (name == "ideal")
-    sc = pl.Scenario.from_toml_str(scenario_text(name, params), source=f"{name}.toml")
+    text = scenario_text(name, params)
+    if samples is not None:
+        text = text.replace(
+            "[initial]", f"pivot_times = {times!r}\npivot_positions = {positions!r}\n[initial]"
+        )
+    sc = pl.Scenario.from_toml_str(text, source=f"{name}.toml")
     assert sc.pendulum().params() == p.params()
     again = pl.Scenario.from_toml_str(sc.to_toml())
     assert again == sc and again.pendulum().params() == p.params()
