@@ -68,10 +68,11 @@ def test_models_lists_the_registry_with_units_and_sane_defaults() -> None:
     assert damped["forcing_amplitude"]["unit"] == "m/s^2" and damped["forcing_omega"]["unit"] == "rad/s"
 
 
-@pytest.mark.parametrize("name", [m["name"] for m in pl.models()])
+@pytest.mark.parametrize("name", [m["name"] for m in pl.models() if m["name"] != "spring"])
 def test_every_model_is_constructible_from_python_and_from_a_scenario_file(name: str) -> None:
     """Each model with every own parameter given (at its default) builds from Python and from a file;
-    the file round-trips through to_toml and runs."""
+    the file round-trips through to_toml and runs. (The swinging spring leaves the sphere and is no
+    Pendulum: tests/test_spring.py.)"""
     params = own_defaults(name)
     # the sampled pivot's path: a small circle, sampled every 0.05 s over 1 s (arrays, not parameters)
     times = [0.05 * k for k in range(21)]

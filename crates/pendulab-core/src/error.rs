@@ -147,6 +147,16 @@ pub enum Error {
         /// Model name.
         model: &'static str,
     },
+    /// A model whose state is not on TS² (the swinging spring) asked for as a pendulum.
+    #[error(
+        "the '{model}' model (the swinging spring, T-7.4) leaves the sphere and is not a rod pendulum: \
+             use pendulab.SwingingSpring and pendulab.simulate_spring, or a scenario file with \
+             model = \"{model}\" (pendulab run)"
+    )]
+    OffSphereModel {
+        /// Model name.
+        model: &'static str,
+    },
     /// Pivot samples that cannot define a path.
     #[error("invalid pivot samples: {reason}")]
     InvalidPivotSamples {

@@ -152,6 +152,17 @@ const VIBRATING: &[ParamSpec] = &[
 const SAMPLED: &[ParamSpec] =
     &[p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot (the path: pivot samples)")];
 
+const SPRING: &[ParamSpec] = &[ParamSpec {
+    name: "stiffness",
+    unit: "N/m",
+    default: 29.43,
+    min: 0.0,
+    max: INF,
+    description: "swinging spring (T-7.4): spring constant k; length is the rest length l0, the bob \
+                  hangs at l = l0 + m g/k; 1:1:2 resonance at k = 3 m g/l0 (default: for l0 = 1 m, m = 1 kg)",
+    allowed: "a finite number > 0",
+}];
+
 const STRING: &[ParamSpec] = &[ParamSpec {
     name: "restitution",
     unit: "1",
@@ -186,6 +197,12 @@ pub const MODELS: &[ModelSpec] = &[
         name: "sampled_pivot",
         summary: "pivot on a path given as samples (times, positions; C² cubic spline), T-7.2",
         params: SAMPLED,
+    },
+    ModelSpec {
+        name: "spring",
+        summary:
+            "swinging spring: an elastic rod, off the sphere (T-7.4); scenario files and pl.SwingingSpring",
+        params: SPRING,
     },
     ModelSpec {
         name: "string",
@@ -310,6 +327,11 @@ impl AnyModel {
                              (AnyModel::sampled_pivot; Python: Pendulum(pivot_samples=(times, positions)))"
                         .into(),
                 })
+            }
+            "spring" => {
+                let k = get("stiffness").unwrap();
+                crate::elastic::SwingingSpring::new(k / params.mass, params.length, params.g, params.mass)?;
+                return Err(Error::OffSphereModel { model: "spring" });
             }
             "string" => AnyModel::String(StringPendulum::new(params, get("restitution").unwrap())?),
             _ => AnyModel::Pivot(MovingPivot::new(
