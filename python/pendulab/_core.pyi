@@ -3,6 +3,7 @@
 Units are SI: m, kg, s, rad. Vectors are float64 arrays of shape (3,), sequences (N, 3).
 """
 
+from collections.abc import Callable
 from typing import Any, TypedDict
 
 import numpy as np
@@ -238,3 +239,39 @@ def slewing_linear(
     start: list[float],
     t: FloatArray,
 ) -> dict[str, Any]: ...
+
+# --- python/rust/force.rs: a user force given as a Python callable (the slow path) ---
+
+class ForceSolver:
+    def __init__(
+        self,
+        length: float,
+        mass: float,
+        g: float,
+        x0: FloatArray,
+        v0: FloatArray,
+        t0: float,
+        t_end: float,
+        method: str,
+        dt: float,
+        rtol: float,
+        atol: float,
+        project: bool,
+        force: Callable[[float, list[float], list[float]], Any],
+        save_every: int | None = None,
+        save_times: FloatArray | None = None,
+        max_saved_bytes: int | None = None,
+        model_name: str | None = None,
+        extra: list[tuple[str, float]] | None = None,
+        pivot: tuple[FloatArray, FloatArray] | None = None,
+    ) -> None: ...
+    def advance(self, budget: int) -> bool: ...
+    def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
+    @property
+    def progress(self) -> float: ...
+    @property
+    def t(self) -> float: ...
+    @property
+    def done(self) -> bool: ...
+    @property
+    def stats(self) -> StatsDict: ...

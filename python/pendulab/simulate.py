@@ -53,7 +53,7 @@ def simulate(
     state: State,
     t_end: float,
     *,
-    method: str = "rattle",
+    method: str | None = None,
     dt: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
@@ -69,7 +69,8 @@ def simulate(
 
     Parameters
     ----------
-    method : a name from :func:`methods` (default ``"rattle"``).
+    method : a name from :func:`methods` (default ``"rattle"``; ``"dop853"`` for a pendulum with a
+        user ``force`` callable, which the RATTLE family cannot integrate).
     dt : step size [s] of fixed-step methods (default 1e-3 s); for ``dop853`` an optional initial step.
     rtol, atol : tolerances of ``dop853`` (atol in m and m/s).
     project : ``dop853`` only: project onto TS² after every step (default True).
@@ -88,6 +89,12 @@ def simulate(
     :func:`pendulab.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
     rkmk4 with ``dt`` in the taut phases, ``save_every`` only, in one call (no progress bar).
     """
+    if method is None:
+        method = "dop853" if pendulum.force is not None else "rattle"
+    if pendulum.force is not None and conserve:
+        raise _core.InvalidInputError(
+            "conserve=True would hold E and J₃ fixed, but the user force does work (dE/dt = F·v)"
+        )
     if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
         from .string_pendulum import check_string_settings, simulate_string
 
@@ -124,7 +131,7 @@ def simulate(
         raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     _check_conserve(pendulum, conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
-    solver = _core.Solver(
+    args = (
         *pendulum._core_args(),
         np.ascontiguousarray(state.x),
         np.ascontiguousarray(state.v),
@@ -135,12 +142,13 @@ def simulate(
         float(rtol),
         float(atol),
         bool(project),
-        None if save_every is None else int(save_every),
-        times,
-        max_saved_bytes,
-        **pendulum._model_kwargs(),
-        conserve=bool(conserve),
     )
+    saving = (None if save_every is None else int(save_every), times, max_saved_bytes)
+    solver: _core.Solver | _core.ForceSolver
+    if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)
+        solver = _core.ForceSolver(*args, pendulum.force, *saving, **pendulum._model_kwargs())
+    else:
+        solver = _core.Solver(*args, *saving, **pendulum._model_kwargs(), conserve=bool(conserve))
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
     parts: list[tuple[FloatArray, FloatArray, FloatArray]] = []
@@ -196,6 +204,10 @@ class Stepper:
         conserve: bool = False,
     ) -> None:
         _check_conserve(pendulum, conserve)
+        if pendulum.force is not None:
+            raise _core.InvalidInputError(
+                "the incremental Stepper does not take a user force callable; use pendulab.simulate"
+            )
         self.pendulum = pendulum
         self._core = _core.Stepper(
             *pendulum._core_args(),

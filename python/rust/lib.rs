@@ -5,6 +5,7 @@
 
 mod ensemble;
 mod exact;
+mod force;
 mod slewing;
 mod spring;
 mod string;
@@ -524,6 +525,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     spring::register(m)?;
     string::register(m)?;
     slewing::register(m)?;
+    force::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }
