@@ -140,3 +140,38 @@ fn bad_input_is_refused() {
     assert!((snap.t - (2.0 * 0.5 / G).sqrt()).abs() < 1e-15, "{}", snap.t);
     assert!(run.states.last().unwrap().v.length() < 1e-15, "at rest after the inelastic snap");
 }
+
+#[test]
+fn partial_restitution_loses_one_minus_e_squared_and_settles_taut() {
+    // e = 0.5: every snap loses exactly ½ m (1 − e²) u² and reverses u to −e u; the rebounds shrink
+    // geometrically until the string is taut again (finite number of events), and E0 − E_end is the
+    // sum of the losses.
+    let e = 0.5;
+    let sp = string(e);
+    let s0 = launch((3.5 * G).sqrt());
+    let e0 = energy(&sp, &s0);
+    let run = sp.simulate(0.0, s0, 6.0, Method::Rattle8, 1e-3, 1, u64::MAX).unwrap();
+    let snaps: Vec<_> = run.events.iter().filter(|ev| ev.kind == EventKind::Taut).collect();
+    assert!(snaps.len() >= 3, "{} snaps", snaps.len());
+    for ev in &snaps {
+        let n = ev.before.x / ev.before.x.length();
+        let (u_in, u_out) = (n.dot(ev.before.v), n.dot(ev.after.v));
+        let expected = 0.5 * 2.0 * (1.0 - e * e) * u_in * u_in;
+        let settled = u_out.abs() <= 1e-14 * ev.after.v.length().max(1.0);
+        let lost = if settled { 0.5 * 2.0 * u_in * u_in } else { expected };
+        assert!(
+            (ev.energy_lost - lost).abs() <= 1e-13 * lost.max(1e-300) + 1e-24,
+            "{} vs {lost}",
+            ev.energy_lost
+        );
+        assert!(
+            settled || (u_out + e * u_in).abs() <= 1e-14 * u_in.abs().max(1.0),
+            "{u_out} vs {}",
+            -e * u_in
+        );
+    }
+    assert!(*run.taut.last().unwrap(), "the string ends taut");
+    let lost: f64 = run.events.iter().map(|ev| ev.energy_lost).sum();
+    let e_end = energy(&sp, run.states.last().unwrap());
+    assert!((e0 - e_end - lost).abs() < 1e-11 * e0.abs(), "{} vs {lost}", e0 - e_end);
+}

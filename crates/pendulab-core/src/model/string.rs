@@ -132,7 +132,10 @@ impl StringPendulum {
         let taut = e * u.length() <= chatter;
         let factor = if taut { 1.0 } else { 1.0 + e };
         let v = s.v - u * factor;
-        let lost = 0.5 * m * (s.v.length_squared() - v.length_squared());
+        // the tangential part is untouched: the loss is the radial kinetic energy's, ½m(1 − e²)|u|²
+        // (½m|u|² when taut), computed from u itself rather than as a difference of |v|²
+        let kept = if taut { 0.0 } else { e * e };
+        let lost = 0.5 * m * (1.0 - kept) * u.length_squared();
         (State { x, v }, lost, taut)
     }
 }
