@@ -150,3 +150,24 @@ def test_sampled_pivot_in_scenario_files() -> None:
     with pytest.raises(pl.ScenarioError, match="strictly increasing"):
         bad = arrays.replace("0.05,", "0.5,", 1)
         pl.Scenario.from_toml_str(head + bad + tail.format(t_end=1.0))
+
+
+def test_vanishing_extras_reduce_to_the_ideal_pendulum(pendulum: pl.Pendulum) -> None:
+    """A pivot sampled at rest is the ideal pendulum bit for bit; the linear sway with R = ω = 0 is the
+    small-oscillation pendulum x₀ cos ω₀t + (ẋ₀/ω₀) sin ω₀t."""
+    t = np.linspace(0.0, 3.0, 7)
+    at_rest = pl.Pendulum(pivot_samples=(t, np.zeros((7, 3))))
+    s0 = pendulum.state_from_angles(0.4, 0.2, 0.1, 1.0)
+    for method in ("rattle", "rattle4", "dop853"):
+        a = pl.simulate(pendulum, s0, 3.0, method=method)
+        b = pl.simulate(at_rest, s0, 3.0, method=method)
+        np.testing.assert_array_equal(a.x, b.x)
+        np.testing.assert_array_equal(a.v, b.v)
+    still = pl.Pendulum(model="slewing", radius=0.0, rate=0.0)
+    small = still.state([0.01, 0.0, -math.sqrt(1 - 1e-4)], [0.0, 0.0, 0.0], project=True)
+    times = np.linspace(0.0, 5.0, 11)
+    sway = pl.slewing_sway(still, times, small)
+    w0 = math.sqrt(G)
+    np.testing.assert_allclose(sway.radial, small.x[0] * np.cos(w0 * times), rtol=0, atol=1e-15)
+    np.testing.assert_allclose(sway.tangential, 0.0, atol=1e-15)
+    assert sway.static_offset == (0.0, 0.0) and sway.frequencies == pytest.approx((w0, w0), rel=1e-15)
