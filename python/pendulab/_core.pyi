@@ -42,6 +42,7 @@ class ParamSpec(TypedDict):
 class ModelInfo(TypedDict):
     name: str
     summary: str
+    interactive: bool
     params: list[ParamSpec]
 
 class StatsDict(TypedDict):

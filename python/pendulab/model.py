@@ -28,7 +28,10 @@ def _vec3(name: str, a: Any) -> FloatArray:
 
 
 def models() -> list[_core.ModelInfo]:
-    """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary`` and ``params``,
+    """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary``,
+    ``interactive`` (runs with the incremental :class:`pendulab.Stepper` and so in the web lab; False for
+    ``string``, ``spring`` and ``sampled_pivot``, which run with ``pl.simulate`` / ``pendulab run``) and
+    ``params``,
     a list of dicts ``name``, ``unit`` (SI), ``default``, ``min``, ``max`` (±inf for none),
     ``description`` and ``allowed`` (in words). Length [m], mass [kg] and g [m/s²] come first in every
     model; the rest are the model's own keywords of :class:`Pendulum` and keys of scenario files.

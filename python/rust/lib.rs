@@ -146,6 +146,7 @@ fn models(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
             let d = PyDict::new(py);
             d.set_item("name", m.name)?;
             d.set_item("summary", m.summary)?;
+            d.set_item("interactive", m.interactive)?;
             let params: PyResult<Vec<_>> = COMMON.iter().chain(m.params).map(|p| param_dict(py, p)).collect();
             d.set_item("params", params?)?;
             Ok(d)

@@ -379,3 +379,16 @@ def test_forcing_direction_defaults_only_when_no_component_is_given() -> None:
     assert pl.Pendulum(**amp).power(state) == 0.0  # default e₁, perpendicular to v
     diagonal = pl.Pendulum(**amp, forcing_x=1.0, forcing_y=1.0).power(state)
     assert diagonal == pytest.approx(2.0 / math.sqrt(2.0), rel=1e-15)
+
+
+def test_the_registry_says_which_models_the_stepper_can_run(pendulum: pl.Pendulum) -> None:
+    """``interactive`` is True exactly for the models the incremental Stepper (the lab) runs."""
+    s0 = pendulum.state_from_angles(*ROSETTE)
+    for m in pl.models():
+        own = {p["name"]: p["default"] for p in m["params"] if p["name"] not in COMMON}
+        try:
+            pl.Stepper(pl.Pendulum(model=m["name"], **own), s0).step(1)
+            ran = True
+        except pl.InvalidInputError:
+            ran = False
+        assert ran == m["interactive"], m["name"]

@@ -38,6 +38,9 @@ pub struct ModelSpec {
     pub summary: &'static str,
     /// Its parameters beyond length, mass and g.
     pub params: &'static [ParamSpec],
+    /// Runs with the incremental [`crate::Stepper`] from its parameters alone (what a live viewer
+    /// needs); false for the hybrid string, the off-sphere spring and the sampled pivot (arrays).
+    pub interactive: bool,
 }
 
 const INF: f64 = f64::INFINITY;
@@ -176,37 +179,53 @@ const STRING: &[ParamSpec] = &[ParamSpec {
 
 /// Every registered model.
 pub const MODELS: &[ModelSpec] = &[
-    ModelSpec { name: "ideal", summary: "the ideal spherical pendulum (THEORY §2)", params: &[] },
+    ModelSpec {
+        name: "ideal",
+        summary: "the ideal spherical pendulum (THEORY §2)",
+        interactive: true,
+        params: &[],
+    },
     ModelSpec {
         name: "damped",
         summary: "damping, quadratic drag, periodic forcing, any gravity direction (T-7.1)",
+        interactive: true,
         params: DAMPED,
     },
     ModelSpec {
         name: "rotating",
         summary: "in a rotating frame (Foucault, T-7.3), optionally damped",
+        interactive: true,
         params: ROTATING,
     },
-    ModelSpec { name: "slewing", summary: "pivot on a slewing crane's boom tip (T-7.2)", params: SLEWING },
+    ModelSpec {
+        name: "slewing",
+        summary: "pivot on a slewing crane's boom tip (T-7.2)",
+        interactive: true,
+        params: SLEWING,
+    },
     ModelSpec {
         name: "vibrating",
         summary: "vertically vibrated pivot (Kapitza's inverted pendulum, T-7.2)",
+        interactive: true,
         params: VIBRATING,
     },
     ModelSpec {
         name: "sampled_pivot",
         summary: "pivot on a path given as samples (times, positions; C² cubic spline), T-7.2",
+        interactive: false,
         params: SAMPLED,
     },
     ModelSpec {
         name: "spring",
         summary:
             "swinging spring: an elastic rod, off the sphere (T-7.4); scenario files and pl.SwingingSpring",
+        interactive: false,
         params: SPRING,
     },
     ModelSpec {
         name: "string",
         summary: "a string instead of a rod: slack (free flight) where the tension T-2.3 would be < 0",
+        interactive: false,
         params: STRING,
     },
 ];
