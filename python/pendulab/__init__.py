@@ -17,6 +17,7 @@ Plots (matplotlib, optional): ``pendulab.plot``.
 from . import sweep_design
 from ._core import IntegrationError, InvalidInputError, __version__
 from .advance import MeasuredAdvance, measured_azimuth_advance
+from .crane import SlewingSway, slewing_sway
 from .em_map import EMMap, em_map
 from .ensemble import EnsembleResult, simulate_ensemble, states_from_angles
 from .exact import ExactSolution, Phases, exact
@@ -43,6 +44,7 @@ __all__ = [
     "Save",
     "Scenario",
     "ScenarioError",
+    "SlewingSway",
     "SpringTrajectory",
     "State",
     "Stepper",
@@ -63,6 +65,7 @@ __all__ = [
     "simulate",
     "simulate_ensemble",
     "simulate_spring",
+    "slewing_sway",
     "states_from_angles",
     "sweep",
     "sweep_design",

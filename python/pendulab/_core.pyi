@@ -3,6 +3,7 @@
 Units are SI: m, kg, s, rad. Vectors are float64 arrays of shape (3,), sequences (N, 3).
 """
 
+from collections.abc import Callable
 from typing import Any, TypedDict
 
 import numpy as np
@@ -41,6 +42,7 @@ class ParamSpec(TypedDict):
 class ModelInfo(TypedDict):
     name: str
     summary: str
+    interactive: bool
     params: list[ParamSpec]
 
 class StatsDict(TypedDict):
@@ -57,6 +59,7 @@ def check_model(
     g: float,
     model_name: str | None = None,
     extra: list[tuple[str, float]] | None = None,
+    pivot: tuple[FloatArray, FloatArray] | None = None,
 ) -> None: ...
 def state_on_ts2(
     length: float, mass: float, g: float, x: FloatArray, v: FloatArray
@@ -76,6 +79,7 @@ def diagnostics(
     model_name: str | None = None,
     extra: list[tuple[str, float]] | None = None,
     t: FloatArray | None = None,
+    pivot: tuple[FloatArray, FloatArray] | None = None,
 ) -> dict[str, FloatArray]: ...
 
 class Solver:
@@ -99,6 +103,7 @@ class Solver:
         model_name: str | None = None,
         extra: list[tuple[str, float]] | None = None,
         conserve: bool = False,
+        pivot: tuple[FloatArray, FloatArray] | None = None,
     ) -> None: ...
     def advance(self, budget: int) -> bool: ...
     def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
@@ -128,6 +133,7 @@ class Stepper:
         model_name: str | None = None,
         extra: list[tuple[str, float]] | None = None,
         conserve: bool = False,
+        pivot: tuple[FloatArray, FloatArray] | None = None,
     ) -> None: ...
     def step(self, n: int = 1) -> None: ...
     def step_to(self, t: float) -> None: ...
@@ -207,3 +213,68 @@ def spring_simulate(
     save_every: int = 1,
     order: int = 2,
 ) -> dict[str, Any]: ...
+
+# --- python/rust/string.rs: the string pendulum (hybrid: taut, slack, snaps) ---
+
+def string_simulate(
+    length: float,
+    mass: float,
+    g: float,
+    restitution: float,
+    x0: FloatArray,
+    v0: FloatArray,
+    t0: float,
+    t_end: float,
+    method: str,
+    dt: float,
+    save_every: int = 1,
+    max_saved_bytes: int | None = None,
+) -> dict[str, Any]: ...
+
+# --- python/rust/slewing.rs: the linearised slewing crane (T-7.2) ---
+
+def slewing_linear(
+    length: float,
+    g: float,
+    radius: float,
+    rate: float,
+    damping: float,
+    start: list[float],
+    t: FloatArray,
+) -> dict[str, Any]: ...
+
+# --- python/rust/force.rs: a user force given as a Python callable (the slow path) ---
+
+class ForceSolver:
+    def __init__(
+        self,
+        length: float,
+        mass: float,
+        g: float,
+        x0: FloatArray,
+        v0: FloatArray,
+        t0: float,
+        t_end: float,
+        method: str,
+        dt: float,
+        rtol: float,
+        atol: float,
+        project: bool,
+        force: Callable[[float, list[float], list[float]], Any],
+        save_every: int | None = None,
+        save_times: FloatArray | None = None,
+        max_saved_bytes: int | None = None,
+        model_name: str | None = None,
+        extra: list[tuple[str, float]] | None = None,
+        pivot: tuple[FloatArray, FloatArray] | None = None,
+    ) -> None: ...
+    def advance(self, budget: int) -> bool: ...
+    def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
+    @property
+    def progress(self) -> float: ...
+    @property
+    def t(self) -> float: ...
+    @property
+    def done(self) -> bool: ...
+    @property
+    def stats(self) -> StatsDict: ...

@@ -295,7 +295,8 @@ def models(
     for i, m in enumerate(table):
         if name is None or i > 0:
             _say("")
-        _say(f"{m['name']}: {m['summary']}")
+        batch = "" if m.get("interactive", True) else "  [not interactive (no live stepper): pendulab run]"
+        _say(f"{m['name']}: {m['summary']}{batch}")
         own = [p for p in m["params"] if name is not None or p["name"] not in common]
         if not own:
             _say("    (no parameters of its own)")

@@ -56,6 +56,11 @@ def _require(module: str, extra: str = "io") -> Any:
         raise ImportError(f"writing this format needs {module!r}: pip install 'pendulab[{extra}]'") from e
 
 
+def _metadata(tr: Any) -> dict[str, Any]:
+    """What a file's header carries: ``Trajectory.metadata()`` (``SpringTrajectory.file_metadata()``)."""
+    return tr.file_metadata() if hasattr(tr, "file_metadata") else tr.metadata()
+
+
 def write_csv(tr: Trajectory, path: str | os.PathLike[str]) -> None:
     """CSV with a ``#`` header of metadata (JSON) and one row per sample, columns with units."""
     import numpy as np
@@ -63,7 +68,7 @@ def write_csv(tr: Trajectory, path: str | os.PathLike[str]) -> None:
     cols = tr.columns()
     header = "\n".join(
         [
-            f"# pendulab trajectory; metadata (JSON): {json.dumps(tr.metadata(), sort_keys=True)}",
+            f"# pendulab trajectory; metadata (JSON): {json.dumps(_metadata(tr), sort_keys=True)}",
             ",".join(f"{name} [{unit}]" for name, (unit, _) in cols.items()),
         ]
     )
@@ -82,7 +87,7 @@ def write_parquet(tr: Trajectory, path: str | os.PathLike[str]) -> None:
     for name, (unit, values) in tr.columns().items():
         fields.append(pa.field(name, pa.float64(), metadata={"unit": unit}))
         arrays.append(pa.array(values))
-    schema = pa.schema(fields, metadata={"pendulab": json.dumps(tr.metadata(), sort_keys=True)})
+    schema = pa.schema(fields, metadata={"pendulab": json.dumps(_metadata(tr), sort_keys=True)})
     table = pa.Table.from_arrays(arrays, schema=schema)
     with atomic_path(path) as tmp:
         pq.write_table(table, tmp)

@@ -8,6 +8,7 @@ models' own parameters in the units :func:`models` lists.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -27,7 +28,10 @@ def _vec3(name: str, a: Any) -> FloatArray:
 
 
 def models() -> list[_core.ModelInfo]:
-    """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary`` and ``params``,
+    """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary``,
+    ``interactive`` (runs with the incremental :class:`pendulab.Stepper` and so in the web lab; False for
+    ``string``, ``spring`` and ``sampled_pivot``, which run with ``pl.simulate`` / ``pendulab run``) and
+    ``params``,
     a list of dicts ``name``, ``unit`` (SI), ``default``, ``min``, ``max`` (±inf for none),
     ``description`` and ``allowed`` (in words). Length [m], mass [kg] and g [m/s²] come first in every
     model; the rest are the model's own keywords of :class:`Pendulum` and keys of scenario files.
@@ -91,6 +95,18 @@ class Pendulum:
         [rad], damping [1/s]), ``"slewing"`` and ``"vibrating"`` (moving pivots). When omitted it is
         inferred from the keywords: the first model of :func:`models` that has all of them (so
         ``damping`` alone → ``"damped"``, ``frame_rate``/``latitude`` → ``"rotating"``).
+    pivot_samples : ``(times, positions)``, times [s] (n,) strictly increasing, positions [m] (n, 3),
+        n ≥ 4: the pivot moves along the C² (not-a-knot) cubic spline through them, whose second
+        derivative is the pivot acceleration p̈ of T-7.2 (model ``"sampled_pivot"``, inferred when
+        given; its only parameter is ``damping`` [1/s]). Runs must stay within [times[0], times[-1]].
+    force : a user force ``force(t, x, v) -> (3,)`` [N] of time t [s], position x [m] and velocity v
+        [m/s] (pivot-relative, as numpy-free lists of 3 floats), added to the model's forces (T-7.1:
+        only its tangential part acts). **The slow path**: every evaluation calls Python (a few µs,
+        ~10⁵ calls per simulated second at DOP853's usual steps). Simulated with ``dop853`` (the
+        default then, with projection onto TS²), ``rkmk4`` or ``rk4`` — not the RATTLE family, whose
+        kicks leave out velocity dependence; ``power`` and the power balance include F·v. An exception
+        raised by the callable propagates unchanged; a result that is not 3 finite numbers is an
+        ``InvalidInputError`` naming the value.
     **extra : the model's parameters, e.g. ``Pendulum(length=1.0, g=9.81, mass=1.0, damping=0.003)``.
 
     Raises ``InvalidInputError`` (a ``ValueError``) naming the bad value and the allowed range.
@@ -103,13 +119,29 @@ class Pendulum:
         mass: float = 1.0,
         *,
         model: str | None = None,
+        pivot_samples: tuple[Any, Any] | None = None,
+        force: Callable[[float, Any, Any], Any] | None = None,
         **extra: float,
     ) -> None:
+        if force is not None and not callable(force):
+            raise _core.InvalidInputError(
+                f"force = {force!r} is not callable: give a function force(t, x, v) -> 3 numbers in N"
+            )
+        self._force = force
         if model is None:
-            model = _infer_model(set(extra))
+            model = "sampled_pivot" if pivot_samples is not None else _infer_model(set(extra))
         self._extra = {str(k): float(v) for k, v in extra.items()}
-        # validates everything (names, ranges) once, in the core
-        _core.check_model(float(length), float(mass), float(g), model, list(self._extra.items()))
+        self._pivot: tuple[FloatArray, FloatArray] | None = None
+        if pivot_samples is not None:
+            times, positions = pivot_samples
+            self._pivot = (
+                _frozen(np.ascontiguousarray(np.asarray(times, dtype=np.float64).ravel())),
+                _frozen(np.ascontiguousarray(np.asarray(positions, dtype=np.float64))),
+            )
+        # validates everything (names, ranges, pivot samples) once, in the core
+        _core.check_model(
+            float(length), float(mass), float(g), model, list(self._extra.items()), pivot=self._pivot
+        )
         self.model = model
         self._length = float(length)
         self._g = float(g)
@@ -119,6 +151,37 @@ class Pendulum:
     def extra(self) -> dict[str, float]:
         """The model's own parameters as given (SI units; see ``pendulab.models()``)."""
         return dict(self._extra)
+
+    @property
+    def force(self) -> Callable[[float, Any, Any], Any] | None:
+        """The user force ``force(t, x, v)`` [N], if any (the slow path; see the class doc)."""
+        return self._force
+
+    def force_at(self, t: Any, x: Any, v: Any) -> FloatArray:
+        """The user force [N] at times t [s] (N,) and states x [m], v [m/s] (N, 3): (N, 3), zeros
+        without one. Calls the callable once per sample; non-finite or malformed results are errors."""
+        xa, va = (
+            np.atleast_2d(np.asarray(x, dtype=np.float64)),
+            np.atleast_2d(np.asarray(v, dtype=np.float64)),
+        )
+        ta = np.broadcast_to(np.asarray(0.0 if t is None else t, dtype=np.float64), (xa.shape[0],))
+        out = np.zeros_like(xa)
+        if self._force is None:
+            return out
+        for i in range(xa.shape[0]):
+            f = np.asarray(self._force(float(ta[i]), xa[i].tolist(), va[i].tolist()), dtype=np.float64)
+            if f.shape != (3,) or not np.all(np.isfinite(f)):
+                raise _core.InvalidInputError(
+                    f"the force callable returned {f.tolist()!r} N at t = {float(ta[i])!r} s; "
+                    "it must return 3 finite numbers"
+                )
+            out[i] = f
+        return out
+
+    @property
+    def pivot_samples(self) -> tuple[FloatArray, FloatArray] | None:
+        """The ``sampled_pivot`` model's samples: times [s] (n,) and positions [m] (n, 3); else None."""
+        return self._pivot
 
     @property
     def length(self) -> float:
@@ -142,22 +205,38 @@ class Pendulum:
 
     def params(self) -> dict[str, float | str]:
         """Model name and parameters with SI values (length [m], mass [kg], g [m/s²], extras)."""
-        return {"model": self.model, "length": self._length, "mass": self._mass, "g": self._g, **self._extra}
+        out: dict[str, float | str] = {
+            "model": self.model,
+            "length": self._length,
+            "mass": self._mass,
+            "g": self._g,
+            **self._extra,
+        }
+        if self._force is not None:
+            out["force"] = f"python callable {getattr(self._force, '__qualname__', repr(self._force))}"
+        return out
 
     @property
     def is_ideal(self) -> bool:
         """True for the ideal pendulum (the exact solution and the angle method need it)."""
-        return self.model == "ideal"
+        return self.model == "ideal" and self._force is None
 
     def _core_args(self) -> tuple[float, float, float]:
         return self._length, self._mass, self._g
 
     def _model_kwargs(self) -> dict[str, Any]:
-        return {"model_name": self.model, "extra": list(self._extra.items())}
+        kwargs: dict[str, Any] = {"model_name": self.model, "extra": list(self._extra.items())}
+        if self._pivot is not None:
+            kwargs["pivot"] = self._pivot
+        return kwargs
 
     def __repr__(self) -> str:
         extras = "".join(f", {k}={v!r}" for k, v in self._extra.items())
         model = "" if _infer_model(set(self._extra)) == self.model else f", model={self.model!r}"
+        if self._pivot is not None:
+            model = f", pivot_samples=<{len(self._pivot[0])} samples>"
+        if self._force is not None:
+            model += f", force={self._force!r}"
         return f"Pendulum(length={self._length!r}, g={self._g!r}, mass={self._mass!r}{model}{extras})"
 
     def state(self, x: Any, v: Any, *, project: bool = False) -> State:
@@ -198,7 +277,12 @@ class Pendulum:
             if ta.ndim == 0:
                 ta = np.full(xa.shape[0], float(ta))
             ta = np.ascontiguousarray(ta.ravel())
-        return _core.diagnostics(*self._core_args(), xa, va, **self._model_kwargs(), t=ta)
+        d = _core.diagnostics(*self._core_args(), xa, va, **self._model_kwargs(), t=ta)
+        if self._force is not None:  # the user force: its power F·v and its share x·F/l of the tension
+            f = self.force_at(ta, xa, va)
+            d["power"] = d["power"] + np.einsum("ij,ij->i", f, va)
+            d["tension"] = d["tension"] + np.einsum("ij,ij->i", f, xa) / self._length
+        return d
 
     def energy(self, state: State) -> float:
         """Total energy E = m(½|v|² + V(x)) [J] (T-2.6); V = g z for the ideal pendulum, plus the

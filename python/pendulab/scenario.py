@@ -31,6 +31,7 @@ the bad value and what is allowed.
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
 import json
 import math
@@ -49,10 +50,14 @@ from . import _core
 from .io import atomic_path
 from .model import Pendulum, State
 from .simulate import DEFAULTS, method_names, simulate
+from .spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .trajectory import Trajectory
 
 MODELS = tuple(m["name"] for m in _core.models())
 """Pendulum models a scenario may name (``[pendulum] model``; their parameters: ``pendulab models``)."""
+
+SPRING_ORDERS = {"rattle": 2, "rattle4": 4}
+"""Methods a ``model = "spring"`` scenario may name: the unconstrained Störmer–Verlet and triple jump."""
 
 _DEG = math.pi / 180
 _U64_LIMIT = 2**63  # save_every must fit the core's unsigned 64-bit counter
@@ -135,6 +140,14 @@ class PendulumSection(_Section):
     params: dict[str, float] = Field(
         default_factory=dict, description="the model's own parameters (SI units; `pendulab models`)"
     )
+    pivot_times: list[float] | None = Field(
+        None,
+        min_length=4,
+        description="model 'sampled_pivot': times of the pivot samples in s (>= 4, strictly increasing)",
+    )
+    pivot_positions: list[list[float]] | None = Field(
+        None, description="model 'sampled_pivot': pivot positions in m, one [x, y, z] per time"
+    )
 
     @model_validator(mode="before")
     @classmethod
@@ -171,6 +184,25 @@ class PendulumSection(_Section):
                     f"{rad} = {self.params[rad]!r}, {deg} = {self.params[deg]!r}"
                 )
         return self
+
+    @model_validator(mode="after")
+    def _pivot_samples(self) -> PendulumSection:
+        given = self.pivot_times is not None or self.pivot_positions is not None
+        if self.model == "sampled_pivot" and (self.pivot_times is None or self.pivot_positions is None):
+            raise ValueError(
+                "model 'sampled_pivot' needs pivot_times (s) and pivot_positions (m, [x, y, z] per time)"
+            )
+        if given and self.model != "sampled_pivot":
+            raise ValueError(
+                f"pivot_times and pivot_positions belong to model 'sampled_pivot', not {self.model!r}"
+            )
+        return self
+
+    def pivot_samples(self) -> tuple[list[float], list[list[float]]] | None:
+        """The ``sampled_pivot`` model's samples (times [s], positions [m]), else None."""
+        if self.pivot_times is None or self.pivot_positions is None:
+            return None
+        return self.pivot_times, self.pivot_positions
 
     def extras(self) -> dict[str, float]:
         """The model's own parameters in SI units (``<name>_deg`` converted to ``<name>`` in rad)."""
@@ -347,7 +379,7 @@ SECTIONS: dict[str, type[_Section]] = {
 }
 
 UNITS: dict[str, dict[str, str]] = {
-    "pendulum": {"length": "m", "mass": "kg", "g": "m/s²"},
+    "pendulum": {"length": "m", "mass": "kg", "g": "m/s²", "pivot_times": "s", "pivot_positions": "m"},
     "initial": {
         "theta": "rad",
         "theta_deg": "degrees",
@@ -549,12 +581,24 @@ class Scenario:
     spec: ScenarioSpec
     source: str = field(default="<string>", compare=False)
     _pendulum: Pendulum = field(init=False, repr=False, compare=False)
+    _spring: SwingingSpring | None = field(init=False, repr=False, compare=False)
     _state: State = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         p, sim = self.spec.pendulum, self.spec.simulation
+        object.__setattr__(self, "_spring", None)
+        if p.model == "spring":  # off the sphere: its own integrator (spring.py), not a Pendulum
+            self._init_spring()
+            return
         try:
-            pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, model=p.model, **p.extras())
+            pendulum = Pendulum(
+                length=p.length,
+                g=p.g,
+                mass=p.mass,
+                model=p.model,
+                pivot_samples=p.pivot_samples(),
+                **p.extras(),
+            )
         except _core.InvalidInputError as e:
             given = "".join(
                 f" (given as {deg} = {p.params[deg]!r} degrees)"
@@ -563,7 +607,23 @@ class Scenario:
             )
             raise ScenarioError(self.source, f"[pendulum] {e}{given}") from None
         object.__setattr__(self, "_pendulum", pendulum)
+        if (samples := pendulum.pivot_samples) is not None:
+            first, last = float(samples[0][0]), float(samples[0][-1])
+            if not (first <= sim.t0 and sim.t_end <= last):
+                raise ScenarioError(
+                    self.source,
+                    f"[simulation] the run [t0, t_end] = [{sim.t0!r}, {sim.t_end!r}] s leaves the pivot "
+                    f"samples' span [{first!r}, {last!r}] s (pendulum.pivot_times)",
+                )
         object.__setattr__(self, "_state", self._make_state(pendulum))
+        if pendulum.model == "string":  # hybrid (string_pendulum.py): its own, fewer settings
+            from .string_pendulum import check_string_settings
+
+            try:
+                check_string_settings(sim.method, sim.save_at)
+            except _core.InvalidInputError as e:
+                raise ScenarioError(self.source, f"[simulation] {e}") from None
+            return
         try:  # the core's own up-front checks (memory of the saved samples, save times), no stepping
             _core.Solver(
                 *pendulum._core_args(),
@@ -582,6 +642,59 @@ class Scenario:
             )
         except _core.InvalidInputError as e:
             raise ScenarioError(self.source, f"[simulation] {e}") from None
+
+    def _init_spring(self) -> None:
+        """The swinging spring (T-7.4): ``length`` is the rest length l₀ [m], ``stiffness`` k [N/m]; an
+        angle start lies on the sphere of the equilibrium length l = l₀ + m g/k, a Cartesian start is
+        taken as given (x [m], v [m/s] anywhere). Methods: rattle → Störmer–Verlet (order 2), rattle4
+        → its triple jump (order 4); save_every only. Validated by the core."""
+        p, sim, ini = self.spec.pendulum, self.spec.simulation, self.spec.initial
+        k = float(p.extras().get("stiffness", _own_params("spring")["stiffness"]["default"]))
+        spring = SwingingSpring(k / p.mass, p.length, p.g, p.mass)
+        if sim.method not in SPRING_ORDERS:
+            raise ScenarioError(
+                self.source,
+                f"[simulation] method {sim.method!r} cannot integrate the 'spring' model (it leaves the "
+                "sphere): use 'rattle' (Störmer–Verlet, order 2) or 'rattle4' (its triple jump, order 4)",
+            )
+        if sim.save_at is not None:
+            raise ScenarioError(self.source, "[simulation] save_at is not available for the 'spring' model")
+        if ini.project:
+            raise ScenarioError(
+                self.source, "[initial] project applies to pendulums on the sphere, not to the 'spring' model"
+            )
+        if ini.cartesian:
+            state = State(np.asarray(ini.x, dtype=np.float64), np.asarray(ini.v, dtype=np.float64))
+        else:
+            ell = spring.equilibrium_length
+            if not (math.isfinite(ell) and ell > 0):
+                raise ScenarioError(
+                    self.source,
+                    "[initial] an angle start needs an equilibrium length l = l0 + m g/k > 0, "
+                    f"got {ell!r} m; give a Cartesian start x, v instead",
+                )
+            state = Pendulum(length=ell, g=p.g, mass=p.mass).state_from_angles(*ini.angles())
+        try:  # the core's checks of parameters, start and step, without stepping
+            _core.spring_simulate(
+                spring.k_over_m,
+                spring.rest_length,
+                spring.g,
+                spring.mass,
+                np.ascontiguousarray(state.x),
+                np.ascontiguousarray(state.v),
+                sim.resolved_dt(),
+                0,
+                int(sim.save_every or 1),
+                2,
+            )
+        except _core.InvalidInputError as e:
+            raise ScenarioError(self.source, f"[pendulum] {e}") from None
+        object.__setattr__(self, "_spring", spring)
+        object.__setattr__(self, "_state", state)
+
+    def spring(self) -> SwingingSpring | None:
+        """The swinging spring of a ``model = "spring"`` scenario (None for the pendulum models)."""
+        return self._spring
 
     def _make_state(self, pendulum: Pendulum) -> State:
         ini = self.spec.initial
@@ -669,7 +782,14 @@ class Scenario:
         return self.spec.title
 
     def pendulum(self) -> Pendulum:
-        """The pendulum of ``[pendulum]`` (length [m], mass [kg], g [m/s²])."""
+        """The pendulum of ``[pendulum]`` (length [m], mass [kg], g [m/s²]). A ``model = "spring"``
+        scenario has none (:meth:`spring` instead): :class:`ScenarioError`."""
+        if self._spring is not None:
+            raise ScenarioError(
+                self.source,
+                "the 'spring' model is a swinging spring, not a pendulum on the sphere: see "
+                "Scenario.spring(); it runs with Scenario.run() and `pendulab run`",
+            )
         return self._pendulum
 
     def initial_state(self) -> State:
@@ -696,7 +816,7 @@ class Scenario:
         save_every: int | None = None,
         rtol: float | None = None,
         atol: float | None = None,
-    ) -> Trajectory:
+    ) -> Trajectory | SpringTrajectory:
         """Simulates the scenario; keyword arguments override ``[simulation]`` (see :meth:`with_overrides`).
 
         ``progress`` as in :func:`pendulab.simulate` (default: a bar only for long runs). Ctrl-C returns
@@ -706,6 +826,17 @@ class Scenario:
             method=method, dt=dt, t_end=t_end, save_every=save_every, rtol=rtol, atol=atol
         )
         sim = sc.spec.simulation
+        if sc._spring is not None:
+            run = simulate_spring(
+                sc._spring,
+                sc._state.x,
+                sc._state.v,
+                sim.t_end - sim.t0,
+                dt=sim.resolved_dt(),
+                save_every=sim.save_every or 1,
+                order=SPRING_ORDERS[sim.method],
+            )
+            return dataclasses.replace(run, t=run.t + sim.t0)  # type: ignore[return-value]
         rtol, atol = sim.resolved_tolerances()
         return simulate(
             sc.pendulum(),

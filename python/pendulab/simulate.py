@@ -53,7 +53,7 @@ def simulate(
     state: State,
     t_end: float,
     *,
-    method: str = "rattle",
+    method: str | None = None,
     dt: float | None = None,
     rtol: float = 1e-10,
     atol: float = 1e-12,
@@ -69,7 +69,8 @@ def simulate(
 
     Parameters
     ----------
-    method : a name from :func:`methods` (default ``"rattle"``).
+    method : a name from :func:`methods` (default ``"rattle"``; ``"dop853"`` for a pendulum with a
+        user ``force`` callable, which the RATTLE family cannot integrate).
     dt : step size [s] of fixed-step methods (default 1e-3 s); for ``dop853`` an optional initial step.
     rtol, atol : tolerances of ``dop853`` (atol in m and m/s).
     project : ``dop853`` only: project onto TS² after every step (default True).
@@ -83,7 +84,40 @@ def simulate(
     progress : show a progress bar (default: only for runs of more than 5·10⁶ steps).
     max_saved_bytes : memory limit for saved samples (default 4 GiB); exceeding it is an error
         raised before the run starts (fixed-step methods) or when reached (``dop853``).
+
+    The ``"string"`` model (a rope that goes slack) is hybrid and runs in
+    :func:`pendulab.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
+    rkmk4 with ``dt`` in the taut phases, ``save_every`` only, in one call (no progress bar).
     """
+    if method is None:
+        method = "dop853" if pendulum.force is not None else "rattle"
+    if pendulum.force is not None and conserve:
+        raise _core.InvalidInputError(
+            "conserve=True would hold E and J₃ fixed, but the user force does work (dE/dt = F·v)"
+        )
+    if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
+        from .string_pendulum import check_string_settings, simulate_string
+
+        check_string_settings(method, save_at, conserve)
+        if save_every is not None and (isinstance(save_every, bool) or int(save_every) != save_every):
+            raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+        return simulate_string(
+            pendulum,
+            state,
+            t_end,
+            method=method,
+            dt=dt,
+            save_every=save_every,
+            t0=t0,
+            max_saved_bytes=max_saved_bytes,
+        )
+    if pendulum.pivot_samples is not None:
+        first, last = float(pendulum.pivot_samples[0][0]), float(pendulum.pivot_samples[0][-1])
+        if not (first <= t0 and t_end <= last):
+            raise _core.InvalidInputError(
+                f"the run [t0, t_end] = [{t0!r}, {t_end!r}] s leaves the pivot samples' span "
+                f"[{first!r}, {last!r}] s: give samples covering the whole run"
+            )
     info = {m["name"]: m for m in _core.methods()}.get(method)
     if info is None:
         raise _core.InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")
@@ -97,7 +131,7 @@ def simulate(
         raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     _check_conserve(pendulum, conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
-    solver = _core.Solver(
+    args = (
         *pendulum._core_args(),
         np.ascontiguousarray(state.x),
         np.ascontiguousarray(state.v),
@@ -108,12 +142,13 @@ def simulate(
         float(rtol),
         float(atol),
         bool(project),
-        None if save_every is None else int(save_every),
-        times,
-        max_saved_bytes,
-        **pendulum._model_kwargs(),
-        conserve=bool(conserve),
     )
+    saving = (None if save_every is None else int(save_every), times, max_saved_bytes)
+    solver: _core.Solver | _core.ForceSolver
+    if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)
+        solver = _core.ForceSolver(*args, pendulum.force, *saving, **pendulum._model_kwargs())
+    else:
+        solver = _core.Solver(*args, *saving, **pendulum._model_kwargs(), conserve=bool(conserve))
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
     parts: list[tuple[FloatArray, FloatArray, FloatArray]] = []
@@ -169,6 +204,10 @@ class Stepper:
         conserve: bool = False,
     ) -> None:
         _check_conserve(pendulum, conserve)
+        if pendulum.force is not None:
+            raise _core.InvalidInputError(
+                "the incremental Stepper does not take a user force callable; use pendulab.simulate"
+            )
         self.pendulum = pendulum
         self._core = _core.Stepper(
             *pendulum._core_args(),

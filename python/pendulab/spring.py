@@ -7,13 +7,16 @@ l = l₀ + m g/k, energy passes between bouncing and swinging and the swing plan
 
 from __future__ import annotations
 
+import json
 import math
+import os
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from . import _core
+from . import _core, io
 from .model import FloatArray
 
 
@@ -51,12 +54,100 @@ class SpringTrajectory:
     j3: FloatArray
     metadata: dict[str, Any] = field(default_factory=dict)
 
+    interrupted: bool = False
+
+    def __len__(self) -> int:
+        return int(self.t.shape[0])
+
+    @property
+    def r(self) -> FloatArray:
+        """The spring's length |r| [m] at each sample."""
+        return np.linalg.norm(self.x, axis=1)
+
     @property
     def bouncing_energy(self) -> FloatArray:
         r = np.linalg.norm(self.x, axis=1)
         rdot = np.einsum("ij,ij->i", self.x, self.v) / r
         dl = r - self.spring.equilibrium_length
         return self.spring.mass * (0.5 * rdot**2 + 0.5 * self.spring.k_over_m * dl**2)
+
+    def columns(self) -> dict[str, tuple[str, FloatArray]]:
+        """Flat columns name -> (unit, values) for files: t, x/y/z, vx/vy/vz, r, energy, j3,
+        bouncing_energy."""
+        cols: dict[str, tuple[str, FloatArray]] = {"t": ("s", self.t)}
+        for k, axis in enumerate("xyz"):
+            cols[axis] = ("m", self.x[:, k])
+        for k, axis in enumerate("xyz"):
+            cols[f"v{axis}"] = ("m/s", self.v[:, k])
+        cols["r"] = ("m", self.r)
+        cols["energy"] = ("J", self.energy)
+        cols["j3"] = ("kg m^2/s", self.j3)
+        cols["bouncing_energy"] = ("J", self.bouncing_energy)
+        return cols
+
+    def file_metadata(self) -> dict[str, Any]:
+        """The spring's parameters (SI), the integrator and the units, as files carry them."""
+        sp = self.spring
+        return {
+            "software": "pendulab",
+            "pendulum": {
+                "model": "spring",
+                "k_over_m": sp.k_over_m,
+                "stiffness": sp.k_over_m * sp.mass,
+                "rest_length": sp.rest_length,
+                "equilibrium_length": sp.equilibrium_length,
+                "g": sp.g,
+                "mass": sp.mass,
+            },
+            "method": "stormer_verlet" if self.metadata.get("order", 2) == 2 else "triple_jump",
+            "options": dict(self.metadata),
+            "interrupted": self.interrupted,
+            "units": {name: unit for name, (unit, _) in self.columns().items()}
+            | {"k_over_m": "1/s^2", "stiffness": "N/m", "rest_length": "m", "equilibrium_length": "m"},
+            "conventions": "SI units, z up, gravity along -z for g > 0",
+        }
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` (dims time, axis) with units as attributes."""
+        xr = io._require("xarray")
+        cols = self.columns()
+        data: dict[str, Any] = {
+            "x": (("time", "axis"), self.x, {"units": "m"}),
+            "v": (("time", "axis"), self.v, {"units": "m/s"}),
+        }
+        for name in ("r", "energy", "j3", "bouncing_energy"):
+            data[name] = ("time", cols[name][1], {"units": cols[name][0]})
+        return xr.Dataset(
+            data,
+            coords={"time": ("time", self.t, {"units": "s"}), "axis": ["x", "y", "z"]},
+            attrs={"pendulab": json.dumps(self.file_metadata(), sort_keys=True)},
+        )
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Writes the run atomically; the format from the suffix (.csv, .parquet, .nc)."""
+        return io.save(self, path)  # type: ignore[arg-type]
+
+    def summary(self) -> str:
+        """A few lines: parameters, span, conservation of E and J₃ (both invariants, T-7.4), the
+        range of the spring's length and of the bouncing energy."""
+        sp, e, j = self.spring, self.energy, self.j3
+        scale = max(abs(e[0]), sp.mass * abs(sp.g) * sp.equilibrium_length, 1e-300)
+        bounce = self.bouncing_energy
+        drift = np.max(np.abs(e - e[0])) / scale
+        return "\n".join(
+            [
+                f"spring:   k = {sp.k_over_m * sp.mass:g} N/m (k/m = {sp.k_over_m:g} 1/s^2), "
+                f"rest length {sp.rest_length:g} m, equilibrium length {sp.equilibrium_length:g} m, "
+                f"m = {sp.mass} kg, g = {sp.g} m/s^2",
+                f"method:   {self.file_metadata()['method']} (order {self.metadata.get('order', 2)}), "
+                f"dt = {self.metadata.get('dt', float('nan')):g} s",
+                f"span:     t = {self.t[0]:g} .. {self.t[-1]:g} s, {len(self)} samples",
+                f"energy:   E0 = {e[0]:.12g} J, max |E - E0| / (m |g| l) = {drift:.3e}",
+                f"J3:       J3_0 = {j[0]:.12g} kg m^2/s, max |J3 - J3_0| = {np.max(np.abs(j - j[0])):.3e}",
+                f"length:   r in [{self.r.min():.6f}, {self.r.max():.6f}] m",
+                f"bouncing: energy in [{bounce.min():.6g}, {bounce.max():.6g}] J",
+            ]
+        )
 
 
 def simulate_spring(

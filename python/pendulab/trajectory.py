@@ -34,12 +34,19 @@ UNITS = {
     "power": "W",
     "power_balance_residual": "J",
     "pivot": "m",
+    "boom": "m",
+    "taut": "1",
 }
 
 
 @dataclass(frozen=True)
 class Trajectory:
-    """Samples of one run. ``interrupted`` is True when the run was stopped (Ctrl-C) before t_end."""
+    """Samples of one run. ``interrupted`` is True when the run was stopped (Ctrl-C) before t_end.
+
+    The string model (``model="string"``) also has ``taut`` (N,) bool — the string is taut at the
+    sample — and ``events``: a dict of arrays ``t`` [s], ``kind`` ("slack": the tension reached 0;
+    "taut": the string snapped taut), ``x`` [m], ``v_before``, ``v_after`` [m/s], ``energy_lost`` [J].
+    """
 
     pendulum: Pendulum
     t: FloatArray
@@ -49,6 +56,8 @@ class Trajectory:
     options: dict[str, Any] = field(default_factory=dict)
     stats: dict[str, int] = field(default_factory=dict)
     interrupted: bool = False
+    taut: npt.NDArray[np.bool_] | None = None
+    events: dict[str, Any] | None = None
 
     def __len__(self) -> int:
         return int(self.t.shape[0])
@@ -70,8 +79,20 @@ class Trajectory:
 
     @property
     def tension(self) -> FloatArray:
-        """Rod tension [N] at each sample (T-2.3)."""
+        """Rod tension [N] at each sample (T-2.3); for the string model 0 where the string is slack."""
+        if self.taut is not None:
+            return np.where(self.taut, self._diag["tension"], 0.0)
         return self._diag["tension"]
+
+    @property
+    def energy_lost(self) -> FloatArray:
+        """String model: the energy lost in the snaps up to each sample [J] (zeros otherwise), so that
+        E + energy_lost is conserved (T-2.6 between events; up to the integrator's error)."""
+        if not self.events or len(self.events["t"]) == 0:
+            return np.zeros_like(self.t)
+        te, lost = np.asarray(self.events["t"]), np.asarray(self.events["energy_lost"])
+        cumulative = np.concatenate([[0.0], np.cumsum(lost)])
+        return cumulative[np.searchsorted(te, self.t, side="right")]
 
     @property
     def radius_error(self) -> FloatArray:
@@ -118,6 +139,20 @@ class Trajectory:
         return self._diag.get("pivot")
 
     @property
+    def boom(self) -> FloatArray | None:
+        """The slewing crane (``model="slewing"``): the payload's position relative to the boom tip in
+        the frame turning with the boom [m], (N, 3) = (radial, tangential, vertical) — x rotated by −ωt
+        about e₃. Compare with :func:`pendulab.slewing_sway` (the linear theory, T-7.2). ``None`` for
+        other models."""
+        return self._diag.get("boom")
+
+    @property
+    def sway_angle(self) -> FloatArray:
+        """The cable's angle from the downward vertical [rad] (the polar angle θ; for a moving pivot
+        measured at the pivot)."""
+        return self.theta
+
+    @property
     def theta(self) -> FloatArray:
         """Polar angle from the downward vertical [rad]."""
         return np.arctan2(np.hypot(self.x[:, 0], self.x[:, 1]), -self.x[:, 2])
@@ -140,9 +175,18 @@ class Trajectory:
             "options": self.options,
             "stats": self.stats,
             "interrupted": self.interrupted,
+            **({"events": self._event_list()} if self.events is not None else {}),
             "units": UNITS | self._param_units(),
             "conventions": "SI units, z up, gravity along -z for g > 0, theta from the downward vertical",
         }
+
+    def _event_list(self) -> list[dict[str, Any]]:
+        """The string model's events as JSON-ready records (t [s], kind, energy_lost [J])."""
+        ev = self.events or {}
+        return [
+            {"t": float(t), "kind": str(k), "energy_lost": float(e)}
+            for t, k, e in zip(ev.get("t", []), ev.get("kind", []), ev.get("energy_lost", []), strict=True)
+        ]
 
     def _param_units(self) -> dict[str, str]:
         """Units of the pendulum's parameters: length, mass, g and the model's own (registry)."""
@@ -159,12 +203,18 @@ class Trajectory:
             cols[f"v{axis}"] = ("m/s", self.v[:, k])
         for name in ("energy", "j3", "tension", "constraint_error", "tangency"):
             cols[name] = (UNITS[name], getattr(self, name))
-        if not self.pendulum.is_ideal:
+        if not self.pendulum.is_ideal and self.taut is None:
             for name in ("power", "power_balance_residual"):
                 cols[name] = (UNITS[name], getattr(self, name))
         if self.pivot is not None:
             for k, axis in enumerate("xyz"):
                 cols[f"pivot_{axis}"] = ("m", self.pivot[:, k])
+        if self.boom is not None:
+            for k, axis in enumerate(("radial", "tangential", "vertical")):
+                cols[f"boom_{axis}"] = ("m", self.boom[:, k])
+        if self.taut is not None:
+            cols["taut"] = ("1", self.taut.astype(np.float64))
+            cols["energy_lost"] = ("J", self.energy_lost)
         return cols
 
     def to_xarray(self) -> Any:
@@ -173,7 +223,7 @@ class Trajectory:
 
         xr = io._require("xarray")
         extra: dict[str, Any] = {}
-        if not self.pendulum.is_ideal:
+        if not self.pendulum.is_ideal and self.taut is None:
             power = {"units": "W", "long_name": "power of the non-conservative forces"}
             extra["power"] = ("time", self.power, power)
             extra["power_balance_residual"] = (
@@ -183,6 +233,11 @@ class Trajectory:
             )
         if self.pivot is not None:
             extra["pivot"] = (("time", "axis"), self.pivot, {"units": "m", "long_name": "pivot position"})
+        if self.boom is not None:
+            extra["boom"] = (("time", "axis"), self.boom, {"units": "m", "long_name": "x in the boom frame"})
+        if self.taut is not None:
+            extra["taut"] = ("time", self.taut.astype(np.int8), {"units": "1", "long_name": "string taut"})
+            extra["energy_lost"] = ("time", self.energy_lost, {"units": "J", "long_name": "lost in snaps"})
         ds = xr.Dataset(
             {
                 "x": (("time", "axis"), self.x, {"units": "m", "long_name": "bob position"}),
@@ -241,7 +296,18 @@ class Trajectory:
             f"span:     t = {self.t[0]:g} .. {self.t[-1]:g} s, {len(self)} samples, {steps} steps"
             + ("  (INTERRUPTED)" if self.interrupted else ""),
         ]
-        if self.is_conservative:
+        if self.taut is not None:
+            kinds = list((self.events or {}).get("kind", []))
+            lost = self.energy_lost
+            drift_e = np.max(np.abs(e + lost - e[0])) / e_scale
+            lines += [
+                f"string:   went slack {kinds.count('slack')}x, snapped taut {kinds.count('taut')}x "
+                f"(restitution {p.extra.get('restitution', 0.0):g}); taut at {np.count_nonzero(self.taut)} "
+                f"of {len(self)} samples",
+                f"energy:   E0 = {e[0]:.12g} J, lost in snaps {lost[-1]:.6g} J, "
+                f"max |E + lost - E0| / (m |g| l) = {drift_e:.3e}",
+            ]
+        elif self.is_conservative:
             drift_e = np.max(np.abs(e - e[0])) / e_scale
             lines.append(f"energy:   E0 = {e[0]:.12g} J, max |E - E0| / (m |g| l) = {drift_e:.3e}")
         else:
@@ -262,9 +328,11 @@ class Trajectory:
                 f"J3:       J3_0 = {j[0]:.12g} kg m^2/s, J3(end) = {j[-1]:.12g} kg m^2/s, "
                 f"max |J3 - J3_0| = {np.max(np.abs(j - j[0])):.3e}"
             )
+        on = slice(None) if self.taut is None else self.taut
+        where = "" if self.taut is None else " (taut samples)"
         lines += [
-            f"sphere:   max ||x| - l| / l = {np.max(np.abs(self.constraint_error)):.3e}, "
-            f"max |x.v| = {np.max(np.abs(self.tangency)):.3e} m^2/s",
+            f"sphere:   max ||x| - l| / l = {np.max(np.abs(self.constraint_error[on]), initial=0.0):.3e}, "
+            f"max |x.v| = {np.max(np.abs(self.tangency[on]), initial=0.0):.3e} m^2/s{where}",
             f"height:   z in [{self.x[:, 2].min():.6f}, {self.x[:, 2].max():.6f}] m",
         ]
         return "\n".join(lines)

@@ -5,7 +5,10 @@
 
 mod ensemble;
 mod exact;
+mod force;
+mod slewing;
 mod spring;
+mod string;
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
@@ -58,18 +61,50 @@ pub(crate) fn model(length: f64, mass: f64, g: f64) -> PyResult<IdealPendulum> {
     IdealPendulum::new(length, mass, g).map_err(to_py)
 }
 
-/// A registry model by name with its extra parameters (None: the ideal pendulum).
+/// Pivot samples from Python: times [s] (n,) and positions [m] (n, 3).
+pub(crate) type PivotArrays<'py> = (PyReadonlyArray1<'py, f64>, PyReadonlyArray2<'py, f64>);
+
+/// A registry model by name with its extra parameters (None: the ideal pendulum); the
+/// `sampled_pivot` model takes its path from `pivot` (times, positions).
 pub(crate) fn any_model(
     length: f64,
     mass: f64,
     g: f64,
     name: Option<&str>,
     extra: Option<Vec<(String, f64)>>,
+    pivot: Option<PivotArrays<'_>>,
 ) -> PyResult<AnyModel> {
     let params = Params::new(length, mass, g).map_err(to_py)?;
     let extra = extra.unwrap_or_default();
     let pairs: Vec<(&str, f64)> = extra.iter().map(|(k, v)| (k.as_str(), *v)).collect();
-    AnyModel::build(name.unwrap_or("ideal"), params, &pairs).map_err(to_py)
+    let name = name.unwrap_or("ideal");
+    match (name, pivot) {
+        ("sampled_pivot", Some((t, p))) => {
+            // validates the keys and ranges (and that only damping is given) by building without samples
+            if let Some((key, _)) = pairs.iter().find(|(k, _)| *k != "damping") {
+                return Err(to_py(Error::UnknownParameter {
+                    model: "sampled_pivot",
+                    name: key.to_string(),
+                    available: "damping".into(),
+                }));
+            }
+            let damping = pairs.iter().find(|(k, _)| *k == "damping").map_or(0.0, |(_, v)| *v);
+            let (t, p) = (t.as_array(), p.as_array());
+            if p.ncols() != 3 {
+                return Err(InvalidInputError::new_err(format!(
+                    "pivot positions must have shape (n, 3) in m, got {:?}",
+                    p.dim()
+                )));
+            }
+            let times: Vec<f64> = t.iter().copied().collect();
+            let positions: Vec<DVec3> = p.rows().into_iter().map(|r| DVec3::new(r[0], r[1], r[2])).collect();
+            AnyModel::sampled_pivot(params, &times, &positions, damping).map_err(to_py)
+        }
+        (_, Some(_)) => Err(InvalidInputError::new_err(format!(
+            "pivot samples belong to the 'sampled_pivot' model, not to {name:?}"
+        ))),
+        (_, None) => AnyModel::build(name, params, &pairs).map_err(to_py),
+    }
 }
 
 fn param_dict<'py>(
@@ -87,17 +122,19 @@ fn param_dict<'py>(
     Ok(d)
 }
 
-/// Validates a model: l > 0 m, m > 0 kg, finite g, a registered name and its parameters.
+/// Validates a model: l > 0 m, m > 0 kg, finite g, a registered name and its parameters (and the
+/// pivot samples of `sampled_pivot`).
 #[pyfunction]
-#[pyo3(signature = (length, mass, g, model_name=None, extra=None))]
+#[pyo3(signature = (length, mass, g, model_name=None, extra=None, pivot=None))]
 fn check_model(
     length: f64,
     mass: f64,
     g: f64,
     model_name: Option<&str>,
     extra: Option<Vec<(String, f64)>>,
+    pivot: Option<PivotArrays<'_>>,
 ) -> PyResult<()> {
-    any_model(length, mass, g, model_name, extra).map(|_| ())
+    any_model(length, mass, g, model_name, extra, pivot).map(|_| ())
 }
 
 /// The model registry: name, summary, and parameters (common ones first) with units and limits.
@@ -109,6 +146,7 @@ fn models(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
             let d = PyDict::new(py);
             d.set_item("name", m.name)?;
             d.set_item("summary", m.summary)?;
+            d.set_item("interactive", m.interactive)?;
             let params: PyResult<Vec<_>> = COMMON.iter().chain(m.params).map(|p| param_dict(py, p)).collect();
             d.set_item("params", params?)?;
             Ok(d)
@@ -220,7 +258,7 @@ fn state_from_angles(
 /// Diagnostics along arrays x, v of shape (N, 3): energy [J], j3 [kg m²/s], tension [N],
 /// radius_error = |x| − l [m], tangency = x·v [m²/s].
 #[pyfunction]
-#[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None))]
+#[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None, pivot=None))]
 #[allow(clippy::too_many_arguments)]
 fn diagnostics<'py>(
     py: Python<'py>,
@@ -232,8 +270,9 @@ fn diagnostics<'py>(
     model_name: Option<&str>,
     extra: Option<Vec<(String, f64)>>,
     t: Option<PyReadonlyArray1<'py, f64>>,
+    pivot: Option<PivotArrays<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let m = any_model(length, mass, g, model_name, extra)?;
+    let m = any_model(length, mass, g, model_name, extra, pivot)?;
     let times = t.map(|t| t.as_array().to_vec());
     let (x, v) = (x.as_array(), v.as_array());
     if x.ncols() != 3 || v.dim() != x.dim() {
@@ -283,6 +322,17 @@ fn diagnostics<'py>(
             }
         }
         d.set_item("pivot", p.into_pyarray(py))?;
+        // the slewing crane: x in the frame turning with the boom (radial, tangential, vertical)
+        if path.boom_frame(0.0, DVec3::ZERO).is_some() {
+            let mut b = Array2::<f64>::zeros((n, 3));
+            for (i, &ti) in ts.iter().enumerate() {
+                let q = path.boom_frame(ti, DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]])).unwrap();
+                for k in 0..3 {
+                    b[[i, k]] = q[k];
+                }
+            }
+            d.set_item("boom", b.into_pyarray(py))?;
+        }
     }
     Ok(d)
 }
@@ -304,7 +354,7 @@ struct Solver_ {
 #[pymethods]
 impl Solver_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, conserve=false))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, conserve=false, pivot=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -325,8 +375,9 @@ impl Solver_ {
         model_name: Option<&str>,
         extra: Option<Vec<(String, f64)>>,
         conserve: bool,
+        pivot: Option<PivotArrays<'_>>,
     ) -> PyResult<Self> {
-        let m = any_model(length, mass, g, model_name, extra)?;
+        let m = any_model(length, mass, g, model_name, extra, pivot)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
         let save = match (save_every, save_times) {
             (Some(_), Some(_)) => {
@@ -385,7 +436,7 @@ struct Stepper_ {
 #[pymethods]
 impl Stepper_ {
     #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None, conserve=false))]
+    #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None, conserve=false, pivot=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         length: f64,
@@ -402,8 +453,9 @@ impl Stepper_ {
         model_name: Option<&str>,
         extra: Option<Vec<(String, f64)>>,
         conserve: bool,
+        pivot: Option<PivotArrays<'_>>,
     ) -> PyResult<Self> {
-        let m = any_model(length, mass, g, model_name, extra)?;
+        let m = any_model(length, mass, g, model_name, extra, pivot)?;
         let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
         let opts = options(method, dt, rtol, atol, project)?;
         let mut inner = Stepper::new(m, t0, s, &opts).map_err(to_py)?;
@@ -472,6 +524,9 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     exact::register(m)?;
     ensemble::register(m)?;
     spring::register(m)?;
+    string::register(m)?;
+    slewing::register(m)?;
+    force::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -1,12 +1,18 @@
 """The swinging spring from Python (T-7.4): E and J₃ conserved by the symplectic integrator, the
-1:1:2 resonance exchanges energy between bouncing and swinging, bad input. SI units."""
+1:1:2 resonance exchanges energy between bouncing and swinging, bad input; the same from scenario
+files (``model = "spring"``) and ``pendulab run``, with r, E and J₃ in the output. SI units."""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
+from conftest import SCENARIOS
+from typer.testing import CliRunner
 
 import pendulab as pl
+from pendulab.cli import app
 
 
 def test_resonant_exchange_and_conservation() -> None:
@@ -28,3 +34,67 @@ def test_bad_input() -> None:
         pl.simulate_spring(pl.SwingingSpring(10.0, 0.0), [0, 0, -1], [0, 0, 0], t_end=1.0)
     with pytest.raises(pl.InvalidInputError, match="order"):
         pl.simulate_spring(pl.SwingingSpring(10.0, 1.0), [0, 0, -1], [0, 0, 0], t_end=1.0, order=3)
+
+
+# --- scenario files and the command line (model = "spring") ------------------------------------------
+
+SPRING_TOML = SCENARIOS / "swinging_spring.toml"
+
+
+def test_spring_scenario_runs_like_simulate_spring() -> None:
+    """``model = "spring"``: length is the rest length l₀, stiffness k [N/m]; the run is
+    simulate_spring's (rattle4 → the triple jump), E and J₃ conserved."""
+    sc = pl.load_scenario(SPRING_TOML)
+    sp = sc.spring()
+    assert sp is not None and sp.k_over_m == 39.24 and sp.rest_length == 0.75
+    assert sp.equilibrium_length == pytest.approx(1.0, rel=1e-15)  # l₀ + m g/k
+    assert pl.Scenario.from_toml_str(sc.to_toml()) == sc
+    tr = sc.run(t_end=5.0)
+    direct = pl.simulate_spring(
+        sp, sc.initial_state().x, sc.initial_state().v, 5.0, dt=1e-3, save_every=100, order=4
+    )
+    np.testing.assert_array_equal(tr.x, direct.x)
+    assert abs(tr.j3[0]) == pytest.approx(5e-5, rel=1e-12) and np.max(np.abs(tr.j3 - tr.j3[0])) < 1e-14
+    assert np.max(np.abs(tr.energy - tr.energy[0])) < 1e-10
+    np.testing.assert_allclose(tr.r, np.linalg.norm(tr.x, axis=1), rtol=1e-15)
+    # an angle start lies on the sphere of the equilibrium length
+    angles = (
+        SPRING_TOML.read_text()
+        .replace("x = [0.01, 0.0, -1.05]", "theta_deg = 10.0")
+        .replace("v = [0.0, 0.005, 0.0]", "phi_dot = 0.5")
+    )
+    start = pl.Scenario.from_toml_str(angles).initial_state()
+    assert np.linalg.norm(start.x) == pytest.approx(1.0, rel=1e-15)
+
+
+def test_spring_from_the_cli_writes_r_energy_and_j3(tmp_path: Path) -> None:
+    out = tmp_path / "spring.csv"
+    result = CliRunner().invoke(app, ["run", str(SPRING_TOML), "--t-end", "2", "--out", str(out)])
+    assert result.exit_code == 0, result.output
+    assert "equilibrium length 1 m" in result.output and "max |E - E0|" in result.output
+    header = out.read_text().splitlines()[1]
+    for column in ("r [m]", "energy [J]", "j3 [kg m^2/s]", "bouncing_energy [J]"):
+        assert column in header
+    data = np.loadtxt(out, delimiter=",", skiprows=2)
+    assert data.shape == (21, 11) and data[-1, 0] == pytest.approx(2.0)
+
+
+@pytest.mark.parametrize(
+    ("edit", "needle"),
+    [
+        (('method = "rattle4"', 'method = "dop853"'), "cannot integrate the 'spring' model"),
+        (("stiffness = 39.24", "stiffness = 0.0"), "k/m"),
+        (("stiffness = 39.24", "stiffnes = 1.0"), "did you mean 'stiffness'"),
+        (("x = [0.01, 0.0, -1.05]", "x = [0.0, 0.0, 0.0]"), "away from the pivot"),
+    ],
+)
+def test_bad_spring_scenarios_are_named(edit: tuple[str, str], needle: str) -> None:
+    with pytest.raises(pl.ScenarioError, match=needle):
+        pl.Scenario.from_toml_str(SPRING_TOML.read_text().replace(*edit))
+
+
+def test_spring_is_not_a_pendulum() -> None:
+    with pytest.raises(pl.InvalidInputError, match="SwingingSpring"):
+        pl.Pendulum(model="spring")
+    with pytest.raises(pl.ScenarioError, match="not a pendulum"):
+        pl.load_scenario(SPRING_TOML).pendulum()

@@ -137,6 +137,32 @@ pub enum Error {
         /// Model name.
         model: &'static str,
     },
+    /// A hybrid model (taut and slack phases) given to the plain stepper.
+    #[error(
+        "the '{model}' model is hybrid (the string goes slack and snaps taut again): it has its own \
+             driver — pendulab.simulate in Python, pendulab run for scenario files, \
+             pendulab_core::model::string_run in Rust — not the incremental stepper"
+    )]
+    HybridModel {
+        /// Model name.
+        model: &'static str,
+    },
+    /// A model whose state is not on TS² (the swinging spring) asked for as a pendulum.
+    #[error(
+        "the '{model}' model (the swinging spring, T-7.4) leaves the sphere and is not a rod pendulum: \
+             use pendulab.SwingingSpring and pendulab.simulate_spring, or a scenario file with \
+             model = \"{model}\" (pendulab run)"
+    )]
+    OffSphereModel {
+        /// Model name.
+        model: &'static str,
+    },
+    /// Pivot samples that cannot define a path.
+    #[error("invalid pivot samples: {reason}")]
+    InvalidPivotSamples {
+        /// What is wrong.
+        reason: String,
+    },
     /// The save times are not usable.
     #[error("invalid save times: {reason}")]
     InvalidSaveTimes {

@@ -88,6 +88,9 @@ impl<M: Model> Stepper<M> {
             });
         }
         let info = options.method.info();
+        if model.is_hybrid() {
+            return Err(Error::HybridModel { model: model.name() });
+        }
         if options.method == Method::Rk4Angles && !model.is_ideal() {
             return Err(Error::UnsupportedModel { method: info.name, model: model.name() });
         }

@@ -191,7 +191,7 @@ fn invariant_projection_leaves_a_decaying_j3_alone() {
         AnyModel::build("damped", pendulab_core::Params::new(1.0, 1.0, 9.81).unwrap(), &[("damping", 0.3)])
             .unwrap();
     let s0 = State::from_angles(m.params(), 1.0, 0.0, 0.0, 2.0).unwrap();
-    let mut st = Stepper::new(m, 0.0, s0, &options(1e-12, true)).unwrap();
+    let mut st = Stepper::new(m.clone(), 0.0, s0, &options(1e-12, true)).unwrap();
     st.set_invariant_projection(true);
     st.step_to(5.0).unwrap();
     let want = j3(&m, &s0) * (-0.3f64 * 5.0).exp();

@@ -36,7 +36,7 @@ fn zero_extras_reduce_to_the_ideal_pendulum() {
         assert!(m.is_conservative() && m.is_axisymmetric() && !m.has_velocity_forces(), "{name}");
         for method in Method::ALL.into_iter().filter(|&m| m != Method::Rk4Angles) {
             let a = run(ideal, s0, 3.0, &opts(method, 1e-3));
-            let b = run(m, s0, 3.0, &opts(method, 1e-3));
+            let b = run(m.clone(), s0, 3.0, &opts(method, 1e-3));
             let d = (a.x - b.x).length() + (a.v - b.v).length();
             assert!(d < 1e-13, "{name} with {}: {d:e} from the ideal pendulum", method.info().name);
         }
@@ -63,7 +63,7 @@ fn power_balance_holds() {
         let n = (20.0 / dt).round() as usize;
         let times: Vec<f64> = (0..=n).map(|k| k as f64 * dt).collect();
         let opts = opts(Method::Dop853, 0.0);
-        let mut solver = Solver::new(m, 0.0, s0, 20.0, &opts, SaveAt::Times(times), 1 << 30).unwrap();
+        let mut solver = Solver::new(m.clone(), 0.0, s0, 20.0, &opts, SaveAt::Times(times), 1 << 30).unwrap();
         while !solver.advance(1 << 20).unwrap() {}
         let samples = solver.take_samples();
         let lost = energy(&m, &samples.states[0]) - energy(&m, samples.states.last().unwrap());
@@ -86,7 +86,7 @@ fn linear_damping_decays_j3_exactly_as_exp_minus_ct() {
     // "Round-off": each step applies 2 rounded factors per RATTLE substep (1, 3, 15 substeps), the
     // same ones every step, so their rounding adds up linearly: bound 2·s·N·ε with N = 10⁴ steps.
     for (method, substeps) in [(Method::Rattle, 1.0), (Method::Rattle4, 3.0), (Method::Rattle8, 15.0)] {
-        let s = run(m, s0, 10.0, &opts(method, 1e-3));
+        let s = run(m.clone(), s0, 10.0, &opts(method, 1e-3));
         let want = j3(&m, &s0) * (-c * 10.0f64).exp();
         let rel = (j3(&m, &s) - want).abs() / want.abs();
         eprintln!("{}: J₃ relative error {rel:e}", method.info().name);
@@ -112,12 +112,16 @@ fn the_splitting_keeps_its_orders() {
         AnyModel::build("rotating", params(), &[("frame_rate", 0.7), ("latitude", 0.6), ("damping", 0.1)])
             .unwrap();
     for model in [m, rot] {
-        let reference =
-            run(model, s0, 2.0, &SolveOptions { rtol: 1e-13, atol: 1e-15, ..opts(Method::Dop853, 0.0) });
+        let reference = run(
+            model.clone(),
+            s0,
+            2.0,
+            &SolveOptions { rtol: 1e-13, atol: 1e-15, ..opts(Method::Dop853, 0.0) },
+        );
         for (method, order, dt) in
             [(Method::Rattle, 2.0, 4e-3), (Method::Rattle4, 4.0, 2e-2), (Method::Rattle6, 6.0, 5e-2)]
         {
-            let err = |dt: f64| (run(model, s0, 2.0, &opts(method, dt)).x - reference.x).length();
+            let err = |dt: f64| (run(model.clone(), s0, 2.0, &opts(method, dt)).x - reference.x).length();
             let observed = (err(dt) / err(dt / 2.0)).log2();
             eprintln!("{} {}: observed order {observed:.2}", model.name(), method.info().name);
             assert!(
@@ -141,7 +145,7 @@ fn tilted_gravity_is_a_rotated_ideal_pendulum() {
     assert!(!m.is_axisymmetric());
     let start = State { x: rot * s0.x, v: rot * s0.v };
     for method in [Method::Rattle8, Method::Dop853] {
-        let a = run(m, start, 5.0, &opts(method, 2e-3));
+        let a = run(m.clone(), start, 5.0, &opts(method, 2e-3));
         let b = run(ideal, s0, 5.0, &opts(method, 2e-3));
         let d = (a.x - rot * b.x).length();
         assert!(d < 1e-9, "{}: {d:e}", method.info().name);
@@ -194,8 +198,32 @@ fn bad_parameters_are_named() {
     assert!(e("rotating", &[("latitude", 2.0)]).contains("latitude"));
     let unknown = e("damped", &[("dampnig", 0.1)]);
     assert!(unknown.contains("dampnig") && unknown.contains("damping"), "{unknown}");
-    assert!(e("spring", &[]).contains("ideal"));
+    assert!(e("springy", &[]).contains("ideal"));
     let (_, s0) = rosette();
     let angles = Stepper::new(build("damped", &[("damping", 0.1)]), 0.0, s0, &opts(Method::Rk4Angles, 1e-3));
     assert!(angles.unwrap_err().to_string().contains("rk4_angles"));
+}
+
+#[test]
+fn direction_components_default_only_when_none_is_given() {
+    // Regression: forcing_y = 1 alone used to be normalised together with the default forcing_x = 1
+    // into a diagonal force (e₁ + e₂)/√2. Now the default direction applies only when no component is
+    // given; otherwise omitted components are 0.
+    let force = |extra: &[(&str, f64)]| {
+        let mut all = vec![("forcing_amplitude", 2.0), ("forcing_omega", 0.0)];
+        all.extend_from_slice(extra);
+        let m = build("damped", &all);
+        let bottom = DVec3::new(0.0, 0.0, -1.0);
+        m.applied_acceleration(0.0, bottom, DVec3::ZERO) - DVec3::new(0.0, 0.0, -9.81)
+    };
+    assert_eq!(force(&[]), DVec3::new(2.0, 0.0, 0.0));
+    assert_eq!(force(&[("forcing_y", 1.0)]), DVec3::new(0.0, 2.0, 0.0));
+    assert_eq!(force(&[("forcing_z", -3.0)]), DVec3::new(0.0, 0.0, -2.0));
+    let diagonal = force(&[("forcing_x", 1.0), ("forcing_y", 1.0)]);
+    assert!((diagonal - DVec3::new(2.0, 2.0, 0.0) / 2f64.sqrt()).length() < 1e-15);
+    // the same rule for gravity: gravity_x alone is gravity along +e₁, not (e₁ − e₃)/√2
+    let g = |extra: &[(&str, f64)]| build("damped", extra).applied_acceleration(0.0, DVec3::X, DVec3::ZERO);
+    assert_eq!(g(&[]), DVec3::new(0.0, 0.0, -9.81));
+    assert_eq!(g(&[("gravity_x", 1.0)]), DVec3::new(9.81, 0.0, 0.0));
+    assert!(AnyModel::build("damped", params(), &[("forcing_x", 0.0)]).is_err(), "zero direction");
 }

@@ -10,18 +10,24 @@
 //! - T-2.3 Rod tension T = −m λ l = m(|v|² + x·f)/l [N], positive when the rod pulls.
 //! - T-2.6 Energy E = m(½|v|² + V(x)) [J] and vertical angular momentum J₃ = m (x × v)·e₃ [kg m²/s].
 //!
-//! Models: [`IdealPendulum`] (§2) and [`Extended`] (damping, drag, periodic force, any gravity
-//! direction, rotating frame; §7). The registry of names and parameters is [`registry`].
+//! Models: [`IdealPendulum`] (§2), [`Extended`] (damping, drag, periodic force, any gravity
+//! direction, rotating frame; §7), [`MovingPivot`] (T-7.2) and the hybrid [`StringPendulum`] (a
+//! string that goes slack where the tension T-2.3 would be negative). The registry of names and parameters is [`registry`].
 
 pub mod extended;
 pub mod ideal;
 pub mod pivot;
 pub mod registry;
+pub mod slewing_linear;
+pub mod spline;
+pub mod string;
+pub mod string_run;
 
 pub use extended::Extended;
 pub use ideal::IdealPendulum;
 pub use pivot::{MovingPivot, PivotPath};
 pub use registry::AnyModel;
+pub use string::StringPendulum;
 
 use crate::state::{Params, State};
 use glam::DVec3;
@@ -59,6 +65,11 @@ pub trait Model: Send + Sync {
     #[inline(always)]
     fn velocity_flow(&self, _x: DVec3, v: DVec3, _h: f64) -> DVec3 {
         v
+    }
+    /// True for hybrid models (the string pendulum: taut and slack phases with events), which the
+    /// plain [`crate::Stepper`] refuses; they have their own driver ([`string_run`]).
+    fn is_hybrid(&self) -> bool {
+        false
     }
     /// Power per unit mass of the non-conservative forces at (t, x, v) [W/kg]: dE/dt = m·this.
     fn power_per_mass(&self, _t: f64, _x: DVec3, _v: DVec3) -> f64 {

@@ -11,18 +11,22 @@
 //!   linearised in the boom frame (x radial, y tangential, ω₀² = g/l): ẍ − 2ωẏ + (ω₀² − ω²)x = ω²R,
 //!   ÿ + 2ωẋ + (ω₀² − ω²)y = 0, static offset ω²R/(ω₀² − ω²), natural frequencies ω₀ ± ω;
 //! - vertical vibration (Kapitza): p(t) = (0, 0, A cos νt), p̈ = −Aν² cos νt e₃; the inverted
-//!   pendulum is stable for (Aν)² > 2 g l (to leading order in 1/ν).
+//!   pendulum is stable for (Aν)² > 2 g l (to leading order in 1/ν);
+//! - any path given as samples (t_i, p_i): ṗ and p̈ from the C² cubic spline through them
+//!   ([`super::spline`]; model `sampled_pivot`).
 //!
 //! Energy per unit mass relative to the pivot, ½|v|² + g z, changes at the rate −p̈·v (minus c|v|²).
 //! Units: R, h, A in m; ω, ν in rad/s; c in 1/s; t in s.
 
+use super::spline::PivotSamples;
 use super::Model;
 use crate::error::{Error, Result};
 use crate::state::Params;
 use glam::DVec3;
+use std::sync::Arc;
 
 /// A prescribed pivot path.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum PivotPath {
     /// p(t) = (R cos ωt, R sin ωt, h).
     Slewing {
@@ -40,6 +44,8 @@ pub enum PivotPath {
         /// Angular frequency ν [rad/s].
         frequency: f64,
     },
+    /// Through samples (t_i, p_i): the C² not-a-knot cubic spline ([`PivotSamples`]).
+    Samples(Arc<PivotSamples>),
 }
 
 impl PivotPath {
@@ -53,6 +59,18 @@ impl PivotPath {
             PivotPath::Vertical { amplitude, frequency } => {
                 DVec3::new(0.0, 0.0, amplitude * (frequency * t).cos())
             }
+            PivotPath::Samples(ref s) => s.position(t),
+        }
+    }
+    /// The slewing crane's boom frame: `x` (pivot-relative [m]) at time t [s] rotated by −ωt about e₃,
+    /// i.e. (radial, tangential, vertical) components with respect to the boom; `None` for other paths.
+    pub fn boom_frame(&self, t: f64, x: DVec3) -> Option<DVec3> {
+        match *self {
+            PivotPath::Slewing { rate, .. } => {
+                let (s, c) = (rate * t).sin_cos();
+                Some(DVec3::new(x.x * c + x.y * s, -x.x * s + x.y * c, x.z))
+            }
+            _ => None,
         }
     }
     /// Pivot velocity ṗ(t) [m/s].
@@ -65,6 +83,7 @@ impl PivotPath {
             PivotPath::Vertical { amplitude, frequency } => {
                 DVec3::new(0.0, 0.0, -amplitude * frequency * (frequency * t).sin())
             }
+            PivotPath::Samples(ref s) => s.velocity(t),
         }
     }
     /// Pivot acceleration p̈(t) [m/s²].
@@ -77,12 +96,13 @@ impl PivotPath {
             PivotPath::Vertical { amplitude, frequency } => {
                 DVec3::new(0.0, 0.0, -amplitude * frequency * frequency * (frequency * t).cos())
             }
+            PivotPath::Samples(ref s) => s.acceleration(t),
         }
     }
 }
 
 /// The pendulum on a moving pivot (see the module doc).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct MovingPivot {
     params: Params,
     path: PivotPath,
@@ -94,18 +114,19 @@ impl MovingPivot {
     /// A pendulum on `path` with linear damping c ≥ 0 [1/s] relative to the pivot.
     pub fn new(params: Params, path: PivotPath, damping: f64) -> Result<Self> {
         let finite = |name: &'static str, v: f64| crate::error::require_finite(name, v, "a finite number");
-        let name = match path {
+        let name = match &path {
             PivotPath::Slewing { radius, rate, height } => {
-                finite("radius", radius)?;
-                finite("rate", rate)?;
-                finite("height", height)?;
+                finite("radius", *radius)?;
+                finite("rate", *rate)?;
+                finite("height", *height)?;
                 "slewing"
             }
             PivotPath::Vertical { amplitude, frequency } => {
-                finite("amplitude", amplitude)?;
-                finite("frequency", frequency)?;
+                finite("amplitude", *amplitude)?;
+                finite("frequency", *frequency)?;
                 "vibrating"
             }
+            PivotPath::Samples(_) => "sampled_pivot",
         };
         if !(damping >= 0.0 && damping.is_finite()) {
             return Err(Error::InvalidParameter {

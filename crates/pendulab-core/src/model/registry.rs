@@ -4,7 +4,8 @@
 //! [m/s²]; the extra parameters switch on the terms of [`Extended`] (THEORY.md §7).
 
 use super::pivot::{MovingPivot, PivotPath};
-use super::{Extended, IdealPendulum, Model};
+use super::spline::PivotSamples;
+use super::{Extended, IdealPendulum, Model, StringPendulum};
 use crate::error::{Error, Result};
 use crate::state::{Params, State};
 use glam::DVec3;
@@ -37,6 +38,9 @@ pub struct ModelSpec {
     pub summary: &'static str,
     /// Its parameters beyond length, mass and g.
     pub params: &'static [ParamSpec],
+    /// Runs with the incremental [`crate::Stepper`] from its parameters alone (what a live viewer
+    /// needs); false for the hybrid string, the off-sphere spring and the sampled pivot (arrays).
+    pub interactive: bool,
 }
 
 const INF: f64 = f64::INFINITY;
@@ -84,9 +88,21 @@ pub const COMMON: &[ParamSpec] = &[
 ];
 
 const GRAVITY_DIR: [ParamSpec; 3] = [
-    p("gravity_x", "1", 0.0, -INF, "gravity direction, x component (normalised)"),
-    p("gravity_y", "1", 0.0, -INF, "gravity direction, y component"),
-    p("gravity_z", "1", -1.0, -INF, "gravity direction, z component"),
+    p(
+        "gravity_x",
+        "1",
+        0.0,
+        -INF,
+        "gravity direction d, x component (d normalised; −e₃ if no component is given, else 0 if omitted)",
+    ),
+    p("gravity_y", "1", 0.0, -INF, "gravity direction d, y component (0 if omitted)"),
+    p(
+        "gravity_z",
+        "1",
+        -1.0,
+        -INF,
+        "gravity direction d, z component (−1 if no component is given, else 0 if omitted)",
+    ),
 ];
 
 const DAMPED: &[ParamSpec] = &[
@@ -95,9 +111,15 @@ const DAMPED: &[ParamSpec] = &[
     p("forcing_amplitude", "m/s^2", 0.0, 0.0, "periodic force per unit mass A in A cos(ω t + ψ) e"),
     p("forcing_omega", "rad/s", 0.0, -INF, "forcing angular frequency ω"),
     p("forcing_phase", "rad", 0.0, -INF, "forcing phase ψ"),
-    p("forcing_x", "1", 1.0, -INF, "forcing direction e, x component (normalised)"),
-    p("forcing_y", "1", 0.0, -INF, "forcing direction e, y component"),
-    p("forcing_z", "1", 0.0, -INF, "forcing direction e, z component"),
+    p(
+        "forcing_x",
+        "1",
+        1.0,
+        -INF,
+        "forcing direction e, x component (e normalised; e₁ if no component is given, else 0 if omitted)",
+    ),
+    p("forcing_y", "1", 0.0, -INF, "forcing direction e, y component (0 if omitted)"),
+    p("forcing_z", "1", 0.0, -INF, "forcing direction e, z component (0 if omitted)"),
     GRAVITY_DIR[0],
     GRAVITY_DIR[1],
     GRAVITY_DIR[2],
@@ -130,24 +152,81 @@ const VIBRATING: &[ParamSpec] = &[
     p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
 ];
 
+const SAMPLED: &[ParamSpec] =
+    &[p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot (the path: pivot samples)")];
+
+const SPRING: &[ParamSpec] = &[ParamSpec {
+    name: "stiffness",
+    unit: "N/m",
+    default: 29.43,
+    min: 0.0,
+    max: INF,
+    description: "swinging spring (T-7.4): spring constant k; length is the rest length l0, the bob \
+                  hangs at l = l0 + m g/k; 1:1:2 resonance at k = 3 m g/l0 (default: for l0 = 1 m, m = 1 kg)",
+    allowed: "a finite number > 0",
+}];
+
+const STRING: &[ParamSpec] = &[ParamSpec {
+    name: "restitution",
+    unit: "1",
+    default: 0.0,
+    min: 0.0,
+    max: 1.0,
+    description: "restitution e of the snap when the slack string goes taut: v_radial -> -e v_radial \
+                  (0 inelastic, 1 elastic)",
+    allowed: "a number in [0, 1]",
+}];
+
 /// Every registered model.
 pub const MODELS: &[ModelSpec] = &[
-    ModelSpec { name: "ideal", summary: "the ideal spherical pendulum (THEORY §2)", params: &[] },
+    ModelSpec {
+        name: "ideal",
+        summary: "the ideal spherical pendulum (THEORY §2)",
+        interactive: true,
+        params: &[],
+    },
     ModelSpec {
         name: "damped",
         summary: "damping, quadratic drag, periodic forcing, any gravity direction (T-7.1)",
+        interactive: true,
         params: DAMPED,
     },
     ModelSpec {
         name: "rotating",
         summary: "in a rotating frame (Foucault, T-7.3), optionally damped",
+        interactive: true,
         params: ROTATING,
     },
-    ModelSpec { name: "slewing", summary: "pivot on a slewing crane's boom tip (T-7.2)", params: SLEWING },
+    ModelSpec {
+        name: "slewing",
+        summary: "pivot on a slewing crane's boom tip (T-7.2)",
+        interactive: true,
+        params: SLEWING,
+    },
     ModelSpec {
         name: "vibrating",
         summary: "vertically vibrated pivot (Kapitza's inverted pendulum, T-7.2)",
+        interactive: true,
         params: VIBRATING,
+    },
+    ModelSpec {
+        name: "sampled_pivot",
+        summary: "pivot on a path given as samples (times, positions; C² cubic spline), T-7.2",
+        interactive: false,
+        params: SAMPLED,
+    },
+    ModelSpec {
+        name: "spring",
+        summary:
+            "swinging spring: an elastic rod, off the sphere (T-7.4); scenario files and pl.SwingingSpring",
+        interactive: false,
+        params: SPRING,
+    },
+    ModelSpec {
+        name: "string",
+        summary: "a string instead of a rod: slack (free flight) where the tension T-2.3 would be < 0",
+        interactive: false,
+        params: STRING,
     },
 ];
 
@@ -170,7 +249,7 @@ impl AnyModel {
 }
 
 /// A model built from the registry: the ideal pendulum stays [`IdealPendulum`] (its fast path).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum AnyModel {
     /// The ideal pendulum.
     Ideal(IdealPendulum),
@@ -178,14 +257,25 @@ pub enum AnyModel {
     Extended(Extended, &'static str),
     /// A moving pivot.
     Pivot(MovingPivot),
+    /// A string instead of a rod (hybrid: simulated by [`StringPendulum::simulate`]).
+    String(StringPendulum),
 }
 
 impl AnyModel {
+    /// The `sampled_pivot` model: the pivot on the spline through `times` [s] and `positions` [m]
+    /// ([`PivotSamples`]), with linear damping c ≥ 0 [1/s] relative to the pivot.
+    pub fn sampled_pivot(params: Params, times: &[f64], positions: &[DVec3], damping: f64) -> Result<Self> {
+        let samples = PivotSamples::new(times, positions)?;
+        let path = PivotPath::Samples(std::sync::Arc::new(samples));
+        Ok(AnyModel::Pivot(MovingPivot::new(params, path, damping)?))
+    }
+
     /// Builds model `name` from l, m, g and named extra parameters (unknown names and values outside
     /// the limits are errors naming them; missing ones take their defaults).
     pub fn build(name: &str, params: Params, extra: &[(&str, f64)]) -> Result<Self> {
         let spec = spec(name)?;
         let mut values: Vec<f64> = spec.params.iter().map(|p| p.default).collect();
+        let mut given = vec![false; values.len()];
         for &(key, value) in extra {
             let Some(i) = spec.params.iter().position(|p| p.name == key) else {
                 return Err(Error::UnknownParameter {
@@ -199,9 +289,28 @@ impl AnyModel {
                 return Err(Error::InvalidParameter { name: ps.name, value, allowed: ps.allowed });
             }
             values[i] = value;
+            given[i] = true;
         }
+        let index = |k: &str| spec.params.iter().position(|p| p.name == k).unwrap();
         let get = |k: &str| spec.params.iter().position(|p| p.name == k).map(|i| values[i]);
-        let vec = |a: &str, b: &str, c: &str| DVec3::new(get(a).unwrap(), get(b).unwrap(), get(c).unwrap());
+        // A direction given by components: the default vector when no component is given; otherwise
+        // exactly the given components, the omitted ones 0 (so forcing_y = 1 alone means e₂, not a
+        // diagonal normalised together with the default e₁).
+        let vec = |a: &str, b: &str, c: &str| {
+            let (i, j, k) = (index(a), index(b), index(c));
+            let pick = |n: usize| {
+                if given[i] || given[j] || given[k] {
+                    if given[n] {
+                        values[n]
+                    } else {
+                        0.0
+                    }
+                } else {
+                    values[n]
+                }
+            };
+            DVec3::new(pick(i), pick(j), pick(k))
+        };
         Ok(match spec.name {
             "ideal" => AnyModel::Ideal(IdealPendulum::from_params(params)),
             "damped" => AnyModel::Extended(
@@ -231,6 +340,19 @@ impl AnyModel {
                 },
                 get("damping").unwrap(),
             )?),
+            "sampled_pivot" => {
+                return Err(Error::InvalidPivotSamples {
+                    reason: "the 'sampled_pivot' model needs the path: pivot times [s] and positions [m] \
+                             (AnyModel::sampled_pivot; Python: Pendulum(pivot_samples=(times, positions)))"
+                        .into(),
+                })
+            }
+            "spring" => {
+                let k = get("stiffness").unwrap();
+                crate::elastic::SwingingSpring::new(k / params.mass, params.length, params.g, params.mass)?;
+                return Err(Error::OffSphereModel { model: "spring" });
+            }
+            "string" => AnyModel::String(StringPendulum::new(params, get("restitution").unwrap())?),
             _ => AnyModel::Pivot(MovingPivot::new(
                 params,
                 PivotPath::Vertical {
@@ -249,6 +371,7 @@ macro_rules! both {
             AnyModel::Ideal($m) => $e,
             AnyModel::Extended($m, _) => $e,
             AnyModel::Pivot($m) => $e,
+            AnyModel::String($m) => $e,
         }
     };
 }
@@ -259,6 +382,7 @@ impl Model for AnyModel {
             AnyModel::Ideal(_) => "ideal",
             AnyModel::Extended(_, name) => name,
             AnyModel::Pivot(m) => m.name(),
+            AnyModel::String(m) => m.name(),
         }
     }
     fn params(&self) -> &Params {
@@ -279,6 +403,9 @@ impl Model for AnyModel {
     }
     fn is_ideal(&self) -> bool {
         matches!(self, AnyModel::Ideal(_))
+    }
+    fn is_hybrid(&self) -> bool {
+        both!(self, m => m.is_hybrid())
     }
     #[inline(always)]
     fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {

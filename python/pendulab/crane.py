@@ -1,0 +1,75 @@
+"""The slewing crane's small sway in closed form (THEORY.md T-7.2), beside the nonlinear model
+``Pendulum(model="slewing")``: in the boom frame (x radial, y tangential; the payload's horizontal
+displacement from the boom tip [m]; ω₀² = g/l)
+
+    ẍ − 2ωẏ + (ω₀² − ω²)x = ω²R,   ÿ + 2ωẋ + (ω₀² − ω²)y = 0   (− c(ż + iωz), z = x + iy, with damping)
+
+with the static offset ω²R/(ω₀² − ω²) (with damping ω²R/(ω₀² − ω² + icω): a lag in y) and the
+natural frequencies ω₀ ∓ ω (with damping |Ω ∓ ω|, Ω = √(ω₀² − c²/4)). Computed in the core
+(``pendulab_core::model::slewing_linear``). Units: SI (m, s, rad/s, 1/s).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from . import _core
+from .model import FloatArray, Pendulum, State, models
+
+
+@dataclass(frozen=True)
+class SlewingSway:
+    """The analytic boom-frame track: times ``t`` [s], ``radial`` and ``tangential`` displacement [m]
+    and their rates ``v_radial``, ``v_tangential`` [m/s] in the rotating frame; ``static_offset``
+    (radial, tangential) [m]; ``frequencies`` (lower, upper) natural angular frequencies [rad/s]."""
+
+    t: FloatArray
+    radial: FloatArray
+    tangential: FloatArray
+    v_radial: FloatArray
+    v_tangential: FloatArray
+    static_offset: tuple[float, float]
+    frequencies: tuple[float, float]
+
+
+def _slewing_params(pendulum: Pendulum) -> dict[str, float]:
+    if pendulum.model != "slewing":
+        raise _core.InvalidInputError(
+            "slewing_sway needs a Pendulum(model='slewing', radius=..., rate=...), "
+            f"not model {pendulum.model!r}"
+        )
+    spec = next(m for m in models() if m["name"] == "slewing")
+    return {p["name"]: pendulum.extra.get(p["name"], p["default"]) for p in spec["params"]}
+
+
+def slewing_sway(pendulum: Pendulum, t: Any, state: State | None = None) -> SlewingSway:
+    """The linearised sway of a slewing crane (T-7.2) at times ``t`` [s] (t = 0 when the boom points
+    along e₁), from ``state`` at t = 0 (pivot-relative x [m], v [m/s] as for :func:`pendulab.simulate`;
+    default: hanging at rest under the tip). ``pendulum`` is a ``model="slewing"`` pendulum (boom
+    radius [m], rate ω [rad/s], damping c [1/s]; the pivot height does not enter).
+
+    Raises ``InvalidInputError`` at the resonance ω = ω₀ = √(g/l) without damping (the static offset
+    ω²R/(ω₀² − ω²) is infinite), for g ≤ 0, and for c ≥ 2ω₀ (no oscillation).
+    """
+    par = _slewing_params(pendulum)
+    ts = np.ascontiguousarray(np.atleast_1d(np.asarray(t, dtype=np.float64)))
+    if state is None:
+        x0, v0 = np.zeros(3), np.zeros(3)
+    else:
+        x0, v0 = np.asarray(state.x, dtype=np.float64), np.asarray(state.v, dtype=np.float64)
+    w = par["rate"]
+    # boom frame at t = 0 is the inertial one; rates in the rotating frame: ż = (vx + i vy) − iω z
+    start = [float(x0[0]), float(x0[1]), float(v0[0] + w * x0[1]), float(v0[1] - w * x0[0])]
+    out = _core.slewing_linear(pendulum.length, pendulum.g, par["radius"], w, par["damping"], start, ts)
+    return SlewingSway(
+        ts,
+        out["x"],
+        out["y"],
+        out["vx"],
+        out["vy"],
+        tuple(out["static_offset"]),
+        tuple(out["frequencies"]),
+    )
