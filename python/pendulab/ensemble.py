@@ -114,13 +114,14 @@ def model_damping(pendulum: Pendulum) -> float:
     }
     if (
         pendulum.model != "damped"
+        or pendulum.force is not None
         or other
         or extra.get("forcing_amplitude", 0.0) != 0.0
         or (gravity[0] != 0.0 or gravity[1] != 0.0 or gravity[2] >= 0.0)
     ):
         raise _core.InvalidInputError(
             f"simulate_ensemble runs the ideal pendulum with optional linear damping, not {pendulum!r}; "
-            "use simulate() for drag, forcing, tilted gravity and the other models"
+            "use simulate() for drag, forcing, a force callable, tilted gravity and the other models"
         )
     return float(extra.get("damping", 0.0))
 

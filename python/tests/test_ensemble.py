@@ -54,6 +54,12 @@ def test_bad_input(pendulum: pl.Pendulum) -> None:
             pl.Pendulum(damping=0.1, gravity_x=1.0), np.array([[0.0, 0, -1, 0.1, 0, 0]]), t_end=1.0
         )
     start = np.array([[0.0, 0, -1, 0.1, 0, 0]])
+    for with_force in (
+        pl.Pendulum(force=lambda t, x, v: [0.0, 0.0, 0.0]),
+        pl.Pendulum(damping=0.1, force=lambda t, x, v: [0.0, 0.0, 0.0]),
+    ):
+        with pytest.raises(pl.InvalidInputError, match="force callable"):
+            pl.simulate_ensemble(with_force, start, t_end=1.0)
     with pytest.raises(pl.InvalidInputError, match="damping"):
         pl.simulate_ensemble(pendulum, start, t_end=1.0, damping=-0.5)
     with pytest.raises(pl.InvalidInputError, match="damping"):
