@@ -1,0 +1,2 @@
+// End-to-end checks of the model picker (filled in with the model picker).
+export async function checkModels() {}
