@@ -6,8 +6,11 @@ import { Connection, socketUrl } from './connection';
 import { DataPanel } from './panels/data';
 import { Controls } from './panels/controls';
 import { Plots } from './panels/plots';
-import type { Command, ExactQuantities, Frame, ScenarioInfo, Schema, Status } from './protocol';
+import { Portraits } from './panels/portraits';
+import type { Command, EffectivePotential, ExactQuantities, Frame, ScenarioInfo, Schema, Status } from './protocol';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
+import { gravityDirection } from './scene/vectors';
+import { scenarioRequest } from './export';
 import { LabStore } from './state';
 import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
 
@@ -63,6 +66,7 @@ async function main(): Promise<void> {
   const scene = new PendulumScene(byId('scene'));
   const view = { ...DEFAULT_VIEW };
   const plots = new Plots(byId('plots'));
+  const portraits = new Portraits(byId('portraits'));
   const data = new DataPanel(byId('data'));
 
   const fromUrl = decodeUrl(window.location.search);
@@ -82,6 +86,22 @@ async function main(): Promise<void> {
       download(`pendulab-${store.status?.scenario ?? 'lab'}.csv`, url);
       setTimeout(() => URL.revokeObjectURL(url), 10_000);
     },
+    downloadTOML: () => {
+      const s = store.status;
+      if (s === null) return explain('not connected to the server');
+      fetch('api/scenario.toml', {
+        method: 'POST',
+        headers: { 'content-type': 'application/json' },
+        body: JSON.stringify(scenarioRequest(s)),
+      })
+        .then(async (r) => {
+          if (!r.ok) throw new Error(((await r.json()) as { detail?: string }).detail ?? `HTTP ${r.status}`);
+          const url = URL.createObjectURL(await r.blob());
+          download(`pendulab-${s.scenario ?? 'lab'}.toml`, url);
+          setTimeout(() => URL.revokeObjectURL(url), 10_000);
+        })
+        .catch((e: unknown) => explain(`scenario download: ${e instanceof Error ? e.message : String(e)}`));
+    },
     screenshot: () => download(`pendulab-${store.status?.scenario ?? 'lab'}.png`, scene.screenshot()),
     copyLink: () => {
       const link = window.location.href;
@@ -93,9 +113,38 @@ async function main(): Promise<void> {
     viewChanged: (_v, top) => scene.setTopView(top),
   });
 
+  // V_eff(θ) of the current l, m, g and J₃ (from the server): fetched at each epoch's first frame, and again
+  // while J₃ changes (models that do not conserve it), at most once a second
+  let veff: EffectivePotential | null = null;
+  let veffKey = '';
+  let veffAt = -Infinity;
+  let veffJ3: number | null = null;
+  const fetchPotential = (status: Status, f: Frame) => {
+    const p = status.params;
+    const key = `${status.epoch}:${p.length}:${p.mass}:${p.g}`;
+    const now = performance.now();
+    const stale = Math.abs(f.j3 - (veffJ3 ?? NaN)) > 1e-3 * Math.max(Math.abs(f.j3), 1e-9);
+    if (key === veffKey && !(stale && now - veffAt > 1000)) return;
+    if (key !== veffKey) veff = null;
+    veffKey = key;
+    veffAt = now;
+    veffJ3 = f.j3;
+    getJSON<EffectivePotential>('api/effective_potential', {
+      method: 'POST',
+      headers: { 'content-type': 'application/json' },
+      body: JSON.stringify({ length: p.length, mass: p.mass, g: p.g, j3: f.j3 }),
+    }).then(
+      (q) => {
+        if (veffKey === key) veff = q;
+      },
+      (e: unknown) => explain(`V_eff: ${e instanceof Error ? e.message : String(e)}`),
+    );
+  };
+
   let exactEpoch = -1;
   const fetchExact = (status: Status, f: Frame) => {
     exactEpoch = status.epoch;
+    if (status.model !== 'ideal') return; // the closed form is the ideal pendulum's
     const body = { length: status.params.length, mass: status.params.mass, g: status.params.g, x: f.x, v: f.v };
     getJSON<ExactQuantities>('api/exact', {
       method: 'POST',
@@ -134,6 +183,8 @@ async function main(): Promise<void> {
       const s = store.status;
       const first = store.trajectory[0];
       if (s !== null && first !== undefined && exactEpoch !== s.epoch) fetchExact(s, first);
+      const last = store.latest();
+      if (s !== null && last !== null) fetchPotential(s, last);
     },
     onNotice: (n) => {
       if (n.type === 'error') {
@@ -161,12 +212,14 @@ async function main(): Promise<void> {
     store.advancePlayhead(dt);
     const f = store.displayed();
     const p = store.status?.params;
-    scene.update(f, store.trailWindow(view.trailSeconds), view, p?.mass ?? 1, p?.g ?? 9.81);
+    const gdir = gravityDirection(store.status?.model_params);
+    scene.update(f, store.trailWindow(view.trailSeconds), view, p?.mass ?? 1, p?.g ?? 9.81, gdir);
     scene.render();
     drawn++;
     if (now - lastPanels > 100) {
       lastPanels = now;
       plots.update(store.history);
+      portraits.update(store.history, f, veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);
       data.update(f, store);
     }
     requestAnimationFrame(frame);
