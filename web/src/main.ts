@@ -7,7 +7,19 @@ import { DataPanel } from './panels/data';
 import { Controls } from './panels/controls';
 import { Plots } from './panels/plots';
 import { Portraits } from './panels/portraits';
-import type { Command, EffectivePotential, ExactQuantities, Frame, ScenarioInfo, Schema, Status } from './protocol';
+import type {
+  Command,
+  EMView,
+  EffectivePotential,
+  ExactQuantities,
+  Frame,
+  ReducedCurves,
+  ScenarioInfo,
+  Schema,
+  Status,
+} from './protocol';
+import { ReducedView } from './scene/reduced';
+import { throttle } from './panels/params';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
 import { gravityDirection } from './scene/vectors';
 import { scenarioRequest } from './export';
@@ -16,8 +28,15 @@ import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
 
 declare global {
   interface Window {
-    /** For debugging and end-to-end tests: the store, frames drawn, a command sender, a screenshot. */
-    pendulab?: { store: LabStore; drawn: () => number; send: (cmd: Command) => void; screenshot: () => string };
+    /** For debugging and end-to-end tests: the store, frames drawn, a command sender, a screenshot, the
+     *  bob's position on the page. */
+    pendulab?: {
+      store: LabStore;
+      drawn: () => number;
+      send: (cmd: Command) => void;
+      screenshot: () => string;
+      bobOnScreen: () => { x: number; y: number } | null;
+    };
   }
 }
 
@@ -67,6 +86,7 @@ async function main(): Promise<void> {
   const view = { ...DEFAULT_VIEW };
   const plots = new Plots(byId('plots'));
   const portraits = new Portraits(byId('portraits'));
+  const reduced = new ReducedView(byId('reduced'));
   const data = new DataPanel(byId('data'));
 
   const fromUrl = decodeUrl(window.location.search);
@@ -110,7 +130,10 @@ async function main(): Promise<void> {
         () => explain(link),
       ) ?? explain(link);
     },
-    viewChanged: (_v, top) => scene.setTopView(top),
+    viewChanged: (v, top) => {
+      scene.setTopView(top);
+      scene.setStereo(v.stereo);
+    },
   });
 
   // V_eff(θ) of the current l, m, g and J₃ (from the server): fetched at each epoch's first frame, and again
@@ -138,6 +161,50 @@ async function main(): Promise<void> {
         if (veffKey === key) veff = q;
       },
       (e: unknown) => explain(`V_eff: ${e instanceof Error ? e.message : String(e)}`),
+    );
+  };
+
+  // the energy–momentum map's boundary, for the current l, m, g (the point comes from the frames)
+  let em: EMView | null = null;
+  let emKey = '';
+  const fetchEM = (status: Status, f: Frame) => {
+    const p = status.params;
+    const key = `${p.length}:${p.mass}:${p.g}`;
+    if (key === emKey) return;
+    emKey = key;
+    em = null;
+    if (p.g === 0) return; // no potential, no map
+    getJSON<EMView>('api/em_map', {
+      method: 'POST',
+      headers: { 'content-type': 'application/json' },
+      body: JSON.stringify({ length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }),
+    }).then(
+      (q) => {
+        if (emKey === key) em = q;
+      },
+      (e: unknown) => explain(`energy–momentum map: ${e instanceof Error ? e.message : String(e)}`),
+    );
+  };
+
+  // the reduced view of the epoch's orbit (the ideal pendulum's: its J₃ and E are the invariants)
+  let reducedEpoch = -1;
+  const fetchReduced = (status: Status, f: Frame) => {
+    reducedEpoch = status.epoch;
+    if (status.model !== 'ideal') {
+      reduced.setNote(`the reduced view is the ideal pendulum's; this is the ${status.model} model`);
+      return;
+    }
+    reduced.setNote(null);
+    const p = status.params;
+    getJSON<ReducedCurves>('api/reduced', {
+      method: 'POST',
+      headers: { 'content-type': 'application/json' },
+      body: JSON.stringify({ length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }),
+    }).then(
+      (q) => {
+        if (store.status?.epoch === status.epoch) reduced.set(q);
+      },
+      (e: unknown) => reduced.setNote(`reduced view: ${e instanceof Error ? e.message : String(e)}`),
     );
   };
 
@@ -183,6 +250,8 @@ async function main(): Promise<void> {
       const s = store.status;
       const first = store.trajectory[0];
       if (s !== null && first !== undefined && exactEpoch !== s.epoch) fetchExact(s, first);
+      if (s !== null && first !== undefined && reducedEpoch !== s.epoch) fetchReduced(s, first);
+      if (s !== null && first !== undefined) fetchEM(s, first);
       const last = store.latest();
       if (s !== null && last !== null) fetchPotential(s, last);
     },
@@ -203,7 +272,22 @@ async function main(): Promise<void> {
   });
 
   let drawn = 0;
-  window.pendulab = { store, drawn: () => drawn, send, screenshot: () => scene.screenshot() };
+  // dragging the bob: pause, then the start follows the pointer (at rest there); the server checks it
+  const sendStart = throttle((x: [number, number, number]) => {
+    send({ type: 'set_state', x, v: [0, 0, 0], project: true });
+  }, 50);
+  scene.enableDrag((x, phase) => {
+    if (phase === 'start' && store.status?.paused === false) send({ type: 'pause' });
+    sendStart(x);
+    if (phase === 'end') explain('start set by dragging (at rest there): press start to release it');
+  });
+  window.pendulab = {
+    store,
+    drawn: () => drawn,
+    send,
+    screenshot: () => scene.screenshot(),
+    bobOnScreen: () => scene.bobOnScreen(),
+  };
   let lastWall = performance.now();
   let lastPanels = 0;
   const frame = (now: number) => {
@@ -220,6 +304,8 @@ async function main(): Promise<void> {
       lastPanels = now;
       plots.update(store.history);
       portraits.update(store.history, f, veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);
+      portraits.updateEM(em, f);
+      reduced.update(f, p?.length ?? 1);
       data.update(f, store);
     }
     requestAnimationFrame(frame);

@@ -275,3 +275,22 @@ export interface EffectivePotential {
   v_eff: number[];
   minimum: { theta: number; v_eff: number };
 }
+
+/** POST /api/reduced: Holm's Figure 2 in σ-space (σ₁ [1], σ₂ [1/s], σ₃ [1/s²]); `surface.sigma3[i][k]` is
+ *  the J₃ surface over (sigma1[i], sigma2[k]); the plane is σ₃ = 2(h − γσ₁). */
+export interface ReducedCurves {
+  orbit: { sigma1: number[]; sigma2: number[]; sigma3: number[] };
+  orbit_time: number;
+  surface: { sigma1: number[]; sigma2: number[]; sigma3: number[][] };
+  plane: { h: number; gamma: number };
+  point: [number, number, number];
+  j: number;
+}
+
+/** POST /api/em_map: the boundary of the energy–momentum map (J₃ [kg m²/s], E [J]) and its equilibria. */
+export interface EMView {
+  boundary: { j3: number[]; energy: number[] };
+  bottom: { j3: number; energy: number };
+  top: { j3: number; energy: number };
+  point: { j3: number; energy: number };
+}

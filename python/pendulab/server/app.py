@@ -15,6 +15,7 @@
 - ``POST /api/exact``: the exact-solution quantities of a state (kind, turning heights, periods, phases).
 - ``POST /api/effective_potential``: V_eff(θ) for l, m, g, J₃.
 - ``POST /api/scenario.toml``: a session's scenario as a TOML file for ``pendulab run``.
+- ``POST /api/reduced``, ``POST /api/em_map``: the reduced view (σ-space) and the energy–momentum map.
 
 At most ``max_sessions`` clients are served at once (:data:`MAX_SESSIONS`); one more is refused.
 """
@@ -52,6 +53,7 @@ from .rest import (
 )
 from .schema import TICK_HZ, schema
 from .session import Session, Setup, example_resolver, model_params, resolve_scenario, scenario_files
+from .views import EMRequest, ReducedRequest, em_view, reduced_view
 
 MAX_PENDING = 64
 """Most commands waiting for the next tick; more are dropped (throttling)."""
@@ -157,6 +159,26 @@ def create_app(
         if isinstance(req, JSONResponse):
             return req
         return JSONResponse(effective_potential(req))
+
+    @app.post("/api/reduced")
+    async def post_reduced(request: Request) -> JSONResponse:
+        req = await _body(request, ReducedRequest)
+        if isinstance(req, JSONResponse):
+            return req
+        try:
+            return JSONResponse(reduced_view(req))
+        except (_core.InvalidInputError, _core.IntegrationError) as e:
+            return _unprocessable(e)
+
+    @app.post("/api/em_map")
+    async def post_em_map(request: Request) -> JSONResponse:
+        req = await _body(request, EMRequest)
+        if isinstance(req, JSONResponse):
+            return req
+        try:
+            return JSONResponse(em_view(req))
+        except (_core.InvalidInputError, _core.IntegrationError) as e:
+            return _unprocessable(e)
 
     @app.post("/api/scenario.toml")
     async def post_scenario(request: Request) -> Response:

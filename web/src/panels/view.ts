@@ -1,8 +1,9 @@
-// The View folder (lil-gui): trail, sphere of reach, axes, top view, and the vector toggles with the origin
+// The View folder (lil-gui): trail, sphere of reach, axes, top view, stereo, and the vector toggles with the origin
 // of the angular momentum and the torque (relative to the pivot, metres). Only the drawing changes: nothing
 // is sent to the server.
 import type GUI from 'lil-gui';
 import type { ViewOptions } from '../scene/scene';
+import { STEREO_MODES } from '../scene/scene';
 import type { VectorName } from '../scene/vectors';
 
 /** Labels of the vector toggles, with what each arrow is and its scale (docs/web.md). */
@@ -34,6 +35,10 @@ export function addViewControls(
       setTopView(v);
       changed();
     });
+  vf.add(view, 'stereo', [...STEREO_MODES])
+    .name('stereo')
+    .onChange(changed).domElement.title =
+    'anaglyph: red–cyan glasses; side by side: a stereo viewer (three.js AnaglyphEffect / StereoEffect)';
   vf.close();
 
   const vec = gui.addFolder('Vectors');

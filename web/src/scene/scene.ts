@@ -4,7 +4,10 @@
 // camera's up vector is +z. It only draws what the store hands it.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
+import { StereoEffect } from 'three/addons/effects/StereoEffect.js';
 import type { Frame, Vec3 } from '../protocol';
+import { BobDrag } from './drag';
 import { TRAIL_MAX } from '../state';
 import type { VectorName } from './vectors';
 import { arrowScales, bobVectors } from './vectors';
@@ -18,7 +21,12 @@ export interface ViewOptions extends Record<VectorName, boolean> {
   originX: number;
   originY: number;
   originZ: number;
+  /** Stereo: off, red–cyan anaglyph (AnaglyphEffect) or side by side for a viewer (StereoEffect). */
+  stereo: Stereo;
 }
+
+export const STEREO_MODES = ['off', 'anaglyph', 'side by side'] as const;
+export type Stereo = (typeof STEREO_MODES)[number];
 
 export const DEFAULT_VIEW: ViewOptions = {
   trail: true,
@@ -35,6 +43,7 @@ export const DEFAULT_VIEW: ViewOptions = {
   originX: 0,
   originY: 0,
   originZ: 0,
+  stereo: 'off',
 };
 
 /** Arrow colours (the legend in docs/web.md). */
@@ -78,6 +87,12 @@ export class PendulumScene {
   ) as Record<VectorName, THREE.ArrowHelper>;
   private length = 1;
   private extent = 1;
+  private stereo: Stereo = 'off';
+  private anaglyph: AnaglyphEffect | null = null;
+  private sideBySide: StereoEffect | null = null;
+  /** Dragging the bob on the sphere (drag.ts); null until `enableDrag`. */
+  drag: BobDrag | null = null;
+  private pivotNow = new THREE.Vector3();
   private topView = false;
 
   constructor(private readonly container: HTMLElement) {
@@ -194,10 +209,38 @@ export class PendulumScene {
     this.resetCamera();
   }
 
+  /** Lets the user drag the bob over the sphere of reach: `onDrag(x, phase)` gets the position relative to
+   *  the pivot [m] at the start, while moving and at the end of a drag (drag.ts). */
+  enableDrag(onDrag: (x: Vec3, phase: 'start' | 'move' | 'end') => void): void {
+    this.drag = new BobDrag(this.renderer.domElement, this.camera, this.controls, this.bob, onDrag, () => ({
+      pivot: this.pivotNow,
+      length: this.length,
+    }));
+  }
+
+  /** The bob's position on the page [CSS px], or null when it is not drawn (for tests). */
+  bobOnScreen(): { x: number; y: number } | null {
+    if (!this.bob.visible) return null;
+    const p = this.bob.position.clone().project(this.camera);
+    const r = this.renderer.domElement.getBoundingClientRect();
+    return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+  }
+
+  setStereo(mode: Stereo): void {
+    this.stereo = mode;
+    if (mode === 'anaglyph' && this.anaglyph === null) this.anaglyph = new AnaglyphEffect(this.renderer);
+    if (mode === 'side by side' && this.sideBySide === null) this.sideBySide = new StereoEffect(this.renderer);
+    this.resize();
+  }
+
   resize(): void {
     const w = Math.max(1, this.container.clientWidth);
     const h = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(w, h, false);
+    if (this.stereo === 'anaglyph') this.anaglyph?.setSize(w, h);
+    if (this.stereo === 'side by side') this.sideBySide?.setSize(w, h);
+    this.renderer.domElement.style.width = '';
+    this.renderer.domElement.style.height = '';
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
   }
@@ -217,6 +260,7 @@ export class PendulumScene {
       return;
     }
     const pivot = new THREE.Vector3(...f.pivot);
+    this.pivotNow.copy(pivot);
     this.fit(this.length + pivot.length());
     for (const o of [this.sphere, this.equator, this.pivot]) o.position.copy(pivot);
     const x = new THREE.Vector3(...f.x);
@@ -277,7 +321,17 @@ export class PendulumScene {
 
   render(): void {
     this.controls.update();
-    this.renderer.render(this.scene, this.camera);
+    // stereo: the screen plane through the orbit's centre, eyes 1/30 of the viewing distance apart
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    if (this.stereo === 'anaglyph' && this.anaglyph !== null) {
+      this.anaglyph.planeDistance = distance;
+      this.anaglyph.eyeSep = distance / 30;
+      this.anaglyph.render(this.scene, this.camera);
+    } else if (this.stereo === 'side by side' && this.sideBySide !== null) {
+      this.camera.focus = distance;
+      this.sideBySide.setEyeSeparation(distance / 30);
+      this.sideBySide.render(this.scene, this.camera);
+    } else this.renderer.render(this.scene, this.camera);
   }
 
   /** A PNG of the current view, as a data URL (rendered now, so the drawing buffer is full). */

@@ -39,6 +39,65 @@ const colourPixels = (page, rgb) =>
     return n;
   }, rgb);
 
+/** The reduced view, stereo and dragging the bob (on the ideal pendulum). */
+export async function checkViews(page, { check, WAIT, simulated }) {
+  await page.evaluate(() => {
+    window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
+    window.pendulab.send({ type: 'set_model', model: 'ideal' });
+    window.pendulab.send({ type: 'resume' });
+  });
+  await page.waitForFunction(() => window.pendulab.store.status?.model === 'ideal' && !window.pendulab.store.status.paused, null, { timeout: WAIT });
+  await simulated(page, 1);
+  await page.locator('#reduced canvas').scrollIntoViewIfNeeded();
+  await page.waitForTimeout(1000);
+  const reducedInk = await page.evaluate(async () => {
+    const img = new Image();
+    img.src = document.querySelector('#reduced canvas').toDataURL();
+    await img.decode();
+    const c = document.createElement('canvas');
+    [c.width, c.height] = [img.width, img.height];
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const px = ctx.getImageData(0, 0, c.width, c.height).data;
+    let orbit = 0;
+    for (let i = 0; i < px.length; i += 4) if (Math.abs(px[i] - 0x59) + Math.abs(px[i + 1] - 0xc3) + Math.abs(px[i + 2] - 0xff) < 60) orbit++;
+    return orbit;
+  });
+  check(reducedInk > 30, `reduced view draws the orbit in σ-space (${reducedInk} pixels)`);
+  await page.screenshot({ path: 'test-results/lab-reduced.png' });
+
+  // stereo: the anaglyph draws in red and cyan
+  await page.locator('.lil-title', { hasText: /^View$/ }).click();
+  await page.locator('.lil-controller', { hasText: 'stereo' }).locator('select').selectOption('anaglyph');
+  await page.waitForTimeout(500);
+  await page.screenshot({ path: 'test-results/lab-anaglyph.png' });
+  const fringe = await page.evaluate(() => document.getElementById('scene-canvas') !== null);
+  await page.locator('.lil-controller', { hasText: 'stereo' }).locator('select').selectOption('off');
+  check(fringe, 'stereo (anaglyph) renders and switches back');
+
+  // dragging the bob sets a new start at rest and pauses
+  await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  await page.waitForFunction(() => window.pendulab.store.status?.paused === true, null, { timeout: WAIT });
+  await page.waitForTimeout(300);
+  const before = await page.evaluate(() => window.pendulab.store.status.start.x);
+  const bob = await page.evaluate(() => window.pendulab.bobOnScreen());
+  await page.mouse.move(bob.x, bob.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; k++) await page.mouse.move(bob.x - 12 * k, bob.y - 6 * k);
+  await page.mouse.up();
+  await page.waitForFunction(
+    (b) => {
+      const s = window.pendulab.store.status;
+      return s.start.v.every((c) => c === 0) && s.start.x.some((c, i) => Math.abs(c - b[i]) > 0.05);
+    },
+    before,
+    { timeout: WAIT },
+  );
+  const after = await page.evaluate(() => window.pendulab.store.status);
+  const r = Math.hypot(...after.start.x);
+  check(after.paused && Math.abs(r - after.params.length) < 1e-12, `dragging the bob sets a start at rest on the sphere (x = ${after.start.x.map((c) => c.toFixed(3)).join(', ')} m)`);
+}
+
 export async function checkModels(page, { check, WAIT, simulated }) {
   const status = () => page.evaluate(() => window.pendulab.store.status);
   const waitStatus = (fn, arg) => page.waitForFunction(fn, arg, { timeout: WAIT, polling: 100 });
@@ -100,7 +159,7 @@ export async function checkModels(page, { check, WAIT, simulated }) {
       return n;
     }),
   );
-  check(inked.length === 2 && inked.every((n) => n > 500), `phase portrait and V_eff drawn (${inked.join(', ')} pixels)`);
+  check(inked.length === 3 && inked.every((n) => n > 500), `phase portrait, V_eff and the energy–momentum map drawn (${inked.join(', ')} pixels)`);
 
   // the scenario as TOML, through the button
   const [download] = await Promise.all([
