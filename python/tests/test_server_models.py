@@ -298,3 +298,24 @@ def test_a_flooding_client_does_not_stall_another() -> None:
     assert rate > 300, f"the test sent only {rate:.0f} commands/s"
     ratio = (t_end - t_start) / wall
     assert ratio > 0.5, f"the calm client got {ratio:.2f} simulated s per s while the other sent {rate:.0f}/s"
+
+
+def test_a_client_vanishing_mid_stream_leaves_the_others_streaming_and_frees_its_slot() -> None:
+    c = TestClient(create_app("rosette", max_sessions=2))
+    with c, c.websocket_connect("/ws") as steady:
+        until(steady, frames)
+        with c.websocket_connect("/ws") as gone:
+            ws_frames = [until(gone, frames) for _ in range(3)]  # streaming …
+            assert ws_frames[-1][-1, 0] > ws_frames[0][0, 0]
+        # … and gone without a word; the other session goes on
+        t0 = until(steady, frames)[-1, 0]
+        for _ in range(20):
+            t1 = until(steady, frames)[-1, 0]
+        assert t1 > t0
+        for _ in range(100):  # its slot is free again: a new page gets a status, not "server is full"
+            with c.websocket_connect("/ws") as again:
+                _, msg = receive(again)
+                if msg["type"] == "status":
+                    break
+            time.sleep(0.05)
+        assert msg["type"] == "status"

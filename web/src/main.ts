@@ -7,17 +7,8 @@ import { DataPanel } from './panels/data';
 import { Controls } from './panels/controls';
 import { Plots } from './panels/plots';
 import { Portraits } from './panels/portraits';
-import type {
-  Command,
-  EMView,
-  EffectivePotential,
-  ExactQuantities,
-  Frame,
-  ReducedCurves,
-  ScenarioInfo,
-  Schema,
-  Status,
-} from './protocol';
+import { Analyses, getJSON } from './analyses';
+import type { Command, ScenarioInfo, Schema, Status } from './protocol';
 import { ReducedView } from './scene/reduced';
 import { throttle } from './panels/params';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
@@ -44,16 +35,6 @@ function byId(id: string): HTMLElement {
   const el = document.getElementById(id);
   if (el === null) throw new Error(`#${id} missing from index.html`);
   return el;
-}
-
-async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
-  const r = await fetch(path, init);
-  const body: unknown = await r.json();
-  if (!r.ok) {
-    const detail = (body as { detail?: unknown }).detail;
-    throw new Error(typeof detail === 'string' ? detail : `${path}: HTTP ${r.status}`);
-  }
-  return body as T;
 }
 
 function download(name: string, href: string): void {
@@ -136,96 +117,7 @@ async function main(): Promise<void> {
     },
   });
 
-  // V_eff(θ) of the current l, m, g and J₃ (from the server): fetched at each epoch's first frame, and again
-  // while J₃ changes (models that do not conserve it), at most once a second
-  let veff: EffectivePotential | null = null;
-  let veffKey = '';
-  let veffAt = -Infinity;
-  let veffJ3: number | null = null;
-  const fetchPotential = (status: Status, f: Frame) => {
-    const p = status.params;
-    const key = `${status.epoch}:${p.length}:${p.mass}:${p.g}`;
-    const now = performance.now();
-    const stale = Math.abs(f.j3 - (veffJ3 ?? NaN)) > 1e-3 * Math.max(Math.abs(f.j3), 1e-9);
-    if (key === veffKey && !(stale && now - veffAt > 1000)) return;
-    if (key !== veffKey) veff = null;
-    veffKey = key;
-    veffAt = now;
-    veffJ3 = f.j3;
-    getJSON<EffectivePotential>('api/effective_potential', {
-      method: 'POST',
-      headers: { 'content-type': 'application/json' },
-      body: JSON.stringify({ length: p.length, mass: p.mass, g: p.g, j3: f.j3 }),
-    }).then(
-      (q) => {
-        if (veffKey === key) veff = q;
-      },
-      (e: unknown) => explain(`V_eff: ${e instanceof Error ? e.message : String(e)}`),
-    );
-  };
-
-  // the energy–momentum map's boundary, for the current l, m, g (the point comes from the frames)
-  let em: EMView | null = null;
-  let emKey = '';
-  const fetchEM = (status: Status, f: Frame) => {
-    const p = status.params;
-    const key = `${p.length}:${p.mass}:${p.g}`;
-    if (key === emKey) return;
-    emKey = key;
-    em = null;
-    if (p.g === 0) return; // no potential, no map
-    getJSON<EMView>('api/em_map', {
-      method: 'POST',
-      headers: { 'content-type': 'application/json' },
-      body: JSON.stringify({ length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }),
-    }).then(
-      (q) => {
-        if (emKey === key) em = q;
-      },
-      (e: unknown) => explain(`energy–momentum map: ${e instanceof Error ? e.message : String(e)}`),
-    );
-  };
-
-  // the reduced view of the epoch's orbit (the ideal pendulum's: its J₃ and E are the invariants)
-  let reducedEpoch = -1;
-  const fetchReduced = (status: Status, f: Frame) => {
-    reducedEpoch = status.epoch;
-    if (status.model !== 'ideal') {
-      reduced.setNote(`the reduced view is the ideal pendulum's; this is the ${status.model} model`);
-      return;
-    }
-    reduced.setNote(null);
-    const p = status.params;
-    getJSON<ReducedCurves>('api/reduced', {
-      method: 'POST',
-      headers: { 'content-type': 'application/json' },
-      body: JSON.stringify({ length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }),
-    }).then(
-      (q) => {
-        if (store.status?.epoch === status.epoch) reduced.set(q);
-      },
-      (e: unknown) => reduced.setNote(`reduced view: ${e instanceof Error ? e.message : String(e)}`),
-    );
-  };
-
-  let exactEpoch = -1;
-  const fetchExact = (status: Status, f: Frame) => {
-    exactEpoch = status.epoch;
-    if (status.model !== 'ideal') return; // the closed form is the ideal pendulum's
-    const body = { length: status.params.length, mass: status.params.mass, g: status.params.g, x: f.x, v: f.v };
-    getJSON<ExactQuantities>('api/exact', {
-      method: 'POST',
-      headers: { 'content-type': 'application/json' },
-      body: JSON.stringify(body),
-    }).then(
-      (q) => {
-        if (store.status?.epoch === status.epoch) store.setExact(q);
-      },
-      (e: unknown) => {
-        if (store.status?.epoch === status.epoch) store.setExact(null, String(e instanceof Error ? e.message : e));
-      },
-    );
-  };
+  const analyses = new Analyses(store, reduced, explain);
 
   const onStatus = (s: Status) => {
     store.onStatus(s);
@@ -247,13 +139,7 @@ async function main(): Promise<void> {
     },
     onFrames: (frames) => {
       store.onFrames(frames);
-      const s = store.status;
-      const first = store.trajectory[0];
-      if (s !== null && first !== undefined && exactEpoch !== s.epoch) fetchExact(s, first);
-      if (s !== null && first !== undefined && reducedEpoch !== s.epoch) fetchReduced(s, first);
-      if (s !== null && first !== undefined) fetchEM(s, first);
-      const last = store.latest();
-      if (s !== null && last !== null) fetchPotential(s, last);
+      analyses.onFrames();
     },
     onNotice: (n) => {
       if (n.type === 'error') {
@@ -303,8 +189,8 @@ async function main(): Promise<void> {
     if (now - lastPanels > 100) {
       lastPanels = now;
       plots.update(store.history);
-      portraits.update(store.history, f, veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);
-      portraits.updateEM(em, f);
+      portraits.update(store.history, f, analyses.veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);
+      portraits.updateEM(analyses.em, f);
       reduced.update(f, p?.length ?? 1);
       data.update(f, store);
     }
