@@ -10,8 +10,8 @@ HOST ?= 127.0.0.1
 PORT ?= 8000
 STATIC := python/pendulab/server/static
 
-.PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-web bench bench-compare \
-	golden clean
+.PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-web test-e2e bench \
+	bench-compare golden clean
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -54,6 +54,12 @@ test-web: web/node_modules/.package-lock.json
 	cd web && node_modules/.bin/tsc --noEmit
 	cd web && node_modules/.bin/vitest run
 
+# The lab end to end: `pendulab serve` on a free port, the committed bundle in Debian's headless chromium
+# (web/tests/e2e/run.sh; needs `apt-get install chromium`, which .ci/run does). Screenshots and the
+# measured frame rate: web/test-results/.
+test-e2e: build web/node_modules/.package-lock.json
+	bash web/tests/e2e/run.sh
+
 lint: venv
 	cargo fmt --all -- --check
 	cargo clippy --workspace --all-targets -- -D warnings
@@ -71,7 +77,7 @@ test-rust:
 test-python: build
 	$(VENV)/bin/pytest python/tests -q
 
-test: lint test-rust test-python test-web
+test: lint test-rust test-python test-web test-e2e
 
 bench:
 	cargo bench -p pendulab-core

@@ -100,6 +100,10 @@ def serve(
     ] = DEFAULT_HOST,
     port: Annotated[int, typer.Option(min=1, max=65535, help="TCP port.")] = DEFAULT_PORT,
     no_browser: Annotated[bool, typer.Option("--no-browser", help="Do not open a browser.")] = False,
+    max_sessions: Annotated[
+        int,
+        typer.Option(min=1, max=10_000, help="Most pages (WebSockets) served at once; one more is refused."),
+    ] = 16,
 ) -> None:
     """Start the lab: a web server with the 3-D pendulum, controls, live plots and the exact solution.
 
@@ -116,7 +120,7 @@ def serve(
             "install them with: pip install 'pendulab[lab]'"
         )
     with _user_errors():
-        lab = create_app(scenario)
+        lab = create_app(scenario, max_sessions=max_sessions)
     _check_port(host, port)
     url = url_for(host, port)
     config = uvicorn.Config(lab, host=host, port=port, log_level="warning", ws_max_size=65536)

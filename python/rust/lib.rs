@@ -13,7 +13,7 @@ mod string;
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pendulab_core::model::registry::{AnyModel, COMMON, MODELS};
-use pendulab_core::model::{energy, j3, tension};
+use pendulab_core::model::{acceleration, energy, j3, tension};
 use pendulab_core::solve::{Samples, DEFAULT_MAX_SAVED_BYTES};
 use pendulab_core::{
     DVec3, Error, IdealPendulum, Method, Model, Params, SaveAt, SolveOptions, Solver, State, Stepper,
@@ -256,7 +256,7 @@ fn state_from_angles(
 }
 
 /// Diagnostics along arrays x, v of shape (N, 3): energy [J], j3 [kg m²/s], tension [N],
-/// radius_error = |x| − l [m], tangency = x·v [m²/s].
+/// radius_error = |x| − l [m], tangency = x·v [m²/s], power [W], acceleration (N, 3) [m/s²].
 #[pyfunction]
 #[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None, pivot=None))]
 #[allow(clippy::too_many_arguments)]
@@ -312,6 +312,22 @@ fn diagnostics<'py>(
     {
         d.set_item(name, values.into_pyarray(py))?;
     }
+    // The acceleration ẍ = f + λx [m/s²] of T-2.2 (relative to the pivot, in the model's frame):
+    // m ẍ is the net force on the bob there (the lab draws it).
+    let mut acc = Array2::<f64>::zeros((n, 3));
+    for i in 0..n {
+        let ti = times.as_ref().map_or(0.0, |ts| ts[i]);
+        let a = acceleration(
+            &m,
+            ti,
+            DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]]),
+            DVec3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]),
+        );
+        for k in 0..3 {
+            acc[[i, k]] = a[k];
+        }
+    }
+    d.set_item("acceleration", acc.into_pyarray(py))?;
     // A moving pivot: its position p(t) [m] (the bob is at p + x in the inertial frame).
     if let (Some(path), Some(ts)) = (m.pivot(), &times) {
         let mut p = Array2::<f64>::zeros((n, 3));

@@ -22,7 +22,15 @@ from pendulab import cli, cli_serve
 from pendulab.server import FRAME_FIELDS, RECORD_BYTES, Session, create_app, decode_records, encode_records
 from pendulab.server import app as server_app
 from pendulab.server.app import MAX_PENDING
-from pendulab.server.protocol import CommandError, Pause, SetMethod, SetParams, SetState, parse_command
+from pendulab.server.protocol import (
+    RECORD_LEN,
+    CommandError,
+    Pause,
+    SetMethod,
+    SetParams,
+    SetState,
+    parse_command,
+)
 from pendulab.server.session import MAX_ELAPSED, MAX_STEPS_PER_TICK, MAX_SUBSAMPLES, resolve_scenario
 
 E, J3, TENSION = (FRAME_FIELDS.index(k) for k in ("energy", "j3", "tension"))
@@ -34,7 +42,7 @@ def client() -> TestClient:
 
 
 def receive(ws: Any) -> tuple[str, Any]:
-    """The next message: ("json", dict) or ("frames", array (N, 10))."""
+    """The next message: ("json", dict) or ("frames", array (N, RECORD_LEN))."""
     msg = ws.receive()
     if msg.get("text") is not None:
         return "json", json.loads(msg["text"])
@@ -71,7 +79,7 @@ def test_schema_lists_parameters_with_units_limits_defaults_and_every_method(cli
     assert params["length"]["min"] > 0 and params["mass"]["min"] > 0
     assert [m["name"] for m in s["methods"]] == pl.method_names()
     assert {"order", "symplectic", "preserves_j3", "adaptive"} <= s["methods"][0].keys()
-    assert s["frame"]["fields"] == list(FRAME_FIELDS) and s["frame"]["record_bytes"] == 80 == RECORD_BYTES
+    assert s["frame"]["fields"] == list(FRAME_FIELDS) and s["frame"]["record_bytes"] == 136 == RECORD_BYTES
     assert s["frame"]["byte_order"] == "little" and s["frame"]["dtype"] == "float64"
     assert s["controls"]["dt"]["default"] == 1e-3 and s["controls"]["time_scale"]["default"] == 1.0
     assert "load_scenario" in s["commands"]
@@ -325,12 +333,12 @@ def test_an_integration_failure_pauses_with_an_error() -> None:
 
 
 def test_frames_encode_as_little_endian_float64_records() -> None:
-    rec = np.arange(20, dtype=np.float64).reshape(2, 10)
+    rec = np.arange(2 * RECORD_LEN, dtype=np.float64).reshape(2, RECORD_LEN)
     data = encode_records(rec)
     assert len(data) == 2 * RECORD_BYTES and data[:8] == bytes(8)
     assert np.frombuffer(data[8:16], dtype="<f8")[0] == 1.0
     np.testing.assert_array_equal(decode_records(data), rec)
-    with pytest.raises(ValueError, match="multiple of 80"):
+    with pytest.raises(ValueError, match=f"multiple of {RECORD_BYTES}"):
         decode_records(data[:-1])
 
 
@@ -339,9 +347,16 @@ def test_frames_encode_as_little_endian_float64_records() -> None:
 
 def test_serve_help_and_user_errors() -> None:
     r = CliRunner().invoke(cli.app, ["serve", "--help"])
-    assert r.exit_code == 0 and "--no-browser" in r.stdout and "127.0.0.1" in r.stdout
+    assert (
+        r.exit_code == 0
+        and "--no-browser" in r.stdout
+        and "127.0.0.1" in r.stdout
+        and "--max-sessions" in r.stdout
+    )
     r = CliRunner().invoke(cli.app, ["serve", "no_such_scenario", "--no-browser"])
     assert r.exit_code == 2 and "no such scenario" in r.stderr and "rosette" in r.stderr
+    r = CliRunner().invoke(cli.app, ["serve", "--max-sessions", "0", "--no-browser"])
+    assert r.exit_code == 2 and "max-sessions" in r.stderr
 
 
 def test_serve_refuses_a_port_in_use() -> None:

@@ -6,15 +6,28 @@ import { Connection, socketUrl } from './connection';
 import { DataPanel } from './panels/data';
 import { Controls } from './panels/controls';
 import { Plots } from './panels/plots';
-import type { Command, ExactQuantities, Frame, ScenarioInfo, Schema, Status } from './protocol';
+import { Portraits } from './panels/portraits';
+import { Analyses, getJSON } from './analyses';
+import type { Command, ScenarioInfo, Schema, Status } from './protocol';
+import { ReducedView } from './scene/reduced';
+import { throttle } from './panels/params';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
+import { gravityDirection } from './scene/vectors';
+import { scenarioRequest } from './export';
 import { LabStore } from './state';
 import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
 
 declare global {
   interface Window {
-    /** For debugging and end-to-end tests: the store, frames drawn, a command sender, a screenshot. */
-    pendulab?: { store: LabStore; drawn: () => number; send: (cmd: Command) => void; screenshot: () => string };
+    /** For debugging and end-to-end tests: the store, frames drawn, a command sender, a screenshot, the
+     *  bob's position on the page. */
+    pendulab?: {
+      store: LabStore;
+      drawn: () => number;
+      send: (cmd: Command) => void;
+      screenshot: () => string;
+      bobOnScreen: () => { x: number; y: number } | null;
+    };
   }
 }
 
@@ -22,16 +35,6 @@ function byId(id: string): HTMLElement {
   const el = document.getElementById(id);
   if (el === null) throw new Error(`#${id} missing from index.html`);
   return el;
-}
-
-async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
-  const r = await fetch(path, init);
-  const body: unknown = await r.json();
-  if (!r.ok) {
-    const detail = (body as { detail?: unknown }).detail;
-    throw new Error(typeof detail === 'string' ? detail : `${path}: HTTP ${r.status}`);
-  }
-  return body as T;
 }
 
 function download(name: string, href: string): void {
@@ -63,6 +66,8 @@ async function main(): Promise<void> {
   const scene = new PendulumScene(byId('scene'));
   const view = { ...DEFAULT_VIEW };
   const plots = new Plots(byId('plots'));
+  const portraits = new Portraits(byId('portraits'));
+  const reduced = new ReducedView(byId('reduced'));
   const data = new DataPanel(byId('data'));
 
   const fromUrl = decodeUrl(window.location.search);
@@ -82,6 +87,22 @@ async function main(): Promise<void> {
       download(`pendulab-${store.status?.scenario ?? 'lab'}.csv`, url);
       setTimeout(() => URL.revokeObjectURL(url), 10_000);
     },
+    downloadTOML: () => {
+      const s = store.status;
+      if (s === null) return explain('not connected to the server');
+      fetch('api/scenario.toml', {
+        method: 'POST',
+        headers: { 'content-type': 'application/json' },
+        body: JSON.stringify(scenarioRequest(s)),
+      })
+        .then(async (r) => {
+          if (!r.ok) throw new Error(((await r.json()) as { detail?: string }).detail ?? `HTTP ${r.status}`);
+          const url = URL.createObjectURL(await r.blob());
+          download(`pendulab-${s.scenario ?? 'lab'}.toml`, url);
+          setTimeout(() => URL.revokeObjectURL(url), 10_000);
+        })
+        .catch((e: unknown) => explain(`scenario download: ${e instanceof Error ? e.message : String(e)}`));
+    },
     screenshot: () => download(`pendulab-${store.status?.scenario ?? 'lab'}.png`, scene.screenshot()),
     copyLink: () => {
       const link = window.location.href;
@@ -90,26 +111,13 @@ async function main(): Promise<void> {
         () => explain(link),
       ) ?? explain(link);
     },
-    viewChanged: (_v, top) => scene.setTopView(top),
+    viewChanged: (v, top) => {
+      scene.setTopView(top);
+      scene.setStereo(v.stereo);
+    },
   });
 
-  let exactEpoch = -1;
-  const fetchExact = (status: Status, f: Frame) => {
-    exactEpoch = status.epoch;
-    const body = { length: status.params.length, mass: status.params.mass, g: status.params.g, x: f.x, v: f.v };
-    getJSON<ExactQuantities>('api/exact', {
-      method: 'POST',
-      headers: { 'content-type': 'application/json' },
-      body: JSON.stringify(body),
-    }).then(
-      (q) => {
-        if (store.status?.epoch === status.epoch) store.setExact(q);
-      },
-      (e: unknown) => {
-        if (store.status?.epoch === status.epoch) store.setExact(null, String(e instanceof Error ? e.message : e));
-      },
-    );
-  };
+  const analyses = new Analyses(store, reduced, explain);
 
   const onStatus = (s: Status) => {
     store.onStatus(s);
@@ -131,9 +139,7 @@ async function main(): Promise<void> {
     },
     onFrames: (frames) => {
       store.onFrames(frames);
-      const s = store.status;
-      const first = store.trajectory[0];
-      if (s !== null && first !== undefined && exactEpoch !== s.epoch) fetchExact(s, first);
+      analyses.onFrames();
     },
     onNotice: (n) => {
       if (n.type === 'error') {
@@ -152,7 +158,22 @@ async function main(): Promise<void> {
   });
 
   let drawn = 0;
-  window.pendulab = { store, drawn: () => drawn, send, screenshot: () => scene.screenshot() };
+  // dragging the bob: pause, then the start follows the pointer (at rest there); the server checks it
+  const sendStart = throttle((x: [number, number, number]) => {
+    send({ type: 'set_state', x, v: [0, 0, 0], project: true });
+  }, 50);
+  scene.enableDrag((x, phase) => {
+    if (phase === 'start' && store.status?.paused === false) send({ type: 'pause' });
+    sendStart(x);
+    if (phase === 'end') explain('start set by dragging (at rest there): press start to release it');
+  });
+  window.pendulab = {
+    store,
+    drawn: () => drawn,
+    send,
+    screenshot: () => scene.screenshot(),
+    bobOnScreen: () => scene.bobOnScreen(),
+  };
   let lastWall = performance.now();
   let lastPanels = 0;
   const frame = (now: number) => {
@@ -161,12 +182,16 @@ async function main(): Promise<void> {
     store.advancePlayhead(dt);
     const f = store.displayed();
     const p = store.status?.params;
-    scene.update(f, store.trailWindow(view.trailSeconds), view, p?.mass ?? 1, p?.g ?? 9.81);
+    const gdir = gravityDirection(store.status?.model_params);
+    scene.update(f, store.trailWindow(view.trailSeconds), view, p?.mass ?? 1, p?.g ?? 9.81, gdir);
     scene.render();
     drawn++;
     if (now - lastPanels > 100) {
       lastPanels = now;
       plots.update(store.history);
+      portraits.update(store.history, f, analyses.veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);
+      portraits.updateEM(analyses.em, f);
+      reduced.update(f, p?.length ?? 1);
       data.update(f, store);
     }
     requestAnimationFrame(frame);

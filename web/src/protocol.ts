@@ -3,7 +3,8 @@
 //
 // Frames: every binary WebSocket message holds one or more records of little-endian float64 values in the
 // order of `frame.json` (shared with the Python server, pendulab/server/frame.json):
-//   [t, x1, x2, x3, v1, v2, v3, energy, j3, tension]   in s, m, m/s, J, kg m²/s, N.
+//   [t, x1, x2, x3, v1, v2, v3, energy, j3, tension, power, a1, a2, a3, pivot1, pivot2, pivot3]
+//   in s, m, m/s, J, kg m²/s, N, W, m/s², m. x, v and a are relative to the pivot (at `pivot`, 0 when fixed).
 import layout from '../../python/pendulab/server/frame.json';
 
 export type Vec3 = [number, number, number];
@@ -27,9 +28,15 @@ const I = {
   energy: fieldIndex('energy'),
   j3: fieldIndex('j3'),
   tension: fieldIndex('tension'),
+  power: fieldIndex('power'),
+  a: [fieldIndex('a1'), fieldIndex('a2'), fieldIndex('a3')] as const,
+  pivot: [fieldIndex('pivot1'), fieldIndex('pivot2'), fieldIndex('pivot3')] as const,
 };
 
-/** One state as computed by the server's core: time [s], position [m], velocity [m/s], E [J], J₃, T [N]. */
+/** One state as computed by the server's core: time t [s], position x [m] and velocity v [m/s] relative to
+ *  the pivot, energy E [J], J₃ [kg m²/s], rod tension T [N], power of the non-conservative forces P [W],
+ *  acceleration a = ẍ [m/s²] relative to the pivot (m a is the net force on the bob there) and the
+ *  pivot's position [m] (0 for a fixed pivot; the bob is at pivot + x). */
 export interface Frame {
   t: number;
   x: Vec3;
@@ -37,6 +44,9 @@ export interface Frame {
   energy: number;
   j3: number;
   tension: number;
+  power: number;
+  a: Vec3;
+  pivot: Vec3;
 }
 
 export class ProtocolError extends Error {}
@@ -52,13 +62,17 @@ export function decodeFrames(buf: ArrayBuffer): Frame[] {
   for (let k = 0; k < n; k++) {
     const base = k * RECORD_BYTES;
     const at = (i: number): number => view.getFloat64(base + 8 * i, true);
+    const vec = (i: readonly [number, number, number]): Vec3 => [at(i[0]), at(i[1]), at(i[2])];
     out.push({
       t: at(I.t),
-      x: [at(I.x[0]), at(I.x[1]), at(I.x[2])],
-      v: [at(I.v[0]), at(I.v[1]), at(I.v[2])],
+      x: vec(I.x),
+      v: vec(I.v),
       energy: at(I.energy),
       j3: at(I.j3),
       tension: at(I.tension),
+      power: at(I.power),
+      a: vec(I.a),
+      pivot: vec(I.pivot),
     });
   }
   return out;
@@ -77,14 +91,21 @@ export function encodeFrames(frames: readonly Frame[]): ArrayBuffer {
     put(I.energy, f.energy);
     put(I.j3, f.j3);
     put(I.tension, f.tension);
+    put(I.power, f.power);
+    I.a.forEach((i, c) => put(i, f.a[c] ?? NaN));
+    I.pivot.forEach((i, c) => put(i, f.pivot[c] ?? NaN));
   });
   return buf;
 }
 
 // --- commands (page → server), one JSON object per text message ---
 
+/** A model's own parameters by name, SI units (GET /api/schema → models). */
+export type ModelParams = Record<string, number>;
+
 export type Command =
-  | { type: 'set_params'; length?: number; mass?: number; g?: number }
+  | { type: 'set_params'; length?: number; mass?: number; g?: number; params?: ModelParams }
+  | { type: 'set_model'; model: string; params?: ModelParams }
   | { type: 'set_state'; x: Vec3; v: Vec3; project?: boolean }
   | { type: 'set_state'; theta: number; phi?: number; theta_dot?: number; phi_dot?: number }
   | { type: 'set_method'; method?: string; dt?: number }
@@ -114,6 +135,9 @@ export interface Status {
   adaptive: boolean;
   dt: number;
   params: Params;
+  /** The model of the core's registry and all its own parameters (SI units). */
+  model: string;
+  model_params: ModelParams;
   t: number;
   t0: number;
   start: { x: Vec3; v: Vec3 };
@@ -166,9 +190,12 @@ export interface ParamSchema {
   name: string;
   unit: string;
   description: string;
+  /** What is allowed, in words (the core's). */
+  allowed?: string;
   default: number;
-  min: number;
-  max: number;
+  /** Hard limits; null: none. */
+  min: number | null;
+  max: number | null;
   ui_min: number;
   ui_max: number;
   step: number;
@@ -197,9 +224,17 @@ export interface MethodInfo {
   summary: string;
 }
 
+export interface ModelSchema {
+  name: string;
+  summary: string;
+  params: ParamSchema[];
+}
+
 export interface Schema {
   version: string;
-  model: { name: string; summary: string; params: ParamSchema[] };
+  model: ModelSchema;
+  /** Every model of the core's registry with its own parameters (beyond length, mass, g). */
+  models: ModelSchema[];
   controls: { dt: ControlSchema; time_scale: ControlSchema; step_n: ControlSchema };
   methods: MethodInfo[];
   frame: { fields: string[]; units: string[]; dtype: string; byte_order: string; record_bytes: number };
@@ -211,6 +246,8 @@ export interface ScenarioInfo {
   name: string;
   title?: string | null;
   params?: Params;
+  model?: string;
+  model_params?: ModelParams;
   start?: { x: Vec3; v: Vec3 };
   method?: string;
   dt?: number;
@@ -231,4 +268,29 @@ export interface ExactQuantities {
   rotation_number: number | null;
   phases: { total: number; dynamic: number; geometric: number } | null;
   phases_note: string | null;
+}
+
+export interface EffectivePotential {
+  theta: number[];
+  v_eff: number[];
+  minimum: { theta: number; v_eff: number };
+}
+
+/** POST /api/reduced: Holm's Figure 2 in σ-space (σ₁ [1], σ₂ [1/s], σ₃ [1/s²]); `surface.sigma3[i][k]` is
+ *  the J₃ surface over (sigma1[i], sigma2[k]); the plane is σ₃ = 2(h − γσ₁). */
+export interface ReducedCurves {
+  orbit: { sigma1: number[]; sigma2: number[]; sigma3: number[] };
+  orbit_time: number;
+  surface: { sigma1: number[]; sigma2: number[]; sigma3: number[][] };
+  plane: { h: number; gamma: number };
+  point: [number, number, number];
+  j: number;
+}
+
+/** POST /api/em_map: the boundary of the energy–momentum map (J₃ [kg m²/s], E [J]) and its equilibria. */
+export interface EMView {
+  boundary: { j3: number[]; energy: number[] };
+  bottom: { j3: number; energy: number };
+  top: { j3: number; energy: number };
+  point: { j3: number; energy: number };
 }

@@ -28,6 +28,13 @@ export const CSV_COLUMNS = [
   'energy [J]',
   'j3 [kg m^2/s]',
   'tension [N]',
+  'power [W]',
+  'a1 [m/s^2]',
+  'a2 [m/s^2]',
+  'a3 [m/s^2]',
+  'pivot1 [m]',
+  'pivot2 [m]',
+  'pivot3 [m]',
 ] as const;
 
 export interface History {
@@ -35,11 +42,21 @@ export interface History {
   dE: number[];
   dJ3: number[];
   z: number[];
+  /** ż = v₃ [m/s] (the phase portrait's ordinate). */
+  zdot: number[];
   tension: number[];
 }
 
 function emptyHistory(): History {
-  return { t: [], dE: [], dJ3: [], z: [], tension: [] };
+  return { t: [], dE: [], dJ3: [], z: [], zdot: [], tension: [] };
+}
+
+/** Smallest and largest tension [N] received in the epoch, with their times [s]. */
+export interface Extremes {
+  min: number;
+  tMin: number;
+  max: number;
+  tMax: number;
 }
 
 type Listener = () => void;
@@ -51,17 +68,21 @@ export function lerp(a: number, b: number, s: number): number {
 /** Linear interpolation of two frames at parameter s ∈ [0, 1]; the position is put back on the sphere of
  *  radius lerp(|x_a|, |x_b|) so the bob never cuts the chord. Drawing only: no dynamics. */
 export function interpolateFrames(a: Frame, b: Frame, s: number): Frame {
-  const x: Vec3 = [lerp(a.x[0], b.x[0], s), lerp(a.x[1], b.x[1], s), lerp(a.x[2], b.x[2], s)];
+  const vec = (p: Vec3, q: Vec3): Vec3 => [lerp(p[0], q[0], s), lerp(p[1], q[1], s), lerp(p[2], q[2], s)];
+  const x = vec(a.x, b.x);
   const r = lerp(Math.hypot(...a.x), Math.hypot(...b.x), s);
   const n = Math.hypot(...x);
   if (n > 0) for (let i = 0; i < 3; i++) x[i] = (x[i] as number) * (r / n);
   return {
     t: lerp(a.t, b.t, s),
     x,
-    v: [lerp(a.v[0], b.v[0], s), lerp(a.v[1], b.v[1], s), lerp(a.v[2], b.v[2], s)],
+    v: vec(a.v, b.v),
     energy: lerp(a.energy, b.energy, s),
     j3: lerp(a.j3, b.j3, s),
     tension: lerp(a.tension, b.tension, s),
+    power: lerp(a.power, b.power, s),
+    a: vec(a.a, b.a),
+    pivot: vec(a.pivot, b.pivot),
   };
 }
 
@@ -77,6 +98,8 @@ export class LabStore {
   trajectoryTruncated = false;
   /** E and J₃ of the epoch's first frame: the references of the drift plots. */
   reference: { energy: number; j3: number } | null = null;
+  /** Tension extremes of the epoch (every received frame), or null before the first. */
+  tensionExtremes: Extremes | null = null;
   /** Simulated time shown [s], or null before the first frame. */
   playT: number | null = null;
   exact: ExactQuantities | null = null;
@@ -113,6 +136,7 @@ export class LabStore {
     this.trajectory = [];
     this.trajectoryTruncated = false;
     this.reference = null;
+    this.tensionExtremes = null;
     this.playT = null;
     this.exact = null;
     this.exactError = null;
@@ -145,6 +169,12 @@ export class LabStore {
       if (last !== undefined && f.t === last.t) this.frames.pop(); // same time: the newer numbers win
       this.frames.push(f);
       if (this.reference === null) this.reference = { energy: f.energy, j3: f.j3 };
+      const ex = this.tensionExtremes;
+      if (ex === null) this.tensionExtremes = { min: f.tension, tMin: f.t, max: f.tension, tMax: f.t };
+      else {
+        if (f.tension < ex.min) [ex.min, ex.tMin] = [f.tension, f.t];
+        if (f.tension > ex.max) [ex.max, ex.tMax] = [f.tension, f.t];
+      }
       this.pushTrail(f);
       this.pushHistory(f);
       if (this.trajectory.length < TRAJECTORY_MAX) this.trajectory.push(f);
@@ -171,11 +201,19 @@ export class LabStore {
     h.dE.push(f.energy - ref.energy);
     h.dJ3.push(f.j3 - ref.j3);
     h.z.push(f.x[2]);
+    h.zdot.push(f.v[2]);
     h.tension.push(f.tension);
     if (h.t.length > HISTORY_MAX) {
       // thin: keep every other point (always the first), take every other future point
-      const keep = <T>(a: T[]): T[] => a.filter((_, i) => i % 2 === 0);
-      this.history = { t: keep(h.t), dE: keep(h.dE), dJ3: keep(h.dJ3), z: keep(h.z), tension: keep(h.tension) };
+      const keep = (a: number[]): number[] => a.filter((_, i) => i % 2 === 0);
+      this.history = {
+        t: keep(h.t),
+        dE: keep(h.dE),
+        dJ3: keep(h.dJ3),
+        z: keep(h.z),
+        zdot: keep(h.zdot),
+        tension: keep(h.tension),
+      };
       this.historyStride *= 2;
       this.historyCount = 1;
     }
@@ -240,13 +278,15 @@ export class LabStore {
       source: 'pendulab lab',
       scenario: s?.scenario ?? null,
       params: s?.params ?? null,
+      model: s?.model ?? null,
+      model_params: s?.model_params ?? null,
       method: s?.method ?? null,
       dt: s?.dt ?? null,
       truncated: this.trajectoryTruncated,
     };
     const header = CSV_COLUMNS.join(',');
     const rows = this.trajectory.map((f) =>
-      [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension].map((v) => String(v)).join(','),
+      [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension, f.power, ...f.a, ...f.pivot].map((v) => String(v)).join(','),
     );
     return [`# ${JSON.stringify(meta)}`, header, ...rows].join('\n') + '\n';
   }

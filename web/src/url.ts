@@ -1,12 +1,15 @@
 // The scenario in the page's URL (no DOM): opening a shared link reproduces the motion exactly.
 //
-// Query keys: s (example name), l [m], m [kg], g [m/s²], method, dt [s], ts (time scale), x, v (the start:
+// Query keys: s (example name), model (a registry name), mp (the model's own parameters, name:value pairs,
+// comma-separated, SI units), l [m], m [kg], g [m/s²], method, dt [s], ts (time scale), x, v (the start:
 // three numbers each, comma-separated, in m and m/s), paused (1). Numbers are written with JavaScript's
 // shortest round-trip form, so every float64 reads back bit for bit.
-import type { Command, Status, Vec3 } from './protocol';
+import type { Command, ModelParams, Status, Vec3 } from './protocol';
 
 export interface UrlScenario {
   scenario?: string;
+  model?: string;
+  modelParams?: ModelParams;
   length?: number;
   mass?: number;
   g?: number;
@@ -26,6 +29,10 @@ function num(n: number): string {
 export function encodeUrl(u: UrlScenario): string {
   const q = new URLSearchParams();
   if (u.scenario !== undefined) q.set('s', u.scenario);
+  if (u.model !== undefined) q.set('model', u.model);
+  if (u.modelParams !== undefined && Object.keys(u.modelParams).length > 0) {
+    q.set('mp', Object.entries(u.modelParams).map(([k, v]) => `${k}:${num(v)}`).join(','));
+  }
   if (u.length !== undefined) q.set('l', num(u.length));
   if (u.mass !== undefined) q.set('m', num(u.mass));
   if (u.g !== undefined) q.set('g', num(u.g));
@@ -52,7 +59,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   const q = new URLSearchParams(query.startsWith('?') ? query.slice(1) : query);
   const value: UrlScenario = {};
   const problems: string[] = [];
-  const known = new Set(['s', 'l', 'm', 'g', 'method', 'dt', 'ts', 'x', 'v', 'paused']);
+  const known = new Set(['s', 'model', 'mp', 'l', 'm', 'g', 'method', 'dt', 'ts', 'x', 'v', 'paused']);
   for (const key of q.keys()) if (!known.has(key)) problems.push(`unknown URL key ${key}`);
   const name = (key: string): string | undefined => {
     const t = q.get(key);
@@ -82,6 +89,22 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   };
   const s = name('s');
   if (s !== undefined) value.scenario = s;
+  const model = name('model');
+  if (model !== undefined) value.model = model;
+  const mp = q.get('mp');
+  if (mp !== null) {
+    const params: ModelParams = {};
+    for (const pair of mp.split(',')) {
+      const [k, v, ...rest] = pair.split(':');
+      const n = v === undefined ? null : parseNumber(v);
+      if (k === undefined || !/^[A-Za-z_][A-Za-z0-9_]{0,40}$/.test(k) || n === null || rest.length > 0) {
+        problems.push(`mp: ${JSON.stringify(pair)} is not name:number`);
+        continue;
+      }
+      params[k] = n;
+    }
+    if (Object.keys(params).length > 0) value.modelParams = params;
+  }
   const l = number('l');
   if (l !== undefined) value.length = l;
   const m = number('m');
@@ -110,6 +133,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
 /** What the URL should say for a status (the scenario as it stands: parameters, method, start). */
 export function fromStatus(s: Status): UrlScenario {
   const u: UrlScenario = {
+    model: s.model,
     length: s.params.length,
     mass: s.params.mass,
     g: s.params.g,
@@ -120,15 +144,17 @@ export function fromStatus(s: Status): UrlScenario {
     v: s.start.v,
   };
   if (s.scenario !== null) u.scenario = s.scenario;
+  if (Object.keys(s.model_params).length > 0) u.modelParams = { ...s.model_params };
   if (s.paused) u.paused = true;
   return u;
 }
 
-/** The commands that put a fresh session into the URL's scenario (in this order: scenario, parameters,
- *  method, time scale, start, then reset to t0 and pause if asked). */
+/** The commands that put a fresh session into the URL's scenario (in this order: scenario, model and its
+ *  parameters, parameters, method, time scale, start, then reset to t0 and pause if asked). */
 export function commandsFor(u: UrlScenario): Command[] {
   const out: Command[] = [];
   if (u.scenario !== undefined) out.push({ type: 'load_scenario', name: u.scenario });
+  if (u.model !== undefined) out.push({ type: 'set_model', model: u.model, params: { ...u.modelParams } });
   const params: { type: 'set_params'; length?: number; mass?: number; g?: number } = { type: 'set_params' };
   if (u.length !== undefined) params.length = u.length;
   if (u.mass !== undefined) params.mass = u.mass;

@@ -5,11 +5,16 @@ by ``pendulab serve`` and the tests, so the rest of the package works without it
 
 - :mod:`.protocol`: frame layout (``frame.json``), the JSON commands (pydantic), encoding.
 - :mod:`.session`: one client's pendulum, stepper and pacing, free of I/O.
+- :mod:`.scenarios`: the scenarios a session starts from (examples by name, a file, built in).
+- :mod:`.schema`: ``/api/schema`` (the registry's models and parameters, slider spans).
+- :mod:`.rest`: the computing endpoints (exact solution, V_eff, scenario as TOML).
 - :mod:`.app`: the FastAPI application (static front end, ``/ws``, ``/api/…``).
 """
 
-from .app import create_app, exact_quantities, run_session, scenarios, schema
+from .app import create_app, run_session, scenarios
 from .protocol import FRAME_FIELDS, FRAME_UNITS, RECORD_BYTES, decode_records, encode_records, parse_command
+from .rest import effective_potential, exact_quantities, scenario_toml
+from .schema import schema
 from .session import Session, Setup, resolve_scenario
 
 __all__ = [
@@ -20,11 +25,13 @@ __all__ = [
     "Setup",
     "create_app",
     "decode_records",
+    "effective_potential",
     "encode_records",
     "exact_quantities",
     "parse_command",
     "resolve_scenario",
     "run_session",
+    "scenario_toml",
     "scenarios",
     "schema",
 ]

@@ -10,9 +10,14 @@
   :data:`TICK_HZ`, applies waiting commands, advances the stepper to wall clock × time scale and sends
   the frames. Only the ticker writes to the socket and touches the session. A client vanishing mid-
   stream ends its own tasks only.
-- ``GET /api/schema``: model parameters (units, limits, defaults), controls, methods, frame layout.
-- ``GET /api/scenarios``: the example scenarios (pendulum, start, method, dt).
+- ``GET /api/schema``: every model's parameters (units, limits, defaults), controls, methods, frames.
+- ``GET /api/scenarios``: the example scenarios (model, pendulum, start, method, dt).
 - ``POST /api/exact``: the exact-solution quantities of a state (kind, turning heights, periods, phases).
+- ``POST /api/effective_potential``: V_eff(θ) for l, m, g, J₃.
+- ``POST /api/scenario.toml``: a session's scenario as a TOML file for ``pendulab run``.
+- ``POST /api/reduced``, ``POST /api/em_map``: the reduced view (σ-space) and the energy–momentum map.
+
+At most ``max_sessions`` clients are served at once (:data:`MAX_SESSIONS`); one more is refused.
 """
 
 from __future__ import annotations
@@ -21,35 +26,34 @@ import contextlib
 import logging
 from collections import deque
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import anyio
 from fastapi import FastAPI, Request, WebSocket, WebSocketDisconnect
-from fastapi.responses import HTMLResponse, JSONResponse
+from fastapi.responses import HTMLResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
-from pydantic import ValidationError
+from pydantic import BaseModel, ValidationError
 
 from .. import _core
 from ..scenario import ScenarioError, load_scenario
-from ..simulate import methods
 from .protocol import (
-    COMMAND_TYPES,
-    FRAME_FIELDS,
-    FRAME_UNITS,
-    LIMITS,
-    RECORD_BYTES,
     CommandError,
     ExactRequest,
     encode_records,
     error_notice,
-    finite_or_none,
     parse_command,
     validation_problems,
 )
-from .session import Session, Setup, example_resolver, resolve_scenario, scenario_files
-
-TICK_HZ = 60.0
-"""Frames per second sent to each client while running."""
+from .rest import (
+    PotentialRequest,
+    ScenarioRequest,
+    effective_potential,
+    exact_quantities,
+    scenario_toml,
+)
+from .schema import TICK_HZ, schema
+from .session import Session, Setup, example_resolver, model_params, resolve_scenario, scenario_files
+from .views import EMRequest, ReducedRequest, em_view, reduced_view
 
 MAX_PENDING = 64
 """Most commands waiting for the next tick; more are dropped (throttling)."""
@@ -57,55 +61,19 @@ MAX_PENDING = 64
 MAX_PER_TICK = 32
 """Most commands applied per tick."""
 
+MAX_SESSIONS = 16
+"""Default for the most lab sessions (WebSockets) at once; more are refused with an error notice."""
+
 STATIC_DIR = Path(__file__).with_name("static")
 
 log = logging.getLogger("pendulab.server")
+
+M = TypeVar("M", bound=BaseModel)
 
 _NOT_BUILT = """<!doctype html><meta charset="utf-8"><title>Pendulab lab</title>
 <p>The lab's front end is not built into this package (no <code>static/index.html</code>).
 From a source checkout run <code>make web</code> (needs Node 20 and npm), then reload.
 The API is up: <a href="/api/schema">/api/schema</a>.</p>"""
-
-
-def schema() -> dict[str, Any]:
-    """What the page builds its controls from: parameters with units and limits, methods, frame layout."""
-    ideal = next(m for m in _core.models() if m["name"] == "ideal")
-    params = []
-    for p in ideal["params"]:
-        lim = LIMITS[p["name"]]
-        params.append(
-            {
-                "name": p["name"],
-                "unit": p["unit"],
-                "description": p["description"],
-                "default": p["default"],
-                "min": lim["min"],
-                "max": lim["max"],
-                "ui_min": lim["ui_min"],
-                "ui_max": lim["ui_max"],
-                "step": lim["step"],
-            }
-        )
-    controls = {
-        "dt": {"unit": "s", "description": "step size of fixed-step methods", **LIMITS["dt"]},
-        "time_scale": {"unit": "1", "description": "simulated seconds per second", **LIMITS["time_scale"]},
-        "step_n": {"unit": "steps", "description": "steps taken by one 'step' command", **LIMITS["step_n"]},
-    }
-    return {
-        "version": _core.__version__,
-        "model": {"name": ideal["name"], "summary": ideal["summary"], "params": params},
-        "controls": controls,
-        "methods": [dict(m) for m in methods()],
-        "frame": {
-            "fields": list(FRAME_FIELDS),
-            "units": list(FRAME_UNITS),
-            "dtype": "float64",
-            "byte_order": "little",
-            "record_bytes": RECORD_BYTES,
-        },
-        "commands": list(COMMAND_TYPES),
-        "tick_hz": TICK_HZ,
-    }
 
 
 def _describe(setup: Setup) -> dict[str, Any]:
@@ -114,6 +82,8 @@ def _describe(setup: Setup) -> dict[str, Any]:
         "name": setup.name,
         "title": setup.title,
         "params": {"length": p.length, "mass": p.mass, "g": p.g},
+        "model": p.model,
+        "model_params": model_params(p),
         "start": {"x": [float(c) for c in setup.state.x], "v": [float(c) for c in setup.state.v]},
         "method": setup.method,
         "dt": setup.dt,
@@ -133,47 +103,34 @@ def scenarios() -> list[dict[str, Any]]:
     return out
 
 
-def exact_quantities(req: ExactRequest) -> dict[str, Any]:
-    """The exact-solution quantities of the orbit through a state (THEORY §4–5), JSON-ready.
-
-    Infinite or undefined values (the separatrix's period, the advance of planar motion) are null.
-    """
-    from ..exact import exact
-    from ..model import Pendulum
-
-    p = Pendulum(length=req.length, g=req.g, mass=req.mass)
-    state = req.to_state(p)
-    sol = exact(p, state)
-    phases: dict[str, float | None] | None
+async def _body(request: Request, kind: type[M]) -> M | JSONResponse:
+    """The request's JSON body validated as ``kind``, or the HTTP 422 answer naming every problem."""
     try:
-        ph = sol.phases()
-        phases = {"total": ph.total, "dynamic": ph.dynamic, "geometric": ph.geometric}
-        phases_note = None
-    except _core.InvalidInputError as e:
-        phases, phases_note = None, " ".join(str(e).split())
-    return {
-        "kind": sol.kind,
-        "energy": p.energy(state),
-        "j3": p.j3(state),
-        "omega0": sol.omega0,
-        "turning_heights": [finite_or_none(z) for z in sol.turning_heights],
-        "modulus": finite_or_none(sol.modulus),
-        "period_z": finite_or_none(sol.period_z),
-        "period_z_infinite": sol.period_z is not None and sol.period_z == float("inf"),
-        "azimuth_advance": finite_or_none(sol.azimuth_advance),
-        "rotation_number": finite_or_none(sol.rotation_number),
-        "phases": phases,
-        "phases_note": phases_note,
-    }
+        body = await request.json()
+    except ValueError as e:
+        return JSONResponse({"detail": f"the body is not JSON: {e}"}, status_code=422)
+    try:
+        return kind.model_validate(body)
+    except ValidationError as e:
+        return JSONResponse({"detail": validation_problems(e, skip=0)}, status_code=422)
 
 
-def create_app(scenario: str | Path | None = None, *, static_dir: Path | None = None) -> FastAPI:
+def _unprocessable(e: Exception) -> JSONResponse:
+    return JSONResponse({"detail": " ".join(str(e).split())}, status_code=422)
+
+
+def create_app(
+    scenario: str | Path | None = None, *, static_dir: Path | None = None, max_sessions: int = MAX_SESSIONS
+) -> FastAPI:
     """The lab application; every client starts with ``scenario`` (an example name or a file; default
-    ``rosette``). Raises :class:`pendulab.ScenarioError` for a bad scenario."""
+    ``rosette``). At most ``max_sessions`` WebSockets are served at once: one more gets an ``error``
+    notice saying so and is closed (code 1013, try again later). Raises :class:`pendulab.ScenarioError`
+    for a bad scenario."""
     default = resolve_scenario(scenario)
     resolve = example_resolver(default)
     static = STATIC_DIR if static_dir is None else static_dir
     app = FastAPI(title="Pendulab lab", version=_core.__version__, docs_url="/api/docs", redoc_url=None)
+    active = 0
 
     @app.get("/api/schema")
     def get_schema() -> dict[str, Any]:
@@ -188,25 +145,74 @@ def create_app(scenario: str | Path | None = None, *, static_dir: Path | None = 
 
     @app.post("/api/exact")
     async def post_exact(request: Request) -> JSONResponse:
-        try:
-            body = await request.json()
-        except ValueError as e:
-            return JSONResponse({"detail": f"the body is not JSON: {e}"}, status_code=422)
-        try:
-            req = ExactRequest.model_validate(body)
-        except ValidationError as e:
-            return JSONResponse({"detail": validation_problems(e, skip=0)}, status_code=422)
+        req = await _body(request, ExactRequest)
+        if isinstance(req, JSONResponse):
+            return req
         try:
             return JSONResponse(exact_quantities(req))
-        except ImportError as e:  # pragma: no cover - the exact module ships with the package
-            return JSONResponse({"detail": f"the exact solution is not available: {e}"}, status_code=501)
         except (_core.InvalidInputError, _core.IntegrationError) as e:
-            return JSONResponse({"detail": " ".join(str(e).split())}, status_code=422)
+            return _unprocessable(e)
+
+    @app.post("/api/effective_potential")
+    async def post_potential(request: Request) -> JSONResponse:
+        req = await _body(request, PotentialRequest)
+        if isinstance(req, JSONResponse):
+            return req
+        return JSONResponse(effective_potential(req))
+
+    @app.post("/api/reduced")
+    async def post_reduced(request: Request) -> JSONResponse:
+        req = await _body(request, ReducedRequest)
+        if isinstance(req, JSONResponse):
+            return req
+        try:
+            return JSONResponse(reduced_view(req))
+        except (_core.InvalidInputError, _core.IntegrationError) as e:
+            return _unprocessable(e)
+
+    @app.post("/api/em_map")
+    async def post_em_map(request: Request) -> JSONResponse:
+        req = await _body(request, EMRequest)
+        if isinstance(req, JSONResponse):
+            return req
+        try:
+            return JSONResponse(em_view(req))
+        except (_core.InvalidInputError, _core.IntegrationError) as e:
+            return _unprocessable(e)
+
+    @app.post("/api/scenario.toml")
+    async def post_scenario(request: Request) -> Response:
+        req = await _body(request, ScenarioRequest)
+        if isinstance(req, JSONResponse):
+            return req
+        try:
+            text = scenario_toml(req)
+        except (ScenarioError, _core.InvalidInputError) as e:
+            return _unprocessable(e)
+        return Response(
+            text,
+            media_type="application/toml; charset=utf-8",
+            headers={"content-disposition": 'attachment; filename="pendulab-scenario.toml"'},
+        )
 
     @app.websocket("/ws")
     async def websocket(ws: WebSocket) -> None:
+        nonlocal active
         await ws.accept()
-        await run_session(ws, Session(default, resolve))
+        if active >= max_sessions:
+            message = (
+                f"the server is full: {active} lab sessions are open, the most it serves at once "
+                f"(pendulab serve --max-sessions {max_sessions}); close another tab or try again later"
+            )
+            with contextlib.suppress(WebSocketDisconnect, OSError, RuntimeError):
+                await ws.send_json(error_notice(message))
+                await ws.close(code=1013, reason="server full")
+            return
+        active += 1
+        try:
+            await run_session(ws, Session(default, resolve))
+        finally:
+            active -= 1
 
     if (static / "index.html").is_file():
         app.mount("/", StaticFiles(directory=static, html=True), name="static")

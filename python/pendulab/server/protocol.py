@@ -6,9 +6,10 @@ in s, m, m/s, J, kg m²/s, N (80 bytes each). The layout is read from ``frame.js
 which the page's ``web/src/protocol.ts`` imports too, so the two cannot disagree.
 
 **Commands** (page → server): one JSON object per text message, told apart by ``"type"``
-(a pydantic discriminated union, :data:`COMMAND`): ``set_params``, ``set_state``, ``set_method``,
-``set_time_scale``, ``pause``, ``resume``, ``step``, ``reset``, ``load_scenario``. Unknown keys,
-wrong types, NaN/inf and out-of-range values are refused with an ``error`` notice naming the problem.
+(a pydantic discriminated union, :data:`COMMAND`): ``set_params``, ``set_model``, ``set_state``,
+``set_method``, ``set_time_scale``, ``pause``, ``resume``, ``step``, ``reset``, ``load_scenario``.
+Unknown keys, wrong types, NaN/inf and out-of-range values are refused with an ``error`` notice naming
+the problem.
 
 **Notices** (server → page, JSON text): ``{"type": "status", …}`` after every change (see
 :meth:`pendulab.server.session.Session.status`) and ``{"type": "error", "message": …, "command": …}``.
@@ -24,6 +25,7 @@ from typing import Annotated, Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
+from .. import _core
 from ..model import Pendulum, State
 from ..simulate import method_names
 
@@ -66,6 +68,26 @@ def decode_records(data: bytes) -> np.ndarray:
     return np.frombuffer(data, dtype=_WIRE).astype(np.float64).reshape(-1, RECORD_LEN)
 
 
+COMMON_PARAMS = ("length", "mass", "g")
+"""The parameters every model shares (l [m], m [kg], g [m/s²]); the rest are a model's own."""
+
+MODEL_SPECS: dict[str, _core.ModelInfo] = {m["name"]: m for m in _core.models()}
+"""The core's model registry by name (``pendulab.models()``): parameters with units, defaults, limits."""
+
+
+def own_params(model: str) -> list[_core.ParamSpec]:
+    """The parameters of ``model`` beyond length, mass and g, in the registry's order."""
+    return [p for p in MODEL_SPECS[model]["params"] if p["name"] not in COMMON_PARAMS]
+
+
+def _check_param_names(model: str, names: Any) -> None:
+    allowed = [p["name"] for p in own_params(model)]
+    unknown = [n for n in names if n not in allowed]
+    if unknown:
+        has = f"its parameters: {', '.join(allowed)}" if allowed else "it has none besides length, mass, g"
+        raise ValueError(f"the {model!r} model has no parameter {', '.join(map(repr, unknown))}; {has}")
+
+
 # --- commands -----------------------------------------------------------------------------------------
 
 
@@ -78,17 +100,36 @@ def _lim(name: str) -> dict[str, float]:
 
 
 class SetParams(_Command):
-    """Change the pendulum; omitted values stay. A new length rescales the state (same angles and rates)."""
+    """Change the pendulum's parameters, keeping its model; omitted values stay. A new length rescales
+    the state (same angles and rates). ``params``: the current model's own parameters by name, SI units
+    (``GET /api/schema`` → ``models``); the session checks the names, the core the values."""
 
     type: Literal["set_params"]
     length: float | None = Field(None, description="rod length l in m", **_lim("length"))
     mass: float | None = Field(None, description="bob mass m in kg", **_lim("mass"))
     g: float | None = Field(None, description="gravity g in m/s² (g > 0 pulls along -z)", **_lim("g"))
+    params: dict[str, float] | None = Field(None, description="the model's own parameters (SI units)")
 
     @model_validator(mode="after")
     def _something(self) -> SetParams:
-        if self.length is None and self.mass is None and self.g is None:
-            raise ValueError("give at least one of length (m), mass (kg), g (m/s²)")
+        if self.length is None and self.mass is None and self.g is None and not self.params:
+            raise ValueError("give at least one of length (m), mass (kg), g (m/s²), params {name: value}")
+        return self
+
+
+class SetModel(_Command):
+    """Switch to another model of the core's registry (``pendulab.models()``), keeping length, mass, g,
+    the state and t; its own parameters are the registry's defaults overridden by ``params`` (SI units)."""
+
+    type: Literal["set_model"]
+    model: str = Field(min_length=1, max_length=40)
+    params: dict[str, float] = Field(default_factory=dict, description="the model's own parameters (SI)")
+
+    @model_validator(mode="after")
+    def _known(self) -> SetModel:
+        if self.model not in MODEL_SPECS:
+            raise ValueError(f"unknown model {self.model!r}; available: {', '.join(MODEL_SPECS)}")
+        _check_param_names(self.model, self.params)
         return self
 
 
@@ -200,10 +241,13 @@ class LoadScenario(_Command):
     name: str = Field(min_length=1, max_length=100)
 
 
-Command = SetParams | SetState | SetMethod | SetTimeScale | Pause | Resume | Step | Reset | LoadScenario
+Command = (
+    SetParams | SetModel | SetState | SetMethod | SetTimeScale | Pause | Resume | Step | Reset | LoadScenario
+)
 COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])
 COMMAND_TYPES: tuple[str, ...] = (
     "set_params",
+    "set_model",
     "set_state",
     "set_method",
     "set_time_scale",
@@ -269,6 +313,14 @@ def _problem(err: Any, skip: int) -> str:
         return f"{key} is missing"
     shown = _show(err.get("input"))
     return f"{key} = {shown}: {msg[:1].lower()}{msg[1:]}"
+
+
+def check_model_params(model: str, names: Any) -> None:
+    """:class:`CommandError` when ``names`` are not all parameters of ``model`` (the message lists them)."""
+    try:
+        _check_param_names(model, names)
+    except ValueError as e:
+        raise CommandError(str(e), command="set_params") from None
 
 
 def error_notice(message: str, command: str | None = None) -> dict[str, Any]:

@@ -20,16 +20,14 @@ from __future__ import annotations
 import math
 import tomllib
 from collections.abc import Callable
-from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from .. import _core
 from ..model import Pendulum, State
-from ..scenario import Scenario, ScenarioError, load_scenario
-from ..simulate import DEFAULTS, Stepper, methods
+from ..scenario import ScenarioError
+from ..simulate import Stepper, methods
 from .protocol import (
     FRAME_FIELDS,
     RECORD_LEN,
@@ -40,11 +38,17 @@ from .protocol import (
     Reset,
     Resume,
     SetMethod,
+    SetModel,
     SetParams,
     SetState,
     SetTimeScale,
     Step,
+    check_model_params,
+    own_params,
 )
+from .scenarios import Setup, example_resolver, resolve_scenario, scenario_files
+
+__all__ = ["Session", "Setup", "example_resolver", "model_params", "resolve_scenario", "scenario_files"]
 
 MAX_STEPS_PER_TICK = 200_000
 """Most integrator steps one tick may take (about 7 ms of RATTLE on the reference machine)."""
@@ -55,111 +59,46 @@ MAX_SUBSAMPLES = 16
 MAX_ELAPSED = 0.1
 """Longest wall-clock interval [s] one tick catches up on (after a stall the run resumes, not jumps)."""
 
-BUILTIN_SCENARIO = """
-title = "Rosette: 60° release with sideways spin (built in)"
-[pendulum]
-length = 1.0
-mass = 1.0
-g = 9.81
-[initial]
-theta_deg = 60.0
-phi_dot = 2.0
-[simulation]
-t_end = 100.0
-method = "rattle"
-dt = 1.0e-3
-"""
-"""Used when no scenario files are found (a package installed without the source tree's examples)."""
+_SCALAR = {name: FRAME_FIELDS.index(name) for name in ("t", "energy", "j3", "tension", "power")}
+_VECTOR = {name: FRAME_FIELDS.index(f"{name}1") for name in ("x", "v", "a", "pivot")}
 
 
-@dataclass(frozen=True)
-class Setup:
-    """What a scenario gives a session: pendulum, start, integrator settings."""
-
-    name: str | None
-    title: str | None
-    pendulum: Pendulum
-    state: State
-    method: str
-    dt: float
-    rtol: float
-    atol: float
-    t0: float
-
-    @classmethod
-    def from_scenario(cls, sc: Scenario, name: str | None) -> Setup:
-        sim = sc.spec.simulation
-        rtol, atol = sim.resolved_tolerances()
-        dt = sim.dt if sim.dt is not None else float(DEFAULTS["dt"])
-        return cls(name, sc.title, sc.pendulum(), sc.initial_state(), sim.method, dt, rtol, atol, sim.t0)
-
-
-def scenario_dirs() -> list[Path]:
-    """Where example scenarios are looked for: ./examples/scenarios, then the source tree's."""
-    here = Path(__file__).resolve()
-    found: list[Path] = []
-    for d in (Path.cwd() / "examples" / "scenarios", here.parents[3] / "examples" / "scenarios"):
-        if d.is_dir() and d.resolve() not in found:
-            found.append(d.resolve())
-    return found
-
-
-def scenario_files() -> dict[str, Path]:
-    """Example scenarios by name (file stem); the first directory of :func:`scenario_dirs` wins."""
-    files: dict[str, Path] = {}
-    for d in reversed(scenario_dirs()):
-        files.update({f.stem: f for f in sorted(d.glob("*.toml"))})
-    return dict(sorted(files.items()))
-
-
-def builtin_setup() -> Setup:
-    return Setup.from_scenario(Scenario.from_toml_str(BUILTIN_SCENARIO, "<built-in rosette>"), "rosette")
-
-
-def resolve_scenario(spec: str | Path | None) -> Setup:
-    """A setup from a scenario name (``rosette``), a file path, or None (``rosette``, else the built-in)."""
-    files = scenario_files()
-    if spec is None:
-        return (
-            Setup.from_scenario(load_scenario(files["rosette"]), "rosette")
-            if "rosette" in files
-            else (builtin_setup())
-        )
-    text = str(spec)
-    if text in files:
-        return Setup.from_scenario(load_scenario(files[text]), text)
-    path = Path(text)
-    if path.is_file():
-        return Setup.from_scenario(load_scenario(path), path.stem)
-    known = ", ".join(files) or "none found"
-    raise ScenarioError(text, f"no such scenario file or example name (examples: {known})")
-
-
-def example_resolver(default: Setup) -> Callable[[str], Setup]:
-    """What ``load_scenario`` may load from a page: the example scenarios by name, and the server's own
-    default scenario by its name. Never a path: a page must not read the server's files."""
-
-    def resolve(name: str) -> Setup:
-        if name == default.name:
-            return default
-        files = scenario_files()
-        if name in files:
-            return Setup.from_scenario(load_scenario(files[name]), name)
-        known = ", ".join(sorted({*files, *([default.name] if default.name else [])}))
-        raise ScenarioError(repr(name), f"no such scenario; available: {known}")
-
-    return resolve
-
-
-def _state_record(t: float, x: np.ndarray, v: np.ndarray, diag: dict[str, np.ndarray]) -> np.ndarray:
-    rec = np.empty((len(t), RECORD_LEN))
-    rec[:, 0] = t
-    rec[:, 1:4] = x
-    rec[:, 4:7] = v
-    rec[:, 7] = diag["energy"]
-    rec[:, 8] = diag["j3"]
-    rec[:, 9] = diag["tension"]
+def state_records(pendulum: Pendulum, t: np.ndarray, x: np.ndarray, v: np.ndarray) -> np.ndarray:
+    """Frame records (N, RECORD_LEN) of states x [m], v [m/s] at times t [s]: the core's diagnostics at
+    those times (time-dependent models: forcing, moving pivot), the acceleration ẍ [m/s²] relative to
+    the pivot (m ẍ is the net force there) and the pivot's position [m] (0 for a fixed pivot)."""
+    diag = pendulum.diagnostics(x, v, t)
+    rec = np.zeros((len(t), RECORD_LEN))
+    rec[:, _SCALAR["t"]] = t
+    for name in ("energy", "j3", "tension", "power"):
+        rec[:, _SCALAR[name]] = diag[name]
+    for name, values in (("x", x), ("v", v), ("a", diag["acceleration"]), ("pivot", diag.get("pivot"))):
+        if values is not None:
+            rec[:, _VECTOR[name] : _VECTOR[name] + 3] = values
     return rec
+
+
+def model_params(pendulum: Pendulum) -> dict[str, float]:
+    """Every own parameter of the pendulum's model (SI units): the given ones, else the registry's default."""
+    given = pendulum.extra
+    return {p["name"]: given.get(p["name"], float(p["default"])) for p in own_params(pendulum.model)}
+
+
+def rebuild(pendulum: Pendulum, **changes: Any) -> Pendulum:
+    """The same model with some of length [m], mass [kg], g [m/s²] or its own parameters changed
+    (``model=`` switches the model: its own parameters start from the registry's defaults)."""
+    model = changes.pop("model", None) or pendulum.model
+    common = {k: changes.pop(k, None) for k in ("length", "mass", "g")}
+    own = model_params(pendulum) if model == pendulum.model else {}
+    own |= {p["name"]: float(p["default"]) for p in own_params(model) if p["name"] not in own}
+    own |= {k: float(v) for k, v in changes.items()}
+    return Pendulum(
+        length=pendulum.length if common["length"] is None else common["length"],
+        g=pendulum.g if common["g"] is None else common["g"],
+        mass=pendulum.mass if common["mass"] is None else common["mass"],
+        model=model,
+        **own,
+    )
 
 
 class Session:
@@ -196,11 +135,13 @@ class Session:
         k = ell / self._start_length
         return self.pendulum.state(np.array(self._start.x) * k, np.array(self._start.v) * k, project=True)
 
-    def _new_stepper(self, state: State, t: float) -> None:
+    def _new_stepper(self, state: State, t: float, pendulum: Pendulum | None = None) -> None:
+        """A stepper from ``state`` at ``t``; with ``pendulum``, that pendulum replaces the current one
+        only once its stepper exists (a method refusing the model leaves the session unchanged)."""
         dt = 0.0 if self.adaptive else self.dt
-        self.stepper = Stepper(
-            self.pendulum, state, method=self.method, dt=dt, rtol=self.rtol, atol=self.atol, t0=t
-        )
+        p = self.pendulum if pendulum is None else pendulum
+        self.stepper = Stepper(p, state, method=self.method, dt=dt, rtol=self.rtol, atol=self.atol, t0=t)
+        self.pendulum = p
         self.clock = t
 
     @property
@@ -213,8 +154,7 @@ class Session:
     def records(self) -> np.ndarray:
         """The current state as one frame record, shape (1, RECORD_LEN)."""
         s = self.stepper.state
-        diag = self.pendulum.diagnostics(s.x, s.v)
-        return _state_record(np.array([self.stepper.t]), s.x[None, :], s.v[None, :], diag)
+        return state_records(self.pendulum, np.array([self.stepper.t]), s.x[None, :], s.v[None, :])
 
     def status(self) -> dict[str, Any]:
         """The JSON ``status`` notice: everything the page needs to show and to encode in its URL."""
@@ -231,6 +171,8 @@ class Session:
             "adaptive": self.adaptive,
             "dt": self.dt,
             "params": {"length": p.length, "mass": p.mass, "g": p.g},
+            "model": p.model,
+            "model_params": model_params(p),
             "t": self.stepper.t,
             "t0": self.t0,
             "start": {"x": [float(c) for c in start.x], "v": [float(c) for c in start.v]},
@@ -258,15 +200,17 @@ class Session:
         match cmd:
             case SetParams():
                 p = self.pendulum
-                new = Pendulum(
-                    length=p.length if cmd.length is None else cmd.length,
-                    g=p.g if cmd.g is None else cmd.g,
-                    mass=p.mass if cmd.mass is None else cmd.mass,
-                )
+                check_model_params(p.model, cmd.params or {})
+                new = rebuild(p, length=cmd.length, mass=cmd.mass, g=cmd.g, **(cmd.params or {}))
                 s, k = self.stepper.state, new.length / p.length
                 state = new.state(np.array(s.x) * k, np.array(s.v) * k, project=True)
-                self.pendulum = new
-                self._new_stepper(state, self.stepper.t)
+                self._new_stepper(state, self.stepper.t, new)
+                self.epoch += 1
+                return self.records()
+            case SetModel():
+                new = rebuild(self.pendulum, model=cmd.model, **cmd.params)
+                s = self.stepper.state
+                self._new_stepper(new.state(s.x, s.v, project=True), self.stepper.t, new)
                 self.epoch += 1
                 return self.records()
             case SetState():
@@ -351,4 +295,4 @@ class Session:
             advance(k)
             s = self.stepper.state
             ts[k], xs[k], vs[k] = self.stepper.t, s.x, s.v
-        return _state_record(ts, xs, vs, self.pendulum.diagnostics(xs, vs))
+        return state_records(self.pendulum, ts, xs, vs)

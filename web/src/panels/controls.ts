@@ -1,48 +1,23 @@
 // The control panel (lil-gui), generated from GET /api/schema: pendulum parameters with units and limits,
-// integrator and step, time scale, run controls, scenario picker, view toggles and exports. It sends
+// the model picker (model.ts), integrator and step, time scale, run controls, scenario picker, view toggles
+// (view.ts) and exports. It sends
 // commands and shows the server's status; it holds no simulation state of its own.
 import GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { Command, ParamSchema, ScenarioInfo, Schema, Status } from '../protocol';
+import type { Command, ScenarioInfo, Schema, Status } from '../protocol';
 import type { ViewOptions } from '../scene/scene';
+import { ModelControls } from './model';
+import { addParam, throttle } from './params';
+import { addViewControls } from './view';
 
 export interface ControlActions {
   send(cmd: Command): void;
   explain(message: string): void;
   downloadCSV(): void;
+  downloadTOML(): void;
   screenshot(): void;
   copyLink(): void;
   viewChanged(view: ViewOptions, topView: boolean): void;
-}
-
-/** Calls `fn` at most every `ms` milliseconds, always with the latest arguments (trailing call kept). */
-export function throttle<A extends unknown[]>(fn: (...args: A) => void, ms: number): (...args: A) => void {
-  let last = -Infinity;
-  let timer: ReturnType<typeof setTimeout> | null = null;
-  let pending: A | null = null;
-  return (...args: A) => {
-    pending = args;
-    const wait = last + ms - performance.now();
-    if (wait <= 0 && timer === null) {
-      last = performance.now();
-      fn(...args);
-      pending = null;
-    } else if (timer === null) {
-      timer = setTimeout(
-        () => {
-          timer = null;
-          last = performance.now();
-          if (pending !== null) fn(...pending);
-          pending = null;
-        },
-        Math.max(0, wait),
-      );
-    }
-  };
-}
-
-function label(p: ParamSchema): string {
-  return `${p.name} [${p.unit.replace('^2', '²')}]`;
 }
 
 export class Controls {
@@ -50,6 +25,7 @@ export class Controls {
   private readonly model: Record<string, number | string | boolean | (() => void)>;
   private readonly synced: Controller[] = [];
   private runButton!: Controller;
+  private readonly modelControls: ModelControls;
   private topView = false;
 
   constructor(
@@ -63,26 +39,16 @@ export class Controls {
     const m: Record<string, number | string | boolean | (() => void)> = {};
     this.model = m;
 
-    // --- pendulum parameters, from the schema ---
-    const pend = this.gui.addFolder(`Pendulum (${schema.model.name})`);
+    // --- pendulum: length, mass, g (every model has them), then the model and its own parameters ---
+    const pend = this.gui.addFolder('Pendulum');
     const sendParams = throttle((name: string, value: number) => {
       actions.send({ type: 'set_params', [name]: value } as Command);
     }, 50);
     for (const p of schema.model.params) {
-      m[p.name] = p.default;
-      const c = pend
-        .add(m, p.name, p.ui_min, p.ui_max, p.step)
-        .name(label(p))
-        .onChange((v: number) => {
-          if (!(v >= p.min && v <= p.max)) {
-            actions.explain(`${p.name} must be between ${p.min} and ${p.max} ${p.unit}`);
-            return;
-          }
-          sendParams(p.name, v);
-        });
-      c.domElement.title = `${p.description}; ${p.unit}; allowed ${p.min} … ${p.max}`;
-      this.synced.push(c);
+      const send = (v: number) => sendParams(p.name, v);
+      this.synced.push(addParam(pend, m as Record<string, unknown>, p, send, actions.explain));
     }
+    this.modelControls = new ModelControls(pend, schema, actions);
 
     // --- integrator ---
     const integ = this.gui.addFolder('Integrator');
@@ -152,28 +118,19 @@ export class Controls {
     this.synced.push(scen);
 
     // --- view ---
-    const vf = this.gui.addFolder('View');
-    const viewChanged = () => actions.viewChanged(this.view, this.topView);
-    vf.add(view, 'trail').onChange(viewChanged);
-    vf.add(view, 'trailSeconds', 1, 120, 1).name('trail [s]').onChange(viewChanged);
-    vf.add(view, 'sphere').name('sphere of reach').onChange(viewChanged);
-    vf.add(view, 'axes').onChange(viewChanged);
-    vf.add(view, 'velocity').name('velocity v').onChange(viewChanged);
-    vf.add(view, 'gravity').name('gravity m g').onChange(viewChanged);
-    vf.add(view, 'tension').name('rod force (tension)').onChange(viewChanged);
-    m['topView'] = false;
-    vf.close();
-    vf.add(m, 'topView')
-      .name('top view')
-      .onChange((v: boolean) => {
-        this.topView = v;
-        viewChanged();
-      });
+    addViewControls(this.gui, view, () => actions.viewChanged(this.view, this.topView), (top) => {
+      this.topView = top;
+    });
 
     // --- export ---
     const ex = this.gui.addFolder('Share and export').close();
     m['csv'] = () => actions.downloadCSV();
     ex.add(m, 'csv').name('download trajectory (CSV)');
+    m['toml'] = () => actions.downloadTOML();
+    const toml = ex.add(m, 'toml').name('download scenario (TOML)');
+    toml.domElement.dataset['control'] = 'toml';
+    toml.domElement.title =
+      'the scenario as it stands (model, parameters, start, method) as a file for `pendulab run`';
     m['png'] = () => actions.screenshot();
     ex.add(m, 'png').name('screenshot (PNG)');
     m['link'] = () => actions.copyLink();
@@ -195,5 +152,6 @@ export class Controls {
       if (!c.domElement.contains(document.activeElement)) c.updateDisplay();
     }
     this.runButton.name(s.paused ? 'start' : 'pause');
+    this.modelControls.sync(s);
   }
 }

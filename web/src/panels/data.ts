@@ -1,6 +1,7 @@
-// The data panel: the numbers at the playhead (t, E, J₃, tension, z, drifts) and the exact-solution
-// quantities of the current orbit (POST /api/exact): kind, turning heights, z-period, azimuthal advance,
-// rotation number and its dynamic and geometric parts.
+// The data panel: the numbers at the playhead (t, E, J₃, tension, z, drifts, power), the tension's extremes
+// so far, the model, and — for the ideal pendulum — the exact-solution quantities of the current orbit
+// (POST /api/exact): kind, turning heights, z-period, azimuthal advance, rotation number and its dynamic
+// and geometric parts.
 import type { ExactQuantities, Frame } from '../protocol';
 import type { LabStore } from '../state';
 
@@ -18,17 +19,34 @@ type Row = [label: string, value: string, unit: string];
 export function liveRows(f: Frame | null, store: LabStore): Row[] {
   const ref = store.reference;
   const s = store.status;
-  return [
+  const ex = store.tensionExtremes;
+  const rows: Row[] = [
     ['t', fmt(f?.t, 7), 's'],
     ['E', fmt(f?.energy, 10), 'J'],
     ['E − E₀', f && ref ? fmt(f.energy - ref.energy, 3) : '—', 'J'],
     ['J₃', fmt(f?.j3, 10), 'kg m²/s'],
     ['J₃ − J₃(0)', f && ref ? fmt(f.j3 - ref.j3, 3) : '—', 'kg m²/s'],
     ['tension', fmt(f?.tension, 6), 'N'],
+    ['tension min', ex ? `${fmt(ex.min, 6)} (t = ${fmt(ex.tMin, 4)} s)` : '—', 'N'],
+    ['tension max', ex ? `${fmt(ex.max, 6)} (t = ${fmt(ex.tMax, 4)} s)` : '—', 'N'],
     ['z', fmt(f?.x[2], 6), 'm'],
     ['method', s ? `${s.method}${s.adaptive ? '' : `, dt = ${s.dt} s`}` : '—', ''],
     ['state', s ? `${s.paused ? 'paused' : 'running'}${s.lagging ? ' (lagging: slower than asked)' : ''}` : '—', ''],
   ];
+  if (s && s.model !== 'ideal') {
+    rows.splice(1, 0, ['model', s.model, '']);
+    rows.splice(4, 0, ['power P = dE/dt', fmt(f?.power, 6), 'W']);
+  }
+  return rows;
+}
+
+/** Why there is no exact solution (null when there is one or it is on its way). */
+export function exactNote(store: LabStore): string {
+  const s = store.status;
+  if (s && s.model !== 'ideal') {
+    return `the exact solution exists for the ideal pendulum only; this is the ${s.model} model`;
+  }
+  return store.exactError ?? store.exact?.phases_note ?? '';
 }
 
 /** The rows of the exact-solution section. */
@@ -87,7 +105,7 @@ export class DataPanel {
   update(f: Frame | null, store: LabStore): void {
     this.fill(this.live, liveRows(f, store));
     this.fill(this.exactTable, exactRows(store.exact));
-    const note = store.exactError ?? store.exact?.phases_note ?? '';
+    const note = exactNote(store);
     if (this.note.textContent !== note) this.note.textContent = note;
   }
 }

@@ -1,5 +1,6 @@
-// Live plots (uPlot) of the store's histories: energy drift ΔE = E − E₀, J₃ drift, and z(t). The values
-// are the server's (computed by the core for every frame); the page only subtracts the epoch's first value.
+// Live plots (uPlot) of the store's histories: energy drift ΔE = E − E₀, J₃ drift, z(t) and the rod tension
+// T(t). The values are the server's (computed by the core for every frame); the page only subtracts the
+// epoch's first value.
 import uPlot from 'uplot';
 import type { History } from '../state';
 
@@ -14,6 +15,7 @@ export const PLOTS: readonly PlotSpec[] = [
   { title: 'ΔE = E − E₀', key: 'dE', unit: 'J', color: '#ffb347' },
   { title: 'ΔJ₃ = J₃ − J₃(0)', key: 'dJ3', unit: 'kg m²/s', color: '#7dff8a' },
   { title: 'z(t)', key: 'z', unit: 'm', color: '#59c3ff' },
+  { title: 'tension T(t)', key: 'tension', unit: 'N', color: '#ff5d73' },
 ];
 
 function formatTick(v: number): string {

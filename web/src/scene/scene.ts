@@ -1,20 +1,32 @@
-// The three.js view of the pendulum: pivot, faint sphere of reach, rod, bob, fading trail, axes and
-// toggled vectors (velocity, gravity, rod force). Coordinates are the physics' own (z up, metres): the
+// The three.js view of the pendulum: pivot (where the model moves it), faint sphere of reach, rod, bob,
+// fading trail, axes and toggled vectors (vectors.ts: velocity, momentum, gravity, rod force, net force,
+// angular momentum and torque about a chosen origin). Coordinates are the physics' own (z up, metres): the
 // camera's up vector is +z. It only draws what the store hands it.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import type { Frame } from '../protocol';
+import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
+import { StereoEffect } from 'three/addons/effects/StereoEffect.js';
+import type { Frame, Vec3 } from '../protocol';
+import { BobDrag } from './drag';
 import { TRAIL_MAX } from '../state';
+import type { VectorName } from './vectors';
+import { arrowScales, bobVectors } from './vectors';
 
-export interface ViewOptions {
+export interface ViewOptions extends Record<VectorName, boolean> {
   trail: boolean;
   trailSeconds: number;
   sphere: boolean;
   axes: boolean;
-  velocity: boolean;
-  gravity: boolean;
-  tension: boolean;
+  /** Origin of the angular momentum and the torque, relative to the pivot [m]. */
+  originX: number;
+  originY: number;
+  originZ: number;
+  /** Stereo: off, red–cyan anaglyph (AnaglyphEffect) or side by side for a viewer (StereoEffect). */
+  stereo: Stereo;
 }
+
+export const STEREO_MODES = ['off', 'anaglyph', 'side by side'] as const;
+export type Stereo = (typeof STEREO_MODES)[number];
 
 export const DEFAULT_VIEW: ViewOptions = {
   trail: true,
@@ -22,9 +34,29 @@ export const DEFAULT_VIEW: ViewOptions = {
   sphere: true,
   axes: true,
   velocity: true,
+  momentum: false,
   gravity: false,
   tension: false,
+  net: false,
+  angularMomentum: false,
+  torque: false,
+  originX: 0,
+  originY: 0,
+  originZ: 0,
+  stereo: 'off',
 };
+
+/** Arrow colours (the legend in docs/web.md). */
+export const ARROW_COLORS: Record<VectorName, number> = {
+  velocity: 0xe07bff,
+  momentum: 0x9b8cff,
+  gravity: 0xffb347,
+  tension: 0xff5d73,
+  net: 0xffffff,
+  angularMomentum: 0x4dd9c0,
+  torque: 0xffe14d,
+};
+const AT_ORIGIN: readonly VectorName[] = ['angularMomentum', 'torque'];
 
 const BACKGROUND = new THREE.Color(0x11141b);
 const TRAIL_COLOR = new THREE.Color(0x59c3ff);
@@ -50,10 +82,17 @@ export class PendulumScene {
   private readonly trail: THREE.Line;
   private readonly trailPositions: Float32Array;
   private readonly trailColors: Float32Array;
-  private readonly velocityArrow = arrow(0xe07bff);
-  private readonly gravityArrow = arrow(0xffb347);
-  private readonly tensionArrow = arrow(0xff5d73);
+  private readonly arrows = Object.fromEntries(
+    Object.entries(ARROW_COLORS).map(([name, color]) => [name, arrow(color)]),
+  ) as Record<VectorName, THREE.ArrowHelper>;
   private length = 1;
+  private extent = 1;
+  private stereo: Stereo = 'off';
+  private anaglyph: AnaglyphEffect | null = null;
+  private sideBySide: StereoEffect | null = null;
+  /** Dragging the bob on the sphere (drag.ts); null until `enableDrag`. */
+  drag: BobDrag | null = null;
+  private pivotNow = new THREE.Vector3();
   private topView = false;
 
   constructor(private readonly container: HTMLElement) {
@@ -124,9 +163,7 @@ export class PendulumScene {
       this.bob,
       this.axes,
       this.trail,
-      this.velocityArrow,
-      this.gravityArrow,
-      this.tensionArrow,
+      ...Object.values(this.arrows),
     );
     this.setLength(1);
     this.resetCamera();
@@ -139,6 +176,7 @@ export class PendulumScene {
     if (!(l > 0)) return;
     const changed = Math.abs(l - this.length) > 1e-12 * l;
     this.length = l;
+    if (changed) this.extent = l;
     this.sphere.scale.setScalar(l);
     this.equator.scale.setScalar(l);
     this.pivot.scale.setScalar(l);
@@ -147,12 +185,20 @@ export class PendulumScene {
     if (changed) this.resetCamera();
   }
 
+  /** Fits the camera to a scene of radius r [m] around the origin (length + the pivot's distance) when it
+   *  changed by more than a fifth; a small change leaves the user's camera alone. */
+  private fit(r: number): void {
+    if (Math.abs(r - this.extent) <= 0.2 * this.extent) return;
+    this.extent = r;
+    this.resetCamera();
+  }
+
   resetCamera(): void {
-    const l = this.length;
+    const l = this.extent;
     if (this.topView) this.camera.position.set(0, -1e-4 * l, 5.2 * l);
     else this.camera.position.set(3.3 * l, -3.9 * l, 1.5 * l);
     this.controls.target.set(0, 0, 0);
-    this.camera.near = 0.01 * l;
+    this.camera.near = 0.01 * this.length;
     this.camera.far = 100 * l;
     this.camera.updateProjectionMatrix();
     this.controls.update();
@@ -163,16 +209,45 @@ export class PendulumScene {
     this.resetCamera();
   }
 
+  /** Lets the user drag the bob over the sphere of reach: `onDrag(x, phase)` gets the position relative to
+   *  the pivot [m] at the start, while moving and at the end of a drag (drag.ts). */
+  enableDrag(onDrag: (x: Vec3, phase: 'start' | 'move' | 'end') => void): void {
+    this.drag = new BobDrag(this.renderer.domElement, this.camera, this.controls, this.bob, onDrag, () => ({
+      pivot: this.pivotNow,
+      length: this.length,
+    }));
+  }
+
+  /** The bob's position on the page [CSS px], or null when it is not drawn (for tests). */
+  bobOnScreen(): { x: number; y: number } | null {
+    if (!this.bob.visible) return null;
+    const p = this.bob.position.clone().project(this.camera);
+    const r = this.renderer.domElement.getBoundingClientRect();
+    return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+  }
+
+  setStereo(mode: Stereo): void {
+    this.stereo = mode;
+    if (mode === 'anaglyph' && this.anaglyph === null) this.anaglyph = new AnaglyphEffect(this.renderer);
+    if (mode === 'side by side' && this.sideBySide === null) this.sideBySide = new StereoEffect(this.renderer);
+    this.resize();
+  }
+
   resize(): void {
     const w = Math.max(1, this.container.clientWidth);
     const h = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(w, h, false);
+    if (this.stereo === 'anaglyph') this.anaglyph?.setSize(w, h);
+    if (this.stereo === 'side by side') this.sideBySide?.setSize(w, h);
+    this.renderer.domElement.style.width = '';
+    this.renderer.domElement.style.height = '';
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
   }
 
-  /** Draws the state `f` of a pendulum of mass `mass` [kg] under gravity `g` [m/s²], with the trail frames. */
-  update(f: Frame | null, trail: readonly Frame[], view: ViewOptions, mass: number, g: number): void {
+  /** Draws the state `f` of a pendulum of mass `mass` [kg] under gravity g [m/s²] along the unit vector
+   *  `gdir`, with the trail frames; the pivot at f.pivot, the bob at f.pivot + f.x. */
+  update(f: Frame | null, trail: readonly Frame[], view: ViewOptions, mass: number, g: number, gdir: Vec3): void {
     this.sphere.visible = view.sphere;
     this.equator.visible = view.sphere;
     this.axes.visible = view.axes;
@@ -181,26 +256,33 @@ export class PendulumScene {
     this.bob.visible = has;
     if (f === null) {
       this.trail.geometry.setDrawRange(0, 0);
-      for (const a of [this.velocityArrow, this.gravityArrow, this.tensionArrow]) a.visible = false;
+      for (const a of Object.values(this.arrows)) a.visible = false;
       return;
     }
+    const pivot = new THREE.Vector3(...f.pivot);
+    this.pivotNow.copy(pivot);
+    this.fit(this.length + pivot.length());
+    for (const o of [this.sphere, this.equator, this.pivot]) o.position.copy(pivot);
     const x = new THREE.Vector3(...f.x);
     const r = x.length();
-    this.bob.position.copy(x);
+    const bob = x.clone().add(pivot);
+    this.bob.position.copy(bob);
     if (r > 0) {
-      this.rod.position.copy(x).multiplyScalar(0.5);
+      this.rod.position.copy(x).multiplyScalar(0.5).add(pivot);
       this.rod.quaternion.setFromUnitVectors(Y, x.clone().divideScalar(r));
       this.rod.scale.set(0.008 * this.length, r, 0.008 * this.length);
     }
     this.updateTrail(view.trail ? trail : [], f);
 
-    // vectors from the bob: velocity at 0.25 s of travel; forces on one scale, m·max(|g|, 1) ↔ 0.5 l
-    const l = this.length;
-    this.setArrow(this.velocityArrow, view.velocity, x, new THREE.Vector3(...f.v).multiplyScalar(0.25));
-    const forceScale = (0.5 * l) / (mass * Math.max(Math.abs(g), 1));
-    this.setArrow(this.gravityArrow, view.gravity, x, new THREE.Vector3(0, 0, -mass * g * forceScale));
-    const rodForce = r > 0 ? x.clone().multiplyScalar((-f.tension / r) * forceScale) : new THREE.Vector3();
-    this.setArrow(this.tensionArrow, view.tension, x, rodForce);
+    const origin: Vec3 = [view.originX, view.originY, view.originZ];
+    const vectors = bobVectors(f, mass, g, gdir, origin);
+    const scales = arrowScales(this.length, mass, g);
+    const originWorld = new THREE.Vector3(...origin).add(pivot);
+    for (const name of Object.keys(this.arrows) as VectorName[]) {
+      const from = AT_ORIGIN.includes(name) ? originWorld : bob;
+      const vec = new THREE.Vector3(...vectors[name]).multiplyScalar(scales[name]);
+      this.setArrow(this.arrows[name], view[name], from, vec);
+    }
   }
 
   private setArrow(a: THREE.ArrowHelper, on: boolean, from: THREE.Vector3, vec: THREE.Vector3): void {
@@ -222,9 +304,9 @@ export class PendulumScene {
     const total = n + 1;
     for (let i = 0; i < total; i++) {
       const f = i < n ? (frames[start + i] as Frame) : now;
-      p[3 * i] = f.x[0];
-      p[3 * i + 1] = f.x[1];
-      p[3 * i + 2] = f.x[2];
+      p[3 * i] = f.x[0] + f.pivot[0];
+      p[3 * i + 1] = f.x[1] + f.pivot[1];
+      p[3 * i + 2] = f.x[2] + f.pivot[2];
       // fade: old points blend into the background
       tmp.copy(BACKGROUND).lerp(TRAIL_COLOR, total > 1 ? (i + 1) / total : 1);
       c[3 * i] = tmp.r;
@@ -239,7 +321,17 @@ export class PendulumScene {
 
   render(): void {
     this.controls.update();
-    this.renderer.render(this.scene, this.camera);
+    // stereo: the screen plane through the orbit's centre, eyes 1/30 of the viewing distance apart
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    if (this.stereo === 'anaglyph' && this.anaglyph !== null) {
+      this.anaglyph.planeDistance = distance;
+      this.anaglyph.eyeSep = distance / 30;
+      this.anaglyph.render(this.scene, this.camera);
+    } else if (this.stereo === 'side by side' && this.sideBySide !== null) {
+      this.camera.focus = distance;
+      this.sideBySide.setEyeSeparation(distance / 30);
+      this.sideBySide.render(this.scene, this.camera);
+    } else this.renderer.render(this.scene, this.camera);
   }
 
   /** A PNG of the current view, as a data URL (rendered now, so the drawing buffer is full). */

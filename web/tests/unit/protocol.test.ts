@@ -17,32 +17,54 @@ const frame = (t: number): Frame => ({
   energy: -3.405,
   j3: 1.5,
   tension: 7.905,
+  power: 0,
+  a: [-1, 0.5, 2],
+  pivot: [0, 0, 0],
 });
 
 describe('frame layout', () => {
-  it('is the shared frame.json: t, x, v, energy, j3, tension as 80-byte float64 records', () => {
+  it('is the shared frame.json: t, x, v, energy, j3, tension, power, a, pivot as 136-byte float64 records', () => {
     expect(FRAME_FIELDS).toEqual(layout.fields);
-    expect(FRAME_FIELDS).toEqual(['t', 'x1', 'x2', 'x3', 'v1', 'v2', 'v3', 'energy', 'j3', 'tension']);
-    expect(RECORD_BYTES).toBe(80);
+    expect(FRAME_FIELDS).toEqual([
+      't', 'x1', 'x2', 'x3', 'v1', 'v2', 'v3', 'energy', 'j3', 'tension',
+      'power', 'a1', 'a2', 'a3', 'pivot1', 'pivot2', 'pivot3',
+    ]);
+    expect(RECORD_BYTES).toBe(136);
     expect(layout.byte_order).toBe('little');
   });
 
   it('decodes little-endian float64 records written by hand in wire order', () => {
-    const values = [0.5, 1, 2, 3, 4, 5, 6, -7.25, 8, 9.5, 1.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9];
+    const first = [0.5, 1, 2, 3, 4, 5, 6, -7.25, 8, 9.5, -0.125, 11, 12, 13, 14, 15, 16];
+    const second = first.map((v) => v + 100);
+    const values = [...first, ...second];
     const buf = new ArrayBuffer(values.length * 8);
     const view = new DataView(buf);
     values.forEach((v, i) => view.setFloat64(8 * i, v, true));
     const [a, b] = decodeFrames(buf);
-    expect(a).toEqual({ t: 0.5, x: [1, 2, 3], v: [4, 5, 6], energy: -7.25, j3: 8, tension: 9.5 });
-    expect(b?.t).toBe(1.0);
-    expect(b?.tension).toBe(0.9);
+    expect(a).toEqual({
+      t: 0.5,
+      x: [1, 2, 3],
+      v: [4, 5, 6],
+      energy: -7.25,
+      j3: 8,
+      tension: 9.5,
+      power: -0.125,
+      a: [11, 12, 13],
+      pivot: [14, 15, 16],
+    });
+    expect(b?.t).toBe(100.5);
+    expect(b?.tension).toBe(109.5);
+    expect(b?.pivot).toEqual([114, 115, 116]);
   });
 
   it('round-trips every bit, NaN and -0 included', () => {
     const f = frame(Number.MIN_VALUE);
     f.x = [-0, Number.MAX_VALUE, 0.1 + 0.2];
     f.energy = NaN;
+    f.pivot = [5e-324, -1e300, 0.3];
     const [back] = decodeFrames(encodeFrames([f]));
+    expect(back?.pivot).toEqual(f.pivot);
+    expect(back?.a).toEqual(f.a);
     expect(Object.is(back?.x[0], -0)).toBe(true);
     expect(back?.x[2]).toBe(0.1 + 0.2);
     expect(back?.t).toBe(Number.MIN_VALUE);
@@ -51,8 +73,8 @@ describe('frame layout', () => {
 
   it('refuses messages that are not whole records', () => {
     expect(() => decodeFrames(new ArrayBuffer(0))).toThrow(ProtocolError);
-    expect(() => decodeFrames(new ArrayBuffer(79))).toThrow(/multiple of 80 bytes, got 79/);
-    expect(decodeFrames(new ArrayBuffer(160))).toHaveLength(2);
+    expect(() => decodeFrames(new ArrayBuffer(80))).toThrow(/multiple of 136 bytes, got 80/);
+    expect(decodeFrames(new ArrayBuffer(272))).toHaveLength(2);
   });
 });
 

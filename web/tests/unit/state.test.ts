@@ -19,6 +19,8 @@ function status(over: Partial<Status> = {}): Status {
     start: { x: [0, 0, -1], v: [1, 0, 0] },
     lagging: false,
     frame_fields: [],
+    model: 'ideal',
+    model_params: {},
     ...over,
   };
 }
@@ -32,6 +34,9 @@ function frame(t: number, energy = -9.81, j3 = 1): Frame {
     energy,
     j3,
     tension: 1,
+    power: 0,
+    a: [-Math.cos(t), -Math.sin(t), 0],
+    pivot: [0, 0, 0],
   };
 }
 
@@ -148,11 +153,14 @@ describe('LabStore', () => {
     const lines = store.toCSV().trim().split('\n');
     expect(lines).toHaveLength(4);
     expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ scenario: 'rosette', method: 'rattle' });
+    expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ model: 'ideal', model_params: {} });
     expect(lines[1]).toBe(
-      't [s],x1 [m],x2 [m],x3 [m],v1 [m/s],v2 [m/s],v3 [m/s],energy [J],j3 [kg m^2/s],tension [N]',
+      't [s],x1 [m],x2 [m],x3 [m],v1 [m/s],v2 [m/s],v3 [m/s],energy [J],j3 [kg m^2/s],tension [N],' +
+        'power [W],a1 [m/s^2],a2 [m/s^2],a3 [m/s^2],pivot1 [m],pivot2 [m],pivot3 [m]',
     );
     const row = (lines[3] as string).split(',').map(Number);
-    expect(row).toEqual([0.5, Math.cos(0.5), Math.sin(0.5), 0, -Math.sin(0.5), Math.cos(0.5), 0, -9.81, 1, 1]);
+    const [c, s] = [Math.cos(0.5), Math.sin(0.5)];
+    expect(row).toEqual([0.5, c, s, 0, -s, c, 0, -9.81, 1, 1, 0, -c, -s, 0, 0, 0, 0]);
   });
 
   it('notifies subscribers and keeps the last errors', () => {
@@ -163,5 +171,27 @@ describe('LabStore', () => {
     store.onError({ type: 'error', message: 'y', command: null });
     expect(calls).toBe(1);
     expect(store.errors.map((e) => e.message)).toEqual(['x', 'y']);
+  });
+});
+
+describe('tension extremes and the phase history', () => {
+  it('keeps the smallest and largest tension of the epoch with their times, and ż', () => {
+    const store = new LabStore();
+    store.onStatus(status());
+    const tensions = [3, 1, 7, 2];
+    store.onFrames(tensions.map((T, i) => ({ ...frame(i), tension: T, v: [0, 0, i] as [number, number, number] })));
+    expect(store.tensionExtremes).toEqual({ min: 1, tMin: 1, max: 7, tMax: 2 });
+    expect(store.history.zdot).toEqual([0, 1, 2, 3]);
+    store.onStatus(status({ epoch: 1 }));
+    expect(store.tensionExtremes).toBeNull();
+  });
+
+  it('interpolates the pivot, the acceleration and the power too', () => {
+    const a = { ...frame(0), pivot: [0, 0, 0] as [number, number, number], power: 0 };
+    const b = { ...frame(1), pivot: [2, 0, -4] as [number, number, number], power: -2 };
+    const m = interpolateFrames(a, b, 0.25);
+    expect(m.pivot).toEqual([0.5, 0, -1]);
+    expect(m.power).toBe(-0.5);
+    expect(m.a[0]).toBeCloseTo(0.75 * -1 + 0.25 * -Math.cos(1), 15);
   });
 });

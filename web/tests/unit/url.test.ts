@@ -19,6 +19,8 @@ const status: Status = {
   start: { x: [0.6062177826491071, 0.1 + 0.2, -0.35000000000000003], v: [-0, 1.2124355652982142, 1e-300] },
   lagging: false,
   frame_fields: [],
+  model: 'damped',
+  model_params: { damping: 0.1 + 0.2, drag: 0, gravity_z: -1, forcing_phase: -0 },
 };
 
 describe('URL round trip', () => {
@@ -30,6 +32,19 @@ describe('URL round trip', () => {
     expect(Object.is(value.v?.[0], -0)).toBe(true);
     expect(value.x?.[1]).toBe(0.1 + 0.2);
     expect(value.g).toBe(-9.81);
+    expect(value.model).toBe('damped');
+    expect(value.modelParams?.['damping']).toBe(0.1 + 0.2);
+    expect(Object.is(value.modelParams?.['forcing_phase'], -0)).toBe(true);
+  });
+
+  it('leaves out unreadable model parameters, naming them', () => {
+    const { value, problems } = decodeUrl('?model=damped&mp=damping:0.5,drag:x,bad%20name:1,c:1:2');
+    expect(value).toEqual({ model: 'damped', modelParams: { damping: 0.5 } });
+    expect(problems).toEqual([
+      'mp: "drag:x" is not name:number',
+      'mp: "bad name:1" is not name:number',
+      'mp: "c:1:2" is not name:number',
+    ]);
   });
 
   it('round-trips through a full URL with a leading ?', () => {
@@ -54,6 +69,7 @@ describe('URL round trip', () => {
     const cmds = commandsFor(fromStatus(status));
     expect(cmds.map((c) => c.type)).toEqual([
       'load_scenario',
+      'set_model',
       'set_params',
       'set_method',
       'set_time_scale',
@@ -61,8 +77,9 @@ describe('URL round trip', () => {
       'reset',
       'pause',
     ]);
-    expect(cmds[1]).toEqual({ type: 'set_params', length: 0.7, mass: 2.5, g: -9.81 });
-    expect(cmds[4]).toEqual({ type: 'set_state', x: status.start.x, v: status.start.v });
+    expect(cmds[1]).toEqual({ type: 'set_model', model: 'damped', params: status.model_params });
+    expect(cmds[2]).toEqual({ type: 'set_params', length: 0.7, mass: 2.5, g: -9.81 });
+    expect(cmds[5]).toEqual({ type: 'set_state', x: status.start.x, v: status.start.v });
     expect(commandsFor({})).toEqual([]);
   });
 });

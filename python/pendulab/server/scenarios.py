@@ -1,0 +1,109 @@
+"""The scenarios a lab session can start from: the example files by name, a file given to
+``pendulab serve``, or a built-in rosette when the package has no examples. A page may load examples
+by name only, never a path (it must not make the server read files).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..model import Pendulum, State
+from ..scenario import Scenario, ScenarioError, load_scenario
+from ..simulate import DEFAULTS
+
+BUILTIN_SCENARIO = """
+title = "Rosette: 60° release with sideways spin (built in)"
+[pendulum]
+length = 1.0
+mass = 1.0
+g = 9.81
+[initial]
+theta_deg = 60.0
+phi_dot = 2.0
+[simulation]
+t_end = 100.0
+method = "rattle"
+dt = 1.0e-3
+"""
+"""Used when no scenario files are found (a package installed without the source tree's examples)."""
+
+
+@dataclass(frozen=True)
+class Setup:
+    """What a scenario gives a session: pendulum, start, integrator settings."""
+
+    name: str | None
+    title: str | None
+    pendulum: Pendulum
+    state: State
+    method: str
+    dt: float
+    rtol: float
+    atol: float
+    t0: float
+
+    @classmethod
+    def from_scenario(cls, sc: Scenario, name: str | None) -> Setup:
+        sim = sc.spec.simulation
+        rtol, atol = sim.resolved_tolerances()
+        dt = sim.dt if sim.dt is not None else float(DEFAULTS["dt"])
+        return cls(name, sc.title, sc.pendulum(), sc.initial_state(), sim.method, dt, rtol, atol, sim.t0)
+
+
+def scenario_dirs() -> list[Path]:
+    """Where example scenarios are looked for: ./examples/scenarios, then the source tree's."""
+    here = Path(__file__).resolve()
+    found: list[Path] = []
+    for d in (Path.cwd() / "examples" / "scenarios", here.parents[3] / "examples" / "scenarios"):
+        if d.is_dir() and d.resolve() not in found:
+            found.append(d.resolve())
+    return found
+
+
+def scenario_files() -> dict[str, Path]:
+    """Example scenarios by name (file stem); the first directory of :func:`scenario_dirs` wins."""
+    files: dict[str, Path] = {}
+    for d in reversed(scenario_dirs()):
+        files.update({f.stem: f for f in sorted(d.glob("*.toml"))})
+    return dict(sorted(files.items()))
+
+
+def builtin_setup() -> Setup:
+    return Setup.from_scenario(Scenario.from_toml_str(BUILTIN_SCENARIO, "<built-in rosette>"), "rosette")
+
+
+def resolve_scenario(spec: str | Path | None) -> Setup:
+    """A setup from a scenario name (``rosette``), a file path, or None (``rosette``, else the built-in)."""
+    files = scenario_files()
+    if spec is None:
+        return (
+            Setup.from_scenario(load_scenario(files["rosette"]), "rosette")
+            if "rosette" in files
+            else (builtin_setup())
+        )
+    text = str(spec)
+    if text in files:
+        return Setup.from_scenario(load_scenario(files[text]), text)
+    path = Path(text)
+    if path.is_file():
+        return Setup.from_scenario(load_scenario(path), path.stem)
+    known = ", ".join(files) or "none found"
+    raise ScenarioError(text, f"no such scenario file or example name (examples: {known})")
+
+
+def example_resolver(default: Setup) -> Callable[[str], Setup]:
+    """What ``load_scenario`` may load from a page: the example scenarios by name, and the server's own
+    default scenario by its name. Never a path: a page must not read the server's files."""
+
+    def resolve(name: str) -> Setup:
+        if name == default.name:
+            return default
+        files = scenario_files()
+        if name in files:
+            return Setup.from_scenario(load_scenario(files[name]), name)
+        known = ", ".join(sorted({*files, *([default.name] if default.name else [])}))
+        raise ScenarioError(repr(name), f"no such scenario; available: {known}")
+
+    return resolve

@@ -1,0 +1,321 @@
+"""The lab's server with the core's models (docs/web.md): the schema lists every model, a session switches
+model and edits its parameters without losing it, frames carry time-dependent diagnostics, the net force
+and the pivot; the scenario as TOML for ``pendulab run``; V_eff; the connection limit; a flooding client
+does not stall another one."""
+
+from __future__ import annotations
+
+import json
+import threading
+import time
+from typing import Any
+
+import numpy as np
+import pytest
+from fastapi.testclient import TestClient
+from typer.testing import CliRunner
+
+import pendulab as pl
+from pendulab import cli
+from pendulab.server import FRAME_FIELDS, Session, create_app, decode_records
+from pendulab.server.protocol import CommandError, parse_command
+from pendulab.server.session import resolve_scenario
+
+F = {name: i for i, name in enumerate(FRAME_FIELDS)}
+X, V, A, PIVOT = (slice(F[f"{k}1"], F[f"{k}1"] + 3) for k in ("x", "v", "a", "pivot"))
+
+
+@pytest.fixture(scope="module")
+def client() -> TestClient:
+    return TestClient(create_app("rosette"))
+
+
+def receive(ws: Any) -> tuple[str, Any]:
+    msg = ws.receive()
+    if msg.get("text") is not None:
+        return "json", json.loads(msg["text"])
+    return "frames", decode_records(msg["bytes"])
+
+
+def until(ws: Any, pred: Any, limit: int = 600) -> Any:
+    for _ in range(limit):
+        kind, value = receive(ws)
+        if pred(kind, value):
+            return value
+    raise AssertionError("message not received")
+
+
+def status_with(**want: Any) -> Any:
+    return lambda k, v: k == "json" and v["type"] == "status" and all(v[n] == w for n, w in want.items())
+
+
+def error(k: str, v: Any) -> bool:
+    return k == "json" and v["type"] == "error"
+
+
+def frames(k: str, v: Any) -> bool:
+    return k == "frames"
+
+
+def apply(s: Session, text: str) -> np.ndarray | None:
+    return s.apply(parse_command(text))
+
+
+# --- schema and scenarios -------------------------------------------------------------------------------
+
+
+def test_schema_lists_every_model_of_the_registry_with_units_limits_and_slider_spans(
+    client: TestClient,
+) -> None:
+    s = client.get("/api/schema").json()
+    assert [m["name"] for m in s["models"]] == [m["name"] for m in pl.models()]
+    for m, reg in zip(s["models"], pl.models(), strict=True):
+        own = [p for p in reg["params"] if p["name"] not in ("length", "mass", "g")]
+        assert [p["name"] for p in m["params"]] == [p["name"] for p in own]
+        for p, q in zip(m["params"], own, strict=True):
+            assert (p["unit"], p["default"], p["allowed"]) == (q["unit"], q["default"], q["allowed"])
+            assert p["min"] == (q["min"] if np.isfinite(q["min"]) else None)
+            assert p["max"] == (q["max"] if np.isfinite(q["max"]) else None)
+            assert p["ui_min"] < p["ui_max"] and p["step"] > 0
+            assert p["ui_min"] <= p["default"] <= p["ui_max"], p
+    assert "set_model" in s["commands"]
+    assert s["frame"]["fields"][-7:] == ["power", "a1", "a2", "a3", "pivot1", "pivot2", "pivot3"]
+
+
+def test_scenarios_carry_their_model(client: TestClient) -> None:
+    listed = {s["name"]: s for s in client.get("/api/scenarios").json()}
+    assert listed["damped"]["model"] == "damped" and listed["damped"]["model_params"]["damping"] > 0
+    assert listed["rosette"]["model"] == "ideal" and listed["rosette"]["model_params"] == {}
+
+
+# --- a session's model ----------------------------------------------------------------------------------
+
+
+def test_changing_a_parameter_of_a_damped_session_keeps_the_damping_and_energy_decays(
+    client: TestClient,
+) -> None:
+    with client.websocket_connect("/ws") as ws:
+        ws.send_json({"type": "load_scenario", "name": "damped"})
+        s = until(ws, status_with(scenario="damped"))
+        damping = s["model_params"]["damping"]
+        assert s["model"] == "damped" and damping > 0
+        ws.send_json({"type": "set_params", "length": 1.5, "g": 9.0})
+        s = until(ws, status_with(epoch=s["epoch"] + 1))
+        assert s["model"] == "damped" and s["model_params"]["damping"] == damping  # the bug: it was lost
+        assert s["params"] == {"length": 1.5, "mass": s["params"]["mass"], "g": 9.0}
+        ws.send_json({"type": "set_params", "params": {"damping": 0.5}})
+        s = until(ws, status_with(epoch=s["epoch"] + 1))
+        assert s["model_params"]["damping"] == 0.5 and s["params"]["length"] == 1.5
+        ws.send_json({"type": "set_time_scale", "time_scale": 20.0})
+        rec = [until(ws, frames)]
+        while rec[-1][-1, 0] - rec[0][0, 0] < 6.0:
+            rec.append(until(ws, frames))
+    r = np.concatenate(rec)
+    energy, power = r[:, F["energy"]], r[:, F["power"]]
+    assert energy[-1] < energy[0] - 0.5 * abs(energy[0] - (-1.5 * 9.0 * s["params"]["mass"]))
+    assert np.all(power <= 1e-12)  # damping only takes energy out: P = −c m |v|²
+    # and the numbers are those of a damped pendulum with these parameters
+    p = pl.Pendulum(length=1.5, g=9.0, mass=s["params"]["mass"], model="damped", **s["model_params"])
+    np.testing.assert_allclose(
+        r[:, F["energy"]], p.diagnostics(r[:, X], r[:, V], r[:, 0])["energy"], atol=1e-12
+    )
+
+
+def test_set_model_switches_model_with_defaults_and_given_parameters() -> None:
+    s = Session(resolve_scenario("rosette"))
+    apply(s, '{"type": "set_model", "model": "vibrating", "params": {"amplitude": 0.02}}')
+    st = s.status()
+    assert st["model"] == "vibrating" and st["epoch"] == 1
+    assert st["model_params"] == {"amplitude": 0.02, "frequency": 200.0, "damping": 0.0}
+    assert st["params"] == {"length": 1.0, "mass": 1.0, "g": 9.81}
+    apply(s, '{"type": "set_model", "model": "ideal"}')
+    assert s.status()["model"] == "ideal" and s.status()["model_params"] == {}
+
+
+@pytest.mark.parametrize(
+    ("text", "needle"),
+    [
+        ('{"type": "set_model", "model": "spring"}', "unknown model 'spring'; available: ideal, damped"),
+        ('{"type": "set_model", "model": "damped", "params": {"latitude": 1}}', "no parameter 'latitude'"),
+        ('{"type": "set_model", "model": "damped", "params": {"damping": -1}}', "damping = -1"),
+        ('{"type": "set_model", "model": "rotating", "params": {"latitude": 2}}', "latitude"),
+        ('{"type": "set_model", "model": "damped", "params": {"damping": "a"}}', "valid number"),
+        ('{"type": "set_params", "params": {"damping": 0.1}}', "'ideal' model has no parameter 'damping'"),
+        ('{"type": "set_params", "params": {}}', "at least one"),
+    ],
+)
+def test_bad_models_and_parameters_are_refused_naming_the_value(text: str, needle: str) -> None:
+    s = Session(resolve_scenario("rosette"))
+    before = s.status()
+    with pytest.raises(CommandError, match=r".") as e:
+        apply(s, text)
+    assert needle in str(e.value), str(e.value)
+    assert s.status() == before  # unchanged
+
+
+def test_a_method_that_refuses_the_model_leaves_the_session_unchanged() -> None:
+    s = Session(resolve_scenario("rosette"))
+    apply(s, '{"type": "set_method", "method": "rk4_angles"}')
+    with pytest.raises(CommandError, match=r"rk4_angles|ideal"):
+        apply(s, '{"type": "set_model", "model": "damped", "params": {"damping": 0.1}}')
+    assert s.status()["model"] == "ideal" and s.pendulum.model == "ideal"
+
+
+def test_frames_carry_time_dependent_diagnostics_net_force_and_the_moving_pivot() -> None:
+    s = Session(resolve_scenario("rosette"))
+    apply(s, '{"type": "set_model", "model": "vibrating", "params": {"amplitude": 0.05, "frequency": 30}}')
+    s.time_scale = 3.0
+    r = np.concatenate([s.advance(0.05) for _ in range(10)])
+    t = r[:, 0]
+    assert np.ptp(t) > 1.0
+    p = s.pendulum
+    d = p.diagnostics(r[:, X], r[:, V], t)
+    np.testing.assert_allclose(r[:, F["tension"]], d["tension"], rtol=0, atol=1e-12)
+    np.testing.assert_allclose(r[:, PIVOT], d["pivot"], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(r[:, PIVOT][:, 2], 0.05 * np.cos(30 * t), rtol=0, atol=1e-12)
+    # at t = 0 the tension would differ: the pivot's acceleration A ν² cos νt enters it
+    assert np.max(np.abs(r[:, F["tension"]] - p.diagnostics(r[:, X], r[:, V])["tension"])) > 1.0
+    # net force m a = m(−g e₃ − p̈) − T x/l: the acceleration is ẍ relative to the pivot
+    m, ell, g = p.mass, p.length, p.g
+    pdd = np.zeros_like(r[:, X])
+    pdd[:, 2] = -0.05 * 30**2 * np.cos(30 * t)
+    want = -g * np.array([0, 0, 1.0]) - pdd - (r[:, F["tension"]] / (m * ell))[:, None] * r[:, X] / ell
+    np.testing.assert_allclose(r[:, A], want, rtol=0, atol=1e-9)
+
+
+def test_ideal_frames_have_zero_pivot_and_zero_power() -> None:
+    s = Session(resolve_scenario("rosette"))
+    r = s.records()
+    assert np.all(r[:, PIVOT] == 0) and r[0, F["power"]] == 0
+
+
+# --- REST: scenario as TOML, V_eff ----------------------------------------------------------------------
+
+
+def test_the_scenario_as_toml_round_trips_and_runs(client: TestClient, tmp_path: Any) -> None:
+    p = pl.Pendulum(length=1.3, g=9.5, mass=2.0, model="damped", damping=0.2, forcing_amplitude=0.5)
+    st = p.state_from_angles(1.0, 0.5, 0.1, 1.5)
+    body = {
+        "title": "from the lab",
+        "model": "damped",
+        "length": 1.3,
+        "mass": 2.0,
+        "g": 9.5,
+        "params": {"damping": 0.2, "forcing_amplitude": 0.5},
+        "x": st.x.tolist(),
+        "v": st.v.tolist(),
+        "method": "rattle4",
+        "dt": 0.002,
+        "t0": 0.0,
+        "t_end": 3.0,
+    }
+    r = client.post("/api/scenario.toml", json=body)
+    assert r.status_code == 200 and r.headers["content-type"].startswith("application/toml")
+    assert "attachment" in r.headers["content-disposition"]
+    sc = pl.Scenario.from_toml_str(r.text)
+    assert sc.pendulum().params() == p.params() | {"damping": 0.2, "forcing_amplitude": 0.5}
+    np.testing.assert_array_equal(sc.initial_state().x, st.x)  # bit for bit
+    np.testing.assert_array_equal(sc.initial_state().v, st.v)
+    assert (sc.spec.simulation.method, sc.spec.simulation.dt, sc.title) == ("rattle4", 0.002, "from the lab")
+    path = tmp_path / "lab.toml"
+    path.write_text(r.text, encoding="utf-8")
+    out = tmp_path / "lab.csv"
+    res = CliRunner().invoke(cli.app, ["run", str(path), "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    assert out.is_file()
+    bad = client.post("/api/scenario.toml", json=body | {"params": {"damping": -1}})
+    assert bad.status_code == 422 and "damping = -1" in bad.json()["detail"]
+    bad = client.post("/api/scenario.toml", json=body | {"t_end": -1.0})
+    assert bad.status_code == 422 and "t_end" in bad.json()["detail"]
+
+
+def test_effective_potential_is_t25_with_its_minimum_at_the_conical_orbit(client: TestClient) -> None:
+    r = client.post(
+        "/api/effective_potential", json={"length": 2.0, "mass": 0.5, "g": 9.81, "j3": 1.2, "n": 2000}
+    )
+    assert r.status_code == 200
+    q = r.json()
+    th, v = np.array(q["theta"]), np.array(q["v_eff"])
+    assert th[0] > 0 and th[-1] < np.pi and len(th) == 2000
+    np.testing.assert_allclose(v, -0.5 * 9.81 * 2 * np.cos(th) + 1.2**2 / (2 * 0.5 * 4 * np.sin(th) ** 2))
+    # V_eff' = 0: m g l sin θ = J₃² cos θ / (m l² sin³ θ) at the conical orbit
+    t0 = q["minimum"]["theta"]
+    assert 0.5 * 9.81 * 2 * np.sin(t0) == pytest.approx(
+        1.2**2 * np.cos(t0) / (0.5 * 4 * np.sin(t0) ** 3), rel=1e-2
+    )
+    bad = client.post("/api/effective_potential", json={"mass": -1})
+    assert bad.status_code == 422 and "mass = -1" in bad.json()["detail"]
+
+
+# --- robustness -----------------------------------------------------------------------------------------
+
+
+def test_one_client_too_many_is_refused_clearly_and_a_slot_frees_when_one_leaves() -> None:
+    with TestClient(create_app("rosette", max_sessions=1)) as c:
+        with c.websocket_connect("/ws") as ws1:
+            until(ws1, frames)
+            with c.websocket_connect("/ws") as ws2:
+                kind, msg = receive(ws2)
+                assert kind == "json" and msg["type"] == "error" and "server is full" in msg["message"]
+                assert "--max-sessions 1" in msg["message"]
+                closed = ws2.receive()
+                assert closed["type"] == "websocket.close" and closed["code"] == 1013
+        for _ in range(100):  # the first session ends once the server notices; then a slot is free
+            with c.websocket_connect("/ws") as ws3:
+                kind, msg = receive(ws3)
+                if msg["type"] == "status":
+                    break
+            time.sleep(0.05)
+        assert msg["type"] == "status"
+
+
+def test_a_flooding_client_does_not_stall_another() -> None:
+    c = TestClient(create_app("rosette"))
+    with c, c.websocket_connect("/ws") as flood, c.websocket_connect("/ws") as calm:
+        until(calm, frames)
+        stop = threading.Event()
+        sent = 0
+
+        def spam() -> None:
+            nonlocal sent
+            while not stop.is_set():
+                flood.send_text('{"type": "set_time_scale", "time_scale": 1.0}')
+                sent += 1
+                if sent % 50 == 0:
+                    time.sleep(0.01)  # hundreds per second, and the test thread still runs
+
+        spammer = threading.Thread(target=spam)
+        spammer.start()
+        try:
+            t_start, wall_start = until(calm, frames)[-1, 0], time.monotonic()
+            while time.monotonic() - wall_start < 2.0:
+                t_end = until(calm, frames)[-1, 0]
+            wall = time.monotonic() - wall_start
+        finally:
+            stop.set()
+            spammer.join()
+    rate = sent / wall
+    assert rate > 300, f"the test sent only {rate:.0f} commands/s"
+    ratio = (t_end - t_start) / wall
+    assert ratio > 0.5, f"the calm client got {ratio:.2f} simulated s per s while the other sent {rate:.0f}/s"
+
+
+def test_a_client_vanishing_mid_stream_leaves_the_others_streaming_and_frees_its_slot() -> None:
+    c = TestClient(create_app("rosette", max_sessions=2))
+    with c, c.websocket_connect("/ws") as steady:
+        until(steady, frames)
+        with c.websocket_connect("/ws") as gone:
+            ws_frames = [until(gone, frames) for _ in range(3)]  # streaming …
+            assert ws_frames[-1][-1, 0] > ws_frames[0][0, 0]
+        # … and gone without a word; the other session goes on
+        t0 = until(steady, frames)[-1, 0]
+        for _ in range(20):
+            t1 = until(steady, frames)[-1, 0]
+        assert t1 > t0
+        for _ in range(100):  # its slot is free again: a new page gets a status, not "server is full"
+            with c.websocket_connect("/ws") as again:
+                _, msg = receive(again)
+                if msg["type"] == "status":
+                    break
+            time.sleep(0.05)
+        assert msg["type"] == "status"

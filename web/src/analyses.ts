@@ -1,0 +1,121 @@
+// What the page asks the server to compute about the current orbit (REST, docs/web.md): the exact
+// solution (POST /api/exact, ideal pendulum), V_eff(θ) (POST /api/effective_potential), the energy–
+// momentum map's boundary (POST /api/em_map) and the reduced view (POST /api/reduced, ideal pendulum).
+// Each is fetched when what it depends on changes, and a late answer for an older epoch is dropped.
+import type { EMView, EffectivePotential, ExactQuantities, Frame, ReducedCurves, Status } from './protocol';
+import type { ReducedView } from './scene/reduced';
+import type { LabStore } from './state';
+
+/** GET or POST JSON; an HTTP error becomes an Error with the server's `detail`. */
+export async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
+  const r = await fetch(path, init);
+  const body: unknown = await r.json();
+  if (!r.ok) {
+    const detail = (body as { detail?: unknown }).detail;
+    throw new Error(typeof detail === 'string' ? detail : `${path}: HTTP ${r.status}`);
+  }
+  return body as T;
+}
+
+function post<T>(path: string, body: unknown): Promise<T> {
+  return getJSON<T>(path, { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(body) });
+}
+
+const message = (e: unknown): string => (e instanceof Error ? e.message : String(e));
+
+export class Analyses {
+  /** V_eff(θ) for the current l, m, g and J₃, or null while it is on its way. */
+  veff: EffectivePotential | null = null;
+  /** The energy–momentum map's boundary for the current l, m, g (none for g = 0). */
+  em: EMView | null = null;
+  private veffKey = '';
+  private veffAt = -Infinity;
+  private veffJ3: number | null = null;
+  private emKey = '';
+  private exactEpoch = -1;
+  private reducedEpoch = -1;
+
+  constructor(
+    private readonly store: LabStore,
+    private readonly reduced: ReducedView,
+    private readonly explain: (text: string) => void,
+  ) {}
+
+  /** After frames arrived: fetch what the new epoch, parameters or J₃ call for. */
+  onFrames(): void {
+    const s = this.store.status;
+    const first = this.store.trajectory[0];
+    const last = this.store.latest();
+    if (s === null || first === undefined || last === null) return;
+    if (this.exactEpoch !== s.epoch) this.fetchExact(s, first);
+    if (this.reducedEpoch !== s.epoch) this.fetchReduced(s, first);
+    this.fetchEM(s, first);
+    this.fetchPotential(s, last);
+  }
+
+  /** V_eff: at each epoch's first frame, and again while J₃ changes (models that do not conserve it), at
+   *  most once a second. */
+  private fetchPotential(status: Status, f: Frame): void {
+    const p = status.params;
+    const key = `${status.epoch}:${p.length}:${p.mass}:${p.g}`;
+    const now = performance.now();
+    const stale = Math.abs(f.j3 - (this.veffJ3 ?? NaN)) > 1e-3 * Math.max(Math.abs(f.j3), 1e-9);
+    if (key === this.veffKey && !(stale && now - this.veffAt > 1000)) return;
+    if (key !== this.veffKey) this.veff = null;
+    [this.veffKey, this.veffAt, this.veffJ3] = [key, now, f.j3];
+    post<EffectivePotential>('api/effective_potential', { length: p.length, mass: p.mass, g: p.g, j3: f.j3 }).then(
+      (q) => {
+        if (this.veffKey === key) this.veff = q;
+      },
+      (e: unknown) => this.explain(`V_eff: ${message(e)}`),
+    );
+  }
+
+  /** The map's boundary depends on l, m, g only (the point comes from the frames). */
+  private fetchEM(status: Status, f: Frame): void {
+    const p = status.params;
+    const key = `${p.length}:${p.mass}:${p.g}`;
+    if (key === this.emKey) return;
+    this.emKey = key;
+    this.em = null;
+    if (p.g === 0) return; // no potential, no map
+    post<EMView>('api/em_map', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }).then(
+      (q) => {
+        if (this.emKey === key) this.em = q;
+      },
+      (e: unknown) => this.explain(`energy–momentum map: ${message(e)}`),
+    );
+  }
+
+  /** The reduced view of the epoch's orbit (the ideal pendulum's: its J₃ and E are the invariants). */
+  private fetchReduced(status: Status, f: Frame): void {
+    this.reducedEpoch = status.epoch;
+    if (status.model !== 'ideal') {
+      this.reduced.setNote(`the reduced view is the ideal pendulum's; this is the ${status.model} model`);
+      return;
+    }
+    this.reduced.setNote(null);
+    const p = status.params;
+    post<ReducedCurves>('api/reduced', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }).then(
+      (q) => {
+        if (this.store.status?.epoch === status.epoch) this.reduced.set(q);
+      },
+      (e: unknown) => this.reduced.setNote(`reduced view: ${message(e)}`),
+    );
+  }
+
+  /** The exact solution of the epoch's orbit (the closed form is the ideal pendulum's). */
+  private fetchExact(status: Status, f: Frame): void {
+    this.exactEpoch = status.epoch;
+    if (status.model !== 'ideal') return;
+    const p = status.params;
+    post<ExactQuantities>('api/exact', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }).then(
+      (q) => {
+        if (this.store.status?.epoch === status.epoch) this.store.setExact(q);
+      },
+      (e: unknown) => {
+        if (this.store.status?.epoch === status.epoch) this.store.setExact(null, message(e));
+      },
+    );
+  }
+}

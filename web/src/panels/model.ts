@@ -1,0 +1,81 @@
+// The model picker (lil-gui): the core's registry as the server lists it (GET /api/schema → models) — ideal,
+// damped, rotating, slewing, vibrating — and the chosen model's own parameters, with units and limits,
+// generated from the schema. Choosing a model sends `set_model`; editing a parameter sends `set_params` with
+// `params`, which keeps the model. The controls show the server's status and are rebuilt when the model
+// changes (from here, a scenario or a shared link).
+import type GUI from 'lil-gui';
+import type { Controller } from 'lil-gui';
+import type { Command, ModelSchema, Schema, Status } from '../protocol';
+import { addParam, throttle } from './params';
+
+export interface ModelActions {
+  send(cmd: Command): void;
+  explain(message: string): void;
+}
+
+/** The picker's options: `name — summary` → name. */
+export function modelOptions(models: readonly ModelSchema[]): Record<string, string> {
+  const out: Record<string, string> = {};
+  for (const m of models) out[`${m.name} — ${m.summary}`] = m.name;
+  return out;
+}
+
+export class ModelControls {
+  private readonly state: { model: string } = { model: 'ideal' };
+  private readonly picker: Controller;
+  private paramsFolder: GUI | null = null;
+  private paramControls: Controller[] = [];
+  private values: Record<string, number> = {};
+  private shown: string | null = null;
+  private readonly sendParam: (name: string, value: number) => void;
+
+  constructor(
+    private readonly parent: GUI,
+    private readonly schema: Schema,
+    private readonly actions: ModelActions,
+  ) {
+    this.picker = parent
+      .add(this.state, 'model', modelOptions(schema.models))
+      .name('model')
+      .onChange((name: string) => actions.send({ type: 'set_model', model: name }));
+    this.picker.domElement.dataset['control'] = 'model';
+    this.picker.domElement.title = schema.models.map((m) => `${m.name}: ${m.summary}`).join('\n');
+    this.sendParam = throttle((name: string, value: number) => {
+      actions.send({ type: 'set_params', params: { [name]: value } });
+    }, 50);
+  }
+
+  /** The model's schema, or undefined for a name the server did not list. */
+  spec(name: string): ModelSchema | undefined {
+    return this.schema.models.find((m) => m.name === name);
+  }
+
+  private rebuild(name: string): void {
+    this.paramsFolder?.destroy();
+    this.paramsFolder = null;
+    this.paramControls = [];
+    this.values = {};
+    this.shown = name;
+    const spec = this.spec(name);
+    if (spec === undefined || spec.params.length === 0) return;
+    const folder = this.parent.addFolder(`${name} parameters`);
+    for (const p of spec.params) {
+      this.values[p.name] = p.default;
+      const c = addParam(folder, this.values, p, (v) => this.sendParam(p.name, v), this.actions.explain);
+      this.paramControls.push(c);
+    }
+    this.paramsFolder = folder;
+  }
+
+  /** Shows the server's model and parameters (sends nothing). Fields being edited are left alone. */
+  sync(s: Status): void {
+    const name = s.model ?? 'ideal';
+    this.state.model = name;
+    this.picker.updateDisplay();
+    if (this.shown !== name) this.rebuild(name);
+    for (const [k, v] of Object.entries(s.model_params ?? {})) this.values[k] = v;
+    for (const c of this.paramControls) {
+      if (!c.domElement.contains(document.activeElement)) c.updateDisplay();
+    }
+  }
+}

@@ -1,0 +1,90 @@
+// Parameter controls generated from the schema (GET /api/schema): a slider spanning ui_min … ui_max with a
+// label carrying the unit, a tooltip with the description and the allowed values, and a check against the
+// hard limits before anything is sent (the server checks again and explains in an error notice). No DOM
+// of its own beyond lil-gui's; the checks are pure and unit-tested.
+import type GUI from 'lil-gui';
+import type { Controller } from 'lil-gui';
+import type { ParamSchema } from '../protocol';
+
+/** A unit for display: m/s^2 → m/s², 1 → no unit. */
+export function unitLabel(unit: string): string {
+  return unit === '1' ? '' : unit.replace('^2', '²').replace('^3', '³');
+}
+
+/** The control's label: `name [unit]`. */
+export function paramLabel(p: ParamSchema): string {
+  const u = unitLabel(p.unit);
+  return u ? `${p.name} [${u}]` : p.name;
+}
+
+/** The allowed range in words, e.g. `0 … 1000 kg`, `≥ 0 1/s`, `any finite number`. */
+export function allowedRange(p: ParamSchema): string {
+  const u = unitLabel(p.unit);
+  const unit = u ? ` ${u}` : '';
+  if (p.min !== null && p.max !== null) return `${p.min} … ${p.max}${unit}`;
+  if (p.min !== null) return `≥ ${p.min}${unit}`;
+  if (p.max !== null) return `≤ ${p.max}${unit}`;
+  return 'any finite number';
+}
+
+/** Null when `v` is allowed for `p`, else a sentence naming the value and what is allowed. */
+export function checkParam(p: ParamSchema, v: number): string | null {
+  const ok = Number.isFinite(v) && (p.min === null || v >= p.min) && (p.max === null || v <= p.max);
+  if (ok) return null;
+  return `${p.name} = ${v} is not allowed: ${p.allowed ?? allowedRange(p)} (${allowedRange(p)})`;
+}
+
+/** Adds the control of `p` (bound to obj[p.name]) to `folder`; calls `send(v)` for allowed values and
+ *  `explain(message)` otherwise. */
+export function addParam(
+  folder: GUI,
+  obj: Record<string, unknown>,
+  p: ParamSchema,
+  send: (v: number) => void,
+  explain: (message: string) => void,
+): Controller {
+  if (typeof obj[p.name] !== 'number') obj[p.name] = p.default;
+  const c = folder
+    .add(obj, p.name, p.ui_min, p.ui_max)
+    .name(paramLabel(p))
+    .onChange((v: number) => {
+      const problem = checkParam(p, v);
+      if (problem !== null) explain(problem);
+      else send(v);
+    });
+  c.domElement.title = `${p.description} [${p.unit}]; allowed: ${allowedRange(p)}; default ${p.default}`;
+  c.domElement.dataset['param'] = p.name;
+  // the slider's step, not snapping typed values (7.292e-5 stays; lil-gui's step(step, explicit = false))
+  (c as unknown as { step(step: number, explicit: boolean): unknown }).step(p.step, false);
+  // lil-gui clamps a typed value to the slider's span; the span is only the slider's, the limits are the
+  // schema's (checked above, and by the server), so typed values pass through unclamped (lil-gui 0.21).
+  const clamped = c as unknown as { _clamp?: (v: number) => number };
+  if (typeof clamped._clamp === 'function') clamped._clamp = (v: number) => v;
+  return c;
+}
+
+/** Calls `fn` at most every `ms` milliseconds, always with the latest arguments (trailing call kept). */
+export function throttle<A extends unknown[]>(fn: (...args: A) => void, ms: number): (...args: A) => void {
+  let last = -Infinity;
+  let timer: ReturnType<typeof setTimeout> | null = null;
+  let pending: A | null = null;
+  return (...args: A) => {
+    pending = args;
+    const wait = last + ms - performance.now();
+    if (wait <= 0 && timer === null) {
+      last = performance.now();
+      fn(...args);
+      pending = null;
+    } else if (timer === null) {
+      timer = setTimeout(
+        () => {
+          timer = null;
+          last = performance.now();
+          if (pending !== null) fn(...pending);
+          pending = null;
+        },
+        Math.max(0, wait),
+      );
+    }
+  };
+}

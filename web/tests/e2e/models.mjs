@@ -1,0 +1,190 @@
+// End-to-end checks of the model picker, the vectors, the portraits and the scenario download, run by
+// smoke.mjs on its page (after its own checks). Everything goes through the page's controls as a user
+// would (lil-gui's select, number boxes and buttons), and the effects are read from the server's status.
+import { readFileSync } from 'node:fs';
+
+/** Chooses `name` in the model picker (a lil-gui select whose options read `name — summary`). */
+async function pickModel(page, name) {
+  await page.evaluate((name) => {
+    const select = document.querySelector('[data-control="model"] select');
+    const i = [...select.options].findIndex((o) => o.textContent.startsWith(`${name} —`));
+    if (i < 0) throw new Error(`no model ${name} in the picker`);
+    select.selectedIndex = i;
+    select.dispatchEvent(new Event('change'));
+  }, name);
+}
+
+/** Types `value` into the number box of the parameter control `name` and confirms it (Enter). */
+async function typeParam(page, name, value) {
+  const input = page.locator(`[data-param="${name}"] input`).first();
+  await input.fill(String(value));
+  await input.press('Enter');
+}
+
+/** Pixels of the scene close to an RGB colour. */
+const colourPixels = (page, rgb) =>
+  page.evaluate(async (rgb) => {
+    const img = new Image();
+    img.src = window.pendulab.screenshot();
+    await img.decode();
+    const c = document.createElement('canvas');
+    [c.width, c.height] = [img.width, img.height];
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const px = ctx.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < px.length; i += 4) {
+      if (Math.abs(px[i] - rgb[0]) + Math.abs(px[i + 1] - rgb[1]) + Math.abs(px[i + 2] - rgb[2]) < 40) n++;
+    }
+    return n;
+  }, rgb);
+
+/** The reduced view, stereo and dragging the bob (on the ideal pendulum). */
+export async function checkViews(page, { check, WAIT, simulated }) {
+  await page.evaluate(() => {
+    window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
+    window.pendulab.send({ type: 'set_model', model: 'ideal' });
+    window.pendulab.send({ type: 'resume' });
+  });
+  await page.waitForFunction(() => window.pendulab.store.status?.model === 'ideal' && !window.pendulab.store.status.paused, null, { timeout: WAIT });
+  await simulated(page, 1);
+  await page.locator('#reduced canvas').scrollIntoViewIfNeeded();
+  await page.waitForTimeout(1000);
+  const reducedInk = await page.evaluate(async () => {
+    const img = new Image();
+    img.src = document.querySelector('#reduced canvas').toDataURL();
+    await img.decode();
+    const c = document.createElement('canvas');
+    [c.width, c.height] = [img.width, img.height];
+    const ctx = c.getContext('2d');
+    ctx.drawImage(img, 0, 0);
+    const px = ctx.getImageData(0, 0, c.width, c.height).data;
+    let orbit = 0;
+    for (let i = 0; i < px.length; i += 4) if (Math.abs(px[i] - 0x59) + Math.abs(px[i + 1] - 0xc3) + Math.abs(px[i + 2] - 0xff) < 60) orbit++;
+    return orbit;
+  });
+  check(reducedInk > 30, `reduced view draws the orbit in σ-space (${reducedInk} pixels)`);
+  await page.screenshot({ path: 'test-results/lab-reduced.png' });
+
+  // stereo: the anaglyph draws in red and cyan
+  await page.locator('.lil-title', { hasText: /^View$/ }).click();
+  await page.locator('.lil-controller', { hasText: 'stereo' }).locator('select').selectOption('anaglyph');
+  await page.waitForTimeout(500);
+  await page.screenshot({ path: 'test-results/lab-anaglyph.png' });
+  const fringe = await page.evaluate(() => document.getElementById('scene-canvas') !== null);
+  await page.locator('.lil-controller', { hasText: 'stereo' }).locator('select').selectOption('off');
+  check(fringe, 'stereo (anaglyph) renders and switches back');
+
+  // dragging the bob sets a new start at rest and pauses
+  await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  await page.waitForFunction(() => window.pendulab.store.status?.paused === true, null, { timeout: WAIT });
+  await page.waitForTimeout(300);
+  const before = await page.evaluate(() => window.pendulab.store.status.start.x);
+  const bob = await page.evaluate(() => window.pendulab.bobOnScreen());
+  await page.mouse.move(bob.x, bob.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; k++) await page.mouse.move(bob.x - 12 * k, bob.y - 6 * k);
+  await page.mouse.up();
+  await page.waitForFunction(
+    (b) => {
+      const s = window.pendulab.store.status;
+      return s.start.v.every((c) => c === 0) && s.start.x.some((c, i) => Math.abs(c - b[i]) > 0.05);
+    },
+    before,
+    { timeout: WAIT },
+  );
+  const after = await page.evaluate(() => window.pendulab.store.status);
+  const r = Math.hypot(...after.start.x);
+  check(after.paused && Math.abs(r - after.params.length) < 1e-12, `dragging the bob sets a start at rest on the sphere (x = ${after.start.x.map((c) => c.toFixed(3)).join(', ')} m)`);
+}
+
+export async function checkModels(page, { check, WAIT, simulated }) {
+  const status = () => page.evaluate(() => window.pendulab.store.status);
+  const waitStatus = (fn, arg) => page.waitForFunction(fn, arg, { timeout: WAIT, polling: 100 });
+
+  await page.evaluate(() => {
+    window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
+    window.pendulab.send({ type: 'resume' });
+  });
+  await waitStatus(() => window.pendulab.store.status?.params.g === 9.81 && !window.pendulab.store.status.paused);
+
+  // the picker: damped, then its damping through the generated control
+  await pickModel(page, 'damped');
+  await waitStatus(() => window.pendulab.store.status?.model === 'damped');
+  await page.locator('[data-param="damping"] input').first().waitFor({ timeout: WAIT });
+  await typeParam(page, 'damping', 0.8);
+  await waitStatus(() => window.pendulab.store.status?.model_params.damping === 0.8);
+  // a length change keeps the model and its damping (the bug: the pendulum was rebuilt without them)
+  await typeParam(page, 'length', 1.2);
+  await waitStatus(() => window.pendulab.store.status?.params.length === 1.2);
+  let s = await status();
+  check(s.model === 'damped' && s.model_params.damping === 0.8, `length change keeps the model (${s.model}, damping ${s.model_params.damping} 1/s)`);
+  await simulated(page, 3);
+  const decay = await page.evaluate(() => {
+    const tr = window.pendulab.store.trajectory;
+    return { e0: tr[0].energy, e1: tr[tr.length - 1].energy, p: Math.max(...tr.map((f) => f.power)) };
+  });
+  check(decay.e1 < decay.e0 - 1 && decay.p <= 1e-9, `damped: energy ${decay.e0.toFixed(3)} → ${decay.e1.toFixed(3)} J, power ≤ 0`);
+
+  // a value outside the limits is explained by the page and not sent; the server names bad values too
+  await typeParam(page, 'damping', -1);
+  await page.waitForFunction(() => document.getElementById('message').textContent.includes('damping = -1'), null, { timeout: WAIT });
+  await page.evaluate(() => window.pendulab.send({ type: 'set_params', params: { damping: -2 } }));
+  await page.waitForFunction(() => document.getElementById('message').textContent.includes('damping = -2'), null, { timeout: WAIT });
+  s = await status();
+  check(s.model_params.damping === 0.8, 'bad damping explained (page and server) and not applied');
+
+  // vectors: the angular momentum arrow (teal) appears when toggled
+  await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  await waitStatus(() => window.pendulab.store.status?.paused === true);
+  await page.evaluate(() => window.pendulab.send({ type: 'reset' }));
+  await page.waitForTimeout(500);
+  const before = await colourPixels(page, [0x4d, 0xd9, 0xc0]);
+  await page.locator('.lil-title', { hasText: 'Vectors' }).click();
+  await page.locator('[data-vector="angularMomentum"] input').check();
+  await page.locator('[data-vector="net"] input').check();
+  await page.waitForTimeout(300);
+  const after = await colourPixels(page, [0x4d, 0xd9, 0xc0]);
+  check(after > before + 20, `angular momentum arrow drawn (${before} → ${after} teal pixels)`);
+
+  // the portraits: phase portrait and V_eff drawn
+  await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+  await simulated(page, 1);
+  await page.waitForTimeout(500);
+  const inked = await page.evaluate(() =>
+    [...document.querySelectorAll('#portraits canvas')].map((c) => {
+      const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 3; i < d.length; i += 4) if (d[i] > 0) n++;
+      return n;
+    }),
+  );
+  check(inked.length === 3 && inked.every((n) => n > 500), `phase portrait, V_eff and the energy–momentum map drawn (${inked.join(', ')} pixels)`);
+
+  // the scenario as TOML, through the button
+  const [download] = await Promise.all([
+    page.waitForEvent('download', { timeout: WAIT }),
+    page.locator('.lil-title', { hasText: 'Share and export' }).click().then(() =>
+      page.locator('[data-control="toml"] button').click(),
+    ),
+  ]);
+  const text = readFileSync(await download.path(), 'utf-8');
+  check(/model = "damped"/.test(text) && /damping = 0\.8/.test(text) && /length = 1\.2/.test(text), `scenario download (${download.suggestedFilename()}) has the model and damping`);
+
+  // the URL carries the model and its parameters
+  const url = page.url();
+  const page2 = await page.context().newPage();
+  await page2.goto(url, { timeout: WAIT });
+  await page2.waitForFunction(() => window.pendulab?.store.status?.model === 'damped', null, { timeout: WAIT });
+  const s2 = await page2.evaluate(() => window.pendulab.store.status);
+  check(s2.model_params.damping === 0.8 && s2.params.length === 1.2, `the shared URL carries the model (${new URL(url).searchParams.get('mp')})`);
+  await page2.close();
+
+  // a moving pivot: slewing puts the pivot on the boom tip
+  await pickModel(page, 'slewing');
+  await waitStatus(() => window.pendulab.store.status?.model === 'slewing');
+  await simulated(page, 1);
+  const pivot = await page.evaluate(() => window.pendulab.store.latest().pivot);
+  check(Math.abs(Math.hypot(pivot[0], pivot[1]) - 5) < 1e-9, `slewing: the pivot moves on the boom tip circle (|p| = ${Math.hypot(pivot[0], pivot[1]).toFixed(6)} m)`);
+  await page.screenshot({ path: 'test-results/lab-slewing.png' });
+}
