@@ -68,8 +68,10 @@ def test_schema_lists_every_model_of_the_registry_with_units_limits_and_slider_s
     client: TestClient,
 ) -> None:
     s = client.get("/api/schema").json()
-    assert [m["name"] for m in s["models"]] == [m["name"] for m in pl.models()]
-    for m, reg in zip(s["models"], pl.models(), strict=True):
+    lab = [m for m in pl.models() if m["interactive"]]  # the string, spring, sampled pivot: pendulab run
+    assert [m["name"] for m in s["models"]] == [m["name"] for m in lab]
+    assert {"ideal", "damped", "rotating", "slewing", "vibrating"} <= {m["name"] for m in lab}
+    for m, reg in zip(s["models"], lab, strict=True):
         own = [p for p in reg["params"] if p["name"] not in ("length", "mass", "g")]
         assert [p["name"] for p in m["params"]] == [p["name"] for p in own]
         for p, q in zip(m["params"], own, strict=True):
@@ -86,6 +88,8 @@ def test_scenarios_carry_their_model(client: TestClient) -> None:
     listed = {s["name"]: s for s in client.get("/api/scenarios").json()}
     assert listed["damped"]["model"] == "damped" and listed["damped"]["model_params"]["damping"] > 0
     assert listed["rosette"]["model"] == "ideal" and listed["rosette"]["model_params"] == {}
+    # examples whose model runs only with `pendulab run` are listed with the reason
+    assert "does not run in the lab" in listed["string_slack"]["error"]
 
 
 # --- a session's model ----------------------------------------------------------------------------------
@@ -135,7 +139,9 @@ def test_set_model_switches_model_with_defaults_and_given_parameters() -> None:
 @pytest.mark.parametrize(
     ("text", "needle"),
     [
-        ('{"type": "set_model", "model": "spring"}', "unknown model 'spring'; available: ideal, damped"),
+        ('{"type": "set_model", "model": "spring"}', "model 'spring' does not run in the lab"),
+        ('{"type": "set_model", "model": "string"}', "the lab's models: ideal, damped"),
+        ('{"type": "set_model", "model": "sprung"}', "unknown model 'sprung'; available: ideal, damped"),
         ('{"type": "set_model", "model": "damped", "params": {"latitude": 1}}', "no parameter 'latitude'"),
         ('{"type": "set_model", "model": "damped", "params": {"damping": -1}}', "damping = -1"),
         ('{"type": "set_model", "model": "rotating", "params": {"latitude": 2}}', "latitude"),

@@ -71,8 +71,13 @@ def decode_records(data: bytes) -> np.ndarray:
 COMMON_PARAMS = ("length", "mass", "g")
 """The parameters every model shares (l [m], m [kg], g [m/s²]); the rest are a model's own."""
 
-MODEL_SPECS: dict[str, _core.ModelInfo] = {m["name"]: m for m in _core.models()}
-"""The core's model registry by name (``pendulab.models()``): parameters with units, defaults, limits."""
+MODEL_SPECS: dict[str, _core.ModelInfo] = {m["name"]: m for m in _core.models() if m["interactive"]}
+"""The core's models that run in the lab (``pendulab.models()`` with ``interactive``: the incremental
+stepper), by name: parameters with units, defaults, limits."""
+
+OFFLINE_MODELS = tuple(m["name"] for m in _core.models() if not m["interactive"])
+"""Models of the registry that only run with ``pendulab run`` / ``pl.simulate`` (hybrid string,
+swinging spring, sampled pivot path), not in the lab."""
 
 
 def own_params(model: str) -> list[_core.ParamSpec]:
@@ -127,6 +132,11 @@ class SetModel(_Command):
 
     @model_validator(mode="after")
     def _known(self) -> SetModel:
+        if self.model in OFFLINE_MODELS:
+            raise ValueError(
+                f"model {self.model!r} does not run in the lab (use pendulab run); "
+                f"the lab's models: {', '.join(MODEL_SPECS)}"
+            )
         if self.model not in MODEL_SPECS:
             raise ValueError(f"unknown model {self.model!r}; available: {', '.join(MODEL_SPECS)}")
         _check_param_names(self.model, self.params)

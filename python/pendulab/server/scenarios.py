@@ -12,6 +12,7 @@ from pathlib import Path
 from ..model import Pendulum, State
 from ..scenario import Scenario, ScenarioError, load_scenario
 from ..simulate import DEFAULTS
+from .protocol import MODEL_SPECS
 
 BUILTIN_SCENARIO = """
 title = "Rosette: 60° release with sideways spin (built in)"
@@ -46,6 +47,15 @@ class Setup:
 
     @classmethod
     def from_scenario(cls, sc: Scenario, name: str | None) -> Setup:
+        """The setup of ``sc``; :class:`ScenarioError` if its model does not run in the lab (the
+        string, the swinging spring and sampled pivot paths run with ``pendulab run`` only)."""
+        model = sc.spec.pendulum.model
+        if model not in MODEL_SPECS:
+            raise ScenarioError(
+                sc.source,
+                f"[pendulum] model = {model!r} does not run in the lab (use pendulab run); "
+                f"the lab's models: {', '.join(MODEL_SPECS)}",
+            )
         sim = sc.spec.simulation
         rtol, atol = sim.resolved_tolerances()
         dt = sim.dt if sim.dt is not None else float(DEFAULTS["dt"])
