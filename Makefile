@@ -11,7 +11,7 @@ PORT ?= 8000
 STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-web bench bench-compare \
-	golden clean
+	bench-peers golden clean
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -78,6 +78,26 @@ bench:
 
 bench-compare: build
 	$(PY) bench/compare.py
+
+# Pendulab against its peers (SciPy, numba, C, MuJoCo, JAX + Diffrax): a separate virtual environment
+# bench/peers/.venv with the peers and a release wheel of this checkout's Pendulab (not the editable
+# build of .venv), then bench/peers/run.py: results/, docs/img/peers_work_precision.png and the
+# "Against peers" section of docs/performance.md (about 20 min; PEERS_ARGS=--quick for a smoke run).
+PEERS_VENV := bench/peers/.venv
+PEERS_ARGS ?=
+
+$(PEERS_VENV)/.deps: bench/peers/requirements.txt
+	$(PYTHON) -m venv $(PEERS_VENV)
+	$(PEERS_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(PEERS_VENV)/bin/python -m pip install --quiet -r bench/peers/requirements.txt
+	touch $@
+
+bench-peers: $(PEERS_VENV)/.deps
+	rm -rf bench/peers/build/wheels
+	$(PEERS_VENV)/bin/maturin build --release --quiet -m python/Cargo.toml \
+		--interpreter $(PEERS_VENV)/bin/python -o bench/peers/build/wheels
+	$(PEERS_VENV)/bin/python -m pip install --quiet --force-reinstall --no-deps bench/peers/build/wheels/pendulab-*.whl
+	$(PEERS_VENV)/bin/python bench/peers/run.py $(PEERS_ARGS)
 
 golden: venv
 	$(PY) testdata/generate/golden_states.py
