@@ -127,7 +127,7 @@ def should_refine(
     cap: float,
     window: int = 3,
     converged: float = 1e-3,
-    max_failures: int = 12,
+    max_failures: int = 20,
 ) -> bool:
     """Whether a scan (step sizes decreasing or tolerances tightening) should try a finer setting.
 
