@@ -126,7 +126,7 @@ def should_refine(
     floor: float,
     cap: float,
     window: int = 3,
-    converged: float = 1e-3,
+    converged: float = 1e-9,
     max_failures: int = 20,
 ) -> bool:
     """Whether a scan (step sizes decreasing or tolerances tightening) should try a finer setting.
@@ -134,8 +134,9 @@ def should_refine(
     No once the last run took more than ``cap`` seconds, or its error is below ``floor``; no once the
     error has come below ``converged`` and the last ``window`` settings have not improved on the best
     error before them by a factor 2 (the error stagnates at round-off; a single noisy setting does
-    not stop the scan); no after ``max_failures`` failed runs in a row (NaN errors). Coarse settings
-    whose errors are O(1) or that fail never stop a scan by themselves before that."""
+    not stop the scan, and a lucky error at a coarse setting — errors above ``converged`` — does not
+    either); no after ``max_failures`` failed runs in a row (NaN errors). Coarse settings whose
+    errors are O(1) or that fail never stop a scan by themselves before that."""
     if walls and walls[-1] > cap:
         return False
     if errors and math.isfinite(errors[-1]) and errors[-1] <= floor:

@@ -80,6 +80,8 @@ def test_when_a_scan_stops() -> None:
     # a single noisy setting does not stop it, three without a factor 2 do
     assert hz.should_refine([1e-6, 1e-8, 2e-8, 1e-9], [0.1] * 4, 1e-13, 5.0)
     assert not hz.should_refine([1e-6, 1e-12, 2e-12, 1.5e-12, 1e-12], [0.1] * 5, 1e-13, 5.0)
+    # a lucky coarse error (above 1e-9) does not stop it either
+    assert hz.should_refine([1e-2, 1e-6, 5e-5, 7e-6, 6e-6], [0.1] * 5, 1e-13, 5.0)
     assert hz.should_refine([nan] * 12, [0.01] * 12, 1e-13, 5.0)
     assert not hz.should_refine([nan] * 20, [0.01] * 20, 1e-13, 5.0)
 
