@@ -919,7 +919,12 @@ def markdown(
         f"JAX {v.get('jax')} + Diffrax {v.get('diffrax')} (CPU, float64), gcc {v.get('gcc')} "
         f"(`{' '.join(C_FLAGS[:3])}`), numpy {v.get('numpy')}, all in their own virtual environment "
         f"bench/peers/.venv with Pendulab {v.get('pendulab')} installed there from a release wheel of "
-        "this checkout (`maturin build --release`)."
+        "this checkout (`maturin build --release`, "
+        + (
+            f"RUSTFLAGS=`{meta['rustflags']}`)."
+            if meta.get("rustflags")
+            else "default rustc target: baseline x86-64, no `target-cpu`)."
+        )
         + "".join(f" **{k}: skipped, {why}.**" for k, why in meta["skipped"].items() if why),
         "",
         "Cases (examples/scenarios/, l = 1 m, g = 9.81 m/s²) to t = 100 s. Reference: `pl.exact` at "
@@ -1145,6 +1150,7 @@ def main() -> None:
         "cap": cap,
         "versions": versions,
         "skipped": skipped,
+        "rustflags": os.environ.get("PEERS_RUSTFLAGS", ""),
         "machine": {
             "cpus": os.cpu_count(),
             "platform": platform.platform(),
