@@ -11,7 +11,7 @@ PORT ?= 8000
 STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-web test-e2e bench \
-	bench-compare golden clean
+	bench-compare bench-peers golden clean
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -84,6 +84,30 @@ bench:
 
 bench-compare: build
 	$(PY) bench/compare.py
+
+# Pendulab against its peers (SciPy, numba, C, MuJoCo, JAX + Diffrax): a separate virtual environment
+# bench/peers/.venv with the peers and a release wheel of this checkout's Pendulab (not the editable
+# build of .venv), then bench/peers/run.py: results/, docs/img/peers_work_precision.png and the
+# "Against peers" section of docs/performance.md (about 20 min; PEERS_ARGS=--quick for a smoke run).
+# PEERS_RUSTFLAGS="-C target-cpu=native" builds that wheel for this CPU, like the C baselines' -march=native
+# (in its own target directory, so the default build's cache is kept).
+PEERS_VENV := bench/peers/.venv
+PEERS_ARGS ?=
+PEERS_RUSTFLAGS ?=
+
+$(PEERS_VENV)/.deps: bench/peers/requirements.txt
+	$(PYTHON) -m venv $(PEERS_VENV)
+	$(PEERS_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(PEERS_VENV)/bin/python -m pip install --quiet -r bench/peers/requirements.txt
+	touch $@
+
+bench-peers: $(PEERS_VENV)/.deps
+	rm -rf bench/peers/build/wheels
+	$(if $(PEERS_RUSTFLAGS),RUSTFLAGS="$(PEERS_RUSTFLAGS)" CARGO_TARGET_DIR=$(CURDIR)/target/peers-rustflags,) \
+		$(PEERS_VENV)/bin/maturin build --release --quiet -m python/Cargo.toml \
+		--interpreter $(PEERS_VENV)/bin/python -o bench/peers/build/wheels
+	$(PEERS_VENV)/bin/python -m pip install --quiet --force-reinstall --no-deps bench/peers/build/wheels/pendulab-*.whl
+	PEERS_RUSTFLAGS="$(PEERS_RUSTFLAGS)" $(PEERS_VENV)/bin/python bench/peers/run.py $(PEERS_ARGS)
 
 golden: venv
 	$(PY) testdata/generate/golden_states.py

@@ -1,0 +1,194 @@
+"""The pure-Python parts of the peer benchmark bench/peers/ (issue 5, parts 3–4): error against the
+reference, the cheapest setting that reaches a tolerance, when a scan stops, the targets as PASS/MISS
+ratios and the Markdown written between markers. Needs none of the peers (SciPy's solve_ivp, numba,
+MuJoCo, JAX, Diffrax): run.py imports them only inside functions."""
+
+from __future__ import annotations
+
+import importlib.util
+import math
+import sys
+from pathlib import Path
+from types import ModuleType
+
+import numpy as np
+import pytest
+
+PEERS = Path(__file__).resolve().parents[2] / "bench" / "peers"
+
+
+def _load(name: str) -> ModuleType:
+    if name in sys.modules:
+        return sys.modules[name]
+    spec = importlib.util.spec_from_file_location(name, PEERS / f"{name}.py")
+    assert spec is not None and spec.loader is not None
+    mod = importlib.util.module_from_spec(spec)
+    sys.modules[name] = mod
+    spec.loader.exec_module(mod)
+    return mod
+
+
+hz = _load("harness")
+run = _load("run")
+
+
+def R(method: str, wall: float, error: float, case: str = "rosette", failed: str | None = None) -> object:
+    return hz.Run(method, case, 1.0, "steps", wall, 100, error, error, 0.0, 0.0, 3, failed)
+
+
+def test_errors_against_the_reference() -> None:
+    x_ref, v_ref = np.array([0.0, 0.6, -0.8]), np.array([1.0, 0.0, 0.0])
+    assert hz.position_error(x_ref + np.array([0, 0, 2e-3]), x_ref, 2.0) == pytest.approx(1e-3)
+    assert math.isnan(hz.position_error(np.array([np.nan, 0, 0]), x_ref, 1.0))
+    # velocity scaled by l ω₀ + |v_ref| = 1·3 + 1
+    e = hz.state_error(x_ref, v_ref + np.array([0.4, 0, 0]), x_ref, v_ref, 1.0, 3.0)
+    assert e == pytest.approx(0.1)
+    de, dc = hz.drifts(
+        np.array([0, 0, -1.0]), np.array([0, 0, 0.0]), np.array([0, 0, -1.0]), np.zeros(3), 1.0, 9.81
+    )
+    assert de == 0.0 and dc == 0.0
+    de, dc = hz.drifts(
+        np.array([0, 0, -1.1]), np.array([1.0, 0, 0]), np.array([0, 0, -1.0]), np.zeros(3), 1.0, 10.0
+    )
+    assert de == pytest.approx(abs(0.5 - 1.0) / 10.0) and dc == pytest.approx(0.1)
+
+
+def test_cheapest_setting_reaching_a_tolerance() -> None:
+    runs = [
+        R("a", 1.0, 1e-4),
+        R("a", 2.0, 1e-9),
+        R("a", 4.0, 1e-11),
+        R("a", 3.0, 5e-11),
+        R("a", 0.1, math.nan),
+    ]
+    assert hz.cheapest(runs, 1e-3).wall == 1.0
+    assert hz.cheapest(runs, 1e-10).wall == 3.0  # the cheaper of the two that reach it, not the finer
+    assert hz.cheapest(runs, 1e-12) is None
+    assert hz.cheapest([R("a", 0.1, 1e-12, failed="diverged")], 1e-6) is None
+    env = hz.envelope(runs, (1e-4, 1e-10, 1e-12))
+    assert env == {1e-4: 1.0, 1e-10: 3.0, 1e-12: None}
+    assert hz.LEVELS[0] == 1e-4 and hz.LEVELS[-1] == pytest.approx(1e-12) and len(hz.LEVELS) == 9
+
+
+def test_when_a_scan_stops() -> None:
+    nan = math.nan
+    assert hz.should_refine([], [], 1e-13, 5.0)
+    assert not hz.should_refine([1e-3], [6.0], 1e-13, 5.0)  # the last run took longer than the cap
+    assert not hz.should_refine([1e-3, 1e-14], [0.1, 0.2], 1e-13, 5.0)  # below the floor
+    # O(1) errors of coarse steps and a few failures do not stop the scan
+    assert hz.should_refine([1.2, 0.6, 1.1, 0.9, nan], [0.1] * 5, 1e-13, 5.0)
+    # a single noisy setting does not stop it, three without a factor 2 do
+    assert hz.should_refine([1e-6, 1e-8, 2e-8, 1e-9], [0.1] * 4, 1e-13, 5.0)
+    assert not hz.should_refine([1e-6, 1e-12, 2e-12, 1.5e-12, 1e-12], [0.1] * 5, 1e-13, 5.0)
+    # a lucky coarse error (above 1e-9) does not stop it either
+    assert hz.should_refine([1e-2, 1e-6, 5e-5, 7e-6, 6e-6], [0.1] * 5, 1e-13, 5.0)
+    assert hz.should_refine([nan] * 12, [0.01] * 12, 1e-13, 5.0)
+    assert not hz.should_refine([nan] * 20, [0.01] * 20, 1e-13, 5.0)
+
+
+def test_verdicts_and_formatting() -> None:
+    assert hz.ratio_verdict(1.3, 1.2) == "PASS"
+    assert hz.ratio_verdict(0.83, 1.2) == "MISS"
+    assert hz.ratio_verdict(0.15, 0.2, higher_is_better=False) == "PASS"
+    assert hz.ratio_verdict(None, 1.0) == "n/a"
+    assert hz.ratio_verdict(math.nan, 1.0) == "n/a"
+    assert hz.fmt_sci(3.19e7) == "3.19 × 10⁷"
+    assert hz.fmt_sci(9.999e-5) == "1.00 × 10⁻⁴"
+    assert hz.fmt_time(2.5e-6) == "2.5 µs" and hz.fmt_time(0.0123) == "12.3 ms" and hz.fmt_time(None) == "—"
+    assert run.fixed_settings(False) == sorted(run.fixed_settings(False))
+    rt = run.adaptive_settings(False)
+    assert rt[0] == pytest.approx(1e-3) and rt[-1] == pytest.approx(1e-14)
+
+
+def test_markdown_between_markers() -> None:
+    table = hz.markdown_table(["a", "b"], [[1, "x|y"]])
+    assert table.splitlines() == ["| a | b |", "|---|---|", "| 1 | x\\|y |"]
+    doc = f"# Perf\n\nintro\n\n## Against peers\n{hz.BEGIN}\nold\n{hz.END}\n\n## After\nkept\n"
+    new = hz.replace_between_markers(doc, "| new |")
+    assert "old" not in new and "| new |" in new and new.endswith("## After\nkept\n")
+    assert hz.replace_between_markers(new, "| new |") == new  # idempotent
+    appended = hz.replace_between_markers("# Perf\n", "body")
+    assert appended.endswith(f"## Against peers\n{hz.BEGIN}\nbody\n{hz.END}\n")
+    with pytest.raises(ValueError):
+        hz.replace_between_markers(f"{hz.BEGIN}\nno end\n", "body")
+    with pytest.raises(ValueError):
+        hz.replace_between_markers(f"{hz.END}\n{hz.BEGIN}\n", "body")
+
+
+def test_median_time_repeats() -> None:
+    calls = []
+    wall, out, n = hz.median_time(lambda: calls.append(1) or len(calls), repeats=4)
+    assert n == 4 and out == 4 and wall >= 0
+    assert hz.repeats_for(2.0) == 1 and hz.repeats_for(1e-4) == 5 and hz.repeats_for(0.4, budget=1.0) == 3
+
+
+def test_quaternion_for_mujoco_start() -> None:
+    down = np.array([0.0, 0.0, -1.0])
+    for target in ([0.866, 0.0, -0.5], [0.0174524, 0.0, 0.9998477], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]):
+        b = np.array(target) / np.linalg.norm(target)
+        w, *xyz = run._quat_rotating(down, b)
+        u = np.array(xyz)
+        rotated = down + 2 * w * np.cross(u, down) + 2 * np.cross(u, np.cross(u, down))
+        assert np.allclose(rotated, b, atol=1e-12)
+
+
+def _case(name: str) -> object:
+    z = np.zeros(3)
+    return run.Case(name, 1.0, 1.0, 9.81, z, z, z, z, 0.0, 1e-14)
+
+
+def test_targets_and_report_from_synthetic_runs() -> None:
+    cases = [_case("rosette"), _case("near_top")]
+    runs = [
+        R("pendulab dop853", 0.001, 1e-11),
+        R("pendulab rattle", 0.0001, 1e-5),
+        R("C rk4", 0.01, 1e-10),
+        R("C rk4", 0.002, 1e-6),
+        R("mujoco rk4", 0.5, 1e-9),  # never reaches 1e-10: the ratio to its longest run is a bound
+        R("pendulab exact", 1e-6, 1e-14),  # not an integrator: left out of "Pendulab's best"
+        R("pendulab dop853", 0.02, 1e-11, case="near_top"),
+        R("C rk4", 0.01, 1e-11, case="near_top"),  # faster than Pendulab here: a MISS
+    ]
+    rates = {
+        "pendulab rattle (Stepper.step)": {"steps_per_s": 3.0e7},
+        "C rk4": {"steps_per_s": 2.0e7},
+        "mujoco rk4 (mj_step, nstep)": {"steps_per_s": 1.0e6},
+    }
+    ens = {
+        "n": 8,
+        "steps": 10,
+        "pendulab": {1: {"rate": 1e8}, 2: {"rate": 1.9e8}},
+        "C rk4": {2: {"rate": 2e8}},
+    }
+    rmap = {"points": 10**6, "wall": 1.5, "repeats": 3}
+    tg = {t["target"]: t for t in run.targets(runs, rates, ens, rmap, cases)}
+    assert tg["RATTLE steps/s ≥ 1.2 × C RK4 loop"]["value"] == pytest.approx(1.5)
+    assert tg["RATTLE steps/s ≥ 1.2 × C RK4 loop"]["verdict"] == "PASS"
+    assert tg["RATTLE steps/s ≥ 50 × MuJoCo (RK4)"]["verdict"] == "MISS"  # 30×
+    assert tg["ensemble ≥ 0.8 × C RK4 ensemble (2 threads)"]["verdict"] == "PASS"
+    assert tg["ensemble speed-up 1 → 2 threads ≥ 1.8"]["value"] == pytest.approx(1.9)
+    c_time = tg["time to ≤1e-10 (rosette) ≤ 0.2 × C rk4"]
+    assert c_time["value"] == pytest.approx(0.1) and c_time["verdict"] == "PASS"
+    mj = tg["time to ≤1e-10 (rosette) ≤ 0.01 × mujoco rk4"]
+    assert mj["value"] == pytest.approx(0.002) and "never reached" in mj["detail"]
+    level = next(t for k, t in tg.items() if k.startswith("every level"))
+    assert level["verdict"] == "MISS" and "near_top" in level["detail"]
+    robust = next(t for k, t in tg.items() if k.startswith("robustness"))
+    assert robust["verdict"] == "PASS"
+    assert next(t for k, t in tg.items() if "map" in k)["verdict"] == "PASS"
+
+    meta = {
+        "date": "2026-11-23 14:00 UTC",
+        "wall_total": 60.0,
+        "load_start": 3.0,
+        "load_end": 2.5,
+        "versions": {"scipy": "1", "pendulab": "0.1.0"},
+        "skipped": {"mujoco": "mujoco is not installed", "C": None},
+        "cap": 5.0,
+    }
+    body = run.markdown(runs, cases, rates, ens, rmap, list(tg.values()), meta)
+    assert "**MISS**" in body and "**PASS**" in body
+    assert "mujoco: skipped, mujoco is not installed" in body
+    assert "loaded" in body or "compiling" in body
+    doc = hz.replace_between_markers(f"# P\n{hz.BEGIN}\n{hz.END}\n", body)
+    assert doc.count("| target | measured (ratio) | goal | verdict | detail |") == 1
