@@ -214,8 +214,10 @@ def simulate_ensemble(
     interrupted = False
     with tqdm(total=1000, disable=not show, unit="‰", desc=f"{n} trajectories", leave=False) as bar:
         try:
+            pause = 1e-4  # short runs return at once; long ones are polled every _POLL_SECONDS
             while not run.done:
-                time.sleep(_POLL_SECONDS)
+                time.sleep(pause)
+                pause = min(2.0 * pause, _POLL_SECONDS)
                 bar.update(int(run.progress * 1000) - bar.n)
         except KeyboardInterrupt:
             run.cancel()
