@@ -89,8 +89,9 @@ bench-compare: build
 # bench/peers/.venv with the peers and a release wheel of this checkout's Pendulab (not the editable
 # build of .venv), then bench/peers/run.py: results/, docs/img/peers_work_precision.png and the
 # "Against peers" section of docs/performance.md (about 20 min; PEERS_ARGS=--quick for a smoke run).
-# PEERS_RUSTFLAGS="-C target-cpu=native" builds that wheel for this CPU, like the C baselines' -march=native
-# (in its own target directory, so the default build's cache is kept).
+# The wheel is built for this CPU (.cargo/config.toml: -C target-cpu=native, like the C baselines'
+# -march=native); PEERS_RUSTFLAGS="..." replaces those flags (in its own target directory, so the
+# default build's cache is kept), e.g. PEERS_RUSTFLAGS="-C target-cpu=x86-64" for the portable baseline.
 PEERS_VENV := bench/peers/.venv
 PEERS_ARGS ?=
 PEERS_RUSTFLAGS ?=

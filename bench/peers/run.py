@@ -923,7 +923,7 @@ def markdown(
         + (
             f"RUSTFLAGS=`{meta['rustflags']}`)."
             if meta.get("rustflags")
-            else "default rustc target: baseline x86-64, no `target-cpu`)."
+            else "the project's `.cargo/config.toml`: `-C target-cpu=native`, like the C baselines)."
         )
         + "".join(f" **{k}: skipped, {why}.**" for k, why in meta["skipped"].items() if why),
         "",
