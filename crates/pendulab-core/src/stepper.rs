@@ -100,8 +100,8 @@ impl<M: Model> Stepper<M> {
             Method::Rattle4 => Scheme::Composition(Composition::of_order(4)),
             Method::Rattle6 => Scheme::Composition(Composition::of_order(6)),
             Method::Rattle8 => Scheme::Composition(Composition::of_order(8)),
-            Method::Rkmk4 => Scheme::Rkmk4(Rkmk4),
-            Method::Rk4Angles => Scheme::Rk4Angles(Rk4Angles),
+            Method::Rkmk4 => Scheme::Rkmk4(Rkmk4::default()),
+            Method::Rk4Angles => Scheme::Rk4Angles(Rk4Angles::default()),
             Method::Dop853 => {
                 let h_init = if options.dt > 0.0 && options.dt.is_finite() { Some(options.dt) } else { None };
                 Scheme::Dop853(Box::new(Dop853::new(

@@ -10,19 +10,37 @@
 //! method **refuses** (returns [`Error::PoleSingularity`]) as soon as any stage comes within
 //! sin θ < [`POLE_LIMIT`] of a pole, instead of returning garbage. The sphere itself is exact (the
 //! state is rebuilt from angles). Only for the ideal pendulum with gravity along e₃.
+//!
+//! Round-off: the angles are carried between steps and advanced by compensated (Kahan) sums of
+//! the RK4 increments (φ kept in (−π, π] by subtracting 2π exactly, its low part going into the
+//! compensation); they are recomputed from (x, v) only when the state was changed from outside.
+//! Converting (x, v) → angles → (x, v) on every step, as earlier versions did, injected O(ε) per
+//! step, so that the error grew with the number of steps (×13 from dt = 1e-4 s to 1e-5 s at
+//! t = 10 s on a rosette, to 4e-13).
 
 use super::FixedStep;
 use crate::error::{Error, Result};
 use crate::model::{IdealPendulum, Model};
 use crate::state::State;
 use glam::DVec3;
+use std::f64::consts::{PI, TAU};
+
+/// 2π − TAU: the low part of 2π (2π = TAU + TAU_LO to about 1e-32).
+const TAU_LO: f64 = 2.449_293_598_294_706_4e-16;
 
 /// Smallest sin θ the angle method accepts (about 0.57° from a pole).
 pub const POLE_LIMIT: f64 = 1e-2;
 
 /// RK4 in (θ, φ, θ̇, φ̇), 4 evaluations per step.
+///
+/// Carries the angles y and their Kahan compensations between steps; `last` is the state the
+/// previous step returned, to recognise a state changed from outside.
 #[derive(Debug, Clone, Copy, Default)]
-pub struct Rk4Angles;
+pub struct Rk4Angles {
+    y: [f64; 4],
+    comp: [f64; 4],
+    last: Option<State>,
+}
 
 /// (θ, φ, θ̇, φ̇) of a Cartesian state (see [`State::from_angles`] for the inverse).
 pub fn to_angles(s: &State, length: f64) -> [f64; 4] {
@@ -45,6 +63,14 @@ fn guard(t: f64, y: &[f64; 4]) -> Result<()> {
 impl Rk4Angles {
     /// One RK4 step in angles for the ideal pendulum, refusing near a pole.
     pub fn step_angles(model: &IdealPendulum, t: f64, y: [f64; 4], h: f64) -> Result<[f64; 4]> {
+        let dy = Self::increment(model, t, y, h)?;
+        let y1 = std::array::from_fn(|i| y[i] + dy[i]);
+        guard(t + h, &y1)?;
+        Ok(y1)
+    }
+
+    /// The RK4 increment y₁ − y₀ (h/6)(k₁ + 2k₂ + 2k₃ + k₄), refusing near a pole.
+    fn increment(model: &IdealPendulum, t: f64, y: [f64; 4], h: f64) -> Result<[f64; 4]> {
         let add = |a: &[f64; 4], k: &[f64; 4], c: f64| std::array::from_fn::<f64, 4, _>(|i| a[i] + c * k[i]);
         guard(t, &y)?;
         let k1 = model.angle_rhs(y);
@@ -57,10 +83,17 @@ impl Rk4Angles {
         let y4 = add(&y, &k3, h);
         guard(t + h, &y4)?;
         let k4 = model.angle_rhs(y4);
-        let y1 = std::array::from_fn(|i| y[i] + h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i]));
-        guard(t + h, &y1)?;
-        Ok(y1)
+        Ok(std::array::from_fn(|i| h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])))
     }
+}
+
+/// Kahan summation: returns s + d with the running compensation `c` (true sum ≈ result − c).
+#[inline(always)]
+fn compensated_add(s: f64, d: f64, c: &mut f64) -> f64 {
+    let y = d - *c;
+    let t = s + y;
+    *c = (t - s) - y;
+    t
 }
 
 impl FixedStep for Rk4Angles {
@@ -68,14 +101,35 @@ impl FixedStep for Rk4Angles {
         // T-2.5 is the ideal pendulum's angle form: rebuild it from the model's parameters.
         let ideal = IdealPendulum::from_params(*model.params());
         let l = ideal.params().length;
-        let y = to_angles(s, l);
+        if self.last != Some(*s) {
+            // A new state, or one changed from outside: start from its angles.
+            *self = Self { y: to_angles(s, l), ..Self::default() };
+        }
+        let y = self.y;
         guard(t, &y)?;
-        let [theta, phi, theta_dot, phi_dot] = Self::step_angles(&ideal, t, y, h)?;
+        let dy = Self::increment(&ideal, t, y, h)?;
+        let mut comp = self.comp;
+        let mut y1: [f64; 4] = std::array::from_fn(|i| compensated_add(y[i], dy[i], &mut comp[i]));
+        // φ back into (−π, π]: φ ∓ TAU is exact here (Sterbenz), TAU_LO goes into the compensation.
+        if y1[1] > PI {
+            y1[1] -= TAU;
+            comp[1] += TAU_LO;
+        } else if y1[1] <= -PI {
+            y1[1] += TAU;
+            comp[1] -= TAU_LO;
+        }
+        guard(t + h, &y1)?;
+        let [theta, phi, theta_dot, phi_dot] = y1;
         *s = State::from_angles(ideal.params(), theta, phi, theta_dot, phi_dot)?;
+        (self.y, self.comp, self.last) = (y1, comp, Some(*s));
         Ok(())
     }
 
     fn evals_per_step(&self) -> u64 {
         4
+    }
+
+    fn reset(&mut self) {
+        *self = Self::default();
     }
 }

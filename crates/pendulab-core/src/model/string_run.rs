@@ -73,7 +73,7 @@ impl Scheme {
             Method::Rattle4 => Scheme::Composition(Composition::of_order(4)),
             Method::Rattle6 => Scheme::Composition(Composition::of_order(6)),
             Method::Rattle8 => Scheme::Composition(Composition::of_order(8)),
-            Method::Rkmk4 => Scheme::Rkmk4(Rkmk4),
+            Method::Rkmk4 => Scheme::Rkmk4(Rkmk4::default()),
             _ => return Err(Error::UnsupportedModel { method: method.info().name, model: "string" }),
         })
     }
