@@ -159,8 +159,22 @@ class Trajectory:
 
     @property
     def phi(self) -> FloatArray:
-        """Azimuth atan2(y, x) [rad], unwrapped to be continuous."""
-        return np.unwrap(np.arctan2(self.x[:, 1], self.x[:, 0]))
+        """Azimuth atan2(y, x) [rad], continuous. Between two samples where the vertical angular
+        momentum per mass ℓ₃ = x v_y − y v_x has the same sign at both ends, φ moves in that sign's
+        direction (φ̇ = ℓ₃/ρ², T-2.5), so a step that looks backwards is taken forwards by 2π: near a
+        pole φ turns by up to π between samples and a plain unwrap (nearest branch) picks the wrong
+        way half the time. Elsewhere (ℓ₃ ≈ 0 or changing sign) the nearest branch is taken."""
+        x, v = self.x, self.v
+        raw = np.arctan2(x[:, 1], x[:, 0])
+        if len(raw) < 2:
+            return raw
+        step = np.angle(np.exp(1j * np.diff(raw)))  # principal value in (−π, π]
+        l3 = x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0]
+        tiny = 1e-12 * float(np.max(np.linalg.norm(x, axis=1) * np.linalg.norm(v, axis=1), initial=0.0))
+        sign = np.where(np.abs(l3) > tiny, np.sign(l3), 0.0)
+        turn = np.where(sign[:-1] == sign[1:], sign[1:], 0.0)
+        step = np.where(turn * step < -1e-9, step + turn * 2.0 * np.pi, step)
+        return np.concatenate([[raw[0]], raw[0] + np.cumsum(step)])
 
     def state(self, i: int) -> State:
         """The i-th saved state."""

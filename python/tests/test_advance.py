@@ -56,7 +56,27 @@ def test_near_top_skimming_the_pole() -> None:
     assert abs(m.delta_phi - sol.azimuth_advance) <= 1e-6
     phi = monotone_azimuth(tr.x, math.copysign(1.0, tr.j3[0]))
     assert np.all(np.diff(phi) >= -1e-9)
-    assert np.max(np.abs(np.diff(tr.phi))) > 3.0  # the naive unwrap meets jumps of ≈ π here
+    # Trajectory.phi follows the sign of ℓ₃ = x v_y − y v_x: the same as the monotone azimuth
+    assert np.allclose(tr.phi, phi, rtol=0, atol=1e-12)
+
+
+def test_trajectory_phi_turns_with_the_angular_momentum() -> None:
+    """The conical orbit at θ = 60° turns at Ω = (g/(l cos θ))^{1/2} = 4.43 rad/s; sampled every
+    0.9 s it turns 3.99 rad > π between samples: a plain unwrap (nearest branch) then runs backwards,
+    Trajectory.phi follows sign(ℓ₃) and gives Ω t (to the integrator's error)."""
+    p = pl.Pendulum()
+    theta = math.radians(60.0)
+    omega = math.sqrt(p.g / (p.length * math.cos(theta)))
+    tr = pl.simulate(
+        p, p.state_from_angles(theta=theta, phi_dot=omega), 9.0, method="rattle8", dt=1e-3, save_every=900
+    )
+    raw_unwrap = np.unwrap(np.arctan2(tr.x[:, 1], tr.x[:, 0]))
+    assert np.all(np.diff(raw_unwrap) < 0)  # the old Trajectory.phi: backwards at every step
+    assert np.allclose(tr.phi - tr.phi[0], omega * tr.t, rtol=0, atol=1e-8)
+    back = pl.simulate(
+        p, p.state_from_angles(theta=theta, phi_dot=-omega), 9.0, method="rattle8", dt=1e-3, save_every=900
+    )
+    assert np.allclose(back.phi - back.phi[0], -omega * back.t, rtol=0, atol=1e-8)
 
 
 def test_mirrored_gravity_and_reversed_spin() -> None:
