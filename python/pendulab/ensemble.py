@@ -94,7 +94,12 @@ def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:
 
 
 def _per_trajectory(name: str, value: Any, default: float, n: int) -> FloatArray:
-    a = np.atleast_1d(np.asarray(default if value is None else value, dtype=np.float64)).ravel()
+    try:
+        a = np.atleast_1d(np.asarray(default if value is None else value, dtype=np.float64)).ravel()
+    except (TypeError, ValueError):
+        raise _core.InvalidInputError(
+            f"{name} = {value!r:.80}: give a number or one number per trajectory ({n})"
+        ) from None
     if a.size not in (1, n):
         raise _core.InvalidInputError(f"{name} must be one value or one per trajectory ({n}), got {a.size}")
     return np.ascontiguousarray(a)

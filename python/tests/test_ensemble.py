@@ -64,6 +64,8 @@ def test_bad_input(pendulum: pl.Pendulum) -> None:
         pl.simulate_ensemble(pendulum, start, t_end=1.0, damping=-0.5)
     with pytest.raises(pl.InvalidInputError, match="damping"):
         pl.simulate_ensemble(pendulum, start, t_end=1.0, damping=np.nan)
+    with pytest.raises(pl.InvalidInputError, match="damping = 'a'"):
+        pl.simulate_ensemble(pendulum, start, t_end=1.0, damping="a")
     with pytest.raises(pl.InvalidInputError, match="settle_angle"):
         pl.simulate_ensemble(pendulum, start, t_end=1.0, settle_angle=-0.1)
 
