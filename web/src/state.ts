@@ -86,6 +86,15 @@ export function interpolateFrames(a: Frame, b: Frame, s: number): Frame {
   };
 }
 
+/** Whether the status notice `next` starts a new trajectory, so that the trail (and the frames and plots)
+ *  must break there rather than join the old path to the new one with a chord: the first status, a new
+ *  epoch (reset, set_state — dragging the bob —, a scenario or URL loaded, new parameters or model), or
+ *  time gone back behind the newest frame held, `latestT` (a server session that started afresh, whose
+ *  epoch count restarts). Within one trajectory the server's status time never falls behind its frames. */
+export function startsNewTrajectory(prev: Status | null, next: Status, latestT: number | null): boolean {
+  return prev === null || next.epoch !== prev.epoch || (latestT !== null && next.t < latestT);
+}
+
 export class LabStore {
   status: Status | null = null;
   /** Recent frames of the current epoch, oldest first (for interpolation). */
@@ -110,6 +119,8 @@ export class LabStore {
 
   private historyStride = 1;
   private historyCount = 0;
+  /** The connection was lost: the next status comes from another server session (a new trajectory). */
+  private disconnected = false;
   private listeners = new Set<Listener>();
 
   subscribe(fn: Listener): () => void {
@@ -121,11 +132,13 @@ export class LabStore {
     for (const fn of this.listeners) fn();
   }
 
-  /** A status notice. A new epoch (new state, parameters, scenario, reset) clears frames, trail and plots. */
+  /** A status notice. A new trajectory (startsNewTrajectory, or the first status after a reconnection)
+   *  clears frames, trail and plots: the trail never joins two trajectories. */
   onStatus(s: Status): void {
-    const newEpoch = this.status === null || s.epoch !== this.status.epoch;
+    const restart = this.disconnected || startsNewTrajectory(this.status, s, this.latest()?.t ?? null);
+    this.disconnected = false;
     this.status = s;
-    if (newEpoch) this.clear();
+    if (restart) this.clear();
     this.emit();
   }
 
@@ -152,6 +165,7 @@ export class LabStore {
 
   setConnected(c: boolean): void {
     this.connected = c;
+    if (!c) this.disconnected = true;
     this.emit();
   }
 

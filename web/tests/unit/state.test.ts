@@ -1,6 +1,6 @@
 import { beforeEach, describe, expect, it } from 'vitest';
 import type { Frame, Status } from '../../src/protocol';
-import { BUFFER_MAX, HISTORY_MAX, LabStore, TRAIL_MAX, interpolateFrames } from '../../src/state';
+import { BUFFER_MAX, HISTORY_MAX, LabStore, TRAIL_MAX, interpolateFrames, startsNewTrajectory } from '../../src/state';
 
 function status(over: Partial<Status> = {}): Status {
   return {
@@ -72,7 +72,7 @@ describe('LabStore', () => {
 
   it('shows the newest frame while paused', () => {
     store.onFrames([frame(0), frame(0.5)]);
-    store.onStatus(status({ paused: true }));
+    store.onStatus(status({ paused: true, t: 0.5 }));
     expect(store.advancePlayhead(0)).toBe(0.5);
     expect(store.displayed()).toEqual(frame(0.5));
   });
@@ -105,7 +105,7 @@ describe('LabStore', () => {
       phases: null,
       phases_note: null,
     });
-    store.onStatus(status({ paused: true })); // same epoch
+    store.onStatus(status({ paused: true, t: 0.1 })); // same epoch (the server's t: its newest frame's)
     expect(store.frames).toHaveLength(2);
     expect(store.exact).not.toBeNull();
     store.onStatus(status({ epoch: 1 }));
@@ -140,6 +140,47 @@ describe('LabStore', () => {
     const ts = store.history.t;
     expect(ts.every((t, i) => i === 0 || t > (ts[i - 1] as number))).toBe(true);
     expect(store.trajectory).toHaveLength(n);
+  });
+
+  it('decides where the trail breaks: a new epoch, or time gone back behind the newest frame', () => {
+    const s0 = status({ epoch: 3, t: 2 });
+    expect(startsNewTrajectory(null, s0, null)).toBe(true);
+    expect(startsNewTrajectory(s0, status({ epoch: 3, t: 2, paused: true }), 2)).toBe(false);
+    expect(startsNewTrajectory(s0, status({ epoch: 4, t: 2 }), 2)).toBe(true);
+    expect(startsNewTrajectory(s0, status({ epoch: 3, t: 0 }), 2)).toBe(true);
+    expect(startsNewTrajectory(s0, status({ epoch: 3, t: 0 }), null)).toBe(false);
+  });
+
+  it('draws no segment joining two epochs: the trail holds only the new epoch', () => {
+    store.onFrames([0, 1, 2].map((t) => frame(t)));
+    store.onStatus(status({ epoch: 1, t: 2 })); // e.g. set_state (dragging the bob) at t = 2
+    const jumped = { ...frame(2), x: [0, 0, -1] as [number, number, number] };
+    store.onFrames([jumped, { ...jumped, t: 2.1 }]);
+    store.playT = 2.1;
+    expect(store.trailWindow(10).map((f) => [f.t, f.x[2]])).toEqual([
+      [2, -1],
+      [2.1, -1],
+    ]);
+  });
+
+  it('breaks the trail when time goes back within one epoch (a session started afresh)', () => {
+    store.onFrames([0, 1, 2, 3].map((t) => frame(t)));
+    store.onStatus(status({ epoch: 0, t: 0 })); // the server's epoch count restarted: same number, t back
+    store.onFrames([frame(0), frame(0.1)]);
+    expect(store.trail.map((f) => f.t)).toEqual([0, 0.1]);
+    expect(store.frames.map((f) => f.t)).toEqual([0, 0.1]);
+    expect(store.playT).toBe(0);
+  });
+
+  it('breaks the trail after a reconnection even with the same epoch and a later time', () => {
+    store.onFrames([frame(0), frame(1)]);
+    store.setConnected(false);
+    store.setConnected(true);
+    store.onStatus(status({ epoch: 0, t: 5 }));
+    store.onFrames([frame(5), frame(5.1)]);
+    expect(store.trail.map((f) => f.t)).toEqual([5, 5.1]);
+    store.onStatus(status({ epoch: 0, t: 5.1, paused: true })); // an ordinary status: no break
+    expect(store.trail).toHaveLength(2);
   });
 
   it('gives a trail window ending at the playhead', () => {
