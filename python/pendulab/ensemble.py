@@ -108,6 +108,13 @@ def _per_trajectory(name: str, value: Any, default: float, n: int) -> FloatArray
 _DAMPED_ONLY = {"damping", "forcing_x", "forcing_y", "forcing_z", "forcing_omega", "forcing_phase"}
 
 
+def max_sway(z_min: FloatArray, z_max: FloatArray, g: FloatArray, length: FloatArray) -> FloatArray:
+    """The largest angle [rad] from the stable equilibrium −sign(g) e₃ (the bottom for g ≥ 0, the top
+    for g < 0) reached by trajectories whose heights ranged over [z_min, z_max] [m]."""
+    cos_sway = np.where(g < 0.0, z_min, -z_max) / length
+    return np.arccos(np.clip(cos_sway, -1.0, 1.0))
+
+
 def model_damping(pendulum: Pendulum) -> float:
     """The linear damping c [1/s] of an ideal or ``damped`` pendulum the kernel can run, else an error."""
     if pendulum.is_ideal:
@@ -242,9 +249,7 @@ def simulate_ensemble(
         scale = np.maximum(np.abs(gs) * lengths, 1e-300)
         summ["energy_drift"] = (summ["e_max"] - summ["e_min"]) / scale
         summ["j3_drift"] = summ["j3_max"] - summ["j3_min"]
-        # the farthest point from the stable equilibrium −sign(g) e₃ (g = 0: from the bottom)
-        cos_sway = np.where(gs < 0.0, summ["z_min"], -summ["z_max"]) / lengths
-        summ["max_sway"] = np.arccos(np.clip(cos_sway, -1.0, 1.0))
+        summ["max_sway"] = max_sway(summ["z_min"], summ["z_max"], gs, lengths)
     meta = {"method": "rattle", "dt": dt, "t_end": t_end, "pendulum": pendulum.params(), "n": n}
     if settle is not None:
         meta["settle_angle"] = settle

@@ -44,7 +44,7 @@ import numpy as np
 from tqdm.auto import tqdm
 
 from . import _core
-from .ensemble import model_damping
+from .ensemble import max_sway, model_damping
 from .model import FloatArray, Pendulum
 from .sweep_backends import Dask, Threads, connect, drive
 from .sweep_design import AXES, INITIAL_AXES, Design, as_design, check_axis_name
@@ -308,9 +308,7 @@ def _simulate(
             out[name] = np.ascontiguousarray(xf[:, k])
             out["v" + name] = np.ascontiguousarray(vf[:, k])
     if "max_sway" in spec.quantities:
-        # from the stable equilibrium −sign(g) e₃ (the bottom for g >= 0)
-        cos_sway = np.where(g < 0.0, res["z_min"], -res["z_max"]) / length
-        out["max_sway"] = np.arccos(np.clip(cos_sway, -1.0, 1.0))
+        out["max_sway"] = max_sway(res["z_min"], res["z_max"], g, length)
     if "settle_time" in spec.quantities:
         out["settle_time"] = res["settle_time"]
     if "energy_drift" in spec.quantities:
