@@ -98,3 +98,19 @@ def test_spring_is_not_a_pendulum() -> None:
         pl.Pendulum(model="spring")
     with pytest.raises(pl.ScenarioError, match="not a pendulum"):
         pl.load_scenario(SPRING_TOML).pendulum()
+
+
+def test_a_stiff_spring_becomes_the_rod() -> None:
+    """As k → ∞ the swinging spring (rest length l, started on the rod's state) follows the rigid
+    pendulum of length l: the largest distance between the two bobs over 2 s falls like 1/k (the
+    stretch and the bouncing it starts are O(T/k)); measured ratios for k/m = 1e4, 1e5, 1e6 1/s²."""
+    p = pl.Pendulum(length=1.0, g=9.81)
+    s = p.state_from_angles(theta=1.0, phi_dot=2.0)
+    rod = pl.simulate(p, s, 2.0, method="rattle8", dt=1e-4)
+    dev = []
+    for k_over_m in (1e4, 1e5, 1e6):
+        tr = pl.simulate_spring(pl.SwingingSpring(k_over_m, 1.0), s.x, s.v, 2.0, dt=1e-4, order=4)
+        assert np.array_equal(tr.t, rod.t)
+        dev.append(float(np.max(np.linalg.norm(tr.x - rod.x, axis=1))))
+    assert 9.5 < dev[0] / dev[1] < 10.5 and 9.5 < dev[1] / dev[2] < 10.5, dev
+    assert dev[2] < 1e-4  # m, at k/m = 1e6 1/s²
