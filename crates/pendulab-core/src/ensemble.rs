@@ -38,9 +38,9 @@ struct Block {
     /// e^{−c dt/2} per lane (1 without damping) and whether any lane is damped.
     decay_half: Lanes,
     damped: bool,
-    /// −sign(g)/l per lane (cos sway = z · down) and cos of the settle threshold.
+    /// −sign(g)/l per lane (cos sway = z · down) and cos of the settle threshold (all lanes).
     down: Lanes,
-    cos_settle: Lanes,
+    cos_settle: f64,
     /// Index of the last sample whose sway exceeded the threshold (−1: none).
     last_out: Lanes,
     /// Number of real lanes (the rest repeat lane 0 and are ignored).
@@ -86,7 +86,7 @@ impl Block {
     #[inline(always)]
     fn track_settle(&mut self, k: f64) {
         for i in 0..LANES {
-            let out = self.x[2][i] * self.down[i] < self.cos_settle[i];
+            let out = self.x[2][i] * self.down[i] < self.cos_settle;
             self.last_out[i] = if out { k } else { self.last_out[i] };
         }
     }
@@ -251,14 +251,11 @@ pub fn run_with(
     for (k, s) in starts.iter().enumerate() {
         let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
         State::on_tangent_bundle(&p, s.x, s.v)?;
-        let c = pick(damping, k);
-        if !c.is_finite() || c < 0.0 {
-            return Err(Error::InvalidParameter {
-                name: "damping",
-                value: c,
-                allowed: "a finite damping rate c >= 0 [1/s]",
-            });
-        }
+        crate::error::require_non_negative(
+            "damping",
+            pick(damping, k),
+            "a finite damping rate c >= 0 [1/s]",
+        )?;
     }
     let cos_settle = match extras.settle_angle {
         None => f64::NEG_INFINITY,
@@ -298,7 +295,7 @@ pub fn run_with(
                 decay_half: lanes(&|k| (-pick(damping, k) * (0.5 * dt)).exp()),
                 damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
                 down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
-                cos_settle: [cos_settle; LANES],
+                cos_settle,
                 last_out: [-1.0; LANES],
                 len,
                 summary: std::array::from_fn(|r| {

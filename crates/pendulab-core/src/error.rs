@@ -183,6 +183,15 @@ pub fn require_positive(name: &'static str, value: f64, allowed: &'static str) -
     }
 }
 
+/// Checks that `value` is finite and ≥ 0.
+pub fn require_non_negative(name: &'static str, value: f64, allowed: &'static str) -> Result<f64> {
+    if value.is_finite() && value >= 0.0 {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter { name, value, allowed })
+    }
+}
+
 /// Checks that `value` is finite.
 pub fn require_finite(name: &'static str, value: f64, allowed: &'static str) -> Result<f64> {
     if value.is_finite() {

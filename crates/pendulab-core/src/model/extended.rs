@@ -23,7 +23,7 @@
 //! conformal symplectic (the symplectic form contracts by exactly e^{−ch} per step).
 
 use super::Model;
-use crate::error::{Error, Result};
+use crate::error::{require_non_negative, Error, Result};
 use crate::state::Params;
 use glam::DVec3;
 
@@ -64,14 +64,6 @@ fn unit(name: &'static str, d: DVec3) -> Result<DVec3> {
     }
 }
 
-fn non_negative(name: &'static str, value: f64, allowed: &'static str) -> Result<f64> {
-    if value.is_finite() && value >= 0.0 {
-        Ok(value)
-    } else {
-        Err(Error::InvalidParameter { name, value, allowed })
-    }
-}
-
 impl Extended {
     /// The ideal pendulum with these parameters (gravity along −e₃, nothing else).
     pub fn ideal(params: Params) -> Self {
@@ -94,14 +86,15 @@ impl Extended {
     /// Linear damping c ≥ 0 [1/s] and quadratic drag c_q ≥ 0 [1/m].
     pub fn with_damping(mut self, damping: f64, drag: f64) -> Result<Self> {
         self.damping =
-            non_negative("damping", damping, "the damping rate c must be a finite number >= 0 1/s")?;
-        self.drag = non_negative("drag", drag, "the quadratic drag c_q must be a finite number >= 0 1/m")?;
+            require_non_negative("damping", damping, "the damping rate c must be a finite number >= 0 1/s")?;
+        self.drag =
+            require_non_negative("drag", drag, "the quadratic drag c_q must be a finite number >= 0 1/m")?;
         Ok(self)
     }
 
     /// A periodic force A cos(ω t + ψ) e per unit mass (A ≥ 0 in m/s², ω in rad/s, ψ in rad).
     pub fn with_forcing(mut self, amplitude: f64, omega: f64, phase: f64, direction: DVec3) -> Result<Self> {
-        let amplitude = non_negative("forcing_amplitude", amplitude, "a finite amplitude >= 0 m/s²")?;
+        let amplitude = require_non_negative("forcing_amplitude", amplitude, "a finite amplitude >= 0 m/s²")?;
         crate::error::require_finite("forcing_omega", omega, "a finite angular frequency in rad/s")?;
         crate::error::require_finite("forcing_phase", phase, "a finite phase in rad")?;
         let direction = unit("forcing_direction", direction)?;
