@@ -15,6 +15,9 @@
 //! checked every [`CHECK_EVERY`] steps. SI units throughout.
 
 use crate::error::{Error, Result};
+use crate::integrate::rattle_kernel::{
+    advance_position, advance_velocity, fmadd3, PositionQuadratic, ProjectionPolynomial,
+};
 use crate::state::State;
 use glam::DVec3;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -33,7 +36,9 @@ struct Block {
     v: [Lanes; 3],
     cx: [Lanes; 3],
     cv: [Lanes; 3],
-    length: Lanes,
+    /// l² and 1/l² per lane (as the single path computes them).
+    l2: Lanes,
+    inv_l2: Lanes,
     g: Lanes,
     /// e^{−c dt/2} per lane (1 without damping) and whether any lane is damped.
     decay_half: Lanes,
@@ -47,14 +52,6 @@ struct Block {
     len: usize,
     /// Per-lane summary: min z, max z, min E/m, max E/m, min J₃/m, max J₃/m.
     summary: [Lanes; 6],
-}
-
-#[inline(always)]
-fn kahan(s: f64, d: f64, c: &mut f64) -> f64 {
-    let y = d - *c;
-    let t = s + y;
-    *c = (t - s) - y;
-    t
 }
 
 impl Block {
@@ -91,40 +88,55 @@ impl Block {
         }
     }
 
-    /// One undamped RATTLE step of every lane.
+    /// One undamped RATTLE step of every lane, with the single-trajectory path's arithmetic
+    /// (`integrate::rattle_kernel`, uniform field k = −(h/2) g e₃). Pass 1 finds μ from the series
+    /// for all lanes; the rare lanes outside its range (large steps) take the closed form; pass 2
+    /// updates x and v. Both passes are branch-free over the lanes.
     #[inline(always)]
     fn rattle(&mut self, h: f64) {
         let half = 0.5 * h;
-        for i in 0..LANES {
-            let l = self.length[i];
-            let inv_l2 = 1.0 / (l * l);
-            let (x0, y0, z0) = (self.x[0][i], self.x[1][i], self.x[2][i]);
-            let (vx, vy, vz) = (self.v[0][i], self.v[1][i], self.v[2][i]);
-            let k0 = -self.g[i] * half;
-            let (wx, wy, wz) = (vx + 0.0 * half, vy + 0.0 * half, vz + k0);
-            let q = x0 * x0 + y0 * y0 + z0 * z0;
-            let xw = x0 * wx + y0 * wy + z0 * wz;
-            let b = q + h * xw;
-            let c = (q - l * l) + h * (2.0 * xw + h * (wx * wx + wy * wy + wz * wz));
-            let disc = b * b - q * c;
-            // no branch: a failed step (disc < 0, h far too large) gives NaN, caught after the run
-            let mu = -c / (h * (b + disc.sqrt()));
-            let (hx, hy, hz) = (wx + x0 * mu, wy + y0 * mu, wz + z0 * mu);
-            let x1 = kahan(x0, hx * h, &mut self.cx[0][i]);
-            let y1 = kahan(y0, hy * h, &mut self.cx[1][i]);
-            let z1 = kahan(z0, hz * h, &mut self.cx[2][i]);
-            let (ux, uy, uz) = (hx + 0.0 * half, hy + 0.0 * half, hz + k0);
-            let p = (x1 * ux + y1 * uy + z1 * uz) * inv_l2;
-            let dvx = 0.0 * half + x0 * mu + 0.0 * half - x1 * p;
-            let dvy = 0.0 * half + y0 * mu + 0.0 * half - y1 * p;
-            let dvz = k0 + z0 * mu + k0 - z1 * p;
-            self.x[0][i] = x1;
-            self.x[1][i] = y1;
-            self.x[2][i] = z1;
-            self.v[0][i] = kahan(vx, dvx, &mut self.cv[0][i]);
-            self.v[1][i] = kahan(vy, dvy, &mut self.cv[1][i]);
-            self.v[2][i] = kahan(vz, dvz, &mut self.cv[2][i]);
+        let mut mu: Lanes = [0.0; LANES];
+        let mut series_ok = true;
+        for (i, m) in mu.iter_mut().enumerate() {
+            let (x0, w, _) = self.lane(i, half);
+            let quad = PositionQuadratic::new(x0, w, h, self.l2[i]);
+            let (series, ok) = quad.multiplier_series(h);
+            *m = series;
+            series_ok &= ok;
         }
+        if !series_ok {
+            for (i, m) in mu.iter_mut().enumerate() {
+                let (x0, w, _) = self.lane(i, half);
+                let quad = PositionQuadratic::new(x0, w, h, self.l2[i]);
+                *m = quad.multiplier(h);
+            }
+        }
+        for (i, &mu) in mu.iter().enumerate() {
+            let (x0, w, kick) = self.lane(i, half);
+            let quad = PositionQuadratic::new(x0, w, h, self.l2[i]);
+            let p = ProjectionPolynomial::new(x0, w, kick, &quad, h, self.inv_l2[i]).at(mu);
+            let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
+            let mut cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
+            let mut cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
+            let x1 = advance_position(x0, fmadd3(x0, mu, w), h, &mut cx);
+            let v1 = advance_velocity(v0, kick + kick, x0, mu, x1, p, &mut cv);
+            for c in 0..3 {
+                self.x[c][i] = x1[c];
+                self.v[c][i] = v1[c];
+                self.cx[c][i] = cx[c];
+                self.cv[c][i] = cv[c];
+            }
+        }
+    }
+
+    /// Lane `i`'s position x₀, w = v₀ + k and the kick k = (h/2)(−g e₃) (the ideal model's
+    /// `kick_acceleration · h/2`, same arithmetic).
+    #[inline(always)]
+    fn lane(&self, i: usize, half: f64) -> (DVec3, DVec3, DVec3) {
+        let x0 = DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]);
+        let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
+        let kick = DVec3::new(0.0, 0.0, -self.g[i]) * half;
+        (x0, v0 + kick, kick)
     }
 
     #[inline(always)]
@@ -290,7 +302,8 @@ pub fn run_with(
                 v: [0, 1, 2].map(|c| lanes(&|k| starts[k].v[c])),
                 cx: [[0.0; LANES]; 3],
                 cv: [[0.0; LANES]; 3],
-                length: lanes(&|k| pick(length, k)),
+                l2: lanes(&|k| pick(length, k) * pick(length, k)),
+                inv_l2: lanes(&|k| 1.0 / (pick(length, k) * pick(length, k))),
                 g: lanes(&|k| pick(g, k)),
                 decay_half: lanes(&|k| (-pick(damping, k) * (0.5 * dt)).exp()),
                 damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),

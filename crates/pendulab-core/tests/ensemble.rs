@@ -3,7 +3,9 @@
 //! and bad input. SI units; ideal pendulum.
 
 use pendulab_core::ensemble::{run, EnsembleSave, LANES};
+use pendulab_core::integrate::rattle_kernel::PositionQuadratic;
 use pendulab_core::model::energy;
+use pendulab_core::DVec3;
 use pendulab_core::{IdealPendulum, Method, Model, SolveOptions, State, Stepper};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
@@ -42,6 +44,31 @@ fn every_trajectory_matches_the_single_path_bit_for_bit() {
         assert!(sum.energy_per_mass.0 <= e && e <= sum.energy_per_mass.1);
         assert!(sum.z.0 >= -lengths[k] - 1e-12 && sum.z.1 <= lengths[k] + 1e-12);
         assert!(sum.j3_per_mass.1 - sum.j3_per_mass.0 < 1e-13, "J₃ not conserved: {sum:?}");
+    }
+}
+
+#[test]
+fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bit() {
+    // dt = 20 ms: the slow lanes stay within the multiplier's Catalan series (|z| ≤ 1e-3), the fast
+    // ones (up to 12 m/s) do not, so a block mixes both (integrate::rattle_kernel)
+    let m = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
+    let n = LANES + 5;
+    let s: Vec<State> = (0..n)
+        .map(|k| State::from_angles(m.params(), 1.0, 0.0, 0.0, 12.0 * k as f64 / n as f64).unwrap())
+        .collect();
+    let dt = 0.02;
+    let in_series = |st: &State| {
+        let w = st.v + DVec3::new(0.0, 0.0, -9.81) * (0.5 * dt);
+        PositionQuadratic::new(st.x, w, dt, 1.0).multiplier_series(dt).1
+    };
+    assert!(in_series(&s[0]) && !in_series(&s[LANES - 1]), "the first block must mix both cases");
+    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+    let res = run(&s, &[1.0], &[9.81], dt, 50, EnsembleSave::Final, false, &p, &c).unwrap();
+    let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };
+    for k in 0..n {
+        let mut st = Stepper::new(m, 0.0, s[k], &opts).unwrap();
+        st.step_n(50).unwrap();
+        assert_eq!(res.states[k][1], *st.state(), "trajectory {k}");
     }
 }
 

@@ -159,8 +159,11 @@ fn partial_restitution_loses_one_minus_e_squared_and_settles_taut() {
         let expected = 0.5 * 2.0 * (1.0 - e * e) * u_in * u_in;
         let settled = u_out.abs() <= 1e-14 * ev.after.v.length().max(1.0);
         let lost = if settled { 0.5 * 2.0 * u_in * u_in } else { expected };
+        // u = n·v is a small difference of O(|v|) terms: its rounding, ~ε|v|, bounds how well two
+        // formulas for ½m(1 − e²)u² can agree when the rebound is slow (m = 2 kg here)
+        let radial_rounding = 8.0 * f64::EPSILON * 2.0 * u_in.abs() * ev.before.v.length();
         assert!(
-            (ev.energy_lost - lost).abs() <= 1e-13 * lost.max(1e-300) + 1e-24,
+            (ev.energy_lost - lost).abs() <= 1e-13 * lost + radial_rounding + 1e-300,
             "{} vs {lost}",
             ev.energy_lost
         );

@@ -14,6 +14,7 @@ pub mod composition;
 pub mod dop853;
 mod dop853_tableau;
 pub mod rattle;
+pub mod rattle_kernel;
 pub mod rk4;
 pub mod rk4_angles;
 pub mod rkmk4;

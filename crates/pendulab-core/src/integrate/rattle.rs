@@ -11,8 +11,11 @@
 //! The position multiplier solves the quadratic |a + m x₀|² = l² with a = x₀ + h v₀ + (h²/2) f₀,
 //! m = h²μ₀/2; we take the root near 0 in the cancellation-free form
 //! m = −c / (b + √(b² − |x₀|² c)), b = a·x₀, c = |a|² − l² (expanded in powers of h, so that no
-//! precision is lost to cancellation against l² when h is small). The velocity multiplier is an
-//! orthogonal projection of v½ + (h/2) f₁ onto the tangent plane at x₁.
+//! precision is lost to cancellation against l² when h is small), evaluated for small steps as a
+//! truncated Catalan series with no square root. The velocity multiplier is an orthogonal
+//! projection of v½ + (h/2) f₁ onto the tangent plane at x₁; for a uniform field its numerator is a
+//! quadratic in μ₀ computed alongside it. The arithmetic, shared with the ensemble kernel, is in
+//! [`super::rattle_kernel`].
 //!
 //! Properties: order 2, symmetric, symplectic on T*S² for conservative f; |x| = l and x·v = 0
 //! hold to round-off after every step (each step re-imposes them, so errors do not accumulate);
@@ -22,6 +25,9 @@
 //! flow at fixed x ([`Model::velocity_flow`]), applied for h/2 before and after the step (Strang
 //! splitting; second order, conformal symplectic for linear damping).
 
+use super::rattle_kernel::{
+    advance_position, advance_velocity, dot, fmadd3, PositionQuadratic, ProjectionPolynomial,
+};
 use super::FixedStep;
 use crate::error::{Error, Result};
 use crate::model::Model;
@@ -40,24 +46,15 @@ pub struct Rattle {
     comp_v: DVec3,
 }
 
-/// Kahan summation: returns s + d with the running compensation `c` (the bits lost so far).
-#[inline(always)]
-fn compensated_add(s: DVec3, d: DVec3, c: &mut DVec3) -> DVec3 {
-    let y = d - *c;
-    let t = s + y;
-    *c = (t - s) - y;
-    t
-}
-
 impl Rattle {
     /// One RATTLE step of size `h` [s]; returns `false` when the position quadratic has no real
-    /// root (h far too large for the motion).
+    /// root (h far too large for the motion). The arithmetic is in [`super::rattle_kernel`].
     #[inline(always)]
     pub fn advance<M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> bool {
         let l = model.params().length;
-        // 1/l² is a loop invariant the compiler hoists out of a stepping loop: one division fewer
-        // on each step's dependency chain.
-        let inv_l2 = 1.0 / (l * l);
+        let l2 = l * l;
+        // 1/l² is a loop invariant the compiler hoists out of a stepping loop.
+        let inv_l2 = 1.0 / l2;
         let half = 0.5 * h;
         if model.has_velocity_forces() {
             // Strang splitting: the exact velocity flow for h/2 on either side (see model::extended).
@@ -66,29 +63,29 @@ impl Rattle {
         let (x0, v0) = (s.x, s.v);
         let kick0 = model.kick_acceleration(t, x0) * half;
         let w = v0 + kick0;
-        // b = a·x₀ and c = |a|² − l² for a = x₀ + h w, expanded so that the large terms l² cancel
-        // exactly and the small ones keep their relative precision even for tiny h.
-        let q = x0.length_squared();
-        let xw = x0.dot(w);
-        let b = q + h * xw;
-        let c = (q - l * l) + h * (2.0 * xw + h * w.length_squared());
-        let disc = b * b - q * c;
-        if disc.is_nan() || disc < 0.0 || b <= 0.0 {
+        let quad = PositionQuadratic::new(x0, w, h, l2);
+        let mu = quad.multiplier(h);
+        if mu.is_nan() {
             return false;
         }
-        // μ = m/h with m the root near 0; then x₁ = x₀ + h v½ exactly as RATTLE writes it, so that x₁
-        // and v½ are consistent by construction (J₃ is kept without bias even for step sizes whose
-        // reciprocal is inexact, as in the compositions).
-        let mu = -c / (h * (b + disc.sqrt()));
-        let v_half = w + x0 * mu;
-        let x1 = compensated_add(x0, v_half * h, &mut self.comp_x);
-        let kick1 = model.kick_acceleration(t + h, x1) * half;
-        let u = v_half + kick1;
+        // x₁ = x₀ + h v½ exactly as RATTLE writes it, so that x₁ and v½ are consistent by
+        // construction (J₃ is kept without bias even for step sizes whose reciprocal is inexact, as
+        // in the compositions).
+        let v_half = fmadd3(x0, mu, w);
+        let x1 = advance_position(x0, v_half, h, &mut self.comp_x);
+        let (kick1, p) = if model.kick_is_uniform() {
+            // known before x₁: the projection's numerator is a quadratic in μ (module doc of
+            // rattle_kernel), its coefficients computed alongside μ
+            let kick1 = model.kick_acceleration(t + h, x0) * half;
+            (kick1, ProjectionPolynomial::new(x0, w, kick1, &quad, h, inv_l2).at(mu))
+        } else {
+            let kick1 = model.kick_acceleration(t + h, x1) * half;
+            (kick1, dot(x1, v_half + kick1) * inv_l2)
+        };
         // v₁ = u − x₁ (x₁·u)/l², written as the increment Δv = v₁ − v₀ (|x₁|² = l² to round-off, so
         // x₁·v₁ = (x₁·u)(1 − |x₁|²/l²) is round-off of an O(h) quantity).
-        let dv = kick0 + x0 * mu + kick1 - x1 * (x1.dot(u) * inv_l2);
+        s.v = advance_velocity(v0, kick0 + kick1, x0, mu, x1, p, &mut self.comp_v);
         s.x = x1;
-        s.v = compensated_add(v0, dv, &mut self.comp_v);
         if model.has_velocity_forces() {
             s.v = model.velocity_flow(s.x, s.v, half);
         }

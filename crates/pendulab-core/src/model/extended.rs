@@ -182,6 +182,10 @@ impl Model for Extended {
     fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {
         self.position_acceleration(t, x)
     }
+    fn kick_is_uniform(&self) -> bool {
+        // gravity and forcing are uniform; only the centrifugal force depends on x
+        self.frame == DVec3::ZERO
+    }
     fn has_velocity_forces(&self) -> bool {
         self.damping != 0.0 || self.drag != 0.0 || self.frame != DVec3::ZERO
     }

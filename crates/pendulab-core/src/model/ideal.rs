@@ -65,6 +65,9 @@ impl Model for IdealPendulum {
     fn is_ideal(&self) -> bool {
         true
     }
+    fn kick_is_uniform(&self) -> bool {
+        true
+    }
 }
 
 #[cfg(test)]

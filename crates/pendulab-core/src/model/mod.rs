@@ -29,6 +29,7 @@ pub use pivot::{MovingPivot, PivotPath};
 pub use registry::AnyModel;
 pub use string::StringPendulum;
 
+use crate::integrate::FixedStep;
 use crate::state::{Params, State};
 use glam::DVec3;
 
@@ -56,6 +57,13 @@ pub trait Model: Send + Sync {
     fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {
         self.applied_acceleration(t, x, DVec3::ZERO)
     }
+    /// True when [`Model::kick_acceleration`] does not depend on x (a uniform field, possibly varying
+    /// in time: gravity in any direction, a moving pivot, uniform forcing). RATTLE then evaluates the
+    /// end-of-step kick before the new position is known (see `integrate::rattle_kernel`); the
+    /// results agree with the general path to round-off. Default: false (always correct).
+    fn kick_is_uniform(&self) -> bool {
+        false
+    }
     /// True when f depends on v; then [`Model::velocity_flow`] must be its exact flow.
     fn has_velocity_forces(&self) -> bool {
         false
@@ -70,6 +78,28 @@ pub trait Model: Send + Sync {
     /// plain [`crate::Stepper`] refuses; they have their own driver ([`string_run`]).
     fn is_hybrid(&self) -> bool {
         false
+    }
+    /// Takes `n` fixed steps of `dt` [s] on the grid t = `t_anchor` + k·dt from step `*k` on, advancing
+    /// `*k` with every step taken (also when a step fails). A model that wraps others (the registry's
+    /// `AnyModel`) overrides this to choose its variant once per loop, not once per step.
+    #[inline]
+    fn fixed_steps<S: FixedStep>(
+        &self,
+        scheme: &mut S,
+        t_anchor: f64,
+        dt: f64,
+        n: u64,
+        k: &mut u64,
+        state: &mut State,
+    ) -> crate::error::Result<()>
+    where
+        Self: Sized,
+    {
+        for _ in 0..n {
+            scheme.step(self, t_anchor + *k as f64 * dt, state, dt)?;
+            *k += 1;
+        }
+        Ok(())
     }
     /// Power per unit mass of the non-conservative forces at (t, x, v) [W/kg]: dE/dt = m·this.
     fn power_per_mass(&self, _t: f64, _x: DVec3, _v: DVec3) -> f64 {

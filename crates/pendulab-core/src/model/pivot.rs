@@ -168,6 +168,9 @@ impl Model for MovingPivot {
     fn kick_acceleration(&self, t: f64, _x: DVec3) -> DVec3 {
         DVec3::new(0.0, 0.0, -self.params.g) - self.path.acceleration(t)
     }
+    fn kick_is_uniform(&self) -> bool {
+        true
+    }
     fn has_velocity_forces(&self) -> bool {
         self.damping != 0.0
     }

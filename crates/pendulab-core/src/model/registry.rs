@@ -411,6 +411,21 @@ impl Model for AnyModel {
     fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {
         both!(self, m => m.kick_acceleration(t, x))
     }
+    #[inline]
+    fn fixed_steps<S: crate::integrate::FixedStep>(
+        &self,
+        scheme: &mut S,
+        t_anchor: f64,
+        dt: f64,
+        n: u64,
+        k: &mut u64,
+        state: &mut State,
+    ) -> Result<()> {
+        both!(self, m => m.fixed_steps(scheme, t_anchor, dt, n, k, state))
+    }
+    fn kick_is_uniform(&self) -> bool {
+        both!(self, m => m.kick_is_uniform())
+    }
     fn has_velocity_forces(&self) -> bool {
         both!(self, m => m.has_velocity_forces())
     }
