@@ -36,7 +36,9 @@ _PROGRESS_AFTER = 5e7  # trajectory-steps
 class EnsembleResult:
     """Saved states of N trajectories: ``t`` (n_save,) [s], ``x`` and ``v`` (N, n_save, 3) [m, m/s];
     ``summary`` (if asked): per trajectory z_min, z_max [m], e_min, e_max [J/kg] (E/m), j3_min, j3_max
-    [m²/s] (J₃/m), and derived ``energy_drift`` = (e_max − e_min)/(|g| l), ``j3_drift`` [m²/s] and
+    [m²/s] (J₃/m), ``crossings`` (how many steps crossed the horizontal plane through the pivot, z = 0,
+    in either direction: 2 per turn of a swing over the top, 0 below the pivot; float64 counts, NaN
+    for invalid rows), and derived ``energy_drift`` = (e_max − e_min)/(|g| l), ``j3_drift`` [m²/s] and
     ``max_sway`` [rad] (largest angle from the stable equilibrium −sign(g) e₃); ``settle_time`` (N,)
     [s] when a settle angle was given."""
 
@@ -245,7 +247,7 @@ def simulate_ensemble(
         warnings.warn("interrupted: returning the states reached so far", RuntimeWarning, stacklevel=2)
     summ = None
     if summary:
-        summ = {k: out[k] for k in ("z_min", "z_max", "e_min", "e_max", "j3_min", "j3_max")}
+        summ = {k: out[k] for k in ("z_min", "z_max", "e_min", "e_max", "j3_min", "j3_max", "crossings")}
         scale = np.maximum(np.abs(gs) * lengths, 1e-300)
         summ["energy_drift"] = (summ["e_max"] - summ["e_min"]) / scale
         summ["j3_drift"] = summ["j3_max"] - summ["j3_min"]

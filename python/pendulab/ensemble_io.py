@@ -3,7 +3,8 @@
 The dataset has dims ``trajectory`` (N), ``time`` (n_save) and ``axis`` (0, 1, 2 = x, y, z) and holds
 ``x`` [m], ``v`` [m/s], ``t`` [s] as the time coordinate, the per-trajectory summary (``z_min``,
 ``z_max`` [m], ``e_min``, ``e_max`` [J/kg], ``j3_min``, ``j3_max`` [m²/s], ``energy_drift`` [1],
-``j3_drift`` [m²/s], ``max_sway`` [rad]) and ``settle_time`` [s] when they were asked for, a
+``j3_drift`` [m²/s], ``max_sway`` [rad], ``crossings`` [1]: passages through the pivot's horizontal
+plane) and ``settle_time`` [s] when they were asked for, a
 ``valid`` flag per trajectory (False for non-finite start rows), and the run's settings as JSON in
 ``attrs["pendulab"]``. Formats by suffix: ``.nc`` (NetCDF 3 through SciPy) and ``.zarr`` (a Zarr
 store, chunked by trajectory, for runs larger than memory readers want to load at once). Both are
@@ -38,6 +39,7 @@ SUMMARY_UNITS = {
     "energy_drift": "1",
     "j3_drift": "m^2/s",
     "max_sway": "rad",
+    "crossings": "1",
 }
 
 ARRAY_SUFFIXES = (".nc", ".zarr")

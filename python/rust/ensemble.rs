@@ -98,7 +98,8 @@ impl EnsembleRun {
     }
 
     /// Waits for the run and returns a dict: t (n_save,), x, v (N, n_save, 3), cancelled, steps and,
-    /// with a summary, z_min, z_max, e_min, e_max (per unit mass, J/kg), j3_min, j3_max (m²/s); with a
+    /// with a summary, z_min, z_max, e_min, e_max (per unit mass, J/kg), j3_min, j3_max (m²/s),
+    /// crossings (of the pivot's horizontal plane, a count as float64); with a
     /// settle angle, settle_time [s] (0: never outside, inf: outside at the end).
     fn result<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let handle =
@@ -139,6 +140,7 @@ impl EnsembleRun {
             d.set_item("e_max", col(&|q| q.energy_per_mass.1))?;
             d.set_item("j3_min", col(&|q| q.j3_per_mass.0))?;
             d.set_item("j3_max", col(&|q| q.j3_per_mass.1))?;
+            d.set_item("crossings", col(&|q| q.crossings as f64))?;
         }
         Ok(d)
     }

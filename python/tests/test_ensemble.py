@@ -28,6 +28,27 @@ def test_matches_single_trajectories(pendulum: pl.Pendulum) -> None:
     assert np.max(res.summary["energy_drift"]) < 1e-3  # bounded energy error of RATTLE at dt = 1 ms
 
 
+def test_crossings_count_turns_over_the_top(pendulum: pl.Pendulum) -> None:
+    """Planar swings from the bottom with speed w: below √(2gl) they stay under the pivot's plane (no
+    crossing), above it they rise through it, and over the top (w > 2√(gl)) they cross it twice per
+    turn; every count equals the one taken from the single-path trajectory saved at every step."""
+    speeds = np.array([2.0, 5.0, 7.0, 10.0])
+    states = pl.states_from_angles(pendulum, theta=0.0, theta_dot=speeds)
+    res = pl.simulate_ensemble(pendulum, states, t_end=5.0, dt=1e-3, save=pl.Save.summary())
+    assert res.summary is not None
+    crossings = res.summary["crossings"]
+    for k, w in enumerate(speeds):
+        s0 = pendulum.state(states[k, :3], states[k, 3:])
+        z = pl.simulate(pendulum, s0, t_end=5.0, method="rattle", dt=1e-3, save_every=1).x[:, 2]
+        assert crossings[k] == np.count_nonzero(np.diff(z > 0.0)), w
+    assert crossings[0] == 0 and crossings[1] > 0  # √(2g) ≈ 4.43 m/s: 2 stays below, 5 rises above
+    # over the top: the turn rate lies between v_top/(2πl) and w/(2πl)
+    for k in (2, 3):
+        turns = crossings[k] / 2
+        v_top = np.sqrt(speeds[k] ** 2 - 4 * 9.81)
+        assert 5.0 * v_top / (2 * np.pi) - 1 <= turns <= 5.0 * speeds[k] / (2 * np.pi) + 1
+
+
 def test_per_trajectory_parameters(pendulum: pl.Pendulum) -> None:
     lengths = np.array([0.5, 1.0, 2.0])
     states = np.array([[ln * 0.6, 0.0, -ln * 0.8, 0.0, 0.7, 0.0] for ln in lengths])

@@ -52,6 +52,10 @@ struct Block {
     len: usize,
     /// Per-lane summary: min z, max z, min E/m, max E/m, min J₃/m, max J₃/m.
     summary: [Lanes; 6],
+    /// Per lane: crossings of the pivot's horizontal plane so far, and the side (1: z > 0) at the
+    /// last sample.
+    crossings: Lanes,
+    above: Lanes,
 }
 
 impl Block {
@@ -153,6 +157,9 @@ impl Block {
             s[3][i] = s[3][i].max(e);
             s[4][i] = s[4][i].min(j);
             s[5][i] = s[5][i].max(j);
+            let above = if z > 0.0 { 1.0 } else { 0.0 };
+            self.crossings[i] += (above - self.above[i]).abs();
+            self.above[i] = above;
         }
     }
 
@@ -182,6 +189,10 @@ pub struct Summary {
     pub energy_per_mass: (f64, f64),
     /// min and max of J₃/m = (x × v)·e₃.
     pub j3_per_mass: (f64, f64),
+    /// Crossings of the horizontal plane through the pivot: the number of steps across which z
+    /// changed between ≤ 0 (at or below the pivot) and > 0 (above it), in either direction. For a
+    /// planar swing over the top this is two per revolution; it stays 0 for motion below the pivot.
+    pub crossings: u64,
 }
 
 /// The result of [`run`]: saved states per trajectory (trajectory-major: `states[traj][sample]`),
@@ -314,6 +325,8 @@ pub fn run_with(
                 summary: std::array::from_fn(|r| {
                     [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
                 }),
+                crossings: [0.0; LANES],
+                above: lanes(&|k| if starts[k].x.z > 0.0 { 1.0 } else { 0.0 }),
             };
             blk.update_summary();
             if track {
@@ -382,6 +395,7 @@ pub fn run_with(
                     z: (b.summary[0][i], b.summary[1][i]),
                     energy_per_mass: (b.summary[2][i], b.summary[3][i]),
                     j3_per_mass: (b.summary[4][i], b.summary[5][i]),
+                    crossings: b.crossings[i] as u64,
                 })
             })
             .collect()

@@ -65,10 +65,47 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
     let res = run(&s, &[1.0], &[9.81], dt, 50, EnsembleSave::Final, false, &p, &c).unwrap();
     let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };
-    for k in 0..n {
-        let mut st = Stepper::new(m, 0.0, s[k], &opts).unwrap();
+    for (k, start) in s.iter().enumerate() {
+        let mut st = Stepper::new(m, 0.0, *start, &opts).unwrap();
         st.step_n(50).unwrap();
         assert_eq!(res.states[k][1], *st.state(), "trajectory {k}");
+    }
+}
+
+#[test]
+fn crossings_count_passages_through_the_pivot_plane() {
+    // planar swings over the top (speed at the bottom above 2√(g l)) cross z = 0 twice per turn;
+    // a swing that stays below the pivot never does
+    let m = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
+    let speeds = [1.0, 2.5, 6.5, 7.0, 9.0, 15.0];
+    let s: Vec<State> =
+        speeds.iter().map(|&w| State::from_angles(m.params(), 0.0, 0.0, w, 0.0).unwrap()).collect();
+    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+    let steps = 10_000;
+    let res = run(&s, &[1.0], &[9.81], 1e-3, steps, EnsembleSave::Final, true, &p, &c).unwrap();
+    let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..SolveOptions::default() };
+    for (k, summary) in res.summary.unwrap().iter().enumerate() {
+        // the same count along the single path (same numbers, bit for bit)
+        let mut st = Stepper::new(m, 0.0, s[k], &opts).unwrap();
+        let mut count = 0;
+        for _ in 0..steps {
+            let before = st.state().x.z > 0.0;
+            st.step().unwrap();
+            count += u64::from(before != (st.state().x.z > 0.0));
+        }
+        assert_eq!(summary.crossings, count, "speed {}", speeds[k]);
+        // parity: odd exactly when the run ends on the other side
+        assert_eq!(summary.crossings % 2 == 1, st.state().x.z > 0.0, "speed {}", speeds[k]);
+        let over_the_top = speeds[k] > 2.0 * 9.81f64.sqrt();
+        let reaches_plane = speeds[k] > (2.0 * 9.81f64).sqrt();
+        assert_eq!(summary.crossings == 0, !reaches_plane, "speed {}: {}", speeds[k], summary.crossings);
+        if over_the_top {
+            // ω ≥ (v_top)/l at the top and ≤ v_bottom/l: turns in 10 s between those bounds
+            let v_top = (speeds[k] * speeds[k] - 4.0 * 9.81).sqrt();
+            let turns = summary.crossings as f64 / 2.0;
+            assert!(turns <= 10.0 * speeds[k] / (2.0 * std::f64::consts::PI) + 1.0, "{turns}");
+            assert!(turns >= 10.0 * v_top / (2.0 * std::f64::consts::PI) - 1.0, "{turns}");
+        }
     }
 }
 
