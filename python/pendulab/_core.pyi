@@ -214,6 +214,28 @@ def spring_simulate(
     order: int = 2,
 ) -> dict[str, Any]: ...
 
+class SpringStepper:
+    def __init__(
+        self,
+        k_over_m: float,
+        rest_length: float,
+        g: float,
+        mass: float,
+        x0: FloatArray,
+        v0: FloatArray,
+        t0: float,
+        dt: float,
+        order: int = 2,
+    ) -> None: ...
+    def step(self, n: int = 1) -> None: ...
+    def diagnostics(self) -> dict[str, Any]: ...
+    @property
+    def t(self) -> float: ...
+    @property
+    def x(self) -> FloatArray: ...
+    @property
+    def v(self) -> FloatArray: ...
+
 # --- python/rust/string.rs: the string pendulum (hybrid: taut, slack, snaps) ---
 
 def string_simulate(
@@ -230,6 +252,31 @@ def string_simulate(
     save_every: int = 1,
     max_saved_bytes: int | None = None,
 ) -> dict[str, Any]: ...
+
+class StringStepper:
+    def __init__(
+        self,
+        length: float,
+        mass: float,
+        g: float,
+        restitution: float,
+        x0: FloatArray,
+        v0: FloatArray,
+        t0: float,
+        method: str,
+        dt: float,
+    ) -> None: ...
+    def step(self, n: int = 1) -> None: ...
+    def diagnostics(self) -> dict[str, Any]: ...
+    def take_events(self) -> list[dict[str, Any]]: ...
+    @property
+    def t(self) -> float: ...
+    @property
+    def x(self) -> FloatArray: ...
+    @property
+    def v(self) -> FloatArray: ...
+    @property
+    def taut(self) -> bool: ...
 
 # --- python/rust/slewing.rs: the linearised slewing crane (T-7.2) ---
 

@@ -295,7 +295,13 @@ def models(
     for i, m in enumerate(table):
         if name is None or i > 0:
             _say("")
-        batch = "" if m.get("interactive", True) else "  [not interactive (no live stepper): pendulab run]"
+        batch = (
+            ""
+            if m.get("interactive", True)
+            else "  [own stepper: pendulab run and the lab]"
+            if m["name"] in ("spring", "string")
+            else "  [not interactive (no live stepper): pendulab run]"
+        )
         _say(f"{m['name']}: {m['summary']}{batch}")
         own = [p for p in m["params"] if name is not None or p["name"] not in common]
         if not own:

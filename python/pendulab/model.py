@@ -29,8 +29,9 @@ def _vec3(name: str, a: Any) -> FloatArray:
 
 def models() -> list[_core.ModelInfo]:
     """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary``,
-    ``interactive`` (runs with the incremental :class:`pendulab.Stepper` and so in the web lab; False for
-    ``string``, ``spring`` and ``sampled_pivot``, which run with ``pl.simulate`` / ``pendulab run``) and
+    ``interactive`` (runs with the incremental :class:`pendulab.Stepper`; False for ``string``,
+    ``spring`` and ``sampled_pivot``, which run with ``pl.simulate`` / ``pendulab run`` — the web lab
+    runs the string and the spring too, with their own core steppers) and
     ``params``,
     a list of dicts ``name``, ``unit`` (SI), ``default``, ``min``, ``max`` (±inf for none),
     ``description`` and ``allowed`` (in words). Length [m], mass [kg] and g [m/s²] come first in every

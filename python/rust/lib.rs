@@ -154,7 +154,7 @@ fn models(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
         .collect()
 }
 
-fn arr3<'py>(py: Python<'py>, v: DVec3) -> Bound<'py, PyArray1<f64>> {
+pub(crate) fn arr3<'py>(py: Python<'py>, v: DVec3) -> Bound<'py, PyArray1<f64>> {
     v.to_array().to_vec().into_pyarray(py)
 }
 

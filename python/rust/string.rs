@@ -2,10 +2,10 @@
 //! (taut phases, leave and snap events, analytic free flight) as numpy arrays. Conversions only;
 //! SI units.
 
-use crate::{to_py, vec3};
+use crate::{arr3, to_py, vec3};
 use numpy::ndarray::{Array1, Array2};
-use numpy::{IntoPyArray, PyReadonlyArray1};
-use pendulab_core::model::string_run::EventKind;
+use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
+use pendulab_core::model::string_run::{EventKind, StringEvent, StringStepper};
 use pendulab_core::model::StringPendulum;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
 use pendulab_core::{Method, Params, State};
@@ -79,7 +79,106 @@ pub fn string_simulate<'py>(
     Ok(d)
 }
 
-/// Registers the function.
+/// The string pendulum stepped incrementally (the lab): l [m], m [kg], g [m/s²], restitution e, the
+/// start x0, v0 [m, m/s] at t0 [s] (on the sphere or inside it: slack), `method` (rattle, rattle4,
+/// rattle6, rattle8, rkmk4) and step dt [s] of the taut phases. Its mode (taut, or slack on a
+/// flight) is part of its state: stepping on continues the same hybrid run.
+#[pyclass(module = "pendulab._core", name = "StringStepper")]
+struct StringStepper_ {
+    inner: StringStepper,
+}
+
+#[pymethods]
+impl StringStepper_ {
+    #[new]
+    #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, method, dt))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        length: f64,
+        mass: f64,
+        g: f64,
+        restitution: f64,
+        x0: PyReadonlyArray1<'_, f64>,
+        v0: PyReadonlyArray1<'_, f64>,
+        t0: f64,
+        method: &str,
+        dt: f64,
+    ) -> PyResult<Self> {
+        let sp =
+            StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
+        let method = Method::from_name(method).map_err(to_py)?;
+        let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
+        Ok(Self { inner: StringStepper::new(sp, t0, start, method, dt).map_err(to_py)? })
+    }
+
+    /// Takes `n` steps of the grid t0 + k·dt (to the n-th grid point after the last one reached).
+    #[pyo3(signature = (n=1))]
+    fn step(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
+        let inner = &mut self.inner;
+        py.allow_threads(|| inner.step(n)).map_err(to_py)
+    }
+
+    /// Current time [s].
+    #[getter]
+    fn t(&self) -> f64 {
+        self.inner.t()
+    }
+    /// Current position [m] (inside the sphere while slack).
+    #[getter]
+    fn x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        arr3(py, self.inner.state().x)
+    }
+    /// Current velocity [m/s].
+    #[getter]
+    fn v<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        arr3(py, self.inner.state().v)
+    }
+    /// True while the string is taut, false while slack (free flight).
+    #[getter]
+    fn taut(&self) -> bool {
+        self.inner.is_taut()
+    }
+
+    /// Diagnostics of the current state: energy [J], j3 [kg m²/s], tension [N] (T-2.3 while taut, 0
+    /// while slack), acceleration ẍ (3,) [m/s²], taut.
+    fn diagnostics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let (m, s) = (self.inner.model(), self.inner.state());
+        let d = PyDict::new(py);
+        d.set_item("energy", pendulab_core::model::energy(m, &s))?;
+        d.set_item("j3", pendulab_core::model::j3(m, &s))?;
+        d.set_item("tension", self.inner.tension())?;
+        d.set_item("acceleration", arr3(py, self.inner.acceleration()))?;
+        d.set_item("taut", self.inner.is_taut())?;
+        Ok(d)
+    }
+
+    /// The events since the last call: a list of dicts t [s], kind ("slack" or "taut"), x [m],
+    /// v_before, v_after [m/s], energy_lost [J].
+    fn take_events<'py>(&mut self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+        self.inner.take_events().iter().map(|e| event_dict(py, e)).collect()
+    }
+}
+
+fn event_dict<'py>(py: Python<'py>, e: &StringEvent) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    d.set_item("t", e.t)?;
+    d.set_item(
+        "kind",
+        match e.kind {
+            EventKind::Slack => "slack",
+            EventKind::Taut => "taut",
+        },
+    )?;
+    for (key, v) in [("x", e.after.x), ("v_before", e.before.v), ("v_after", e.after.v)] {
+        let a: Bound<'py, PyArray1<f64>> = arr3(py, v);
+        d.set_item(key, a)?;
+    }
+    d.set_item("energy_lost", e.energy_lost)?;
+    Ok(d)
+}
+
+/// Registers the function and the class.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(string_simulate, m)?)
+    m.add_function(wrap_pyfunction!(string_simulate, m)?)?;
+    m.add_class::<StringStepper_>()
 }

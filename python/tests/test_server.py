@@ -79,7 +79,7 @@ def test_schema_lists_parameters_with_units_limits_defaults_and_every_method(cli
     assert params["length"]["min"] > 0 and params["mass"]["min"] > 0
     assert [m["name"] for m in s["methods"]] == pl.method_names()
     assert {"order", "symplectic", "preserves_j3", "adaptive"} <= s["methods"][0].keys()
-    assert s["frame"]["fields"] == list(FRAME_FIELDS) and s["frame"]["record_bytes"] == 136 == RECORD_BYTES
+    assert s["frame"]["fields"] == list(FRAME_FIELDS) and s["frame"]["record_bytes"] == 144 == RECORD_BYTES
     assert s["frame"]["byte_order"] == "little" and s["frame"]["dtype"] == "float64"
     assert s["controls"]["dt"]["default"] == 1e-3 and s["controls"]["time_scale"]["default"] == 1.0
     assert "load_scenario" in s["commands"]

@@ -68,7 +68,8 @@ def test_schema_lists_every_model_of_the_registry_with_units_limits_and_slider_s
     client: TestClient,
 ) -> None:
     s = client.get("/api/schema").json()
-    lab = [m for m in pl.models() if m["interactive"]]  # the string, spring, sampled pivot: pendulab run
+    # the Stepper's models, and the spring and the string with their own steppers; sampled pivot: pendulab run
+    lab = [m for m in pl.models() if m["interactive"] or m["name"] in ("spring", "string")]
     assert [m["name"] for m in s["models"]] == [m["name"] for m in lab]
     assert {"ideal", "damped", "rotating", "slewing", "vibrating"} <= {m["name"] for m in lab}
     for m, reg in zip(s["models"], lab, strict=True):
@@ -81,15 +82,17 @@ def test_schema_lists_every_model_of_the_registry_with_units_limits_and_slider_s
             assert p["ui_min"] < p["ui_max"] and p["step"] > 0
             assert p["ui_min"] <= p["default"] <= p["ui_max"], p
     assert "set_model" in s["commands"]
-    assert s["frame"]["fields"][-7:] == ["power", "a1", "a2", "a3", "pivot1", "pivot2", "pivot3"]
+    assert s["frame"]["fields"][-8:] == ["power", "a1", "a2", "a3", "pivot1", "pivot2", "pivot3", "taut"]
 
 
 def test_scenarios_carry_their_model(client: TestClient) -> None:
     listed = {s["name"]: s for s in client.get("/api/scenarios").json()}
     assert listed["damped"]["model"] == "damped" and listed["damped"]["model_params"]["damping"] > 0
     assert listed["rosette"]["model"] == "ideal" and listed["rosette"]["model_params"] == {}
-    # examples whose model runs only with `pendulab run` are listed with the reason
-    assert "does not run in the lab" in listed["string_slack"]["error"]
+    # the string and the swinging spring run in the lab too
+    assert listed["string_slack"]["model"] == "string" and listed["string_slack"]["method"] == "rattle8"
+    assert listed["swinging_spring"]["model"] == "spring"
+    assert listed["swinging_spring"]["model_params"] == {"stiffness": 39.24}
 
 
 # --- a session's model ----------------------------------------------------------------------------------
@@ -139,8 +142,9 @@ def test_set_model_switches_model_with_defaults_and_given_parameters() -> None:
 @pytest.mark.parametrize(
     ("text", "needle"),
     [
-        ('{"type": "set_model", "model": "spring"}', "model 'spring' does not run in the lab"),
-        ('{"type": "set_model", "model": "string"}', "the lab's models: ideal, damped"),
+        ('{"type": "set_model", "model": "sampled_pivot"}', "model 'sampled_pivot' does not run in the lab"),
+        ('{"type": "set_model", "model": "spring", "params": {"stiffness": -1}}', "stiffness = -1"),
+        ('{"type": "set_model", "model": "string", "params": {"restitution": 2}}', "restitution"),
         ('{"type": "set_model", "model": "sprung"}', "unknown model 'sprung'; available: ideal, damped"),
         ('{"type": "set_model", "model": "damped", "params": {"latitude": 1}}', "no parameter 'latitude'"),
         ('{"type": "set_model", "model": "damped", "params": {"damping": -1}}', "damping = -1"),

@@ -5,6 +5,7 @@
 import type { EMView, EffectivePotential, ExactQuantities, Frame, ReducedCurves, Status } from './protocol';
 import type { ReducedView } from './scene/reduced';
 import type { LabStore } from './state';
+import { offSphereNote, staysOnSphere } from './models';
 
 /** GET or POST JSON; an HTTP error becomes an Error with the server's `detail`. */
 export async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
@@ -49,6 +50,11 @@ export class Analyses {
     if (s === null || first === undefined || last === null) return;
     if (this.exactEpoch !== s.epoch) this.fetchExact(s, first);
     if (this.reducedEpoch !== s.epoch) this.fetchReduced(s, first);
+    if (!staysOnSphere(s.model)) {
+      // the spring and the string leave the sphere: V_eff and the map are the rod's, not theirs
+      [this.veff, this.em, this.veffKey, this.emKey] = [null, null, '', ''];
+      return;
+    }
     this.fetchEM(s, first);
     this.fetchPotential(s, last);
   }
@@ -91,7 +97,9 @@ export class Analyses {
   private fetchReduced(status: Status, f: Frame): void {
     this.reducedEpoch = status.epoch;
     if (status.model !== 'ideal') {
-      this.reduced.setNote(`the reduced view is the ideal pendulum's; this is the ${status.model} model`);
+      this.reduced.setNote(
+        offSphereNote(status.model) ?? `the reduced view is the ideal pendulum's; this is the ${status.model} model`,
+      );
       return;
     }
     this.reduced.setNote(null);

@@ -123,6 +123,8 @@ async function main(): Promise<void> {
     store.onStatus(s);
     controls.sync(s);
     scene.setLength(s.params.length);
+    scene.setModel(s.model);
+    portraits.setModel(s.model);
     if (startup.length === 0) window.history.replaceState(null, '', `?${encodeUrl(fromStatus(s))}`);
   };
 

@@ -3,8 +3,9 @@
 //
 // Frames: every binary WebSocket message holds one or more records of little-endian float64 values in the
 // order of `frame.json` (shared with the Python server, pendulab/server/frame.json):
-//   [t, x1, x2, x3, v1, v2, v3, energy, j3, tension, power, a1, a2, a3, pivot1, pivot2, pivot3]
-//   in s, m, m/s, J, kg m²/s, N, W, m/s², m. x, v and a are relative to the pivot (at `pivot`, 0 when fixed).
+//   [t, x1, x2, x3, v1, v2, v3, energy, j3, tension, power, a1, a2, a3, pivot1, pivot2, pivot3, taut]
+//   in s, m, m/s, J, kg m²/s, N, W, m/s², m, 1. x, v and a are relative to the pivot (at `pivot`, 0 when
+//   fixed); taut is 0 while the string is slack (model `string`), else 1.
 import layout from '../../python/pendulab/server/frame.json';
 
 export type Vec3 = [number, number, number];
@@ -31,12 +32,14 @@ const I = {
   power: fieldIndex('power'),
   a: [fieldIndex('a1'), fieldIndex('a2'), fieldIndex('a3')] as const,
   pivot: [fieldIndex('pivot1'), fieldIndex('pivot2'), fieldIndex('pivot3')] as const,
+  taut: fieldIndex('taut'),
 };
 
 /** One state as computed by the server's core: time t [s], position x [m] and velocity v [m/s] relative to
  *  the pivot, energy E [J], J₃ [kg m²/s], rod tension T [N], power of the non-conservative forces P [W],
  *  acceleration a = ẍ [m/s²] relative to the pivot (m a is the net force on the bob there) and the
- *  pivot's position [m] (0 for a fixed pivot; the bob is at pivot + x). */
+ *  pivot's position [m] (0 for a fixed pivot; the bob is at pivot + x), and whether the rod, spring or
+ *  string holds the bob (false only while the string is slack: free flight, tension 0). */
 export interface Frame {
   t: number;
   x: Vec3;
@@ -47,6 +50,7 @@ export interface Frame {
   power: number;
   a: Vec3;
   pivot: Vec3;
+  taut: boolean;
 }
 
 export class ProtocolError extends Error {}
@@ -73,6 +77,7 @@ export function decodeFrames(buf: ArrayBuffer): Frame[] {
       power: at(I.power),
       a: vec(I.a),
       pivot: vec(I.pivot),
+      taut: at(I.taut) !== 0,
     });
   }
   return out;
@@ -94,6 +99,7 @@ export function encodeFrames(frames: readonly Frame[]): ArrayBuffer {
     put(I.power, f.power);
     I.a.forEach((i, c) => put(i, f.a[c] ?? NaN));
     I.pivot.forEach((i, c) => put(i, f.pivot[c] ?? NaN));
+    put(I.taut, f.taut ? 1 : 0);
   });
   return buf;
 }

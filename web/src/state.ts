@@ -35,6 +35,7 @@ export const CSV_COLUMNS = [
   'pivot1 [m]',
   'pivot2 [m]',
   'pivot3 [m]',
+  'taut [1]',
 ] as const;
 
 export interface History {
@@ -66,7 +67,8 @@ export function lerp(a: number, b: number, s: number): number {
 }
 
 /** Linear interpolation of two frames at parameter s ∈ [0, 1]; the position is put back on the sphere of
- *  radius lerp(|x_a|, |x_b|) so the bob never cuts the chord. Drawing only: no dynamics. */
+ *  radius lerp(|x_a|, |x_b|) so the bob never cuts the chord (the spring's and the slack string's radius
+ *  varies, so the radius is interpolated too); slack if either frame is. Drawing only: no dynamics. */
 export function interpolateFrames(a: Frame, b: Frame, s: number): Frame {
   const vec = (p: Vec3, q: Vec3): Vec3 => [lerp(p[0], q[0], s), lerp(p[1], q[1], s), lerp(p[2], q[2], s)];
   const x = vec(a.x, b.x);
@@ -83,6 +85,7 @@ export function interpolateFrames(a: Frame, b: Frame, s: number): Frame {
     power: lerp(a.power, b.power, s),
     a: vec(a.a, b.a),
     pivot: vec(a.pivot, b.pivot),
+    taut: a.taut && b.taut,
   };
 }
 
@@ -300,7 +303,7 @@ export class LabStore {
     };
     const header = CSV_COLUMNS.join(',');
     const rows = this.trajectory.map((f) =>
-      [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension, f.power, ...f.a, ...f.pivot].map((v) => String(v)).join(','),
+      [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension, f.power, ...f.a, ...f.pivot, f.taut ? 1 : 0].map((v) => String(v)).join(','),
     );
     return [`# ${JSON.stringify(meta)}`, header, ...rows].join('\n') + '\n';
   }

@@ -107,6 +107,11 @@ impl SwingingSpring {
         }
     }
 
+    /// The spring's tension k(|r| − l₀) [N] (> 0 stretched and pulling, < 0 compressed and pushing).
+    pub fn tension(&self, s: &State) -> f64 {
+        self.mass * self.k_over_m * (s.x.length() - self.rest_length)
+    }
+
     /// Integrates `n_steps` steps of `dt` [s] from `start`, keeping the start and every
     /// `save_every`-th state (and the last): returns (times [s], states).
     pub fn simulate(
@@ -117,7 +122,6 @@ impl SwingingSpring {
         save_every: u64,
         order: u32,
     ) -> Result<(Vec<f64>, Vec<State>)> {
-        require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
         if save_every == 0 {
             return Err(Error::InvalidParameter {
                 name: "save_every",
@@ -125,6 +129,38 @@ impl SwingingSpring {
                 allowed: "an integer >= 1",
             });
         }
+        let mut stepper = SpringStepper::new(*self, start, 0.0, dt, order)?;
+        let (mut t, mut states) = (vec![0.0], vec![start]);
+        for k in 1..=n_steps {
+            stepper.step(1)?;
+            if k % save_every == 0 || k == n_steps {
+                t.push(k as f64 * dt);
+                states.push(stepper.state());
+            }
+        }
+        Ok((t, states))
+    }
+}
+
+/// The swinging spring stepped incrementally (what the lab runs): whole steps of dt of one method,
+/// so that stepping n₁ and then n₂ steps is the run of n₁ + n₂ steps, state for state.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SpringStepper {
+    spring: SwingingSpring,
+    s: State,
+    t0: f64,
+    dt: f64,
+    order: u32,
+    /// Steps taken.
+    k: u64,
+}
+
+impl SpringStepper {
+    /// A stepper from `start` (x [m] away from the pivot, v [m/s]) at `t0` [s] with step `dt` [s] and
+    /// `order` 2 (Störmer–Verlet) or 4 (triple jump).
+    pub fn new(spring: SwingingSpring, start: State, t0: f64, dt: f64, order: u32) -> Result<Self> {
+        require_finite("t0", t0, "the start time must be finite (s)")?;
+        require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
         if start.x.length() == 0.0 || !start.is_finite() {
             return Err(Error::InvalidParameter {
                 name: "x0",
@@ -133,19 +169,38 @@ impl SwingingSpring {
             });
         }
         let mut s = start;
-        self.step(&mut s, 0.0, order)?; // a zero step: checks the order, changes nothing
-        let (mut t, mut states) = (vec![0.0], vec![start]);
-        for k in 1..=n_steps {
-            self.step(&mut s, dt, order).map_err(|_| Error::Diverged {
-                t: k as f64 * dt,
+        spring.step(&mut s, 0.0, order)?; // a zero step: checks the order, changes nothing
+        Ok(Self { spring, s: start, t0, dt, order, k: 0 })
+    }
+
+    /// Takes `n` steps of dt; on divergence the error names the time and the state stays the last
+    /// finite one.
+    pub fn step(&mut self, n: u64) -> Result<()> {
+        for _ in 0..n {
+            let mut s = self.s;
+            self.spring.step(&mut s, self.dt, self.order).map_err(|_| Error::Diverged {
+                t: self.t0 + (self.k + 1) as f64 * self.dt,
                 method: "spring verlet",
-                dt,
+                dt: self.dt,
             })?;
-            if k % save_every == 0 || k == n_steps {
-                t.push(k as f64 * dt);
-                states.push(s);
-            }
+            self.s = s;
+            self.k += 1;
         }
-        Ok((t, states))
+        Ok(())
+    }
+
+    /// Time reached t₀ + k·dt [s].
+    pub fn t(&self) -> f64 {
+        self.t0 + self.k as f64 * self.dt
+    }
+
+    /// State reached (r [m], v [m/s]).
+    pub fn state(&self) -> State {
+        self.s
+    }
+
+    /// The spring.
+    pub fn spring(&self) -> &SwingingSpring {
+        &self.spring
     }
 }

@@ -108,3 +108,27 @@ fn resonance_exchanges_energy_and_turns_the_swing_plane_in_steps() {
         assert!(step > 2.0 * spread, "plane turned by {step} between episodes, spread {spread} inside one");
     }
 }
+
+#[test]
+fn the_incremental_stepper_is_the_run_step_for_step() {
+    use pendulab_core::elastic::SpringStepper;
+    let sp = spring();
+    let s0 = State { x: DVec3::new(0.1, 0.05, -1.05), v: DVec3::new(0.0, 0.2, 0.1) };
+    for order in [2u32, 4] {
+        let (t, states) = sp.simulate(s0, 1e-3, 1000, 1, order).unwrap();
+        let mut st = SpringStepper::new(sp, s0, 0.0, 1e-3, order).unwrap();
+        let mut k = 0usize;
+        for piece in [1usize, 3, 50].iter().cycle() {
+            if k + piece > 1000 {
+                break;
+            }
+            st.step(*piece as u64).unwrap();
+            k += piece;
+            assert_eq!(st.t(), t[k]);
+            assert_eq!(st.state(), states[k], "order {order}, step {k}");
+        }
+        assert_eq!(sp.tension(&s0), (s0.x.length() - sp.rest_length) * sp.k_over_m * sp.mass);
+    }
+    assert!(SpringStepper::new(sp, s0, 0.0, 1e-3, 3).is_err());
+    assert!(SpringStepper::new(sp, State { x: DVec3::ZERO, v: DVec3::ZERO }, 0.0, 1e-3, 2).is_err());
+}

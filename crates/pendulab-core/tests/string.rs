@@ -178,3 +178,39 @@ fn partial_restitution_loses_one_minus_e_squared_and_settles_taut() {
     let e_end = energy(&sp, run.states.last().unwrap());
     assert!((e0 - e_end - lost).abs() < 1e-11 * e0.abs(), "{} vs {lost}", e0 - e_end);
 }
+
+#[test]
+fn the_incremental_stepper_cut_into_pieces_is_the_one_run_bit_for_bit() {
+    // a launch that leaves, flies, snaps back elastically, again and again: the stepper taken in
+    // pieces of 1, 7 and 100 grid steps (pieces ending taut and ending in flight) gives the states of
+    // one `simulate` run at the same grid points, and the same events
+    use pendulab_core::model::string_run::StringStepper;
+    let sp = string(1.0);
+    let s0 = launch((3.5 * G).sqrt());
+    let dt = 1e-3;
+    let run = sp.simulate(0.0, s0, 3.0, Method::Rattle, dt, 1, u64::MAX).unwrap();
+    assert!(run.events.len() >= 4, "{} events", run.events.len());
+    let mut st = StringStepper::new(sp, 0.0, s0, Method::Rattle, dt).unwrap();
+    let (mut k, mut slack_ends, mut events) = (0u64, 0, Vec::new());
+    for piece in [1u64, 7, 100].iter().cycle() {
+        if k + piece > 3000 {
+            break;
+        }
+        st.step(*piece).unwrap();
+        k += piece;
+        events.extend(st.take_events());
+        let t = k as f64 * dt;
+        assert_eq!(st.t(), t);
+        let i = run.t.iter().position(|&ti| ti == t).expect("a grid sample");
+        assert_eq!(st.state(), run.states[i], "state at t = {t}");
+        assert_eq!(st.is_taut(), run.taut[i], "mode at t = {t}");
+        if !st.is_taut() {
+            slack_ends += 1;
+            assert_eq!(st.tension(), 0.0);
+            assert_eq!(st.acceleration(), DVec3::new(0.0, 0.0, -G));
+        }
+    }
+    assert!(slack_ends > 3, "pieces ending in flight: {slack_ends}");
+    let n = events.len();
+    assert_eq!(events[..], run.events[..n]);
+}

@@ -26,8 +26,9 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
 from .. import _core
-from ..model import Pendulum, State
+from ..model import State
 from ..simulate import method_names
+from .live_models import OWN_STEPPER_MODELS, LabPendulum
 
 _LAYOUT = json.loads((Path(__file__).with_name("frame.json")).read_text(encoding="utf-8"))
 
@@ -71,13 +72,16 @@ def decode_records(data: bytes) -> np.ndarray:
 COMMON_PARAMS = ("length", "mass", "g")
 """The parameters every model shares (l [m], m [kg], g [m/s²]); the rest are a model's own."""
 
-MODEL_SPECS: dict[str, _core.ModelInfo] = {m["name"]: m for m in _core.models() if m["interactive"]}
-"""The core's models that run in the lab (``pendulab.models()`` with ``interactive``: the incremental
-stepper), by name: parameters with units, defaults, limits."""
+MODEL_SPECS: dict[str, _core.ModelInfo] = {
+    m["name"]: m for m in _core.models() if m["interactive"] or m["name"] in OWN_STEPPER_MODELS
+}
+"""The core's models that run in the lab, by name: parameters with units, defaults, limits. Those of
+``pendulab.models()`` marked ``interactive`` (the incremental ``pendulab.Stepper``), and the swinging
+spring and the string with their own core steppers (:mod:`pendulab.server.live_models`)."""
 
-OFFLINE_MODELS = tuple(m["name"] for m in _core.models() if not m["interactive"])
-"""Models of the registry that only run with ``pendulab run`` / ``pl.simulate`` (hybrid string,
-swinging spring, sampled pivot path), not in the lab."""
+OFFLINE_MODELS = tuple(m["name"] for m in _core.models() if m["name"] not in MODEL_SPECS)
+"""Models of the registry that only run with ``pendulab run`` / ``pl.simulate`` (a sampled pivot path:
+it needs arrays), not in the lab."""
 
 
 def own_params(model: str) -> list[_core.ParamSpec]:
@@ -147,7 +151,8 @@ Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
 
 
 class StateSpec(_Command):
-    """A state on TS²: either Cartesian ``x`` [m] and ``v`` [m/s] (on TS², or moved there with
+    """A state on TS² (for the swinging spring any (x, v) with x ≠ 0; for the string also a slack one,
+    strictly inside the sphere): either Cartesian ``x`` [m] and ``v`` [m/s] (on TS², or moved there with
     ``project: true``) or angles ``theta`` (from the downward vertical), ``phi`` [rad] and rates
     ``theta_dot``, ``phi_dot`` [rad/s] (omitted ones are 0)."""
 
@@ -174,8 +179,9 @@ class StateSpec(_Command):
             raise ValueError("give x and v (m, m/s), or at least theta (rad) with phi, theta_dot, phi_dot")
         return self
 
-    def to_state(self, pendulum: Pendulum) -> State:
-        """The state for ``pendulum``; ``InvalidInputError`` when it is off TS² (and not projected)."""
+    def to_state(self, pendulum: LabPendulum) -> State:
+        """The state for ``pendulum``; ``InvalidInputError`` when it is off TS² (and not projected;
+        the spring has no sphere, the string's slack states lie inside it)."""
         if self.x is not None and self.v is not None:
             return pendulum.state(self.x, self.v, project=self.project)
         return pendulum.state_from_angles(

@@ -9,9 +9,10 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..model import Pendulum, State
+from ..model import State
 from ..scenario import Scenario, ScenarioError, load_scenario
 from ..simulate import DEFAULTS
+from .live_models import LabPendulum, scenario_pendulum
 from .protocol import MODEL_SPECS
 
 BUILTIN_SCENARIO = """
@@ -37,7 +38,7 @@ class Setup:
 
     name: str | None
     title: str | None
-    pendulum: Pendulum
+    pendulum: LabPendulum
     state: State
     method: str
     dt: float
@@ -47,8 +48,8 @@ class Setup:
 
     @classmethod
     def from_scenario(cls, sc: Scenario, name: str | None) -> Setup:
-        """The setup of ``sc``; :class:`ScenarioError` if its model does not run in the lab (the
-        string, the swinging spring and sampled pivot paths run with ``pendulab run`` only)."""
+        """The setup of ``sc``; :class:`ScenarioError` if its model does not run in the lab (sampled
+        pivot paths run with ``pendulab run`` only)."""
         model = sc.spec.pendulum.model
         if model not in MODEL_SPECS:
             raise ScenarioError(
@@ -59,7 +60,9 @@ class Setup:
         sim = sc.spec.simulation
         rtol, atol = sim.resolved_tolerances()
         dt = sim.dt if sim.dt is not None else float(DEFAULTS["dt"])
-        return cls(name, sc.title, sc.pendulum(), sc.initial_state(), sim.method, dt, rtol, atol, sim.t0)
+        return cls(
+            name, sc.title, scenario_pendulum(sc), sc.initial_state(), sim.method, dt, rtol, atol, sim.t0
+        )
 
 
 def scenario_dirs() -> list[Path]:

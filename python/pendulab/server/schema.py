@@ -40,6 +40,8 @@ SLIDERS: dict[str, tuple[float, float, float]] = {
     "height": (-5.0, 5.0, 0.01),
     "amplitude": (0.0, 0.3, 0.001),
     "frequency": (0.0, 400.0, 0.1),
+    "stiffness": (1.0, 200.0, 0.01),
+    "restitution": (0.0, 1.0, 0.01),
 }
 """Slider spans of the models' own parameters (SI units). A parameter missing here gets a span from
 its default (see :func:`_slider`), so a new model in the core shows up without a change here."""

@@ -28,6 +28,16 @@ from .. import _core
 from ..model import Pendulum, State
 from ..scenario import ScenarioError
 from ..simulate import Stepper, methods
+from .live_models import (
+    DEFAULT_METHOD,
+    OWN_STEPPER_MODELS,
+    LabPendulum,
+    OwnStepper,
+    carry_state,
+    lab_pendulum,
+    methods_for,
+    own_stepper,
+)
 from .protocol import (
     FRAME_FIELDS,
     RECORD_LEN,
@@ -59,17 +69,19 @@ MAX_SUBSAMPLES = 16
 MAX_ELAPSED = 0.1
 """Longest wall-clock interval [s] one tick catches up on (after a stall the run resumes, not jumps)."""
 
-_SCALAR = {name: FRAME_FIELDS.index(name) for name in ("t", "energy", "j3", "tension", "power")}
+_SCALAR = {name: FRAME_FIELDS.index(name) for name in ("t", "energy", "j3", "tension", "power", "taut")}
 _VECTOR = {name: FRAME_FIELDS.index(f"{name}1") for name in ("x", "v", "a", "pivot")}
 
 
 def state_records(pendulum: Pendulum, t: np.ndarray, x: np.ndarray, v: np.ndarray) -> np.ndarray:
     """Frame records (N, RECORD_LEN) of states x [m], v [m/s] at times t [s]: the core's diagnostics at
     those times (time-dependent models: forcing, moving pivot), the acceleration ẍ [m/s²] relative to
-    the pivot (m ẍ is the net force there) and the pivot's position [m] (0 for a fixed pivot)."""
+    the pivot (m ẍ is the net force there) and the pivot's position [m] (0 for a fixed pivot); ``taut``
+    is 1 (the bob is on the sphere)."""
     diag = pendulum.diagnostics(x, v, t)
     rec = np.zeros((len(t), RECORD_LEN))
     rec[:, _SCALAR["t"]] = t
+    rec[:, _SCALAR["taut"]] = 1.0
     for name in ("energy", "j3", "tension", "power"):
         rec[:, _SCALAR[name]] = diag[name]
     for name, values in (("x", x), ("v", v), ("a", diag["acceleration"]), ("pivot", diag.get("pivot"))):
@@ -78,13 +90,30 @@ def state_records(pendulum: Pendulum, t: np.ndarray, x: np.ndarray, v: np.ndarra
     return rec
 
 
-def model_params(pendulum: Pendulum) -> dict[str, float]:
+def own_record(stepper: OwnStepper) -> np.ndarray:
+    """The frame record (RECORD_LEN,) of the spring's or the string's stepper at its current state:
+    the core's energy, J₃, tension (the spring's k(|r| − l₀); the string's, 0 while slack) and
+    acceleration; power 0 (both conservative between the string's snaps), pivot 0; ``taut`` 0 while the
+    string is slack."""
+    d = stepper.diagnostics()
+    s = stepper.state
+    rec = np.zeros(RECORD_LEN)
+    rec[_SCALAR["t"]] = stepper.t
+    for name in ("energy", "j3", "tension"):
+        rec[_SCALAR[name]] = d[name]
+    rec[_SCALAR["taut"]] = 1.0 if d["taut"] else 0.0
+    for name, values in (("x", s.x), ("v", s.v), ("a", d["acceleration"])):
+        rec[_VECTOR[name] : _VECTOR[name] + 3] = values
+    return rec
+
+
+def model_params(pendulum: LabPendulum) -> dict[str, float]:
     """Every own parameter of the pendulum's model (SI units): the given ones, else the registry's default."""
     given = pendulum.extra
     return {p["name"]: given.get(p["name"], float(p["default"])) for p in own_params(pendulum.model)}
 
 
-def rebuild(pendulum: Pendulum, **changes: Any) -> Pendulum:
+def rebuild(pendulum: LabPendulum, **changes: Any) -> LabPendulum:
     """The same model with some of length [m], mass [kg], g [m/s²] or its own parameters changed
     (``model=`` switches the model: its own parameters start from the registry's defaults)."""
     model = changes.pop("model", None) or pendulum.model
@@ -92,11 +121,11 @@ def rebuild(pendulum: Pendulum, **changes: Any) -> Pendulum:
     own = model_params(pendulum) if model == pendulum.model else {}
     own |= {p["name"]: float(p["default"]) for p in own_params(model) if p["name"] not in own}
     own |= {k: float(v) for k, v in changes.items()}
-    return Pendulum(
-        length=pendulum.length if common["length"] is None else common["length"],
-        g=pendulum.g if common["g"] is None else common["g"],
-        mass=pendulum.mass if common["mass"] is None else common["mass"],
-        model=model,
+    return lab_pendulum(
+        pendulum.length if common["length"] is None else common["length"],
+        pendulum.g if common["g"] is None else common["g"],
+        pendulum.mass if common["mass"] is None else common["mass"],
+        model,
         **own,
     )
 
@@ -133,14 +162,20 @@ class Session:
         if ell == self._start_length:
             return self._start
         k = ell / self._start_length
-        return self.pendulum.state(np.array(self._start.x) * k, np.array(self._start.v) * k, project=True)
+        return carry_state(self.pendulum, np.array(self._start.x) * k, np.array(self._start.v) * k)
 
-    def _new_stepper(self, state: State, t: float, pendulum: Pendulum | None = None) -> None:
+    def _new_stepper(self, state: State, t: float, pendulum: LabPendulum | None = None) -> None:
         """A stepper from ``state`` at ``t``; with ``pendulum``, that pendulum replaces the current one
-        only once its stepper exists (a method refusing the model leaves the session unchanged)."""
+        only once its stepper exists (a method refusing the model leaves the session unchanged). The
+        spring and the string step with their own core steppers (:mod:`.live_models`)."""
         dt = 0.0 if self.adaptive else self.dt
         p = self.pendulum if pendulum is None else pendulum
-        self.stepper = Stepper(p, state, method=self.method, dt=dt, rtol=self.rtol, atol=self.atol, t0=t)
+        self.stepper: Stepper | OwnStepper
+        if p.model in OWN_STEPPER_MODELS:
+            self.stepper = own_stepper(p, state, self.method, self.dt, t)
+        else:
+            assert isinstance(p, Pendulum)
+            self.stepper = Stepper(p, state, method=self.method, dt=dt, rtol=self.rtol, atol=self.atol, t0=t)
         self.pendulum = p
         self.clock = t
 
@@ -153,6 +188,8 @@ class Session:
 
     def records(self) -> np.ndarray:
         """The current state as one frame record, shape (1, RECORD_LEN)."""
+        if not isinstance(self.stepper, Stepper):
+            return own_record(self.stepper)[None, :]
         s = self.stepper.state
         return state_records(self.pendulum, np.array([self.stepper.t]), s.x[None, :], s.v[None, :])
 
@@ -210,7 +247,15 @@ class Session:
             case SetModel():
                 new = rebuild(self.pendulum, model=cmd.model, **cmd.params)
                 s = self.stepper.state
-                self._new_stepper(new.state(s.x, s.v, project=True), self.stepper.t, new)
+                old = self.method
+                allowed = methods_for(cmd.model)
+                if allowed is not None and self.method not in allowed:
+                    self.method = DEFAULT_METHOD  # the spring and the string run the RATTLE family
+                try:
+                    self._new_stepper(carry_state(new, s.x, s.v), self.stepper.t, new)
+                except Exception:
+                    self.method = old
+                    raise
                 self.epoch += 1
                 return self.records()
             case SetState():
@@ -288,6 +333,12 @@ class Session:
             raise CommandError(f"integration stopped at t = {self.stepper.t:g} s: {e}; paused") from None
 
     def _sample(self, advance: Callable[[int], object], n: int) -> np.ndarray:
+        if not isinstance(self.stepper, Stepper):
+            rows = []
+            for k in range(n):
+                advance(k)
+                rows.append(own_record(self.stepper))
+            return np.vstack(rows)
         ts = np.empty(n)
         xs = np.empty((n, 3))
         vs = np.empty((n, 3))

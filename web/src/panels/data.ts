@@ -1,9 +1,11 @@
 // The data panel: the numbers at the playhead (t, E, J₃, tension, z, drifts, power), the tension's extremes
-// so far, the model, and — for the ideal pendulum — the exact-solution quantities of the current orbit
+// so far, the model (for the swinging spring its length and stretch, for the string whether it is taut or
+// slack), and — for the ideal pendulum — the exact-solution quantities of the current orbit
 // (POST /api/exact): kind, turning heights, z-period, azimuthal advance, rotation number and its dynamic
 // and geometric parts.
 import type { ExactQuantities, Frame } from '../protocol';
 import type { LabStore } from '../state';
+import { offSphereNote, tetherStyle } from '../models';
 
 export function fmt(v: number | null | undefined, digits = 6): string {
   if (v === null || v === undefined || Number.isNaN(v)) return '—';
@@ -37,12 +39,31 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
     rows.splice(1, 0, ['model', s.model, '']);
     rows.splice(4, 0, ['power P = dE/dt', fmt(f?.power, 6), 'W']);
   }
+  const at = rows.findIndex((r) => r[0] === 'tension');
+  const style = tetherStyle(s?.model, f?.taut ?? true);
+  if (style === 'coil' && s) {
+    // the spring: its force k(|r| − l₀) (> 0 pulling), its length and stretch (l is the rest length l₀)
+    const r = f ? Math.hypot(...f.x) : null;
+    rows[at] = ['spring force k(|r| − l₀)', fmt(f?.tension, 6), 'N'];
+    rows.splice(at + 1, 0, ['spring length |r|', fmt(r, 6), 'm'], [
+      'stretch |r| − l₀',
+      r === null ? '—' : fmt(r - s.params.length, 4),
+      'm',
+    ]);
+  } else if (style === 'slack string') {
+    rows[at] = ['tension', 'slack (0)', 'N'];
+    rows.splice(at + 1, 0, ['string', `slack: free flight, |x| = ${fmt(f ? Math.hypot(...f.x) : null, 5)} m`, '']);
+  } else if (style === 'taut string') {
+    rows.splice(at + 1, 0, ['string', 'taut', '']);
+  }
   return rows;
 }
 
 /** Why there is no exact solution (null when there is one or it is on its way). */
 export function exactNote(store: LabStore): string {
   const s = store.status;
+  const off = offSphereNote(s?.model);
+  if (off !== null) return off;
   if (s && s.model !== 'ideal') {
     return `the exact solution exists for the ideal pendulum only; this is the ${s.model} model`;
   }

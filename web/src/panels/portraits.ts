@@ -7,6 +7,7 @@
 import type { EMView, EffectivePotential, Frame } from '../protocol';
 import type { History } from '../state';
 import { CurvePlot, dataRange, potentialRange } from './curves';
+import { offSphereNote } from '../models';
 
 /** Polar angle θ from the downward vertical [rad] of a position x [m] relative to the pivot. */
 export function polarAngle(x: readonly [number, number, number]): number {
@@ -17,11 +18,22 @@ export class Portraits {
   private readonly phase: CurvePlot;
   private readonly potential: CurvePlot;
   private readonly em: CurvePlot;
+  private readonly note: HTMLElement;
 
   constructor(private readonly container: HTMLElement) {
     this.phase = new CurvePlot(container, 'phase portrait (z, ż) [m, m/s]', 'z [m]', 'ż');
     this.potential = new CurvePlot(container, 'V_eff(θ) and the energy E [J]', 'θ [rad]', 'J');
     this.em = new CurvePlot(container, 'energy–momentum map (J₃ [kg m²/s], E [J])', 'J₃', 'E');
+    this.note = document.createElement('p');
+    this.note.className = 'note';
+    this.note.dataset['note'] = 'portraits';
+    container.appendChild(this.note);
+  }
+
+  /** Says why V_eff and the map are empty for a model off the sphere (models.ts), or nothing. */
+  setModel(model: string): void {
+    const text = offSphereNote(model) ?? '';
+    if (this.note.textContent !== text) this.note.textContent = text;
   }
 
   /** Draws the energy–momentum map's boundary (or nothing) and the frame's (J₃, E). */

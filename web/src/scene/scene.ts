@@ -11,6 +11,8 @@ import { BobDrag } from './drag';
 import { TRAIL_MAX } from '../state';
 import type { VectorName } from './vectors';
 import { arrowScales, bobVectors } from './vectors';
+import { Tether } from './tether';
+import { tetherStyle } from '../models';
 
 export interface ViewOptions extends Record<VectorName, boolean> {
   trail: boolean;
@@ -94,6 +96,9 @@ export class PendulumScene {
   drag: BobDrag | null = null;
   private pivotNow = new THREE.Vector3();
   private topView = false;
+  /** The spring's coil and the slack string (tether.ts); the model decides what links pivot and bob. */
+  private readonly tether = new Tether();
+  private model = 'ideal';
 
   constructor(private readonly container: HTMLElement) {
     this.renderer = new THREE.WebGLRenderer({ antialias: true });
@@ -163,6 +168,7 @@ export class PendulumScene {
       this.bob,
       this.axes,
       this.trail,
+      this.tether.group,
       ...Object.values(this.arrows),
     );
     this.setLength(1);
@@ -202,6 +208,11 @@ export class PendulumScene {
     this.camera.far = 100 * l;
     this.camera.updateProjectionMatrix();
     this.controls.update();
+  }
+
+  /** The model drawn (models.ts): a rod, the spring's coil, or the string (taut, or slack and dashed). */
+  setModel(model: string): void {
+    this.model = model;
   }
 
   setTopView(on: boolean): void {
@@ -252,9 +263,11 @@ export class PendulumScene {
     this.equator.visible = view.sphere;
     this.axes.visible = view.axes;
     const has = f !== null;
-    this.rod.visible = has;
+    const style = tetherStyle(this.model, f?.taut ?? true);
+    this.rod.visible = has && (style === 'rod' || style === 'taut string');
     this.bob.visible = has;
     if (f === null) {
+      this.tether.update('rod', [0, 0, 0], [0, 0, 0], this.length, gdir);
       this.trail.geometry.setDrawRange(0, 0);
       for (const a of Object.values(this.arrows)) a.visible = false;
       return;
@@ -270,8 +283,11 @@ export class PendulumScene {
     if (r > 0) {
       this.rod.position.copy(x).multiplyScalar(0.5).add(pivot);
       this.rod.quaternion.setFromUnitVectors(Y, x.clone().divideScalar(r));
-      this.rod.scale.set(0.008 * this.length, r, 0.008 * this.length);
+      const thick = style === 'taut string' ? 0.003 : 0.008;
+      this.rod.scale.set(thick * this.length, r, thick * this.length);
     }
+    const down: Vec3 = g < 0 ? [-gdir[0], -gdir[1], -gdir[2]] : gdir;
+    this.tether.update(style, f.x, f.pivot, this.length, down);
     this.updateTrail(view.trail ? trail : [], f);
 
     const origin: Vec3 = [view.originX, view.originY, view.originZ];

@@ -188,3 +188,60 @@ export async function checkModels(page, { check, WAIT, simulated }) {
   check(Math.abs(Math.hypot(pivot[0], pivot[1]) - 5) < 1e-9, `slewing: the pivot moves on the boom tip circle (|p| = ${Math.hypot(pivot[0], pivot[1]).toFixed(6)} m)`);
   await page.screenshot({ path: 'test-results/lab-slewing.png' });
 }
+
+/** The swinging spring and the string, chosen in the picker: they move, the spring's length varies and its
+ *  coil is drawn, the string goes slack (dashed, tension 0), and the sphere-only panels say why they are
+ *  empty. */
+export async function checkOffSphere(page, { check, WAIT, simulated }) {
+  const waitStatus = (fn, arg) => page.waitForFunction(fn, arg, { timeout: WAIT, polling: 100 });
+  await page.evaluate(() => {
+    window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
+    window.pendulab.send({ type: 'resume' });
+  });
+  await waitStatus(() => window.pendulab.store.status?.model === 'ideal' && !window.pendulab.store.status.paused);
+
+  // the spring: picked, it bounces and swings (its length |x| varies), energy kept, the coil drawn
+  await pickModel(page, 'spring');
+  await waitStatus(() => window.pendulab.store.status?.model === 'spring');
+  await page.locator('[data-param="stiffness"] input').first().waitFor({ timeout: WAIT });
+  await typeParam(page, 'stiffness', 60);
+  await waitStatus(() => window.pendulab.store.status?.model_params.stiffness === 60);
+  await simulated(page, 2);
+  const spring = await page.evaluate(() => {
+    const tr = window.pendulab.store.trajectory;
+    const r = tr.map((f) => Math.hypot(...f.x));
+    const e = tr.map((f) => f.energy);
+    const moved = Math.hypot(...tr[0].x.map((c, i) => c - tr[tr.length - 1].x[i]));
+    return { dr: Math.max(...r) - Math.min(...r), de: Math.max(...e) - Math.min(...e), moved, n: tr.length };
+  });
+  check(spring.dr > 0.05 && spring.moved > 0.01 && spring.de < 1e-3, `spring: moves, its length varies by ${spring.dr.toFixed(3)} m, E kept to ${spring.de.toExponential(1)} J (${spring.n} frames)`);
+  const springRows = await page.evaluate(() => document.getElementById('data').textContent);
+  check(/spring length \|r\|/.test(springRows) && /swinging spring leaves the sphere/.test(springRows), 'spring: the data panel shows its length and says why the exact solution is not shown');
+  await page.screenshot({ path: 'test-results/lab-spring.png' });
+
+  // the string: picked, launched hard enough to go slack; frames report it, the panel says slack
+  await pickModel(page, 'string');
+  await waitStatus(() => window.pendulab.store.status?.model === 'string');
+  await page.evaluate(() => window.pendulab.send({ type: 'set_state', theta: 0, theta_dot: 5.8596 }));
+  await simulated(page, 2.5);
+  const string = await page.evaluate(() => {
+    const tr = window.pendulab.store.trajectory;
+    const slack = tr.filter((f) => !f.taut);
+    return {
+      slack: slack.length,
+      taut: tr.length - slack.length,
+      inside: slack.every((f) => Math.hypot(...f.x) < window.pendulab.store.status.params.length),
+      zeroT: slack.every((f) => f.tension === 0),
+      moved: Math.hypot(...tr[0].x.map((c, i) => c - tr[tr.length - 1].x[i])),
+    };
+  });
+  check(string.slack > 0 && string.taut > 0 && string.inside && string.zeroT && string.moved > 0.01, `string: moves and goes slack (${string.slack} slack frames inside the sphere with T = 0, ${string.taut} taut)`);
+  // catch a slack moment on the page: the data panel says slack
+  await page.evaluate(() => window.pendulab.send({ type: 'set_state', theta: 0, theta_dot: 5.8596 }));
+  await page.waitForFunction(() => /slack: free flight/.test(document.getElementById('data').textContent), null, { timeout: WAIT, polling: 20 });
+  await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  await page.screenshot({ path: 'test-results/lab-string-slack.png' });
+  const note = await page.evaluate(() => document.querySelector('[data-note="portraits"]').textContent);
+  check(/string goes slack/.test(note), 'string: the data panel reports slack, the portraits say why V_eff is not shown');
+  await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+}

@@ -10,7 +10,7 @@ import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { chromium } from 'playwright-core';
-import { checkModels, checkViews } from './models.mjs';
+import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
 const WAIT = 60_000; // ms: the longest any condition is waited for
@@ -153,6 +153,7 @@ try {
   await page2.close();
 
   await checkModels(page, { check, WAIT, simulated });
+  await checkOffSphere(page, { check, WAIT, simulated });
   await checkViews(page, { check, WAIT, simulated });
 
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);

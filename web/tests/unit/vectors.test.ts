@@ -14,6 +14,7 @@ function conical(t: number, R = 0.6, w = 2, h = 0.8): Frame {
     tension: 5,
     power: 0,
     pivot: [0, 0, 0],
+    taut: true,
   };
 }
 
