@@ -47,14 +47,18 @@ export function renderQuality(renderer: string | null, devicePixelRatio: number)
   };
 }
 
-/** The WebGL renderer's name (unmasked where the browser allows), from a throw-away context; null when
- *  WebGL is missing or says nothing. */
+/** The WebGL renderer's name, from a throw-away context: RENDERER where it names the renderer (Firefox,
+ *  which warns that WEBGL_debug_renderer_info is deprecated), else the unmasked name (Chromium, Safari:
+ *  RENDERER says "WebKit WebGL"); null when WebGL is missing or says nothing. */
 export function probeRenderer(): string | null {
   const canvas = document.createElement('canvas');
   const gl = canvas.getContext('webgl2') ?? canvas.getContext('webgl');
   if (gl === null) return null;
-  const info = gl.getExtension('WEBGL_debug_renderer_info');
-  const name: unknown = gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
+  let name: unknown = gl.getParameter(gl.RENDERER);
+  if (typeof name !== 'string' || name === '' || /^webkit webgl$/i.test(name)) {
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    if (info !== null) name = gl.getParameter(info.UNMASKED_RENDERER_WEBGL);
+  }
   gl.getExtension('WEBGL_lose_context')?.loseContext(); // browsers cap the live contexts per page
-  return typeof name === 'string' && name !== '' ? name : null;
+  return typeof name === 'string' && name !== '' && !/^webkit webgl$/i.test(name) ? name : null;
 }
