@@ -14,7 +14,7 @@ import { throttle } from './panels/params';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
 import type { RenderQuality } from './scene/quality';
 import { probeRenderer, renderQuality } from './scene/quality';
-import { FrameCosts, RateLimiter } from './perf';
+import { ChangeGate, FrameCosts, RateLimiter } from './perf';
 import { gravityDirection } from './scene/vectors';
 import { scenarioRequest } from './export';
 import { LabStore } from './state';
@@ -195,6 +195,8 @@ async function main(): Promise<void> {
   // the scene follows every frame; the panels (numbers, plots, portraits) at 10 Hz, which reads as live
   // and spares the CPU: each uPlot setData redraws a whole chart (docs/performance.md)
   const panelTick = new RateLimiter(100);
+  // the scene is rendered when what it shows changed (a paused lab draws nothing until the camera moves)
+  const sceneInputs = new ChangeGate();
   const frame = (now: number) => {
     const dt = (now - lastWall) / 1000;
     lastWall = now;
@@ -204,13 +206,17 @@ async function main(): Promise<void> {
     const p = store.status?.params;
     const gdir = gravityDirection(store.status?.model_params);
     const { start, end } = store.trailRange(view.trailSeconds);
-    scene.update(f, { frames: store.trail, start, end }, view, p?.mass ?? 1, p?.g ?? 9.81, gdir);
+    const mass = p?.mass ?? 1;
+    const g = p?.g ?? 9.81;
+    const changed = sceneInputs.changed([f, store.trail, start, end, mass, g, ...gdir, ...Object.values(view)]);
+    if (changed) scene.update(f, { frames: store.trail, start, end }, view, mass, g, gdir);
     let t1 = performance.now();
     costs.add('scene update', t1 - t0);
-    scene.render();
-    t0 = performance.now();
-    costs.add('scene render (submit)', t0 - t1);
-    drawn++;
+    if (scene.draw(changed)) {
+      drawn++;
+      t0 = performance.now();
+      costs.add('scene render (submit)', t0 - t1);
+    } else t0 = t1;
     if (panelTick.due(now)) {
       plots.update(store.history);
       t1 = performance.now();

@@ -20,6 +20,19 @@ export class RateLimiter {
   }
 }
 
+/** Whether a list of values differs from the previous call's (element by element, Object.is): the scene
+ *  is rendered only when what it shows changed, so a paused lab leaves the CPU alone. */
+export class ChangeGate {
+  private last: readonly unknown[] | null = null;
+
+  changed(values: readonly unknown[]): boolean {
+    const prev = this.last;
+    if (prev !== null && prev.length === values.length && values.every((v, i) => Object.is(v, prev[i]))) return false;
+    this.last = [...values];
+    return true;
+  }
+}
+
 /** Milliseconds spent per named part of the frame: `add` after each run, `take` the means since the last
  *  take (window.pendulab.frameCosts, read by tests/e2e/profile.mjs). */
 export class FrameCosts {

@@ -114,6 +114,8 @@ export class PendulumScene {
   drag: BobDrag | null = null;
   private pivotNow = new THREE.Vector3();
   private topView = false;
+  /** Something drawn changed outside `update` (size, length, camera, stereo): `draw` must render. */
+  private invalid = true;
 
   /** `quality` (quality.ts): MSAA, pixel ratio and the sphere of reach's layers for the browser's renderer
    *  (in software: no MSAA, 1, one layer). */
@@ -209,6 +211,7 @@ export class PendulumScene {
     this.bob.scale.setScalar(0.05 * l);
     this.axes.scale.setScalar(l);
     if (changed) this.resetCamera();
+    this.invalid = true;
   }
 
   /** Fits the camera to a scene of radius r [m] around the origin (length + the pivot's distance) when it
@@ -228,6 +231,7 @@ export class PendulumScene {
     this.camera.far = 100 * l;
     this.camera.updateProjectionMatrix();
     this.controls.update();
+    this.invalid = true;
   }
 
   setTopView(on: boolean): void {
@@ -269,6 +273,7 @@ export class PendulumScene {
     this.renderer.domElement.style.height = '';
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.invalid = true;
   }
 
   /** Draws the state `f` of a pendulum of mass `mass` [kg] under gravity g [m/s²] along the unit vector
@@ -367,8 +372,19 @@ export class PendulumScene {
     }
   }
 
+  /** Moves the camera (OrbitControls, with its damping) and renders if anything drawn changed: the
+   *  caller's `changed` (the inputs of `update`), the camera, or size, length, view or stereo. A still
+   *  scene is not drawn again (the canvas keeps its picture). Returns whether it rendered. */
+  draw(changed: boolean): boolean {
+    const moved = this.controls.update();
+    if (!changed && !moved && !this.invalid) return false;
+    this.invalid = false;
+    this.render();
+    return true;
+  }
+
+  /** Renders now. */
   render(): void {
-    this.controls.update();
     // stereo: the screen plane through the orbit's centre, eyes 1/30 of the viewing distance apart
     const distance = this.camera.position.distanceTo(this.controls.target);
     if (this.stereo === 'anaglyph' && this.anaglyph !== null) {

@@ -8,7 +8,7 @@
 //   - the CPU time of every process: the browser, its GPU process (where SwiftShader rasterises WebGL and
 //     the compositor draws), the page's renderer, and the server, from /proc (Linux).
 // Not a test: it prints. Usage (from web/, after `make build`):
-//   node tests/e2e/profile.mjs [seconds=4] [query, e.g. "s=rosette"]
+//   node tests/e2e/profile.mjs [seconds=4] [query, e.g. "s=rosette"]     (PAUSE=1: the lab paused)
 // Environment: PENDULAB (default ../.venv/bin/pendulab), CHROMIUM (default /usr/bin/chromium); STATIC=dir
 // serves that build of the page instead of the package's (e.g. `git archive` of an older commit's
 // python/pendulab/server/static, to compare before and after on the same machine state).
@@ -137,6 +137,12 @@ try {
   await page.goto(`${base}/${query ? '?' + query : ''}`);
   await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: 60_000 });
   await page.waitForTimeout(1500); // past the start-up work (first plots, exact solution, V_eff)
+  if (process.env.PAUSE) {
+    // PAUSE=1: the lab paused (nothing moves: what does an idle page cost?)
+    await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+    await page.waitForFunction(() => window.pendulab.store.status?.paused === true);
+    await page.waitForTimeout(500);
+  }
   const info = await page.evaluate(() => {
     const gl = document.createElement('canvas').getContext('webgl2');
     const ext = gl?.getExtension('WEBGL_debug_renderer_info');
@@ -156,6 +162,7 @@ try {
   const metrics = async () =>
     Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
   await page.evaluate(() => window.pendulab?.frameCosts?.());
+  const drawn0 = await page.evaluate(() => window.pendulab?.drawn() ?? 0);
   const m0 = await metrics();
   const c0 = cpuByKind(userDataDir, server.pid);
   const w0 = performance.now();
@@ -176,6 +183,7 @@ try {
   const c1 = cpuByKind(userDataDir, server.pid);
   const m1 = await metrics();
   const costs = await page.evaluate(() => window.pendulab?.frameCosts?.() ?? null);
+  const drawn = (await page.evaluate(() => window.pendulab?.drawn() ?? 0)) - drawn0;
 
   const dts = stamps
     .slice(1)
@@ -185,7 +193,7 @@ try {
   const p90 = dts[Math.floor(dts.length * 0.9)];
   console.log(
     `frame rate: median ${(1000 / median).toFixed(1)} fps (${median.toFixed(1)} ms), 90th percentile ` +
-      `${p90.toFixed(1)} ms, ${dts.length} frames in ${wall.toFixed(1)} s`,
+      `${p90.toFixed(1)} ms, ${dts.length} frames in ${wall.toFixed(1)} s, the scene rendered in ${drawn}`,
   );
   const n = dts.length;
   if (costs) {

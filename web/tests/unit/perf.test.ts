@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { FrameCosts, RateLimiter } from '../../src/perf';
+import { ChangeGate, FrameCosts, RateLimiter } from '../../src/perf';
 import { isSoftwareRenderer, layeredOpacity, renderQuality } from '../../src/scene/quality';
 
 describe('render quality', () => {
@@ -75,6 +75,31 @@ describe('rate limiter', () => {
     r.reset();
     expect(r.due(61)).toBe(true);
     expect(r.due(62)).toBe(false);
+  });
+});
+
+describe('change gate', () => {
+  it('says changed on the first call and whenever a value or the length differs (Object.is)', () => {
+    const gate = new ChangeGate();
+    const f = { t: 1 };
+    expect(gate.changed([f, 0, 1, 'off'])).toBe(true);
+    expect(gate.changed([f, 0, 1, 'off'])).toBe(false);
+    expect(gate.changed([{ t: 1 }, 0, 1, 'off'])).toBe(true); // another object, even if equal
+    const g = { t: 1 };
+    gate.changed([g, 0, 1, 'off']);
+    expect(gate.changed([g, 0, 2, 'off'])).toBe(true);
+    expect(gate.changed([g, 0, 2, 'anaglyph'])).toBe(true);
+    expect(gate.changed([g, 0, 2])).toBe(true);
+    expect(gate.changed([g, 0, 2])).toBe(false);
+    expect(gate.changed([g, -0, 2])).toBe(true);
+  });
+
+  it('keeps its own copy of the values', () => {
+    const gate = new ChangeGate();
+    const values = [1, 2];
+    gate.changed(values);
+    values[1] = 3;
+    expect(gate.changed(values)).toBe(true);
   });
 });
 
