@@ -12,6 +12,9 @@ import type { Command, ScenarioInfo, Schema, Status } from './protocol';
 import { ReducedView } from './scene/reduced';
 import { throttle } from './panels/params';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
+import type { RenderQuality } from './scene/quality';
+import { probeRenderer, renderQuality } from './scene/quality';
+import { ChangeGate, FrameCosts, RateLimiter } from './perf';
 import { gravityDirection } from './scene/vectors';
 import { scenarioRequest } from './export';
 import { LabStore } from './state';
@@ -19,14 +22,17 @@ import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
 
 declare global {
   interface Window {
-    /** For debugging and end-to-end tests: the store, frames drawn, a command sender, a screenshot, the
-     *  bob's position on the page. */
+    /** For debugging, profiling and end-to-end tests: the store, frames drawn, a command sender, a
+     *  screenshot, the bob's position on the page, the drawing quality chosen for the WebGL renderer, and
+     *  the mean milliseconds per part of the frame since the last call (tests/e2e/profile.mjs). */
     pendulab?: {
       store: LabStore;
       drawn: () => number;
       send: (cmd: Command) => void;
       screenshot: () => string;
       bobOnScreen: () => { x: number; y: number } | null;
+      quality: () => RenderQuality;
+      frameCosts: () => Record<string, { ms: number; count: number }>;
     };
   }
 }
@@ -63,11 +69,18 @@ async function main(): Promise<void> {
   ]);
   store.tickHz = schema.tick_hz;
 
-  const scene = new PendulumScene(byId('scene'));
+  // a software rasteriser (headless chromium, no GPU) draws without MSAA at one pixel per CSS pixel
+  const quality = renderQuality(probeRenderer(), window.devicePixelRatio);
+  if (quality.software) {
+    byId('render').textContent = ' · software WebGL: no antialiasing';
+    byId('render').title = `${quality.renderer ?? ''}: drawn without multisampling for the frame rate`;
+  }
+  const scene = new PendulumScene(byId('scene'), quality);
   const view = { ...DEFAULT_VIEW };
-  const plots = new Plots(byId('plots'));
+  const costs = new FrameCosts();
+  const plots = new Plots(byId('plots'), (ms) => costs.add('plots drawn (uPlot)', ms));
   const portraits = new Portraits(byId('portraits'));
-  const reduced = new ReducedView(byId('reduced'));
+  const reduced = new ReducedView(byId('reduced'), quality);
   const data = new DataPanel(byId('data'));
 
   const fromUrl = decodeUrl(window.location.search);
@@ -140,8 +153,10 @@ async function main(): Promise<void> {
       if (store.status !== null) startup = commandsFor(fromStatus(store.status));
     },
     onFrames: (frames) => {
+      const t0 = performance.now();
       store.onFrames(frames);
       analyses.onFrames();
+      costs.add('frames received', performance.now() - t0);
     },
     onNotice: (n) => {
       if (n.type === 'error') {
@@ -175,26 +190,48 @@ async function main(): Promise<void> {
     send,
     screenshot: () => scene.screenshot(),
     bobOnScreen: () => scene.bobOnScreen(),
+    quality: () => quality,
+    frameCosts: () => costs.take(),
   };
   let lastWall = performance.now();
-  let lastPanels = 0;
+  // the scene follows every frame; the panels (numbers, plots, portraits) at 10 Hz, which reads as live
+  // and spares the CPU: each uPlot setData redraws a whole chart (docs/performance.md)
+  const panelTick = new RateLimiter(100);
+  // the scene is rendered when what it shows changed (a paused lab draws nothing until the camera moves)
+  const sceneInputs = new ChangeGate();
   const frame = (now: number) => {
     const dt = (now - lastWall) / 1000;
     lastWall = now;
+    let t0 = performance.now();
     store.advancePlayhead(dt);
     const f = store.displayed();
     const p = store.status?.params;
     const gdir = gravityDirection(store.status?.model_params);
-    scene.update(f, store.trailWindow(view.trailSeconds), view, p?.mass ?? 1, p?.g ?? 9.81, gdir);
-    scene.render();
-    drawn++;
-    if (now - lastPanels > 100) {
-      lastPanels = now;
+    const { start, end } = store.trailRange(view.trailSeconds);
+    const mass = p?.mass ?? 1;
+    const g = p?.g ?? 9.81;
+    const changed = sceneInputs.changed([f, store.trail, start, end, mass, g, ...gdir, ...Object.values(view)]);
+    if (changed) scene.update(f, { frames: store.trail, start, end }, view, mass, g, gdir);
+    let t1 = performance.now();
+    costs.add('scene update', t1 - t0);
+    if (scene.draw(changed)) {
+      drawn++;
+      t0 = performance.now();
+      costs.add('scene render (submit)', t0 - t1);
+    } else t0 = t1;
+    if (panelTick.due(now)) {
       plots.update(store.history);
+      t1 = performance.now();
+      costs.add('plots setData', t1 - t0);
       portraits.update(store.history, f, analyses.veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);
       portraits.updateEM(analyses.em, f);
+      t0 = performance.now();
+      costs.add('portraits', t0 - t1);
       reduced.update(f, p?.length ?? 1);
+      t1 = performance.now();
+      costs.add('reduced view', t1 - t0);
       data.update(f, store);
+      costs.add('data panel', performance.now() - t1);
     }
     requestAnimationFrame(frame);
   };

@@ -98,6 +98,19 @@ export function startsNewTrajectory(prev: Status | null, next: Status, latestT: 
   return prev === null || next.epoch !== prev.epoch || (latestT !== null && next.t < latestT);
 }
 
+/** The index of the first frame of the time-sorted `frames` with t > `t` (with t ≥ `t` if `inclusive`). */
+function firstAfter(frames: readonly Frame[], t: number, inclusive: boolean): number {
+  let lo = 0;
+  let hi = frames.length;
+  while (lo < hi) {
+    const mid = (lo + hi) >> 1;
+    const ft = (frames[mid] as Frame).t;
+    if (inclusive ? ft < t : ft <= t) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo;
+}
+
 export class LabStore {
   status: Status | null = null;
   /** Recent frames of the current epoch, oldest first (for interpolation). */
@@ -281,11 +294,20 @@ export class LabStore {
     return interpolateFrames(a, b, span > 0 ? (t - a.t) / span : 1);
   }
 
-  /** Trail frames with time in [playT − seconds, playT]. */
-  trailWindow(seconds: number): Frame[] {
+  /** The trail frames with time in [playT − seconds, playT]: `this.trail[start..end)` (the trail is sorted
+   *  by time; found by bisection, nothing copied: the scene reads it every frame). */
+  trailRange(seconds: number): { start: number; end: number } {
     const t = this.playT;
-    if (t === null) return [];
-    return this.trail.filter((f) => f.t <= t && f.t >= t - seconds);
+    if (t === null) return { start: 0, end: 0 };
+    const end = firstAfter(this.trail, t, false);
+    const start = firstAfter(this.trail, t - seconds, true);
+    return { start: Math.min(start, end), end };
+  }
+
+  /** Trail frames with time in [playT − seconds, playT] (a copy). */
+  trailWindow(seconds: number): Frame[] {
+    const { start, end } = this.trailRange(seconds);
+    return this.trail.slice(start, end);
   }
 
   /** The trajectory received in this epoch as CSV: a `#` line of JSON metadata, a header with units, rows. */

@@ -3,6 +3,7 @@
 // epoch's first value.
 import uPlot from 'uplot';
 import type { History } from '../state';
+import { Visibility } from './visible';
 
 interface PlotSpec {
   title: string;
@@ -26,18 +27,35 @@ function formatTick(v: number): string {
 
 export class Plots {
   private readonly charts: uPlot[] = [];
+  private readonly els: HTMLElement[] = [];
+  private readonly visibility = new Visibility();
+  /** Per chart, the history (object, length, last time) it shows: an unchanged one is not redrawn. */
+  private readonly shown: { h: History | null; n: number; t: number }[] = [];
 
-  constructor(private readonly container: HTMLElement) {
+  /** `onDrawn(ms)` after each chart's drawing (uPlot draws in a microtask after setData), for profiling. */
+  constructor(
+    private readonly container: HTMLElement,
+    onDrawn: (ms: number) => void = () => {},
+  ) {
+    let drawStart = 0;
+    const hooks: uPlot.Hooks.Arrays = {
+      drawClear: [() => void (drawStart = performance.now())],
+      draw: [() => onDrawn(performance.now() - drawStart)],
+    };
     for (const spec of PLOTS) {
       const el = document.createElement('div');
       el.className = 'plot';
       container.appendChild(el);
+      this.els.push(el);
+      this.visibility.watch(el);
+      this.shown.push({ h: null, n: -1, t: NaN });
       const opts: uPlot.Options = {
         title: `${spec.title} [${spec.unit}]`,
         width: this.width(),
         height: 150,
         scales: { x: { time: false } },
         legend: { show: false },
+        hooks,
         cursor: { show: true, drag: { x: false, y: false } },
         series: [{ label: 't [s]' }, { label: spec.title, stroke: spec.color, width: 1.5 }],
         axes: [
@@ -64,9 +82,18 @@ export class Plots {
     for (const c of this.charts) c.setSize({ width: this.width(), height: 150 });
   }
 
+  /** Redraws the charts on screen whose data changed (uPlot redraws the whole chart on every setData). */
   update(h: History): void {
+    const n = h.t.length;
+    const t = h.t[n - 1] ?? NaN;
     PLOTS.forEach((spec, i) => {
-      this.charts[i]?.setData([h.t, h[spec.key]]);
+      const chart = this.charts[i];
+      const el = this.els[i];
+      const shown = this.shown[i];
+      if (chart === undefined || el === undefined || shown === undefined || !this.visibility.visible(el)) return;
+      if (shown.h === h && shown.n === n && Object.is(shown.t, t)) return;
+      Object.assign(shown, { h, n, t });
+      chart.setData([h.t, h[spec.key]]);
     });
   }
 }

@@ -8,6 +8,7 @@ import type { EMView, EffectivePotential, Frame } from '../protocol';
 import type { History } from '../state';
 import { CurvePlot, dataRange, potentialRange } from './curves';
 import { offSphereNote } from '../models';
+import { Visibility } from './visible';
 
 /** Polar angle θ from the downward vertical [rad] of a position x [m] relative to the pivot. */
 export function polarAngle(x: readonly [number, number, number]): number {
@@ -19,11 +20,14 @@ export class Portraits {
   private readonly potential: CurvePlot;
   private readonly em: CurvePlot;
   private readonly note: HTMLElement;
+  /** Only the plots on screen are drawn (the side panel scrolls). */
+  private readonly visibility = new Visibility();
 
   constructor(private readonly container: HTMLElement) {
     this.phase = new CurvePlot(container, 'phase portrait (z, ż) [m, m/s]', 'z [m]', 'ż');
     this.potential = new CurvePlot(container, 'V_eff(θ) and the energy E [J]', 'θ [rad]', 'J');
     this.em = new CurvePlot(container, 'energy–momentum map (J₃ [kg m²/s], E [J])', 'J₃', 'E');
+    for (const p of [this.phase, this.potential, this.em]) this.visibility.watch(p.canvas);
     this.note = document.createElement('p');
     this.note.className = 'note';
     this.note.dataset['note'] = 'portraits';
@@ -36,8 +40,9 @@ export class Portraits {
     if (this.note.textContent !== text) this.note.textContent = text;
   }
 
-  /** Draws the energy–momentum map's boundary (or nothing) and the frame's (J₃, E). */
+  /** Draws the energy–momentum map's boundary (or nothing) and the frame's (J₃, E), when on screen. */
   updateEM(em: EMView | null, f: Frame | null): void {
+    if (!this.visibility.visible(this.em.canvas)) return;
     const width = Math.max(200, this.container.clientWidth - 8);
     if (em === null) {
       this.em.draw(width, [], { lo: -1, hi: 1 }, { lo: -1, hi: 1 });
@@ -53,14 +58,17 @@ export class Portraits {
     });
   }
 
-  /** Redraws both from the history, the drawn frame `f`, the server's V_eff curve (or null), and the
-   *  pendulum's mass [kg], g [m/s²], length [m]. */
+  /** Redraws both (those on screen) from the history, the drawn frame `f`, the server's V_eff curve (or
+   *  null), and the pendulum's mass [kg], g [m/s²], length [m]. */
   update(h: History, f: Frame | null, veff: EffectivePotential | null, mass: number, g: number, length: number): void {
     const width = Math.max(200, this.container.clientWidth - 8);
-    const dot: [number, number] | null = f ? [f.x[2], f.v[2]] : null;
-    const zs = f ? [...h.z, f.x[2]] : h.z;
-    const zds = f ? [...h.zdot, f.v[2]] : h.zdot;
-    this.phase.draw(width, [{ x: h.z, y: h.zdot, color: '#59c3ff' }], dataRange(zs), dataRange(zds), { dot });
+    if (this.visibility.visible(this.phase.canvas)) {
+      const dot: [number, number] | null = f ? [f.x[2], f.v[2]] : null;
+      const zr = dataRange(f ? [...h.z, f.x[2]] : h.z);
+      const zdr = dataRange(f ? [...h.zdot, f.v[2]] : h.zdot);
+      this.phase.draw(width, [{ x: h.z, y: h.zdot, color: '#59c3ff' }], zr, zdr, { dot });
+    }
+    if (!this.visibility.visible(this.potential.canvas)) return;
     if (veff === null || veff.theta.length === 0) {
       this.potential.draw(width, [], { lo: 0, hi: Math.PI }, { lo: -1, hi: 1 });
       return;

@@ -6,6 +6,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { Frame, ReducedCurves } from '../protocol';
+import type { RenderQuality } from './quality';
 
 /** σ₁, σ₂, σ₃ of a state x [m], v [m/s] relative to the pivot, for rod length l [m] (T-3.1). */
 export function sigmaOf(f: Pick<Frame, 'x' | 'v'>, length: number): [number, number, number] {
@@ -34,14 +35,17 @@ export class ReducedView {
   private lastDrawn = -Infinity;
   private dirty = true;
 
-  constructor(private readonly container: HTMLElement) {
+  constructor(
+    private readonly container: HTMLElement,
+    quality: RenderQuality,
+  ) {
     const title = document.createElement('div');
     title.className = 'curve-title';
     title.textContent = 'reduced view (σ₁, σ₂, σ₃): J₃ surface ∩ energy plane';
     container.appendChild(title);
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    this.renderer = new THREE.WebGLRenderer({ antialias: quality.antialias, preserveDrawingBuffer: true });
     this.renderer.localClippingEnabled = true;
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.renderer.setPixelRatio(quality.pixelRatio);
     this.renderer.domElement.className = 'reduced-canvas';
     container.appendChild(this.renderer.domElement);
     this.note = document.createElement('p');

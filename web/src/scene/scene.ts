@@ -13,6 +13,15 @@ import type { VectorName } from './vectors';
 import { arrowScales, bobVectors } from './vectors';
 import { Tether } from './tether';
 import { tetherStyle } from '../models';
+import type { RenderQuality } from './quality';
+import { layeredOpacity } from './quality';
+
+/** The trail to draw: `frames[start..end)`, oldest first (LabStore.trailRange). */
+export interface TrailSlice {
+  frames: readonly Frame[];
+  start: number;
+  end: number;
+}
 
 export interface ViewOptions extends Record<VectorName, boolean> {
   trail: boolean;
@@ -61,8 +70,11 @@ export const ARROW_COLORS: Record<VectorName, number> = {
 const AT_ORIGIN: readonly VectorName[] = ['angularMomentum', 'torque'];
 
 const BACKGROUND = new THREE.Color(0x11141b);
+/** Opacity of each of the two faces of the sphere of reach. */
+const REACH_OPACITY = 0.06;
 const TRAIL_COLOR = new THREE.Color(0x59c3ff);
 const Y = new THREE.Vector3(0, 1, 0);
+const NO_TRAIL: TrailSlice = { frames: [], start: 0, end: 0 };
 
 function arrow(color: number): THREE.ArrowHelper {
   const a = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 1, color);
@@ -84,6 +96,14 @@ export class PendulumScene {
   private readonly trail: THREE.Line;
   private readonly trailPositions: Float32Array;
   private readonly trailColors: Float32Array;
+  /** Points the fade colours were computed for (they depend on the count only). */
+  private trailColored = -1;
+  // scratch vectors: update() runs every frame and allocates none of its own
+  private readonly tmpX = new THREE.Vector3();
+  private readonly tmpBob = new THREE.Vector3();
+  private readonly tmpDir = new THREE.Vector3();
+  private readonly tmpVec = new THREE.Vector3();
+  private readonly tmpOrigin = new THREE.Vector3();
   private readonly arrows = Object.fromEntries(
     Object.entries(ARROW_COLORS).map(([name, color]) => [name, arrow(color)]),
   ) as Record<VectorName, THREE.ArrowHelper>;
@@ -99,10 +119,17 @@ export class PendulumScene {
   /** The spring's coil and the slack string (tether.ts); the model decides what links pivot and bob. */
   private readonly tether = new Tether();
   private model = 'ideal';
+  /** Something drawn changed outside `update` (size, length, camera, stereo): `draw` must render. */
+  private invalid = true;
 
-  constructor(private readonly container: HTMLElement) {
-    this.renderer = new THREE.WebGLRenderer({ antialias: true });
-    this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+  /** `quality` (quality.ts): MSAA, pixel ratio and the sphere of reach's layers for the browser's renderer
+   *  (in software: no MSAA, 1, one layer). */
+  constructor(
+    private readonly container: HTMLElement,
+    quality: RenderQuality,
+  ) {
+    this.renderer = new THREE.WebGLRenderer({ antialias: quality.antialias });
+    this.renderer.setPixelRatio(quality.pixelRatio);
     this.renderer.domElement.id = 'scene-canvas';
     container.appendChild(this.renderer.domElement);
     this.scene.background = BACKGROUND;
@@ -122,9 +149,10 @@ export class PendulumScene {
       new THREE.MeshBasicMaterial({
         color: 0x8fb3ff,
         transparent: true,
-        opacity: 0.06,
+        // one face with the opacity of both, or each face with its own
+        opacity: quality.reachLayers === 1 ? layeredOpacity(REACH_OPACITY, 2) : REACH_OPACITY,
         depthWrite: false,
-        side: THREE.DoubleSide,
+        side: quality.reachLayers === 2 ? THREE.DoubleSide : THREE.FrontSide,
       }),
     );
     const ring = new THREE.BufferGeometry().setFromPoints(
@@ -189,6 +217,7 @@ export class PendulumScene {
     this.bob.scale.setScalar(0.05 * l);
     this.axes.scale.setScalar(l);
     if (changed) this.resetCamera();
+    this.invalid = true;
   }
 
   /** Fits the camera to a scene of radius r [m] around the origin (length + the pivot's distance) when it
@@ -208,10 +237,12 @@ export class PendulumScene {
     this.camera.far = 100 * l;
     this.camera.updateProjectionMatrix();
     this.controls.update();
+    this.invalid = true;
   }
 
   /** The model drawn (models.ts): a rod, the spring's coil, or the string (taut, or slack and dashed). */
   setModel(model: string): void {
+    this.invalid ||= model !== this.model;
     this.model = model;
   }
 
@@ -254,11 +285,12 @@ export class PendulumScene {
     this.renderer.domElement.style.height = '';
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.invalid = true;
   }
 
   /** Draws the state `f` of a pendulum of mass `mass` [kg] under gravity g [m/s²] along the unit vector
    *  `gdir`, with the trail frames; the pivot at f.pivot, the bob at f.pivot + f.x. */
-  update(f: Frame | null, trail: readonly Frame[], view: ViewOptions, mass: number, g: number, gdir: Vec3): void {
+  update(f: Frame | null, trail: TrailSlice, view: ViewOptions, mass: number, g: number, gdir: Vec3): void {
     this.sphere.visible = view.sphere;
     this.equator.visible = view.sphere;
     this.axes.visible = view.axes;
@@ -272,71 +304,104 @@ export class PendulumScene {
       for (const a of Object.values(this.arrows)) a.visible = false;
       return;
     }
-    const pivot = new THREE.Vector3(...f.pivot);
-    this.pivotNow.copy(pivot);
+    const pivot = this.pivotNow.fromArray(f.pivot);
     this.fit(this.length + pivot.length());
     for (const o of [this.sphere, this.equator, this.pivot]) o.position.copy(pivot);
-    const x = new THREE.Vector3(...f.x);
+    const x = this.tmpX.fromArray(f.x);
     const r = x.length();
-    const bob = x.clone().add(pivot);
+    const bob = this.tmpBob.copy(x).add(pivot);
     this.bob.position.copy(bob);
     if (r > 0) {
       this.rod.position.copy(x).multiplyScalar(0.5).add(pivot);
-      this.rod.quaternion.setFromUnitVectors(Y, x.clone().divideScalar(r));
+      this.rod.quaternion.setFromUnitVectors(Y, this.tmpDir.copy(x).divideScalar(r));
       const thick = style === 'taut string' ? 0.003 : 0.008;
       this.rod.scale.set(thick * this.length, r, thick * this.length);
     }
     const down: Vec3 = g < 0 ? [-gdir[0], -gdir[1], -gdir[2]] : gdir;
     this.tether.update(style, f.x, f.pivot, this.length, down);
-    this.updateTrail(view.trail ? trail : [], f);
+    this.updateTrail(view.trail ? trail : NO_TRAIL, f);
 
+    const names = Object.keys(this.arrows) as VectorName[];
+    if (!names.some((name) => view[name])) {
+      for (const name of names) this.arrows[name].visible = false;
+      return;
+    }
     const origin: Vec3 = [view.originX, view.originY, view.originZ];
     const vectors = bobVectors(f, mass, g, gdir, origin);
     const scales = arrowScales(this.length, mass, g);
-    const originWorld = new THREE.Vector3(...origin).add(pivot);
-    for (const name of Object.keys(this.arrows) as VectorName[]) {
+    const originWorld = this.tmpOrigin.fromArray(origin).add(pivot);
+    for (const name of names) {
       const from = AT_ORIGIN.includes(name) ? originWorld : bob;
-      const vec = new THREE.Vector3(...vectors[name]).multiplyScalar(scales[name]);
+      const vec = this.tmpVec.fromArray(vectors[name]).multiplyScalar(scales[name]);
       this.setArrow(this.arrows[name], view[name], from, vec);
     }
   }
 
+  /** Points the arrow `a` from `from` along `vec` (which it may scale). */
   private setArrow(a: THREE.ArrowHelper, on: boolean, from: THREE.Vector3, vec: THREE.Vector3): void {
     const len = vec.length();
     a.visible = on && len > 1e-6 * this.length;
     if (!a.visible) return;
     a.position.copy(from);
-    a.setDirection(vec.clone().divideScalar(len));
+    a.setDirection(vec.divideScalar(len));
     const head = Math.min(0.25 * len, 0.08 * this.length);
     a.setLength(len, head, 0.5 * head);
   }
 
-  private updateTrail(frames: readonly Frame[], now: Frame): void {
-    const n = Math.min(frames.length, TRAIL_MAX);
-    const start = frames.length - n;
+  /** Writes the trail's points (the slice, then the drawn state) into the fixed buffers in place and
+   *  uploads only the part drawn; the fade colours are recomputed only when the number of points changed. */
+  private updateTrail(trail: TrailSlice, now: Frame): void {
+    const n = Math.min(trail.end - trail.start, TRAIL_MAX);
+    const geom = this.trail.geometry;
+    if (n <= 0) {
+      geom.setDrawRange(0, 0);
+      return;
+    }
+    const start = trail.end - n;
     const p = this.trailPositions;
-    const c = this.trailColors;
-    const tmp = new THREE.Color();
     const total = n + 1;
     for (let i = 0; i < total; i++) {
-      const f = i < n ? (frames[start + i] as Frame) : now;
+      const f = i < n ? (trail.frames[start + i] as Frame) : now;
       p[3 * i] = f.x[0] + f.pivot[0];
       p[3 * i + 1] = f.x[1] + f.pivot[1];
       p[3 * i + 2] = f.x[2] + f.pivot[2];
-      // fade: old points blend into the background
-      tmp.copy(BACKGROUND).lerp(TRAIL_COLOR, total > 1 ? (i + 1) / total : 1);
-      c[3 * i] = tmp.r;
-      c[3 * i + 1] = tmp.g;
-      c[3 * i + 2] = tmp.b;
     }
-    const geom = this.trail.geometry;
-    geom.setDrawRange(0, n > 0 ? total : 0);
-    (geom.getAttribute('position') as THREE.BufferAttribute).needsUpdate = true;
-    (geom.getAttribute('color') as THREE.BufferAttribute).needsUpdate = true;
+    geom.setDrawRange(0, total);
+    const position = geom.getAttribute('position') as THREE.BufferAttribute;
+    position.clearUpdateRanges();
+    position.addUpdateRange(0, 3 * total);
+    position.needsUpdate = true;
+    if (total !== this.trailColored) {
+      this.trailColored = total;
+      const c = this.trailColors;
+      const tmp = new THREE.Color();
+      for (let i = 0; i < total; i++) {
+        // fade: old points blend into the background
+        tmp.copy(BACKGROUND).lerp(TRAIL_COLOR, (i + 1) / total);
+        c[3 * i] = tmp.r;
+        c[3 * i + 1] = tmp.g;
+        c[3 * i + 2] = tmp.b;
+      }
+      const color = geom.getAttribute('color') as THREE.BufferAttribute;
+      color.clearUpdateRanges();
+      color.addUpdateRange(0, 3 * total);
+      color.needsUpdate = true;
+    }
   }
 
+  /** Moves the camera (OrbitControls, with its damping) and renders if anything drawn changed: the
+   *  caller's `changed` (the inputs of `update`), the camera, or size, length, view or stereo. A still
+   *  scene is not drawn again (the canvas keeps its picture). Returns whether it rendered. */
+  draw(changed: boolean): boolean {
+    const moved = this.controls.update();
+    if (!changed && !moved && !this.invalid) return false;
+    this.invalid = false;
+    this.render();
+    return true;
+  }
+
+  /** Renders now. */
   render(): void {
-    this.controls.update();
     // stereo: the screen plane through the orbit's centre, eyes 1/30 of the viewing distance apart
     const distance = this.camera.position.distanceTo(this.controls.target);
     if (this.stereo === 'anaglyph' && this.anaglyph !== null) {

@@ -2,9 +2,9 @@
 // Run by tests/e2e/run.sh (`make test-e2e`), which starts the server; by hand:
 //   pendulab serve --no-browser --port 8765 &  node tests/e2e/smoke.mjs http://127.0.0.1:8765
 // Checks: no console errors, frames arrive and are drawn, the canvas shows the pendulum (pixels differ from
-// the background), the frame rate (median of the page's frame times, printed), negative g visibly changes
-// the motion (the bob goes above the pivot), pause stops the frames, the shared URL reproduces the
-// scenario. Writes test-results/lab.png and test-results/lab-negative-g.png. Waits are generous (a loaded
+// the background), the frame rate (median of the page's frame times, printed; above 25 fps, see MIN_FPS) and
+// the software renderer recognised (no MSAA there), negative g visibly changes the motion (the bob goes
+// above the pivot), pause stops the frames, the shared URL reproduces the scenario. Writes test-results/lab.png and test-results/lab-negative-g.png. Waits are generous (a loaded
 // 2-core machine), but every check compares against a bound and can fail.
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -85,11 +85,24 @@ try {
   const dts = stamps.slice(1).map((t, i) => t - stamps[i]).sort((p, q) => p - q);
   const median = dts[Math.floor(dts.length / 2)];
   const p90 = dts[Math.floor(dts.length * 0.9)];
+  const fps = 1000 / median;
+  const quality = await page.evaluate(() => window.pendulab.quality());
   console.log(
-    `frame rate: median ${(1000 / median).toFixed(1)} fps (frame time ${median.toFixed(1)} ms, ` +
-      `90th percentile ${p90.toFixed(1)} ms, ${dts.length} frames)`,
+    `frame rate: median ${fps.toFixed(1)} fps (frame time ${median.toFixed(1)} ms, ` +
+      `90th percentile ${p90.toFixed(1)} ms, ${dts.length} frames; WebGL ${quality.software ? 'software' : 'GPU'}: ` +
+      `${quality.renderer}, antialias ${quality.antialias}, pixel ratio ${quality.pixelRatio})`,
   );
-  check(1000 / median > 5, `median frame rate above 5 fps (${(1000 / median).toFixed(1)} fps)`);
+  // The bound, MIN_FPS = 25: headless chromium hands out frames on the display's 16.7 ms clock, so the
+  // median is 60, 30, 20, 15 … fps. The lab draws at 60 here (trail and plots on), also while other builds
+  // load this 2-core machine (load average 6–7.5, or two busy loops, measured); before the software-renderer
+  // path (scene/quality.ts: no MSAA, one-layer sphere of reach) it drew at 30 on a quiet machine and 15–20
+  // on a busy one. 30 fps (every other frame missed) is let pass, as a machine busy with other work can
+  // cause it; 20 or less means a frame costs 40 ms or more again, the old cost: a regression, not noise
+  // (docs/performance.md, "Lab frame rate").
+  const MIN_FPS = 25;
+  check(fps > MIN_FPS, `median frame rate above ${MIN_FPS} fps (${fps.toFixed(1)} fps)`);
+  const software = /swiftshader|llvmpipe/i.test(quality.renderer ?? '');
+  check(quality.software === software && quality.antialias === !software, `software WebGL recognised (${quality.renderer})`);
 
   const lit = await page.evaluate(async () => {
     const img = new Image();

@@ -190,6 +190,36 @@ describe('LabStore', () => {
     expect(store.trailWindow(2).map((f) => f.t)).toEqual([2, 3]);
   });
 
+  it('finds the trail window as an index range without copying, both ends included', () => {
+    store.onFrames([0, 1, 2, 3, 4].map((t) => frame(t)));
+    store.playT = 3;
+    expect(store.trailRange(2)).toEqual({ start: 1, end: 4 }); // t = 1, 2, 3
+    store.playT = 3.5;
+    expect(store.trailRange(0.2)).toEqual({ start: 4, end: 4 }); // nothing in [3.3, 3.5]
+    store.playT = 10;
+    expect(store.trailRange(100)).toEqual({ start: 0, end: 5 });
+    store.playT = -1;
+    expect(store.trailRange(10)).toEqual({ start: 0, end: 0 });
+    store.playT = null;
+    expect(store.trailRange(10)).toEqual({ start: 0, end: 0 });
+  });
+
+  it('gives the same trail window by bisection as by filtering', () => {
+    const ts = Array.from({ length: 300 }, (_, i) => 0.37 * i + 0.01 * Math.sin(i));
+    store.onFrames(ts.map((t) => frame(t)));
+    for (const [play, seconds] of [
+      [50, 10],
+      [0.37 * 100, 0.37 * 20],
+      [200, 5],
+      [0, 0],
+      [111.1, 111.1],
+    ] as const) {
+      store.playT = play;
+      const want = store.trail.filter((f) => f.t <= play && f.t >= play - seconds).map((f) => f.t);
+      expect(store.trailWindow(seconds).map((f) => f.t)).toEqual(want);
+    }
+  });
+
   it('writes the trajectory as CSV with metadata and units', () => {
     store.onFrames([frame(0), frame(0.5)]);
     const lines = store.toCSV().trim().split('\n');
