@@ -8,7 +8,7 @@ import { Controls } from './panels/controls';
 import { Plots } from './panels/plots';
 import { Portraits } from './panels/portraits';
 import { Analyses, getJSON } from './analyses';
-import type { Command, ScenarioInfo, Schema, Status } from './protocol';
+import type { Command, ScenarioInfo, Schema, Status, Vec3 } from './protocol';
 import { ReducedView } from './scene/reduced';
 import { throttle } from './panels/params';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
@@ -23,14 +23,16 @@ import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
 declare global {
   interface Window {
     /** For debugging, profiling and end-to-end tests: the store, frames drawn, a command sender, a
-     *  screenshot, the bob's position on the page, the drawing quality chosen for the WebGL renderer, and
-     *  the mean milliseconds per part of the frame since the last call (tests/e2e/profile.mjs). */
+     *  screenshot, the bob's and the velocity handle's positions on the page, the drawing quality chosen
+     *  for the WebGL renderer, and the mean milliseconds per part of the frame since the last call
+     *  (tests/e2e/profile.mjs). */
     pendulab?: {
       store: LabStore;
       drawn: () => number;
       send: (cmd: Command) => void;
       screenshot: () => string;
       bobOnScreen: () => { x: number; y: number } | null;
+      handleOnScreen: () => { x: number; y: number } | null;
       quality: () => RenderQuality;
       frameCosts: () => Record<string, { ms: number; count: number }>;
     };
@@ -175,21 +177,44 @@ async function main(): Promise<void> {
   });
 
   let drawn = 0;
-  // dragging the bob: pause, then the start follows the pointer (at rest there); the server checks it
-  const sendStart = throttle((x: [number, number, number]) => {
-    send({ type: 'set_state', x, v: [0, 0, 0], project: true });
+  // dragging the bob: pause, then the start follows the pointer (at rest there); pulling the velocity
+  // arrow: pause, then the start velocity follows it (x kept). One throttle for both, so a late send of
+  // one gesture never lands after the next; the server checks (and projects) every state.
+  const sendStart = throttle((x: Vec3, v: Vec3) => {
+    send({ type: 'set_state', x, v, project: true });
   }, 50);
-  scene.enableDrag((x, phase) => {
-    if (phase === 'start' && store.status?.paused === false) send({ type: 'pause' });
-    sendStart(x);
-    if (phase === 'end') explain('start set by dragging (at rest there): press start to release it');
-  });
+  const pauseForGesture = () => {
+    if (store.status?.paused === false) send({ type: 'pause' });
+  };
+  scene.enableDrag(
+    (x, phase) => {
+      if (phase === 'start') pauseForGesture();
+      sendStart(x, [0, 0, 0]);
+      if (phase === 'end') explain('start set by dragging (at rest there): press start to release it');
+    },
+    (x, pulled, phase) => {
+      if (phase === 'start') {
+        pauseForGesture();
+        explain('pull the arrow to set the start velocity');
+        return;
+      }
+      if (pulled === null) return;
+      sendStart(x, pulled.v);
+      const cap = pulled.capped ? ' (capped: the most the arrow sets, 4√(g l))' : '';
+      explain(
+        phase === 'end'
+          ? `start velocity set: |v| = ${pulled.speed.toFixed(2)} m/s${cap}; press start to run from it`
+          : `start velocity |v| = ${pulled.speed.toFixed(2)} m/s${cap}`,
+      );
+    },
+  );
   window.pendulab = {
     store,
     drawn: () => drawn,
     send,
     screenshot: () => scene.screenshot(),
     bobOnScreen: () => scene.bobOnScreen(),
+    handleOnScreen: () => scene.handleOnScreen(),
     quality: () => quality,
     frameCosts: () => costs.take(),
   };

@@ -2,10 +2,14 @@
 // orbiting and starts a drag; while the pointer moves, the ray under it is cut with the sphere of radius l
 // around the pivot (the nearer crossing, else the sphere's point nearest the ray), and the position
 // relative to the pivot [m] is handed on; releasing ends it. The page turns that into `set_state` (at rest
-// there: v = 0) — the server checks it and computes everything from it.
+// there: v = 0) — the server checks it and computes everything from it. Likewise pulling the velocity
+// arrow's grab handle chooses the start velocity at the bob's position (VelocityDrag; its geometry in
+// velocity.ts).
 import * as THREE from 'three';
 import type { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { Vec3 } from '../protocol';
+import type { PulledVelocity } from './velocity';
+import { velocityFromRay } from './velocity';
 
 export type DragPhase = 'start' | 'move' | 'end';
 
@@ -74,5 +78,101 @@ export class BobDrag {
     this.dragging = false;
     this.controls.enabled = true;
     this.onDrag(this.position(e), 'end');
+  }
+}
+
+/** What a pull of the velocity arrow works with, read when it starts: the pivot and the bob's position
+ *  relative to it [m] as drawn, metres of arrow per m/s, and the largest speed it may set [m/s]. */
+export interface PullBasis {
+  pivot: Vec3;
+  x: Vec3;
+  arrowScale: number;
+  vmax: number;
+}
+
+/** Pulling the velocity arrow by its grab handle (`handle`, at the arrow's tip): a press on it starts a
+ *  pull (the camera's orbiting off); while the pointer moves, the velocity whose arrow ends under it
+ *  (velocity.ts `velocityFromRay`, in the plane through the bob perpendicular to x, x fixed at the start
+ *  of the pull) is handed on; releasing ends it. `onPull(x, pulled, phase)`: pulled is null at the start
+ *  and at an end without any move (a press alone changes nothing). */
+export class VelocityDrag {
+  private basis: PullBasis | null = null;
+  private moved = false;
+  private readonly raycaster = new THREE.Raycaster();
+  private readonly tmp = new THREE.Vector3();
+
+  constructor(
+    private readonly canvas: HTMLCanvasElement,
+    private readonly camera: THREE.Camera,
+    private readonly controls: OrbitControls,
+    private readonly handle: THREE.Object3D,
+    /** What may hide the handle (the bob): a press on it in front of the handle is not a pull. */
+    private readonly occluder: THREE.Object3D,
+    /** The handle's grab radius [m] (a little more than the drawn one, to be easy to hit). */
+    private readonly grabRadius: () => number,
+    private readonly pullBasis: () => PullBasis | null,
+    private readonly onPull: (x: Vec3, pulled: PulledVelocity | null, phase: DragPhase) => void,
+  ) {
+    canvas.addEventListener('pointerdown', (e) => this.down(e), { capture: true });
+    canvas.addEventListener('pointermove', (e) => this.move(e));
+    canvas.addEventListener('pointerup', (e) => this.up(e));
+    canvas.addEventListener('pointercancel', (e) => this.up(e));
+  }
+
+  get active(): boolean {
+    return this.basis !== null;
+  }
+
+  private ray(e: PointerEvent): THREE.Ray {
+    const r = this.canvas.getBoundingClientRect();
+    const ndc = new THREE.Vector2(((e.clientX - r.left) / r.width) * 2 - 1, -((e.clientY - r.top) / r.height) * 2 + 1);
+    this.raycaster.setFromCamera(ndc, this.camera);
+    return this.raycaster.ray;
+  }
+
+  private pulled(e: PointerEvent): PulledVelocity | null {
+    if (this.basis === null) return null;
+    const ray = this.ray(e);
+    const { pivot, x, arrowScale, vmax } = this.basis;
+    return velocityFromRay(
+      { origin: [ray.origin.x, ray.origin.y, ray.origin.z], direction: [ray.direction.x, ray.direction.y, ray.direction.z] },
+      pivot,
+      x,
+      arrowScale,
+      vmax,
+    );
+  }
+
+  private down(e: PointerEvent): void {
+    if (e.button !== 0 || !this.handle.visible) return;
+    const ray = this.ray(e);
+    const centre = this.handle.getWorldPosition(this.tmp);
+    const grab = this.grabRadius();
+    if (ray.distanceToPoint(centre) > grab) return;
+    const hidden = this.raycaster.intersectObject(this.occluder, false)[0];
+    if (hidden !== undefined && hidden.distance < centre.sub(ray.origin).dot(ray.direction) - grab) return;
+    const basis = this.pullBasis();
+    if (basis === null) return;
+    this.basis = basis;
+    this.moved = false;
+    this.controls.enabled = false;
+    this.canvas.setPointerCapture?.(e.pointerId);
+    e.stopImmediatePropagation();
+    this.onPull(basis.x, null, 'start');
+  }
+
+  private move(e: PointerEvent): void {
+    if (this.basis === null) return;
+    this.moved = true;
+    this.onPull(this.basis.x, this.pulled(e), 'move');
+  }
+
+  private up(e: PointerEvent): void {
+    if (this.basis === null) return;
+    const pulled = this.moved ? this.pulled(e) : null;
+    const x = this.basis.x;
+    this.basis = null;
+    this.controls.enabled = true;
+    this.onPull(x, pulled, 'end');
   }
 }

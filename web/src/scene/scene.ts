@@ -1,16 +1,20 @@
 // The three.js view of the pendulum: pivot (where the model moves it), faint sphere of reach, rod, bob,
 // fading trail, axes and toggled vectors (vectors.ts: velocity, momentum, gravity, rod force, net force,
-// angular momentum and torque about a chosen origin). Coordinates are the physics' own (z up, metres): the
-// camera's up vector is +z. It only draws what the store hands it.
+// angular momentum and torque about a chosen origin), the velocity arrow's grab handle (pulling it sets the
+// start velocity: drag.ts, velocity.ts). Coordinates are the physics' own (z up, metres): the camera's up
+// vector is +z. It only draws what the store hands it.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
 import { StereoEffect } from 'three/addons/effects/StereoEffect.js';
 import type { Frame, Vec3 } from '../protocol';
-import { BobDrag } from './drag';
+import type { DragPhase, PullBasis } from './drag';
+import { BobDrag, VelocityDrag } from './drag';
 import { TRAIL_MAX } from '../state';
 import type { VectorName } from './vectors';
 import { arrowScales, bobVectors } from './vectors';
+import type { PulledVelocity } from './velocity';
+import { handleOffset, maxStartSpeed } from './velocity';
 import { Tether } from './tether';
 import { tetherStyle } from '../models';
 import type { RenderQuality } from './quality';
@@ -74,6 +78,11 @@ const BACKGROUND = new THREE.Color(0x11141b);
 const REACH_OPACITY = 0.06;
 const TRAIL_COLOR = new THREE.Color(0x59c3ff);
 const Y = new THREE.Vector3(0, 1, 0);
+/** The velocity arrow's grab handle: drawn radius, grab radius and the least distance of its centre from
+ *  the bob's (bob radius 0.05 l + the handle's), all in units of l. */
+const HANDLE_RADIUS = 0.025;
+const HANDLE_GRAB = 0.06;
+const HANDLE_CLEAR = 0.085;
 const NO_TRAIL: TrailSlice = { frames: [], start: 0, end: 0 };
 
 function arrow(color: number): THREE.ArrowHelper {
@@ -114,6 +123,15 @@ export class PendulumScene {
   private sideBySide: StereoEffect | null = null;
   /** Dragging the bob on the sphere (drag.ts); null until `enableDrag`. */
   drag: BobDrag | null = null;
+  /** Pulling the velocity arrow by its handle (drag.ts); null until `enableDrag`. */
+  pull: VelocityDrag | null = null;
+  /** The grab handle at the velocity arrow's tip (shown with the velocity arrow). */
+  private readonly handle: THREE.Mesh;
+  /** The state drawn last, the velocity arrow's scale [m per m/s] and g [m/s²] it was drawn with. */
+  private drawn: Frame | null = null;
+  private velocityScale = arrowScales(1, 1, 9.81).velocity;
+  private gNow = 9.81;
+  private readonly tmpHandle = new THREE.Vector3();
   private pivotNow = new THREE.Vector3();
   private topView = false;
   /** The spring's coil and the slack string (tether.ts); the model decides what links pivot and bob. */
@@ -178,6 +196,12 @@ export class PendulumScene {
       new THREE.MeshStandardMaterial({ color: 0xff8c42, roughness: 0.35 }),
     );
     this.axes = new THREE.AxesHelper(1.3);
+    this.handle = new THREE.Mesh(
+      new THREE.SphereGeometry(1, 16, 12),
+      new THREE.MeshBasicMaterial({ color: 0xf2c8ff }),
+    );
+    this.handle.name = 'velocity handle';
+    this.handle.visible = false;
 
     this.trailPositions = new Float32Array(3 * (TRAIL_MAX + 1));
     this.trailColors = new Float32Array(3 * (TRAIL_MAX + 1));
@@ -197,6 +221,7 @@ export class PendulumScene {
       this.axes,
       this.trail,
       this.tether.group,
+      this.handle,
       ...Object.values(this.arrows),
     );
     this.setLength(1);
@@ -215,6 +240,7 @@ export class PendulumScene {
     this.equator.scale.setScalar(l);
     this.pivot.scale.setScalar(l);
     this.bob.scale.setScalar(0.05 * l);
+    this.handle.scale.setScalar(HANDLE_RADIUS * l);
     this.axes.scale.setScalar(l);
     if (changed) this.resetCamera();
     this.invalid = true;
@@ -252,20 +278,58 @@ export class PendulumScene {
   }
 
   /** Lets the user drag the bob over the sphere of reach: `onDrag(x, phase)` gets the position relative to
-   *  the pivot [m] at the start, while moving and at the end of a drag (drag.ts). */
-  enableDrag(onDrag: (x: Vec3, phase: 'start' | 'move' | 'end') => void): void {
-    this.drag = new BobDrag(this.renderer.domElement, this.camera, this.controls, this.bob, onDrag, () => ({
+   *  the pivot [m] at the start, while moving and at the end of a drag; and pull the velocity arrow by its
+   *  handle: `onPull(x, pulled, phase)` gets the bob's position as drawn when the pull started and the
+   *  velocity asked for (null at the start, and at an end without a move) (drag.ts). */
+  enableDrag(
+    onDrag: (x: Vec3, phase: DragPhase) => void,
+    onPull: (x: Vec3, pulled: PulledVelocity | null, phase: DragPhase) => void,
+  ): void {
+    const canvas = this.renderer.domElement;
+    // the handle first: its press listener must see the pointer before the bob's
+    this.pull = new VelocityDrag(
+      canvas,
+      this.camera,
+      this.controls,
+      this.handle,
+      this.bob,
+      () => HANDLE_GRAB * this.length,
+      () => this.pullBasis(),
+      onPull,
+    );
+    this.drag = new BobDrag(canvas, this.camera, this.controls, this.bob, onDrag, () => ({
       pivot: this.pivotNow,
       length: this.length,
     }));
   }
 
-  /** The bob's position on the page [CSS px], or null when it is not drawn (for tests). */
-  bobOnScreen(): { x: number; y: number } | null {
-    if (!this.bob.visible) return null;
-    const p = this.bob.position.clone().project(this.camera);
+  /** What a pull of the velocity arrow starts from: the state drawn, the arrow's scale, the speed cap. */
+  private pullBasis(): PullBasis | null {
+    const f = this.drawn;
+    if (f === null) return null;
+    return {
+      pivot: [...f.pivot],
+      x: [...f.x],
+      arrowScale: this.velocityScale,
+      vmax: maxStartSpeed(this.length, this.gNow),
+    };
+  }
+
+  private onScreen(o: THREE.Object3D): { x: number; y: number } | null {
+    if (!o.visible) return null;
+    const p = o.position.clone().project(this.camera);
     const r = this.renderer.domElement.getBoundingClientRect();
     return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+  }
+
+  /** The bob's position on the page [CSS px], or null when it is not drawn (for tests). */
+  bobOnScreen(): { x: number; y: number } | null {
+    return this.onScreen(this.bob);
+  }
+
+  /** The velocity arrow's grab handle on the page [CSS px], or null when it is not drawn (for tests). */
+  handleOnScreen(): { x: number; y: number } | null {
+    return this.onScreen(this.handle);
   }
 
   setStereo(mode: Stereo): void {
@@ -298,6 +362,10 @@ export class PendulumScene {
     const style = tetherStyle(this.model, f?.taut ?? true);
     this.rod.visible = has && (style === 'rod' || style === 'taut string');
     this.bob.visible = has;
+    this.drawn = f;
+    this.gNow = g;
+    this.velocityScale = arrowScales(this.length, mass, g).velocity;
+    this.handle.visible = has && view.velocity;
     if (f === null) {
       this.tether.update('rod', [0, 0, 0], [0, 0, 0], this.length, gdir);
       this.trail.geometry.setDrawRange(0, 0);
@@ -320,6 +388,10 @@ export class PendulumScene {
     const down: Vec3 = g < 0 ? [-gdir[0], -gdir[1], -gdir[2]] : gdir;
     this.tether.update(style, f.x, f.pivot, this.length, down);
     this.updateTrail(view.trail ? trail : NO_TRAIL, f);
+    if (this.handle.visible) {
+      const off = handleOffset(f.x, f.v, this.velocityScale, HANDLE_CLEAR * this.length);
+      this.handle.position.copy(this.tmpHandle.fromArray(off).add(bob));
+    }
 
     const names = Object.keys(this.arrows) as VectorName[];
     if (!names.some((name) => view[name])) {

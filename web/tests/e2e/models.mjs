@@ -39,7 +39,7 @@ const colourPixels = (page, rgb) =>
     return n;
   }, rgb);
 
-/** The reduced view, stereo and dragging the bob (on the ideal pendulum). */
+/** The reduced view, stereo, dragging the bob and pulling the velocity arrow (on the ideal pendulum). */
 export async function checkViews(page, { check, WAIT, simulated }) {
   await page.evaluate(() => {
     window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
@@ -96,6 +96,56 @@ export async function checkViews(page, { check, WAIT, simulated }) {
   const after = await page.evaluate(() => window.pendulab.store.status);
   const r = Math.hypot(...after.start.x);
   check(after.paused && Math.abs(r - after.params.length) < 1e-12, `dragging the bob sets a start at rest on the sphere (x = ${after.start.x.map((c) => c.toFixed(3)).join(', ')} m)`);
+
+  // pulling the velocity arrow by its handle sets the start velocity at that x: the arrow's tip follows
+  // the pointer, the message line shows the speed, and the run starts off in the pulled direction
+  await page.waitForFunction(() => window.pendulab.handleOnScreen() !== null, null, { timeout: WAIT });
+  await page.waitForTimeout(300);
+  const handle = await page.evaluate(() => window.pendulab.handleOnScreen());
+  const target = { x: handle.x + 70, y: handle.y + 35 };
+  await page.mouse.move(handle.x, handle.y);
+  await page.mouse.down();
+  for (let k = 1; k <= 10; k++) await page.mouse.move(handle.x + 7 * k, handle.y + 3.5 * k);
+  const message = await page.evaluate(() => document.getElementById('message').textContent);
+  await page.mouse.up();
+  await page.waitForFunction(() => window.pendulab.store.status.start.v.some((c) => c !== 0), null, { timeout: WAIT });
+  // the tip drawn from the server's new frame lands under the pointer (a few px: its rounding)
+  await page
+    .waitForFunction(
+      (t) => {
+        const h = window.pendulab.handleOnScreen();
+        return h !== null && Math.hypot(h.x - t.x, h.y - t.y) < 2;
+      },
+      target,
+      { timeout: 10_000 },
+    )
+    .catch(() => {});
+  await page.screenshot({ path: 'test-results/lab-velocity.png' });
+  const pulled = await page.evaluate(() => ({ s: window.pendulab.store.status, h: window.pendulab.handleOnScreen() }));
+  const v = pulled.s.start.v;
+  const speed = Math.hypot(...v);
+  const x0 = pulled.s.start.x;
+  const tangent = Math.abs(v[0] * x0[0] + v[1] * x0[1] + v[2] * x0[2]) < 1e-9 * speed * Math.hypot(...x0);
+  const sameX = x0.every((c, i) => Math.abs(c - after.start.x[i]) < 1e-12);
+  const miss = Math.hypot(pulled.h.x - target.x, pulled.h.y - target.y);
+  check(
+    pulled.s.paused && sameX && tangent && speed > 0.1 && miss < 2,
+    `pulling the velocity arrow sets the start velocity at the same x, tangent (v = ${v.map((c) => c.toFixed(3)).join(', ')} m/s; the tip ${miss.toFixed(2)} px from the pointer)`,
+  );
+  check(/\|v\| = \d+\.\d\d m\/s/.test(message), `the message line shows the speed while pulling (“${message}”)`);
+  // start: the first frames move along v
+  await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+  await simulated(page, 0.05);
+  const moved = await page.evaluate(() => {
+    const tr = window.pendulab.store.trajectory;
+    const a = tr[0];
+    const b = tr.find((f) => f.t - a.t >= 0.02) ?? tr[tr.length - 1];
+    return { dx: b.x.map((c, i) => c - a.x[i]), dt: b.t - a.t, x0: a.x };
+  });
+  await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  const along = (moved.dx[0] * v[0] + moved.dx[1] * v[1] + moved.dx[2] * v[2]) / (Math.hypot(...moved.dx) * speed);
+  check(along > 0.9 && moved.x0.every((c, i) => Math.abs(c - x0[i]) < 1e-12), `start runs from the pulled velocity: the first frames move along it (cos = ${along.toFixed(4)} over ${moved.dt.toFixed(3)} s)`);
+  await page.waitForFunction(() => window.pendulab.store.status?.paused === true, null, { timeout: WAIT });
 }
 
 export async function checkModels(page, { check, WAIT, simulated }) {
