@@ -268,8 +268,9 @@ class Pendulum:
         a scalar; default 0 — give them for time-dependent models, whose forcing, pivot and tension
         depend on t): ``energy`` [J] (including the model's potential, T-2.6), ``j3`` [kg m²/s],
         ``tension`` [N] (T-2.3), ``radius_error`` |x| − l [m], ``tangency`` x·v [m²/s], ``power`` [W]
-        = dE/dt of the non-conservative forces (T-7.1; 0 for the ideal pendulum) and, for a moving
-        pivot when t is given, ``pivot`` (N, 3) [m]."""
+        = dE/dt of the non-conservative forces (T-7.1; 0 for the ideal pendulum), ``acceleration``
+        (N, 3) [m/s²] ẍ = f + λx of T-2.2 (relative to the pivot, the user force included) and, for a
+        moving pivot when t is given, ``pivot`` (N, 3) [m]."""
         xa = np.ascontiguousarray(np.atleast_2d(np.asarray(x, dtype=np.float64)))
         va = np.ascontiguousarray(np.atleast_2d(np.asarray(v, dtype=np.float64)))
         ta = None
@@ -279,10 +280,15 @@ class Pendulum:
                 ta = np.full(xa.shape[0], float(ta))
             ta = np.ascontiguousarray(ta.ravel())
         d = _core.diagnostics(*self._core_args(), xa, va, **self._model_kwargs(), t=ta)
-        if self._force is not None:  # the user force: its power F·v and its share x·F/l of the tension
+        if self._force is not None:
+            # the user force: its power F·v, its share x·F/l of the tension, and its tangential part
+            # (F − x (x·F)/l²)/m of the acceleration (the rod takes the radial part, T-2.2)
             f = self.force_at(ta, xa, va)
+            radial = np.einsum("ij,ij->i", f, xa)
             d["power"] = d["power"] + np.einsum("ij,ij->i", f, va)
-            d["tension"] = d["tension"] + np.einsum("ij,ij->i", f, xa) / self._length
+            d["tension"] = d["tension"] + radial / self._length
+            tangential = f - xa * (radial / self._length**2)[:, None]
+            d["acceleration"] = d["acceleration"] + tangential / self._mass
         return d
 
     def energy(self, state: State) -> float:

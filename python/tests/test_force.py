@@ -27,6 +27,10 @@ def test_a_damping_callable_reproduces_the_damped_model() -> None:
     assert b.method == "dop853"
     assert np.max(np.abs(a.x - b.x)) < 1e-10 and np.max(np.abs(a.v - b.v)) < 1e-10
     np.testing.assert_allclose(b.power, a.power, rtol=1e-9)  # −m c |v|², from the callable
+    # every diagnostic at the same states, the acceleration and tension with the user force included
+    da, db = damped.diagnostics(a.x, a.v, a.t), user.diagnostics(a.x, a.v, a.t)
+    for key in ("energy", "j3", "tension", "power", "acceleration"):
+        np.testing.assert_allclose(db[key], da[key], rtol=1e-12, atol=1e-12, err_msg=key)
 
 
 def test_zero_force_is_the_ideal_pendulum_bit_for_bit(pendulum: pl.Pendulum) -> None:

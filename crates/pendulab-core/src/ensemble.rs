@@ -1,5 +1,6 @@
-//! Many pendulums at once with RATTLE (T-2.1, T-2.2; the same step as `integrate/rattle.rs`,
-//! operation for operation, so each trajectory gets the single-trajectory numbers exactly):
+//! Many pendulums at once with RATTLE (T-2.1, T-2.2; the same step as `integrate/rattle.rs`, built
+//! from the same functions of `integrate/rattle_kernel.rs`, so each trajectory gets the
+//! single-trajectory numbers exactly):
 //!
 //!   v½ = v₀ − (h/2) g e₃ + μ x₀ (|x₁| = l),  x₁ = x₀ + h v½,  v₁ = v½ − (h/2) g e₃ − x₁ (x₁·u)/l²,
 //!
