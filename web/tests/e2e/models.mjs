@@ -100,6 +100,18 @@ export async function checkViews(page, { check, WAIT, simulated }) {
   // pulling the velocity arrow by its handle sets the start velocity at that x: the arrow's tip follows
   // the pointer, the message line shows the speed, and the run starts off in the pulled direction
   await page.waitForFunction(() => window.pendulab.handleOnScreen() !== null, null, { timeout: WAIT });
+  // the pull starts from the drawn state: wait until that is the server's answer to the bob drag (on a
+  // loaded machine a throttled set_state of the drag may still be in flight)
+  await page.waitForFunction(
+    () => {
+      const store = window.pendulab.store;
+      const f = store.latest();
+      const x = store.status.start.x;
+      return store.status.paused && f !== null && f.x.every((c, i) => Math.abs(c - x[i]) < 1e-12);
+    },
+    null,
+    { timeout: WAIT },
+  );
   await page.waitForTimeout(300);
   const handle = await page.evaluate(() => window.pendulab.handleOnScreen());
   const target = { x: handle.x + 70, y: handle.y + 35 };
@@ -130,7 +142,7 @@ export async function checkViews(page, { check, WAIT, simulated }) {
   const miss = Math.hypot(pulled.h.x - target.x, pulled.h.y - target.y);
   check(
     pulled.s.paused && sameX && tangent && speed > 0.1 && miss < 2,
-    `pulling the velocity arrow sets the start velocity at the same x, tangent (v = ${v.map((c) => c.toFixed(3)).join(', ')} m/s; the tip ${miss.toFixed(2)} px from the pointer)`,
+    `pulling the velocity arrow sets the start velocity at the same x, tangent (v = ${v.map((c) => c.toFixed(3)).join(', ')} m/s; the tip ${miss.toFixed(2)} px from the pointer; paused ${pulled.s.paused}, x moved by ${x0.map((c, i) => (c - after.start.x[i]).toExponential(1)).join(', ')} m, x·v ${(v[0] * x0[0] + v[1] * x0[1] + v[2] * x0[2]).toExponential(2)} m²/s)`,
   );
   check(/\|v\| = \d+\.\d\d m\/s/.test(message), `the message line shows the speed while pulling (“${message}”)`);
   // start: the first frames move along v
