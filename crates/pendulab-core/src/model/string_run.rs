@@ -5,8 +5,10 @@
 //!
 //! Times [s] lie on the grid t₀ + k·dt as in [`crate::Stepper`]: full steps are exactly dt, so a
 //! motion that never goes slack is the rod pendulum's, bit for bit. After an event the next step is
-//! shortened to land on the grid again. Samples: the start, every `save_every`-th grid point, every
-//! event (the state after it) and t_end. Slack samples are the exact parabola. A short slack
+//! shortened to land on the grid again. Samples ([`StringSave`]): the start, every `save_every`-th grid
+//! point, every event (the state after it) and t_end; or exactly given times, landed on by shortening
+//! a taut step. Slack samples are the exact parabola. [`StringRunner`] runs a [`StringStepper`] to
+//! t_end in chunks (the Python layer's progress bar and Ctrl-C) with the numbers of one run. A short slack
 //! excursion wholly inside one taut step (T < 0 only between two grid points) is not seen: dt must
 //! resolve the motion.
 
