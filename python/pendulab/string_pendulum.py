@@ -28,9 +28,9 @@ STRING_METHODS = ("rattle", "rattle4", "rattle6", "rattle8", "rkmk4")
 """Methods for the taut phases: fixed step and keeping TS² (the leave is found by shortening a step)."""
 
 
-def check_string_settings(method: str, save_at: Any = None, conserve: bool = False) -> None:
-    """Refuses what the hybrid string run cannot do, naming the alternative (``save_at`` is checked
-    by the core when the run is set up; the argument is kept for callers that pass it)."""
+def check_string_settings(method: str, conserve: bool = False) -> None:
+    """Refuses what the hybrid string run cannot do, naming the alternative (save times are checked
+    by the core when the run is set up)."""
     if method not in STRING_METHODS:
         raise _core.InvalidInputError(
             f"method {method!r} cannot integrate the 'string' model: its taut phases need a fixed-step "

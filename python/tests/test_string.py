@@ -260,3 +260,13 @@ def test_bad_save_at_is_refused_naming_the_value(save_at: list[float], needle: s
     p = pl.Pendulum(model="string")
     with pytest.raises(pl.InvalidInputError, match=needle):
         pl.simulate(p, launch(p, 1.0), 1.0, save_at=save_at)
+
+
+def test_scenario_with_save_at() -> None:
+    text = (
+        (SCENARIOS / "string_slack.toml").read_text().replace("save_every = 10", "save_at = [0.5, 1.0, 4.0]")
+    )
+    assert "save_at" in text
+    tr = pl.Scenario.from_toml_str(text).run(progress=False)
+    np.testing.assert_array_equal(tr.t, [0.5, 1.0, 4.0])
+    assert tr.events is not None and list(tr.events["kind"]) == ["slack", "taut"]
