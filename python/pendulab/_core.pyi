@@ -253,6 +253,32 @@ def string_simulate(
     max_saved_bytes: int | None = None,
 ) -> dict[str, Any]: ...
 
+class StringRunner:
+    def __init__(
+        self,
+        length: float,
+        mass: float,
+        g: float,
+        restitution: float,
+        x0: FloatArray,
+        v0: FloatArray,
+        t0: float,
+        t_end: float,
+        method: str,
+        dt: float,
+        save_every: int | None = None,
+        save_at: FloatArray | None = None,
+        max_saved_bytes: int | None = None,
+    ) -> None: ...
+    def advance(self, max_steps: int, /) -> bool: ...
+    def take_samples(self, all: bool = False) -> dict[str, Any]: ...
+    @property
+    def progress(self) -> float: ...
+    @property
+    def t(self) -> float: ...
+    @property
+    def stats(self) -> dict[str, int]: ...
+
 class StringStepper:
     def __init__(
         self,

@@ -620,7 +620,7 @@ class Scenario:
             from .string_pendulum import check_string_settings
 
             try:
-                check_string_settings(sim.method, sim.save_at)
+                check_string_settings(sim.method)
             except _core.InvalidInputError as e:
                 raise ScenarioError(self.source, f"[simulation] {e}") from None
             return

@@ -12,13 +12,14 @@ import contextlib
 import functools
 import time
 import warnings
-from typing import Any
+from collections.abc import Callable
+from typing import Any, Protocol
 
 import numpy as np
 from tqdm.auto import tqdm
 
 from . import _core
-from .model import FloatArray, Pendulum, State
+from .model import Pendulum, State
 from .trajectory import Trajectory
 
 DEFAULTS: dict[str, Any] = {"method": "rattle", "dt": 1e-3, "rtol": 1e-10, "atol": 1e-12, "project": True}
@@ -54,6 +55,56 @@ def methods() -> list[_core.MethodInfo]:
 def method_names() -> list[str]:
     """Names of the registered integrators."""
     return [m["name"] for m in _core.methods()]
+
+
+class ChunkedRun(Protocol):
+    """What :func:`run_in_chunks` drives: ``_core.Solver``, ``_core.ForceSolver``, ``_core.StringRunner``."""
+
+    def advance(self, budget: int, /) -> bool: ...
+    def take_samples(self) -> Any: ...
+    @property
+    def progress(self) -> float: ...
+    @property
+    def t(self) -> float: ...
+
+
+def run_in_chunks(
+    solver: ChunkedRun,
+    show: bool,
+    desc: str,
+    stacklevel: int = 2,
+    take_rest: Callable[[], Any] | None = None,
+) -> tuple[list[Any], bool]:
+    """Advances ``solver`` to its end in chunks of about 0.1 s of work (the GIL released inside each),
+    updating a tqdm bar (``show``) between chunks. Ctrl-C stops after the current chunk: returns the
+    parts taken so far and True, with a RuntimeWarning (``stacklevel`` as if the caller of this
+    function called :func:`warnings.warn`). ``take_rest`` takes the last part after an interruption
+    (default ``solver.take_samples``)."""
+    parts: list[Any] = []
+    interrupted = False
+    budget = 10_000
+    # no bar object at all when it is not shown: a disabled tqdm still costs ~10 µs per call
+    bar = tqdm(total=1000, unit="‰", desc=desc, leave=False) if show else None
+    with bar if bar is not None else contextlib.nullcontext():
+        try:
+            done = False
+            while not done:
+                start = time.perf_counter()
+                done = solver.advance(budget)
+                elapsed = time.perf_counter() - start
+                budget = int(min(max(budget * _CHUNK_SECONDS / max(elapsed, 1e-6), 1_000), 1e9))
+                parts.append(solver.take_samples())
+                if bar is not None:
+                    bar.update(int(1000 * solver.progress) - bar.n)
+        except KeyboardInterrupt:
+            interrupted = True
+            parts.append(take_rest() if take_rest is not None else solver.take_samples())
+            warnings.warn(
+                f"simulation interrupted at t = {solver.t:g} s; returning the samples computed so far",
+                RuntimeWarning,
+                stacklevel=stacklevel + 1,
+            )
+    return parts, interrupted
 
 
 def simulate(
@@ -95,7 +146,7 @@ def simulate(
 
     The ``"string"`` model (a rope that goes slack) is hybrid and runs in
     :func:`pendulab.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
-    rkmk4 with ``dt`` in the taut phases, ``save_every`` only, in one call (no progress bar).
+    rkmk4 with ``dt`` in the taut phases, ``save_every`` or ``save_at``, progress and Ctrl-C as here.
     """
     if method is None:
         method = "dop853" if pendulum.force is not None else "rattle"
@@ -106,9 +157,7 @@ def simulate(
     if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
         from .string_pendulum import check_string_settings, simulate_string
 
-        check_string_settings(method, save_at, conserve)
-        if save_every is not None and (isinstance(save_every, bool) or int(save_every) != save_every):
-            raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+        check_string_settings(method, conserve=conserve)
         return simulate_string(
             pendulum,
             state,
@@ -116,8 +165,11 @@ def simulate(
             method=method,
             dt=dt,
             save_every=save_every,
+            save_at=save_at,
             t0=t0,
+            progress=progress,
             max_saved_bytes=max_saved_bytes,
+            _stacklevel=3,
         )
     if pendulum.pivot_samples is not None:
         first, last = float(pendulum.pivot_samples[0][0]), float(pendulum.pivot_samples[0][-1])
@@ -159,30 +211,7 @@ def simulate(
         solver = _core.Solver(*args, *saving, **pendulum._model_kwargs(), conserve=bool(conserve))
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
-    parts: list[tuple[FloatArray, FloatArray, FloatArray]] = []
-    interrupted = False
-    budget = 10_000
-    # no bar object at all when it is not shown: a disabled tqdm still costs ~10 µs per call
-    bar = tqdm(total=1000, unit="‰", desc=f"{method} to t={t_end:g} s", leave=False) if show else None
-    with bar if bar is not None else contextlib.nullcontext():
-        try:
-            done = False
-            while not done:
-                start = time.perf_counter()
-                done = solver.advance(budget)
-                elapsed = time.perf_counter() - start
-                budget = int(min(max(budget * _CHUNK_SECONDS / max(elapsed, 1e-6), 1_000), 1e9))
-                parts.append(solver.take_samples())
-                if bar is not None:
-                    bar.update(int(1000 * solver.progress) - bar.n)
-        except KeyboardInterrupt:
-            interrupted = True
-            parts.append(solver.take_samples())
-            warnings.warn(
-                f"simulation interrupted at t = {solver.t:g} s; returning the samples computed so far",
-                RuntimeWarning,
-                stacklevel=2,
-            )
+    parts, interrupted = run_in_chunks(solver, show, f"{method} to t={t_end:g} s", stacklevel=2)
     t = np.concatenate([p[0] for p in parts])
     x = np.concatenate([p[1] for p in parts])
     v = np.concatenate([p[2] for p in parts])

@@ -5,9 +5,13 @@ bob flies freely on the exact parabola x_e + v_e τ − ½ g τ² e₃ until |x|
 snaps taut: the outward radial velocity u is removed (``restitution`` e = 0, inelastic, the default;
 ½ m |u|² is lost) or reflected (e = 1, elastic, E kept), in general v ← v − (1 + e)u.
 
-The run is hybrid and done in the core in one call (GIL released; no progress bar and no Ctrl-C
-inside it): the leave and snap events are located to round-off (bisection of the step length on T,
-closed form or bisection of |x|² − l² on the parabola). Units: SI (m, kg, s, J).
+The run is hybrid and done in the core (``_core.StringRunner``, a ``StringStepper`` run to t_end),
+driven in chunks of about 0.1 s of work with the GIL released, as :func:`pendulab.simulate` does for
+every model: a tqdm progress bar for long runs, and Ctrl-C stops after the current chunk and returns
+what was computed (``Trajectory.interrupted``). Chunks end on grid points and the run goes on as if
+it had not stopped: the samples are those of the one-call ``_core.string_simulate`` bit for bit. The
+leave and snap events are located to round-off (bisection of the step length on T, closed form or
+bisection of |x|² − l² on the parabola). Units: SI (m, kg, s, J).
 """
 
 from __future__ import annotations
@@ -24,23 +28,28 @@ STRING_METHODS = ("rattle", "rattle4", "rattle6", "rattle8", "rkmk4")
 """Methods for the taut phases: fixed step and keeping TS² (the leave is found by shortening a step)."""
 
 
-def check_string_settings(method: str, save_at: Any = None, conserve: bool = False) -> None:
-    """Refuses what the hybrid string run cannot do, naming the alternative."""
+def check_string_settings(method: str, conserve: bool = False) -> None:
+    """Refuses what the hybrid string run cannot do, naming the alternative (save times are checked
+    by the core when the run is set up)."""
     if method not in STRING_METHODS:
         raise _core.InvalidInputError(
             f"method {method!r} cannot integrate the 'string' model: its taut phases need a fixed-step "
             f"method that keeps TS² (the leave is found by shortening a step); use one of "
             f"{', '.join(STRING_METHODS)}"
         )
-    if save_at is not None:
-        raise _core.InvalidInputError(
-            "save_at is not available for the 'string' model: it saves every save_every-th step of its "
-            "grid t0 + k·dt and every event"
-        )
     if conserve:
         raise _core.InvalidInputError(
             "conserve=True is for dop853; the 'string' model's taut phases use the RATTLE family or rkmk4"
         )
+
+
+def _concat_events(parts: list[dict[str, Any]]) -> dict[str, Any]:
+    evs = [p["events"] for p in parts]
+    out: dict[str, Any] = {
+        k: np.concatenate([e[k] for e in evs]) for k in ("t", "x", "v_before", "v_after", "energy_lost")
+    }
+    out["kind"] = [k for e in evs for k in e["kind"]]
+    return {k: out[k] for k in evs[0]}
 
 
 def simulate_string(
@@ -51,15 +60,32 @@ def simulate_string(
     method: str = "rattle",
     dt: float | None = None,
     save_every: int | None = None,
+    save_at: Any = None,
     t0: float = 0.0,
+    progress: bool | None = None,
     max_saved_bytes: int | None = None,
+    _stacklevel: int = 2,
 ) -> Trajectory:
-    """Simulates a ``model="string"`` pendulum (called by :func:`pendulab.simulate`): samples every
-    ``save_every``-th step of the grid t0 + k·dt [s] (default dt 1e-3 s), every event (the state after
-    it) and t_end; ``Trajectory.taut`` flags the samples, ``Trajectory.events`` lists the events."""
+    """Simulates a ``model="string"`` pendulum (called by :func:`pendulab.simulate`) with step ``dt``
+    [s] of the grid t0 + k·dt in the taut phases (default 1e-3 s). Samples: every ``save_every``-th
+    grid point (default 1), every event (the state after it) and t_end; or exactly the times
+    ``save_at`` [s] (strictly increasing, within [t0, t_end]): a taut phase lands on each by shortening
+    the one step that crosses it, a flight evaluates its exact parabola there, and the run still goes
+    to t_end, so ``Trajectory.events`` lists every event. ``Trajectory.taut`` flags the samples.
+    ``progress``: a progress bar (default: only for runs of more than 5·10⁶ steps); Ctrl-C returns
+    the samples computed so far with ``Trajectory.interrupted`` True and a RuntimeWarning."""
+    from .simulate import _PROGRESS_AFTER_STEPS, run_in_chunks
+
     check_string_settings(method)
+    if save_every is not None and save_at is not None:
+        raise _core.InvalidInputError("give either save_every or save_at, not both")
+    if save_every is not None and (
+        isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1
+    ):
+        raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+    times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
     dt = 1e-3 if dt is None else float(dt)
-    out = _core.string_simulate(
+    runner = _core.StringRunner(
         *pendulum._core_args(),
         float(pendulum.extra.get("restitution", 0.0)),
         np.ascontiguousarray(state.x),
@@ -68,20 +94,31 @@ def simulate_string(
         float(t_end),
         method,
         dt,
-        1 if save_every is None else int(save_every),
+        None if save_every is None else int(save_every),
+        times,
         max_saved_bytes,
+    )
+    expected_steps = (t_end - t0) / dt
+    show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
+    parts, interrupted = run_in_chunks(
+        runner,
+        show,
+        f"{method} to t={t_end:g} s",
+        stacklevel=_stacklevel,
+        take_rest=lambda: runner.take_samples(all=True),
     )
     options: dict[str, Any] = {"dt": dt, "t0": t0, "t_end": t_end}
     if save_every is not None:
         options["save_every"] = int(save_every)
     return Trajectory(
         pendulum,
-        out["t"],
-        out["x"],
-        out["v"],
+        np.concatenate([p["t"] for p in parts]),
+        np.concatenate([p["x"] for p in parts]),
+        np.concatenate([p["v"] for p in parts]),
         method,
         options,
-        dict(out["stats"]),
-        taut=out["taut"],
-        events=dict(out["events"]),
+        dict(runner.stats),
+        interrupted,
+        taut=np.concatenate([p["taut"] for p in parts]),
+        events=_concat_events(parts),
     )

@@ -5,10 +5,12 @@
 use crate::{arr3, to_py, vec3};
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
-use pendulab_core::model::string_run::{EventKind, StringEvent, StringStepper};
+use pendulab_core::model::string_run::{
+    EventKind, StringEvent, StringRun, StringRunner, StringSave, StringStepper,
+};
 use pendulab_core::model::StringPendulum;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
-use pendulab_core::{Method, Params, State};
+use pendulab_core::{Method, Params, State, Stats};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -50,6 +52,11 @@ pub fn string_simulate<'py>(
     let limit = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
     let run =
         py.allow_threads(|| sp.simulate(t0, start, t_end, method, dt, save_every, limit)).map_err(to_py)?;
+    run_dict(py, run)
+}
+
+/// A run's samples, events and stats as the dict of [`string_simulate`].
+fn run_dict(py: Python<'_>, run: StringRun) -> PyResult<Bound<'_, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("t", Array1::from(run.t).into_pyarray(py))?;
     d.set_item("x", rows(run.states.iter().map(|s| s.x)).into_pyarray(py))?;
@@ -71,12 +78,90 @@ pub fn string_simulate<'py>(
     ev.set_item("v_after", rows(run.events.iter().map(|e| e.after.v)).into_pyarray(py))?;
     ev.set_item("energy_lost", Array1::from_iter(run.events.iter().map(|e| e.energy_lost)).into_pyarray(py))?;
     d.set_item("events", ev)?;
-    let st = PyDict::new(py);
-    st.set_item("steps", run.stats.steps)?;
-    st.set_item("rejected", run.stats.rejected)?;
-    st.set_item("rhs_evals", run.stats.rhs_evals)?;
-    d.set_item("stats", st)?;
+    d.set_item("stats", stats_dict(py, run.stats)?)?;
     Ok(d)
+}
+
+fn stats_dict(py: Python<'_>, stats: Stats) -> PyResult<Bound<'_, PyDict>> {
+    let st = PyDict::new(py);
+    st.set_item("steps", stats.steps)?;
+    st.set_item("rejected", stats.rejected)?;
+    st.set_item("rhs_evals", stats.rhs_evals)?;
+    Ok(st)
+}
+
+/// A batch run of the string pendulum in chunks (`pl.simulate` drives it: progress bar, Ctrl-C):
+/// l [m], m [kg], g [m/s²], restitution e, the start x0, v0 [m, m/s] at t0 [s], t_end [s], `method`
+/// and dt [s] as for [`string_simulate`]; keeping every `save_every`-th grid point, the events and
+/// t_end (default), or exactly the times `save_at` [s]. A run in chunks is `string_simulate`'s run
+/// bit for bit.
+#[pyclass(module = "pendulab._core", name = "StringRunner")]
+struct StringRunner_ {
+    inner: StringRunner,
+}
+
+#[pymethods]
+impl StringRunner_ {
+    #[new]
+    #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, t_end, method, dt, save_every=None, save_at=None, max_saved_bytes=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        length: f64,
+        mass: f64,
+        g: f64,
+        restitution: f64,
+        x0: PyReadonlyArray1<'_, f64>,
+        v0: PyReadonlyArray1<'_, f64>,
+        t0: f64,
+        t_end: f64,
+        method: &str,
+        dt: f64,
+        save_every: Option<u64>,
+        save_at: Option<PyReadonlyArray1<'_, f64>>,
+        max_saved_bytes: Option<u64>,
+    ) -> PyResult<Self> {
+        let sp =
+            StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
+        let method = Method::from_name(method).map_err(to_py)?;
+        let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
+        let save = match save_at {
+            Some(ts) => StringSave::Times(ts.as_array().to_vec()),
+            None => StringSave::Every(save_every.unwrap_or(1)),
+        };
+        let stepper = StringStepper::new(sp, t0, start, method, dt).map_err(to_py)?;
+        let limit = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
+        Ok(Self { inner: StringRunner::new(stepper, t_end, save, limit).map_err(to_py)? })
+    }
+
+    /// Advances by about `max_steps` grid steps (GIL released); True once t_end is reached.
+    fn advance(&mut self, py: Python<'_>, max_steps: u64) -> PyResult<bool> {
+        let inner = &mut self.inner;
+        py.allow_threads(|| inner.advance(max_steps)).map_err(to_py)
+    }
+
+    /// The samples and events since the last call, as the dict of `string_simulate` (stats: so far).
+    /// Until t_end the last sample is held back (an event at its time replaces it); `all`: included
+    /// (for a run stopped early).
+    #[pyo3(signature = (all=false))]
+    fn take_samples<'py>(&mut self, py: Python<'py>, all: bool) -> PyResult<Bound<'py, PyDict>> {
+        run_dict(py, if all { self.inner.take_all() } else { self.inner.take() })
+    }
+
+    /// The fraction of [t0, t_end] done.
+    #[getter]
+    fn progress(&self) -> f64 {
+        self.inner.progress()
+    }
+    /// Time reached [s].
+    #[getter]
+    fn t(&self) -> f64 {
+        self.inner.stepper().t()
+    }
+    /// Work so far: steps, rejected, rhs_evals.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        stats_dict(py, self.inner.stepper().stats())
+    }
 }
 
 /// The string pendulum stepped incrementally (the lab): l [m], m [kg], g [m/s²], restitution e, the
@@ -177,8 +262,9 @@ fn event_dict<'py>(py: Python<'py>, e: &StringEvent) -> PyResult<Bound<'py, PyDi
     Ok(d)
 }
 
-/// Registers the function and the class.
+/// Registers the function and the classes.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(string_simulate, m)?)?;
-    m.add_class::<StringStepper_>()
+    m.add_class::<StringStepper_>()?;
+    m.add_class::<StringRunner_>()
 }

@@ -1,12 +1,16 @@
 """The pendulum on a string from Python, scenario files and the CLI: a motion that never goes slack
 is the rod pendulum's; the string leaves where the tension of T-2.3 vanishes, z* = 2E/(3 m g); flight
 is the exact parabola; an elastic snap keeps E and an inelastic one loses exactly the radial kinetic
-energy ½ m (x̂·v)²; bad settings are refused with the reason. SI units (m, kg, s, J)."""
+energy ½ m (x̂·v)²; the run in chunks (progress bar, Ctrl-C) is the one-call run bit for bit;
+save_at lands on its times exactly; bad settings are refused with the reason. SI units (m, kg, s, J)."""
 
 from __future__ import annotations
 
+import importlib
 import math
+import warnings
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -14,9 +18,11 @@ from conftest import SCENARIOS
 from typer.testing import CliRunner
 
 import pendulab as pl
+from pendulab import _core
 from pendulab.cli import app
 
 G = 9.81
+simulate_mod = importlib.import_module("pendulab.simulate")  # the module, not pl.simulate
 
 
 def launch(p: pl.Pendulum, v0_squared: float) -> pl.State:
@@ -100,8 +106,14 @@ def test_scenario_and_cli(tmp_path: Path) -> None:
             "rattle4",
         ),
         (
-            lambda: pl.simulate(pl.Pendulum(model="string"), launch(pl.Pendulum(), 1.0), 1.0, save_at=[0.5]),
-            "save_at",
+            lambda: pl.simulate(
+                pl.Pendulum(model="string"), launch(pl.Pendulum(), 1.0), 1.0, save_at=[0.5], save_every=2
+            ),
+            "save_every or save_at",
+        ),
+        (
+            lambda: pl.simulate(pl.Pendulum(model="string"), launch(pl.Pendulum(), 1.0), 1.0, save_every=0),
+            "save_every = 0",
         ),
         (lambda: pl.Stepper(pl.Pendulum(model="string"), launch(pl.Pendulum(), 1.0)), "hybrid"),
     ],
@@ -115,3 +127,146 @@ def test_scenario_refuses_an_adaptive_method() -> None:
     text = (SCENARIOS / "string_slack.toml").read_text().replace('"rattle8"', '"dop853"')
     with pytest.raises(pl.ScenarioError, match="cannot integrate the 'string' model"):
         pl.Scenario.from_toml_str(text)
+
+
+def _one_call(
+    p: pl.Pendulum, s0: pl.State, t_end: float, method: str, dt: float, **kw: Any
+) -> dict[str, Any]:
+    """The run in one call of the core (``_core.string_simulate``), no chunks."""
+    return _core.string_simulate(
+        p.length, p.mass, p.g, p.extra.get("restitution", 0.0), s0.x, s0.v, 0.0, t_end, method, dt, **kw
+    )
+
+
+_StringRunner = _core.StringRunner
+
+
+class _CountingRunner:
+    """``_core.StringRunner`` that counts its chunks and can raise KeyboardInterrupt after one (as a
+    Ctrl-C arriving while that chunk ran would: the chunk completes, then Python sees the signal)."""
+
+    def __init__(self, *args: Any, interrupt_after: int | None = None, **kw: Any) -> None:
+        self._inner = _StringRunner(*args, **kw)
+        self.chunks = 0
+        self.interrupt_after = interrupt_after
+
+    def advance(self, budget: int) -> bool:
+        done = self._inner.advance(budget)
+        self.chunks += 1
+        if self.chunks == self.interrupt_after:
+            raise KeyboardInterrupt
+        return done
+
+    def __getattr__(self, name: str) -> Any:
+        return getattr(self._inner, name)
+
+
+def _patch_runner(
+    monkeypatch: pytest.MonkeyPatch, interrupt_after: int | None = None
+) -> list[_CountingRunner]:
+    made: list[_CountingRunner] = []
+
+    def make(*args: Any, **kw: Any) -> _CountingRunner:
+        made.append(_CountingRunner(*args, interrupt_after=interrupt_after, **kw))
+        return made[-1]
+
+    monkeypatch.setattr(_core, "StringRunner", make)
+    monkeypatch.setattr(simulate_mod, "_CHUNK_SECONDS", 1e-9)  # chunks of the minimum, 1000 steps
+    return made
+
+
+@pytest.mark.parametrize("save_every", [1, 7])
+def test_chunked_run_with_progress_is_the_one_call_run_bit_for_bit(
+    monkeypatch: pytest.MonkeyPatch, save_every: int
+) -> None:
+    p = pl.Pendulum(model="string", restitution=1.0)
+    s0 = p.state_from_angles(0.2, 0.0, 5.5, 3.0)  # 3D, leaves and snaps back again and again
+    made = _patch_runner(monkeypatch)
+    tr = pl.simulate(p, s0, 20.0, method="rattle", dt=1e-3, save_every=save_every, progress=True)
+    assert made[0].chunks >= 10 and not tr.interrupted
+    one = _one_call(p, s0, 20.0, "rattle", 1e-3, save_every=save_every)
+    assert len(one["events"]["t"]) >= 10
+    for key in ("t", "x", "v", "taut"):
+        np.testing.assert_array_equal(getattr(tr, key), one[key], err_msg=key)
+    assert tr.events is not None
+    for key, want in one["events"].items():
+        np.testing.assert_array_equal(tr.events[key], want, err_msg=key)
+    assert tr.stats == dict(one["stats"])
+
+
+def test_ctrl_c_returns_the_run_so_far_flagged_interrupted(monkeypatch: pytest.MonkeyPatch) -> None:
+    p = pl.Pendulum(model="string", restitution=1.0)
+    s0 = p.state_from_angles(0.2, 0.0, 5.5, 3.0)
+    _patch_runner(monkeypatch, interrupt_after=4)
+    with pytest.warns(RuntimeWarning, match="interrupted at t = 13 s"):
+        tr = pl.simulate(p, s0, 20.0, method="rattle", dt=1e-3)
+    assert tr.interrupted and tr.taut is not None and tr.events is not None
+    # chunks of 10000, 1000, 1000, 1000 steps: to t = 13 s, the samples and events of the full run there
+    one = _one_call(p, s0, 20.0, "rattle", 1e-3)
+    n = len(tr.t)
+    assert tr.t[-1] == 13.0 and 0 < n < len(one["t"])
+    np.testing.assert_array_equal(tr.t, one["t"][:n])
+    np.testing.assert_array_equal(tr.x, one["x"][:n])
+    np.testing.assert_array_equal(tr.taut, one["taut"][:n])
+    k = len(tr.events["t"])
+    assert k > 0 and tr.events["t"][-1] <= 13.0 < one["events"]["t"][k]
+    np.testing.assert_array_equal(tr.events["v_after"], one["events"]["v_after"][:k])
+
+
+def test_save_at_lands_on_the_times_parabola_in_flight_fine_run_when_taut() -> None:
+    p = pl.Pendulum(length=1.5, g=G, mass=2.0, model="string")
+    s0 = launch(p, 3.5 * G * 1.5)
+    dense = pl.simulate(p, s0, 3.0, method="rattle8", dt=1e-3)
+    assert dense.events is not None
+    t_leave, t_snap = dense.events["t"][:2]
+    mid = 0.5 * (t_leave + t_snap)
+    times = np.array([0.0, 0.1234567, t_leave - 0.0105, mid, mid + 1.3e-4, t_snap + 0.2345, 2.5])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        tr = pl.simulate(p, s0, 3.0, method="rattle8", dt=1e-3, save_at=times)
+    np.testing.assert_array_equal(tr.t, times)  # exactly the times, nothing else
+    assert tr.taut is not None and tr.events is not None
+    assert list(tr.taut) == [True, True, True, False, False, True, True]
+    # the events are those of the dense run (to round-off), listed up to t_end
+    assert list(tr.events["kind"]) == list(dense.events["kind"])
+    np.testing.assert_allclose(tr.events["t"], dense.events["t"], rtol=0, atol=1e-12)
+    # in flight: the exact parabola from the leave
+    x_e, v_e = dense.events["x"][0], dense.events["v_after"][0]
+    for i in np.flatnonzero(~tr.taut):
+        tau = times[i] - t_leave
+        np.testing.assert_allclose(tr.x[i], x_e + v_e * tau - [0, 0, 0.5 * G * tau**2], rtol=0, atol=1e-14)
+        np.testing.assert_allclose(tr.v[i], v_e - [0, 0, G * tau], rtol=0, atol=1e-14)
+    # taut: a run 10x finer ending at that time (rattle8: they agree to round-off)
+    np.testing.assert_array_equal(tr.x[0], s0.x)
+    for i in np.flatnonzero(tr.taut)[1:]:
+        fine = pl.simulate(p, s0, float(times[i]), method="rattle8", dt=1e-4, save_every=10**9)
+        assert fine.t[-1] == times[i]
+        np.testing.assert_allclose(tr.x[i], fine.x[-1], rtol=0, atol=1e-13)
+        np.testing.assert_allclose(tr.v[i], fine.v[-1], rtol=0, atol=1e-12)
+        assert abs(np.linalg.norm(tr.x[i]) - p.length) < 1e-14
+
+
+@pytest.mark.parametrize(
+    ("save_at", "needle"),
+    [
+        ([0.5, 0.2], "0.5 s is followed by 0.2 s"),
+        ([0.1, float("nan")], "NaN s is not a finite time"),
+        ([0.1, 1.5], r"1.5 s is not a finite time within \[t0, t_end\] = \[0, 1\] s"),
+        ([-0.25, 0.5], "-0.25 s is not a finite time"),
+        ([], "no save times"),
+    ],
+)
+def test_bad_save_at_is_refused_naming_the_value(save_at: list[float], needle: str) -> None:
+    p = pl.Pendulum(model="string")
+    with pytest.raises(pl.InvalidInputError, match=needle):
+        pl.simulate(p, launch(p, 1.0), 1.0, save_at=save_at)
+
+
+def test_scenario_with_save_at() -> None:
+    text = (
+        (SCENARIOS / "string_slack.toml").read_text().replace("save_every = 10", "save_at = [0.5, 1.0, 4.0]")
+    )
+    assert "save_at" in text
+    tr = pl.Scenario.from_toml_str(text).run(progress=False)
+    np.testing.assert_array_equal(tr.t, [0.5, 1.0, 4.0])
+    assert tr.events is not None and list(tr.events["kind"]) == ["slack", "taut"]

@@ -214,3 +214,156 @@ fn the_incremental_stepper_cut_into_pieces_is_the_one_run_bit_for_bit() {
     let n = events.len();
     assert_eq!(events[..], run.events[..n]);
 }
+
+/// The run as `simulate` made it before [`StringRunner`]: one `StringStepper::advance` to t_end, an
+/// event's sample replacing a grid sample at the same time.
+fn reference_run(
+    sp: StringPendulum,
+    s0: State,
+    t_end: f64,
+    method: Method,
+    dt: f64,
+    save_every: u64,
+) -> (Vec<f64>, Vec<State>, Vec<bool>) {
+    use pendulab_core::model::string_run::StringStepper;
+    let mut st = StringStepper::new(sp, 0.0, s0, method, dt).unwrap();
+    let mut out = (vec![0.0], vec![st.state()], vec![st.is_taut()]);
+    st.advance(t_end, save_every, &mut |t, s, taut| {
+        if out.0.last() == Some(&t) {
+            out.0.pop();
+            out.1.pop();
+            out.2.pop();
+        }
+        out.0.push(t);
+        out.1.push(s);
+        out.2.push(taut);
+        Ok(())
+    })
+    .unwrap();
+    out
+}
+
+#[test]
+fn a_run_in_chunks_is_the_one_shot_run_bit_for_bit() {
+    // leaves, flights, snaps (elastic, partly elastic, inelastic), chunks of 1, 2, 7, 100 grid steps
+    // (ending taut, in flight, on events): the same samples, events and work as `simulate`, which
+    // is also the single `StringStepper::advance` run it was before chunking existed
+    use pendulab_core::model::string_run::{StringRunner, StringSave, StringStepper};
+    let dt = 1e-3;
+    for (e, s0) in [
+        (1.0, launch((3.5 * G).sqrt())),
+        (0.5, launch((3.5 * G).sqrt())),
+        (0.0, State::from_angles(&Params::new(1.0, 2.0, G).unwrap(), 0.2, 0.0, 5.5, 3.0).unwrap()),
+    ] {
+        let sp = string(e);
+        for save_every in [1u64, 3] {
+            let one = sp.simulate(0.0, s0, 3.0, Method::Rattle, dt, save_every, u64::MAX).unwrap();
+            assert!(!one.events.is_empty());
+            let (t, states, taut) = reference_run(sp, s0, 3.0, Method::Rattle, dt, save_every);
+            assert_eq!((&one.t, &one.states, &one.taut), (&t, &states, &taut), "simulate changed");
+            for chunk in [1u64, 2, 7, 100] {
+                let st = StringStepper::new(sp, 0.0, s0, Method::Rattle, dt).unwrap();
+                let mut runner = StringRunner::new(st, 3.0, StringSave::Every(save_every), u64::MAX).unwrap();
+                let mut parts = Vec::new();
+                let mut calls = 0;
+                loop {
+                    let done = runner.advance(chunk).unwrap();
+                    parts.push(runner.take());
+                    calls += 1;
+                    if done {
+                        break;
+                    }
+                }
+                assert!(calls as u64 >= 3000 / chunk, "{calls} chunks of {chunk}");
+                let cat = |f: &dyn Fn(&pendulab_core::model::string_run::StringRun) -> usize| {
+                    parts.iter().map(f).sum::<usize>()
+                };
+                assert_eq!(cat(&|p| p.t.len()), one.t.len());
+                let t: Vec<f64> = parts.iter().flat_map(|p| p.t.clone()).collect();
+                let states: Vec<State> = parts.iter().flat_map(|p| p.states.clone()).collect();
+                let taut: Vec<bool> = parts.iter().flat_map(|p| p.taut.clone()).collect();
+                let events: Vec<_> = parts.iter().flat_map(|p| p.events.clone()).collect();
+                let what = format!("e = {e}, save_every = {save_every}, chunks of {chunk}");
+                assert_eq!(t, one.t, "{what}");
+                assert_eq!(states, one.states, "{what}");
+                assert_eq!(taut, one.taut, "{what}");
+                assert_eq!(events, one.events, "{what}");
+                assert_eq!(parts.last().unwrap().stats, one.stats, "{what}");
+            }
+        }
+    }
+}
+
+#[test]
+fn save_times_are_hit_exactly_on_the_parabola_in_flight_and_as_a_fine_run_when_taut() {
+    use pendulab_core::model::string_run::{StringRunner, StringSave, StringStepper};
+    let sp = string(0.0);
+    let s0 = launch((3.5 * G).sqrt());
+    let dt = 1e-3;
+    let dense = sp.simulate(0.0, s0, 3.0, Method::Rattle8, dt, 1, u64::MAX).unwrap();
+    let (leave, snap) = (dense.events[0], dense.events[1]);
+    // off-grid times: before the leave (taut), in the flight, after the snap (taut), t_end
+    let mid = 0.5 * (leave.t + snap.t);
+    let times = vec![0.0, 0.123_456_7, leave.t - 0.010_5, mid, mid + 1.3e-4, snap.t + 0.2345, 3.0];
+    for chunk in [5u64, u64::MAX] {
+        let st = StringStepper::new(sp, 0.0, s0, Method::Rattle8, dt).unwrap();
+        let mut runner = StringRunner::new(st, 3.0, StringSave::Times(times.clone()), u64::MAX).unwrap();
+        let mut run = runner.take();
+        while !runner.advance(chunk).unwrap() {
+            let part = runner.take();
+            run.t.extend(part.t);
+            run.states.extend(part.states);
+            run.taut.extend(part.taut);
+            run.events.extend(part.events);
+        }
+        let part = runner.take();
+        run.t.extend(part.t);
+        run.states.extend(part.states);
+        run.taut.extend(part.taut);
+        run.events.extend(part.events);
+        assert_eq!(run.t, times, "exactly the save times");
+        // the events are still found (the same leave and snap times to round-off)
+        assert_eq!(run.events.len(), dense.events.len());
+        for (a, b) in run.events.iter().zip(&dense.events) {
+            assert_eq!(a.kind, b.kind);
+            assert!((a.t - b.t).abs() < 1e-12, "{} vs {}", a.t, b.t);
+        }
+        assert_eq!(run.taut, vec![true, true, true, false, false, true, true]);
+        for (i, &t) in times.iter().enumerate() {
+            let s = run.states[i];
+            if !run.taut[i] {
+                let want = sp.flight(&leave.before, t - leave.t);
+                assert!(
+                    (s.x - want.x).length() < 1e-14 && (s.v - want.v).length() < 1e-14,
+                    "parabola at {t}"
+                );
+            } else if t == 0.0 {
+                assert_eq!(s, s0);
+            } else {
+                // taut: as a run 10× finer that lands on t (rattle8: the difference is round-off)
+                let fine = sp.simulate(0.0, s0, t, Method::Rattle8, dt / 10.0, 1, u64::MAX).unwrap();
+                let f = fine.states.last().unwrap();
+                let (dx, dv) = ((s.x - f.x).length(), (s.v - f.v).length());
+                assert!(dx < 1e-14 && dv < 1e-13, "taut at {t}: |dx| = {dx:e}, |dv| = {dv:e}");
+                assert!((s.x.length() - 1.0).abs() < 1e-14, "on the sphere at {t}");
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_save_times_are_refused_naming_the_time() {
+    use pendulab_core::model::string_run::{StringRunner, StringSave, StringStepper};
+    let sp = string(0.0);
+    for (times, needle) in [
+        (vec![0.5, 0.2], "0.5 s is followed by 0.2 s"),
+        (vec![0.1, f64::NAN], "NaN s is not a finite time"),
+        (vec![0.1, 4.0], "4 s is not a finite time within [t0, t_end] = [0, 3] s"),
+        (vec![-0.5, 1.0], "-0.5 s is not a finite time"),
+        (vec![], "no save times"),
+    ] {
+        let st = StringStepper::new(sp, 0.0, launch(3.0), Method::Rattle, 1e-3).unwrap();
+        let err = StringRunner::new(st, 3.0, StringSave::Times(times), u64::MAX).unwrap_err();
+        assert!(err.to_string().contains(needle), "{err}");
+    }
+}

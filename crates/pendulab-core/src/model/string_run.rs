@@ -5,8 +5,10 @@
 //!
 //! Times [s] lie on the grid t₀ + k·dt as in [`crate::Stepper`]: full steps are exactly dt, so a
 //! motion that never goes slack is the rod pendulum's, bit for bit. After an event the next step is
-//! shortened to land on the grid again. Samples: the start, every `save_every`-th grid point, every
-//! event (the state after it) and t_end. Slack samples are the exact parabola. A short slack
+//! shortened to land on the grid again. Samples ([`StringSave`]): the start, every `save_every`-th grid
+//! point, every event (the state after it) and t_end; or exactly given times, landed on by shortening
+//! a taut step. Slack samples are the exact parabola. [`StringRunner`] runs a [`StringStepper`] to
+//! t_end in chunks (the Python layer's progress bar and Ctrl-C) with the numbers of one run. A short slack
 //! excursion wholly inside one taut step (T < 0 only between two grid points) is not seen: dt must
 //! resolve the motion.
 
@@ -113,8 +115,26 @@ enum Phase {
     },
 }
 
+/// What a [`StringRunner`] keeps (times in s).
+#[derive(Debug, Clone, PartialEq)]
+pub enum StringSave {
+    /// The start, every n-th grid point t₀ + k·dt (n ≥ 1), the state after every event, and t_end.
+    Every(u64),
+    /// Exactly these times (strictly increasing, within [t₀, t_end]): taut phases land on each by
+    /// shortening the one step that would cross it (the next step is shortened to regain the grid),
+    /// slack phases evaluate the exact parabola there; at an event's time, the state after it.
+    /// Events are still listed in [`StringRun::events`].
+    Times(Vec<f64>),
+}
+
+/// The samples kept so far, with the memory limit.
+#[derive(Debug, Default)]
 struct Recorder {
-    run: StringRun,
+    t: Vec<f64>,
+    states: Vec<State>,
+    taut: Vec<bool>,
+    /// Samples kept since the start (including those already taken).
+    kept: u64,
     max_samples: u64,
 }
 
@@ -123,24 +143,198 @@ impl Recorder {
         if !s.is_finite() {
             return Err(Error::Diverged { t, method: "string", dt: 0.0 });
         }
-        if self.run.t.last() == Some(&t) {
+        if self.t.last() == Some(&t) {
             // an event on a grid point: the event's state (after it) replaces the grid sample
-            self.run.t.pop();
-            self.run.states.pop();
-            self.run.taut.pop();
+            self.t.pop();
+            self.states.pop();
+            self.taut.pop();
+            self.kept -= 1;
         }
-        if self.run.t.len() as u64 >= self.max_samples {
-            let samples = self.run.t.len() as u64 + 1;
+        if self.kept >= self.max_samples {
+            let samples = self.kept + 1;
             return Err(Error::TooManySamples {
                 samples,
                 bytes: samples * BYTES_PER_SAMPLE,
                 limit: self.max_samples * BYTES_PER_SAMPLE,
             });
         }
-        self.run.t.push(t);
-        self.run.states.push(s);
-        self.run.taut.push(taut);
+        self.t.push(t);
+        self.states.push(s);
+        self.taut.push(taut);
+        self.kept += 1;
         Ok(())
+    }
+
+    /// The first `n` samples, removed.
+    fn drain(&mut self, n: usize) -> (Vec<f64>, Vec<State>, Vec<bool>) {
+        (self.t.drain(..n).collect(), self.states.drain(..n).collect(), self.taut.drain(..n).collect())
+    }
+}
+
+/// A batch run of a [`StringStepper`] to t_end in chunks of bounded work, keeping samples by a
+/// [`StringSave`] rule: what the Python layer drives to show progress and to stop cleanly on Ctrl-C
+/// between chunks. Chunks end on grid points t₀ + k·dt (or save times, or t_end) and the stepper
+/// goes on from there as if it had not stopped, so the samples of a run in chunks of any size are
+/// those of [`StringPendulum::simulate`] (one chunk) bit for bit.
+#[derive(Debug)]
+pub struct StringRunner {
+    stepper: StringStepper,
+    t_start: f64,
+    t_end: f64,
+    save: StringSave,
+    /// Index of the next save time ([`StringSave::Times`]).
+    next_time: usize,
+    rec: Recorder,
+    done: bool,
+}
+
+impl StringRunner {
+    /// A run of `stepper` from its time to `t_end` [s] keeping `save`; `max_saved_bytes` bounds the
+    /// memory of the samples (an error when exceeded). Checks the save rule and keeps the start
+    /// (for [`StringSave::Times`]: when the first time is the start time).
+    pub fn new(stepper: StringStepper, t_end: f64, save: StringSave, max_saved_bytes: u64) -> Result<Self> {
+        let t0 = stepper.t();
+        if !(t_end.is_finite() && t_end > t0) {
+            return Err(Error::InvalidParameter {
+                name: "t_end",
+                value: t_end,
+                allowed: "the end time must be a finite number of seconds after the start time",
+            });
+        }
+        let max_samples = max_saved_bytes / BYTES_PER_SAMPLE;
+        match &save {
+            StringSave::Every(0) => {
+                return Err(Error::InvalidParameter {
+                    name: "save_every",
+                    value: 0.0,
+                    allowed: "save_every must be an integer ≥ 1 (steps between saved samples)",
+                })
+            }
+            StringSave::Every(_) => {}
+            StringSave::Times(ts) => {
+                if ts.is_empty() {
+                    return Err(Error::InvalidSaveTimes { reason: "no save times were given".into() });
+                }
+                if let Some(bad) = ts.iter().find(|t| !t.is_finite() || **t < t0 || **t > t_end) {
+                    return Err(Error::InvalidSaveTimes {
+                        reason: format!(
+                            "{bad} s is not a finite time within [t0, t_end] = [{t0}, {t_end}] s"
+                        ),
+                    });
+                }
+                if let Some(w) = ts.windows(2).find(|w| w[1] <= w[0]) {
+                    return Err(Error::InvalidSaveTimes {
+                        reason: format!(
+                            "times must be strictly increasing, but {} s is followed by {} s",
+                            w[0], w[1]
+                        ),
+                    });
+                }
+                if ts.len() as u64 > max_samples {
+                    let samples = ts.len() as u64;
+                    return Err(Error::TooManySamples {
+                        samples,
+                        bytes: samples * BYTES_PER_SAMPLE,
+                        limit: max_samples * BYTES_PER_SAMPLE,
+                    });
+                }
+            }
+        }
+        let mut runner = Self {
+            t_start: t0,
+            t_end,
+            save,
+            next_time: 0,
+            rec: Recorder { max_samples, ..Recorder::default() },
+            done: false,
+            stepper,
+        };
+        let (s, taut) = (runner.stepper.state(), runner.stepper.is_taut());
+        match &runner.save {
+            StringSave::Every(_) => runner.rec.push(t0, s, taut)?,
+            StringSave::Times(ts) if ts[0] == t0 => {
+                runner.rec.push(t0, s, taut)?;
+                runner.next_time = 1;
+            }
+            StringSave::Times(_) => {}
+        }
+        Ok(runner)
+    }
+
+    /// Advances by about `max_steps` grid steps of dt (fewer at t_end); returns true once t_end is
+    /// reached.
+    pub fn advance(&mut self, max_steps: u64) -> Result<bool> {
+        if self.done {
+            return Ok(true);
+        }
+        let (t0, dt) = (self.stepper.t0, self.stepper.dt);
+        let grid = |k: u64| t0 + k as f64 * dt;
+        // the chunk ends at this grid point (after the time reached: at least one grid step)
+        let mut k_limit = self.stepper.k.saturating_add(max_steps.max(1));
+        while grid(k_limit) <= self.stepper.t {
+            k_limit += 1;
+        }
+        let rec = &mut self.rec;
+        loop {
+            let (target, save_every) = match &self.save {
+                StringSave::Every(n) => (self.t_end, *n),
+                StringSave::Times(ts) => (ts.get(self.next_time).copied().unwrap_or(self.t_end), u64::MAX),
+            };
+            let mut keep = |t: f64, s: State, taut: bool| rec.push(t, s, taut);
+            let mut ignore = |_: f64, _: State, _: bool| Ok(());
+            let push: &mut dyn FnMut(f64, State, bool) -> Result<()> =
+                if save_every == u64::MAX { &mut ignore } else { &mut keep };
+            let chunk_end = grid(k_limit);
+            if chunk_end < target {
+                self.stepper.advance_to(chunk_end, false, save_every, push)?;
+                return Ok(false);
+            }
+            self.stepper.advance_to(target, target == self.t_end, save_every, push)?;
+            if let StringSave::Times(ts) = &self.save {
+                if self.next_time < ts.len() {
+                    // at the save time: the state reached (after any event there)
+                    self.next_time += 1;
+                    rec.push(target, self.stepper.state(), self.stepper.is_taut())?;
+                }
+            }
+            if target == self.t_end {
+                self.done = true;
+                return Ok(true);
+            }
+        }
+    }
+
+    /// The samples kept since the last call, the events since the last call and the work so far
+    /// (the last sample is held back until the run is done: an event at its time may replace it).
+    pub fn take(&mut self) -> StringRun {
+        let n = if self.done { self.rec.t.len() } else { self.rec.t.len().saturating_sub(1) };
+        self.take_first(n)
+    }
+
+    /// Like [`StringRunner::take`], the last sample included: for a run stopped before t_end (going
+    /// on after it could keep a grid sample that an event at the same time would have replaced).
+    pub fn take_all(&mut self) -> StringRun {
+        self.take_first(self.rec.t.len())
+    }
+
+    fn take_first(&mut self, n: usize) -> StringRun {
+        let (t, states, taut) = self.rec.drain(n);
+        StringRun { t, states, taut, events: self.stepper.take_events(), stats: self.stepper.stats() }
+    }
+
+    /// The fraction of [t₀, t_end] done, in [0, 1].
+    pub fn progress(&self) -> f64 {
+        ((self.stepper.t() - self.t_start) / (self.t_end - self.t_start)).clamp(0.0, 1.0)
+    }
+
+    /// True once t_end is reached.
+    pub fn is_done(&self) -> bool {
+        self.done
+    }
+
+    /// The stepper (time and state reached, mode).
+    pub fn stepper(&self) -> &StringStepper {
+        &self.stepper
     }
 }
 
@@ -177,13 +371,10 @@ impl StringPendulum {
                 allowed: "save_every must be an integer ≥ 1 (steps between saved samples)",
             });
         }
-        let mut stepper = StringStepper::new(*self, t0, state, method, dt)?;
-        let mut rec = Recorder { run: StringRun::default(), max_samples: max_saved_bytes / BYTES_PER_SAMPLE };
-        rec.push(stepper.t, stepper.s, stepper.is_taut())?;
-        stepper.advance(t_end, save_every, &mut |t, s, taut| rec.push(t, s, taut))?;
-        rec.run.events = stepper.take_events();
-        rec.run.stats = stepper.stats;
-        Ok(rec.run)
+        let stepper = StringStepper::new(*self, t0, state, method, dt)?;
+        let mut runner = StringRunner::new(stepper, t_end, StringSave::Every(save_every), max_saved_bytes)?;
+        while !runner.advance(u64::MAX)? {}
+        Ok(runner.take())
     }
 
     fn flight_from(&self, t: f64, s: State, zeros: usize) -> Phase {
@@ -350,6 +541,21 @@ impl StringStepper {
         save_every: u64,
         push: &mut dyn FnMut(f64, State, bool) -> Result<()>,
     ) -> Result<()> {
+        self.advance_to(t_end, true, save_every, push)
+    }
+
+    /// Advances to `t_stop` [s], calling `push` at every `save_every`-th grid point and after every
+    /// event. `end`: t_stop ends the run — pushed, and a snap exactly at t_stop is left undone (the
+    /// state there is the one before it), as in [`StringStepper::advance`]. Otherwise t_stop is a
+    /// stop on the way (a chunk's end, a save time): pushed only when it is a `save_every`-th grid
+    /// point, and a snap exactly at t_stop is done, so that the run goes on as if it had not stopped.
+    fn advance_to(
+        &mut self,
+        t_end: f64,
+        end: bool,
+        save_every: u64,
+        push: &mut dyn FnMut(f64, State, bool) -> Result<()>,
+    ) -> Result<()> {
         let (t0, dt) = (self.t0, self.dt);
         let grid = |k: u64| t0 + k as f64 * dt;
         let slack_grid = 1e-9 * dt;
@@ -375,7 +581,7 @@ impl StringStepper {
                     if self.model.tension(&s1) >= 0.0 {
                         (self.scheme, self.s, self.t, self.k, self.on_grid) =
                             (trial, s1, t_next, k_next, on_grid_next);
-                        if (on_grid_next && self.k % save_every == 0) || self.t >= t_end {
+                        if (on_grid_next && self.k % save_every == 0) || (end && self.t >= t_end) {
                             push(self.t, self.s, true)?;
                         }
                         continue;
@@ -413,13 +619,16 @@ impl StringStepper {
                             push(gk, self.model.flight(&from, gk - te), false)?;
                         }
                     }
-                    if arrival >= t_end {
-                        if grid(self.k + 1) == t_end {
+                    if arrival > t_end || (end && arrival == t_end) {
+                        let on_grid = grid(self.k + 1) == t_end;
+                        if on_grid {
                             self.k += 1;
                         }
                         self.s = self.model.flight(&from, t_end - te);
                         self.t = t_end;
-                        push(self.t, self.s, false)?;
+                        if end || (on_grid && self.k % save_every == 0) {
+                            push(self.t, self.s, false)?;
+                        }
                         break;
                     }
                     let before = self.model.flight(&from, arrival - te);
