@@ -22,6 +22,7 @@ pub mod slewing_linear;
 pub mod spline;
 pub mod string;
 pub mod string_run;
+pub mod string_stepper;
 
 pub use extended::Extended;
 pub use ideal::IdealPendulum;
