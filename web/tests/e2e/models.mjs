@@ -113,6 +113,9 @@ export async function checkViews(page, { check, WAIT, simulated }) {
     { timeout: WAIT },
   );
   await page.waitForTimeout(300);
+  // the x the pull must keep: the start as it stands now (the drag's last throttled set_state may have
+  // landed after `after` was read)
+  const xBefore = await page.evaluate(() => window.pendulab.store.status.start.x);
   const handle = await page.evaluate(() => window.pendulab.handleOnScreen());
   const target = { x: handle.x + 70, y: handle.y + 35 };
   await page.mouse.move(handle.x, handle.y);
@@ -138,11 +141,11 @@ export async function checkViews(page, { check, WAIT, simulated }) {
   const speed = Math.hypot(...v);
   const x0 = pulled.s.start.x;
   const tangent = Math.abs(v[0] * x0[0] + v[1] * x0[1] + v[2] * x0[2]) < 1e-9 * speed * Math.hypot(...x0);
-  const sameX = x0.every((c, i) => Math.abs(c - after.start.x[i]) < 1e-12);
+  const sameX = x0.every((c, i) => Math.abs(c - xBefore[i]) < 1e-12);
   const miss = Math.hypot(pulled.h.x - target.x, pulled.h.y - target.y);
   check(
     pulled.s.paused && sameX && tangent && speed > 0.1 && miss < 2,
-    `pulling the velocity arrow sets the start velocity at the same x, tangent (v = ${v.map((c) => c.toFixed(3)).join(', ')} m/s; the tip ${miss.toFixed(2)} px from the pointer; paused ${pulled.s.paused}, x moved by ${x0.map((c, i) => (c - after.start.x[i]).toExponential(1)).join(', ')} m, x·v ${(v[0] * x0[0] + v[1] * x0[1] + v[2] * x0[2]).toExponential(2)} m²/s)`,
+    `pulling the velocity arrow sets the start velocity at the same x, tangent (v = ${v.map((c) => c.toFixed(3)).join(', ')} m/s; the tip ${miss.toFixed(2)} px from the pointer; paused ${pulled.s.paused}, x moved by ${x0.map((c, i) => (c - xBefore[i]).toExponential(1)).join(', ')} m, x·v ${(v[0] * x0[0] + v[1] * x0[1] + v[2] * x0[2]).toExponential(2)} m²/s)`,
   );
   check(/\|v\| = \d+\.\d\d m\/s/.test(message), `the message line shows the speed while pulling (“${message}”)`);
   // start: the first frames move along v
