@@ -100,6 +100,7 @@ export async function checkViews(page, { check, WAIT, simulated }) {
   // pulling the velocity arrow by its handle sets the start velocity at that x: the arrow's tip follows
   // the pointer, the message line shows the speed, and the run starts off in the pulled direction
   await page.waitForFunction(() => window.pendulab.handleOnScreen() !== null, null, { timeout: WAIT });
+  await page.waitForTimeout(300); // let the drag's last throttled set_state land
   // the pull starts from the drawn state: wait until that is the server's answer to the bob drag (on a
   // loaded machine a throttled set_state of the drag may still be in flight)
   await page.waitForFunction(
@@ -112,7 +113,6 @@ export async function checkViews(page, { check, WAIT, simulated }) {
     null,
     { timeout: WAIT },
   );
-  await page.waitForTimeout(300);
   // the x the pull must keep: the start as it stands now (the drag's last throttled set_state may have
   // landed after `after` was read)
   const xBefore = await page.evaluate(() => window.pendulab.store.status.start.x);
