@@ -48,7 +48,7 @@ from pydantic_core import ErrorDetails
 
 from . import _core
 from .io import atomic_path
-from .model import Pendulum, State
+from .model import Pendulum, State, _frozen
 from .simulate import DEFAULTS, method_names, simulate
 from .spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .trajectory import Trajectory
@@ -698,6 +698,12 @@ class Scenario:
 
     def _make_state(self, pendulum: Pendulum) -> State:
         ini = self.spec.initial
+        if pendulum.model == "string" and ini.cartesian and not ini.project:
+            # a string may start slack: strictly inside the sphere, x and v as given (the core checks
+            # them when the run starts; on the sphere the TS² rules below apply)
+            x, v = np.asarray(ini.x, dtype=np.float64), np.asarray(ini.v, dtype=np.float64)
+            if np.linalg.norm(x) < pendulum.length * (1.0 - 1e-9):
+                return State(_frozen(x), _frozen(v))
         try:
             if not ini.cartesian:
                 return pendulum.state_from_angles(*ini.angles())

@@ -329,3 +329,31 @@ def test_a_client_vanishing_mid_stream_leaves_the_others_streaming_and_frees_its
                     break
             time.sleep(0.05)
         assert msg["type"] == "status"
+
+
+def test_a_slack_string_downloads_as_a_scenario_that_runs(client: TestClient) -> None:
+    """The lab's TOML download at a slack moment of the string (x strictly inside the sphere, flying):
+    the file loads back to the same start, bit for bit, and runs from it (slack first)."""
+    x, v = [0.31, -0.2, -0.45], [1.1, 0.4, 2.0]  # m, m/s: |x| ≈ 0.58 m < l = 1 m
+    body = {
+        "model": "string",
+        "length": 1.0,
+        "mass": 1.0,
+        "g": 9.81,
+        "params": {"restitution": 0.5},
+        "x": x,
+        "v": v,
+        "method": "rattle",
+        "dt": 0.001,
+        "t0": 0.0,
+        "t_end": 2.0,
+    }
+    r = client.post("/api/scenario.toml", json=body)
+    assert r.status_code == 200, r.text
+    sc = pl.Scenario.from_toml_str(r.text)
+    np.testing.assert_array_equal(sc.initial_state().x, x)
+    np.testing.assert_array_equal(sc.initial_state().v, v)
+    tr = sc.run(progress=False)
+    assert tr.taut is not None and not tr.taut[0] and bool(tr.taut.any())
+    outside = client.post("/api/scenario.toml", json=body | {"x": [0.0, 0.0, -1.2]})
+    assert outside.status_code == 422 and "TS²" in outside.json()["detail"]

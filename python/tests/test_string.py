@@ -270,3 +270,32 @@ def test_scenario_with_save_at() -> None:
     tr = pl.Scenario.from_toml_str(text).run(progress=False)
     np.testing.assert_array_equal(tr.t, [0.5, 1.0, 4.0])
     assert tr.events is not None and list(tr.events["kind"]) == ["slack", "taut"]
+
+
+def test_a_scenario_may_start_the_string_slack() -> None:
+    """A Cartesian start strictly inside the sphere is a slack string (the lab's scenario download of a
+    slack moment round-trips): at rest at z = −l/2 the bob falls freely and the string snaps taut at
+    the bottom after √(2 (l/2)/g); a start outside the sphere is still refused."""
+    text = """
+[pendulum]
+model = "string"
+length = 1.0
+mass = 1.0
+restitution = 0.0
+[initial]
+x = [0.0, 0.0, -0.5]
+v = [0.0, 0.0, 0.0]
+[simulation]
+t_end = 1.0
+method = "rattle"
+dt = 1e-3
+"""
+    sc = pl.Scenario.from_toml_str(text)
+    assert pl.Scenario.from_toml_str(sc.to_toml()) == sc
+    tr = sc.run(progress=False)
+    assert not tr.taut[0] and tr.taut[-1]
+    assert tr.events is not None
+    snap = np.asarray(tr.events["t"])[np.asarray(tr.events["kind"]) == "taut"][0]
+    assert abs(snap - np.sqrt(2 * 0.5 / 9.81)) < 1e-12
+    with pytest.raises(pl.ScenarioError, match="not on TS²"):
+        pl.Scenario.from_toml_str(text.replace("-0.5", "-1.5"))
