@@ -193,8 +193,14 @@ fn bad_parameters_are_named() {
         |name: &str, extra: &[(&str, f64)]| AnyModel::build(name, params(), extra).unwrap_err().to_string();
     assert!(e("damped", &[("damping", -1.0)]).contains("damping"));
     assert!(e("damped", &[("drag", f64::NAN)]).contains("drag"));
-    assert!(e("damped", &[("gravity_x", 0.0), ("gravity_y", 0.0), ("gravity_z", 0.0)])
-        .contains("gravity_direction"));
+    // the user's own names: gravity_x/y/z (and forcing_x/y/z), with what is allowed
+    let g0 = e("damped", &[("gravity_x", 0.0), ("gravity_y", 0.0), ("gravity_z", 0.0)]);
+    assert!(g0.contains("gravity_x/y/z") && g0.contains("not all zero"), "{g0}");
+    let f0 = e(
+        "damped",
+        &[("forcing_amplitude", 1.0), ("forcing_x", 0.0), ("forcing_y", 0.0), ("forcing_z", 0.0)],
+    );
+    assert!(f0.contains("forcing_x/y/z"), "{f0}");
     assert!(e("rotating", &[("latitude", 2.0)]).contains("latitude"));
     let unknown = e("damped", &[("dampnig", 0.1)]);
     assert!(unknown.contains("dampnig") && unknown.contains("damping"), "{unknown}");

@@ -60,7 +60,12 @@ fn unit(name: &'static str, d: DVec3) -> Result<DVec3> {
     if n.is_finite() && n > 0.0 {
         Ok(d / n)
     } else {
-        Err(Error::InvalidParameter { name, value: n, allowed: "a direction: a finite non-zero 3-vector" })
+        Err(Error::InvalidParameter {
+            name,
+            value: n,
+            allowed: "a direction: finite components, not all zero (only the direction counts; the length, \
+                      printed here, is ignored)",
+        })
     }
 }
 
@@ -79,7 +84,7 @@ impl Extended {
 
     /// Gravity along the unit direction `d` (normalised here; g from the parameters, any sign).
     pub fn with_gravity_direction(mut self, d: DVec3) -> Result<Self> {
-        self.gravity_direction = unit("gravity_direction", d)?;
+        self.gravity_direction = unit("gravity_x/y/z (the gravity direction)", d)?;
         Ok(self)
     }
 
@@ -97,7 +102,7 @@ impl Extended {
         let amplitude = require_non_negative("forcing_amplitude", amplitude, "a finite amplitude >= 0 m/s²")?;
         crate::error::require_finite("forcing_omega", omega, "a finite angular frequency in rad/s")?;
         crate::error::require_finite("forcing_phase", phase, "a finite phase in rad")?;
-        let direction = unit("forcing_direction", direction)?;
+        let direction = unit("forcing_x/y/z (the forcing direction)", direction)?;
         self.forcing = (amplitude > 0.0).then_some(Forcing { amplitude, omega, phase, direction });
         Ok(self)
     }
