@@ -14,6 +14,7 @@
 //! direction, rotating frame; §7), [`MovingPivot`] (T-7.2) and the hybrid [`StringPendulum`] (a
 //! string that goes slack where the tension T-2.3 would be negative). The registry of names and parameters is [`registry`].
 
+pub mod any_model;
 pub mod extended;
 pub mod ideal;
 pub mod pivot;
