@@ -1,0 +1,191 @@
+"""Error messages of scenario files: what is wrong, where, and what is allowed.
+
+Holds :class:`ScenarioError` (the one exception of scenario files: the file, the line of a TOML
+syntax error, one message per problem) and the machinery turning pydantic's validation errors and
+tomllib's syntax errors into those messages: the dotted key as written in the file, the bad value
+as TOML shows it, and the allowed values with their units (SI: m, kg, s, rad; ``*_deg`` keys in
+degrees), taken from the field descriptions of :mod:`pendulab.scenario_schema` and, for a model's
+own parameters, from the core's model registry.
+"""
+
+from __future__ import annotations
+
+import difflib
+import re
+import tomllib
+from typing import Any
+
+from pydantic import BaseModel
+from pydantic_core import ErrorDetails
+
+from .scenario_schema import (
+    SECTIONS,
+    ScenarioSpec,
+    _degree_keys,
+    _model_keys,
+    _models_with,
+    _own_params,
+    _show,
+)
+
+
+class ScenarioError(ValueError):
+    """A scenario file (or string) cannot be used.
+
+    ``source`` names the file, ``line`` the line of a TOML syntax error (else ``None``) and
+    ``problems`` lists one readable message per problem, each naming the key, the bad value and
+    what is allowed. ``str(error)`` is a single line: ``"<source>: <problem>"``.
+    """
+
+    def __init__(self, source: str, problems: str | list[str], line: int | None = None) -> None:
+        self.source = source
+        self.line = line
+        self.problems = [problems] if isinstance(problems, str) else list(problems)
+        where = self.location
+        if len(self.problems) == 1:
+            text = f"{where}: {self.problems[0]}"
+        else:
+            numbered = " ".join(f"({k}) {p}" for k, p in enumerate(self.problems, 1))
+            text = f"{where}: {len(self.problems)} problems: {numbered}"
+        super().__init__(text)
+
+    @property
+    def location(self) -> str:
+        """The file name, with the line number for TOML syntax errors."""
+        return self.source if self.line is None else f"{self.source}, line {self.line}"
+
+
+_TYPE_PROBLEMS = {
+    "float_type": "is not a number",
+    "int_type": "is not an integer",
+    "string_type": "is not a string",
+    "bool_type": "is not true or false",
+    "list_type": "is not an array",
+    "model_type": "is not a table",
+    "dict_type": "is not a table",
+    "finite_number": "is not a finite number (nan and inf are not allowed)",
+}
+
+
+_BOUNDS = {
+    "greater_than": ("gt", ">"),
+    "greater_than_equal": ("ge", ">="),
+    "less_than": ("lt", "<"),
+    "less_than_equal": ("le", "<="),
+}
+
+
+def _model_at(loc: tuple[int | str, ...]) -> type[BaseModel] | None:
+    """The pydantic model holding the key at ``loc`` (None if there is none)."""
+    model: type[BaseModel] = ScenarioSpec
+    for part in loc[:-1]:
+        if not isinstance(part, str):
+            return None
+        info = model.model_fields.get(part)
+        sub = info.annotation if info is not None else None
+        if not (isinstance(sub, type) and issubclass(sub, BaseModel)):
+            return None
+        model = sub
+    return model
+
+
+def _allowed(loc: tuple[int | str, ...]) -> str | None:
+    keys = tuple(p for p in loc if isinstance(p, str))
+    model = _model_at(keys)
+    if model is None or not keys:
+        return None
+    info = model.model_fields.get(keys[-1])
+    return None if info is None else info.description
+
+
+def _key(loc: tuple[int | str, ...]) -> str:
+    out = ""
+    for part in loc:
+        out += f"[{part}]" if isinstance(part, int) else (f".{part}" if out else part)
+    return out
+
+
+def _pendulum_model(data: Any) -> str:
+    """The model named in the raw ``[pendulum]`` table (``"ideal"`` when absent or not a string)."""
+    table = data.get("pendulum") if isinstance(data, dict) else None
+    model = table.get("model", "ideal") if isinstance(table, dict) else "ideal"
+    return model if isinstance(model, str) else "ideal"
+
+
+def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
+    """An unknown key of ``[pendulum]``: the keys of the chosen model, and which models take it."""
+    keys = _model_keys(model)
+    text = f"unknown key pendulum.{name} = {_show(value)}"
+    if others := _models_with(name):
+        text += f" (a parameter of the model{'s' if len(others) > 1 else ''} {', '.join(map(repr, others))}"
+        text += f", not of {model!r}: set model = {others[0]!r}?)"
+    elif hint := difflib.get_close_matches(name, keys, n=1):
+        text += f" (did you mean {hint[0]!r}?)"
+    return text + f"; allowed keys in [pendulum] for model {model!r}: {', '.join(keys)}"
+
+
+def _problem(err: ErrorDetails, data: Any = None) -> str:
+    """One readable line for one pydantic error: the dotted key, the bad value, what is allowed.
+    ``data`` is the raw input (it names the model whose keys ``[pendulum]`` takes)."""
+    loc = tuple(err["loc"])
+    kind, value = err["type"], err.get("input")
+    if kind == "extra_forbidden" and len(loc) == 2 and loc[0] == "pendulum":
+        return _unknown_pendulum_key(str(loc[1]), value, _pendulum_model(data))
+    allowed = _allowed(loc)
+    if loc[:2] == ("pendulum", "params") and len(loc) == 3:  # a model parameter: shown as written
+        model = _pendulum_model(data)
+        name = str(loc[2])
+        spec = _own_params(model).get(_degree_keys(model).get(name, name))
+        if spec is not None:
+            unit = "degrees" if name.endswith("_deg") else spec["unit"]
+            allowed = f"{spec['allowed']} (in {unit}; {spec['description']})"
+        loc = ("pendulum", name)
+    key = _key(loc)
+    if kind == "missing" and len(loc) == 1 and loc[0] in SECTIONS:
+        return f"the table [{key}] is missing"
+    if kind == "missing":
+        return f"{key} is missing; expected {allowed}" if allowed else f"{key} is missing"
+    if kind == "extra_forbidden":
+        parent = _model_at(loc)
+        names = list(parent.model_fields) if parent is not None else []
+        section = f"[{_key(loc[:-1])}]" if len(loc) > 1 else "the top level"
+        hint = difflib.get_close_matches(str(loc[-1]), names, n=1)
+        text = f"unknown key {key} = {_show(value)}"
+        if hint:
+            text += f" (did you mean {hint[0]!r}?)"
+        return text + f"; allowed keys in {section}: {', '.join(names)}"
+    if kind == "value_error":
+        reason = str(err.get("ctx", {}).get("error", err["msg"]))
+        return f"[{key}] {reason}" if key and isinstance(value, dict) else f"{key} = {_show(value)}: {reason}"
+    ctx = err.get("ctx", {})
+    if kind in _TYPE_PROBLEMS:
+        reason = _TYPE_PROBLEMS[kind]
+    elif kind in ("too_short", "too_long") and ctx.get("min_length") == ctx.get("max_length") is not None:
+        reason = f"must have exactly {ctx['min_length']} items, not {ctx.get('actual_length')}"
+    elif kind in ("too_short", "too_long"):
+        reason = err["msg"].replace("List should", "must").replace(" after validation", "")
+    elif kind in _BOUNDS:
+        bound = ctx[_BOUNDS[kind][0]]
+        if isinstance(bound, float) and bound.is_integer() and abs(bound) < 1e15:
+            bound = int(bound)
+        reason = f"must be {_BOUNDS[kind][1]} {bound!r}"
+    else:  # anything else: pydantic says "Input should be …"
+        reason = re.sub(r"^(Input|Value|List) should", "must", err["msg"])
+    text = (
+        f"{key} = {_show(value)} {reason}" if kind in _TYPE_PROBLEMS else f"{key} = {_show(value)}: {reason}"
+    )
+    return f"{text}; allowed: {allowed}" if allowed else text
+
+
+def _syntax_error(source: str, text: str, err: tomllib.TOMLDecodeError) -> ScenarioError:
+    message = str(err)
+    line: int | None = getattr(err, "lineno", None)
+    column: int | None = getattr(err, "colno", None)
+    if m := re.search(r"\s*\(at line (\d+), column (\d+)\)$", message):
+        line, column = int(m.group(1)), int(m.group(2))
+        message = message[: m.start()]
+    elif m := re.search(r"\s*\(at end of document\)$", message):
+        line = text.count("\n") + 1
+        message = message[: m.start()] + " at the end of the file"
+    where = f" (column {column})" if column else ""
+    return ScenarioError(source, f"invalid TOML: {message[:1].lower()}{message[1:]}{where}", line=line)
