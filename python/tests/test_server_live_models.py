@@ -3,11 +3,14 @@ streams frames whose energy is conserved (the spring's kinetic + elastic + gravi
 with restitution 1, through taut phases, flights and snaps) and whose states are those of the offline
 run from the same start (``pl.simulate_spring``, ``pl.simulate`` of the string) bit for bit: the core's
 incremental steppers cut the same run into pieces. The string's slack episodes are in the frames
-(``taut`` = 0, tension 0, inside the sphere); bad parameters get an error notice and the connection stays
+(``taut`` = 0, tension 0, inside the sphere), and each of its events — the leave where the tension
+reaches 0, the snap losing ½m(1 − e²)u² — arrives as an ``event`` notice whose time, position and energy
+lost are the offline run's event bit for bit; bad parameters get an error notice and the connection stays
 usable; a change of parameters carries the string's slack state without pushing it onto the sphere."""
 
 from __future__ import annotations
 
+import itertools
 import json
 from typing import Any
 
@@ -219,3 +222,60 @@ def test_switching_to_the_spring_or_the_string_picks_a_method_that_runs_it() -> 
     assert s.status()["method"] == "rattle4"  # the spring's triple jump (order 4)
     s.apply(parse_command('{"type": "step", "n": 10}'))
     assert s.status()["t"] == pytest.approx(10 * s.dt)
+
+
+def test_a_string_session_sends_each_leave_and_snap_as_an_event_notice_equal_to_the_offline_runs(
+    client: TestClient,
+) -> None:
+    with client.websocket_connect("/ws") as ws:
+        s = start_paused(ws, {"type": "load_scenario", "name": "string_slack"})  # restitution 0
+        assert s["model"] == "string" and s["t"] == 0.0
+        epoch, dt, method = s["epoch"], s["dt"], s["method"]
+        ws.send_json({"type": "set_time_scale", "time_scale": 5.0})
+        ws.send_json({"type": "resume"})
+        events: list[dict[str, Any]] = []
+        last_t = 0.0
+        while len(events) < 2:
+            kind, value = receive(ws)
+            assert not (kind == "json" and value["type"] == "error"), value
+            if kind == "frames":
+                last_t = float(value[-1, 0])
+            elif value["type"] == "event":
+                assert value["t"] <= last_t  # sent after the frames that pass it
+                events.append(value)
+    assert [e["kind"] for e in events] == ["slack", "taut"]
+    assert all(e["epoch"] == epoch and e["skipped"] == 0 for e in events)
+    sc = resolve_scenario("string_slack")
+    off = simulate_string(sc.pendulum, sc.state, 3.0, method=method, dt=dt)
+    assert off.events is not None
+    assert list(off.events["kind"][:2]) == ["slack", "taut"]
+    for k, e in enumerate(events):  # the same events, bit for bit: the same core run cut into pieces
+        assert e["t"] == float(off.events["t"][k])
+        assert e["energy_lost"] == float(off.events["energy_lost"][k])
+        assert e["x"] == [float(c) for c in off.events["x"][k]]
+    assert events[0]["energy_lost"] == 0.0 and events[1]["energy_lost"] > 1.0
+    assert abs(events[0]["x"][2] - 0.5) < 1e-6  # it leaves the sphere at z = l/2 (v0² = 3.5 g l)
+
+
+def test_event_notices_keep_the_epoch_they_happened_in_and_a_flood_is_cut_to_the_latest() -> None:
+    from pendulab.server.session import MAX_EVENT_NOTICES
+
+    s = Session(resolve_scenario("string_slack"))
+    assert s.take_event_notices() == []
+    s.apply(parse_command('{"type": "step", "n": 1500}'))  # past the leave (t ≈ 0.9 s at dt = 1e-3)
+    epoch = s.epoch
+    s.apply(parse_command('{"type": "reset"}'))
+    notices = s.take_event_notices()
+    assert notices and notices[0]["kind"] == "slack" and all(n["epoch"] == epoch for n in notices)
+    assert s.epoch == epoch + 1 and s.take_event_notices() == []
+    # a string bouncing elastically in a tiny sphere: many snaps in one tick, only the latest are sent
+    s.apply(parse_command('{"type": "set_params", "length": 0.01, "params": {"restitution": 1.0}}'))
+    s.apply(parse_command('{"type": "set_state", "x": [0.0, 0.0, -0.005], "v": [0.0, 0.0, 0.0]}'))
+    s.apply(parse_command('{"type": "resume"}'))  # step paused it
+    s.time_scale = 100.0
+    s.advance(0.1)
+    notices = s.take_event_notices()
+    assert len(notices) == MAX_EVENT_NOTICES and notices[0]["skipped"] > 0
+    assert all(n["skipped"] == notices[0]["skipped"] for n in notices)
+    assert all(a["t"] <= b["t"] for a, b in itertools.pairwise(notices))
+    json.dumps(notices, allow_nan=False)

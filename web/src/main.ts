@@ -9,6 +9,7 @@ import { Plots } from './panels/plots';
 import { Portraits } from './panels/portraits';
 import { Analyses, getJSON } from './analyses';
 import type { Command, ScenarioInfo, Schema, Status, Vec3 } from './protocol';
+import { eventMessage } from './events';
 import { ReducedView } from './scene/reduced';
 import { throttle } from './panels/params';
 import { PendulumScene, DEFAULT_VIEW } from './scene/scene';
@@ -166,6 +167,11 @@ async function main(): Promise<void> {
         explain(n.command ? `${n.command}: ${n.message}` : n.message);
         return;
       }
+      if (n.type === 'event') {
+        store.onEvent(n);
+        explain(eventMessage(n));
+        return;
+      }
       onStatus(n);
       if (startup.length > 0) {
         const cmds = startup;
@@ -245,7 +251,7 @@ async function main(): Promise<void> {
       costs.add('scene render (submit)', t0 - t1);
     } else t0 = t1;
     if (panelTick.due(now)) {
-      plots.update(store.history);
+      plots.update(store.history, store.events);
       t1 = performance.now();
       costs.add('plots setData', t1 - t0);
       portraits.update(store.history, f, analyses.veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);

@@ -157,7 +157,21 @@ export interface ErrorNotice {
   command: string | null;
 }
 
-export type Notice = Status | ErrorNotice;
+/** One event of the string pendulum (model `string`), computed by the server's core: `slack`, the tension
+ *  reached 0 and the bob leaves the sphere; `taut`, the string snaps taut again, losing `energy_lost` [J]
+ *  (½m(1 − e²)u², 0 for a leave). `t` [s], `x` the bob's position just after [m], `epoch` the trajectory
+ *  it belongs to, `skipped` how many earlier events of the same tick the server did not send. */
+export interface EventNotice {
+  type: 'event';
+  kind: 'slack' | 'taut';
+  t: number;
+  energy_lost: number;
+  x: Vec3;
+  epoch: number;
+  skipped: number;
+}
+
+export type Notice = Status | ErrorNotice | EventNotice;
 
 function isObject(v: unknown): v is Record<string, unknown> {
   return typeof v === 'object' && v !== null && !Array.isArray(v);
@@ -187,7 +201,39 @@ export function parseNotice(text: string): Notice {
     }
     return raw as unknown as Status;
   }
+  if (raw['type'] === 'event') return parseEvent(raw);
   throw new ProtocolError(`unknown notice type ${JSON.stringify(raw['type'])}`);
+}
+
+function isFiniteNumber(v: unknown): v is number {
+  return typeof v === 'number' && Number.isFinite(v);
+}
+
+function parseEvent(raw: Record<string, unknown>): EventNotice {
+  const { kind, t, energy_lost: lost, x, epoch } = raw;
+  const skipped = raw['skipped'] ?? 0;
+  if (kind !== 'slack' && kind !== 'taut') {
+    throw new ProtocolError(`event notice: kind ${JSON.stringify(kind)} is not "slack" or "taut"`);
+  }
+  if (!isFiniteNumber(t)) throw new ProtocolError('event notice: t is not a finite number');
+  if (!isFiniteNumber(lost) || lost < 0) {
+    throw new ProtocolError('event notice: energy_lost is not a finite number ≥ 0');
+  }
+  if (!Array.isArray(x) || x.length !== 3 || !x.every(isFiniteNumber)) {
+    throw new ProtocolError('event notice: x is not 3 finite numbers');
+  }
+  if (!Number.isInteger(epoch) || !Number.isInteger(skipped) || (skipped as number) < 0) {
+    throw new ProtocolError('event notice: epoch or skipped is not an integer');
+  }
+  return {
+    type: 'event',
+    kind,
+    t,
+    energy_lost: lost,
+    x: [x[0] as number, x[1] as number, x[2] as number],
+    epoch: epoch as number,
+    skipped: skipped as number,
+  };
 }
 
 // --- REST (GET /api/schema, GET /api/scenarios, POST /api/exact) ---

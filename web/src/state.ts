@@ -3,7 +3,8 @@
 // It receives what the server sends (status notices, frame records, errors) and offers what the views
 // draw: the state at the playhead (interpolated between received frames — the page never integrates),
 // the trail, the histories of ΔE, ΔJ₃, z and tension for the plots, and the trajectory as CSV.
-import type { ErrorNotice, ExactQuantities, Frame, Status, Vec3 } from './protocol';
+import type { ErrorNotice, EventNotice, ExactQuantities, Frame, Status, Vec3 } from './protocol';
+import { recordEvent } from './events';
 
 /** Frames kept for interpolation. */
 export const BUFFER_MAX = 512;
@@ -130,6 +131,8 @@ export class LabStore {
   exact: ExactQuantities | null = null;
   exactError: string | null = null;
   errors: ErrorNotice[] = [];
+  /** The string's last events of the current epoch (the server's `event` notices), oldest first. */
+  events: readonly EventNotice[] = [];
   connected = false;
   tickHz = 60;
 
@@ -169,6 +172,7 @@ export class LabStore {
     this.playT = null;
     this.exact = null;
     this.exactError = null;
+    this.events = [];
     this.historyStride = 1;
     this.historyCount = 0;
   }
@@ -177,6 +181,13 @@ export class LabStore {
     this.errors.push(e);
     if (this.errors.length > 20) this.errors.shift();
     this.emit();
+  }
+
+  /** An `event` notice: kept (the last EVENTS_SHOWN) when it belongs to the trajectory shown. */
+  onEvent(e: EventNotice): void {
+    const before = this.events;
+    this.events = recordEvent(before, e, this.status?.epoch ?? null);
+    if (this.events !== before) this.emit();
   }
 
   setConnected(c: boolean): void {

@@ -296,6 +296,8 @@ async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ)
                 await ws.send_bytes(encode_records(records))
             if advanced is not None:
                 await ws.send_bytes(encode_records(advanced))
+            for notice in session.take_event_notices():  # the string's leaves and snaps, after their frames
+                await ws.send_json(notice)
             if session.lagging != was_lagging:
                 await ws.send_json(session.status())
 

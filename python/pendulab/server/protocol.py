@@ -12,7 +12,9 @@ Unknown keys, wrong types, NaN/inf and out-of-range values are refused with an `
 the problem.
 
 **Notices** (server → page, JSON text): ``{"type": "status", …}`` after every change (see
-:meth:`pendulab.server.session.Session.status`) and ``{"type": "error", "message": …, "command": …}``.
+:meth:`pendulab.server.session.Session.status`), ``{"type": "error", "message": …, "command": …}`` and,
+for the string, ``{"type": "event", "kind": "slack" | "taut", "t": …, "energy_lost": …, "x": […],
+"epoch": …, "skipped": …}`` for each leave and snap (:func:`event_notice`).
 """
 
 from __future__ import annotations
@@ -342,6 +344,24 @@ def check_model_params(model: str, names: Any) -> None:
 def error_notice(message: str, command: str | None = None) -> dict[str, Any]:
     """The JSON ``error`` notice."""
     return {"type": "error", "message": message, "command": command}
+
+
+def event_notice(event: dict[str, Any], epoch: int, skipped: int = 0) -> dict[str, Any]:
+    """The JSON ``event`` notice of one of the string's events as the core reports it
+    (``StringStepper.take_events()``): ``kind`` "slack" (the tension reached 0, the bob leaves the
+    sphere) or "taut" (the string snaps taut again), the time ``t`` [s], ``energy_lost`` [J] (0 for a
+    leave, ½m(1 − e²)u² for a snap), the bob's position ``x`` just after [m], the ``epoch`` it belongs
+    to, and ``skipped``: how many earlier events of the same tick were not sent (see
+    :data:`pendulab.server.session.MAX_EVENT_NOTICES`)."""
+    return {
+        "type": "event",
+        "kind": str(event["kind"]),
+        "t": float(event["t"]),
+        "energy_lost": float(event["energy_lost"]),
+        "x": [float(c) for c in event["x"]],
+        "epoch": int(epoch),
+        "skipped": int(skipped),
+    }
 
 
 def finite_or_none(value: float | None) -> float | None:

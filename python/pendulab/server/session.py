@@ -54,6 +54,7 @@ from .protocol import (
     SetTimeScale,
     Step,
     check_model_params,
+    event_notice,
     own_params,
 )
 from .scenarios import Setup, example_resolver, resolve_scenario, scenario_files
@@ -68,6 +69,10 @@ MAX_SUBSAMPLES = 16
 
 MAX_ELAPSED = 0.1
 """Longest wall-clock interval [s] one tick catches up on (after a stall the run resumes, not jumps)."""
+
+MAX_EVENT_NOTICES = 16
+"""Most ``event`` notices sent per tick (the latest ones; each says how many earlier were skipped):
+a fast bouncing string at a high time scale cannot flood the page."""
 
 _SCALAR = {name: FRAME_FIELDS.index(name) for name in ("t", "energy", "j3", "tension", "power", "taut")}
 _VECTOR = {name: FRAME_FIELDS.index(f"{name}1") for name in ("x", "v", "a", "pivot")}
@@ -140,6 +145,7 @@ class Session:
         self.epoch = 0
         self.lagging = False
         self._adaptive = {m["name"]: bool(m["adaptive"]) for m in methods()}
+        self._events: list[tuple[dict[str, Any], int]] = []
         self._load(setup)
 
     # --- set-up ---
@@ -168,6 +174,7 @@ class Session:
         """A stepper from ``state`` at ``t``; with ``pendulum``, that pendulum replaces the current one
         only once its stepper exists (a method refusing the model leaves the session unchanged). The
         spring and the string step with their own core steppers (:mod:`.live_models`)."""
+        self._collect_events()  # the old stepper's events keep their epoch
         dt = 0.0 if self.adaptive else self.dt
         p = self.pendulum if pendulum is None else pendulum
         self.stepper: Stepper | OwnStepper
@@ -216,6 +223,21 @@ class Session:
             "lagging": self.lagging,
             "frame_fields": list(FRAME_FIELDS),
         }
+
+    def _collect_events(self) -> None:
+        take = getattr(getattr(self, "stepper", None), "take_events", None)
+        if take is not None:
+            self._events.extend((e, self.epoch) for e in take())
+
+    def take_event_notices(self) -> list[dict[str, Any]]:
+        """The JSON ``event`` notices of the string's leaves and snaps (the core's
+        ``StringStepper.take_events()``) since the last call, oldest first: at most
+        :data:`MAX_EVENT_NOTICES`, the latest, each counting the earlier ones it skipped. Empty for the
+        other models."""
+        self._collect_events()
+        events, self._events = self._events, []
+        skipped = max(0, len(events) - MAX_EVENT_NOTICES)
+        return [event_notice(e, epoch, skipped) for e, epoch in events[skipped:]]
 
     # --- commands ---
 

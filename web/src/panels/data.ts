@@ -2,18 +2,14 @@
 // so far, the model (for the swinging spring its length and stretch, for the string whether it is taut or
 // slack), and — for the ideal pendulum — the exact-solution quantities of the current orbit
 // (POST /api/exact): kind, turning heights, z-period, azimuthal advance, rotation number and its dynamic
-// and geometric parts.
+// and geometric parts. For the string, the last events (went slack, snapped taut with the energy lost).
 import type { ExactQuantities, Frame } from '../protocol';
 import type { LabStore } from '../state';
 import { offSphereNote, tetherStyle } from '../models';
+import { eventRow } from '../events';
+import { fmt } from '../format';
 
-export function fmt(v: number | null | undefined, digits = 6): string {
-  if (v === null || v === undefined || Number.isNaN(v)) return '—';
-  if (!Number.isFinite(v)) return v > 0 ? '∞' : '−∞';
-  if (v === 0) return '0';
-  const a = Math.abs(v);
-  return a >= 1e-3 && a < 1e6 ? v.toPrecision(digits) : v.toExponential(digits - 1);
-}
+export { fmt };
 
 type Row = [label: string, value: string, unit: string];
 
@@ -55,6 +51,11 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
     rows.splice(at + 1, 0, ['string', `slack: free flight, |x| = ${fmt(f ? Math.hypot(...f.x) : null, 5)} m`, '']);
   } else if (style === 'taut string') {
     rows.splice(at + 1, 0, ['string', 'taut', '']);
+  }
+  if (s?.model === 'string') {
+    // the last leaves and snaps of this trajectory, newest first (the server's event notices)
+    const events = [...store.events].reverse().map(eventRow);
+    rows.push(...(events.length > 0 ? events : [['events', 'none yet (slack, snaps)', ''] as Row]));
   }
   return rows;
 }

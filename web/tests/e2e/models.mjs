@@ -301,9 +301,29 @@ export async function checkOffSphere(page, { check, WAIT, simulated }) {
     };
   });
   check(string.slack > 0 && string.taut > 0 && string.inside && string.zeroT && string.moved > 0.01, `string: moves and goes slack (${string.slack} slack frames inside the sphere with T = 0, ${string.taut} taut)`);
-  // catch a slack moment on the page: the data panel says slack
+  // the server's event notices: the leave, then the snap (restitution 0: it loses energy), listed in the
+  // data panel; the first slack frame comes at or after the leave's time
+  const events = await page.evaluate(() => {
+    const ev = window.pendulab.store.events;
+    const firstSlack = window.pendulab.store.trajectory.find((f) => !f.taut);
+    return {
+      kinds: ev.map((e) => e.kind).join(','),
+      lost: ev.map((e) => e.energy_lost),
+      slackT: ev[0]?.t ?? NaN,
+      firstSlackT: firstSlack?.t ?? NaN,
+      panel: document.getElementById('data').textContent,
+    };
+  });
+  check(
+    events.kinds.startsWith('slack,taut') && events.lost[0] === 0 && events.lost[1] > 0 && events.firstSlackT >= events.slackT && /went slack/.test(events.panel) && /snapped taut/.test(events.panel),
+    `string: event notices ${events.kinds} (lost ${events.lost.map((v) => v.toFixed(3)).join(', ')} J), listed in the data panel`,
+  );
+  // catch a slack moment on the page: the data panel says slack, the message line the event
   await page.evaluate(() => window.pendulab.send({ type: 'set_state', theta: 0, theta_dot: 5.8596 }));
   await page.waitForFunction(() => /slack: free flight/.test(document.getElementById('data').textContent), null, { timeout: WAIT, polling: 20 });
+  await page.waitForFunction(() => /^t = \d+\.\d{3} s: the string (went slack|snapped taut)/.test(document.getElementById('message').textContent), null, { timeout: WAIT, polling: 20 });
+  const said = await page.evaluate(() => document.getElementById('message').textContent);
+  check(/the string (went slack|snapped taut, lost \d)/.test(said), `string: the message line shows the event (“${said}”)`);
   await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
   await page.screenshot({ path: 'test-results/lab-string-slack.png' });
   const note = await page.evaluate(() => document.querySelector('[data-note="portraits"]').textContent);
