@@ -59,8 +59,10 @@ async function main(): Promise<void> {
   const store = new LabStore();
   const message = byId('message');
   let messageTimer: ReturnType<typeof setTimeout> | null = null;
-  const explain = (text: string) => {
+  /** Shows `text` in the message line for 6 s: a problem (red) or, with `info`, news (blue). */
+  const explain = (text: string, info = false) => {
     message.textContent = text;
+    message.classList.toggle('info', info);
     message.classList.add('shown');
     if (messageTimer !== null) clearTimeout(messageTimer);
     messageTimer = setTimeout(() => message.classList.remove('shown'), 6000);
@@ -123,7 +125,7 @@ async function main(): Promise<void> {
     copyLink: () => {
       const link = window.location.href;
       navigator.clipboard?.writeText(link).then(
-        () => explain('link copied: it reproduces this scenario'),
+        () => explain('link copied: it reproduces this scenario', true),
         () => explain(link),
       ) ?? explain(link);
     },
@@ -169,7 +171,7 @@ async function main(): Promise<void> {
       }
       if (n.type === 'event') {
         store.onEvent(n);
-        explain(eventMessage(n));
+        explain(eventMessage(n), true);
         return;
       }
       onStatus(n);
@@ -196,12 +198,12 @@ async function main(): Promise<void> {
     (x, phase) => {
       if (phase === 'start') pauseForGesture();
       sendStart(x, [0, 0, 0]);
-      if (phase === 'end') explain('start set by dragging (at rest there): press start to release it');
+      if (phase === 'end') explain('start set by dragging (at rest there): press start to release it', true);
     },
     (x, pulled, phase) => {
       if (phase === 'start') {
         pauseForGesture();
-        explain('pull the arrow to set the start velocity');
+        explain('pull the arrow to set the start velocity', true);
         return;
       }
       if (pulled === null) return;
@@ -211,6 +213,7 @@ async function main(): Promise<void> {
         phase === 'end'
           ? `start velocity set: |v| = ${pulled.speed.toFixed(2)} m/s${cap}; press start to run from it`
           : `start velocity |v| = ${pulled.speed.toFixed(2)} m/s${cap}`,
+        true,
       );
     },
   );
