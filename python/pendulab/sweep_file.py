@@ -48,6 +48,7 @@ from pydantic_core import ErrorDetails
 from . import _core, sweep_design
 from .model import Pendulum
 from .scenario import ScenarioError
+from .scenario_schema import _show  # a value as it looks in TOML, as scenario errors show it
 from .sweep import QUANTITIES, make_spec
 from .sweep_design import Design
 
@@ -165,17 +166,6 @@ def _problem(err: ErrorDetails) -> str:
     msg = str(err.get("ctx", {}).get("error", err["msg"])) if kind == "value_error" else err["msg"]
     msg = msg.replace("Input should be", "must be").replace("Value error, ", "")
     return f"{key} = {_show(value)}: {msg}" if key else msg
-
-
-def _show(value: Any) -> str:
-    """A value as it looks in TOML."""
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, dict):
-        return "{" + ", ".join(f"{k} = {_show(v)}" for k, v in value.items()) + "}"
-    if isinstance(value, list | tuple):
-        return "[" + ", ".join(_show(v) for v in value) + "]"
-    return repr(value)
 
 
 def _axis_values(name: str, spec: Any) -> np.ndarray:
