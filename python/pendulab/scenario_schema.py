@@ -23,7 +23,8 @@ from pydantic import BaseModel, ConfigDict, Field, field_validator, model_valida
 from . import _core
 from .simulate import DEFAULTS, method_names
 
-MODELS = tuple(m["name"] for m in _core.models())
+_MODEL_SPECS = {m["name"]: m for m in _core.models()}
+MODELS = tuple(_MODEL_SPECS)
 """Pendulum models a scenario may name (``[pendulum] model``; their parameters: ``pendulab models``)."""
 
 _DEG = math.pi / 180
@@ -40,7 +41,6 @@ _VEC3 = {"min_length": 3, "max_length": 3}
 
 
 _COMMON_KEYS = ("model", "length", "mass", "g")
-_MODEL_SPECS = {m["name"]: m for m in _core.models()}
 
 
 def _own_params(model: str) -> dict[str, _core.ParamSpec]:
