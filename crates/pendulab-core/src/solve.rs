@@ -100,24 +100,7 @@ impl<M: Model> Solver<M> {
                 }
             }
             SaveAt::Times(ts) => {
-                if ts.is_empty() {
-                    return Err(Error::InvalidSaveTimes { reason: "no save times were given".into() });
-                }
-                if let Some(bad) = ts.iter().find(|t| !t.is_finite() || **t < t0 || **t > t_end) {
-                    return Err(Error::InvalidSaveTimes {
-                        reason: format!(
-                            "{bad} s is not a finite time within [t0, t_end] = [{t0}, {t_end}] s"
-                        ),
-                    });
-                }
-                if let Some(w) = ts.windows(2).find(|w| w[1] <= w[0]) {
-                    return Err(Error::InvalidSaveTimes {
-                        reason: format!(
-                            "times must be strictly increasing, but {} s is followed by {} s",
-                            w[0], w[1]
-                        ),
-                    });
-                }
+                check_save_times(ts, t0, t_end)?;
                 too_many(ts.len() as u64, max_samples)?;
             }
         }
@@ -303,4 +286,23 @@ pub fn solve<M: Model>(
         }
     }
     Ok((solver.take_samples(), solver.stats(), interrupted))
+}
+
+/// Save times [s] must be given, finite, within [`t0`, `t_end`] and strictly increasing (shared by
+/// [`Solver`] and the string pendulum's runner).
+pub(crate) fn check_save_times(ts: &[f64], t0: f64, t_end: f64) -> Result<()> {
+    if ts.is_empty() {
+        return Err(Error::InvalidSaveTimes { reason: "no save times were given".into() });
+    }
+    if let Some(bad) = ts.iter().find(|t| !t.is_finite() || **t < t0 || **t > t_end) {
+        return Err(Error::InvalidSaveTimes {
+            reason: format!("{bad} s is not a finite time within [t0, t_end] = [{t0}, {t_end}] s"),
+        });
+    }
+    if let Some(w) = ts.windows(2).find(|w| w[1] <= w[0]) {
+        return Err(Error::InvalidSaveTimes {
+            reason: format!("times must be strictly increasing, but {} s is followed by {} s", w[0], w[1]),
+        });
+    }
+    Ok(())
 }

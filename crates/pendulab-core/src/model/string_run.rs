@@ -156,24 +156,7 @@ impl StringRunner {
             }
             StringSave::Every(_) => {}
             StringSave::Times(ts) => {
-                if ts.is_empty() {
-                    return Err(Error::InvalidSaveTimes { reason: "no save times were given".into() });
-                }
-                if let Some(bad) = ts.iter().find(|t| !t.is_finite() || **t < t0 || **t > t_end) {
-                    return Err(Error::InvalidSaveTimes {
-                        reason: format!(
-                            "{bad} s is not a finite time within [t0, t_end] = [{t0}, {t_end}] s"
-                        ),
-                    });
-                }
-                if let Some(w) = ts.windows(2).find(|w| w[1] <= w[0]) {
-                    return Err(Error::InvalidSaveTimes {
-                        reason: format!(
-                            "times must be strictly increasing, but {} s is followed by {} s",
-                            w[0], w[1]
-                        ),
-                    });
-                }
+                crate::solve::check_save_times(ts, t0, t_end)?;
                 if ts.len() as u64 > max_samples {
                     let samples = ts.len() as u64;
                     return Err(Error::TooManySamples {
