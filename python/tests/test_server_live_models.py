@@ -16,10 +16,12 @@ from typing import Any
 
 import numpy as np
 import pytest
+import ws_session
 from fastapi.testclient import TestClient
+from ws_session import receive, status_with
 
 import pendulab as pl
-from pendulab.server import FRAME_FIELDS, Session, create_app, decode_records
+from pendulab.server import FRAME_FIELDS, Session, create_app
 from pendulab.server.protocol import parse_command
 from pendulab.server.session import resolve_scenario
 from pendulab.string_pendulum import simulate_string
@@ -34,23 +36,9 @@ def client() -> TestClient:
     return TestClient(create_app("rosette"))
 
 
-def receive(ws: Any) -> tuple[str, Any]:
-    msg = ws.receive()
-    if msg.get("text") is not None:
-        return "json", json.loads(msg["text"])
-    return "frames", decode_records(msg["bytes"])
-
-
 def until(ws: Any, pred: Any, limit: int = 2000) -> Any:
-    for _ in range(limit):
-        kind, value = receive(ws)
-        if pred(kind, value):
-            return value
-    raise AssertionError("message not received")
-
-
-def status_with(**want: Any) -> Any:
-    return lambda k, v: k == "json" and v["type"] == "status" and all(v[n] == w for n, w in want.items())
+    """ws_session.until with room for the long runs of these sessions."""
+    return ws_session.until(ws, pred, limit)
 
 
 def frames_until(ws: Any, t_end: float) -> np.ndarray:

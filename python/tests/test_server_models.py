@@ -5,7 +5,6 @@ does not stall another one."""
 
 from __future__ import annotations
 
-import json
 import threading
 import time
 from typing import Any
@@ -14,10 +13,11 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 from typer.testing import CliRunner
+from ws_session import receive, status_with, until
 
 import pendulab as pl
 from pendulab import cli
-from pendulab.server import FRAME_FIELDS, Session, create_app, decode_records
+from pendulab.server import FRAME_FIELDS, Session, create_app
 from pendulab.server.protocol import CommandError, parse_command
 from pendulab.server.session import resolve_scenario
 
@@ -28,25 +28,6 @@ X, V, A, PIVOT = (slice(F[f"{k}1"], F[f"{k}1"] + 3) for k in ("x", "v", "a", "pi
 @pytest.fixture(scope="module")
 def client() -> TestClient:
     return TestClient(create_app("rosette"))
-
-
-def receive(ws: Any) -> tuple[str, Any]:
-    msg = ws.receive()
-    if msg.get("text") is not None:
-        return "json", json.loads(msg["text"])
-    return "frames", decode_records(msg["bytes"])
-
-
-def until(ws: Any, pred: Any, limit: int = 600) -> Any:
-    for _ in range(limit):
-        kind, value = receive(ws)
-        if pred(kind, value):
-            return value
-    raise AssertionError("message not received")
-
-
-def status_with(**want: Any) -> Any:
-    return lambda k, v: k == "json" and v["type"] == "status" and all(v[n] == w for n, w in want.items())
 
 
 def error(k: str, v: Any) -> bool:
