@@ -65,6 +65,7 @@ lint: venv
 	cargo clippy --workspace --all-targets -- -D warnings
 	$(VENV)/bin/ruff check python bench testdata/generate tools
 	$(VENV)/bin/ruff format --check python bench testdata/generate tools
+	$(PY) tools/check_imports.py
 
 fmt: venv
 	cargo fmt --all

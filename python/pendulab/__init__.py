@@ -14,22 +14,22 @@ measured from the downward vertical. Quick start::
 Plots (matplotlib, optional): ``pendulab.plot``.
 """
 
-from . import sweep_design
 from ._core import IntegrationError, InvalidInputError, __version__
-from .advance import MeasuredAdvance, measured_azimuth_advance
-from .crane import SlewingSway, slewing_sway
-from .em_map import EMMap, em_map
-from .ensemble import EnsembleResult, simulate_ensemble, states_from_angles
-from .exact import ExactSolution, Phases, exact
+from .ensemble.run import EnsembleResult, simulate_ensemble, states_from_angles
+from .ensemble.save import Save
 from .model import Pendulum, State, models
-from .reduce import Reduced, reduce, reduced_flow
-from .save import Save
 from .scenario import Scenario, ScenarioError, load_scenario
-from .simulate import Stepper, method_names, methods, simulate
-from .spring import SpringTrajectory, SwingingSpring, simulate_spring
-from .sweep import sweep
-from .sweep_io import SweepResult, read_sweep
+from .simulation import Stepper, method_names, methods, simulate
+from .sweeps import design as sweep_design
+from .sweeps.results import SweepResult, read_sweep
+from .sweeps.run import sweep
+from .theory.advance import MeasuredAdvance, measured_azimuth_advance
+from .theory.em_map import EMMap, em_map
+from .theory.exact import ExactSolution, Phases, exact
+from .theory.reduce import Reduced, reduce, reduced_flow
 from .trajectory import Trajectory
+from .variants.crane import SlewingSway, slewing_sway
+from .variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 
 __all__ = [
     "EMMap",

@@ -13,10 +13,17 @@ import os
 import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any, Protocol
 
-if TYPE_CHECKING:
-    from .trajectory import Trajectory
+
+class Tabular(Protocol):
+    """What the writers take: ``Trajectory``, ``SpringTrajectory`` — named columns with units
+    (``columns()``: name → (unit, array)), a header (``metadata()`` or ``file_metadata()``) and, for
+    NetCDF, ``to_xarray()``."""
+
+    def columns(self) -> dict[str, tuple[str, Any]]: ...
+    def to_xarray(self) -> Any: ...
+
 
 FORMATS = {".csv": "csv", ".parquet": "parquet", ".nc": "netcdf"}
 
@@ -61,7 +68,7 @@ def _metadata(tr: Any) -> dict[str, Any]:
     return tr.file_metadata() if hasattr(tr, "file_metadata") else tr.metadata()
 
 
-def write_csv(tr: Trajectory, path: str | os.PathLike[str]) -> None:
+def write_csv(tr: Tabular, path: str | os.PathLike[str]) -> None:
     """CSV with a ``#`` header of metadata (JSON) and one row per sample, columns with units."""
     import numpy as np
 
@@ -77,7 +84,7 @@ def write_csv(tr: Trajectory, path: str | os.PathLike[str]) -> None:
         np.savetxt(tmp, data, delimiter=",", header=header, comments="", fmt="%.17g")
 
 
-def write_parquet(tr: Trajectory, path: str | os.PathLike[str]) -> None:
+def write_parquet(tr: Tabular, path: str | os.PathLike[str]) -> None:
     """Parquet, one row per sample; units per column in field metadata, run metadata in the schema."""
     _require("pyarrow")
     import pyarrow as pa
@@ -93,7 +100,7 @@ def write_parquet(tr: Trajectory, path: str | os.PathLike[str]) -> None:
         pq.write_table(table, tmp)
 
 
-def write_netcdf(tr: Trajectory, path: str | os.PathLike[str]) -> None:
+def write_netcdf(tr: Tabular, path: str | os.PathLike[str]) -> None:
     """NetCDF (via xarray; the scipy engine, NetCDF3 classic) with units and metadata as attributes."""
     _require("xarray")
     _require("scipy")
@@ -102,14 +109,14 @@ def write_netcdf(tr: Trajectory, path: str | os.PathLike[str]) -> None:
         ds.to_netcdf(tmp, engine="scipy")
 
 
-WRITERS: dict[str, Callable[[Trajectory, str | os.PathLike[str]], None]] = {
+WRITERS: dict[str, Callable[[Tabular, str | os.PathLike[str]], None]] = {
     "csv": write_csv,
     "parquet": write_parquet,
     "netcdf": write_netcdf,
 }
 
 
-def save(tr: Trajectory, path: str | os.PathLike[str]) -> Path:
+def save(tr: Tabular, path: str | os.PathLike[str]) -> Path:
     """Writes ``tr`` to ``path`` in the format its suffix names; returns the path."""
     WRITERS[format_of(path)](tr, path)
     return Path(path)

@@ -10,12 +10,18 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
 
-from . import _core
+from ._core import InvalidInputError, check_model, project_state, state_on_ts2
+from ._core import diagnostics as _diagnostics
+from ._core import models as _models
+from ._core import state_from_angles as _state_from_angles
+
+if TYPE_CHECKING:
+    from ._core import ModelInfo
 
 FloatArray = npt.NDArray[np.float64]
 
@@ -23,11 +29,11 @@ FloatArray = npt.NDArray[np.float64]
 def _vec3(name: str, a: Any) -> FloatArray:
     arr = np.asarray(a, dtype=np.float64)
     if arr.shape != (3,):
-        raise _core.InvalidInputError(f"{name} must be a vector of 3 numbers, got shape {arr.shape}")
+        raise InvalidInputError(f"{name} must be a vector of 3 numbers, got shape {arr.shape}")
     return np.ascontiguousarray(arr)
 
 
-def models() -> list[_core.ModelInfo]:
+def models() -> list[ModelInfo]:
     """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary``,
     ``interactive`` (runs with the incremental :class:`pendulab.Stepper`; False for ``string``,
     ``spring`` and ``sampled_pivot``, which run with ``pl.simulate`` / ``pendulab run`` — the web lab
@@ -38,7 +44,7 @@ def models() -> list[_core.ModelInfo]:
     model; the rest are the model's own keywords of :class:`Pendulum` and keys of scenario files.
     ``pendulab models`` prints the same table.
     """
-    return _core.models()
+    return _models()
 
 
 def _infer_model(keys: set[str]) -> str:
@@ -46,7 +52,7 @@ def _infer_model(keys: set[str]) -> str:
     ``"damped"`` when none has them all (the core then names the parameter it does not know)."""
     if not keys:
         return "ideal"
-    for m in _core.models():
+    for m in _models():
         if keys <= {p["name"] for p in m["params"]}:
             return m["name"]
     return "damped"
@@ -125,7 +131,7 @@ class Pendulum:
         **extra: float,
     ) -> None:
         if force is not None and not callable(force):
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"force = {force!r} is not callable: give a function force(t, x, v) -> 3 numbers in N"
             )
         self._force = force
@@ -140,9 +146,7 @@ class Pendulum:
                 _frozen(np.ascontiguousarray(np.asarray(positions, dtype=np.float64))),
             )
         # validates everything (names, ranges, pivot samples) once, in the core
-        _core.check_model(
-            float(length), float(mass), float(g), model, list(self._extra.items()), pivot=self._pivot
-        )
+        check_model(float(length), float(mass), float(g), model, list(self._extra.items()), pivot=self._pivot)
         self.model = model
         self._length = float(length)
         self._g = float(g)
@@ -172,7 +176,7 @@ class Pendulum:
         for i in range(xa.shape[0]):
             f = np.asarray(self._force(float(ta[i]), xa[i].tolist(), va[i].tolist()), dtype=np.float64)
             if f.shape != (3,) or not np.all(np.isfinite(f)):
-                raise _core.InvalidInputError(
+                raise InvalidInputError(
                     f"the force callable returned {f.tolist()!r} N at t = {float(ta[i])!r} s; "
                     "it must return 3 finite numbers"
                 )
@@ -249,16 +253,16 @@ class Pendulum:
         """
         xa, va = _vec3("x", x), _vec3("v", v)
         if project:
-            (xp, vp), dx, dv = _core.project_state(*self._core_args(), xa, va)
+            (xp, vp), dx, dv = project_state(*self._core_args(), xa, va)
             return State(_frozen(xp), _frozen(vp), (dx, dv))
-        xs, vs = _core.state_on_ts2(*self._core_args(), xa, va)
+        xs, vs = state_on_ts2(*self._core_args(), xa, va)
         return State(_frozen(xs), _frozen(vs))
 
     def state_from_angles(
         self, theta: float, phi: float = 0.0, theta_dot: float = 0.0, phi_dot: float = 0.0
     ) -> State:
         """State at polar angle θ [rad] from the downward vertical, azimuth φ [rad], rates θ̇, φ̇ [rad/s]."""
-        x, v = _core.state_from_angles(
+        x, v = _state_from_angles(
             *self._core_args(), float(theta), float(phi), float(theta_dot), float(phi_dot)
         )
         return State(_frozen(x), _frozen(v))
@@ -279,7 +283,7 @@ class Pendulum:
             if ta.ndim == 0:
                 ta = np.full(xa.shape[0], float(ta))
             ta = np.ascontiguousarray(ta.ravel())
-        d = _core.diagnostics(*self._core_args(), xa, va, **self._model_kwargs(), t=ta)
+        d = _diagnostics(*self._core_args(), xa, va, **self._model_kwargs(), t=ta)
         if self._force is not None:
             # the user force: its power F·v, its share x·F/l of the tension, and its tangential part
             # (F − x (x·F)/l²)/m of the acceleration (the rod takes the radial part, T-2.2)

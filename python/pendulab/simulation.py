@@ -8,23 +8,22 @@ Saving is separate from stepping: 10⁸ steps with ``save_every=10_000`` keep on
 
 from __future__ import annotations
 
-import contextlib
 import functools
-import time
-import warnings
-from collections.abc import Callable
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
-from tqdm.auto import tqdm
 
-from . import _core
+from ._chunks import _PROGRESS_AFTER_STEPS, run_in_chunks
+from ._core import ForceSolver, InvalidInputError, Solver
+from ._core import Stepper as _Stepper
+from ._core import methods as _methods
 from .model import Pendulum, State
 from .trajectory import Trajectory
 
+if TYPE_CHECKING:
+    from ._core import MethodInfo
+
 DEFAULTS: dict[str, Any] = {"method": "rattle", "dt": 1e-3, "rtol": 1e-10, "atol": 1e-12, "project": True}
-_CHUNK_SECONDS = 0.1
-_PROGRESS_AFTER_STEPS = 5_000_000
 
 
 def _check_conserve(pendulum: Pendulum, conserve: bool) -> None:
@@ -34,7 +33,7 @@ def _check_conserve(pendulum: Pendulum, conserve: bool) -> None:
     lossy = {k: v for k, v in pendulum.extra.items() if k in ("damping", "drag") and v != 0.0}
     if conserve and lossy:
         given = ", ".join(f"{k} = {v!r}" for k, v in lossy.items())
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"conserve=True would hold E and J₃ at their initial values, but they decay with {given} "
             "(J₃(t) = J₃(0)·e^(−c t)); run without conserve (DOP853 then follows the decay to its "
             "tolerance) or with a RATTLE method, whose exact damping flow keeps the decay of J₃ exactly"
@@ -42,69 +41,19 @@ def _check_conserve(pendulum: Pendulum, conserve: bool) -> None:
 
 
 @functools.cache
-def _method_table() -> dict[str, _core.MethodInfo]:
+def _method_table() -> dict[str, MethodInfo]:
     """The core's integrators by name (fixed for the life of the process)."""
-    return {m["name"]: m for m in _core.methods()}
+    return {m["name"]: m for m in _methods()}
 
 
-def methods() -> list[_core.MethodInfo]:
+def methods() -> list[MethodInfo]:
     """The registered integrators: name, order, symplectic, preserves_ts2, preserves_j3, adaptive, …"""
-    return _core.methods()
+    return _methods()
 
 
 def method_names() -> list[str]:
     """Names of the registered integrators."""
-    return [m["name"] for m in _core.methods()]
-
-
-class ChunkedRun(Protocol):
-    """What :func:`run_in_chunks` drives: ``_core.Solver``, ``_core.ForceSolver``, ``_core.StringRunner``."""
-
-    def advance(self, budget: int, /) -> bool: ...
-    def take_samples(self) -> Any: ...
-    @property
-    def progress(self) -> float: ...
-    @property
-    def t(self) -> float: ...
-
-
-def run_in_chunks(
-    solver: ChunkedRun,
-    show: bool,
-    desc: str,
-    stacklevel: int = 2,
-    take_rest: Callable[[], Any] | None = None,
-) -> tuple[list[Any], bool]:
-    """Advances ``solver`` to its end in chunks of about 0.1 s of work (the GIL released inside each),
-    updating a tqdm bar (``show``) between chunks. Ctrl-C stops after the current chunk: returns the
-    parts taken so far and True, with a RuntimeWarning (``stacklevel`` as if the caller of this
-    function called :func:`warnings.warn`). ``take_rest`` takes the last part after an interruption
-    (default ``solver.take_samples``)."""
-    parts: list[Any] = []
-    interrupted = False
-    budget = 10_000
-    # no bar object at all when it is not shown: a disabled tqdm still costs ~10 µs per call
-    bar = tqdm(total=1000, unit="‰", desc=desc, leave=False) if show else None
-    with bar if bar is not None else contextlib.nullcontext():
-        try:
-            done = False
-            while not done:
-                start = time.perf_counter()
-                done = solver.advance(budget)
-                elapsed = time.perf_counter() - start
-                budget = int(min(max(budget * _CHUNK_SECONDS / max(elapsed, 1e-6), 1_000), 1e9))
-                parts.append(solver.take_samples())
-                if bar is not None:
-                    bar.update(int(1000 * solver.progress) - bar.n)
-        except KeyboardInterrupt:
-            interrupted = True
-            parts.append(take_rest() if take_rest is not None else solver.take_samples())
-            warnings.warn(
-                f"simulation interrupted at t = {solver.t:g} s; returning the samples computed so far",
-                RuntimeWarning,
-                stacklevel=stacklevel + 1,
-            )
-    return parts, interrupted
+    return [m["name"] for m in _methods()]
 
 
 def simulate(
@@ -145,17 +94,17 @@ def simulate(
         raised before the run starts (fixed-step methods) or when reached (``dop853``).
 
     The ``"string"`` model (a rope that goes slack) is hybrid and runs in
-    :func:`pendulab.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
+    :func:`pendulab.variants.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
     rkmk4 with ``dt`` in the taut phases, ``save_every`` or ``save_at``, progress and Ctrl-C as here.
     """
     if method is None:
         method = "dop853" if pendulum.force is not None else "rattle"
     if pendulum.force is not None and conserve:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             "conserve=True would hold E and J₃ fixed, but the user force does work (dE/dt = F·v)"
         )
     if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
-        from .string_pendulum import check_string_settings, simulate_string
+        from .variants.string_pendulum import check_string_settings, simulate_string
 
         check_string_settings(method, conserve=conserve)
         return simulate_string(
@@ -174,21 +123,21 @@ def simulate(
     if pendulum.pivot_samples is not None:
         first, last = float(pendulum.pivot_samples[0][0]), float(pendulum.pivot_samples[0][-1])
         if not (first <= t0 and t_end <= last):
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"the run [t0, t_end] = [{t0!r}, {t_end!r}] s leaves the pivot samples' span "
                 f"[{first!r}, {last!r}] s: give samples covering the whole run"
             )
     info = _method_table().get(method)
     if info is None:
-        raise _core.InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")
+        raise InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")
     if dt is None:
         dt = 0.0 if info["adaptive"] else DEFAULTS["dt"]
     if save_every is not None and save_at is not None:
-        raise _core.InvalidInputError("give either save_every or save_at, not both")
+        raise InvalidInputError("give either save_every or save_at, not both")
     if save_every is not None and (
         isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1
     ):
-        raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+        raise InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     _check_conserve(pendulum, conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
     args = (
@@ -204,11 +153,11 @@ def simulate(
         bool(project),
     )
     saving = (None if save_every is None else int(save_every), times, max_saved_bytes)
-    solver: _core.Solver | _core.ForceSolver
+    solver: Solver | ForceSolver
     if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)
-        solver = _core.ForceSolver(*args, pendulum.force, *saving, **pendulum._model_kwargs())
+        solver = ForceSolver(*args, pendulum.force, *saving, **pendulum._model_kwargs())
     else:
-        solver = _core.Solver(*args, *saving, **pendulum._model_kwargs(), conserve=bool(conserve))
+        solver = Solver(*args, *saving, **pendulum._model_kwargs(), conserve=bool(conserve))
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
     parts, interrupted = run_in_chunks(solver, show, f"{method} to t={t_end:g} s", stacklevel=2)
@@ -245,11 +194,11 @@ class Stepper:
     ) -> None:
         _check_conserve(pendulum, conserve)
         if pendulum.force is not None:
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 "the incremental Stepper does not take a user force callable; use pendulab.simulate"
             )
         self.pendulum = pendulum
-        self._core = _core.Stepper(
+        self._core = _Stepper(
             *pendulum._core_args(),
             np.ascontiguousarray(state.x),
             np.ascontiguousarray(state.v),
@@ -281,7 +230,7 @@ class Stepper:
     def step(self, n: int = 1) -> State:
         """Takes n steps and returns the new state."""
         if isinstance(n, bool) or int(n) != n or n < 0:
-            raise _core.InvalidInputError(f"n = {n!r} must be an integer >= 0")
+            raise InvalidInputError(f"n = {n!r} must be an integer >= 0")
         self._core.step(int(n))
         return self.state
 

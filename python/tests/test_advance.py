@@ -13,7 +13,7 @@ import pytest
 from conftest import SCENARIOS
 
 import pendulab as pl
-from pendulab.advance import monotone_azimuth
+from pendulab.theory.advance import monotone_azimuth
 
 
 def run(

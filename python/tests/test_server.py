@@ -18,7 +18,8 @@ from fastapi.testclient import TestClient
 from typer.testing import CliRunner
 
 import pendulab as pl
-from pendulab import cli, cli_serve
+from pendulab import cli
+from pendulab.cli import serve as cli_serve
 from pendulab.server import FRAME_FIELDS, RECORD_BYTES, Session, create_app, decode_records, encode_records
 from pendulab.server import app as server_app
 from pendulab.server.app import MAX_PENDING

@@ -24,7 +24,7 @@ import pendulab as pl
 from pendulab.server import FRAME_FIELDS, Session, create_app
 from pendulab.server.protocol import parse_command
 from pendulab.server.session import resolve_scenario
-from pendulab.string_pendulum import simulate_string
+from pendulab.variants.string_pendulum import simulate_string
 
 F = {name: i for i, name in enumerate(FRAME_FIELDS)}
 X, V, A = (slice(F[f"{k}1"], F[f"{k}1"] + 3) for k in ("x", "v", "a"))

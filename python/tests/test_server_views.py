@@ -8,8 +8,8 @@ import pytest
 from fastapi.testclient import TestClient
 
 import pendulab as pl
-from pendulab.reduce import invariants
 from pendulab.server import create_app
+from pendulab.theory.reduce import invariants
 
 
 @pytest.fixture(scope="module")

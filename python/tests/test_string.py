@@ -6,7 +6,6 @@ save_at lands on its times exactly; bad settings are refused with the reason. SI
 
 from __future__ import annotations
 
-import importlib
 import math
 import warnings
 from pathlib import Path
@@ -18,11 +17,11 @@ from conftest import SCENARIOS
 from typer.testing import CliRunner
 
 import pendulab as pl
-from pendulab import _core
+from pendulab import _chunks, _core
 from pendulab.cli import app
+from pendulab.variants import string_pendulum
 
 G = 9.81
-simulate_mod = importlib.import_module("pendulab.simulate")  # the module, not pl.simulate
 
 
 def launch(p: pl.Pendulum, v0_squared: float) -> pl.State:
@@ -170,8 +169,8 @@ def _patch_runner(
         made.append(_CountingRunner(*args, interrupt_after=interrupt_after, **kw))
         return made[-1]
 
-    monkeypatch.setattr(_core, "StringRunner", make)
-    monkeypatch.setattr(simulate_mod, "_CHUNK_SECONDS", 1e-9)  # chunks of the minimum, 1000 steps
+    monkeypatch.setattr(string_pendulum, "StringRunner", make)
+    monkeypatch.setattr(_chunks, "_CHUNK_SECONDS", 1e-9)  # chunks of the minimum, 1000 steps
     return made
 
 

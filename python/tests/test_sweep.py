@@ -5,7 +5,6 @@ files; bad input is refused up front with an error naming the bad value."""
 
 from __future__ import annotations
 
-import importlib
 import json
 import logging
 import math
@@ -22,10 +21,11 @@ from conftest import REPO
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
-from pendulab import sweep_backends, sweep_io
-from pendulab.sweep_file import SweepFileError, load_sweep_file, sweep_file_from_dict
+from pendulab.sweeps import backends as sweep_backends
+from pendulab.sweeps import results as sweep_io
+from pendulab.sweeps import run as sweep_mod
+from pendulab.sweeps.file import SweepFileError, load_sweep_file, sweep_file_from_dict
 
-sweep_mod = importlib.import_module("pendulab.sweep")  # the module (pl.sweep is the function)
 EXAMPLES = REPO / "examples" / "sweeps"
 ALL = ["final_state", "rotation_number", "period", "max_sway", "energy_drift"]
 GRID = {"theta0": np.linspace(0.2, 2.8, 6), "phi_dot0": np.array([-2.0, 0.0, 0.5, 3.0]), "length": [0.5, 2.0]}

@@ -15,13 +15,14 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from . import _core, io
-from .advance import measured_azimuth_advance
-from .cli import _check_output, _fail, _say, _user_errors, app
-from .em_map import em_map
-from .exact import ExactSolution, exact
-from .scenario import Scenario, load_scenario
-from .simulate import simulate
+from .. import io
+from .._core import InvalidInputError
+from ..scenario import Scenario, load_scenario
+from ..simulation import simulate
+from ..theory.advance import measured_azimuth_advance
+from ..theory.em_map import em_map
+from ..theory.exact import ExactSolution, exact
+from .common import _check_output, _fail, _say, _user_errors, app
 
 MAX_TIMES = 20_000_000
 """Most times ``pendulab exact --t`` accepts (~1 GB of states)."""
@@ -46,24 +47,20 @@ def parse_times(spec: str) -> np.ndarray:
     try:
         values = [float(p) for p in parts]
     except ValueError:
-        raise _core.InvalidInputError(
-            f"--t {spec!r}: expected START:STOP:STEP in s, e.g. 0:100:0.01"
-        ) from None
+        raise InvalidInputError(f"--t {spec!r}: expected START:STOP:STEP in s, e.g. 0:100:0.01") from None
     if len(values) == 1:
         values = [values[0], values[0], 1.0]
     if len(values) != 3 or not all(math.isfinite(v) for v in values):
-        raise _core.InvalidInputError(f"--t {spec!r}: expected three finite numbers START:STOP:STEP in s")
+        raise InvalidInputError(f"--t {spec!r}: expected three finite numbers START:STOP:STEP in s")
     start, stop, step = values
     if step == 0.0 or (stop - start) * step < 0.0:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"--t {spec!r}: STEP = {step:g} s must be non-zero and lead from START = {start:g} "
             f"to STOP = {stop:g}"
         )
     n = math.floor((stop - start) / step + 1e-9) + 1
     if n > MAX_TIMES:
-        raise _core.InvalidInputError(
-            f"--t {spec!r} gives {n} times; at most {MAX_TIMES} (use a larger STEP)"
-        )
+        raise InvalidInputError(f"--t {spec!r} gives {n} times; at most {MAX_TIMES} (use a larger STEP)")
     return start + step * np.arange(n, dtype=np.float64)
 
 
@@ -171,7 +168,7 @@ def phases(
         else:
             _measure(sc, ph.total, tz, periods, dt)
         if plot is not None:
-            from .plot import plot_phases
+            from ..plot import plot_phases
 
             plot_phases({scenario.stem: sol}, plot)
             _say(f"wrote {plot}")
@@ -204,7 +201,7 @@ def _range(name: str, spec: str | None) -> tuple[float, float] | None:
     try:
         lo, hi = (float(v) for v in spec.split(":"))
     except ValueError:
-        raise _core.InvalidInputError(f"{name} {spec!r}: expected MIN:MAX") from None
+        raise InvalidInputError(f"{name} {spec!r}: expected MIN:MAX") from None
     return lo, hi
 
 
@@ -212,7 +209,7 @@ def _grid(spec: str) -> tuple[int, int]:
     try:
         nj, ne = (int(v) for v in spec.lower().split("x"))
     except ValueError:
-        raise _core.InvalidInputError(f"--grid {spec!r}: expected N_J3xN_E, e.g. 400x400") from None
+        raise InvalidInputError(f"--grid {spec!r}: expected N_J3xN_E, e.g. 400x400") from None
     return nj, ne
 
 
@@ -250,7 +247,7 @@ def em_map_cmd(
     """The energy–momentum map (J3, E) of the spherical pendulum (T-6.4): rotation number W as colour,
     the conical boundary, the critical line J3 = 0 with the bottom and the top, and the monodromy loop
     around the top (W changes by ±1). Writes an image or the grid data, by the suffix of --out."""
-    from .model import Pendulum
+    from ..model import Pendulum
 
     with _user_errors():
         suffix = out.suffix.lower()
@@ -277,7 +274,7 @@ def em_map_cmd(
         _say(f"  critical values (J3, E): bottom (0, {bottom:.6g} J), top (0, {top:.6g} J)")
         _say(f"  monodromy: W carried once around the top changes by {emm.monodromy():+.12f}")
         if suffix in IMAGE_SUFFIXES:
-            from .plot import plot_em_map
+            from ..plot import plot_em_map
 
             plot_em_map(emm, out)
         else:
@@ -309,7 +306,7 @@ def reduced(
             else sc.spec.simulation.t_end - sc.spec.simulation.t0
         )
         tr = sol.trajectory(np.linspace(0.0, span, 2001))
-        from .plot import plot_reduced
+        from ..plot import plot_reduced
 
         plot_reduced(tr, out)
         _say(f"reduced space of {scenario} ({sol.kind}, t = 0 .. {span:.6g} s)")
@@ -355,7 +352,7 @@ def plot_cmd(
         sc = load_scenario(scenario)
         if t_end is not None:
             sc = sc.with_overrides(t_end=t_end)
-        from . import plot as plotting
+        from .. import plot as plotting
 
         if kind == "phases":
             sol = _solution(sc)

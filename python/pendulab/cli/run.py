@@ -1,5 +1,5 @@
-"""The ``pendulab`` command: run scenario files, list the integrators, validate and list scenarios;
-the exact solution's commands (exact, phases, em-map, reduced) are in :mod:`pendulab.cli_exact`.
+"""The ``pendulab`` commands about scenario files and the registries: ``run`` (a scenario file: print
+a summary, write the trajectory), ``validate``, ``scenarios``, ``methods``, ``models``.
 
 Units are SI throughout: --dt and --t-end in s, --atol in m and m/s. Exit codes: 0 success; 2 a
 user error (bad scenario file, option, output path), reported as one line ``error: …`` on stderr
@@ -12,100 +12,26 @@ from __future__ import annotations
 import contextlib
 import json
 import math
-import os
-import sys
 import warnings
-from collections.abc import Iterator
 from pathlib import Path
-from typing import Annotated, NoReturn
+from typing import Annotated
 
 import typer
 
-from . import _core, io
-from .model import models as model_table
-from .scenario import Scenario, ScenarioError, load_scenario
-from .simulate import methods as method_table
-
-EXIT_USER_ERROR = 2
-EXIT_INTERRUPTED = 130
-
-_USER_ERRORS = (ScenarioError, _core.InvalidInputError, _core.IntegrationError, OSError, ImportError)
-
-app = typer.Typer(
-    name="pendulab",
-    help="Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up.",
-    epilog="Scenario files: docs/scenarios.md. This command: docs/cli.md. "
-    "Exit codes: 0 ok, 2 user error, 130 interrupted (Ctrl-C).",
-    no_args_is_help=True,
-    add_completion=False,
-    pretty_exceptions_enable=False,
-    rich_markup_mode=None,
-    context_settings={"help_option_names": ["-h", "--help"]},
+from .._core import InvalidInputError
+from ..model import models as model_table
+from ..scenario import Scenario, ScenarioError, load_scenario
+from ..simulation import methods as method_table
+from .common import (
+    EXIT_INTERRUPTED,
+    EXIT_USER_ERROR,
+    _check_output,
+    _describe,
+    _fail,
+    _say,
+    _user_errors,
+    app,
 )
-
-
-def _say(message: str, *, err: bool = False) -> None:
-    typer.echo(message, err=err)
-
-
-def _fail(message: str, code: int = EXIT_USER_ERROR) -> NoReturn:
-    _say(f"error: {message}", err=True)
-    raise typer.Exit(code)
-
-
-def _describe(e: BaseException) -> str:
-    """One line for a user error (no traceback)."""
-    if isinstance(e, OSError) and e.strerror:
-        where = e.filename if e.filename is not None else ""
-        return f"{where}: {e.strerror}" if where else e.strerror
-    return " ".join(str(e).split()) or type(e).__name__
-
-
-@contextlib.contextmanager
-def _user_errors() -> Iterator[None]:
-    """Turns user errors into ``error: …`` and exit code 2, Ctrl-C into exit code 130."""
-    try:
-        yield
-    except _USER_ERRORS as e:
-        _fail(_describe(e))
-    except KeyboardInterrupt:
-        _fail("interrupted (Ctrl-C)", EXIT_INTERRUPTED)
-
-
-def _version(value: bool) -> None:
-    if value:
-        _say(f"pendulab {_core.__version__}")
-        raise typer.Exit()
-
-
-@app.callback()
-def _root(
-    version: Annotated[
-        bool,
-        typer.Option("--version", help="Print the version and exit.", is_eager=True, callback=_version),
-    ] = False,
-) -> None:
-    """Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up."""
-
-
-def _check_output(out: Path) -> None:
-    """Everything about --out that can be checked before the run: suffix, writer, directory."""
-    try:
-        fmt = io.format_of(out)
-    except ValueError as e:
-        _fail(str(e))
-    if fmt == "parquet":
-        io._require("pyarrow")
-    elif fmt == "netcdf":
-        io._require("xarray")
-        io._require("scipy")
-    if out.is_dir():
-        _fail(f"--out {str(out)!r} is a directory; give a file name ending in .csv, .parquet or .nc")
-    parent = out.resolve().parent
-    while not parent.exists():
-        parent = parent.parent
-    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
-        _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")
 
 
 def _settings(sc: Scenario) -> str:
@@ -272,7 +198,7 @@ def models(
             table = [m for m in table if m["name"] == name]
             if not table:
                 names = ", ".join(m["name"] for m in model_table())
-                raise _core.InvalidInputError(f"unknown model {name!r}; available: {names}")
+                raise InvalidInputError(f"unknown model {name!r}; available: {names}")
     if as_json:
         plain = [
             {
@@ -346,7 +272,7 @@ def scenario_dirs() -> list[Path]:
     """Where the example scenarios are looked for: ./examples/scenarios, then the source tree's."""
     candidates = [
         Path.cwd() / "examples" / "scenarios",
-        Path(__file__).resolve().parents[2] / "examples" / "scenarios",
+        Path(__file__).resolve().parents[3] / "examples" / "scenarios",
     ]
     found: list[Path] = []
     for d in candidates:
@@ -378,24 +304,3 @@ def _display(path: Path) -> str:
     with contextlib.suppress(ValueError):
         return str(path.relative_to(Path.cwd()))
     return str(path)
-
-
-# The commands of the exact solution (exact, phases, em-map, reduced) live in their own module.
-from . import cli_exact  # noqa: E402, F401
-
-from . import cli_sweep  # noqa: E402, F401  # isort: skip
-
-# isort: split
-from . import cli_serve  # noqa: E402, F401  (`pendulab serve`, the web lab; docs/web.md)
-
-
-def main() -> None:
-    """Entry point of the ``pendulab`` script."""
-    app(prog_name="pendulab")
-
-
-if __name__ == "__main__":  # pragma: no cover - `python -m pendulab.cli`
-    # Run the imported module's app: cli_exact registers its commands there, not on this __main__ copy.
-    from pendulab.cli import main as _main
-
-    sys.exit(_main())

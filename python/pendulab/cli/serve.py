@@ -21,7 +21,7 @@ from typing import Annotated
 
 import typer
 
-from .cli import _fail, _say, _user_errors, app
+from .common import _fail, _say, _user_errors, app
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8000
@@ -113,7 +113,7 @@ def serve(
     try:
         import uvicorn
 
-        from .server import create_app
+        from ..server import create_app
     except ImportError as e:
         _fail(
             f"pendulab serve needs FastAPI, uvicorn and websockets ({e}); "

@@ -13,10 +13,10 @@ from typing import Annotated, Any
 import numpy as np
 import typer
 
-from .cli import EXIT_INTERRUPTED, _fail, _say, _user_errors, app
-from .sweep import BACKENDS, sweep
-from .sweep_file import SweepFile, load_sweep_file
-from .sweep_io import MANIFEST
+from ..sweeps.file import SweepFile, load_sweep_file
+from ..sweeps.results import MANIFEST
+from ..sweeps.run import BACKENDS, sweep
+from .common import EXIT_INTERRUPTED, _fail, _say, _user_errors, app
 
 _SWEEP = typer.Argument(metavar="SWEEP", help="Sweep file (TOML); see docs/sweeps.md.", show_default=False)
 

@@ -1,4 +1,5 @@
-"""Ensemble results as arrays on disk: ``EnsembleResult.to_xarray()`` and ``EnsembleResult.save(path)``.
+"""The result of an ensemble run, ``EnsembleResult``, and its arrays on disk: ``to_xarray()`` and
+``save(path)``.
 
 The dataset has dims ``trajectory`` (N), ``time`` (n_save) and ``axis`` (0, 1, 2 = x, y, z) and holds
 ``x`` [m], ``v`` [m/s], ``t`` [s] as the time coordinate, the per-trajectory summary (``z_min``,
@@ -19,15 +20,15 @@ import json
 import os
 import shutil
 import tempfile
+from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
-from . import io
-
-if TYPE_CHECKING:
-    from .ensemble import EnsembleResult
+from .. import io
+from ..model import FloatArray
 
 SUMMARY_UNITS = {
     "z_min": "m",
@@ -110,3 +111,47 @@ def save(res: EnsembleResult, path: str | os.PathLike[str]) -> Path:
             shutil.rmtree(tmp)
         raise
     return target
+
+
+@dataclass(frozen=True)
+class EnsembleResult:
+    """Saved states of N trajectories: ``t`` (n_save,) [s], ``x`` and ``v`` (N, n_save, 3) [m, m/s];
+    ``summary`` (if asked): per trajectory z_min, z_max [m], e_min, e_max [J/kg] (E/m), j3_min, j3_max
+    [m²/s] (J₃/m), ``crossings`` (how many steps crossed the horizontal plane through the pivot, z = 0,
+    in either direction: 2 per turn of a swing over the top, 0 below the pivot; float64 counts, NaN
+    for invalid rows), and derived ``energy_drift`` = (e_max − e_min)/(|g| l), ``j3_drift`` [m²/s] and
+    ``max_sway`` [rad] (largest angle from the stable equilibrium −sign(g) e₃); ``settle_time`` (N,)
+    [s] when a settle angle was given."""
+
+    t: FloatArray
+    x: FloatArray
+    v: FloatArray
+    summary: dict[str, FloatArray] | None
+    interrupted: bool
+    steps: int
+    metadata: dict[str, Any] = field(default_factory=dict)
+    settle_time: FloatArray | None = None
+    invalid_rows: npt.NDArray[np.int64] = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
+    """Rows of the input whose start was not finite (NaN or inf): not integrated, all results NaN."""
+
+    def __len__(self) -> int:
+        return int(self.x.shape[0])
+
+    @property
+    def final_x(self) -> FloatArray:
+        """Final positions (N, 3) [m]."""
+        return self.x[:, -1, :]
+
+    @property
+    def final_v(self) -> FloatArray:
+        """Final velocities (N, 3) [m/s]."""
+        return self.v[:, -1, :]
+
+    def to_xarray(self) -> Any:
+        """An ``xarray.Dataset`` with dims (trajectory, time, axis), units as attributes
+        (see :func:`to_xarray`)."""
+        return to_xarray(self)
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Writes the arrays to ``path``: ``.nc`` (NetCDF) or ``.zarr`` (a Zarr store), atomically."""
+        return save(self, path)

@@ -13,71 +13,20 @@ NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C sto
 
 from __future__ import annotations
 
-import os
 import time
 import warnings
-from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 from tqdm.auto import tqdm
 
-from . import _core
-from .model import FloatArray, Pendulum, State
+from .._core import EnsembleRun, InvalidInputError
+from ..model import FloatArray, Pendulum, State
+from .result import EnsembleResult
 from .save import Save
 
 _POLL_SECONDS = 0.05
 _PROGRESS_AFTER = 5e7  # trajectory-steps
-
-
-@dataclass(frozen=True)
-class EnsembleResult:
-    """Saved states of N trajectories: ``t`` (n_save,) [s], ``x`` and ``v`` (N, n_save, 3) [m, m/s];
-    ``summary`` (if asked): per trajectory z_min, z_max [m], e_min, e_max [J/kg] (E/m), j3_min, j3_max
-    [m²/s] (J₃/m), ``crossings`` (how many steps crossed the horizontal plane through the pivot, z = 0,
-    in either direction: 2 per turn of a swing over the top, 0 below the pivot; float64 counts, NaN
-    for invalid rows), and derived ``energy_drift`` = (e_max − e_min)/(|g| l), ``j3_drift`` [m²/s] and
-    ``max_sway`` [rad] (largest angle from the stable equilibrium −sign(g) e₃); ``settle_time`` (N,)
-    [s] when a settle angle was given."""
-
-    t: FloatArray
-    x: FloatArray
-    v: FloatArray
-    summary: dict[str, FloatArray] | None
-    interrupted: bool
-    steps: int
-    metadata: dict[str, Any] = field(default_factory=dict)
-    settle_time: FloatArray | None = None
-    invalid_rows: npt.NDArray[np.int64] = field(default_factory=lambda: np.zeros(0, dtype=np.int64))
-    """Rows of the input whose start was not finite (NaN or inf): not integrated, all results NaN."""
-
-    def __len__(self) -> int:
-        return int(self.x.shape[0])
-
-    @property
-    def final_x(self) -> FloatArray:
-        """Final positions (N, 3) [m]."""
-        return self.x[:, -1, :]
-
-    @property
-    def final_v(self) -> FloatArray:
-        """Final velocities (N, 3) [m/s]."""
-        return self.v[:, -1, :]
-
-    def to_xarray(self) -> Any:
-        """An ``xarray.Dataset`` with dims (trajectory, time, axis), units as attributes
-        (:mod:`pendulab.ensemble_io`)."""
-        from . import ensemble_io
-
-        return ensemble_io.to_xarray(self)
-
-    def save(self, path: str | os.PathLike[str]) -> Path:
-        """Writes the arrays to ``path``: ``.nc`` (NetCDF) or ``.zarr`` (a Zarr store), atomically."""
-        from . import ensemble_io
-
-        return ensemble_io.save(self, path)
 
 
 def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:
@@ -88,7 +37,7 @@ def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:
     else:
         arr = np.asarray(states, dtype=np.float64)
     if arr.ndim != 2 or arr.shape[1] != 6 or arr.shape[0] == 0:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"states must be an (N, 6) array of (x, v) rows [m, m/s] or a list of State, "
             f"got shape {arr.shape}"
         )
@@ -99,11 +48,11 @@ def _per_trajectory(name: str, value: Any, default: float, n: int) -> FloatArray
     try:
         a = np.atleast_1d(np.asarray(default if value is None else value, dtype=np.float64)).ravel()
     except (TypeError, ValueError):
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"{name} = {value!r:.80}: give a number or one number per trajectory ({n})"
         ) from None
     if a.size not in (1, n):
-        raise _core.InvalidInputError(f"{name} must be one value or one per trajectory ({n}), got {a.size}")
+        raise InvalidInputError(f"{name} must be one value or one per trajectory ({n}), got {a.size}")
     return np.ascontiguousarray(a)
 
 
@@ -133,7 +82,7 @@ def model_damping(pendulum: Pendulum) -> float:
         or extra.get("forcing_amplitude", 0.0) != 0.0
         or (gravity[0] != 0.0 or gravity[1] != 0.0 or gravity[2] >= 0.0)
     ):
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"simulate_ensemble runs the ideal pendulum with optional linear damping, not {pendulum!r}; "
             "use simulate() for drag, forcing, a force callable, tilted gravity and the other models"
         )
@@ -165,15 +114,15 @@ def simulate_ensemble(
     ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. ``method``: only
     ``"rattle"``. The number of steps is round(t_end/dt); t_end must be a multiple of dt to 1e-9."""
     if method != "rattle":
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"method = {method!r}: the ensemble kernel runs 'rattle' (vectorised); loop over "
             "pl.simulate for the other methods"
         )
     if save is not None:
         if not isinstance(save, Save):
-            raise _core.InvalidInputError(f"save must be a pl.Save rule, got {save!r}")
+            raise InvalidInputError(f"save must be a pl.Save rule, got {save!r}")
         if save_every is not None or summary is not None:
-            raise _core.InvalidInputError("give save=pl.Save... or save_every/summary, not both")
+            raise InvalidInputError("give save=pl.Save... or save_every/summary, not both")
         save_every, summary = save.every_n, save.with_summary
     summary = True if summary is None else bool(summary)
     c_model = model_damping(pendulum)
@@ -185,17 +134,17 @@ def simulate_ensemble(
     finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
     invalid = np.flatnonzero(~finite)
     if invalid.size == n:
-        raise _core.InvalidInputError(f"every start row is non-finite (NaN or inf): {n} rows")
+        raise InvalidInputError(f"every start row is non-finite (NaN or inf): {n} rows")
     if not (np.isfinite(dt) and dt > 0):
-        raise _core.InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
+        raise InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
     steps = round(t_end / dt)
     if not (np.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
-        raise _core.InvalidInputError(f"t_end = {t_end!r} s must be > 0 and a multiple of dt = {dt!r} s")
+        raise InvalidInputError(f"t_end = {t_end!r} s must be > 0 and a multiple of dt = {dt!r} s")
     if save_every is not None and (int(save_every) != save_every or save_every < 1):
-        raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+        raise InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     n_save = 2 if save_every is None else steps // int(save_every) + 2
     if n * n_save * 48 > 4 * 2**30:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"{n} trajectories × {n_save} samples need {n * n_save * 48 / 2**30:.1f} GiB (limit 4 GiB); "
             "save less often"
         )
@@ -212,7 +161,7 @@ def simulate_ensemble(
     def good(a: FloatArray) -> FloatArray:
         return np.ascontiguousarray(a if (a.shape[0] != n or not invalid.size) else a[finite])
 
-    run = _core.EnsembleRun(
+    run = EnsembleRun(
         good(x),
         good(v),
         good(lengths),

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from . import _core
+from .._core import InvalidInputError
 
 
 @dataclass(frozen=True)
@@ -35,7 +35,7 @@ class Save:
     def every(cls, n: int) -> Save:
         """Also every ``n``-th step (n ≥ 1, an integer)."""
         if isinstance(n, bool) or not isinstance(n, int) or n < 1:
-            raise _core.InvalidInputError(f"Save.every({n!r}): n must be an integer >= 1 (steps)")
+            raise InvalidInputError(f"Save.every({n!r}): n must be an integer >= 1 (steps)")
         return cls(every_n=n)
 
     @classmethod
@@ -48,7 +48,7 @@ class Save:
             return NotImplemented
         a, b = self.every_n, other.every_n
         if a is not None and b is not None and a != b:
-            raise _core.InvalidInputError(f"Save.every({a}) | Save.every({b}): give one interval")
+            raise InvalidInputError(f"Save.every({a}) | Save.every({b}): give one interval")
         return Save(a if a is not None else b, self.with_summary or other.with_summary)
 
     def __repr__(self) -> str:

@@ -14,7 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from ..em_map import EMMap
+from ..theory.em_map import EMMap
+from .figure import new_figure, save_figure
 
 
 def plot_em_map(
@@ -26,7 +27,6 @@ def plot_em_map(
 ) -> Any:
     """Draws ``emmap`` (from :func:`pendulab.em_map`); saves it atomically to ``path`` if given (.png, .svg,
     .pdf). ``loop_radius`` is the monodromy loop's radius in units of (m l² ω₀, m|g|l). Returns the Figure."""
-    from . import new_figure, save_figure
 
     fig = new_figure(figsize=figsize, layout="constrained")
     ax = fig.add_subplot()

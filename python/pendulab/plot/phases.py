@@ -20,9 +20,10 @@ from typing import Any
 
 import numpy as np
 
-from .. import _core
-from ..exact import ExactSolution, Phases
-from ..reduce import reduce
+from .._core import InvalidInputError
+from ..theory.exact import ExactSolution, Phases
+from ..theory.reduce import reduce
+from .figure import new_figure, save_figure
 
 _COLORS = {"dynamic": "tab:blue", "geometric": "tab:orange", "sum": "tab:green"}
 _SYMLOG_RATIO = 20.0
@@ -41,10 +42,10 @@ def _named(
     else:
         items = [("", s) for s in solutions]
     if not items:
-        raise _core.InvalidInputError("no exact solution to draw the phases of")
+        raise InvalidInputError("no exact solution to draw the phases of")
     for _, s in items:
         if not isinstance(s, ExactSolution):
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"expected pendulab.ExactSolution objects (from pl.exact), got {type(s).__name__}"
             )
     out = []
@@ -120,7 +121,7 @@ def _bars(ax: Any, named: list[tuple[str, ExactSolution]], phases: list[Phases])
 def _orbit(ax: Any, sol: ExactSolution, phases: Phases, samples: int) -> None:
     tz = sol.period_z
     if tz is None or not math.isfinite(tz):  # pragma: no cover - generic and conical orbits have one
-        raise _core.InvalidInputError(f"the z-period is {tz}; no closed reduced orbit to draw")
+        raise InvalidInputError(f"the z-period is {tz}; no closed reduced orbit to draw")
     red = reduce(sol.trajectory(np.linspace(0.0, tz, samples)))
     s1, s2 = red.sigma[:, 0], red.sigma[:, 1]
     pz = s2 / ((1.0 - s1) * (1.0 + s1))
@@ -184,18 +185,17 @@ def plot_phases(
     ``samples`` exact states over one z-period (default: yes for one solution; it needs exactly one).
     Default sizes: 13 × 5.5 in with the orbit, else (2.6 n + 3.5) × 5.5 in for n orbits.
     """
-    from . import new_figure, save_figure
 
     named = _named(solutions)
     phases = [s.phases() for _, s in named]
     if orbit is None:
         orbit = len(named) == 1
     if orbit and len(named) != 1:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"the reduced-orbit panel is drawn for one solution, not {len(named)}; pass orbit=False"
         )
     if samples < 16:
-        raise _core.InvalidInputError(f"samples = {samples} must be at least 16")
+        raise InvalidInputError(f"samples = {samples} must be at least 16")
     if figsize is None:
         figsize = (13.0, 5.5) if orbit else (2.6 * len(named) + 3.5, 5.5)
 

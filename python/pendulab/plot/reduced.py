@@ -13,8 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from ..reduce import Reduced, reduce
+from ..theory.reduce import Reduced, reduce
 from ..trajectory import Trajectory
+from .figure import new_figure, save_figure
 
 
 def plot_reduced(
@@ -26,7 +27,6 @@ def plot_reduced(
 ) -> Any:
     """Draws the surface C = 0, the plane H = const and the orbit of ``data`` (a trajectory, or its
     :func:`pendulab.reduce`); saves atomically to ``path`` if given (.png, .svg, .pdf). Returns the Figure."""
-    from . import new_figure, save_figure
 
     red = data if isinstance(data, Reduced) else reduce(data)
     s = red.sigma

@@ -19,10 +19,11 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .. import _core
-from ..exact import ExactSolution
+from .._core import InvalidInputError
 from ..model import FloatArray
+from ..theory.exact import ExactSolution
 from ..trajectory import Trajectory
+from .figure import new_figure, save_figure
 
 KINDS = ("sphere", "top", "both")
 """What :func:`plot_trajectory` draws."""
@@ -46,7 +47,7 @@ def _turning_heights(traj: Trajectory, exact: ExactSolution | None) -> list[tupl
     if exact is None:
         return []
     if exact.pendulum.params() != traj.pendulum.params():
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"the exact solution is for {exact.pendulum!r}, the trajectory for {traj.pendulum!r}; "
             "overlay the solution of the trajectory's own pendulum"
         )
@@ -133,14 +134,13 @@ def plot_trajectory(
     as horizontal circles. Long trajectories are thinned to ``max_points`` evenly spread samples for
     drawing (the first and the last included). Axes in m. Returns the Figure.
     """
-    from . import new_figure, save_figure
 
     if kind not in KINDS:
-        raise _core.InvalidInputError(f"unknown kind {kind!r}; use one of {', '.join(KINDS)}")
+        raise InvalidInputError(f"unknown kind {kind!r}; use one of {', '.join(KINDS)}")
     if len(traj) == 0:
-        raise _core.InvalidInputError("the trajectory has no samples to draw")
+        raise InvalidInputError("the trajectory has no samples to draw")
     if max_points < 2:
-        raise _core.InvalidInputError(f"max_points = {max_points} must be at least 2")
+        raise InvalidInputError(f"max_points = {max_points} must be at least 2")
     heights = _turning_heights(traj, exact)
     x = traj.x[_thin(len(traj), max_points)]
 

@@ -1,6 +1,6 @@
 """Building a validated scenario's pendulum (or swinging spring) and start, and the core's checks.
 
-Each function takes sections of a :class:`pendulab.scenario_schema.ScenarioSpec` that pydantic has
+Each function takes sections of a :class:`pendulab.scenario.schema.ScenarioSpec` that pydantic has
 already validated and does what needs the core: :func:`build_pendulum` builds the rod models'
 :class:`Pendulum` (length [m], mass [kg], g [m/s²], the model's own parameters in SI units, the
 sampled pivot's times [s] and positions [m], which must span the run [t0, t_end] [s]);
@@ -18,11 +18,11 @@ import re
 
 import numpy as np
 
-from . import _core
-from .model import Pendulum, State, _frozen
-from .scenario_errors import ScenarioError
-from .scenario_schema import InitialSection, ScenarioSpec, SimulationSection, _degree_keys, _own_params, _show
-from .spring import SwingingSpring
+from .._core import InvalidInputError, Solver, spring_simulate
+from ..model import Pendulum, State, _frozen
+from ..variants.spring import SwingingSpring
+from .errors import ScenarioError
+from .schema import InitialSection, ScenarioSpec, SimulationSection, _degree_keys, _own_params, _show
 
 SPRING_ORDERS = {"rattle": 2, "rattle4": 4}
 """Methods a ``model = "spring"`` scenario may name: the unconstrained Störmer–Verlet and triple jump."""
@@ -40,7 +40,7 @@ def build_pendulum(spec: ScenarioSpec, source: str) -> Pendulum:
             pivot_samples=p.pivot_samples(),
             **p.extras(),
         )
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         given = "".join(
             f" (given as {deg} = {p.params[deg]!r} degrees)"
             for deg, rad in _degree_keys(p.model).items()
@@ -72,7 +72,7 @@ def start_state(pendulum: Pendulum, ini: InitialSection, source: str) -> State:
         if ini.project:
             return pendulum.state(ini.x, ini.v, project=True)
         return pendulum.state(ini.x, ini.v)
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         if not ini.cartesian or ini.project or "not on TS²" not in str(e):
             raise ScenarioError(source, f"[initial] {e}") from None
         x, v = np.asarray(ini.x), np.asarray(ini.v)
@@ -90,15 +90,15 @@ def start_state(pendulum: Pendulum, ini: InitialSection, source: str) -> State:
 def check_run_settings(pendulum: Pendulum, state: State, sim: SimulationSection, source: str) -> None:
     """The core's checks of ``[simulation]`` for ``pendulum`` starting at ``state``, without stepping."""
     if pendulum.model == "string":  # hybrid (string_pendulum.py): its own, fewer settings
-        from .string_pendulum import check_string_settings
+        from ..variants.string_pendulum import check_string_settings
 
         try:
             check_string_settings(sim.method)
-        except _core.InvalidInputError as e:
+        except InvalidInputError as e:
             raise ScenarioError(source, f"[simulation] {e}") from None
         return
     try:  # the core's own up-front checks (memory of the saved samples, save times), no stepping
-        _core.Solver(
+        Solver(
             *pendulum._core_args(),
             np.ascontiguousarray(state.x),
             np.ascontiguousarray(state.v),
@@ -113,7 +113,7 @@ def check_run_settings(pendulum: Pendulum, state: State, sim: SimulationSection,
             None,
             **pendulum._model_kwargs(),
         )
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         raise ScenarioError(source, f"[simulation] {e}") from None
 
 
@@ -149,7 +149,7 @@ def build_spring(spec: ScenarioSpec, source: str) -> tuple[SwingingSpring, State
             )
         state = Pendulum(length=ell, g=p.g, mass=p.mass).state_from_angles(*ini.angles())
     try:  # the core's checks of parameters, start and step, without stepping
-        _core.spring_simulate(
+        spring_simulate(
             spring.k_over_m,
             spring.rest_length,
             spring.g,
@@ -161,6 +161,6 @@ def build_spring(spec: ScenarioSpec, source: str) -> tuple[SwingingSpring, State
             int(sim.save_every or 1),
             2,
         )
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         raise ScenarioError(source, f"[pendulum] {e}") from None
     return spring, state

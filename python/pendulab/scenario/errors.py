@@ -4,7 +4,7 @@ Holds :class:`ScenarioError` (the one exception of scenario files: the file, the
 syntax error, one message per problem) and the machinery turning pydantic's validation errors and
 tomllib's syntax errors into those messages: the dotted key as written in the file, the bad value
 as TOML shows it, and the allowed values with their units (SI: m, kg, s, rad; ``*_deg`` keys in
-degrees), taken from the field descriptions of :mod:`pendulab.scenario_schema` and, for a model's
+degrees), taken from the field descriptions of :mod:`pendulab.scenario.schema` and, for a model's
 own parameters, from the core's model registry.
 """
 
@@ -18,7 +18,7 @@ from typing import Any
 from pydantic import BaseModel
 from pydantic_core import ErrorDetails
 
-from .scenario_schema import (
+from .schema import (
     SECTIONS,
     ScenarioSpec,
     _degree_keys,

@@ -28,9 +28,9 @@ contradictions are refused) and then by the core (the start must lie on TS², th
 must fit in memory). Every problem raises :class:`ScenarioError` naming the file, the dotted key,
 the bad value and what is allowed.
 
-The file's parts: the tables and their validators in :mod:`pendulab.scenario_schema`, the error
-messages (:class:`ScenarioError`) in :mod:`pendulab.scenario_errors`, building the pendulum or
-spring and its start with the core's checks in :mod:`pendulab.scenario_build`; this module holds
+The file's parts: the tables and their validators in :mod:`pendulab.scenario.schema`, the error
+messages (:class:`ScenarioError`) in :mod:`pendulab.scenario.errors`, building the pendulum or
+spring and its start with the core's checks in :mod:`pendulab.scenario.build`; this module holds
 :class:`Scenario` (construction, overrides, running, TOML writing) and :func:`load_scenario`, and
 re-exports the public names of the others.
 """
@@ -48,12 +48,15 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from . import _core
-from .io import atomic_path
-from .model import Pendulum, State
-from .scenario_build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
-from .scenario_errors import ScenarioError, _problem, _syntax_error
-from .scenario_schema import (
+from .._core import __version__
+from ..io import atomic_path
+from ..model import Pendulum, State
+from ..simulation import simulate
+from ..trajectory import Trajectory
+from ..variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
+from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
+from .errors import ScenarioError, _problem, _syntax_error
+from .schema import (
     MODELS,
     SECTIONS,
     UNITS,
@@ -65,9 +68,6 @@ from .scenario_schema import (
     _own_params,
     _show,
 )
-from .simulate import simulate
-from .spring import SpringTrajectory, SwingingSpring, simulate_spring
-from .trajectory import Trajectory
 
 __all__ = [
     "MODELS",
@@ -280,7 +280,7 @@ class Scenario:
         units = {section: dict(table) for section, table in UNITS.items()}
         units["pendulum"] |= {k: p["unit"] for k, p in _own_params(model).items() if p["unit"] != "1"}
         units["pendulum"] |= dict.fromkeys(_degree_keys(model), "degrees")
-        lines = [f"# Pendulab scenario (pendulab {_core.__version__}); SI units, angles *_deg in degrees"]
+        lines = [f"# Pendulab scenario (pendulab {__version__}); SI units, angles *_deg in degrees"]
         lines += [f"{k} = {_toml_value(data[k])}" for k in ("title", "description") if k in data]
         for section in SECTIONS:
             lines += ["", f"[{section}]"]

@@ -8,22 +8,25 @@ times [s] and positions [m]), :class:`InitialSection` (``[initial]``: θ, φ [ra
 and :class:`ScenarioSpec` (the whole file), with the validators that refuse contradictions, the
 tables :data:`SECTIONS` and :data:`UNITS`, and the helpers naming each model's keys in
 ``[pendulum]``. Messages of the validators name the key, the bad value and what is allowed; the
-formatting of pydantic's own errors lives in :mod:`pendulab.scenario_errors`, the checks that need
-the core (a start on TS², memory of the saved samples) in :mod:`pendulab.scenario_build`.
+formatting of pydantic's own errors lives in :mod:`pendulab.scenario.errors`, the checks that need
+the core (a start on TS², memory of the saved samples) in :mod:`pendulab.scenario.build`.
 """
 
 from __future__ import annotations
 
 import difflib
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
-from . import _core
-from .simulate import DEFAULTS, method_names
+from .._core import methods, models
+from ..simulation import DEFAULTS, method_names
 
-_MODEL_SPECS = {m["name"]: m for m in _core.models()}
+if TYPE_CHECKING:
+    from .._core import ParamSpec
+
+_MODEL_SPECS = {m["name"]: m for m in models()}
 MODELS = tuple(_MODEL_SPECS)
 """Pendulum models a scenario may name (``[pendulum] model``; their parameters: ``pendulab models``)."""
 
@@ -43,7 +46,7 @@ _VEC3 = {"min_length": 3, "max_length": 3}
 _COMMON_KEYS = ("model", "length", "mass", "g")
 
 
-def _own_params(model: str) -> dict[str, _core.ParamSpec]:
+def _own_params(model: str) -> dict[str, ParamSpec]:
     """The model's own parameters (beyond length, mass and g) by name."""
     spec = _MODEL_SPECS.get(model)
     return {} if spec is None else {p["name"]: p for p in spec["params"] if p["name"] not in _COMMON_KEYS}
@@ -288,7 +291,7 @@ class SimulationSection(_Section):
 
     def is_adaptive(self) -> bool:
         """True when the method chooses its own steps (dop853)."""
-        return bool({m["name"]: m for m in _core.methods()}[self.method]["adaptive"])
+        return bool({m["name"]: m for m in methods()}[self.method]["adaptive"])
 
     def resolved_dt(self) -> float:
         """The step size handed to the core [s]: ``dt``, else 1e-3 s (0 = automatic for adaptive methods)."""

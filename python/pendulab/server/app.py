@@ -34,7 +34,7 @@ from fastapi.responses import HTMLResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
 from pydantic import BaseModel, ValidationError
 
-from .. import _core
+from .._core import IntegrationError, InvalidInputError, __version__
 from ..scenario import ScenarioError, load_scenario
 from .protocol import (
     CommandError,
@@ -129,7 +129,7 @@ def create_app(
     default = resolve_scenario(scenario)
     resolve = example_resolver(default)
     static = STATIC_DIR if static_dir is None else static_dir
-    app = FastAPI(title="Pendulab lab", version=_core.__version__, docs_url="/api/docs", redoc_url=None)
+    app = FastAPI(title="Pendulab lab", version=__version__, docs_url="/api/docs", redoc_url=None)
     active = 0
 
     @app.get("/api/schema")
@@ -150,7 +150,7 @@ def create_app(
             return req
         try:
             return JSONResponse(exact_quantities(req))
-        except (_core.InvalidInputError, _core.IntegrationError) as e:
+        except (InvalidInputError, IntegrationError) as e:
             return _unprocessable(e)
 
     @app.post("/api/effective_potential")
@@ -167,7 +167,7 @@ def create_app(
             return req
         try:
             return JSONResponse(reduced_view(req))
-        except (_core.InvalidInputError, _core.IntegrationError) as e:
+        except (InvalidInputError, IntegrationError) as e:
             return _unprocessable(e)
 
     @app.post("/api/em_map")
@@ -177,7 +177,7 @@ def create_app(
             return req
         try:
             return JSONResponse(em_view(req))
-        except (_core.InvalidInputError, _core.IntegrationError) as e:
+        except (InvalidInputError, IntegrationError) as e:
             return _unprocessable(e)
 
     @app.post("/api/scenario.toml")
@@ -187,7 +187,7 @@ def create_app(
             return req
         try:
             text = scenario_toml(req)
-        except (ScenarioError, _core.InvalidInputError) as e:
+        except (ScenarioError, InvalidInputError) as e:
             return _unprocessable(e)
         return Response(
             text,

@@ -1,7 +1,7 @@
 """The lab's two models with their own steppers (docs/web.md): the swinging spring (``spring``, an elastic
 rod: the state is (r, v) ∈ R³ × R³, off the sphere) and the pendulum on a string (``string``, hybrid:
 taut on the sphere or slack in free flight). Both step in the core, incrementally
-(``_core.SpringStepper``, ``_core.StringStepper``): the spring in whole steps of dt of Störmer–Verlet
+(``_SpringStepper``, ``_StringStepper``): the spring in whole steps of dt of Störmer–Verlet
 or its triple jump, the string on the grid t₀ + k·dt with its taut/slack mode carried inside the core's
 stepper, so that a live run is the same run as ``pl.simulate_spring`` / ``pl.simulate`` from the same
 start, cut into pieces. This module only holds parameters and converts states; SI units throughout.
@@ -15,11 +15,13 @@ from typing import Any
 
 import numpy as np
 
-from .. import _core
+from .._core import InvalidInputError, models
+from .._core import SpringStepper as _SpringStepper
+from .._core import StringStepper as _StringStepper
 from ..model import Pendulum, State
 from ..scenario import SPRING_ORDERS, Scenario
-from ..spring import SwingingSpring
-from ..string_pendulum import STRING_METHODS
+from ..variants.spring import SwingingSpring
+from ..variants.string_pendulum import STRING_METHODS
 
 OWN_STEPPER_MODELS = ("spring", "string")
 """Models of the registry that the lab runs with their own core steppers instead of ``pendulab.Stepper``."""
@@ -46,7 +48,7 @@ def check_method(model: str, method: str) -> None:
             "rattle4 its triple jump (order 4)",
             "string": "its taut phases need a fixed-step method that keeps TS²",
         }[model]
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"method {method!r} cannot run the {model!r} model ({what}); use one of {', '.join(allowed)}"
         )
 
@@ -67,9 +69,9 @@ class SpringPendulum:
         for name, value in (("length", self.length), ("mass", self.mass), ("stiffness", self.stiffness)):
             if not (math.isfinite(value) and value > 0):
                 unit = {"length": "m", "mass": "kg", "stiffness": "N/m"}[name]
-                raise _core.InvalidInputError(f"invalid {name} = {value!r}: a finite number > 0 ({unit})")
+                raise InvalidInputError(f"invalid {name} = {value!r}: a finite number > 0 ({unit})")
         if not math.isfinite(self.g):
-            raise _core.InvalidInputError(f"invalid g = {self.g!r}: a finite number (m/s²)")
+            raise InvalidInputError(f"invalid g = {self.g!r}: a finite number (m/s²)")
 
     @property
     def extra(self) -> dict[str, float]:
@@ -86,7 +88,7 @@ class SpringPendulum:
         xa = np.asarray(x, dtype=np.float64).reshape(3)
         va = np.asarray(v, dtype=np.float64).reshape(3)
         if not (np.all(np.isfinite(xa)) and np.all(np.isfinite(va))) or not np.any(xa):
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"the spring's state x = {xa.tolist()} m, v = {va.tolist()} m/s must be finite with x ≠ 0"
             )
         return State(xa, va)
@@ -125,9 +127,7 @@ def lab_pendulum(length: float, g: float, mass: float, model: str, **own: float)
     if model == "spring":
         unknown = set(own) - {"stiffness"}
         if unknown:
-            raise _core.InvalidInputError(
-                f"the 'spring' model has no parameter {', '.join(map(repr, unknown))}"
-            )
+            raise InvalidInputError(f"the 'spring' model has no parameter {', '.join(map(repr, unknown))}")
         return SpringPendulum(length, g, mass, float(own.get("stiffness", _spring_default())))
     if model == "string":
         return StringLabPendulum(length=length, g=g, mass=mass, model=model, **own)
@@ -135,7 +135,7 @@ def lab_pendulum(length: float, g: float, mass: float, model: str, **own: float)
 
 
 def _spring_default() -> float:
-    spec = next(m for m in _core.models() if m["name"] == "spring")
+    spec = next(m for m in models() if m["name"] == "spring")
     return float(next(p["default"] for p in spec["params"] if p["name"] == "stiffness"))
 
 
@@ -158,14 +158,14 @@ def scenario_pendulum(sc: Scenario) -> LabPendulum:
 
 
 class SpringStepper:
-    """The swinging spring stepped in the core (``_core.SpringStepper``): ``rattle`` runs Störmer–Verlet
+    """The swinging spring stepped in the core (``_SpringStepper``): ``rattle`` runs Störmer–Verlet
     (order 2), ``rattle4`` its triple jump (order 4), as in scenario files; whole steps of dt."""
 
     def __init__(self, pendulum: SpringPendulum, state: State, method: str, dt: float, t0: float) -> None:
         check_method("spring", method)
         sp = pendulum.spring
         self.pendulum = pendulum
-        self._core = _core.SpringStepper(
+        self._core = _SpringStepper(
             sp.k_over_m,
             sp.rest_length,
             sp.g,
@@ -195,14 +195,14 @@ class SpringStepper:
 
 
 class StringStepper:
-    """The string pendulum stepped in the core (``_core.StringStepper``) on the grid t₀ + k·dt; its
+    """The string pendulum stepped in the core (``_StringStepper``) on the grid t₀ + k·dt; its
     taut/slack mode lives in the core's stepper. ``take_events()``: the leaves and snaps since the last
     call."""
 
     def __init__(self, pendulum: Pendulum, state: State, method: str, dt: float, t0: float) -> None:
         check_method("string", method)
         self.pendulum = pendulum
-        self._core = _core.StringStepper(
+        self._core = _StringStepper(
             *pendulum._core_args(),
             float(pendulum.extra.get("restitution", 0.0)),
             np.ascontiguousarray(state.x, dtype=np.float64),

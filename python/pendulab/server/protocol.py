@@ -22,15 +22,18 @@ from __future__ import annotations
 import json
 import math
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
-from .. import _core
+from .._core import models
 from ..model import State
-from ..simulate import method_names
+from ..simulation import method_names
 from .live_models import OWN_STEPPER_MODELS, LabPendulum
+
+if TYPE_CHECKING:
+    from .._core import ModelInfo, ParamSpec
 
 _LAYOUT = json.loads((Path(__file__).with_name("frame.json")).read_text(encoding="utf-8"))
 
@@ -74,19 +77,19 @@ def decode_records(data: bytes) -> np.ndarray:
 COMMON_PARAMS = ("length", "mass", "g")
 """The parameters every model shares (l [m], m [kg], g [m/s²]); the rest are a model's own."""
 
-MODEL_SPECS: dict[str, _core.ModelInfo] = {
-    m["name"]: m for m in _core.models() if m["interactive"] or m["name"] in OWN_STEPPER_MODELS
+MODEL_SPECS: dict[str, ModelInfo] = {
+    m["name"]: m for m in models() if m["interactive"] or m["name"] in OWN_STEPPER_MODELS
 }
 """The core's models that run in the lab, by name: parameters with units, defaults, limits. Those of
 ``pendulab.models()`` marked ``interactive`` (the incremental ``pendulab.Stepper``), and the swinging
 spring and the string with their own core steppers (:mod:`pendulab.server.live_models`)."""
 
-OFFLINE_MODELS = tuple(m["name"] for m in _core.models() if m["name"] not in MODEL_SPECS)
+OFFLINE_MODELS = tuple(m["name"] for m in models() if m["name"] not in MODEL_SPECS)
 """Models of the registry that only run with ``pendulab run`` / ``pl.simulate`` (a sampled pivot path:
 it needs arrays), not in the lab."""
 
 
-def own_params(model: str) -> list[_core.ParamSpec]:
+def own_params(model: str) -> list[ParamSpec]:
     """The parameters of ``model`` beyond length, mass and g, in the registry's order."""
     return [p for p in MODEL_SPECS[model]["params"] if p["name"] not in COMMON_PARAMS]
 

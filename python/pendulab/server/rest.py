@@ -13,10 +13,10 @@ from typing import Any
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
-from .. import _core
+from .._core import InvalidInputError
 from ..model import Pendulum
 from ..scenario import Scenario
-from ..simulate import method_names
+from ..simulation import method_names
 from .protocol import ExactRequest, Vec3, _lim, finite_or_none
 
 
@@ -25,7 +25,7 @@ def exact_quantities(req: ExactRequest) -> dict[str, Any]:
 
     Infinite or undefined values (the separatrix's period, the advance of planar motion) are null.
     """
-    from ..exact import exact
+    from ..theory.exact import exact
 
     p = Pendulum(length=req.length, g=req.g, mass=req.mass)
     state = req.to_state(p)
@@ -35,7 +35,7 @@ def exact_quantities(req: ExactRequest) -> dict[str, Any]:
         ph = sol.phases()
         phases = {"total": ph.total, "dynamic": ph.dynamic, "geometric": ph.geometric}
         phases_note = None
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         phases, phases_note = None, " ".join(str(e).split())
     return {
         "kind": sol.kind,
@@ -103,9 +103,7 @@ def scenario_toml(req: ScenarioRequest) -> str:
     """The scenario as a TOML file that ``pendulab run`` accepts (and that loads back to the same
     pendulum, start and method). Raises :class:`pendulab.ScenarioError` naming what is wrong."""
     if req.method not in method_names():
-        raise _core.InvalidInputError(
-            f"unknown method {req.method!r}; available: {', '.join(method_names())}"
-        )
+        raise InvalidInputError(f"unknown method {req.method!r}; available: {', '.join(method_names())}")
     pendulum: dict[str, Any] = {"length": req.length, "mass": req.mass, "g": req.g}
     if req.model != "ideal" or req.params:
         pendulum |= {"model": req.model, **req.params}

@@ -11,7 +11,7 @@ from pathlib import Path
 
 from ..model import State
 from ..scenario import Scenario, ScenarioError, load_scenario
-from ..simulate import DEFAULTS
+from ..simulation import DEFAULTS
 from .live_models import LabPendulum, scenario_pendulum
 from .protocol import MODEL_SPECS
 

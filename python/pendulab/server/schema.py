@@ -10,11 +10,14 @@ core's limits (``min``/``max``, null for none). Units SI throughout.
 from __future__ import annotations
 
 import math
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from .. import _core
-from ..simulate import methods
+from .._core import __version__
+from ..simulation import methods
 from .protocol import COMMAND_TYPES, FRAME_FIELDS, FRAME_UNITS, LIMITS, MODEL_SPECS, RECORD_BYTES, own_params
+
+if TYPE_CHECKING:
+    from .._core import ParamSpec
 
 TICK_HZ = 60.0
 """Frames per second sent to each client while running."""
@@ -51,7 +54,7 @@ def _finite(v: float) -> float | None:
     return float(v) if math.isfinite(v) else None
 
 
-def _slider(p: _core.ParamSpec) -> tuple[float, float, float]:
+def _slider(p: ParamSpec) -> tuple[float, float, float]:
     if p["name"] in SLIDERS:
         return SLIDERS[p["name"]]
     d = float(p["default"])
@@ -61,7 +64,7 @@ def _slider(p: _core.ParamSpec) -> tuple[float, float, float]:
     return lo, hi, (hi - lo) / 1000
 
 
-def param_schema(p: _core.ParamSpec) -> dict[str, Any]:
+def param_schema(p: ParamSpec) -> dict[str, Any]:
     """One parameter for the page: name, unit (SI), description, allowed (in words), default, the hard
     limits min/max (null: none) and the slider's ui_min, ui_max, step."""
     if p["name"] in LIMITS:
@@ -94,7 +97,7 @@ def schema() -> dict[str, Any]:
         "step_n": {"unit": "steps", "description": "steps taken by one 'step' command", **LIMITS["step_n"]},
     }
     return {
-        "version": _core.__version__,
+        "version": __version__,
         "model": {
             "name": "ideal",
             "summary": ideal["summary"],

@@ -24,10 +24,10 @@ from typing import Any
 
 import numpy as np
 
-from .. import _core
+from .._core import IntegrationError, InvalidInputError
 from ..model import Pendulum, State
 from ..scenario import ScenarioError
-from ..simulate import Stepper, methods
+from ..simulation import Stepper, methods
 from .live_models import (
     DEFAULT_METHOD,
     OWN_STEPPER_MODELS,
@@ -249,9 +249,9 @@ class Session:
         """
         try:
             return self._apply(cmd)
-        except (_core.InvalidInputError, ScenarioError, tomllib.TOMLDecodeError, OSError) as e:
+        except (InvalidInputError, ScenarioError, tomllib.TOMLDecodeError, OSError) as e:
             raise CommandError(" ".join(str(e).split()), command=cmd.type) from None
-        except _core.IntegrationError as e:
+        except IntegrationError as e:
             self.paused = True
             raise CommandError(f"integration stopped: {e}; paused", command=cmd.type) from None
 
@@ -350,7 +350,7 @@ class Session:
             bounds = [round(n * (i + 1) / n_sub) for i in range(n_sub)]
             steps = [b - a for a, b in zip([0, *bounds[:-1]], bounds, strict=True)]
             return self._sample(lambda k: self.stepper.step(steps[k]), n_sub)
-        except _core.IntegrationError as e:
+        except IntegrationError as e:
             self.paused = True
             raise CommandError(f"integration stopped at t = {self.stepper.t:g} s: {e}; paused") from None
 

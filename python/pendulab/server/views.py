@@ -18,10 +18,10 @@ from typing import Any
 import numpy as np
 from pydantic import Field
 
-from ..em_map import conical_boundary
-from ..exact import exact
 from ..model import Pendulum
-from ..reduce import invariants, reduce
+from ..theory.em_map import conical_boundary
+from ..theory.exact import exact
+from ..theory.reduce import invariants, reduce
 from ..trajectory import Trajectory
 from .protocol import ExactRequest
 

@@ -14,7 +14,7 @@ import uuid
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from . import _core
+from .._core import InvalidInputError
 
 CONNECT_TIMEOUT = 5.0
 """Seconds to wait for a Dask scheduler before giving up."""
@@ -111,7 +111,7 @@ def connect(address: str, timeout: float | None = None) -> Any:
     import distributed
 
     if "://" not in address:
-        raise _core.InvalidInputError(f"scheduler {address!r}: give an address such as tcp://HOST:8786")
+        raise InvalidInputError(f"scheduler {address!r}: give an address such as tcp://HOST:8786")
     wait = CONNECT_TIMEOUT if timeout is None else timeout
     try:
         return distributed.Client(address, timeout=f"{wait}s")

@@ -35,8 +35,8 @@ from typing import Any, Literal
 
 import numpy as np
 
-from . import _core
-from .model import FloatArray
+from .._core import InvalidInputError
+from ..model import FloatArray
 
 AXES: dict[str, str] = {
     "theta0": "rad",
@@ -61,8 +61,8 @@ MAX_POINTS = 2**40
 """Most points a design may have (far beyond what memory or disk allow; those are checked per sweep)."""
 
 
-def _bad(message: str) -> _core.InvalidInputError:
-    return _core.InvalidInputError(message)
+def _bad(message: str) -> InvalidInputError:
+    return InvalidInputError(message)
 
 
 def check_axis_name(name: Any, where: str = "axis") -> str:
@@ -245,6 +245,6 @@ def as_design(design: Any) -> Design:
     if isinstance(design, Mapping):
         return grid(design)
     raise _bad(
-        f"a sweep needs a grid (dict of axis name -> 1-D array) or a design from pendulab.sweep_design, "
+        f"a sweep needs a grid (dict of axis name -> 1-D array) or a design from pendulab.sweeps.design, "
         f"got {type(design).__name__}"
     )

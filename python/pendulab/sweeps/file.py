@@ -45,12 +45,13 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 from pydantic_core import ErrorDetails
 
-from . import _core, sweep_design
-from .model import Pendulum
-from .scenario import ScenarioError
-from .scenario_schema import _show  # a value as it looks in TOML, as scenario errors show it
-from .sweep import QUANTITIES, make_spec
-from .sweep_design import Design
+from .._core import InvalidInputError
+from ..model import Pendulum
+from ..scenario import ScenarioError
+from ..scenario.schema import _show  # a value as it looks in TOML, as scenario errors show it
+from . import design as sweep_design
+from .compute import QUANTITIES, make_spec
+from .design import Design
 
 MAX_AXIS_VALUES = 10_000_000
 
@@ -173,22 +174,22 @@ def _axis_values(name: str, spec: Any) -> np.ndarray:
     if isinstance(spec, dict):
         extra = set(spec) - {"start", "stop", "num"}
         if extra or not {"start", "stop", "num"} <= set(spec):
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"[grid] {name} = {_show(spec)}: a table needs exactly start, stop (axis unit), num"
             )
         start, stop, num = spec["start"], spec["stop"], spec["num"]
         if isinstance(num, bool) or not isinstance(num, int) or not 1 <= num <= MAX_AXIS_VALUES:
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"[grid] {name}.num = {num!r}: must be an integer from 1 to {MAX_AXIS_VALUES}"
             )
         if not all(isinstance(v, int | float) and not isinstance(v, bool) for v in (start, stop)):
-            raise _core.InvalidInputError(f"[grid] {name}: start and stop must be numbers, got {_show(spec)}")
+            raise InvalidInputError(f"[grid] {name}: start and stop must be numbers, got {_show(spec)}")
         return np.linspace(float(start), float(stop), num)
     if isinstance(spec, list):
         if not all(isinstance(v, int | float) and not isinstance(v, bool) for v in spec):
-            raise _core.InvalidInputError(f"[grid] {name} = {_show(spec)}: the values must be numbers")
+            raise InvalidInputError(f"[grid] {name} = {_show(spec)}: the values must be numbers")
         return np.asarray(spec, dtype=np.float64)
-    raise _core.InvalidInputError(
+    raise InvalidInputError(
         f"[grid] {name} = {_show(spec)}: give a list of values or {{start, stop, num}} "
         "(a single fixed value goes in [fixed])"
     )
@@ -208,7 +209,7 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
             assert spec.random is not None
             r = spec.random
             design = sweep_design.random(r.n, r.ranges, r.seed, r.method)
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         section = "[grid]" if spec.grid is not None else "[random]"
         text = str(e)
         raise SweepFileError(source, text if text.startswith(section) else f"{section} {text}") from None
@@ -216,7 +217,7 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
     try:
         extra = {"damping": p.damping} if p.damping != 0.0 else {}
         pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, **extra)
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         raise SweepFileError(source, f"[pendulum] {e}") from None
     sim = spec.simulation
     try:
@@ -229,7 +230,7 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
             None if sim is None else sim.dt,
             None if sim is None else sim.settle_angle,
         )
-    except _core.InvalidInputError as e:
+    except InvalidInputError as e:
         text = str(e).replace("give t_end [s] (and dt [s])", "add [simulation] t_end (in s) and dt (in s)")
         if text.startswith(("t_end", "dt")):
             text = f"[simulation] {text}"

@@ -28,9 +28,10 @@ from typing import Any
 
 import numpy as np
 
-from . import _core, io
-from .model import FloatArray
-from .sweep_design import AXES, Design
+from .. import io
+from .._core import InvalidInputError, __version__
+from ..model import FloatArray
+from .design import AXES, Design
 
 MANIFEST = "_manifest.json"
 FORMAT = "pendulab-sweep"
@@ -49,8 +50,8 @@ def chunk_name(index: int) -> str:
     return f"chunk-{index:06d}.parquet"
 
 
-def _bad(message: str) -> _core.InvalidInputError:
-    return _core.InvalidInputError(message)
+def _bad(message: str) -> InvalidInputError:
+    return InvalidInputError(message)
 
 
 def _gib(n: float) -> str:
@@ -296,7 +297,7 @@ class OutputDir:
         manifest = {
             "format": FORMAT,
             "version": VERSION,
-            "software": f"pendulab {_core.__version__}",
+            "software": f"pendulab {__version__}",
             "created": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
             **meta,
             "n_points": n,

@@ -20,9 +20,9 @@ from typing import Literal
 
 import numpy as np
 
-from . import _core
-from .model import FloatArray
-from .trajectory import Trajectory
+from .._core import InvalidInputError
+from ..model import FloatArray
+from ..trajectory import Trajectory
 
 REFERENCES = ("mid", "lowest")
 
@@ -96,24 +96,22 @@ def measured_azimuth_advance(
     z-oscillation, and at least two events; otherwise :class:`pendulab.InvalidInputError`.
     """
     if reference not in REFERENCES:
-        raise _core.InvalidInputError(
-            f"reference = {reference!r}; allowed: {', '.join(map(repr, REFERENCES))}"
-        )
+        raise InvalidInputError(f"reference = {reference!r}; allowed: {', '.join(map(repr, REFERENCES))}")
     p = traj.pendulum
     t, x, v = traj.t, traj.x, traj.v
     if len(t) < 3 or np.any(np.diff(t) <= 0):
-        raise _core.InvalidInputError("the trajectory needs at least 3 samples at increasing times")
+        raise InvalidInputError("the trajectory needs at least 3 samples at increasing times")
     length, g = p.length, p.g
     j3 = float(np.mean(traj.j3))
     if abs(j3) <= 1e-12 * p.mass * length * max(float(np.max(np.linalg.norm(v, axis=1))), 1e-300):
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             "J3 = 0: a planar orbit passes through the pole, where the azimuth jumps by pi; "
             "the azimuthal advance per z-period is defined only for J3 != 0"
         )
     mirror = -1.0 if g < 0 else 1.0
     z, w = mirror * x[:, 2], mirror * v[:, 2]  # height and its rate in the frame where gravity pulls down
     if np.ptp(z) <= 1e-12 * length:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"the height stays constant to {np.ptp(z):.3g} m (a conical orbit): it has no z-period "
             "to measure the advance over; use pl.exact(...).azimuth_advance"
         )
@@ -124,7 +122,7 @@ def measured_azimuth_advance(
         y, dy = z - 0.5 * (z.min() + z.max()), w
     idx = np.nonzero((y[:-1] < 0) & (y[1:] >= 0))[0]
     if len(idx) < 2:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"found {len(idx)} event(s) ({reference} reference) between t = {t[0]:g} and {t[-1]:g} s; "
             "the trajectory must span more than one z-period"
         )

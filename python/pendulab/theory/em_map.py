@@ -25,8 +25,10 @@ from typing import Any
 
 import numpy as np
 
-from . import _core, io
-from .model import FloatArray, Pendulum
+from .. import io
+from .._core import InvalidInputError, conical_curve, rotation_numbers
+from .._core import monodromy as _monodromy
+from ..model import FloatArray, Pendulum
 
 MAX_GRID_POINTS = 4_000_000
 """Largest number of grid points :func:`em_map` evaluates (~10 s)."""
@@ -42,9 +44,9 @@ def _check_range(name: str, r: Any, unit: str) -> tuple[float, float]:
     try:
         lo, hi = (float(v) for v in r)
     except (TypeError, ValueError):
-        raise _core.InvalidInputError(f"{name} = {r!r} must be two numbers (min, max) in {unit}") from None
+        raise InvalidInputError(f"{name} = {r!r} must be two numbers (min, max) in {unit}") from None
     if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
-        raise _core.InvalidInputError(f"{name} = ({lo!r}, {hi!r}) must be finite with min < max, in {unit}")
+        raise InvalidInputError(f"{name} = ({lo!r}, {hi!r}) must be finite with min < max, in {unit}")
     return lo, hi
 
 
@@ -52,12 +54,12 @@ def _check_grid(grid: Any) -> tuple[int, int]:
     try:
         nj, ne = grid
     except (TypeError, ValueError):
-        raise _core.InvalidInputError(f"grid = {grid!r} must be two integers (n_J3, n_E)") from None
+        raise InvalidInputError(f"grid = {grid!r} must be two integers (n_J3, n_E)") from None
     for name, n in (("n_J3", nj), ("n_E", ne)):
         if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 2:
-            raise _core.InvalidInputError(f"grid {name} = {n!r} must be an integer >= 2")
+            raise InvalidInputError(f"grid {name} = {n!r} must be an integer >= 2")
     if nj * ne > MAX_GRID_POINTS:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"grid = {nj}x{ne} = {nj * ne} points exceeds the limit of {MAX_GRID_POINTS}; use a coarser grid"
         )
     return int(nj), int(ne)
@@ -98,16 +100,16 @@ class EMMap:
         """The change of W carried once around the top on the circle (j, ε) = (r sin α, 1 + r cos α),
         α from 0 to 2π in ``n`` steps, r = ``radius`` in the dimensionless units (of m l² ω₀ in J₃, of
         m|g|l in E): ±1 to rounding (T-6.4). A circle that leaves the image is an error."""
-        return float(_core.monodromy(float(radius), int(n)))
+        return float(_monodromy(float(radius), int(n)))
 
     def loop(self, radius: float = 0.5, n: int = 720) -> tuple[FloatArray, FloatArray, FloatArray]:
         """The monodromy loop (see :meth:`monodromy`) as (J₃ [kg m²/s], E [J], W continued), starting just
         right of J₃ = 0 above the top; W(end) − W(start) = :meth:`monodromy`."""
         alpha = math.pi / n + 2.0 * math.pi * np.arange(n + 1) / n
         j, eps = radius * np.sin(alpha), 1.0 + radius * np.cos(alpha)
-        w = _core.rotation_numbers(np.ascontiguousarray(eps), np.ascontiguousarray(j))
+        w = rotation_numbers(np.ascontiguousarray(eps), np.ascontiguousarray(j))
         if np.any(np.isnan(w)):
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"the loop of radius {radius!r} around the top leaves the image of the energy-momentum map"
             )
         return j * self.momentum_unit, eps * self.energy_unit, _continued(w)
@@ -157,7 +159,7 @@ class EMMap:
             with io.atomic_path(target) as tmp:
                 np.savetxt(tmp, data, delimiter=",", header=header, comments="", fmt="%.17g")
         else:
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"unknown suffix {suffix!r} in {str(path)!r} for the energy-momentum map data; "
                 "use .nc or .csv (or .png with pendulab.plot.plot_em_map)"
             )
@@ -170,7 +172,7 @@ def conical_boundary(pendulum: Pendulum, n: int = 801) -> tuple[FloatArray, Floa
     eu, mu = _units(pendulum)
     s = np.linspace(0.0, 1.0, n)[1:-1]
     u = -(np.cos(0.5 * math.pi * s) ** 2)  # from near −1 (the vertex) to near 0 (far out)
-    j, eps = _core.conical_curve(np.ascontiguousarray(u))
+    j, eps = conical_curve(np.ascontiguousarray(u))
     jj = np.concatenate([-j[::-1], [0.0], j])
     ee = np.concatenate([eps[::-1], [-1.0], eps])
     return jj * mu, ee * eu
@@ -178,9 +180,9 @@ def conical_boundary(pendulum: Pendulum, n: int = 801) -> tuple[FloatArray, Floa
 
 def _units(pendulum: Pendulum) -> tuple[float, float]:
     if not isinstance(pendulum, Pendulum):
-        raise _core.InvalidInputError(f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}")
+        raise InvalidInputError(f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}")
     if pendulum.g == 0.0:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             "the energy-momentum map needs gravity: g = 0 m/s^2 has no potential (every orbit is a great "
             "circle); give g > 0 (or g < 0, the mirror image)"
         )
@@ -200,7 +202,7 @@ def em_map(
     J₃ = 0 are put on it. g < 0 is mapped as its mirror image (module docstring); g = 0, models other
     than the ideal pendulum, bad ranges and grids raise :class:`pendulab.InvalidInputError`."""
     if not pendulum.is_ideal:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"the energy–momentum map is that of the ideal pendulum, not the {pendulum.model!r} model"
         )
     eu, mu = _units(pendulum)
@@ -219,7 +221,7 @@ def em_map(
     j3[np.abs(j3) <= 1e-12 * (jr[1] - jr[0])] = 0.0  # rounding of linspace: put such points on J₃ = 0
     e = np.linspace(er[0], er[1], ne)
     ee, jj = np.meshgrid(e / eu, j3 / mu, indexing="ij")
-    w = _core.rotation_numbers(np.ascontiguousarray(ee.ravel()), np.ascontiguousarray(jj.ravel()))
+    w = rotation_numbers(np.ascontiguousarray(ee.ravel()), np.ascontiguousarray(jj.ravel()))
     return EMMap(
         pendulum=pendulum,
         J3=j3,

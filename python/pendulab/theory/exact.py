@@ -28,9 +28,10 @@ from typing import Any, overload
 
 import numpy as np
 
-from . import _core
-from .model import FloatArray, Pendulum, State, _frozen
-from .trajectory import Trajectory
+from .._core import ExactSolution as _ExactSolution
+from .._core import InvalidInputError
+from ..model import FloatArray, Pendulum, State, _frozen
+from ..trajectory import Trajectory
 
 KINDS = ("generic", "conical", "planar", "planar_rotating", "separatrix", "rest", "great_circle")
 """The kinds of motion (T-4.6), as ``ExactSolution.kind`` names them."""
@@ -68,7 +69,7 @@ def _times(t: Any) -> tuple[FloatArray, bool]:
     arr = np.asarray(t, dtype=np.float64)
     scalar = arr.ndim == 0
     if scalar and not math.isfinite(float(arr)):
-        raise _core.InvalidInputError(f"t = {float(arr)!r} is not a finite time (s)")
+        raise InvalidInputError(f"t = {float(arr)!r} is not a finite time (s)")
     return np.ascontiguousarray(arr.reshape(-1)), scalar
 
 
@@ -82,22 +83,20 @@ class ExactSolution:
 
     def __init__(self, pendulum: Pendulum, state: State) -> None:
         if not isinstance(pendulum, Pendulum):
-            raise _core.InvalidInputError(
-                f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}"
-            )
+            raise InvalidInputError(f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}")
         if not isinstance(state, State):
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"state must be a pendulab.State (from Pendulum.state or state_from_angles), "
                 f"got {type(state).__name__}"
             )
         if not pendulum.is_ideal:
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"the exact solution exists only for the ideal pendulum, not the {pendulum.model!r} model "
                 "(damping, forcing and rotating frames break integrability); simulate it instead"
             )
         self._pendulum = pendulum
         self._start = state
-        self._core = _core.ExactSolution(
+        self._core = _ExactSolution(
             *pendulum._core_args(), np.ascontiguousarray(state.x), np.ascontiguousarray(state.v)
         )
 
@@ -165,12 +164,12 @@ class ExactSolution:
         """
         p = self._core.phases()
         if p is None and self._pendulum.g == 0.0:
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"phases need gravity: with g = 0 m/s^2 the orbit is a {self.kind!r} (uniform motion on a "
                 "great circle), with no oscillation of z about a potential minimum to split the advance over"
             )
         if p is None:
-            raise _core.InvalidInputError(
+            raise InvalidInputError(
                 f"phases are defined for orbits with J3 != 0 (kinds {', '.join(_PHASE_KINDS)}); "
                 f"this orbit is {self.kind!r} (J3 = {self._pendulum.j3(self._start):.6g} kg m^2/s, "
                 f"g = {self._pendulum.g:g} m/s^2)"
@@ -228,9 +227,7 @@ class ExactSolution:
         ``"exact"``, so its diagnostics, summary and file writers apply."""
         times = np.asarray(t, dtype=np.float64)
         if times.ndim != 1 or times.size == 0:
-            raise _core.InvalidInputError(
-                f"t must be a non-empty 1-D array of times (s), got shape {times.shape}"
-            )
+            raise InvalidInputError(f"t must be a non-empty 1-D array of times (s), got shape {times.shape}")
         x, v = self.state(times)
         return Trajectory(
             self._pendulum,

@@ -31,9 +31,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _core
-from .model import FloatArray, Pendulum, State
-from .trajectory import Trajectory
+from .._core import InvalidInputError
+from .._core import invariants as _invariants
+from .._core import reduced_flow as _reduced_flow
+from .._core import relation_residuals as _relation_residuals
+from ..model import FloatArray, Pendulum, State
+from ..trajectory import Trajectory
 
 SIGMA_UNITS = ("1", "1/s", "1/s^2", "1", "1/s", "1/s")
 """Units of σ₁ … σ₆ (unit-length variables, time in s)."""
@@ -78,19 +81,19 @@ def invariants(pendulum: Pendulum, x: object, v: object) -> FloatArray:
     shape (N, 3) (or (3,)): an array of shape (N, 6)."""
     xa = np.ascontiguousarray(np.atleast_2d(np.asarray(x, dtype=np.float64)))
     va = np.ascontiguousarray(np.atleast_2d(np.asarray(v, dtype=np.float64)))
-    return _core.invariants(pendulum.length, xa, va)
+    return _invariants(pendulum.length, xa, va)
 
 
 def reduce(traj: Trajectory) -> Reduced:
     """σ₁ … σ₆, the relation residuals, the Casimir and H along a trajectory (T-3.1 … T-3.3)."""
     if not isinstance(traj, Trajectory):
-        raise _core.InvalidInputError(f"reduce needs a pendulab.Trajectory, got {type(traj).__name__}")
+        raise InvalidInputError(f"reduce needs a pendulab.Trajectory, got {type(traj).__name__}")
     p = traj.pendulum
     sigma = invariants(p, traj.x, traj.v)
     s1, s2, s3, s6 = sigma[:, 0], sigma[:, 1], sigma[:, 2], sigma[:, 5]
     casimir = s3 * (1.0 - s1 * s1) - s2 * s2 - s6 * s6
     hamiltonian = 0.5 * s3 + (p.g / p.length) * s1
-    residuals = _core.relation_residuals(np.ascontiguousarray(sigma))
+    residuals = _relation_residuals(np.ascontiguousarray(sigma))
     return Reduced(p, traj.t.copy(), sigma, residuals, casimir, hamiltonian)
 
 
@@ -106,22 +109,22 @@ def reduced_flow(pendulum: Pendulum, state: State, t_end: float, dt: float = 1e-
     """
     t_end, dt = float(t_end), float(dt)
     if not (math.isfinite(t_end) and t_end > 0.0):
-        raise _core.InvalidInputError(f"t_end = {t_end!r} must be a finite time > 0 s")
+        raise InvalidInputError(f"t_end = {t_end!r} must be a finite time > 0 s")
     if not pendulum.is_ideal:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"the reduced flow (T-3.4) is that of the ideal pendulum, not the {pendulum.model!r} model"
         )
     if not (math.isfinite(dt) and dt > 0.0):
-        raise _core.InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
+        raise InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
     n = math.ceil(t_end / dt * (1.0 - 1e-12))
     if n > MAX_REDUCED_STEPS:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"t_end / dt = {t_end / dt:.3g} steps exceeds the limit of {MAX_REDUCED_STEPS} "
             "(every step is kept); use a larger dt or a shorter t_end"
         )
     n = max(n, 1)
     h = t_end / n
-    x, v = _core.reduced_flow(
+    x, v = _reduced_flow(
         *pendulum._core_args(), np.ascontiguousarray(state.x), np.ascontiguousarray(state.v), h, n
     )
     t = h * np.arange(n + 1, dtype=np.float64)

@@ -16,8 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from . import _core
-from .model import FloatArray, Pendulum, State, models
+from .._core import InvalidInputError, slewing_linear
+from ..model import FloatArray, Pendulum, State, models
 
 
 @dataclass(frozen=True)
@@ -37,7 +37,7 @@ class SlewingSway:
 
 def _slewing_params(pendulum: Pendulum) -> dict[str, float]:
     if pendulum.model != "slewing":
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             "slewing_sway needs a Pendulum(model='slewing', radius=..., rate=...), "
             f"not model {pendulum.model!r}"
         )
@@ -63,7 +63,7 @@ def slewing_sway(pendulum: Pendulum, t: Any, state: State | None = None) -> Slew
     w = par["rate"]
     # boom frame at t = 0 is the inertial one; rates in the rotating frame: ż = (vx + i vy) − iω z
     start = [float(x0[0]), float(x0[1]), float(v0[0] + w * x0[1]), float(v0[1] - w * x0[0])]
-    out = _core.slewing_linear(pendulum.length, pendulum.g, par["radius"], w, par["damping"], start, ts)
+    out = slewing_linear(pendulum.length, pendulum.g, par["radius"], w, par["damping"], start, ts)
     return SlewingSway(
         ts,
         out["x"],

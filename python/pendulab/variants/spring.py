@@ -16,8 +16,9 @@ from typing import Any
 
 import numpy as np
 
-from . import _core, io
-from .model import FloatArray
+from .. import io
+from .._core import InvalidInputError, spring_simulate
+from ..model import FloatArray
 
 
 @dataclass(frozen=True)
@@ -163,9 +164,9 @@ def simulate_spring(
     """Integrates the swinging spring from x0 [m], v0 [m/s] to ``t_end`` [s] with step ``dt`` [s]
     (order 2: Störmer–Verlet, order 4: triple jump), keeping every ``save_every``-th step."""
     if not (math.isfinite(t_end) and t_end > 0 and math.isfinite(dt) and dt > 0):
-        raise _core.InvalidInputError(f"t_end = {t_end!r} s and dt = {dt!r} s must be finite and > 0")
+        raise InvalidInputError(f"t_end = {t_end!r} s and dt = {dt!r} s must be finite and > 0")
     n = max(1, round(t_end / dt))
-    out = _core.spring_simulate(
+    out = spring_simulate(
         float(spring.k_over_m),
         float(spring.rest_length),
         float(spring.g),

@@ -5,11 +5,11 @@ bob flies freely on the exact parabola x_e + v_e τ − ½ g τ² e₃ until |x|
 snaps taut: the outward radial velocity u is removed (``restitution`` e = 0, inelastic, the default;
 ½ m |u|² is lost) or reflected (e = 1, elastic, E kept), in general v ← v − (1 + e)u.
 
-The run is hybrid and done in the core (``_core.StringRunner``, a ``StringStepper`` run to t_end),
+The run is hybrid and done in the core (``StringRunner``, a ``StringStepper`` run to t_end),
 driven in chunks of about 0.1 s of work with the GIL released, as :func:`pendulab.simulate` does for
 every model: a tqdm progress bar for long runs, and Ctrl-C stops after the current chunk and returns
 what was computed (``Trajectory.interrupted``). Chunks end on grid points and the run goes on as if
-it had not stopped: the samples are those of the one-call ``_core.string_simulate`` bit for bit. The
+it had not stopped: the samples are those of the one-call ``string_simulate`` bit for bit. The
 leave and snap events are located to round-off (bisection of the step length on T, closed form or
 bisection of |x|² − l² on the parabola). Units: SI (m, kg, s, J).
 """
@@ -20,9 +20,10 @@ from typing import Any
 
 import numpy as np
 
-from . import _core
-from .model import Pendulum, State
-from .trajectory import Trajectory
+from .._chunks import _PROGRESS_AFTER_STEPS, run_in_chunks
+from .._core import InvalidInputError, StringRunner
+from ..model import Pendulum, State
+from ..trajectory import Trajectory
 
 STRING_METHODS = ("rattle", "rattle4", "rattle6", "rattle8", "rkmk4")
 """Methods for the taut phases: fixed step and keeping TS² (the leave is found by shortening a step)."""
@@ -32,13 +33,13 @@ def check_string_settings(method: str, conserve: bool = False) -> None:
     """Refuses what the hybrid string run cannot do, naming the alternative (save times are checked
     by the core when the run is set up)."""
     if method not in STRING_METHODS:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             f"method {method!r} cannot integrate the 'string' model: its taut phases need a fixed-step "
             f"method that keeps TS² (the leave is found by shortening a step); use one of "
             f"{', '.join(STRING_METHODS)}"
         )
     if conserve:
-        raise _core.InvalidInputError(
+        raise InvalidInputError(
             "conserve=True is for dop853; the 'string' model's taut phases use the RATTLE family or rkmk4"
         )
 
@@ -74,18 +75,17 @@ def simulate_string(
     to t_end, so ``Trajectory.events`` lists every event. ``Trajectory.taut`` flags the samples.
     ``progress``: a progress bar (default: only for runs of more than 5·10⁶ steps); Ctrl-C returns
     the samples computed so far with ``Trajectory.interrupted`` True and a RuntimeWarning."""
-    from .simulate import _PROGRESS_AFTER_STEPS, run_in_chunks
 
     check_string_settings(method)
     if save_every is not None and save_at is not None:
-        raise _core.InvalidInputError("give either save_every or save_at, not both")
+        raise InvalidInputError("give either save_every or save_at, not both")
     if save_every is not None and (
         isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1
     ):
-        raise _core.InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+        raise InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
     dt = 1e-3 if dt is None else float(dt)
-    runner = _core.StringRunner(
+    runner = StringRunner(
         *pendulum._core_args(),
         float(pendulum.extra.get("restitution", 0.0)),
         np.ascontiguousarray(state.x),

@@ -1,0 +1,102 @@
+"""What every ``pendulab`` command shares: the typer ``app``, the exit codes, and the one-line error
+reporting (``error: …`` on stderr, exit code 2 for a user error, 130 for Ctrl-C).
+
+Command modules (``run``, ``exact``, ``sweep``, ``serve``, …) import ``app`` and these helpers from
+here and register their commands on it; :mod:`pendulab.cli` imports each command module once.
+Units are SI throughout.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Annotated, NoReturn
+
+import typer
+
+from .. import io
+from .._core import IntegrationError, InvalidInputError, __version__
+from ..scenario import ScenarioError
+
+EXIT_USER_ERROR = 2
+EXIT_INTERRUPTED = 130
+
+_USER_ERRORS = (ScenarioError, InvalidInputError, IntegrationError, OSError, ImportError)
+
+app = typer.Typer(
+    name="pendulab",
+    help="Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up.",
+    epilog="Scenario files: docs/scenarios.md. This command: docs/cli.md. "
+    "Exit codes: 0 ok, 2 user error, 130 interrupted (Ctrl-C).",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+
+def _say(message: str, *, err: bool = False) -> None:
+    typer.echo(message, err=err)
+
+
+def _fail(message: str, code: int = EXIT_USER_ERROR) -> NoReturn:
+    _say(f"error: {message}", err=True)
+    raise typer.Exit(code)
+
+
+def _describe(e: BaseException) -> str:
+    """One line for a user error (no traceback)."""
+    if isinstance(e, OSError) and e.strerror:
+        where = e.filename if e.filename is not None else ""
+        return f"{where}: {e.strerror}" if where else e.strerror
+    return " ".join(str(e).split()) or type(e).__name__
+
+
+@contextlib.contextmanager
+def _user_errors() -> Iterator[None]:
+    """Turns user errors into ``error: …`` and exit code 2, Ctrl-C into exit code 130."""
+    try:
+        yield
+    except _USER_ERRORS as e:
+        _fail(_describe(e))
+    except KeyboardInterrupt:
+        _fail("interrupted (Ctrl-C)", EXIT_INTERRUPTED)
+
+
+def _version(value: bool) -> None:
+    if value:
+        _say(f"pendulab {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: Annotated[
+        bool,
+        typer.Option("--version", help="Print the version and exit.", is_eager=True, callback=_version),
+    ] = False,
+) -> None:
+    """Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up."""
+
+
+def _check_output(out: Path) -> None:
+    """Everything about --out that can be checked before the run: suffix, writer, directory."""
+    try:
+        fmt = io.format_of(out)
+    except ValueError as e:
+        _fail(str(e))
+    if fmt == "parquet":
+        io._require("pyarrow")
+    elif fmt == "netcdf":
+        io._require("xarray")
+        io._require("scipy")
+    if out.is_dir():
+        _fail(f"--out {str(out)!r} is a directory; give a file name ending in .csv, .parquet or .nc")
+    parent = out.resolve().parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+        _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")

@@ -1,0 +1,303 @@
+"""One chunk of a sweep, and what it computes: the quantities (``QUANTITIES``, SI units), the settings
+that are not points (``SweepSpec``), the fingerprint that makes resuming safe, and ``compute_chunk`` —
+a pure function of a ``ChunkTask`` that the thread pool and the Dask workers run. The exact
+quantities (rotation number T-4.5, z-period) come from the exact solution; the simulated ones from
+one RATTLE ensemble run per chunk (``simulate_ensemble``'s kernel), so every point is computed
+independently of the chunking and of the backend, bit for bit.
+"""
+
+from __future__ import annotations
+
+import difflib
+import hashlib
+import json
+import math
+import threading
+import time
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict, dataclass
+from typing import Any
+
+import numpy as np
+
+from .._core import EnsembleRun, ExactSolution, InvalidInputError, rotation_numbers, state_from_angles
+from ..ensemble.run import max_sway, model_damping
+from ..model import FloatArray, Pendulum
+from .design import AXES, INITIAL_AXES, Design, check_axis_name
+
+QUANTITIES: dict[str, dict[str, str]] = {
+    "final_state": {"x": "m", "y": "m", "z": "m", "vx": "m/s", "vy": "m/s", "vz": "m/s"},
+    "rotation_number": {"rotation_number": "1"},
+    "period": {"period": "s"},
+    "max_sway": {"max_sway": "rad"},
+    "energy_drift": {"energy_drift": "1"},
+    "settle_time": {"settle_time": "s"},
+}
+"""Quantity name → the result columns it makes, with their units."""
+
+SIMULATED = ("final_state", "max_sway", "energy_drift", "settle_time")
+"""The quantities that integrate (RATTLE to t_end); the others come from the exact solution."""
+
+
+class _Cancelled(Exception):
+    """A chunk stopped because the sweep was interrupted (never written)."""
+
+
+def _bad(message: str) -> InvalidInputError:
+    return InvalidInputError(message)
+
+
+# --- what to compute -----------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class SweepSpec:
+    """Everything but the points: the quantities, the pendulum (l [m], g [m/s²], m [kg]) used where
+    the design does not vary length or g, the fixed initial conditions (``fixed``: axis → value; 0
+    for those not given), for simulated quantities ``t_end`` [s] and ``dt`` [s], the linear damping
+    c [1/s] where the design does not vary it, and for ``settle_time`` the ``settle_angle`` [rad]."""
+
+    quantities: tuple[str, ...]
+    length: float
+    g: float
+    mass: float
+    fixed: dict[str, float]
+    t_end: float | None = None
+    dt: float | None = None
+    damping: float = 0.0
+    settle_angle: float | None = None
+
+    @property
+    def simulated(self) -> bool:
+        return any(q in SIMULATED for q in self.quantities)
+
+    @property
+    def steps(self) -> int:
+        return 0 if not self.simulated else round(float(self.t_end or 0.0) / float(self.dt or 1.0))
+
+    def output_units(self) -> dict[str, str]:
+        """The quantity columns with their units, in order."""
+        return {c: u for q in self.quantities for c, u in QUANTITIES[q].items()}
+
+    def describe(self) -> dict[str, Any]:
+        d = asdict(self) | {"quantities": list(self.quantities)}
+        # settings at their defaults are left out, so that sweeps written before they existed resume
+        for key, default in (("damping", 0.0), ("settle_angle", None)):
+            if d[key] == default:
+                del d[key]
+        return d
+
+
+def _quantities(quantity: str | Sequence[str]) -> tuple[str, ...]:
+    names = [quantity] if isinstance(quantity, str) else list(quantity)
+    if not names:
+        raise _bad(f"give at least one quantity: {', '.join(QUANTITIES)}")
+    for q in names:
+        if not isinstance(q, str) or q not in QUANTITIES:
+            hint = difflib.get_close_matches(str(q), list(QUANTITIES), n=1)
+            did = f" (did you mean {hint[0]!r}?)" if hint else ""
+            raise _bad(f"unknown quantity {q!r}{did}; the quantities are {', '.join(QUANTITIES)}")
+    return tuple(q for q in QUANTITIES if q in names)  # canonical order, no duplicates
+
+
+def make_spec(
+    design: Design,
+    quantity: str | Sequence[str],
+    pendulum: Pendulum | None = None,
+    fixed: Mapping[str, float] | None = None,
+    t_end: float | None = None,
+    dt: float | None = None,
+    settle_angle: float | None = None,
+) -> SweepSpec:
+    """Checks and collects the settings of a sweep over ``design`` (see :func:`sweep`)."""
+    quantities = _quantities(quantity)
+    p = Pendulum() if pendulum is None else pendulum
+    if not isinstance(p, Pendulum):
+        raise _bad(f"pendulum must be a pendulab.Pendulum, got {type(p).__name__}")
+    try:
+        damping = model_damping(p)
+    except InvalidInputError:
+        raise _bad(
+            f"sweeps run the ideal pendulum, optionally with linear damping (exact solution, ensemble "
+            f"kernel), not {p!r}"
+        ) from None
+    exact = [q for q in quantities if q not in SIMULATED]
+    if exact and (damping != 0.0 or "damping" in design.names):
+        raise _bad(
+            f"{', '.join(exact)} come from the exact solution of the undamped pendulum: "
+            "remove the damping or compute simulated quantities only"
+        )
+    if "settle_time" in quantities:
+        if settle_angle is None:
+            raise _bad("settle_time needs settle_angle [rad]: the sway angle that counts as settled")
+        if not (isinstance(settle_angle, int | float) and 0 < settle_angle < math.pi):
+            raise _bad(f"settle_angle = {settle_angle!r} must be a sway angle in (0, π) rad")
+        settle_angle = float(settle_angle)
+    else:
+        settle_angle = None
+    fixed_values: dict[str, float] = {}
+    for name, value in (fixed or {}).items():
+        check_axis_name(name, "fixed value")
+        if name not in INITIAL_AXES:
+            raise _bad(
+                f"fixed {name!r}: set length and g on the pendulum; fixed takes {', '.join(INITIAL_AXES)}"
+            )
+        if name in design.names:
+            raise _bad(f"{name!r} is both an axis of the design and a fixed value")
+        try:
+            v = float(value)
+        except (TypeError, ValueError):
+            raise _bad(f"fixed {name} = {value!r}: must be a number in {AXES[name]}") from None
+        if not math.isfinite(v):
+            raise _bad(f"fixed {name} = {value!r} {AXES[name]} must be finite")
+        fixed_values[name] = v
+    for name in INITIAL_AXES:
+        if name not in design.names:
+            fixed_values.setdefault(name, 0.0)
+    if any(q in SIMULATED for q in quantities):
+        dt = 1e-3 if dt is None else dt
+        sim = [q for q in quantities if q in SIMULATED]
+        if t_end is None:
+            verb = "integrates" if len(sim) == 1 else "integrate"
+            raise _bad(f"{', '.join(sim)} {verb}: give t_end [s] (and dt [s])")
+        if not (isinstance(dt, int | float) and math.isfinite(dt) and dt > 0):
+            raise _bad(f"dt = {dt!r} must be a finite step > 0 s")
+        steps = round(t_end / dt) if math.isfinite(t_end) else 0
+        if not (math.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
+            raise _bad(f"t_end = {t_end!r} s must be > 0 and a multiple of dt = {dt!r} s")
+        t_end, dt = float(t_end), float(dt)
+    else:
+        t_end = dt = None  # not used: not part of what the results depend on
+    fixed_sorted = dict(sorted(fixed_values.items()))
+    return SweepSpec(quantities, p.length, p.g, p.mass, fixed_sorted, t_end, dt, damping, settle_angle)
+
+
+def fingerprint(design: Design, spec: SweepSpec) -> str:
+    """SHA-256 of the points and the settings: equal prints, equal results (the key of resuming)."""
+    text = json.dumps({"design": design.fingerprint(), "spec": spec.describe()}, sort_keys=True)
+    return hashlib.sha256(text.encode()).hexdigest()
+
+
+# --- one chunk -----------------------------------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class ChunkTask:
+    """Chunk ``index``: points ``start`` … ``stop − 1`` with their design values ``inputs``."""
+
+    index: int
+    start: int
+    stop: int
+    inputs: dict[str, FloatArray]
+    spec: SweepSpec
+
+
+def _full(task: ChunkTask) -> dict[str, FloatArray]:
+    m, s = task.stop - task.start, task.spec
+    base = {"length": s.length, "g": s.g, "damping": s.damping, **s.fixed}
+    return {k: np.asarray(task.inputs[k]) if k in task.inputs else np.full(m, float(base[k])) for k in AXES}
+
+
+def _states(c: dict[str, FloatArray], mass: float) -> tuple[FloatArray, FloatArray]:
+    """(x, v) of every point, by the same core call as ``Pendulum.state_from_angles``."""
+    m = len(c["theta0"])
+    x, v = np.empty((m, 3)), np.empty((m, 3))
+    for i in range(m):
+        x[i], v[i] = state_from_angles(
+            float(c["length"][i]),
+            mass,
+            float(c["g"][i]),
+            float(c["theta0"][i]),
+            float(c["phi0"][i]),
+            float(c["theta_dot0"][i]),
+            float(c["phi_dot0"][i]),
+        )
+    return x, v
+
+
+def _rotation_numbers(c: dict[str, FloatArray], mass: float) -> FloatArray:
+    """W from ε = E/(m|g|l) and j = J₃/(m l² ω₀), computed from the angles; the few points the
+    vectorised map leaves NaN with J₃ ≠ 0 (on the conical boundary, to rounding) go through the exact
+    solution itself, as ``pl.exact(p, s).rotation_number`` does."""
+    th, thd, phd, length, g = c["theta0"], c["theta_dot0"], c["phi_dot0"], c["length"], c["g"]
+    s2 = np.sin(th) ** 2
+    with np.errstate(divide="ignore", invalid="ignore"):
+        omega0 = np.sqrt(np.abs(g) / length)
+        eps = (0.5 * length * (thd**2 + s2 * phd**2) - g * np.cos(th)) / np.abs(g)
+        j = s2 * phd / omega0
+    ok = (g != 0.0) & np.isfinite(eps) & np.isfinite(j)
+    w = np.full(len(th), np.nan)
+    w[ok] = rotation_numbers(np.ascontiguousarray(eps[ok]), np.ascontiguousarray(j[ok]))
+    for i in np.flatnonzero(ok & np.isnan(w) & (j != 0.0)):
+        one = {k: a[i : i + 1] for k, a in c.items()}
+        x, v = _states(one, mass)
+        adv = ExactSolution(float(length[i]), mass, float(g[i]), x[0], v[0]).azimuth_advance
+        w[i] = np.nan if adv is None else adv / (2.0 * math.pi)
+    return w
+
+
+def _periods(c: dict[str, FloatArray], mass: float) -> FloatArray:
+    x, v = _states(c, mass)
+    out = np.empty(len(x))
+    for i in range(len(x)):
+        tz = ExactSolution(float(c["length"][i]), mass, float(c["g"][i]), x[i], v[i]).period_z
+        out[i] = np.nan if tz is None else tz
+    return out
+
+
+def _simulate(
+    c: dict[str, FloatArray], spec: SweepSpec, cancel: threading.Event | None
+) -> dict[str, FloatArray]:
+    x, v = _states(c, spec.mass)
+    length, g = np.ascontiguousarray(c["length"]), np.ascontiguousarray(c["g"])
+    need_summary = "max_sway" in spec.quantities or "energy_drift" in spec.quantities
+    damping = np.ascontiguousarray(c["damping"])
+    dt, settle = float(spec.dt or 0.0), spec.settle_angle
+    run = EnsembleRun(x, v, length, g, dt, spec.steps, None, need_summary, damping, settle)
+    pause = 1e-3
+    while not run.done:
+        if cancel is not None and cancel.wait(pause):
+            run.cancel()
+            run.result()
+            raise _Cancelled
+        if cancel is None:
+            time.sleep(pause)
+        pause = min(2 * pause, 0.02)
+    res = run.result()
+    if res["cancelled"]:  # pragma: no cover - only a cancel above stops it
+        raise _Cancelled
+    out: dict[str, FloatArray] = {}
+    if "final_state" in spec.quantities:
+        xf, vf = res["x"][:, -1, :], res["v"][:, -1, :]
+        for k, name in enumerate(("x", "y", "z")):
+            out[name] = np.ascontiguousarray(xf[:, k])
+            out["v" + name] = np.ascontiguousarray(vf[:, k])
+    if "max_sway" in spec.quantities:
+        out["max_sway"] = max_sway(res["z_min"], res["z_max"], g, length)
+    if "settle_time" in spec.quantities:
+        out["settle_time"] = res["settle_time"]
+    if "energy_drift" in spec.quantities:
+        scale = np.abs(g) * length
+        scale = np.where(g != 0.0, scale, 0.5 * np.einsum("ij,ij->i", v, v))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            out["energy_drift"] = np.where(scale > 0, (res["e_max"] - res["e_min"]) / scale, np.nan)
+    return out
+
+
+def compute_chunk(task: ChunkTask, cancel: threading.Event | None = None) -> dict[str, FloatArray]:
+    """The result columns of one chunk: ``point`` (int64), the design's axes, then the quantity columns
+    (float64), one row per point. Pure: the same task gives the same numbers anywhere (it is what the
+    thread pool and the Dask workers run). ``cancel`` stops a simulation within ~1024 steps."""
+    spec = task.spec
+    c = _full(task)
+    out: dict[str, Any] = {"point": np.arange(task.start, task.stop, dtype=np.int64)}
+    out.update({k: np.asarray(v, dtype=np.float64) for k, v in task.inputs.items()})
+    sim = _simulate(c, spec, cancel) if spec.simulated else {}
+    for q in spec.quantities:
+        if q == "rotation_number":
+            out[q] = _rotation_numbers(c, spec.mass)
+        elif q == "period":
+            out[q] = _periods(c, spec.mass)
+        else:
+            out.update({k: sim[k] for k in QUANTITIES[q]})
+    return out
