@@ -1,4 +1,4 @@
-"""Pendulab against SciPy's ``solve_ivp`` in one process, on the rosette (THEORY T-2.4).
+"""Pendulab against SciPy's ``solve_ivp`` in one process, on the rosette (docs/theory.md T-2.4).
 
 Case: l = 1 m, m = 1 kg, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s, to t = 100 s. Reference: the exact
 solution at t = 100 s from ``testdata/golden_states.json`` (mpmath, 40 digits). Error: max(|Δx|/l,

@@ -1,5 +1,5 @@
 /* Baselines of issue 5: classical RK4 on the Cartesian constrained ODE of the spherical pendulum
- * (THEORY T-2.4): x' = v, v' = -g e3 + lambda x, lambda = (g z - |v|^2) / l^2. No projection.
+ * (docs/theory.md T-2.4): x' = v, v' = -g e3 + lambda x, lambda = (g z - |v|^2) / l^2. No projection.
  *
  * rk4_run:      one trajectory, a plain loop (what a careful C programmer writes first).
  * rk4_ensemble: N trajectories in structure-of-arrays form, blocks of BLOCK lanes whose inner loops

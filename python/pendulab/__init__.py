@@ -8,7 +8,7 @@ measured from the downward vertical. Quick start::
     s0 = p.state_from_angles(theta=np.radians(60), phi=0.0, theta_dot=0.0, phi_dot=2.0)
     tr = pl.simulate(p, s0, t_end=100.0, method="rattle", dt=1e-3, save_every=10)
     print(tr.summary())
-    sol = pl.exact(p, s0)               # the exact solution (THEORY §4): sol.state(t), sol.phases()
+    sol = pl.exact(p, s0)               # the exact solution (docs/theory.md §4): sol.state(t), sol.phases()
     pl.models()                         # the real-pendulum models (§7): damped, rotating, ... (SI units)
 
 Plots (matplotlib, optional): ``pendulab.plot``.

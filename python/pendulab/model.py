@@ -1,4 +1,4 @@
-"""The spherical pendulum and its states on TS² (THEORY.md §1–2), with the real-pendulum models of
+"""The spherical pendulum and its states on TS² (docs/theory.md §1–2), with the real-pendulum models of
 the core's registry (§7: damping, drag, forcing, any gravity direction, rotating frame, moving pivot).
 
 Units: length l [m], mass m [kg], gravity g [m/s²] (any sign; g > 0 pulls along −z), position x [m],
@@ -34,7 +34,7 @@ def _vec3(name: str, a: Any) -> FloatArray:
 
 
 def models() -> list[ModelInfo]:
-    """The model registry (THEORY.md §7): one dict per model with ``name``, ``summary``,
+    """The model registry (docs/theory.md §7): one dict per model with ``name``, ``summary``,
     ``interactive`` (runs with the incremental :class:`pendulab.Stepper`; False for ``string``,
     ``spring`` and ``sampled_pivot``, which run with ``pl.simulate`` / ``pendulab run`` — the web lab
     runs the string and the spring too, with their own core steppers) and
@@ -88,7 +88,7 @@ class State:
 
 class Pendulum:
     """A spherical pendulum: a mass on a rigid massless rod, under gravity and, optionally, the forces
-    of the real-pendulum models (THEORY.md §7; ``pendulab.models()`` lists them with units).
+    of the real-pendulum models (docs/theory.md §7; ``pendulab.models()`` lists them with units).
 
     Parameters
     ----------

@@ -43,7 +43,7 @@ fn to_arrays<'py>(py: Python<'py>, states: &[State]) -> Xv<'py> {
     (x.into_pyarray(py), v.into_pyarray(py))
 }
 
-/// The exact solution through a state at t = 0 (THEORY §4), any g.
+/// The exact solution through a state at t = 0 (docs/theory.md §4), any g.
 #[pyclass(module = "pendulab._core", name = "ExactSolution", frozen)]
 pub struct Exact {
     inner: ExactSolution,

@@ -1,4 +1,4 @@
-"""The slewing crane's linear theory (THEORY.md T-7.2) against the nonlinear model: the closed-form
+"""The slewing crane's linear theory (docs/theory.md T-7.2) against the nonlinear model: the closed-form
 static offset ω²R/(ω₀² − ω² + icω) and the track of a damped run, and the natural frequencies ω₀ ± ω
 as the two spectral peaks (FFT) of a small undamped sway; the resonance ω = ω₀ is refused; the
 payload track in the boom frame (``Trajectory.boom``) from Python and in files. SI units."""

@@ -1,4 +1,4 @@
-"""The exact solution from Python (THEORY §4): ``pl.exact`` against the 40-digit golden states and an
+"""The exact solution from Python (docs/theory.md §4): ``pl.exact`` against the 40-digit golden states and an
 independent integrator, its time handling (scalar, array, negative, huge t), the group property and
 time reversal, continuity of the azimuth, every kind of motion of T-4.6, and bad input.
 

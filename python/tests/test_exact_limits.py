@@ -1,6 +1,6 @@
-"""Phases and published limits from the exact solution (THEORY §5–6), from Python:
+"""Phases and published limits from the exact solution (docs/theory.md §5–6), from Python:
 
-- T-5.1: Δφ = Δφ_dyn + Δφ_geom — the team's worked example to 1e-10, and the split against T-4.5 on
+- T-5.1: Δφ = Δφ_dyn + Δφ_geom — the worked example of docs/theory.md to 1e-10, and the split against T-4.5 on
   every scenario (Δφ measured from simulations: test_advance.py).
 - T-6.1: a perturbed conical start has Δφ → 2π/√(1 + 3cos²α) as the perturbation → 0.
 - T-6.3: Airy's precession of a small ellipse, Ω_p = (3/8)(ab/l²)ω₀, approached as a, b → 0.

@@ -1,4 +1,4 @@
-"""Scenario files with the real-pendulum models (THEORY.md §7): the model's own keys in [pendulum]
+"""Scenario files with the real-pendulum models (docs/theory.md §7): the model's own keys in [pendulum]
 reach the core, round-trip through to_toml, and bad keys or values are named. SI units."""
 
 from __future__ import annotations

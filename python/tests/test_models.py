@@ -1,4 +1,4 @@
-"""The real-pendulum models from Python (THEORY.md §7): the registry, construction from Python and
+"""The real-pendulum models from Python (docs/theory.md §7): the registry, construction from Python and
 from scenario files, the reduction to the ideal pendulum, the power balance T-7.1, the exact J₃ decay
 of linear damping, Foucault's turn T-7.3, tilted gravity, files and the command line, and clear
 errors for bad input. SI units throughout (m, kg, s, rad; power in W, energy in J)."""

@@ -1,4 +1,4 @@
-"""Symmetry reduction from Python (THEORY §3): the invariants σ₁…σ₆ and their units, the relations
+"""Symmetry reduction from Python (docs/theory.md §3): the invariants σ₁…σ₆ and their units, the relations
 T-3.2, the Casimir and H conserved (T-3.3), the reduced flow's sign against the full flow (T-3.4), the
 oscillator's first integral (T-3.5), and the reduced flow with reconstruction (T-3.6) as a third
 path to x(t), against the exact solution. SI units; σ in Holm's unit-length variables.

@@ -7,8 +7,8 @@ computed from the closed-form solution in elliptic functions at 40 significant d
 (mpmath), stored as float64 and as 30-digit strings, with conditioning floors per sample;
 the orbit's scalar quantities (eps, j, heights z1 < z2, roots, m, period, Delta_phi and its
 T-5.1 split into a dynamic and a geometric phase), each as float and 30-digit string; and
-THEORY T-5.1's worked example ("phase_example"). Equation numbers (T-x.y) refer to
-shared/THEORY.md.
+the worked example of docs/theory.md T-5.1 ("phase_example"). Equation numbers (T-x.y) refer to
+docs/theory.md.
 
 Usage (from the repository root)::
 
@@ -35,7 +35,7 @@ u = z/l, eps = E/(m g l), j = J3/(m l^2 w0).
 * T-4.2  u = u1 + (u2 - u1) sn^2(s | m), s = lam (tau + tau0), m = (u2 - u1)/(u3 - u1),
   lam = sqrt((u3 - u1)/2), du/dtau = 2 (u2 - u1) lam sn cn dn. The phase s0 = lam tau0
   in [-K, K] solves sn^2(s0) = (u0 - u1)/(u2 - u1) with sn cn of the sign of z'(0)
-  (THEORY's F(arcsin sqrt((u0 - u1)/(u2 - u1)) | m), signed by z'(0)); near a turning
+  (docs/theory.md's F(arcsin sqrt((u0 - u1)/(u2 - u1)) | m), signed by z'(0)); near a turning
   point the smaller of sn, cn is taken from z'(0), so no digits are lost.
 * T-4.3  T_z = 2 K(m)/(lam w0).
 * T-4.4  phi = phi_low + A(s), A(s) = (j/(2 lam)) [Pi(n+; am s | m)/(1 - u1)
@@ -86,8 +86,8 @@ Checks (the file is not written unless all pass):
    (below) to 1e-25.
 6. Generic orbits: phase_dynamic + phase_geometric = Delta_phi to 1e-25, and
    phase_dynamic equals its closed form (4/(j lam)) [K (eps - u1) - (u3 - u1)(K - E)]
-   (from sigma3 = |v|^2 = 2(eps - u)) to 1e-25 relative. THEORY T-5.1's example
-   (l = g = 1, eps = 0.3, j = 0.5) must reproduce every digit THEORY prints.
+   (from sigma3 = |v|^2 = 2(eps - u)) to 1e-25 relative. The T-5.1 example of docs/theory.md
+   (l = g = 1, eps = 0.3, j = 0.5) must reproduce every digit docs/theory.md prints.
 
 Conditioning floors: the start is perturbed by 2^-53 with all 64 sign patterns,
 projected onto TS^2 and solved exactly again; the floor is the max over the patterns of
@@ -1032,7 +1032,7 @@ def case_json(r: CaseResult) -> dict[str, Any]:
     return out
 
 
-# THEORY.md T-5.1's example: l = g = 1, eps = 0.3, j = 0.5, as printed there.
+# The T-5.1 example of docs/theory.md: l = g = 1, eps = 0.3, j = 0.5, as printed there.
 PHASE_EXAMPLE_PRINTED = {
     "delta_phi": "4.16859732561",
     "phase_dynamic": "9.5651005316",
@@ -1041,7 +1041,7 @@ PHASE_EXAMPLE_PRINTED = {
 
 
 def phase_example(log: Callable[[str], None]) -> dict[str, Any]:
-    """THEORY T-5.1's example, recomputed; its printed digits must agree (half a unit in
+    """The T-5.1 example of docs/theory.md, recomputed; its printed digits must agree (half a unit in
     the last printed place). Start on the equator (u0 = 0, x0 = (l, 0, 0)) with
     v0 = (0, j, sqrt(2 eps - j^2)) in units l = g = m = 1, so that E = eps and J3 = j."""
     eps, j = mpf("0.3"), mpf("0.5")
@@ -1061,14 +1061,14 @@ def phase_example(log: Callable[[str], None]) -> dict[str, Any]:
         err = abs(quantities[key] - mpf(printed))
         if not err <= mpf(10) ** (-decimals) / 2:
             raise GoldenError(
-                f"phase example: {key} = {mpmath.nstr(quantities[key], 20)}, THEORY prints {printed}"
+                f"phase example: {key} = {mpmath.nstr(quantities[key], 20)}, docs/theory.md prints {printed}"
             )
     log(
-        "[phase_example] THEORY T-5.1 reproduced: delta_phi, dynamic, geometric = "
+        "[phase_example] docs/theory.md T-5.1 reproduced: delta_phi, dynamic, geometric = "
         + ", ".join(mpmath.nstr(quantities[k], 15) for k in PHASE_EXAMPLE_PRINTED)
     )
     return {
-        "source": "shared/THEORY.md T-5.1",
+        "source": "docs/theory.md T-5.1",
         "length": 1.0,
         "mass": 1.0,
         "g": 1.0,

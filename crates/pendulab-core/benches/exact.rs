@@ -1,4 +1,4 @@
-//! Cost of the exact solution (THEORY §4): set-up per trajectory, one state at t = 1 s and at
+//! Cost of the exact solution (docs/theory.md §4): set-up per trajectory, one state at t = 1 s and at
 //! t = 10⁶ s (the same by construction), and 10⁵ states for an array of times (parallel).
 //! Rosette start: l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s.
 

@@ -1,4 +1,4 @@
-//! The elastic pendulum, or swinging spring (THEORY.md T-7.4): a bob of mass m on a massless spring
+//! The elastic pendulum, or swinging spring (docs/theory.md T-7.4): a bob of mass m on a massless spring
 //! of stiffness k [N/m] and rest length l₀ [m] from a fixed pivot, in gravity g along −e₃:
 //!
 //!   r̈ = −(k/m)(|r| − l₀) r/|r| − g e₃,   equilibrium length l = l₀ + m g/k,

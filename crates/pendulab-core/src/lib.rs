@@ -4,7 +4,7 @@
 //! about a fixed pivot under uniform gravity — as a particle on the sphere S² in a linear potential.
 //! Pure Rust; the Python package `pendulab` binds it.
 //!
-//! ## Conventions (THEORY.md §1)
+//! ## Conventions (docs/theory.md §1)
 //! - SI units throughout: m, kg, s, rad, J, N.
 //! - z axis up; for g > 0 gravity acts along −z and the bob hangs at rest at z = −l. Any finite g
 //!   is allowed (g < 0 pulls up, g = 0 leaves only the rod).

@@ -1,4 +1,4 @@
-//! Reduction by the S¹ symmetry about the vertical (THEORY.md §3), in Holm's unit-length setting:
+//! Reduction by the S¹ symmetry about the vertical (docs/theory.md §3), in Holm's unit-length setting:
 //! positions in units of l, so σ₁ = z/l, σ₂ = ż/l [1/s], σ₃ = |v|²/l² [1/s²], σ₄ = (x² + y²)/l²,
 //! σ₅ = (x ẋ + y ẏ)/l² [1/s], σ₆ = (x ẏ − y ẋ)/l² = J₃/(m l²) [1/s], and γ = g/l [1/s²] in place of g.
 //!

@@ -1,6 +1,6 @@
 //! Parameters and the state (x, v) on the tangent bundle TS² of the sphere of radius l.
 //!
-//! Conventions (THEORY.md §1): SI units, z axis up, gravity along −z for g > 0. The polar angle θ
+//! Conventions (docs/theory.md §1): SI units, z axis up, gravity along −z for g > 0. The polar angle θ
 //! is measured from the *downward* vertical and the azimuth φ = atan2(y, x) counter-clockwise
 //! about +z, so that
 //!

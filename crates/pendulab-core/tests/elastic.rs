@@ -1,4 +1,4 @@
-//! The swinging spring (THEORY.md T-7.4): observed orders 2 and 4, E bounded and J₃ kept to round-off
+//! The swinging spring (docs/theory.md T-7.4): observed orders 2 and 4, E bounded and J₃ kept to round-off
 //! over 10⁶ steps (symplectic, axisymmetric), and at the 1:1:2 resonance the energy exchange between
 //! bouncing and swinging and the stepwise turning of the swing plane. SI units: l = 1 m equilibrium,
 //! g = 9.81 m/s², m = 1 kg.

@@ -1,4 +1,4 @@
-//! The exact solution (THEORY.md §4, T-4.1 … T-4.7) checked against the mpmath golden states, against
+//! The exact solution (docs/theory.md §4, T-4.1 … T-4.7) checked against the mpmath golden states, against
 //! DOP853 and RATTLE8, against itself (group property, time reversal, derivatives = the equations of
 //! motion T-2.2) and in every special case of T-4.6. Units: SI; error measure as in `golden.rs`,
 //! max(|Δx|/l, |Δv|/(l ω₀ + |v|)).

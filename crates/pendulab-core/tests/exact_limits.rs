@@ -1,4 +1,4 @@
-//! Limits and published values of the exact solution (THEORY.md §5–6): the T-5.1 phase example and
+//! Limits and published values of the exact solution (docs/theory.md §5–6): the T-5.1 phase example and
 //! the golden phase split, Puiseux's π < Δφ < 2π over random (ε, j), the j → 0 limits of Δφ, Airy's
 //! precession T-6.3, the conical frequency T-6.1, and Hamiltonian monodromy T-6.4. Dimensionless
 //! (ε = E/(m g l), j = J₃/(m l² ω₀)) unless stated.

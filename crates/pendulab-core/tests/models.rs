@@ -1,4 +1,4 @@
-//! The real-pendulum models (THEORY.md §7): reduction to the ideal pendulum when the extra
+//! The real-pendulum models (docs/theory.md §7): reduction to the ideal pendulum when the extra
 //! parameters are zero, the power balance T-7.1, the exact J₃ decay e^{−ct} of linear damping kept by
 //! the RATTLE splitting (conformal structure), the splitting's observed orders, tilted gravity as a
 //! rotated ideal pendulum, Foucault's precession −Ω sin λ (T-7.3), and bad parameters. SI units.

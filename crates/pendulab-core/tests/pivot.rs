@@ -1,4 +1,4 @@
-//! Moving pivot (THEORY.md T-7.2): the slewing crane's static offset ω²R/(ω₀² − ω²) and its natural
+//! Moving pivot (docs/theory.md T-7.2): the slewing crane's static offset ω²R/(ω₀² − ω²) and its natural
 //! frequencies ω₀ ± ω in the boom frame (spectral peaks of a nonlinear small-amplitude run), the
 //! power balance with the pivot's inertial force, and Kapitza's stabilised inverted pendulum for
 //! (Aν)² > 2 g l. SI units; l = 1 m, g = 9.81 m/s².

@@ -1,4 +1,4 @@
-//! Reduction (THEORY.md §3) against the full Cartesian flow: the relations T-3.2 on TS², the sign of
+//! Reduction (docs/theory.md §3) against the full Cartesian flow: the relations T-3.2 on TS², the sign of
 //! the reduced flow T-3.4 pinned by the derivative of σ along T-2.2, the Nambu bracket, the
 //! oscillator T-3.5, and the reduced flow with reconstruction T-3.6 as a third path to x(t).
 //! Units: l = 1 m, g = 9.81 m/s² (rosette: θ₀ = 60°, φ̇₀ = 2 rad/s), σ in units of l.

@@ -1,4 +1,4 @@
-"""The ``pendulab`` commands of the exact solution (THEORY §3–6): ``exact``, ``phases``, ``em-map``,
+"""The ``pendulab`` commands of the exact solution (docs/theory.md §3–6): ``exact``, ``phases``, ``em-map``,
 ``reduced``, and ``plot`` (a scenario's path on the sphere, its top view, or its phase split).
 Registered on :data:`pendulab.cli.app`; same conventions: SI units (times in s, E in J,
 J₃ in kg m²/s, angles in rad), exit code 0 on success, 2 on a user error (one ``error: …`` line),
@@ -98,7 +98,7 @@ def exact_cmd(
     ] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
 ) -> None:
-    """The exact solution through the scenario's start (THEORY §4): print the kind of motion, turning
+    """The exact solution through the scenario's start (docs/theory.md §4): print the kind of motion, turning
     heights [m], z-period [s] and azimuthal advance per z-period [rad]; write the states at the times
     --t to --out. The scenario's [simulation] settings are not used (except t0, t_end for the default)."""
     with _user_errors():
@@ -292,8 +292,8 @@ def reduced(
         float, typer.Option(min=0.01, max=1000.0, help="z-periods of the orbit to draw.")
     ] = 1.0,
 ) -> None:
-    """The reduced space (THEORY T-3.3, Holm's Figure 2): in (σ1, σ2, σ3) = (z/l, ż/l, |v|²/l²) the surface
-    C = 0 of the orbit's J3, the plane H = const and the exact orbit on their intersection."""
+    """The reduced space (docs/theory.md T-3.3, Holm's Figure 2): in (σ1, σ2, σ3) = (z/l, ż/l, |v|²/l²)
+    the surface C = 0 of the orbit's J3, the plane H = const and the exact orbit on their intersection."""
     with _user_errors():
         if out.suffix.lower() not in IMAGE_SUFFIXES:
             _fail(f"unknown image suffix {out.suffix!r} in {str(out)!r}; use .png, .svg or .pdf")

@@ -189,7 +189,7 @@ def models(
         bool, typer.Option("--json", help="Print the registry as JSON (a list of objects; no limit: null).")
     ] = False,
 ) -> None:
-    """List the pendulum models (THEORY.md §7) and their parameters: SI unit, default, allowed values
+    """List the pendulum models (docs/theory.md §7) and their parameters: SI unit, default, allowed values
     and meaning, as scenario files (keys of [pendulum]) and ``pendulab.Pendulum(model=..., **params)``
     take them. Every model has length [m], mass [kg] and g [m/s^2]."""
     with _user_errors():

@@ -1,4 +1,4 @@
-"""The phase split of THEORY T-5.1 as a picture: Δφ = Δφ_dyn + Δφ_geom per z-period [rad].
+"""The phase split of docs/theory.md T-5.1 as a picture: Δφ = Δφ_dyn + Δφ_geom per z-period [rad].
 
 Left (or alone, for several orbits side by side): bars of the dynamic phase Δφ_dyn = 2 T_z⟨K⟩/J₃, the
 geometric phase Δφ_geom = −A/J and their sum, each with its value; a black bar marks Δφ from T-4.5

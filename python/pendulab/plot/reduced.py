@@ -1,4 +1,4 @@
-"""Holm's Figure 2 (THEORY T-3.3): the reduced motion in (σ₁, σ₂, σ₃) space.
+"""Holm's Figure 2 (docs/theory.md T-3.3): the reduced motion in (σ₁, σ₂, σ₃) space.
 
 σ₁ = z/l [1], σ₂ = ż/l [1/s], σ₃ = |v|²/l² [1/s²] (see :mod:`pendulab.reduce`). Drawn: the orbit
 manifold C = σ₃(1 − σ₁²) − σ₂² − J² = 0 of the orbit's J = σ₆ = J₃/(m l²), a surface

@@ -2,7 +2,7 @@
 
 - ``kind="sphere"``: the path x(t) [m] on a faint wire sphere of radius l, with the start (filled
   dot) and the end (square); equal scales on the three axes.
-- ``kind="top"``: the top view (x, y) [m] — for a generic orbit the rosette of THEORY T-4.5 — inside
+- ``kind="top"``: the top view (x, y) [m] — for a generic orbit the rosette of docs/theory.md T-4.5 — inside
   the circle of radius l (the sphere's outline).
 - ``kind="both"``: the two side by side.
 

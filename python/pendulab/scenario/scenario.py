@@ -19,7 +19,7 @@ format, every key and its default are described in ``docs/scenarios.md``; an exa
     dt = 1.0e-3       # s
     save_every = 10
 
-Other models (THEORY.md §7; ``pendulab models``) take their own keys in ``[pendulum]`` next to
+Other models (docs/theory.md §7; ``pendulab models``) take their own keys in ``[pendulum]`` next to
 ``model``, in the units the registry gives (e.g. ``model = "damped"``, ``damping = 0.05`` in 1/s); an
 angle in rad may instead be given in degrees as ``<name>_deg`` (``latitude_deg = 49.0``).
 

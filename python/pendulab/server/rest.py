@@ -21,7 +21,7 @@ from .protocol import ExactRequest, Vec3, _lim, finite_or_none
 
 
 def exact_quantities(req: ExactRequest) -> dict[str, Any]:
-    """The exact-solution quantities of the orbit through a state (THEORY §4–5), JSON-ready.
+    """The exact-solution quantities of the orbit through a state (docs/theory.md §4–5), JSON-ready.
 
     Infinite or undefined values (the separatrix's period, the advance of planar motion) are null.
     """

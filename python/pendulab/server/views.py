@@ -1,6 +1,6 @@
 """The lab's geometric views of the ideal pendulum (docs/web.md), computed here with the core:
 
-- :func:`reduced_view` (``POST /api/reduced``): Holm's Figure 2 in σ-space (THEORY §3) — the orbit
+- :func:`reduced_view` (``POST /api/reduced``): Holm's Figure 2 in σ-space (docs/theory.md §3) — the orbit
   (σ₁, σ₂, σ₃) over one z-period from :func:`pendulab.reduce`, the J₃ surface
   C = σ₃(1 − σ₁²) − σ₂² − σ₆² = 0 on a grid, the energy plane H = ½σ₃ + (g/l)σ₁ and the current point.
 - :func:`em_view` (``POST /api/em_map``): the energy–momentum map's boundary (the conical orbits, T-6.1)

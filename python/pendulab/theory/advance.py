@@ -1,5 +1,6 @@
-"""Measuring the azimuthal advance per z-period Δφ [rad] from the samples of any trajectory (THEORY
-T-4.5, T-5.1), so that the exact Δφ, its dynamic + geometric split and a simulation can be compared.
+"""Measuring the azimuthal advance per z-period Δφ [rad] from the samples of any trajectory
+(docs/theory.md T-4.5, T-5.1), so that the exact Δφ, its dynamic + geometric split and a simulation can
+be compared.
 
 The height z oscillates with period T_z while the azimuth φ advances; between two successive
 events of the same phase of the z-oscillation — two lowest points, or two upward crossings of the

@@ -1,4 +1,4 @@
-"""The exact solution of the ideal spherical pendulum (THEORY.md §4–5), from any state on TS², any g.
+"""The exact solution of the ideal spherical pendulum (docs/theory.md §4–5), from any state on TS², any g.
 
 ``pl.exact(pendulum, state)`` sets the solution up once (roots of the cubic T-4.1, the elliptic
 parameter, the start's phase); afterwards a state at any time t [s], negative too, costs the same
@@ -262,7 +262,8 @@ class ExactSolution:
 
 
 def exact(pendulum: Pendulum, state: State) -> ExactSolution:
-    """The exact solution through ``state`` (on TS², at t = 0) of the ideal pendulum, any g (THEORY §4).
+    """The exact solution through ``state`` (on TS², at t = 0) of the ideal pendulum, any g
+    (docs/theory.md §4).
 
     Raises :class:`pendulab.InvalidInputError` for a state off TS² or non-finite values.
     """

@@ -1,4 +1,4 @@
-"""Symmetry reduction by rotations about the vertical (THEORY.md §3) and the azimuth it reconstructs.
+"""Symmetry reduction by rotations about the vertical (docs/theory.md §3) and the azimuth it reconstructs.
 
 Holm's invariants are taken in unit-length variables (positions in units of l, time in s):
 

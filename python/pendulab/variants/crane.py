@@ -1,4 +1,4 @@
-"""The slewing crane's small sway in closed form (THEORY.md T-7.2), beside the nonlinear model
+"""The slewing crane's small sway in closed form (docs/theory.md T-7.2), beside the nonlinear model
 ``Pendulum(model="slewing")``: in the boom frame (x radial, y tangential; the payload's horizontal
 displacement from the boom tip [m]; ω₀² = g/l)
 

@@ -1,4 +1,4 @@
-"""The swinging spring (elastic pendulum, THEORY.md T-7.4): a bob of mass m [kg] on a spring of
+"""The swinging spring (elastic pendulum, docs/theory.md T-7.4): a bob of mass m [kg] on a spring of
 stiffness k [N/m] and rest length l₀ [m] from a fixed pivot, gravity g [m/s²] along −z. The state is
 unconstrained (r [m], v [m/s]); E and J₃ are conserved and kept by the symplectic Störmer–Verlet
 method (order 2) or its triple jump (order 4). At the 1:1:2 resonance √(k/m) = 2√(g/l), with

@@ -1,5 +1,5 @@
 """The pendulum on a string (model ``"string"``): a rope that can pull but not push. While the string
-is taut the bob moves as on a rod (THEORY.md §2); where the tension T = m(|v|² − g z)/l (T-2.3) would
+is taut the bob moves as on a rod (docs/theory.md §2); where the tension T = m(|v|² − g z)/l (T-2.3) would
 turn negative — for the ideal pendulum at the height z* = 2E/(3 m g) — the string goes slack and the
 bob flies freely on the exact parabola x_e + v_e τ − ½ g τ² e₃ until |x| = l again, when the string
 snaps taut: the outward radial velocity u is removed (``restitution`` e = 0, inelastic, the default;

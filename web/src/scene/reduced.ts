@@ -1,4 +1,4 @@
-// The reduced view (Holm's Figure 2, THEORY §3): in σ-space (σ₁ = z/l, σ₂ = ż/l, σ₃ = |v|²/l²) the J₃
+// The reduced view (Holm's Figure 2, docs/theory.md §3): in σ-space (σ₁ = z/l, σ₂ = ż/l, σ₃ = |v|²/l²) the J₃
 // surface C = σ₃(1 − σ₁²) − σ₂² − σ₆² = 0 and the energy plane H = ½σ₃ + (g/l)σ₁ = const, whose
 // intersection is the orbit; the orbit itself (from the server: pendulab.reduce over one z-period, POST
 // /api/reduced) and the current σ point. Axes are scaled into a box (σ₂ by its span S, σ₃ by its span),

@@ -1,4 +1,4 @@
-//! Elliptic integrals and Jacobi elliptic functions for the exact solution (THEORY.md §4–5:
+//! Elliptic integrals and Jacobi elliptic functions for the exact solution (docs/theory.md §4–5:
 //! T-4.2 uses sn and F, T-4.3 K, T-4.4 Π and am, T-4.5 Π(n|m)).
 //!
 //! ## Conventions
@@ -33,7 +33,7 @@
 //! All integrals reduce to Carlson's symmetric forms R_F, R_D, R_J, R_C (`carlson.rs`, duplication
 //! algorithm, Carlson 1995), in forms chosen so that no terms cancel (`kernel.rs`), and K to a
 //! double-double AGM (`complete.rs`, `dd.rs`); the Jacobi functions invert F (`jacobi.rs`).
-//! We do not use the `ellip` crate (1.2.3) that DESIGN.md names. Run over the golden set of
+//! We do not use the `ellip` crate (1.2.3) that the design notes named. Run over the golden set of
 //! `tests/elliptic.rs`, its complete integrals are fine (≤ 4 ulp), but its incomplete E
 //! loses 37 ulp* at φ = 1.5, m = 1 − 10⁻¹² (the cancelling form DLMF 19.25.9), its
 //! Π(1 − 10⁻¹²; 1.5|1) is wrong in the fourth digit, at m = 1 it returns errors for F and Π

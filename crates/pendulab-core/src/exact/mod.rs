@@ -1,4 +1,4 @@
-//! The exact solution of the ideal spherical pendulum (THEORY.md §4) from any state on TS², for any
+//! The exact solution of the ideal spherical pendulum (docs/theory.md §4) from any state on TS², for any
 //! g: positions and velocities at any time t [s] (negative too) at a cost independent of t, the
 //! turning heights, the parameter m, the z-period and the azimuthal advance per z-period.
 //!
@@ -27,7 +27,7 @@ use generic::{Generic, UnitState};
 use glam::DVec3;
 use planar::{Planar, PlanarMotion};
 
-/// Kind of motion, as named in THEORY T-4.6.
+/// Kind of motion, as named in docs/theory.md T-4.6.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Kind {
     /// J₃ ≠ 0: the bob moves between two heights while the azimuth advances.

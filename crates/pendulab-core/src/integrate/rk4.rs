@@ -2,7 +2,7 @@
 //! ẋ = y, ẏ = f + λ(x, y) x with λ = −(|y|² + x·f)/l², with **no projection**.
 //!
 //! This is the baseline that shows why structure matters: TS² is invariant but unstable for T-2.4
-//! (the constraint error ε = |x|²/l² − 1 obeys ε̈ = 2(g z − |y|²)ε/l², THEORY T-2.4), so the
+//! (the constraint error ε = |x|²/l² − 1 obeys ε̈ = 2(g z − |y|²)ε/l², docs/theory.md T-2.4), so the
 //! truncation error of each step is amplified and |x| − l, x·v, E and J₃ drift.
 
 use super::FixedStep;

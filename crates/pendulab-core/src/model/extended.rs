@@ -1,4 +1,4 @@
-//! The real pendulum on a rigid rod (THEORY.md §7, T-7.1 and T-7.3, and any gravity): the ideal
+//! The real pendulum on a rigid rod (docs/theory.md §7, T-7.1 and T-7.3, and any gravity): the ideal
 //! pendulum plus, each switched on by a non-zero parameter,
 //!
 //! - gravity g along any unit direction d (default d = −e₃): f_g = g d, potential −g d·x;

@@ -13,7 +13,7 @@ use crate::error::Result;
 use crate::state::Params;
 use glam::DVec3;
 
-/// The ideal pendulum (THEORY.md §2).
+/// The ideal pendulum (docs/theory.md §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct IdealPendulum {
     params: Params,

@@ -2,7 +2,7 @@
 //! f(t, x, v) (force per unit mass); the rod's constraint force is added here, once, for all
 //! models and integrators.
 //!
-//! Equations (THEORY.md):
+//! Equations (docs/theory.md):
 //! - T-2.2 Newton with multiplier: ẍ = f + λx with λ = −(|v|² + x·f)/l², the unique λ that keeps
 //!   d²(|x|²)/dt² = 0 on TS². For the ideal pendulum f = −g e₃, so λ = (g z − |v|²)/l².
 //! - T-2.4 Hamiltonian form on T*R³ (y = ẋ): ẋ = y, ẏ = f + λ(x, y) x, the same vector field

@@ -1,4 +1,4 @@
-//! A pendulum whose pivot moves on a prescribed path p(t) (THEORY.md T-7.2). With the bob at
+//! A pendulum whose pivot moves on a prescribed path p(t) (docs/theory.md T-7.2). With the bob at
 //! r = p(t) + x and |x| = l, the pivot-relative position x obeys
 //!
 //!   ẍ = −g e₃ − p̈(t) + λ x  (− c ẋ with optional damping, force −m c ẋ relative to the pivot),

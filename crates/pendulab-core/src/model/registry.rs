@@ -1,7 +1,7 @@
 //! The model registry: every model's name, parameters with units, defaults and limits, and one
 //! builder from named values — what Python, scenario files, the CLI (`pendulab models`) and the web
 //! lab's controls are generated from. All models share length l [m], mass m [kg] and gravity g
-//! [m/s²]; the extra parameters switch on the terms of [`Extended`] (THEORY.md §7).
+//! [m/s²]; the extra parameters switch on the terms of [`Extended`] (docs/theory.md §7).
 
 pub use super::any_model::AnyModel;
 use super::Model;
@@ -179,7 +179,7 @@ const STRING: &[ParamSpec] = &[ParamSpec {
 pub const MODELS: &[ModelSpec] = &[
     ModelSpec {
         name: "ideal",
-        summary: "the ideal spherical pendulum (THEORY §2)",
+        summary: "the ideal spherical pendulum (docs/theory.md §2)",
         interactive: true,
         params: &[],
     },

@@ -1,4 +1,4 @@
-//! The linearised slewing crane (THEORY.md T-7.2) in closed form: small sway of the payload under a
+//! The linearised slewing crane (docs/theory.md T-7.2) in closed form: small sway of the payload under a
 //! boom tip moving on the circle p(t) = R(cos ωt, sin ωt, h), in the boom frame (x radial, y
 //! tangential, both the bob's horizontal displacement from the pivot [m]; ω₀² = g/l):
 //!

@@ -1,4 +1,4 @@
-//! The pendulum on a string (rope) instead of a rod: the ideal pendulum (THEORY.md §2) while the
+//! The pendulum on a string (rope) instead of a rod: the ideal pendulum (docs/theory.md §2) while the
 //! string is taut, a free projectile while it is slack, and an impulsive jerk when it snaps taut.
 //! SI units: l [m], m [kg], g [m/s²], t [s], x [m], v [m/s], T [N], E [J].
 //!
