@@ -13,13 +13,18 @@ import functools
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
 
 from . import io
 from .model import FloatArray, Pendulum, State, models
+
+if TYPE_CHECKING:
+    from collections.abc import Sequence
+
+    from .animate import Movie
 
 UNITS = {
     "t": "s",
@@ -286,6 +291,35 @@ class Trajectory:
         """Writes NetCDF (needs xarray and scipy)."""
         io.write_netcdf(self, path)
         return Path(path)
+
+    def animate(
+        self,
+        path: str | os.PathLike[str],
+        *,
+        fps: float = 30.0,
+        speed: float = 1.0,
+        duration: float | None = None,
+        panels: str | Sequence[str] = ("3d",),
+        size: Any = (1280, 720),
+        **options: Any,
+    ) -> Movie:
+        """Writes a movie of this trajectory to ``path`` (.mp4, .webm or .gif) and returns a
+        :class:`pendulab.animate.Movie` (frames, fps, size, bytes, ...).
+
+        ``fps`` [frames per s of video]; ``speed`` [simulated s per s of video]; ``duration`` [s of
+        video] (default: all of it); ``panels``: any of ``3d``, ``top``, ``z``, ``reduced``, ``veff``;
+        ``size`` [px] (width, height) or "1280x720". Between saved samples the bob moves along the
+        cubic Hermite interpolant of (x, v) (error O(h⁴) in the sample spacing h). ``options``:
+        ``trail`` [s], ``vectors``, ``azimuth``, ``elevation`` [deg], ``progress`` (see
+        :func:`pendulab.animate.render`; ``docs/animate.md``)."""
+        from .animate import from_samples, render
+
+        p = self.pendulum
+        label = self.method if p.is_ideal else f"{p.model} model, {self.method}"
+        motion = from_samples(self.t, self.x, self.v, length=p.length, g=p.g, mass=p.mass, label=label)
+        return render(
+            motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
+        )
 
     def summary(self) -> str:
         """A few lines: span, samples, conservation of E and J₃ (or, for non-conservative models, the

@@ -22,13 +22,18 @@ import shutil
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 import numpy.typing as npt
 
 from .. import io
 from ..model import FloatArray
+
+if TYPE_CHECKING:
+    from collections.abc import Sequence
+
+    from ..animate import Movie
 
 SUMMARY_UNITS = {
     "z_min": "m",
@@ -155,3 +160,36 @@ class EnsembleResult:
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Writes the arrays to ``path``: ``.nc`` (NetCDF) or ``.zarr`` (a Zarr store), atomically."""
         return save(self, path)
+
+    def animate(
+        self,
+        path: str | os.PathLike[str],
+        *,
+        fps: float = 30.0,
+        speed: float = 1.0,
+        duration: float | None = None,
+        panels: str | Sequence[str] = ("3d",),
+        size: Any = (1280, 720),
+        **options: Any,
+    ) -> Movie:
+        """Writes a movie of all N bobs at once to ``path`` (.mp4, .webm or .gif), coloured by row, over
+        the saved times (Hermite-interpolated between them, as :meth:`pendulab.Trajectory.animate`).
+        Panels ``3d`` and ``top`` (the others show one orbit's invariants). Rows that were not
+        integrated (``invalid_rows``) are not drawn. Returns a :class:`pendulab.animate.Movie`."""
+        from ..animate import from_samples, render
+
+        radius = np.linalg.norm(self.x[:, 0, :], axis=-1)
+        length = float(np.nanmax(radius)) if np.isfinite(radius).any() else 1.0
+        params = self.metadata.get("pendulum", {})
+        motion = from_samples(
+            self.t,
+            self.x,
+            self.v,
+            length=length,
+            g=float(params.get("g", 9.81)),
+            mass=float(params.get("mass", 1.0)),
+            label=f"{len(self)} trajectories, {self.metadata.get('method', 'rattle')}",
+        )
+        return render(
+            motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
+        )

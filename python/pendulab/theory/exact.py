@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, overload
+from typing import TYPE_CHECKING, Any, overload
 
 import numpy as np
 
@@ -32,6 +32,12 @@ from .._core import ExactSolution as _ExactSolution
 from .._core import InvalidInputError
 from ..model import FloatArray, Pendulum, State, _frozen
 from ..trajectory import Trajectory
+
+if TYPE_CHECKING:
+    import os
+    from collections.abc import Sequence
+
+    from ..animate import Movie
 
 KINDS = ("generic", "conical", "planar", "planar_rotating", "separatrix", "rest", "great_circle")
 """The kinds of motion (T-4.6), as ``ExactSolution.kind`` names them."""
@@ -237,6 +243,44 @@ class ExactSolution:
             "exact",
             {"kind": self.kind},
             {"steps": 0, "samples": len(times)},
+        )
+
+    def animate(
+        self,
+        path: str | os.PathLike[str],
+        *,
+        t: tuple[float, float] | None = None,
+        fps: float = 30.0,
+        speed: float = 1.0,
+        duration: float | None = None,
+        panels: str | Sequence[str] = ("3d",),
+        size: Any = (1280, 720),
+        **options: Any,
+    ) -> Movie:
+        """Writes a movie of the exact motion over ``t`` = (t_start, t_end) [s] to ``path`` (.mp4,
+        .webm or .gif): every frame is :meth:`state` at its time (T-4.2 … T-4.4), nothing is
+        integrated or interpolated, at any frame rate. ``t`` defaults to (0, speed · duration), or
+        (0, 10 s) without a duration. The other arguments are those of
+        :meth:`pendulab.Trajectory.animate`; returns a :class:`pendulab.animate.Movie`."""
+        from ..animate import from_function, render
+
+        if t is None:
+            t = (0.0, speed * duration if duration is not None else 10.0)
+        try:
+            span = (float(t[0]), float(t[1]))
+        except (TypeError, ValueError, IndexError):
+            raise InvalidInputError(f"t = {t!r} must be a pair (t_start, t_end) of times in s") from None
+
+        def states(times: FloatArray) -> tuple[FloatArray, FloatArray]:
+            x, v = self.state(np.asarray(times, dtype=np.float64))
+            return x[:, None, :], v[:, None, :]
+
+        p = self._pendulum
+        motion = from_function(
+            states, length=p.length, g=p.g, mass=p.mass, span=span, label=f"exact ({self.kind})"
+        )
+        return render(
+            motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
         )
 
     def summary(self) -> str:

@@ -1,0 +1,220 @@
+"""The driver: a :class:`~pendulab.animate.motion.Motion` into a movie file, frame by frame.
+
+Steps, all checks first: the format from the suffix, the size, the panels, the clock (frames,
+speed, limits; :mod:`~pendulab.animate.clock`), the work a GIF may hold; then the states on the
+clock's dense grid (one call: exact solution or Hermite interpolation), the panels' backgrounds, and
+for every frame k the panels' growing curves, a copy of that layer and the overlay (bob, trail, time),
+passed to the encoder (:mod:`~pendulab.animate.encode`). A tqdm bar counts frames for longer movies.
+
+The file is written atomically: the encoder writes a temporary file beside the target, renamed
+onto it only when the movie is complete. Ctrl-C (or any error) stops after the current frame,
+removes the temporary file and re-raises: no half-written movie is ever left behind.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from PIL import Image, ImageDraw
+from tqdm.auto import tqdm
+
+from ..io import atomic_path
+from .canvas import Theme
+from .clock import make_clock
+from .encode import check_size, check_work, format_of, gif_fps, open_encoder, parse_size
+from .layout import PANELS, boxes, panel_names
+from .motion import Motion
+from .scene import Options, Panel, Scene
+
+DENSE_PER_PERIOD = 80
+"""Dense samples per small-oscillation period 2π√(l/g) at least (smooth trails and curves)."""
+
+PROGRESS_AFTER = 150
+"""Movies with more frames than this show a progress bar unless ``progress=False``."""
+
+
+@dataclass(frozen=True)
+class Movie:
+    """What was written: ``path``, ``format`` (mp4, webm, gif), ``frames``, ``fps`` [1/s] (a GIF's
+    is rounded to 100/n), ``size`` (width, height) [px], ``t_start``, ``t_end`` [s] of simulated time
+    in the first and last frame, ``speed`` [simulated s per s of video], ``seconds`` [s] of wall time
+    spent rendering and encoding, ``bytes`` (the file's size)."""
+
+    path: Path
+    format: str
+    frames: int
+    fps: float
+    size: tuple[int, int]
+    t_start: float
+    t_end: float
+    speed: float
+    seconds: float
+    bytes: int
+
+    @property
+    def duration(self) -> float:
+        """Length of the movie [s of video]."""
+        return self.frames / self.fps
+
+    @property
+    def frames_per_second(self) -> float:
+        """Frames rendered and encoded per second of wall time."""
+        return self.frames / self.seconds if self.seconds > 0 else float("inf")
+
+
+class _Plan:
+    """Everything checked and computed before the first frame."""
+
+    def __init__(
+        self,
+        motion: Motion,
+        fmt: str,
+        *,
+        fps: float,
+        speed: float,
+        duration: float | None,
+        panels: str | Sequence[str],
+        size: object,
+        trail: float | None,
+        vectors: bool,
+        azimuth: float,
+        elevation: float,
+    ) -> None:
+        self.size = parse_size(size)
+        check_size(fmt, self.size)
+        self.names = panel_names(panels, motion.bobs)
+        self.fps = gif_fps(float(fps)) if fmt == "gif" else fps
+        self.clock = make_clock(
+            motion.span,
+            fps=self.fps,
+            speed=speed,
+            duration=duration,
+            bobs=motion.bobs,
+            max_dense_dt=motion.small_period / DENSE_PER_PERIOD,
+        )
+        check_work(fmt, self.size, self.clock.frames)
+        trail_s = motion.small_period if trail is None else float(trail)
+        options = Options(max(0.0, trail_s), bool(vectors), float(azimuth), float(elevation))
+        self.theme = Theme()
+        self.scene = Scene(motion, self.clock, options, self.theme)
+        self.panels: list[Panel] = [
+            PANELS[name](self.scene, box)
+            for name, box in zip(self.names, boxes(self.names, *self.size), strict=True)
+        ]
+
+    def frames(self) -> Iterator[Image.Image]:
+        base = Image.new("RGB", self.size, self.theme.background)
+        layer = ImageDraw.Draw(base)
+        for p in self.panels:
+            p.background(layer)
+        for k in range(self.clock.frames):
+            for p in self.panels:
+                p.accumulate(layer, k)
+            frame = base.copy()
+            draw = ImageDraw.Draw(frame)
+            for p in self.panels:
+                p.overlay(draw, k)
+            yield frame
+
+
+def frames(
+    motion: Motion,
+    *,
+    fps: float = 30.0,
+    speed: float = 1.0,
+    duration: float | None = None,
+    panels: str | Sequence[str] = ("3d",),
+    size: object = (1280, 720),
+    trail: float | None = None,
+    vectors: bool = False,
+    azimuth: float = 35.0,
+    elevation: float = 18.0,
+) -> Iterator[Image.Image]:
+    """The frames of the movie :func:`render` would write, as RGB Pillow images (no file)."""
+    plan = _Plan(
+        motion,
+        "mp4",
+        fps=fps,
+        speed=speed,
+        duration=duration,
+        panels=panels,
+        size=size,
+        trail=trail,
+        vectors=vectors,
+        azimuth=azimuth,
+        elevation=elevation,
+    )
+    return plan.frames()
+
+
+def render(
+    motion: Motion,
+    path: str | os.PathLike[str],
+    *,
+    fps: float = 30.0,
+    speed: float = 1.0,
+    duration: float | None = None,
+    panels: str | Sequence[str] = ("3d",),
+    size: object = (1280, 720),
+    trail: float | None = None,
+    vectors: bool = False,
+    azimuth: float = 35.0,
+    elevation: float = 18.0,
+    progress: bool | None = None,
+) -> Movie:
+    """Writes the movie of ``motion`` to ``path`` (.mp4, .webm or .gif) and describes it.
+
+    ``fps`` [frames/s of video]; ``speed`` [simulated s per s of video]; ``duration`` [s of video]
+    (default: the whole span of the data); ``panels``: names from ``3d``, ``top``, ``z``,
+    ``reduced``, ``veff`` (a list or "3d,top,z"); ``size``: (width, height) [px] or "1280x720";
+    ``trail`` [s] of fading trail (default one small-oscillation period 2π√(l/g); 0: none);
+    ``vectors``: draw the velocity; ``azimuth``, ``elevation`` [deg]: the 3-D camera. Raises
+    :class:`~pendulab.InvalidInputError` naming the bad value before any work is done.
+    """
+    fmt = format_of(path)
+    plan = _Plan(
+        motion,
+        fmt,
+        fps=fps,
+        speed=speed,
+        duration=duration,
+        panels=panels,
+        size=size,
+        trail=trail,
+        vectors=vectors,
+        azimuth=azimuth,
+        elevation=elevation,
+    )
+    clock = plan.clock
+    show = clock.frames > PROGRESS_AFTER if progress is None else bool(progress)
+    target = Path(path)
+    start = time.perf_counter()
+    with atomic_path(target) as tmp:
+        encoder = open_encoder(fmt, tmp, plan.size, plan.fps, plan.theme)
+        try:
+            bar = tqdm(total=clock.frames, unit="frame", desc=target.name, leave=False, disable=not show)
+            with bar:
+                for frame in plan.frames():
+                    encoder.write(frame)
+                    bar.update(1)
+        except BaseException:
+            encoder.abort()
+            raise
+        encoder.close()
+    seconds = time.perf_counter() - start
+    return Movie(
+        target,
+        fmt,
+        clock.frames,
+        plan.fps,
+        plan.size,
+        clock.t0,
+        clock.t_last,
+        clock.speed,
+        seconds,
+        target.stat().st_size,
+    )

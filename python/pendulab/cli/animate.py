@@ -1,0 +1,142 @@
+"""``pendulab animate``: a scenario as a movie (MP4, WebM or GIF), integrated or, with ``--exact``,
+from the exact solution (every frame exact, docs/theory.md §4). Registered on :data:`pendulab.cli.app`;
+SI units (times in s), exit code 0 on success, 2 on a user error (one ``error: …`` line), 130 on
+Ctrl-C (no file is left behind: the movie is renamed into place only when complete). Options and
+panels: ``docs/animate.md``; the command: ``docs/cli.md``.
+"""
+
+from __future__ import annotations
+
+import os
+import warnings
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from ..animate.clock import make_clock
+from ..animate.encode import check_size, check_work, format_of, gif_fps, parse_size
+from ..animate.layout import panel_names
+from ..animate.movie import Movie
+from ..scenario import ScenarioError, load_scenario
+from ..theory.exact import exact
+from ..trajectory import Trajectory
+from .common import EXIT_INTERRUPTED, _fail, _say, _user_errors, app
+
+
+def _check_movie_path(out: Path) -> str:
+    """The format of --out, and that its directory can be written (before any work)."""
+    fmt = format_of(out)
+    if out.is_dir():
+        _fail(f"--out {str(out)!r} is a directory; give a file name ending in .mp4, .webm or .gif")
+    parent = out.resolve().parent
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+        _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")
+    return fmt
+
+
+def _report(movie: Movie) -> str:
+    w, h = movie.size
+    return (
+        f"wrote {movie.path}: {movie.frames} frames, {movie.duration:.3g} s at {movie.fps:.3g} frames/s, "
+        f"{w}x{h}, t = {movie.t_start:g} .. {movie.t_end:.6g} s, {movie.bytes / 1e6:.2f} MB "
+        f"({movie.frames_per_second:.0f} frames/s)"
+    )
+
+
+@app.command(short_help="Make a movie of a scenario (.mp4, .webm, .gif).")
+def animate(
+    scenario: Annotated[
+        Path,
+        typer.Argument(
+            metavar="SCENARIO", help="Scenario file (TOML); see docs/scenarios.md.", show_default=False
+        ),
+    ],
+    out: Annotated[
+        Path,
+        typer.Option("--out", "-o", help="The movie: .mp4 (H.264), .webm (VP9) or .gif.", show_default=False),
+    ],
+    exact_: Annotated[
+        bool,
+        typer.Option(
+            "--exact",
+            help="Draw the exact solution (ideal pendulum only): every frame exact, nothing integrated; "
+            "the movie starts at t = 0 and runs to the scenario's t_end.",
+        ),
+    ] = False,
+    panels: Annotated[str, typer.Option(help="Comma-separated panels: 3d, top, z, reduced, veff.")] = "3d",
+    fps: Annotated[float, typer.Option(help="Frames per second of video (GIF: 100/n, at most 50).")] = 30.0,
+    speed: Annotated[float, typer.Option(help="Simulated seconds per second of video.")] = 1.0,
+    duration: Annotated[
+        float | None,
+        typer.Option(help="Seconds of video (default: the whole run at this speed).", show_default=False),
+    ] = None,
+    size: Annotated[str, typer.Option(help="WIDTHxHEIGHT in pixels (even for .mp4 and .webm).")] = "1280x720",
+    trail: Annotated[
+        float | None,
+        typer.Option(
+            help="Seconds of fading trail (default: one period 2π√(l/g); 0: none).", show_default=False
+        ),
+    ] = None,
+    vectors: Annotated[bool, typer.Option("--vectors", help="Draw the velocity at the bob.")] = False,
+    t_end: Annotated[
+        float | None,
+        typer.Option("--t-end", help="End time in s; replaces the file's t_end.", show_default=False),
+    ] = None,
+    progress: Annotated[
+        bool | None,
+        typer.Option("--progress/--no-progress", help="Progress bars on stderr.", show_default=False),
+    ] = None,
+    quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
+) -> None:
+    """Make a movie of a scenario. Everything is checked before the run (format, size, panels, the
+    number of frames); Ctrl-C stops, leaves no file and exits with code 130."""
+    with _user_errors():
+        fmt = _check_movie_path(out)
+        frame_size = parse_size(size)
+        check_size(fmt, frame_size)
+        panel_names(panels, 1)
+        sc = load_scenario(scenario).with_overrides(t_end=t_end)
+        sim = sc.spec.simulation
+        if sc.spec.pendulum.model == "spring":
+            raise ScenarioError(
+                str(scenario),
+                "the 'spring' model is a swinging spring that leaves the sphere; "
+                "movies take pendulum scenarios",
+            )
+        # the movie clock over the run's span: fps, speed, duration and the frame limits, before the run
+        span = (0.0, sim.t_end - sim.t0) if exact_ else (sim.t0, sim.t_end)
+        clock = make_clock(span, fps=gif_fps(fps) if fmt == "gif" else fps, speed=speed, duration=duration)
+        check_work(fmt, frame_size, clock.frames)
+        options = {
+            "fps": fps,
+            "speed": speed,
+            "duration": duration,
+            "panels": panels,
+            "size": frame_size,
+            "trail": trail,
+            "vectors": vectors,
+            "progress": progress,
+        }
+        if exact_:
+            sol = exact(sc.pendulum(), sc.initial_state())
+            if not quiet:
+                _say(
+                    f"exact solution of {scenario} ({sol.kind}), t = 0 .. {sim.t_end - sim.t0:g} s", err=True
+                )
+            movie = sol.animate(out, t=(0.0, sim.t_end - sim.t0), **options)  # type: ignore[arg-type]
+        else:
+            if not quiet:
+                _say(f"running {scenario} ({sim.method}, t = {sim.t0:g} .. {sim.t_end:g} s)", err=True)
+            with warnings.catch_warnings():
+                warnings.filterwarnings("ignore", message="simulation interrupted", category=RuntimeWarning)
+                tr = sc.run(progress=progress)
+            assert isinstance(tr, Trajectory)
+            if tr.interrupted:
+                _say(f"interrupted (Ctrl-C) at t = {tr.t[-1]:g} s; no movie written", err=True)
+                raise typer.Exit(EXIT_INTERRUPTED)
+            movie = tr.animate(out, **options)  # type: ignore[arg-type]
+        if not quiet:
+            _say(_report(movie))

@@ -1,0 +1,69 @@
+"""``pendulab animate``: a scenario to a movie in one command; bad options fail before any work with
+one ``error:`` line and exit code 2."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from conftest import SCENARIOS
+from PIL import Image
+from typer.testing import CliRunner
+
+from pendulab import cli
+
+pytest.importorskip("imageio_ffmpeg")
+
+
+def invoke(*args: str) -> tuple[int, str, str]:
+    result = CliRunner().invoke(cli.app, list(args))
+    return result.exit_code, result.stdout, result.stderr
+
+
+def test_animate_exact_gif_with_panels(tmp_path):
+    out = tmp_path / "rosette.gif"
+    code, stdout, _ = invoke(
+        "animate", str(SCENARIOS / "rosette.toml"), "--out", str(out), "--exact", "--panels", "3d,top,z",
+        "--size", "320x180", "--fps", "20", "--duration", "1.5",
+    )  # fmt: skip
+    assert code == 0, stdout
+    assert "wrote" in stdout and "30 frames" in stdout
+    with Image.open(out) as im:
+        assert im.size == (320, 180) and im.n_frames == 30
+
+
+def test_animate_integrated_mp4(tmp_path):
+    out = tmp_path / "damped.mp4"
+    code, stdout, _ = invoke(
+        "animate", str(SCENARIOS / "damped.toml"), "--out", str(out), "--t-end", "1.0", "--size", "160x120",
+        "--fps", "10", "--panels", "3d,veff", "--quiet",
+    )  # fmt: skip
+    assert code == 0 and stdout == ""
+    assert out.stat().st_size > 0
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [
+        (["--out", "m.avi"], "unknown movie format '.avi'"),
+        (["--out", "m.mp4", "--size", "1281x720"], "size = 1281x720 pixels: mp4 .* even"),
+        (["--out", "m.mp4", "--size", "wide"], "size = 'wide'"),
+        (["--out", "m.mp4", "--panels", "3d,sky"], "unknown panel 'sky'"),
+        (["--out", "m.mp4", "--fps", "-1"], "fps = -1.0 frames/s"),
+        (["--out", "m.mp4", "--duration", "500"], "past the end of the data at t = 100 s"),
+    ],
+)
+def test_animate_refuses_bad_options(tmp_path, monkeypatch, args, message):
+    monkeypatch.chdir(tmp_path)
+    code, _, stderr = invoke("animate", str(SCENARIOS / "rosette.toml"), *args)
+    assert code == 2
+    assert stderr.startswith("error: ") and stderr.count("\n") == 1, stderr  # before any work
+    assert re.search(message, stderr), stderr
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_animate_refuses_the_exact_solution_of_a_damped_pendulum(tmp_path):
+    code, _, stderr = invoke(
+        "animate", str(SCENARIOS / "damped.toml"), "--out", str(tmp_path / "m.mp4"), "--exact"
+    )
+    assert code == 2 and "exact solution exists only for the ideal pendulum" in stderr
