@@ -8,6 +8,8 @@ models' own parameters in the units :func:`models` lists.
 
 from __future__ import annotations
 
+import math
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
@@ -19,11 +21,23 @@ from ._core import InvalidInputError, check_model, project_state, state_on_ts2
 from ._core import diagnostics as _diagnostics
 from ._core import models as _models
 from ._core import state_from_angles as _state_from_angles
+from .display import Row, html_table, number, vector
 
 if TYPE_CHECKING:
     from ._core import ModelInfo
 
 FloatArray = npt.NDArray[np.float64]
+
+
+def _real(name: str, value: Any) -> float:
+    """A real number (not a bool or a string), as a float; an InvalidInputError naming it otherwise."""
+    if isinstance(value, bool | str | bytes) or value is None:
+        kind = type(value).__name__
+        raise InvalidInputError(f"{name} must be a real number, got {kind} {str(value)[:40]!r}")
+    try:
+        return float(value)
+    except (TypeError, ValueError, OverflowError) as e:
+        raise InvalidInputError(f"{name} must be a real number, got {str(value)[:40]!r}") from e
 
 
 def _vec3(name: str, a: Any) -> FloatArray:
@@ -84,6 +98,31 @@ class State:
     def as_array(self) -> FloatArray:
         """The state as one array (x₁, x₂, x₃, v₁, v₂, v₃) [m, m/s]."""
         return np.concatenate([self.x, self.v])
+
+    def angles_deg(self) -> tuple[float, float]:
+        """θ and φ of :meth:`angles` in degrees."""
+        theta, phi = self.angles()
+        return math.degrees(theta), math.degrees(phi)
+
+    def __repr__(self) -> str:
+        theta, phi = self.angles_deg()
+        moved = "" if self.projection is None else f", projected by {number(self.projection[0], 3)} m"
+        return (
+            f"State(x={vector(self.x)} m, v={vector(self.v)} m/s; "
+            f"θ={number(theta, 6)}°, φ={number(phi, 6)}°{moved})"
+        )
+
+    def _repr_html_(self) -> str:
+        theta, phi = self.angles_deg()
+        rows: list[Row] = [
+            ("position x", vector(self.x), "m"),
+            ("velocity v", vector(self.v), "m/s"),
+            ("polar angle θ (from the downward vertical)", theta, "°"),
+            ("azimuth φ", phi, "°"),
+        ]
+        if self.projection is not None:
+            rows.append(("moved onto TS² by |Δx|, |Δv|", vector(self.projection, 3), "m, m/s"))
+        return html_table("State on TS²", rows)
 
 
 class Pendulum:
@@ -244,6 +283,27 @@ class Pendulum:
             model += f", force={self._force!r}"
         return f"Pendulum(length={self._length!r}, g={self._g!r}, mass={self._mass!r}{model}{extras})"
 
+    def _repr_html_(self) -> str:
+        rows: list[Row] = [
+            ("model", self.model, ""),
+            ("length l", self._length, "m"),
+            ("gravity g", self._g, "m/s²"),
+            ("mass m", self._mass, "kg"),
+        ]
+        units = {p["name"]: p["unit"] for m in _models() if m["name"] == self.model for p in m["params"]}
+        rows += [(k, v, units.get(k, "")) for k, v in self._extra.items()]
+        if self._g != 0.0:
+            omega0 = math.sqrt(abs(self._g) / self._length)
+            rows += [
+                ("ω₀ = √(|g|/l)", omega0, "rad/s"),
+                ("small-swing period 2π/ω₀", 2.0 * math.pi / omega0, "s"),
+            ]
+        if self._pivot is not None:
+            rows.append(("pivot samples", len(self._pivot[0]), ""))
+        if self._force is not None:
+            rows.append(("user force", repr(self._force), "N"))
+        return html_table("Pendulum", rows)
+
     def state(self, x: Any, v: Any, *, project: bool = False) -> State:
         """State from Cartesian position x [m] and velocity v [m/s] (3 numbers each).
 
@@ -259,12 +319,51 @@ class Pendulum:
         return State(_frozen(xs), _frozen(vs))
 
     def state_from_angles(
-        self, theta: float, phi: float = 0.0, theta_dot: float = 0.0, phi_dot: float = 0.0
+        self,
+        theta: float | None = None,
+        phi: float | None = None,
+        theta_dot: float | None = None,
+        phi_dot: float | None = None,
+        *,
+        theta_deg: float | None = None,
+        phi_deg: float | None = None,
+        theta_dot_deg: float | None = None,
+        phi_dot_deg: float | None = None,
     ) -> State:
-        """State at polar angle θ [rad] from the downward vertical, azimuth φ [rad], rates θ̇, φ̇ [rad/s]."""
-        x, v = _state_from_angles(
-            *self._core_args(), float(theta), float(phi), float(theta_dot), float(phi_dot)
-        )
+        """State at polar angle θ [rad] from the downward vertical, azimuth φ [rad], rates θ̇, φ̇ [rad/s].
+
+        Radians are the default; each angle may be given in degrees instead (``theta_deg`` [°],
+        ``phi_deg`` [°], ``theta_dot_deg``, ``phi_dot_deg`` [°/s]), never both ways. θ (or θ in degrees)
+        is required; the others default to 0. A θ beyond 2π rad is allowed but warned about, since
+        it is most often meant in degrees (``theta=60`` is 60 rad, not 60°)."""
+        values = []
+        for name, rad, deg in (
+            ("theta", theta, theta_deg),
+            ("phi", phi, phi_deg),
+            ("theta_dot", theta_dot, theta_dot_deg),
+            ("phi_dot", phi_dot, phi_dot_deg),
+        ):
+            if rad is not None and deg is not None:
+                raise InvalidInputError(
+                    f"give {name} either in radians ({name}={rad!r}) or in degrees "
+                    f"({name}_deg={deg!r}), not both"
+                )
+            if deg is not None:
+                values.append(math.radians(_real(f"{name}_deg", deg)))
+            elif rad is not None:
+                values.append(_real(name, rad))
+            elif name == "theta":
+                raise InvalidInputError("give the polar angle: theta [rad] or theta_deg [°]")
+            else:
+                values.append(0.0)
+        if theta is not None and abs(values[0]) > 2.0 * math.pi:
+            warnings.warn(
+                f"theta = {theta!r} rad is more than 2π; angles are in radians (use theta_deg={theta!r} "
+                "for degrees)",
+                UserWarning,
+                stacklevel=2,
+            )
+        x, v = _state_from_angles(*self._core_args(), *values)
         return State(_frozen(x), _frozen(v))
 
     def diagnostics(self, x: Any, v: Any, t: Any = None) -> dict[str, FloatArray]:

@@ -19,6 +19,7 @@ import numpy as np
 import numpy.typing as npt
 
 from . import io
+from .display import Row, html_table, number, relative_drift
 from .model import FloatArray, Pendulum, State, models
 
 if TYPE_CHECKING:
@@ -320,6 +321,55 @@ class Trajectory:
         return render(
             motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
         )
+
+    def _key_numbers(self) -> list[Row]:
+        p, e, j = self.pendulum, self.energy, self.j3
+        described = f"{p.model}: l = {number(p.length)} m, g = {number(p.g)} m/s², m = {number(p.mass)} kg"
+        rows: list[Row] = [
+            ("pendulum", described, ""),
+            ("method", self.method, ""),
+            ("time span", f"{number(self.t[0])} … {number(self.t[-1])}", "s"),
+            ("samples", len(self), ""),
+            ("steps", self.stats.get("steps", 0), ""),
+        ]
+        if len(self) and self.is_conservative and self.taut is None:
+            scale = p.mass * abs(p.g) * p.length if p.g != 0.0 else max(abs(float(e[0])), 1e-300)
+            rows.append(("max |E − E₀| / (m|g|l)", number(relative_drift(e, scale), 3), ""))
+        if len(self):
+            rows.append(("max |J₃ − J₃₀|", number(relative_drift(j, 1.0), 3), "kg m²/s"))
+            on = slice(None) if self.taut is None else self.taut
+            radius = np.max(np.abs(self.constraint_error[on]), initial=0.0)
+            rows.append(("max ||x| − l| / l", number(radius, 3), ""))
+        if self.interrupted:
+            rows.append(("interrupted", "yes (Ctrl-C)", ""))
+        return rows
+
+    def __repr__(self) -> str:
+        if len(self) == 0:
+            return f"Trajectory({self.method}, no samples)"
+        rows = {name: value for name, value, _ in self._key_numbers()}
+        drift = rows.get("max |E − E₀| / (m|g|l)")
+        return (
+            f"Trajectory({self.method}, {len(self)} samples, t = {number(self.t[0])} … {number(self.t[-1])} s"
+            + (f", ΔE/(m|g|l) = {drift}" if drift is not None else "")
+            + f", ΔJ₃ = {rows['max |J₃ − J₃₀|']} kg m²/s"
+            + (", INTERRUPTED" if self.interrupted else "")
+            + ")"
+        )
+
+    def _repr_html_(self) -> str:
+        if len(self) == 0:
+            return html_table("Trajectory", [("samples", 0, "")])
+        note = "tr.summary() for more; tr.plot() to see it"
+        return html_table("Trajectory", self._key_numbers(), note=note)
+
+    def plot(self, path: str | os.PathLike[str] | None = None, **kwargs: Any) -> Any:
+        """An overview figure: the path on the sphere, z(t), and the drift of E and J₃ (log scale,
+        float64 floor marked) — :func:`pendulab.plot.overview.plot_overview`; saved atomically to
+        ``path`` if given (.png, .svg, .pdf). Needs matplotlib. Returns the Figure."""
+        from .plot.overview import plot_overview
+
+        return plot_overview(self, path, **kwargs)
 
     def summary(self) -> str:
         """A few lines: span, samples, conservation of E and J₃ (or, for non-conservative models, the

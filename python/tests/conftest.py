@@ -3,12 +3,19 @@
 
 from __future__ import annotations
 
+import signal
 from pathlib import Path
 
 import numpy as np
 import pytest
 
 import pendulab as pl
+
+# Ctrl-C tests raise SIGINT in this process and in child processes. A shell that starts pytest in the
+# background or under nohup ignores SIGINT (SIG_IGN is inherited, and Python then installs no
+# KeyboardInterrupt handler): restore Python's handler, so that the tests do not depend on how they
+# were started. Children started with exec then get the default disposition too.
+signal.signal(signal.SIGINT, signal.default_int_handler)
 
 REPO = Path(__file__).resolve().parents[2]
 SCENARIOS = REPO / "examples" / "scenarios"

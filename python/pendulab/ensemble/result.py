@@ -28,6 +28,7 @@ import numpy as np
 import numpy.typing as npt
 
 from .. import io
+from ..display import Row, html_table, number
 from ..model import FloatArray
 
 if TYPE_CHECKING:
@@ -151,6 +152,38 @@ class EnsembleResult:
     def final_v(self) -> FloatArray:
         """Final velocities (N, 3) [m/s]."""
         return self.v[:, -1, :]
+
+    def _key_numbers(self) -> list[Row]:
+        n_save = int(self.t.shape[0])
+        rows: list[Row] = [
+            ("trajectories", len(self), ""),
+            ("saved times", n_save, ""),
+            ("time span", f"{number(self.t[0])} … {number(self.t[-1])}" if n_save else "—", "s"),
+            ("steps", self.steps, ""),
+        ]
+        if len(self.invalid_rows):
+            rows.append(("invalid start rows (NaN results)", len(self.invalid_rows), ""))
+        if self.summary is not None and "energy_drift" in self.summary:
+            drift = number(np.nanmax(self.summary["energy_drift"]), 3)
+            rows.append(("largest energy drift / (|g| l)", drift, ""))
+        if self.settle_time is not None:
+            rows.append(("median settle time", number(np.nanmedian(self.settle_time)), "s"))
+        if self.interrupted:
+            rows.append(("interrupted", "yes (Ctrl-C)", ""))
+        return rows
+
+    def __repr__(self) -> str:
+        n_save = int(self.t.shape[0])
+        span = f", t = {number(self.t[0])} … {number(self.t[-1])} s" if n_save else ""
+        return (
+            f"EnsembleResult({len(self)} trajectories, {n_save} saved times{span}, {self.steps} steps"
+            + (", INTERRUPTED" if self.interrupted else "")
+            + ")"
+        )
+
+    def _repr_html_(self) -> str:
+        note = "res.x, res.v (N, n_save, 3); res.to_xarray()"
+        return html_table("Ensemble", self._key_numbers(), note=note)
 
     def to_xarray(self) -> Any:
         """An ``xarray.Dataset`` with dims (trajectory, time, axis), units as attributes

@@ -30,6 +30,7 @@ import numpy as np
 
 from .. import io
 from .._core import InvalidInputError, __version__
+from ..display import Row, html_table, number
 from ..model import FloatArray
 from .design import AXES, Design
 
@@ -95,6 +96,29 @@ class SweepResult:
             assert self.path is not None
             self._columns = _read_columns(self.path)
         return self._columns
+
+    def __repr__(self) -> str:
+        where = f", at {str(self.path)!r}" if self.path is not None else ""
+        return (
+            f"SweepResult({self.design.n} points ({self.design.kind}), quantities {list(self.quantities)}"
+            f"{where})"
+        )
+
+    def _repr_html_(self) -> str:
+        rows: list[Row] = [
+            ("points", self.design.n, ""),
+            ("design", self.design.kind, ""),
+            ("quantities", ", ".join(self.quantities), ""),
+        ]
+        rows += [(f"column {name}", "", unit) for name, unit in self.units.items()]
+        if self.path is not None:
+            rows.append(("on disk", str(self.path), ""))
+        for key in ("computed", "skipped", "backend"):
+            if key in self.stats:
+                rows.append((key, str(self.stats[key]), ""))
+        if "seconds" in self.stats:
+            rows.append(("wall time", number(self.stats["seconds"]), "s"))
+        return html_table("Sweep", rows, note="sw['column'], sw.to_xarray()")
 
     def __len__(self) -> int:
         return self.design.n

@@ -23,6 +23,7 @@ For g < 0 the solution is the mirror image z → −z of the one with gravity |g
 from __future__ import annotations
 
 import math
+import os
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, overload
 
@@ -30,6 +31,7 @@ import numpy as np
 
 from .._core import ExactSolution as _ExactSolution
 from .._core import InvalidInputError
+from ..display import Row, html_table, number
 from ..model import FloatArray, Pendulum, State, _frozen
 from ..trajectory import Trajectory
 
@@ -302,7 +304,48 @@ class ExactSolution:
         return "\n".join(lines)
 
     def __repr__(self) -> str:
-        return f"ExactSolution(kind={self.kind!r}, pendulum={self._pendulum!r})"
+        tz = "" if self.period_z is None else f", T_z = {number(self.period_z, 9)} s"
+        return f"ExactSolution(kind={self.kind!r}{tz}, pendulum={self._pendulum!r})"
+
+    def _repr_html_(self) -> str:
+        p = self._pendulum
+        rows: list[Row] = [
+            ("pendulum", f"l = {number(p.length)} m, g = {number(p.g)} m/s², m = {number(p.mass)} kg", ""),
+            ("kind (T-4.6)", self.kind, ""),
+            (
+                "turning heights z₁, z₂" + (", z₃" if len(self.turning_heights) == 3 else ""),
+                ", ".join(number(z, 9) for z in self.turning_heights),
+                "m",
+            ),
+            ("modulus m = k²", self.modulus, ""),
+            ("z-period T_z", number(self.period_z, 12), "s"),
+            ("azimuthal advance Δφ per T_z", number(self.azimuth_advance, 12), "rad"),
+            ("rotation number W = Δφ/2π", number(self.rotation_number, 12), ""),
+        ]
+        return html_table("Exact solution", rows, note="sol.state(t), sol.phases(), sol.plot()")
+
+    def default_times(self, points: int = 2000) -> FloatArray:
+        """``points`` times [s] covering three z-periods (or 10/ω₀ when there is no period, 10 s when
+        g = 0): what :meth:`plot` draws by default."""
+        if self.period_z is not None and math.isfinite(self.period_z) and self.period_z > 0.0:
+            span = 3.0 * self.period_z
+        elif self.omega0 > 0.0:
+            span = 10.0 / self.omega0
+        else:
+            span = 10.0
+        return np.linspace(0.0, span, points)
+
+    def plot(self, t: Any = None, path: str | os.PathLike[str] | None = None, **kwargs: Any) -> Any:
+        """The overview figure of the exact motion at the times ``t`` [s] (default
+        :meth:`default_times`): the path on the sphere, z(t) between the turning heights z₁, z₂
+        (dashed), and the drift of E and J₃ — which for the exact solution stays at rounding level.
+        Saved atomically to ``path`` if given. Needs matplotlib. Returns the Figure."""
+        from ..plot.overview import plot_overview
+
+        times = self.default_times() if t is None else t
+        kwargs.setdefault("turning_heights", self.turning_heights[:2])
+        kwargs.setdefault("title", f"exact solution ({self.kind})")
+        return plot_overview(self.trajectory(times), path, **kwargs)
 
 
 def exact(pendulum: Pendulum, state: State) -> ExactSolution:

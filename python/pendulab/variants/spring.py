@@ -18,6 +18,7 @@ import numpy as np
 
 from .. import io
 from .._core import InvalidInputError, spring_simulate
+from ..display import Row, html_table, number, relative_drift
 from ..model import FloatArray
 
 
@@ -127,6 +128,33 @@ class SpringTrajectory:
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Writes the run atomically; the format from the suffix (.csv, .parquet, .nc)."""
         return io.save(self, path)  # type: ignore[arg-type]
+
+    def __repr__(self) -> str:
+        if len(self) == 0:
+            return "SpringTrajectory(no samples)"
+        return (
+            f"SpringTrajectory({len(self)} samples, t = {number(self.t[0])} … {number(self.t[-1])} s, "
+            f"r in [{number(self.r.min())}, {number(self.r.max())}] m"
+            + (", INTERRUPTED" if self.interrupted else "")
+            + ")"
+        )
+
+    def _repr_html_(self) -> str:
+        sp = self.spring
+        rows: list[Row] = [
+            ("stiffness k", sp.k_over_m * sp.mass, "N/m"),
+            ("rest length l₀", sp.rest_length, "m"),
+            ("equilibrium length l", sp.equilibrium_length, "m"),
+            ("samples", len(self), ""),
+        ]
+        if len(self):
+            scale = max(abs(float(self.energy[0])), sp.mass * abs(sp.g) * sp.equilibrium_length, 1e-300)
+            rows += [
+                ("time span", f"{number(self.t[0])} … {number(self.t[-1])}", "s"),
+                ("max |E − E₀| / (m|g|l)", number(relative_drift(self.energy, scale), 3), ""),
+                ("max |J₃ − J₃₀|", number(relative_drift(self.j3, 1.0), 3), "kg m²/s"),
+            ]
+        return html_table("Swinging spring run", rows, note="tr.summary() for more")
 
     def summary(self) -> str:
         """A few lines: parameters, span, conservation of E and J₃ (both invariants, T-7.4), the
