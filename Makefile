@@ -10,7 +10,7 @@ HOST ?= 127.0.0.1
 PORT ?= 8000
 STATIC := python/pendulab/server/static
 
-.PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-web test-e2e bench \
+.PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers golden clean
 
 $(VENV)/.deps: python/pyproject.toml
@@ -19,7 +19,7 @@ $(VENV)/.deps: python/pyproject.toml
 	$(PY) -m pip install --quiet "maturin>=1.7,<2" "numpy>=1.26" "typer>=0.12" "tqdm>=4.66" "pydantic>=2.6" \
 		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "scipy>=1.11" "pyarrow>=15" "xarray>=2024.1" "zarr>=2.18" "matplotlib>=3.8" \
 		"fastapi>=0.115" "uvicorn>=0.30" "websockets>=13" "httpx>=0.27" "httpx2>=2" "dask[distributed]>=2024.1" \
-		"imageio-ffmpeg>=0.5" "pillow>=10.1"
+		"imageio-ffmpeg>=0.5" "pillow>=10.1" "nbclient>=0.10" "nbformat>=5.10" "ipykernel>=6.29"
 	touch $@
 
 venv: $(VENV)/.deps
@@ -78,6 +78,10 @@ test-rust:
 
 test-python: build
 	$(VENV)/bin/pytest python/tests -q
+
+# The guided tour alone (docs/tour/*.ipynb run by nbclient; also part of test-python): about 85 s.
+test-tour: build
+	$(VENV)/bin/pytest python/tests/test_tour.py -q
 
 test: lint test-rust test-python test-web test-e2e
 
