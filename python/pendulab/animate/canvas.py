@@ -186,11 +186,11 @@ class Axes:
             y0, y1 = y0 - 1.0, y0 + 1.0
         sx = self.inner.width / (x1 - x0)
         sy = self.inner.height / (y1 - y0)
-        if equal:
+        if equal:  # one scale for both axes: the plot area shrinks to the data's shape, centred
             sx = sy = min(sx, sy)
-            cx, cy = (x0 + x1) / 2, (y0 + y1) / 2
-            hx, hy = self.inner.width / (2 * sx), self.inner.height / (2 * sy)
-            x0, x1, y0, y1 = cx - hx, cx + hx, cy - hy, cy + hy
+            w, h = round((x1 - x0) * sx), round((y1 - y0) * sy)
+            i = self.inner
+            self.inner = Box(i.left + (i.width - w) // 2, i.top + (i.height - h) // 2, w, h)
         self.xlim, self.ylim, self.sx, self.sy = (x0, x1), (y0, y1), sx, sy
 
     def to_pixels(self, x: FloatArray, y: FloatArray) -> FloatArray:

@@ -3,7 +3,8 @@
 ``3d`` (sphere, rod, bob, trail), ``top`` (the rosette), ``z`` (z(t)), ``reduced`` (Holm's reduced
 orbit), ``veff`` (the effective potential with the energy line). With the 3-D panel and others, the
 3-D panel fills the left part of the frame (a square, at most 60 % of the width) and the others
-share the right part in a column; without it the panels share the frame in a grid.
+share the right part (in a column, or a 2 × 2 grid for four); without it the panels share the frame in
+a grid.
 """
 
 from __future__ import annotations
@@ -59,12 +60,13 @@ def boxes(names: Sequence[str], width: int, height: int) -> list[Box]:
         out[i] = Box(0, 0, w3, height)
         rest.remove(i)
         left = w3
-        rows, cols = len(rest), 1
+        cols = 2 if len(rest) >= 4 else 1
+        rows = math.ceil(len(rest) / cols)
     else:
         cols = math.ceil(math.sqrt(n))
         rows = math.ceil(n / cols)
     cw, rh = (width - left) // cols, height // rows
     for j, i in enumerate(rest):
-        r, c = divmod(j, cols) if cols > 1 else (j, 0)
+        r, c = divmod(j, cols)
         out[i] = Box(left + c * cw, r * rh, cw, rh)
     return [b for b in out if b is not None]

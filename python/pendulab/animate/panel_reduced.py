@@ -49,7 +49,7 @@ class ReducedPanel(Panel):
         lo, hi = np.nanmin(self.sigma, axis=0), np.nanmax(self.sigma, axis=0)
         half = np.maximum(0.6 * (hi - lo), 0.08 * scales)
         self.centre, self.half = (lo + hi) / 2.0, half
-        self.camera = Camera(box.inset(10, 22, 10, 0), 1.5, azimuth_deg=-55.0, elevation_deg=22.0)
+        self.camera = Camera(box.inset(6, 40, 6, 0), 1.7, azimuth_deg=-55.0, elevation_deg=22.0)
         self.pixels = self.camera.project(self._unit(self.sigma))
 
     def _unit(self, sigma: FloatArray) -> FloatArray:
@@ -95,9 +95,15 @@ class ReducedPanel(Panel):
             draw.text(tuple(b), label, fill=theme.text, font=small)
         draw.text(
             (self.box.left + 6, self.box.top + 4),
-            "reduced orbit (Holm, Fig. 2): σ₁ = z/l, σ₂ = ż/l, σ₃ = |v|²/l²",
+            "reduced orbit (Holm, Fig. 2)",
             fill=theme.text,
             font=font(14),
+        )
+        draw.text(
+            (self.box.left + 6, self.box.top + 22),
+            "σ₁ = z/l, σ₂ = ż/l, σ₃ = |v|²/l²",
+            fill=theme.axes,
+            font=small,
         )
 
     def accumulate(self, draw: ImageDraw.ImageDraw, k: int) -> None:
