@@ -79,7 +79,7 @@ test-rust:
 test-python: build
 	$(VENV)/bin/pytest python/tests -q
 
-# The guided tour alone (docs/tour/*.ipynb run by nbclient; also part of test-python): about 85 s.
+# The guided tour alone (docs/tour/*.ipynb run by nbclient; also part of test-python): 70 s to 2 min.
 test-tour: build
 	$(VENV)/bin/pytest python/tests/test_tour.py -q
 
