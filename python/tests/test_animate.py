@@ -176,6 +176,10 @@ def test_ensemble_webm_shows_every_bob(tmp_path, pendulum):
         ({"fps": 120, "speed": 1e-3}, "frames .* exceed the limit of 100000"),
         ({"panels": "3d,side"}, "unknown panel 'side'"),
         ({"panels": ""}, "give at least one of 3d, top, z, reduced, veff"),
+        (
+            {"panels": "3d,top,z", "size": (200, 200)},
+            "too small for the panels 3d, top, z: each would be 80x100",
+        ),
         ({"path": "m.gif", "size": (1920, 1080), "speed": 0.05, "fps": 50}, "a GIF of .* more than"),
         ({"path": "m.gif", "fps": 60}, "fps = 60: a GIF plays at most 50"),
     ],
@@ -221,3 +225,41 @@ def test_an_existing_movie_is_replaced_only_when_the_new_one_is_complete(tmp_pat
         sol.animate(out, t=(0.0, 1.0), fps=10, size=(160, 120))
     assert out.read_bytes() == b"old movie"
     assert [p.name for p in tmp_path.iterdir()] == ["m.mp4"]
+
+
+KINDS = {
+    "planar": ({}, (2.0, 0.3, 0.0, 0.0)),
+    "over the top (through both poles)": ({}, (0.0, 0.0, 7.0, 0.0)),
+    "rest at the bottom": ({}, (0.0, 0.0, 0.0, 0.0)),
+    "g < 0": ({"g": -9.81}, (2.0, 0.0, 0.0, 1.0)),
+    "g = 0": ({"g": 0.0}, (1.0, 0.0, 1.0, 1.0)),
+}
+MODELS = {
+    "string": {"model": "string", "restitution": 0.0},
+    "slewing": {"model": "slewing", "radius": 2.0, "rate": 0.5},
+    "rotating": {"model": "rotating", "frame_rate": 0.5, "latitude": 0.8},
+    "vibrating": {"model": "vibrating", "amplitude": 0.1, "frequency": 30.0},
+}
+
+
+@pytest.mark.parametrize("case", list(KINDS), ids=list(KINDS))
+def test_every_kind_of_exact_motion_draws_on_every_panel(tmp_path, case):
+    """Poles (V_eff's 0/0 for J₃ = 0), rest, mirrored and zero gravity: no warning (pytest makes
+    warnings errors), no NaN in the frames."""
+    params, angles = KINDS[case]
+    p = pl.Pendulum(**params)
+    sol = pl.exact(p, p.state_from_angles(*angles))
+    movie = sol.animate(
+        tmp_path / "m.gif", t=(0.0, 2.0), fps=4, panels="3d,top,z,reduced,veff", size=(480, 270)
+    )
+    assert movie.frames == 9
+
+
+@pytest.mark.parametrize("name", list(MODELS), ids=list(MODELS))
+def test_every_model_draws_on_every_panel(tmp_path, name):
+    p = pl.Pendulum(**MODELS[name])
+    tr = pl.simulate(p, p.state_from_angles(theta=1.5, phi=0.0, theta_dot=0.0, phi_dot=0.5), t_end=2.0)
+    movie = tr.animate(
+        tmp_path / "m.mp4", fps=4, panels="3d,top,z,reduced,veff", size=(480, 270), vectors=True
+    )
+    assert movie.frames == 9

@@ -35,7 +35,7 @@ def test_animate_exact_gif_with_panels(tmp_path):
 def test_animate_integrated_mp4(tmp_path):
     out = tmp_path / "damped.mp4"
     code, stdout, _ = invoke(
-        "animate", str(SCENARIOS / "damped.toml"), "--out", str(out), "--t-end", "1.0", "--size", "160x120",
+        "animate", str(SCENARIOS / "damped.toml"), "--out", str(out), "--t-end", "1.0", "--size", "320x180",
         "--fps", "10", "--panels", "3d,veff", "--quiet",
     )  # fmt: skip
     assert code == 0 and stdout == ""
@@ -49,6 +49,7 @@ def test_animate_integrated_mp4(tmp_path):
         (["--out", "m.mp4", "--size", "1281x720"], "size = 1281x720 pixels: mp4 .* even"),
         (["--out", "m.mp4", "--size", "wide"], "size = 'wide'"),
         (["--out", "m.mp4", "--panels", "3d,sky"], "unknown panel 'sky'"),
+        (["--out", "m.mp4", "--panels", "3d,z,veff", "--size", "200x200"], "too small for the panels"),
         (["--out", "m.mp4", "--fps", "-1"], "fps = -1.0 frames/s"),
         (["--out", "m.mp4", "--duration", "500"], "past the end of the data at t = 100 s"),
     ],

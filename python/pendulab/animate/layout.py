@@ -19,6 +19,9 @@ from .panel_reduced import ReducedPanel
 from .panels_2d import HeightPanel, PotentialPanel, TopPanel
 from .scene import Panel
 
+MIN_PANEL = (100, 80)
+"""Smallest box (width, height) [px] a panel other than a lone one may get."""
+
 PANELS: dict[str, type[Panel]] = {
     cls.name: cls for cls in (Panel3D, TopPanel, HeightPanel, ReducedPanel, PotentialPanel)
 }
@@ -66,6 +69,12 @@ def boxes(names: Sequence[str], width: int, height: int) -> list[Box]:
         cols = math.ceil(math.sqrt(n))
         rows = math.ceil(n / cols)
     cw, rh = (width - left) // cols, height // rows
+    if rest and (cw < MIN_PANEL[0] or rh < MIN_PANEL[1]):
+        raise InvalidInputError(
+            f"size = {width}x{height} pixels is too small for the panels {', '.join(names)}: each would be "
+            f"{cw}x{rh}, and a panel needs at least {MIN_PANEL[0]}x{MIN_PANEL[1]}; make the movie larger or "
+            "show fewer panels"
+        )
     for j, i in enumerate(rest):
         r, c = divmod(j, cols)
         out[i] = Box(left + c * cw, r * rh, cw, rh)

@@ -123,7 +123,9 @@ class PotentialPanel(Panel):
         """V_eff(θ) [J] for the vertical angular momentum ``j3`` [kg m²/s] (T-2.5)."""
         m = self.scene.motion
         s = np.sin(theta)
-        return -m.mass * m.g * m.length * np.cos(theta) + j3 * j3 / (2.0 * m.mass * m.length**2 * s * s)
+        with np.errstate(divide="ignore", invalid="ignore"):  # at a pole: 0 for J₃ = 0, else +inf
+            spin = np.where(j3 == 0.0, 0.0, j3 * j3 / (2.0 * m.mass * m.length**2 * s * s))
+        return -m.mass * m.g * m.length * np.cos(theta) + spin
 
     def background(self, draw: ImageDraw.ImageDraw) -> None:
         self.axes.frame(draw, self.theme, "effective potential and energy", "θ [rad]", "V [J]")

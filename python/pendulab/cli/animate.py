@@ -16,7 +16,7 @@ import typer
 
 from ..animate.clock import make_clock
 from ..animate.encode import check_size, check_work, format_of, gif_fps, parse_size
-from ..animate.layout import panel_names
+from ..animate.layout import boxes, panel_names
 from ..animate.movie import Movie
 from ..scenario import ScenarioError, load_scenario
 from ..theory.exact import exact
@@ -97,7 +97,7 @@ def animate(
         fmt = _check_movie_path(out)
         frame_size = parse_size(size)
         check_size(fmt, frame_size)
-        panel_names(panels, 1)
+        boxes(panel_names(panels, 1), *frame_size)
         sc = load_scenario(scenario).with_overrides(t_end=t_end)
         sim = sc.spec.simulation
         if sc.spec.pendulum.model == "spring":
