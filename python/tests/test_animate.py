@@ -182,6 +182,11 @@ def test_ensemble_webm_shows_every_bob(tmp_path, pendulum):
         ),
         ({"path": "m.gif", "size": (1920, 1080), "speed": 0.05, "fps": 50}, "a GIF of .* more than"),
         ({"path": "m.gif", "fps": 60}, "fps = 60: a GIF plays at most 50"),
+        ({"path": "m.gif", "fps": 0}, "fps = 0 frames/s: must be finite and > 0"),
+        ({"path": "m.gif", "fps": float("nan")}, "fps = nan frames/s"),
+        ({"fps": "fast"}, "fps = 'fast' must be a number"),
+        ({"trail": -1.0}, r"trail = -1.0 s: must be finite and within \[0, inf\]"),
+        ({"elevation": 120}, r"elevation = 120 deg: must be finite and within \[-90, 90\]"),
     ],
 )
 def test_bad_requests_are_refused_before_any_work(tmp_path, sol, kwargs, message):

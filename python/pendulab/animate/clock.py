@@ -86,6 +86,11 @@ def _positive(name: str, value: object, unit: str, upper: float | None = None) -
     return x
 
 
+def check_fps(fps: object) -> float:
+    """``fps`` as a float, finite, > 0 and at most :data:`MAX_FPS`; an error naming it otherwise."""
+    return _positive("fps", fps, "frames/s", MAX_FPS)
+
+
 def make_clock(
     span: tuple[float, float],
     *,

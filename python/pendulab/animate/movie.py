@@ -13,6 +13,7 @@ removes the temporary file and re-raises: no half-written movie is ever left beh
 
 from __future__ import annotations
 
+import math
 import os
 import time
 from collections.abc import Iterator, Sequence
@@ -22,9 +23,10 @@ from pathlib import Path
 from PIL import Image, ImageDraw
 from tqdm.auto import tqdm
 
+from .._core import InvalidInputError
 from ..io import atomic_path
 from .canvas import Theme
-from .clock import make_clock
+from .clock import check_fps, make_clock
 from .encode import check_size, check_work, format_of, gif_fps, open_encoder, parse_size
 from .layout import PANELS, boxes, panel_names
 from .motion import Motion
@@ -66,6 +68,19 @@ class Movie:
         return self.frames / self.seconds if self.seconds > 0 else float("inf")
 
 
+def _finite(name: str, value: object, unit: str, lower: float = -math.inf, upper: float = math.inf) -> float:
+    """``value`` as a finite float in [lower, upper]; an error naming it otherwise."""
+    try:
+        x = float(value)  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        raise InvalidInputError(f"{name} = {value!r} must be a number ({unit})") from None
+    if not (math.isfinite(x) and lower <= x <= upper):
+        raise InvalidInputError(
+            f"{name} = {value!r} {unit}: must be finite and within [{lower:g}, {upper:g}]"
+        )
+    return x
+
+
 class _Plan:
     """Everything checked and computed before the first frame."""
 
@@ -87,7 +102,7 @@ class _Plan:
         self.size = parse_size(size)
         check_size(fmt, self.size)
         self.names = panel_names(panels, motion.bobs)
-        self.fps = gif_fps(float(fps)) if fmt == "gif" else fps
+        self.fps = gif_fps(check_fps(fps)) if fmt == "gif" else check_fps(fps)
         self.clock = make_clock(
             motion.span,
             fps=self.fps,
@@ -97,8 +112,9 @@ class _Plan:
             max_dense_dt=motion.small_period / DENSE_PER_PERIOD,
         )
         check_work(fmt, self.size, self.clock.frames)
-        trail_s = motion.small_period if trail is None else float(trail)
-        options = Options(max(0.0, trail_s), bool(vectors), float(azimuth), float(elevation))
+        trail_s = motion.small_period if trail is None else _finite("trail", trail, "s", lower=0.0)
+        view = (_finite("azimuth", azimuth, "deg"), _finite("elevation", elevation, "deg", -90.0, 90.0))
+        options = Options(trail_s, bool(vectors), *view)
         self.theme = Theme()
         self.scene = Scene(motion, self.clock, options, self.theme)
         self.panels: list[Panel] = [

@@ -14,7 +14,7 @@ from typing import Annotated
 
 import typer
 
-from ..animate.clock import make_clock
+from ..animate.clock import check_fps, make_clock
 from ..animate.encode import check_size, check_work, format_of, gif_fps, parse_size
 from ..animate.layout import boxes, panel_names
 from ..animate.movie import Movie
@@ -108,7 +108,9 @@ def animate(
             )
         # the movie clock over the run's span: fps, speed, duration and the frame limits, before the run
         span = (0.0, sim.t_end - sim.t0) if exact_ else (sim.t0, sim.t_end)
-        clock = make_clock(span, fps=gif_fps(fps) if fmt == "gif" else fps, speed=speed, duration=duration)
+        clock = make_clock(
+            span, fps=gif_fps(check_fps(fps)) if fmt == "gif" else fps, speed=speed, duration=duration
+        )
         check_work(fmt, frame_size, clock.frames)
         options = {
             "fps": fps,
