@@ -4,6 +4,10 @@ one ``error:`` line and exit code 2."""
 from __future__ import annotations
 
 import re
+import signal
+import subprocess
+import sys
+import time
 
 import pytest
 from conftest import SCENARIOS
@@ -68,3 +72,25 @@ def test_animate_refuses_the_exact_solution_of_a_damped_pendulum(tmp_path):
         "animate", str(SCENARIOS / "damped.toml"), "--out", str(tmp_path / "m.mp4"), "--exact"
     )
     assert code == 2 and "exact solution exists only for the ideal pendulum" in stderr
+
+
+def test_ctrl_c_stops_the_movie_and_leaves_no_file(tmp_path):
+    """A real SIGINT while frames are encoded: exit code 130, one line saying so, and neither the movie
+    nor its temporary file nor anything else left in the directory (ffmpeg runs in its own session
+    and is stopped by Python)."""
+    out = tmp_path / "long.mp4"
+    cmd = [sys.executable, "-m", "pendulab.cli", "animate", str(SCENARIOS / "rosette.toml"), "--exact"]
+    cmd += ["--out", str(out), "--size", "320x180", "--t-end", "1000", "--no-progress"]  # 30001 frames
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        assert proc.stderr is not None
+        first = proc.stderr.readline()  # "exact solution of …" is printed just before the frames start
+        assert first.startswith("exact solution of"), first
+        time.sleep(1.0)
+        proc.send_signal(signal.SIGINT)
+        _, stderr = proc.communicate(timeout=30)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130, stderr
+    assert stderr.strip().endswith("error: interrupted (Ctrl-C)") and "Traceback" not in stderr
+    assert list(tmp_path.iterdir()) == []
