@@ -32,6 +32,7 @@ class MethodInfo(TypedDict):
 
 class ParamSpec(TypedDict):
     name: str
+    label: str
     unit: str
     default: float
     min: float
@@ -41,6 +42,7 @@ class ParamSpec(TypedDict):
 
 class ModelInfo(TypedDict):
     name: str
+    label: str
     summary: str
     interactive: bool
     params: list[ParamSpec]

@@ -113,6 +113,7 @@ fn param_dict<'py>(
 ) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("name", p.name)?;
+    d.set_item("label", p.label)?;
     d.set_item("unit", p.unit)?;
     d.set_item("default", p.default)?;
     d.set_item("min", p.min)?;
@@ -137,7 +138,8 @@ fn check_model(
     any_model(length, mass, g, model_name, extra, pivot).map(|_| ())
 }
 
-/// The model registry: name, summary, and parameters (common ones first) with units and limits.
+/// The model registry: name, label, summary, and parameters (common ones first) with labels, units,
+/// one-line help and limits.
 #[pyfunction]
 fn models(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
     MODELS
@@ -145,6 +147,7 @@ fn models(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
         .map(|m| {
             let d = PyDict::new(py);
             d.set_item("name", m.name)?;
+            d.set_item("label", m.label)?;
             d.set_item("summary", m.summary)?;
             d.set_item("interactive", m.interactive)?;
             let params: PyResult<Vec<_>> = COMMON.iter().chain(m.params).map(|p| param_dict(py, p)).collect();

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -60,9 +61,12 @@ def test_models_lists_the_registry_with_units_and_sane_defaults() -> None:
     assert {"ideal", "damped", "rotating"} <= {m["name"] for m in table}
     for m in table:
         assert [p["name"] for p in m["params"][:3]] == list(COMMON), m["name"]
+        assert m["label"] and not re.search(r"T-\d|§|THEORY", m["label"]), m["label"]
         for p in m["params"]:
-            assert p["unit"] and p["allowed"] and p["description"], p
+            assert p["unit"] and p["allowed"] and p["description"] and p["label"], p
             assert p["min"] <= p["default"] <= p["max"], p
+            # the words a student reads: no formula numbers (those go into the description, a tooltip)
+            assert not re.search(r"T-\d|§|THEORY|_", p["label"].replace("c_q", "")), p["label"]
     damped = {p["name"]: p for p in next(m for m in table if m["name"] == "damped")["params"]}
     assert damped["damping"]["unit"] == "1/s" and damped["drag"]["unit"] == "1/m"
     assert damped["forcing_amplitude"]["unit"] == "m/s^2" and damped["forcing_omega"]["unit"] == "rad/s"
@@ -256,7 +260,8 @@ def test_cli_lists_the_models_and_runs_a_damped_file(tmp_path: Path, monkeypatch
     out = runner.invoke(app, ["models"])
     assert out.exit_code == 0, out.output
     for m in pl.models():
-        assert f"\n{m['name']}: " in out.output
+        assert f"\n{m['name']}: {m['label']} — " in out.output
+    assert "friction (linear damping) c: friction force −m c v" in out.output
     assert "damping" in out.output and "[1/s]" in out.output and "latitude_deg" in out.output
 
     def no_constant(name: str) -> None:

@@ -54,10 +54,17 @@ def test_schema_lists_every_model_of_the_registry_with_units_limits_and_slider_s
     assert [m["name"] for m in s["models"]] == [m["name"] for m in lab]
     assert {"ideal", "damped", "rotating", "slewing", "vibrating"} <= {m["name"] for m in lab}
     for m, reg in zip(s["models"], lab, strict=True):
+        assert m["label"] == reg["label"]
         own = [p for p in reg["params"] if p["name"] not in ("length", "mass", "g")]
         assert [p["name"] for p in m["params"]] == [p["name"] for p in own]
         for p, q in zip(m["params"], own, strict=True):
-            assert (p["unit"], p["default"], p["allowed"]) == (q["unit"], q["default"], q["allowed"])
+            assert (p["label"], p["unit"], p["default"], p["allowed"], p["description"]) == (
+                q["label"],
+                q["unit"],
+                q["default"],
+                q["allowed"],
+                q["description"],
+            )
             assert p["min"] == (q["min"] if np.isfinite(q["min"]) else None)
             assert p["max"] == (q["max"] if np.isfinite(q["max"]) else None)
             assert p["ui_min"] < p["ui_max"] and p["step"] > 0

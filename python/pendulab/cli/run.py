@@ -228,7 +228,7 @@ def models(
             if m["name"] in ("spring", "string")
             else "  [not interactive (no live stepper): pendulab run]"
         )
-        _say(f"{m['name']}: {m['summary']}{batch}")
+        _say(f"{m['name']}: {m['label']} — {m['summary']}{batch}")
         own = [p for p in m["params"] if name is not None or p["name"] not in common]
         if not own:
             _say("    (no parameters of its own)")
@@ -236,7 +236,7 @@ def models(
         widths = [max((len(r[k]) for r in rows), default=0) for k in range(3)]
         for *cells, p in rows:
             head = "  ".join(c.ljust(w) for c, w in zip(cells, widths, strict=True))
-            _say(f"    {head}  {p['allowed']}: {p['description']}")
+            _say(f"    {head}  {p['label']}: {p['description']}; {p['allowed']}")
     degrees = [f"{p['name']}_deg" for m in table for p in m["params"] if p["unit"] == "rad"]
     if degrees:
         _say("")

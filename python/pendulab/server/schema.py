@@ -65,7 +65,8 @@ def _slider(p: ParamSpec) -> tuple[float, float, float]:
 
 
 def param_schema(p: ParamSpec) -> dict[str, Any]:
-    """One parameter for the page: name, unit (SI), description, allowed (in words), default, the hard
+    """One parameter for the page: name, label (the words a student reads), unit (SI), description (one
+    line of help), allowed (in words), default, the hard
     limits min/max (null: none) and the slider's ui_min, ui_max, step."""
     if p["name"] in LIMITS:
         lim = LIMITS[p["name"]]
@@ -74,6 +75,7 @@ def param_schema(p: ParamSpec) -> dict[str, Any]:
         lo, hi, ui = _finite(p["min"]), _finite(p["max"]), _slider(p)
     return {
         "name": p["name"],
+        "label": p["label"],
         "unit": p["unit"],
         "description": p["description"],
         "allowed": p["allowed"],
@@ -100,11 +102,17 @@ def schema() -> dict[str, Any]:
         "version": __version__,
         "model": {
             "name": "ideal",
+            "label": ideal["label"],
             "summary": ideal["summary"],
             "params": [param_schema(p) for p in ideal["params"]],
         },
         "models": [
-            {"name": name, "summary": m["summary"], "params": [param_schema(p) for p in own_params(name)]}
+            {
+                "name": name,
+                "label": m["label"],
+                "summary": m["summary"],
+                "params": [param_schema(p) for p in own_params(name)],
+            }
             for name, m in MODEL_SPECS.items()
         ],
         "controls": controls,

@@ -1,5 +1,5 @@
-//! The model registry: every model's name, parameters with units, defaults and limits, and one
-//! builder from named values — what Python, scenario files, the CLI (`pendulab models`) and the web
+//! The model registry: every model's name and label, parameters with labels, units, one-line help,
+//! defaults and limits, and one builder from named values — what Python, scenario files, the CLI (`pendulab models`) and the web
 //! lab's controls are generated from. All models share length l [m], mass m [kg] and gravity g
 //! [m/s²]; the extra parameters switch on the terms of [`Extended`] (docs/theory.md §7).
 
@@ -13,6 +13,8 @@ use crate::state::State;
 pub struct ParamSpec {
     /// Key in Python, TOML and JSON.
     pub name: &'static str,
+    /// The words a student reads (the lab's controls, `pendulab models`): no formula numbers.
+    pub label: &'static str,
     /// SI unit.
     pub unit: &'static str,
     /// Default value.
@@ -21,7 +23,7 @@ pub struct ParamSpec {
     pub min: f64,
     /// Largest allowed value (+∞ for none).
     pub max: f64,
-    /// What it is.
+    /// What it is, in one line (the lab's tooltip; formula numbers of docs/theory.md go here).
     pub description: &'static str,
     /// The allowed values, in words.
     pub allowed: &'static str,
@@ -32,7 +34,9 @@ pub struct ParamSpec {
 pub struct ModelSpec {
     /// Registry name.
     pub name: &'static str,
-    /// One line.
+    /// The model's name in words (the lab's picker).
+    pub label: &'static str,
+    /// One line (with formula numbers: the picker's tooltip).
     pub summary: &'static str,
     /// Its parameters beyond length, mass and g.
     pub params: &'static [ParamSpec],
@@ -45,42 +49,46 @@ const INF: f64 = f64::INFINITY;
 
 const fn p(
     name: &'static str,
+    label: &'static str,
     unit: &'static str,
     default: f64,
     min: f64,
     description: &'static str,
 ) -> ParamSpec {
     let allowed = if min == 0.0 { "a finite number >= 0" } else { "a finite number" };
-    ParamSpec { name, unit, default, min, max: INF, description, allowed }
+    ParamSpec { name, label, unit, default, min, max: INF, description, allowed }
 }
 
 /// The shared parameters.
 pub const COMMON: &[ParamSpec] = &[
     ParamSpec {
         name: "length",
+        label: "length l",
         unit: "m",
         default: 1.0,
         min: 0.0,
         max: INF,
-        description: "rod length l",
+        description: "length of the rod from the pivot to the bob (the spring's rest length l₀)",
         allowed: "a finite number > 0",
     },
     ParamSpec {
         name: "mass",
+        label: "bob mass m",
         unit: "kg",
         default: 1.0,
         min: 0.0,
         max: INF,
-        description: "bob mass m",
+        description: "mass of the bob (the rod is massless)",
         allowed: "a finite number > 0",
     },
     ParamSpec {
         name: "g",
+        label: "gravity g",
         unit: "m/s^2",
         default: 9.81,
         min: -INF,
         max: INF,
-        description: "gravity along gravity_direction (any sign; 0 allowed)",
+        description: "strength of gravity along its direction (Earth 9.81; any sign, 0 allowed)",
         allowed: "a finite number",
     },
 ];
@@ -88,14 +96,23 @@ pub const COMMON: &[ParamSpec] = &[
 const GRAVITY_DIR: [ParamSpec; 3] = [
     p(
         "gravity_x",
+        "gravity direction d: x",
         "1",
         0.0,
         -INF,
         "gravity direction d, x component (d normalised; −e₃ if no component is given, else 0 if omitted)",
     ),
-    p("gravity_y", "1", 0.0, -INF, "gravity direction d, y component (0 if omitted)"),
+    p(
+        "gravity_y",
+        "gravity direction d: y",
+        "1",
+        0.0,
+        -INF,
+        "gravity direction d, y component (0 if omitted)",
+    ),
     p(
         "gravity_z",
+        "gravity direction d: z",
         "1",
         -1.0,
         -INF,
@@ -104,57 +121,150 @@ const GRAVITY_DIR: [ParamSpec; 3] = [
 ];
 
 const DAMPED: &[ParamSpec] = &[
-    p("damping", "1/s", 0.0, 0.0, "linear viscous damping c: force −m c v"),
-    p("drag", "1/m", 0.0, 0.0, "quadratic air drag c_q: force −m c_q |v| v"),
-    p("forcing_amplitude", "m/s^2", 0.0, 0.0, "periodic force per unit mass A in A cos(ω t + ψ) e"),
-    p("forcing_omega", "rad/s", 0.0, -INF, "forcing angular frequency ω"),
-    p("forcing_phase", "rad", 0.0, -INF, "forcing phase ψ"),
+    p(
+        "damping",
+        "friction (linear damping) c",
+        "1/s",
+        0.0,
+        0.0,
+        "friction force −m c v, proportional to the velocity (T-7.1)",
+    ),
+    p(
+        "drag",
+        "air drag c_q",
+        "1/m",
+        0.0,
+        0.0,
+        "air drag force −m c_q |v| v, growing with the square of the speed (T-7.1)",
+    ),
+    p(
+        "forcing_amplitude",
+        "driving strength A",
+        "m/s^2",
+        0.0,
+        0.0,
+        "periodic driving force per unit mass A cos(ω t + ψ) along e (T-7.1)",
+    ),
+    p("forcing_omega", "driving frequency ω", "rad/s", 0.0, -INF, "angular frequency ω of the driving force"),
+    p("forcing_phase", "driving phase ψ", "rad", 0.0, -INF, "phase ψ of the driving force at t = 0"),
     p(
         "forcing_x",
+        "driving direction e: x",
         "1",
         1.0,
         -INF,
         "forcing direction e, x component (e normalised; e₁ if no component is given, else 0 if omitted)",
     ),
-    p("forcing_y", "1", 0.0, -INF, "forcing direction e, y component (0 if omitted)"),
-    p("forcing_z", "1", 0.0, -INF, "forcing direction e, z component (0 if omitted)"),
+    p(
+        "forcing_y",
+        "driving direction e: y",
+        "1",
+        0.0,
+        -INF,
+        "forcing direction e, y component (0 if omitted)",
+    ),
+    p(
+        "forcing_z",
+        "driving direction e: z",
+        "1",
+        0.0,
+        -INF,
+        "forcing direction e, z component (0 if omitted)",
+    ),
     GRAVITY_DIR[0],
     GRAVITY_DIR[1],
     GRAVITY_DIR[2],
 ];
 
 const ROTATING: &[ParamSpec] = &[
-    p("frame_rate", "rad/s", 7.292e-5, -INF, "rotation rate |Ω| of the frame (Earth: 7.292e-5)"),
+    p(
+        "frame_rate",
+        "rotation rate of the frame |Ω|",
+        "rad/s",
+        7.292e-5,
+        -INF,
+        "how fast the reference frame turns (the Earth: 7.292e-5 rad/s; T-7.3)",
+    ),
     ParamSpec {
         name: "latitude",
+        label: "latitude λ",
         unit: "rad",
         default: 0.8552113334772214,
         min: -std::f64::consts::FRAC_PI_2,
         max: std::f64::consts::FRAC_PI_2,
-        description: "latitude λ; Ω = |Ω|(0, cos λ, sin λ) in (east, north, up) axes",
+        description: "where on the Earth: Ω = |Ω|(0, cos λ, sin λ) in (east, north, up) axes",
         allowed: "a latitude in [-π/2, π/2] rad",
     },
-    p("damping", "1/s", 0.0, 0.0, "linear viscous damping c: force −m c v"),
+    p(
+        "damping",
+        "friction (linear damping) c",
+        "1/s",
+        0.0,
+        0.0,
+        "friction force −m c v, proportional to the velocity (T-7.1)",
+    ),
 ];
 
 const SLEWING: &[ParamSpec] = &[
-    p("radius", "m", 5.0, -INF, "slewing crane: boom radius R of the pivot circle"),
-    p("rate", "rad/s", 0.1, -INF, "slewing rate ω (pivot at (R cos ωt, R sin ωt, h))"),
-    p("height", "m", 0.0, -INF, "pivot height h"),
-    p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
+    p(
+        "radius",
+        "boom radius R",
+        "m",
+        5.0,
+        -INF,
+        "distance of the pivot from the crane's slewing axis (the boom tip circle, T-7.2)",
+    ),
+    p(
+        "rate",
+        "slewing rate ω",
+        "rad/s",
+        0.1,
+        -INF,
+        "how fast the boom turns: pivot at (R cos ωt, R sin ωt, h)",
+    ),
+    p(
+        "height",
+        "height of the boom tip above the origin",
+        "m",
+        0.0,
+        -INF,
+        "height of the boom tip above the origin",
+    ),
+    p("damping", "friction (linear damping) c", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
 ];
 
 const VIBRATING: &[ParamSpec] = &[
-    p("amplitude", "m", 0.05, -INF, "vertical vibration amplitude A (pivot at (0, 0, A cos νt))"),
-    p("frequency", "rad/s", 200.0, -INF, "vibration angular frequency ν; Kapitza: (Aν)² > 2 g l"),
-    p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
+    p(
+        "amplitude",
+        "shaking amplitude A",
+        "m",
+        0.05,
+        -INF,
+        "how far the pivot is shaken up and down: pivot at (0, 0, A cos νt) (T-7.2)",
+    ),
+    p(
+        "frequency",
+        "shaking frequency ν",
+        "rad/s",
+        200.0,
+        -INF,
+        "angular frequency ν of the shaking; the inverted pendulum stands when (Aν)² > 2 g l",
+    ),
+    p("damping", "friction (linear damping) c", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
 ];
 
-const SAMPLED: &[ParamSpec] =
-    &[p("damping", "1/s", 0.0, 0.0, "linear damping c relative to the pivot (the path: pivot samples)")];
+const SAMPLED: &[ParamSpec] = &[p(
+    "damping",
+    "friction (linear damping) c",
+    "1/s",
+    0.0,
+    0.0,
+    "linear damping c relative to the pivot (the path: pivot samples)",
+)];
 
 const SPRING: &[ParamSpec] = &[ParamSpec {
     name: "stiffness",
+    label: "spring constant k",
     unit: "N/m",
     default: 29.43,
     min: 0.0,
@@ -166,6 +276,7 @@ const SPRING: &[ParamSpec] = &[ParamSpec {
 
 const STRING: &[ParamSpec] = &[ParamSpec {
     name: "restitution",
+    label: "bounciness (restitution) e",
     unit: "1",
     default: 0.0,
     min: 0.0,
@@ -179,42 +290,49 @@ const STRING: &[ParamSpec] = &[ParamSpec {
 pub const MODELS: &[ModelSpec] = &[
     ModelSpec {
         name: "ideal",
+        label: "Ideal pendulum",
         summary: "the ideal spherical pendulum (docs/theory.md §2)",
         interactive: true,
         params: &[],
     },
     ModelSpec {
         name: "damped",
+        label: "Damped and driven",
         summary: "damping, quadratic drag, periodic forcing, any gravity direction (T-7.1)",
         interactive: true,
         params: DAMPED,
     },
     ModelSpec {
         name: "rotating",
+        label: "On the turning Earth (Foucault)",
         summary: "in a rotating frame (Foucault, T-7.3), optionally damped",
         interactive: true,
         params: ROTATING,
     },
     ModelSpec {
         name: "slewing",
+        label: "Slewing crane",
         summary: "pivot on a slewing crane's boom tip (T-7.2)",
         interactive: true,
         params: SLEWING,
     },
     ModelSpec {
         name: "vibrating",
+        label: "Shaken pivot (Kapitza)",
         summary: "vertically vibrated pivot (Kapitza's inverted pendulum, T-7.2)",
         interactive: true,
         params: VIBRATING,
     },
     ModelSpec {
         name: "sampled_pivot",
+        label: "Pivot on a given path",
         summary: "pivot on a path given as samples (times, positions; C² cubic spline), T-7.2",
         interactive: false,
         params: SAMPLED,
     },
     ModelSpec {
         name: "spring",
+        label: "Swinging spring",
         summary:
             "swinging spring: an elastic rod, off the sphere (T-7.4); scenario files and pl.SwingingSpring",
         interactive: false,
@@ -222,6 +340,7 @@ pub const MODELS: &[ModelSpec] = &[
     },
     ModelSpec {
         name: "string",
+        label: "Pendulum on a string",
         summary: "a string instead of a rod: slack (free flight) where the tension T-2.3 would be < 0",
         interactive: false,
         params: STRING,
