@@ -20,6 +20,18 @@ import { gravityDirection } from './scene/vectors';
 import { scenarioRequest } from './export';
 import { LabStore } from './state';
 import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
+import { chooseLanguage, language, setLanguage, t } from './i18n';
+import { Toolbar } from './panels/toolbar';
+import { Tools } from './panels/tools';
+import { EnergyBars } from './panels/energy';
+import { ChosenPlot } from './panels/chosen';
+import { TwinPanel } from './panels/twin';
+import { HelpOverlay } from './panels/help';
+import { driftScales } from './panels/plots';
+import { Recorder } from './record';
+import { accessibleSliders, ownsKeys, shortcutFor } from './keyboard';
+import { energySplit } from './measure';
+import type { EnergySplit } from './measure';
 
 declare global {
   interface Window {
@@ -36,6 +48,16 @@ declare global {
       handleOnScreen: () => { x: number; y: number } | null;
       quality: () => RenderQuality;
       frameCosts: () => Record<string, { ms: number; count: number }>;
+      /** The second pendulum's store (two-pendulum mode) and where its bob is drawn on the page. */
+      twin: LabStore;
+      twinOnScreen: () => { x: number; y: number } | null;
+      sphereOnScreen: () => { left: number; right: number; top: number; bottom: number };
+      /** The separation of the two bobs, |r₁ − r₂| [m] at the first one's history times [s]. */
+      separation: () => { t: number[]; d: number[] };
+      /** The energies the bar chart shows (J). */
+      energy: () => EnergySplit | null;
+      /** The last recorded video's size [bytes] and its first bytes (hex), once a recording stopped. */
+      lastVideo: () => { size: number; head: string } | null;
     };
   }
 }
@@ -56,6 +78,17 @@ function download(name: string, href: string): void {
 }
 
 async function main(): Promise<void> {
+  const lang = chooseLanguage(
+    new URLSearchParams(window.location.search).get('lang'),
+    window.localStorage?.getItem('pendulab.lang') ?? null,
+    navigator.languages ?? [navigator.language],
+  );
+  setLanguage(lang);
+  document.documentElement.lang = lang;
+  document.title = t('page.title');
+  byId('units').textContent = t('page.units');
+  byId('scene').setAttribute('aria-label', t('page.scene'));
+  byId('panel').setAttribute('aria-label', t('page.panel'));
   const store = new LabStore();
   const message = byId('message');
   let messageTimer: ReturnType<typeof setTimeout> | null = null;
@@ -77,12 +110,13 @@ async function main(): Promise<void> {
   // a software rasteriser (headless chromium, no GPU) draws without MSAA at one pixel per CSS pixel
   const quality = renderQuality(probeRenderer(), window.devicePixelRatio);
   if (quality.software) {
-    byId('render').textContent = ' · software WebGL: no antialiasing';
+    byId('render').textContent = ` · ${t('page.software')}`;
     byId('render').title = `${quality.renderer ?? ''}: drawn without multisampling for the frame rate`;
   }
   const scene = new PendulumScene(byId('scene'), quality);
   const view = { ...DEFAULT_VIEW };
   const costs = new FrameCosts();
+  const chosen = new ChosenPlot(byId('plots'));
   const plots = new Plots(byId('plots'), (ms) => costs.add('plots drawn (uPlot)', ms));
   const portraits = new Portraits(byId('portraits'));
   const reduced = new ReducedView(byId('reduced'), quality);
@@ -92,9 +126,70 @@ async function main(): Promise<void> {
   if (fromUrl.problems.length > 0) explain(`link: ${fromUrl.problems.join('; ')}`);
   let startup: Command[] = commandsFor(fromUrl.value);
   let conn: Connection | null = null;
+  let twin: TwinPanel | null = null;
   const send = (cmd: Command) => {
-    if (conn === null || !conn.send(cmd)) explain('not connected to the server');
+    if (conn === null || !conn.send(cmd)) explain(t('msg.notConnected'));
+    else twin?.mirror(cmd);
   };
+  const run = () => send({ type: store.status?.paused === false ? 'pause' : 'resume' });
+  const reset = () => send({ type: 'reset' });
+  const step = () => send({ type: 'step', n: 1 });
+  let lastVideo: { size: number; head: string } | null = null;
+  const recorder = new Recorder(scene.renderer.domElement, (video) => {
+    void video.slice(0, 4).arrayBuffer().then((b) => {
+      lastVideo = { size: video.size, head: [...new Uint8Array(b)].map((x) => x.toString(16).padStart(2, '0')).join('') };
+    });
+    const url = URL.createObjectURL(video);
+    download(`pendulab-${store.status?.scenario ?? 'lab'}.webm`, url);
+    setTimeout(() => URL.revokeObjectURL(url), 10_000);
+    explain(t('msg.recorded', { mb: (video.size / 1e6).toFixed(1) }), true);
+  });
+  const help = new HelpOverlay(byId('help'));
+  const toolbar = new Toolbar(byId('toolbar'), byId('panel'), {
+    run,
+    reset,
+    step,
+    record: () => {
+      if (recorder.recording) recorder.stop();
+      else {
+        const why = recorder.start();
+        if (why !== null) explain(t('msg.noRecording', { why }));
+        else explain(t('msg.recording'), true);
+      }
+      toolbar.showRecording(recorder.recording);
+    },
+    help: () => help.toggle(),
+    language: (l) => {
+      window.localStorage?.setItem('pendulab.lang', l);
+      const q = new URLSearchParams(window.location.search);
+      q.set('lang', l);
+      window.location.search = q.toString();
+    },
+    collapsed: () => undefined,
+  });
+  document.addEventListener('keydown', (e) => {
+    const action = shortcutFor(e.key, e.ctrlKey || e.metaKey || e.altKey);
+    if (action === null) return;
+    if (action === 'close') {
+      if (help.open) help.toggle(false);
+      return;
+    }
+    if (ownsKeys(e.target)) return;
+    if (help.open && action !== 'help') return;
+    e.preventDefault();
+    if (action === 'run') run();
+    else if (action === 'reset') reset();
+    else if (action === 'step') step();
+    else help.toggle();
+  });
+  const tools = new Tools(byId('tools'), store, {
+    send,
+    explain,
+    overlay: (which, on) => {
+      view[which] = on;
+    },
+  });
+  const energy = new EnergyBars(byId('energy'));
 
   const controls = new Controls(byId('gui'), schema, scenarios, view, {
     send,
@@ -107,7 +202,7 @@ async function main(): Promise<void> {
     },
     downloadTOML: () => {
       const s = store.status;
-      if (s === null) return explain('not connected to the server');
+      if (s === null) return explain(t('msg.notConnected'));
       fetch('api/scenario.toml', {
         method: 'POST',
         headers: { 'content-type': 'application/json' },
@@ -125,7 +220,7 @@ async function main(): Promise<void> {
     copyLink: () => {
       const link = window.location.href;
       navigator.clipboard?.writeText(link).then(
-        () => explain('link copied: it reproduces this scenario', true),
+        () => explain(t('msg.linkCopied'), true),
         () => explain(link),
       ) ?? explain(link);
     },
@@ -136,10 +231,21 @@ async function main(): Promise<void> {
   });
 
   const analyses = new Analyses(store, reduced, explain);
+  twin = new TwinPanel(byId('tools'), store, schema.methods, socketUrl(window.location), { send, explain });
+  accessibleSliders(controls.gui);
 
   const onStatus = (s: Status) => {
+    const before = store.status;
     store.onStatus(s);
+    if (before !== null && (before.scenario !== s.scenario || before.model !== s.model)) {
+      // the previous scenario's news (a string event, a hint) is no longer about what is shown
+      if (message.classList.contains('info')) message.classList.remove('shown');
+    }
+    if (before === null || before.epoch !== s.epoch) energy.rescale();
     controls.sync(s);
+    accessibleSliders(controls.gui);
+    tools.sync(s);
+    toolbar.showRunning(s.paused);
     scene.setLength(s.params.length);
     scene.setModel(s.model);
     portraits.setModel(s.model);
@@ -149,11 +255,11 @@ async function main(): Promise<void> {
   conn = new Connection(socketUrl(window.location), {
     onOpen: () => {
       store.setConnected(true);
-      byId('conn').textContent = 'connected';
+      byId('conn').textContent = t('conn.connected');
     },
     onClose: () => {
       store.setConnected(false);
-      byId('conn').textContent = 'disconnected: retrying…';
+      byId('conn').textContent = t('conn.retrying');
       // a new server session starts from the default scenario: bring back the one shown
       if (store.status !== null) startup = commandsFor(fromStatus(store.status));
     },
@@ -198,21 +304,21 @@ async function main(): Promise<void> {
     (x, phase) => {
       if (phase === 'start') pauseForGesture();
       sendStart(x, [0, 0, 0]);
-      if (phase === 'end') explain('start set by dragging (at rest there): press start to release it', true);
+      if (phase === 'end') explain(t('msg.dragged'), true);
     },
     (x, pulled, phase) => {
       if (phase === 'start') {
         pauseForGesture();
-        explain('pull the arrow to set the start velocity', true);
+        explain(t('msg.pull'), true);
         return;
       }
       if (pulled === null) return;
       sendStart(x, pulled.v);
-      const cap = pulled.capped ? ' (capped: the most the arrow sets, 4√(g l))' : '';
+      const cap = pulled.capped ? t('msg.capped') : '';
       explain(
         phase === 'end'
-          ? `start velocity set: |v| = ${pulled.speed.toFixed(2)} m/s${cap}; press start to run from it`
-          : `start velocity |v| = ${pulled.speed.toFixed(2)} m/s${cap}`,
+          ? t('msg.velocitySet', { v: pulled.speed.toFixed(2), cap })
+          : t('msg.velocity', { v: pulled.speed.toFixed(2), cap }),
         true,
       );
     },
@@ -226,7 +332,14 @@ async function main(): Promise<void> {
     handleOnScreen: () => scene.handleOnScreen(),
     quality: () => quality,
     frameCosts: () => costs.take(),
+    twin: twin.store,
+    twinOnScreen: () => scene.twinOnScreen(),
+    sphereOnScreen: () => scene.sphereOnScreen(),
+    separation: () => twin?.separationNow() ?? { t: [], d: [] },
+    energy: () => energy.shown,
+    lastVideo: () => lastVideo,
   };
+  void language;
   let lastWall = performance.now();
   // the scene follows every frame; the panels (numbers, plots, portraits) at 10 Hz, which reads as live
   // and spares the CPU: each uPlot setData redraws a whole chart (docs/performance.md)
@@ -244,8 +357,23 @@ async function main(): Promise<void> {
     const { start, end } = store.trailRange(view.trailSeconds);
     const mass = p?.mass ?? 1;
     const g = p?.g ?? 9.81;
-    const changed = sceneInputs.changed([f, store.trail, start, end, mass, g, ...gdir, ...Object.values(view)]);
-    if (changed) scene.update(f, { frames: store.trail, start, end }, view, mass, g, gdir);
+    const second = twin?.drawn(store.playT, view.trailSeconds) ?? null;
+    const changed = sceneInputs.changed([
+      f,
+      store.trail,
+      start,
+      end,
+      mass,
+      g,
+      ...gdir,
+      ...Object.values(view),
+      second?.frame ?? null,
+      second?.trail.end ?? 0,
+    ]);
+    if (changed) {
+      scene.update(f, { frames: store.trail, start, end }, view, mass, g, gdir);
+      scene.updateTwin(second?.frame ?? null, second?.trail ?? { frames: [], start: 0, end: 0 });
+    }
     let t1 = performance.now();
     costs.add('scene update', t1 - t0);
     if (scene.draw(changed)) {
@@ -254,7 +382,19 @@ async function main(): Promise<void> {
       costs.add('scene render (submit)', t0 - t1);
     } else t0 = t1;
     if (panelTick.due(now)) {
-      plots.update(store.history, store.events);
+      const ref = store.reference;
+      const length = p?.length ?? 1;
+      plots.update(
+        store.history,
+        store.events,
+        driftScales(ref?.energy ?? 0, ref?.j3 ?? 0, mass, g, length),
+      );
+      const ctx = { mass, g, length };
+      chosen.update(store.history.frames, ctx, twin?.on ? twin.store.history.frames : null);
+      twin?.update(byId('plots').clientWidth - 8);
+      tools.update(f?.x ?? null, f?.t ?? null);
+      const latest = store.latest();
+      energy.draw(latest ? energySplit(latest, mass, g, length, store.work) : null, store.status?.model !== 'ideal');
       t1 = performance.now();
       costs.add('plots setData', t1 - t0);
       portraits.update(store.history, f, analyses.veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);

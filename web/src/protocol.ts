@@ -240,7 +240,10 @@ function parseEvent(raw: Record<string, unknown>): EventNotice {
 
 export interface ParamSchema {
   name: string;
+  /** The words a student reads (the core's registry), e.g. "friction (linear damping)". */
+  label?: string;
   unit: string;
+  /** One line of help (the tooltip; formula numbers go here, not into the label). */
   description: string;
   /** What is allowed, in words (the core's). */
   allowed?: string;
@@ -278,6 +281,8 @@ export interface MethodInfo {
 
 export interface ModelSchema {
   name: string;
+  /** The model's name in words, e.g. "Damped and driven" (the core's registry). */
+  label?: string;
   summary: string;
   params: ParamSchema[];
 }

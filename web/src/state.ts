@@ -5,6 +5,7 @@
 // the trail, the histories of ΔE, ΔJ₃, z and tension for the plots, and the trajectory as CSV.
 import type { ErrorNotice, EventNotice, ExactQuantities, Frame, Status, Vec3 } from './protocol';
 import { recordEvent } from './events';
+import { PeriodTimer, workBetween } from './measure';
 
 /** Frames kept for interpolation. */
 export const BUFFER_MAX = 512;
@@ -47,10 +48,12 @@ export interface History {
   /** ż = v₃ [m/s] (the phase portrait's ordinate). */
   zdot: number[];
   tension: number[];
+  /** The frames of the points above (for the plot of chosen variables, panels/chosen.ts). */
+  frames: Frame[];
 }
 
 function emptyHistory(): History {
-  return { t: [], dE: [], dJ3: [], z: [], zdot: [], tension: [] };
+  return { t: [], dE: [], dJ3: [], z: [], zdot: [], tension: [], frames: [] };
 }
 
 /** Smallest and largest tension [N] received in the epoch, with their times [s]. */
@@ -135,6 +138,11 @@ export class LabStore {
   events: readonly EventNotice[] = [];
   connected = false;
   tickHz = 60;
+  /** ∫P dt [J] over the received frames of the epoch (trapezoidal), minus the energy the string's snaps
+   *  lost: the energy bar chart's "lost" is its negative (measure.ts). */
+  work = 0;
+  /** The z-period and azimuthal advance measured from the received frames (measure.ts). */
+  readonly periodTimer = new PeriodTimer();
 
   private historyStride = 1;
   private historyCount = 0;
@@ -173,6 +181,8 @@ export class LabStore {
     this.exact = null;
     this.exactError = null;
     this.events = [];
+    this.work = 0;
+    this.periodTimer.reset();
     this.historyStride = 1;
     this.historyCount = 0;
   }
@@ -187,7 +197,10 @@ export class LabStore {
   onEvent(e: EventNotice): void {
     const before = this.events;
     this.events = recordEvent(before, e, this.status?.epoch ?? null);
-    if (this.events !== before) this.emit();
+    if (this.events !== before) {
+      this.work -= e.energy_lost;
+      this.emit();
+    }
   }
 
   setConnected(c: boolean): void {
@@ -208,7 +221,9 @@ export class LabStore {
       const last = this.frames[this.frames.length - 1];
       if (last !== undefined && f.t < last.t) continue;
       if (last !== undefined && f.t === last.t) this.frames.pop(); // same time: the newer numbers win
+      else if (last !== undefined) this.work += workBetween(last, f);
       this.frames.push(f);
+      this.periodTimer.push(f);
       if (this.reference === null) this.reference = { energy: f.energy, j3: f.j3 };
       const ex = this.tensionExtremes;
       if (ex === null) this.tensionExtremes = { min: f.tension, tMin: f.t, max: f.tension, tMax: f.t };
@@ -244,9 +259,10 @@ export class LabStore {
     h.z.push(f.x[2]);
     h.zdot.push(f.v[2]);
     h.tension.push(f.tension);
+    h.frames.push(f);
     if (h.t.length > HISTORY_MAX) {
       // thin: keep every other point (always the first), take every other future point
-      const keep = (a: number[]): number[] => a.filter((_, i) => i % 2 === 0);
+      const keep = <T>(a: T[]): T[] => a.filter((_, i) => i % 2 === 0);
       this.history = {
         t: keep(h.t),
         dE: keep(h.dE),
@@ -254,6 +270,7 @@ export class LabStore {
         z: keep(h.z),
         zdot: keep(h.zdot),
         tension: keep(h.tension),
+        frames: keep(h.frames),
       };
       this.historyStride *= 2;
       this.historyCount = 1;

@@ -59,7 +59,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   const q = new URLSearchParams(query.startsWith('?') ? query.slice(1) : query);
   const value: UrlScenario = {};
   const problems: string[] = [];
-  const known = new Set(['s', 'model', 'mp', 'l', 'm', 'g', 'method', 'dt', 'ts', 'x', 'v', 'paused']);
+  const known = new Set(['s', 'model', 'mp', 'l', 'm', 'g', 'method', 'dt', 'ts', 'x', 'v', 'paused', 'lang']);
   for (const key of q.keys()) if (!known.has(key)) problems.push(`unknown URL key ${key}`);
   const name = (key: string): string | undefined => {
     const t = q.get(key);

@@ -9,6 +9,7 @@ import type { ViewOptions } from '../scene/scene';
 import { ModelControls } from './model';
 import { addParam, throttle } from './params';
 import { addViewControls } from './view';
+import { t } from '../i18n';
 
 export interface ControlActions {
   send(cmd: Command): void;
@@ -35,12 +36,12 @@ export class Controls {
     private readonly view: ViewOptions,
     actions: ControlActions,
   ) {
-    this.gui = new GUI({ container, title: 'Pendulab lab', width: 270 });
+    this.gui = new GUI({ container, title: t('gui.title'), width: 270 });
     const m: Record<string, number | string | boolean | (() => void)> = {};
     this.model = m;
 
     // --- pendulum: length, mass, g (every model has them), then the model and its own parameters ---
-    const pend = this.gui.addFolder('Pendulum');
+    const pend = this.gui.addFolder(t('gui.pendulum'));
     const sendParams = throttle((name: string, value: number) => {
       actions.send({ type: 'set_params', [name]: value } as Command);
     }, 50);
@@ -51,10 +52,10 @@ export class Controls {
     this.modelControls = new ModelControls(pend, schema, actions);
 
     // --- integrator ---
-    const integ = this.gui.addFolder('Integrator');
+    const integ = this.gui.addFolder(t('gui.integrator')).close();
     const methodLabels: Record<string, string> = {};
     for (const info of schema.methods) {
-      const props = [`order ${info.order}`, info.symplectic ? 'symplectic' : '', info.adaptive ? 'adaptive' : '']
+      const props = [t('gui.order', { n: info.order }), info.symplectic ? t('gui.symplectic') : '', info.adaptive ? t('gui.adaptive') : '']
         .filter(Boolean)
         .join(', ');
       methodLabels[`${info.name} (${props})`] = info.name;
@@ -62,6 +63,7 @@ export class Controls {
     m['method'] = schema.methods.find((x) => x.default)?.name ?? schema.methods[0]?.name ?? 'rattle';
     const method = integ
       .add(m, 'method', methodLabels)
+      .name(t('gui.method'))
       .onChange((v: string) => actions.send({ type: 'set_method', method: v }));
     method.domElement.title = schema.methods.map((x) => `${x.name}: ${x.summary}`).join('\n');
     this.synced.push(method);
@@ -73,47 +75,47 @@ export class Controls {
       .decimals(6)
       .onFinishChange((v: number) => {
         if (!(v >= dtLim.min && v <= dtLim.max)) {
-          actions.explain(`dt must be between ${dtLim.min} and ${dtLim.max} s`);
+          actions.explain(t('gui.dtRange', { min: dtLim.min, max: dtLim.max }));
           return;
         }
         actions.send({ type: 'set_method', dt: v });
       });
-    dt.domElement.title = `${dtLim.description}; ${dtLim.min} … ${dtLim.max} s (dop853 chooses its own)`;
+    dt.domElement.title = t('gui.dtHelp', { min: dtLim.min, max: dtLim.max });
     this.synced.push(dt);
 
     // --- run ---
-    const run = this.gui.addFolder('Run');
+    const run = this.gui.addFolder(t('gui.run'));
     const tsLim = schema.controls.time_scale;
     m['time_scale'] = tsLim.default ?? 1;
     const ts = run
       .add(m, 'time_scale')
-      .name('time scale [×]')
+      .name(t('gui.timeScale'))
       .decimals(3)
       .onFinishChange((v: number) => {
         if (!(v >= tsLim.min && v <= tsLim.max)) {
-          actions.explain(`the time scale must be between ${tsLim.min} and ${tsLim.max}`);
+          actions.explain(t('gui.tsRange', { min: tsLim.min, max: tsLim.max }));
           return;
         }
         actions.send({ type: 'set_time_scale', time_scale: v });
       });
-    ts.domElement.title = `${tsLim.description}; ${tsLim.min} … ${tsLim.max}`;
+    ts.domElement.title = t('gui.tsHelp', { min: tsLim.min, max: tsLim.max });
     this.synced.push(ts);
     m['paused'] = false;
     m['run'] = () => actions.send({ type: m['paused'] === true ? 'resume' : 'pause' });
-    this.runButton = run.add(m, 'run').name('pause');
+    this.runButton = run.add(m, 'run').name(t('toolbar.pause'));
     m['stepN'] = 1;
     const stepLim = schema.controls.step_n;
-    run.add(m, 'stepN', stepLim.min, Math.min(stepLim.max, 1000), 1).name('steps per step');
+    run.add(m, 'stepN', stepLim.min, Math.min(stepLim.max, 1000), 1).name(t('gui.stepN'));
     m['step'] = () => actions.send({ type: 'step', n: Math.round(Number(m['stepN'])) });
-    run.add(m, 'step').name('step');
+    run.add(m, 'step').name(t('toolbar.step'));
     m['reset'] = () => actions.send({ type: 'reset' });
-    run.add(m, 'reset').name('reset to start');
+    run.add(m, 'reset').name(t('toolbar.reset'));
     const names: Record<string, string> = {};
     for (const s of scenarios) if (s.error === undefined) names[s.title ? `${s.name}: ${s.title}` : s.name] = s.name;
     m['scenario'] = '';
     const scen = run
       .add(m, 'scenario', names)
-      .name('scenario')
+      .name(t('gui.scenario'))
       .onChange((v: string) => actions.send({ type: 'load_scenario', name: v }));
     this.synced.push(scen);
 
@@ -123,18 +125,17 @@ export class Controls {
     });
 
     // --- export ---
-    const ex = this.gui.addFolder('Share and export').close();
+    const ex = this.gui.addFolder(t('gui.export')).close();
     m['csv'] = () => actions.downloadCSV();
-    ex.add(m, 'csv').name('download trajectory (CSV)');
+    ex.add(m, 'csv').name(t('gui.csv'));
     m['toml'] = () => actions.downloadTOML();
-    const toml = ex.add(m, 'toml').name('download scenario (TOML)');
+    const toml = ex.add(m, 'toml').name(t('gui.toml'));
     toml.domElement.dataset['control'] = 'toml';
-    toml.domElement.title =
-      'the scenario as it stands (model, parameters, start, method) as a file for `pendulab run`';
+    toml.domElement.title = t('gui.tomlHelp');
     m['png'] = () => actions.screenshot();
-    ex.add(m, 'png').name('screenshot (PNG)');
+    ex.add(m, 'png').name(t('gui.png'));
     m['link'] = () => actions.copyLink();
-    ex.add(m, 'link').name('copy link to this scenario');
+    ex.add(m, 'link').name(t('gui.link'));
   }
 
   /** Shows the server's status (without sending anything back). Fields being edited are left alone. */
@@ -151,7 +152,7 @@ export class Controls {
     for (const c of this.synced) {
       if (!c.domElement.contains(document.activeElement)) c.updateDisplay();
     }
-    this.runButton.name(s.paused ? 'start' : 'pause');
+    this.runButton.name(s.paused ? t('toolbar.start') : t('toolbar.pause'));
     this.modelControls.sync(s);
   }
 }

@@ -1,14 +1,16 @@
 // Curve plots on a plain 2-D canvas, for what uPlot's time-series charts do not fit: the phase portrait
 // (z, ż) — a closed, unsorted curve — and the effective potential V_eff(θ) (from the server) with the
 // current energy as a horizontal line and the current θ as a vertical one. The ranges are pure functions
-// (unit-tested); the drawing only maps data to pixels.
+// (unit-tested); the drawing only maps data to pixels. Each layer with a label gets a legend entry.
+import { safeRange } from './ranges';
 
 export interface Range {
   lo: number;
   hi: number;
 }
 
-/** The range of finite values with a margin (a fifth of the span, or ±0.5 for a flat set). */
+/** The range of finite values with a margin (`margin` of the span on each side); a flat set ±max(0.5,
+ *  a tenth of its value), a nearly flat one the least span of ranges.ts (never a zero-width range). */
 export function dataRange(values: Iterable<number>, margin = 0.1): Range {
   let lo = Infinity;
   let hi = -Infinity;
@@ -18,9 +20,9 @@ export function dataRange(values: Iterable<number>, margin = 0.1): Range {
     if (v > hi) hi = v;
   }
   if (lo > hi) return { lo: -1, hi: 1 };
-  const span = hi - lo;
-  const pad = span > 0 ? margin * span : Math.max(0.5, Math.abs(lo) * 0.1);
-  return { lo: lo - pad, hi: hi + pad };
+  if (lo === hi) return { lo: lo - Math.max(0.5, Math.abs(lo) * 0.1), hi: hi + Math.max(0.5, Math.abs(lo) * 0.1) };
+  const [a, b] = safeRange(lo, hi, margin);
+  return { lo: a, hi: b };
 }
 
 /** The energy axis of the V_eff plot: from below the well's bottom to above the energy E [J] (or, below
@@ -40,6 +42,8 @@ export interface CurveLayer {
   x: readonly number[];
   y: readonly number[];
   color: string;
+  /** The legend's words for this layer (none: not in the legend). */
+  label?: string;
 }
 
 export class CurvePlot {
@@ -49,8 +53,8 @@ export class CurvePlot {
   constructor(
     container: HTMLElement,
     title: string,
-    private readonly xLabel: string,
-    private readonly yLabel: string,
+    public xLabel: string,
+    public yLabel: string,
     private readonly height = 150,
   ) {
     const wrap = document.createElement('div');
@@ -136,6 +140,16 @@ export class CurvePlot {
       ctx.fill();
     }
     ctx.restore();
+    // legend: top right, one line per labelled layer in its colour
+    let ly = top + 12;
+    ctx.textAlign = 'right';
+    for (const layer of layers) {
+      if (!layer.label) continue;
+      ctx.fillStyle = layer.color;
+      ctx.fillText(`— ${layer.label}`, right - 4, ly);
+      ly += 13;
+    }
+    ctx.textAlign = 'left';
   }
 
   private line(ctx: CanvasRenderingContext2D, x0: number, y0: number, x1: number, y1: number, color: string): void {

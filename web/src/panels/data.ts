@@ -8,6 +8,7 @@ import type { LabStore } from '../state';
 import { offSphereNote, tetherStyle } from '../models';
 import { eventRow } from '../events';
 import { fmt } from '../format';
+import { t } from '../i18n';
 
 export { fmt };
 
@@ -24,18 +25,18 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
     ['E − E₀', f && ref ? fmt(f.energy - ref.energy, 3) : '—', 'J'],
     ['J₃', fmt(f?.j3, 10), 'kg m²/s'],
     ['J₃ − J₃(0)', f && ref ? fmt(f.j3 - ref.j3, 3) : '—', 'kg m²/s'],
-    ['tension', fmt(f?.tension, 6), 'N'],
-    ['tension min', ex ? `${fmt(ex.min, 6)} (t = ${fmt(ex.tMin, 4)} s)` : '—', 'N'],
-    ['tension max', ex ? `${fmt(ex.max, 6)} (t = ${fmt(ex.tMax, 4)} s)` : '—', 'N'],
+    [t('data.tension'), fmt(f?.tension, 6), 'N'],
+    [t('data.tensionMin'), ex ? `${fmt(ex.min, 6)} (t = ${fmt(ex.tMin, 4)} s)` : '—', 'N'],
+    [t('data.tensionMax'), ex ? `${fmt(ex.max, 6)} (t = ${fmt(ex.tMax, 4)} s)` : '—', 'N'],
     ['z', fmt(f?.x[2], 6), 'm'],
-    ['method', s ? `${s.method}${s.adaptive ? '' : `, dt = ${s.dt} s`}` : '—', ''],
-    ['state', s ? `${s.paused ? 'paused' : 'running'}${s.lagging ? ' (lagging: slower than asked)' : ''}` : '—', ''],
+    [t('data.method'), s ? `${s.method}${s.adaptive ? '' : `, dt = ${s.dt} s`}` : '—', ''],
+    [t('data.state'), s ? `${s.paused ? t('data.paused') : t('data.running')}${s.lagging ? t('data.lagging') : ''}` : '—', ''],
   ];
   if (s && s.model !== 'ideal') {
-    rows.splice(1, 0, ['model', s.model, '']);
+    rows.splice(1, 0, [t('data.model'), s.model, '']);
     rows.splice(4, 0, ['power P = dE/dt', fmt(f?.power, 6), 'W']);
   }
-  const at = rows.findIndex((r) => r[0] === 'tension');
+  const at = rows.findIndex((r) => r[0] === t('data.tension'));
   const style = tetherStyle(s?.model, f?.taut ?? true);
   if (style === 'coil' && s) {
     // the spring: its force k(|r| − l₀) (> 0 pulling), its length and stretch (l is the rest length l₀)
@@ -47,7 +48,7 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
       'm',
     ]);
   } else if (style === 'slack string') {
-    rows[at] = ['tension', 'slack (0)', 'N'];
+    rows[at] = [t('data.tension'), 'slack (0)', 'N'];
     rows.splice(at + 1, 0, ['string', `slack: free flight, |x| = ${fmt(f ? Math.hypot(...f.x) : null, 5)} m`, '']);
   } else if (style === 'taut string') {
     rows.splice(at + 1, 0, ['string', 'taut', '']);
@@ -76,13 +77,13 @@ export function exactRows(q: ExactQuantities | null): Row[] {
   if (q === null) return [];
   const h = q.turning_heights;
   const rows: Row[] = [
-    ['kind', q.kind, ''],
+    [t('data.kind'), q.kind, ''],
     ['z₁, z₂', `${fmt(h[0])}, ${fmt(h[1])}`, 'm'],
   ];
   if (h.length > 2) rows.push(['z₃ (outside)', fmt(h[2]), 'm']);
-  rows.push(['T_z', q.period_z_infinite ? '∞' : fmt(q.period_z), 's']);
-  if (q.azimuth_advance !== null) rows.push(['Δφ per T_z', fmt(q.azimuth_advance), 'rad']);
-  if (q.rotation_number !== null) rows.push(['W = Δφ/2π', fmt(q.rotation_number), '']);
+  rows.push([q.kind === 'planar' ? t('data.swingPeriod') : t('data.periodZ'), q.period_z_infinite ? '∞' : fmt(q.period_z), 's']);
+  if (q.azimuth_advance !== null) rows.push([t('data.advance'), fmt(q.azimuth_advance), 'rad']);
+  if (q.rotation_number !== null) rows.push([t('data.rotation'), fmt(q.rotation_number), '']);
   if (q.phases !== null) {
     rows.push(['Δφ dynamic', fmt(q.phases.dynamic), 'rad']);
     rows.push(['Δφ geometric', fmt(q.phases.geometric), 'rad']);
@@ -101,10 +102,10 @@ export class DataPanel {
       h.textContent = text;
       container.appendChild(h);
     };
-    title('Now (from the server)');
+    title(t('data.now'));
     this.live = document.createElement('table');
     container.appendChild(this.live);
-    title('Exact solution of this orbit');
+    title(t('data.exact'));
     this.exactTable = document.createElement('table');
     container.appendChild(this.exactTable);
     this.note = document.createElement('p');

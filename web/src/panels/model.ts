@@ -5,18 +5,30 @@
 // changes (from here, a scenario or a shared link).
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
-import type { Command, ModelSchema, Schema, Status } from '../protocol';
+import type { Command, ModelParams, ModelSchema, Schema, Status } from '../protocol';
 import { addParam, throttle } from './params';
+import { t } from '../i18n';
 
 export interface ModelActions {
   send(cmd: Command): void;
   explain(message: string): void;
 }
 
-/** The picker's options: `name — summary` → name. */
+/** What a model picked in the lab starts with beyond the registry's defaults, so that choosing it changes
+ *  something a class can see: `damped` with friction c = 0.3 1/s (the registry's default, 0, makes it the
+ *  ideal pendulum — right for the Python API and scenario files, invisible in the lab). */
+export const PICKED_PARAMS: Readonly<Record<string, ModelParams>> = { damped: { damping: 0.3 } };
+
+/** The `set_model` command of the picker for model `name`. */
+export function pickCommand(name: string): Command {
+  const params = PICKED_PARAMS[name];
+  return params ? { type: 'set_model', model: name, params: { ...params } } : { type: 'set_model', model: name };
+}
+
+/** The picker's options: `label (name)` → name (the summary, with its formula numbers, is the tooltip). */
 export function modelOptions(models: readonly ModelSchema[]): Record<string, string> {
   const out: Record<string, string> = {};
-  for (const m of models) out[`${m.name} — ${m.summary}`] = m.name;
+  for (const m of models) out[m.label ? `${m.label} (${m.name})` : m.name] = m.name;
   return out;
 }
 
@@ -36,8 +48,8 @@ export class ModelControls {
   ) {
     this.picker = parent
       .add(this.state, 'model', modelOptions(schema.models))
-      .name('model')
-      .onChange((name: string) => actions.send({ type: 'set_model', model: name }));
+      .name(t('gui.model'))
+      .onChange((name: string) => actions.send(pickCommand(name)));
     this.picker.domElement.dataset['control'] = 'model';
     this.picker.domElement.title = schema.models.map((m) => `${m.name}: ${m.summary}`).join('\n');
     this.sendParam = throttle((name: string, value: number) => {
@@ -58,7 +70,7 @@ export class ModelControls {
     this.shown = name;
     const spec = this.spec(name);
     if (spec === undefined || spec.params.length === 0) return;
-    const folder = this.parent.addFolder(`${name} parameters`);
+    const folder = this.parent.addFolder(t('gui.modelParams', { model: spec.label ?? name }));
     for (const p of spec.params) {
       this.values[p.name] = p.default;
       const c = addParam(folder, this.values, p, (v) => this.sendParam(p.name, v), this.actions.explain);

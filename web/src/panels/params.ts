@@ -5,16 +5,23 @@
 import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { ParamSchema } from '../protocol';
+import { paramWords, t } from '../i18n';
 
 /** A unit for display: m/s^2 → m/s², 1 → no unit. */
 export function unitLabel(unit: string): string {
   return unit === '1' ? '' : unit.replace('^2', '²').replace('^3', '³');
 }
 
-/** The control's label: `name [unit]`. */
+/** The parameter's words in the page's language: its label (the registry's, or the name) and help. */
+export function paramWordsOf(p: ParamSchema): [label: string, help: string] {
+  return paramWords(p.name, p.label ?? p.name, p.description);
+}
+
+/** The control's label: `label [unit]` (the label in words; the key name goes into the tooltip). */
 export function paramLabel(p: ParamSchema): string {
   const u = unitLabel(p.unit);
-  return u ? `${p.name} [${u}]` : p.name;
+  const [label] = paramWordsOf(p);
+  return u ? `${label} [${u}]` : label;
 }
 
 /** The allowed range in words, e.g. `0 … 1000 kg`, `≥ 0 1/s`, `any finite number`. */
@@ -31,7 +38,7 @@ export function allowedRange(p: ParamSchema): string {
 export function checkParam(p: ParamSchema, v: number): string | null {
   const ok = Number.isFinite(v) && (p.min === null || v >= p.min) && (p.max === null || v <= p.max);
   if (ok) return null;
-  return `${p.name} = ${v} is not allowed: ${p.allowed ?? allowedRange(p)} (${allowedRange(p)})`;
+  return t('msg.notAllowed', { name: p.name, value: v, allowed: p.allowed ?? allowedRange(p), range: allowedRange(p) });
 }
 
 /** Adds the control of `p` (bound to obj[p.name]) to `folder`; calls `send(v)` for allowed values and
@@ -52,7 +59,8 @@ export function addParam(
       if (problem !== null) explain(problem);
       else send(v);
     });
-  c.domElement.title = `${p.description} [${p.unit}]; allowed: ${allowedRange(p)}; default ${p.default}`;
+  const [, help] = paramWordsOf(p);
+  c.domElement.title = t('gui.paramHelp', { help, name: p.name, unit: p.unit, range: allowedRange(p), default: p.default });
   c.domElement.dataset['param'] = p.name;
   // the slider's step, not snapping typed values (7.292e-5 stays; lil-gui's step(step, explicit = false))
   (c as unknown as { step(step: number, explicit: boolean): unknown }).step(p.step, false);

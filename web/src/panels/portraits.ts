@@ -9,6 +9,7 @@ import type { History } from '../state';
 import { CurvePlot, dataRange, potentialRange } from './curves';
 import { offSphereNote } from '../models';
 import { Visibility } from './visible';
+import { t } from '../i18n';
 
 /** Polar angle θ from the downward vertical [rad] of a position x [m] relative to the pivot. */
 export function polarAngle(x: readonly [number, number, number]): number {
@@ -24,9 +25,9 @@ export class Portraits {
   private readonly visibility = new Visibility();
 
   constructor(private readonly container: HTMLElement) {
-    this.phase = new CurvePlot(container, 'phase portrait (z, ż) [m, m/s]', 'z [m]', 'ż');
-    this.potential = new CurvePlot(container, 'V_eff(θ) and the energy E [J]', 'θ [rad]', 'J');
-    this.em = new CurvePlot(container, 'energy–momentum map (J₃ [kg m²/s], E [J])', 'J₃', 'E');
+    this.phase = new CurvePlot(container, t('portrait.phase'), 'z [m]', 'ż [m/s]');
+    this.potential = new CurvePlot(container, t('portrait.veff'), 'θ [rad]', 'E [J]');
+    this.em = new CurvePlot(container, t('portrait.em'), 'J₃ [kg m²/s]', 'E [J]');
     for (const p of [this.phase, this.potential, this.em]) this.visibility.watch(p.canvas);
     this.note = document.createElement('p');
     this.note.className = 'note';
@@ -51,7 +52,7 @@ export class Portraits {
     const weight = em.top.energy;
     const jr = dataRange([...em.boundary.j3.filter((_, i) => (em.boundary.energy[i] ?? Infinity) < 2.6 * weight), f?.j3 ?? 0], 0.05);
     const yr = { lo: em.bottom.energy - 0.15 * weight, hi: Math.max(2.6 * weight, (f?.energy ?? 0) + 0.2 * weight) };
-    this.em.draw(width, [{ x: em.boundary.j3, y: em.boundary.energy, color: '#c9a0ff' }], jr, yr, {
+    this.em.draw(width, [{ x: em.boundary.j3, y: em.boundary.energy, color: '#c9a0ff', label: t('portrait.emBoundary') }], jr, yr, {
       vLine: 0,
       hLine: em.top.energy,
       dot: f ? [f.j3, f.energy] : null,
@@ -66,7 +67,7 @@ export class Portraits {
       const dot: [number, number] | null = f ? [f.x[2], f.v[2]] : null;
       const zr = dataRange(f ? [...h.z, f.x[2]] : h.z);
       const zdr = dataRange(f ? [...h.zdot, f.v[2]] : h.zdot);
-      this.phase.draw(width, [{ x: h.z, y: h.zdot, color: '#59c3ff' }], zr, zdr, { dot });
+      this.phase.draw(width, [{ x: h.z, y: h.zdot, color: '#59c3ff', label: t('portrait.orbit') }], zr, zdr, { dot });
     }
     if (!this.visibility.visible(this.potential.canvas)) return;
     if (veff === null || veff.theta.length === 0) {
@@ -74,7 +75,7 @@ export class Portraits {
       return;
     }
     const yr = potentialRange(veff.minimum.v_eff, f?.energy ?? null, mass * Math.max(Math.abs(g), 1) * length);
-    this.potential.draw(width, [{ x: veff.theta, y: veff.v_eff, color: '#7dff8a' }], { lo: 0, hi: Math.PI }, yr, {
+    this.potential.draw(width, [{ x: veff.theta, y: veff.v_eff, color: '#7dff8a', label: 'V_eff(θ)' }], { lo: 0, hi: Math.PI }, yr, {
       hLine: f?.energy ?? null,
       vLine: f ? polarAngle(f.x) : null,
     });

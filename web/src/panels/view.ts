@@ -5,16 +5,19 @@ import type GUI from 'lil-gui';
 import type { ViewOptions } from '../scene/scene';
 import { STEREO_MODES } from '../scene/scene';
 import type { VectorName } from '../scene/vectors';
+import { ARROW_COLORS } from '../scene/scene';
+import { t } from '../i18n';
+import type { Key } from '../i18n';
 
 /** Labels of the vector toggles, with what each arrow is and its scale (docs/web.md). */
-export const VECTOR_LABELS: Record<VectorName, [label: string, title: string]> = {
-  velocity: ['velocity v', 'v [m/s], drawn as 0.25 s of travel'],
-  momentum: ['momentum m v', 'm v [kg m/s], 0.25 m per kg m/s'],
-  gravity: ['gravity m g', 'the weight m g d [N] (d: the gravity direction); forces: m·max(|g|, 1) N ↔ 0.5 l'],
-  tension: ['rod force (tension)', 'the rod force −T x/|x| [N], T from the server'],
-  net: ['net force m a', 'm a [N]: a = ẍ computed by the server’s core (relative to the pivot)'],
-  angularMomentum: ['angular momentum L', 'L = (x − o) × m v [kg m²/s] about the origin o, drawn from o'],
-  torque: ['torque τ', 'τ = (x − o) × m a [N m] about the origin o, drawn from o; dL/dt = τ'],
+export const VECTOR_LABELS: Record<VectorName, [label: Key, title: Key]> = {
+  velocity: ['vec.velocity', 'vec.velocityHelp'],
+  momentum: ['vec.momentum', 'vec.momentumHelp'],
+  gravity: ['vec.gravity', 'vec.gravityHelp'],
+  tension: ['vec.tension', 'vec.tensionHelp'],
+  net: ['vec.net', 'vec.netHelp'],
+  angularMomentum: ['vec.angularMomentum', 'vec.angularMomentumHelp'],
+  torque: ['vec.torque', 'vec.torqueHelp'],
 };
 
 export function addViewControls(
@@ -23,36 +26,38 @@ export function addViewControls(
   changed: () => void,
   setTopView: (top: boolean) => void,
 ): GUI {
-  const vf = gui.addFolder('View');
-  vf.add(view, 'trail').onChange(changed);
-  vf.add(view, 'trailSeconds', 1, 120, 1).name('trail [s]').onChange(changed);
-  vf.add(view, 'sphere').name('sphere of reach').onChange(changed);
-  vf.add(view, 'axes').onChange(changed);
+  const vf = gui.addFolder(t('gui.view'));
+  vf.add(view, 'trail').name(t('gui.trail')).onChange(changed);
+  vf.add(view, 'trailSeconds', 1, 120, 1).name(t('gui.trailSeconds')).onChange(changed);
+  vf.add(view, 'sphere').name(t('gui.sphere')).onChange(changed);
+  vf.add(view, 'axes').name(t('gui.axes')).onChange(changed);
   const top = { topView: false };
   vf.add(top, 'topView')
-    .name('top view')
+    .name(t('gui.topView'))
     .onChange((v: boolean) => {
       setTopView(v);
       changed();
     });
-  vf.add(view, 'stereo', [...STEREO_MODES])
-    .name('stereo')
-    .onChange(changed).domElement.title =
-    'anaglyph: red–cyan glasses; side by side: a stereo viewer (three.js AnaglyphEffect / StereoEffect)';
+  const stereo = vf.add(view, 'stereo', [...STEREO_MODES]).name(t('gui.stereo')).onChange(changed);
+  stereo.domElement.title = t('gui.stereoHelp');
+  stereo.domElement.dataset['control'] = 'stereo';
   vf.close();
 
-  const vec = gui.addFolder('Vectors');
-  for (const [name, [label, title]] of Object.entries(VECTOR_LABELS) as [VectorName, [string, string]][]) {
-    const c = vec.add(view, name).name(label).onChange(changed);
-    c.domElement.title = title;
+  const vec = gui.addFolder(t('gui.vectors'));
+  for (const [name, [label, title]] of Object.entries(VECTOR_LABELS) as [VectorName, [Key, Key]][]) {
+    const c = vec.add(view, name).name(t(label)).onChange(changed);
+    c.domElement.title = t(title);
     c.domElement.dataset['vector'] = name;
+    // the colour key beside each toggle
+    c.$name.style.borderLeft = `10px solid #${ARROW_COLORS[name].toString(16).padStart(6, '0')}`;
+    c.$name.style.paddingLeft = '4px';
   }
   for (const axis of ['X', 'Y', 'Z'] as const) {
     const key = `origin${axis}` as const;
     vec
       .add(view, key, -5, 5, 0.01)
-      .name(`origin ${axis.toLowerCase()} [m]`)
-      .onChange(changed).domElement.title = 'origin of L and τ relative to the pivot (0: the pivot)';
+      .name(t('gui.origin', { axis: axis.toLowerCase() }))
+      .onChange(changed).domElement.title = t('gui.originHelp');
   }
   vec.close();
   return vf;

@@ -4,6 +4,7 @@
 // /api/reduced) and the current σ point. Axes are scaled into a box (σ₂ by its span S, σ₃ by its span),
 // so the picture fits whatever the energy; the surface above the box is clipped. Drawing only.
 import * as THREE from 'three';
+import { t } from '../i18n';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import type { Frame, ReducedCurves } from '../protocol';
 import type { RenderQuality } from './quality';
@@ -41,7 +42,7 @@ export class ReducedView {
   ) {
     const title = document.createElement('div');
     title.className = 'curve-title';
-    title.textContent = 'reduced view (σ₁, σ₂, σ₃): J₃ surface ∩ energy plane';
+    title.textContent = t('data.reduced');
     container.appendChild(title);
     this.renderer = new THREE.WebGLRenderer({ antialias: quality.antialias, preserveDrawingBuffer: true });
     this.renderer.localClippingEnabled = true;

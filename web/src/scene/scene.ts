@@ -5,7 +5,6 @@
 // vector is +z. It only draws what the store hands it.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { AnaglyphEffect } from 'three/addons/effects/AnaglyphEffect.js';
 import { StereoEffect } from 'three/addons/effects/StereoEffect.js';
 import type { Frame, Vec3 } from '../protocol';
 import type { DragPhase, PullBasis } from './drag';
@@ -19,6 +18,20 @@ import { Tether } from './tether';
 import { tetherStyle } from '../models';
 import type { RenderQuality } from './quality';
 import { layeredOpacity } from './quality';
+import { Instruments } from './instruments';
+import { MaskAnaglyph } from './anaglyph';
+
+/** The camera's distance [m] at which a sphere of radius r [m] fills a view of vertical field of view
+ *  `fovDeg` [°] and aspect `aspect` (width/height) up to `fill` of its narrower side. */
+export function framingDistance(r: number, fovDeg: number, aspect: number, fill = 0.9): number {
+  const halfV = (fovDeg * Math.PI) / 360;
+  const halfH = Math.atan(Math.tan(halfV) * Math.max(aspect, 1e-3));
+  const half = Math.min(halfV, halfH);
+  return r / Math.sin(half * fill);
+}
+
+/** The colour of the second pendulum (two-pendulum mode). */
+export const TWIN_COLOR = 0xc8f560;
 
 /** The trail to draw: `frames[start..end)`, oldest first (LabStore.trailRange). */
 export interface TrailSlice {
@@ -36,8 +49,11 @@ export interface ViewOptions extends Record<VectorName, boolean> {
   originX: number;
   originY: number;
   originZ: number;
-  /** Stereo: off, red–cyan anaglyph (AnaglyphEffect) or side by side for a viewer (StereoEffect). */
+  /** Stereo: off, red–cyan anaglyph (colour masks: anaglyph.ts) or side by side for a viewer (StereoEffect). */
   stereo: Stereo;
+  /** The ruler and the protractor (instruments.ts). */
+  ruler: boolean;
+  protractor: boolean;
 }
 
 export const STEREO_MODES = ['off', 'anaglyph', 'side by side'] as const;
@@ -59,6 +75,8 @@ export const DEFAULT_VIEW: ViewOptions = {
   originY: 0,
   originZ: 0,
   stereo: 'off',
+  ruler: false,
+  protractor: false,
 };
 
 /** Arrow colours (the legend in docs/web.md). */
@@ -98,6 +116,10 @@ export class PendulumScene {
   private readonly scene = new THREE.Scene();
   private readonly sphere: THREE.Mesh;
   private readonly equator: THREE.LineLoop;
+  /** The sphere of reach as lines (meridians and parallels): drawn instead of the translucent fill in the
+   *  anaglyph, which renders the scene twice; the fill's blending over a fifth of the canvas is what a
+   *  software renderer pays most for (30 fps with it, 60 without, docs/performance.md). */
+  private readonly reachLines: THREE.LineSegments;
   private readonly rod: THREE.Mesh;
   private readonly bob: THREE.Mesh;
   private readonly pivot: THREE.Mesh;
@@ -119,7 +141,20 @@ export class PendulumScene {
   private length = 1;
   private extent = 1;
   private stereo: Stereo = 'off';
-  private anaglyph: AnaglyphEffect | null = null;
+  private anaglyph: MaskAnaglyph | null = null;
+  private readonly instruments = new Instruments();
+  /** The slewing crane's boom, from the slewing axis to the pivot (drawn while the pivot is off the axis). */
+  private readonly boom: THREE.Line;
+  /** The second pendulum (two-pendulum mode): bob, rod and trail. */
+  private readonly twinBob: THREE.Mesh;
+  private readonly twinRod: THREE.Mesh;
+  private readonly twinTrail: THREE.Line;
+  private readonly twinPositions: Float32Array;
+  /** The camera follows the pivot (the slewing crane: the pendulum stays framed as the boom turns). */
+  private follow = false;
+  private followAt: THREE.Vector3 | null = null;
+  /** The largest |x| [m] drawn in this fit (the spring stretches past l). */
+  private reach = 1;
   private sideBySide: StereoEffect | null = null;
   /** Dragging the bob on the sphere (drag.ts); null until `enableDrag`. */
   drag: BobDrag | null = null;
@@ -183,6 +218,30 @@ export class PendulumScene {
       ring,
       new THREE.LineBasicMaterial({ color: 0x8fb3ff, transparent: true, opacity: 0.25 }),
     );
+    const grid: THREE.Vector3[] = [];
+    const N = 96;
+    for (let m = 0; m < 6; m++) {
+      const phi = (m * Math.PI) / 6;
+      for (let i = 0; i < N; i++) {
+        const [a, b] = [(2 * Math.PI * i) / N, (2 * Math.PI * (i + 1)) / N];
+        grid.push(
+          new THREE.Vector3(Math.sin(a) * Math.cos(phi), Math.sin(a) * Math.sin(phi), Math.cos(a)),
+          new THREE.Vector3(Math.sin(b) * Math.cos(phi), Math.sin(b) * Math.sin(phi), Math.cos(b)),
+        );
+      }
+    }
+    for (const z of [-0.75, -0.5, -0.25, 0.25, 0.5, 0.75]) {
+      const rho = Math.sqrt(1 - z * z);
+      for (let i = 0; i < N; i++) {
+        const [a, b] = [(2 * Math.PI * i) / N, (2 * Math.PI * (i + 1)) / N];
+        grid.push(new THREE.Vector3(rho * Math.cos(a), rho * Math.sin(a), z), new THREE.Vector3(rho * Math.cos(b), rho * Math.sin(b), z));
+      }
+    }
+    this.reachLines = new THREE.LineSegments(
+      new THREE.BufferGeometry().setFromPoints(grid),
+      new THREE.LineBasicMaterial({ color: 0x8fb3ff, transparent: true, opacity: 0.18 }),
+    );
+    this.reachLines.visible = false;
     this.pivot = new THREE.Mesh(
       new THREE.SphereGeometry(0.02, 16, 12),
       new THREE.MeshStandardMaterial({ color: 0xcccccc }),
@@ -212,9 +271,29 @@ export class PendulumScene {
     this.trail = new THREE.Line(tg, new THREE.LineBasicMaterial({ vertexColors: true }));
     this.trail.frustumCulled = false;
 
+    this.boom = new THREE.Line(
+      new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(), new THREE.Vector3()]),
+      new THREE.LineBasicMaterial({ color: 0x9aa4b8 }),
+    );
+    this.boom.visible = false;
+    this.boom.frustumCulled = false;
+    this.twinBob = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), new THREE.MeshStandardMaterial({ color: TWIN_COLOR, roughness: 0.4 }));
+    this.twinRod = new THREE.Mesh(
+      new THREE.CylinderGeometry(1, 1, 1, 8),
+      new THREE.MeshStandardMaterial({ color: TWIN_COLOR, metalness: 0.3, roughness: 0.5 }),
+    );
+    this.twinPositions = new Float32Array(3 * (TRAIL_MAX + 1));
+    const twg = new THREE.BufferGeometry();
+    twg.setAttribute('position', new THREE.BufferAttribute(this.twinPositions, 3));
+    twg.setDrawRange(0, 0);
+    this.twinTrail = new THREE.Line(twg, new THREE.LineBasicMaterial({ color: TWIN_COLOR, transparent: true, opacity: 0.6 }));
+    this.twinTrail.frustumCulled = false;
+    for (const o of [this.twinBob, this.twinRod, this.twinTrail]) o.visible = false;
+
     this.scene.add(
       this.sphere,
       this.equator,
+      this.reachLines,
       this.pivot,
       this.rod,
       this.bob,
@@ -222,6 +301,12 @@ export class PendulumScene {
       this.trail,
       this.tether.group,
       this.handle,
+      this.boom,
+      this.twinBob,
+      this.twinRod,
+      this.twinTrail,
+      this.instruments.ruler,
+      this.instruments.protractor,
       ...Object.values(this.arrows),
     );
     this.setLength(1);
@@ -235,11 +320,13 @@ export class PendulumScene {
     if (!(l > 0)) return;
     const changed = Math.abs(l - this.length) > 1e-12 * l;
     this.length = l;
-    if (changed) this.extent = l;
+    if (changed) this.extent = this.reach = l;
     this.sphere.scale.setScalar(l);
     this.equator.scale.setScalar(l);
+    this.reachLines.scale.setScalar(l);
     this.pivot.scale.setScalar(l);
     this.bob.scale.setScalar(0.05 * l);
+    this.twinBob.scale.setScalar(0.045 * l);
     this.handle.scale.setScalar(HANDLE_RADIUS * l);
     this.axes.scale.setScalar(l);
     if (changed) this.resetCamera();
@@ -254,11 +341,18 @@ export class PendulumScene {
     this.resetCamera();
   }
 
+  /** Frames the scene: the sphere of radius `extent` (the sphere of reach, the spring's largest stretch,
+   *  or, with a fixed pivot off the origin, that too) fills 90 % of the canvas's narrower side; with
+   *  `follow` (the slewing crane) the camera looks at the pivot and moves with it. */
   resetCamera(): void {
     const l = this.extent;
-    if (this.topView) this.camera.position.set(0, -1e-4 * l, 5.2 * l);
-    else this.camera.position.set(3.3 * l, -3.9 * l, 1.5 * l);
-    this.controls.target.set(0, 0, 0);
+    const r = 1.1 * l; // the bob's radius and the ruler's labels
+    const aspect = this.stereo === 'side by side' ? this.camera.aspect / 2 : this.camera.aspect;
+    const d = framingDistance(r, this.camera.fov, aspect);
+    const centre = this.follow && this.followAt !== null ? this.followAt : new THREE.Vector3();
+    if (this.topView) this.camera.position.set(0, -1e-4 * d, d).add(centre);
+    else this.camera.position.set(3.3, -3.9, 1.5).normalize().multiplyScalar(d).add(centre);
+    this.controls.target.copy(centre);
     this.camera.near = 0.01 * this.length;
     this.camera.far = 100 * l;
     this.camera.updateProjectionMatrix();
@@ -268,8 +362,13 @@ export class PendulumScene {
 
   /** The model drawn (models.ts): a rod, the spring's coil, or the string (taut, or slack and dashed). */
   setModel(model: string): void {
-    this.invalid ||= model !== this.model;
+    if (model === this.model) return;
+    this.invalid = true;
     this.model = model;
+    this.follow = model === 'slewing';
+    this.followAt = null;
+    this.extent = this.reach = this.length;
+    this.resetCamera();
   }
 
   setTopView(on: boolean): void {
@@ -334,28 +433,31 @@ export class PendulumScene {
 
   setStereo(mode: Stereo): void {
     this.stereo = mode;
-    if (mode === 'anaglyph' && this.anaglyph === null) this.anaglyph = new AnaglyphEffect(this.renderer);
+    if (mode === 'anaglyph' && this.anaglyph === null) this.anaglyph = new MaskAnaglyph(this.renderer);
     if (mode === 'side by side' && this.sideBySide === null) this.sideBySide = new StereoEffect(this.renderer);
     this.resize();
+    this.resetCamera();
   }
 
   resize(): void {
     const w = Math.max(1, this.container.clientWidth);
     const h = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(w, h, false);
-    if (this.stereo === 'anaglyph') this.anaglyph?.setSize(w, h);
     if (this.stereo === 'side by side') this.sideBySide?.setSize(w, h);
     this.renderer.domElement.style.width = '';
     this.renderer.domElement.style.height = '';
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.resetCamera(); // the framing depends on the canvas's shape
     this.invalid = true;
   }
 
   /** Draws the state `f` of a pendulum of mass `mass` [kg] under gravity g [m/s²] along the unit vector
    *  `gdir`, with the trail frames; the pivot at f.pivot, the bob at f.pivot + f.x. */
   update(f: Frame | null, trail: TrailSlice, view: ViewOptions, mass: number, g: number, gdir: Vec3): void {
-    this.sphere.visible = view.sphere;
+    const lines = this.stereo === 'anaglyph';
+    this.sphere.visible = view.sphere && !lines;
+    this.reachLines.visible = view.sphere && lines;
     this.equator.visible = view.sphere;
     this.axes.visible = view.axes;
     const has = f !== null;
@@ -373,8 +475,19 @@ export class PendulumScene {
       return;
     }
     const pivot = this.pivotNow.fromArray(f.pivot);
-    this.fit(this.length + pivot.length());
-    for (const o of [this.sphere, this.equator, this.pivot]) o.position.copy(pivot);
+    this.followPivot(pivot);
+    this.reach = Math.max(this.reach, Math.hypot(...f.x));
+    this.fit(this.reach + (this.follow ? 0 : pivot.length()));
+    this.instruments.update(pivot, f.x, this.length, view.ruler, view.protractor, this.camera.position);
+    const boomR = Math.hypot(pivot.x, pivot.y);
+    this.boom.visible = boomR > 1e-9 * this.length;
+    if (this.boom.visible) {
+      const pos = this.boom.geometry.getAttribute('position') as THREE.BufferAttribute;
+      pos.setXYZ(0, 0, 0, pivot.z);
+      pos.setXYZ(1, pivot.x, pivot.y, pivot.z);
+      pos.needsUpdate = true;
+    }
+    for (const o of [this.sphere, this.equator, this.reachLines, this.pivot]) o.position.copy(pivot);
     const x = this.tmpX.fromArray(f.x);
     const r = x.length();
     const bob = this.tmpBob.copy(x).add(pivot);
@@ -407,6 +520,86 @@ export class PendulumScene {
       const vec = this.tmpVec.fromArray(vectors[name]).multiplyScalar(scales[name]);
       this.setArrow(this.arrows[name], view[name], from, vec);
     }
+  }
+
+  /** Moves camera and target with the pivot (when following it): the view keeps its angle and distance. */
+  private followPivot(pivot: THREE.Vector3): void {
+    if (!this.follow) return;
+    if (this.followAt === null) {
+      this.followAt = pivot.clone();
+      this.resetCamera();
+      return;
+    }
+    const dx = this.tmpVec.copy(pivot).sub(this.followAt);
+    if (dx.lengthSq() === 0) return;
+    this.camera.position.add(dx);
+    this.controls.target.add(dx);
+    this.followAt.copy(pivot);
+  }
+
+  /** Draws the second pendulum at state `f` (null: hidden) with its trail frames (two-pendulum mode). */
+  updateTwin(f: Frame | null, trail: TrailSlice): void {
+    const on = f !== null;
+    for (const o of [this.twinBob, this.twinRod, this.twinTrail]) o.visible = on;
+    this.invalid = true;
+    if (f === null) return;
+    const x = this.tmpX.fromArray(f.x);
+    const pivot = this.tmpOrigin.fromArray(f.pivot);
+    this.twinBob.position.copy(x).add(pivot);
+    const r = x.length();
+    if (r > 0) {
+      this.twinRod.position.copy(x).multiplyScalar(0.5).add(pivot);
+      this.twinRod.quaternion.setFromUnitVectors(Y, this.tmpDir.copy(x).divideScalar(r));
+      this.twinRod.scale.set(0.005 * this.length, r, 0.005 * this.length);
+    }
+    const n = Math.min(trail.end - trail.start, TRAIL_MAX);
+    const p = this.twinPositions;
+    for (let i = 0; i < n; i++) {
+      const g = trail.frames[trail.end - n + i] as Frame;
+      p[3 * i] = g.x[0] + g.pivot[0];
+      p[3 * i + 1] = g.x[1] + g.pivot[1];
+      p[3 * i + 2] = g.x[2] + g.pivot[2];
+    }
+    const geom = this.twinTrail.geometry;
+    geom.setDrawRange(0, Math.max(0, n));
+    const position = geom.getAttribute('position') as THREE.BufferAttribute;
+    position.clearUpdateRanges();
+    position.addUpdateRange(0, 3 * Math.max(n, 1));
+    position.needsUpdate = true;
+  }
+
+  /** The box [CSS px] of the sphere of reach (its silhouette: points around its outline as seen from the
+   *  camera) on the page, for tests: inside the canvas means the whole sphere is in view. */
+  sphereOnScreen(): { left: number; right: number; top: number; bottom: number } {
+    const centre = this.sphere.position.clone();
+    const toCam = this.camera.position.clone().sub(centre).normalize();
+    const u = new THREE.Vector3().crossVectors(toCam, new THREE.Vector3(0, 0, 1));
+    if (u.lengthSq() < 1e-12) u.set(1, 0, 0);
+    u.normalize();
+    const w = new THREE.Vector3().crossVectors(toCam, u).normalize();
+    const dist = this.camera.position.distanceTo(centre);
+    const r = this.sphere.scale.x;
+    // the silhouette circle: radius r√(1 − r²/d²), centred r²/d towards the camera
+    const rs = r * Math.sqrt(Math.max(0, 1 - (r * r) / (dist * dist)));
+    const c = centre.clone().addScaledVector(toCam, (r * r) / dist);
+    const rect = this.renderer.domElement.getBoundingClientRect();
+    const box = { left: Infinity, right: -Infinity, top: Infinity, bottom: -Infinity };
+    for (let i = 0; i < 64; i++) {
+      const a = (2 * Math.PI * i) / 64;
+      const p = c.clone().addScaledVector(u, rs * Math.cos(a)).addScaledVector(w, rs * Math.sin(a)).project(this.camera);
+      const x = rect.left + ((p.x + 1) / 2) * rect.width;
+      const y = rect.top + ((1 - p.y) / 2) * rect.height;
+      box.left = Math.min(box.left, x);
+      box.right = Math.max(box.right, x);
+      box.top = Math.min(box.top, y);
+      box.bottom = Math.max(box.bottom, y);
+    }
+    return box;
+  }
+
+  /** The second pendulum's bob on the page [CSS px], or null when it is not drawn (for tests). */
+  twinOnScreen(): { x: number; y: number } | null {
+    return this.onScreen(this.twinBob);
   }
 
   /** Points the arrow `a` from `from` along `vec` (which it may scale). */
@@ -477,9 +670,7 @@ export class PendulumScene {
     // stereo: the screen plane through the orbit's centre, eyes 1/30 of the viewing distance apart
     const distance = this.camera.position.distanceTo(this.controls.target);
     if (this.stereo === 'anaglyph' && this.anaglyph !== null) {
-      this.anaglyph.planeDistance = distance;
-      this.anaglyph.eyeSep = distance / 30;
-      this.anaglyph.render(this.scene, this.camera);
+      this.anaglyph.render(this.scene, this.camera, distance / 30, distance, BACKGROUND);
     } else if (this.stereo === 'side by side' && this.sideBySide !== null) {
       this.camera.focus = distance;
       this.sideBySide.setEyeSeparation(distance / 30);

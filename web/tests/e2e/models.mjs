@@ -3,11 +3,11 @@
 // would (lil-gui's select, number boxes and buttons), and the effects are read from the server's status.
 import { readFileSync } from 'node:fs';
 
-/** Chooses `name` in the model picker (a lil-gui select whose options read `name — summary`). */
+/** Chooses `name` in the model picker (a lil-gui select whose options read `label (name)`). */
 async function pickModel(page, name) {
   await page.evaluate((name) => {
     const select = document.querySelector('[data-control="model"] select');
-    const i = [...select.options].findIndex((o) => o.textContent.startsWith(`${name} —`));
+    const i = [...select.options].findIndex((o) => o.textContent === name || o.textContent.endsWith(`(${name})`));
     if (i < 0) throw new Error(`no model ${name} in the picker`);
     select.selectedIndex = i;
     select.dispatchEvent(new Event('change'));
@@ -68,11 +68,11 @@ export async function checkViews(page, { check, WAIT, simulated }) {
 
   // stereo: the anaglyph draws in red and cyan
   await page.locator('.lil-title', { hasText: /^View$/ }).click();
-  await page.locator('.lil-controller', { hasText: 'stereo' }).locator('select').selectOption('anaglyph');
+  await page.locator('[data-control="stereo"] select').selectOption('anaglyph');
   await page.waitForTimeout(500);
   await page.screenshot({ path: 'test-results/lab-anaglyph.png' });
   const fringe = await page.evaluate(() => document.getElementById('scene-canvas') !== null);
-  await page.locator('.lil-controller', { hasText: 'stereo' }).locator('select').selectOption('off');
+  await page.locator('[data-control="stereo"] select').selectOption('off');
   check(fringe, 'stereo (anaglyph) renders and switches back');
 
   // dragging the bob sets a new start at rest and pauses
@@ -176,6 +176,9 @@ export async function checkModels(page, { check, WAIT, simulated }) {
   // the picker: damped, then its damping through the generated control
   await pickModel(page, 'damped');
   await waitStatus(() => window.pendulab.store.status?.model === 'damped');
+  const picked = await status();
+  const option = await page.evaluate(() => document.querySelector('[data-control="model"] select').selectedOptions[0].textContent);
+  check(picked.model_params.damping === 0.3 && option === 'Damped and driven (damped)', `picking “${option}” starts with visible friction (damping ${picked.model_params.damping} 1/s)`);
   await page.locator('[data-param="damping"] input').first().waitFor({ timeout: WAIT });
   await typeParam(page, 'damping', 0.8);
   await waitStatus(() => window.pendulab.store.status?.model_params.damping === 0.8);

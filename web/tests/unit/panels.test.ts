@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { scenarioRequest } from '../../src/export';
 import { dataRange, potentialRange } from '../../src/panels/curves';
-import { modelOptions } from '../../src/panels/model';
+import { modelOptions, pickCommand } from '../../src/panels/model';
 import { allowedRange, checkParam, paramLabel, unitLabel } from '../../src/panels/params';
 import { polarAngle } from '../../src/panels/portraits';
 import type { ParamSchema, Status } from '../../src/protocol';
@@ -38,12 +38,22 @@ describe('parameter controls', () => {
     expect(checkParam({ ...damping, min: null }, -5)).toBeNull();
   });
 
-  it('offer every model with its summary', () => {
+  it('offer every model by its label in words (the summary is the tooltip)', () => {
     const opts = modelOptions([
-      { name: 'ideal', summary: 'the ideal one', params: [] },
+      { name: 'ideal', label: 'Ideal pendulum', summary: 'the ideal one (T-2.1)', params: [] },
       { name: 'damped', summary: 'with friction', params: [damping] },
     ]);
-    expect(opts).toEqual({ 'ideal — the ideal one': 'ideal', 'damped — with friction': 'damped' });
+    expect(opts).toEqual({ 'Ideal pendulum (ideal)': 'ideal', damped: 'damped' });
+  });
+
+  it('picking damped starts with visible friction; other models with the registry defaults', () => {
+    expect(pickCommand('damped')).toEqual({ type: 'set_model', model: 'damped', params: { damping: 0.3 } });
+    expect(pickCommand('rotating')).toEqual({ type: 'set_model', model: 'rotating' });
+  });
+
+  it('label a parameter in words with its unit, the key name only when there are no words', () => {
+    expect(paramLabel({ ...damping, label: 'friction (linear damping) c' })).toBe('friction (linear damping) c [1/s]');
+    expect(paramLabel(damping)).toBe('damping [1/s]');
   });
 });
 

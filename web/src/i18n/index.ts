@@ -1,0 +1,56 @@
+// The page's words in one table per language (en.ts, de.ts; docs/web.md, "Languages"). `t(key, vars)` looks a
+// string up in the current language and fills its {placeholders}; the language is chosen once at start
+// (`chooseLanguage`): the URL's `lang`, else the one picked before (localStorage), else the first of the
+// browser's languages the lab speaks, else English. Switching reloads the page (the URL keeps the run).
+// The model registry's words (parameter labels and help) are the core's, in English; a table may give its
+// own (`param.<name>` keys in `PARAM_WORDS`), else the registry's are shown. No DOM; unit-tested.
+import { EN } from './en';
+import type { Words } from './en';
+import { DE, DE_PARAMS } from './de';
+
+export type Key = keyof Words;
+
+export const LANGUAGES = {
+  en: { name: 'English', words: EN, params: {} as Record<string, [string, string]> },
+  de: { name: 'Deutsch', words: DE, params: DE_PARAMS },
+} as const;
+export type Lang = keyof typeof LANGUAGES;
+
+let current: Lang = 'en';
+
+export function isLang(v: unknown): v is Lang {
+  return typeof v === 'string' && Object.hasOwn(LANGUAGES, v);
+}
+
+/** The language to show: `fromUrl` (the `lang` query key), else `stored`, else the first of the browser's
+ *  `preferred` languages (their primary subtag: de-AT → de) the lab has, else English. */
+export function chooseLanguage(fromUrl: string | null, stored: string | null, preferred: readonly string[]): Lang {
+  if (isLang(fromUrl)) return fromUrl;
+  if (isLang(stored)) return stored;
+  for (const p of preferred) {
+    const primary = p.toLowerCase().split('-')[0];
+    if (isLang(primary)) return primary;
+  }
+  return 'en';
+}
+
+export function setLanguage(lang: Lang): void {
+  current = lang;
+}
+
+export function language(): Lang {
+  return current;
+}
+
+/** The string `key` in the current language with each {name} replaced by vars[name]. */
+export function t(key: Key, vars: Record<string, string | number> = {}): string {
+  const table: Words = LANGUAGES[current].words;
+  const text = table[key] ?? EN[key];
+  return text.replace(/\{(\w+)\}/g, (m, name: string) => (name in vars ? String(vars[name]) : m));
+}
+
+/** A registry parameter's label and help in the current language: the table's own, else the registry's. */
+export function paramWords(name: string, label: string, help: string): [label: string, help: string] {
+  const own = (LANGUAGES[current].params as Record<string, [string, string] | undefined>)[name];
+  return own ?? [label, help];
+}

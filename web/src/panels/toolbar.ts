@@ -1,0 +1,101 @@
+// The toolbar at the top of the docked panel (docs/web.md, "Layout" and "Keyboard"): start/pause, reset,
+// step, record, the `?` help, the language and the panel's collapse button. On a wide screen the panel
+// docks on the right and collapses to this toolbar; on a phone it is a bottom sheet that does the same.
+// The canvas always gets what the panel leaves (the scene resizes itself: ResizeObserver).
+import { LANGUAGES, language, t } from '../i18n';
+import type { Lang } from '../i18n';
+
+/** When the panel is a bottom sheet (style.css has the same query). */
+const PHONE = '(max-width: 700px), (max-aspect-ratio: 3/4)';
+
+export interface ToolbarActions {
+  run(): void;
+  reset(): void;
+  step(): void;
+  record(): void;
+  help(): void;
+  language(lang: Lang): void;
+  collapsed(on: boolean): void;
+}
+
+function button(action: string, text: string, title: string, open = false): HTMLButtonElement {
+  const b = document.createElement('button');
+  b.type = 'button';
+  b.dataset['action'] = action;
+  b.textContent = text;
+  b.title = title;
+  b.setAttribute('aria-label', title);
+  if (open) b.classList.add('when-open');
+  return b;
+}
+
+export class Toolbar {
+  readonly runButton: HTMLButtonElement;
+  readonly recordButton: HTMLButtonElement;
+  private readonly toggle: HTMLButtonElement;
+
+  constructor(
+    bar: HTMLElement,
+    private readonly panel: HTMLElement,
+    actions: ToolbarActions,
+  ) {
+    bar.setAttribute('aria-label', t('toolbar.label'));
+    this.toggle = button('panel', '', t('toolbar.collapse'));
+    this.toggle.setAttribute('aria-controls', 'panel-body');
+    this.toggle.addEventListener('click', () => {
+      this.setCollapsed(!panel.classList.contains('collapsed'));
+      actions.collapsed(panel.classList.contains('collapsed'));
+    });
+    this.runButton = button('run', t('toolbar.pauseShort'), t('toolbar.pause'));
+    this.runButton.addEventListener('click', () => actions.run());
+    const reset = button('reset', t('toolbar.resetShort'), t('toolbar.reset'));
+    reset.addEventListener('click', () => actions.reset());
+    const step = button('step', t('toolbar.stepShort'), t('toolbar.step'));
+    step.addEventListener('click', () => actions.step());
+    this.recordButton = button('record', t('toolbar.recordShort'), t('toolbar.record'));
+    this.recordButton.setAttribute('aria-pressed', 'false');
+    this.recordButton.addEventListener('click', () => actions.record());
+    const help = button('help', '?', t('toolbar.help'));
+    help.addEventListener('click', () => actions.help());
+    const lang = document.createElement('select');
+    lang.dataset['input'] = 'language';
+    lang.classList.add('when-open');
+    lang.setAttribute('aria-label', t('toolbar.language'));
+    for (const [code, info] of Object.entries(LANGUAGES)) {
+      const o = document.createElement('option');
+      o.value = code;
+      o.textContent = info.name;
+      lang.appendChild(o);
+    }
+    lang.value = language();
+    lang.addEventListener('change', () => actions.language(lang.value as Lang));
+    bar.append(this.toggle, this.runButton, reset, step, this.recordButton, help, lang);
+    this.setCollapsed(false);
+    // the arrow points where the panel goes: right on a wide screen, down on a phone
+    window.matchMedia(PHONE).addEventListener('change', () => this.setCollapsed(panel.classList.contains('collapsed')));
+  }
+
+  setCollapsed(on: boolean): void {
+    this.panel.classList.toggle('collapsed', on);
+    this.toggle.setAttribute('aria-expanded', String(!on));
+    const phone = window.matchMedia(PHONE).matches;
+    this.toggle.textContent = phone ? (on ? '▴' : '▾') : on ? '◂' : '▸';
+    this.toggle.title = on ? t('toolbar.expand') : t('toolbar.collapse');
+    this.toggle.setAttribute('aria-label', this.toggle.title);
+  }
+
+  showRunning(paused: boolean): void {
+    const text = paused ? t('toolbar.startShort') : t('toolbar.pauseShort');
+    if (this.runButton.textContent !== text) {
+      this.runButton.textContent = text;
+      this.runButton.title = paused ? t('toolbar.start') : t('toolbar.pause');
+      this.runButton.setAttribute('aria-label', this.runButton.title);
+    }
+  }
+
+  showRecording(on: boolean): void {
+    this.recordButton.setAttribute('aria-pressed', String(on));
+    this.recordButton.textContent = on ? t('toolbar.recordStopShort') : t('toolbar.recordShort');
+    this.recordButton.title = on ? t('toolbar.recordStop') : t('toolbar.record');
+  }
+}

@@ -1,0 +1,229 @@
+// The classroom tools at the top of the panel (docs/web.md, "Measuring tools"): the start amplitude typed in
+// degrees, gravity presets and friction, the angles now in degrees, a stopwatch on the simulated time, the
+// period timer (measured beside the exact values of the server) and the ruler/protractor toggles. They send
+// commands or read the store; the measurements themselves are measure.ts's (no physics here).
+import type { Command, Status } from '../protocol';
+import type { LabStore } from '../state';
+import { DEG, periodComparison, sphericalAngles, Stopwatch } from '../measure';
+import { fmt } from '../format';
+import { t } from '../i18n';
+import type { Key } from '../i18n';
+
+/** Gravity presets [m/s²] (surface gravity; NASA planetary fact sheets, rounded). */
+export const GRAVITY_PRESETS: readonly [Key, number][] = [
+  ['gravity.earth', 9.81],
+  ['gravity.moon', 1.62],
+  ['gravity.mars', 3.71],
+  ['gravity.jupiter', 24.79],
+  ['gravity.zero', 0],
+  ['gravity.negative', -9.81],
+];
+
+/** The damping c [1/s] a friction slider change sends: `set_params` on a model with a `damping`
+ *  parameter; for the ideal pendulum, the `damped` model with that damping (0: nothing to change). */
+export function frictionCommand(status: Status | null, damping: number): Command | null {
+  if (status === null) return null;
+  if ('damping' in (status.model_params ?? {})) return { type: 'set_params', params: { damping } };
+  if (status.model === 'ideal' && damping > 0) return { type: 'set_model', model: 'damped', params: { damping } };
+  return null;
+}
+
+/** The `set_state` of a start typed in degrees: θ₀ from the downward vertical, φ₀, and the azimuthal rate
+ *  φ̇₀ [°/s] (0: a planar swing), or a sentence saying what is wrong. */
+export function startCommand(thetaDeg: number, phiDeg: number, phiDotDeg: number): Command | string {
+  for (const [name, v] of [['θ₀', thetaDeg], ['φ₀', phiDeg], ['φ̇₀', phiDotDeg]] as const) {
+    if (!Number.isFinite(v)) return t('start.notNumber', { name });
+  }
+  if (thetaDeg < 0 || thetaDeg > 180) return t('start.thetaRange', { value: thetaDeg });
+  return { type: 'set_state', theta: thetaDeg / DEG, phi: phiDeg / DEG, theta_dot: 0, phi_dot: phiDotDeg / DEG };
+}
+
+export interface ToolActions {
+  send(cmd: Command): void;
+  explain(text: string): void;
+  /** The ruler or the protractor switched on or off in the scene. */
+  overlay(which: 'ruler' | 'protractor', on: boolean): void;
+}
+
+function el<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Record<string, string> = {}, text = ''): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  if (text) e.textContent = text;
+  return e;
+}
+
+function section(parent: HTMLElement, title: string, name: string): HTMLElement {
+  const s = el('section', { class: 'tools', 'data-tool': name });
+  s.appendChild(el('h3', {}, title));
+  parent.appendChild(s);
+  return s;
+}
+
+function numberBox(label: string, name: string, value: number, step: string): [HTMLLabelElement, HTMLInputElement] {
+  const l = el('label');
+  l.append(`${label} `);
+  const i = el('input', { type: 'number', step, name, 'data-input': name });
+  i.value = String(value);
+  i.style.width = '5.5em';
+  l.appendChild(i);
+  return [l, i];
+}
+
+export class Tools {
+  readonly stopwatch = new Stopwatch();
+  private readonly angleText: HTMLElement;
+  private readonly watchText: HTMLElement;
+  private readonly lapList: HTMLElement;
+  private readonly watchButton: HTMLButtonElement;
+  private readonly periodTable: HTMLTableElement;
+  private readonly friction: HTMLInputElement;
+  private readonly frictionValue: HTMLOutputElement;
+  private readonly gravity: HTMLSelectElement;
+  private now = 0;
+
+  constructor(
+    container: HTMLElement,
+    private readonly store: LabStore,
+    actions: ToolActions,
+  ) {
+    // the stopwatch reads the simulated time shown at the moment of the click
+    const nowT = () => (this.now = store.playT ?? this.now);
+    // the start, typed in degrees
+    const start = section(container, t('tools.start'), 'start');
+    const [l1, theta] = numberBox('θ₀ [°]', 'theta0', 30, '1');
+    const [l2, phi] = numberBox('φ₀ [°]', 'phi0', 0, '1');
+    const [l3, rate] = numberBox('φ̇₀ [°/s]', 'phidot0', 0, '10');
+    theta.title = t('tools.thetaHelp');
+    phi.title = t('tools.phiHelp');
+    rate.title = t('tools.phiDotHelp');
+    const set = el('button', { type: 'button', 'data-action': 'set-start' }, t('tools.setStart'));
+    const apply = () => {
+      const cmd = startCommand(Number(theta.value), Number(phi.value), Number(rate.value));
+      if (typeof cmd === 'string') actions.explain(cmd);
+      else actions.send(cmd);
+    };
+    set.addEventListener('click', apply);
+    for (const i of [theta, phi, rate]) i.addEventListener('keydown', (e) => e.key === 'Enter' && apply());
+    start.append(l1, l2, l3, set);
+
+    // gravity presets and friction
+    const world = section(container, t('tools.world'), 'world');
+    const gl = el('label');
+    gl.append(`${t('tools.gravity')} `);
+    this.gravity = el('select', { 'data-input': 'gravity-preset' });
+    this.gravity.appendChild(el('option', { value: '' }, t('gravity.custom')));
+    for (const [key, g] of GRAVITY_PRESETS) this.gravity.appendChild(el('option', { value: String(g) }, `${t(key)} (${g} m/s²)`));
+    this.gravity.addEventListener('change', () => {
+      if (this.gravity.value !== '') actions.send({ type: 'set_params', g: Number(this.gravity.value) });
+    });
+    gl.appendChild(this.gravity);
+    const fl = el('label');
+    fl.append(`${t('tools.friction')} `);
+    this.friction = el('input', { type: 'range', min: '0', max: '2', step: '0.01', 'data-input': 'friction' });
+    this.friction.value = '0';
+    this.friction.title = t('tools.frictionHelp');
+    this.frictionValue = el('output');
+    this.friction.addEventListener('input', () => {
+      this.frictionValue.textContent = `${Number(this.friction.value).toFixed(2)} 1/s`;
+    });
+    this.friction.addEventListener('change', () => {
+      const cmd = frictionCommand(store.status, Number(this.friction.value));
+      if (cmd !== null) actions.send(cmd);
+      else if (Number(this.friction.value) > 0) actions.explain(t('tools.noFriction', { model: store.status?.model ?? '?' }));
+    });
+    fl.append(this.friction, ' ', this.frictionValue);
+    world.append(gl, fl);
+
+    // the angles now
+    const now = section(container, t('tools.now'), 'angles');
+    this.angleText = el('div', { class: 'big', 'data-readout': 'angles', 'aria-live': 'off' });
+    now.appendChild(this.angleText);
+
+    // stopwatch
+    const sw = section(container, t('tools.stopwatch'), 'stopwatch');
+    this.watchText = el('div', { class: 'big', 'data-readout': 'stopwatch' }, '0.000 s');
+    this.watchButton = el('button', { type: 'button', 'data-action': 'stopwatch' }, t('tools.swStart'));
+    const lap = el('button', { type: 'button', 'data-action': 'lap' }, t('tools.swLap'));
+    const reset = el('button', { type: 'button', 'data-action': 'stopwatch-reset' }, t('tools.swReset'));
+    this.lapList = el('ol', { class: 'laps' });
+    this.watchButton.addEventListener('click', () => {
+      if (this.stopwatch.running) this.stopwatch.stop(nowT());
+      else this.stopwatch.start(nowT());
+      this.watchButton.textContent = this.stopwatch.running ? t('tools.swStop') : t('tools.swStart');
+    });
+    lap.addEventListener('click', () => this.stopwatch.lap(nowT()));
+    reset.addEventListener('click', () => {
+      this.stopwatch.reset();
+      this.watchButton.textContent = t('tools.swStart');
+    });
+    sw.append(this.watchText, this.watchButton, ' ', lap, ' ', reset, this.lapList);
+
+    // period timer
+    const pt = section(container, t('tools.period'), 'period');
+    pt.title = t('tools.periodHelp');
+    this.periodTable = el('table', { 'data-readout': 'period' });
+    pt.appendChild(this.periodTable);
+
+    // overlays
+    const ov = section(container, t('tools.overlays'), 'overlays');
+    for (const which of ['ruler', 'protractor'] as const) {
+      const l = el('label');
+      const box = el('input', { type: 'checkbox', 'data-input': which });
+      box.addEventListener('change', () => actions.overlay(which, box.checked));
+      l.append(box, ` ${t(which === 'ruler' ? 'tools.ruler' : 'tools.protractor')}`);
+      ov.appendChild(l);
+    }
+  }
+
+  /** Shows the server's status: the gravity preset that matches g, the damping on the friction slider. */
+  sync(s: Status): void {
+    const match = GRAVITY_PRESETS.find(([, g]) => g === s.params.g);
+    if (document.activeElement !== this.gravity) this.gravity.value = match ? String(match[1]) : '';
+    const c = s.model_params?.['damping'];
+    if (document.activeElement !== this.friction) {
+      this.friction.value = String(c ?? 0);
+      this.friction.disabled = c === undefined && s.model !== 'ideal';
+      this.frictionValue.textContent = `${(c ?? 0).toFixed(2)} 1/s`;
+    }
+  }
+
+  /** The readouts at the drawn frame (10 times a second). */
+  update(x: readonly [number, number, number] | null, tNow: number | null): void {
+    if (tNow !== null) this.now = tNow;
+    const angles = x === null ? null : sphericalAngles(x as [number, number, number]);
+    const text = angles === null ? '—' : `θ = ${(angles.theta * DEG).toFixed(1)}°   φ = ${(angles.phi * DEG).toFixed(1)}°`;
+    if (this.angleText.textContent !== text) this.angleText.textContent = text;
+    const w = `${this.stopwatch.reading(this.now).toFixed(3)} s`;
+    if (this.watchText.textContent !== w) this.watchText.textContent = w;
+    const laps = this.stopwatch.laps.map((v) => `${v.toFixed(3)} s`).join('|');
+    if (this.lapList.dataset['shown'] !== laps) {
+      this.lapList.dataset['shown'] = laps;
+      this.lapList.replaceChildren(...this.stopwatch.laps.map((v) => el('li', {}, `${v.toFixed(3)} s`)));
+    }
+    this.fillPeriod();
+  }
+
+  private fillPeriod(): void {
+    const m = this.store.periodTimer.reading();
+    const c = periodComparison(m, this.store.exact);
+    const pct = ([a, b]: [number | null, number | null]) => (a === null || b === null || b === 0 ? '' : `${(((a - b) / b) * 100).toFixed(2)} %`);
+    const deg = (v: number | null) => (v === null ? '—' : (v * DEG).toFixed(2));
+    const rows: [string, string, string, string][] = [
+      ['', t('tools.measured'), t('tools.exact'), t('tools.difference')],
+      [c.swing ? t('tools.swingPeriod') : 'T_z [s]', fmt(c.period[0], 5), fmt(c.period[1], 5), pct(c.period)],
+      ['Δφ [°]', deg(c.advance[0]), deg(c.advance[1]), pct(c.advance)],
+    ];
+    const table = this.periodTable;
+    rows.forEach((r, i) => {
+      const tr = table.rows[i] ?? table.insertRow();
+      while (tr.cells.length < 4) tr.insertCell();
+      r.forEach((v, k) => {
+        const cell = tr.cells[k];
+        if (cell && cell.textContent !== v) cell.textContent = v;
+      });
+    });
+    const caption = t('tools.periodCount', { n: m.intervals });
+    if (table.caption?.textContent !== caption) table.createCaption().textContent = caption;
+    table.dataset['period'] = m.period === null ? '' : String(m.period);
+  }
+}

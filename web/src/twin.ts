@@ -1,0 +1,80 @@
+// Two pendulums at once (docs/web.md, "Two pendulums"): a second WebSocket session of the same server, opened
+// by this page, runs a copy of the first pendulum that differs in one thing — its start turned by ε in θ,
+// another integrator, or damping beside the ideal one — and the scene draws it beside the first (in green).
+// Both are reset together, so their times agree; the separation |r₁ − r₂| of the bobs [m] (r = pivot + x)
+// is the difference of the two streamed states at the first one's frame times (the second's frames
+// interpolated, never integrated). Run, pause, reset and step go to both.
+import type { Command, Frame, Status, Vec3 } from './protocol';
+import { interpolateFrames } from './state';
+
+export type TwinMode = 'off' | 'epsilon' | 'method' | 'damped';
+
+export interface TwinOptions {
+  mode: TwinMode;
+  /** The second start's θ is the first's + ε [rad]. */
+  epsilon: number;
+  /** The second pendulum's integrator (mode `method`). */
+  method: string;
+  /** The second pendulum's damping c [1/s] (mode `damped`). */
+  damping: number;
+}
+
+/** x [m] turned by ε [rad] in θ (away from the downward vertical) about the pivot, |x| kept. */
+export function tiltedStart(x: Readonly<Vec3>, epsilon: number): Vec3 {
+  const r = Math.hypot(...x);
+  const theta = Math.atan2(Math.hypot(x[0], x[1]), -x[2]) + epsilon;
+  const phi = Math.atan2(x[1], x[0]);
+  return [r * Math.sin(theta) * Math.cos(phi), r * Math.sin(theta) * Math.sin(phi), -r * Math.cos(theta)];
+}
+
+/** The commands that make the second session a copy of the first (`s`) that differs as `o` says, ending
+ *  with a reset (and pause if the first is paused). */
+export function twinCommands(s: Status, o: TwinOptions): Command[] {
+  const cmds: Command[] = [];
+  if (s.scenario) cmds.push({ type: 'load_scenario', name: s.scenario });
+  const damped = o.mode === 'damped';
+  const model = damped && s.model === 'ideal' ? 'damped' : s.model;
+  const params = { ...s.model_params };
+  if (damped) params['damping'] = o.damping;
+  cmds.push({ type: 'set_model', model, params });
+  cmds.push({ type: 'set_params', length: s.params.length, mass: s.params.mass, g: s.params.g });
+  cmds.push({ type: 'set_method', method: o.mode === 'method' ? o.method : s.method, dt: s.dt });
+  const x = o.mode === 'epsilon' ? tiltedStart(s.start.x, o.epsilon) : s.start.x;
+  cmds.push({ type: 'set_state', x, v: s.start.v, project: true });
+  cmds.push({ type: 'set_time_scale', time_scale: s.time_scale });
+  cmds.push({ type: 'reset' });
+  cmds.push({ type: s.paused ? 'pause' : 'resume' });
+  return cmds;
+}
+
+/** The frame of the time-sorted `frames` at time t, interpolated; null outside their span. */
+export function frameAt(frames: readonly Frame[], t: number): Frame | null {
+  const n = frames.length;
+  if (n === 0) return null;
+  const first = frames[0] as Frame;
+  const last = frames[n - 1] as Frame;
+  if (t < first.t || t > last.t) return null;
+  let lo = 0;
+  let hi = n - 1;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if ((frames[mid] as Frame).t <= t) lo = mid;
+    else hi = mid;
+  }
+  const a = frames[lo] as Frame;
+  const b = frames[hi] as Frame;
+  return b.t > a.t ? interpolateFrames(a, b, (t - a.t) / (b.t - a.t)) : a;
+}
+
+/** |r₁ − r₂| [m] of the bobs (r = pivot + x) at the times of `first` where `second` has frames. */
+export function separation(first: readonly Frame[], second: readonly Frame[]): { t: number[]; d: number[] } {
+  const t: number[] = [];
+  const d: number[] = [];
+  for (const f of first) {
+    const g = frameAt(second, f.t);
+    if (g === null) continue;
+    t.push(f.t);
+    d.push(Math.hypot(...[0, 1, 2].map((i) => (f.x[i] as number) + (f.pivot[i] as number) - (g.x[i] as number) - (g.pivot[i] as number))));
+  }
+  return { t, d };
+}
