@@ -11,7 +11,7 @@ PORT ?= 8000
 STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
-	bench-compare bench-peers golden clean
+	bench-compare bench-peers bench-fit validate-fit golden clean
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -115,6 +115,14 @@ bench-peers: $(PEERS_VENV)/.deps
 		--interpreter $(PEERS_VENV)/bin/python -o bench/peers/build/wheels
 	$(PEERS_VENV)/bin/python -m pip install --quiet --force-reinstall --no-deps bench/peers/build/wheels/pendulab-*.whl
 	PEERS_RUSTFLAGS="$(PEERS_RUSTFLAGS)" $(PEERS_VENV)/bin/python bench/peers/run.py $(PEERS_ARGS)
+
+# pl.fit: are the error bars honest? 100 seeded noisy trials per data kind (about 15 min; docs/fit.md)
+validate-fit: build
+	$(PY) bench/fit_validate.py
+
+# pl.fit's speed: 10^4 samples over 60 s, 5 unknowns (docs/performance.md)
+bench-fit: build
+	$(PY) bench/fit_speed.py
 
 golden: venv
 	$(PY) testdata/generate/golden_states.py

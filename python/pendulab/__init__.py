@@ -17,6 +17,7 @@ Plots (matplotlib, optional): ``pendulab.plot``.
 from ._core import IntegrationError, InvalidInputError, __version__
 from .ensemble.run import EnsembleResult, simulate_ensemble, states_from_angles
 from .ensemble.save import Save
+from .fitting import FitResult, fit
 from .model import Pendulum, State, models
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulation import Stepper, method_names, methods, simulate
@@ -35,6 +36,7 @@ __all__ = [
     "EMMap",
     "EnsembleResult",
     "ExactSolution",
+    "FitResult",
     "IntegrationError",
     "InvalidInputError",
     "MeasuredAdvance",
@@ -54,6 +56,7 @@ __all__ = [
     "__version__",
     "em_map",
     "exact",
+    "fit",
     "load_scenario",
     "measured_azimuth_advance",
     "method_names",

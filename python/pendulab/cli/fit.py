@@ -1,0 +1,105 @@
+"""``pendulab fit``: the pendulum that best explains measured data (docs/fit.md). Reads a CSV file,
+prints the report (parameters ± standard errors, what the data do not determine, χ²), writes the fitted
+scenario (TOML, which ``pendulab run`` and the lab accept) and optionally a figure. SI units; exit code
+0 on success, 2 on a user error (one ``error: …`` line), 130 on Ctrl-C."""
+
+from __future__ import annotations
+
+import math
+import warnings
+from pathlib import Path
+from typing import Annotated
+
+import typer
+
+from .._core import InvalidInputError
+from ..fitting import fit
+from ..fitting.problem import FITTABLE_MODELS, model_params
+from ..fitting.table import read_table
+from ..model import Pendulum
+from .common import _fail, _say, _user_errors, app
+
+
+def _number(text: str, what: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        _fail(f"{what}: {text[:40]!r} is not a number")
+    if not math.isfinite(value):
+        _fail(f"{what}: {text!r} must be finite")
+    return value
+
+
+@app.command("fit", short_help="Fit length, g, damping and the start to measured data (CSV).")
+def fit_cmd(
+    data: Annotated[Path, typer.Argument(metavar="DATA", help="CSV file of measurements (SI units).")],
+    model: Annotated[str, typer.Option(help=f"Model: {', '.join(FITTABLE_MODELS)}.")] = "ideal",
+    fit_names: Annotated[
+        str, typer.Option("--fit", help="Parameters to fit, comma separated (e.g. length,g,damping,pivot).")
+    ] = "length,g",
+    columns: Annotated[
+        str | None,
+        typer.Option(help="The file's column names in order (e.g. t,x,y,z); default its header row."),
+    ] = None,
+    sigma: Annotated[
+        float | None,
+        typer.Option(help="Noise of one measured value, in its unit; default: from the residual."),
+    ] = None,
+    param: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--param", help="Start or fixed value of a model parameter, NAME=VALUE (SI), repeatable."
+        ),
+    ] = None,
+    pivot: Annotated[
+        str | None, typer.Option(help="Known pivot position in the data's frame, x,y,z in m.")
+    ] = None,
+    loss: Annotated[
+        str, typer.Option(help="linear, or a robust loss: soft_l1, huber, cauchy, arctan.")
+    ] = "linear",
+    out: Annotated[
+        Path | None, typer.Option("--out", "-o", help="Write the fitted scenario (TOML) here.")
+    ] = None,
+    plot: Annotated[
+        Path | None, typer.Option(help="Save the data-and-fit figure here (.png, .svg, .pdf).")
+    ] = None,
+) -> None:
+    """Fit a pendulum to measured data and print the report. Column names: t [s]; x, y, z [m] (or x, z
+    seen along y); theta, phi [rad]; angle [rad] (a planar swing); specific_force [m/s^2];
+    angular_speed [rad/s]."""
+    with _user_errors():
+        if out is not None and out.suffix.lower() != ".toml":
+            _fail(f"--out {str(out)!r}: the fitted scenario is written as TOML; give a name ending in .toml")
+        if model not in FITTABLE_MODELS:
+            raise InvalidInputError(f"--model {model!r}: use one of {', '.join(FITTABLE_MODELS)}")
+        own = model_params(model)
+        values: dict[str, float] = {}
+        for item in param or []:
+            name, sep, text = item.partition("=")
+            if not sep or name.strip() not in own:
+                _fail(f"--param {item!r}: give NAME=VALUE with NAME one of {', '.join(own)}")
+            values[name.strip()] = _number(text, f"--param {name.strip()}")
+        base = {k: values.pop(k) for k in ("length", "g", "mass") if k in values}
+        pendulum = Pendulum(**base, model=model, **values)
+        names = [c.strip() for c in columns.split(",")] if columns else None
+        kwargs = read_table(data, names)
+        where = None
+        if pivot is not None:
+            parts = pivot.split(",")
+            if len(parts) != 3:
+                _fail(f"--pivot {pivot!r}: give x,y,z in m")
+            where = [_number(c, "--pivot") for c in parts]
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            res = fit(
+                pendulum=pendulum, fit=fit_names, sigma=sigma, loss=loss, pivot=where, progress=None, **kwargs
+            )
+        for w in caught:
+            _say(f"warning: {w.message}", err=True)
+        _say(res.report())
+        if out is not None:
+            res.save(out)
+            _say(f"wrote {out}")
+        if plot is not None:
+            res.plot(plot)
+            _say(f"wrote {plot}")

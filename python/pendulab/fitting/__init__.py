@@ -1,0 +1,10 @@
+"""Identifying a real pendulum from measurements: ``pl.fit`` and its ``FitResult`` (docs/fit.md).
+``data`` the data kinds and their predictions, ``problem`` the unknowns and the forward model,
+``start`` starting values from the data, ``identify`` what the data determine, ``estimator`` the
+least-squares fit, ``result`` the result. SI units throughout."""
+
+from .data import KINDS
+from .estimator import fit
+from .result import FitResult
+
+__all__ = ["KINDS", "FitResult", "fit"]

@@ -1,0 +1,336 @@
+"""``pl.fit``: the spherical pendulum that best explains measured data, by nonlinear least squares.
+
+Minimises ½ Σ ρ(r_i²) over the free parameters, r = (measured − predicted)/σ per value (data.py),
+with SciPy's trust-region reflective ``least_squares`` (bounds from the model registry; ``loss`` for a
+robust ρ, e.g. "soft_l1" against outliers), finite-difference Jacobians of the forward model
+(problem.py: the exact solution or DOP853 at rtol 1e-12), from starting values read off the data
+(start.py) — several for frame-free data, whose phase at t₀ is unknown. Errors come from the
+linearised covariance (identify.py), scaled by the residual variance when σ is not given; parameters
+the data cannot determine are reported as such, with the combination they do determine.
+Units: SI throughout (docs/fit.md).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+import warnings
+from collections.abc import Mapping, Sequence
+from typing import Any
+
+import numpy as np
+from tqdm.auto import tqdm
+
+from .._core import InvalidInputError
+from ..model import FloatArray, Pendulum, State
+from .data import KINDS, observations, residual
+from .identify import analyse, jacobian
+from .problem import (
+    OFFSET_NAMES,
+    PIVOT_NAMES,
+    STATE_NAMES,
+    Problem,
+    bounds_of,
+    check_model,
+    model_params,
+    scale_of,
+)
+from .result import FitResult
+from .start import phase_starts, starting_values
+
+POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness"}
+MAX_EVALUATIONS = 20_000
+
+
+def _angles_of(pendulum: Pendulum, state: State) -> dict[str, float]:
+    """θ, φ [rad] and θ̇, φ̇ [rad/s] of a state (φ̇ = 0 at a pole, where φ means nothing)."""
+    x, v = np.asarray(state.x), np.asarray(state.v)
+    theta, phi = state.angles()
+    ell = pendulum.length
+    e_theta = np.array([math.cos(theta) * math.cos(phi), math.cos(theta) * math.sin(phi), math.sin(theta)])
+    e_phi = np.array([-math.sin(phi), math.cos(phi), 0.0])
+    rho = math.hypot(x[0], x[1])
+    return {
+        "theta0": theta,
+        "phi0": phi,
+        "theta_dot0": float(v @ e_theta) / ell,
+        "phi_dot0": float(v @ e_phi) / rho if rho > 1e-12 * ell else 0.0,
+    }
+
+
+def _windows(t: FloatArray, period: float) -> list[int]:
+    """Sample counts of growing time windows [t₀, t₀ + 4T·2ᵏ) shorter than the data (T the estimated
+    period): fitting them in turn keeps each stage's phase error small, so that a long record does
+    not trap the search in the wrong number of swings."""
+    span = float(t[-1] - t[0])
+    out: list[int] = []
+    width = 4.0 * period
+    while width < 0.6 * span:
+        n = int(np.searchsorted(t, t[0] + width))
+        if n >= 16 and (not out or n > out[-1]):
+            out.append(n)
+        width *= 2.0
+    return out
+
+
+def _polish(
+    weighted: Any,
+    u: FloatArray,
+    r: FloatArray,
+    jac: FloatArray,
+    steps: FloatArray,
+    lo: FloatArray,
+    hi: FloatArray,
+) -> tuple[FloatArray, FloatArray, FloatArray]:
+    """A few Gauss–Newton steps with central-difference Jacobians after the trust-region search: near
+    the optimum its forward differences stall short of the float64 floor on noise-free data; these
+    steps reach it (directions the data do not determine are left alone by the pseudo-inverse)."""
+    for _ in range(4):
+        step = np.linalg.lstsq(jac, -r, rcond=1e-10)[0]
+        trial = np.minimum(np.maximum(u + step, lo), hi)
+        r_trial = weighted(trial)
+        if not float(r_trial @ r_trial) < float(r @ r):
+            break
+        small = np.all(np.abs(trial - u) <= 1e-13 * np.maximum(np.abs(u), steps * 1e6))
+        u, r = trial, r_trial
+        jac = jacobian(weighted, u, steps)
+        if small:
+            break
+    return u, r, jac
+
+
+def _free_names(fit: Any, model: str, state_given: bool, columns: Mapping[str, int]) -> list[str]:
+    if isinstance(fit, str):
+        fit = [s.strip() for s in fit.split(",") if s.strip()]
+    names: list[str] = []
+    own = list(model_params(model))
+    pivot = list(PIVOT_NAMES) if columns.get("positions", 3) == 3 else ["pivot_x", "pivot_z"]
+    allowed = own + list(STATE_NAMES) + list(PIVOT_NAMES) + list(OFFSET_NAMES) + ["state", "pivot"]
+    for name in fit:
+        if not isinstance(name, str) or name not in allowed:
+            raise InvalidInputError(
+                f"cannot fit {name!r} for the {model!r} model; choose from {', '.join(allowed)}"
+            )
+        expanded = list(STATE_NAMES) if name == "state" else pivot if name == "pivot" else [name]
+        names += [n for n in expanded if n not in names]
+    if not state_given:
+        names += [n for n in STATE_NAMES if n not in names]
+    if set(PIVOT_NAMES) & set(names) and "positions" not in columns:
+        raise InvalidInputError("the pivot position is fitted from positions only; give positions=")
+    if "t_offset" in names and model != "ideal":
+        raise InvalidInputError(
+            "t_offset is fitted for the ideal pendulum only (the exact solution runs backward)"
+        )
+    if not names:
+        raise InvalidInputError("nothing to fit: give fit=[...] or leave state0 unset")
+    return names
+
+
+def fit(
+    t: Any,
+    *,
+    positions: Any = None,
+    angles: Any = None,
+    planar_angle: Any = None,
+    specific_force: Any = None,
+    angular_speed: Any = None,
+    pendulum: Pendulum | None = None,
+    fit: str | Sequence[str] = ("length", "g"),
+    state0: State | None = None,
+    pivot: Sequence[float] | None = None,
+    sigma: float | Mapping[str, float] | None = None,
+    loss: str = "linear",
+    max_evaluations: int = 2000,
+    progress: bool | None = None,
+) -> FitResult:
+    """Fits a pendulum to data: times ``t`` [s] with one or more of ``positions`` [m] (N, 3) or (N, 2)
+    = (x, z) seen along y, ``angles`` = (θ, φ) [rad], ``planar_angle`` [rad], ``specific_force``
+    |a − g⃗| [m/s²], ``angular_speed`` |ω| [rad/s].
+
+    ``pendulum``: the model and the starting/fixed values of its parameters (default the ideal
+    ``Pendulum()``); ``fit``: the parameters to fit (``pl.models()`` names, ``"state"``, ``"pivot"``
+    or single ``theta0``, ``phi0``, ``theta_dot0``, ``phi_dot0``, ``pivot_x/y/z``, ``t_offset``); the
+    start at the first time is fitted too unless ``state0`` is given. ``pivot`` [m]: the pivot in the
+    data's frame when known (default the origin). ``sigma``: the noise of one value (a number, or
+    kind → number; None: estimated from the residual). ``loss``: SciPy's "linear", "soft_l1",
+    "huber", "cauchy" or "arctan" (robust against outliers; scale 1 σ). At most ``max_evaluations``
+    runs of the model per start. Returns a :class:`FitResult`; Ctrl-C returns the best values so far
+    (``converged`` False). Raises :class:`pendulab.InvalidInputError` naming bad data or settings."""
+    from scipy.optimize import least_squares
+
+    pendulum = Pendulum() if pendulum is None else pendulum
+    if not isinstance(pendulum, Pendulum):
+        raise InvalidInputError(f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}")
+    model = check_model(pendulum)
+    if loss not in ("linear", "soft_l1", "huber", "cauchy", "arctan"):
+        raise InvalidInputError(f"loss = {loss!r}: use linear, soft_l1, huber, cauchy or arctan")
+    if (
+        isinstance(max_evaluations, bool)
+        or not isinstance(max_evaluations, int)
+        or not (10 <= max_evaluations <= MAX_EVALUATIONS)
+    ):
+        raise InvalidInputError(
+            f"max_evaluations = {max_evaluations!r} must be an integer from 10 to {MAX_EVALUATIONS}"
+        )
+    data = {
+        "positions": positions,
+        "angles": angles,
+        "planar_angle": planar_angle,
+        "specific_force": specific_force,
+        "angular_speed": angular_speed,
+    }
+    obs = observations(t, data, sigma)
+    if state0 is not None and not isinstance(state0, State):
+        raise InvalidInputError(f"state0 must be a pendulab.State, got {type(state0).__name__}")
+    free = _free_names(fit, model, state0 is not None, obs.columns)
+    values: dict[str, float] = {n: float(spec["default"]) for n, spec in model_params(model).items()}
+    values.update({k: float(v) for k, v in pendulum.params().items() if k != "model"})
+    values.update({k: float(v) for k, v in pendulum.extra.items()})
+    values.update(dict.fromkeys(STATE_NAMES, 0.0))
+    if state0 is not None:
+        values.update(_angles_of(pendulum, state0))
+    given_pivot = (0.0, 0.0, 0.0) if pivot is None else tuple(float(c) for c in pivot)
+    if len(given_pivot) != 3 or not all(math.isfinite(c) for c in given_pivot):
+        raise InvalidInputError(f"pivot must be 3 finite numbers [m], got {pivot!r}")
+    values.update(dict(zip(PIVOT_NAMES, given_pivot, strict=True)))
+    values["t_offset"] = 0.0
+    if len(obs) <= len(free):
+        raise InvalidInputError(f"{len(obs)} samples cannot determine {len(free)} unknowns: give more data")
+    start = starting_values(obs, values, set(free))
+    frame_free = not ({"positions", "angles", "planar_angle"} & set(obs.values))
+    starts = phase_starts(start, set(free)) if frame_free else [start]
+
+    problem = Problem(model, start, free, obs)
+    period = 2.0 * math.pi * math.sqrt(start["length"] / max(abs(start["g"]), 1e-9))
+    scales = np.array([scale_of(n, start[n], start["length"], period) for n in free])
+    lower, upper = zip(*(bounds_of(model, n, start[n]) for n in free), strict=True)
+    sig = {k: (s if s is not None else 1.0) for k, s in obs.sigma.items()}
+    show = progress if progress is not None else len(obs) * len(starts) > 200_000
+    bar = tqdm(total=len(starts), desc="fit", unit="start", leave=False) if show else None
+    best: dict[str, Any] = {"cost": math.inf, "u": None, "res": None}
+    began = time.perf_counter()
+    interrupted = False
+
+    def clip(u: FloatArray) -> FloatArray:
+        return np.minimum(np.maximum(u, np.array(lower)), np.array(upper))
+
+    def run(u0: FloatArray, weights: Mapping[str, float], on: Problem = problem, tol: float = 1e-10) -> Any:
+        def fun(u: FloatArray) -> FloatArray:
+            r = on.safe_residuals(u, weights)
+            if on is problem:
+                cost = 0.5 * float(r @ r)
+                if cost < best["cost"]:
+                    best.update(cost=cost, u=np.array(u, dtype=np.float64))
+            return r
+
+        return least_squares(
+            fun,
+            clip(u0),
+            bounds=(lower, upper),
+            x_scale=scales,
+            loss=loss,
+            f_scale=1.0,
+            max_nfev=max_evaluations,
+            xtol=tol,
+            ftol=tol,
+            gtol=tol,
+            diff_step=1e-8,
+            method="trf",
+        )
+
+    windows = _windows(obs.t, period)
+    if len(starts) > 2:  # optimise from the two starts that already fit best on the first window
+        first = problem.restricted(windows[0]) if windows else problem
+        costs = [float(np.sum(first.safe_residuals([s[n] for n in free], sig) ** 2)) for s in starts]
+        starts = [starts[i] for i in np.argsort(costs)[:2]]
+    try:
+        for s in starts:
+            u0 = np.array([s[n] for n in free], dtype=np.float64)
+            for n_samples in windows:  # continuation: a few periods first, then twice as many, ...
+                part = problem.restricted(n_samples)
+                u0 = run(u0, sig, part, 1e-8).x
+                problem.evaluations += part.evaluations
+            res = run(u0, sig)
+            if best["res"] is None or res.cost <= best["res"].cost:
+                best["res"] = res
+            if bar is not None:
+                bar.update(1)
+        # several data kinds with unknown noise: weigh each by its own residual scatter and refit
+        unknown = [k for k, s in obs.sigma.items() if s is None]
+        if len(obs.values) > 1 and unknown:
+            r = problem.residuals(problem.with_free(best["res"].x), sig)
+            for kind in unknown:
+                part = residual(
+                    kind, obs.values[kind], problem.predictions(problem.with_free(best["res"].x))[kind]
+                )
+                sig[kind] = max(float(np.sqrt(np.mean(part**2))), 1e-300)
+            best["cost"], best["res"] = math.inf, run(best["res"].x, sig)
+            del r
+    except KeyboardInterrupt:
+        interrupted = True
+        warnings.warn(
+            "fit interrupted (Ctrl-C): returning the best values reached", RuntimeWarning, stacklevel=2
+        )
+    finally:
+        if bar is not None:
+            bar.close()
+    if best["res"] is not None and not interrupted:
+        u, status, message = best["res"].x, int(best["res"].status), str(best["res"].message)
+        converged = status > 0
+    elif best["u"] is not None:
+        u, converged, message = best["u"], False, "interrupted"
+    else:
+        raise InvalidInputError(
+            "the model could not be evaluated at any start: check the data and the pendulum"
+        )
+
+    def weighted(uu: FloatArray) -> FloatArray:
+        return problem.residuals(problem.with_free(uu), sig)
+
+    u = np.asarray(u, dtype=np.float64)
+    r = weighted(u)
+    steps = scales * 1e-6
+    jac = jacobian(weighted, u, steps)
+    if loss == "linear" and not interrupted:
+        u, r, jac = _polish(weighted, u, r, jac, steps, np.array(lower), np.array(upper))
+    final = problem.with_free(u)
+    n_res, k = r.size, len(free)
+    dof = max(n_res - k, 1)
+    chi2 = float(r @ r)
+    sigma_known = all(s is not None for s in obs.sigma.values())
+    variance = 1.0 if sigma_known else chi2 / dof
+    chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
+    ident = analyse(free, final, jac, variance, POSITIVE)
+    g_fit = final["g"]
+    if "g" in free and not 0.01 <= abs(g_fit) <= 1000.0:
+        warnings.warn(
+            f"the fitted g = {g_fit:.4g} m/s² is far from any planet's (Earth 9.81): "
+            "are the data in SI units "
+            "(positions in m, not mm or pixels; times in s; angles in rad)?",
+            UserWarning,
+            stacklevel=2,
+        )
+    if not converged:
+        warnings.warn(
+            f"the fit did not converge ({message}); the values are the best reached",
+            RuntimeWarning,
+            stacklevel=2,
+        )
+    return FitResult.build(
+        problem=problem,
+        values=final,
+        sigma={
+            k: (obs.sigma[k] if obs.sigma[k] is not None else sig[k] * math.sqrt(variance))
+            for k in obs.values
+        },
+        sigma_estimated=not sigma_known,
+        chi2=chi2,
+        dof=dof,
+        ident=ident,
+        converged=converged,
+        message=message,
+        seconds=time.perf_counter() - began,
+        starts=len(starts),
+        interrupted=interrupted,
+        kinds=KINDS,
+    )

@@ -1,0 +1,256 @@
+"""The result of :func:`pendulab.fit`: best values with standard errors (SI units), covariance and
+correlation, residuals per data kind, the fitted pendulum, start and trajectory, what the data could
+not determine, a text report, a figure, and the fitted scenario as a file ``pendulab run`` and the lab
+accept."""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..display import Row, html_table, number
+from ..model import FloatArray, Pendulum, State
+from ..trajectory import Trajectory
+from .data import KINDS, residual
+from .identify import Identifiability
+from .problem import STATE_NAMES, unit_of
+
+if TYPE_CHECKING:
+    from .problem import Problem
+
+
+@dataclass
+class FitResult:
+    """See the module doc. ``params``/``stderr``: name → value / standard error for every FITTED
+    parameter (stderr is inf for one the data do not determine: see ``determined`` and
+    ``combinations``); ``fixed``: the values held fixed; ``covariance``, ``correlation``: (k, k) in the
+    order of ``names``; ``residuals``: kind → measured − fitted (N, columns) in the data's unit;
+    ``chi2`` = Σ r², ``dof`` = values − unknowns, ``sigma``: the noise per kind (given or estimated)."""
+
+    names: list[str]
+    params: dict[str, float]
+    stderr: dict[str, float]
+    units: dict[str, str]
+    fixed: dict[str, float]
+    covariance: FloatArray
+    correlation: FloatArray
+    determined: dict[str, bool]
+    combinations: dict[str, tuple[float, float]]
+    residuals: dict[str, FloatArray]
+    t: FloatArray
+    pendulum: Pendulum
+    state0: State
+    t0: float
+    chi2: float
+    dof: int
+    sigma: dict[str, float]
+    sigma_estimated: bool
+    converged: bool
+    message: str
+    evaluations: int
+    seconds: float
+    starts: int
+    interrupted: bool = False
+    dropped: int = 0
+    _problem: Any = field(default=None, repr=False)
+
+    @classmethod
+    def build(
+        cls,
+        *,
+        problem: Problem,
+        values: dict[str, float],
+        sigma: dict[str, float],
+        sigma_estimated: bool,
+        chi2: float,
+        dof: int,
+        ident: Identifiability,
+        converged: bool,
+        message: str,
+        seconds: float,
+        starts: int,
+        interrupted: bool,
+        kinds: dict[str, str],
+    ) -> FitResult:
+        names = list(problem.free)
+        cov = ident.covariance
+        err = np.sqrt(np.where(np.isfinite(np.diag(cov)), np.diag(cov), np.inf))
+        with np.errstate(invalid="ignore", divide="ignore"):
+            corr = cov / np.outer(err, err)
+        pendulum = problem.pendulum(values)
+        state0 = problem.state0(pendulum, values)
+        pred = problem.predictions(values)
+        res = {k: residual(k, problem.obs.values[k], pred[k]) for k in problem.obs.values}
+        own = [n for n in values if n not in names]
+        return cls(
+            names=names,
+            params={n: values[n] for n in names},
+            stderr={n: float(e) for n, e in zip(names, err, strict=True)},
+            units={n: unit_of(problem.model, n) for n in values},
+            fixed={n: values[n] for n in own},
+            covariance=cov,
+            correlation=corr,
+            determined=ident.determined,
+            combinations=ident.combinations,
+            residuals=res,
+            t=problem.obs.t,
+            pendulum=pendulum,
+            state0=state0,
+            t0=problem.t0,
+            chi2=chi2,
+            dof=dof,
+            sigma=sigma,
+            sigma_estimated=sigma_estimated,
+            converged=converged,
+            message=message,
+            evaluations=problem.evaluations,
+            seconds=seconds,
+            starts=starts,
+            interrupted=interrupted,
+            dropped=problem.obs.dropped,
+            _problem=problem,
+        )
+
+    @property
+    def trajectory(self) -> Trajectory:
+        """The fitted motion at the data times (model time 0 at the first sample, t₀ [s])."""
+        _, x, v, tau = self._problem.motion({**self.fixed, **self.params})
+        return Trajectory(self.pendulum, tau, x, v, "fit", {"t0": self.t0}, {"steps": 0, "samples": len(tau)})
+
+    @property
+    def _defaults(self) -> dict[str, float]:
+        from .problem import model_params
+
+        return {n: float(spec["default"]) for n, spec in model_params(self.pendulum.model).items()}
+
+    @property
+    def reduced_chi2(self) -> float:
+        """χ²/dof: about 1 when the model explains the data to their noise."""
+        return self.chi2 / self.dof
+
+    def _rows(self) -> list[tuple[str, str, str, str]]:
+        rows = []
+        for n in self.names:
+            value, err = self.params[n], self.stderr[n]
+            shown = f"± {number(err, 3)}" if self.determined[n] else "not determined by these data"
+            rows.append((n, f"{value:.10g}", shown, self.units.get(n, "")))
+        return rows
+
+    def report(self) -> str:
+        """A table of the fitted parameters ± standard errors (SI units), the combinations the data
+        determine where single parameters are not, χ², the noise, what was held fixed, convergence."""
+        lines = [
+            f"fit of the {self.pendulum.model} pendulum to {len(self.t)} samples "
+            f"({', '.join(f'{k} [{KINDS[k]}]' for k in self.residuals)}), t0 = {self.t0:g} s"
+        ]
+        if self.dropped:
+            lines.append(f"  ({self.dropped} rows with NaN were dropped)")
+        width = max(len(n) for n in self.names)
+        for name, value, err, unit in self._rows():
+            lines.append(f"  {name.ljust(width)} = {value:>18} {err:<28} {unit}")
+        for label, (value, err) in self.combinations.items():
+            lines.append(f"  determined instead: {label} = {value:.10g} ± {number(err, 3)}")
+        noise = ", ".join(f"{k}: {number(s, 3)} {KINDS[k]}" for k, s in self.sigma.items())
+        if self.sigma_estimated:
+            noise += " (estimated from the residual, so chi2/dof = 1 by construction)"
+        lines += [
+            f"  chi2 = {self.chi2:.6g} for {self.dof} degrees of freedom "
+            f"(chi2/dof = {self.reduced_chi2:.4g}); noise {noise}",
+            "  fixed: "
+            + ", ".join(
+                f"{k} = {number(v)}"
+                + (f" {self.units[k]}" if self.units.get(k, "1") not in ("1", "") else "")
+                for k, v in self.fixed.items()
+                if k in ("length", "g", "mass") or v != self._defaults.get(k, 0.0)
+            ),
+            f"  {'converged' if self.converged else 'NOT converged'}: {self.message} "
+            f"({self.evaluations} model runs, {self.starts} start(s), {self.seconds:.3g} s)",
+        ]
+        return "\n".join(lines)
+
+    def __repr__(self) -> str:
+        shown = ", ".join(
+            f"{n}={self.params[n]:.6g}"
+            + (f"±{self.stderr[n]:.2g}" if self.determined[n] else "(undetermined)")
+            for n in self.names
+            if n not in STATE_NAMES
+        )
+        state = "converged" if self.converged else "NOT converged"
+        return f"FitResult({shown}; chi2/dof={self.reduced_chi2:.3g}, {state})"
+
+    def _repr_html_(self) -> str:
+        rows: list[Row] = [(n, f"{v} {e}", u) for n, v, e, u in self._rows()]
+        rows += [
+            (f"{label} (determined)", f"{value:.10g} ± {number(err, 3)}", "")
+            for label, (value, err) in self.combinations.items()
+        ]
+        rows.append(("χ²/dof", self.reduced_chi2, ""))
+        return html_table("Fit", rows, note="res.report(), res.plot(), res.save('fitted.toml')")
+
+    def to_scenario(self, t_end: float | None = None, title: str | None = None) -> Any:
+        """The fitted pendulum and start as a :class:`pendulab.Scenario` (t_end [s] default: the data's
+        span; the method the model's usual one)."""
+        from ..scenario import Scenario
+
+        p = self.pendulum
+        span = float(self.t[-1] - self.t[0]) if t_end is None else float(t_end)
+        pend: dict[str, Any] = {"model": p.model, "length": p.length, "mass": p.mass, "g": p.g, **p.extra}
+        theta, phi = self.state0.angles()
+        vals = {**self.fixed, **self.params}
+        data = {
+            "title": title or f"fitted to {len(self.t)} samples (pendulab fit)",
+            "pendulum": pend,
+            "initial": {
+                "theta": theta,
+                "phi": phi,
+                "theta_dot": vals["theta_dot0"],
+                "phi_dot": vals["phi_dot0"],
+            },
+            "simulation": {"t_end": span, "method": "dop853" if not p.is_ideal else "rattle4", "dt": 1e-3},
+        }
+        if p.is_ideal:
+            data["simulation"]["save_every"] = 10
+        return Scenario.from_dict(data, "<fit>")
+
+    def save(self, path: str | os.PathLike[str]) -> Path:
+        """Writes :meth:`to_scenario` as TOML to ``path``, atomically."""
+        return self.to_scenario().save(path)
+
+    def plot(self, path: str | os.PathLike[str] | None = None) -> Any:
+        """Data and fit, the residuals, and the parameter correlations; saved atomically to ``path``
+        if given. Needs matplotlib. Returns the Figure."""
+        from ..plot.figure import new_figure, save_figure
+
+        kinds = list(self.residuals)
+        fig = new_figure(figsize=(12.0, 3.2 * len(kinds) + 1.0), layout="constrained")
+        grid = fig.add_gridspec(len(kinds), 3, width_ratios=(2.2, 1.6, 1.0))
+        pred = self._problem.predictions({**self.fixed, **self.params})
+        for row, kind in enumerate(kinds):
+            measured = self._problem.obs.values[kind]
+            ax = fig.add_subplot(grid[row, 0])
+            axr = fig.add_subplot(grid[row, 1], sharex=ax)
+            for c in range(measured.shape[1]):
+                ax.plot(self.t, measured[:, c], ".", ms=2, alpha=0.5, label=f"{kind}[{c}] measured")
+                ax.plot(self.t, pred[kind][:, c], "-", lw=0.9, label=f"{kind}[{c}] fit")
+                axr.plot(self.t, self.residuals[kind][:, c], ".", ms=2)
+            ax.set_ylabel(f"{kind} [{KINDS[kind]}]")
+            axr.set_ylabel(f"residual [{KINDS[kind]}]")
+            axr.axhline(0.0, color="0.4", lw=0.8)
+            ax.legend(fontsize="x-small", ncols=2)
+            if row == len(kinds) - 1:
+                ax.set_xlabel("time t [s]")
+                axr.set_xlabel("time t [s]")
+        axc = fig.add_subplot(grid[:, 2])
+        image = axc.imshow(np.nan_to_num(self.correlation, nan=0.0), vmin=-1.0, vmax=1.0, cmap="RdBu_r")
+        axc.set_xticks(range(len(self.names)), self.names, rotation=90, fontsize="small")
+        axc.set_yticks(range(len(self.names)), self.names, fontsize="small")
+        axc.set_title("correlation")
+        fig.colorbar(image, ax=axc, shrink=0.6)
+        fig.suptitle(f"fit: chi2/dof = {self.reduced_chi2:.3g}")
+        if path is not None:
+            save_figure(fig, path)
+        return fig

@@ -1,0 +1,209 @@
+"""Starting values from the data themselves, so that the least-squares search begins near the answer:
+
+- the pivot (when unknown) by the algebraic sphere (circle) fit |p|² = 2 c·p + k to the positions;
+- the swing's period T from the crossings of its horizontal coordinate (the principal axis of the
+  horizontal motion), its amplitude A, and ω₀ = (2π/T)/(1 − A²/16) (the first amplitude correction
+  of the period, T-4.x's small-swing limit); then g = ω₀² l or l = g/ω₀², whichever is free;
+- linear damping c from the decay of the swing's peaks, A(t) ∝ e^{−ct/2} (T-7.1);
+- the start (θ₀, φ₀, θ̇₀, φ̇₀) from a quadratic through the first samples;
+- from frame-free data only (a phone): for a planar swing of amplitude A the rod pulls T/m = g cos A at
+  the turning points and g(3 − 2 cos A) at the bottom (energy conservation with T-2.3), so
+  g = (f_max + 2 f_min)/3 and cos A = f_min/g; |ω|max = √(2(g/l)(1 − cos A)) gives l; the phase of
+  the swing at t₀ is unknown, so several starts (:func:`phase_starts`) are tried.
+Units: SI (m, s, rad, m/s²).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from .._core import InvalidInputError
+from ..model import FloatArray
+from .data import Observations
+from .problem import PIVOT_NAMES
+
+
+def sphere_fit(p: FloatArray) -> tuple[FloatArray, float] | None:
+    """Centre and radius of the sphere (or circle, for 2 columns) through the points, or None when
+    the points do not determine one (too flat)."""
+    a = np.column_stack([2.0 * p, np.ones(len(p))])
+    b = np.einsum("ij,ij->i", p, p)
+    sol, *_ = np.linalg.lstsq(a, b, rcond=None)
+    if np.linalg.matrix_rank(a) < a.shape[1]:
+        return None
+    centre = sol[:-1]
+    r2 = sol[-1] + centre @ centre
+    if not (np.all(np.isfinite(centre)) and r2 > 0.0):
+        return None
+    return centre, math.sqrt(r2)
+
+
+def crossings_period(t: FloatArray, s: FloatArray) -> float | None:
+    """The period [s] of an oscillating signal from its crossings of its mean (linear interpolation):
+    twice the mean spacing of the crossings; None with fewer than 3 crossings."""
+    y = s - np.mean(s)
+    k = np.flatnonzero(np.signbit(y[:-1]) != np.signbit(y[1:]))
+    if len(k) < 3:
+        return None
+    tc = t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k])
+    return float(2.0 * (tc[-1] - tc[0]) / (len(tc) - 1))
+
+
+def decay_rate(t: FloatArray, amplitude: FloatArray) -> float:
+    """c [1/s] from A(t) ∝ e^{−ct/2} fitted to the local maxima of |amplitude| (0 when not decaying)."""
+    a = np.abs(amplitude)
+    k = np.flatnonzero((a[1:-1] >= a[:-2]) & (a[1:-1] > a[2:])) + 1
+    k = k[a[k] > 0.0]
+    if len(k) < 3:
+        return 0.0
+    slope = np.polyfit(t[k], np.log(a[k]), 1)[0]
+    return max(0.0, -2.0 * float(slope))
+
+
+def _rates(t: FloatArray, y: FloatArray, span: float) -> tuple[float, float]:
+    """Value and derivative at t[0] of a quadratic through the samples within ``span`` of t[0]."""
+    n = max(5, int(np.searchsorted(t, t[0] + span)))
+    n = min(n, len(t))
+    c = np.polyfit(t[:n] - t[0], y[:n], min(2, n - 1))
+    return float(c[-1]), float(c[-2])
+
+
+def _relative_positions(obs: Observations, values: Mapping[str, float], free: set[str]) -> FloatArray | None:
+    """The bob relative to the pivot [m] (N, 3) from whatever the data allow, or None (frame-free)."""
+    ell = values["length"]
+    if "positions" in obs.values:
+        p = obs.values["positions"]
+        cols = p.shape[1]
+        pivot = np.array([values[k] for k in PIVOT_NAMES])
+        pivot = pivot if cols == 3 else pivot[[0, 2]]
+        if free & set(PIVOT_NAMES):
+            fitted = sphere_fit(p)
+            if fitted is not None and 0.05 < fitted[1] / max(np.ptp(p, axis=0).max(), 1e-300) < 100.0:
+                pivot = fitted[0]
+            else:  # too flat an arc: the pivot straight above the mean at the given length
+                pivot = p.mean(axis=0)
+                pivot[-1] = p[:, -1].min() + ell
+        rel = p - pivot
+        return rel if cols == 3 else np.column_stack([rel[:, 0], np.zeros(len(rel)), rel[:, 1]])
+    if "angles" in obs.values:
+        th, ph = obs.values["angles"][:, 0], obs.values["angles"][:, 1]
+        return ell * np.column_stack([np.sin(th) * np.cos(ph), np.sin(th) * np.sin(ph), -np.cos(th)])
+    if "planar_angle" in obs.values:
+        th = obs.values["planar_angle"][:, 0]
+        return ell * np.column_stack([np.sin(th), np.zeros(len(th)), -np.cos(th)])
+    return None
+
+
+def check_length_hint(radius: float, length: float, free: bool) -> None:
+    """The positions' distance from the pivot [m] against the given length [m]: a fixed length that
+    the data contradict (by more than a factor 2) is an error, a starting value off by more than a
+    factor 10 (m against mm, cm or pixels) a warning (the start is taken from the data)."""
+    ratio = radius / length if length > 0.0 else math.inf
+    if (0.5 <= ratio <= 2.0) or (free and 0.1 <= ratio <= 10.0):
+        return
+    said = (
+        f"the positions lie {radius:.4g} m from the pivot, but the pendulum's length is {length:.4g} m: "
+        "are the positions in m (not mm, cm or pixels) and is the pivot right (pivot=..., or fit 'pivot')?"
+    )
+    if not free:
+        raise InvalidInputError(said)
+    warnings.warn(said + " The fit starts from the data's distance instead.", UserWarning, stacklevel=4)
+
+
+def starting_values(obs: Observations, values: Mapping[str, float], free: set[str]) -> dict[str, Any]:
+    """Values for the free parameters read off the data (the given ones stay where they are); the
+    result has the same keys as ``values``."""
+    out = dict(values)
+    t = obs.t
+    rel = _relative_positions(obs, values, free)
+    if rel is None:
+        return _frame_free_start(obs, out, free)
+    if free & set(PIVOT_NAMES) and "positions" in obs.values:
+        p = obs.values["positions"]
+        centre = p - (rel if p.shape[1] == 3 else rel[:, [0, 2]])
+        pivot = centre[0]
+        for k, name in enumerate(PIVOT_NAMES if p.shape[1] == 3 else ("pivot_x", "pivot_z")):
+            if name in free:
+                out[name] = float(pivot[k])
+    radius = float(np.median(np.linalg.norm(rel, axis=1)))
+    if "positions" in obs.values:
+        check_length_hint(radius, values["length"], "length" in free)
+        if "length" in free:
+            out["length"] = radius
+    horizontal = rel[:, :2] - rel[:, :2].mean(axis=0)
+    axis = np.linalg.svd(horizontal, full_matrices=False)[2][0]
+    swing = horizontal @ axis
+    theta = np.arctan2(np.hypot(rel[:, 0], rel[:, 1]), -rel[:, 2])
+    amplitude = float(np.max(theta))
+    period = crossings_period(t, swing)
+    if period is not None:
+        omega0 = (2.0 * math.pi / period) / max(1.0 - amplitude**2 / 16.0, 0.3)
+        if "g" in free:  # the length is known, or read off the positions above
+            out["g"] = omega0**2 * out["length"]
+        elif "length" in free:
+            out["length"] = out["g"] / omega0**2
+    if "damping" in free:
+        out["damping"] = decay_rate(t, swing)
+    ell = out["length"]
+    unit = rel / np.linalg.norm(rel, axis=1)[:, None]
+    x = ell * unit
+    phi = np.unwrap(np.arctan2(x[:, 1], x[:, 0]))
+    period_guess = period or 2.0 * math.pi * math.sqrt(ell / max(abs(out["g"]), 1e-9))
+    span = period_guess / 20.0
+    th0, thd0 = _rates(t, theta, span)
+    ph0, phd0 = _rates(t, phi, span)
+    for name, value in zip(("theta0", "phi0", "theta_dot0", "phi_dot0"), (th0, ph0, thd0, phd0), strict=True):
+        if name in free:
+            out[name] = value
+    if "theta0" in free:
+        out["theta0"] = min(max(out["theta0"], 0.0), math.pi)
+    return out
+
+
+def _frame_free_start(obs: Observations, out: dict[str, Any], free: set[str]) -> dict[str, Any]:
+    f = obs.values.get("specific_force")
+    w = obs.values.get("angular_speed")
+    g = out["g"]
+    cos_a = None
+    if f is not None:
+        f_min, f_max = float(np.min(f)), float(np.max(f))
+        g_est = (f_max + 2.0 * f_min) / 3.0
+        if "g" in free and g_est > 0.0:
+            out["g"] = g = g_est
+        cos_a = min(max(f_min / g, -1.0), 1.0) if g > 0 else None
+    if w is not None and cos_a is not None and "length" in free and cos_a < 1.0:
+        w_max = float(np.max(w))
+        if w_max > 0.0:
+            out["length"] = 2.0 * g * (1.0 - cos_a) / w_max**2
+    if cos_a is not None and "theta0" in free:
+        out["theta0"] = math.acos(cos_a)
+    signal = f if f is not None else w
+    if signal is not None and "damping" in free:
+        out["damping"] = decay_rate(obs.t, signal[:, 0] - np.mean(signal)) / 2.0
+    return out
+
+
+def phase_starts(values: Mapping[str, float], free: set[str], n: int = 8) -> list[dict[str, float]]:
+    """Starts along the swing: θ = A cos ψ, θ̇ = −A ω sin ψ for n phases ψ (planar, in the x–z plane,
+    negative θ as φ = π) — for data that do not say where the swing was at t₀."""
+    if not {"theta0", "theta_dot0"} <= free:
+        return [dict(values)]
+    amp = values["theta0"]
+    omega = math.sqrt(abs(values["g"]) / values["length"])
+    starts = []
+    for k in range(n):
+        psi = 2.0 * math.pi * k / n
+        theta, rate = amp * math.cos(psi), -amp * omega * math.sin(psi)
+        s = dict(values)
+        s["theta0"], s["theta_dot0"] = abs(theta), rate if theta >= 0 else -rate
+        if "phi0" in free:
+            s["phi0"] = 0.0 if theta >= 0 else math.pi
+        if "phi_dot0" in free:
+            s["phi_dot0"] = 0.0
+        starts.append(s)
+    return starts
