@@ -6,6 +6,7 @@ import type { EMView, EffectivePotential, ExactQuantities, Frame, ReducedCurves,
 import type { ReducedView } from './scene/reduced';
 import type { LabStore } from './state';
 import { offSphereNote, staysOnSphere } from './models';
+import { t } from './i18n';
 
 /** GET or POST JSON; an HTTP error becomes an Error with the server's `detail`. */
 export async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
@@ -98,7 +99,7 @@ export class Analyses {
     this.reducedEpoch = status.epoch;
     if (status.model !== 'ideal') {
       this.reduced.setNote(
-        offSphereNote(status.model) ?? `the reduced view is the ideal pendulum's; this is the ${status.model} model`,
+        offSphereNote(status.model) ?? t('note.reducedIdeal', { model: status.model }),
       );
       return;
     }

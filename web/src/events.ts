@@ -4,25 +4,23 @@
 // for the data panel and the plots' marks.
 import type { EventNotice } from './protocol';
 import { fmt } from './format';
+import { t } from './i18n';
 
 /** How many events the data panel lists (the latest). */
 export const EVENTS_SHOWN = 5;
 
 /** The message line's sentence for one event, e.g. "t = 1.234 s: the string went slack". */
 export function eventMessage(e: EventNotice): string {
-  const what =
-    e.kind === 'slack'
-      ? 'the string went slack (tension 0: free flight)'
-      : `the string snapped taut, lost ${fmt(e.energy_lost, 3)} J`;
-  const skipped = e.skipped > 0 ? ` (${e.skipped} earlier event${e.skipped > 1 ? 's' : ''} of this moment not shown)` : '';
+  const what = e.kind === 'slack' ? t('event.slack') : t('event.taut', { lost: fmt(e.energy_lost, 3) });
+  const skipped = e.skipped > 0 ? t(e.skipped > 1 ? 'event.skippedMany' : 'event.skippedOne', { n: e.skipped }) : '';
   return `t = ${e.t.toFixed(3)} s: ${what}${skipped}`;
 }
 
 /** The data panel's row of one event: [label, value, unit]. */
 export function eventRow(e: EventNotice): [string, string, string] {
   return e.kind === 'slack'
-    ? ['went slack', `t = ${fmt(e.t, 6)} s`, '']
-    : ['snapped taut', `t = ${fmt(e.t, 6)} s, lost ${fmt(e.energy_lost, 4)}`, 'J'];
+    ? [t('event.slackRow'), `t = ${fmt(e.t, 6)} s`, '']
+    : [t('event.tautRow'), t('event.tautValue', { t: fmt(e.t, 6), lost: fmt(e.energy_lost, 4) }), 'J'];
 }
 
 /** `events` with `e` appended when it belongs to `epoch` (the trajectory shown), keeping the last `max`,

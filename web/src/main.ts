@@ -58,6 +58,8 @@ declare global {
       energy: () => EnergySplit | null;
       /** The last recorded video's size [bytes] and its first bytes (hex), once a recording stopped. */
       lastVideo: () => { size: number; head: string } | null;
+      /** The live plots' y scales (key, distribution — 3 is log —, range). */
+      plotScales: () => { key: string; distr: number; min: number | null; max: number | null }[];
     };
   }
 }
@@ -111,7 +113,7 @@ async function main(): Promise<void> {
   const quality = renderQuality(probeRenderer(), window.devicePixelRatio);
   if (quality.software) {
     byId('render').textContent = ` · ${t('page.software')}`;
-    byId('render').title = `${quality.renderer ?? ''}: drawn without multisampling for the frame rate`;
+    byId('render').title = t('page.softwareHelp', { renderer: quality.renderer ?? '' });
   }
   const scene = new PendulumScene(byId('scene'), quality);
   const view = { ...DEFAULT_VIEW };
@@ -338,6 +340,7 @@ async function main(): Promise<void> {
     separation: () => twin?.separationNow() ?? { t: [], d: [] },
     energy: () => energy.shown,
     lastVideo: () => lastVideo,
+    plotScales: () => plots.scales(),
   };
   void language;
   let lastWall = performance.now();

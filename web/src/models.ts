@@ -1,6 +1,7 @@
 // What the page does differently for the two models whose bob leaves the sphere |x| = l (docs/web.md):
 // the swinging spring (`spring`: an elastic rod of rest length l, its length varies) and the pendulum on a
 // string (`string`: taut on the sphere, or slack in free flight inside it). No DOM; unit-tested.
+import { t } from './i18n';
 
 /** The models whose bob is not always on the sphere of radius l. */
 export const OFF_SPHERE_MODELS: readonly string[] = ['spring', 'string'];
@@ -14,12 +15,10 @@ export function staysOnSphere(model: string | null | undefined): boolean {
 /** Why the sphere's analyses are not shown for this model, or null when they are. */
 export function offSphereNote(model: string | null | undefined): string | null {
   if (model === 'spring') {
-    return 'the swinging spring leaves the sphere (its length varies): V_eff, the energy–momentum map, the ' +
-      'reduced view and the exact solution belong to the rod pendulum and are not shown';
+    return t('note.spring');
   }
   if (model === 'string') {
-    return 'the string goes slack (free flight inside the sphere): V_eff, the energy–momentum map, the ' +
-      'reduced view and the exact solution belong to the rod pendulum and are not shown';
+    return t('note.string');
   }
   return null;
 }

@@ -32,10 +32,13 @@ export function potentialRange(vMin: number, energy: number | null, weightScale:
   return { lo: vMin - 0.15 * span, hi: vMin + 2.2 * span };
 }
 
-function tick(v: number): string {
+/** A tick label of `v` on an axis spanning `span`: enough digits that the two ends of a narrow range at a
+ *  large value read differently (−3.40512 and −3.40508, not −3.41 and −3.41). */
+export function tick(v: number, span = Math.abs(v)): string {
   if (v === 0) return '0';
   const a = Math.abs(v);
-  return a >= 1e-2 && a < 1e4 ? String(+v.toPrecision(3)) : v.toExponential(1);
+  const digits = Math.min(12, Math.max(3, Math.ceil(Math.log10(a / Math.max(span, 1e-300))) + 2));
+  return a >= 1e-2 && a < 1e4 ? String(+v.toPrecision(digits)) : v.toExponential(Math.max(1, digits - 2));
 }
 
 export interface CurveLayer {
@@ -101,11 +104,11 @@ export class CurvePlot {
     ctx.strokeRect(left, top, right - left, bottom - top);
     ctx.fillStyle = '#aab';
     ctx.font = '11px system-ui, sans-serif';
-    ctx.fillText(tick(yr.hi), 4, top + 10);
-    ctx.fillText(tick(yr.lo), 4, bottom);
+    ctx.fillText(tick(yr.hi, yr.hi - yr.lo), 4, top + 10);
+    ctx.fillText(tick(yr.lo, yr.hi - yr.lo), 4, bottom);
     ctx.fillText(this.yLabel, 4, (top + bottom) / 2);
-    ctx.fillText(tick(xr.lo), left, h - 4);
-    const hiText = tick(xr.hi);
+    ctx.fillText(tick(xr.lo, xr.hi - xr.lo), left, h - 4);
+    const hiText = tick(xr.hi, xr.hi - xr.lo);
     ctx.fillText(hiText, right - ctx.measureText(hiText).width, h - 4);
     ctx.fillText(this.xLabel, (left + right) / 2 - 10, h - 4);
     ctx.save();

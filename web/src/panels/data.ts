@@ -34,29 +34,29 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
   ];
   if (s && s.model !== 'ideal') {
     rows.splice(1, 0, [t('data.model'), s.model, '']);
-    rows.splice(4, 0, ['power P = dE/dt', fmt(f?.power, 6), 'W']);
+    rows.splice(4, 0, [t('data.power'), fmt(f?.power, 6), 'W']);
   }
   const at = rows.findIndex((r) => r[0] === t('data.tension'));
   const style = tetherStyle(s?.model, f?.taut ?? true);
   if (style === 'coil' && s) {
     // the spring: its force k(|r| − l₀) (> 0 pulling), its length and stretch (l is the rest length l₀)
     const r = f ? Math.hypot(...f.x) : null;
-    rows[at] = ['spring force k(|r| − l₀)', fmt(f?.tension, 6), 'N'];
-    rows.splice(at + 1, 0, ['spring length |r|', fmt(r, 6), 'm'], [
-      'stretch |r| − l₀',
+    rows[at] = [t('data.springForce'), fmt(f?.tension, 6), 'N'];
+    rows.splice(at + 1, 0, [t('data.springLength'), fmt(r, 6), 'm'], [
+      t('data.stretch'),
       r === null ? '—' : fmt(r - s.params.length, 4),
       'm',
     ]);
   } else if (style === 'slack string') {
-    rows[at] = [t('data.tension'), 'slack (0)', 'N'];
-    rows.splice(at + 1, 0, ['string', `slack: free flight, |x| = ${fmt(f ? Math.hypot(...f.x) : null, 5)} m`, '']);
+    rows[at] = [t('data.tension'), t('data.slackZero'), 'N'];
+    rows.splice(at + 1, 0, [t('data.string'), t('data.slack', { r: fmt(f ? Math.hypot(...f.x) : null, 5) }), '']);
   } else if (style === 'taut string') {
-    rows.splice(at + 1, 0, ['string', 'taut', '']);
+    rows.splice(at + 1, 0, [t('data.string'), t('data.taut'), '']);
   }
   if (s?.model === 'string') {
     // the last leaves and snaps of this trajectory, newest first (the server's event notices)
     const events = [...store.events].reverse().map(eventRow);
-    rows.push(...(events.length > 0 ? events : [['events', 'none yet (slack, snaps)', ''] as Row]));
+    rows.push(...(events.length > 0 ? events : [[t('data.events'), t('data.noEvents'), ''] as Row]));
   }
   return rows;
 }
@@ -67,7 +67,7 @@ export function exactNote(store: LabStore): string {
   const off = offSphereNote(s?.model);
   if (off !== null) return off;
   if (s && s.model !== 'ideal') {
-    return `the exact solution exists for the ideal pendulum only; this is the ${s.model} model`;
+    return t('note.exactIdeal', { model: s.model });
   }
   return store.exactError ?? store.exact?.phases_note ?? '';
 }
@@ -80,13 +80,13 @@ export function exactRows(q: ExactQuantities | null): Row[] {
     [t('data.kind'), q.kind, ''],
     ['z₁, z₂', `${fmt(h[0])}, ${fmt(h[1])}`, 'm'],
   ];
-  if (h.length > 2) rows.push(['z₃ (outside)', fmt(h[2]), 'm']);
+  if (h.length > 2) rows.push([t('data.z3'), fmt(h[2]), 'm']);
   rows.push([q.kind === 'planar' ? t('data.swingPeriod') : t('data.periodZ'), q.period_z_infinite ? '∞' : fmt(q.period_z), 's']);
   if (q.azimuth_advance !== null) rows.push([t('data.advance'), fmt(q.azimuth_advance), 'rad']);
   if (q.rotation_number !== null) rows.push([t('data.rotation'), fmt(q.rotation_number), '']);
   if (q.phases !== null) {
-    rows.push(['Δφ dynamic', fmt(q.phases.dynamic), 'rad']);
-    rows.push(['Δφ geometric', fmt(q.phases.geometric), 'rad']);
+    rows.push([t('data.dynamic'), fmt(q.phases.dynamic), 'rad']);
+    rows.push([t('data.geometric'), fmt(q.phases.geometric), 'rad']);
   }
   return rows;
 }

@@ -126,6 +126,8 @@ export class Plots {
     ctx.stroke();
     ctx.fillStyle = '#8a93a6';
     ctx.font = `${Math.round(11 * devicePixelRatio)}px system-ui, sans-serif`;
+    ctx.textAlign = 'left';
+    ctx.textBaseline = 'bottom';
     ctx.fillText(t('plot.floor'), bbox.left + 4, y - 3);
     ctx.restore();
   }
@@ -148,6 +150,14 @@ export class Plots {
       ctx.stroke();
     }
     ctx.restore();
+  }
+
+  /** Each chart's y scale (for tests): the plotted key, uPlot's distribution (3: log) and range. */
+  scales(): { key: string; distr: number; min: number | null; max: number | null }[] {
+    return PLOTS.map((spec, i) => {
+      const y = this.charts[i]?.scales['y'];
+      return { key: spec.key, distr: y?.distr ?? 1, min: y?.min ?? null, max: y?.max ?? null };
+    });
   }
 
   /** Redraws the charts on screen whose data changed (uPlot redraws the whole chart on every setData);

@@ -78,6 +78,34 @@ export async function checkScenarios(page, { check, WAIT, errors }) {
   check(names.length >= 10 && failed.length === 0, `every shipped scenario (${names.length}) loads without console errors${failed.length ? ': ' + failed.join('; ') : ''}`);
 }
 
+export async function checkPlots(page, { check, WAIT, simulated }) {
+  await page.evaluate(() => {
+    window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
+    window.pendulab.send({ type: 'resume' });
+  });
+  await page.waitForFunction(() => window.pendulab.store.status?.scenario === 'rosette' && !window.pendulab.store.status.paused, null, { timeout: WAIT });
+  await simulated(page, 2);
+  await page.locator('[data-input="chosen-y"]').selectOption('energy');
+  await page.locator('[data-input="chosen-x"]').selectOption('theta');
+  await page.locator('[data-plot="chosen"]').scrollIntoViewIfNeeded();
+  await page.waitForTimeout(600);
+  const ink = await page.evaluate(() => {
+    const c = document.querySelector('[data-plot="chosen"]');
+    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    for (let i = 0; i < d.length; i += 4) if (d[i] < 120 && d[i + 1] > 150 && d[i + 2] > 200) n++; // the curve's blue
+    return n;
+  });
+  check(ink > 50, `the plot of chosen variables draws E against θ (${ink} pixels of the curve)`);
+  await page.locator('[data-plot="dE"]').scrollIntoViewIfNeeded();
+  await page.waitForTimeout(600);
+  const scales = await page.evaluate(() => window.pendulab.plotScales());
+  const dE = scales.find((s) => s.key === 'dE');
+  const eps = 2 ** -52;
+  check(dE.distr === 3 && dE.min <= eps && dE.max >= eps && scales.every((s) => s.max > s.min), `the energy drift is on a log scale with the float64 floor in range (${dE.min.toExponential(0)} … ${dE.max.toExponential(0)})`);
+  await page.screenshot({ path: 'test-results/plots.png' });
+}
+
 export async function checkPeriodTimer(page, { check, WAIT }) {
   await page.evaluate(() => {
     window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
@@ -214,6 +242,17 @@ export async function checkEnergyAndTwin(page, { check, WAIT, simulated }) {
   check(two.twin !== null && Math.hypot(two.twin.x - two.bob.x, two.twin.y - two.bob.y) < 200, 'two pendulums: the second bob is drawn in the same scene');
   await page.locator('[data-action="twin-start"]').scrollIntoViewIfNeeded();
   await page.screenshot({ path: 'test-results/two-pendulums.png' });
+  // another integrator: the same start, and the two stay within the methods' error of each other
+  await page.locator('[data-input="twin-mode"]').selectOption('method');
+  await page.locator('[data-input="twin-method"]').selectOption('rk4');
+  await page.locator('[data-action="twin-start"]').click();
+  await page.waitForFunction(() => window.pendulab.twin.status?.method === 'rk4', null, { timeout: WAIT });
+  await page.waitForFunction(() => {
+    const s = window.pendulab.separation();
+    return s.t.length > 0 && s.t[s.t.length - 1] - s.t[0] > 1;
+  }, null, { timeout: WAIT, polling: 200 });
+  const methods = await page.evaluate(() => ({ d: window.pendulab.separation().d, a: window.pendulab.store.status.method }));
+  check(methods.d[0] < 1e-12 && Math.max(...methods.d) < 1e-3, `another integrator (${methods.a} beside rk4): the same start, at most ${Math.max(...methods.d).toExponential(1)} m apart over 1 s`);
   // ideal beside damped: they drift apart
   await page.locator('[data-input="twin-mode"]').selectOption('damped');
   await page.locator('[data-action="twin-start"]').click();

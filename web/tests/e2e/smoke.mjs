@@ -11,7 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
-import { checkEnergyAndTwin, checkKeyboard, checkLanguage, checkLayout, checkPeriodTimer, checkRecordingAndStereo, checkScenarios } from './classroom.mjs';
+import { checkEnergyAndTwin, checkKeyboard, checkLanguage, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
 const WAIT = 60_000; // ms: the longest any condition is waited for
@@ -173,6 +173,7 @@ try {
   for (const [name, part] of [
     ['layout', checkLayout],
     ['scenarios', checkScenarios],
+    ['plots', checkPlots],
     ['period timer', checkPeriodTimer],
     ['keyboard', checkKeyboard],
     ['energy and two pendulums', checkEnergyAndTwin],

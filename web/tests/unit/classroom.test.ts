@@ -13,6 +13,7 @@ import { frameAt, separation, tiltedStart, twinCommands } from '../../src/twin';
 import { frictionCommand, GRAVITY_PRESETS, startCommand } from '../../src/panels/tools';
 import { framingDistance } from '../../src/scene/scene';
 import { rulerStep } from '../../src/scene/instruments';
+import { tick } from '../../src/panels/curves';
 import { webmType } from '../../src/record';
 
 function frame(t: number, x: Vec3, v: Vec3, extra: Partial<Frame> = {}): Frame {
@@ -118,6 +119,11 @@ describe('ranges', () => {
     expect(safeRange(null, 3)).toEqual([-1, 1]);
     expect(safeRange(NaN, 3)).toEqual([-1, 1]);
     expect(safeRange(0, 10)).toEqual([-0.5, 10.5]);
+  });
+  it('tick labels of a narrow range at a large value differ', () => {
+    expect(tick(-3.40512, 4e-5)).not.toBe(tick(-3.40508, 4e-5));
+    expect(tick(2.5, 5)).toBe('2.5');
+    expect(tick(0)).toBe('0');
   });
   it('log drifts: never 0, the float64 floor always on the axis', () => {
     expect(relativeDrift(0, 2)).toBe(FLOAT64_EPS / 10);
