@@ -1,16 +1,14 @@
-//! Binding of the string pendulum (`pendulab_core::model::string`, `string_run`): the hybrid run
+//! Binding of the string pendulum (`pendulab_core::model::string`, `pendulab_core::string_run`): the hybrid run
 //! (taut phases, leave and snap events, analytic free flight) as numpy arrays. Conversions only;
 //! SI units.
 
 use crate::{arr3, to_py, vec3};
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
-use pendulab_core::model::string_run::{
-    EventKind, StringEvent, StringRun, StringRunner, StringSave, StringStepper,
-};
 use pendulab_core::model::StringPendulum;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
-use pendulab_core::{Method, Params, State, Stats};
+use pendulab_core::string_run::{EventKind, StringEvent, StringRun, StringRunner, StringStepper};
+use pendulab_core::{Method, Params, SaveAt, State, Stats};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -125,8 +123,8 @@ impl StringRunner_ {
         let method = Method::from_name(method).map_err(to_py)?;
         let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
         let save = match save_at {
-            Some(ts) => StringSave::Times(ts.as_array().to_vec()),
-            None => StringSave::Every(save_every.unwrap_or(1)),
+            Some(ts) => SaveAt::Times(ts.as_array().to_vec()),
+            None => SaveAt::Every(save_every.unwrap_or(1)),
         };
         let stepper = StringStepper::new(sp, t0, start, method, dt).map_err(to_py)?;
         let limit = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);

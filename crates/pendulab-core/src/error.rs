@@ -141,7 +141,7 @@ pub enum Error {
     #[error(
         "the '{model}' model is hybrid (the string goes slack and snaps taut again): it has its own \
              driver — pendulab.simulate in Python, pendulab run for scenario files, \
-             pendulab_core::model::string_run in Rust — not the incremental stepper"
+             pendulab_core::string_run in Rust — not the incremental stepper"
     )]
     HybridModel {
         /// Model name.

@@ -19,6 +19,7 @@
 //! - [`integrate`]: the integrators and their registry [`Method`].
 //! - [`stepper`]: incremental integration (init / step / state).
 //! - [`solve`]: batch solving with saving rules, chunked for progress and cancellation.
+//! - [`string_run`]: the string pendulum's hybrid stepper and runner (events, free flight, snaps).
 //! - [`exact`]: the exact solution by elliptic functions (§4), phases (§5), energy–momentum map (T-6.4).
 //! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
 //! - [`quadrature`]: adaptive Gauss–Kronrod quadrature.
@@ -39,6 +40,7 @@ pub mod reduce;
 pub mod solve;
 pub mod state;
 pub mod stepper;
+pub mod string_run;
 
 pub use error::{Error, Result};
 pub use glam::DVec3;

@@ -171,12 +171,11 @@ impl<M: Model> Solver<M> {
     pub fn advance(&mut self, budget: u64) -> Result<bool> {
         let budget = budget.max(1);
         let mut used = 0u64;
-        let adaptive = self.stepper.method().info().adaptive;
         while !self.done && used < budget {
             match self.save.clone() {
                 SaveAt::Every(n) => {
                     let want = (n - self.since_save).min(budget - used);
-                    let taken = if adaptive { self.adaptive_steps(want)? } else { self.fixed_steps(want)? };
+                    let taken = self.steps_towards(self.t_end, want)?;
                     used += taken;
                     self.since_save += taken;
                     let at_end = self.stepper.t() >= self.t_end;
@@ -193,7 +192,7 @@ impl<M: Model> Solver<M> {
                         break;
                     }
                     let target = ts[self.next_time];
-                    used += self.towards_time(target, budget - used)?;
+                    used += self.steps_towards(target, budget - used)?;
                     if let Some(s) = self.sample_at(target) {
                         self.next_time += 1;
                         self.push(target, s)?;
@@ -205,46 +204,24 @@ impl<M: Model> Solver<M> {
         Ok(self.done)
     }
 
-    /// Up to `n` fixed steps, never past t_end (the last one shortened); returns steps taken.
-    fn fixed_steps(&mut self, n: u64) -> Result<u64> {
-        let dt = self.stepper.dt();
-        let room = ((self.t_end - self.stepper.t()) / dt - 1e-9).floor().max(0.0) as u64;
-        let bulk = n.min(room.saturating_sub(1));
-        self.stepper.step_n(bulk)?;
-        let mut taken = bulk;
-        while taken < n && self.stepper.t() < self.t_end {
-            self.stepper.step_towards(self.t_end)?;
-            taken += 1;
-        }
-        Ok(taken)
-    }
-
-    /// Up to `n` accepted adaptive steps, never past t_end; returns steps taken.
-    fn adaptive_steps(&mut self, n: u64) -> Result<u64> {
+    /// Up to `n` steps towards `target` [s] (≤ t_end), never past it; returns steps taken. Fixed-step
+    /// methods take full steps in the stepper's tight loop and shorten the one that would cross
+    /// `target`; `dop853` takes accepted steps towards t_end until it has passed `target` (and
+    /// interpolates there, [`Solver::sample_at`]).
+    fn steps_towards(&mut self, target: f64, n: u64) -> Result<u64> {
         let mut taken = 0;
-        while taken < n && self.stepper.t() < self.t_end {
-            self.stepper.step_towards(self.t_end)?;
-            taken += 1;
-        }
-        Ok(taken)
-    }
-
-    /// Steps towards `target` (at most `budget` steps); returns steps taken.
-    fn towards_time(&mut self, target: f64, budget: u64) -> Result<u64> {
-        let adaptive = self.stepper.method().info().adaptive;
-        let mut taken = 0;
-        if adaptive {
-            while taken < budget && self.stepper.t() < target {
+        if self.stepper.method().info().adaptive {
+            while taken < n && self.stepper.t() < target {
                 self.stepper.step_towards(self.t_end)?;
                 taken += 1;
             }
         } else {
             let dt = self.stepper.dt();
             let room = ((target - self.stepper.t()) / dt - 1e-9).floor().max(0.0) as u64;
-            let bulk = budget.min(room.saturating_sub(1));
+            let bulk = n.min(room.saturating_sub(1));
             self.stepper.step_n(bulk)?;
             taken += bulk;
-            while taken < budget && self.stepper.t() < target {
+            while taken < n && self.stepper.t() < target {
                 self.stepper.step_towards(target)?;
                 taken += 1;
             }

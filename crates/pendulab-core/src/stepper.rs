@@ -13,7 +13,7 @@ use crate::integrate::rattle::Rattle;
 use crate::integrate::rk4::Rk4;
 use crate::integrate::rk4_angles::Rk4Angles;
 use crate::integrate::rkmk4::Rkmk4;
-use crate::integrate::{FixedStep, Method, Stats};
+use crate::integrate::{fixed_steps, FixedStep, Method, Stats};
 use crate::model::Model;
 use crate::state::State;
 
@@ -214,7 +214,7 @@ impl<M: Model> Stepper<M> {
         let (model, state) = (&self.model, &mut self.state);
         with_fixed!(&mut self.scheme, s => {
             let k0 = self.k;
-            let result = model.fixed_steps(s, self.t_anchor, self.dt, n, &mut self.k, state);
+            let result = fixed_steps(model, s, self.t_anchor, self.dt, n, &mut self.k, state);
             let taken = self.k - k0;
             self.t = self.t_anchor + self.k as f64 * self.dt;
             self.stats.steps += taken;

@@ -7,9 +7,11 @@
 mod common;
 
 use common::rosette;
-use pendulab_core::model::string_run::EventKind;
 use pendulab_core::model::{energy, j3, AnyModel, StringPendulum};
-use pendulab_core::{DVec3, Error, IdealPendulum, Method, Model, Params, SolveOptions, State, Stepper};
+use pendulab_core::string_run::EventKind;
+use pendulab_core::{
+    DVec3, Error, IdealPendulum, Method, Model, Params, SaveAt, SolveOptions, State, Stepper,
+};
 
 const G: f64 = 9.81;
 
@@ -184,7 +186,7 @@ fn the_incremental_stepper_cut_into_pieces_is_the_one_run_bit_for_bit() {
     // a launch that leaves, flies, snaps back elastically, again and again: the stepper taken in
     // pieces of 1, 7 and 100 grid steps (pieces ending taut and ending in flight) gives the states of
     // one `simulate` run at the same grid points, and the same events
-    use pendulab_core::model::string_run::StringStepper;
+    use pendulab_core::string_run::StringStepper;
     let sp = string(1.0);
     let s0 = launch((3.5 * G).sqrt());
     let dt = 1e-3;
@@ -225,7 +227,7 @@ fn reference_run(
     dt: f64,
     save_every: u64,
 ) -> (Vec<f64>, Vec<State>, Vec<bool>) {
-    use pendulab_core::model::string_run::StringStepper;
+    use pendulab_core::string_run::StringStepper;
     let mut st = StringStepper::new(sp, 0.0, s0, method, dt).unwrap();
     let mut out = (vec![0.0], vec![st.state()], vec![st.is_taut()]);
     st.advance(t_end, save_every, &mut |t, s, taut| {
@@ -248,7 +250,7 @@ fn a_run_in_chunks_is_the_one_shot_run_bit_for_bit() {
     // leaves, flights, snaps (elastic, partly elastic, inelastic), chunks of 1, 2, 7, 100 grid steps
     // (ending taut, in flight, on events): the same samples, events and work as `simulate`, which
     // is also the single `StringStepper::advance` run it was before chunking existed
-    use pendulab_core::model::string_run::{StringRunner, StringSave, StringStepper};
+    use pendulab_core::string_run::{StringRunner, StringStepper};
     let dt = 1e-3;
     for (e, s0) in [
         (1.0, launch((3.5 * G).sqrt())),
@@ -263,7 +265,7 @@ fn a_run_in_chunks_is_the_one_shot_run_bit_for_bit() {
             assert_eq!((&one.t, &one.states, &one.taut), (&t, &states, &taut), "simulate changed");
             for chunk in [1u64, 2, 7, 100] {
                 let st = StringStepper::new(sp, 0.0, s0, Method::Rattle, dt).unwrap();
-                let mut runner = StringRunner::new(st, 3.0, StringSave::Every(save_every), u64::MAX).unwrap();
+                let mut runner = StringRunner::new(st, 3.0, SaveAt::Every(save_every), u64::MAX).unwrap();
                 let mut parts = Vec::new();
                 let mut calls = 0;
                 loop {
@@ -275,7 +277,7 @@ fn a_run_in_chunks_is_the_one_shot_run_bit_for_bit() {
                     }
                 }
                 assert!(calls as u64 >= 3000 / chunk, "{calls} chunks of {chunk}");
-                let cat = |f: &dyn Fn(&pendulab_core::model::string_run::StringRun) -> usize| {
+                let cat = |f: &dyn Fn(&pendulab_core::string_run::StringRun) -> usize| {
                     parts.iter().map(f).sum::<usize>()
                 };
                 assert_eq!(cat(&|p| p.t.len()), one.t.len());
@@ -296,7 +298,7 @@ fn a_run_in_chunks_is_the_one_shot_run_bit_for_bit() {
 
 #[test]
 fn save_times_are_hit_exactly_on_the_parabola_in_flight_and_as_a_fine_run_when_taut() {
-    use pendulab_core::model::string_run::{StringRunner, StringSave, StringStepper};
+    use pendulab_core::string_run::{StringRunner, StringStepper};
     let sp = string(0.0);
     let s0 = launch((3.5 * G).sqrt());
     let dt = 1e-3;
@@ -307,7 +309,7 @@ fn save_times_are_hit_exactly_on_the_parabola_in_flight_and_as_a_fine_run_when_t
     let times = vec![0.0, 0.123_456_7, leave.t - 0.010_5, mid, mid + 1.3e-4, snap.t + 0.2345, 3.0];
     for chunk in [5u64, u64::MAX] {
         let st = StringStepper::new(sp, 0.0, s0, Method::Rattle8, dt).unwrap();
-        let mut runner = StringRunner::new(st, 3.0, StringSave::Times(times.clone()), u64::MAX).unwrap();
+        let mut runner = StringRunner::new(st, 3.0, SaveAt::Times(times.clone()), u64::MAX).unwrap();
         let mut run = runner.take();
         while !runner.advance(chunk).unwrap() {
             let part = runner.take();
@@ -353,7 +355,7 @@ fn save_times_are_hit_exactly_on_the_parabola_in_flight_and_as_a_fine_run_when_t
 
 #[test]
 fn bad_save_times_are_refused_naming_the_time() {
-    use pendulab_core::model::string_run::{StringRunner, StringSave, StringStepper};
+    use pendulab_core::string_run::{StringRunner, StringStepper};
     let sp = string(0.0);
     for (times, needle) in [
         (vec![0.5, 0.2], "0.5 s is followed by 0.2 s"),
@@ -363,7 +365,7 @@ fn bad_save_times_are_refused_naming_the_time() {
         (vec![], "no save times"),
     ] {
         let st = StringStepper::new(sp, 0.0, launch(3.0), Method::Rattle, 1e-3).unwrap();
-        let err = StringRunner::new(st, 3.0, StringSave::Times(times), u64::MAX).unwrap_err();
+        let err = StringRunner::new(st, 3.0, SaveAt::Times(times), u64::MAX).unwrap_err();
         assert!(err.to_string().contains(needle), "{err}");
     }
 }

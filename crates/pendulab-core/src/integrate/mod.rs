@@ -20,7 +20,7 @@ pub mod rk4_angles;
 pub mod rkmk4;
 
 use crate::error::{Error, Result};
-use crate::model::Model;
+use crate::model::{Model, ModelVisitor};
 use crate::state::State;
 
 /// Work counters owned by the framework, not by the methods.
@@ -42,6 +42,46 @@ pub trait FixedStep {
     fn evals_per_step(&self) -> u64;
     /// Forgets internal state carried between steps (called when the state is replaced).
     fn reset(&mut self) {}
+}
+
+/// Takes `n` fixed steps of `dt` [s] with `scheme` on the grid t = `t_anchor` + k·dt from step `*k`
+/// on, advancing `*k` with every step taken (also when a step fails): the one fixed-step loop, which
+/// every driver ([`crate::Stepper::step_n`], hence [`crate::Solver`]) runs. A wrapped model
+/// (`AnyModel`) chooses its variant once, through [`Model::visit`], so the loop is monomorphised per
+/// variant.
+#[inline]
+pub fn fixed_steps<M: Model, S: FixedStep>(
+    model: &M,
+    scheme: &mut S,
+    t_anchor: f64,
+    dt: f64,
+    n: u64,
+    k: &mut u64,
+    state: &mut State,
+) -> Result<()> {
+    model.visit(FixedSteps { scheme, t_anchor, dt, n, k, state })
+}
+
+/// The loop of [`fixed_steps`] as a [`ModelVisitor`].
+struct FixedSteps<'a, S> {
+    scheme: &'a mut S,
+    t_anchor: f64,
+    dt: f64,
+    n: u64,
+    k: &'a mut u64,
+    state: &'a mut State,
+}
+
+impl<S: FixedStep> ModelVisitor for FixedSteps<'_, S> {
+    type Output = Result<()>;
+    #[inline]
+    fn visit<M: Model>(self, model: &M) -> Result<()> {
+        for _ in 0..self.n {
+            self.scheme.step(model, self.t_anchor + *self.k as f64 * self.dt, self.state, self.dt)?;
+            *self.k += 1;
+        }
+        Ok(())
+    }
 }
 
 /// Declared order and structural properties of a method.

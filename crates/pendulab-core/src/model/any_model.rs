@@ -1,14 +1,14 @@
 //! [`AnyModel`]: a model built by name from the registry's named values ([`super::registry`]), and
 //! its [`Model`] implementation, which hands every call to the variant (the ideal pendulum stays
-//! [`IdealPendulum`], its fast path). Loops over steps dispatch once ([`Model::fixed_steps`]), not once
-//! per step. Parameters in SI units as the registry lists them.
+//! [`IdealPendulum`], its fast path). Loops over steps dispatch once ([`Model::visit`]), not once per
+//! step. Parameters in SI units as the registry lists them.
 
 use super::pivot::{MovingPivot, PivotPath};
 use super::registry::spec;
 use super::spline::PivotSamples;
-use super::{Extended, IdealPendulum, Model, StringPendulum};
+use super::{Extended, IdealPendulum, Model, ModelVisitor, StringPendulum};
 use crate::error::{Error, Result};
-use crate::state::{Params, State};
+use crate::state::Params;
 use glam::DVec3;
 
 impl AnyModel {
@@ -185,16 +185,8 @@ impl Model for AnyModel {
         both!(self, m => m.kick_acceleration(t, x))
     }
     #[inline]
-    fn fixed_steps<S: crate::integrate::FixedStep>(
-        &self,
-        scheme: &mut S,
-        t_anchor: f64,
-        dt: f64,
-        n: u64,
-        k: &mut u64,
-        state: &mut State,
-    ) -> Result<()> {
-        both!(self, m => m.fixed_steps(scheme, t_anchor, dt, n, k, state))
+    fn visit<V: ModelVisitor>(&self, visitor: V) -> V::Output {
+        both!(self, m => m.visit(visitor))
     }
     fn kick_is_uniform(&self) -> bool {
         both!(self, m => m.kick_is_uniform())

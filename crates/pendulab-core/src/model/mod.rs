@@ -22,8 +22,6 @@ pub mod registry;
 pub mod slewing_linear;
 pub mod spline;
 pub mod string;
-pub mod string_run;
-pub mod string_stepper;
 
 pub use extended::Extended;
 pub use ideal::IdealPendulum;
@@ -31,7 +29,6 @@ pub use pivot::{MovingPivot, PivotPath};
 pub use registry::AnyModel;
 pub use string::StringPendulum;
 
-use crate::integrate::FixedStep;
 use crate::state::{Params, State};
 use glam::DVec3;
 
@@ -77,36 +74,35 @@ pub trait Model: Send + Sync {
         v
     }
     /// True for hybrid models (the string pendulum: taut and slack phases with events), which the
-    /// plain [`crate::Stepper`] refuses; they have their own driver ([`string_run`]).
+    /// plain [`crate::Stepper`] refuses; they have their own driver ([`crate::string_run`]).
     fn is_hybrid(&self) -> bool {
         false
     }
-    /// Takes `n` fixed steps of `dt` [s] on the grid t = `t_anchor` + k·dt from step `*k` on, advancing
-    /// `*k` with every step taken (also when a step fails). A model that wraps others (the registry's
-    /// `AnyModel`) overrides this to choose its variant once per loop, not once per step.
+    /// Runs `visitor` on the concrete model behind `self` (the visitor pattern): a model that wraps
+    /// others (the registry's `AnyModel`) overrides this to hand over its variant, so that a loop
+    /// inside the visitor (the fixed-step loop of `integrate::fixed_steps`) is monomorphised per
+    /// variant and dispatches once per loop, not once per step. Default: the model itself.
     #[inline]
-    fn fixed_steps<S: FixedStep>(
-        &self,
-        scheme: &mut S,
-        t_anchor: f64,
-        dt: f64,
-        n: u64,
-        k: &mut u64,
-        state: &mut State,
-    ) -> crate::error::Result<()>
+    fn visit<V: ModelVisitor>(&self, visitor: V) -> V::Output
     where
         Self: Sized,
     {
-        for _ in 0..n {
-            scheme.step(self, t_anchor + *k as f64 * dt, state, dt)?;
-            *k += 1;
-        }
-        Ok(())
+        visitor.visit(self)
     }
     /// Power per unit mass of the non-conservative forces at (t, x, v) [W/kg]: dE/dt = m·this.
     fn power_per_mass(&self, _t: f64, _x: DVec3, _v: DVec3) -> f64 {
         0.0
     }
+}
+
+/// A computation generic over the concrete model type, run by [`Model::visit`] (the hook through
+/// which code outside `model/`, such as the step loops of `integrate/`, reaches a wrapped model's
+/// variant; `model/` itself names no integrator).
+pub trait ModelVisitor {
+    /// What the computation returns.
+    type Output;
+    /// Runs on the concrete model `model`.
+    fn visit<M: Model>(self, model: &M) -> Self::Output;
 }
 
 /// The rod's multiplier λ [1/s²] of T-2.2 for applied acceleration `f`.

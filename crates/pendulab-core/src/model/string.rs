@@ -25,7 +25,7 @@
 //! Conserved: E while taut and while slack (exactly in flight); at a snap E drops by the amount above.
 //! J₃ is conserved throughout (gravity and the string's pull, along x, have no torque about e₃).
 //! Vanishing extra parameters: a motion with T > 0 throughout is the rod pendulum, step for step.
-//! The hybrid driver is [`crate::model::string_run`].
+//! The hybrid driver is [`crate::string_run`] (beside the stepper and the solver).
 
 use super::Model;
 use crate::error::{Error, Result};

@@ -1,18 +1,18 @@
 //! The string pendulum's incremental stepper ([`StringStepper`], what the lab runs and what
-//! [`super::string_run::StringRunner`] drives in chunks): taut phases with a fixed-step method that
+//! [`super::StringRunner`] drives in chunks): taut phases with a fixed-step method that
 //! keeps TS² (T-2.2), the leave event where the tension T-2.3 reaches 0 (bisection on the step
 //! length), analytic free flight, the re-taut event on the exact parabola, and the snap (physics and
-//! equations in [`super::string`]). Its mode — taut, or slack on a given flight — is carried as state,
+//! equations in [`crate::model::string`]). Its mode — taut, or slack on a given flight — is carried as state,
 //! so a run cut into pieces is the same run. Times [s] lie on the grid t₀ + k·dt; SI units.
 
-use super::string::{bisect, StringPendulum};
-use super::string_run::{EventKind, StringEvent};
-use super::{IdealPendulum, Model};
+use super::{EventKind, StringEvent};
 use crate::error::{Error, Result};
 use crate::integrate::composition::Composition;
 use crate::integrate::rattle::Rattle;
 use crate::integrate::rkmk4::Rkmk4;
 use crate::integrate::{FixedStep, Method, Stats};
+use crate::model::string::{bisect, StringPendulum};
+use crate::model::{IdealPendulum, Model};
 use crate::state::{State, TS2_TOLERANCE};
 use glam::DVec3;
 #[derive(Debug, Clone)]
@@ -211,7 +211,7 @@ impl StringStepper {
     /// alone while slack.
     pub fn acceleration(&self) -> DVec3 {
         if self.is_taut() {
-            super::acceleration(&self.rod, self.t, self.s.x, self.s.v)
+            crate::model::acceleration(&self.rod, self.t, self.s.x, self.s.v)
         } else {
             self.rod.applied_acceleration(self.t, self.s.x, self.s.v)
         }

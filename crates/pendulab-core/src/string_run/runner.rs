@@ -1,75 +1,22 @@
-//! The hybrid simulation of the string pendulum ([`StringPendulum`], see its module for the physics
-//! and equations): taut phases with a fixed-step method that keeps TS² (T-2.2), the leave event where
-//! the tension T-2.3 reaches 0 (bisection on the step length), analytic free flight, the re-taut
-//! event on the exact parabola, and the snap.
+//! [`StringRunner`]: a [`StringStepper`] run to t_end in chunks (the Python layer's progress bar and
+//! Ctrl-C) with the numbers of one run, keeping samples by a [`SaveAt`] rule (times in s):
+//! - [`SaveAt::Every`]`(n)`: the start, every n-th grid point t₀ + k·dt (n ≥ 1), the state after every
+//!   event, and t_end.
+//! - [`SaveAt::Times`]: exactly these times (strictly increasing, within [t₀, t_end]): taut phases land
+//!   on each by shortening the one step that would cross it (the next step is shortened to regain the
+//!   grid), slack phases evaluate the exact parabola there; at an event's time, the state after it.
+//!   Events are still listed in [`StringRun::events`].
 //!
-//! Times [s] lie on the grid t₀ + k·dt as in [`crate::Stepper`]: full steps are exactly dt, so a
-//! motion that never goes slack is the rod pendulum's, bit for bit. After an event the next step is
-//! shortened to land on the grid again. Samples ([`StringSave`]): the start, every `save_every`-th grid
-//! point, every event (the state after it) and t_end; or exactly given times, landed on by shortening
-//! a taut step. Slack samples are the exact parabola. [`StringRunner`] (this file) runs a
-//! [`StringStepper`] (its own file, `string_stepper.rs`, which does the stepping and the events) to
-//! t_end in chunks (the Python layer's progress bar and Ctrl-C) with the numbers of one run. A short slack
-//! excursion wholly inside one taut step (T < 0 only between two grid points) is not seen: dt must
-//! resolve the motion.
+//! After an event the next step is shortened to land on the grid again. Slack samples are the exact
+//! parabola. A short slack excursion wholly inside one taut step (T < 0 only between two grid points)
+//! is not seen: dt must resolve the motion.
 
-use super::string::StringPendulum;
-pub use super::string_stepper::StringStepper;
+use super::{StringRun, StringStepper};
 use crate::error::{Error, Result};
-use crate::integrate::{Method, Stats};
-use crate::solve::BYTES_PER_SAMPLE;
+use crate::integrate::Method;
+use crate::model::StringPendulum;
+use crate::solve::{SaveAt, BYTES_PER_SAMPLE};
 use crate::state::State;
-
-/// What happened at an event.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum EventKind {
-    /// The tension reached 0: the string goes slack, the bob flies freely.
-    Slack,
-    /// The bob reached |x| = l: the string snaps taut (radial velocity removed or reflected).
-    Taut,
-}
-
-/// One event of a run.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct StringEvent {
-    /// Time [s].
-    pub t: f64,
-    /// Leave or snap.
-    pub kind: EventKind,
-    /// State just before (for a leave: the state where T = 0).
-    pub before: State,
-    /// State just after (equal to `before` for a leave).
-    pub after: State,
-    /// Kinetic energy lost in the event [J] (0 for a leave; ½m(1 − e²)|u|² for a snap).
-    pub energy_lost: f64,
-}
-
-/// The result of [`StringPendulum::simulate`].
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct StringRun {
-    /// Times [s].
-    pub t: Vec<f64>,
-    /// States (x [m], v [m/s]); off the sphere while slack.
-    pub states: Vec<State>,
-    /// Whether the string is taut at each sample.
-    pub taut: Vec<bool>,
-    /// Every leave and snap, in order.
-    pub events: Vec<StringEvent>,
-    /// Taut-phase steps and evaluations.
-    pub stats: Stats,
-}
-
-/// What a [`StringRunner`] keeps (times in s).
-#[derive(Debug, Clone, PartialEq)]
-pub enum StringSave {
-    /// The start, every n-th grid point t₀ + k·dt (n ≥ 1), the state after every event, and t_end.
-    Every(u64),
-    /// Exactly these times (strictly increasing, within [t₀, t_end]): taut phases land on each by
-    /// shortening the one step that would cross it (the next step is shortened to regain the grid),
-    /// slack phases evaluate the exact parabola there; at an event's time, the state after it.
-    /// Events are still listed in [`StringRun::events`].
-    Times(Vec<f64>),
-}
 
 /// The samples kept so far, with the memory limit.
 #[derive(Debug, Default)]
@@ -116,7 +63,7 @@ impl Recorder {
 }
 
 /// A batch run of a [`StringStepper`] to t_end in chunks of bounded work, keeping samples by a
-/// [`StringSave`] rule: what the Python layer drives to show progress and to stop cleanly on Ctrl-C
+/// [`SaveAt`] rule: what the Python layer drives to show progress and to stop cleanly on Ctrl-C
 /// between chunks. Chunks end on grid points t₀ + k·dt (or save times, or t_end) and the stepper
 /// goes on from there as if it had not stopped, so the samples of a run in chunks of any size are
 /// those of [`StringPendulum::simulate`] (one chunk) bit for bit.
@@ -125,8 +72,8 @@ pub struct StringRunner {
     stepper: StringStepper,
     t_start: f64,
     t_end: f64,
-    save: StringSave,
-    /// Index of the next save time ([`StringSave::Times`]).
+    save: SaveAt,
+    /// Index of the next save time ([`SaveAt::Times`]).
     next_time: usize,
     rec: Recorder,
     done: bool,
@@ -135,8 +82,8 @@ pub struct StringRunner {
 impl StringRunner {
     /// A run of `stepper` from its time to `t_end` [s] keeping `save`; `max_saved_bytes` bounds the
     /// memory of the samples (an error when exceeded). Checks the save rule and keeps the start
-    /// (for [`StringSave::Times`]: when the first time is the start time).
-    pub fn new(stepper: StringStepper, t_end: f64, save: StringSave, max_saved_bytes: u64) -> Result<Self> {
+    /// (for [`SaveAt::Times`]: when the first time is the start time).
+    pub fn new(stepper: StringStepper, t_end: f64, save: SaveAt, max_saved_bytes: u64) -> Result<Self> {
         let t0 = stepper.t();
         if !(t_end.is_finite() && t_end > t0) {
             return Err(Error::InvalidParameter {
@@ -147,15 +94,15 @@ impl StringRunner {
         }
         let max_samples = max_saved_bytes / BYTES_PER_SAMPLE;
         match &save {
-            StringSave::Every(0) => {
+            SaveAt::Every(0) => {
                 return Err(Error::InvalidParameter {
                     name: "save_every",
                     value: 0.0,
                     allowed: "save_every must be an integer ≥ 1 (steps between saved samples)",
                 })
             }
-            StringSave::Every(_) => {}
-            StringSave::Times(ts) => {
+            SaveAt::Every(_) => {}
+            SaveAt::Times(ts) => {
                 crate::solve::check_save_times(ts, t0, t_end)?;
                 if ts.len() as u64 > max_samples {
                     let samples = ts.len() as u64;
@@ -178,12 +125,12 @@ impl StringRunner {
         };
         let (s, taut) = (runner.stepper.state(), runner.stepper.is_taut());
         match &runner.save {
-            StringSave::Every(_) => runner.rec.push(t0, s, taut)?,
-            StringSave::Times(ts) if ts[0] == t0 => {
+            SaveAt::Every(_) => runner.rec.push(t0, s, taut)?,
+            SaveAt::Times(ts) if ts[0] == t0 => {
                 runner.rec.push(t0, s, taut)?;
                 runner.next_time = 1;
             }
-            StringSave::Times(_) => {}
+            SaveAt::Times(_) => {}
         }
         Ok(runner)
     }
@@ -204,8 +151,8 @@ impl StringRunner {
         let rec = &mut self.rec;
         loop {
             let (target, save_every) = match &self.save {
-                StringSave::Every(n) => (self.t_end, *n),
-                StringSave::Times(ts) => (ts.get(self.next_time).copied().unwrap_or(self.t_end), u64::MAX),
+                SaveAt::Every(n) => (self.t_end, *n),
+                SaveAt::Times(ts) => (ts.get(self.next_time).copied().unwrap_or(self.t_end), u64::MAX),
             };
             let mut keep = |t: f64, s: State, taut: bool| rec.push(t, s, taut);
             let mut ignore = |_: f64, _: State, _: bool| Ok(());
@@ -217,7 +164,7 @@ impl StringRunner {
                 return Ok(false);
             }
             self.stepper.advance_to(target, target == self.t_end, save_every, push)?;
-            if let StringSave::Times(ts) = &self.save {
+            if let SaveAt::Times(ts) = &self.save {
                 if self.next_time < ts.len() {
                     // at the save time: the state reached (after any event there)
                     self.next_time += 1;
@@ -299,7 +246,7 @@ impl StringPendulum {
             });
         }
         let stepper = StringStepper::new(*self, t0, state, method, dt)?;
-        let mut runner = StringRunner::new(stepper, t_end, StringSave::Every(save_every), max_saved_bytes)?;
+        let mut runner = StringRunner::new(stepper, t_end, SaveAt::Every(save_every), max_saved_bytes)?;
         while !runner.advance(u64::MAX)? {}
         Ok(runner.take())
     }
