@@ -11,7 +11,7 @@ PORT ?= 8000
 STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
-	bench-compare bench-peers bench-fit validate-fit golden clean
+	bench-compare bench-peers bench-fit validate-fit golden clean docs docs-serve
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -23,6 +23,13 @@ $(VENV)/.deps: python/pyproject.toml
 	touch $@
 
 venv: $(VENV)/.deps
+
+# The documentation site's tools, in the same .venv (the API reference, the CLI reference and the
+# gallery import pendulab). Keep in step with the "docs" extra of python/pyproject.toml.
+$(VENV)/.docs-deps: $(VENV)/.deps
+	$(PY) -m pip install --quiet "mkdocs>=1.6" "mkdocs-material>=9.5" "mkdocstrings[python]>=0.26" \
+		"mkdocs-jupyter>=0.25" "jupyter-server-mathjax>=0.2.6"
+	touch $@
 
 build: venv
 	VIRTUAL_ENV=$(CURDIR)/$(VENV) $(VENV)/bin/maturin develop --release --quiet -m python/Cargo.toml
@@ -64,14 +71,14 @@ test-e2e: build web/node_modules/.package-lock.json
 lint: venv
 	cargo fmt --all -- --check
 	cargo clippy --workspace --all-targets -- -D warnings
-	$(VENV)/bin/ruff check python bench testdata/generate tools
-	$(VENV)/bin/ruff format --check python bench testdata/generate tools
+	$(VENV)/bin/ruff check python bench testdata/generate tools docs/gallery
+	$(VENV)/bin/ruff format --check python bench testdata/generate tools docs/gallery
 	$(PY) tools/check_imports.py
 
 fmt: venv
 	cargo fmt --all
-	$(VENV)/bin/ruff format python bench testdata/generate tools
-	$(VENV)/bin/ruff check --fix python bench testdata/generate tools
+	$(VENV)/bin/ruff format python bench testdata/generate tools docs/gallery
+	$(VENV)/bin/ruff check --fix python bench testdata/generate tools docs/gallery
 
 test-rust:
 	cargo test --release -p pendulab-core
@@ -83,7 +90,22 @@ test-python: build
 test-tour: build
 	$(VENV)/bin/pytest python/tests/test_tour.py -q
 
-test: lint test-rust test-python test-web test-e2e
+# The documentation site (mkdocs.yml, hooks in tools/docs_site.py) into site/, strict: a broken link,
+# a missing API entry, a failing gallery script or notebook, or a page that loads anything from the
+# network fails it. Open site/index.html (no server needed). `make docs-serve`: live at
+# http://127.0.0.1:8001 (gallery and notebook results cached in target/docs-gallery/, docs-notebooks/).
+# The guided tour's notebooks are run while the site is built (DOCS_EXECUTE=false: rendered without
+# outputs); `make test` runs them once, in test-python (test_tour.py), and builds the site without.
+DOCS_EXECUTE ?= true
+docs: build $(VENV)/.docs-deps
+	rm -rf target/docs-gallery target/docs-notebooks
+	PENDULAB_DOCS_EXECUTE=$(DOCS_EXECUTE) $(VENV)/bin/mkdocs build --strict --clean
+
+docs-serve: build $(VENV)/.docs-deps
+	$(VENV)/bin/mkdocs serve --strict -a 127.0.0.1:8001
+
+test: DOCS_EXECUTE := false
+test: lint test-rust test-python test-web test-e2e docs
 
 bench:
 	cargo bench -p pendulab-core

@@ -1,0 +1,236 @@
+"""MkDocs build hooks of the documentation site (mkdocs.yml ``hooks:``; run by ``make docs``).
+
+- **CLI reference.** The marker ``<!-- cli-reference -->`` in ``docs/reference/cli.md`` is replaced by
+  every command of the typer app of :mod:`pendulab.cli` with its help text, usage line and the help
+  record (names, metavar, help, default) of each argument and option — what ``--help`` prints, taken
+  from the command definitions themselves. (mkdocs-click cannot read typer ≥ 0.20 commands, whose
+  parameters are typer's own click classes.)
+- **Gallery.** Every ``docs/gallery/NN_name.py`` is run at build time in a fresh temporary directory
+  (matplotlib's Agg backend, at most ``GALLERY_TIMEOUT`` seconds each); the pictures and movies it
+  writes there become ``gallery/index.md``: the script's docstring, its output, its code (less the
+  docstring, shown above it). A failing
+  script, or one that writes nothing to show, fails the build. Results are cached by the script's
+  content and the installed pendulab version in ``target/docs-gallery/`` (``make docs-serve``
+  rebuilds quickly); ``make docs`` clears the cache, so CI always runs every script.
+- **Guided tour.** Notebooks in ``docs/tour/*.ipynb`` (rendered, and run, by mkdocs-jupyter) are added
+  to the navigation in name order; MathJax is copied into the site from the ``jupyter-server-mathjax``
+  package, so that their formulas render offline.
+- **Checks after the build** (each failure fails the build): the API page has an anchor for every
+  name of ``pendulab.__all__``, and no page loads a script, stylesheet or font from the network (the
+  site must be readable offline from ``site/index.html``).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import html
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from inspect import cleandoc as inspect_cleandoc
+from pathlib import Path
+from typing import Any
+
+import pendulab
+import typer.main
+from mkdocs.exceptions import PluginError
+from mkdocs.structure.files import File, Files
+from pendulab.cli import app
+
+ROOT = Path(__file__).resolve().parents[1]
+GALLERY_DIR = ROOT / "docs" / "gallery"
+CACHE_DIR = ROOT / "target" / "docs-gallery"
+GALLERY_TIMEOUT = 120.0  # s per script
+MEDIA = {".png": "image", ".svg": "image", ".gif": "image", ".mp4": "video", ".webm": "video"}
+TOUR_GLOB = "tour/*.ipynb"
+CLI_MARKER = "<!-- cli-reference -->"
+
+# Sphinx roles in docstrings (``:class:`pendulab.X```), which Markdown renders as ``:class:<code>…``.
+_ROLE = re.compile(r":(?:class|func|meth|mod|attr|data|exc|obj|ref):(<code>)~?")
+# A resource loaded from the network: <script src=http…>, <link … href=http…> (stylesheets, fonts,
+# preconnect), @import url(http…) and url(http…) in inline styles.
+_REMOTE = re.compile(
+    r"""<script\b[^>]*\bsrc=["']?(?:https?:)?//|<link\b[^>]*\bhref=["']?(?:https?:)?//"""
+    r"""|@import\s+(?:url\()?["']?(?:https?:)?//|url\(["']?(?:https?:)?//""",
+    re.IGNORECASE,
+)
+
+
+def on_config(config: Any) -> Any:
+    """Adds the guided tour's notebooks (if any) to the navigation."""
+    docs = Path(config["docs_dir"])
+    notebooks = sorted(docs.glob(TOUR_GLOB))
+    if notebooks and config["nav"] is not None:
+        tour = [{_title_of_notebook(nb): nb.relative_to(docs).as_posix()} for nb in notebooks]
+        position = next((i for i, item in enumerate(config["nav"]) if "Gallery" in item), 2)
+        config["nav"].insert(position, {"Guided tour": tour})
+    return config
+
+
+def _title_of_notebook(path: Path) -> str:
+    name = re.sub(r"^\d+[_-]", "", path.stem)
+    return name.replace("_", " ").replace("-", " ").capitalize()
+
+
+def on_files(files: Files, config: Any) -> Files:
+    """Runs the gallery scripts and adds their page and media to the site."""
+    scripts = sorted(GALLERY_DIR.glob("[0-9]*.py"))
+    sections = [
+        "# Gallery",
+        "",
+        "Every figure here is made while the site is built, by the script shown under it; each script "
+        "runs as it is (`python docs/gallery/NAME.py`) and writes its pictures into the current "
+        "directory. Equation numbers refer to the [theory](../theory.md).",
+        "",
+    ]
+    for script in scripts:
+        outputs = _run_gallery_script(script)
+        title, body = _docstring_parts(script)
+        sections += [f"## {title}", "", body, ""]
+        for out in outputs:
+            uri = f"gallery/{script.stem}/{out.name}"
+            files.append(File.generated(config, uri, abs_src_path=str(out)))
+            if MEDIA[out.suffix] == "video":
+                sections += [f'<video controls loop muted src="{script.stem}/{out.name}"></video>', ""]
+            else:
+                sections += [f"![{html.escape(title)}]({script.stem}/{out.name})", ""]
+        code = re.sub(r'^\s*""".*?"""\s*', "", script.read_text(encoding="utf-8"), count=1, flags=re.DOTALL)
+        sections += [f'```python title="{script.name}"', code.rstrip(), "```", ""]
+    files.append(File.generated(config, "gallery/index.md", content="\n".join(sections)))
+    return files
+
+
+def _docstring_parts(script: Path) -> tuple[str, str]:
+    match = re.match(r'\s*"""(.*?)"""', script.read_text(encoding="utf-8"), flags=re.DOTALL)
+    if not match:
+        raise PluginError(f"gallery script {script.name} has no module docstring (its title and text)")
+    lines = match.group(1).strip().splitlines()
+    return lines[0].rstrip("."), "\n".join(lines[1:]).strip()
+
+
+def _run_gallery_script(script: Path) -> list[Path]:
+    key = hashlib.sha256(script.read_bytes() + pendulab.__version__.encode()).hexdigest()[:16]
+    cached = CACHE_DIR / f"{script.stem}-{key}"
+    if not cached.is_dir():
+        with tempfile.TemporaryDirectory(prefix="pendulab-gallery-") as tmp:
+            env = {**os.environ, "MPLBACKEND": "Agg", "PYTHONHASHSEED": "0"}
+            try:
+                run = subprocess.run(
+                    [sys.executable, str(script)],
+                    cwd=tmp,
+                    env=env,
+                    capture_output=True,
+                    text=True,
+                    timeout=GALLERY_TIMEOUT,
+                    check=False,
+                )
+            except subprocess.TimeoutExpired as e:
+                raise PluginError(
+                    f"gallery script {script.name} ran longer than {GALLERY_TIMEOUT:g} s"
+                ) from e
+            if run.returncode != 0:
+                raise PluginError(f"gallery script {script.name} failed:\n{run.stderr[-3000:]}")
+            made = sorted(p for p in Path(tmp).iterdir() if p.suffix.lower() in MEDIA)
+            if not made:
+                raise PluginError(
+                    f"gallery script {script.name} wrote no picture or movie ({', '.join(MEDIA)})"
+                )
+            partial = cached.with_name(cached.name + ".partial")
+            shutil.rmtree(partial, ignore_errors=True)
+            partial.mkdir(parents=True)
+            for p in made:
+                shutil.copy2(p, partial / p.name.lower())
+            partial.rename(cached)
+    return sorted(cached.iterdir())
+
+
+def on_page_markdown(markdown: str, page: Any, **kwargs: Any) -> str:
+    """Fills in the CLI reference."""
+    if CLI_MARKER not in markdown:
+        return markdown
+    return markdown.replace(CLI_MARKER, cli_reference_markdown())
+
+
+def cli_reference_markdown() -> str:
+    """Markdown for every ``pendulab`` command, from the command definitions (typer → click)."""
+    root = typer.main.get_command(app)
+    root_ctx = root.context_class(root, info_name="pendulab")
+    out = [_command_markdown(root, root_ctx, "pendulab", level=2)]
+    commands = getattr(root, "commands", {})
+    for name in sorted(commands):
+        command = commands[name]
+        if not command.hidden:
+            ctx = command.context_class(command, info_name=name, parent=root_ctx)
+            out.append(_command_markdown(command, ctx, f"pendulab {name}", level=2))
+    return "\n".join(out)
+
+
+def _command_markdown(command: Any, ctx: Any, path: str, level: int) -> str:
+    usage = command.get_usage(ctx).removeprefix("Usage:").strip()
+    lines = [f"{'#' * level} `{path}`", "", _escape(inspect_cleandoc(command.help or "")), ""]
+    lines += ["```text", usage, "```", ""]
+    rows = []
+    for param in command.get_params(ctx):
+        record = param.get_help_record(ctx)
+        if record is None or param.name == "help":
+            continue
+        names, text = record
+        rows.append(f"| `{names}` | {_escape(' '.join(text.split()))} |")
+    if rows:
+        lines += ["| argument / option | meaning |", "|---|---|", *rows, ""]
+    return "\n".join(lines)
+
+
+def _escape(text: str) -> str:
+    """Markdown-safe text (no raw HTML, emphasis or table cells from help strings); `code` is kept."""
+    parts = text.split("`")
+    for i in range(0, len(parts), 2):
+        parts[i] = html.escape(parts[i], quote=False).replace("*", "\\*")
+    return "`".join(parts).replace("|", "\\|")
+
+
+def on_page_content(content: str, **kwargs: Any) -> str:
+    """Drops the Sphinx role prefixes of docstrings (``:class:`X``` shows as code X)."""
+    return _ROLE.sub(r"\1", content)
+
+
+def on_post_build(config: Any) -> None:
+    site = Path(config["site_dir"])
+    docs = Path(config["docs_dir"])
+    if any(docs.glob(TOUR_GLOB)):
+        _copy_mathjax(site / "assets" / "mathjax")
+    _check_api_coverage(site / "reference" / "api.html")
+    _check_offline(site)
+
+
+def _copy_mathjax(target: Path) -> None:
+    try:
+        import jupyter_server_mathjax
+    except ImportError as e:
+        raise PluginError("the guided tour needs MathJax: pip install jupyter-server-mathjax") from e
+    source = Path(jupyter_server_mathjax.__file__).parent / "static"
+    shutil.copytree(source, target, dirs_exist_ok=True)
+
+
+def _check_api_coverage(api_page: Path) -> None:
+    text = api_page.read_text(encoding="utf-8")
+    missing = [name for name in pendulab.__all__ if f'id="pendulab.{name}"' not in text]
+    if missing:
+        raise PluginError(
+            f"{api_page.name} documents no anchor for these names of pendulab.__all__: {', '.join(missing)} "
+            "(add `::: pendulab.NAME` to docs/reference/api.md)"
+        )
+
+
+def _check_offline(site: Path) -> None:
+    remote = []
+    for page in sorted(site.rglob("*.html")):
+        for match in _REMOTE.finditer(page.read_text(encoding="utf-8")):
+            remote.append(f"{page.relative_to(site)}: {match.group(0)[:80]}")
+    if remote:
+        raise PluginError(
+            "the site must be readable offline, but these pages load from the network:\n" + "\n".join(remote)
+        )
