@@ -12,9 +12,10 @@
   script, or one that writes nothing to show, fails the build. Results are cached by the script's
   content and the installed pendulab version in ``target/docs-gallery/`` (``make docs-serve``
   rebuilds quickly); ``make docs`` clears the cache, so CI always runs every script.
-- **Guided tour.** Notebooks in ``docs/tour/*.ipynb`` (rendered, and run, by mkdocs-jupyter) are added
-  to the navigation in name order; MathJax is copied into the site from the ``jupyter-server-mathjax``
-  package, so that their formulas render offline.
+- **Guided tour.** ``docs/tour/index.md`` and the notebooks ``docs/tour/*.ipynb`` (rendered, and run,
+  by mkdocs-jupyter) are added to the navigation in name order, each titled by its first heading; the
+  files that running them writes into ``docs/tour/`` (movies) are removed after the build. MathJax is
+  copied into the site from the ``jupyter-server-mathjax`` package, so that formulas render offline.
 - **Checks after the build** (each failure fails the build): the API page has an anchor for every
   name of ``pendulab.__all__``, and no page loads a script, stylesheet or font from the network (the
   site must be readable offline from ``site/index.html``).
@@ -24,6 +25,7 @@ from __future__ import annotations
 
 import hashlib
 import html
+import json
 import os
 import re
 import shutil
@@ -60,19 +62,45 @@ _REMOTE = re.compile(
 
 
 def on_config(config: Any) -> Any:
-    """Adds the guided tour's notebooks (if any) to the navigation."""
+    """Adds the guided tour (its ``index.md`` first, then the notebooks) to the navigation."""
     docs = Path(config["docs_dir"])
     notebooks = sorted(docs.glob(TOUR_GLOB))
     if notebooks and config["nav"] is not None:
         tour = [{_title_of_notebook(nb): nb.relative_to(docs).as_posix()} for nb in notebooks]
+        if (docs / "tour" / "index.md").is_file():
+            tour.insert(0, {"Overview": "tour/index.md"})
         position = next((i for i, item in enumerate(config["nav"]) if "Gallery" in item), 2)
         config["nav"].insert(position, {"Guided tour": tour})
     return config
 
 
 def _title_of_notebook(path: Path) -> str:
-    name = re.sub(r"^\d+[_-]", "", path.stem)
-    return name.replace("_", " ").replace("-", " ").capitalize()
+    """The first Markdown heading of the notebook, else its file name."""
+    try:
+        cells = json.loads(path.read_text(encoding="utf-8"))["cells"]
+    except (OSError, ValueError, KeyError) as e:
+        raise PluginError(f"{path.name} is not a readable notebook: {e}") from e
+    for cell in cells:
+        if cell.get("cell_type") == "markdown":
+            for line in "".join(cell.get("source", "")).splitlines():
+                if line.startswith("#"):
+                    return line.lstrip("#").strip()
+    return re.sub(r"^\d+[_-]", "", path.stem).replace("_", " ").capitalize()
+
+
+_tour_files_before: set[Path] = set()
+
+
+def on_pre_build(config: Any) -> None:
+    """Notes the tour folder's files: running the notebooks writes movies next to them (the kernel's
+    working directory is the notebook's folder), which on_post_build removes again."""
+    _tour_files_before.clear()
+    _tour_files_before.update(_tour_files(Path(config["docs_dir"])))
+
+
+def _tour_files(docs: Path) -> set[Path]:
+    tour = docs / "tour"
+    return {p for p in tour.iterdir() if p.is_file()} if tour.is_dir() else set()
 
 
 def on_files(files: Files, config: Any) -> Files:
@@ -200,6 +228,8 @@ def on_page_content(content: str, **kwargs: Any) -> str:
 def on_post_build(config: Any) -> None:
     site = Path(config["site_dir"])
     docs = Path(config["docs_dir"])
+    for made in sorted(_tour_files(docs) - _tour_files_before):
+        made.unlink()
     if any(docs.glob(TOUR_GLOB)):
         _copy_mathjax(site / "assets" / "mathjax")
     _check_api_coverage(site / "reference" / "api.html")
