@@ -163,7 +163,8 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
         )
     if "angles" in arrays:
         theta = arrays["angles"][:, 0]
-        if np.any(theta < -1e-12) or np.any(theta > math.pi + 1e-12):
+        # noise may push θ a little below 0 near the bottom; values far outside [0, π] are degrees
+        if np.any(theta < -0.5) or np.any(theta > math.pi + 0.5):
             raise InvalidInputError(
                 "angles: θ must lie in [0, π] rad (the polar angle from the downward vertical); "
                 f"got values from {theta.min():.6g} to {theta.max():.6g} — degrees? use np.radians"

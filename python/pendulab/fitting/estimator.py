@@ -40,6 +40,7 @@ from .start import phase_starts, starting_values
 
 POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness"}
 MAX_EVALUATIONS = 20_000
+ANCHOR = 0.1
 
 
 def _angles_of(pendulum: Pendulum, state: State) -> dict[str, float]:
@@ -79,6 +80,7 @@ def _polish(
     r: FloatArray,
     jac: FloatArray,
     steps: FloatArray,
+    positive: FloatArray,
     lo: FloatArray,
     hi: FloatArray,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -91,9 +93,9 @@ def _polish(
         r_trial = weighted(trial)
         if not float(r_trial @ r_trial) < float(r @ r):
             break
-        small = np.all(np.abs(trial - u) <= 1e-13 * np.maximum(np.abs(u), steps * 1e6))
+        small = np.all(np.abs(trial - u) <= 1e-13 * np.maximum(np.abs(u), 1.0))
         u, r = trial, r_trial
-        jac = jacobian(weighted, u, steps)
+        jac = jacobian(weighted, u, steps, positive)
         if small:
             break
     return u, r, jac
@@ -211,6 +213,19 @@ def fit(
     began = time.perf_counter()
     interrupted = False
 
+    u_start = np.array([start[n] for n in free], dtype=np.float64)
+    logged = np.array([n in POSITIVE and start[n] > 0.0 for n in free])
+
+    def _anchor(u: FloatArray) -> FloatArray:
+        """A faint pull towards the start (ANCHOR per unit of ln p or of the scale): it holds the
+        directions the data do not determine (g and l together, from angles) where they began instead
+        of letting them drift to a bound, and biases the determined ones by ~ANCHOR²/(JᵀJ), nothing."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            z = np.where(
+                logged, np.log(np.maximum(u, 1e-300) / np.where(logged, u_start, 1.0)), (u - u_start) / scales
+            )
+        return ANCHOR * z
+
     def clip(u: FloatArray) -> FloatArray:
         return np.minimum(np.maximum(u, np.array(lower)), np.array(upper))
 
@@ -221,7 +236,7 @@ def fit(
                 cost = 0.5 * float(r @ r)
                 if cost < best["cost"]:
                     best.update(cost=cost, u=np.array(u, dtype=np.float64))
-            return r
+            return np.concatenate([r, _anchor(u)])
 
         return least_squares(
             fun,
@@ -289,10 +304,11 @@ def fit(
 
     u = np.asarray(u, dtype=np.float64)
     r = weighted(u)
-    steps = scales * 1e-6
-    jac = jacobian(weighted, u, steps)
+    positive = np.array([n in POSITIVE and u[i] > 0.0 for i, n in enumerate(free)])
+    steps = np.where(positive, 1e-5, scales * 1e-5)
+    jac = jacobian(weighted, u, steps, positive)
     if loss == "linear" and not interrupted:
-        u, r, jac = _polish(weighted, u, r, jac, steps, np.array(lower), np.array(upper))
+        u, r, jac = _polish(weighted, u, r, jac, steps, positive, np.array(lower), np.array(upper))
     final = problem.with_free(u)
     n_res, k = r.size, len(free)
     dof = max(n_res - k, 1)
@@ -302,7 +318,7 @@ def fit(
     chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
     ident = analyse(free, final, jac, variance, POSITIVE)
     g_fit = final["g"]
-    if "g" in free and not 0.01 <= abs(g_fit) <= 1000.0:
+    if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
         warnings.warn(
             f"the fitted g = {g_fit:.4g} m/s² is far from any planet's (Earth 9.81): "
             "are the data in SI units "

@@ -6,8 +6,10 @@ estimate is C = (JᵀJ)⁻¹ (times the residual variance s² = χ²/(N − k) w
 Jacobian is taken in logarithmic coordinates for strictly positive parameters (l, g > 0, m, c > 0, …),
 where a scale symmetry shows up as an exact linear dependence: angles alone depend on g and l only
 through g/l (T-2.5), so ∂r/∂ln g = −∂r/∂ln l. The singular value decomposition of the column-scaled J
-finds such directions (singular values below 1e-6 of the largest): their parameters are reported as
-not determined, with the combination that is (e.g. g/length and its error), and the covariance is the
+finds such directions (singular values below 1e-4 of the largest: columns that collinear leave the
+combination 10⁴ times less certain than the rest, which the data then cannot separate; Jacobian steps
+are equal in ln p, so an exact symmetry gives exactly dependent columns): their parameters are
+reported as not determined, with the combination that is (e.g. g/length and its error), and the covariance is the
 pseudo-inverse on the determined subspace.
 """
 
@@ -21,7 +23,7 @@ import numpy as np
 
 from ..model import FloatArray
 
-SINGULAR = 1e-6
+SINGULAR = 1e-4
 """Relative singular value below which a direction of parameter space is not determined."""
 
 
@@ -36,14 +38,26 @@ class Identifiability:
     singular_values: FloatArray = field(default_factory=lambda: np.zeros(0))
 
 
-def jacobian(residuals: Callable[[FloatArray], FloatArray], u: FloatArray, steps: FloatArray) -> FloatArray:
-    """Central differences of ``residuals`` at ``u`` with the given steps (error O(h²))."""
+def jacobian(
+    residuals: Callable[[FloatArray], FloatArray],
+    u: FloatArray,
+    steps: FloatArray,
+    logged: FloatArray | None = None,
+) -> FloatArray:
+    """Central differences of ``residuals`` at ``u`` (error O(h²)), in parameter units. Where
+    ``logged`` is True the step is multiplicative, u·e^{±h}: equal steps in ln p for every positive
+    parameter, so that an exact scale symmetry (g and l together) gives exactly dependent columns."""
     columns = []
     for k, h in enumerate(steps):
         up, down = u.copy(), u.copy()
-        up[k] += h
-        down[k] -= h
-        columns.append((residuals(up) - residuals(down)) / (2.0 * h))
+        if logged is not None and logged[k]:
+            up[k] = u[k] * math.exp(h)
+            down[k] = u[k] * math.exp(-h)
+            columns.append((residuals(up) - residuals(down)) / (2.0 * h * u[k]))
+        else:
+            up[k] += h
+            down[k] -= h
+            columns.append((residuals(up) - residuals(down)) / (2.0 * h))
     return np.column_stack(columns)
 
 
