@@ -9,8 +9,8 @@ through g/l (T-2.5), so ∂r/∂ln g = −∂r/∂ln l. The singular value decom
 finds such directions (singular values below 1e-4 of the largest: columns that collinear leave the
 combination 10⁴ times less certain than the rest, which the data then cannot separate; Jacobian steps
 are equal in ln p, so an exact symmetry gives exactly dependent columns): their parameters are
-reported as not determined, with the combination that is (e.g. g/length and its error), and the covariance is the
-pseudo-inverse on the determined subspace.
+reported as not determined, with the combination that is (e.g. g/length and its error), and the
+covariance is the pseudo-inverse on the determined subspace.
 """
 
 from __future__ import annotations
