@@ -116,6 +116,8 @@ async function main(): Promise<void> {
     byId('render').title = t('page.softwareHelp', { renderer: quality.renderer ?? '' });
   }
   const scene = new PendulumScene(byId('scene'), quality);
+  scene.renderer.domElement.setAttribute('role', 'img');
+  scene.renderer.domElement.setAttribute('aria-label', t('page.scene'));
   const view = { ...DEFAULT_VIEW };
   const costs = new FrameCosts();
   const chosen = new ChosenPlot(byId('plots'));

@@ -66,15 +66,44 @@ export function frameAt(frames: readonly Frame[], t: number): Frame | null {
   return b.t > a.t ? interpolateFrames(a, b, (t - a.t) / (b.t - a.t)) : a;
 }
 
-/** |r₁ − r₂| [m] of the bobs (r = pivot + x) at the times of `first` where `second` has frames. */
+/** The bob's position r = pivot + x [m] at time t from the time-sorted `frames`: x by cubic Hermite
+ *  interpolation of the two frames around t with their x and v = ẋ (error O(h⁴) for frames h apart — a
+ *  loaded server sends a frame per tick, up to 0.1 s apart, where the linear one was off by centimetres),
+ *  the pivot linearly; null outside their span. */
+export function positionAt(frames: readonly Frame[], t: number): Vec3 | null {
+  const n = frames.length;
+  if (n === 0) return null;
+  const first = frames[0] as Frame;
+  const last = frames[n - 1] as Frame;
+  if (t < first.t || t > last.t) return null;
+  let lo = 0;
+  let hi = n - 1;
+  while (hi - lo > 1) {
+    const mid = (lo + hi) >> 1;
+    if ((frames[mid] as Frame).t <= t) lo = mid;
+    else hi = mid;
+  }
+  const a = frames[lo] as Frame;
+  const b = frames[hi] as Frame;
+  const h = b.t - a.t;
+  if (!(h > 0)) return [a.x[0] + a.pivot[0], a.x[1] + a.pivot[1], a.x[2] + a.pivot[2]];
+  const s = (t - a.t) / h;
+  const [h00, h10, h01, h11] = [2 * s ** 3 - 3 * s ** 2 + 1, s ** 3 - 2 * s ** 2 + s, -2 * s ** 3 + 3 * s ** 2, s ** 3 - s ** 2];
+  const r = (i: 0 | 1 | 2) =>
+    h00 * a.x[i] + h10 * h * a.v[i] + h01 * b.x[i] + h11 * h * b.v[i] + (1 - s) * a.pivot[i] + s * b.pivot[i];
+  return [r(0), r(1), r(2)];
+}
+
+/** |r₁ − r₂| [m] of the bobs (r = pivot + x) at the times of `first` where `second` has frames (the
+ *  second's position there by `positionAt`). */
 export function separation(first: readonly Frame[], second: readonly Frame[]): { t: number[]; d: number[] } {
   const t: number[] = [];
   const d: number[] = [];
   for (const f of first) {
-    const g = frameAt(second, f.t);
+    const g = positionAt(second, f.t);
     if (g === null) continue;
     t.push(f.t);
-    d.push(Math.hypot(...[0, 1, 2].map((i) => (f.x[i] as number) + (f.pivot[i] as number) - (g.x[i] as number) - (g.pivot[i] as number))));
+    d.push(Math.hypot(f.x[0] + f.pivot[0] - g[0], f.x[1] + f.pivot[1] - g[1], f.x[2] + f.pivot[2] - g[2]));
   }
   return { t, d };
 }

@@ -111,12 +111,17 @@ export class Controls {
     m['reset'] = () => actions.send({ type: 'reset' });
     run.add(m, 'reset').name(t('toolbar.reset'));
     const names: Record<string, string> = {};
-    for (const s of scenarios) if (s.error === undefined) names[s.title ? `${s.name}: ${s.title}` : s.name] = s.name;
+    // the title a class reads (the file's name is in the URL and the tooltip)
+    for (const s of scenarios) if (s.error === undefined) names[s.title ? `${s.title}` : s.name] = s.name;
     m['scenario'] = '';
     const scen = run
       .add(m, 'scenario', names)
       .name(t('gui.scenario'))
       .onChange((v: string) => actions.send({ type: 'load_scenario', name: v }));
+    scen.domElement.title = scenarios
+      .filter((s) => s.error === undefined)
+      .map((s) => `${s.name}: ${s.title ?? ''}`)
+      .join('\n');
     this.synced.push(scen);
 
     // --- view ---

@@ -118,6 +118,13 @@ export class Instruments {
     this.dial.add(lines(arc));
   }
 
+  /** Turns the ruler to stand beside the sphere on the camera's right: right = (−d_y, d_x) for d = camera −
+   *  pivot (called again when the camera moves). */
+  face(camera: THREE.Vector3): void {
+    const p = this.ruler.position;
+    this.ruler.rotation.set(0, 0, Math.atan2(camera.x - p.x, -(camera.y - p.y)));
+  }
+
   /** Places both at the pivot [m] for rod length l [m] and turns the protractor to the bob at x (relative
    *  to the pivot), labelling its θ in degrees. */
   update(
@@ -133,8 +140,7 @@ export class Instruments {
     if (!rulerOn && !protractorOn) return;
     this.build(l);
     this.ruler.position.copy(pivot);
-    // beside the sphere on the camera's right: right = (−d_y, d_x) for d = camera − pivot
-    this.ruler.rotation.set(0, 0, Math.atan2(camera.x - pivot.x, -(camera.y - pivot.y)));
+    this.face(camera);
     this.protractor.position.copy(pivot);
     const phi = Math.atan2(x[1], x[0]);
     const theta = Math.atan2(Math.hypot(x[0], x[1]), -x[2]);

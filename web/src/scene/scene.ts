@@ -659,6 +659,7 @@ export class PendulumScene {
    *  scene is not drawn again (the canvas keeps its picture). Returns whether it rendered. */
   draw(changed: boolean): boolean {
     const moved = this.controls.update();
+    if (moved && this.instruments.ruler.visible) this.instruments.face(this.camera.position);
     if (!changed && !moved && !this.invalid) return false;
     this.invalid = false;
     this.render();

@@ -9,7 +9,7 @@ import { columns, VARIABLES } from '../../src/variables';
 import { ownsKeys, shortcutFor, sliderSteps } from '../../src/keyboard';
 import { chooseLanguage, LANGUAGES, setLanguage, t } from '../../src/i18n';
 import { EN } from '../../src/i18n/en';
-import { frameAt, separation, tiltedStart, twinCommands } from '../../src/twin';
+import { frameAt, positionAt, separation, tiltedStart, twinCommands } from '../../src/twin';
 import { frictionCommand, GRAVITY_PRESETS, startCommand } from '../../src/panels/tools';
 import { framingDistance } from '../../src/scene/scene';
 import { rulerStep } from '../../src/scene/instruments';
@@ -220,6 +220,19 @@ describe('two pendulums', () => {
     const m = twinCommands(status({ paused: true }), { mode: 'method', epsilon: 0, method: 'rk4', damping: 0 });
     expect(m).toContainEqual({ type: 'set_method', method: 'rk4', dt: 0.001 });
     expect(m.at(-1)).toEqual({ type: 'pause' });
+  });
+  it('positions between coarse frames to O(h⁴): a conical orbit sampled 0.1 s apart', () => {
+    const w = 3;
+    const at = (t: number) => frame(t, [Math.cos(w * t), Math.sin(w * t), -1], [-w * Math.sin(w * t), w * Math.cos(w * t), 0]);
+    const frames = Array.from({ length: 11 }, (_, k) => at(k / 10));
+    let worst = 0;
+    for (let t = 0; t <= 1; t += 0.013) {
+      const r = positionAt(frames, t) as Vec3;
+      const want = at(t).x;
+      worst = Math.max(worst, Math.hypot(r[0] - want[0], r[1] - want[1], r[2] - want[2]));
+    }
+    expect(worst).toBeLessThan(1e-4); // linear interpolation: h² ω² / 8 ≈ 1.1e-2
+    expect(positionAt(frames, 1.5)).toBeNull();
   });
   it('separation: the second interpolated at the first one’s times', () => {
     const a = [frame(0, [0, 0, -1], [0, 0, 0]), frame(1, [1, 0, 0], [0, 0, 0])];
