@@ -20,7 +20,7 @@ import { gravityDirection } from './scene/vectors';
 import { scenarioRequest } from './export';
 import { LabStore } from './state';
 import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
-import { chooseLanguage, language, setLanguage, t } from './i18n';
+import { chooseLanguage, setLanguage, t } from './i18n';
 import { Toolbar } from './panels/toolbar';
 import { Tools } from './panels/tools';
 import { EnergyBars } from './panels/energy';
@@ -344,7 +344,6 @@ async function main(): Promise<void> {
     lastVideo: () => lastVideo,
     plotScales: () => plots.scales(),
   };
-  void language;
   let lastWall = performance.now();
   // the scene follows every frame; the panels (numbers, plots, portraits) at 10 Hz, which reads as live
   // and spares the CPU: each uPlot setData redraws a whole chart (docs/performance.md)

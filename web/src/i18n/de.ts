@@ -254,3 +254,15 @@ export const DE_PARAMS: Record<string, [string, string]> = {
   stiffness: ['Federkonstante k', 'Steifigkeit der Feder; die Länge l ist die entspannte Länge'],
   restitution: ['Stoßzahl e', 'wie elastisch die Schnur beim Straffen zurückfedert (0 … 1)'],
 };
+
+/** The registry's models in German (their labels). */
+export const DE_MODELS: Record<string, string> = {
+  ideal: 'Ideales Pendel',
+  damped: 'Gedämpft und angetrieben',
+  rotating: 'Auf der drehenden Erde (Foucault)',
+  slewing: 'Drehkran',
+  vibrating: 'Gerüttelter Aufhängepunkt (Kapitza)',
+  sampled_pivot: 'Aufhängepunkt auf vorgegebener Bahn',
+  spring: 'Schwingfeder',
+  string: 'Pendel an einer Schnur',
+};

@@ -3,16 +3,16 @@
 // (`chooseLanguage`): the URL's `lang`, else the one picked before (localStorage), else the first of the
 // browser's languages the lab speaks, else English. Switching reloads the page (the URL keeps the run).
 // The model registry's words (parameter labels and help) are the core's, in English; a table may give its
-// own (`param.<name>` keys in `PARAM_WORDS`), else the registry's are shown. No DOM; unit-tested.
+// own (`params`, `models` of LANGUAGES), else the registry's are shown. No DOM; unit-tested.
 import { EN } from './en';
 import type { Words } from './en';
-import { DE, DE_PARAMS } from './de';
+import { DE, DE_MODELS, DE_PARAMS } from './de';
 
 export type Key = keyof Words;
 
 export const LANGUAGES = {
-  en: { name: 'English', words: EN, params: {} as Record<string, [string, string]> },
-  de: { name: 'Deutsch', words: DE, params: DE_PARAMS },
+  en: { name: 'English', words: EN, params: {} as Record<string, [string, string]>, models: {} as Record<string, string> },
+  de: { name: 'Deutsch', words: DE, params: DE_PARAMS, models: DE_MODELS },
 } as const;
 export type Lang = keyof typeof LANGUAGES;
 
@@ -53,4 +53,9 @@ export function t(key: Key, vars: Record<string, string | number> = {}): string 
 export function paramWords(name: string, label: string, help: string): [label: string, help: string] {
   const own = (LANGUAGES[current].params as Record<string, [string, string] | undefined>)[name];
   return own ?? [label, help];
+}
+
+/** A registry model's label in the current language: the table's own, else the registry's. */
+export function modelWords(name: string, label: string): string {
+  return (LANGUAGES[current].models as Record<string, string | undefined>)[name] ?? label;
 }

@@ -7,7 +7,7 @@ import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { Command, ModelParams, ModelSchema, Schema, Status } from '../protocol';
 import { addParam, throttle } from './params';
-import { t } from '../i18n';
+import { modelWords, t } from '../i18n';
 
 export interface ModelActions {
   send(cmd: Command): void;
@@ -28,7 +28,7 @@ export function pickCommand(name: string): Command {
 /** The picker's options: `label (name)` → name (the summary, with its formula numbers, is the tooltip). */
 export function modelOptions(models: readonly ModelSchema[]): Record<string, string> {
   const out: Record<string, string> = {};
-  for (const m of models) out[m.label ? `${m.label} (${m.name})` : m.name] = m.name;
+  for (const m of models) out[m.label ? `${modelWords(m.name, m.label)} (${m.name})` : m.name] = m.name;
   return out;
 }
 
@@ -70,7 +70,7 @@ export class ModelControls {
     this.shown = name;
     const spec = this.spec(name);
     if (spec === undefined || spec.params.length === 0) return;
-    const folder = this.parent.addFolder(t('gui.modelParams', { model: spec.label ?? name }));
+    const folder = this.parent.addFolder(t('gui.modelParams', { model: modelWords(name, spec.label ?? name) }));
     for (const p of spec.params) {
       this.values[p.name] = p.default;
       const c = addParam(folder, this.values, p, (v) => this.sendParam(p.name, v), this.actions.explain);

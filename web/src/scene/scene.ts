@@ -20,18 +20,11 @@ import type { RenderQuality } from './quality';
 import { layeredOpacity } from './quality';
 import { Instruments } from './instruments';
 import { MaskAnaglyph } from './anaglyph';
+import { framingDistance, reachLines, sphereBox } from './framing';
+import { TwinDrawing } from './twin';
 
-/** The camera's distance [m] at which a sphere of radius r [m] fills a view of vertical field of view
- *  `fovDeg` [°] and aspect `aspect` (width/height) up to `fill` of its narrower side. */
-export function framingDistance(r: number, fovDeg: number, aspect: number, fill = 0.9): number {
-  const halfV = (fovDeg * Math.PI) / 360;
-  const halfH = Math.atan(Math.tan(halfV) * Math.max(aspect, 1e-3));
-  const half = Math.min(halfV, halfH);
-  return r / Math.sin(half * fill);
-}
-
-/** The colour of the second pendulum (two-pendulum mode). */
-export const TWIN_COLOR = 0xc8f560;
+export { framingDistance } from './framing';
+export { TWIN_COLOR } from './twin';
 
 /** The trail to draw: `frames[start..end)`, oldest first (LabStore.trailRange). */
 export interface TrailSlice {
@@ -116,10 +109,8 @@ export class PendulumScene {
   private readonly scene = new THREE.Scene();
   private readonly sphere: THREE.Mesh;
   private readonly equator: THREE.LineLoop;
-  /** The sphere of reach as lines (meridians and parallels): drawn instead of the translucent fill in the
-   *  anaglyph, which renders the scene twice; the fill's blending over a fifth of the canvas is what a
-   *  software renderer pays most for (30 fps with it, 60 without, docs/performance.md). */
-  private readonly reachLines: THREE.LineSegments;
+  /** The sphere of reach as lines, drawn instead of its fill in the anaglyph (framing.ts). */
+  private readonly reachLines = reachLines(0x8fb3ff, 0.18);
   private readonly rod: THREE.Mesh;
   private readonly bob: THREE.Mesh;
   private readonly pivot: THREE.Mesh;
@@ -145,11 +136,8 @@ export class PendulumScene {
   private readonly instruments = new Instruments();
   /** The slewing crane's boom, from the slewing axis to the pivot (drawn while the pivot is off the axis). */
   private readonly boom: THREE.Line;
-  /** The second pendulum (two-pendulum mode): bob, rod and trail. */
-  private readonly twinBob: THREE.Mesh;
-  private readonly twinRod: THREE.Mesh;
-  private readonly twinTrail: THREE.Line;
-  private readonly twinPositions: Float32Array;
+  /** The second pendulum (two-pendulum mode): bob, rod and trail (twin.ts). */
+  private readonly twin = new TwinDrawing();
   /** The camera follows the pivot (the slewing crane: the pendulum stays framed as the boom turns). */
   private follow = false;
   private followAt: THREE.Vector3 | null = null;
@@ -218,30 +206,6 @@ export class PendulumScene {
       ring,
       new THREE.LineBasicMaterial({ color: 0x8fb3ff, transparent: true, opacity: 0.25 }),
     );
-    const grid: THREE.Vector3[] = [];
-    const N = 96;
-    for (let m = 0; m < 6; m++) {
-      const phi = (m * Math.PI) / 6;
-      for (let i = 0; i < N; i++) {
-        const [a, b] = [(2 * Math.PI * i) / N, (2 * Math.PI * (i + 1)) / N];
-        grid.push(
-          new THREE.Vector3(Math.sin(a) * Math.cos(phi), Math.sin(a) * Math.sin(phi), Math.cos(a)),
-          new THREE.Vector3(Math.sin(b) * Math.cos(phi), Math.sin(b) * Math.sin(phi), Math.cos(b)),
-        );
-      }
-    }
-    for (const z of [-0.75, -0.5, -0.25, 0.25, 0.5, 0.75]) {
-      const rho = Math.sqrt(1 - z * z);
-      for (let i = 0; i < N; i++) {
-        const [a, b] = [(2 * Math.PI * i) / N, (2 * Math.PI * (i + 1)) / N];
-        grid.push(new THREE.Vector3(rho * Math.cos(a), rho * Math.sin(a), z), new THREE.Vector3(rho * Math.cos(b), rho * Math.sin(b), z));
-      }
-    }
-    this.reachLines = new THREE.LineSegments(
-      new THREE.BufferGeometry().setFromPoints(grid),
-      new THREE.LineBasicMaterial({ color: 0x8fb3ff, transparent: true, opacity: 0.18 }),
-    );
-    this.reachLines.visible = false;
     this.pivot = new THREE.Mesh(
       new THREE.SphereGeometry(0.02, 16, 12),
       new THREE.MeshStandardMaterial({ color: 0xcccccc }),
@@ -277,18 +241,6 @@ export class PendulumScene {
     );
     this.boom.visible = false;
     this.boom.frustumCulled = false;
-    this.twinBob = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), new THREE.MeshStandardMaterial({ color: TWIN_COLOR, roughness: 0.4 }));
-    this.twinRod = new THREE.Mesh(
-      new THREE.CylinderGeometry(1, 1, 1, 8),
-      new THREE.MeshStandardMaterial({ color: TWIN_COLOR, metalness: 0.3, roughness: 0.5 }),
-    );
-    this.twinPositions = new Float32Array(3 * (TRAIL_MAX + 1));
-    const twg = new THREE.BufferGeometry();
-    twg.setAttribute('position', new THREE.BufferAttribute(this.twinPositions, 3));
-    twg.setDrawRange(0, 0);
-    this.twinTrail = new THREE.Line(twg, new THREE.LineBasicMaterial({ color: TWIN_COLOR, transparent: true, opacity: 0.6 }));
-    this.twinTrail.frustumCulled = false;
-    for (const o of [this.twinBob, this.twinRod, this.twinTrail]) o.visible = false;
 
     this.scene.add(
       this.sphere,
@@ -302,9 +254,7 @@ export class PendulumScene {
       this.tether.group,
       this.handle,
       this.boom,
-      this.twinBob,
-      this.twinRod,
-      this.twinTrail,
+      this.twin.group,
       this.instruments.ruler,
       this.instruments.protractor,
       ...Object.values(this.arrows),
@@ -326,7 +276,7 @@ export class PendulumScene {
     this.reachLines.scale.setScalar(l);
     this.pivot.scale.setScalar(l);
     this.bob.scale.setScalar(0.05 * l);
-    this.twinBob.scale.setScalar(0.045 * l);
+    this.twin.setLength(l);
     this.handle.scale.setScalar(HANDLE_RADIUS * l);
     this.axes.scale.setScalar(l);
     if (changed) this.resetCamera();
@@ -539,67 +489,19 @@ export class PendulumScene {
 
   /** Draws the second pendulum at state `f` (null: hidden) with its trail frames (two-pendulum mode). */
   updateTwin(f: Frame | null, trail: TrailSlice): void {
-    const on = f !== null;
-    for (const o of [this.twinBob, this.twinRod, this.twinTrail]) o.visible = on;
+    this.twin.update(f, trail);
     this.invalid = true;
-    if (f === null) return;
-    const x = this.tmpX.fromArray(f.x);
-    const pivot = this.tmpOrigin.fromArray(f.pivot);
-    this.twinBob.position.copy(x).add(pivot);
-    const r = x.length();
-    if (r > 0) {
-      this.twinRod.position.copy(x).multiplyScalar(0.5).add(pivot);
-      this.twinRod.quaternion.setFromUnitVectors(Y, this.tmpDir.copy(x).divideScalar(r));
-      this.twinRod.scale.set(0.005 * this.length, r, 0.005 * this.length);
-    }
-    const n = Math.min(trail.end - trail.start, TRAIL_MAX);
-    const p = this.twinPositions;
-    for (let i = 0; i < n; i++) {
-      const g = trail.frames[trail.end - n + i] as Frame;
-      p[3 * i] = g.x[0] + g.pivot[0];
-      p[3 * i + 1] = g.x[1] + g.pivot[1];
-      p[3 * i + 2] = g.x[2] + g.pivot[2];
-    }
-    const geom = this.twinTrail.geometry;
-    geom.setDrawRange(0, Math.max(0, n));
-    const position = geom.getAttribute('position') as THREE.BufferAttribute;
-    position.clearUpdateRanges();
-    position.addUpdateRange(0, 3 * Math.max(n, 1));
-    position.needsUpdate = true;
   }
 
   /** The box [CSS px] of the sphere of reach (its silhouette: points around its outline as seen from the
    *  camera) on the page, for tests: inside the canvas means the whole sphere is in view. */
   sphereOnScreen(): { left: number; right: number; top: number; bottom: number } {
-    const centre = this.sphere.position.clone();
-    const toCam = this.camera.position.clone().sub(centre).normalize();
-    const u = new THREE.Vector3().crossVectors(toCam, new THREE.Vector3(0, 0, 1));
-    if (u.lengthSq() < 1e-12) u.set(1, 0, 0);
-    u.normalize();
-    const w = new THREE.Vector3().crossVectors(toCam, u).normalize();
-    const dist = this.camera.position.distanceTo(centre);
-    const r = this.sphere.scale.x;
-    // the silhouette circle: radius r√(1 − r²/d²), centred r²/d towards the camera
-    const rs = r * Math.sqrt(Math.max(0, 1 - (r * r) / (dist * dist)));
-    const c = centre.clone().addScaledVector(toCam, (r * r) / dist);
-    const rect = this.renderer.domElement.getBoundingClientRect();
-    const box = { left: Infinity, right: -Infinity, top: Infinity, bottom: -Infinity };
-    for (let i = 0; i < 64; i++) {
-      const a = (2 * Math.PI * i) / 64;
-      const p = c.clone().addScaledVector(u, rs * Math.cos(a)).addScaledVector(w, rs * Math.sin(a)).project(this.camera);
-      const x = rect.left + ((p.x + 1) / 2) * rect.width;
-      const y = rect.top + ((1 - p.y) / 2) * rect.height;
-      box.left = Math.min(box.left, x);
-      box.right = Math.max(box.right, x);
-      box.top = Math.min(box.top, y);
-      box.bottom = Math.max(box.bottom, y);
-    }
-    return box;
+    return sphereBox(this.sphere.position, this.sphere.scale.x, this.camera, this.renderer.domElement);
   }
 
   /** The second pendulum's bob on the page [CSS px], or null when it is not drawn (for tests). */
   twinOnScreen(): { x: number; y: number } | null {
-    return this.onScreen(this.twinBob);
+    return this.twin.group.visible ? this.onScreen(this.twin.bob) : null;
   }
 
   /** Points the arrow `a` from `from` along `vec` (which it may scale). */

@@ -7,7 +7,7 @@ import { DEG, energySplit, PeriodTimer, periodComparison, sphericalAngles, Stopw
 import { FLOAT64_EPS, logRange, MIN_RELATIVE_SPAN, relativeDrift, safeRange } from '../../src/panels/ranges';
 import { columns, VARIABLES } from '../../src/variables';
 import { ownsKeys, shortcutFor, sliderSteps } from '../../src/keyboard';
-import { chooseLanguage, LANGUAGES, setLanguage, t } from '../../src/i18n';
+import { chooseLanguage, LANGUAGES, modelWords, paramWords, setLanguage, t } from '../../src/i18n';
 import { EN } from '../../src/i18n/en';
 import { frameAt, positionAt, separation, tiltedStart, twinCommands } from '../../src/twin';
 import { frictionCommand, GRAVITY_PRESETS, startCommand } from '../../src/panels/tools';
@@ -180,8 +180,12 @@ describe('words', () => {
   it('fills placeholders and switches', () => {
     setLanguage('de');
     expect(t('tools.periodCount', { n: 3 })).toBe('Mittel über 3 Perioden');
+    expect(modelWords('damped', 'Damped and driven')).toBe('Gedämpft und angetrieben');
+    expect(paramWords('damping', 'friction', 'help')[0]).toMatch(/Reibung/);
+    expect(paramWords('no_such', 'x', 'y')).toEqual(['x', 'y']);
     setLanguage('en');
     expect(t('tools.periodCount', { n: 3 })).toBe('mean over 3 periods');
+    expect(modelWords('damped', 'Damped and driven')).toBe('Damped and driven');
   });
 });
 

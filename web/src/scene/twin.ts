@@ -1,0 +1,80 @@
+// The second pendulum in the scene (two-pendulum mode, docs/web.md "Two pendulums"): its bob, a thin rod and
+// its trail in green, drawn from the second session's streamed states (interpolated at the first one's
+// time by panels/twin.ts). Only drawing.
+import * as THREE from 'three';
+import type { Frame } from '../protocol';
+import { TRAIL_MAX } from '../state';
+
+/** The colour of the second pendulum. */
+export const TWIN_COLOR = 0xc8f560;
+
+const Y = new THREE.Vector3(0, 1, 0);
+
+/** Trail frames `frames[start..end)`, oldest first. */
+export interface TwinTrail {
+  frames: readonly Frame[];
+  start: number;
+  end: number;
+}
+
+export class TwinDrawing {
+  readonly group = new THREE.Group();
+  readonly bob: THREE.Mesh;
+  private readonly rod: THREE.Mesh;
+  private readonly trail: THREE.Line;
+  private readonly positions = new Float32Array(3 * (TRAIL_MAX + 1));
+  private readonly tmpX = new THREE.Vector3();
+  private readonly tmpPivot = new THREE.Vector3();
+  private readonly tmpDir = new THREE.Vector3();
+  private length = 1;
+
+  constructor() {
+    this.bob = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), new THREE.MeshStandardMaterial({ color: TWIN_COLOR, roughness: 0.4 }));
+    this.rod = new THREE.Mesh(
+      new THREE.CylinderGeometry(1, 1, 1, 8),
+      new THREE.MeshStandardMaterial({ color: TWIN_COLOR, metalness: 0.3, roughness: 0.5 }),
+    );
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.BufferAttribute(this.positions, 3));
+    g.setDrawRange(0, 0);
+    this.trail = new THREE.Line(g, new THREE.LineBasicMaterial({ color: TWIN_COLOR, transparent: true, opacity: 0.6 }));
+    this.trail.frustumCulled = false;
+    this.group.add(this.bob, this.rod, this.trail);
+    this.group.visible = false;
+  }
+
+  /** Rescales to rod length l [m]. */
+  setLength(l: number): void {
+    this.length = l;
+    this.bob.scale.setScalar(0.045 * l);
+  }
+
+  /** Draws the state `f` (null: hidden) with the trail frames. */
+  update(f: Frame | null, trail: TwinTrail): void {
+    this.group.visible = f !== null;
+    if (f === null) return;
+    const x = this.tmpX.fromArray(f.x);
+    const pivot = this.tmpPivot.fromArray(f.pivot);
+    this.bob.position.copy(x).add(pivot);
+    const r = x.length();
+    if (r > 0) {
+      this.rod.position.copy(x).multiplyScalar(0.5).add(pivot);
+      this.rod.quaternion.setFromUnitVectors(Y, this.tmpDir.copy(x).divideScalar(r));
+      this.rod.scale.set(0.005 * this.length, r, 0.005 * this.length);
+    }
+    const n = Math.max(0, Math.min(trail.end - trail.start, TRAIL_MAX));
+    const p = this.positions;
+    for (let i = 0; i < n; i++) {
+      const g = trail.frames[trail.end - n + i] as Frame;
+      p[3 * i] = g.x[0] + g.pivot[0];
+      p[3 * i + 1] = g.x[1] + g.pivot[1];
+      p[3 * i + 2] = g.x[2] + g.pivot[2];
+    }
+    const geom = this.trail.geometry;
+    geom.setDrawRange(0, n);
+    const position = geom.getAttribute('position') as THREE.BufferAttribute;
+    position.clearUpdateRanges();
+    position.addUpdateRange(0, 3 * Math.max(n, 1));
+    position.needsUpdate = true;
+  }
+}
