@@ -9,7 +9,8 @@
 //!   err = |h| · ‖e₅‖² / √(N (‖e₅‖² + 0.01 ‖e₃‖²)),  components scaled by atol + rtol·max(|y₀|, |y₁|),
 //!
 //! with N = 6, and the step size is controlled by h_new = h / clamp(err^{1/8} / 0.9, 1/6, 1/0.333)
-//! (no step growth right after a rejection). The initial step follows Hairer's `hinit`.
+//! (no step growth right after a rejection; the controller is `dop853_control.rs`, apart from the
+//! method). The initial step follows Hairer's `hinit`.
 //!
 //! **Projection.** TS² is invariant but unstable for T-2.4, so by default every accepted step is
 //! followed by the projection x ← l x/|x|, v ← v − (x·v/l²) x ([`project_onto_tangent_bundle`]);
@@ -25,6 +26,7 @@
 //! through y₀ and the (projected) y₁ with the right slopes; with projection on, interpolated states
 //! are projected onto TS² as well.
 
+use super::dop853_control::StepControl;
 use super::dop853_tableau::{A, B, C, D, E3, E5, STAGES, STAGES_DENSE};
 use super::Stats;
 use crate::error::{Error, Result};
@@ -34,10 +36,6 @@ use glam::DVec3;
 
 /// Smallest relative tolerance accepted: below ~10 ulp the error estimate is round-off.
 pub const RTOL_MIN: f64 = 1e-15;
-const SAFETY: f64 = 0.9;
-/// Largest step shrink (1/FAC_MIN) and growth (1/FAC_MAX) factors, as in dop853.f.
-const FAC_MIN: f64 = 0.333;
-const FAC_MAX: f64 = 6.0;
 const ERROR_EXPONENT: f64 = 1.0 / 8.0;
 
 /// A point of the first-order system: position and velocity, or their derivatives.
@@ -225,6 +223,10 @@ impl Dop853 {
     /// One accepted step from (`t`, `s`), never past `t_stop` [s] (which may be +∞); rejected
     /// attempts are counted in `stats`. Fails with [`Error::StepSizeUnderflow`] when the tolerance
     /// cannot be met with a step above round-off of t (e.g. the solution became non-finite).
+    ///
+    /// The method ([`Dop853::attempt`]: stages, solution, error estimate; [`Dop853::accept`]:
+    /// projection and the data of the step) is separate from the step-size controller
+    /// ([`StepControl`]: the trial step, the factors after acceptance and rejection).
     pub fn step<M: Model>(
         &mut self,
         model: &M,
@@ -259,94 +261,104 @@ impl Dop853 {
                 }
             }
         };
+        let control = StepControl { h_max: self.h_max, rtol: self.rtol, atol: self.atol };
         let mut rejected_last = false;
-        let k = &mut self.k;
-        k[0] = self.f_current;
+        self.k[0] = self.f_current;
         loop {
-            h = h.min(self.h_max);
-            // Land on t_stop rather than leave a sliver (dop853.f: 1.01 h).
-            let last = t0 + 1.01 * h >= t_stop;
-            if last {
-                h = span;
-            }
-            let h_floor = 10.0 * (t0.abs().max(span.min(1.0)) * f64::EPSILON).max(f64::MIN_POSITIVE);
-            if h.is_nan() || h < h_floor {
-                return Err(Error::StepSizeUnderflow { t: t0, h, rtol: self.rtol, atol: self.atol });
-            }
-            // Stage i uses k₀ … k_{i−1} (A is strictly lower triangular), written out per stage so
-            // that every loop has a constant length and unrolls (zeros of A included: 0·k adds
-            // nothing); the newest stage is added last, so the sum of the older ones is ready while
-            // k_{i−1} is computed.
-            macro_rules! stage {
-                ($($i:literal)*) => {$(
-                    let mut yi = y0;
-                    for j in 0..$i {
-                        yi = yi.axpy(h * A[$i][j], k[j]);
-                    }
-                    k[$i] = rhs(model, t0 + C[$i] * h, yi);
-                )*};
-            }
-            stage!(1 2 3 4 5 6 7 8 9 10 11);
+            let (h_trial, last) = control.trial(h, t0, t_stop)?;
+            h = h_trial;
+            let (y1, err) = self.attempt(model, t0, y0, h);
             stats.rhs_evals += (STAGES - 1) as u64;
-            let (mut incr, mut e5, mut e3) = (Y6::default(), Y6::default(), Y6::default());
-            for i in 0..STAGES {
-                incr = incr.axpy(B[i], k[i]);
-                e5 = e5.axpy(E5[i], k[i]);
-                e3 = e3.axpy(E3[i], k[i]);
-            }
-            let y1 = y0.axpy(h, incr);
-            let sk = error_scale(self.atol, self.rtol, y0, y1);
-            let (n5, n3) = (e5.scaled_norm2(sk), e3.scaled_norm2(sk));
-            let err = if n5 == 0.0 && n3 == 0.0 { 0.0 } else { h * n5 / (6.0 * (n5 + 0.01 * n3)).sqrt() };
-            // err^(1/8) by three square roots: several times cheaper than powf, same to ~1 ulp
-            let fac11 = err.sqrt().sqrt().sqrt();
+            let root = StepControl::error_root(err);
             if err <= 1.0 {
-                // Accept.
-                let fac = (fac11 / SAFETY).clamp(1.0 / FAC_MAX, 1.0 / FAC_MIN);
-                let mut h_new = h / fac;
-                if rejected_last {
-                    h_new = h_new.min(h);
-                }
+                let h_new = StepControl::after_accept(h, root, rejected_last);
                 let t1 = if last { t_stop } else { t0 + h };
-                let y1 = if self.project {
-                    let mut p = project_onto_tangent_bundle(self.length, y1.x, y1.v)
-                        .ok_or(Error::Diverged { t: t1, method: "dop853", dt: h })?;
-                    if let (true, Some((e0, j0))) = (self.invariants, self.targets) {
-                        let e = model.is_conservative().then(|| e0 - model.potential_per_mass(p.x));
-                        // J₃ is an invariant only without damping, drag, forcing or a frame: axisymmetry
-                        // alone is not enough (damping makes J₃ decay like e^{−ct}).
-                        let kept = model.is_axisymmetric()
-                            && model.is_conservative()
-                            && !model.has_velocity_forces();
-                        let j = kept.then_some(j0);
-                        p.v = project_invariants(p.x, p.v, e, j);
-                    }
-                    Y6::from(p)
-                } else {
-                    y1
-                };
-                let f1 = rhs(model, t1, y1);
-                stats.rhs_evals += 1;
-                k[STAGES] = f1;
-                self.f_current = f1;
-                self.t_old = t0;
-                self.h_old = t1 - t0;
-                self.y_old = y0;
-                self.y_new = y1;
-                self.dense = None;
+                self.accept(model, (t0, y0), (t1, y1), h, stats)?;
                 // Do not let a short landing step shrink the next proposal.
                 let keep = if last && !rejected_last { self.h_next } else { None };
                 self.h_next = Some(keep.map_or(h_new, |p| p.max(h_new)));
                 *t = t1;
-                *s = State { x: y1.x, v: y1.v };
+                *s = State { x: self.y_new.x, v: self.y_new.v };
                 stats.steps += 1;
                 return Ok(());
             }
-            // Reject (err > 1, or NaN: f64::min ignores the NaN and the step shrinks by 1/FAC_MIN).
-            h /= (1.0 / FAC_MIN).min(fac11 / SAFETY);
+            h = StepControl::after_reject(h, root);
             rejected_last = true;
             stats.rejected += 1;
         }
+    }
+
+    /// The method: stages 1‥11 of a step of `h` [s] from (`t0`, `y0`) (stage 0, f(t0, y0), is in
+    /// `k[0]`), the 8th-order solution y₁ and the blended error estimate `err` (≤ 1: acceptable).
+    #[inline(always)]
+    fn attempt<M: Model>(&mut self, model: &M, t0: f64, y0: Y6, h: f64) -> (Y6, f64) {
+        let k = &mut self.k;
+        // Stage i uses k₀ … k_{i−1} (A is strictly lower triangular), written out per stage so
+        // that every loop has a constant length and unrolls (zeros of A included: 0·k adds
+        // nothing); the newest stage is added last, so the sum of the older ones is ready while
+        // k_{i−1} is computed.
+        macro_rules! stage {
+            ($($i:literal)*) => {$(
+                let mut yi = y0;
+                for j in 0..$i {
+                    yi = yi.axpy(h * A[$i][j], k[j]);
+                }
+                k[$i] = rhs(model, t0 + C[$i] * h, yi);
+            )*};
+        }
+        stage!(1 2 3 4 5 6 7 8 9 10 11);
+        let (mut incr, mut e5, mut e3) = (Y6::default(), Y6::default(), Y6::default());
+        for i in 0..STAGES {
+            incr = incr.axpy(B[i], k[i]);
+            e5 = e5.axpy(E5[i], k[i]);
+            e3 = e3.axpy(E3[i], k[i]);
+        }
+        let y1 = y0.axpy(h, incr);
+        let sk = error_scale(self.atol, self.rtol, y0, y1);
+        let (n5, n3) = (e5.scaled_norm2(sk), e3.scaled_norm2(sk));
+        let err = if n5 == 0.0 && n3 == 0.0 { 0.0 } else { h * n5 / (6.0 * (n5 + 0.01 * n3)).sqrt() };
+        (y1, err)
+    }
+
+    /// Takes the accepted step `h` [s] from (`t0`, `y0`) to (`t1`, `y1`): projects y₁ (when on),
+    /// evaluates f there (the next step's first stage) and keeps the step's data for the dense output.
+    #[inline(always)]
+    fn accept<M: Model>(
+        &mut self,
+        model: &M,
+        (t0, y0): (f64, Y6),
+        (t1, y1): (f64, Y6),
+        h: f64,
+        stats: &mut Stats,
+    ) -> Result<()> {
+        let y1 = if self.project {
+            let mut p = project_onto_tangent_bundle(self.length, y1.x, y1.v).ok_or(Error::Diverged {
+                t: t1,
+                method: "dop853",
+                dt: h,
+            })?;
+            if let (true, Some((e0, j0))) = (self.invariants, self.targets) {
+                let e = model.is_conservative().then(|| e0 - model.potential_per_mass(p.x));
+                // J₃ is an invariant only without damping, drag, forcing or a frame: axisymmetry
+                // alone is not enough (damping makes J₃ decay like e^{−ct}).
+                let kept = model.is_axisymmetric() && model.is_conservative() && !model.has_velocity_forces();
+                let j = kept.then_some(j0);
+                p.v = project_invariants(p.x, p.v, e, j);
+            }
+            Y6::from(p)
+        } else {
+            y1
+        };
+        let f1 = rhs(model, t1, y1);
+        stats.rhs_evals += 1;
+        self.k[STAGES] = f1;
+        self.f_current = f1;
+        self.t_old = t0;
+        self.h_old = t1 - t0;
+        self.y_old = y0;
+        self.y_new = y1;
+        self.dense = None;
+        Ok(())
     }
 
     /// The state at `t_out` ∈ [t₀, t₁] [s] of the last accepted step, from the order-7 interpolant
