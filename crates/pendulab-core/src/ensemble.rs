@@ -261,110 +261,11 @@ pub fn run_with(
     progress: &AtomicU64,
     cancel: &AtomicBool,
 ) -> Result<EnsembleResult> {
-    let n = starts.len();
-    crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
-    let damping: &[f64] = if extras.damping.is_empty() { &[0.0] } else { extras.damping };
-    for (name, a) in [("length", length), ("g", g), ("damping", damping)] {
-        if a.len() != 1 && a.len() != n {
-            return Err(Error::InvalidParameter {
-                name,
-                value: a.len() as f64,
-                allowed: "one value for all trajectories or one per trajectory",
-            });
-        }
-    }
-    let pick = |a: &[f64], k: usize| if a.len() == 1 { a[0] } else { a[k] };
-    for (k, s) in starts.iter().enumerate() {
-        let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
-        State::on_tangent_bundle(&p, s.x, s.v)?;
-        crate::error::require_non_negative(
-            "damping",
-            pick(damping, k),
-            "a finite damping rate c >= 0 [1/s]",
-        )?;
-    }
-    let cos_settle = match extras.settle_angle {
-        None => f64::NEG_INFINITY,
-        Some(a) if a.is_finite() && a > 0.0 && a < std::f64::consts::PI => a.cos(),
-        Some(a) => {
-            return Err(Error::InvalidParameter {
-                name: "settle_angle",
-                value: a,
-                allowed: "a sway angle in (0, π) rad",
-            })
-        }
-    };
-    let track = extras.settle_angle.is_some();
-    let every = match save {
-        EnsembleSave::Final => n_steps.max(1),
-        EnsembleSave::Every(0) => {
-            return Err(Error::InvalidParameter {
-                name: "save_every",
-                value: 0.0,
-                allowed: "an integer >= 1",
-            })
-        }
-        EnsembleSave::Every(e) => e,
-    };
-    let mut blocks: Vec<Block> = (0..n.div_ceil(LANES))
-        .map(|b| {
-            let idx = |i: usize| (b * LANES + i).min(n - 1);
-            let len = (n - b * LANES).min(LANES);
-            let lanes = |f: &dyn Fn(usize) -> f64| -> Lanes { std::array::from_fn(|i| f(idx(i))) };
-            let mut blk = Block {
-                x: [0, 1, 2].map(|c| lanes(&|k| starts[k].x[c])),
-                v: [0, 1, 2].map(|c| lanes(&|k| starts[k].v[c])),
-                cx: [[0.0; LANES]; 3],
-                cv: [[0.0; LANES]; 3],
-                l2: lanes(&|k| pick(length, k) * pick(length, k)),
-                inv_l2: lanes(&|k| 1.0 / (pick(length, k) * pick(length, k))),
-                g: lanes(&|k| pick(g, k)),
-                decay_half: lanes(&|k| (-pick(damping, k) * (0.5 * dt)).exp()),
-                damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
-                down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
-                cos_settle,
-                last_out: [-1.0; LANES],
-                len,
-                summary: std::array::from_fn(|r| {
-                    [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
-                }),
-                crossings: [0.0; LANES],
-                above: lanes(&|k| if starts[k].x.z > 0.0 { 1.0 } else { 0.0 }),
-            };
-            blk.update_summary();
-            if track {
-                blk.track_settle(0.0);
-            }
-            blk
-        })
-        .collect();
-    let work = |blk: &mut Block| -> (Vec<Vec<State>>, u64, bool) {
-        let mut saved: Vec<Vec<State>> = (0..blk.len).map(|i| vec![blk.state(i)]).collect();
-        let mut done = 0u64;
-        while done < n_steps {
-            let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
-            for j in 1..=chunk {
-                blk.step(dt);
-                if with_summary {
-                    blk.update_summary();
-                }
-                if track {
-                    blk.track_settle((done + j) as f64);
-                }
-            }
-            done += chunk;
-            progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
-            if done % every == 0 || done == n_steps {
-                for (i, s) in saved.iter_mut().enumerate() {
-                    s.push(blk.state(i));
-                }
-            }
-            if cancel.load(Ordering::Relaxed) {
-                return (saved, done, true);
-            }
-        }
-        (saved, done, false)
-    };
+    let plan = Plan::checked(starts, length, g, extras, dt, n_steps, save)?;
+    let mut blocks: Vec<Block> =
+        (0..starts.len().div_ceil(LANES)).map(|b| plan.block(b, starts, length, g, dt)).collect();
+    let run = BlockRun { dt, n_steps, every: plan.every, with_summary, track: plan.track, progress, cancel };
+    let work = |blk: &mut Block| run.block(blk);
     #[cfg(feature = "parallel")]
     let outputs: Vec<_> = {
         use rayon::prelude::*;
@@ -374,6 +275,181 @@ pub fn run_with(
     let outputs: Vec<_> = blocks.iter_mut().map(work).collect();
     let cancelled = outputs.iter().any(|o| o.2);
     let steps = outputs.iter().map(|o| o.1).min().unwrap_or(0);
+    let t = sample_times(steps, plan.every, n_steps, dt);
+    let mut states: Vec<Vec<State>> = outputs.into_iter().flat_map(|o| o.0).collect();
+    for s in &mut states {
+        s.truncate(t.len());
+    }
+    if states.iter().any(|s| !s.last().is_some_and(State::is_finite)) {
+        return Err(Error::Diverged { t: steps as f64 * dt, method: "rattle (ensemble)", dt });
+    }
+    let summary = with_summary.then(|| summaries(&blocks));
+    let settle_time = plan.track.then(|| settle_times(&blocks, steps, dt));
+    Ok(EnsembleResult { t, states, summary, settle_time, cancelled, steps })
+}
+
+/// A parameter given once for all trajectories (length 1) or per trajectory: its value for trajectory k.
+#[inline]
+fn pick(a: &[f64], k: usize) -> f64 {
+    if a.len() == 1 {
+        a[0]
+    } else {
+        a[k]
+    }
+}
+
+/// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the settle
+/// threshold (cos of the angle; −∞ without tracking) and the save interval in steps.
+struct Plan<'a> {
+    damping: &'a [f64],
+    cos_settle: f64,
+    track: bool,
+    every: u64,
+}
+
+impl<'a> Plan<'a> {
+    /// Checks everything before any work: dt > 0, parameter arrays of length 1 or N, every start on
+    /// TS² of its (l, g), damping ≥ 0, the settle angle in (0, π), save_every ≥ 1.
+    fn checked(
+        starts: &[State],
+        length: &[f64],
+        g: &[f64],
+        extras: &Extras<'a>,
+        dt: f64,
+        n_steps: u64,
+        save: EnsembleSave,
+    ) -> Result<Self> {
+        let n = starts.len();
+        crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
+        let damping: &[f64] = if extras.damping.is_empty() { &[0.0] } else { extras.damping };
+        for (name, a) in [("length", length), ("g", g), ("damping", damping)] {
+            if a.len() != 1 && a.len() != n {
+                return Err(Error::InvalidParameter {
+                    name,
+                    value: a.len() as f64,
+                    allowed: "one value for all trajectories or one per trajectory",
+                });
+            }
+        }
+        for (k, s) in starts.iter().enumerate() {
+            let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
+            State::on_tangent_bundle(&p, s.x, s.v)?;
+            crate::error::require_non_negative(
+                "damping",
+                pick(damping, k),
+                "a finite damping rate c >= 0 [1/s]",
+            )?;
+        }
+        let cos_settle = match extras.settle_angle {
+            None => f64::NEG_INFINITY,
+            Some(a) if a.is_finite() && a > 0.0 && a < std::f64::consts::PI => a.cos(),
+            Some(a) => {
+                return Err(Error::InvalidParameter {
+                    name: "settle_angle",
+                    value: a,
+                    allowed: "a sway angle in (0, π) rad",
+                })
+            }
+        };
+        let every = match save {
+            EnsembleSave::Final => n_steps.max(1),
+            EnsembleSave::Every(0) => {
+                return Err(Error::InvalidParameter {
+                    name: "save_every",
+                    value: 0.0,
+                    allowed: "an integer >= 1",
+                })
+            }
+            EnsembleSave::Every(e) => e,
+        };
+        Ok(Self { damping, cos_settle, track: extras.settle_angle.is_some(), every })
+    }
+
+    /// Block `b`: trajectories b·LANES … (the lanes past the last trajectory repeat it and are
+    /// ignored), with its parameters, its summary and settle state at the start.
+    fn block(&self, b: usize, starts: &[State], length: &[f64], g: &[f64], dt: f64) -> Block {
+        let n = starts.len();
+        let damping = self.damping;
+        let idx = |i: usize| (b * LANES + i).min(n - 1);
+        let len = (n - b * LANES).min(LANES);
+        let lanes = |f: &dyn Fn(usize) -> f64| -> Lanes { std::array::from_fn(|i| f(idx(i))) };
+        let mut blk = Block {
+            x: [0, 1, 2].map(|c| lanes(&|k| starts[k].x[c])),
+            v: [0, 1, 2].map(|c| lanes(&|k| starts[k].v[c])),
+            cx: [[0.0; LANES]; 3],
+            cv: [[0.0; LANES]; 3],
+            l2: lanes(&|k| pick(length, k) * pick(length, k)),
+            inv_l2: lanes(&|k| 1.0 / (pick(length, k) * pick(length, k))),
+            g: lanes(&|k| pick(g, k)),
+            decay_half: lanes(&|k| (-pick(damping, k) * (0.5 * dt)).exp()),
+            damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
+            down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
+            cos_settle: self.cos_settle,
+            last_out: [-1.0; LANES],
+            len,
+            summary: std::array::from_fn(|r| {
+                [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
+            }),
+            crossings: [0.0; LANES],
+            above: lanes(&|k| if starts[k].x.z > 0.0 { 1.0 } else { 0.0 }),
+        };
+        blk.update_summary();
+        if self.track {
+            blk.track_settle(0.0);
+        }
+        blk
+    }
+}
+
+/// How every block is run: `n_steps` steps of `dt` [s], saving every `every`-th, with the summary
+/// and settle tracking when asked; progress counted and the cancel flag read every [`CHECK_EVERY`]
+/// steps.
+struct BlockRun<'a> {
+    dt: f64,
+    n_steps: u64,
+    every: u64,
+    with_summary: bool,
+    track: bool,
+    progress: &'a AtomicU64,
+    cancel: &'a AtomicBool,
+}
+
+impl BlockRun<'_> {
+    /// Runs one block: its saved states per lane, the steps taken and whether it was cancelled.
+    #[inline]
+    fn block(&self, blk: &mut Block) -> (Vec<Vec<State>>, u64, bool) {
+        let (n_steps, every) = (self.n_steps, self.every);
+        let mut saved: Vec<Vec<State>> = (0..blk.len).map(|i| vec![blk.state(i)]).collect();
+        let mut done = 0u64;
+        while done < n_steps {
+            let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
+            for j in 1..=chunk {
+                blk.step(self.dt);
+                if self.with_summary {
+                    blk.update_summary();
+                }
+                if self.track {
+                    blk.track_settle((done + j) as f64);
+                }
+            }
+            done += chunk;
+            self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
+            if done % every == 0 || done == n_steps {
+                for (i, s) in saved.iter_mut().enumerate() {
+                    s.push(blk.state(i));
+                }
+            }
+            if self.cancel.load(Ordering::Relaxed) {
+                return (saved, done, true);
+            }
+        }
+        (saved, done, false)
+    }
+}
+
+/// The sample times [s] of a run that took `steps` of `n_steps` steps of `dt`, saving every `every`-th
+/// step and the last: 0, then every multiple of `every` (and n_steps) up to `steps`.
+fn sample_times(steps: u64, every: u64, n_steps: u64, dt: f64) -> Vec<f64> {
     let mut t: Vec<f64> = vec![0.0];
     let mut k = 0;
     while k < steps {
@@ -383,41 +459,38 @@ pub fn run_with(
         }
         t.push(k as f64 * dt);
     }
-    let mut states: Vec<Vec<State>> = outputs.into_iter().flat_map(|o| o.0).collect();
-    for s in &mut states {
-        s.truncate(t.len());
-    }
-    if states.iter().any(|s| !s.last().is_some_and(State::is_finite)) {
-        return Err(Error::Diverged { t: steps as f64 * dt, method: "rattle (ensemble)", dt });
-    }
-    let summary = with_summary.then(|| {
-        blocks
-            .iter()
-            .flat_map(|b| {
-                (0..b.len).map(|i| Summary {
-                    z: (b.summary[0][i], b.summary[1][i]),
-                    energy_per_mass: (b.summary[2][i], b.summary[3][i]),
-                    j3_per_mass: (b.summary[4][i], b.summary[5][i]),
-                    crossings: b.crossings[i] as u64,
-                })
+    t
+}
+
+/// Every trajectory's extremes and plane crossings, in order.
+fn summaries(blocks: &[Block]) -> Vec<Summary> {
+    blocks
+        .iter()
+        .flat_map(|b| {
+            (0..b.len).map(|i| Summary {
+                z: (b.summary[0][i], b.summary[1][i]),
+                energy_per_mass: (b.summary[2][i], b.summary[3][i]),
+                j3_per_mass: (b.summary[4][i], b.summary[5][i]),
+                crossings: b.crossings[i] as u64,
             })
-            .collect()
-    });
-    let settle_time = track.then(|| {
-        blocks
-            .iter()
-            .flat_map(|b| {
-                (0..b.len).map(|i| {
-                    let k = b.last_out[i];
-                    // outside at the last sample: not settled within the run
-                    if k >= steps as f64 {
-                        f64::INFINITY
-                    } else {
-                        (k + 1.0) * dt
-                    }
-                })
+        })
+        .collect()
+}
+
+/// Every trajectory's settle time [s] after `steps` steps of `dt` (+∞: outside at the last sample).
+fn settle_times(blocks: &[Block], steps: u64, dt: f64) -> Vec<f64> {
+    blocks
+        .iter()
+        .flat_map(|b| {
+            (0..b.len).map(|i| {
+                let k = b.last_out[i];
+                // outside at the last sample: not settled within the run
+                if k >= steps as f64 {
+                    f64::INFINITY
+                } else {
+                    (k + 1.0) * dt
+                }
             })
-            .collect()
-    });
-    Ok(EnsembleResult { t, states, summary, settle_time, cancelled, steps })
+        })
+        .collect()
 }

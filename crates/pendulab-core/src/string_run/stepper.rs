@@ -246,114 +246,147 @@ impl StringStepper {
         t_end: f64,
         end: bool,
         save_every: u64,
-        push: &mut dyn FnMut(f64, State, bool) -> Result<()>,
+        push: &mut Push<'_>,
     ) -> Result<()> {
-        let (t0, dt) = (self.t0, self.dt);
-        let grid = |k: u64| t0 + k as f64 * dt;
-        let slack_grid = 1e-9 * dt;
+        let stop = Stop { t: t_end, end, save_every };
         while self.t < t_end {
             match self.phase {
-                Phase::Taut => {
-                    // the next grid point (or t_end), reached by a full step dt when on the grid
-                    let next = grid(self.k + 1);
-                    let t_next = next.min(t_end);
-                    let h = if self.on_grid && t_next == next { dt } else { t_next - self.t };
-                    // the grid index and whether on the grid once at t_next
-                    let (k_next, on_grid_next) =
-                        if t_next == next { (self.k + 1, true) } else { (self.k, false) };
-                    if h <= slack_grid {
-                        (self.t, self.k, self.on_grid) = (t_next, k_next, on_grid_next);
-                        continue;
-                    }
-                    let mut trial = self.scheme.clone();
-                    let mut s1 = self.s;
-                    trial.step(&self.rod, self.t, &mut s1, h)?;
-                    self.stats.steps += 1;
-                    self.stats.rhs_evals += trial.evals();
-                    if self.model.tension(&s1) >= 0.0 {
-                        (self.scheme, self.s, self.t, self.k, self.on_grid) =
-                            (trial, s1, t_next, k_next, on_grid_next);
-                        if (on_grid_next && self.k % save_every == 0) || (end && self.t >= t_end) {
-                            push(self.t, self.s, true)?;
-                        }
-                        continue;
-                    }
-                    // T < 0 at the end of the step: shorten it to where T = 0 (to round-off in h)
-                    let trials = std::cell::Cell::new(0u64);
-                    let (t, s, scheme, rod) = (self.t, self.s, &self.scheme, &self.rod);
-                    let at = |h: f64| {
-                        trials.set(trials.get() + 1);
-                        let (mut sc, mut sh) = (scheme.clone(), s);
-                        sc.step(rod, t, &mut sh, h).map(|_| sh)
-                    };
-                    let h_star = bisect(0.0, h, |h| at(h).map_or(true, |sh| self.model.tension(&sh) < 0.0));
-                    let leave = at(h_star)?;
-                    self.stats.rhs_evals += trials.get() * trial.evals();
-                    self.t += h_star;
-                    self.s = leave;
-                    self.on_grid = false;
-                    self.events.push(StringEvent {
-                        t: self.t,
-                        kind: EventKind::Slack,
-                        before: self.s,
-                        after: self.s,
-                        energy_lost: 0.0,
-                    });
-                    push(self.t, self.s, false)?;
-                    self.phase = self.model.flight_from(self.t, self.s, 2);
-                }
-                Phase::Slack { t: te, from, arrival } => {
-                    // grid samples along the exact parabola until the arrival or t_end
-                    while grid(self.k + 1) < arrival.min(t_end) {
-                        self.k += 1;
-                        if self.k % save_every == 0 {
-                            let gk = grid(self.k);
-                            push(gk, self.model.flight(&from, gk - te), false)?;
-                        }
-                    }
-                    if arrival > t_end || (end && arrival == t_end) {
-                        let on_grid = grid(self.k + 1) == t_end;
-                        if on_grid {
-                            self.k += 1;
-                        }
-                        self.s = self.model.flight(&from, t_end - te);
-                        self.t = t_end;
-                        if end || (on_grid && self.k % save_every == 0) {
-                            push(self.t, self.s, false)?;
-                        }
-                        break;
-                    }
-                    let before = self.model.flight(&from, arrival - te);
-                    let (after, lost, taut) = self.model.snap(&before);
-                    self.t = arrival;
-                    self.s = after;
-                    self.on_grid = false;
-                    self.scheme.reset();
-                    self.events.push(StringEvent {
-                        t: self.t,
-                        kind: EventKind::Taut,
-                        before,
-                        after,
-                        energy_lost: lost,
-                    });
-                    if taut && self.model.tension(&self.s) < 0.0 {
-                        self.events.push(StringEvent {
-                            t: self.t,
-                            kind: EventKind::Slack,
-                            before: self.s,
-                            after: self.s,
-                            energy_lost: 0.0,
-                        });
-                        self.phase = self.model.flight_from(self.t, self.s, 2);
-                    } else if taut {
-                        self.phase = Phase::Taut;
-                    } else {
-                        self.phase = self.model.flight_from(self.t, self.s, 1);
-                    }
-                    push(self.t, self.s, self.is_taut())?;
-                }
+                Phase::Taut => self.taut_step(stop, push)?,
+                Phase::Slack { t, from, arrival } => self.fly(t, from, arrival, stop, push)?,
             }
         }
         Ok(())
     }
+
+    /// The grid point t₀ + k·dt [s].
+    #[inline]
+    fn grid(&self, k: u64) -> f64 {
+        self.t0 + k as f64 * self.dt
+    }
+
+    /// One taut step towards `stop.t`: to the next grid point (a full dt when on the grid) or to
+    /// `stop.t`; when T < 0 at its end, the step shortened to the leave event instead ([`Self::leave`]).
+    fn taut_step(&mut self, stop: Stop, push: &mut Push<'_>) -> Result<()> {
+        let dt = self.dt;
+        let slack_grid = 1e-9 * dt;
+        // the next grid point (or t_end), reached by a full step dt when on the grid
+        let next = self.grid(self.k + 1);
+        let t_next = next.min(stop.t);
+        let h = if self.on_grid && t_next == next { dt } else { t_next - self.t };
+        // the grid index and whether on the grid once at t_next
+        let (k_next, on_grid_next) = if t_next == next { (self.k + 1, true) } else { (self.k, false) };
+        if h <= slack_grid {
+            (self.t, self.k, self.on_grid) = (t_next, k_next, on_grid_next);
+            return Ok(());
+        }
+        let mut trial = self.scheme.clone();
+        let mut s1 = self.s;
+        trial.step(&self.rod, self.t, &mut s1, h)?;
+        self.stats.steps += 1;
+        self.stats.rhs_evals += trial.evals();
+        if self.model.tension(&s1) >= 0.0 {
+            (self.scheme, self.s, self.t, self.k, self.on_grid) = (trial, s1, t_next, k_next, on_grid_next);
+            if (on_grid_next && self.k % stop.save_every == 0) || (stop.end && self.t >= stop.t) {
+                push(self.t, self.s, true)?;
+            }
+            return Ok(());
+        }
+        self.leave(h, trial.evals(), push)
+    }
+
+    /// The leave event in a taut step of `h` [s] that ends with T < 0: the step shortened to where
+    /// T = 0 (bisection to round-off in h; each trial costs `evals` evaluations), the event, and the
+    /// flight from there.
+    fn leave(&mut self, h: f64, evals: u64, push: &mut Push<'_>) -> Result<()> {
+        let trials = std::cell::Cell::new(0u64);
+        let (t, s, scheme, rod) = (self.t, self.s, &self.scheme, &self.rod);
+        let at = |h: f64| {
+            trials.set(trials.get() + 1);
+            let (mut sc, mut sh) = (scheme.clone(), s);
+            sc.step(rod, t, &mut sh, h).map(|_| sh)
+        };
+        let h_star = bisect(0.0, h, |h| at(h).map_or(true, |sh| self.model.tension(&sh) < 0.0));
+        let leave = at(h_star)?;
+        self.stats.rhs_evals += trials.get() * evals;
+        self.t += h_star;
+        self.s = leave;
+        self.on_grid = false;
+        self.events.push(StringEvent {
+            t: self.t,
+            kind: EventKind::Slack,
+            before: self.s,
+            after: self.s,
+            energy_lost: 0.0,
+        });
+        push(self.t, self.s, false)?;
+        self.phase = self.model.flight_from(self.t, self.s, 2);
+        Ok(())
+    }
+
+    /// Free flight on the exact parabola from `from` at `te` [s], arriving on the sphere at `arrival`
+    /// [s]: the grid samples along it until the arrival or `stop.t`, then either the state at `stop.t`
+    /// (the arrival is later, or exactly at the end of the run) or the snap at the arrival.
+    fn fly(&mut self, te: f64, from: State, arrival: f64, stop: Stop, push: &mut Push<'_>) -> Result<()> {
+        let t_end = stop.t;
+        while self.grid(self.k + 1) < arrival.min(t_end) {
+            self.k += 1;
+            if self.k % stop.save_every == 0 {
+                let gk = self.grid(self.k);
+                push(gk, self.model.flight(&from, gk - te), false)?;
+            }
+        }
+        if arrival > t_end || (stop.end && arrival == t_end) {
+            let on_grid = self.grid(self.k + 1) == t_end;
+            if on_grid {
+                self.k += 1;
+            }
+            self.s = self.model.flight(&from, t_end - te);
+            self.t = t_end;
+            if stop.end || (on_grid && self.k % stop.save_every == 0) {
+                push(self.t, self.s, false)?;
+            }
+            return Ok(());
+        }
+        let before = self.model.flight(&from, arrival - te);
+        self.snap(arrival, before, push)
+    }
+
+    /// The snap at `t` [s], arriving on the sphere in state `before`: the jerk (radial velocity
+    /// removed or reflected), then taut, slack again at once (T < 0 after the jerk), or a rebound
+    /// flight (restitution e > 0).
+    fn snap(&mut self, t: f64, before: State, push: &mut Push<'_>) -> Result<()> {
+        let (after, lost, taut) = self.model.snap(&before);
+        self.t = t;
+        self.s = after;
+        self.on_grid = false;
+        self.scheme.reset();
+        self.events.push(StringEvent { t, kind: EventKind::Taut, before, after, energy_lost: lost });
+        if taut && self.model.tension(&self.s) < 0.0 {
+            self.events.push(StringEvent {
+                t,
+                kind: EventKind::Slack,
+                before: self.s,
+                after: self.s,
+                energy_lost: 0.0,
+            });
+            self.phase = self.model.flight_from(self.t, self.s, 2);
+        } else if taut {
+            self.phase = Phase::Taut;
+        } else {
+            self.phase = self.model.flight_from(self.t, self.s, 1);
+        }
+        push(self.t, self.s, self.is_taut())
+    }
+}
+
+/// What is called with (t [s], state, taut) for every sample kept.
+pub(super) type Push<'a> = dyn FnMut(f64, State, bool) -> Result<()> + 'a;
+
+/// Where [`StringStepper::advance_to`] stops: the time `t` [s], whether it ends the run (`end`), and
+/// which grid points it reports (every `save_every`-th).
+#[derive(Debug, Clone, Copy)]
+struct Stop {
+    t: f64,
+    end: bool,
+    save_every: u64,
 }
