@@ -1,7 +1,7 @@
 //! Binding of the ensemble kernel (`pendulab_core::ensemble`): the run goes on a background thread
 //! so that Python can show progress and cancel (Ctrl-C) while it works. Conversions only; SI units.
 
-use crate::{to_py, InvalidInputError};
+use crate::convert::{to_py, InvalidInputError};
 use numpy::ndarray::{Array1, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
 use pendulab_core::ensemble::{run_with, EnsembleResult, EnsembleSave, Extras};

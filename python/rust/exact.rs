@@ -2,7 +2,7 @@
 //! and the energy–momentum map. Conversions only; SI units (m, kg, s, rad) except where a function
 //! says it works in Holm's unit-length variables (σ) or dimensionless (ε, j).
 
-use crate::{model, to_py, vec3, InvalidInputError};
+use crate::convert::{model, to_py, vec3, InvalidInputError};
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pendulab_core::exact::energy_momentum::{conical_boundary, monodromy_change, rotation_number};

@@ -9,15 +9,15 @@
 //! error is kept, the state is poisoned with NaN so that the core stops at the end of the step, and
 //! the error is raised to Python in place of the core's "diverged".
 
-use crate::{
-    any_model, options, samples_to_numpy, stats_dict, to_py, vec3, Arrays, InvalidInputError, PivotArrays,
+use crate::convert::{
+    any_model, options, samples_to_numpy, save_rule, to_py, vec3, Arrays, InvalidInputError, PivotArrays,
 };
+use crate::getters::pymethods_with_getters;
 use numpy::PyReadonlyArray1;
 use pendulab_core::model::AnyModel;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
-use pendulab_core::{DVec3, Method, Model, Params, SaveAt, Solver, State};
+use pendulab_core::{DVec3, Method, Model, Params, Solver, State};
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 use std::sync::{Arc, Mutex};
 
 /// A registry model plus a Python force F(t, x, v) [N].
@@ -112,101 +112,81 @@ impl Model for Handle {
     }
 }
 
-#[pymethods]
-impl ForceSolver {
-    #[new]
-    #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, force, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, pivot=None))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        length: f64,
-        mass: f64,
-        g: f64,
-        x0: PyReadonlyArray1<'_, f64>,
-        v0: PyReadonlyArray1<'_, f64>,
-        t0: f64,
-        t_end: f64,
-        method: &str,
-        dt: f64,
-        rtol: f64,
-        atol: f64,
-        project: bool,
-        force: Py<PyAny>,
-        save_every: Option<u64>,
-        save_times: Option<PyReadonlyArray1<'_, f64>>,
-        max_saved_bytes: Option<u64>,
-        model_name: Option<&str>,
-        extra: Option<Vec<(String, f64)>>,
-        pivot: Option<PivotArrays<'_>>,
-    ) -> PyResult<Self> {
-        let base = any_model(length, mass, g, model_name, extra, pivot)?;
-        let opts = options(method, dt, rtol, atol, project)?;
-        if !matches!(opts.method, Method::Dop853 | Method::Rkmk4 | Method::Rk4) {
-            return Err(InvalidInputError::new_err(format!(
-                "method {method:?} cannot integrate a force given as a Python callable: it may depend on \
-                 v, which the RATTLE family's kicks f(t, x, 0) leave out (and rk4_angles is for the ideal \
-                 pendulum only); use 'dop853' (recommended, with projection onto TS²), 'rkmk4' or 'rk4'"
-            )));
-        }
-        let s = State::on_tangent_bundle(base.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
-        let save = match (save_every, save_times) {
-            (Some(_), Some(_)) => {
-                return Err(InvalidInputError::new_err("give either save_every or save_times, not both"))
+pymethods_with_getters! {
+    impl ForceSolver {
+        #[new]
+        #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, force, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, pivot=None))]
+        #[allow(clippy::too_many_arguments)]
+        fn new(
+            length: f64,
+            mass: f64,
+            g: f64,
+            x0: PyReadonlyArray1<'_, f64>,
+            v0: PyReadonlyArray1<'_, f64>,
+            t0: f64,
+            t_end: f64,
+            method: &str,
+            dt: f64,
+            rtol: f64,
+            atol: f64,
+            project: bool,
+            force: Py<PyAny>,
+            save_every: Option<u64>,
+            save_times: Option<PyReadonlyArray1<'_, f64>>,
+            max_saved_bytes: Option<u64>,
+            model_name: Option<&str>,
+            extra: Option<Vec<(String, f64)>>,
+            pivot: Option<PivotArrays<'_>>,
+        ) -> PyResult<Self> {
+            let base = any_model(length, mass, g, model_name, extra, pivot)?;
+            let opts = options(method, dt, rtol, atol, project)?;
+            if !matches!(opts.method, Method::Dop853 | Method::Rkmk4 | Method::Rk4) {
+                return Err(InvalidInputError::new_err(format!(
+                    "method {method:?} cannot integrate a force given as a Python callable: it may depend on \
+                     v, which the RATTLE family's kicks f(t, x, 0) leave out (and rk4_angles is for the ideal \
+                     pendulum only); use 'dop853' (recommended, with projection onto TS²), 'rkmk4' or 'rk4'"
+                )));
             }
-            (_, Some(ts)) => SaveAt::Times(ts.as_array().to_vec()),
-            (n, None) => SaveAt::Every(n.unwrap_or(1)),
-        };
-        let model = Arc::new(PyForce { base, force, error: Mutex::new(None) });
-        let inner = Solver::new(
-            Handle(model.clone()),
-            t0,
-            s,
-            t_end,
-            &opts,
-            save,
-            max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES),
-        )
-        .map_err(to_py)?;
-        if let Some(e) = model.take_error() {
-            return Err(e);
+            let s = State::on_tangent_bundle(base.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
+            let save = save_rule(save_every, save_times)?;
+            let model = Arc::new(PyForce { base, force, error: Mutex::new(None) });
+            let inner = Solver::new(
+                Handle(model.clone()),
+                t0,
+                s,
+                t_end,
+                &opts,
+                save,
+                max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES),
+            )
+            .map_err(to_py)?;
+            if let Some(e) = model.take_error() {
+                return Err(e);
+            }
+            Ok(Self { inner, model })
         }
-        Ok(Self { inner, model })
-    }
 
-    /// Advances by about `budget` steps (the GIL is released between force calls); returns True at
-    /// t_end. An error of the force callable is raised as it was raised (or as InvalidInputError).
-    fn advance(&mut self, py: Python<'_>, budget: u64) -> PyResult<bool> {
-        let inner = &mut self.inner;
-        let result = py.allow_threads(|| inner.advance(budget));
-        if let Some(e) = self.model.take_error() {
-            return Err(e);
+        /// Advances by about `budget` steps (the GIL is released between force calls); returns True at
+        /// t_end. An error of the force callable is raised as it was raised (or as InvalidInputError).
+        fn advance(&mut self, py: Python<'_>, budget: u64) -> PyResult<bool> {
+            let inner = &mut self.inner;
+            let result = py.allow_threads(|| inner.advance(budget));
+            if let Some(e) = self.model.take_error() {
+                return Err(e);
+            }
+            result.map_err(to_py)
         }
-        result.map_err(to_py)
-    }
 
-    /// Samples saved since the last call: (t [s] (n,), x [m] (n, 3), v [m/s] (n, 3)).
-    fn take_samples<'py>(&mut self, py: Python<'py>) -> Arrays<'py> {
-        samples_to_numpy(py, self.inner.take_samples())
+        /// Samples saved since the last call: (t [s] (n,), x [m] (n, 3), v [m/s] (n, 3)).
+        fn take_samples<'py>(&mut self, py: Python<'py>) -> Arrays<'py> {
+            samples_to_numpy(py, self.inner.take_samples())
+        }
     }
-
-    /// Fraction of [t0, t_end] done.
-    #[getter]
-    fn progress(&self) -> f64 {
-        self.inner.progress()
-    }
-    /// Current time [s].
-    #[getter]
-    fn t(&self) -> f64 {
-        self.inner.stepper().t()
-    }
-    /// True when t_end is reached.
-    #[getter]
-    fn done(&self) -> bool {
-        self.inner.is_done()
-    }
-    /// Work counters: steps, rejected, rhs_evals.
-    #[getter]
-    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        stats_dict(py, self.inner.stats())
+    getters(&self) {
+        progress = self.inner.progress();
+        t = self.inner.stepper().t();
+        done = self.inner.is_done();
+        stats = self.inner.stats();
     }
 }
 

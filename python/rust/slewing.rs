@@ -1,7 +1,7 @@
 //! Binding of the linearised slewing crane (`pendulab_core::model::slewing_linear`, T-7.2): the
 //! closed-form boom-frame sway. Conversions only; SI units.
 
-use crate::to_py;
+use crate::convert::{to_py, InvalidInputError};
 use numpy::{IntoPyArray, PyReadonlyArray1};
 use pendulab_core::model::slewing_linear::{LinearSlewing, Sway};
 use pendulab_core::Params;
@@ -28,13 +28,11 @@ pub fn slewing_linear<'py>(
     let m = LinearSlewing::new(&params, radius, rate, damping).map_err(to_py)?;
     let s0 = Sway { x: start[0], y: start[1], vx: start[2], vy: start[3] };
     if let Some(bad) = start.iter().find(|v| !v.is_finite()) {
-        return Err(crate::InvalidInputError::new_err(format!(
-            "the start {start:?} has a non-finite value {bad}"
-        )));
+        return Err(InvalidInputError::new_err(format!("the start {start:?} has a non-finite value {bad}")));
     }
     let ts = t.as_array();
     if let Some(bad) = ts.iter().find(|v| !v.is_finite()) {
-        return Err(crate::InvalidInputError::new_err(format!("t contains the non-finite time {bad} s")));
+        return Err(InvalidInputError::new_err(format!("t contains the non-finite time {bad} s")));
     }
     let track: Vec<Sway> = ts.iter().map(|&ti| m.sway(s0, ti)).collect();
     let d = PyDict::new(py);

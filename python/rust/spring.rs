@@ -1,6 +1,7 @@
 //! Binding of the swinging spring (`pendulab_core::elastic`, T-7.4). Conversions only; SI units.
 
-use crate::{arr3, to_py, vec3};
+use crate::convert::{arr3, to_py, vec3};
+use crate::getters::pymethods_with_getters;
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1};
 use pendulab_core::elastic::{SpringStepper, SwingingSpring};
@@ -62,60 +63,51 @@ struct SpringStepper_ {
     inner: SpringStepper,
 }
 
-#[pymethods]
-impl SpringStepper_ {
-    #[new]
-    #[pyo3(signature = (k_over_m, rest_length, g, mass, x0, v0, t0, dt, order=2))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        k_over_m: f64,
-        rest_length: f64,
-        g: f64,
-        mass: f64,
-        x0: PyReadonlyArray1<'_, f64>,
-        v0: PyReadonlyArray1<'_, f64>,
-        t0: f64,
-        dt: f64,
-        order: u32,
-    ) -> PyResult<Self> {
-        let sp = SwingingSpring::new(k_over_m, rest_length, g, mass).map_err(to_py)?;
-        let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-        Ok(Self { inner: SpringStepper::new(sp, start, t0, dt, order).map_err(to_py)? })
-    }
+pymethods_with_getters! {
+    impl SpringStepper_ {
+        #[new]
+        #[pyo3(signature = (k_over_m, rest_length, g, mass, x0, v0, t0, dt, order=2))]
+        #[allow(clippy::too_many_arguments)]
+        fn new(
+            k_over_m: f64,
+            rest_length: f64,
+            g: f64,
+            mass: f64,
+            x0: PyReadonlyArray1<'_, f64>,
+            v0: PyReadonlyArray1<'_, f64>,
+            t0: f64,
+            dt: f64,
+            order: u32,
+        ) -> PyResult<Self> {
+            let sp = SwingingSpring::new(k_over_m, rest_length, g, mass).map_err(to_py)?;
+            let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
+            Ok(Self { inner: SpringStepper::new(sp, start, t0, dt, order).map_err(to_py)? })
+        }
 
-    /// Takes `n` steps of dt.
-    #[pyo3(signature = (n=1))]
-    fn step(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
-        let inner = &mut self.inner;
-        py.allow_threads(|| inner.step(n)).map_err(to_py)
-    }
+        /// Takes `n` steps of dt.
+        #[pyo3(signature = (n=1))]
+        fn step(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
+            let inner = &mut self.inner;
+            py.allow_threads(|| inner.step(n)).map_err(to_py)
+        }
 
-    /// Current time [s].
-    #[getter]
-    fn t(&self) -> f64 {
-        self.inner.t()
-    }
-    /// Current position [m] (relative to the pivot).
-    #[getter]
-    fn x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        arr3(py, self.inner.state().x)
-    }
-    /// Current velocity [m/s].
-    #[getter]
-    fn v<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        arr3(py, self.inner.state().v)
-    }
 
-    /// Diagnostics of the current state: energy [J] (kinetic + elastic + gravity), j3 [kg m²/s],
-    /// tension k(|r| − l₀) [N], acceleration r̈ (3,) [m/s²].
-    fn diagnostics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let (sp, s) = (self.inner.spring(), self.inner.state());
-        let d = PyDict::new(py);
-        d.set_item("energy", sp.energy(&s))?;
-        d.set_item("j3", sp.j3(&s))?;
-        d.set_item("tension", sp.tension(&s))?;
-        d.set_item("acceleration", arr3(py, sp.acceleration(s.x)))?;
-        Ok(d)
+        /// Diagnostics of the current state: energy [J] (kinetic + elastic + gravity), j3 [kg m²/s],
+        /// tension k(|r| − l₀) [N], acceleration r̈ (3,) [m/s²].
+        fn diagnostics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+            let (sp, s) = (self.inner.spring(), self.inner.state());
+            let d = PyDict::new(py);
+            d.set_item("energy", sp.energy(&s))?;
+            d.set_item("j3", sp.j3(&s))?;
+            d.set_item("tension", sp.tension(&s))?;
+            d.set_item("acceleration", arr3(py, sp.acceleration(s.x)))?;
+            Ok(d)
+        }
+    }
+    getters(&self) {
+        t = self.inner.t();
+        x = self.inner.state().x;
+        v = self.inner.state().v;
     }
 }
 

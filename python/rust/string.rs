@@ -2,13 +2,14 @@
 //! (taut phases, leave and snap events, analytic free flight) as numpy arrays. Conversions only;
 //! SI units.
 
-use crate::{arr3, to_py, vec3};
+use crate::convert::{arr3, stats_dict, to_py, vec3};
+use crate::getters::pymethods_with_getters;
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
 use pendulab_core::model::StringPendulum;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
 use pendulab_core::string_run::{EventKind, StringEvent, StringRun, StringRunner, StringStepper};
-use pendulab_core::{Method, Params, SaveAt, State, Stats};
+use pendulab_core::{Method, Params, SaveAt, State};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -80,14 +81,6 @@ fn run_dict(py: Python<'_>, run: StringRun) -> PyResult<Bound<'_, PyDict>> {
     Ok(d)
 }
 
-fn stats_dict(py: Python<'_>, stats: Stats) -> PyResult<Bound<'_, PyDict>> {
-    let st = PyDict::new(py);
-    st.set_item("steps", stats.steps)?;
-    st.set_item("rejected", stats.rejected)?;
-    st.set_item("rhs_evals", stats.rhs_evals)?;
-    Ok(st)
-}
-
 /// A batch run of the string pendulum in chunks (`pl.simulate` drives it: progress bar, Ctrl-C):
 /// l [m], m [kg], g [m/s²], restitution e, the start x0, v0 [m, m/s] at t0 [s], t_end [s], `method`
 /// and dt [s] as for [`string_simulate`]; keeping every `save_every`-th grid point, the events and
@@ -98,67 +91,57 @@ struct StringRunner_ {
     inner: StringRunner,
 }
 
-#[pymethods]
-impl StringRunner_ {
-    #[new]
-    #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, t_end, method, dt, save_every=None, save_at=None, max_saved_bytes=None))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        length: f64,
-        mass: f64,
-        g: f64,
-        restitution: f64,
-        x0: PyReadonlyArray1<'_, f64>,
-        v0: PyReadonlyArray1<'_, f64>,
-        t0: f64,
-        t_end: f64,
-        method: &str,
-        dt: f64,
-        save_every: Option<u64>,
-        save_at: Option<PyReadonlyArray1<'_, f64>>,
-        max_saved_bytes: Option<u64>,
-    ) -> PyResult<Self> {
-        let sp =
-            StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
-        let method = Method::from_name(method).map_err(to_py)?;
-        let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-        let save = match save_at {
-            Some(ts) => SaveAt::Times(ts.as_array().to_vec()),
-            None => SaveAt::Every(save_every.unwrap_or(1)),
-        };
-        let stepper = StringStepper::new(sp, t0, start, method, dt).map_err(to_py)?;
-        let limit = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
-        Ok(Self { inner: StringRunner::new(stepper, t_end, save, limit).map_err(to_py)? })
-    }
+pymethods_with_getters! {
+    impl StringRunner_ {
+        #[new]
+        #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, t_end, method, dt, save_every=None, save_at=None, max_saved_bytes=None))]
+        #[allow(clippy::too_many_arguments)]
+        fn new(
+            length: f64,
+            mass: f64,
+            g: f64,
+            restitution: f64,
+            x0: PyReadonlyArray1<'_, f64>,
+            v0: PyReadonlyArray1<'_, f64>,
+            t0: f64,
+            t_end: f64,
+            method: &str,
+            dt: f64,
+            save_every: Option<u64>,
+            save_at: Option<PyReadonlyArray1<'_, f64>>,
+            max_saved_bytes: Option<u64>,
+        ) -> PyResult<Self> {
+            let sp =
+                StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
+            let method = Method::from_name(method).map_err(to_py)?;
+            let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
+            let save = match save_at {
+                Some(ts) => SaveAt::Times(ts.as_array().to_vec()),
+                None => SaveAt::Every(save_every.unwrap_or(1)),
+            };
+            let stepper = StringStepper::new(sp, t0, start, method, dt).map_err(to_py)?;
+            let limit = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
+            Ok(Self { inner: StringRunner::new(stepper, t_end, save, limit).map_err(to_py)? })
+        }
 
-    /// Advances by about `max_steps` grid steps (GIL released); True once t_end is reached.
-    fn advance(&mut self, py: Python<'_>, max_steps: u64) -> PyResult<bool> {
-        let inner = &mut self.inner;
-        py.allow_threads(|| inner.advance(max_steps)).map_err(to_py)
-    }
+        /// Advances by about `max_steps` grid steps (GIL released); True once t_end is reached.
+        fn advance(&mut self, py: Python<'_>, max_steps: u64) -> PyResult<bool> {
+            let inner = &mut self.inner;
+            py.allow_threads(|| inner.advance(max_steps)).map_err(to_py)
+        }
 
-    /// The samples and events since the last call, as the dict of `string_simulate` (stats: so far).
-    /// Until t_end the last sample is held back (an event at its time replaces it); `all`: included
-    /// (for a run stopped early).
-    #[pyo3(signature = (all=false))]
-    fn take_samples<'py>(&mut self, py: Python<'py>, all: bool) -> PyResult<Bound<'py, PyDict>> {
-        run_dict(py, if all { self.inner.take_all() } else { self.inner.take() })
+        /// The samples and events since the last call, as the dict of `string_simulate` (stats: so far).
+        /// Until t_end the last sample is held back (an event at its time replaces it); `all`: included
+        /// (for a run stopped early).
+        #[pyo3(signature = (all=false))]
+        fn take_samples<'py>(&mut self, py: Python<'py>, all: bool) -> PyResult<Bound<'py, PyDict>> {
+            run_dict(py, if all { self.inner.take_all() } else { self.inner.take() })
+        }
     }
-
-    /// The fraction of [t0, t_end] done.
-    #[getter]
-    fn progress(&self) -> f64 {
-        self.inner.progress()
-    }
-    /// Time reached [s].
-    #[getter]
-    fn t(&self) -> f64 {
-        self.inner.stepper().t()
-    }
-    /// Work so far: steps, rejected, rhs_evals.
-    #[getter]
-    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        stats_dict(py, self.inner.stepper().stats())
+    getters(&self) {
+        progress = self.inner.progress();
+        t = self.inner.stepper().t();
+        stats = self.inner.stepper().stats();
     }
 }
 
@@ -171,74 +154,65 @@ struct StringStepper_ {
     inner: StringStepper,
 }
 
-#[pymethods]
-impl StringStepper_ {
-    #[new]
-    #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, method, dt))]
-    #[allow(clippy::too_many_arguments)]
-    fn new(
-        length: f64,
-        mass: f64,
-        g: f64,
-        restitution: f64,
-        x0: PyReadonlyArray1<'_, f64>,
-        v0: PyReadonlyArray1<'_, f64>,
-        t0: f64,
-        method: &str,
-        dt: f64,
-    ) -> PyResult<Self> {
-        let sp =
-            StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
-        let method = Method::from_name(method).map_err(to_py)?;
-        let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-        Ok(Self { inner: StringStepper::new(sp, t0, start, method, dt).map_err(to_py)? })
-    }
+pymethods_with_getters! {
+    impl StringStepper_ {
+        #[new]
+        #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, method, dt))]
+        #[allow(clippy::too_many_arguments)]
+        fn new(
+            length: f64,
+            mass: f64,
+            g: f64,
+            restitution: f64,
+            x0: PyReadonlyArray1<'_, f64>,
+            v0: PyReadonlyArray1<'_, f64>,
+            t0: f64,
+            method: &str,
+            dt: f64,
+        ) -> PyResult<Self> {
+            let sp =
+                StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
+            let method = Method::from_name(method).map_err(to_py)?;
+            let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
+            Ok(Self { inner: StringStepper::new(sp, t0, start, method, dt).map_err(to_py)? })
+        }
 
-    /// Takes `n` steps of the grid t0 + k·dt (to the n-th grid point after the last one reached).
-    #[pyo3(signature = (n=1))]
-    fn step(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
-        let inner = &mut self.inner;
-        py.allow_threads(|| inner.step(n)).map_err(to_py)
-    }
+        /// Takes `n` steps of the grid t0 + k·dt (to the n-th grid point after the last one reached).
+        #[pyo3(signature = (n=1))]
+        fn step(&mut self, py: Python<'_>, n: u64) -> PyResult<()> {
+            let inner = &mut self.inner;
+            py.allow_threads(|| inner.step(n)).map_err(to_py)
+        }
 
-    /// Current time [s].
-    #[getter]
-    fn t(&self) -> f64 {
-        self.inner.t()
-    }
-    /// Current position [m] (inside the sphere while slack).
-    #[getter]
-    fn x<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        arr3(py, self.inner.state().x)
-    }
-    /// Current velocity [m/s].
-    #[getter]
-    fn v<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
-        arr3(py, self.inner.state().v)
-    }
-    /// True while the string is taut, false while slack (free flight).
-    #[getter]
-    fn taut(&self) -> bool {
-        self.inner.is_taut()
-    }
+        /// True while the string is taut, false while slack (free flight).
+        #[getter]
+        fn taut(&self) -> bool {
+            self.inner.is_taut()
+        }
 
-    /// Diagnostics of the current state: energy [J], j3 [kg m²/s], tension [N] (T-2.3 while taut, 0
-    /// while slack), acceleration ẍ (3,) [m/s²], taut.
-    fn diagnostics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
-        let (m, s) = (self.inner.model(), self.inner.state());
-        let d = PyDict::new(py);
-        d.set_item("energy", pendulab_core::model::energy(m, &s))?;
-        d.set_item("j3", pendulab_core::model::j3(m, &s))?;
-        d.set_item("tension", self.inner.tension())?;
-        d.set_item("acceleration", arr3(py, self.inner.acceleration()))?;
-        d.set_item("taut", self.inner.is_taut())?;
-        Ok(d)
-    }
+        /// Diagnostics of the current state: energy [J], j3 [kg m²/s], tension [N] (T-2.3 while taut, 0
+        /// while slack), acceleration ẍ (3,) [m/s²], taut.
+        fn diagnostics<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+            let (m, s) = (self.inner.model(), self.inner.state());
+            let d = PyDict::new(py);
+            d.set_item("energy", pendulab_core::model::energy(m, &s))?;
+            d.set_item("j3", pendulab_core::model::j3(m, &s))?;
+            d.set_item("tension", self.inner.tension())?;
+            d.set_item("acceleration", arr3(py, self.inner.acceleration()))?;
+            d.set_item("taut", self.inner.is_taut())?;
+            Ok(d)
+        }
 
-    /// The events since the last call: a list of dicts t [s], kind ("slack" or "taut"), x [m],
-    /// v_before, v_after [m/s], energy_lost [J].
-    fn take_events<'py>(&mut self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
-        self.inner.take_events().iter().map(|e| event_dict(py, e)).collect()
+        /// The events since the last call: a list of dicts t [s], kind ("slack" or "taut"), x [m],
+        /// v_before, v_after [m/s], energy_lost [J].
+        fn take_events<'py>(&mut self, py: Python<'py>) -> PyResult<Vec<Bound<'py, PyDict>>> {
+            self.inner.take_events().iter().map(|e| event_dict(py, e)).collect()
+        }
+    }
+    getters(&self) {
+        t = self.inner.t();
+        x = self.inner.state().x;
+        v = self.inner.state().v;
     }
 }
 

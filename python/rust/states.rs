@@ -1,0 +1,166 @@
+//! States and their diagnostics: a state checked to lie on TS², moved onto it, or built from angles,
+//! and the diagnostics along arrays of states (energy T-2.6, J₃, tension T-2.3, the residuals of
+//! TS², power, the acceleration of T-2.2, the pivot's path). SI units: x [m], v [m/s], t [s], angles
+//! [rad], arrays of 3-vectors (N, 3).
+
+use crate::convert::{any_model, arr3, model, to_py, vec3, InvalidInputError, PivotArrays, StatePair};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
+use pendulab_core::model::{acceleration, energy, j3, tension};
+use pendulab_core::{DVec3, Model, State};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+/// The state (x, v) checked to lie on TS² within the core tolerance.
+#[pyfunction]
+fn state_on_ts2<'py>(
+    py: Python<'py>,
+    length: f64,
+    mass: f64,
+    g: f64,
+    x: PyReadonlyArray1<'py, f64>,
+    v: PyReadonlyArray1<'py, f64>,
+) -> PyResult<StatePair<'py>> {
+    let m = model(length, mass, g)?;
+    let s = State::on_tangent_bundle(m.params(), vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
+    Ok((arr3(py, s.x), arr3(py, s.v)))
+}
+
+/// (x, v) moved onto TS², with the distances moved |Δx| [m] and |Δv| [m/s].
+#[pyfunction]
+fn project_state<'py>(
+    py: Python<'py>,
+    length: f64,
+    mass: f64,
+    g: f64,
+    x: PyReadonlyArray1<'py, f64>,
+    v: PyReadonlyArray1<'py, f64>,
+) -> PyResult<(StatePair<'py>, f64, f64)> {
+    let m = model(length, mass, g)?;
+    let (s, p) = State::projected(m.params(), vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
+    Ok(((arr3(py, s.x), arr3(py, s.v)), p.dx, p.dv))
+}
+
+/// The state at polar angle θ [rad] from the downward vertical, azimuth φ [rad], rates [rad/s].
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+fn state_from_angles(
+    py: Python<'_>,
+    length: f64,
+    mass: f64,
+    g: f64,
+    theta: f64,
+    phi: f64,
+    theta_dot: f64,
+    phi_dot: f64,
+) -> PyResult<StatePair<'_>> {
+    let m = model(length, mass, g)?;
+    let s = State::from_angles(m.params(), theta, phi, theta_dot, phi_dot).map_err(to_py)?;
+    Ok((arr3(py, s.x), arr3(py, s.v)))
+}
+
+/// Diagnostics along arrays x, v of shape (N, 3): energy [J], j3 [kg m²/s], tension [N],
+/// radius_error = |x| − l [m], tangency = x·v [m²/s], power [W], acceleration (N, 3) [m/s²].
+#[pyfunction]
+#[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None, pivot=None))]
+#[allow(clippy::too_many_arguments)]
+fn diagnostics<'py>(
+    py: Python<'py>,
+    length: f64,
+    mass: f64,
+    g: f64,
+    x: PyReadonlyArray2<'py, f64>,
+    v: PyReadonlyArray2<'py, f64>,
+    model_name: Option<&str>,
+    extra: Option<Vec<(String, f64)>>,
+    t: Option<PyReadonlyArray1<'py, f64>>,
+    pivot: Option<PivotArrays<'py>>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let m = any_model(length, mass, g, model_name, extra, pivot)?;
+    let times = t.map(|t| t.as_array().to_vec());
+    let (x, v) = (x.as_array(), v.as_array());
+    if x.ncols() != 3 || v.dim() != x.dim() {
+        return Err(InvalidInputError::new_err(format!(
+            "x and v must both have shape (N, 3), got {:?} and {:?}",
+            x.dim(),
+            v.dim()
+        )));
+    }
+    let n = x.nrows();
+    if let Some(ts) = &times {
+        if ts.len() != n {
+            return Err(InvalidInputError::new_err(format!(
+                "t must have {n} entries (one per state), got {}",
+                ts.len()
+            )));
+        }
+    }
+    let mut out = [vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]];
+    for i in 0..n {
+        let s = State {
+            x: DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]]),
+            v: DVec3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]),
+        };
+        let r = s.residuals(length);
+        out[0][i] = energy(&m, &s);
+        out[1][i] = j3(&m, &s);
+        let ti = times.as_ref().map_or(0.0, |ts| ts[i]);
+        out[2][i] = tension(&m, ti, &s);
+        out[5][i] = m.params().mass * m.power_per_mass(ti, s.x, s.v);
+        out[3][i] = r.length;
+        out[4][i] = r.tangency;
+    }
+    let d = PyDict::new(py);
+    for (name, values) in
+        ["energy", "j3", "tension", "radius_error", "tangency", "power"].into_iter().zip(out)
+    {
+        d.set_item(name, values.into_pyarray(py))?;
+    }
+    // The acceleration ẍ = f + λx [m/s²] of T-2.2 (relative to the pivot, in the model's frame):
+    // m ẍ is the net force on the bob there (the lab draws it).
+    let mut acc = Array2::<f64>::zeros((n, 3));
+    for i in 0..n {
+        let ti = times.as_ref().map_or(0.0, |ts| ts[i]);
+        let a = acceleration(
+            &m,
+            ti,
+            DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]]),
+            DVec3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]),
+        );
+        for k in 0..3 {
+            acc[[i, k]] = a[k];
+        }
+    }
+    d.set_item("acceleration", acc.into_pyarray(py))?;
+    // A moving pivot: its position p(t) [m] (the bob is at p + x in the inertial frame).
+    if let (Some(path), Some(ts)) = (m.pivot(), &times) {
+        let mut p = Array2::<f64>::zeros((n, 3));
+        for (i, &ti) in ts.iter().enumerate() {
+            let q = path.position(ti);
+            for k in 0..3 {
+                p[[i, k]] = q[k];
+            }
+        }
+        d.set_item("pivot", p.into_pyarray(py))?;
+        // the slewing crane: x in the frame turning with the boom (radial, tangential, vertical)
+        if path.boom_frame(0.0, DVec3::ZERO).is_some() {
+            let mut b = Array2::<f64>::zeros((n, 3));
+            for (i, &ti) in ts.iter().enumerate() {
+                let q = path.boom_frame(ti, DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]])).unwrap();
+                for k in 0..3 {
+                    b[[i, k]] = q[k];
+                }
+            }
+            d.set_item("boom", b.into_pyarray(py))?;
+        }
+    }
+    Ok(d)
+}
+
+/// Registers the functions.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(state_on_ts2, m)?)?;
+    m.add_function(wrap_pyfunction!(project_state, m)?)?;
+    m.add_function(wrap_pyfunction!(state_from_angles, m)?)?;
+    m.add_function(wrap_pyfunction!(diagnostics, m)?)
+}
