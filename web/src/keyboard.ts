@@ -50,9 +50,11 @@ export function sliderSteps(key: string): number | null {
   }
 }
 
-/** Whether key presses in `target` belong to it (text, numbers, selects, sliders) rather than to the lab. */
-export function ownsKeys(target: EventTarget | null): boolean {
+/** Whether the key `key` pressed in `target` belongs to it (text, numbers, selects, sliders; Space on a
+ *  button or a check box, which it presses) rather than to the lab. */
+export function ownsKeys(target: EventTarget | null, key = ''): boolean {
   if (typeof HTMLElement === 'undefined' || !(target instanceof HTMLElement)) return false;
+  if (key === ' ' && (target instanceof HTMLButtonElement || (target instanceof HTMLInputElement && ['checkbox', 'radio', 'button'].includes(target.type)))) return true;
   if (target.isContentEditable) return true;
   if (target instanceof HTMLSelectElement || target instanceof HTMLTextAreaElement) return true;
   if (target instanceof HTMLInputElement) return !['checkbox', 'radio', 'button'].includes(target.type);

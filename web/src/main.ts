@@ -178,7 +178,7 @@ async function main(): Promise<void> {
       if (help.open) help.toggle(false);
       return;
     }
-    if (ownsKeys(e.target)) return;
+    if (ownsKeys(e.target, e.key)) return;
     if (help.open && action !== 'help') return;
     e.preventDefault();
     if (action === 'run') run();
