@@ -12,7 +12,7 @@ import warnings
 from collections.abc import Callable
 from typing import Any, Protocol
 
-from tqdm.auto import tqdm
+from ._progress import tqdm
 
 _CHUNK_SECONDS = 0.1
 _PROGRESS_AFTER_STEPS = 5_000_000

@@ -21,9 +21,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from PIL import Image, ImageDraw
-from tqdm.auto import tqdm
 
 from .._core import InvalidInputError
+from .._progress import tqdm
 from ..io import atomic_path
 from .canvas import Theme
 from .clock import check_fps, make_clock

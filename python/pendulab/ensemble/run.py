@@ -18,9 +18,9 @@ import warnings
 from typing import Any
 
 import numpy as np
-from tqdm.auto import tqdm
 
 from .._core import EnsembleRun, InvalidInputError
+from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
 from .result import EnsembleResult
 from .save import Save

@@ -19,9 +19,9 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
-from tqdm.auto import tqdm
 
 from .._core import InvalidInputError
+from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
 from .data import KINDS, observations, residual
 from .identify import analyse, jacobian

@@ -36,8 +36,8 @@ from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
-from tqdm.auto import tqdm
 
+from .._progress import tqdm
 from ..model import FloatArray, Pendulum
 from .backends import Dask, Threads, connect, drive
 from .compute import (
