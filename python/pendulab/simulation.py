@@ -234,9 +234,15 @@ class Stepper:
         self._core.step(int(n))
         return self.state
 
-    def step_to(self, t: float) -> State:
-        """Advances to exactly time t [s] and returns the state there."""
-        self._core.step_to(float(t))
+    def step_to(self, t: float, *, max_steps: int | None = None) -> State:
+        """Advances to exactly time t [s] and returns the state there. With ``max_steps``, takes at most
+        that many steps (``dop853``: accepted steps) and may stop before t (then ``self.t < t``; call
+        again to go on — the same steps as one uncapped call): a bound on the work of one call."""
+        if max_steps is not None and (
+            isinstance(max_steps, bool) or int(max_steps) != max_steps or max_steps < 0
+        ):
+            raise InvalidInputError(f"max_steps = {max_steps!r} must be an integer >= 0")
+        self._core.step_to(float(t), None if max_steps is None else int(max_steps))
         return self.state
 
     def set_state(self, state: State) -> None:

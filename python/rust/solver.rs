@@ -115,10 +115,17 @@ pymethods_with_getters! {
             py.allow_threads(|| inner.step_n(n).and_then(|_| inner.check_finite())).map_err(to_py)
         }
 
-        /// Advances to exactly time `t` [s] (not before the current time).
-        fn step_to(&mut self, py: Python<'_>, t: f64) -> PyResult<()> {
+        /// Advances to exactly time `t` [s] (not before the current time); with `max_steps`, stops
+        /// after that many steps. Returns True once at `t` (False: the cap came first; call again).
+        #[pyo3(signature = (t, max_steps=None))]
+        fn step_to(&mut self, py: Python<'_>, t: f64, max_steps: Option<u64>) -> PyResult<bool> {
             let inner = &mut self.inner;
-            py.allow_threads(|| inner.step_to(t).and_then(|_| inner.check_finite())).map_err(to_py)
+            let cap = max_steps.unwrap_or(u64::MAX);
+            py.allow_threads(|| {
+                let reached = inner.step_to_capped(t, cap)?;
+                inner.check_finite().map(|_| reached)
+            })
+            .map_err(to_py)
         }
 
         /// Replaces the state (checked to lie on TS²).

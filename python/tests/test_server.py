@@ -16,6 +16,7 @@ import pytest
 from conftest import SCENARIOS
 from fastapi.testclient import TestClient
 from typer.testing import CliRunner
+from ws_session import LabClient
 
 import pendulab as pl
 from pendulab import cli
@@ -23,6 +24,7 @@ from pendulab.cli import serve as cli_serve
 from pendulab.server import FRAME_FIELDS, RECORD_BYTES, Session, create_app, decode_records, encode_records
 from pendulab.server import app as server_app
 from pendulab.server.app import MAX_PENDING
+from pendulab.server.budget import FIRST_SLICE, Budget
 from pendulab.server.protocol import (
     RECORD_LEN,
     CommandError,
@@ -32,14 +34,14 @@ from pendulab.server.protocol import (
     SetState,
     parse_command,
 )
-from pendulab.server.session import MAX_ELAPSED, MAX_STEPS_PER_TICK, MAX_SUBSAMPLES, resolve_scenario
+from pendulab.server.session import MAX_ELAPSED, MAX_SUBSAMPLES, resolve_scenario
 
 E, J3, TENSION = (FRAME_FIELDS.index(k) for k in ("energy", "j3", "tension"))
 
 
 @pytest.fixture(scope="module")
 def client() -> TestClient:
-    return TestClient(create_app("rosette"))
+    return LabClient(create_app("rosette"))
 
 
 def receive(ws: Any) -> tuple[str, Any]:
@@ -124,7 +126,7 @@ def test_exact_endpoint_names_bad_input(client: TestClient) -> None:
 def test_front_end_is_served_from_the_package(client: TestClient, tmp_path: Any) -> None:
     page = client.get("/")
     assert page.status_code == 200 and '<div id="gui">' in page.text
-    bare = TestClient(create_app(static_dir=tmp_path)).get("/")
+    bare = LabClient(create_app(static_dir=tmp_path)).get("/")
     assert bare.status_code == 503 and "make web" in bare.text
 
 
@@ -168,6 +170,8 @@ def test_pause_stops_and_step_takes_exactly_n_steps(client: TestClient) -> None:
         _, paused = until(ws, is_status(paused=True))
         t = paused["t"]
         ws.send_json({"type": "step", "n": 5})
+        _, s = until(ws, lambda k, v: k == "json")  # the status after the step: its t is the frame's
+        assert s["type"] == "status" and s["t"] == pytest.approx(t + 5 * 0.002, abs=1e-12)
         kind, rec = until(ws, lambda k, v: k == "frames" or (k == "json" and v["type"] == "error"))
         assert kind == "frames" and rec.shape == (1, len(FRAME_FIELDS))
         assert rec[0, 0] == pytest.approx(t + 5 * 0.002, abs=1e-12)
@@ -277,22 +281,23 @@ def test_pacing_follows_wall_clock_times_time_scale_in_whole_steps() -> None:
     rec = s.advance(0.05)
     assert rec is not None and len(rec) == 10 and rec[-1, 0] == pytest.approx(0.533, abs=1e-12)
     s.time_scale = 1000.0
-    rec = s.advance(1.0)  # a stall: catches up at most MAX_ELAPSED, in MAX_SUBSAMPLES records
+    rec = s.advance(1.0, Budget(60.0))  # a stall: catches up at most MAX_ELAPSED, in MAX_SUBSAMPLES records
     assert rec is not None and len(rec) == MAX_SUBSAMPLES
     assert rec[-1, 0] == pytest.approx(0.533 + 1000 * MAX_ELAPSED, abs=1e-9)
     s.apply(Pause(type="pause"))
     assert s.advance(0.05) is None
 
 
-def test_a_tick_never_takes_more_than_its_step_budget() -> None:
+def test_a_tick_stops_stepping_when_its_time_budget_is_spent_and_says_it_lags() -> None:
     s = session()
     s.apply(SetMethod(type="set_method", dt=1e-6))
     s.time_scale = 1000.0
-    rec = s.advance(0.05)
-    assert s.lagging and rec is not None
-    assert rec[-1, 0] == pytest.approx(MAX_STEPS_PER_TICK * 1e-6, rel=1e-9)
+    rec = s.advance(0.05, Budget(0.0))  # spent from the start: one slice of a new stepper, then stop
+    assert s.lagging and rec is not None and len(rec) == 1
+    assert rec[-1, 0] == pytest.approx(FIRST_SLICE * 1e-6, rel=1e-9)
+    assert s.clock == s.stepper.t  # behind real time, not piling up the missing time
     s.time_scale = 1.0
-    s.advance(0.001)
+    s.advance(0.001, Budget(60.0))
     assert not s.lagging
 
 

@@ -18,10 +18,11 @@ import numpy as np
 import pytest
 import ws_session
 from fastapi.testclient import TestClient
-from ws_session import receive, status_with
+from ws_session import LabClient, receive, status_with
 
 import pendulab as pl
 from pendulab.server import FRAME_FIELDS, Session, create_app
+from pendulab.server.budget import Budget
 from pendulab.server.protocol import parse_command
 from pendulab.server.session import resolve_scenario
 from pendulab.variants.string_pendulum import simulate_string
@@ -33,12 +34,18 @@ G = 9.81
 
 @pytest.fixture(scope="module")
 def client() -> TestClient:
-    return TestClient(create_app("rosette"))
+    return LabClient(create_app("rosette"))
 
 
 def until(ws: Any, pred: Any, limit: int = 2000) -> Any:
     """ws_session.until with room for the long runs of these sessions."""
     return ws_session.until(ws, pred, limit)
+
+
+def take_steps(s: Session, n: int) -> None:
+    """A ``step`` command of n steps, carried out at once (a tick's budget of a minute)."""
+    s.apply(parse_command(f'{{"type": "step", "n": {n}}}'))
+    s.take_pending_steps(Budget(60.0))
 
 
 def frames_until(ws: Any, t_end: float) -> np.ndarray:
@@ -187,7 +194,7 @@ def test_a_slack_string_keeps_its_mode_through_a_parameter_change_and_a_model_sw
     s = Session(resolve_scenario("string_slack"))
     rec = s.apply(parse_command('{"type": "set_state", "x": [0.3, 0.0, -0.4], "v": [1.0, 0.0, 0.5]}'))
     assert rec is not None and rec[0, F["taut"]] == 0.0  # inside the sphere: slack, taken as given
-    s.apply(parse_command('{"type": "step", "n": 50}'))
+    take_steps(s, 50)
     x_before = s.stepper.state.x.copy()
     rec = s.apply(parse_command('{"type": "set_params", "g": 9.0}'))
     assert rec is not None and rec[0, F["taut"]] == 0.0
@@ -208,7 +215,7 @@ def test_switching_to_the_spring_or_the_string_picks_a_method_that_runs_it() -> 
     s.apply(parse_command('{"type": "set_method", "method": "rattle4"}'))
     s.apply(parse_command('{"type": "set_model", "model": "spring"}'))
     assert s.status()["method"] == "rattle4"  # the spring's triple jump (order 4)
-    s.apply(parse_command('{"type": "step", "n": 10}'))
+    take_steps(s, 10)
     assert s.status()["t"] == pytest.approx(10 * s.dt)
 
 
@@ -250,7 +257,7 @@ def test_event_notices_keep_the_epoch_they_happened_in_and_a_flood_is_cut_to_the
 
     s = Session(resolve_scenario("string_slack"))
     assert s.take_event_notices() == []
-    s.apply(parse_command('{"type": "step", "n": 1500}'))  # past the leave (t ≈ 0.9 s at dt = 1e-3)
+    take_steps(s, 1500)  # past the leave (t ≈ 0.9 s at dt = 1e-3)
     epoch = s.epoch
     s.apply(parse_command('{"type": "reset"}'))
     notices = s.take_event_notices()

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 from typer.testing import CliRunner
-from ws_session import receive, status_with, until
+from ws_session import LabClient, receive, status_with, until
 
 import pendulab as pl
 from pendulab import cli
@@ -27,7 +27,7 @@ X, V, A, PIVOT = (slice(F[f"{k}1"], F[f"{k}1"] + 3) for k in ("x", "v", "a", "pi
 
 @pytest.fixture(scope="module")
 def client() -> TestClient:
-    return TestClient(create_app("rosette"))
+    return LabClient(create_app("rosette"))
 
 
 def error(k: str, v: Any) -> bool:
@@ -249,7 +249,7 @@ def test_effective_potential_is_t25_with_its_minimum_at_the_conical_orbit(client
 
 
 def test_one_client_too_many_is_refused_clearly_and_a_slot_frees_when_one_leaves() -> None:
-    with TestClient(create_app("rosette", max_sessions=1)) as c:
+    with LabClient(create_app("rosette", max_sessions=1)) as c:
         with c.websocket_connect("/ws") as ws1:
             until(ws1, frames)
             with c.websocket_connect("/ws") as ws2:
@@ -268,7 +268,7 @@ def test_one_client_too_many_is_refused_clearly_and_a_slot_frees_when_one_leaves
 
 
 def test_a_flooding_client_does_not_stall_another() -> None:
-    c = TestClient(create_app("rosette"))
+    c = LabClient(create_app("rosette"))
     with c, c.websocket_connect("/ws") as flood, c.websocket_connect("/ws") as calm:
         until(calm, frames)
         stop = threading.Event()
@@ -299,7 +299,7 @@ def test_a_flooding_client_does_not_stall_another() -> None:
 
 
 def test_a_client_vanishing_mid_stream_leaves_the_others_streaming_and_frees_its_slot() -> None:
-    c = TestClient(create_app("rosette", max_sessions=2))
+    c = LabClient(create_app("rosette", max_sessions=2))
     with c, c.websocket_connect("/ws") as steady:
         until(steady, frames)
         with c.websocket_connect("/ws") as gone:

@@ -6,6 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from fastapi.testclient import TestClient
+from ws_session import LabClient
 
 import pendulab as pl
 from pendulab.server import create_app
@@ -14,7 +15,7 @@ from pendulab.theory.reduce import invariants
 
 @pytest.fixture(scope="module")
 def client() -> TestClient:
-    return TestClient(create_app("rosette"))
+    return LabClient(create_app("rosette"))
 
 
 START = {"theta": 1.1, "phi": 0.2, "theta_dot": 0.4, "phi_dot": 1.7}

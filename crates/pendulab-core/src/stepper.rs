@@ -231,6 +231,16 @@ impl<M: Model> Stepper<M> {
     /// Advances to exactly `t_target` [s] (≥ the current time): fixed-step methods take full steps
     /// and shorten the last; `dop853` steps past nothing and lands on `t_target`.
     pub fn step_to(&mut self, t_target: f64) -> Result<()> {
+        self.step_to_capped(t_target, u64::MAX).map(|_| ())
+    }
+
+    /// [`Stepper::step_to`] taking at most `max_steps` steps: `Ok(true)` once exactly at `t_target`,
+    /// `Ok(false)` when the cap came first (the state is then that of the last step taken, before
+    /// `t_target`; calling again goes on with the same steps, so a run cut into capped calls is the
+    /// uncapped run). Bounds the work of one call, which an adaptive method cannot bound by the
+    /// length of time asked for (a fast forcing needs many steps per second): a live viewer calls it
+    /// in slices and stops at its time budget.
+    pub fn step_to_capped(&mut self, t_target: f64, max_steps: u64) -> Result<bool> {
         if t_target.is_nan() || t_target < self.t {
             return Err(Error::InvalidParameter {
                 name: "t_target",
@@ -238,10 +248,15 @@ impl<M: Model> Stepper<M> {
                 allowed: "the target time must be finite and not before the stepper's current time (s)",
             });
         }
+        let mut taken = 0u64;
         while self.t < t_target {
+            if taken == max_steps {
+                return Ok(false);
+            }
             self.step_towards(t_target)?;
+            taken += 1;
         }
-        Ok(())
+        Ok(true)
     }
 
     /// Dense output of `dop853` at `t_out` [s] inside its last step; `None` for other methods.

@@ -197,3 +197,25 @@ fn invariant_projection_leaves_a_decaying_j3_alone() {
     let want = j3(&m, &s0) * (-0.3f64 * 5.0).exp();
     assert!((j3(&m, st.state()) - want).abs() < 1e-9 * want.abs(), "{} vs {want}", j3(&m, st.state()));
 }
+
+#[test]
+fn capped_step_to_stops_at_the_cap_and_resumes_into_the_same_run() {
+    let (model, s0, _) = great_circle();
+    let opts = options(1e-10, true);
+    let mut whole = Stepper::new(model, 0.0, s0, &opts).unwrap();
+    whole.step_to(5.0).unwrap();
+    let steps = whole.stats().steps;
+    assert!(steps > 20, "{steps} steps");
+    let mut cut = Stepper::new(model, 0.0, s0, &opts).unwrap();
+    let mut calls = 0;
+    while !cut.step_to_capped(5.0, 7).unwrap() {
+        calls += 1;
+        assert!(cut.t() < 5.0 && cut.stats().steps == 7 * calls, "{} steps", cut.stats().steps);
+    }
+    assert_eq!(calls, (steps - 1) / 7);
+    // the same steps: bit for bit the uncapped run
+    assert_eq!((cut.t(), cut.state(), cut.stats()), (whole.t(), whole.state(), whole.stats()));
+    assert!(cut.step_to_capped(5.0, 0).unwrap(), "already there: no step needed");
+    assert!(!cut.step_to_capped(6.0, 0).unwrap() && cut.t() == 5.0);
+    assert!(cut.step_to_capped(4.0, 10).is_err(), "a target in the past is refused");
+}

@@ -103,7 +103,15 @@ def serve(
     max_sessions: Annotated[
         int,
         typer.Option(min=1, max=10_000, help="Most pages (WebSockets) served at once; one more is refused."),
-    ] = 16,
+    ] = 64,
+    allow_host: Annotated[
+        list[str] | None,
+        typer.Option(
+            help="Another Host name the lab answers to (repeatable; '*.example.org' a domain, '*' any). "
+            "Always: the loopback names, the --host address and, bound elsewhere, this machine's names.",
+            show_default=False,
+        ),
+    ] = None,
 ) -> None:
     """Start the lab: a web server with the 3-D pendulum, controls, live plots and the exact solution.
 
@@ -114,22 +122,30 @@ def serve(
         import uvicorn
 
         from ..server import create_app
+        from ..server.access import allowed_hosts
+        from ..server.serving import server_config
     except ImportError as e:
         _fail(
             f"pendulab serve needs FastAPI, uvicorn and websockets ({e}); "
             "install them with: pip install 'pendulab[lab]'"
         )
     with _user_errors():
-        lab = create_app(scenario, max_sessions=max_sessions)
+        hosts = allowed_hosts(host, allow_host or ())
+        lab = create_app(scenario, max_sessions=max_sessions, allowed_hosts=hosts)
     _check_port(host, port)
     url = url_for(host, port)
-    config = uvicorn.Config(lab, host=host, port=port, log_level="warning", ws_max_size=65536)
-    server = uvicorn.Server(config)
+    server = uvicorn.Server(server_config(lab, host, port, max_sessions=max_sessions))
     _say(f"Pendulab lab: {url}   (Ctrl-C stops the server)")
     if host not in ("127.0.0.1", "localhost", "::1"):
         _say(f"listening on {host}: reachable from other machines; anyone there can use the lab")
     if not no_browser and browser_available():
         threading.Thread(target=_open_when_up, args=(server, url), daemon=True).start()
-    server.run()
+    with contextlib.suppress(KeyboardInterrupt):  # uvicorn re-raises the Ctrl-C it handled: exit 0
+        server.run()
     if not server.started:
         _fail(f"the server could not start on {host}:{port}")
+    # Stopped (Ctrl-C): leave at once. Tearing the interpreter down (numpy, the core, the server's
+    # modules) adds most of a second on a loaded machine, and there is nothing left to clean up.
+    sys.stdout.flush()
+    sys.stderr.flush()
+    os._exit(0)

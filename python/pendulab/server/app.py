@@ -7,9 +7,10 @@
 - ``WS /ws``: one :class:`~pendulab.server.session.Session` per client. The handler runs two tasks:
   one reads and validates commands into a bounded inbox (a client that floods is throttled: beyond
   :data:`MAX_PENDING` waiting commands the rest are dropped with an error notice), the other ticks at
-  :data:`TICK_HZ`, applies waiting commands, advances the stepper to wall clock × time scale and sends
-  the frames. Only the ticker writes to the socket and touches the session. A client vanishing mid-
-  stream ends its own tasks only.
+  :data:`TICK_HZ` and hands the waiting commands to a worker thread (:mod:`.tick`), which applies
+  them and advances the stepper to wall clock × time scale within a wall-time budget; the ticker
+  sends what it returns. Only the ticker writes to the socket, only its worker touches the session.
+  A client vanishing mid-stream ends its own tasks only.
 - ``GET /api/schema``: every model's parameters (units, limits, defaults), controls, methods, frames.
 - ``GET /api/scenarios``: the example scenarios (model, pendulum, start, method, dt).
 - ``POST /api/exact``: the exact-solution quantities of a state (kind, turning heights, periods, phases).
@@ -18,17 +19,27 @@
 - ``POST /api/reduced``, ``POST /api/em_map``: the reduced view (σ-space) and the energy–momentum map.
 
 At most ``max_sessions`` clients are served at once (:data:`MAX_SESSIONS`); one more is refused.
+
+Every request first passes the access checks of :mod:`.access` (allowed ``Host`` names, same-origin
+pages only, the classroom token) and the HTTP hygiene of :mod:`.hygiene` (security headers, JSON bodies
+of at most 64 KiB); the computing POST endpoints run in a bounded thread pool (:data:`REST_THREADS`),
+never in the event loop. ``GET /api/docs`` is a self-contained page (:mod:`.api_docs`, no CDN).
 """
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
+import functools
 import logging
+import weakref
 from collections import deque
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, TypeVar
 
 import anyio
+import orjson
 from fastapi import FastAPI, Request, WebSocket, WebSocketDisconnect
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
@@ -36,10 +47,12 @@ from pydantic import BaseModel, ValidationError
 
 from .._core import IntegrationError, InvalidInputError, __version__
 from ..scenario import ScenarioError, load_scenario
+from .access import LOOPBACK_HOSTS, guard
+from .api_docs import api_docs_page
+from .hygiene import RequestBodies, SecurityHeaders
 from .protocol import (
     CommandError,
     ExactRequest,
-    encode_records,
     error_notice,
     parse_command,
     validation_problems,
@@ -53,6 +66,7 @@ from .rest import (
 )
 from .schema import TICK_HZ, schema
 from .session import Session, Setup, example_resolver, model_params, resolve_scenario, scenario_files
+from .tick import Message, first_messages, tick_messages
 from .views import EMRequest, ReducedRequest, em_view, reduced_view
 
 MAX_PENDING = 64
@@ -61,8 +75,20 @@ MAX_PENDING = 64
 MAX_PER_TICK = 32
 """Most commands applied per tick."""
 
-MAX_SESSIONS = 16
-"""Default for the most lab sessions (WebSockets) at once; more are refused with an error notice."""
+MAX_SESSIONS = 64
+"""Default for the most lab sessions (WebSockets) at once (a class of 30 with a second tab each); more
+are refused with an error notice."""
+
+STEP_THREADS = 4
+"""Worker threads stepping the sessions (each tick of each session is one job of at most about
+:data:`pendulab.server.budget.TICK_BUDGET` seconds; the core releases the GIL while stepping)."""
+
+REST_THREADS = 1
+"""Worker threads of the computing POST endpoints (exact, V_eff, reduced view, EM map, TOML): at most
+this many run at once (the machine's cores are shared with the live sessions); the rest wait."""
+
+REST_QUEUE = 32
+"""Most computing requests waiting for a worker; more are answered 503 (busy, try again)."""
 
 STATIC_DIR = Path(__file__).with_name("static")
 
@@ -107,8 +133,8 @@ async def _body(request: Request, kind: type[M]) -> M | JSONResponse:
     """The request's JSON body validated as ``kind``, or the HTTP 422 answer naming every problem."""
     try:
         body = await request.json()
-    except ValueError as e:
-        return JSONResponse({"detail": f"the body is not JSON: {e}"}, status_code=422)
+    except (ValueError, RecursionError) as e:  # RecursionError: nested too deeply
+        return JSONResponse({"detail": f"the body is not JSON: {str(e)[:200]}"}, status_code=422)
     try:
         return kind.model_validate(body)
     except ValidationError as e:
@@ -119,18 +145,63 @@ def _unprocessable(e: Exception) -> JSONResponse:
     return JSONResponse({"detail": " ".join(str(e).split())}, status_code=422)
 
 
+class _Busy(Exception):
+    pass
+
+
+def _json(fn: Callable[..., Any], *args: Any) -> Response:
+    """``fn(*args)`` as a JSON response, rendered where it is computed (a worker thread) with orjson: the
+    reduced view's largest answer (0.5 MB of numbers) takes 64 ms with the standard library, which
+    holds the GIL and so starves the event loop even from another thread, and 1 ms with orjson."""
+    return Response(orjson.dumps(fn(*args)), media_type="application/json")
+
+
+async def _compute(
+    limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter], fn: Callable[..., Any], *args: Any
+) -> Any:
+    """``fn(*args)`` in one of the REST worker threads; :class:`_Busy` when too many already wait."""
+    limiter = _loop_limiter(limiters, REST_THREADS)
+    if limiter.available_tokens == 0 and limiter.statistics().tasks_waiting >= REST_QUEUE:
+        raise _Busy
+    return await anyio.to_thread.run_sync(functools.partial(fn, *args), limiter=limiter)
+
+
 def create_app(
-    scenario: str | Path | None = None, *, static_dir: Path | None = None, max_sessions: int = MAX_SESSIONS
+    scenario: str | Path | None = None,
+    *,
+    static_dir: Path | None = None,
+    max_sessions: int = MAX_SESSIONS,
+    allowed_hosts: Sequence[str] = LOOPBACK_HOSTS,
+    token: str | None = None,
 ) -> FastAPI:
     """The lab application; every client starts with ``scenario`` (an example name or a file; default
     ``rosette``). At most ``max_sessions`` WebSockets are served at once: one more gets an ``error``
-    notice saying so and is closed (code 1013, try again later). Raises :class:`pendulab.ScenarioError`
-    for a bad scenario."""
+    notice saying so and is closed (code 1013, try again later). Only requests whose ``Host`` is one of
+    ``allowed_hosts`` are served (default: the loopback names; :func:`pendulab.server.access.allowed_hosts`
+    for another address), only the lab's own page may open ``/ws`` or POST, and with ``token`` every
+    request must carry it (classroom mode, :mod:`.access`). Raises :class:`pendulab.ScenarioError` for a
+    bad scenario."""
     default = resolve_scenario(scenario)
     resolve = example_resolver(default)
     static = STATIC_DIR if static_dir is None else static_dir
-    app = FastAPI(title="Pendulab lab", version=__version__, docs_url="/api/docs", redoc_url=None)
+    app = FastAPI(title="Pendulab lab", version=__version__, docs_url=None, redoc_url=None)
+    app.add_middleware(RequestBodies)
+    app.add_middleware(guard_middleware, hosts=list(allowed_hosts), token=token)
+    app.add_middleware(SecurityHeaders)
+    rest_limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
     active = 0
+
+    @app.exception_handler(_Busy)
+    async def busy(request: Request, exc: _Busy) -> JSONResponse:
+        return JSONResponse(
+            {"detail": f"busy: {REST_QUEUE} computations are waiting; try again in a moment"},
+            status_code=503,
+            headers={"retry-after": "1"},
+        )
+
+    @app.get("/api/docs", response_class=HTMLResponse, include_in_schema=False)
+    def api_docs() -> HTMLResponse:
+        return HTMLResponse(api_docs_page(app.openapi()))
 
     @app.get("/api/schema")
     def get_schema() -> dict[str, Any]:
@@ -149,7 +220,7 @@ def create_app(
         if isinstance(req, JSONResponse):
             return req
         try:
-            return JSONResponse(exact_quantities(req))
+            return await _compute(rest_limiters, _json, exact_quantities, req)
         except (InvalidInputError, IntegrationError) as e:
             return _unprocessable(e)
 
@@ -158,7 +229,7 @@ def create_app(
         req = await _body(request, PotentialRequest)
         if isinstance(req, JSONResponse):
             return req
-        return JSONResponse(effective_potential(req))
+        return await _compute(rest_limiters, _json, effective_potential, req)
 
     @app.post("/api/reduced")
     async def post_reduced(request: Request) -> JSONResponse:
@@ -166,7 +237,7 @@ def create_app(
         if isinstance(req, JSONResponse):
             return req
         try:
-            return JSONResponse(reduced_view(req))
+            return await _compute(rest_limiters, _json, reduced_view, req)
         except (InvalidInputError, IntegrationError) as e:
             return _unprocessable(e)
 
@@ -176,7 +247,7 @@ def create_app(
         if isinstance(req, JSONResponse):
             return req
         try:
-            return JSONResponse(em_view(req))
+            return await _compute(rest_limiters, _json, em_view, req)
         except (InvalidInputError, IntegrationError) as e:
             return _unprocessable(e)
 
@@ -186,7 +257,7 @@ def create_app(
         if isinstance(req, JSONResponse):
             return req
         try:
-            text = scenario_toml(req)
+            text = await _compute(rest_limiters, scenario_toml, req)
         except (ScenarioError, InvalidInputError) as e:
             return _unprocessable(e)
         return Response(
@@ -225,10 +296,31 @@ def create_app(
     return app
 
 
+def guard_middleware(app: Any, hosts: list[str], token: str | None) -> Any:
+    """The access checks of :mod:`.access` as one middleware (for ``app.add_middleware``)."""
+    return guard(app, hosts, token)
+
+
+def _loop_limiter(store: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter], tokens: int) -> Any:
+    """A capacity limiter of ``tokens`` for the running event loop (one per loop: the tests run apps in
+    several)."""
+    loop = asyncio.get_running_loop()
+    limiter = store.get(loop)
+    if limiter is None:
+        limiter = store[loop] = anyio.CapacityLimiter(tokens)
+    return limiter
+
+
+_STEP_LIMITERS: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
+
+
 async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ) -> None:
-    """Serves one client until it goes away (see the module doc)."""
+    """Serves one client until it goes away (see the module doc). Each tick's work — commands,
+    stepping, frames — runs in a worker thread (:func:`.tick.tick_messages`, at most
+    :data:`STEP_THREADS` at once); the event loop only moves messages."""
     inbox: deque[Any] = deque()
     dropped = 0
+    limiter = _loop_limiter(_STEP_LIMITERS, STEP_THREADS)
 
     async def receive() -> None:
         nonlocal dropped
@@ -247,11 +339,17 @@ async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ)
             else:
                 inbox.append(item)
 
+    async def send_all(messages: list[Message]) -> None:
+        for m in messages:
+            if isinstance(m, bytes):
+                await ws.send_bytes(m)
+            else:
+                await ws.send_json(m)
+
     async def tick() -> None:
         nonlocal dropped
         period = 1.0 / tick_hz
-        await ws.send_json(session.status())
-        await ws.send_bytes(encode_records(session.records()))
+        await send_all(await anyio.to_thread.run_sync(first_messages, session, limiter=limiter))
         last = next_tick = anyio.current_time()
         while True:
             next_tick += period
@@ -261,20 +359,7 @@ async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ)
             await anyio.sleep(delay)
             now = anyio.current_time()
             elapsed, last = now - last, now
-            changed, records = False, None
-            for _ in range(min(len(inbox), MAX_PER_TICK)):
-                item = inbox.popleft()
-                if isinstance(item, CommandError):
-                    await ws.send_json(error_notice(str(item), item.command))
-                    continue
-                changed = True
-                try:
-                    out = session.apply(item)
-                except CommandError as e:
-                    await ws.send_json(error_notice(str(e), e.command))
-                    continue
-                if out is not None:
-                    records = out  # only the last discontinuity matters; the status below announces it
+            commands = [inbox.popleft() for _ in range(min(len(inbox), MAX_PER_TICK))]
             if dropped:
                 await ws.send_json(
                     error_notice(
@@ -283,23 +368,8 @@ async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ)
                     )
                 )
                 dropped = 0
-            if changed:
-                await ws.send_json(session.status())
-            was_lagging = session.lagging
-            try:
-                advanced = session.advance(elapsed)
-            except CommandError as e:
-                await ws.send_json(error_notice(str(e)))
-                await ws.send_json(session.status())
-                advanced = None
-            if records is not None:
-                await ws.send_bytes(encode_records(records))
-            if advanced is not None:
-                await ws.send_bytes(encode_records(advanced))
-            for notice in session.take_event_notices():  # the string's leaves and snaps, after their frames
-                await ws.send_json(notice)
-            if session.lagging != was_lagging:
-                await ws.send_json(session.status())
+            work = functools.partial(tick_messages, session, commands, elapsed)
+            await send_all(await anyio.to_thread.run_sync(work, limiter=limiter))
 
     async with anyio.create_task_group() as tg:
 

@@ -11,8 +11,10 @@ Fixed-step methods take whole steps of exactly ``dt`` (``Stepper.step(n)``), so 
 same sequence of steps as ``pl.simulate`` with that ``dt`` — the frames show the method's true long-time
 behaviour; the adaptive ``dop853`` lands on the target times with ``step_to``. Each tick sends up to
 :data:`MAX_SUBSAMPLES` records spread over the tick's simulated interval (more when faster than real
-time, so trails and plots stay smooth) and never takes more than :data:`MAX_STEPS_PER_TICK` steps;
-when that limit bites, the simulation runs slower than asked and ``status.lagging`` says so.
+time, so trails and plots stay smooth). A tick's stepping — a ``step`` command's n steps and the
+advance — shares one wall-time budget (:mod:`.budget`): the core is called in slices until the work is
+done or the budget spent; then the simulation runs slower than asked and ``status.lagging`` says so
+(a ``step`` of many steps goes on at the next ticks, its frame sent when done).
 """
 
 from __future__ import annotations
@@ -28,6 +30,7 @@ from .._core import IntegrationError, InvalidInputError
 from ..model import Pendulum, State
 from ..scenario import ScenarioError
 from ..simulation import Stepper, methods
+from .budget import Budget, Slicer
 from .live_models import (
     DEFAULT_METHOD,
     OWN_STEPPER_MODELS,
@@ -61,8 +64,9 @@ from .scenarios import Setup, example_resolver, resolve_scenario, scenario_files
 
 __all__ = ["Session", "Setup", "example_resolver", "model_params", "resolve_scenario", "scenario_files"]
 
-MAX_STEPS_PER_TICK = 200_000
-"""Most integrator steps one tick may take (about 7 ms of RATTLE on the reference machine)."""
+MAX_PENDING_STEPS = 1_000_000
+"""Most steps of ``step`` commands waiting to be taken; a ``step`` beyond is refused (it would keep the
+session busy for long)."""
 
 MAX_SUBSAMPLES = 16
 """Most frame records sent per tick."""
@@ -144,6 +148,8 @@ class Session:
         self.paused = False
         self.epoch = 0
         self.lagging = False
+        self.pending_steps = 0
+        self._slicer = Slicer()
         self._adaptive = {m["name"]: bool(m["adaptive"]) for m in methods()}
         self._events: list[tuple[dict[str, Any], int]] = []
         self._load(setup)
@@ -185,6 +191,8 @@ class Session:
             self.stepper = Stepper(p, state, method=self.method, dt=dt, rtol=self.rtol, atol=self.atol, t0=t)
         self.pendulum = p
         self.clock = t
+        self.pending_steps = 0  # a `step` still under way belonged to the stepper replaced
+        self._slicer.reset()
 
     @property
     def adaptive(self) -> bool:
@@ -304,13 +312,19 @@ class Session:
                 return None
             case Resume():
                 self.paused = False
+                self.pending_steps = 0
                 self.clock = self.stepper.t
                 return None
             case Step():
+                if self.pending_steps + cmd.n > MAX_PENDING_STEPS:
+                    raise CommandError(
+                        f"still stepping: {self.pending_steps} steps are waiting to be taken (at most "
+                        f"{MAX_PENDING_STEPS}); wait for the frame, or pause",
+                        command="step",
+                    )
                 self.paused = True
-                self.stepper.step(cmd.n)
-                self.clock = self.stepper.t
-                return self.records()
+                self.pending_steps += cmd.n  # taken within the tick's budget (take_pending_steps)
+                return None
             case Reset():
                 self._new_stepper(self._start_state(), self.t0)
                 self.epoch += 1
@@ -323,13 +337,32 @@ class Session:
 
     # --- pacing ---
 
-    def advance(self, elapsed: float) -> np.ndarray | None:
-        """Advances by ``elapsed`` wall-clock seconds × time_scale; the records to send (or None).
+    def take_pending_steps(self, budget: Budget) -> np.ndarray | None:
+        """Takes the waiting steps of ``step`` commands within ``budget``; the frame record of the state
+        reached (None when none were waiting). Raises :class:`CommandError` (command ``step``) and
+        pauses when the integration cannot go on."""
+        if self.pending_steps <= 0:
+            return None
+        try:
+            self.pending_steps -= self._slicer.steps(self.stepper.step, self.pending_steps, budget)
+        except IntegrationError as e:
+            self.pending_steps = 0
+            raise CommandError(
+                f"integration stopped at t = {self.stepper.t:g} s: {e}; paused", "step"
+            ) from None
+        self.clock = self.stepper.t
+        return self.records()
+
+    def advance(self, elapsed: float, budget: Budget | None = None) -> np.ndarray | None:
+        """Advances by ``elapsed`` wall-clock seconds × time_scale within ``budget`` (default: a new
+        :class:`Budget` of one tick); the records to send (or None). Out of budget, it stops where it
+        got to and sets ``lagging``.
 
         Raises :class:`CommandError` (command None) and pauses when the integration cannot go on.
         """
         if self.paused:
             return None
+        budget = Budget() if budget is None else budget
         elapsed = min(max(float(elapsed), 0.0), MAX_ELAPSED)
         t = self.stepper.t
         self.clock = max(self.clock, t) + elapsed * self.time_scale
@@ -337,35 +370,56 @@ class Session:
         try:
             if self.adaptive:
                 targets = [t + (self.clock - t) * (i + 1) / n_sub for i in range(n_sub)]
-                return self._sample(lambda k: self.stepper.step_to(targets[k]), n_sub)
+                stepper = self.stepper
+                assert isinstance(stepper, Stepper)
+
+                def to_target(k: int) -> bool:
+                    target = targets[k]
+
+                    def capped(cap: int) -> bool:
+                        stepper.step_to(target, max_steps=cap)
+                        return stepper.t >= target
+
+                    return self._slicer.until(capped, budget)
+
+                return self._sample(to_target, n_sub)
             n = math.floor((self.clock - t) / self.dt + 1e-9)
-            lagging = n > MAX_STEPS_PER_TICK
-            if lagging:
-                n = MAX_STEPS_PER_TICK
-                self.clock = t + n * self.dt
-            self.lagging = lagging
             if n <= 0:
+                self.lagging = False
                 return None
             n_sub = min(n_sub, n)
             bounds = [round(n * (i + 1) / n_sub) for i in range(n_sub)]
             steps = [b - a for a, b in zip([0, *bounds[:-1]], bounds, strict=True)]
-            return self._sample(lambda k: self.stepper.step(steps[k]), n_sub)
+            return self._sample(
+                lambda k: self._slicer.steps(self.stepper.step, steps[k], budget) == steps[k], n_sub
+            )
         except IntegrationError as e:
             self.paused = True
             raise CommandError(f"integration stopped at t = {self.stepper.t:g} s: {e}; paused") from None
 
-    def _sample(self, advance: Callable[[int], object], n: int) -> np.ndarray:
-        if not isinstance(self.stepper, Stepper):
-            rows = []
-            for k in range(n):
-                advance(k)
-                rows.append(own_record(self.stepper))
-            return np.vstack(rows)
+    def _sample(self, advance: Callable[[int], bool], n: int) -> np.ndarray:
+        """Records of the states after ``advance(k)`` for k < n; ``advance`` returns False when the
+        budget ran out first: the records stop there, the session lags (its clock is set back to
+        where the stepper got, so the missing time is not piled up)."""
+        done = True
+        taken = 0
         ts = np.empty(n)
         xs = np.empty((n, 3))
         vs = np.empty((n, 3))
+        rows = []
         for k in range(n):
-            advance(k)
-            s = self.stepper.state
-            ts[k], xs[k], vs[k] = self.stepper.t, s.x, s.v
-        return state_records(self.pendulum, ts, xs, vs)
+            done = advance(k)
+            if isinstance(self.stepper, Stepper):
+                s = self.stepper.state
+                ts[taken], xs[taken], vs[taken] = self.stepper.t, s.x, s.v
+            else:
+                rows.append(own_record(self.stepper))
+            taken += 1
+            if not done:
+                break
+        self.lagging = not done
+        if not done:
+            self.clock = self.stepper.t
+        if not isinstance(self.stepper, Stepper):
+            return np.vstack(rows)
+        return state_records(self.pendulum, ts[:taken], xs[:taken], vs[:taken])

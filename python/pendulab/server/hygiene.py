@@ -1,0 +1,187 @@
+"""HTTP hygiene of the lab server (docs/web.md, "Security"): security headers on every response, JSON
+bodies only and capped, slow clients timed out.
+
+- :class:`SecurityHeaders`: ``X-Content-Type-Options: nosniff``, a ``Content-Security-Policy`` that
+  lets the page load and connect to its own origin only (:func:`content_security_policy`; styles may be
+  inline, as lil-gui injects its own), ``frame-ancestors 'self'`` (no foreign page frames the lab),
+  ``Referrer-Policy: no-referrer`` (the classroom token never leaves in a ``Referer``) and
+  ``Cross-Origin-Resource-Policy: same-origin``.
+- :class:`RequestBodies`: a request with a body (POST …) must say ``Content-Type: application/json``
+  (else 415: a foreign page cannot send such a request without a CORS preflight, which this server
+  never grants); a declared ``Content-Length`` over :data:`MAX_BODY_BYTES` is refused with 413 before
+  anything is read, a longer chunked body as soon as it passes the limit; the whole body must arrive
+  within :data:`BODY_TIMEOUT` seconds (else 408). The endpoint then reads the body from memory.
+- :class:`TimedH11Protocol`: uvicorn's HTTP/1.1 protocol with a deadline for the request *headers*
+  (:data:`HEADER_TIMEOUT`): a connection that opens and sends its headers slowly or never
+  (slowloris) is closed. uvicorn itself times out only idle keep-alive connections.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import re
+
+import anyio
+from starlette.datastructures import Headers, MutableHeaders
+from starlette.responses import PlainTextResponse
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
+from uvicorn.protocols.http.h11_impl import H11Protocol
+
+MAX_BODY_BYTES = 64 * 1024
+"""Largest request body [bytes] (the lab's requests are a few hundred bytes)."""
+
+BODY_TIMEOUT = 10.0
+"""Most seconds a request body may take to arrive."""
+
+HEADER_TIMEOUT = 10.0
+"""Most seconds a connection may take to send a request's headers."""
+
+_HOST_RE = re.compile(r"^[A-Za-z0-9.\-]+(:\d{1,5})?$|^\[[0-9A-Fa-f:.]+\](:\d{1,5})?$")
+
+
+def content_security_policy(host: str | None) -> str:
+    """The page's own origin only: scripts, styles, images, fonts and connections (including its own
+    WebSocket, named explicitly for browsers whose ``'self'`` does not cover ws:); no plugins, no base
+    or form elsewhere, framed only by itself."""
+    connect = "'self'"
+    if host and _HOST_RE.match(host):
+        connect += f" ws://{host} wss://{host}"
+    return (
+        "default-src 'self'; script-src 'self'; style-src 'self' 'unsafe-inline'; "
+        "img-src 'self' data: blob:; font-src 'self' data:; "
+        f"connect-src {connect}; object-src 'none'; base-uri 'self'; form-action 'self'; "
+        "frame-ancestors 'self'"
+    )
+
+
+class SecurityHeaders:
+    """ASGI middleware adding the security headers of the module doc to every HTTP response."""
+
+    def __init__(self, app: ASGIApp) -> None:
+        self.app = app
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        csp = content_security_policy(Headers(scope=scope).get("host"))
+
+        async def send_with_headers(message: Message) -> None:
+            if message["type"] == "http.response.start":
+                headers = MutableHeaders(scope=message)
+                headers.setdefault("x-content-type-options", "nosniff")
+                headers.setdefault("content-security-policy", csp)
+                headers.setdefault("x-frame-options", "SAMEORIGIN")
+                headers.setdefault("referrer-policy", "no-referrer")
+                headers.setdefault("cross-origin-resource-policy", "same-origin")
+            await send(message)
+
+        await self.app(scope, receive, send_with_headers)
+
+
+class RequestBodies:
+    """ASGI middleware: the JSON-only, size-capped, time-limited request bodies of the module doc."""
+
+    def __init__(self, app: ASGIApp, max_bytes: int = MAX_BODY_BYTES, timeout: float | None = None) -> None:
+        self.app = app
+        self.max_bytes = max_bytes
+        self.timeout = BODY_TIMEOUT if timeout is None else timeout
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http" or scope["method"] in ("GET", "HEAD", "OPTIONS"):
+            await self.app(scope, receive, send)
+            return
+        headers = Headers(scope=scope)
+        media = headers.get("content-type", "").split(";")[0].strip().lower()
+        if media != "application/json":
+            shown = media or "none"
+            await _answer(
+                scope,
+                receive,
+                send,
+                415,
+                f"the body must be JSON (Content-Type: application/json), got {shown}",
+            )
+            return
+        declared = headers.get("content-length")
+        if declared is not None and (not declared.isdigit() or int(declared) > self.max_bytes):
+            await _answer(scope, receive, send, 413, self._too_long(declared))
+            return
+        chunks: list[bytes] = []
+        size = 0
+        try:
+            with anyio.fail_after(self.timeout):
+                while True:
+                    message = await receive()
+                    if message["type"] == "http.disconnect":
+                        return
+                    chunk = message.get("body", b"")
+                    size += len(chunk)
+                    if size > self.max_bytes:
+                        await _answer(scope, receive, send, 413, self._too_long(f"more than {size}"))
+                        return
+                    chunks.append(chunk)
+                    if not message.get("more_body", False):
+                        break
+        except TimeoutError:
+            await _answer(scope, receive, send, 408, f"the body did not arrive within {self.timeout:g} s")
+            return
+        body = b"".join(chunks)
+        sent = False
+
+        async def replay() -> Message:
+            nonlocal sent
+            if not sent:
+                sent = True
+                return {"type": "http.request", "body": body, "more_body": False}
+            return await receive()
+
+        await self.app(scope, replay, send)
+
+    def _too_long(self, size: str) -> str:
+        return f"the body is too long ({size} bytes); at most {self.max_bytes} bytes"
+
+
+async def _answer(scope: Scope, receive: Receive, send: Send, status: int, message: str) -> None:
+    response = PlainTextResponse(message + "\n", status_code=status, headers={"connection": "close"})
+    await response(scope, receive, send)
+
+
+class TimedH11Protocol(H11Protocol):
+    """uvicorn's h11 protocol with a deadline for each request's headers (:data:`HEADER_TIMEOUT`,
+    from the first byte of a request on a kept-alive connection, from the connection on a new one)."""
+
+    header_timeout = HEADER_TIMEOUT
+
+    def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
+        self._header_timer: asyncio.TimerHandle | None = None
+        super().connection_made(transport)
+        self._arm()
+
+    def _waiting_for_headers(self) -> bool:
+        return self.transport.get_protocol() is self and (self.cycle is None or self.cycle.response_complete)
+
+    def _arm(self) -> None:
+        if self._header_timer is None:
+            self._header_timer = self.loop.call_later(self.header_timeout, self._too_slow)
+
+    def _disarm(self) -> None:
+        if self._header_timer is not None:
+            self._header_timer.cancel()
+            self._header_timer = None
+
+    def _too_slow(self) -> None:
+        self._header_timer = None
+        if self._waiting_for_headers() and not self.transport.is_closing():
+            self.transport.close()
+
+    def data_received(self, data: bytes) -> None:
+        if self._waiting_for_headers():
+            self._arm()
+        super().data_received(data)
+        if not self._waiting_for_headers():
+            self._disarm()  # the headers are in (or the connection became a WebSocket)
+
+    def connection_lost(self, exc: Exception | None) -> None:
+        self._disarm()
+        super().connection_lost(exc)

@@ -1,0 +1,55 @@
+"""How ``pendulab serve`` runs the lab with uvicorn (docs/web.md, "Security"): the HTTP protocol with a
+header deadline (:class:`~.hygiene.TimedH11Protocol`), message and connection limits, and a shutdown
+that ends within :data:`SHUTDOWN_GRACE` seconds whatever the clients do.
+
+uvicorn handles Ctrl-C (SIGINT) and SIGTERM itself: its main loop notices them within 0.1 s, stops
+listening, closes every WebSocket (code 1012) and, after ``timeout_graceful_shutdown``, cancels what is
+still running. That works only while the event loop is free, which the lab guarantees by stepping in
+worker threads with a wall-time budget per tick (:mod:`.tick`); a worker thread finishes its tick
+within that budget.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import uvicorn
+
+from .hygiene import HEADER_TIMEOUT, TimedH11Protocol
+
+SHUTDOWN_GRACE = 0.5
+"""Seconds the open connections get to close after Ctrl-C or SIGTERM before they are cut."""
+
+WS_MAX_BYTES = 65536
+"""Largest WebSocket message uvicorn reads [bytes] (a command is a few hundred bytes; longer ones are
+closed with code 1009); the session refuses commands over 4096 characters itself."""
+
+KEEP_ALIVE = 5
+"""Seconds an idle HTTP keep-alive connection stays open."""
+
+
+def server_config(
+    app: Any,
+    host: str,
+    port: int,
+    *,
+    max_sessions: int = 64,
+    header_timeout: float = HEADER_TIMEOUT,
+    log_level: str = "warning",
+) -> uvicorn.Config:
+    """The uvicorn configuration of the lab: ``app`` on ``host``:``port`` with the limits of the module
+    doc; at most ``max_sessions`` + 64 connections at once (the pages' WebSockets and their requests;
+    beyond that uvicorn answers 503)."""
+    protocol = type("LabH11Protocol", (TimedH11Protocol,), {"header_timeout": float(header_timeout)})
+    return uvicorn.Config(
+        app,
+        host=host,
+        port=port,
+        log_level=log_level,
+        http=protocol,
+        ws_max_size=WS_MAX_BYTES,
+        timeout_keep_alive=KEEP_ALIVE,
+        timeout_graceful_shutdown=SHUTDOWN_GRACE,  # type: ignore[arg-type]  # uvicorn waits a float
+        limit_concurrency=max_sessions + 64,
+        server_header=False,
+    )

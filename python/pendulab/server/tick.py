@@ -1,0 +1,115 @@
+"""One tick of a lab session, as it runs in a worker thread (docs/web.md, "Pacing").
+
+The WebSocket handler (:func:`pendulab.server.app.run_session`) collects the commands waiting for the
+tick and hands them, with the wall-clock time elapsed, to :func:`tick_messages` in a worker thread
+(``anyio.to_thread``; the core releases the GIL while it steps), then sends what it returns. So the
+event loop never steps: however much work a session asks for, other sessions, the REST endpoints and
+Ctrl-C are served. In one tick, within one wall-time budget (:mod:`.budget`):
+
+1. the commands, in order (an ``error`` notice for each one refused), then the waiting steps of
+   ``step`` commands; a ``status`` after them (and when a ``step`` of several ticks is done);
+2. the advance to the wall clock × time scale;
+3. the frames (the last discontinuity's record, the ``step`` frame, the advance's records), then the
+   string's ``event`` notices, and a ``status`` when ``lagging`` changed.
+
+**No frame carries a non-finite number.** Records are checked before they are encoded: from the first
+record with a NaN or ±∞ on, nothing is sent, the session pauses and an ``error`` notice names the
+quantities that overflowed and the time (:func:`finite_records`). The parameters' bounds (the core's
+model registry, docs/models.md "Limits") keep this from happening for the models as registered; the
+check is the last line.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from .budget import TICK_BUDGET, Budget
+from .protocol import FRAME_FIELDS, CommandError, encode_records, error_notice
+from .session import Session
+
+Message = dict[str, Any] | bytes
+"""A JSON notice (dict) or a binary frame message (bytes)."""
+
+
+def finite_records(session: Session, records: np.ndarray | None, out: list[Message]) -> bool:
+    """Appends ``records`` (encoded) to ``out`` up to the first one holding a non-finite value; if there
+    is one, pauses the session, appends an ``error`` notice naming the quantities and the time, and a
+    ``status``, and returns False."""
+    if records is None or len(records) == 0:
+        return True
+    finite = np.isfinite(records)
+    good = finite.all(axis=1)
+    if good.all():
+        out.append(encode_records(records))
+        return True
+    first = int(np.argmin(good))
+    if first > 0:
+        out.append(encode_records(records[:first]))
+    bad = [FRAME_FIELDS[i] for i in np.flatnonzero(~finite[first])]
+    t = records[first, FRAME_FIELDS.index("t")]
+    when = f"t = {t:.6g} s" if np.isfinite(t) else f"t ≈ {session.stepper.t:.6g} s"
+    session.paused = True
+    session.pending_steps = 0
+    out.append(
+        error_notice(
+            f"the motion left floating point at {when}: {', '.join(bad[:6])} not finite "
+            f"(parameters or a start this extreme drive it beyond 1e308); paused — reset, or change "
+            f"the parameters"
+        )
+    )
+    out.append(session.status())
+    return False
+
+
+def first_messages(session: Session) -> list[Message]:
+    """What a new connection gets first: the status and the current state's frame."""
+    out: list[Message] = [session.status()]
+    finite_records(session, session.records(), out)
+    return out
+
+
+def tick_messages(
+    session: Session, commands: list[Any], elapsed: float, budget_seconds: float = TICK_BUDGET
+) -> list[Message]:
+    """Carries out one tick of ``session`` (the module doc): ``commands`` are parsed commands or
+    :class:`CommandError` for refused messages, ``elapsed`` the wall-clock seconds since the last tick.
+    Returns the messages to send, in order. Not thread-safe per session: one tick at a time."""
+    budget = Budget(budget_seconds)
+    out: list[Message] = []
+    changed = False
+    records = None
+    for item in commands:
+        if isinstance(item, CommandError):
+            out.append(error_notice(str(item), item.command))
+            continue
+        changed = True
+        try:
+            result = session.apply(item)
+        except CommandError as e:
+            out.append(error_notice(str(e), e.command))
+            continue
+        if result is not None:
+            records = result  # only the last discontinuity matters; the status below announces it
+    was_lagging = session.lagging
+    stepped = advanced = None
+    try:
+        stepped = session.take_pending_steps(budget)
+    except CommandError as e:
+        out.append(error_notice(str(e), e.command))
+        changed = True
+    if changed or (stepped is not None and session.pending_steps == 0):
+        out.append(session.status())  # after the commands and a finished `step`: its t is the frame's
+    try:
+        advanced = session.advance(elapsed, budget)
+    except CommandError as e:
+        out.append(error_notice(str(e), e.command))
+        out.append(session.status())
+    for part in (records, stepped, advanced):
+        if not finite_records(session, part, out):
+            break  # paused: nothing after the first non-finite record
+    out.extend(session.take_event_notices())  # the string's leaves and snaps, after their frames
+    if session.lagging != was_lagging:
+        out.append(session.status())
+    return out
