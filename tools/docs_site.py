@@ -52,10 +52,12 @@ CLI_MARKER = "<!-- cli-reference -->"
 
 # Sphinx roles in docstrings (``:class:`pendulab.X```), which Markdown renders as ``:class:<code>…``.
 _ROLE = re.compile(r":(?:class|func|meth|mod|attr|data|exc|obj|ref):(<code>)~?")
-# A resource loaded from the network: <script src=http…>, <link … href=http…> (stylesheets, fonts,
-# preconnect), @import url(http…) and url(http…) in inline styles.
+# A resource loaded from the network: <script src=http…>, <link rel=stylesheet|icon|preload|… href=http…>
+# (not rel=canonical, which `mkdocs serve` sets and which loads nothing), @import and url(http…).
 _REMOTE = re.compile(
-    r"""<script\b[^>]*\bsrc=["']?(?:https?:)?//|<link\b[^>]*\bhref=["']?(?:https?:)?//"""
+    r"""<script\b[^>]*\bsrc=["']?(?:https?:)?//"""
+    r"""|<link\b(?=[^>]*\brel=["']?(?:stylesheet|preload|modulepreload|icon|shortcut|preconnect|manifest"""
+    r"""|dns-prefetch))[^>]*\bhref=["']?(?:https?:)?//"""
     r"""|@import\s+(?:url\()?["']?(?:https?:)?//|url\(["']?(?:https?:)?//""",
     re.IGNORECASE,
 )
