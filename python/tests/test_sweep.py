@@ -131,7 +131,6 @@ def test_dask_local_cluster_equals_threads(reference: pl.SweepResult) -> None:
     """A real dask.distributed LocalCluster (2 worker processes, 1 thread each), reached at its tcp://
     address, gives the threads backend's numbers exactly, for every quantity."""
     distributed = pytest.importorskip("distributed")
-    t0 = time.perf_counter()
     with distributed.LocalCluster(
         n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=logging.ERROR
     ) as cluster:
@@ -141,7 +140,6 @@ def test_dask_local_cluster_equals_threads(reference: pl.SweepResult) -> None:
         )
     assert "2 worker threads" in res.stats["backend"] and res.stats["computed"] == 6
     _same(reference, res)
-    assert time.perf_counter() - t0 < 10.0
 
 
 def test_unreachable_scheduler_is_a_clear_error(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -152,7 +150,8 @@ def test_unreachable_scheduler_is_a_clear_error(monkeypatch: pytest.MonkeyPatch)
         OSError, match=r"cannot reach the Dask scheduler at tcp://127\.0\.0\.1:1 within 0\.5 s"
     ):
         pl.sweep({"theta0": [1.0]}, "period", scheduler="tcp://127.0.0.1:1")
-    assert time.perf_counter() - t0 < 3.0
+    # the 0.5 s limit is what ends the wait (Dask's own default is 30 s), however loaded the machine
+    assert time.perf_counter() - t0 < 20.0
 
 
 def _count_chunks(monkeypatch: pytest.MonkeyPatch, hook: Any = None) -> list[int]:
