@@ -31,6 +31,8 @@ import { driftScales } from './panels/plots';
 import { Recorder } from './record';
 import { accessibleSliders, ownsKeys, shortcutFor } from './keyboard';
 import { energySplit } from './measure';
+import { FitDataPanel } from './panels/fitdata';
+import { loadCommands } from './fitdata';
 import type { EnergySplit } from './measure';
 
 declare global {
@@ -60,6 +62,8 @@ declare global {
       lastVideo: () => { size: number; head: string } | null;
       /** The live plots' y scales (key, distribution — 3 is log —, range). */
       plotScales: () => { key: string; distr: number; min: number | null; max: number | null }[];
+      /** The number of points of a fitted data file's measured path drawn in the scene (0: none). */
+      measuredPoints: () => number;
     };
   }
 }
@@ -194,6 +198,16 @@ async function main(): Promise<void> {
     },
   });
   const energy = new EnergyBars(byId('energy'));
+  // a measured data file fitted by the server: its scenario loaded like a shared link, its path drawn
+  new FitDataPanel(byId('tools'), {
+    loaded: (answer, name) => {
+      scene.setMeasured(answer.measured?.x ?? null);
+      if (answer.lab !== null) for (const c of loadCommands(answer.lab)) send(c);
+      explain(t('fit.loaded', { name }), true);
+    },
+    cleared: () => scene.setMeasured(null),
+    explain,
+  });
 
   const controls = new Controls(byId('gui'), schema, scenarios, view, {
     send,
@@ -343,6 +357,7 @@ async function main(): Promise<void> {
     energy: () => energy.shown,
     lastVideo: () => lastVideo,
     plotScales: () => plots.scales(),
+    measuredPoints: () => scene.measuredPoints(),
   };
   let lastWall = performance.now();
   // the scene follows every frame; the panels (numbers, plots, portraits) at 10 Hz, which reads as live

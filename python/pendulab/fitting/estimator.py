@@ -59,6 +59,10 @@ def _angles_of(pendulum: Pendulum, state: State) -> dict[str, float]:
     }
 
 
+class _TimeUp(Exception):
+    """The search ran past ``time_limit``."""
+
+
 def _windows(t: FloatArray, period: float) -> list[int]:
     """Sample counts of growing time windows [t₀, t₀ + 4T·2ᵏ) shorter than the data (T the estimated
     period): fitting them in turn keeps each stage's phase error small, so that a long record does
@@ -144,6 +148,7 @@ def fit(
     loss: str = "linear",
     max_evaluations: int = 2000,
     progress: bool | None = None,
+    time_limit: float | None = None,
 ) -> FitResult:
     """Fits a pendulum to data: times ``t`` [s] with one or more of ``positions`` [m] (N, 3) or (N, 2)
     = (x, z) seen along y, ``angles`` = (θ, φ) [rad], ``planar_angle`` [rad], ``specific_force``
@@ -157,13 +162,17 @@ def fit(
     kind → number; None: estimated from the residual). ``loss``: SciPy's "linear", "soft_l1",
     "huber", "cauchy" or "arctan" (robust against outliers; scale 1 σ). At most ``max_evaluations``
     runs of the model per start. Returns a :class:`FitResult`; Ctrl-C returns the best values so far
-    (``converged`` False). Raises :class:`pendulab.InvalidInputError` naming bad data or settings."""
+    (``converged`` False), and so does reaching ``time_limit`` [s] of search (default: none; the
+    error analysis after it adds a few model runs per unknown). Raises
+    :class:`pendulab.InvalidInputError` naming bad data or settings."""
     from scipy.optimize import least_squares
 
     pendulum = Pendulum() if pendulum is None else pendulum
     if not isinstance(pendulum, Pendulum):
         raise InvalidInputError(f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}")
     model = check_model(pendulum)
+    if time_limit is not None and not (isinstance(time_limit, int | float) and time_limit > 0.0):
+        raise InvalidInputError(f"time_limit = {time_limit!r} must be a positive number of seconds or None")
     if loss not in ("linear", "soft_l1", "huber", "cauchy", "arctan"):
         raise InvalidInputError(f"loss = {loss!r}: use linear, soft_l1, huber, cauchy or arctan")
     if (
@@ -211,7 +220,7 @@ def fit(
     bar = tqdm(total=len(starts), desc="fit", unit="start", leave=False) if show else None
     best: dict[str, Any] = {"cost": math.inf, "u": None, "res": None}
     began = time.perf_counter()
-    interrupted = False
+    interrupted, why = False, "interrupted"
 
     u_start = np.array([start[n] for n in free], dtype=np.float64)
     logged = np.array([n in POSITIVE and start[n] > 0.0 for n in free])
@@ -231,6 +240,8 @@ def fit(
 
     def run(u0: FloatArray, weights: Mapping[str, float], on: Problem = problem, tol: float = 1e-10) -> Any:
         def fun(u: FloatArray) -> FloatArray:
+            if time_limit is not None and best["u"] is not None and time.perf_counter() - began > time_limit:
+                raise _TimeUp
             r = on.safe_residuals(u, weights)
             if on is problem:
                 cost = 0.5 * float(r @ r)
@@ -281,11 +292,11 @@ def fit(
                 sig[kind] = max(float(np.sqrt(np.mean(part**2))), 1e-300)
             best["cost"], best["res"] = math.inf, run(best["res"].x, sig)
             del r
-    except KeyboardInterrupt:
+    except (KeyboardInterrupt, _TimeUp) as e:
         interrupted = True
-        warnings.warn(
-            "fit interrupted (Ctrl-C): returning the best values reached", RuntimeWarning, stacklevel=2
-        )
+        cause = "Ctrl-C" if isinstance(e, KeyboardInterrupt) else f"the time limit of {time_limit:g} s"
+        why = f"interrupted ({cause})"
+        warnings.warn(f"fit {why}: returning the best values reached", RuntimeWarning, stacklevel=2)
     finally:
         if bar is not None:
             bar.close()
@@ -293,7 +304,7 @@ def fit(
         u, status, message = best["res"].x, int(best["res"].status), str(best["res"].message)
         converged = status > 0
     elif best["u"] is not None:
-        u, converged, message = best["u"], False, "interrupted"
+        u, converged, message = best["u"], False, why
     else:
         raise InvalidInputError(
             "the model could not be evaluated at any start: check the data and the pendulum"

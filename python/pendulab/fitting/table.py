@@ -54,9 +54,16 @@ def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -
         raise InvalidInputError(f"{p}: cannot read: {e.strerror or e}") from e
     if len(text) > MAX_BYTES:
         raise InvalidInputError(f"{p}: more than {MAX_BYTES} bytes")
+    return parse_table(text, columns, str(p))
+
+
+def parse_table(text: str, columns: list[str] | None = None, where: str = "<data>") -> dict[str, Any]:
+    """The text of a data file (see the module doc) as the keyword arguments of :func:`pendulab.fit`;
+    ``where`` names it in error messages (a path, or e.g. the uploaded file's name). The caller bounds
+    its size (:func:`read_table` at :data:`MAX_BYTES`)."""
     lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     if not lines:
-        raise InvalidInputError(f"{p}: no data rows")
+        raise InvalidInputError(f"{where}: no data rows")
     try:
         dialect: Any = csv.Sniffer().sniff(lines[0], delimiters=",;\t ")
     except csv.Error:
@@ -70,8 +77,10 @@ def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -
         header, rows = rows[0], rows[1:]
     names = columns if columns is not None else header
     if names is None:
-        raise InvalidInputError(f"{p}: the file has no header row: name its columns (e.g. --columns t,x,y,z)")
-    names = _columns(list(names), str(p))
+        raise InvalidInputError(
+            f"{where}: the file has no header row: name its columns (e.g. --columns t,x,y,z)"
+        )
+    names = _columns(list(names), where)
     unknown = [n for n in names if n not in KNOWN]
     if unknown and columns is not None:
         raise InvalidInputError(f"unknown column name(s) {unknown}; use {', '.join(sorted(KNOWN))}")
@@ -79,14 +88,16 @@ def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -
     data = np.full((len(rows), width), np.nan)
     for i, r in enumerate(rows):
         if len(r) < width:
-            raise InvalidInputError(f"{p}: row {i + 1} has {len(r)} values, the columns are {width}: {names}")
+            raise InvalidInputError(
+                f"{where}: row {i + 1} has {len(r)} values, the columns are {width}: {names}"
+            )
         for j in range(width):
             cell = r[j].strip()
             try:
                 data[i, j] = float(cell) if cell not in ("", "nan", "NaN", "NA") else np.nan
             except ValueError as e:
                 raise InvalidInputError(
-                    f"{p}: row {i + 1}, column {names[j]!r}: {cell[:40]!r} is not a number"
+                    f"{where}: row {i + 1}, column {names[j]!r}: {cell[:40]!r} is not a number"
                 ) from e
     col = {n: data[:, j] for j, n in enumerate(names) if n in KNOWN and n != "-"}
     out: dict[str, Any] = {"t": col["t"]}
@@ -96,7 +107,8 @@ def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -
         out["positions"] = np.column_stack([col["x"], col["z"]])
     elif {"x", "y"} <= col.keys() and "z" not in col:
         raise InvalidInputError(
-            f"{p}: columns x, y but no z: a camera's (horizontal, vertical) are x, z here (z up); rename them"
+            f"{where}: columns x, y but no z: a camera's (horizontal, vertical) are x, z here (z up); "
+            "rename them"
         )
     if {"theta", "phi"} <= col.keys():
         out["angles"] = np.column_stack([col["theta"], col["phi"]])
@@ -106,5 +118,5 @@ def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -
         if kind in col:
             out[kind] = col[kind]
     if len(out) == 1:
-        raise InvalidInputError(f"{p}: no data columns among {names}; see docs/fit.md for the names")
+        raise InvalidInputError(f"{where}: no data columns among {names}; see docs/fit.md for the names")
     return out

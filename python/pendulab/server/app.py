@@ -17,13 +17,16 @@
 - ``POST /api/effective_potential``: V_eff(θ) for l, m, g, J₃.
 - ``POST /api/scenario.toml``: a session's scenario as a TOML file for ``pendulab run``.
 - ``POST /api/reduced``, ``POST /api/em_map``: the reduced view (σ-space) and the energy–momentum map.
+- ``POST /api/fit``: a measured data file fitted (:mod:`.fit`): report, parameters ± errors, the fitted
+  scenario and the measured path.
 
 At most ``max_sessions`` clients are served at once (:data:`MAX_SESSIONS`); one more is refused.
 
 Every request first passes the access checks of :mod:`.access` (allowed ``Host`` names, same-origin
 pages only, the classroom token) and the HTTP hygiene of :mod:`.hygiene` (security headers, JSON bodies
-of at most 64 KiB); the computing POST endpoints run in a bounded thread pool (:data:`REST_THREADS`),
-never in the event loop. ``GET /api/docs`` is a self-contained page (:mod:`.api_docs`, no CDN).
+of at most 64 KiB, a data file for ``/api/fit`` of at most 2 MiB); the computing POST endpoints run in a
+bounded thread pool (:data:`REST_THREADS`; fits in their own, :mod:`.fit`), never in the event loop.
+``GET /api/docs`` is a self-contained page (:mod:`.api_docs`, no CDN).
 """
 
 from __future__ import annotations
@@ -49,6 +52,7 @@ from .._core import IntegrationError, InvalidInputError, __version__
 from ..scenario import ScenarioError, load_scenario
 from .access import LOOPBACK_HOSTS, guard
 from .api_docs import api_docs_page
+from .fit import MAX_FIT_BODY, post_fit
 from .hygiene import RequestBodies, SecurityHeaders
 from .protocol import (
     CommandError,
@@ -185,7 +189,7 @@ def create_app(
     resolve = example_resolver(default)
     static = STATIC_DIR if static_dir is None else static_dir
     app = FastAPI(title="Pendulab lab", version=__version__, docs_url=None, redoc_url=None)
-    app.add_middleware(RequestBodies)
+    app.add_middleware(RequestBodies, larger={"/api/fit": MAX_FIT_BODY})
     app.add_middleware(guard_middleware, hosts=list(allowed_hosts), token=token)
     app.add_middleware(SecurityHeaders)
     rest_limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
@@ -265,6 +269,8 @@ def create_app(
             media_type="application/toml; charset=utf-8",
             headers={"content-disposition": 'attachment; filename="pendulab-scenario.toml"'},
         )
+
+    app.add_api_route("/api/fit", post_fit, methods=["POST"])
 
     @app.websocket("/ws")
     async def websocket(ws: WebSocket) -> None:

@@ -8,7 +8,8 @@ bodies only and capped, slow clients timed out.
   ``Cross-Origin-Resource-Policy: same-origin``.
 - :class:`RequestBodies`: a request with a body (POST …) must say ``Content-Type: application/json``
   (else 415: a foreign page cannot send such a request without a CORS preflight, which this server
-  never grants); a declared ``Content-Length`` over :data:`MAX_BODY_BYTES` is refused with 413 before
+  never grants); a declared ``Content-Length`` over :data:`MAX_BODY_BYTES` (or the path's own limit
+  given as ``larger``: ``/api/fit`` takes data files of 2 MiB) is refused with 413 before
   anything is read, a longer chunked body as soon as it passes the limit; the whole body must arrive
   within :data:`BODY_TIMEOUT` seconds (else 408). The endpoint then reads the body from memory.
 - :class:`TimedH11Protocol`: uvicorn's HTTP/1.1 protocol with a deadline for the request *headers*
@@ -20,6 +21,7 @@ from __future__ import annotations
 
 import asyncio
 import re
+from collections.abc import Mapping
 
 import anyio
 from starlette.datastructures import Headers, MutableHeaders
@@ -82,9 +84,16 @@ class SecurityHeaders:
 class RequestBodies:
     """ASGI middleware: the JSON-only, size-capped, time-limited request bodies of the module doc."""
 
-    def __init__(self, app: ASGIApp, max_bytes: int = MAX_BODY_BYTES, timeout: float | None = None) -> None:
+    def __init__(
+        self,
+        app: ASGIApp,
+        max_bytes: int = MAX_BODY_BYTES,
+        timeout: float | None = None,
+        larger: Mapping[str, int] | None = None,
+    ) -> None:
         self.app = app
         self.max_bytes = max_bytes
+        self.larger = dict(larger or {})  # paths whose bodies may be longer: path → most bytes
         self.timeout = BODY_TIMEOUT if timeout is None else timeout
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
@@ -104,8 +113,9 @@ class RequestBodies:
             )
             return
         declared = headers.get("content-length")
-        if declared is not None and (not declared.isdigit() or int(declared) > self.max_bytes):
-            await _answer(scope, receive, send, 413, self._too_long(declared))
+        limit = self.larger.get(scope["path"], self.max_bytes)
+        if declared is not None and (not declared.isdigit() or int(declared) > limit):
+            await _answer(scope, receive, send, 413, self._too_long(declared, limit))
             return
         chunks: list[bytes] = []
         size = 0
@@ -117,8 +127,8 @@ class RequestBodies:
                         return
                     chunk = message.get("body", b"")
                     size += len(chunk)
-                    if size > self.max_bytes:
-                        await _answer(scope, receive, send, 413, self._too_long(f"more than {size}"))
+                    if size > limit:
+                        await _answer(scope, receive, send, 413, self._too_long(f"more than {size}", limit))
                         return
                     chunks.append(chunk)
                     if not message.get("more_body", False):
@@ -138,8 +148,8 @@ class RequestBodies:
 
         await self.app(scope, replay, send)
 
-    def _too_long(self, size: str) -> str:
-        return f"the body is too long ({size} bytes); at most {self.max_bytes} bytes"
+    def _too_long(self, size: str, limit: int) -> str:
+        return f"the body is too long ({size} bytes); at most {limit} bytes"
 
 
 async def _answer(scope: Scope, receive: Receive, send: Send, status: int, message: str) -> None:

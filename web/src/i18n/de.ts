@@ -226,6 +226,18 @@ export const DE: Words = {
   'msg.recording': 'die Ansicht wird aufgenommen…',
   'msg.recorded': 'Video gespeichert ({mb} MB, WebM)',
   'msg.noRecording': 'dieser Browser kann die Ansicht nicht aufnehmen ({why})',
+  'fit.title': 'Messdaten',
+  'fit.load': 'Messdaten laden…',
+  'fit.help': 'eine CSV-Datei mit Messwerten in SI-Einheiten (Spalten t, x, y, z oder x, z; theta, phi; angle; specific_force; angular_speed — docs/fit.md): der Server passt das Pendel an, lädt die angepasste Bewegung und zeichnet die gemessene Bahn gepunktet daneben',
+  'fit.model': 'Modell',
+  'fit.params': 'anpassen',
+  'fit.paramsDefault': 'was die Daten bestimmen',
+  'fit.paramsHelp': 'die anzupassenden Parameter, durch Kommas getrennt (z. B. length,g,damping,pivot); leer: was die Daten bestimmen können',
+  'fit.clear': 'gemessene Bahn löschen',
+  'fit.running': '{name} wird angepasst …',
+  'fit.noPath': '(Daten ohne Bezugssystem: keine Bahn zu zeichnen)',
+  'fit.failed': 'Anpassung: {why}',
+  'fit.loaded': '{name} angepasst: die angepasste Bewegung ist geladen, die gemessene Bahn orange gepunktet',
 };
 
 /** The registry's parameters in German: [label, help] by key (the units stay SI). */

@@ -224,6 +224,18 @@ export const EN = {
   'msg.recording': 'recording the view…',
   'msg.recorded': 'video saved ({mb} MB, WebM)',
   'msg.noRecording': 'this browser cannot record the view ({why})',
+  'fit.title': 'Measured data',
+  'fit.load': 'Load measured data…',
+  'fit.help': 'a CSV file of measurements in SI units (columns t, x, y, z or x, z; theta, phi; angle; specific_force; angular_speed — docs/fit.md): the server fits the pendulum to it, loads the fitted motion and draws the measured path dotted beside it',
+  'fit.model': 'model',
+  'fit.params': 'fit',
+  'fit.paramsDefault': 'what the data determine',
+  'fit.paramsHelp': 'the parameters to fit, comma separated (e.g. length,g,damping,pivot); empty: what the data can determine',
+  'fit.clear': 'clear measured path',
+  'fit.running': 'fitting {name} …',
+  'fit.noPath': '(frame-free data: no measured path to draw)',
+  'fit.failed': 'fit: {why}',
+  'fit.loaded': 'fitted {name}: the fitted motion is loaded, the measured path dotted in orange',
 };
 
 export type Words = { readonly [K in keyof typeof EN]: string };

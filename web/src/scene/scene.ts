@@ -22,6 +22,7 @@ import { Instruments } from './instruments';
 import { MaskAnaglyph } from './anaglyph';
 import { framingDistance, reachLines, sphereBox } from './framing';
 import { TwinDrawing } from './twin';
+import { MeasuredDrawing } from './measured';
 
 export { framingDistance } from './framing';
 export { TWIN_COLOR } from './twin';
@@ -138,6 +139,8 @@ export class PendulumScene {
   private readonly boom: THREE.Line;
   /** The second pendulum (two-pendulum mode): bob, rod and trail (twin.ts). */
   private readonly twin = new TwinDrawing();
+  /** A fitted data file's measured path, dotted (measured.ts). */
+  private readonly measured = new MeasuredDrawing();
   /** The camera follows the pivot (the slewing crane: the pendulum stays framed as the boom turns). */
   private follow = false;
   private followAt: THREE.Vector3 | null = null;
@@ -255,6 +258,7 @@ export class PendulumScene {
       this.handle,
       this.boom,
       this.twin.group,
+      this.measured.line,
       this.instruments.ruler,
       this.instruments.protractor,
       ...Object.values(this.arrows),
@@ -491,6 +495,17 @@ export class PendulumScene {
   updateTwin(f: Frame | null, trail: TrailSlice): void {
     this.twin.update(f, trail);
     this.invalid = true;
+  }
+
+  /** Draws a measured path: bob positions [m] relative to the pivot (null: none). */
+  setMeasured(x: readonly Vec3[] | null): void {
+    this.measured.set(x);
+    this.invalid = true;
+  }
+
+  /** The number of measured points drawn (for tests). */
+  measuredPoints(): number {
+    return this.measured.points;
   }
 
   /** The box [CSS px] of the sphere of reach (its silhouette: points around its outline as seen from the

@@ -1,0 +1,257 @@
+"""``POST /api/fit``: a measured data file fitted in the lab (docs/fit.md, "In the lab"; docs/web.md).
+
+The page sends the text of a CSV data file (the format of :mod:`pendulab.fitting.table`, which parses
+it: t [s]; x, y, z [m]; theta, phi, angle [rad]; specific_force [m/s²]; angular_speed [rad/s]), the
+model and the parameters to fit; :func:`fit_data` runs :func:`pendulab.fit` (T-10.1 … T-10.4 of
+docs/theory.md) and answers with
+
+- ``report``: the text of :meth:`pendulab.FitResult.report`, and the ``warnings`` the fit gave;
+- ``params``: name → value, standard error (null where the data do not determine it), unit, and
+  ``determined``; ``combinations`` what the data determine instead; ``chi2``, ``dof``, ``converged``;
+- ``scenario_toml``: the fitted scenario (:meth:`pendulab.FitResult.to_scenario` as TOML) and
+  ``lab``: the same scenario as the lab's scenarios are described (``GET /api/scenarios``), so that
+  the page can load it into the running session;
+- ``measured``: the measured path as bob positions relative to the FITTED pivot [m] (z up), at most
+  :data:`PATH_POINTS` of them (evenly thinned), with their times [s] from the first sample (the
+  fitted motion's t = 0). Positions (x, y, z) minus the fitted pivot; (x, z) seen along y get the
+  fitted motion's y; angles (θ, φ) and a planar angle become points on the fitted sphere of radius
+  l. Frame-free data (|a − g|, |ω|) have no path: ``measured`` is null.
+
+Work is bounded: the body is at most :data:`MAX_FIT_BODY` (the server's body check, :mod:`.hygiene`), the
+fits run one at a time in a worker thread of their own (:data:`FIT_THREADS`, :data:`FIT_QUEUE`), the search at
+most :data:`FIT_SECONDS` of wall time (then the best values reached are returned, marked not
+converged).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import math
+import warnings
+import weakref
+from typing import Any
+
+import anyio
+import numpy as np
+import orjson
+from fastapi import Request
+from fastapi.responses import JSONResponse, Response
+from pydantic import BaseModel, ConfigDict, Field, ValidationError
+
+from .._core import IntegrationError, InvalidInputError
+from ..fitting import FitResult, fit
+from ..fitting.problem import FITTABLE_MODELS
+from ..fitting.table import parse_table
+from ..model import FloatArray, Pendulum
+from .protocol import validation_problems
+from .scenarios import Setup
+from .session import model_params
+
+MAX_FIT_BYTES = 2 * 2**20
+"""Largest body of ``POST /api/fit`` [bytes] (about 50 000 rows of t, x, z)."""
+
+FIT_SECONDS = 20.0
+"""Most wall-time seconds of one fit's search (the error analysis after it adds a few model runs)."""
+
+PATH_POINTS = 2000
+"""Most points of the measured path sent to the page."""
+
+
+class FitRequest(BaseModel):
+    """Body of ``POST /api/fit``: the data file's text, its name (for messages), the model, the
+    parameters to fit (default by the data: see :func:`default_fit`), the column names when the file
+    has no header, and the noise of one value in the data's unit (default: from the residual)."""
+
+    model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
+
+    csv: str = Field(description="the data file's text (CSV, SI units)", max_length=MAX_FIT_BYTES)
+    name: str = Field("data", description="the file's name, for messages", max_length=200)
+    model: str = Field("damped", description=f"one of {', '.join(FITTABLE_MODELS)}", max_length=40)
+    fit: list[str] | None = Field(None, description="parameters to fit", max_length=24)
+    columns: list[str] | None = Field(None, description="the file's column names in order", max_length=32)
+    sigma: float | None = Field(None, description="noise of one value in the data's unit", gt=0.0, le=1e6)
+
+
+def default_fit(model: str, kinds: set[str]) -> list[str]:
+    """What the data can determine (docs/fit.md, "What the data determine"): positions give l, g and
+    the pivot; angles only g/l, so l with g fixed; frame-free scalars l and g; plus the damping of the
+    damped model. The start is always fitted."""
+    if "positions" in kinds:
+        names = ["length", "g", "pivot"]
+    elif kinds & {"angles", "planar_angle"}:
+        names = ["length"]
+    else:
+        names = ["length", "g"]
+    return names + (["damping"] if model == "damped" else [])
+
+
+def _thin(n: int) -> FloatArray:
+    """Indices of at most :data:`PATH_POINTS` evenly spread samples of n (the first and last kept)."""
+    return np.unique(np.linspace(0, n - 1, min(n, PATH_POINTS)).round().astype(np.int64))
+
+
+def measured_path(res: FitResult, data: dict[str, Any]) -> dict[str, Any] | None:
+    """The data as bob positions relative to the fitted pivot [m] (see the module doc), thinned, with
+    their times [s] from the first sample; None for frame-free data. Rows the fit dropped (NaN) are
+    left out, the rest sorted by time like the fit's."""
+    t = np.asarray(data["t"], dtype=np.float64)
+    values = {**res.fixed, **res.params}
+    ell = res.pendulum.length
+    along_y = False
+    if "positions" in data:
+        p = np.asarray(data["positions"], dtype=np.float64)
+        pivot = np.array([values.get(f"pivot_{a}", 0.0) for a in "xyz"])
+        along_y = p.shape[1] == 2
+        if along_y:
+            xyz = np.column_stack([p[:, 0] - pivot[0], np.zeros(len(p)), p[:, 1] - pivot[2]])
+        else:
+            xyz = p - pivot
+    elif "angles" in data:
+        theta, phi = np.asarray(data["angles"], dtype=np.float64).T
+        xyz = ell * np.column_stack(
+            [np.sin(theta) * np.cos(phi), np.sin(theta) * np.sin(phi), -np.cos(theta)]
+        )
+    elif "planar_angle" in data:
+        a = np.asarray(data["planar_angle"], dtype=np.float64)
+        xyz = ell * np.column_stack([np.sin(a), np.zeros_like(a), -np.cos(a)])
+    else:
+        return None
+    keep = np.isfinite(t) & np.isfinite(xyz).all(axis=1)
+    t, xyz = t[keep], xyz[keep]
+    order = np.argsort(t, kind="stable")
+    t, xyz = t[order], xyz[order]
+    if along_y:  # the camera saw x and z only: y is the fitted motion's at the same time
+        fitted = res.trajectory
+        xyz[:, 1] = np.interp(t - res.t0, fitted.t, fitted.x[:, 1])
+    idx = _thin(len(t))
+    return {
+        "t": [float(v) for v in t[idx] - res.t0],
+        "x": [[float(c) for c in row] for row in xyz[idx]],
+        "points": len(t),
+        "units": {"t": "s", "x": "m"},
+    }
+
+
+def _describe(setup: Setup) -> dict[str, Any]:
+    """The setup as ``GET /api/scenarios`` describes a scenario (the page loads it the same way)."""
+    p = setup.pendulum
+    return {
+        "name": None,
+        "title": setup.title,
+        "params": {"length": p.length, "mass": p.mass, "g": p.g},
+        "model": p.model,
+        "model_params": model_params(p),
+        "start": {"x": [float(c) for c in setup.state.x], "v": [float(c) for c in setup.state.v]},
+        "method": setup.method,
+        "dt": setup.dt,
+        "t0": setup.t0,
+    }
+
+
+def _finite(v: float) -> float | None:
+    return float(v) if math.isfinite(v) else None
+
+
+def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]:
+    """Parses and fits the data of ``req`` (see the module doc); JSON-ready. Raises
+    :class:`pendulab.InvalidInputError` naming what is wrong with the data or the settings."""
+    if req.model not in FITTABLE_MODELS:
+        raise InvalidInputError(f"model {req.model!r}: use one of {', '.join(FITTABLE_MODELS)}")
+    data = parse_table(req.csv, req.columns, req.name)
+    kinds = {k for k in data if k != "t"}
+    names = req.fit if req.fit is not None else default_fit(req.model, kinds)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = fit(
+            pendulum=Pendulum(model=req.model),
+            fit=names,
+            sigma=req.sigma,
+            progress=False,
+            time_limit=time_limit,
+            **data,
+        )
+    scenario = res.to_scenario(title=f"fitted to {req.name[:80]}")
+    try:
+        lab: dict[str, Any] | None = _describe(Setup.from_scenario(scenario, None))
+    except ValueError:  # ScenarioError: a model the lab does not run
+        lab = None
+    return {
+        "report": res.report(),
+        "warnings": [" ".join(str(w.message).split()) for w in caught],
+        "model": res.pendulum.model,
+        "fit": names,
+        "params": {
+            n: {
+                "value": res.params[n],
+                "stderr": _finite(res.stderr[n]) if res.determined[n] else None,
+                "unit": res.units.get(n, ""),
+                "determined": bool(res.determined[n]),
+            }
+            for n in res.names
+        },
+        "combinations": {k: {"value": v, "stderr": _finite(e)} for k, (v, e) in res.combinations.items()},
+        "chi2": _finite(res.chi2),
+        "dof": res.dof,
+        "converged": bool(res.converged),
+        "samples": len(res.t),
+        "dropped": res.dropped,
+        "scenario_toml": scenario.to_toml(),
+        "lab": lab,
+        "measured": measured_path(res, data),
+    }
+
+
+# --- the endpoint's plumbing (HTTP, threads) -------------------------------------------------------------
+
+MAX_FIT_BODY = MAX_FIT_BYTES + MAX_FIT_BYTES // 8
+"""Largest JSON body [bytes]: the file plus room for its escaping (a newline is sent as two bytes)."""
+
+FIT_THREADS = 1
+"""Fits running at once (each takes a core for up to :data:`FIT_SECONDS`); the others wait. A pool of
+their own: a fit takes seconds, and must not hold up the quick computing endpoints (``REST_THREADS``)."""
+
+FIT_QUEUE = 4
+"""Most fits waiting for the worker; more are answered 503 (busy, try again)."""
+
+_LIMITERS: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
+
+
+def _problem(status: int, detail: str) -> JSONResponse:
+    return JSONResponse({"detail": " ".join(detail.split())}, status_code=status)
+
+
+def _rendered(req: FitRequest) -> Response:
+    """:func:`fit_data` as a JSON response, rendered in the worker thread with orjson (as the other
+    computing endpoints: the measured path is some 100 kB of numbers)."""
+    return Response(orjson.dumps(fit_data(req)), media_type="application/json")
+
+
+async def post_fit(request: Request) -> Response:
+    """``POST /api/fit`` (see the module doc): 200 with the fit; 422 a bad body or bad data (naming the
+    problem), 503 when :data:`FIT_QUEUE` fits already wait. The server's :class:`.hygiene.RequestBodies`
+    has already answered 415 to another Content-Type than JSON and 413 to a body over
+    :data:`MAX_FIT_BODY`."""
+    body = await request.body()
+    try:
+        raw = json.loads(body)
+    except (ValueError, RecursionError) as e:  # RecursionError: nested too deeply
+        return _problem(422, f"the body is not JSON: {str(e)[:200]}")
+    try:
+        req = FitRequest.model_validate(raw)
+    except ValidationError as e:
+        return _problem(422, validation_problems(e, skip=0))
+    loop = asyncio.get_running_loop()
+    limiter = _LIMITERS.get(loop)
+    if limiter is None:
+        limiter = _LIMITERS[loop] = anyio.CapacityLimiter(FIT_THREADS)
+    if limiter.available_tokens == 0 and limiter.statistics().tasks_waiting >= FIT_QUEUE:
+        return JSONResponse(
+            {"detail": f"busy: {FIT_QUEUE} fits are waiting; try again in a moment"},
+            status_code=503,
+            headers={"retry-after": "5"},
+        )
+    try:
+        return await anyio.to_thread.run_sync(_rendered, req, limiter=limiter)
+    except (InvalidInputError, IntegrationError) as e:
+        return _problem(422, str(e))

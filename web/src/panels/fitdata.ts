@@ -1,0 +1,114 @@
+// The "Measured data" section of the panel (docs/fit.md, "In the lab"): a file input that posts a CSV data
+// file to POST /api/fit with the model and the parameters to fit, shows the server's report, hands the
+// fitted scenario and the measured path to the page (which loads the one into the session and draws the
+// other in the scene), and a button that clears the path. The checking and the commands are fitdata.ts's.
+import { FIT_MODELS, MAX_FIT_BYTES, fitRequest, paramLines, readFitAnswer } from '../fitdata';
+import type { FitAnswer } from '../fitdata';
+import { t } from '../i18n';
+
+export interface FitDataActions {
+  /** A fit of file `name` arrived: load its scenario, draw its measured path. */
+  loaded(answer: FitAnswer, name: string): void;
+  /** The measured path is to go. */
+  cleared(): void;
+  explain(text: string, info?: boolean): void;
+}
+
+function el<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Record<string, string> = {}, text = ''): HTMLElementTagNameMap[K] {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
+  if (text) e.textContent = text;
+  return e;
+}
+
+export class FitDataPanel {
+  readonly input: HTMLInputElement;
+  private readonly model: HTMLSelectElement;
+  private readonly names: HTMLInputElement;
+  private readonly clear: HTMLButtonElement;
+  private readonly report: HTMLPreElement;
+  private busy = false;
+
+  constructor(parent: HTMLElement, private readonly actions: FitDataActions) {
+    const s = el('section', { class: 'tools', 'data-tool': 'fit' });
+    s.appendChild(el('h3', {}, t('fit.title')));
+    const load = el('label');
+    load.append(`${t('fit.load')} `);
+    this.input = el('input', { type: 'file', accept: '.csv,.txt,.tsv,text/csv,text/plain', 'data-input': 'fit-file' });
+    load.appendChild(this.input);
+    load.title = t('fit.help');
+    const modelLabel = el('label');
+    modelLabel.append(`${t('fit.model')} `);
+    this.model = el('select', { 'data-input': 'fit-model' });
+    for (const m of FIT_MODELS) this.model.appendChild(el('option', { value: m }, m));
+    modelLabel.appendChild(this.model);
+    const namesLabel = el('label');
+    namesLabel.append(`${t('fit.params')} `);
+    this.names = el('input', { type: 'text', 'data-input': 'fit-params', placeholder: t('fit.paramsDefault') });
+    this.names.style.width = '12em';
+    namesLabel.appendChild(this.names);
+    namesLabel.title = t('fit.paramsHelp');
+    this.clear = el('button', { type: 'button', 'data-action': 'fit-clear' }, t('fit.clear'));
+    this.clear.disabled = true;
+    this.clear.addEventListener('click', () => this.reset());
+    this.report = el('pre', { class: 'fit-report', 'data-output': 'fit-report', 'aria-live': 'polite' });
+    this.report.hidden = true;
+    for (const row of [load, modelLabel, namesLabel, this.clear]) {
+      const p = el('p');
+      p.appendChild(row);
+      s.appendChild(p);
+    }
+    s.appendChild(this.report);
+    parent.appendChild(s);
+    this.input.addEventListener('change', () => {
+      const file = this.input.files?.[0];
+      if (file !== undefined) void this.send(file);
+    });
+  }
+
+  /** Clears the report and the measured path. */
+  reset(): void {
+    this.report.hidden = true;
+    this.report.textContent = '';
+    this.clear.disabled = true;
+    this.input.value = '';
+    this.actions.cleared();
+  }
+
+  private async send(file: File): Promise<void> {
+    if (this.busy) return;
+    const text = file.size > MAX_FIT_BYTES ? '' : await file.text();
+    const req = fitRequest(file.name, text, file.size, this.model.value, this.names.value);
+    if (typeof req === 'string') return this.actions.explain(req);
+    this.busy = true;
+    this.input.disabled = true;
+    this.report.hidden = false;
+    this.report.textContent = t('fit.running', { name: file.name });
+    try {
+      const r = await fetch('api/fit', {
+        method: 'POST',
+        headers: { 'content-type': 'application/json' },
+        body: JSON.stringify(req),
+      });
+      const raw: unknown = await r.json().catch(() => ({ detail: `HTTP ${r.status}` }));
+      if (!r.ok) {
+        const detail = (raw as { detail?: unknown }).detail;
+        throw new Error(typeof detail === 'string' ? detail : `HTTP ${r.status}`);
+      }
+      const answer = readFitAnswer(raw);
+      if (typeof answer === 'string') throw new Error(answer);
+      const lines = [answer.report, '', ...paramLines(answer.params), ...answer.warnings.map((w) => `warning: ${w}`)];
+      if (answer.measured === null) lines.push(t('fit.noPath'));
+      this.report.textContent = lines.join('\n');
+      this.clear.disabled = false;
+      this.actions.loaded(answer, file.name);
+    } catch (e: unknown) {
+      const why = e instanceof Error ? e.message : String(e);
+      this.report.textContent = `${file.name}: ${why}`;
+      this.actions.explain(t('fit.failed', { why }));
+    } finally {
+      this.busy = false;
+      this.input.disabled = false;
+    }
+  }
+}
