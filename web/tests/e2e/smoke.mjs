@@ -1,7 +1,7 @@
 // End-to-end test of the running lab in Debian's headless chromium (playwright-core; no browser download).
 // Run by tests/e2e/run.sh (`make test-e2e`), which starts the server; by hand:
 //   pendulab serve --no-browser --port 8765 &  node tests/e2e/smoke.mjs http://127.0.0.1:8765
-// Checks (more in models.mjs and classroom.mjs): no console errors, frames arrive and are drawn, the canvas shows the pendulum (pixels differ from
+// Checks (more in models.mjs, classroom.mjs and fitdata.mjs): no console errors, frames arrive and are drawn, the canvas shows the pendulum (pixels differ from
 // the background), the frame rate (median of the page's frame times, printed; above 25 fps, see MIN_FPS) and
 // the software renderer recognised (no MSAA there), negative g visibly changes the motion (the bob goes
 // above the pivot), pause stops the frames, the shared URL reproduces the scenario. Writes test-results/lab.png and test-results/lab-negative-g.png. Waits are generous (a loaded
@@ -11,6 +11,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
+import { checkFitData } from './fitdata.mjs';
 import { checkEnergyAndTwin, checkKeyboard, checkLanguage, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
@@ -178,6 +179,7 @@ try {
     ['keyboard', checkKeyboard],
     ['energy and two pendulums', checkEnergyAndTwin],
     ['recording and stereo', checkRecordingAndStereo],
+    ['measured data', checkFitData],
     ['language', checkLanguage],
   ]) {
     const t0 = Date.now();

@@ -1,0 +1,54 @@
+// End-to-end check of a measured data file in the lab (issue 18, docs/fit.md "In the lab"), run by smoke.mjs:
+// examples/data/filmed_swing.csv through the file input → the server's report, the fitted damped pendulum
+// loaded into the running session (its length the fitted one), the measured path drawn dotted in the scene
+// (orange pixels that were not there before), and cleared again. One fit of about a second on the server.
+
+/** Pixels of the measured path's orange (0xffa040) in the scene rendered now. */
+const orangePixels = (page) =>
+  page.evaluate(
+    () =>
+      new Promise((resolve) => {
+        const img = new Image();
+        img.onload = () => {
+          const c = document.createElement('canvas');
+          c.width = img.width;
+          c.height = img.height;
+          const g = c.getContext('2d');
+          g.drawImage(img, 0, 0);
+          const d = g.getImageData(0, 0, c.width, c.height).data;
+          let n = 0;
+          for (let i = 0; i < d.length; i += 4) if (d[i] > 200 && d[i + 1] > 120 && d[i + 1] < 190 && d[i + 2] < 110) n++;
+          resolve(n);
+        };
+        img.src = window.pendulab.screenshot();
+      }),
+  );
+
+export async function checkFitData(page, { check, WAIT }) {
+  const inkBefore = await orangePixels(page);
+  const input = page.locator('[data-input="fit-file"]');
+  await input.scrollIntoViewIfNeeded();
+  await input.setInputFiles('../examples/data/filmed_swing.csv');
+  const report = page.locator('[data-output="fit-report"]');
+  await page.waitForFunction(() => /fit of the damped pendulum/.test(document.querySelector('[data-output="fit-report"]')?.textContent ?? ''), null, { timeout: WAIT });
+  const text = (await report.textContent()) ?? '';
+  const fitted = Number(/^length = (\S+) ±/m.exec(text)?.[1]);
+  check(Math.abs(fitted - 0.62) < 0.02, `the lab fits filmed_swing.csv and shows the report (length = ${fitted} m; truth 0.620 m)`);
+  const loaded = await page
+    .waitForFunction(
+      (l) => window.pendulab.store.status?.model === 'damped' && Math.abs(window.pendulab.store.status.params.length - l) < 1e-5,
+      fitted,
+      { timeout: WAIT },
+    )
+    .then(() => true, () => false);
+  check(loaded, 'the fitted damped pendulum is loaded into the running session');
+  await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  const points = await page.evaluate(() => window.pendulab.measuredPoints());
+  const inkAfter = await orangePixels(page);
+  await page.screenshot({ path: 'test-results/measured-path.png' });
+  check(points > 500 && inkAfter > inkBefore + 50, `the measured path is drawn dotted (${points} points, ${inkAfter - inkBefore} more orange pixels)`);
+  await page.locator('[data-action="fit-clear"]').click();
+  const cleared = await page.evaluate(() => window.pendulab.measuredPoints());
+  check(cleared === 0 && (await report.isHidden()), 'the measured path and the report clear');
+  await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+}
