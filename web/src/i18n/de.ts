@@ -237,7 +237,7 @@ export const DE: Words = {
   'fit.running': '{name} wird angepasst …',
   'fit.noPath': '(Daten ohne Bezugssystem: keine Bahn zu zeichnen)',
   'fit.failed': 'Anpassung: {why}',
-  'fit.loaded': '{name} angepasst: die angepasste Bewegung ist geladen, die gemessene Bahn orange gepunktet',
+  'fit.loaded': '{name} angepasst: die angepasste Bewegung ist geladen, die gemessene Bahn golden gepunktet',
 };
 
 /** The registry's parameters in German: [label, help] by key (the units stay SI). */

@@ -235,7 +235,7 @@ export const EN = {
   'fit.running': 'fitting {name} …',
   'fit.noPath': '(frame-free data: no measured path to draw)',
   'fit.failed': 'fit: {why}',
-  'fit.loaded': 'fitted {name}: the fitted motion is loaded, the measured path dotted in orange',
+  'fit.loaded': 'fitted {name}: the fitted motion is loaded, the measured path dotted in gold',
 };
 
 export type Words = { readonly [K in keyof typeof EN]: string };

@@ -1,11 +1,11 @@
 // The measured path in the scene (docs/fit.md, "In the lab"): the bob positions of a fitted data file,
-// relative to the fitted pivot [m] (z up, the physics' own coordinates), drawn as a dotted orange polyline
+// relative to the fitted pivot [m] (z up, the physics' own coordinates), drawn as a dotted gold polyline
 // about the lab's pivot beside the live fitted motion. Only drawing; the server computes the points.
 import * as THREE from 'three';
 import type { Vec3 } from '../protocol';
 
-/** The colour of the measured path. */
-export const MEASURED_COLOR = 0xffa040;
+/** The colour of the measured path: gold, unlike the bob (orange), the trail and the axes. */
+export const MEASURED_COLOR = 0xffd700;
 
 /** Most points drawn (the server thins to 2000). */
 export const MEASURED_MAX = 4000;

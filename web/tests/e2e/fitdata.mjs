@@ -1,10 +1,10 @@
 // End-to-end check of a measured data file in the lab (issue 18, docs/fit.md "In the lab"), run by smoke.mjs:
 // examples/data/filmed_swing.csv through the file input → the server's report, the fitted damped pendulum
 // loaded into the running session (its length the fitted one), the measured path drawn dotted in the scene
-// (orange pixels that were not there before), and cleared again. One fit of about a second on the server.
+// (gold pixels, paused, that go when it is cleared), and cleared again. One fit of about a second on the server.
 
-/** Pixels of the measured path's orange (0xffa040) in the scene rendered now. */
-const orangePixels = (page) =>
+/** Pixels of the measured path's gold (0xffd700) in the scene rendered now. */
+const goldPixels = (page) =>
   page.evaluate(
     () =>
       new Promise((resolve) => {
@@ -17,7 +17,7 @@ const orangePixels = (page) =>
           g.drawImage(img, 0, 0);
           const d = g.getImageData(0, 0, c.width, c.height).data;
           let n = 0;
-          for (let i = 0; i < d.length; i += 4) if (d[i] > 200 && d[i + 1] > 120 && d[i + 1] < 190 && d[i + 2] < 110) n++;
+          for (let i = 0; i < d.length; i += 4) if (d[i] > 200 && d[i + 1] > 160 && d[i + 1] < 235 && d[i] - d[i + 1] > 15 && d[i + 2] < 100) n++;
           resolve(n);
         };
         img.src = window.pendulab.screenshot();
@@ -25,7 +25,6 @@ const orangePixels = (page) =>
   );
 
 export async function checkFitData(page, { check, WAIT }) {
-  const inkBefore = await orangePixels(page);
   const input = page.locator('[data-input="fit-file"]');
   await input.scrollIntoViewIfNeeded();
   await input.setInputFiles('../examples/data/filmed_swing.csv');
@@ -43,12 +42,15 @@ export async function checkFitData(page, { check, WAIT }) {
     .then(() => true, () => false);
   check(loaded, 'the fitted damped pendulum is loaded into the running session');
   await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  await page.waitForFunction(() => window.pendulab.store.status?.paused === true, null, { timeout: WAIT });
+  await page.waitForTimeout(300);
   const points = await page.evaluate(() => window.pendulab.measuredPoints());
-  const inkAfter = await orangePixels(page);
+  const inkWith = await goldPixels(page);
   await page.screenshot({ path: 'test-results/measured-path.png' });
-  check(points > 500 && inkAfter > inkBefore + 50, `the measured path is drawn dotted (${points} points, ${inkAfter - inkBefore} more orange pixels)`);
   await page.locator('[data-action="fit-clear"]').click();
   const cleared = await page.evaluate(() => window.pendulab.measuredPoints());
+  const inkWithout = await goldPixels(page);
+  check(points > 500 && inkWith > inkWithout + 50, `the measured path is drawn dotted (${points} points, ${inkWith} gold pixels, ${inkWithout} once cleared)`);
   check(cleared === 0 && (await report.isHidden()), 'the measured path and the report clear');
   await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
 }
