@@ -218,7 +218,7 @@ def fit(
     sig = {k: (s if s is not None else 1.0) for k, s in obs.sigma.items()}
     show = progress if progress is not None else len(obs) * len(starts) > 200_000
     bar = tqdm(total=len(starts), desc="fit", unit="start", leave=False) if show else None
-    best: dict[str, Any] = {"cost": math.inf, "u": None, "res": None}
+    best: dict[str, Any] = {"cost": math.inf, "u": None, "res": None, "last": None}
     began = time.perf_counter()
     interrupted, why = False, "interrupted"
 
@@ -240,9 +240,14 @@ def fit(
 
     def run(u0: FloatArray, weights: Mapping[str, float], on: Problem = problem, tol: float = 1e-10) -> Any:
         def fun(u: FloatArray) -> FloatArray:
-            if time_limit is not None and best["u"] is not None and time.perf_counter() - began > time_limit:
+            if (
+                time_limit is not None
+                and best["last"] is not None
+                and time.perf_counter() - began > time_limit
+            ):
                 raise _TimeUp
             r = on.safe_residuals(u, weights)
+            best["last"] = np.array(u, dtype=np.float64)  # on a window too: what an interruption returns
             if on is problem:
                 cost = 0.5 * float(r @ r)
                 if cost < best["cost"]:
@@ -303,8 +308,8 @@ def fit(
     if best["res"] is not None and not interrupted:
         u, status, message = best["res"].x, int(best["res"].status), str(best["res"].message)
         converged = status > 0
-    elif best["u"] is not None:
-        u, converged, message = best["u"], False, why
+    elif best["u"] is not None or best["last"] is not None:  # interrupted (in a window: its last values)
+        u, converged, message = best["u"] if best["u"] is not None else best["last"], False, why
     else:
         raise InvalidInputError(
             "the model could not be evaluated at any start: check the data and the pendulum"
