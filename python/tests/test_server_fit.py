@@ -145,3 +145,10 @@ def test_the_search_stops_at_its_time_limit() -> None:
     assert any("time limit" in str(w.message) for w in caught)
     with pytest.raises(pl.InvalidInputError, match="time_limit"):
         pl.fit(time_limit=-1.0, **data)
+
+
+def test_the_api_page_lists_the_body_of_the_fit(client: TestClient) -> None:
+    body = client.get("/openapi.json").json()["paths"]["/api/fit"]["post"]["requestBody"]
+    fields = body["content"]["application/json"]["schema"]["properties"]
+    assert {"csv", "name", "model", "fit", "columns", "sigma"} == set(fields)
+    assert "/api/fit" in client.get("/api/docs").text

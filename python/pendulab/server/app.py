@@ -52,7 +52,7 @@ from .._core import IntegrationError, InvalidInputError, __version__
 from ..scenario import ScenarioError, load_scenario
 from .access import LOOPBACK_HOSTS, guard
 from .api_docs import api_docs_page
-from .fit import MAX_FIT_BODY, post_fit
+from .fit import FIT_OPENAPI, MAX_FIT_BODY, post_fit
 from .hygiene import RequestBodies, SecurityHeaders
 from .protocol import (
     CommandError,
@@ -270,7 +270,7 @@ def create_app(
             headers={"content-disposition": 'attachment; filename="pendulab-scenario.toml"'},
         )
 
-    app.add_api_route("/api/fit", post_fit, methods=["POST"])
+    app.add_api_route("/api/fit", post_fit, methods=["POST"], openapi_extra=FIT_OPENAPI)
 
     @app.websocket("/ws")
     async def websocket(ws: WebSocket) -> None:

@@ -214,6 +214,14 @@ their own: a fit takes seconds, and must not hold up the quick computing endpoin
 FIT_QUEUE = 4
 """Most fits waiting for the worker; more are answered 503 (busy, try again)."""
 
+FIT_OPENAPI = {
+    "requestBody": {
+        "required": True,
+        "content": {"application/json": {"schema": FitRequest.model_json_schema()}},
+    }
+}
+"""The body's schema for the API page (``/api/docs``): the endpoint reads the body itself."""
+
 _LIMITERS: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
 
 
