@@ -112,32 +112,57 @@ def serve(
             show_default=False,
         ),
     ] = None,
+    token: Annotated[
+        str | None,
+        typer.Option(
+            help="Classroom mode with this access token (at least 8 characters); bound to a non-loopback "
+            "address a random one is made unless --no-token.",
+            show_default=False,
+        ),
+    ] = None,
+    no_token: Annotated[
+        bool,
+        typer.Option("--no-token", help="No access token, even on the network (anyone there may use it)."),
+    ] = False,
 ) -> None:
     """Start the lab: a web server with the 3-D pendulum, controls, live plots and the exact solution.
 
     Prints the URL (http://127.0.0.1:8000 by default) and opens it where a browser exists. Every page
     gets its own simulation, computed here by the core and streamed to the page. Ctrl-C stops it.
+    Bound beyond this machine (--host 0.0.0.0) it runs in classroom mode: the printed URL and QR code
+    carry a random access token that every page needs (docs/web.md, "Security").
     """
     try:
         import uvicorn
 
         from ..server import create_app
         from ..server.access import allowed_hosts
+        from ..server.classroom import access_token, lab_url, qr_text
         from ..server.serving import server_config
     except ImportError as e:
         _fail(
             f"pendulab serve needs FastAPI, uvicorn and websockets ({e}); "
             "install them with: pip install 'pendulab[lab]'"
         )
+    try:
+        secret = access_token(host, token, no_token)
+    except ValueError as e:
+        _fail(str(e))
     with _user_errors():
         hosts = allowed_hosts(host, allow_host or ())
-        lab = create_app(scenario, max_sessions=max_sessions, allowed_hosts=hosts)
+        lab = create_app(scenario, max_sessions=max_sessions, allowed_hosts=hosts, token=secret)
     _check_port(host, port)
-    url = url_for(host, port)
+    url = url_for(host, port) if secret is None else lab_url(host, port, secret)
     server = uvicorn.Server(server_config(lab, host, port, max_sessions=max_sessions))
     _say(f"Pendulab lab: {url}   (Ctrl-C stops the server)")
-    if host not in ("127.0.0.1", "localhost", "::1"):
-        _say(f"listening on {host}: reachable from other machines; anyone there can use the lab")
+    if secret is not None:
+        _say(qr_text(url).rstrip("\n"))
+        _say(
+            f"classroom mode: every page needs the token; open the address above or scan the code "
+            f"(a page keeps a cookie after its first visit). At most {max_sessions} pages at once."
+        )
+    elif host not in ("127.0.0.1", "localhost", "::1"):
+        _say(f"listening on {host} without a token (--no-token): anyone on the network can use the lab")
     if not no_browser and browser_available():
         threading.Thread(target=_open_when_up, args=(server, url), daemon=True).start()
     with contextlib.suppress(KeyboardInterrupt):  # uvicorn re-raises the Ctrl-C it handled: exit 0

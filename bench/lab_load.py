@@ -1,0 +1,225 @@
+"""Load of the lab server (``pendulab serve``, docs/web.md): many pages at once, and normal pages beside
+a greedy one. A script, not a timed test (docs/performance.md, "Lab server under load").
+
+Starts ``pendulab serve --no-browser`` on a free loopback port (a separate process, as a user runs it)
+and connects WebSocket clients from this process (asyncio, ``websockets``); each client counts the
+binary frame messages it receives (one per server tick, 60 Hz) and their wall-clock arrival times.
+Three phases, in one run on this machine:
+
+1. **baseline**: one client alone for T seconds — the reference the others are compared with;
+2. **load**: N clients (default 50) at once for T seconds (default 60);
+3. **greedy neighbour**: one client doing the most expensive things the server allows — the damped
+   model with the largest forcing amplitude and frequency of the registry, ``dop853`` and time scale
+   1000, then a stream of ``step n=100000`` at ``rattle8``, dt = 1e-6 — beside 10 normal clients.
+
+For each phase: frames/s per client (min, median), the inter-frame gaps pooled over the clients
+(p50, p99, max) [ms], the server's CPU [% of one core] and resident memory (largest sampled) [MiB],
+and the ratio of the median frames/s to the baseline's. Targets of issue 12 on a 2-core machine when
+otherwise idle: 50 × 60 s at ≥ 57 frames/s each with p99 gap ≤ 40 ms; beside the greedy client the
+normal ones ≥ 55 frames/s with no gap > 250 ms. The machine's load average is printed with the
+figures: the clients share the machine with the server, and so does anything else running.
+
+Run: ``.venv/bin/python bench/lab_load.py [--clients 50] [--seconds 60] [--markdown FILE]``
+(about 2.5 min with the defaults).
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pendulab as pl
+import psutil
+from websockets.asyncio.client import connect
+
+
+def _max(model: str, name: str) -> float:
+    """The registry's largest allowed value (1e4 where it has none)."""
+    spec = next(p for m in pl.models() if m["name"] == model for p in m["params"] if p["name"] == name)
+    return float(spec["max"]) if np.isfinite(spec["max"]) else 1e4
+
+
+GREEDY_RUN = [
+    {
+        "type": "set_model",
+        "model": "damped",
+        "params": {
+            "forcing_amplitude": _max("damped", "forcing_amplitude"),
+            "forcing_omega": _max("damped", "forcing_omega"),
+            "forcing_x": 1.0,
+        },
+    },
+    {"type": "set_method", "method": "dop853"},
+    {"type": "set_time_scale", "time_scale": 1000.0},
+]
+GREEDY_STEP = [
+    {"type": "set_model", "model": "ideal"},
+    {"type": "set_method", "method": "rattle8", "dt": 1e-6},
+]
+
+
+@dataclass
+class Client:
+    """One page: the arrival times [s] of its frame messages."""
+
+    arrivals: list[float] = field(default_factory=list)
+
+    async def run(self, url: str, seconds: float, start: asyncio.Event) -> None:
+        """Receives all the time (nothing waits in a buffer); counts the frames that arrive within
+        ``seconds`` after ``start`` is set."""
+        async with connect(url, max_size=2**22, max_queue=None) as ws:
+            end = None
+            while end is None or time.monotonic() < end:
+                if end is None and start.is_set():
+                    end = time.monotonic() + seconds
+                try:
+                    msg = await asyncio.wait_for(ws.recv(), timeout=0.25)
+                except TimeoutError:
+                    continue
+                if end is not None and isinstance(msg, bytes):
+                    self.arrivals.append(time.monotonic())
+
+
+async def greedy(url: str, seconds: float, start: asyncio.Event) -> None:
+    """The greedy client: the expensive run for half the time, then a stream of big steps."""
+    async with connect(url, max_size=2**22, max_queue=None) as ws:
+
+        async def drain() -> None:
+            async for _ in ws:
+                pass
+
+        reader = asyncio.create_task(drain())
+        await start.wait()
+        for c in GREEDY_RUN:
+            await ws.send(json.dumps(c))
+        await asyncio.sleep(seconds / 2)
+        for c in GREEDY_STEP:
+            await ws.send(json.dumps(c))
+        end = time.monotonic() + seconds / 2
+        while time.monotonic() < end:
+            await ws.send(json.dumps({"type": "step", "n": 100_000}))
+            await asyncio.sleep(0.05)
+        reader.cancel()
+
+
+async def phase(
+    url: str, n: int, seconds: float, server: psutil.Process, with_greedy: bool
+) -> dict[str, Any]:
+    clients = [Client() for _ in range(n)]
+    start = asyncio.Event()
+    tasks = [asyncio.create_task(c.run(url, seconds, start)) for c in clients]
+    if with_greedy:
+        tasks.append(asyncio.create_task(greedy(url, seconds, start)))
+    await asyncio.sleep(1.0)  # everyone connected and past the first frames
+    cpu0, t0, rss = server.cpu_times(), time.monotonic(), 0
+    start.set()
+    while not all(t.done() for t in tasks):
+        rss = max(rss, server.memory_info().rss)
+        await asyncio.sleep(0.5)
+    await asyncio.gather(*tasks)
+    cpu1, t1 = server.cpu_times(), time.monotonic()
+    busy = (cpu1.user + cpu1.system) - (cpu0.user + cpu0.system)
+    fps = np.array([len(c.arrivals) / seconds for c in clients])
+    gaps = np.concatenate([np.diff(c.arrivals) for c in clients if len(c.arrivals) > 1]) * 1e3
+    return {
+        "clients": n,
+        "greedy": with_greedy,
+        "fps_min": float(fps.min()),
+        "fps_median": float(np.median(fps)),
+        "gap_p50_ms": float(np.percentile(gaps, 50)),
+        "gap_p99_ms": float(np.percentile(gaps, 99)),
+        "gap_max_ms": float(gaps.max()),
+        "server_cpu_percent": 100.0 * busy / (t1 - t0),
+        "server_rss_mib": rss / 2**20,
+    }
+
+
+def free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return int(s.getsockname()[1])
+
+
+async def main_async(args: argparse.Namespace) -> list[dict[str, Any]]:
+    port = free_port()
+    env = {**os.environ, "PENDULAB_NO_BROWSER": "1"}
+    cmd = [sys.executable, "-c", "from pendulab.cli import main; main()", "serve", "--no-browser"]
+    cmd += ["--port", str(port), "--max-sessions", str(args.clients + 16)]
+    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        url = f"ws://127.0.0.1:{port}/ws"
+        for _ in range(600):
+            try:
+                async with connect(url):
+                    break
+            except OSError:
+                await asyncio.sleep(0.1)
+        server = psutil.Process(proc.pid)
+        rows = []
+        for name, n, greedy_on, seconds in (
+            ("baseline: 1 client", 1, False, min(args.seconds, 10.0)),
+            (f"load: {args.clients} clients", args.clients, False, args.seconds),
+            ("greedy neighbour: 10 clients + 1 greedy", 10, True, min(args.seconds, 30.0)),
+        ):
+            print(f"{name} for {seconds:g} s ...", flush=True)
+            rows.append(
+                {"phase": name, "seconds": seconds, **await phase(url, n, seconds, server, greedy_on)}
+            )
+        return rows
+    finally:
+        proc.terminate()
+        proc.wait(10)
+
+
+def markdown(rows: list[dict[str, Any]]) -> str:
+    base = rows[0]["fps_median"]
+    out = [
+        f"Load average before the run: {LOAD_BEFORE}; after: {_load()} ({os.cpu_count()} cores).",
+        "",
+        "| phase | frames/s min | frames/s median | ÷ baseline | gap p50 [ms] | gap p99 [ms] | gap max [ms] "
+        "| server CPU [% of a core] | server RSS [MiB] |",
+        "|---|---|---|---|---|---|---|---|---|",
+    ]
+    for r in rows:
+        out.append(
+            f"| {r['phase']} ({r['seconds']:g} s) | {r['fps_min']:.1f} | {r['fps_median']:.1f} "
+            f"| {r['fps_median'] / base:.3f} | {r['gap_p50_ms']:.1f} | {r['gap_p99_ms']:.1f} "
+            f"| {r['gap_max_ms']:.0f} | {r['server_cpu_percent']:.0f} | {r['server_rss_mib']:.0f} |"
+        )
+    return "\n".join(out) + "\n"
+
+
+def _load() -> str:
+    return ", ".join(f"{x:.2f}" for x in os.getloadavg())
+
+
+LOAD_BEFORE = _load()
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--clients", type=int, default=50, help="pages in the load phase (default 50)")
+    parser.add_argument(
+        "--seconds", type=float, default=60.0, help="length of the load phase [s] (default 60)"
+    )
+    parser.add_argument("--markdown", help="also write the table to this file")
+    args = parser.parse_args()
+    rows = asyncio.run(main_async(args))
+    table = markdown(rows)
+    print(table)
+    if args.markdown:
+        with open(args.markdown, "w", encoding="utf-8") as f:
+            f.write(table)
+
+
+if __name__ == "__main__":
+    main()
