@@ -14,9 +14,9 @@ Ctrl-C are served. In one tick, within one wall-time budget (:mod:`.budget`):
 
 **No frame carries a non-finite number.** Records are checked before they are encoded: from the first
 record with a NaN or ±∞ on, nothing is sent, the session pauses and an ``error`` notice names the
-quantities that overflowed and the time (:func:`finite_records`). The parameters' bounds (the core's
-model registry, docs/models.md "Limits") keep this from happening for the models as registered; the
-check is the last line.
+quantities that overflowed and the time (:func:`finite_records`). The core also refuses a state
+that stops being finite (the session then pauses with "integration stopped …"); this check is the
+last line, for the diagnostics computed from a finite state.
 """
 
 from __future__ import annotations
