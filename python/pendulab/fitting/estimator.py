@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from .._core import InvalidInputError
+from .._core import IntegrationError, InvalidInputError
 from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
 from .data import KINDS, observations, residual
@@ -94,7 +94,10 @@ def _polish(
     for _ in range(4):
         step = np.linalg.lstsq(jac, -r, rcond=1e-10)[0]
         trial = np.minimum(np.maximum(u + step, lo), hi)
-        r_trial = weighted(trial)
+        try:
+            r_trial = weighted(trial)
+        except (InvalidInputError, IntegrationError):  # a step into a state the model refuses
+            break
         if not float(r_trial @ r_trial) < float(r @ r):
             break
         small = np.all(np.abs(trial - u) <= 1e-13 * np.maximum(np.abs(u), 1.0))

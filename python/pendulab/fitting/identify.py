@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._core import IntegrationError, InvalidInputError
 from ..model import FloatArray
 
 SINGULAR = 1e-4
@@ -48,17 +49,33 @@ def jacobian(
     ``logged`` is True the step is multiplicative, u·e^{±h}: equal steps in ln p for every positive
     parameter, so that an exact scale symmetry (g and l together) gives exactly dependent columns."""
     columns = []
+    centre: FloatArray | None = None
     for k, h in enumerate(steps):
         up, down = u.copy(), u.copy()
         if logged is not None and logged[k]:
-            up[k] = u[k] * math.exp(h)
-            down[k] = u[k] * math.exp(-h)
-            columns.append((residuals(up) - residuals(down)) / (2.0 * h * u[k]))
+            up[k], down[k] = u[k] * math.exp(h), u[k] * math.exp(-h)
         else:
-            up[k] += h
-            down[k] -= h
-            columns.append((residuals(up) - residuals(down)) / (2.0 * h))
+            up[k], down[k] = u[k] + h, u[k] - h
+        r_up, r_down = _try(residuals, up), _try(residuals, down)
+        width = up[k] - down[k]
+        if r_up is None or r_down is None:  # the model refuses one side (a limit): one-sided there
+            if centre is None:
+                centre = residuals(u)
+            if r_up is not None:
+                r_down, width = centre, up[k] - u[k]
+            elif r_down is not None:
+                r_up, width = centre, u[k] - down[k]
+            else:
+                r_up, r_down, width = centre, centre, 1.0  # no information: a zero column
+        columns.append((r_up - r_down) / width)
     return np.column_stack(columns)
+
+
+def _try(residuals: Callable[[FloatArray], FloatArray], u: FloatArray) -> FloatArray | None:
+    try:
+        return residuals(u)
+    except (InvalidInputError, IntegrationError):
+        return None
 
 
 def analyse(
