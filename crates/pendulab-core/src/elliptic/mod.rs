@@ -52,7 +52,7 @@
 
 mod carlson;
 mod complete;
-mod dd;
+pub(crate) mod dd;
 mod jacobi;
 mod kernel;
 mod legendre;

@@ -235,16 +235,25 @@ impl StartData {
         if self.udot == 0.0 {
             return self.roots_at_turning_point();
         }
-        // u₁ in [−1, u₀]: about u₀ first, then about −1 if it is nearer there.
+        // u₁ in [−1, u₀]: about u₀ first, then about −1 if it is nearer there. The second bracket ends
+        // half-way between u₁ and u₀, where P > 0, not at u₀ itself: when the start is (within
+        // round-off) the other turning point, P(u₀) may round to either sign and the bracket at u₀
+        // would "find" u₀ (a small swing with J₃ ≠ 0 started at its widest point came out conical).
         let d1 = self.solve(Centre::Start, -pm, 0.0, -pm * 0.5);
         let u1 = if -d1 > pm + d1 {
-            Root { centre: Centre::MinusOne, offset: self.solve(Centre::MinusOne, 0.0, pm, pm + d1) }
+            Root {
+                centre: Centre::MinusOne,
+                offset: self.solve(Centre::MinusOne, 0.0, pm + 0.5 * d1, pm + d1),
+            }
         } else {
             Root { centre: Centre::Start, offset: d1 }
         };
         let d2 = self.solve(Centre::Start, 0.0, pp, pp * 0.5);
         let u2 = if d2 > pp - d2 {
-            Root { centre: Centre::PlusOne, offset: self.solve(Centre::PlusOne, -pp, 0.0, d2 - pp) }
+            Root {
+                centre: Centre::PlusOne,
+                offset: self.solve(Centre::PlusOne, -pp + 0.5 * d2, 0.0, d2 - pp),
+            }
         } else {
             Root { centre: Centre::Start, offset: d2 }
         };

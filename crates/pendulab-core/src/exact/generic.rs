@@ -14,7 +14,7 @@
 //! Near-conical orbits (a → 0) need no special case: m, n± → 0 and Φ → jτ/(1 − u₁²).
 
 use super::cubic::{Root, StartData};
-use crate::elliptic::{ellipf_c, ellippi_c, ellippi_inc_c, JacobiParam, Param};
+use crate::elliptic::{ellippi_c, ellippi_inc_c, JacobiParam, Param};
 use crate::error::Result;
 
 /// A generic orbit: the roots and every constant of T-4.2 … T-4.5.
@@ -99,14 +99,14 @@ impl Generic {
                 + ellippi_c(n_minus, n1_minus, param)? / one_plus_u1);
         // Start argument from sn₀², cn₀² (both from anchored differences) and the sign of u̇₀.
         let (below, above) = (-start.from_start(u1), start.from_start(u2));
-        let phi_am = if a > 0.0 {
+        let (sn0, cn0) = if a > 0.0 {
             let sn0 = (below.max(0.0) / a).sqrt();
-            let cn0 = (above.max(0.0) / a).sqrt();
-            (if start.udot < 0.0 { -sn0 } else { sn0 }).atan2(cn0)
+            (if start.udot < 0.0 { -sn0 } else { sn0 }, (above.max(0.0) / a).sqrt())
         } else {
-            0.0
+            (0.0, 1.0)
         };
-        let s0 = ellipf_c(phi_am, param)?;
+        let phi_am = sn0.atan2(cn0);
+        let s0 = super::amplitude_argument(sn0, cn0, param, k)?;
         let mut g = Self {
             start,
             roots,

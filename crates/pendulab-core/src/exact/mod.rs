@@ -19,6 +19,7 @@ pub mod energy_momentum;
 pub mod generic;
 pub mod phases;
 pub mod planar;
+pub mod weierstrass;
 
 use crate::error::{Error, Result};
 use crate::state::{Params, State};
@@ -26,6 +27,20 @@ use cubic::StartData;
 use generic::{Generic, UnitState};
 use glam::DVec3;
 use planar::{Planar, PlanarMotion};
+use weierstrass::Weierstrass;
+
+/// The argument s = F(ϕ | m) of the amplitude ϕ with sin ϕ = `sn`, cos ϕ = `cn` ≥ 0 (|ϕ| ≤ π/2);
+/// `k` = K(m). Past |ϕ| = π/4 it is K − F(ψ | m) with tan ψ = cot ϕ / k′ (DLMF 19.7.8's complement,
+/// cot ϕ cot ψ = k′), because near m = 1 F climbs steeply to K at π/2: ∂F/∂ϕ = 1/√(1 − m sin²ϕ)
+/// reaches 1/k′, and the 6e-17 by which fl(π/2) misses π/2 would cost a turning point 6e-17/k′ of
+/// its argument (1.2e-10 for a start at rest 1e-6 rad from the top).
+pub(crate) fn amplitude_argument(sn: f64, cn: f64, param: crate::elliptic::Param, k: f64) -> Result<f64> {
+    if cn >= sn.abs() {
+        return crate::elliptic::ellipf_c(sn.atan2(cn), param);
+    }
+    let psi = cn.atan2(param.m1.sqrt() * sn.abs());
+    Ok((k - crate::elliptic::ellipf_c(psi, param)?).copysign(sn))
+}
 
 /// Kind of motion, as named in docs/theory.md T-4.6.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
@@ -83,6 +98,8 @@ pub struct ExactSolution {
     /// ω₀ = √(|g|/l) [1/s] (0 when g = 0).
     omega0: f64,
     flow: Flow,
+    /// The dimensionless start data of the cubic T-4.1 (planar and generic motions).
+    cubic: Option<StartData>,
 }
 
 impl ExactSolution {
@@ -95,7 +112,15 @@ impl ExactSolution {
         let rho2_abs = s.x.x * s.x.x + s.x.y * s.x.y;
         let at_pole = rho2_abs == 0.0;
         let (mirror, omega0) = (if g < 0.0 { -1.0 } else { 1.0 }, (g.abs() / l).sqrt());
-        let base = Self { params: *params, start: s, kind: Kind::Rest, mirror, omega0, flow: Flow::Rest };
+        let base = Self {
+            params: *params,
+            start: s,
+            kind: Kind::Rest,
+            mirror,
+            omega0,
+            flow: Flow::Rest,
+            cubic: None,
+        };
         if speed2 == 0.0 && (at_pole || g == 0.0) {
             return Ok(base);
         }
@@ -133,12 +158,12 @@ impl ExactSolution {
                 PlanarMotion::Rotation => Kind::PlanarRotating,
                 PlanarMotion::Separatrix => Kind::Separatrix,
             };
-            return Ok(Self { kind, flow: Flow::Planar(p), ..base });
+            return Ok(Self { kind, flow: Flow::Planar(p), cubic: Some(start), ..base });
         }
         let phi0 = x[1].atan2(x[0]);
         let gen = Generic::new(start, phi0)?;
         let kind = if gen.a < CONICAL_WIDTH { Kind::Conical } else { Kind::Generic };
-        Ok(Self { kind, flow: Flow::Generic(Box::new(gen)), ..base })
+        Ok(Self { kind, flow: Flow::Generic(Box::new(gen)), cubic: Some(start), ..base })
     }
 
     /// Like [`new`](Self::new) but returns an error naming non-finite parameters first.
@@ -276,5 +301,31 @@ impl ExactSolution {
     /// ω₀ = √(|g|/l) [1/s].
     pub fn omega0(&self) -> f64 {
         self.omega0
+    }
+
+    /// The Weierstrass form of the height (T-4.7, [`weierstrass`]), dimensionless (u = z/l, or −z/l
+    /// when g < 0; τ = ω₀t): invariants g₂, g₃, roots e₁ ≥ e₂ ≥ e₃ and the real half-period ω₁.
+    /// None at rest and on a great circle (g = 0), where there is no cubic.
+    pub fn weierstrass(&self) -> Option<Weierstrass> {
+        self.cubic.as_ref().map(Weierstrass::new)
+    }
+
+    /// The height z(t) [m] and its rate ż(t) [m/s] from the Weierstrass form, an independent second
+    /// path to the z of [`state`](Self::state); None where [`weierstrass`](Self::weierstrass) is
+    /// None.
+    pub fn height_weierstrass(&self, t: &[f64]) -> Result<Option<Vec<(f64, f64)>>> {
+        if let Some(&bad) = t.iter().find(|ti| !ti.is_finite()) {
+            return Err(Error::InvalidParameter { name: "t", value: bad, allowed: "a finite time in s" });
+        }
+        let Some(w) = self.weierstrass() else { return Ok(None) };
+        let (l, lw) = (self.params.length, self.params.length * self.omega0);
+        Ok(Some(
+            t.iter()
+                .map(|&ti| {
+                    let (u, u_tau) = w.at(self.omega0 * ti);
+                    (self.mirror * u * l, self.mirror * u_tau * lw)
+                })
+                .collect(),
+        ))
     }
 }

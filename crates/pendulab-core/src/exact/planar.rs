@@ -83,7 +83,8 @@ impl Planar {
                 // sn₀ = sin(θ₀/2)/k = ±√(p₋/(1 + ε)), cn₀ = θ̇₀/(2k) ≥ 0 = √(κ/(1 + ε)).
                 let sn0 = sign * (p_minus / one_plus_eps).sqrt();
                 let cn0 = (kappa / one_plus_eps).sqrt();
-                (param, 1.0, ellipf_c(sn0.atan2(cn0), param)?)
+                let k = JacobiParam::with_complement(param).quarter_period();
+                (param, 1.0, super::amplitude_argument(sn0, cn0, param, k)?)
             }
             PlanarMotion::Rotation => {
                 // m = 2/(1 + ε), m′ = (ε − 1)/(ε + 1)

@@ -120,8 +120,11 @@ pub struct Dop853 {
     length: f64,
     /// Project also onto the level set of E (conservative models) and J₃ (axisymmetric ones).
     invariants: bool,
-    /// E/m and J₃/m at the start (captured at the first step after `new` or `reset`).
-    targets: Option<(f64, f64)>,
+    /// The start x₀ [m], ½|v₀|² [J/kg] and J₃/m [m²/s] (captured at the first step after `new` or
+    /// `reset`): the kinetic energy imposed at x is ½|v₀|² − (V(x) − V(x₀)), the potential change
+    /// measured from the nearer pole ([`Model::potential_change_per_mass`]), not E/m − V(x), which
+    /// cancels near the bottom and the top (a 1e-6 rad swing would lose four digits of ½|v|²).
+    targets: Option<(DVec3, f64, f64)>,
 }
 
 impl Dop853 {
@@ -245,8 +248,7 @@ impl Dop853 {
         }
         self.length = model.params().length;
         if self.invariants && self.targets.is_none() {
-            let e = 0.5 * s.v.length_squared() + model.potential_per_mass(s.x);
-            self.targets = Some((e, s.x.x * s.v.y - s.x.y * s.v.x));
+            self.targets = Some((s.x, 0.5 * s.v.length_squared(), s.x.x * s.v.y - s.x.y * s.v.x));
         }
         let y0 = Y6::from(*s);
         let span = t_stop - t0;
@@ -337,8 +339,8 @@ impl Dop853 {
                 method: "dop853",
                 dt: h,
             })?;
-            if let (true, Some((e0, j0))) = (self.invariants, self.targets) {
-                let e = model.is_conservative().then(|| e0 - model.potential_per_mass(p.x));
+            if let (true, Some((x0, k0, j0))) = (self.invariants, self.targets) {
+                let e = model.is_conservative().then(|| k0 - model.potential_change_per_mass(x0, p.x));
                 // J₃ is an invariant only without damping, drag, forcing or a frame: axisymmetry
                 // alone is not enough (damping makes J₃ decay like e^{−ct}).
                 let kept = model.is_axisymmetric() && model.is_conservative() && !model.has_velocity_forces();

@@ -168,6 +168,9 @@ impl Model for AnyModel {
     fn potential_per_mass(&self, x: DVec3) -> f64 {
         both!(self, m => m.potential_per_mass(x))
     }
+    fn potential_change_per_mass(&self, from: DVec3, to: DVec3) -> f64 {
+        both!(self, m => m.potential_change_per_mass(from, to))
+    }
     fn is_conservative(&self) -> bool {
         both!(self, m => m.is_conservative())
     }

@@ -174,6 +174,12 @@ impl Model for Extended {
     fn potential_per_mass(&self, x: DVec3) -> f64 {
         -self.params.g * self.gravity_direction.dot(x) - 0.5 * self.frame.cross(x).length_squared()
     }
+    fn potential_change_per_mass(&self, from: DVec3, to: DVec3) -> f64 {
+        let g_vec = self.gravity_direction * self.params.g;
+        let centrifugal =
+            0.5 * (self.frame.cross(from).length_squared() - self.frame.cross(to).length_squared());
+        super::heights::gravity_potential_change(g_vec, self.params.length, from, to) + centrifugal
+    }
     fn is_conservative(&self) -> bool {
         self.damping == 0.0 && self.drag == 0.0 && self.forcing.is_none()
     }

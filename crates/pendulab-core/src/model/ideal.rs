@@ -56,6 +56,10 @@ impl Model for IdealPendulum {
     fn potential_per_mass(&self, x: DVec3) -> f64 {
         self.params.g * x.z
     }
+    fn potential_change_per_mass(&self, from: DVec3, to: DVec3) -> f64 {
+        let g_vec = DVec3::new(0.0, 0.0, -self.params.g);
+        super::heights::gravity_potential_change(g_vec, self.params.length, from, to)
+    }
     fn is_conservative(&self) -> bool {
         true
     }

@@ -16,6 +16,7 @@
 
 pub mod any_model;
 pub mod extended;
+pub mod heights;
 pub mod ideal;
 pub mod pivot;
 pub mod registry;
@@ -42,6 +43,12 @@ pub trait Model: Send + Sync {
     fn applied_acceleration(&self, t: f64, x: DVec3, v: DVec3) -> DVec3;
     /// Potential energy per unit mass V(x) [J/kg] of the conservative part of f.
     fn potential_per_mass(&self, x: DVec3) -> f64;
+    /// V(to) − V(from) [J/kg] for two points on the sphere. Models with gravity override this to
+    /// measure heights from the nearer pole ([`heights`]), which keeps the digits that V(to) − V(from)
+    /// loses near the bottom and the top. Default: the plain difference.
+    fn potential_change_per_mass(&self, from: DVec3, to: DVec3) -> f64 {
+        self.potential_per_mass(to) - self.potential_per_mass(from)
+    }
     /// True when f = −∇V(x) only (no t or v dependence): RATTLE is then symplectic.
     fn is_conservative(&self) -> bool;
     /// True when f commutes with rotations about e₃, so that J₃ is conserved.
