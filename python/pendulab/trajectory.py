@@ -20,6 +20,7 @@ import numpy.typing as npt
 
 from . import io
 from .display import Row, html_table, number, relative_drift
+from .error_estimate import ErrorEstimate
 from .model import FloatArray, Pendulum, State, models
 
 if TYPE_CHECKING:
@@ -42,6 +43,10 @@ UNITS = {
     "pivot": "m",
     "boom": "m",
     "taut": "1",
+    "err_x_est": "m",
+    "err_v_est": "m/s",
+    "err_x": "m",
+    "err_v": "m/s",
 }
 
 
@@ -52,6 +57,10 @@ class Trajectory:
     The string model (``model="string"``) also has ``taut`` (N,) bool — the string is taut at the
     sample — and ``events``: a dict of arrays ``t`` [s], ``kind`` ("slack": the tension reached 0;
     "taut": the string snapped taut), ``x`` [m], ``v_before``, ``v_after`` [m/s], ``energy_lost`` [J].
+
+    ``error_estimate`` (``simulate(..., error_estimate=True)`` or ``accuracy=``): the estimated global
+    position [m] and velocity [m/s] error at every sample; ``error``: the true error against the exact
+    solution (ideal pendulum only). Both :class:`pendulab.accuracy.ErrorEstimate`, else None.
     """
 
     pendulum: Pendulum
@@ -64,6 +73,8 @@ class Trajectory:
     interrupted: bool = False
     taut: npt.NDArray[np.bool_] | None = None
     events: dict[str, Any] | None = None
+    error_estimate: ErrorEstimate | None = None
+    error: ErrorEstimate | None = None
 
     def __len__(self) -> int:
         return int(self.t.shape[0])
@@ -196,6 +207,8 @@ class Trajectory:
             "stats": self.stats,
             "interrupted": self.interrupted,
             **({"events": self._event_list()} if self.events is not None else {}),
+            **({"error_estimate": self.error_estimate.describe()} if self.error_estimate else {}),
+            **({"error": self.error.describe()} if self.error else {}),
             "units": UNITS | self._param_units(),
             "conventions": "SI units, z up, gravity along -z for g > 0, theta from the downward vertical",
         }
@@ -235,6 +248,10 @@ class Trajectory:
         if self.taut is not None:
             cols["taut"] = ("1", self.taut.astype(np.float64))
             cols["energy_lost"] = ("J", self.energy_lost)
+        for suffix, err in (("_est", self.error_estimate), ("", self.error)):
+            if err is not None:
+                cols[f"err_x{suffix}"] = ("m", err.position)
+                cols[f"err_v{suffix}"] = ("m/s", err.velocity)
         return cols
 
     def to_xarray(self) -> Any:
@@ -258,6 +275,18 @@ class Trajectory:
         if self.taut is not None:
             extra["taut"] = ("time", self.taut.astype(np.int8), {"units": "1", "long_name": "string taut"})
             extra["energy_lost"] = ("time", self.energy_lost, {"units": "J", "long_name": "lost in snaps"})
+        for suffix, err, what in (("_est", self.error_estimate, "estimated"), ("", self.error, "true")):
+            if err is not None:
+                extra[f"err_x{suffix}"] = (
+                    "time",
+                    err.position,
+                    {"units": "m", "long_name": f"{what} position error"},
+                )
+                extra[f"err_v{suffix}"] = (
+                    "time",
+                    err.velocity,
+                    {"units": "m/s", "long_name": f"{what} velocity error"},
+                )
         ds = xr.Dataset(
             {
                 "x": (("time", "axis"), self.x, {"units": "m", "long_name": "bob position"}),
@@ -433,4 +462,11 @@ class Trajectory:
             f"max |x.v| = {np.max(np.abs(self.tangency[on]), initial=0.0):.3e} m^2/s{where}",
             f"height:   z in [{self.x[:, 2].min():.6f}, {self.x[:, 2].max():.6f}] m",
         ]
+        for label, err in (("estimate", self.error_estimate), ("error", self.error)):
+            if err is not None:
+                lines.append(
+                    f"{label + ':':<10}max |dx| = {err.max_position:.3e} m "
+                    f"({err.max_position / p.length:.1e} l), "
+                    f"max |dv| = {err.max_velocity:.3e} m/s, at t_end {err.position[-1]:.3e} m  ({err.how})"
+                )
         return "\n".join(lines)

@@ -137,6 +137,40 @@ impl Exact {
         d.set_item("j", g.start.j)?;
         Ok(Some(d))
     }
+
+    /// The Weierstrass form (T-4.7), dimensionless: g2, g3, e (e₁ ≥ e₂ ≥ e₃), omega1 (the real
+    /// half-period in τ = ω₀t, inf on the separatrix), shift (ε/3 in u = 2℘ + ε/3). None at rest and for
+    /// g = 0.
+    fn weierstrass<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(w) = self.inner.weierstrass() else { return Ok(None) };
+        let d = PyDict::new(py);
+        d.set_item("g2", w.g2)?;
+        d.set_item("g3", w.g3)?;
+        d.set_item("e", w.e.to_vec())?;
+        d.set_item("omega1", w.omega1)?;
+        d.set_item("shift", w.shift)?;
+        Ok(Some(d))
+    }
+
+    /// z(t) [m] and ż(t) [m/s] at times `t` [s] (1-D) through the Weierstrass form; None where
+    /// `weierstrass` is None.
+    #[allow(clippy::type_complexity)]
+    fn heights_weierstrass<'py>(
+        &self,
+        py: Python<'py>,
+        t: PyReadonlyArray1<'py, f64>,
+    ) -> PyResult<Option<(Bound<'py, PyArray1<f64>>, Bound<'py, PyArray1<f64>>)>> {
+        let t = t.as_array().to_vec();
+        if let Some((i, bad)) = t.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+            return Err(InvalidInputError::new_err(format!("t[{i}] = {bad} is not a finite time (s)")));
+        }
+        let inner = &self.inner;
+        let out = py.allow_threads(|| inner.height_weierstrass(&t)).map_err(to_py)?;
+        Ok(out.map(|pairs| {
+            let (z, zdot): (Vec<f64>, Vec<f64>) = pairs.into_iter().unzip();
+            (Array1::from(z).into_pyarray(py), Array1::from(zdot).into_pyarray(py))
+        }))
+    }
 }
 
 /// σ₁ … σ₆ (T-3.1, units of l) along x, v of shape (N, 3): shape (N, 6).

@@ -1,0 +1,131 @@
+"""Runs to a requested accuracy: ``simulate(..., accuracy=a)`` with a the largest position error
+allowed over the whole run, relative to the length l (global, up to t_end).
+
+The method: RATTLE8 (the 8th-order symplectic composition, T-2.4 with the constraint kept exactly;
+its global error grows only linearly in t, where DOP853's local error control lets the energy drift and
+the error grow like t²: docs/integrators.md), or DOP853 with ``conserve`` for a pendulum with a user
+force (which the RATTLE family cannot take; ``conserve`` is left off there, the force does work).
+
+The step: a first guess dt = 0.5·a^{1/8}/ω from the motion's fastest rate ω = max(√(|g|/l), |v₀|/l)
+[1/s] (a tolerance a for DOP853), then runs with the error estimate of
+:mod:`pendulab.accuracy.estimate`, each refining dt by (estimate/a)^{1/p} (times 0.8, at least ×1/2)
+until the estimate meets a. When refining no longer lowers the estimate — round-off, not truncation,
+dominates — it raises :class:`pendulab.InvalidInputError` with the best accuracy float64 reached for
+this motion. Work is bounded before every run: at most ``MAX_STEPS`` steps.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from typing import Any
+
+from .._core import InvalidInputError
+from ..model import Pendulum, State
+from ..trajectory import Trajectory
+
+#: The most steps one run of the search may take.
+MAX_STEPS = 2e8
+#: The most runs the search makes.
+MAX_ROUNDS = 8
+ORDER_RATTLE8 = 8
+
+Runner = Callable[..., Trajectory]
+
+
+def _rate(pendulum: Pendulum, state: State) -> float:
+    """The motion's fastest rate ω [1/s]: √(|g|/l) or |v₀|/l, whichever is larger."""
+    speed = math.sqrt(float(sum(c * c for c in state.v)))
+    return max(math.sqrt(abs(pendulum.g) / pendulum.length), speed / pendulum.length, 1e-12)
+
+
+def check_accuracy(accuracy: float) -> float:
+    """The requested accuracy as a float in [1e-15, 0.1], or InvalidInputError naming it."""
+    try:
+        a = float(accuracy)
+    except (TypeError, ValueError):
+        raise InvalidInputError(f"accuracy = {accuracy!r} must be a number (relative to l)") from None
+    if not (1e-15 <= a <= 0.1):
+        raise InvalidInputError(
+            f"accuracy = {accuracy!r}: allowed is 1e-15 <= accuracy <= 0.1 (the largest position error "
+            "over the run relative to the length l)"
+        )
+    return a
+
+
+def run_to_accuracy(
+    run: Runner, pendulum: Pendulum, state: State, t_end: float, accuracy: float, kwargs: dict[str, Any]
+) -> Trajectory:
+    """Runs ``run(pendulum, state, t_end, error_estimate=True, ...)`` with a method and step (or
+    tolerance) chosen and refined until ``tr.error_estimate.max_position <= accuracy * l``."""
+    a = check_accuracy(accuracy)
+    for key in ("method", "dt", "rtol", "atol"):
+        if kwargs.get(key) is not None:
+            raise InvalidInputError(
+                f"accuracy = {accuracy!r} chooses the method and its step or tolerance itself: "
+                f"leave out {key} = {kwargs[key]!r}"
+            )
+    span = t_end - float(kwargs.get("t0", 0.0))
+    if not (span > 0 and math.isfinite(span)):
+        raise InvalidInputError(f"t_end = {t_end!r} must be finite and after t0 for accuracy = {accuracy!r}")
+    base = {k: v for k, v in kwargs.items() if k not in ("method", "dt", "rtol", "atol")}
+    goal = a * pendulum.length
+    history: list[tuple[str, float]] = []
+    if pendulum.force is not None:
+        tol = a
+        for _ in range(MAX_ROUNDS):
+            tr = run(
+                pendulum,
+                state,
+                t_end,
+                method="dop853",
+                rtol=max(tol, 1e-15),
+                atol=max(tol, 1e-15) * 1e-2,
+                error_estimate=True,
+                **base,
+            )
+            err = tr.error_estimate.max_position
+            history.append((f"rtol {max(tol, 1e-15):.1e}", err))
+            if err <= goal:
+                return _tagged(tr, a, history)
+            if tol <= 1e-15 or (len(history) > 1 and err >= 0.5 * history[-2][1]):
+                break
+            tol = max(tol * min(0.5, 0.5 * goal / err), 1e-15)
+        raise _best(a, pendulum, history)
+    dt = 0.5 * a ** (1.0 / ORDER_RATTLE8) / _rate(pendulum, state)
+    for _ in range(MAX_ROUNDS):
+        if span / dt > MAX_STEPS:
+            raise InvalidInputError(
+                f"accuracy = {accuracy!r} needs more than {MAX_STEPS:.0e} steps of RATTLE8 "
+                f"to t_end = {t_end!r} s "
+                f"(dt = {dt:.2e} s); ask for less or a shorter run"
+                + (
+                    f" (tried: {', '.join(f'{h}: {e / pendulum.length:.1e}' for h, e in history)})"
+                    if history
+                    else ""
+                )
+            )
+        tr = run(pendulum, state, t_end, method="rattle8", dt=dt, error_estimate=True, **base)
+        err = tr.error_estimate.max_position
+        history.append((f"dt {dt:.2e} s", err))
+        if err <= goal:
+            return _tagged(tr, a, history)
+        if len(history) > 1 and err >= 0.5 * history[-2][1]:
+            break  # refining no longer helps: round-off
+        dt *= min(0.5, 0.8 * (goal / err) ** (1.0 / ORDER_RATTLE8))
+    raise _best(a, pendulum, history)
+
+
+def _tagged(tr: Trajectory, a: float, history: list[tuple[str, float]]) -> Trajectory:
+    tr.options["accuracy"] = a
+    tr.options["accuracy_search"] = [f"{h}: {e:.2e} m" for h, e in history]
+    return tr
+
+
+def _best(a: float, pendulum: Pendulum, history: list[tuple[str, float]]) -> InvalidInputError:
+    best = min(e for _, e in history) / pendulum.length
+    tried = ", ".join(f"{h}: {e / pendulum.length:.1e}" for h, e in history)
+    return InvalidInputError(
+        f"accuracy = {a!r} is out of reach in float64 for this motion: the best estimated error was "
+        f"{best:.1e} relative to l (tried {tried}); ask for accuracy >= {2 * best:.0e}"
+    )

@@ -1,0 +1,54 @@
+"""The error record a trajectory carries: position [m] and velocity [m/s] errors at every sample.
+
+``Trajectory.error_estimate`` is an *estimate* of the global error (how it was made: ``how`` and
+``reference``); ``Trajectory.error`` is the *true* error against the exact solution (ideal pendulum
+only, T-4.x; ``how = "exact"``). Both are |x_computed − x_reference| [m] and |v − v_reference| [m/s]
+per saved sample, so they can be compared with each other and with a requested accuracy (relative to
+the length l).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+
+
+@dataclass(frozen=True)
+class ErrorEstimate:
+    """Global errors at the saved samples.
+
+    ``position`` (N,) [m] and ``velocity`` (N,) [m/s]; ``how``: ``"richardson"`` (fixed-step methods:
+    the run against one at half the step, scaled by 2^p/(2^p − 1), p the method's order),
+    ``"companion"`` (DOP853: against a run at a 1000× tighter tolerance, or the tightest allowed) or
+    ``"exact"`` (the true error against the exact solution); ``reference`` the settings of the
+    reference run; ``cost`` its work relative to the plain run (right-hand side evaluations).
+    """
+
+    position: npt.NDArray[np.float64]
+    velocity: npt.NDArray[np.float64]
+    how: str
+    reference: dict[str, Any] = field(default_factory=dict)
+    cost: float = 0.0
+
+    @property
+    def max_position(self) -> float:
+        """Largest position error over the run [m]."""
+        return float(np.max(self.position, initial=0.0))
+
+    @property
+    def max_velocity(self) -> float:
+        """Largest velocity error over the run [m/s]."""
+        return float(np.max(self.velocity, initial=0.0))
+
+    def describe(self) -> dict[str, Any]:
+        """JSON-ready summary (file metadata): how, reference, cost, the largest errors."""
+        return {
+            "how": self.how,
+            "reference": self.reference,
+            "cost": self.cost,
+            "max_position_m": self.max_position,
+            "max_velocity_m_per_s": self.max_velocity,
+        }
