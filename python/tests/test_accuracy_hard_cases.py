@@ -83,7 +83,12 @@ def test_accuracy_is_met_in_95_percent_of_the_cases() -> None:
     for case in _cases():
         p, s0, samples, _ = _setup(case)
         times = [s["t"] for s in samples]
-        tr = pl.simulate(p, s0, times[-1], accuracy=1e-8, save_at=times)
+        try:
+            tr = pl.simulate(p, s0, times[-1], accuracy=1e-8, save_at=times)
+        except pl.InvalidInputError as e:  # refused as out of reach: not met
+            floor = max(s["floor_normwise"] for s in samples)
+            missed.append(f"{case['name']}: refused (golden floor_normwise {floor:.1e}): {e}")
+            continue
         worst = float(np.max(_true_error(tr, samples))) / case["length"]
         if worst <= 1e-8:
             met += 1

@@ -35,7 +35,7 @@ GENERATOR = "testdata/generate/hard_cases.py"
 SEED = 20261125
 #: Sign patterns of the floor perturbation: 8 of golden_states.py's 64 (all +, all -, and x against
 #: v in six mixed patterns), which keeps the run to minutes; the floor is a max over patterns, so this
-#: one can only be lower (compared with all 64 on two cases: see testdata/README.md).
+#: one can only be lower: on two cases the 64-pattern floor was 1.00-1.13x this one.
 FLOOR_PATTERNS = [
     (1, 1, 1, 1, 1, 1),
     (-1, -1, -1, -1, -1, -1),

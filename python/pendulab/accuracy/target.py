@@ -3,8 +3,9 @@ allowed over the whole run, relative to the length l (global, up to t_end).
 
 The method: RATTLE8 (the 8th-order symplectic composition, T-2.4 with the constraint kept exactly;
 its global error grows only linearly in t, where DOP853's local error control lets the energy drift and
-the error grow like t²: docs/integrators.md), or DOP853 with ``conserve`` for a pendulum with a user
-force (which the RATTLE family cannot take; ``conserve`` is left off there, the force does work).
+the error grow like t²: docs/integrators.md); when RATTLE8 stalls on round-off, DOP853 with
+``conserve=True`` (E and J₃ projected) from rtol 1e-12 down; DOP853 without ``conserve`` for a
+pendulum with a user force (which the RATTLE family cannot take; the force does work).
 
 The step: a first guess dt = 0.5·a^{1/8}/ω from the motion's fastest rate ω = max(√(|g|/l), |v₀|/l)
 [1/s] (a tolerance a for DOP853), then runs with the error estimate of
@@ -72,25 +73,9 @@ def run_to_accuracy(
     goal = a * pendulum.length
     history: list[tuple[str, float]] = []
     if pendulum.force is not None:
-        tol = a
-        for _ in range(MAX_ROUNDS):
-            tr = run(
-                pendulum,
-                state,
-                t_end,
-                method="dop853",
-                rtol=max(tol, 1e-15),
-                atol=max(tol, 1e-15) * 1e-2,
-                error_estimate=True,
-                **base,
-            )
-            err = tr.error_estimate.max_position
-            history.append((f"rtol {max(tol, 1e-15):.1e}", err))
-            if err <= goal:
-                return _tagged(tr, a, history)
-            if tol <= 1e-15 or (len(history) > 1 and err >= 0.5 * history[-2][1]):
-                break
-            tol = max(tol * min(0.5, 0.5 * goal / err), 1e-15)
+        tr = _dop853_search(run, pendulum, state, t_end, a, base, history, a, conserve=False)
+        if tr is not None:
+            return tr
         raise _best(a, pendulum, history)
     dt = 0.5 * a ** (1.0 / ORDER_RATTLE8) / _rate(pendulum, state)
     for _ in range(MAX_ROUNDS):
@@ -113,7 +98,47 @@ def run_to_accuracy(
         if len(history) > 1 and err >= 0.5 * history[-2][1]:
             break  # refining no longer helps: round-off
         dt *= min(0.5, 0.8 * (goal / err) ** (1.0 / ORDER_RATTLE8))
+    # RATTLE8 stalled on round-off (e.g. next to the top, where each step's rounding of E becomes a
+    # phase error): DOP853 with E and J₃ projected (conserve=True) from rtol 1e-12 down
+    try:
+        tr = _dop853_search(run, pendulum, state, t_end, a, base, history, 1e-12, conserve=True)
+    except InvalidInputError:  # conserve refused (damping or drag: E and J₃ decay)
+        tr = None
+    if tr is not None:
+        return tr
     raise _best(a, pendulum, history)
+
+
+def _dop853_search(
+    run: Runner,
+    pendulum: Pendulum,
+    state: State,
+    t_end: float,
+    a: float,
+    base: dict[str, Any],
+    history: list[tuple[str, float]],
+    tol: float,
+    conserve: bool,
+) -> Trajectory | None:
+    """DOP853 runs with the estimate from rtol = ``tol`` down (×1/10 or as the estimate asks, at least
+    to 1e-15) until the estimate meets ``a`` l (that run is returned) or stops falling (None)."""
+    goal = a * pendulum.length
+    last = math.inf
+    for _ in range(MAX_ROUNDS):
+        rtol = max(tol, 1e-15)
+        kw = base | {"conserve": conserve} if conserve else base
+        tr = run(
+            pendulum, state, t_end, method="dop853", rtol=rtol, atol=rtol * 1e-2, error_estimate=True, **kw
+        )
+        err = tr.error_estimate.max_position
+        history.append((f"dop853{' conserve' if conserve else ''} rtol {rtol:.0e}", err))
+        if err <= goal:
+            return _tagged(tr, a, history)
+        if rtol <= 1e-15 or err >= 0.5 * last:
+            return None
+        last = err
+        tol = rtol * min(0.1, 0.5 * goal / err)
+    return None
 
 
 def _tagged(tr: Trajectory, a: float, history: list[tuple[str, float]]) -> Trajectory:

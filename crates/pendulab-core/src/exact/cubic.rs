@@ -239,21 +239,21 @@ impl StartData {
         // half-way between u₁ and u₀, where P > 0, not at u₀ itself: when the start is (within
         // round-off) the other turning point, P(u₀) may round to either sign and the bracket at u₀
         // would "find" u₀ (a small swing with J₃ ≠ 0 started at its widest point came out conical).
+        // (Only where P > 0 there: the first estimate itself may be off, e.g. P(+1) = −j² rounding
+        // positive in the expansion about u₀ puts d₂ at +1.)
         let d1 = self.solve(Centre::Start, -pm, 0.0, -pm * 0.5);
         let u1 = if -d1 > pm + d1 {
-            Root {
-                centre: Centre::MinusOne,
-                offset: self.solve(Centre::MinusOne, 0.0, pm + 0.5 * d1, pm + d1),
-            }
+            let half = pm + 0.5 * d1;
+            let hi = if self.eval(Centre::MinusOne, half).0 > 0.0 { half } else { pm };
+            Root { centre: Centre::MinusOne, offset: self.solve(Centre::MinusOne, 0.0, hi, pm + d1) }
         } else {
             Root { centre: Centre::Start, offset: d1 }
         };
         let d2 = self.solve(Centre::Start, 0.0, pp, pp * 0.5);
         let u2 = if d2 > pp - d2 {
-            Root {
-                centre: Centre::PlusOne,
-                offset: self.solve(Centre::PlusOne, -pp + 0.5 * d2, 0.0, d2 - pp),
-            }
+            let half = -pp + 0.5 * d2;
+            let lo = if self.eval(Centre::PlusOne, half).0 > 0.0 { half } else { -pp };
+            Root { centre: Centre::PlusOne, offset: self.solve(Centre::PlusOne, lo, 0.0, d2 - pp) }
         } else {
             Root { centre: Centre::Start, offset: d2 }
         };
