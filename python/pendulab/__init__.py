@@ -17,6 +17,7 @@ Plots (matplotlib, optional): ``pendulab.plot``.
 from ._core import IntegrationError, InvalidInputError, __version__
 from .ensemble.run import EnsembleResult, simulate_ensemble, states_from_angles
 from .ensemble.save import Save
+from .error_estimate import ErrorEstimate
 from .fitting import FitResult, fit
 from .model import Pendulum, State, models
 from .scenario import Scenario, ScenarioError, load_scenario
@@ -35,6 +36,7 @@ from .variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 __all__ = [
     "EMMap",
     "EnsembleResult",
+    "ErrorEstimate",
     "ExactSolution",
     "FitResult",
     "IntegrationError",
