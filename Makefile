@@ -10,8 +10,11 @@ HOST ?= 127.0.0.1
 PORT ?= 8000
 STATIC := python/pendulab/server/static
 
+# `make` alone builds the package into .venv (see build below).
+.DEFAULT_GOAL := build
+
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
-	bench-compare bench-peers bench-fit validate-fit golden clean docs docs-serve
+	bench-compare bench-peers bench-fit validate-fit golden clean docs docs-serve bench-portable wheel test-wheel
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -19,7 +22,8 @@ $(VENV)/.deps: python/pyproject.toml
 	$(PY) -m pip install --quiet "maturin>=1.7,<2" "numpy>=1.26" "typer>=0.12" "tqdm>=4.66" "pydantic>=2.6" \
 		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "scipy>=1.11" "pyarrow>=15" "xarray>=2024.1" "zarr>=2.18" "matplotlib>=3.8" \
 		"fastapi>=0.115" "uvicorn>=0.30" "websockets>=13" "orjson>=3.10" "qrcode>=8" "httpx>=0.27" "httpx2>=2" "dask[distributed]>=2024.1" \
-		"imageio-ffmpeg>=0.5" "pillow>=10.1" "nbclient>=0.10" "nbformat>=5.10" "ipykernel>=6.29"
+		"imageio-ffmpeg>=0.5" "pillow>=10.1" "nbclient>=0.10" "nbformat>=5.10" "ipykernel>=6.29" \
+		"ziglang>=0.13" "auditwheel>=6"
 	touch $@
 
 venv: $(VENV)/.deps
@@ -31,8 +35,29 @@ $(VENV)/.docs-deps: $(VENV)/.deps
 		"mkdocs-jupyter>=0.25" "jupyter-server-mathjax>=0.2.6"
 	touch $@
 
+# The core is compiled for the baseline of the CPU architecture (x86-64: SSE2); its hot loops pick
+# AVX2 + FMA or AVX-512 at run time (crates/pendulab-core/src/isa.rs), so a build runs on any CPU of its
+# kind. RUSTFLAGS="-C target-cpu=native" make build gives a build for this machine only (docs/performance.md).
 build: venv
 	VIRTUAL_ENV=$(CURDIR)/$(VENV) $(VENV)/bin/maturin develop --release --quiet -m python/Cargo.toml
+	@echo "built: run '. $(VENV)/bin/activate' for 'pendulab' and 'import pendulab' in this shell, or use $(VENV)/bin/pendulab"
+
+# A wheel for other machines and an sdist, in dist/ (README "Install"): abi3 (CPython >= 3.11),
+# manylinux2014 (glibc >= 2.17; linked by zig from PyPI's ziglang), the baseline CPU with run-time
+# AVX2/AVX-512 dispatch; checked with auditwheel. `pip install 'dist/pendulab-<version>-*.whl[lab]'`.
+wheel: venv
+	rm -rf dist
+	PATH="$(CURDIR)/$(VENV)/bin:$$PATH" $(VENV)/bin/maturin build --release --quiet -m python/Cargo.toml \
+		--compatibility manylinux2014 --zig --interpreter $(PY) -o dist
+	$(VENV)/bin/maturin sdist -m python/Cargo.toml -o dist
+	$(VENV)/bin/auditwheel show dist/pendulab-*.whl | tee dist/.auditwheel
+	grep -q '"manylinux_2_17_$(shell uname -m)"' dist/.auditwheel
+	@ls -l dist
+
+# The wheel as a user gets it: a fresh virtual environment outside the checkout, the README quickstart,
+# pendulab scenarios / run / serve (page + WebSocket), and an old CPU under qemu-user if installed.
+test-wheel: wheel
+	$(PYTHON) tools/check_wheel.py dist
 
 # The lab: builds the core, the Python package and the web bundle, then serves SCENARIO at
 # http://$(HOST):$(PORT) (opens a browser where there is one; Ctrl-C stops it).
@@ -105,10 +130,17 @@ docs-serve: build $(VENV)/.docs-deps
 	$(VENV)/bin/mkdocs serve --strict -a 127.0.0.1:8001
 
 test: DOCS_EXECUTE := false
-test: lint test-rust test-python test-web test-e2e docs
+test: lint test-rust test-python test-web test-e2e docs test-wheel
 
 bench:
 	cargo bench -p pendulab-core
+
+# The portable build against one for this CPU only (-C target-cpu=native), criterion benches run
+# alternately in one run (about 10 min): docs/performance.md "Portable builds". PORTABLE_ARGS="--reference
+# DIR" compares with another checkout instead (e.g. a worktree of the commit before a change).
+PORTABLE_ARGS ?=
+bench-portable:
+	$(PYTHON) bench/portable.py $(PORTABLE_ARGS)
 
 bench-compare: build
 	$(PY) bench/compare.py
@@ -117,9 +149,10 @@ bench-compare: build
 # bench/peers/.venv with the peers and a release wheel of this checkout's Pendulab (not the editable
 # build of .venv), then bench/peers/run.py: results/, docs/img/peers_work_precision.png and the
 # "Against peers" section of docs/performance.md (about 20 min; PEERS_ARGS=--quick for a smoke run).
-# The wheel is built for this CPU (.cargo/config.toml: -C target-cpu=native, like the C baselines'
-# -march=native); PEERS_RUSTFLAGS="..." replaces those flags (in its own target directory, so the
-# default build's cache is kept), e.g. PEERS_RUSTFLAGS="-C target-cpu=x86-64" for the portable baseline.
+# The wheel is the portable build (baseline CPU, hot loops dispatched at run time: crates/pendulab-core/
+# src/isa.rs); PEERS_RUSTFLAGS="..." sets RUSTFLAGS for it (in its own target directory, so the default
+# build's cache is kept), e.g. PEERS_RUSTFLAGS="-C target-cpu=native" for a build for this CPU only,
+# like the C baselines' -march=native.
 PEERS_VENV := bench/peers/.venv
 PEERS_ARGS ?=
 PEERS_RUSTFLAGS ?=

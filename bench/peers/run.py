@@ -927,7 +927,7 @@ def markdown(
         + (
             f"RUSTFLAGS=`{meta['rustflags']}`)."
             if meta.get("rustflags")
-            else "the project's `.cargo/config.toml`: `-C target-cpu=native`, like the C baselines)."
+            else "the portable build: baseline x86-64, the hot loops dispatched to AVX2/AVX-512 at run time)."
         )
         + "".join(f" **{k}: skipped, {why}.**" for k, why in meta["skipped"].items() if why),
         "",

@@ -10,8 +10,27 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-use std::sync::Arc;
+use std::sync::{Arc, Condvar, Mutex};
 use std::thread::JoinHandle;
+use std::time::Duration;
+
+/// Set (and waiters woken) when the run's thread ends, also if it panics: [`EnsembleRun::wait`]
+/// returns the moment the run is done instead of at the next poll.
+#[derive(Default)]
+struct Finished {
+    done: Mutex<bool>,
+    changed: Condvar,
+}
+
+/// Marks the run finished when dropped, i.e. when the thread's closure returns or unwinds.
+struct FinishOnDrop(Arc<Finished>);
+
+impl Drop for FinishOnDrop {
+    fn drop(&mut self) {
+        *self.0.done.lock().unwrap_or_else(|e| e.into_inner()) = true;
+        self.0.changed.notify_all();
+    }
+}
 
 /// An ensemble run in progress (RATTLE; ideal pendulum with optional linear damping; per-trajectory
 /// l, g and damping c).
@@ -20,6 +39,7 @@ pub struct EnsembleRun {
     progress: Arc<AtomicU64>,
     cancel: Arc<AtomicBool>,
     total: u64,
+    finished: Arc<Finished>,
     handle: Option<JoinHandle<CoreResult<EnsembleResult>>>,
 }
 
@@ -69,11 +89,14 @@ impl EnsembleRun {
         let extras = Extras { damping: &damping, settle_angle };
         run_with(&starts, &length, &g, &extras, dt, 0, save, false, &p0, &c0).map_err(to_py)?;
         let (p, c) = (progress.clone(), cancel.clone());
+        let finished = Arc::new(Finished::default());
+        let on_exit = FinishOnDrop(finished.clone());
         let handle = std::thread::spawn(move || {
+            let _on_exit = on_exit;
             let extras = Extras { damping: &damping, settle_angle };
             run_with(&starts, &length, &g, &extras, dt, n_steps, save, summary, &p, &c)
         });
-        Ok(Self { progress, cancel, total, handle: Some(handle) })
+        Ok(Self { progress, cancel, total, finished, handle: Some(handle) })
     }
 
     /// Fraction of trajectory-steps done.
@@ -89,7 +112,30 @@ impl EnsembleRun {
     /// True when the run has finished (or stopped after a cancel).
     #[getter]
     fn done(&self) -> bool {
-        self.handle.as_ref().map_or(true, JoinHandle::is_finished)
+        self.handle.is_none() || *self.finished.done.lock().unwrap_or_else(|e| e.into_inner())
+    }
+
+    /// Waits until the run has finished or `timeout` [s] (≥ 0, finite) has passed, with the GIL
+    /// released; returns `done`. Returns at once when the run ends, so a progress loop
+    /// `while not run.wait(0.05)` costs a finished run no poll interval.
+    fn wait(&self, py: Python<'_>, timeout: f64) -> PyResult<bool> {
+        if !(timeout.is_finite() && timeout >= 0.0) {
+            return Err(InvalidInputError::new_err(format!(
+                "timeout = {timeout}: must be a finite number of seconds >= 0"
+            )));
+        }
+        if self.handle.is_none() {
+            return Ok(true);
+        }
+        let finished = &self.finished;
+        Ok(py.allow_threads(|| {
+            let done = finished.done.lock().unwrap_or_else(|e| e.into_inner());
+            let (done, _) = finished
+                .changed
+                .wait_timeout_while(done, Duration::from_secs_f64(timeout.min(3600.0)), |d| !*d)
+                .unwrap_or_else(|e| e.into_inner());
+            *done
+        }))
     }
 
     /// Asks every block to stop at its next check (within 1024 steps).

@@ -176,6 +176,30 @@ def test_scenarios_lists_the_examples() -> None:
         assert pl.load_scenario(path).title in line
 
 
+def test_examples_by_name(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """run, validate and exact take a shipped example's name; the listing has the sweeps too; an
+    unknown name is a user error listing the examples; a local file of that name wins."""
+    monkeypatch.chdir(tmp_path)  # outside the checkout: the examples come from the package
+    code, out, err = invoke("run", "rosette", *SHORT, "-q", "--out", "r.csv")
+    assert code == 0, err
+    rows = [line for line in Path("r.csv").read_text().splitlines() if line and not line.startswith("#")]
+    assert len(rows) == 1 + 11  # the header and 11 samples
+    code, out, _ = invoke("validate", "conical", "near_top.toml")
+    assert code == 0 and out.count(": OK") == 2
+    code, out, _ = invoke("exact", "rosette", "--t", "0:1:0.5", "-q", "--out", "e.csv")
+    assert code == 0 and Path("e.csv").is_file()
+    code, out, _ = invoke("scenarios")
+    assert code == 0 and "Example sweeps" in out
+    assert all(name in out for name in ("rotation_number", "sway", "crane_settle"))
+    code, _, err = invoke("run", "no_such_example")
+    assert code == 2 and err.count("\n") == 1
+    assert "no_such_example: No such file, and no example scenario of that name" in err and "rosette" in err
+    mine = (SCENARIOS / "zero_g.toml").read_text().replace("Zero gravity: a great circle", "my own")
+    Path("rosette").write_text(mine)
+    code, out, _ = invoke("validate", "rosette")
+    assert code == 0 and out.strip() == "rosette: OK (my own)"
+
+
 def test_version_and_help() -> None:
     """--version prints the version; --help lists every command, run --help every option."""
     code, out, _ = invoke("--version")

@@ -5,6 +5,7 @@ and bad input. Units SI; l = 1 m, g = 9.81 m/s²."""
 from __future__ import annotations
 
 import json
+import time
 from pathlib import Path
 
 import numpy as np
@@ -210,3 +211,29 @@ def test_arrays_to_xarray_netcdf_and_zarr(pendulum: pl.Pendulum, tmp_path: Path,
     assert sorted(p.name for p in tmp_path.iterdir()) == [f"ens{suffix}"]  # no temporary left behind
     with pytest.raises(ValueError, match=r"use \.nc or \.zarr"):
         res.save(tmp_path / "ens.csv")
+
+
+def test_wait_returns_when_the_run_ends_not_at_a_poll(pendulum: pl.Pendulum) -> None:
+    """EnsembleRun.wait(timeout) returns True the moment the run has finished (far sooner than a long
+    timeout), False while it runs; a cancelled run is seen at once too; bad timeouts are named."""
+    from pendulab._core import EnsembleRun
+
+    states = pl.states_from_angles(pendulum, theta=np.linspace(0.2, 2.9, 64), phi_dot=1.0)
+    x, v = np.ascontiguousarray(states[:, :3]), np.ascontiguousarray(states[:, 3:])
+    one, g = np.array([1.0]), np.array([9.81])
+    small = EnsembleRun(x, v, one, g, 1e-3, 100)
+    t0 = time.perf_counter()
+    assert small.wait(60.0)
+    assert time.perf_counter() - t0 < 30.0  # returned on completion, not after the 60 s timeout
+    assert small.done and small.wait(0.0)
+    assert small.result()["steps"] == 100
+    big = EnsembleRun(x, v, one, g, 1e-3, 10**9)  # would take minutes
+    assert not big.wait(0.0) and not big.done
+    big.cancel()
+    t0 = time.perf_counter()
+    assert big.wait(60.0)
+    assert time.perf_counter() - t0 < 30.0
+    assert big.result()["cancelled"]
+    for bad in (-1.0, float("nan"), float("inf")):
+        with pytest.raises(pl.InvalidInputError, match="timeout"):
+            small.wait(bad)

@@ -1,11 +1,12 @@
 //! Ensemble throughput (trajectory-steps per second) of RATTLE on 4096 ideal pendulums (l = 1 m,
 //! g = 9.81 m/s², dt = 1e-3 s), on 1 thread and on all threads: the ratio is the parallel speed-up.
 //! Also, on all threads, the cost of linear damping c = 0.1 1/s (the exact flow e^{−c dt/2} on either
-//! side of each step) with settle tracking, against the undamped run of the same group.
+//! side of each step) with settle tracking, against the undamped run of the same group; and one thread
+//! restricted to the baseline instruction set (`isa::set_baseline_only`: what a CPU without AVX2/FMA runs).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use pendulab_core::ensemble::{run_with, EnsembleSave, Extras};
-use pendulab_core::{IdealPendulum, Model, State};
+use pendulab_core::{isa, IdealPendulum, Model, State};
 use std::sync::atomic::{AtomicBool, AtomicU64};
 
 fn bench(c: &mut Criterion) {
@@ -21,12 +22,14 @@ fn bench(c: &mut Criterion) {
     let all = rayon::current_num_threads();
     let damped = Extras { damping: &[0.1], settle_angle: Some(0.05) };
     let cases = [
-        ("1_threads".to_string(), 1, Extras::default()),
-        (format!("{all}_threads"), all, Extras::default()),
-        (format!("{all}_threads_damped_settle"), all, damped),
+        ("1_threads".to_string(), 1, Extras::default(), false),
+        (format!("{all}_threads"), all, Extras::default(), false),
+        (format!("{all}_threads_damped_settle"), all, damped, false),
+        ("1_threads_baseline_level".to_string(), 1, Extras::default(), true),
     ];
-    for (name, threads, extras) in cases {
+    for (name, threads, extras, baseline) in cases {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
+        isa::set_baseline_only(baseline);
         g.bench_function(name, |b| {
             b.iter(|| {
                 pool.install(|| {
@@ -47,6 +50,7 @@ fn bench(c: &mut Criterion) {
                 })
             })
         });
+        isa::set_baseline_only(false);
     }
     g.finish();
 }

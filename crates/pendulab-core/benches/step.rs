@@ -1,9 +1,11 @@
 //! Criterion benchmarks: one step of every registered method on the rosette state
 //! (l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s), and RATTLE throughput over 10⁵ steps
-//! (steps/s = 10⁵ / time). Run with `cargo bench -p pendulab-core` or `make bench`.
+//! (steps/s = 10⁵ / time), also restricted to the baseline instruction set (`isa::set_baseline_only`:
+//! what a CPU without AVX2/FMA runs, here with the C library's `fma` behind a call). Run with
+//! `cargo bench -p pendulab-core` or `make bench`.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
-use pendulab_core::{IdealPendulum, Method, Model, SolveOptions, State, Stepper};
+use pendulab_core::{isa, IdealPendulum, Method, Model, SolveOptions, State, Stepper};
 
 fn rosette() -> (IdealPendulum, State) {
     let model = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
@@ -43,6 +45,15 @@ fn rattle_throughput(c: &mut Criterion) {
             stepper.step_n(black_box(n)).unwrap();
             black_box(stepper.state().x)
         })
+    });
+    group.bench_function("rattle_1e5_steps_baseline_level", |b| {
+        let mut stepper = Stepper::new(model, 0.0, s0, &options).unwrap();
+        isa::set_baseline_only(true);
+        b.iter(|| {
+            stepper.step_n(black_box(n)).unwrap();
+            black_box(stepper.state().x)
+        });
+        isa::set_baseline_only(false);
     });
     group.finish();
 }

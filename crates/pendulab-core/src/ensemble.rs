@@ -10,7 +10,7 @@
 //! trajectory, the time after which the sway angle from the stable equilibrium −sign(g) e₃ stays at
 //! or below a threshold (cos sway = −sign(g) z/l; resolution one step). Layout: blocks of [`LANES`] trajectories in structure-of-arrays
 //! form (each coordinate a fixed-size array), so the lane loop has no branches and the compiler
-//! vectorises it; blocks run in parallel with rayon (feature `parallel`). Per-trajectory length l [m]
+//! vectorises it (for the widest vectors the CPU has, chosen at run time: [`crate::isa`]); blocks run in parallel with rayon (feature `parallel`). Per-trajectory length l [m]
 //! and gravity g [m/s²]. Memory is bounded by what is saved (final state, every n-th step, or a
 //! summary), never by trajectories × steps. Progress is a shared step counter and a cancel flag is
 //! checked every [`CHECK_EVERY`] steps. SI units throughout.
@@ -423,15 +423,21 @@ impl BlockRun<'_> {
         let mut done = 0u64;
         while done < n_steps {
             let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
-            for j in 1..=chunk {
-                blk.step(self.dt);
-                if self.with_summary {
-                    blk.update_summary();
-                }
-                if self.track {
-                    blk.track_settle((done + j) as f64);
-                }
-            }
+            // the lane loops compiled for the CPU's widest vectors (AVX-512, AVX2 + FMA; crate::isa)
+            crate::isa::fastest(
+                #[inline(always)]
+                || {
+                    for j in 1..=chunk {
+                        blk.step(self.dt);
+                        if self.with_summary {
+                            blk.update_summary();
+                        }
+                        if self.track {
+                            blk.track_settle((done + j) as f64);
+                        }
+                    }
+                },
+            );
             done += chunk;
             self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
             if done % every == 0 || done == n_steps {

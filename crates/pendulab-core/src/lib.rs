@@ -26,6 +26,7 @@
 //! - [`elastic`]: the swinging spring (T-7.4) with its own symplectic integrators.
 //! - [`ensemble`]: many trajectories at once (SoA blocks, rayon), RATTLE.
 //! - [`error`]: the error type.
+//! - [`isa`]: run-time choice of the instruction set (AVX2/FMA, AVX-512) for the hot loops.
 
 /// Elliptic integrals (Legendre, via Carlson) and Jacobi elliptic functions for the exact solution.
 pub mod elastic;
@@ -34,6 +35,7 @@ pub mod ensemble;
 pub mod error;
 pub mod exact;
 pub mod integrate;
+pub mod isa;
 pub mod model;
 pub mod quadrature;
 pub mod reduce;

@@ -172,6 +172,15 @@ impl<M: Model> Stepper<M> {
 
     /// One step, but never past `t_stop` [s]; a fixed step that would pass it is shortened to land on it.
     pub fn step_towards(&mut self, t_stop: f64) -> Result<()> {
+        // compiled for the CPU's best instruction set (crate::isa; the numbers are the same at every level)
+        crate::isa::fastest(
+            #[inline(always)]
+            || self.step_towards_here(t_stop),
+        )
+    }
+
+    #[inline(always)]
+    fn step_towards_here(&mut self, t_stop: f64) -> Result<()> {
         let (model, state, stats) = (&self.model, &mut self.state, &mut self.stats);
         let t = self.t;
         with_fixed!(&mut self.scheme, s => {
@@ -211,6 +220,15 @@ impl<M: Model> Stepper<M> {
 
     /// Takes `n` full steps (fixed-step methods) in a tight loop; for `dop853`, `n` accepted steps.
     pub fn step_n(&mut self, n: u64) -> Result<()> {
+        // the loop compiled for the CPU's best instruction set (crate::isa)
+        crate::isa::fastest(
+            #[inline(always)]
+            || self.step_n_here(n),
+        )
+    }
+
+    #[inline(always)]
+    fn step_n_here(&mut self, n: u64) -> Result<()> {
         let (model, state) = (&self.model, &mut self.state);
         with_fixed!(&mut self.scheme, s => {
             let k0 = self.k;

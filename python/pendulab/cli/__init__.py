@@ -9,7 +9,6 @@ from __future__ import annotations
 
 from . import animate, exact, fit, run, serve, sweep  # noqa: F401  (each registers its commands on `app`)
 from .common import EXIT_INTERRUPTED, EXIT_USER_ERROR, app
-from .run import scenario_dirs
 
 
 def main() -> None:
@@ -17,4 +16,4 @@ def main() -> None:
     app(prog_name="pendulab")
 
 
-__all__ = ["EXIT_INTERRUPTED", "EXIT_USER_ERROR", "app", "main", "scenario_dirs"]
+__all__ = ["EXIT_INTERRUPTED", "EXIT_USER_ERROR", "app", "main"]

@@ -19,6 +19,7 @@ import typer
 from .. import io
 from .._core import IntegrationError, InvalidInputError, __version__
 from ..scenario import ScenarioError
+from ..scenario.examples import find as find_example
 
 EXIT_USER_ERROR = 2
 EXIT_INTERRUPTED = 130
@@ -80,6 +81,17 @@ def _root(
     ] = False,
 ) -> None:
     """Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up."""
+
+
+def _scenario_file(arg: Path) -> Path:
+    """A SCENARIO argument: an existing file as given, else the shipped example of that name
+    (``rosette``); FileNotFoundError naming it and the examples (a user error) otherwise."""
+    return find_example(arg, "scenario")
+
+
+def _sweep_file(arg: Path) -> Path:
+    """A SWEEP argument: an existing file as given, else the shipped example sweep of that name."""
+    return find_example(arg, "sweep")
 
 
 def _check_output(out: Path) -> None:

@@ -22,7 +22,7 @@ from ..simulation import simulate
 from ..theory.advance import measured_azimuth_advance
 from ..theory.em_map import em_map
 from ..theory.exact import ExactSolution, exact
-from .common import _check_output, _fail, _say, _user_errors, app
+from .common import _check_output, _fail, _say, _scenario_file, _user_errors, app
 
 MAX_TIMES = 20_000_000
 """Most times ``pendulab exact --t`` accepts (~1 GB of states)."""
@@ -36,7 +36,9 @@ PLOT_SAMPLES_PER_PERIOD = 400
 """Exact states per z-period that ``pendulab plot --exact`` draws (at least 2001, at most 200001)."""
 
 _SCENARIO = typer.Argument(
-    metavar="SCENARIO", help="Scenario file (TOML); see docs/scenarios.md.", show_default=False
+    metavar="SCENARIO",
+    help="Scenario file (TOML; see docs/scenarios.md) or the name of a shipped example (rosette, ...).",
+    show_default=False,
 )
 
 
@@ -104,7 +106,7 @@ def exact_cmd(
     with _user_errors():
         if out is not None:
             _check_output(out)
-        sc = load_scenario(scenario)
+        sc = load_scenario(_scenario_file(scenario))
         if t is None:
             sim = sc.spec.simulation
             times = np.linspace(sim.t0, sim.t_end, 1001)
@@ -151,7 +153,7 @@ def phases(
     with _user_errors():
         if plot is not None:
             _check_image("--plot", plot)
-        sc = load_scenario(scenario)
+        sc = load_scenario(_scenario_file(scenario))
         sol = _solution(sc)
         ph = sol.phases()
         tz = sol.period_z
@@ -297,7 +299,7 @@ def reduced(
     with _user_errors():
         if out.suffix.lower() not in IMAGE_SUFFIXES:
             _fail(f"unknown image suffix {out.suffix!r} in {str(out)!r}; use .png, .svg or .pdf")
-        sc = load_scenario(scenario)
+        sc = load_scenario(_scenario_file(scenario))
         sol = _solution(sc)
         tz = sol.period_z
         span = (
@@ -349,7 +351,7 @@ def plot_cmd(
         _check_image("--out", out)
         if kind not in PLOT_KINDS:
             _fail(f"--kind {kind!r}: use one of {', '.join(PLOT_KINDS)}")
-        sc = load_scenario(scenario)
+        sc = load_scenario(_scenario_file(scenario))
         if t_end is not None:
             sc = sc.with_overrides(t_end=t_end)
         from .. import plot as plotting

@@ -21,6 +21,7 @@ import typer
 from .._core import InvalidInputError
 from ..model import models as model_table
 from ..scenario import Scenario, ScenarioError, load_scenario
+from ..scenario.examples import scenario_files, sweep_files
 from ..simulation import methods as method_table
 from .common import (
     EXIT_INTERRUPTED,
@@ -29,6 +30,7 @@ from .common import (
     _describe,
     _fail,
     _say,
+    _scenario_file,
     _user_errors,
     app,
 )
@@ -52,7 +54,10 @@ def run(
     scenario: Annotated[
         Path,
         typer.Argument(
-            metavar="SCENARIO", help="Scenario file (TOML); see docs/scenarios.md.", show_default=False
+            metavar="SCENARIO",
+            help="Scenario file (TOML; see docs/scenarios.md) or the name of a shipped example "
+            "(`pendulab scenarios`), e.g. rosette.",
+            show_default=False,
         ),
     ],
     out: Annotated[
@@ -109,7 +114,7 @@ def run(
     with _user_errors():
         if out is not None:
             _check_output(out)
-        sc = load_scenario(scenario).with_overrides(
+        sc = load_scenario(_scenario_file(scenario)).with_overrides(
             method=method, dt=dt, t_end=t_end, save_every=save_every, rtol=rtol, atol=atol
         )
         projection = sc.initial_state().projection
@@ -247,14 +252,18 @@ def models(
 def validate(
     scenarios: Annotated[
         list[Path],
-        typer.Argument(metavar="SCENARIO", help="Scenario files (TOML) to check.", show_default=False),
+        typer.Argument(
+            metavar="SCENARIO",
+            help="Scenario files (TOML) or names of shipped examples to check.",
+            show_default=False,
+        ),
     ],
 ) -> None:
     """Check scenario files without running them: print OK or every problem; exit code 2 if any is bad."""
     bad = 0
     for path in scenarios:
         try:
-            sc = load_scenario(path)
+            sc = load_scenario(_scenario_file(path))
         except ScenarioError as e:
             bad += 1
             for problem in e.problems:
@@ -268,36 +277,37 @@ def validate(
         raise typer.Exit(EXIT_USER_ERROR)
 
 
-def scenario_dirs() -> list[Path]:
-    """Where the example scenarios are looked for: ./examples/scenarios, then the source tree's."""
-    candidates = [
-        Path.cwd() / "examples" / "scenarios",
-        Path(__file__).resolve().parents[3] / "examples" / "scenarios",
-    ]
-    found: list[Path] = []
-    for d in candidates:
-        if d.is_dir() and d.resolve() not in found:
-            found.append(d.resolve())
-    return found
-
-
-@app.command(short_help="List the example scenarios with their titles.")
+@app.command(short_help="List the example scenarios and sweeps shipped with the package.")
 def scenarios() -> None:
-    """List the example scenarios shipped in examples/scenarios, with their titles."""
-    dirs = scenario_dirs()
-    files = {f.stem: f for d in reversed(dirs) for f in sorted(d.glob("*.toml"))}
+    """List the example scenarios (run one by name: `pendulab run rosette`) and sweeps (`pendulab sweep
+    rotation_number`) shipped inside the package, with their titles and files."""
+    files = scenario_files()
     if not files:
-        _fail(
-            "no example scenarios found: looked for examples/scenarios in the current directory "
-            "and beside the package"
-        )
-    width = max(map(len, files))
-    for name, path in sorted(files.items()):
+        _fail("no example scenarios found: the package's examples/ folder is missing (a broken install?)")
+    width = max(map(len, [*files, *sweep_files()]))
+    for name, path in files.items():
         try:
             title = load_scenario(path).title or ""
         except (ScenarioError, OSError) as e:
             title = f"INVALID: {_describe(e)}"
         _say(f"{name.ljust(width)}  {title}  ({_display(path)})")
+    sweeps = sweep_files()
+    if sweeps:
+        _say("")
+        _say("Example sweeps (pendulab sweep NAME --out FILE.parquet):")
+        for name, path in sweeps.items():
+            _say(f"{name.ljust(width)}  {_sweep_title(path)}  ({_display(path)})")
+
+
+def _sweep_title(path: Path) -> str:
+    """The first line of a sweep file's leading comment (sweep files have no title key)."""
+    with contextlib.suppress(OSError, UnicodeDecodeError):
+        for line in path.read_text(encoding="utf-8").splitlines():
+            if line.startswith("#"):
+                return line.lstrip("# ").split(":")[0].strip()
+            if line.strip():
+                break
+    return ""
 
 
 def _display(path: Path) -> str:

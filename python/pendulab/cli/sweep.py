@@ -16,9 +16,13 @@ import typer
 from ..sweeps.file import SweepFile, load_sweep_file
 from ..sweeps.results import MANIFEST
 from ..sweeps.run import BACKENDS, sweep
-from .common import EXIT_INTERRUPTED, _fail, _say, _user_errors, app
+from .common import EXIT_INTERRUPTED, _fail, _say, _sweep_file, _user_errors, app
 
-_SWEEP = typer.Argument(metavar="SWEEP", help="Sweep file (TOML); see docs/sweeps.md.", show_default=False)
+_SWEEP = typer.Argument(
+    metavar="SWEEP",
+    help="Sweep file (TOML; see docs/sweeps.md) or the name of a shipped example (`pendulab scenarios`).",
+    show_default=False,
+)
 
 
 def _plan(sf: SweepFile, kwargs: dict[str, Any]) -> str:
@@ -98,7 +102,7 @@ def sweep_cmd(
             _fail("--workers and --scheduler exclude each other (the scheduler's cluster has its workers)")
         if backend is not None and backend not in BACKENDS:
             _fail(f"--backend {backend!r}: use one of {', '.join(BACKENDS)}")
-        sf = load_sweep_file(sweep_file)
+        sf = load_sweep_file(_sweep_file(sweep_file))
         kwargs = sf.sweep_kwargs()
         for key, value in (
             ("workers", workers),

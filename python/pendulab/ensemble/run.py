@@ -13,7 +13,6 @@ NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C sto
 
 from __future__ import annotations
 
-import time
 import warnings
 from typing import Any
 
@@ -177,11 +176,10 @@ def simulate_ensemble(
     interrupted = False
     with tqdm(total=1000, disable=not show, unit="‰", desc=f"{n} trajectories", leave=False) as bar:
         try:
-            pause = 1e-4  # short runs return at once; long ones are polled every _POLL_SECONDS
-            while not run.done:
-                time.sleep(pause)
-                pause = min(2.0 * pause, _POLL_SECONDS)
+            # wait returns the moment the run ends; the bar (and Ctrl-C) are served every _POLL_SECONDS
+            while not run.wait(_POLL_SECONDS):
                 bar.update(int(run.progress * 1000) - bar.n)
+            bar.update(int(run.progress * 1000) - bar.n)
         except KeyboardInterrupt:
             run.cancel()
             interrupted = True

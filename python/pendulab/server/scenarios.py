@@ -1,5 +1,5 @@
 """The scenarios a lab session can start from: the example files by name, a file given to
-``pendulab serve``, or a built-in rosette when the package has no examples. A page may load examples
+``pendulab serve``, or a built-in rosette should the package's examples be missing. A page may load examples
 by name only, never a path (it must not make the server read files).
 """
 
@@ -11,6 +11,7 @@ from pathlib import Path
 
 from ..model import State
 from ..scenario import Scenario, ScenarioError, load_scenario
+from ..scenario.examples import scenario_files as shipped_scenarios
 from ..simulation import DEFAULTS
 from .live_models import LabPendulum, scenario_pendulum
 from .protocol import MODEL_SPECS
@@ -29,7 +30,7 @@ t_end = 100.0
 method = "rattle"
 dt = 1.0e-3
 """
-"""Used when no scenario files are found (a package installed without the source tree's examples)."""
+"""Used when the package's example scenarios are missing (a package built without its data files)."""
 
 
 @dataclass(frozen=True)
@@ -65,22 +66,10 @@ class Setup:
         )
 
 
-def scenario_dirs() -> list[Path]:
-    """Where example scenarios are looked for: ./examples/scenarios, then the source tree's."""
-    here = Path(__file__).resolve()
-    found: list[Path] = []
-    for d in (Path.cwd() / "examples" / "scenarios", here.parents[3] / "examples" / "scenarios"):
-        if d.is_dir() and d.resolve() not in found:
-            found.append(d.resolve())
-    return found
-
-
 def scenario_files() -> dict[str, Path]:
-    """Example scenarios by name (file stem); the first directory of :func:`scenario_dirs` wins."""
-    files: dict[str, Path] = {}
-    for d in reversed(scenario_dirs()):
-        files.update({f.stem: f for f in sorted(d.glob("*.toml"))})
-    return dict(sorted(files.items()))
+    """The example scenarios by name (file stem): those shipped in the package
+    (:mod:`pendulab.scenario.examples`)."""
+    return shipped_scenarios()
 
 
 def builtin_setup() -> Setup:

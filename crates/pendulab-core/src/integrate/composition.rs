@@ -75,7 +75,7 @@ impl Composition {
 }
 
 impl FixedStep for Composition {
-    #[inline]
+    #[inline(always)]
     fn step<M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> Result<()> {
         let mut tau = t;
         for &w in &self.weights {

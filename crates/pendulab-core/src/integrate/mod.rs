@@ -50,7 +50,7 @@ pub trait FixedStep {
 /// every driver ([`crate::Stepper::step_n`], hence [`crate::Solver`]) runs. A wrapped model
 /// (`AnyModel`) chooses its variant once, through [`Model::visit`], so the loop is monomorphised per
 /// variant.
-#[inline]
+#[inline(always)]
 pub fn fixed_steps<M: Model, S: FixedStep>(
     model: &M,
     scheme: &mut S,
@@ -75,7 +75,7 @@ struct FixedSteps<'a, S> {
 
 impl<S: FixedStep> ModelVisitor for FixedSteps<'_, S> {
     type Output = Result<()>;
-    #[inline]
+    #[inline(always)]
     fn visit<M: Model>(self, model: &M) -> Result<()> {
         for _ in 0..self.n {
             self.scheme.step(model, self.t_anchor + *self.k as f64 * self.dt, self.state, self.dt)?;

@@ -27,9 +27,10 @@
 //! Updates are Kahan-compensated (the compensation folded into the increment): x₁ = x₀ + (h v½ − cₓ),
 //! v₁ = v₀ + ((k₀ + k₁ − c_v) + μ x₀ − p x₁) with p = x₁·u / l².
 //!
-//! Fused multiply-adds are used where the target has them (`fmadd`: one rounding, shorter latency);
-//! elsewhere a·b + c is computed with two roundings. Either way the single-trajectory and ensemble
-//! paths compiled together agree bit for bit. SI units: lengths [m], velocities [m/s], h [s].
+//! Fused multiply-adds (`fmadd`: one rounding, shorter latency) are written explicitly and are the
+//! correctly rounded fused operation on every CPU, so the numbers do not depend on the instruction
+//! set the hot loops were dispatched to ([`crate::isa`]); the single-trajectory and ensemble paths
+//! agree bit for bit. SI units: lengths [m], velocities [m/s], h [s].
 
 use glam::DVec3;
 
@@ -37,17 +38,12 @@ use glam::DVec3;
 /// < 429 |z|⁷ / (1 − 4|z|) < 4.3·10⁻¹⁹).
 pub const SERIES_LIMIT: f64 = 1e-3;
 
-/// a·b + c, fused (one rounding) when the target has FMA instructions.
+/// a·b + c with one rounding (IEEE fused multiply-add) on every CPU: one instruction in the FMA
+/// levels of [`crate::isa`] and on aarch64, the C library's exact `fma` in the x86-64 baseline
+/// (slow, which is why every caller on a hot path runs inside [`crate::isa::fastest`]).
 #[inline(always)]
 pub fn fmadd(a: f64, b: f64, c: f64) -> f64 {
-    #[cfg(target_feature = "fma")]
-    {
-        a.mul_add(b, c)
-    }
-    #[cfg(not(target_feature = "fma"))]
-    {
-        a * b + c
-    }
+    a.mul_add(b, c)
 }
 
 /// a·s + c componentwise.

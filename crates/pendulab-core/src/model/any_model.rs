@@ -187,7 +187,7 @@ impl Model for AnyModel {
     fn kick_acceleration(&self, t: f64, x: DVec3) -> DVec3 {
         both!(self, m => m.kick_acceleration(t, x))
     }
-    #[inline]
+    #[inline(always)]
     fn visit<V: ModelVisitor>(&self, visitor: V) -> V::Output {
         both!(self, m => m.visit(visitor))
     }

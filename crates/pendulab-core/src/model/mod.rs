@@ -89,7 +89,7 @@ pub trait Model: Send + Sync {
     /// others (the registry's `AnyModel`) overrides this to hand over its variant, so that a loop
     /// inside the visitor (the fixed-step loop of `integrate::fixed_steps`) is monomorphised per
     /// variant and dispatches once per loop, not once per step. Default: the model itself.
-    #[inline]
+    #[inline(always)]
     fn visit<V: ModelVisitor>(&self, visitor: V) -> V::Output
     where
         Self: Sized,

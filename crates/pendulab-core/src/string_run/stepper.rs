@@ -33,12 +33,16 @@ impl Scheme {
             _ => return Err(Error::UnsupportedModel { method: method.info().name, model: "string" }),
         })
     }
+    /// One step, compiled for the CPU's best instruction set ([`crate::isa`]; same numbers at every level).
     fn step(&mut self, m: &IdealPendulum, t: f64, s: &mut State, h: f64) -> Result<()> {
-        match self {
-            Scheme::Rattle(r) => r.step(m, t, s, h),
-            Scheme::Composition(c) => c.step(m, t, s, h),
-            Scheme::Rkmk4(r) => r.step(m, t, s, h),
-        }
+        crate::isa::fastest(
+            #[inline(always)]
+            || match self {
+                Scheme::Rattle(r) => r.step(m, t, s, h),
+                Scheme::Composition(c) => c.step(m, t, s, h),
+                Scheme::Rkmk4(r) => r.step(m, t, s, h),
+            },
+        )
     }
     fn evals(&self) -> u64 {
         match self {

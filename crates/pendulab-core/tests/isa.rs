@@ -1,0 +1,73 @@
+//! The instruction-set levels of `pendulab_core::isa` give the same numbers bit for bit: every
+//! method through the stepper (loop and single steps), the ensemble kernel (with damping and a
+//! summary), and the string stepper, once at the best level of this CPU and once restricted to the
+//! baseline (the plain fallback an older CPU runs). One test in its own binary, because the
+//! restriction is process-wide. SI units; rosette-like starts.
+
+use pendulab_core::ensemble::{run_with, EnsembleSave, Extras, LANES};
+use pendulab_core::isa;
+use pendulab_core::model::string_stepper::StringStepper;
+use pendulab_core::model::{AnyModel, StringPendulum};
+use pendulab_core::{IdealPendulum, Method, Params, SolveOptions, State, Stepper};
+use std::sync::atomic::{AtomicBool, AtomicU64};
+
+fn start(params: &Params, k: usize) -> State {
+    State::from_angles(params, 0.4 + 0.2 * k as f64, 0.1 * k as f64, 0.3, 1.5 - 0.1 * k as f64).unwrap()
+}
+
+/// Every result the dispatched loops produce, as bits.
+fn everything() -> Vec<u64> {
+    let mut out = Vec::new();
+    let push = |out: &mut Vec<u64>, s: &State| {
+        out.extend([s.x, s.v].iter().flat_map(|w| w.to_array()).map(f64::to_bits))
+    };
+    let params = Params::new(1.3, 1.0, 9.81).unwrap();
+    for method in Method::ALL {
+        let opts = SolveOptions { method, dt: 2e-3, rtol: 1e-9, atol: 1e-11, ..SolveOptions::default() };
+        let damped = AnyModel::build("damped", params, &[("damping", 0.2)]).unwrap();
+        let ideal = IdealPendulum::new(params.length, params.mass, params.g).unwrap();
+        let mut a = Stepper::new(ideal, 0.0, start(&params, 1), &opts).unwrap();
+        a.step_n(700).unwrap();
+        push(&mut out, a.state());
+        a.step_to(a.t() + 0.0123).unwrap();
+        push(&mut out, a.state());
+        if method != Method::Rk4Angles {
+            let mut b = Stepper::new(damped, 0.0, start(&params, 2), &opts).unwrap();
+            b.step_n(500).unwrap();
+            push(&mut out, b.state());
+        }
+    }
+    let starts: Vec<State> = (0..LANES + 3).map(|k| start(&params, k % 7)).collect();
+    let damping: Vec<f64> = (0..starts.len()).map(|k| 0.01 * (k % 4) as f64).collect();
+    let extras = Extras { damping: &damping, settle_angle: Some(0.3) };
+    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+    let res = run_with(&starts, &[1.3], &[9.81], &extras, 1e-3, 1500, EnsembleSave::Every(500), true, &p, &c)
+        .unwrap();
+    for traj in &res.states {
+        traj.iter().for_each(|s| push(&mut out, s));
+    }
+    for s in res.summary.unwrap() {
+        out.extend([s.z.0, s.z.1, s.energy_per_mass.0, s.energy_per_mass.1].map(f64::to_bits));
+    }
+    out.extend(res.settle_time.unwrap().into_iter().map(f64::to_bits));
+    let string = StringPendulum::new(params, 0.0).unwrap();
+    let mut st = StringStepper::new(string, 0.0, start(&params, 6), Method::Rattle, 1e-3).unwrap();
+    st.step(3000).unwrap();
+    push(&mut out, &st.state());
+    out
+}
+
+#[test]
+fn every_instruction_set_level_gives_the_same_bits() {
+    let best_level = isa::selected();
+    let best = everything();
+    isa::set_baseline_only(true);
+    assert_eq!(isa::selected(), "baseline");
+    let baseline = everything();
+    isa::set_baseline_only(false);
+    assert_eq!(isa::selected(), best_level);
+    assert_eq!(best.len(), baseline.len());
+    let differ = best.iter().zip(&baseline).filter(|(a, b)| a != b).count();
+    assert_eq!(differ, 0, "{differ} of {} numbers differ between {best_level} and the baseline", best.len());
+    eprintln!("{best_level} and baseline agree on {} numbers", best.len());
+}
