@@ -15,7 +15,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -101,9 +100,10 @@ def main() -> None:
         "| benchmark | reference | portable | portable / reference |",
         "|---|---|---|---|",
     ]
-    for k in sorted(set(best["reference"]) & set(best["portable"]), key=lambda s: re.sub(r"\d+", "", s)):
-        a, b = best["reference"][k], best["portable"][k]
-        lines.append(f"| `{k}` | {fmt(a)} | {fmt(b)} | {b / a:.3f} |")
+    for k in sorted(set(best["reference"]) | set(best["portable"])):
+        a, b = best["reference"].get(k), best["portable"].get(k)
+        ratio = f"{b / a:.3f}" if a is not None and b is not None else "—"
+        lines.append(f"| `{k}` | {fmt(a)} | {fmt(b)} | {ratio} |")
     table = "\n".join(lines)
     print(table)
     if args.markdown:
@@ -111,7 +111,9 @@ def main() -> None:
     print(f"({time.perf_counter() - t0:.0f} s)")
 
 
-def fmt(ns: float) -> str:
+def fmt(ns: float | None) -> str:
+    if ns is None:
+        return "—"
     for unit, scale in (("s", 1e9), ("ms", 1e6), ("µs", 1e3)):
         if ns >= scale:
             return f"{ns / scale:.3g} {unit}"
