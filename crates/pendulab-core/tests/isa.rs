@@ -6,8 +6,8 @@
 
 use pendulab_core::ensemble::{run_with, EnsembleSave, Extras, LANES};
 use pendulab_core::isa;
-use pendulab_core::model::string_stepper::StringStepper;
 use pendulab_core::model::{AnyModel, StringPendulum};
+use pendulab_core::string_run::StringStepper;
 use pendulab_core::{IdealPendulum, Method, Params, SolveOptions, State, Stepper};
 use std::sync::atomic::{AtomicBool, AtomicU64};
 

@@ -1,7 +1,7 @@
 """The example scenarios and sweeps shipped inside the package (data files in
 ``pendulab/examples/scenarios/*.toml`` and ``pendulab/examples/sweeps/*.toml``; the source tree's
-``examples/scenarios`` and ``examples/sweeps`` link there), found by name: ``pendulab run rosette``, ``pendulab
-scenarios``, ``pendulab sweep rotation_number``, the lab's scenario menu.
+``examples/scenarios`` and ``examples/sweeps`` link there), found by name: ``pendulab run
+rosette``, ``pendulab scenarios``, ``pendulab sweep rotation_number``, the lab's scenario menu.
 
 A name is a file's stem (``rosette`` for ``scenarios/rosette.toml``). :func:`find` takes either a
 path to a TOML file or such a name; a path that exists always wins, so a local ``rosette.toml`` is
