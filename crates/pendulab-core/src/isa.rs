@@ -1,14 +1,14 @@
 //! Run-time choice of the instruction set for the hot loops (no physics here).
 //!
 //! The crate is compiled for the baseline of its target (x86-64: SSE2; aarch64: NEON, FMA), so that
-//! one build runs on every CPU of that architecture. The loops where the time goes — the RATTLE step
-//! loop of [`crate::Stepper`], the ensemble blocks of [`crate::ensemble`], the DOP853 step and the
-//! string stepper's loop — run their body through [`fastest`], which compiles it once more for each
+//! one build runs on every CPU of that architecture. The loops where the time goes — the step and
+//! step-loop bodies of [`crate::Stepper`] (every method), the ensemble blocks of [`crate::ensemble`]
+//! and the string stepper's steps — run their body through [`fastest`], which compiles it once more for each
 //! of these x86-64 levels and picks the best one the CPU has, once per process:
 //!
 //! | level | instructions | CPUs (roughly) |
 //! |---|---|---|
-//! | `x86-64-v4` | AVX-512 F/BW/CD/DQ/VL (+ the Ice Lake extensions), AVX2, FMA | Intel since Ice Lake, AMD since Zen 4 |
+//! | `x86-64-v4` | AVX-512 F/BW/CD/DQ/VL, AVX2, FMA | Intel Skylake-SP and later AVX-512 parts, AMD since Zen 4 |
 //! | `x86-64-v3` | AVX2, FMA, BMI1/2, F16C, LZCNT, MOVBE | Intel since Haswell (2013), AMD since Excavator / Zen |
 //! | baseline | what the build targets (SSE2 on x86-64) | everything else, and every non-x86 CPU |
 //!
@@ -68,21 +68,9 @@ pub fn selected() -> &'static str {
             && has!("movbe")
             && has!("popcnt")
             && has!("sse4.2");
-        // the multiversion crate's AVX-512 clones also require Ice Lake's extensions
-        let v4 = has!("avx512f")
-            && has!("avx512bw")
-            && has!("avx512cd")
-            && has!("avx512dq")
-            && has!("avx512vl")
-            && has!("avx512bitalg")
-            && has!("avx512ifma")
-            && has!("avx512vbmi")
-            && has!("avx512vbmi2")
-            && has!("avx512vnni")
-            && has!("avx512vpopcntdq")
-            && has!("gfni")
-            && has!("vaes")
-            && has!("vpclmulqdq");
+        // the features of the AVX-512 clone of `on_best_level` (multiversion 0.8 adds none of its own)
+        let v4 =
+            has!("avx512f") && has!("avx512bw") && has!("avx512cd") && has!("avx512dq") && has!("avx512vl");
         if v3 && v4 {
             return "x86-64-v4";
         }
