@@ -168,6 +168,8 @@ impl SpringStepper {
                 allowed: "a finite start away from the pivot (|r| > 0 m)",
             });
         }
+        crate::model::registry::check_limits(&crate::model::registry::STATE[1], start.x.length())?;
+        crate::state::check_speed(start.v)?;
         let mut s = start;
         spring.step(&mut s, 0.0, order)?; // a zero step: checks the order, changes nothing
         Ok(Self { spring, s: start, t0, dt, order, k: 0 })

@@ -12,7 +12,8 @@
 //! A state is on TS² when |x| = l and x·v = 0 (T-3.2 on TS², with unit length). Constructors check
 //! this within [`TS2_TOLERANCE`] (relative), or project explicitly and report by how much.
 
-use crate::error::{require_finite, require_positive, Error, Result};
+use crate::error::{require_finite, Error, Result};
+use crate::model::registry::check_limits;
 use glam::DVec3;
 
 /// Relative tolerance of the TS² check: |(|x| − l)/l| and |x·v|/(l·|v|) must not exceed it.
@@ -30,11 +31,14 @@ pub struct Params {
 }
 
 impl Params {
-    /// Validated parameters: l > 0, m > 0 finite; g finite (negative and zero allowed).
+    /// Validated parameters within the limits of the model registry
+    /// ([`crate::model::registry::COMMON`]: l ∈ [1e-6, 1e4] m, m ∈ [1e-6, 1e6] kg, g ∈ [−1e4, 1e4]
+    /// m/s², negative and zero allowed).
     pub fn new(length: f64, mass: f64, g: f64) -> Result<Self> {
-        require_positive("length", length, "the rod length l must be a finite number > 0 m")?;
-        require_positive("mass", mass, "the mass m must be a finite number > 0 kg")?;
-        require_finite("g", g, "gravity g must be a finite number in m/s² (any sign, 0 allowed)")?;
+        let [l, m, gravity] = [0, 1, 2].map(|i| &crate::model::registry::COMMON[i]);
+        check_limits(l, length)?;
+        check_limits(m, mass)?;
+        check_limits(gravity, g)?;
         Ok(Self { length, mass, g })
     }
 
@@ -71,6 +75,11 @@ pub struct ConstraintResiduals {
     pub tangency: f64,
 }
 
+/// The bob's speed |v| within the registry's bound ([`crate::model::registry::STATE`]: 1e7 m/s).
+pub fn check_speed(v: DVec3) -> Result<()> {
+    check_limits(&crate::model::registry::STATE[0], v.length()).map(|_| ())
+}
+
 fn check_finite(name: &'static str, a: DVec3) -> Result<()> {
     for (index, value) in a.to_array().into_iter().enumerate() {
         if !value.is_finite() {
@@ -86,6 +95,7 @@ impl State {
     pub fn on_tangent_bundle(params: &Params, x: DVec3, v: DVec3) -> Result<Self> {
         check_finite("x", x)?;
         check_finite("v", v)?;
+        check_speed(v)?;
         let l = params.length;
         let r = (x.length() - l) / l;
         if r.abs() > TS2_TOLERANCE {
@@ -134,6 +144,7 @@ impl State {
             l * (theta_dot * ct * sp + phi_dot * st * cp),
             l * theta_dot * st,
         );
+        check_speed(v)?;
         Ok(Self { x, v })
     }
 

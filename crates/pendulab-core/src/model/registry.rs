@@ -59,6 +59,50 @@ const fn p(
     ParamSpec { name, label, unit, default, min, max: INF, description, allowed }
 }
 
+impl ParamSpec {
+    /// The same parameter with the allowed values `min ..= max` (in words: `allowed`). Every bound is
+    /// finite and has a physical reason, given in docs/models.md ("Limits"); a test checks that table
+    /// against this registry.
+    const fn within(self, min: f64, max: f64, allowed: &'static str) -> ParamSpec {
+        ParamSpec { min, max, allowed, ..self }
+    }
+}
+
+/// Checks `value` against `spec`'s limits: [`Error::InvalidParameter`] naming it and the allowed
+/// values when it is not finite or outside `min ..= max`.
+pub fn check_limits(spec: &ParamSpec, value: f64) -> Result<f64> {
+    if value.is_finite() && value >= spec.min && value <= spec.max {
+        Ok(value)
+    } else {
+        Err(Error::InvalidParameter { name: spec.name, value, allowed: spec.allowed })
+    }
+}
+
+/// Bounds of a state (any model), in the same form as the parameters: the bob's speed |v| [m/s] and,
+/// for the swinging spring whose bob leaves the sphere, its distance |x| from the pivot [m].
+pub const STATE: &[ParamSpec] = &[
+    ParamSpec {
+        name: "speed",
+        label: "speed |v|",
+        unit: "m/s",
+        default: 0.0,
+        min: 0.0,
+        max: 1e7,
+        description: "speed of the bob relative to the pivot",
+        allowed: "a speed |v| <= 1e7 m/s",
+    },
+    ParamSpec {
+        name: "distance",
+        label: "distance |x|",
+        unit: "m",
+        default: 1.0,
+        min: 0.0,
+        max: 1e5,
+        description: "distance of the bob from the pivot (the spring; on the sphere it is l)",
+        allowed: "a distance |x| in (0, 1e5] m",
+    },
+];
+
 /// The shared parameters.
 pub const COMMON: &[ParamSpec] = &[
     ParamSpec {
@@ -66,30 +110,30 @@ pub const COMMON: &[ParamSpec] = &[
         label: "length l",
         unit: "m",
         default: 1.0,
-        min: 0.0,
-        max: INF,
+        min: 1e-6,
+        max: 1e4,
         description: "length of the rod from the pivot to the bob (the spring's rest length l₀)",
-        allowed: "a finite number > 0",
+        allowed: "a number in [1e-6, 1e4] m",
     },
     ParamSpec {
         name: "mass",
         label: "bob mass m",
         unit: "kg",
         default: 1.0,
-        min: 0.0,
-        max: INF,
+        min: 1e-6,
+        max: 1e6,
         description: "mass of the bob (the rod is massless)",
-        allowed: "a finite number > 0",
+        allowed: "a number in [1e-6, 1e6] kg",
     },
     ParamSpec {
         name: "g",
         label: "gravity g",
         unit: "m/s^2",
         default: 9.81,
-        min: -INF,
-        max: INF,
+        min: -1e4,
+        max: 1e4,
         description: "strength of gravity along its direction (Earth 9.81; any sign, 0 allowed)",
-        allowed: "a finite number",
+        allowed: "a number in [-1e4, 1e4] m/s^2 (any sign, 0 allowed)",
     },
 ];
 
@@ -101,7 +145,8 @@ const GRAVITY_DIR: [ParamSpec; 3] = [
         0.0,
         -INF,
         "gravity direction d, x component (d normalised; −e₃ if no component is given, else 0 if omitted)",
-    ),
+    )
+    .within(-1e6, 1e6, "a number in [-1e6, 1e6] (a direction component)"),
     p(
         "gravity_y",
         "gravity direction d: y",
@@ -109,7 +154,8 @@ const GRAVITY_DIR: [ParamSpec; 3] = [
         0.0,
         -INF,
         "gravity direction d, y component (0 if omitted)",
-    ),
+    )
+    .within(-1e6, 1e6, "a number in [-1e6, 1e6] (a direction component)"),
     p(
         "gravity_z",
         "gravity direction d: z",
@@ -117,7 +163,8 @@ const GRAVITY_DIR: [ParamSpec; 3] = [
         -1.0,
         -INF,
         "gravity direction d, z component (−1 if no component is given, else 0 if omitted)",
-    ),
+    )
+    .within(-1e6, 1e6, "a number in [-1e6, 1e6] (a direction component)"),
 ];
 
 const DAMPED: &[ParamSpec] = &[
@@ -128,7 +175,8 @@ const DAMPED: &[ParamSpec] = &[
         0.0,
         0.0,
         "friction force −m c v, proportional to the velocity (T-7.1)",
-    ),
+    )
+    .within(0.0, 1e4, "a number in [0, 1e4] 1/s"),
     p(
         "drag",
         "air drag c_q",
@@ -136,7 +184,8 @@ const DAMPED: &[ParamSpec] = &[
         0.0,
         0.0,
         "air drag force −m c_q |v| v, growing with the square of the speed (T-7.1)",
-    ),
+    )
+    .within(0.0, 1e4, "a number in [0, 1e4] 1/m"),
     p(
         "forcing_amplitude",
         "driving strength A",
@@ -144,9 +193,15 @@ const DAMPED: &[ParamSpec] = &[
         0.0,
         0.0,
         "periodic driving force per unit mass A cos(ω t + ψ) along e (T-7.1)",
+    )
+    .within(0.0, 1e4, "a number in [0, 1e4] m/s^2"),
+    p("forcing_omega", "driving frequency ω", "rad/s", 0.0, -INF, "angular frequency ω of the driving force")
+        .within(-1e4, 1e4, "a number in [-1e4, 1e4] rad/s"),
+    p("forcing_phase", "driving phase ψ", "rad", 0.0, -INF, "phase ψ of the driving force at t = 0").within(
+        -1e3,
+        1e3,
+        "a number in [-1e3, 1e3] rad",
     ),
-    p("forcing_omega", "driving frequency ω", "rad/s", 0.0, -INF, "angular frequency ω of the driving force"),
-    p("forcing_phase", "driving phase ψ", "rad", 0.0, -INF, "phase ψ of the driving force at t = 0"),
     p(
         "forcing_x",
         "driving direction e: x",
@@ -154,7 +209,8 @@ const DAMPED: &[ParamSpec] = &[
         1.0,
         -INF,
         "forcing direction e, x component (e normalised; e₁ if no component is given, else 0 if omitted)",
-    ),
+    )
+    .within(-1e6, 1e6, "a number in [-1e6, 1e6] (a direction component)"),
     p(
         "forcing_y",
         "driving direction e: y",
@@ -162,7 +218,8 @@ const DAMPED: &[ParamSpec] = &[
         0.0,
         -INF,
         "forcing direction e, y component (0 if omitted)",
-    ),
+    )
+    .within(-1e6, 1e6, "a number in [-1e6, 1e6] (a direction component)"),
     p(
         "forcing_z",
         "driving direction e: z",
@@ -170,7 +227,8 @@ const DAMPED: &[ParamSpec] = &[
         0.0,
         -INF,
         "forcing direction e, z component (0 if omitted)",
-    ),
+    )
+    .within(-1e6, 1e6, "a number in [-1e6, 1e6] (a direction component)"),
     GRAVITY_DIR[0],
     GRAVITY_DIR[1],
     GRAVITY_DIR[2],
@@ -184,7 +242,8 @@ const ROTATING: &[ParamSpec] = &[
         7.292e-5,
         -INF,
         "how fast the reference frame turns (the Earth: 7.292e-5 rad/s; T-7.3)",
-    ),
+    )
+    .within(-1e3, 1e3, "a number in [-1e3, 1e3] rad/s"),
     ParamSpec {
         name: "latitude",
         label: "latitude λ",
@@ -202,7 +261,8 @@ const ROTATING: &[ParamSpec] = &[
         0.0,
         0.0,
         "friction force −m c v, proportional to the velocity (T-7.1)",
-    ),
+    )
+    .within(0.0, 1e4, "a number in [0, 1e4] 1/s"),
 ];
 
 const SLEWING: &[ParamSpec] = &[
@@ -213,7 +273,8 @@ const SLEWING: &[ParamSpec] = &[
         5.0,
         -INF,
         "distance of the pivot from the crane's slewing axis (the boom tip circle, T-7.2)",
-    ),
+    )
+    .within(-1e4, 1e4, "a number in [-1e4, 1e4] m"),
     p(
         "rate",
         "slewing rate ω",
@@ -221,7 +282,8 @@ const SLEWING: &[ParamSpec] = &[
         0.1,
         -INF,
         "how fast the boom turns: pivot at (R cos ωt, R sin ωt, h)",
-    ),
+    )
+    .within(-1e3, 1e3, "a number in [-1e3, 1e3] rad/s"),
     p(
         "height",
         "height of the boom tip above the origin",
@@ -229,8 +291,10 @@ const SLEWING: &[ParamSpec] = &[
         0.0,
         -INF,
         "height of the boom tip above the origin",
-    ),
-    p("damping", "friction (linear damping) c", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
+    )
+    .within(-1e4, 1e4, "a number in [-1e4, 1e4] m"),
+    p("damping", "friction (linear damping) c", "1/s", 0.0, 0.0, "linear damping c relative to the pivot")
+        .within(0.0, 1e4, "a number in [0, 1e4] 1/s"),
 ];
 
 const VIBRATING: &[ParamSpec] = &[
@@ -241,7 +305,8 @@ const VIBRATING: &[ParamSpec] = &[
         0.05,
         -INF,
         "how far the pivot is shaken up and down: pivot at (0, 0, A cos νt) (T-7.2)",
-    ),
+    )
+    .within(-1e3, 1e3, "a number in [-1e3, 1e3] m"),
     p(
         "frequency",
         "shaking frequency ν",
@@ -249,8 +314,10 @@ const VIBRATING: &[ParamSpec] = &[
         200.0,
         -INF,
         "angular frequency ν of the shaking; the inverted pendulum stands when (Aν)² > 2 g l",
-    ),
-    p("damping", "friction (linear damping) c", "1/s", 0.0, 0.0, "linear damping c relative to the pivot"),
+    )
+    .within(-1e5, 1e5, "a number in [-1e5, 1e5] rad/s"),
+    p("damping", "friction (linear damping) c", "1/s", 0.0, 0.0, "linear damping c relative to the pivot")
+        .within(0.0, 1e4, "a number in [0, 1e4] 1/s"),
 ];
 
 const SAMPLED: &[ParamSpec] = &[p(
@@ -260,18 +327,19 @@ const SAMPLED: &[ParamSpec] = &[p(
     0.0,
     0.0,
     "linear damping c relative to the pivot (the path: pivot samples)",
-)];
+)
+.within(0.0, 1e4, "a number in [0, 1e4] 1/s")];
 
 const SPRING: &[ParamSpec] = &[ParamSpec {
     name: "stiffness",
     label: "spring constant k",
     unit: "N/m",
     default: 29.43,
-    min: 0.0,
-    max: INF,
+    min: 1e-6,
+    max: 1e8,
     description: "swinging spring (T-7.4): spring constant k; length is the rest length l0, the bob \
                   hangs at l = l0 + m g/k; 1:1:2 resonance at k = 3 m g/l0 (default: for l0 = 1 m, m = 1 kg)",
-    allowed: "a finite number > 0",
+    allowed: "a number in [1e-6, 1e8] N/m",
 }];
 
 const STRING: &[ParamSpec] = &[ParamSpec {
