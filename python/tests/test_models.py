@@ -324,7 +324,11 @@ def test_methods_and_solutions_of_the_ideal_pendulum_refuse_other_models() -> No
             "frame_rte = 0.02 #",
             ["frame_rte", "did you mean 'frame_rate'", "latitude_deg"],
         ),
-        ("frame_rate = 0.02    #", "damping = -1.0\nframe_rate = 0.02 #", ["damping", "-1e0", "[0, 1e4] 1/s"]),
+        (
+            "frame_rate = 0.02    #",
+            "damping = -1.0\nframe_rate = 0.02 #",
+            ["damping", "-1e0", "[0, 1e4] 1/s"],
+        ),
         ("frame_rate = 0.02    #", "radius = 5.0\nframe_rate = 0.02 #", ["radius", "model = 'slewing'"]),
         (
             "frame_rate = 0.02    #",
