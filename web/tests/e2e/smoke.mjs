@@ -179,8 +179,8 @@ try {
     ['keyboard', checkKeyboard],
     ['energy and two pendulums', checkEnergyAndTwin],
     ['recording and stereo', checkRecordingAndStereo],
-    ['measured data', checkFitData],
     ['language', checkLanguage],
+    ['measured data', checkFitData],
   ]) {
     const t0 = Date.now();
     await part(page, ctx);
