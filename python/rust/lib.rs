@@ -16,6 +16,7 @@ mod getters;
 mod ensemble;
 mod exact;
 mod force;
+mod limits;
 mod slewing;
 mod solver;
 mod spring;
@@ -40,6 +41,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     string::register(m)?;
     slewing::register(m)?;
     force::register(m)?;
+    limits::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

@@ -81,7 +81,10 @@ pub enum Error {
         atol: f64,
     },
     /// The state became NaN or infinite during integration.
-    #[error("the solution became non-finite at t = {t} s with method '{method}' (dt = {dt:e} s); reduce dt or use 'rattle'")]
+    #[error(
+        "the solution became non-finite at t = {t} s with method '{method}' (dt = {dt:e} s); {}",
+        diverged_advice(method)
+    )]
     Diverged {
         /// Time [s].
         t: f64,
@@ -169,6 +172,15 @@ pub enum Error {
         /// What is wrong.
         reason: String,
     },
+}
+
+/// What to do after a divergence: a smaller step, and a structure-preserving method unless one is in use.
+fn diverged_advice(method: &str) -> &'static str {
+    if method.starts_with("rattle") {
+        "reduce dt (the step must resolve the fastest motion, dt·ω ≪ 1)"
+    } else {
+        "reduce dt or use 'rattle'"
+    }
 }
 
 /// Result alias of the core.

@@ -65,6 +65,20 @@ fn too_many(samples: u64, max_samples: u64) -> Result<()> {
     Ok(())
 }
 
+/// Refuses a fixed-step run that plans more than the registry's `steps` limit of (t_end − t₀)/dt
+/// steps (10¹⁰), before any work starts.
+pub fn check_planned_steps(steps: f64) -> Result<()> {
+    let limit = crate::model::registry::limit("steps");
+    if !(steps <= limit.max) {
+        return Err(Error::InvalidParameter {
+            name: "(t_end - t0)/dt",
+            value: steps,
+            allowed: limit.allowed,
+        });
+    }
+    Ok(())
+}
+
 impl<M: Model> Solver<M> {
     /// Validates everything up front: t_end > t₀ finite, save rule, expected memory.
     pub fn new(
@@ -83,6 +97,9 @@ impl<M: Model> Solver<M> {
                 value: t_end,
                 allowed: "the end time must be a finite number of seconds after the start time",
             });
+        }
+        if !options.method.info().adaptive {
+            check_planned_steps((t_end - t0) / options.dt)?;
         }
         let max_samples = max_saved_bytes / BYTES_PER_SAMPLE;
         match &save {

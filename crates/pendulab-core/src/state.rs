@@ -125,7 +125,15 @@ impl State {
         check_finite("x", x)?;
         check_finite("v", v)?;
         let s = project_onto_tangent_bundle(params.length, x, v).ok_or(Error::DegeneratePosition)?;
-        Ok((s, Projection { dx: (s.x - x).length(), dv: (s.v - v).length() }))
+        let moved = Projection { dx: (s.x - x).length(), dv: (s.v - v).length() };
+        if !(s.is_finite() && moved.dx.is_finite() && moved.dv.is_finite()) {
+            return Err(Error::InvalidParameter {
+                name: "(x, v)",
+                value: x.length().max(v.length()),
+                allowed: "a position and velocity whose projection onto TS² is finite (docs/limits.md)",
+            });
+        }
+        Ok((s, moved))
     }
 
     /// The state at polar angle θ [rad] from the downward vertical, azimuth φ [rad], and their

@@ -137,6 +137,137 @@ pub const COMMON: &[ParamSpec] = &[
     },
 ];
 
+/// The bounds of everything else a run is made of — states, times, steps, samples, bytes, files —
+/// shared by the Python API, scenario and sweep files, the CLI and the lab (`pl.limits()`, `pendulab.validate`,
+/// docs "Limits"). The `description` says why each bound is where it is.
+pub const LIMITS: &[ParamSpec] = &[
+    ParamSpec {
+        name: "position",
+        label: "position component",
+        unit: "m",
+        default: 1.0,
+        min: -1e9,
+        max: 1e9,
+        description: "a component of a position x: 10³ × the longest rod, room for a start to project \
+                      from while |x|² stays finite",
+        allowed: "a finite number in [-1e9, 1e9] m",
+    },
+    ParamSpec {
+        name: "velocity",
+        label: "velocity component",
+        unit: "m/s",
+        default: 0.0,
+        min: -1e7,
+        max: 1e7,
+        description: "a component of a velocity v (and the speed from angle rates): below the speed of \
+                      light, so that m|v|² and the tension m|v|²/l stay finite for every allowed l, m",
+        allowed: "a finite number in [-1e7, 1e7] m/s",
+    },
+    ParamSpec {
+        name: "angle",
+        label: "angle θ or φ",
+        unit: "rad",
+        default: 0.0,
+        min: -1e6,
+        max: 1e6,
+        description: "an angle θ or φ of a start: sin and cos keep about 10 digits up to 10⁶ rad",
+        allowed: "a finite number in [-1e6, 1e6] rad",
+    },
+    ParamSpec {
+        name: "angle_rate",
+        label: "angle rate θ̇ or φ̇",
+        unit: "rad/s",
+        default: 0.0,
+        min: -1e9,
+        max: 1e9,
+        description: "a rate θ̇ or φ̇ of a start; the speed it gives (l·rate) must also be within \
+                      the velocity limit",
+        allowed: "a finite number in [-1e9, 1e9] rad/s",
+    },
+    ParamSpec {
+        name: "time",
+        label: "time",
+        unit: "s",
+        default: 0.0,
+        min: -1e12,
+        max: 1e12,
+        description: "a time (t0, t_end, save times, the times of the exact solution): about 30 000 \
+                      years; past it a time has fewer than 4 digits after the decimal point",
+        allowed: "a finite number in [-1e12, 1e12] s",
+    },
+    ParamSpec {
+        name: "dt",
+        label: "step size dt",
+        unit: "s",
+        default: 1e-3,
+        min: 1e-12,
+        max: 1e6,
+        description: "a step size: at t = 10¹² s a smaller step would no longer change t by a \
+                      representable amount",
+        allowed: "a finite number in [1e-12, 1e6] s",
+    },
+    ParamSpec {
+        name: "steps",
+        label: "planned steps",
+        unit: "1",
+        default: 0.0,
+        min: 0.0,
+        max: 1e10,
+        description: "the steps a fixed-step run plans, (t_end − t0)/dt: 10¹⁰ is about an hour of \
+                      RATTLE on one core; more is refused before any work starts",
+        allowed: "at most 1e10 steps (t_end - t0)/dt: shorten t_end or raise dt",
+    },
+    ParamSpec {
+        name: "samples",
+        label: "saved samples",
+        unit: "1",
+        default: 0.0,
+        min: 1.0,
+        max: 1e9,
+        description: "the samples a run keeps (save_at times, evaluation times of the exact solution, \
+                      sweep points): 10⁹ samples of t, x, v are 56 GB",
+        allowed: "at most 1e9 samples",
+    },
+    ParamSpec {
+        name: "saved_bytes",
+        label: "memory of saved samples",
+        unit: "B",
+        default: 4294967296.0,
+        min: 56.0,
+        max: 68719476736.0,
+        description: "the memory a run may fill with saved samples (max_saved_bytes; default 4 GiB, at \
+                      most 64 GiB): refused up front for fixed steps, when reached for dop853",
+        allowed: "an integer number of bytes in [56, 2**36]",
+    },
+    ParamSpec {
+        name: "file_bytes",
+        label: "file size",
+        unit: "B",
+        default: 1048576.0,
+        min: 0.0,
+        max: 1048576.0,
+        description: "the size of a scenario or sweep file: 1 MiB, checked before parsing (the \
+                      largest example is under 4 kB)",
+        allowed: "a file of at most 1 MiB",
+    },
+    ParamSpec {
+        name: "file_nesting",
+        label: "file nesting",
+        unit: "1",
+        default: 16.0,
+        min: 0.0,
+        max: 16.0,
+        description: "how deeply arrays and tables of a scenario or sweep file may nest, checked \
+                      before parsing (the deepest key in use nests 3 levels)",
+        allowed: "at most 16 levels of nested arrays and tables",
+    },
+];
+
+/// The limit named `name` of [`LIMITS`].
+pub fn limit(name: &str) -> &'static ParamSpec {
+    LIMITS.iter().find(|l| l.name == name).expect("a registered limit")
+}
+
 const GRAVITY_DIR: [ParamSpec; 3] = [
     p(
         "gravity_x",
