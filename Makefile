@@ -14,7 +14,7 @@ STATIC := python/pendulab/server/static
 .DEFAULT_GOAL := build
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
-	bench-compare bench-peers bench-fit validate-fit golden clean docs docs-serve bench-portable wheel test-wheel
+	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -23,7 +23,8 @@ $(VENV)/.deps: python/pyproject.toml
 		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "scipy>=1.11" "pyarrow>=15" "xarray>=2024.1" "zarr>=2.18" "matplotlib>=3.8" \
 		"fastapi>=0.115" "uvicorn>=0.30" "websockets>=13" "orjson>=3.10" "qrcode>=8" "httpx>=0.27" "httpx2>=2" "dask[distributed]>=2024.1" \
 		"imageio-ffmpeg>=0.5" "pillow>=10.1" "nbclient>=0.10" "nbformat>=5.10" "ipykernel>=6.29" \
-		"ziglang>=0.13" "auditwheel>=6"
+		"ziglang>=0.13" "auditwheel>=6" \
+		"hypothesis>=6.100"
 	touch $@
 
 venv: $(VENV)/.deps
@@ -131,6 +132,17 @@ docs-serve: build $(VENV)/.docs-deps
 
 test: DOCS_EXECUTE := false
 test: lint test-rust test-python test-web test-e2e docs test-wheel
+
+# Hostile input, long (docs/limits.md, "Fuzzing"): FUZZ_CASES generated inputs per entry point of the
+# Python API (hypothesis) and of the Rust core (proptest), and the whole corpus of FUZZ_FILES mutated
+# scenario files through `pendulab validate` and `pendulab run`. CI runs the same tests with 100-256
+# cases and 150 files. Prints the counts; about 30 min on 2 cores at the defaults.
+FUZZ_CASES ?= 10000
+FUZZ_FILES ?= 2500
+fuzz: build
+	PROPTEST_CASES=$(FUZZ_CASES) cargo test --release -p pendulab-core --test fuzz_props -- --nocapture
+	FUZZ_EXAMPLES=$(FUZZ_CASES) $(VENV)/bin/pytest python/tests/test_fuzz_api.py -q -s
+	$(PY) tools/fuzz_scenarios.py --files $(FUZZ_FILES) --seed 13
 
 bench:
 	cargo bench -p pendulab-core

@@ -30,6 +30,7 @@ from .theory.em_map import EMMap, em_map
 from .theory.exact import ExactSolution, Phases, exact
 from .theory.reduce import Reduced, reduce, reduced_flow
 from .trajectory import Trajectory
+from .validate import limits
 from .variants.crane import SlewingSway, slewing_sway
 from .variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 
@@ -59,6 +60,7 @@ __all__ = [
     "em_map",
     "exact",
     "fit",
+    "limits",
     "load_scenario",
     "measured_azimuth_advance",
     "method_names",

@@ -8,9 +8,12 @@ in the same directory, then renamed over the target, so a crash never leaves a h
 from __future__ import annotations
 
 import contextlib
+import errno
+import glob
 import json
 import os
 import tempfile
+import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import Any, Protocol
@@ -28,13 +31,61 @@ class Tabular(Protocol):
 FORMATS = {".csv": "csv", ".parquet": "parquet", ".nc": "netcdf"}
 
 
+STALE_SECONDS = 3600.0
+"""A temporary file of a writer that left no process id is stale after this long [s]."""
+
+
+def _remove_stale(target: Path) -> None:
+    """Removes the temporary files an interrupted write (kill -9, power loss) to ``target`` left:
+    ``.<name>.pid<N>.*.tmp`` of processes that no longer run, and older ``.<name>.*.tmp`` files
+    without a process id after :data:`STALE_SECONDS`. Writers still running keep theirs."""
+    with contextlib.suppress(OSError):
+        for old in target.parent.glob(f".{glob.escape(target.name)}.*.tmp"):
+            pid = old.name[len(target.name) + 2 :].split(".", 1)[0]
+            if pid.startswith("pid") and pid[3:].isdigit():
+                try:
+                    os.kill(int(pid[3:]), 0)
+                    continue  # that writer is alive
+                except ProcessLookupError:
+                    pass
+                except OSError:
+                    continue  # alive, owned by someone else
+            elif time.time() - old.stat().st_mtime < STALE_SECONDS:
+                continue
+            with contextlib.suppress(OSError):
+                old.unlink()
+
+
+def _named(e: OSError, target: Path) -> OSError:
+    """``e`` as an OSError naming the file being written (``error: <file>: No space left on device``)."""
+    reason = e.strerror or str(e) or type(e).__name__
+    return OSError(e.errno, f"cannot write: {reason}", os.fspath(target))
+
+
 @contextlib.contextmanager
 def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
-    """Yields a temporary path beside ``path``; renames it onto ``path`` only if the block succeeds."""
+    """Yields a temporary path beside ``path``; renames it onto ``path`` only if the block succeeds.
+
+    The directory must exist (no directories are created: a typo in a path is an error, not a new
+    folder). Any OS error (a full disk, a read-only directory, no permission) is re-raised as one
+    ``OSError`` naming ``path``; the temporary file is removed, and so are the stale ones earlier
+    interrupted writes to the same target left (:func:`_remove_stale`).
+    """
     target = Path(path)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-    os.close(fd)
+    if not target.parent.is_dir():
+        raise OSError(
+            errno.ENOENT,
+            f"cannot write: the directory {os.fspath(target.parent)!r} does not exist (create it first)",
+            os.fspath(target),
+        )
+    _remove_stale(target)
+    try:
+        fd, tmp = tempfile.mkstemp(
+            prefix=f".{target.name}.pid{os.getpid()}.", suffix=".tmp", dir=target.parent
+        )
+        os.close(fd)
+    except OSError as e:
+        raise _named(e, target) from None
     try:
         yield Path(tmp)
         # mkstemp creates 0600; give the file the mode a plain open() would (0666 minus the umask).
@@ -42,6 +93,10 @@ def atomic_path(path: str | os.PathLike[str]) -> Iterator[Path]:
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, target)
+    except OSError as e:
+        with contextlib.suppress(FileNotFoundError):
+            os.unlink(tmp)
+        raise _named(e, target) from None
     except BaseException:
         with contextlib.suppress(FileNotFoundError):
             os.unlink(tmp)

@@ -22,6 +22,8 @@ from ._core import diagnostics as _diagnostics
 from ._core import models as _models
 from ._core import state_from_angles as _state_from_angles
 from .display import Row, html_table, number, vector
+from .validate import COMMON, LIMITS, array, choice, finite, flag, invalid
+from .validate import number as checked
 
 if TYPE_CHECKING:
     from ._core import ModelInfo
@@ -29,22 +31,18 @@ if TYPE_CHECKING:
 FloatArray = npt.NDArray[np.float64]
 
 
-def _real(name: str, value: Any) -> float:
-    """A real number (not a bool or a string), as a float; an InvalidInputError naming it otherwise."""
-    if isinstance(value, bool | str | bytes) or value is None:
-        kind = type(value).__name__
-        raise InvalidInputError(f"{name} must be a real number, got {kind} {str(value)[:40]!r}")
-    try:
-        return float(value)
-    except (TypeError, ValueError, OverflowError) as e:
-        raise InvalidInputError(f"{name} must be a real number, got {str(value)[:40]!r}") from e
+def _vec3(name: str, a: Any, limit: str = "position") -> FloatArray:
+    """3 real numbers within the ``limit`` of :mod:`pendulab.validate` (position [m] or velocity [m/s])."""
+    return array(name, a, limit, shape=(3,))
 
 
-def _vec3(name: str, a: Any) -> FloatArray:
-    arr = np.asarray(a, dtype=np.float64)
-    if arr.shape != (3,):
-        raise InvalidInputError(f"{name} must be a vector of 3 numbers, got shape {arr.shape}")
-    return np.ascontiguousarray(arr)
+def _check_speed(v: FloatArray, given: str) -> None:
+    """A velocity built from angle rates must respect the velocity limit too (|v_i| ≤ 10⁸ m/s)."""
+    lim = LIMITS["velocity"]
+    if not np.all(np.isfinite(v) & (np.abs(v) <= lim["max"])):
+        raise invalid(
+            given, f"a velocity {v.tolist()!r} m/s", f"the velocity it gives must be {lim['allowed']}"
+        )
 
 
 def models() -> list[ModelInfo]:
@@ -169,6 +167,15 @@ class Pendulum:
         force: Callable[[float, Any, Any], Any] | None = None,
         **extra: float,
     ) -> None:
+        length = checked("length", length, COMMON["length"])
+        g = checked("g", g, COMMON["g"])
+        mass = checked("mass", mass, COMMON["mass"])
+        if model is not None:
+            choice("model", model, [m["name"] for m in _models()])
+        for key, value in extra.items():
+            if len(key) > 64:
+                raise invalid("parameter name", key, "a parameter of the model (pendulab.models())")
+            finite(str(key), value, f"a finite number (see pendulab.models() for the range of {key!r})")
         if force is not None and not callable(force):
             raise InvalidInputError(
                 f"force = {force!r} is not callable: give a function force(t, x, v) -> 3 numbers in N"
@@ -179,10 +186,12 @@ class Pendulum:
         self._extra = {str(k): float(v) for k, v in extra.items()}
         self._pivot: tuple[FloatArray, FloatArray] | None = None
         if pivot_samples is not None:
+            if not isinstance(pivot_samples, tuple | list) or len(pivot_samples) != 2:
+                raise invalid("pivot_samples", pivot_samples, "a pair (times [s] (n,), positions [m] (n, 3))")
             times, positions = pivot_samples
             self._pivot = (
-                _frozen(np.ascontiguousarray(np.asarray(times, dtype=np.float64).ravel())),
-                _frozen(np.ascontiguousarray(np.asarray(positions, dtype=np.float64))),
+                _frozen(array("pivot_samples times", times, "time").ravel()),
+                _frozen(array("pivot_samples positions", positions, "position")),
             )
         # validates everything (names, ranges, pivot samples) once, in the core
         check_model(float(length), float(mass), float(g), model, list(self._extra.items()), pivot=self._pivot)
@@ -311,8 +320,8 @@ class Pendulum:
         with ``project=True`` it is moved there (x ← l x/|x|, v ← its tangential part) and
         ``State.projection`` says by how much.
         """
-        xa, va = _vec3("x", x), _vec3("v", v)
-        if project:
+        xa, va = _vec3("x", x), _vec3("v", v, "velocity")
+        if flag("project", project):
             (xp, vp), dx, dv = project_state(*self._core_args(), xa, va)
             return State(_frozen(xp), _frozen(vp), (dx, dv))
         xs, vs = state_on_ts2(*self._core_args(), xa, va)
@@ -334,8 +343,10 @@ class Pendulum:
 
         Radians are the default; each angle may be given in degrees instead (``theta_deg`` [°],
         ``phi_deg`` [°], ``theta_dot_deg``, ``phi_dot_deg`` [°/s]), never both ways. θ (or θ in degrees)
-        is required; the others default to 0. A θ beyond 2π rad is allowed but warned about, since
-        it is most often meant in degrees (``theta=60`` is 60 rad, not 60°)."""
+        is required; the others default to 0. Angles are limited to ±1e6 (rad or degrees), rates to
+        ±1e9 (rad/s or °/s), and the velocity they give to 1e8 m/s (docs/limits.md). A θ beyond 2π rad
+        is allowed but warned about, since it is most often meant in degrees (``theta=60`` is 60 rad,
+        not 60°)."""
         values = []
         for name, rad, deg in (
             ("theta", theta, theta_deg),
@@ -343,15 +354,16 @@ class Pendulum:
             ("theta_dot", theta_dot, theta_dot_deg),
             ("phi_dot", phi_dot, phi_dot_deg),
         ):
+            limit = "angle_rate" if name.endswith("_dot") else "angle"
             if rad is not None and deg is not None:
                 raise InvalidInputError(
                     f"give {name} either in radians ({name}={rad!r}) or in degrees "
                     f"({name}_deg={deg!r}), not both"
                 )
             if deg is not None:
-                values.append(math.radians(_real(f"{name}_deg", deg)))
+                values.append(math.radians(checked(f"{name}_deg", deg, limit)))
             elif rad is not None:
-                values.append(_real(name, rad))
+                values.append(checked(name, rad, limit))
             elif name == "theta":
                 raise InvalidInputError("give the polar angle: theta [rad] or theta_deg [°]")
             else:
@@ -364,6 +376,7 @@ class Pendulum:
                 stacklevel=2,
             )
         x, v = _state_from_angles(*self._core_args(), *values)
+        _check_speed(np.asarray(v), f"(theta_dot, phi_dot) = ({values[2]!r}, {values[3]!r}) rad/s")
         return State(_frozen(x), _frozen(v))
 
     def diagnostics(self, x: Any, v: Any, t: Any = None) -> dict[str, FloatArray]:
@@ -374,11 +387,11 @@ class Pendulum:
         = dE/dt of the non-conservative forces (T-7.1; 0 for the ideal pendulum), ``acceleration``
         (N, 3) [m/s²] ẍ = f + λx of T-2.2 (relative to the pivot, the user force included) and, for a
         moving pivot when t is given, ``pivot`` (N, 3) [m]."""
-        xa = np.ascontiguousarray(np.atleast_2d(np.asarray(x, dtype=np.float64)))
-        va = np.ascontiguousarray(np.atleast_2d(np.asarray(v, dtype=np.float64)))
+        xa = np.ascontiguousarray(np.atleast_2d(array("x", x, "position")))
+        va = np.ascontiguousarray(np.atleast_2d(array("v", v, "velocity")))
         ta = None
         if t is not None:
-            ta = np.asarray(t, dtype=np.float64)
+            ta = array("t", t, "time")
             if ta.ndim == 0:
                 ta = np.full(xa.shape[0], float(ta))
             ta = np.ascontiguousarray(ta.ravel())
@@ -412,3 +425,11 @@ class Pendulum:
         """Power of the non-conservative forces at time t [s], dE/dt = m P [W] (T-7.1): forcing,
         damping and drag, or the moving pivot's inertial force; 0 for conservative models."""
         return float(self.diagnostics(state.x, state.v, t)["power"][0])
+
+
+def check_pendulum_state(pendulum: Any, state: Any) -> None:
+    """``pendulum`` is a :class:`Pendulum` and ``state`` a :class:`State` (named errors otherwise)."""
+    if not isinstance(pendulum, Pendulum):
+        raise invalid("pendulum", pendulum, "a pendulab.Pendulum")
+    if not isinstance(state, State):
+        raise invalid("state", state, "a pendulab.State (from Pendulum.state or Pendulum.state_from_angles)")

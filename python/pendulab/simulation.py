@@ -10,20 +10,38 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import warnings
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ._chunks import _PROGRESS_AFTER_STEPS, run_in_chunks
-from ._core import ForceSolver, InvalidInputError, Solver
+from ._core import ForceSolver, IntegrationError, InvalidInputError, Solver
 from ._core import Stepper as _Stepper
 from ._core import methods as _methods
 from .accuracy import estimate, run_to_accuracy, true_error
-from .model import Pendulum, State
+from .model import Pendulum, State, check_pendulum_state
 from .trajectory import Trajectory
+from .validate import (
+    LIMITS,
+    MAX_SAMPLES,
+    array,
+    choice,
+    finite,
+    flag,
+    integer,
+    invalid,
+    number,
+    planned_steps,
+)
 
 if TYPE_CHECKING:
     from ._core import MethodInfo
+
+DRIFT_TOLERANCE = 1e-2
+"""The largest relative constraint error |(|x| − l)/l| an unprojected run (``rk4``, ``dop853`` with
+``project=False``) may reach before :func:`simulate` stops it with :class:`pendulab.IntegrationError`
+(``drift="warn"``: a warning instead). 1 % of the rod: beyond it the run no longer describes a rod."""
 
 DEFAULTS: dict[str, Any] = {"method": "rattle", "dt": 1e-3, "rtol": 1e-10, "atol": 1e-12, "project": True}
 
@@ -40,6 +58,38 @@ def _check_conserve(pendulum: Pendulum, conserve: bool) -> None:
             "(J₃(t) = J₃(0)·e^(−c t)); run without conserve (DOP853 then follows the decay to its "
             "tolerance) or with a RATTLE method, whose exact damping flow keeps the decay of J₃ exactly"
         )
+
+
+_U64 = 2**63 - 1
+
+
+def check_settings(
+    *,
+    method: Any,
+    dt: Any,
+    rtol: Any,
+    atol: Any,
+    project: Any,
+    conserve: Any,
+    t0: Any,
+) -> tuple[str, float | None, float, float, bool, bool, float]:
+    """The shared settings of :func:`simulate` and :class:`Stepper` checked against :mod:`pendulab.validate`:
+    method (a registered name), dt [s] (None or the dt limit), rtol, atol (finite; the core checks their
+    ranges), project and conserve (bools), t0 [s] (the time limit)."""
+    method = choice("method", method, method_names())
+    automatic = _method_table()[method]["adaptive"] and type(dt) in (int, float) and dt == 0.0
+    dt = None if dt is None else 0.0 if automatic else number("dt", dt, "dt")  # dop853: 0 = automatic
+    rtol = finite("rtol", rtol, "a finite relative tolerance (dop853)")
+    atol = finite("atol", atol, "a finite absolute tolerance in m and m/s (dop853)")
+    return (
+        method,
+        dt,
+        rtol,
+        atol,
+        flag("project", project),
+        flag("conserve", conserve),
+        number("t0", t0, "time"),
+    )
 
 
 @functools.cache
@@ -76,6 +126,7 @@ def simulate(
     max_saved_bytes: int | None = None,
     error_estimate: bool = False,
     accuracy: float | None = None,
+    drift: str = "raise",
 ) -> Trajectory:
     """Integrates from ``state`` at time ``t0`` [s] to ``t_end`` [s].
 
@@ -104,11 +155,19 @@ def simulate(
         the method (RATTLE8; DOP853 with a user force) and its step or tolerance, refining until the
         estimate meets it, or raises ``InvalidInputError`` with the best float64 reached. Do not give
         ``method`` or ``dt`` with it. Implies ``error_estimate``.
+    drift : what a run that does not keep TS² (``rk4``; ``dop853`` with ``project=False``) does when its
+        constraint error |(|x| − l)/l| passes :data:`DRIFT_TOLERANCE` (1e-2): ``"raise"`` (default) an
+        :class:`pendulab.IntegrationError` saying what to do, ``"warn"`` a ``RuntimeWarning`` and the
+        trajectory as computed.
+
+    Every argument is checked against :mod:`pendulab.validate` before any work starts (docs/limits.md).
 
     The ``"string"`` model (a rope that goes slack) is hybrid and runs in
     :func:`pendulab.variants.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
     rkmk4 with ``dt`` in the taut phases, ``save_every`` or ``save_at``, progress and Ctrl-C as here.
     """
+    check_pendulum_state(pendulum, state)
+    drift = choice("drift", drift, ("raise", "warn"))
     if accuracy is not None or error_estimate:  # pendulab/accuracy: a plain run plus a reference run
         plain = {
             "method": method,
@@ -122,6 +181,7 @@ def simulate(
             "t0": t0,
             "progress": progress,
             "max_saved_bytes": max_saved_bytes,
+            "drift": drift,
         }
         if accuracy is not None:
             plain = {k: v for k, v in plain.items() if k not in ("rtol", "atol")}
@@ -133,6 +193,25 @@ def simulate(
         return dataclasses.replace(tr, error_estimate=est, error=true_error(pendulum, state, tr))
     if method is None:
         method = "dop853" if pendulum.force is not None else "rattle"
+    method, dt, rtol, atol, project, conserve, t0 = check_settings(
+        method=method, dt=dt, rtol=rtol, atol=atol, project=project, conserve=conserve, t0=t0
+    )
+    t_end = number("t_end", t_end, "time")
+    if not t_end > t0:
+        raise invalid("t_end", t_end, f"a time after t0 = {t0!r} s")
+    if progress is not None:
+        progress = flag("progress", progress)
+    if max_saved_bytes is not None:
+        lim = LIMITS["saved_bytes"]
+        max_saved_bytes = integer(
+            "max_saved_bytes", max_saved_bytes, int(lim["min"]), int(lim["max"]), lim["allowed"]
+        )
+    if save_every is not None:
+        save_every = integer("save_every", save_every, 1, _U64)
+    if save_at is not None:
+        save_at = array("save_at", save_at, "time", max_size=MAX_SAMPLES).ravel()
+    if dt is not None and not _method_table()[method]["adaptive"]:
+        planned_steps(t0, t_end, dt)
     if pendulum.force is not None and conserve:
         raise InvalidInputError(
             "conserve=True would hold E and J₃ fixed, but the user force does work (dE/dt = F·v)"
@@ -166,12 +245,10 @@ def simulate(
         raise InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")
     if dt is None:
         dt = 0.0 if info["adaptive"] else DEFAULTS["dt"]
+        if not info["adaptive"]:
+            planned_steps(t0, t_end, dt)
     if save_every is not None and save_at is not None:
         raise InvalidInputError("give either save_every or save_at, not both")
-    if save_every is not None and (
-        isinstance(save_every, bool) or int(save_every) != save_every or save_every < 1
-    ):
-        raise InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     _check_conserve(pendulum, conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
     args = (
@@ -203,7 +280,32 @@ def simulate(
         options |= {"rtol": rtol, "atol": atol, "project": project}
     if save_every is not None:
         options["save_every"] = int(save_every)
+    if not info["preserves_ts2"] and not (info["adaptive"] and project):
+        _check_drift(pendulum, t, x, method, project, drift)
     return Trajectory(pendulum, t, x, v, method, options, dict(solver.stats), interrupted)
+
+
+def _check_drift(pendulum: Pendulum, t: Any, x: Any, method: str, project: bool, drift: str) -> None:
+    """Stops (or warns about) an unprojected run whose |(|x| − l)/l| passed :data:`DRIFT_TOLERANCE`."""
+    err = np.abs(np.linalg.norm(x, axis=1) / pendulum.length - 1.0)
+    bad = np.flatnonzero(~(err <= DRIFT_TOLERANCE))
+    if bad.size == 0:
+        return
+    k = int(bad[0])
+    how = (
+        "use project=True (the default) or a method that keeps TS² such as 'rattle'"
+        if method == "dop853"
+        else "use 'rattle' (or another method that keeps TS²), or a smaller dt"
+    )
+    msg = (
+        f"method {method!r}{' with project=False' if method == 'dop853' and not project else ''} left TS²: "
+        f"the constraint error |(|x| - l)/l| = {float(err[k]):.3g} at t = {float(t[k]):.6g} s passed the "
+        f"tolerance {DRIFT_TOLERANCE:g}; {how} (drift='warn' keeps the run with a warning)"
+    )
+    if drift == "warn":
+        warnings.warn(msg, RuntimeWarning, stacklevel=3)
+        return
+    raise IntegrationError(msg)
 
 
 class Stepper:
@@ -226,11 +328,20 @@ class Stepper:
         t0: float = 0.0,
         conserve: bool = False,
     ) -> None:
+        check_pendulum_state(pendulum, state)
+        method, dt_checked, rtol, atol, project, conserve, t0 = check_settings(
+            method=method, dt=dt, rtol=rtol, atol=atol, project=project, conserve=conserve, t0=t0
+        )
+        if dt_checked is None:
+            raise invalid("dt", dt, LIMITS["dt"]["allowed"])
+        dt = dt_checked
         _check_conserve(pendulum, conserve)
         if pendulum.force is not None:
             raise InvalidInputError(
                 "the incremental Stepper does not take a user force callable; use pendulab.simulate"
             )
+        self._dt = dt
+        self._adaptive = bool(_method_table()[method]["adaptive"])
         self.pendulum = pendulum
         self._core = _Stepper(
             *pendulum._core_args(),
@@ -263,22 +374,27 @@ class Stepper:
 
     def step(self, n: int = 1) -> State:
         """Takes n steps and returns the new state."""
-        if isinstance(n, bool) or int(n) != n or n < 0:
-            raise InvalidInputError(f"n = {n!r} must be an integer >= 0")
-        self._core.step(int(n))
+        n = integer(
+            "n", n, 0, int(LIMITS["steps"]["max"]), f"an integer in [0, {LIMITS['steps']['max']:.0e}]"
+        )
+        self._core.step(n)
         return self.state
 
     def step_to(self, t: float, *, max_steps: int | None = None) -> State:
         """Advances to exactly time t [s] and returns the state there. With ``max_steps``, takes at most
         that many steps (``dop853``: accepted steps) and may stop before t (then ``self.t < t``; call
-        again to go on — the same steps as one uncapped call): a bound on the work of one call."""
-        if max_steps is not None and (
-            isinstance(max_steps, bool) or int(max_steps) != max_steps or max_steps < 0
-        ):
-            raise InvalidInputError(f"max_steps = {max_steps!r} must be an integer >= 0")
-        self._core.step_to(float(t), None if max_steps is None else int(max_steps))
+        again to go on — the same steps as one uncapped call): a bound on the work of one call.
+        Without it, a fixed-step advance of more than 1e10 steps is refused (docs/limits.md)."""
+        t = number("t", t, "time")
+        if max_steps is not None:
+            max_steps = integer("max_steps", max_steps, 0, _U64)
+        elif not self._adaptive:
+            planned_steps(self.t, t, self._dt, name="t")
+        self._core.step_to(t, max_steps)
         return self.state
 
     def set_state(self, state: State) -> None:
         """Replaces the current state (must lie on TS²)."""
+        if not isinstance(state, State):
+            raise invalid("state", state, "a pendulab.State")
         self._core.set_state(np.ascontiguousarray(state.x), np.ascontiguousarray(state.v))

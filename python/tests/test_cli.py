@@ -110,10 +110,10 @@ def test_bad_suffix_fails_before_the_run(tmp_path: Path, monkeypatch: pytest.Mon
     ("args", "needles"),
     [
         (["run", "missing.toml"], ["missing.toml", "No such file"]),
-        (["run", ROSETTE, "--dt", "-0.001"], ["simulation.dt = -0.001: must be > 0"]),
+        (["run", ROSETTE, "--dt", "-0.001"], ["simulation.dt = -0.001: must be >= 1e-12"]),
         (["run", ROSETTE, "--method", "euler"], ["unknown method 'euler'", "rattle"]),
         (["run", ROSETTE, "--t-end", "nan"], ["t_end = nan", "finite"]),
-        (["run", ROSETTE, "--t-end", "1e9", "--save-every", "1"], ["bytes", "raise save_every"]),
+        (["run", ROSETTE, "--t-end", "1e6", "--save-every", "1"], ["bytes", "raise save_every"]),
         (  # an IntegrationError: the angle method refuses at the pole of a planar swing
             ["run", str(SCENARIOS / "planar_large.toml"), "--method", "rk4_angles", "--t-end", "3"],
             ["rk4_angles", "pole"],

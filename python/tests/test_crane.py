@@ -112,7 +112,10 @@ def test_pivot_given_as_samples_follows_the_analytic_path() -> None:
         ((np.array([0.0, 1.0, 2.0]), np.zeros((3, 3))), "at least 4"),
         ((np.array([0.0, 1.0, 0.5, 2.0]), np.zeros((4, 3))), "strictly increasing"),
         ((np.array([0.0, 1.0, np.nan, 2.0]), np.zeros((4, 3))), "finite"),
-        ((np.arange(4.0), np.array([[0, 0, 0], [0, np.inf, 0], [0, 0, 0], [0, 0, 0]])), "position 1"),
+        (
+            (np.arange(4.0), np.array([[0, 0, 0], [0, np.inf, 0], [0, 0, 0], [0, 0, 0]])),
+            r"positions\[1\]\[1\] = inf",
+        ),
         ((np.arange(4.0), np.zeros((4, 2))), "shape"),
         ((np.arange(5.0), np.zeros((4, 3))), "5 times but 4 positions"),
     ],

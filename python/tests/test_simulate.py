@@ -138,7 +138,7 @@ def test_states_are_validated_or_projected(pendulum: pl.Pendulum) -> None:
         pendulum.state([0.0, 0.0, -1.1], [0.0, 0.0, 0.0])
     with pytest.raises(ValueError, match="x·v"):
         pendulum.state([0.0, 0.0, -1.0], [0.0, 0.1, 0.2])
-    with pytest.raises(ValueError, match="NaN"):
+    with pytest.raises(ValueError, match=r"x\[0\] = nan"):
         pendulum.state([np.nan, 0.0, -1.0], [0.0, 0.0, 0.0])
     with pytest.raises(ValueError, match="3 numbers"):
         pendulum.state([0.0, -1.0], [0.0, 0.0])
@@ -163,7 +163,7 @@ def test_states_are_validated_or_projected(pendulum: pl.Pendulum) -> None:
         ({"save_at": [5.0]}, "within"),
         ({"method": "dop853", "rtol": 0.0}, "rtol"),
         ({"method": "dop853", "atol": -1.0}, "atol"),
-        ({"t_end": 1e9, "dt": 1e-3}, "bytes"),
+        ({"t_end": 1e6, "dt": 1e-3}, "bytes"),
     ],
 )
 def test_bad_solver_settings_are_named(

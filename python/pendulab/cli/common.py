@@ -108,7 +108,7 @@ def _check_output(out: Path) -> None:
     if out.is_dir():
         _fail(f"--out {str(out)!r} is a directory; give a file name ending in .csv, .parquet or .nc")
     parent = out.resolve().parent
-    while not parent.exists():
-        parent = parent.parent
-    if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
+    if not parent.is_dir():  # --out does not create directories (docs/cli.md)
+        _fail(f"--out {str(out)!r}: the directory {str(parent)!r} does not exist; create it first")
+    if not os.access(parent, os.W_OK | os.X_OK):
         _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")

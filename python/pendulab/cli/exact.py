@@ -22,6 +22,7 @@ from ..simulation import simulate
 from ..theory.advance import measured_azimuth_advance
 from ..theory.em_map import em_map
 from ..theory.exact import ExactSolution, exact
+from ..validate import show
 from .common import _check_output, _fail, _say, _scenario_file, _user_errors, app
 
 MAX_TIMES = 20_000_000
@@ -49,20 +50,23 @@ def parse_times(spec: str) -> np.ndarray:
     try:
         values = [float(p) for p in parts]
     except ValueError:
-        raise InvalidInputError(f"--t {spec!r}: expected START:STOP:STEP in s, e.g. 0:100:0.01") from None
+        raise InvalidInputError(f"--t {show(spec)}: expected START:STOP:STEP in s, e.g. 0:100:0.01") from None
     if len(values) == 1:
         values = [values[0], values[0], 1.0]
     if len(values) != 3 or not all(math.isfinite(v) for v in values):
-        raise InvalidInputError(f"--t {spec!r}: expected three finite numbers START:STOP:STEP in s")
+        raise InvalidInputError(f"--t {show(spec)}: expected three finite numbers START:STOP:STEP in s")
     start, stop, step = values
     if step == 0.0 or (stop - start) * step < 0.0:
         raise InvalidInputError(
-            f"--t {spec!r}: STEP = {step:g} s must be non-zero and lead from START = {start:g} "
+            f"--t {show(spec)}: STEP = {step:g} s must be non-zero and lead from START = {start:g} "
             f"to STOP = {stop:g}"
         )
-    n = math.floor((stop - start) / step + 1e-9) + 1
-    if n > MAX_TIMES:
-        raise InvalidInputError(f"--t {spec!r} gives {n} times; at most {MAX_TIMES} (use a larger STEP)")
+    span = (stop - start) / step  # may overflow to inf: compared before it is rounded
+    if not span < MAX_TIMES:
+        raise InvalidInputError(
+            f"--t {show(spec)} gives {span + 1:.3g} times; at most {MAX_TIMES} (use a larger STEP)"
+        )
+    n = math.floor(span + 1e-9) + 1
     return start + step * np.arange(n, dtype=np.float64)
 
 

@@ -13,11 +13,14 @@ NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C sto
 
 from __future__ import annotations
 
+import math
+import time
 import warnings
 from typing import Any
 
 import numpy as np
 
+from .. import validate as limits
 from .._core import EnsembleRun, InvalidInputError
 from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
@@ -34,26 +37,34 @@ def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:
     if isinstance(states, (list, tuple)) and states and all(isinstance(s, State) for s in states):
         arr = np.array([s.as_array() for s in states])
     else:
-        arr = np.asarray(states, dtype=np.float64)
+        try:
+            arr = np.asarray(states, dtype=np.float64)
+        except (TypeError, ValueError, OverflowError, RecursionError):
+            raise limits.invalid(
+                "states", states, "an (N, 6) array of (x, v) rows [m, m/s] or a list of State"
+            ) from None
     if arr.ndim != 2 or arr.shape[1] != 6 or arr.shape[0] == 0:
         raise InvalidInputError(
             f"states must be an (N, 6) array of (x, v) rows [m, m/s] or a list of State, "
             f"got shape {arr.shape}"
         )
+    if arr.shape[0] > limits.MAX_SAMPLES:
+        raise limits.invalid("states", f"<{arr.shape[0]} rows>", f"at most {limits.MAX_SAMPLES} rows")
+    rows = np.isfinite(arr).all(axis=1)  # non-finite rows are skipped with a warning (below)
+    limits.array("states x", arr[rows, :3], "position")
+    limits.array("states v", arr[rows, 3:], "velocity")
     return np.ascontiguousarray(arr[:, :3]), np.ascontiguousarray(arr[:, 3:])
 
 
-def _per_trajectory(name: str, value: Any, default: float, n: int) -> FloatArray:
-    try:
-        a = np.atleast_1d(np.asarray(default if value is None else value, dtype=np.float64)).ravel()
-    except (TypeError, ValueError):
-        raise InvalidInputError(
-            f"{name} = {value!r:.80}: give a number or one number per trajectory ({n})"
-        ) from None
+def _per_trajectory(name: str, value: Any, default: float, n: int, limit: Any) -> FloatArray:
+    a = np.atleast_1d(limits.array(name, default if value is None else value, limit)).ravel()
     if a.size not in (1, n):
         raise InvalidInputError(f"{name} must be one value or one per trajectory ({n}), got {a.size}")
     return np.ascontiguousarray(a)
 
+
+_DAMPING = limits.param_spec("damped", "damping")
+_SETTLE = limits.spec("settle_angle", "rad", 1e-300, math.pi, "an angle in (0, π] rad")
 
 _DAMPED_ONLY = {"damping", "forcing_x", "forcing_y", "forcing_z", "forcing_omega", "forcing_phase"}
 
@@ -112,6 +123,8 @@ def simulate_ensemble(
     every n-th step; default the final state only) and ``summary`` (default True).
     ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. ``method``: only
     ``"rattle"``. The number of steps is round(t_end/dt); t_end must be a multiple of dt to 1e-9."""
+    if not isinstance(pendulum, Pendulum):
+        raise limits.invalid("pendulum", pendulum, "a pendulab.Pendulum")
     if method != "rattle":
         raise InvalidInputError(
             f"method = {method!r}: the ensemble kernel runs 'rattle' (vectorised); loop over "
@@ -127,27 +140,28 @@ def simulate_ensemble(
     c_model = model_damping(pendulum)
     x, v = _as_states(states)
     n = x.shape[0]
-    lengths = _per_trajectory("length", length, pendulum.length, n)
-    gs = _per_trajectory("g", g, pendulum.g, n)
-    cs = _per_trajectory("damping", damping, c_model, n)
+    lengths = _per_trajectory("length", length, pendulum.length, n, limits.COMMON["length"])
+    gs = _per_trajectory("g", g, pendulum.g, n, limits.COMMON["g"])
+    cs = _per_trajectory("damping", damping, c_model, n, _DAMPING)
     finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
     invalid = np.flatnonzero(~finite)
     if invalid.size == n:
         raise InvalidInputError(f"every start row is non-finite (NaN or inf): {n} rows")
-    if not (np.isfinite(dt) and dt > 0):
-        raise InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
+    dt = limits.number("dt", dt, "dt")
+    t_end = limits.number("t_end", t_end, "time", positive=True)
+    limits.planned_steps(0.0, t_end * n, dt)  # trajectory-steps: the work of the whole ensemble
     steps = round(t_end / dt)
     if not (np.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
         raise InvalidInputError(f"t_end = {t_end!r} s must be > 0 and a multiple of dt = {dt!r} s")
-    if save_every is not None and (int(save_every) != save_every or save_every < 1):
-        raise InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
+    if save_every is not None:
+        save_every = limits.integer("save_every", save_every, 1, 2**63 - 1)
     n_save = 2 if save_every is None else steps // int(save_every) + 2
     if n * n_save * 48 > 4 * 2**30:
         raise InvalidInputError(
             f"{n} trajectories × {n_save} samples need {n * n_save * 48 / 2**30:.1f} GiB (limit 4 GiB); "
             "save less often"
         )
-    settle = None if settle_angle is None else float(settle_angle)
+    settle = None if settle_angle is None else limits.number("settle_angle", settle_angle, _SETTLE)
     if invalid.size:
         rows = ", ".join(str(i) for i in invalid[:10]) + (", …" if invalid.size > 10 else "")
         warnings.warn(

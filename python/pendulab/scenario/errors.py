@@ -18,6 +18,7 @@ from typing import Any
 from pydantic import BaseModel
 from pydantic_core import ErrorDetails
 
+from ..validate import abbreviate
 from .schema import (
     SECTIONS,
     ScenarioSpec,
@@ -115,11 +116,11 @@ def _pendulum_model(data: Any) -> str:
 def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
     """An unknown key of ``[pendulum]``: the keys of the chosen model, and which models take it."""
     keys = _model_keys(model)
-    text = f"unknown key pendulum.{name} = {_show(value)}"
+    text = f"unknown key pendulum.{abbreviate(name)} = {_show(value)}"
     if others := _models_with(name):
         text += f" (a parameter of the model{'s' if len(others) > 1 else ''} {', '.join(map(repr, others))}"
         text += f", not of {model!r}: set model = {others[0]!r}?)"
-    elif hint := difflib.get_close_matches(name, keys, n=1):
+    elif hint := difflib.get_close_matches(name[:100], keys, n=1):
         text += f" (did you mean {hint[0]!r}?)"
     return text + f"; allowed keys in [pendulum] for model {model!r}: {', '.join(keys)}"
 
@@ -140,7 +141,7 @@ def _problem(err: ErrorDetails, data: Any = None) -> str:
             unit = "degrees" if name.endswith("_deg") else spec["unit"]
             allowed = f"{spec['allowed']} (in {unit}; {spec['description']})"
         loc = ("pendulum", name)
-    key = _key(loc)
+    key = abbreviate(_key(loc))
     if kind == "missing" and len(loc) == 1 and loc[0] in SECTIONS:
         return f"the table [{key}] is missing"
     if kind == "missing":
@@ -149,7 +150,7 @@ def _problem(err: ErrorDetails, data: Any = None) -> str:
         parent = _model_at(loc)
         names = list(parent.model_fields) if parent is not None else []
         section = f"[{_key(loc[:-1])}]" if len(loc) > 1 else "the top level"
-        hint = difflib.get_close_matches(str(loc[-1]), names, n=1)
+        hint = difflib.get_close_matches(str(loc[-1])[:100], names, n=1)
         text = f"unknown key {key} = {_show(value)}"
         if hint:
             text += f" (did you mean {hint[0]!r}?)"

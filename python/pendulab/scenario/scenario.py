@@ -48,11 +48,12 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from .._core import __version__
+from .._core import IntegrationError, InvalidInputError, __version__
 from ..io import atomic_path
 from ..model import Pendulum, State
 from ..simulation import simulate
 from ..trajectory import Trajectory
+from ..validate import check_depth, check_nesting, read_file_capped
 from ..variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
 from .errors import ScenarioError, _problem, _syntax_error
@@ -137,7 +138,10 @@ class Scenario:
     def from_dict(cls, data: dict[str, Any], source: str = "<dict>") -> Scenario:
         """A scenario from the parsed TOML structure (nested dicts); :class:`ScenarioError` if invalid."""
         try:
+            check_depth(data)
             spec = ScenarioSpec.model_validate(data)
+        except InvalidInputError as e:
+            raise ScenarioError(source, str(e)) from None
         except ValidationError as e:
             errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
             raise ScenarioError(source, [_problem(err, data) for err in errors]) from None
@@ -147,9 +151,13 @@ class Scenario:
     def from_toml_str(cls, text: str, source: str = "<string>") -> Scenario:
         """A scenario from TOML text; ``source`` names it in error messages."""
         try:
+            check_nesting(text)
             data = tomllib.loads(text)
+            check_depth(data)
         except tomllib.TOMLDecodeError as e:
             raise _syntax_error(source, text, e) from None
+        except InvalidInputError as e:
+            raise ScenarioError(source, str(e)) from None
         return cls.from_dict(data, source)
 
     def with_overrides(
@@ -251,19 +259,22 @@ class Scenario:
             )
             return dataclasses.replace(run, t=run.t + sim.t0)  # type: ignore[return-value]
         rtol, atol = sim.resolved_tolerances()
-        return simulate(
-            sc.pendulum(),
-            sc.initial_state(),
-            sim.t_end,
-            method=sim.method,
-            dt=sim.dt,
-            rtol=rtol,
-            atol=atol,
-            save_every=sim.save_every,
-            save_at=sim.save_at,
-            t0=sim.t0,
-            progress=progress,
-        )
+        try:
+            return simulate(
+                sc.pendulum(),
+                sc.initial_state(),
+                sim.t_end,
+                method=sim.method,
+                dt=sim.dt,
+                rtol=rtol,
+                atol=atol,
+                save_every=sim.save_every,
+                save_at=sim.save_at,
+                t0=sim.t0,
+                progress=progress,
+            )
+        except (IntegrationError, InvalidInputError) as e:  # name the file the run came from
+            raise type(e)(f"{sc.source}: {e}") from None
 
     # --- writing ---
 
@@ -301,12 +312,12 @@ class Scenario:
 def load_scenario(path: str | os.PathLike[str]) -> Scenario:
     """Reads and validates a scenario file (TOML, UTF-8).
 
-    Raises :class:`ScenarioError` for bad contents and ``OSError`` if the file cannot be read.
+    Raises :class:`ScenarioError` for bad contents (a file above 1 MiB or nested deeper than 16 levels
+    is refused before parsing, docs/limits.md) and ``OSError`` naming the file if it cannot be read.
     """
     source = os.fspath(path)
-    raw = Path(path).read_bytes()
     try:
-        text = raw.decode("utf-8")
-    except UnicodeDecodeError as e:
-        raise ScenarioError(source, f"not UTF-8 text (byte {e.start}): TOML files must be UTF-8") from None
+        text = read_file_capped(path)
+    except InvalidInputError as e:
+        raise ScenarioError(source, str(e)) from None
     return Scenario.from_toml_str(text, source)

@@ -16,12 +16,13 @@ from __future__ import annotations
 
 import difflib
 import math
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Annotated, Any
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from .._core import methods, models
 from ..simulation import DEFAULTS, method_names
+from ..validate import COMMON, LIMITS, MAX_SAMPLES, MAX_STEPS, abbreviate
 
 if TYPE_CHECKING:
     from .._core import ParamSpec
@@ -41,6 +42,17 @@ class _Section(BaseModel):
 
 
 _VEC3 = {"min_length": 3, "max_length": 3}
+
+
+def _lim(name: str) -> dict[str, float]:
+    """pydantic bounds of entry ``name`` of the table of limits (:mod:`pendulab.validate`)."""
+    spec = COMMON[name] if name in COMMON else LIMITS[name]
+    return {"ge": spec["min"], "le": spec["max"]}
+
+
+_Position = Annotated[float, Field(**_lim("position"))]
+_Velocity = Annotated[float, Field(**_lim("velocity"))]
+_Time = Annotated[float, Field(**_lim("time"))]
 
 
 _COMMON_KEYS = ("model", "length", "mass", "g")
@@ -76,20 +88,22 @@ class PendulumSection(_Section):
     collected into ``params`` and checked by the core (ranges) when the scenario is built."""
 
     model: str = Field("ideal", description=f"the pendulum model, one of: {', '.join(map(repr, MODELS))}")
-    length: float = Field(gt=0, description="rod length l in m, a finite number > 0")
-    mass: float = Field(gt=0, description="bob mass m in kg, a finite number > 0")
+    length: float = Field(description=f"rod length l: {COMMON['length']['allowed']}", **_lim("length"))
+    mass: float = Field(description=f"bob mass m: {COMMON['mass']['allowed']}", **_lim("mass"))
     g: float = Field(
-        9.81, description="gravitational acceleration in m/s², any finite number (g > 0 pulls along -z)"
+        9.81,
+        description=f"gravitational acceleration: {COMMON['g']['allowed']} (g > 0 pulls along -z)",
+        **_lim("g"),
     )
     params: dict[str, float] = Field(
         default_factory=dict, description="the model's own parameters (SI units; `pendulab models`)"
     )
-    pivot_times: list[float] | None = Field(
+    pivot_times: list[_Time] | None = Field(
         None,
         min_length=4,
         description="model 'sampled_pivot': times of the pivot samples in s (>= 4, strictly increasing)",
     )
-    pivot_positions: list[list[float]] | None = Field(
+    pivot_positions: list[list[_Position]] | None = Field(
         None, description="model 'sampled_pivot': pivot positions in m, one [x, y, z] per time"
     )
 
@@ -116,7 +130,9 @@ class PendulumSection(_Section):
     @classmethod
     def _known_model(cls, name: str) -> str:
         if name not in MODELS:
-            raise ValueError(f"unknown model {name!r}; allowed: {', '.join(map(repr, MODELS))}")
+            raise ValueError(
+                f"unknown model {abbreviate(repr(name))}; allowed: {', '.join(map(repr, MODELS))}"
+            )
         return name
 
     @model_validator(mode="after")
@@ -163,14 +179,30 @@ _CARTESIAN_KEYS = ("x", "v", "project")
 class InitialSection(_Section):
     """``[initial]``: the start, either as angles or as Cartesian position and velocity."""
 
-    theta: float | None = Field(None, description="polar angle from the downward vertical in rad (finite)")
-    theta_deg: float | None = Field(None, description="polar angle from the downward vertical in degrees")
-    phi: float | None = Field(None, description="azimuth atan2(y, x) in rad (finite; default 0)")
-    phi_deg: float | None = Field(None, description="azimuth atan2(y, x) in degrees (default 0)")
-    theta_dot: float | None = Field(None, description="polar angular rate in rad/s (finite; default 0)")
-    phi_dot: float | None = Field(None, description="azimuthal angular rate in rad/s (finite; default 0)")
-    x: list[float] | None = Field(None, description="position of the bob in m, 3 finite numbers", **_VEC3)
-    v: list[float] | None = Field(None, description="velocity of the bob in m/s, 3 finite numbers", **_VEC3)
+    theta: float | None = Field(
+        None, description="polar angle from the downward vertical in rad, in [-1e6, 1e6]", **_lim("angle")
+    )
+    theta_deg: float | None = Field(
+        None, description="polar angle from the downward vertical in degrees, in [-1e6, 1e6]", **_lim("angle")
+    )
+    phi: float | None = Field(
+        None, description="azimuth atan2(y, x) in rad, in [-1e6, 1e6] (default 0)", **_lim("angle")
+    )
+    phi_deg: float | None = Field(
+        None, description="azimuth atan2(y, x) in degrees, in [-1e6, 1e6] (default 0)", **_lim("angle")
+    )
+    theta_dot: float | None = Field(
+        None, description="polar angular rate in rad/s, in [-1e9, 1e9] (default 0)", **_lim("angle_rate")
+    )
+    phi_dot: float | None = Field(
+        None, description="azimuthal angular rate in rad/s, in [-1e9, 1e9] (default 0)", **_lim("angle_rate")
+    )
+    x: list[_Position] | None = Field(
+        None, description="position of the bob in m, 3 numbers in [-1e9, 1e9]", **_VEC3
+    )
+    v: list[_Velocity] | None = Field(
+        None, description="velocity of the bob in m/s, 3 numbers in [-1e8, 1e8]", **_VEC3
+    )
     project: bool | None = Field(
         None, description="true or false: move a Cartesian start onto TS² (default false: refuse it)"
     )
@@ -225,15 +257,18 @@ class InitialSection(_Section):
 class SimulationSection(_Section):
     """``[simulation]``: time span, integrator, step size or tolerances, and what to save."""
 
-    t_end: float = Field(description="end time in s, a finite number > t0")
-    t0: float = Field(0.0, description="start time in s, a finite number (default 0)")
+    t_end: float = Field(description="end time in s, a number > t0 in [-1e12, 1e12]", **_lim("time"))
+    t0: float = Field(
+        0.0, description="start time in s, a number in [-1e12, 1e12] (default 0)", **_lim("time")
+    )
     method: str = Field(
         str(DEFAULTS["method"]), description="an integrator name (see `pendulab methods`), default 'rattle'"
     )
     dt: float | None = Field(
         None,
-        gt=0,
-        description="step size in s, a finite number > 0 (default 1e-3 s; adaptive methods: the first step)",
+        description="step size in s, a number in [1e-12, 1e6] (default 1e-3 s; adaptive methods: the first "
+        "step); (t_end - t0)/dt at most 1e10 steps",
+        **_lim("dt"),
     )
     rtol: float | None = Field(
         None,
@@ -252,9 +287,10 @@ class SimulationSection(_Section):
         lt=_U64_LIMIT,
         description="an integer >= 1: keep every n-th step plus the first and last state (default 1)",
     )
-    save_at: list[float] | None = Field(
+    save_at: list[_Time] | None = Field(
         None,
         min_length=1,
+        max_length=MAX_SAMPLES,
         description="a non-empty array of strictly increasing times in s within [t0, t_end]",
     )
 
@@ -263,15 +299,23 @@ class SimulationSection(_Section):
     def _known_method(cls, name: str) -> str:
         names = method_names()
         if name not in names:
-            hint = difflib.get_close_matches(name, names, n=1)
+            hint = difflib.get_close_matches(name[:100], names, n=1)
             suggestion = f" (did you mean {hint[0]!r}?)" if hint else ""
-            raise ValueError(f"unknown method {name!r}{suggestion}; available: {', '.join(names)}")
+            raise ValueError(
+                f"unknown method {abbreviate(repr(name))}{suggestion}; available: {', '.join(names)}"
+            )
         return name
 
     @model_validator(mode="after")
     def _consistent(self) -> SimulationSection:
         if not self.t_end > self.t0:
             raise ValueError(f"t_end = {self.t_end!r} s must be after t0 = {self.t0!r} s")
+        if not self.is_adaptive() and not (self.t_end - self.t0) / self.resolved_dt() <= MAX_STEPS:
+            raise ValueError(
+                f"(t_end - t0)/dt = {(self.t_end - self.t0) / self.resolved_dt():.3g} steps "
+                f"(t_end = {self.t_end!r} s, t0 = {self.t0!r} s, dt = {self.resolved_dt()!r} s); "
+                f"{LIMITS['steps']['allowed']}"
+            )
         if self.save_every is not None and self.save_at is not None:
             raise ValueError(
                 f"give either save_every (= {self.save_every!r}) or save_at (= {self.save_at!r}), not both"
@@ -347,11 +391,15 @@ UNITS: dict[str, dict[str, str]] = {
 
 
 def _show(value: Any) -> str:
-    """A value as the user would recognise it from the TOML file."""
+    """A value as the user would recognise it from the TOML file, abbreviated to 80 characters."""
+    return abbreviate(_toml_like(value))
+
+
+def _toml_like(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, dict):
-        return "{" + ", ".join(f"{k} = {_show(v)}" for k, v in value.items()) + "}"
+        return "{" + ", ".join(f"{k} = {_toml_like(v)}" for k, v in list(value.items())[:20]) + "}"
     if isinstance(value, list | tuple):
-        return "[" + ", ".join(_show(v) for v in value) + "]"
+        return "[" + ", ".join(_toml_like(v) for v in value[:20]) + (", ..." if len(value) > 20 else "") + "]"
     return repr(value)

@@ -19,10 +19,11 @@ from typing import Any
 
 import numpy as np
 
+from .. import validate as limits
 from .._core import EnsembleRun, ExactSolution, InvalidInputError, rotation_numbers, state_from_angles
 from ..ensemble.run import max_sway, model_damping
 from ..model import FloatArray, Pendulum
-from .design import AXES, INITIAL_AXES, Design, check_axis_name
+from .design import AXES, AXIS_LIMITS, INITIAL_AXES, Design, check_axis_name
 
 QUANTITIES: dict[str, dict[str, str]] = {
     "final_state": {"x": "m", "y": "m", "z": "m", "vx": "m/s", "vy": "m/s", "vz": "m/s"},
@@ -129,7 +130,11 @@ def make_spec(
     if "settle_time" in quantities:
         if settle_angle is None:
             raise _bad("settle_time needs settle_angle [rad]: the sway angle that counts as settled")
-        if not (isinstance(settle_angle, int | float) and 0 < settle_angle < math.pi):
+        if not (
+            isinstance(settle_angle, int | float)
+            and not isinstance(settle_angle, bool)
+            and 0 < settle_angle < math.pi
+        ):
             raise _bad(f"settle_angle = {settle_angle!r} must be a sway angle in (0, π) rad")
         settle_angle = float(settle_angle)
     else:
@@ -143,13 +148,7 @@ def make_spec(
             )
         if name in design.names:
             raise _bad(f"{name!r} is both an axis of the design and a fixed value")
-        try:
-            v = float(value)
-        except (TypeError, ValueError):
-            raise _bad(f"fixed {name} = {value!r}: must be a number in {AXES[name]}") from None
-        if not math.isfinite(v):
-            raise _bad(f"fixed {name} = {value!r} {AXES[name]} must be finite")
-        fixed_values[name] = v
+        fixed_values[name] = limits.number(f"fixed {name}", value, AXIS_LIMITS[name])
     for name in INITIAL_AXES:
         if name not in design.names:
             fixed_values.setdefault(name, 0.0)
@@ -159,9 +158,10 @@ def make_spec(
         if t_end is None:
             verb = "integrates" if len(sim) == 1 else "integrate"
             raise _bad(f"{', '.join(sim)} {verb}: give t_end [s] (and dt [s])")
-        if not (isinstance(dt, int | float) and math.isfinite(dt) and dt > 0):
-            raise _bad(f"dt = {dt!r} must be a finite step > 0 s")
-        steps = round(t_end / dt) if math.isfinite(t_end) else 0
+        dt = limits.number("dt", dt, "dt")
+        t_end = limits.number("t_end", t_end, "time", positive=True)
+        limits.planned_steps(0.0, t_end, dt)
+        steps = round(t_end / dt)
         if not (math.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
             raise _bad(f"t_end = {t_end!r} s must be > 0 and a multiple of dt = {dt!r} s")
         t_end, dt = float(t_end), float(dt)

@@ -31,12 +31,16 @@ import json
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 
+from .. import validate as limits
 from .._core import InvalidInputError
 from ..model import FloatArray
+
+if TYPE_CHECKING:
+    from .._core import ParamSpec
 
 AXES: dict[str, str] = {
     "theta0": "rad",
@@ -48,6 +52,17 @@ AXES: dict[str, str] = {
     "damping": "1/s",
 }
 """The axes a design may vary, with their SI units."""
+
+AXIS_LIMITS: dict[str, str | ParamSpec] = {
+    "theta0": "angle",
+    "phi0": "angle",
+    "theta_dot0": "angle_rate",
+    "phi_dot0": "angle_rate",
+    "length": limits.COMMON["length"],
+    "g": limits.COMMON["g"],
+    "damping": limits.param_spec("damped", "damping"),
+}
+"""Each axis's entry of the table of limits (:mod:`pendulab.validate`, docs/limits.md)."""
 
 INITIAL_AXES = ("theta0", "phi0", "theta_dot0", "phi_dot0")
 """The axes that set the start (the others, ``length``, ``g`` and ``damping``, are the pendulum's
@@ -78,23 +93,11 @@ def check_values(name: str, values: Any) -> FloatArray:
     """The values of axis ``name`` as a contiguous float64 1-D array: non-empty, finite, and > 0 for
     ``length``, >= 0 for ``damping``; an error naming the axis and the bad value otherwise."""
     check_axis_name(name)
-    try:
-        a = np.asarray(values, dtype=np.float64)
-    except (TypeError, ValueError):
-        raise _bad(f"axis {name!r}: values must be numbers in {AXES[name]}, got {values!r:.80}") from None
+    a = limits.array(f"axis {name!r} values", values, AXIS_LIMITS[name])
     if a.ndim != 1:
         raise _bad(f"axis {name!r}: values must be a 1-D array, got shape {a.shape}")
     if a.size == 0:
         raise _bad(f"axis {name!r} is empty: give at least one value (in {AXES[name]})")
-    bad = ~np.isfinite(a)
-    need = {"length": "finite and > 0", "damping": "finite and >= 0"}.get(name, "finite")
-    if name == "length":
-        bad |= ~(a > 0)
-    if name == "damping":
-        bad |= ~(a >= 0)
-    if bad.any():
-        k = int(np.argmax(bad))
-        raise _bad(f"axis {name!r}: value [{k}] = {float(a[k])!r} {AXES[name]} must be {need}")
     return np.ascontiguousarray(a)
 
 

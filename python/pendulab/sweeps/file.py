@@ -38,7 +38,6 @@ import difflib
 import os
 import tomllib
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
@@ -49,6 +48,7 @@ from .._core import InvalidInputError
 from ..model import Pendulum
 from ..scenario import ScenarioError
 from ..scenario.schema import _show  # a value as it looks in TOML, as scenario errors show it
+from ..validate import check_depth, read_file_capped
 from . import design as sweep_design
 from .compute import QUANTITIES, make_spec
 from .design import Design
@@ -241,9 +241,12 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
 def load_sweep_file(path: str | os.PathLike[str]) -> SweepFile:
     """Reads and checks a sweep file (TOML); :class:`SweepFileError` names any problem."""
     source = str(path)
-    text = Path(path).read_text(encoding="utf-8")
     try:
+        text = read_file_capped(path)  # at most 1 MiB, 16 levels of nesting (docs/limits.md)
         data = tomllib.loads(text)
+        check_depth(data)
     except tomllib.TOMLDecodeError as e:
         raise SweepFileError(source, f"invalid TOML: {e}") from None
+    except InvalidInputError as e:
+        raise SweepFileError(source, str(e)) from None
     return sweep_file_from_dict(data, source)

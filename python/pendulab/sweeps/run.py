@@ -38,6 +38,7 @@ from typing import Any
 import numpy as np
 
 from .._progress import tqdm
+from .. import validate as limits
 from ..model import FloatArray, Pendulum
 from .backends import Dask, Threads, connect, drive
 from .compute import (
@@ -128,6 +129,10 @@ def sweep(
     t0 = time.perf_counter()
     d = as_design(design)
     spec = make_spec(d, quantity, pendulum, fixed, t_end, dt, settle_angle)
+    if d.n > limits.MAX_SAMPLES:
+        raise limits.invalid("design", f"<{d.n} points>", f"at most {limits.MAX_SAMPLES:.0e} points")
+    if spec.t_end is not None and spec.dt is not None:  # trajectory-steps: the work of the whole sweep
+        limits.planned_steps(0.0, spec.t_end * d.n, spec.dt)
     if backend is None:
         backend = "threads" if scheduler is None else "dask"
     if backend not in BACKENDS:

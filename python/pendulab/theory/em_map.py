@@ -29,6 +29,7 @@ from .. import io
 from .._core import InvalidInputError, conical_curve, rotation_numbers
 from .._core import monodromy as _monodromy
 from ..model import FloatArray, Pendulum
+from ..validate import MAX_SAMPLES, finite, integer, invalid
 
 MAX_GRID_POINTS = 4_000_000
 """Largest number of grid points :func:`em_map` evaluates (~10 s)."""
@@ -41,11 +42,11 @@ DEFAULT_J_RANGE = (-2.4, 2.4)
 
 
 def _check_range(name: str, r: Any, unit: str) -> tuple[float, float]:
-    try:
-        lo, hi = (float(v) for v in r)
-    except (TypeError, ValueError):
-        raise InvalidInputError(f"{name} = {r!r} must be two numbers (min, max) in {unit}") from None
-    if not (math.isfinite(lo) and math.isfinite(hi) and lo < hi):
+    allowed = f"two finite numbers (min, max) with min < max, in {unit}"
+    if isinstance(r, str | bytes) or not hasattr(r, "__len__") or len(r) != 2:
+        raise invalid(name, r, allowed)
+    lo, hi = finite(f"{name}[0]", r[0], allowed), finite(f"{name}[1]", r[1], allowed)
+    if not lo < hi:
         raise InvalidInputError(f"{name} = ({lo!r}, {hi!r}) must be finite with min < max, in {unit}")
     return lo, hi
 
@@ -53,11 +54,11 @@ def _check_range(name: str, r: Any, unit: str) -> tuple[float, float]:
 def _check_grid(grid: Any) -> tuple[int, int]:
     try:
         nj, ne = grid
-    except (TypeError, ValueError):
+    except (TypeError, ValueError, RecursionError):
         raise InvalidInputError(f"grid = {grid!r} must be two integers (n_J3, n_E)") from None
     for name, n in (("n_J3", nj), ("n_E", ne)):
-        if isinstance(n, bool) or not isinstance(n, int | np.integer) or n < 2:
-            raise InvalidInputError(f"grid {name} = {n!r} must be an integer >= 2")
+        if isinstance(n, bool) or not isinstance(n, int | np.integer) or not 2 <= n <= MAX_GRID_POINTS:
+            raise invalid(f"grid {name}", n, f"an integer in [2, {MAX_GRID_POINTS}]")
     if nj * ne > MAX_GRID_POINTS:
         raise InvalidInputError(
             f"grid = {nj}x{ne} = {nj * ne} points exceeds the limit of {MAX_GRID_POINTS}; use a coarser grid"
@@ -100,11 +101,14 @@ class EMMap:
         """The change of W carried once around the top on the circle (j, ε) = (r sin α, 1 + r cos α),
         α from 0 to 2π in ``n`` steps, r = ``radius`` in the dimensionless units (of m l² ω₀ in J₃, of
         m|g|l in E): ±1 to rounding (T-6.4). A circle that leaves the image is an error."""
-        return float(_monodromy(float(radius), int(n)))
+        radius = finite("radius", radius, "a finite radius > 0 (dimensionless)")
+        return float(_monodromy(radius, integer("n", n, 3, MAX_SAMPLES)))
 
     def loop(self, radius: float = 0.5, n: int = 720) -> tuple[FloatArray, FloatArray, FloatArray]:
         """The monodromy loop (see :meth:`monodromy`) as (J₃ [kg m²/s], E [J], W continued), starting just
         right of J₃ = 0 above the top; W(end) − W(start) = :meth:`monodromy`."""
+        radius = finite("radius", radius, "a finite radius > 0 (dimensionless)")
+        n = integer("n", n, 3, MAX_SAMPLES)
         alpha = math.pi / n + 2.0 * math.pi * np.arange(n + 1) / n
         j, eps = radius * np.sin(alpha), 1.0 + radius * np.cos(alpha)
         w = rotation_numbers(np.ascontiguousarray(eps), np.ascontiguousarray(j))
@@ -201,11 +205,11 @@ def em_map(
     the bottom, the top and the monodromy loop. Grid points within 1e-12 (relative to the J₃ range) of
     J₃ = 0 are put on it. g < 0 is mapped as its mirror image (module docstring); g = 0, models other
     than the ideal pendulum, bad ranges and grids raise :class:`pendulab.InvalidInputError`."""
+    eu, mu = _units(pendulum)
     if not pendulum.is_ideal:
         raise InvalidInputError(
             f"the energy–momentum map is that of the ideal pendulum, not the {pendulum.model!r} model"
         )
-    eu, mu = _units(pendulum)
     jr = (
         _check_range("j_range", j_range, "kg m^2/s")
         if j_range is not None

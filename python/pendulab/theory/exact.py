@@ -35,6 +35,7 @@ from .._core import InvalidInputError
 from ..display import Row, html_table, number
 from ..model import FloatArray, Pendulum, State, _frozen
 from ..trajectory import Trajectory
+from ..validate import array, show
 
 if TYPE_CHECKING:
     import os
@@ -74,12 +75,10 @@ class Phases:
 
 
 def _times(t: Any) -> tuple[FloatArray, bool]:
-    """t as a contiguous float64 array and whether it was a scalar; a clear error if not finite."""
-    arr = np.asarray(t, dtype=np.float64)
-    scalar = arr.ndim == 0
-    if scalar and not math.isfinite(float(arr)):
-        raise InvalidInputError(f"t = {float(arr)!r} is not a finite time (s)")
-    return np.ascontiguousarray(arr.reshape(-1)), scalar
+    """t as a contiguous float64 array and whether it was a scalar; within the time and samples limits
+    of :mod:`pendulab.validate` (a clear error naming t otherwise)."""
+    arr = array("t", t, "time")
+    return np.ascontiguousarray(arr.reshape(-1)), arr.ndim == 0
 
 
 class ExactSolution:
@@ -105,9 +104,50 @@ class ExactSolution:
             )
         self._pendulum = pendulum
         self._start = state
-        self._core = _ExactSolution(
-            *pendulum._core_args(), np.ascontiguousarray(state.x), np.ascontiguousarray(state.v)
+        try:
+            self._core = _ExactSolution(
+                *pendulum._core_args(), np.ascontiguousarray(state.x), np.ascontiguousarray(state.v)
+            )
+        except InvalidInputError as e:
+            raise self._refusal("", e) from None
+
+    def _inputs(self) -> str:
+        """The inputs, for messages: the pendulum and the start (values abbreviated)."""
+        p, s = self._pendulum, self._start
+        x, v = show(s.x.tolist()), show(s.v.tolist())
+        return f"l = {p.length!r} m, g = {p.g!r} m/s^2 from x = {x} m, v = {v} m/s"
+
+    def _refusal(self, at: str, core: Exception) -> InvalidInputError:
+        """The error for an input the elliptic form cannot evaluate to its accuracy: it names the
+        input (the core's internal reason goes into a note, not the message)."""
+        err = InvalidInputError(
+            f"no exact solution{at} for {self._inputs()} to the accuracy of docs/exact.md: the start is at "
+            "a degenerate limit of the elliptic form (e.g. J3 ~ 0 at a pole, or extreme energy); simulate it "
+            "instead (pl.simulate with 'rattle' or 'dop853')"
         )
+        err.add_note(f"core: {core}")
+        return err
+
+    def _states(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """The core's states at ``times``, refused (naming the input) where not finite."""
+        try:
+            x, v, phi = self._core.states(times)
+        except InvalidInputError as e:
+            at = f" at t in [{times.min()!r}, {times.max()!r}] s" if times.size else ""
+            raise self._refusal(at, e) from None
+        self._finite(times, x, v)
+        return x, v, phi
+
+    def _finite(self, times: FloatArray, *arrays: Any) -> None:
+        """Refuses (naming the input) where the solution is not finite, rather than returning NaN."""
+        for a in arrays:
+            bad = ~np.isfinite(a)
+            if bad.any():
+                k = int(np.flatnonzero(bad.reshape(len(times), -1).any(axis=1))[0])
+                raise InvalidInputError(
+                    f"the exact solution is not finite at t = {times[k]!r} s for {self._inputs()}: "
+                    "this start is beyond the solution's accuracy (docs/exact.md); simulate it instead"
+                )
 
     # --- the orbit ---
 
@@ -237,7 +277,7 @@ class ExactSolution:
         ``t.shape + (3,)``: position [m] and velocity [m/s].
         """
         times, scalar = _times(t)
-        x, v, _ = self._core.states(times)
+        x, v, _ = self._states(times)
         if scalar:
             return State(_frozen(x[0]), _frozen(v[0]))
         shape = (*np.shape(t), 3)
@@ -249,13 +289,13 @@ class ExactSolution:
         It continues across the branch cut of atan2 (no 2π jumps); for planar motion (J₃ = 0) it jumps
         by π where the bob passes through a pole, and only there. NaN at rest at a pole."""
         times, scalar = _times(t)
-        _, _, phi = self._core.states(times)
+        _, _, phi = self._states(times)
         return float(phi[0]) if scalar else phi.reshape(np.shape(t))
 
     def trajectory(self, t: Any) -> Trajectory:
         """The exact states at the times t [s] (1-D, any order) as a :class:`Trajectory` with method
         ``"exact"``, so its diagnostics, summary and file writers apply."""
-        times = np.asarray(t, dtype=np.float64)
+        times = array("t", t, "time")
         if times.ndim != 1 or times.size == 0:
             raise InvalidInputError(f"t must be a non-empty 1-D array of times (s), got shape {times.shape}")
         x, v = self.state(times)

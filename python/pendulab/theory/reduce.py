@@ -35,8 +35,9 @@ from .._core import InvalidInputError
 from .._core import invariants as _invariants
 from .._core import reduced_flow as _reduced_flow
 from .._core import relation_residuals as _relation_residuals
-from ..model import FloatArray, Pendulum, State
+from ..model import FloatArray, Pendulum, State, check_pendulum_state
 from ..trajectory import Trajectory
+from ..validate import number
 
 SIGMA_UNITS = ("1", "1/s", "1/s^2", "1", "1/s", "1/s")
 """Units of σ₁ … σ₆ (unit-length variables, time in s)."""
@@ -107,15 +108,12 @@ def reduced_flow(pendulum: Pendulum, state: State, t_end: float, dt: float = 1e-
     φ̇·dt would exceed 0.05 rad (use a smaller dt there). Method name of the result:
     ``"reduced_rk4"``; its error is O(dt⁴).
     """
-    t_end, dt = float(t_end), float(dt)
-    if not (math.isfinite(t_end) and t_end > 0.0):
-        raise InvalidInputError(f"t_end = {t_end!r} must be a finite time > 0 s")
+    check_pendulum_state(pendulum, state)
+    t_end, dt = number("t_end", t_end, "time", positive=True), number("dt", dt, "dt")
     if not pendulum.is_ideal:
         raise InvalidInputError(
             f"the reduced flow (T-3.4) is that of the ideal pendulum, not the {pendulum.model!r} model"
         )
-    if not (math.isfinite(dt) and dt > 0.0):
-        raise InvalidInputError(f"dt = {dt!r} must be a finite step > 0 s")
     n = math.ceil(t_end / dt * (1.0 - 1e-12))
     if n > MAX_REDUCED_STEPS:
         raise InvalidInputError(

@@ -1,0 +1,313 @@
+"""The one validation layer: the table of limits and the checks every public entry point calls.
+
+The table comes from the core's registry (``crates/pendulab-core/src/model/registry.rs``): the
+shared model parameters length l [m], mass m [kg], gravity g [m/s²] and each model's own parameters
+(:func:`pendulab.models`), and the bounds of everything else a run is made of (:func:`limits`):
+positions [m], velocities [m/s], angles [rad], angle rates [rad/s], times [s], step sizes [s], the
+planned number of steps (t_end − t₀)/dt, saved samples, bytes of saved samples, and the size [B]
+and nesting of scenario and sweep files. The bounds are chosen so that every derived quantity
+(energy m(½|v|² + g z) [J], tension m(|v|² + x·f)/l [N], J₃ [kg m²/s]) is finite and every amount
+of work and memory is bounded before it starts; ``docs/limits.md`` gives the reason for each.
+
+Every check raises :class:`pendulab.InvalidInputError` (a ``ValueError``) as
+``invalid <name> = <value>: <allowed>`` with the value abbreviated to at most 80 characters.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+import os
+import re
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from ._core import IntegrationError, InvalidInputError
+from ._core import limits as _core_limits
+from ._core import models as _models
+
+if TYPE_CHECKING:
+    from ._core import ParamSpec
+
+FloatArray = npt.NDArray[np.float64]
+
+SHOW_CHARS = 80
+"""The longest a bad value is echoed in an error message (characters)."""
+
+LIMITS: dict[str, ParamSpec] = {p["name"]: p for p in _core_limits()}
+"""The core's limits by name: position, velocity, angle, angle_rate, time, dt, steps, samples,
+saved_bytes, file_bytes, file_nesting (each with unit, min, max, description = the reason, allowed)."""
+
+COMMON: dict[str, ParamSpec] = {p["name"]: p for p in _models()[0]["params"][:3]}
+"""The parameters every model shares: length [m], mass [kg], g [m/s²] with their limits."""
+
+FILE_BYTES = int(LIMITS["file_bytes"]["max"])
+"""The largest scenario or sweep file read [B] (checked before parsing)."""
+FILE_NESTING = int(LIMITS["file_nesting"]["max"])
+"""The deepest nesting of arrays and tables a scenario or sweep file may have (checked before parsing)."""
+MAX_STEPS = LIMITS["steps"]["max"]
+"""The most steps (t_end − t₀)/dt a fixed-step run may plan."""
+MAX_SAMPLES = int(LIMITS["samples"]["max"])
+"""The most samples a call may ask for (save times, evaluation times, sweep points, trajectories)."""
+
+
+def limits() -> list[ParamSpec]:
+    """Every limit: the shared model parameters (length [m], mass [kg], g [m/s²]) and the bounds of
+    states, times, steps, samples, bytes and files, each a dict ``name``, ``unit``, ``default``,
+    ``min``, ``max``, ``description`` (the reason for the bound) and ``allowed`` (in words). The
+    models' own parameters and their limits: :func:`pendulab.models`. ``docs/limits.md`` lists both."""
+    return [*COMMON.values(), *LIMITS.values()]
+
+
+def show(value: Any) -> str:
+    """``repr(value)`` abbreviated to at most :data:`SHOW_CHARS` characters (the middle elided)."""
+    if isinstance(value, np.generic):  # np.float64(nan) -> nan
+        value = value.item()
+    try:
+        text = repr(value)
+    except Exception:  # a hostile __repr__ (or a value too large to print)
+        text = f"<{type(value).__name__}>"
+    return abbreviate(text)
+
+
+def abbreviate(text: str) -> str:
+    """``text`` shortened to at most :data:`SHOW_CHARS` characters, the middle elided as `` ... ``."""
+    if len(text) <= SHOW_CHARS:
+        return text
+    half = (SHOW_CHARS - 5) // 2
+    return f"{text[:half]} ... {text[-half:]}"
+
+
+def invalid(name: str, value: Any, allowed: str) -> InvalidInputError:
+    """The error for ``name = value`` (abbreviated) with what is allowed."""
+    return InvalidInputError(f"invalid {name} = {show(value)}: {allowed}")
+
+
+def _real(name: str, value: Any, allowed: str) -> float:
+    """``value`` as a float when it is a real number (not a bool, a string or None)."""
+    scalar_array = isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf"
+    if isinstance(value, bool | np.bool_) or not (isinstance(value, numbers.Real) or scalar_array):
+        raise invalid(name, value, allowed)
+    try:
+        x = float(value)
+    except (OverflowError, TypeError, ValueError):
+        raise invalid(name, value, allowed) from None
+    if not math.isfinite(x):
+        raise invalid(name, value, allowed)
+    return x
+
+
+def number(name: str, value: Any, limit: str | ParamSpec, *, positive: bool = False) -> float:
+    """A real number within ``limit`` (a name of :data:`LIMITS` or :data:`COMMON`, or a parameter
+    spec); ``positive`` also refuses 0."""
+    spec = _spec(limit)
+    x = _real(name, value, spec["allowed"])
+    if not (spec["min"] <= x <= spec["max"]) or (positive and x <= 0.0):
+        raise invalid(name, value, spec["allowed"])
+    return x
+
+
+def finite(name: str, value: Any, allowed: str = "a finite number") -> float:
+    """A finite real number (for settings whose range the core checks)."""
+    return _real(name, value, allowed)
+
+
+def integer(name: str, value: Any, lo: int, hi: int, allowed: str | None = None) -> int:
+    """An integer in [lo, hi] (a float with an integer value is accepted; a bool is not)."""
+    allowed = allowed or f"an integer in [{lo}, {hi}]"
+    if isinstance(value, bool | np.bool_):
+        raise invalid(name, value, allowed)
+    if isinstance(value, numbers.Integral):
+        n = int(value)
+    elif isinstance(value, numbers.Real):
+        x = float(value)
+        if not (math.isfinite(x) and x == int(x)):
+            raise invalid(name, value, allowed)
+        n = int(x)
+    else:
+        raise invalid(name, value, allowed)
+    if not lo <= n <= hi:
+        raise invalid(name, value, allowed)
+    return n
+
+
+def flag(name: str, value: Any) -> bool:
+    """A bool (True/False, or a numpy bool)."""
+    if not isinstance(value, bool | np.bool_):
+        raise invalid(name, value, "True or False")
+    return bool(value)
+
+
+def choice(name: str, value: Any, options: Iterable[str]) -> str:
+    """One of ``options`` (strings)."""
+    opts = list(options)
+    if not isinstance(value, str) or value not in opts:
+        raise invalid(name, value, f"one of {', '.join(map(repr, opts))}")
+    return value
+
+
+def array(
+    name: str,
+    value: Any,
+    limit: str | ParamSpec,
+    *,
+    shape: tuple[int, ...] | None = None,
+    max_size: int | None = None,
+) -> FloatArray:
+    """A float64 array of real numbers within ``limit`` (contiguous); ``shape`` (None: any) and at
+    most ``max_size`` (default :data:`MAX_SAMPLES`) entries."""
+    spec = _spec(limit)
+    max_size = MAX_SAMPLES if max_size is None else max_size
+    span = f"numbers in [{spec['min']:g}, {spec['max']:g}] {spec['unit']}".rstrip()
+    what = (
+        f"an array of {span}"
+        if shape is None
+        else f"{math.prod(shape)} {span}"
+        if len(shape) == 1
+        else f"an array of shape {shape} of {span}"
+    )
+    if isinstance(value, str | bytes | dict) or value is None:
+        raise invalid(name, value, what)
+    try:
+        size = np.size(value) if isinstance(value, np.ndarray) else None
+        if size is not None and size > max_size:
+            raise invalid(name, f"<array of {size} values>", f"at most {max_size} values")
+        arr = np.asarray(value)
+    except InvalidInputError:
+        raise
+    except (TypeError, ValueError, OverflowError, RecursionError, MemoryError):
+        raise invalid(name, value, what) from None
+    if arr.dtype.kind not in "iuf" and not (arr.dtype == object and _all_real(arr)):
+        raise invalid(name, value, what)
+    if arr.size > max_size:
+        raise invalid(name, f"<array of {arr.size} values>", f"at most {max_size} values")
+    try:
+        out = np.asarray(arr, dtype=np.float64)
+        out = np.ascontiguousarray(out) if out.ndim else out.copy()
+    except (TypeError, ValueError, OverflowError):
+        raise invalid(name, value, what) from None
+    if shape is not None and out.shape != shape:
+        raise invalid(name, value, f"{what} (got shape {out.shape})")
+    bad = ~(np.isfinite(out) & (out >= spec["min"]) & (out <= spec["max"]))
+    if bad.any():
+        i = np.unravel_index(int(np.argmax(bad)), out.shape) if out.ndim else ()
+        where = "".join(f"[{k}]" for k in i)
+        raise invalid(f"{name}{where}", arr[i] if out.ndim else arr.item(), spec["allowed"])
+    return out
+
+
+def _all_real(arr: np.ndarray) -> bool:
+    return all(isinstance(v, numbers.Real) and not isinstance(v, bool | np.bool_) for v in arr.flat)
+
+
+def planned_steps(t0: float, t_end: float, dt: float, name: str = "t_end") -> float:
+    """Refuses a fixed-step run of more than :data:`MAX_STEPS` steps (t_end − t₀)/dt before it starts."""
+    steps = (t_end - t0) / dt
+    if not steps <= MAX_STEPS:
+        raise InvalidInputError(
+            f"invalid {name} = {show(t_end)} with dt = {show(dt)} (t0 = {show(t0)}): (t_end - t0)/dt = "
+            f"{steps:.3g} steps; {LIMITS['steps']['allowed']}"
+        )
+    return steps
+
+
+def require_finite_result(what: str, inputs: str, *arrays: Any) -> None:
+    """Raises :class:`pendulab.IntegrationError` naming ``inputs`` when any of ``arrays`` holds a
+    NaN or an infinity (so that no non-finite number leaves a call silently)."""
+    for a in arrays:
+        if a is not None and not np.all(np.isfinite(np.asarray(a, dtype=np.float64))):
+            raise IntegrationError(
+                f"{what} is not finite for {inputs}; this input is beyond what can be computed"
+            )
+
+
+_TOML_TOKENS = re.compile(
+    r'"""(?:\\.|[^\\])*?"""|\'\'\'.*?\'\'\'|"(?:\\.|[^"\\\n])*"|\'[^\'\n]*\'|#[^\n]*|[\[\]{}]', re.S
+)
+
+
+def read_file_capped(path: str | os.PathLike[str]) -> str:
+    """The UTF-8 text of a scenario or sweep file, refused before parsing when it is larger than
+    :data:`FILE_BYTES` (1 MiB; ``/dev/zero`` returns at once) or nests arrays and tables deeper than
+    :data:`FILE_NESTING`. Read errors are ``OSError`` naming the file; a refusal is an
+    :class:`InvalidInputError` saying what is allowed (the caller adds the file name)."""
+    source = os.fspath(path)
+    try:
+        with open(path, "rb") as f:
+            raw = f.read(FILE_BYTES + 1)
+    except OSError as e:
+        raise OSError(e.errno, e.strerror or str(e), source) from None
+    if len(raw) > FILE_BYTES:
+        raise InvalidInputError(
+            f"the file is larger than {FILE_BYTES} bytes (1 MiB); {LIMITS['file_bytes']['allowed']}"
+        )
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as e:
+        raise InvalidInputError(f"not UTF-8 text (byte {e.start}): TOML files must be UTF-8") from None
+    check_nesting(text)
+    return text
+
+
+def check_nesting(text: str) -> None:
+    """Refuses TOML text whose arrays and inline tables nest deeper than :data:`FILE_NESTING` (before
+    parsing: the parser recurses once per level)."""
+    depth = deepest = 0
+    for m in _TOML_TOKENS.finditer(text):
+        c = m.group()
+        if c in "[{":
+            depth += 1
+            deepest = max(deepest, depth)
+            if deepest > FILE_NESTING:
+                line = text.count("\n", 0, m.start()) + 1
+                raise InvalidInputError(
+                    f"arrays or tables nest more than {FILE_NESTING} levels deep (line {line}); "
+                    f"{LIMITS['file_nesting']['allowed']}"
+                )
+        elif c in "]}":
+            depth = max(depth - 1, 0)
+
+
+def check_depth(data: Any) -> None:
+    """Refuses parsed data (dicts and lists) nested deeper than :data:`FILE_NESTING` levels (dotted
+    keys such as ``a.b.c`` nest without brackets). Iterative: no recursion on hostile input."""
+    stack = [(data, 0)]
+    while stack:
+        item, depth = stack.pop()
+        if depth > FILE_NESTING:
+            allowed = LIMITS["file_nesting"]["allowed"]
+            raise InvalidInputError(
+                f"keys, arrays or tables nest more than {FILE_NESTING} levels deep; {allowed}"
+            )
+        if isinstance(item, dict):
+            stack.extend((v, depth + 1) for v in item.values())
+        elif isinstance(item, list):
+            stack.extend((v, depth + 1) for v in item)
+
+
+def param_spec(model: str, name: str) -> ParamSpec:
+    """The registry's spec of parameter ``name`` of ``model`` (units, limits)."""
+    return next(p for m in _models() if m["name"] == model for p in m["params"] if p["name"] == name)
+
+
+def spec(name: str, unit: str, lo: float, hi: float, allowed: str) -> ParamSpec:
+    """A spec for a setting of one entry point (e.g. an angle in (0, π]) in the shape of the table's."""
+    return {
+        "name": name,
+        "label": name,
+        "unit": unit,
+        "default": lo,
+        "min": lo,
+        "max": hi,
+        "description": "",
+        "allowed": allowed,
+    }
+
+
+def _spec(limit: str | ParamSpec) -> ParamSpec:
+    if isinstance(limit, str):
+        return LIMITS[limit] if limit in LIMITS else COMMON[limit]
+    return limit
