@@ -219,7 +219,7 @@ def _planned_work(path: Path) -> float:
     return span / sim.resolved_dt()
 
 
-def check_file(path: Path, tally: Tally, timeout: int = 60) -> None:
+def check_file(path: Path, tally: Tally, timeout: int = 60, run_work: float = RUN_WORK) -> None:
     """``validate`` and (when affordable) ``run`` on one file; failures go to ``tally``."""
     signal.signal(signal.SIGALRM, _alarm)
     for command in ("validate", "run"):
@@ -229,8 +229,8 @@ def check_file(path: Path, tally: Tally, timeout: int = 60) -> None:
                 work = _planned_work(path)
             except Exception:
                 work = 0.0  # invalid: run must refuse it in one line
-            if work > RUN_WORK:
-                tally.counts["run skipped (valid, > 2e5 steps)"] += 1
+            if work > run_work:
+                tally.counts[f"run skipped (valid, > {run_work:.0e} steps)"] += 1
                 continue
         signal.alarm(timeout)
         try:

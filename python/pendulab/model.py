@@ -22,7 +22,7 @@ from ._core import diagnostics as _diagnostics
 from ._core import models as _models
 from ._core import state_from_angles as _state_from_angles
 from .display import Row, html_table, number, vector
-from .validate import COMMON, LIMITS, array, choice, finite, flag, invalid
+from .validate import COMMON, LIMITS, array, choice, finite, flag, invalid, spec
 from .validate import number as checked
 
 if TYPE_CHECKING:
@@ -322,6 +322,10 @@ class Pendulum:
         """
         xa, va = _vec3("x", x), _vec3("v", v, "velocity")
         if flag("project", project):
+            if 0.0 < np.linalg.norm(xa) < 1e-9 * self._length:  # its direction is lost to rounding
+                raise invalid(
+                    "x", xa.tolist(), f"a position at least 1e-9 l = {1e-9 * self._length:g} m from the pivot"
+                )
             (xp, vp), dx, dv = project_state(*self._core_args(), xa, va)
             return State(_frozen(xp), _frozen(vp), (dx, dv))
         xs, vs = state_on_ts2(*self._core_args(), xa, va)
@@ -361,7 +365,12 @@ class Pendulum:
                     f"({name}_deg={deg!r}), not both"
                 )
             if deg is not None:
-                values.append(math.radians(checked(f"{name}_deg", deg, limit)))
+                lim = LIMITS[limit]
+                unit = "degrees/s" if name.endswith("_dot") else "degrees"
+                in_degrees = spec(
+                    f"{name}_deg", unit, lim["min"], lim["max"], f"{lim['allowed'].rsplit(' ', 1)[0]} {unit}"
+                )
+                values.append(math.radians(checked(f"{name}_deg", deg, in_degrees)))
             elif rad is not None:
                 values.append(checked(name, rad, limit))
             elif name == "theta":

@@ -153,10 +153,13 @@ def test_pendulum(length: Any, g: Any, mass: Any, model: Any, extra: dict[str, A
 @given(p=PENDULUMS, x=VEC, v=VEC, project=st.one_of(st.booleans(), JUNK))
 def test_state(p: pl.Pendulum, x: Any, v: Any, project: Any) -> None:
     def values(s: pl.State) -> tuple[Any, ...]:
-        if s.projection is not None:  # projected: on TS² to rounding, relative to l and |v|
+        if s.projection is not None:  # projected: on TS² to rounding
             r = abs(np.linalg.norm(s.x) - p.length) / p.length
             assert r < 1e-12, r
-            assert abs(s.x @ s.v) <= 1e-9 * p.length * max(np.linalg.norm(s.v), 1e-300), (s.x, s.v)
+            # x·v after removing the radial part of v: rounding of the given v's size (a v almost
+            # all radial keeps a tangential part only as accurate as the data, backward stable)
+            v_in = np.linalg.norm(np.asarray(v, dtype=float))
+            assert abs(s.x @ s.v) <= 1e-12 * p.length * max(v_in, 1e-300), (s.x, s.v, v)
         return s.x, s.v, p.energy(s), p.tension(s), p.j3(s)
 
     check("Pendulum.state", lambda: p.state(x, v, project=project), values)

@@ -120,7 +120,7 @@ impl State {
     }
 
     /// Moves (x, v) onto TS²: x ← l x/|x|, then v ← v − (x·v/l²) x (the tangential part), and
-    /// reports how far each moved. Fails only for non-finite input or x = 0.
+    /// reports how far each moved. Fails for non-finite input, x = 0, or a result that overflows.
     pub fn projected(params: &Params, x: DVec3, v: DVec3) -> Result<(Self, Projection)> {
         check_finite("x", x)?;
         check_finite("v", v)?;

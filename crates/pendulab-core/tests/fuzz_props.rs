@@ -16,7 +16,7 @@ use pendulab_core::{
 use proptest::prelude::*;
 
 /// Any f64 a fuzzer would try: ordinary values, the extremes, subnormals, ±0, ±inf, NaN.
-fn hostile() -> impl Strategy<Value = f64> {
+fn hostile() -> impl Strategy<Value = f64> + Clone {
     prop_oneof![
         4 => -10.0f64..10.0,
         2 => proptest::num::f64::ANY,
@@ -28,7 +28,7 @@ fn hostile() -> impl Strategy<Value = f64> {
 }
 
 /// A value within [lo, hi] (log-uniform in magnitude for wide ranges, both signs where allowed).
-fn within(lo: f64, hi: f64) -> impl Strategy<Value = f64> {
+fn within(lo: f64, hi: f64) -> impl Strategy<Value = f64> + Clone {
     (0.0f64..=1.0, -20.0f64..=20.0).prop_map(move |(u, e)| {
         let x = lo + (hi - lo) * u;
         let y = 10f64.powf(e) * if u < 0.5 { -1.0 } else { 1.0 };

@@ -127,12 +127,12 @@ def simulate_ensemble(
         raise limits.invalid("pendulum", pendulum, "a pendulab.Pendulum")
     if method != "rattle":
         raise InvalidInputError(
-            f"method = {method!r}: the ensemble kernel runs 'rattle' (vectorised); loop over "
+            f"method = {limits.show(method)}: the ensemble kernel runs 'rattle' (vectorised); loop over "
             "pl.simulate for the other methods"
         )
     if save is not None:
         if not isinstance(save, Save):
-            raise InvalidInputError(f"save must be a pl.Save rule, got {save!r}")
+            raise InvalidInputError(f"save must be a pl.Save rule, got {limits.show(save)}")
         if save_every is not None or summary is not None:
             raise InvalidInputError("give save=pl.Save... or save_every/summary, not both")
         save_every, summary = save.every_n, save.with_summary
@@ -152,7 +152,9 @@ def simulate_ensemble(
     limits.planned_steps(0.0, t_end * n, dt)  # trajectory-steps: the work of the whole ensemble
     steps = round(t_end / dt)
     if not (np.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
-        raise InvalidInputError(f"t_end = {t_end!r} s must be > 0 and a multiple of dt = {dt!r} s")
+        raise InvalidInputError(
+            f"t_end = {limits.show(t_end)} s must be > 0 and a multiple of dt = {limits.show(dt)} s"
+        )
     if save_every is not None:
         save_every = limits.integer("save_every", save_every, 1, 2**63 - 1)
     n_save = 2 if save_every is None else steps // int(save_every) + 2

@@ -96,7 +96,7 @@ def _quantities(quantity: str | Sequence[str]) -> tuple[str, ...]:
         if not isinstance(q, str) or q not in QUANTITIES:
             hint = difflib.get_close_matches(str(q), list(QUANTITIES), n=1)
             did = f" (did you mean {hint[0]!r}?)" if hint else ""
-            raise _bad(f"unknown quantity {q!r}{did}; the quantities are {', '.join(QUANTITIES)}")
+            raise _bad(f"unknown quantity {limits.show(q)}{did}; the quantities are {', '.join(QUANTITIES)}")
     return tuple(q for q in QUANTITIES if q in names)  # canonical order, no duplicates
 
 
@@ -135,7 +135,7 @@ def make_spec(
             and not isinstance(settle_angle, bool)
             and 0 < settle_angle < math.pi
         ):
-            raise _bad(f"settle_angle = {settle_angle!r} must be a sway angle in (0, π) rad")
+            raise _bad(f"settle_angle = {limits.show(settle_angle)} must be a sway angle in (0, π) rad")
         settle_angle = float(settle_angle)
     else:
         settle_angle = None
@@ -144,10 +144,11 @@ def make_spec(
         check_axis_name(name, "fixed value")
         if name not in INITIAL_AXES:
             raise _bad(
-                f"fixed {name!r}: set length and g on the pendulum; fixed takes {', '.join(INITIAL_AXES)}"
+                f"fixed {limits.show(name)}: set length and g on the pendulum; "
+                f"fixed takes {', '.join(INITIAL_AXES)}"
             )
         if name in design.names:
-            raise _bad(f"{name!r} is both an axis of the design and a fixed value")
+            raise _bad(f"{limits.show(name)} is both an axis of the design and a fixed value")
         fixed_values[name] = limits.number(f"fixed {name}", value, AXIS_LIMITS[name])
     for name in INITIAL_AXES:
         if name not in design.names:
@@ -163,7 +164,9 @@ def make_spec(
         limits.planned_steps(0.0, t_end, dt)
         steps = round(t_end / dt)
         if not (math.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
-            raise _bad(f"t_end = {t_end!r} s must be > 0 and a multiple of dt = {dt!r} s")
+            raise _bad(
+                f"t_end = {limits.show(t_end)} s must be > 0 and a multiple of dt = {limits.show(dt)} s"
+            )
         t_end, dt = float(t_end), float(dt)
     else:
         t_end = dt = None  # not used: not part of what the results depend on

@@ -85,7 +85,7 @@ def check_axis_name(name: Any, where: str = "axis") -> str:
     if not isinstance(name, str) or name not in AXES:
         hint = difflib.get_close_matches(str(name), list(AXES), n=1)
         did = f" (did you mean {hint[0]!r}?)" if hint else ""
-        raise _bad(f"unknown {where} {name!r}{did}; the axes are {', '.join(AXES)}")
+        raise _bad(f"unknown {where} {limits.show(name)}{did}; the axes are {', '.join(AXES)}")
     return name
 
 
@@ -93,11 +93,11 @@ def check_values(name: str, values: Any) -> FloatArray:
     """The values of axis ``name`` as a contiguous float64 1-D array: non-empty, finite, and > 0 for
     ``length``, >= 0 for ``damping``; an error naming the axis and the bad value otherwise."""
     check_axis_name(name)
-    a = limits.array(f"axis {name!r} values", values, AXIS_LIMITS[name])
+    a = limits.array(f"axis {limits.show(name)} values", values, AXIS_LIMITS[name])
     if a.ndim != 1:
-        raise _bad(f"axis {name!r}: values must be a 1-D array, got shape {a.shape}")
+        raise _bad(f"axis {limits.show(name)}: values must be a 1-D array, got shape {a.shape}")
     if a.size == 0:
-        raise _bad(f"axis {name!r} is empty: give at least one value (in {AXES[name]})")
+        raise _bad(f"axis {limits.show(name)} is empty: give at least one value (in {AXES[name]})")
     return np.ascontiguousarray(a)
 
 
@@ -200,11 +200,11 @@ def random(
     (``method="uniform"``) or a Latin hypercube (``"lhs"``), from ``np.random.default_rng(seed)``.
     The same arguments give the same points on every machine."""
     if isinstance(n, bool) or not isinstance(n, int | np.integer) or not 1 <= n <= MAX_POINTS:
-        raise _bad(f"n = {n!r} must be an integer number of points >= 1")
+        raise _bad(f"n = {limits.show(n)} must be an integer number of points >= 1")
     if method not in RANDOM_METHODS:
-        raise _bad(f"method = {method!r}: use one of {', '.join(RANDOM_METHODS)}")
+        raise _bad(f"method = {limits.show(method)}: use one of {', '.join(RANDOM_METHODS)}")
     if isinstance(seed, bool) or not isinstance(seed, int | np.integer) or seed < 0:
-        raise _bad(f"seed = {seed!r} must be an integer >= 0")
+        raise _bad(f"seed = {limits.show(seed)} must be an integer >= 0")
     if not isinstance(ranges, Mapping):
         raise _bad(f"ranges is a dict of axis name -> (lo, hi), got {type(ranges).__name__}")
     _check_names(list(ranges))
@@ -213,10 +213,15 @@ def random(
         try:
             lo, hi = (float(v) for v in r)
         except (TypeError, ValueError):
-            raise _bad(f"range of {name!r}: expected (lo, hi) in {AXES[name]}, got {r!r}") from None
+            raise _bad(
+                f"range of {limits.show(name)}: expected (lo, hi) in {AXES[name]}, got {limits.show(r)}"
+            ) from None
         check_values(name, [lo, hi])
         if not lo <= hi:
-            raise _bad(f"range of {name!r}: lo = {lo!r} must be <= hi = {hi!r} ({AXES[name]})")
+            raise _bad(
+                f"range of {limits.show(name)}: lo = {limits.show(lo)} must be <= "
+                f"hi = {limits.show(hi)} ({AXES[name]})"
+            )
         bounds[name] = (lo, hi)
     rng = np.random.default_rng(int(seed))
     values: dict[str, FloatArray] = {}

@@ -79,7 +79,7 @@ def default_chunk_size(spec: SweepSpec) -> int:
 
 def _positive_int(name: str, value: Any, most: int) -> int:
     if isinstance(value, bool) or not isinstance(value, int | np.integer) or not 1 <= value <= most:
-        raise _bad(f"{name} = {value!r} must be an integer from 1 to {most}")
+        raise _bad(f"{name} = {limits.show(value)} must be an integer from 1 to {most}")
     return int(value)
 
 
@@ -136,9 +136,9 @@ def sweep(
     if backend is None:
         backend = "threads" if scheduler is None else "dask"
     if backend not in BACKENDS:
-        raise _bad(f"backend = {backend!r}: use one of {', '.join(BACKENDS)}")
+        raise _bad(f"backend = {limits.show(backend)}: use one of {', '.join(BACKENDS)}")
     if scheduler is not None and backend != "dask":
-        raise _bad(f"scheduler = {scheduler!r} needs backend 'dask', not {backend!r}")
+        raise _bad(f"scheduler = {limits.show(scheduler)} needs backend 'dask', not {limits.show(backend)}")
     if workers is not None:
         workers = _positive_int("workers", workers, 1024)
     if scheduler is not None and workers is not None:

@@ -55,7 +55,7 @@ def _check_grid(grid: Any) -> tuple[int, int]:
     try:
         nj, ne = grid
     except (TypeError, ValueError, RecursionError):
-        raise InvalidInputError(f"grid = {grid!r} must be two integers (n_J3, n_E)") from None
+        raise invalid("grid", grid, "two integers (n_J3, n_E)") from None
     for name, n in (("n_J3", nj), ("n_E", ne)):
         if isinstance(n, bool) or not isinstance(n, int | np.integer) or not 2 <= n <= MAX_GRID_POINTS:
             raise invalid(f"grid {name}", n, f"an integer in [2, {MAX_GRID_POINTS}]")
