@@ -37,8 +37,8 @@ from typing import Any
 
 import numpy as np
 
-from .._progress import tqdm
 from .. import validate as limits
+from .._progress import tqdm
 from ..model import FloatArray, Pendulum
 from .backends import Dask, Threads, connect, drive
 from .compute import (
