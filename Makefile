@@ -136,7 +136,7 @@ test: lint test-rust test-python test-web test-e2e docs test-wheel
 # Hostile input, long (docs/limits.md, "Fuzzing"): FUZZ_CASES generated inputs per entry point of the
 # Python API (hypothesis) and of the Rust core (proptest), and the whole corpus of FUZZ_FILES mutated
 # scenario files through `pendulab validate` and `pendulab run`. CI runs the same tests with 60-256
-# cases and 80 files. Prints the counts; about 30 min on 2 cores at the defaults.
+# cases and 80 files. Prints the counts; about an hour on 2 free cores at the defaults.
 FUZZ_CASES ?= 10000
 FUZZ_FILES ?= 2500
 fuzz: build

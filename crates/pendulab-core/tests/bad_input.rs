@@ -55,7 +55,9 @@ fn solver_settings_are_validated() {
         assert!(solver(ok, t_end, SaveAt::Every(1)).unwrap_err().contains("t_end"));
     }
     assert!(solver(ok, 1.0, SaveAt::Every(0)).unwrap_err().contains("save_every"));
-    assert!(solver(ok, 1e9, SaveAt::Every(1)).unwrap_err().contains("bytes"));
+    assert!(solver(ok, 1e6, SaveAt::Every(1)).unwrap_err().contains("bytes"));
+    // more than 1e10 planned steps: refused before any work, whatever is saved (the registry's limit)
+    assert!(solver(ok, 1e9, SaveAt::Every(1 << 40)).unwrap_err().contains("(t_end - t0)/dt"));
     assert!(solver(ok, 1.0, SaveAt::Times(vec![0.5, 0.2])).unwrap_err().contains("increasing"));
     assert!(solver(ok, 1.0, SaveAt::Times(vec![2.0])).unwrap_err().contains("within"));
     let dop = SolveOptions { method: Method::Dop853, rtol: -1.0, ..ok };
