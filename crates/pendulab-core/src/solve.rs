@@ -69,7 +69,7 @@ fn too_many(samples: u64, max_samples: u64) -> Result<()> {
 /// steps (10¹⁰), before any work starts.
 pub fn check_planned_steps(steps: f64) -> Result<()> {
     let limit = crate::model::registry::limit("steps");
-    if !(steps <= limit.max) {
+    if steps.is_nan() || steps > limit.max {
         return Err(Error::InvalidParameter {
             name: "(t_end - t0)/dt",
             value: steps,
