@@ -14,7 +14,6 @@ NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C sto
 from __future__ import annotations
 
 import math
-import time
 import warnings
 from typing import Any
 
