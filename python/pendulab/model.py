@@ -31,6 +31,9 @@ if TYPE_CHECKING:
 FloatArray = npt.NDArray[np.float64]
 
 
+_SPEED = {**LIMITS["velocity"], "allowed": f"{LIMITS['velocity']['allowed']} (the speed bound of a start)"}
+
+
 def _vec3(name: str, a: Any, limit: str = "position") -> FloatArray:
     """3 real numbers within the ``limit`` of :mod:`pendulab.validate` (position [m] or velocity [m/s])."""
     return array(name, a, limit, shape=(3,))
@@ -175,7 +178,12 @@ class Pendulum:
         for key, value in extra.items():
             if len(key) > 64:
                 raise invalid("parameter name", key, "a parameter of the model (pendulab.models())")
-            finite(str(key), value, f"a finite number (see pendulab.models() for the range of {key!r})")
+            own = {p["name"]: p for m in _models() if m["name"] == model for p in m["params"]}
+            finite(
+                str(key),
+                value,
+                own[key]["allowed"] if key in own else f"a finite number (pendulab.models() lists {key!r})",
+            )
         if force is not None and not callable(force):
             raise InvalidInputError(
                 f"force = {force!r} is not callable: give a function force(t, x, v) -> 3 numbers in N"
@@ -320,7 +328,7 @@ class Pendulum:
         with ``project=True`` it is moved there (x ← l x/|x|, v ← its tangential part) and
         ``State.projection`` says by how much.
         """
-        xa, va = _vec3("x", x), _vec3("v", v, "velocity")
+        xa, va = _vec3("x", x), array("v", v, _SPEED, shape=(3,))
         if flag("project", project):
             if 0.0 < np.linalg.norm(xa) < 1e-9 * self._length:  # its direction is lost to rounding
                 raise invalid(
@@ -348,7 +356,7 @@ class Pendulum:
         Radians are the default; each angle may be given in degrees instead (``theta_deg`` [°],
         ``phi_deg`` [°], ``theta_dot_deg``, ``phi_dot_deg`` [°/s]), never both ways. θ (or θ in degrees)
         is required; the others default to 0. Angles are limited to ±1e6 (rad or degrees), rates to
-        ±1e9 (rad/s or °/s), and the velocity they give to 1e8 m/s (docs/limits.md). A θ beyond 2π rad
+        ±1e9 (rad/s or °/s), and the velocity they give to 1e7 m/s (docs/limits.md). A θ beyond 2π rad
         is allowed but warned about, since it is most often meant in degrees (``theta=60`` is 60 rad,
         not 60°)."""
         values = []

@@ -132,9 +132,9 @@ def _pendulum_or_none(length: Any, g: Any, mass: Any) -> pl.Pendulum | None:
 
 PENDULUMS = st.builds(
     _pendulum_or_none,
-    st.one_of(st.floats(0.05, 20.0), st.sampled_from([1e-6, 1e6, 1e-3, 1e3])),
-    st.one_of(st.floats(-30.0, 30.0), st.sampled_from([0.0, 1e6, -1e6, 1e4])),
-    st.one_of(st.floats(0.1, 10.0), st.sampled_from([1e-9, 1e9])),
+    st.one_of(st.floats(0.05, 20.0), st.sampled_from([1e-6, 1e4, 1e-3, 1e3])),
+    st.one_of(st.floats(-30.0, 30.0), st.sampled_from([0.0, 1e4, -1e4, 1e3])),
+    st.one_of(st.floats(0.1, 10.0), st.sampled_from([1e-6, 1e6])),
 ).filter(lambda p: p is not None)
 
 

@@ -91,8 +91,8 @@ def test_pendulum_parameters_name_the_bad_value(kwargs: dict, name: str) -> None
 def test_states_from_extreme_rates_and_positions_are_refused(pendulum: pl.Pendulum) -> None:
     with pytest.raises(pl.InvalidInputError, match="theta_dot"):
         pl.Pendulum(length=2.0).state_from_angles(theta=1.0, theta_dot=1e308)
-    with pytest.raises(pl.InvalidInputError, match="theta_dot"):  # a finite rate, an infinite velocity
-        pl.Pendulum(length=1e6).state_from_angles(theta=1.0, theta_dot=1e9)
+    with pytest.raises(pl.InvalidInputError, match="speed"):  # a finite rate, a velocity beyond the bound
+        pl.Pendulum(length=1e4).state_from_angles(theta=1.0, theta_dot=1e9)
     with pytest.raises(pl.InvalidInputError, match=r"x\[0\]"):
         pendulum.state([1e16, 0.0, 0.0], [0.0, 1.0, 0.0], project=True)
     with pytest.raises(pl.InvalidInputError, match="v"):
@@ -152,7 +152,7 @@ def test_an_unprojected_run_that_leaves_ts2_stops_with_advice() -> None:
 
 
 def test_divergence_does_not_suggest_the_method_in_use() -> None:
-    p = pl.Pendulum(g=1e6, length=1e-6)
+    p = pl.Pendulum(g=1e4, length=1e-6)
     s = p.state_from_angles(theta=2.0, phi_dot=1e6)
     for method in ("rattle", "rk4"):
         try:
@@ -170,9 +170,9 @@ def test_divergence_does_not_suggest_the_method_in_use() -> None:
 
 def test_dev_zero_and_huge_files_are_refused_before_reading_them_whole(tmp_path: Path) -> None:
     start = time.perf_counter()
-    for command in ("validate", "run"):
+    for command in ("validate", "run"):  # not a regular file: refused at once, in one line
         code, _, err = _cli(command, "/dev/zero")
-        assert code == 2 and "/dev/zero" in _one_error(err) and "1 MiB" in err
+        assert code == 2 and "/dev/zero" in _one_error(err)
     big = tmp_path / "big.toml"
     big.write_text('title = "' + "x" * (1 << 20) + '"\n')
     code, _, err = _cli("validate", str(big))

@@ -309,7 +309,7 @@ def test_settle_time_over_damping_and_start() -> None:
         (lambda: pl.sweep({}, "period"), ["at least one axis"]),
         (lambda: pl.sweep({"theta0": [1.0]}, []), ["at least one quantity"]),
         (lambda: pl.sweep({"theta0": [[1.0, 2.0]]}, "period"), ["1-D array", "(1, 2)"]),
-        (lambda: pl.sweep({"length": [1.0, -2.0]}, "period"), ["'length' values[1] = -2.0", "[1e-6, 1e6] m"]),
+        (lambda: pl.sweep({"length": [1.0, -2.0]}, "period"), ["'length' values[1] = -2.0", "[1e-6, 1e4] m"]),
         (lambda: pl.sweep({"theta0": [1.0, np.nan]}, "period"), ["'theta0' values[1] = nan", "rad"]),
         (lambda: pl.sweep({"theta0": [1.0]}, "max_sway"), ["max_sway integrates: give t_end"]),
         (lambda: pl.sweep({"theta0": [1.0]}, "max_sway", t_end=1.0, dt=0.3), ["multiple of dt = 0.3"]),
@@ -329,7 +329,7 @@ def test_settle_time_over_damping_and_start() -> None:
         (lambda: pl.sweep({"damping": [0.1]}, "rotation_number"), ["undamped"]),
         (
             lambda: pl.sweep({"damping": [0.1, -1.0]}, "max_sway", t_end=1.0),
-            ["'damping' values[1] = -1.0", "[0, 1e6]"],
+            ["'damping' values[1] = -1.0", "[0, 1e4]"],
         ),
         (lambda: pl.sweep({"theta0": [1.0]}, "settle_time", t_end=1.0), ["needs settle_angle"]),
         (

@@ -201,7 +201,7 @@ class InitialSection(_Section):
         None, description="position of the bob in m, 3 numbers in [-1e9, 1e9]", **_VEC3
     )
     v: list[_Velocity] | None = Field(
-        None, description="velocity of the bob in m/s, 3 numbers in [-1e8, 1e8]", **_VEC3
+        None, description="velocity of the bob in m/s, 3 numbers in [-1e7, 1e7]", **_VEC3
     )
     project: bool | None = Field(
         None, description="true or false: move a Cartesian start onto TS² (default false: refuse it)"
