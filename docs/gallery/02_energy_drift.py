@@ -6,6 +6,8 @@ with projection onto TS² stays near its tolerance, its energy error growing slo
 (symplectic, T-8.1) and its eighth-order composition keep the energy error bounded, without drift.
 """
 
+import warnings
+
 import numpy as np
 import pendulab as pl
 from pendulab.plot import new_figure, save_figure
@@ -16,13 +18,16 @@ s0 = p.state_from_angles(theta=np.radians(170), phi=0.0, theta_dot=0.0, phi_dot=
 fig = new_figure(figsize=(9.0, 4.5), layout="constrained")
 ax = fig.add_subplot()
 runs = {
-    "rk4, dt = 1 ms (no projection)": dict(method="rk4", dt=1e-3),
+    # rk4 leaves TS² (by 1 % of l at t = 8 s here): drift="warn" keeps the run to show it
+    "rk4, dt = 1 ms (no projection)": dict(method="rk4", dt=1e-3, drift="warn"),
     "rattle, dt = 1 ms": dict(method="rattle", dt=1e-3),
     "rattle8, dt = 10 ms": dict(method="rattle8", dt=1e-2),
     "dop853, rtol = 1e-10": dict(method="dop853", rtol=1e-10, atol=1e-12),
 }
 for label, options in runs.items():
-    tr = pl.simulate(p, s0, t_end=20.0, save_at=np.linspace(0.0, 20.0, 401), progress=False, **options)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", RuntimeWarning)
+        tr = pl.simulate(p, s0, t_end=20.0, save_at=np.linspace(0.0, 20.0, 401), progress=False, **options)
     drift = np.abs(tr.energy - tr.energy[0]) / (p.mass * p.g * p.length)
     ax.semilogy(tr.t, np.maximum(drift, 1e-17), label=label)
 ax.set_xlabel("t [s]")
