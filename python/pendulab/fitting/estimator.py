@@ -292,14 +292,11 @@ def fit(
         # several data kinds with unknown noise: weigh each by its own residual scatter and refit
         unknown = [k for k, s in obs.sigma.items() if s is None]
         if len(obs.values) > 1 and unknown:
-            r = problem.residuals(problem.with_free(best["res"].x), sig)
+            predicted = problem.predictions(problem.with_free(best["res"].x))
             for kind in unknown:
-                part = residual(
-                    kind, obs.values[kind], problem.predictions(problem.with_free(best["res"].x))[kind]
-                )
+                part = residual(kind, obs.values[kind], predicted[kind])
                 sig[kind] = max(float(np.sqrt(np.mean(part**2))), 1e-300)
             best["cost"], best["res"] = math.inf, run(best["res"].x, sig)
-            del r
     except (KeyboardInterrupt, _TimeUp) as e:
         interrupted = True
         cause = "Ctrl-C" if isinstance(e, KeyboardInterrupt) else f"the time limit of {time_limit:g} s"
