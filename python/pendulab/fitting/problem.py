@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -66,7 +66,6 @@ class Problem:
     values: dict[str, float]
     free: list[str]
     obs: Observations
-    units: dict[str, str] = field(default_factory=dict)
     evaluations: int = 0
 
     @property
@@ -77,7 +76,7 @@ class Problem:
         """The same problem on the first ``n`` samples only (same t₀)."""
         obs = self.obs
         part = replace(obs, t=obs.t[:n], values={k: v[:n] for k, v in obs.values.items()})
-        return Problem(self.model, self.values, self.free, part, self.units)
+        return Problem(self.model, self.values, self.free, part)
 
     def with_free(self, u: Sequence[float]) -> dict[str, float]:
         """All values, the free ones taken from ``u`` (same order as ``free``)."""
