@@ -73,7 +73,7 @@ def cases() -> list[Case]:
             ["g"],
             lambda rng, s: {
                 "t": t1,
-                "angles": (noisy(th1, rng, 2e-3 * s), ph1),
+                "angles": (noisy(th1, rng, 2e-3 * s), noisy(ph1, rng, 2e-3 * s)),  # σ is for both
                 "sigma": 2e-3 if s else None,
             },
         ),

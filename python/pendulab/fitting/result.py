@@ -29,7 +29,9 @@ class FitResult:
     parameter (stderr is inf for one the data do not determine: see ``determined`` and
     ``combinations``); ``fixed``: the values held fixed; ``covariance``, ``correlation``: (k, k) in the
     order of ``names``; ``residuals``: kind → measured − fitted (N, columns) in the data's unit;
-    ``chi2`` = Σ r², ``dof`` = values − unknowns, ``sigma``: the noise per kind (given or estimated)."""
+    ``chi2`` = Σ r², ``dof`` = values − unknowns, ``sigma``: the noise per kind (given or estimated);
+    ``mirror_blind``: the data cannot tell the motion from its mirror image y → −y (positions seen as
+    x, z; a phone's frame-free scalars), so the sign of φ₀ and φ̇₀ is a choice."""
 
     names: list[str]
     params: dict[str, float]
@@ -56,6 +58,7 @@ class FitResult:
     starts: int
     interrupted: bool = False
     dropped: int = 0
+    mirror_blind: bool = False
     _problem: Any = field(default=None, repr=False)
 
     @classmethod
@@ -75,6 +78,7 @@ class FitResult:
         starts: int,
         interrupted: bool,
         kinds: dict[str, str],
+        mirror_blind: bool = False,
     ) -> FitResult:
         names = list(problem.free)
         cov = ident.covariance
@@ -112,6 +116,7 @@ class FitResult:
             starts=starts,
             interrupted=interrupted,
             dropped=problem.obs.dropped,
+            mirror_blind=mirror_blind,
             _problem=problem,
         )
 
@@ -154,6 +159,11 @@ class FitResult:
             lines.append(f"  {name.ljust(width)} = {value:>18} {err:<28} {unit}")
         for label, (value, err) in self.combinations.items():
             lines.append(f"  determined instead: {label} = {value:.10g} ± {number(err, 3)}")
+        if self.mirror_blind and {"phi0", "phi_dot0"} & set(self.names):
+            lines.append(
+                "  the data cannot tell this motion from its mirror image y -> -y "
+                "(phi0, phi_dot0 -> -phi0, -phi_dot0): the sign of the sideways motion is a choice"
+            )
         noise = ", ".join(f"{k}: {number(s, 3)} {KINDS[k]}" for k, s in self.sigma.items())
         if self.sigma_estimated:
             noise += " (estimated from the residual, so chi2/dof = 1 by construction)"

@@ -9,7 +9,11 @@
 - from frame-free data only (a phone): for a planar swing of amplitude A the rod pulls T/m = g cos A at
   the turning points and g(3 − 2 cos A) at the bottom (energy conservation with T-2.3), so
   g = (f_max + 2 f_min)/3 and cos A = f_min/g; |ω|max = √(2(g/l)(1 − cos A)) gives l; the phase of
-  the swing at t₀ is unknown, so several starts (:func:`phase_starts`) are tried.
+  the swing at t₀ is unknown, so several starts (:func:`phase_starts`) are tried;
+- data blind to the sign of the sideways motion (x, z seen along y; a phone's frame-free scalars) are
+  unchanged by the mirror y → −y, which maps (φ₀, φ̇₀) to (−φ₀, −φ̇₀): a planar start φ̇₀ = 0 is then a
+  stationary point of the misfit that a search never leaves, so starts with a sideways rate are added
+  (:func:`sideways_starts`).
 Units: SI (m, s, rad, m/s²).
 """
 
@@ -207,3 +211,25 @@ def phase_starts(values: Mapping[str, float], free: set[str], n: int = 8) -> lis
             s["phi_dot0"] = 0.0
         starts.append(s)
     return starts
+
+
+#: Sideways rates of the extra starts, as fractions of the small-swing frequency √(g/l).
+SIDEWAYS = (0.1, 0.5)
+
+
+def sideways_starts(starts: list[dict[str, float]], free: set[str]) -> list[dict[str, float]]:
+    """The starts plus, for each planar one (φ̇₀ = 0), copies with φ̇₀ = κ·√(g/l)/max(sin θ₀, 0.1) for
+    κ in :data:`SIDEWAYS` — for data that cannot tell a swing from its mirror image (see the module
+    doc); one sign suffices, the mirror image being an equally good fit."""
+    if "phi_dot0" not in free:
+        return starts
+    out = list(starts)
+    for s in starts:
+        if s["phi_dot0"] != 0.0:
+            continue
+        omega = math.sqrt(abs(s["g"]) / s["length"])
+        for kappa in SIDEWAYS:
+            extra = dict(s)
+            extra["phi_dot0"] = kappa * omega / max(math.sin(s["theta0"]), 0.1)
+            out.append(extra)
+    return out

@@ -1,10 +1,13 @@
 """Measured data from a file: CSV (comma, semicolon, tab or whitespace separated; ``#`` comments; an
 optional header row naming the columns) as exported by video-analysis tools and phone sensor apps.
 
-Column names map to the data kinds of :func:`pendulab.fit` (all in SI units):
+Column names map to the data kinds of :func:`pendulab.fit` (SI units unless a header cell names its
+unit, ``x (cm)``, ``t [ms]``, which is converted: columns.py):
 ``t`` [s]; ``x``, ``y``, ``z`` [m] (positions; ``x``, ``z`` alone: a camera looking along y);
 ``theta``, ``phi`` [rad] (angles); ``angle`` [rad] (planar_angle); ``specific_force`` or ``f``
-[m/s²]; ``angular_speed`` or ``w`` [rad/s]. Other columns are ignored; ``-`` skips one.
+[m/s²]; ``angular_speed`` or ``w`` [rad/s]; accelerometer components ``ax, ay, az`` (also
+``Acceleration x``, Physics Toolbox's ``gFx`` in g₀) → specific_force = |a|, gyroscope components
+``wx, wy, wz`` (also ``Gyroscope x``) → angular_speed = |ω|. Other columns are ignored; ``-`` skips one.
 """
 
 from __future__ import annotations
@@ -18,22 +21,25 @@ from typing import Any
 import numpy as np
 
 from .._core import InvalidInputError
+from .columns import QUANTITY, column
 
 MAX_BYTES = 256 * 2**20
 """Largest data file read [bytes] (about 5 million rows of 5 columns)."""
 
-ALIASES = {"f": "specific_force", "w": "angular_speed", "time": "t", "t_s": "t"}
-KNOWN = {"t", "x", "y", "z", "theta", "phi", "angle", "specific_force", "angular_speed", "-"}
+KNOWN = set(QUANTITY) | {"-"}
+VECTORS = {"specific_force": ("ax", "ay", "az"), "angular_speed": ("wx", "wy", "wz")}
 
 
-def _columns(names: list[str], where: str) -> list[str]:
-    out = []
-    for raw in names:
-        name = ALIASES.get(raw.strip().lower(), raw.strip().lower())
-        out.append(name)
+def _columns(names: list[str], where: str) -> tuple[list[str], list[float]]:
+    """The columns' data kinds and their factors to SI (columns.py)."""
+    pairs = [column(raw, where) for raw in names]
+    out = [n for n, _ in pairs]
     if "t" not in out:
         raise InvalidInputError(f"{where}: no time column 't' among {names}; name the columns with --columns")
-    return out
+    repeated = sorted({n for n in out if n != "-" and n in KNOWN and out.count(n) > 1})
+    if repeated:
+        raise InvalidInputError(f"{where}: column(s) {repeated} appear more than once among {names}")
+    return out, [f for _, f in pairs]
 
 
 def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -> dict[str, Any]:
@@ -80,7 +86,7 @@ def parse_table(text: str, columns: list[str] | None = None, where: str = "<data
         raise InvalidInputError(
             f"{where}: the file has no header row: name its columns (e.g. --columns t,x,y,z)"
         )
-    names = _columns(list(names), where)
+    names, factors = _columns(list(names), where)
     unknown = [n for n in names if n not in KNOWN]
     if unknown and columns is not None:
         raise InvalidInputError(f"unknown column name(s) {unknown}; use {', '.join(sorted(KNOWN))}")
@@ -93,13 +99,25 @@ def parse_table(text: str, columns: list[str] | None = None, where: str = "<data
             )
         for j in range(width):
             cell = r[j].strip()
+            if dialect.delimiter != "," and "," in cell and "." not in cell:
+                cell = cell.replace(",", ".")  # a decimal comma (a European locale's export)
             try:
                 data[i, j] = float(cell) if cell not in ("", "nan", "NaN", "NA") else np.nan
             except ValueError as e:
                 raise InvalidInputError(
                     f"{where}: row {i + 1}, column {names[j]!r}: {cell[:40]!r} is not a number"
                 ) from e
-    col = {n: data[:, j] for j, n in enumerate(names) if n in KNOWN and n != "-"}
+    col = {n: data[:, j] * factors[j] for j, n in enumerate(names) if n in KNOWN and n != "-"}
+    for kind, parts in VECTORS.items():  # a sensor's components → the frame-free magnitude
+        have = [c for c in parts if c in col]
+        if have and kind in col:  # the app wrote the magnitude too (Physics Toolbox's TgF): use it
+            for c in have:
+                col.pop(c)
+            continue
+        if have and len(have) < 3:
+            raise InvalidInputError(f"{where}: {kind} needs all three components {parts}; found {have}")
+        if have:
+            col[kind] = np.sqrt(sum(col.pop(c) ** 2 for c in parts))
     out: dict[str, Any] = {"t": col["t"]}
     if {"x", "y", "z"} <= col.keys():
         out["positions"] = np.column_stack([col["x"], col["y"], col["z"]])

@@ -1,0 +1,130 @@
+"""Column names and units of measured-data files, as video-analysis tools and phone sensor apps write
+them: a header cell is a name and an optional unit, ``x (cm)``, ``Time [s]``,
+``Acceleration x (m/s^2)``, ``Gyroscope z (rad/s)``.
+
+Names map to the data kinds of :func:`pendulab.fit` (``t``, ``x``, ``y``, ``z``, ``theta``, ``phi``,
+``angle``, ``specific_force``, ``angular_speed``) or to vector components (``ax``, ``ay``, ``az``: the
+accelerometer, which measures the specific force a − g⃗ [m/s²]; ``wx``, ``wy``, ``wz``: the gyroscope
+[rad/s]) whose magnitudes the table reader forms. A unit is converted to SI (cm, mm → m; ms → s;
+deg → rad; deg/s → rad/s; g₀ = 9.80665 m/s² → m/s²); a unit that does not fit the column's quantity,
+pixels, or a phone's "linear acceleration" (gravity removed: not the specific force) is an error
+naming the column and what is allowed.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+
+from .._core import InvalidInputError
+
+#: The physical quantity of each column name.
+QUANTITY = {
+    "t": "time",
+    "x": "length",
+    "y": "length",
+    "z": "length",
+    "theta": "angle",
+    "phi": "angle",
+    "angle": "angle",
+    "specific_force": "acceleration",
+    "ax": "acceleration",
+    "ay": "acceleration",
+    "az": "acceleration",
+    "angular_speed": "angular rate",
+    "wx": "angular rate",
+    "wy": "angular rate",
+    "wz": "angular rate",
+}
+
+#: Units accepted per quantity and their factor to SI (standard gravity g₀ = 9.80665 m/s², CGPM 1901).
+UNITS: dict[str, dict[str, float]] = {
+    "time": {"s": 1.0, "sec": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "min": 60.0},
+    "length": {"m": 1.0, "cm": 1e-2, "mm": 1e-3, "km": 1e3},
+    "angle": {"rad": 1.0, "deg": math.pi / 180.0, "°": math.pi / 180.0, "degree": math.pi / 180.0},
+    "acceleration": {"m/s^2": 1.0, "m/s²": 1.0, "m/s2": 1.0, "ms^-2": 1.0, "m s^-2": 1.0, "g": 9.80665},
+    "angular rate": {
+        "rad/s": 1.0,
+        "1/s": 1.0,
+        "deg/s": math.pi / 180.0,
+        "°/s": math.pi / 180.0,
+        "dps": math.pi / 180.0,
+    },
+}
+
+ALIASES = {
+    "time": "t",
+    "t_s": "t",
+    "timestamp": "t",
+    "f": "specific_force",
+    "absolute acceleration": "specific_force",
+    "w": "angular_speed",
+    "omega": "angular_speed",
+    "planar_angle": "angle",
+    "-": "-",
+}
+
+_COMPONENT = re.compile(
+    r"^(?:(?P<acc>acceleration|accel|acc|a)|(?P<gf>gf)|(?P<gyro>gyroscope|gyro|angular velocity|omega|w))"
+    r"[ _]?(?P<axis>[xyz])$"
+)
+_UNIT = re.compile(r"^(?P<name>.*?)\s*[\(\[](?P<unit>[^\)\]]*)[\)\]]\s*$")
+
+
+def split_unit(cell: str) -> tuple[str, str | None]:
+    """``'x (cm)'`` → (``'x'``, ``'cm'``); ``'t'`` → (``'t'``, None)."""
+    m = _UNIT.match(cell.strip())
+    if m is None:
+        return cell.strip(), None
+    return m["name"].strip(), m["unit"].strip()
+
+
+def column(cell: str, where: str) -> tuple[str, float]:
+    """The data kind or component a header cell names and the factor to SI of its values: ``'x (cm)'``
+    → (``'x'``, 0.01). Physics Toolbox's g-force columns ``gFx``, ``gFy``, ``gFz`` (the specific force
+    in units of g₀) are accelerometer components in g unless a unit says otherwise."""
+    raw, unit = split_unit(cell)
+    name = column_name(raw, where)
+    implied = "g" if re.fullmatch(r"gf[ _]?[xyz]|tgf", " ".join(raw.lower().split())) else None
+    if name == "tgf":
+        name = "specific_force"
+    return name, to_si(name, unit if unit is not None else implied, where)
+
+
+def column_name(raw: str, where: str) -> str:
+    """The data kind or component a header cell names (unknown names come back lower-cased, for the
+    caller to ignore or refuse)."""
+    text = " ".join(raw.strip().lower().replace("_", " ").split())
+    if "linear acceleration" in text or "linear acc" in text:
+        raise InvalidInputError(
+            f"{where}: column {raw!r} is a linear acceleration (the phone removed gravity); the fit needs "
+            "the accelerometer with gravity, |a - g| (e.g. phyphox 'Acceleration with g')"
+        )
+    compact = text.replace(" ", "_")
+    if compact in QUANTITY:
+        return compact
+    if text in ALIASES or compact in ALIASES:
+        return ALIASES.get(text, ALIASES.get(compact, text))
+    m = _COMPONENT.match(text)
+    if m is not None:
+        return ("w" if m["gyro"] else "a") + m["axis"]
+    return text
+
+
+def to_si(name: str, unit: str | None, where: str) -> float:
+    """The factor that takes the column ``name`` in ``unit`` to SI (1 when no unit is given)."""
+    if unit is None or name not in QUANTITY:
+        return 1.0
+    u = unit.strip().lower().replace(" ", "")
+    if u in ("px", "pixel", "pixels", "pix"):
+        raise InvalidInputError(
+            f"{where}: column {name!r} is in pixels; scale it to metres first (a ruler of known length "
+            "in the video gives metres per pixel)"
+        )
+    quantity = QUANTITY[name]
+    table = UNITS[quantity]
+    if u in table:
+        return table[u]
+    raise InvalidInputError(
+        f"{where}: column {name!r} has the unit {unit!r}; a {quantity} is given in one of {', '.join(table)}"
+    )
