@@ -73,7 +73,11 @@ def cases() -> list[Case]:
             ["g"],
             lambda rng, s: {
                 "t": t1,
-                "angles": (noisy(th1, rng, 2e-3 * s), noisy(ph1, rng, 2e-3 * s)),  # σ is for both
+                # σ is the noise of θ and of the arc sin θ·φ (isotropic on the unit sphere, docs/fit.md)
+                "angles": (
+                    noisy(th1, rng, 2e-3 * s),
+                    ph1 + 2e-3 * s * rng.standard_normal(len(ph1)) / np.sin(th1),
+                ),
                 "sigma": 2e-3 if s else None,
             },
         ),

@@ -75,3 +75,14 @@ def test_the_phone_example_read_from_components_fits_as_from_magnitudes(tmp_path
 def test_bad_headers_are_clear_errors(text: str, said: str) -> None:
     with pytest.raises(pl.InvalidInputError, match=said):
         parse_table(text)
+
+
+def test_upside_down_video_is_an_error_naming_the_vertical_axis() -> None:
+    """Image rows grow downward: x, z data with z pointing down never come below the pivot, which a
+    pendulum under gravity (lower turning height u₁ < 0, start.py) cannot do."""
+    p = pl.Pendulum(length=0.5, g=9.81)
+    t = np.arange(0.0, 4.0, 1 / 30)
+    x, _ = pl.exact(p, p.state_from_angles(0.5)).state(t)
+    seen = np.column_stack([x[:, 0] + 0.3, 1.2 - x[:, 2]])
+    with pytest.raises(pl.InvalidInputError, match="vertical axis point down"):
+        pl.fit(t, positions=seen, pendulum=pl.Pendulum(model="damped"), fit="length,g,damping,pivot")

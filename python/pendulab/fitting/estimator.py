@@ -167,8 +167,9 @@ def fit(
     or single ``theta0``, ``phi0``, ``theta_dot0``, ``phi_dot0``, ``pivot_x/y/z``, ``t_offset``); the
     start at the first time is fitted too unless ``state0`` is given. ``pivot`` [m]: the pivot in the
     data's frame when known (default the origin). ``sigma``: the noise of one value (a number, or
-    kind → number; None: estimated from the residual). ``loss``: SciPy's "linear", "soft_l1",
-    "huber", "cauchy" or "arctan" (robust against outliers; scale 1 σ). At most ``max_evaluations``
+    kind → number; for angles that of θ and of the arc sin θ·φ; None: estimated from the residual).
+    ``loss``: SciPy's "linear", "soft_l1", "huber", "cauchy" or "arctan" (robust against outliers;
+    scale 1 σ). At most ``max_evaluations``
     runs of the model per start. Returns a :class:`FitResult`; Ctrl-C returns the best values so far
     (``converged`` False), and so does reaching ``time_limit`` [s] of search (default: none; the
     error analysis after it adds a few model runs per unknown). Raises

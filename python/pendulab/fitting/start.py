@@ -119,6 +119,20 @@ def check_length_hint(radius: float, length: float, free: bool) -> None:
     warnings.warn(said + " The fit starts from the data's distance instead.", UserWarning, stacklevel=4)
 
 
+def check_upright(rel: FloatArray, g: float) -> None:
+    """Positions that never come below the pivot (for g > 0; above it for g < 0) are upside down: a
+    spherical pendulum's lower turning height u₁ = z₁/l is always negative, since the roots of the
+    cubic T-4.1 have pairwise products summing to −1 while u₃ ≥ 1 and u₂ ≥ u₁. The usual cause is
+    image coordinates, whose vertical axis points down."""
+    if g != 0.0 and len(rel) >= 8 and bool(np.all(np.sign(g) * rel[:, 2] > 0.0)):
+        side = "above" if g > 0.0 else "below"
+        raise InvalidInputError(
+            f"every position lies {side} the pivot, where a pendulum with g = {g:g} m/s² never stays: "
+            "does the data's vertical axis point down (image rows)? z points up here: negate that column "
+            "(or, if gravity really points the other way, give a pendulum with the opposite g)"
+        )
+
+
 def starting_values(obs: Observations, values: Mapping[str, float], free: set[str]) -> dict[str, Any]:
     """Values for the free parameters read off the data (the given ones stay where they are); the
     result has the same keys as ``values``."""
@@ -136,6 +150,7 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
                 out[name] = float(pivot[k])
     radius = float(np.median(np.linalg.norm(rel, axis=1)))
     if "positions" in obs.values:
+        check_upright(rel, values["g"])
         check_length_hint(radius, values["length"], "length" in free)
         if "length" in free:
             out["length"] = radius
