@@ -117,6 +117,44 @@ def test_error_bars_are_honest() -> None:
     assert 16 <= inside <= 20
 
 
+def test_a_long_noisy_crane_log_whose_late_swings_sink_into_the_noise() -> None:
+    """A 30 m rope logged at 5 Hz for 300 s: the sway decays to the noise level, where plain zero
+    crossings would count noise (period halved, l a quarter); hysteresis crossings (start.py) do not."""
+    p = pl.Pendulum(length=30.0, g=9.81, damping=0.01)
+    t = np.arange(0.0, 300.0, 0.2)
+    tr = pl.simulate(p, p.state_from_angles(0.05), 300.0, method="dop853", rtol=1e-12, atol=1e-15, save_at=t)
+    angle = np.arctan2(tr.x[:, 0], -tr.x[:, 2]) + 3e-3 * np.random.default_rng(5).standard_normal(len(t))
+    res = pl.fit(
+        t, planar_angle=angle, pendulum=pl.Pendulum(model="damped"), fit="length,damping", sigma=3e-3
+    )
+    assert abs(res.params["length"] - 30.0) < 3.0 * res.stderr["length"] < 0.1
+    assert abs(res.params["damping"] - 0.01) < 3.0 * res.stderr["damping"]
+
+
+def test_a_pendulum_whirling_over_the_top() -> None:
+    """Rotations over the top: the period's small-swing formula gives a g far off, energy conservation
+    (start.py, energy_gravity) the right one; the fit must find l and g, not a nearby local minimum."""
+    p = pl.Pendulum(length=0.8, g=9.81)
+    t = np.arange(0.0, 20.0, 0.02)
+    x, _ = pl.exact(p, p.state_from_angles(1.0, 0.0, 4.0, 1.0)).state(t)
+    noisy = x + 1e-3 * np.random.default_rng(2).standard_normal(x.shape)
+    res = pl.fit(t + 1000.0, positions=noisy, fit="length,g", sigma=1e-3)
+    assert abs(res.params["g"] - 9.81) < 3.0 * res.stderr["g"] < 0.01
+    assert abs(res.params["length"] - 0.8) < 3.0 * res.stderr["length"]
+    assert 0.8 < res.reduced_chi2 < 1.2
+
+
+def test_a_model_that_misses_the_data_is_warned_about() -> None:
+    """A damped swing fitted by the ideal pendulum with σ given: χ²/dof far above 1 is said."""
+    p = pl.Pendulum(length=1.0, g=9.81, damping=0.2)
+    t = np.linspace(0.0, 10.0, 300)
+    tr = pl.simulate(p, p.state_from_angles(0.3), 10.0, method="dop853", rtol=1e-12, atol=1e-14, save_at=t)
+    angle = np.arctan2(tr.x[:, 0], -tr.x[:, 2])
+    with pytest.warns(UserWarning, match="misses the data"):
+        res = pl.fit(t, planar_angle=angle, fit="g", sigma=1e-3)
+    assert res.reduced_chi2 > 2.0
+
+
 def test_bad_data_get_clear_errors(swing: tuple) -> None:
     _, _s, t, x = swing
     with pytest.raises(pl.InvalidInputError, match=r"positions has 5 rows but t has 600"):

@@ -36,12 +36,14 @@ from .problem import (
     scale_of,
 )
 from .result import FitResult
-from .start import phase_starts, sideways_starts, starting_values
+from .start import gravity_starts, phase_starts, sideways_starts, starting_values
 
 POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness"}
 MAX_EVALUATIONS = 20_000
 ANCHOR = 0.1
 POLISH_STEPS = 40
+#: χ²/dof above this, with σ given, is warned about (a fit explaining the data to their noise gives ≈ 1).
+MISFIT = 2.0
 
 
 def _angles_of(pendulum: Pendulum, state: State) -> dict[str, float]:
@@ -218,7 +220,7 @@ def fit(
         raise InvalidInputError(f"{len(obs)} samples cannot determine {len(free)} unknowns: give more data")
     start = starting_values(obs, values, set(free))
     frame_free = not ({"positions", "angles", "planar_angle"} & set(obs.values))
-    starts = phase_starts(start, set(free)) if frame_free else [start]
+    starts = phase_starts(start, set(free)) if frame_free else gravity_starts(obs, start, set(free))
     mirror_blind = frame_free or obs.columns.get("positions") == 2  # blind to y → −y (start.py)
     if mirror_blind:
         starts = sideways_starts(starts, set(free))
@@ -348,6 +350,14 @@ def fit(
             f"the fitted g = {g_fit:.4g} m/s² is far from any planet's (Earth 9.81): "
             "are the data in SI units "
             "(positions in m, not mm or pixels; times in s; angles in rad)?",
+            UserWarning,
+            stacklevel=2,
+        )
+    if sigma_known and chi2 / dof > MISFIT:
+        warnings.warn(
+            f"chi2/dof = {chi2 / dof:.3g}: the fitted motion misses the data by {math.sqrt(chi2 / dof):.3g}× "
+            "their noise — a model that lacks something (damping, drag, a moving pivot), a sigma too "
+            "small, or a local minimum (try other starting values in pendulum=); see res.plot()",
             UserWarning,
             stacklevel=2,
         )

@@ -4,6 +4,9 @@
 - the swing's period T from the crossings of its horizontal coordinate (the principal axis of the
   horizontal motion), its amplitude A, and ω₀ = (2π/T)/(1 − A²/16) (the first amplitude correction
   of the period, T-4.x's small-swing limit); then g = ω₀² l or l = g/ω₀², whichever is free;
+- g (or l) also from energy conservation, which holds for whirls over the top where the period's
+  formula does not (:func:`energy_gravity`); when the two disagree by more than 10 %, both are
+  tried (:func:`gravity_starts`);
 - linear damping c from the decay of the swing's peaks, A(t) ∝ e^{−ct/2} (T-7.1);
 - the start (θ₀, φ₀, θ̇₀, φ̇₀) from a quadratic through the first samples;
 - from frame-free data only (a phone): for a planar swing of amplitude A the rod pulls T/m = g cos A at
@@ -47,15 +50,66 @@ def sphere_fit(p: FloatArray) -> tuple[FloatArray, float] | None:
     return centre, math.sqrt(r2)
 
 
+def noise_level(t: FloatArray, s: FloatArray) -> float:
+    """The noise of a smooth signal sampled densely: from the median absolute second difference
+    (a white noise σ gives second differences of standard deviation σ√6; 0.6745 turns a median
+    absolute deviation into a standard deviation)."""
+    if len(s) < 5:
+        return 0.0
+    d2 = s[2:] - 2.0 * s[1:-1] + s[:-2]
+    return float(np.median(np.abs(d2)) / (0.6745 * math.sqrt(6.0)))
+
+
 def crossings_period(t: FloatArray, s: FloatArray) -> float | None:
-    """The period [s] of an oscillating signal from its crossings of its mean (linear interpolation):
-    twice the mean spacing of the crossings; None with fewer than 3 crossings."""
+    """The period [s] of an oscillating signal from its crossings of its mean: a crossing counts only
+    once the signal has gone from below −h to above +h or back (hysteresis, h = 3× the noise, at most
+    half the signal's spread), so that noise near zero adds none; its time is where the signal last
+    crossed the mean (linear interpolation). The half-period is the median spacing of the crossings,
+    refined over the whole record. None with fewer than 3 crossings."""
     y = s - np.mean(s)
-    k = np.flatnonzero(np.signbit(y[:-1]) != np.signbit(y[1:]))
-    if len(k) < 3:
+    spread = float(np.percentile(np.abs(y), 90)) if len(y) else 0.0
+    h = min(3.0 * noise_level(t, y), 0.5 * spread)
+    times: list[float] = []
+    side = 0  # −1 below −h, +1 above +h, 0 not yet known
+    last = 0  # the index before the latest crossing of the mean
+    for i in range(1, len(y)):
+        if np.signbit(y[i - 1]) != np.signbit(y[i]):
+            last = i - 1
+        now = 1 if y[i] > h else -1 if y[i] < -h else 0
+        if now != 0 and now != side:
+            if side != 0:
+                k = last
+                times.append(float(t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k])))
+            side = now
+    if len(times) < 3:
         return None
-    tc = t[k] - y[k] * (t[k + 1] - t[k]) / (y[k + 1] - y[k])
-    return float(2.0 * (tc[-1] - tc[0]) / (len(tc) - 1))
+    tc = np.asarray(times)
+    half = float(np.median(np.diff(tc)))
+    if not half > 0.0:
+        return None
+    count = max(1, round((tc[-1] - tc[0]) / half))
+    return float(2.0 * (tc[-1] - tc[0]) / count)
+
+
+def energy_gravity(t: FloatArray, rel: FloatArray) -> float | None:
+    """g [m/s²] from energy conservation, ½|v|² + g z = E(t) ≈ E₀ + E₁t (T-2.3; the slow trend takes
+    up a weak damping): the least-squares slope of ½|v|² against −z with velocities by central
+    differences (not across gaps). It holds for any motion — swings, whirls over the top, conical
+    ones excepted (z constant) — where the period's formula holds for swings only. None when z does
+    not vary enough."""
+    if len(t) < 16:
+        return None
+    dt = t[2:] - t[:-2]
+    ok = dt <= 3.0 * np.median(dt)
+    v = (rel[2:] - rel[:-2]) / dt[:, None]
+    kinetic = 0.5 * np.einsum("ij,ij->i", v, v)[ok]
+    z = rel[1:-1, 2][ok]
+    tt = t[1:-1][ok]
+    if len(z) < 16 or np.ptp(z) <= 0.0:
+        return None
+    a = np.column_stack([-z, np.ones_like(z), tt - tt[0]])
+    (g, *_), *_ = np.linalg.lstsq(a, kinetic, rcond=None)
+    return float(g) if math.isfinite(g) and g > 0.0 else None
 
 
 def decay_rate(t: FloatArray, amplitude: FloatArray) -> float:
@@ -226,6 +280,29 @@ def phase_starts(values: Mapping[str, float], free: set[str], n: int = 8) -> lis
             s["phi_dot0"] = 0.0
         starts.append(s)
     return starts
+
+
+def gravity_starts(obs: Observations, start: dict[str, Any], free: set[str]) -> list[dict[str, Any]]:
+    """[start], plus a start with g (or, g being fixed, l) from energy conservation when that differs
+    from the period's by more than 10 % — for 3-D positions and angles, whose speeds are complete
+    (a camera's x, z miss ẏ)."""
+    has_speed = "angles" in obs.values or (
+        "positions" in obs.values and obs.values["positions"].shape[1] == 3
+    )
+    if not has_speed or not ({"g", "length"} & free):
+        return [start]
+    rel = _relative_positions(obs, start, free)
+    g_energy = energy_gravity(obs.t, rel) if rel is not None else None
+    if g_energy is None or abs(g_energy / start["g"] - 1.0) <= 0.1:
+        return [start]
+    other = dict(start)
+    if "g" in free:
+        other["g"] = g_energy
+    elif "positions" not in obs.values:  # angles with g known: the slope is g·l_assumed/l
+        other["length"] = start["length"] * start["g"] / g_energy
+    else:
+        return [start]
+    return [start, other]
 
 
 #: Sideways rates of the extra starts, as fractions of the small-swing frequency √(g/l).
