@@ -9,6 +9,10 @@ those have the estimate within a factor 10 (and 2) of the truth, and ``accuracy=
 case (to t = min(100 s, t-max)).
 
 Run: ``.venv/bin/python bench/accuracy_validation.py --t-max 1000`` (minutes; 10⁴ s: much longer).
+
+``--cost``: instead, the cost of ``error_estimate=True`` against the plain run, per method on a few
+motions (wall time, best of 3, and right-hand side evaluations, the estimate's runs included), and
+which companion the fixed-step methods used (docs/integrators.md, "Error estimates").
 """
 
 from __future__ import annotations
@@ -16,19 +20,112 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
+import time
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pendulab as pl
+from pendulab.accuracy import estimate
 
 REPO = Path(__file__).resolve().parents[1]
 PLOT = REPO / "docs" / "img" / "error_estimates.png"
 
 
+#: Motions for --cost: (name, model keywords, start angles [rad, rad/s], t_end [s]).
+COST_CASES = [
+    ("rosette 60°", {}, {"theta": math.radians(60), "phi_dot": 2.0}, 500.0),
+    ("near the top 170°", {}, {"theta": math.radians(170), "phi_dot": 0.3}, 500.0),
+    ("over the top", {}, {"theta": math.radians(90), "theta_dot": 8.0}, 500.0),
+    (
+        "damped, driven",
+        {"model": "damped", "damping": 0.1, "forcing_amplitude": 1.0, "forcing_omega": 2.0},
+        {"theta": 1.0, "phi_dot": 1.0},
+        500.0,
+    ),
+]
+#: Step per fixed-step method in units of 1/ω (its error well above round-off, the method stable).
+COST_STEPS = {
+    "rk4": 0.005,
+    "rattle": 0.002,
+    "rattle4": 0.01,
+    "rattle6": 0.02,
+    "rattle8": 0.04,
+    "rkmk4": 0.005,
+    "rk4_angles": 0.005,
+}
+
+
+def _best_time(*args: Any, repeats: int = 3, **kwargs: Any) -> tuple[float, Any]:
+    """The best wall time and CPU time [s] of ``pl.simulate(*args, **kwargs)`` over ``repeats`` runs
+    (CPU time: the figure that a loaded machine disturbs least), and its result."""
+    wall, cpu, out = math.inf, math.inf, None
+    for _ in range(repeats):
+        t, c = time.perf_counter(), time.process_time()
+        out = pl.simulate(*args, **kwargs)
+        wall, cpu = min(wall, time.perf_counter() - t), min(cpu, time.process_time() - c)
+    return (wall, cpu), out
+
+
+def cost() -> None:
+    """Prints the cost ratios of error_estimate=True against the plain run (a markdown table); the
+    estimate / true error range over the samples whose true error is above 10 % of its largest."""
+    print(f"load average before: {os.getloadavg()[0]:.2f}")
+    print(
+        "| motion | method | setting | companion | rhs evaluations | CPU time: estimate | CPU time: all "
+        "| wall time: all | estimate / true error | largest: estimate / true |"
+    )
+    print("|---|---|---|---|---:|---:|---:|---:|---:|---:|")
+    for name, model, angles, t_end in COST_CASES:
+        p = pl.Pendulum(length=1.0, g=9.81, **model)
+        s0 = p.state_from_angles(**angles)
+        omega = max(math.sqrt(9.81), float(np.linalg.norm(s0.v)))
+        for method in pl.method_names():
+            if method == "dop853":
+                settings = [{"rtol": 1e-10, "atol": 1e-12}, {"rtol": 1e-13, "atol": 1e-15}]
+            else:
+                settings = [{"dt": t_end / (20 * math.ceil(t_end * omega / (20 * COST_STEPS[method])))}]
+            for kw in settings:
+                kw = kw | ({"save_every": 20} if "dt" in kw else {"save_at": np.linspace(0, t_end, 51)})
+                try:
+                    t_plain, plain = _best_time(p, s0, t_end, method=method, **kw)
+                    t_est, tr = _best_time(p, s0, t_end, method=method, error_estimate=True, **kw)
+                except (pl.InvalidInputError, pl.IntegrationError) as e:
+                    print(f"| {name} | {method} | refused: {str(e).splitlines()[0][:70]} | | | | | | | |")
+                    continue
+                est = tr.error_estimate
+                work = 1.0 + est.cost
+                # the estimate alone (without tr.error, the exact solution at every sample)
+                plain_kw = kw | {"method": method, "t0": 0.0, "drift": "raise"}
+                c = time.process_time()
+                estimate(pl.simulate, plain, s0, plain_kw)
+                cpu_est = (t_plain[1] + time.process_time() - c) / t_plain[1]
+                fit, largest = "—", "—"
+                if tr.error is not None:
+                    big = tr.error.position > max(0.1 * tr.error.max_position, 1e-13)
+                    if big.any():
+                        r = est.position[big] / tr.error.position[big]
+                        fit = f"{r.min():.2f} … {r.max():.2f}"
+                        largest = f"{est.max_position / tr.error.max_position:.2f}"
+                setting = f"dt = {kw['dt']:.2e} s" if "dt" in kw else f"rtol {kw['rtol']:.0e}"
+                print(
+                    f"| {name} | {method} | {setting} | {est.reference.get('companion', 'tighter')} | "
+                    f"{work:.2f} | {cpu_est:.2f} | {t_est[1] / t_plain[1]:.2f} | "
+                    f"{t_est[0] / t_plain[0]:.2f} | {fit} | {largest} |",
+                    flush=True,
+                )
+                del plain
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--t-max", type=float, default=1000.0)
+    ap.add_argument("--cost", action="store_true", help="measure the cost of the estimate instead")
     args = ap.parse_args()
+    if args.cost:
+        cost()
+        return
     cases = json.loads((REPO / "testdata" / "hard_cases.json").read_text())["cases"]
     points: dict[str, list[tuple[float, float, float]]] = {"dop853": [], "rattle8": []}
     met, total, missed = 0, 0, []

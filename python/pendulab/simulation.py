@@ -148,9 +148,11 @@ def simulate(
     max_saved_bytes : memory limit for saved samples (default 4 GiB); exceeding it is an error
         raised before the run starts (fixed-step methods) or when reached (``dop853``).
     error_estimate : also estimate the global error at every sample, ``tr.error_estimate`` (position
-        [m], velocity [m/s]): Richardson against a run at dt/2 (fixed-step methods), a companion run at
-        a 1000× tighter tolerance (``dop853``); for the ideal pendulum also the true error against the
-        exact solution, ``tr.error``. Costs the reference run: 2× (fixed step), ≈ 2.4× (``dop853``).
+        [m], velocity [m/s]): Richardson against a run at 2·dt (fixed-step methods; at dt/2 when the
+        save times are off the 2·dt grid or the 2·dt run is unstable or not asymptotic), a companion
+        run at a 10× tighter tolerance (``dop853``); for the ideal pendulum also the true error against
+        the exact solution, ``tr.error``. The reference run costs 0.5× the plain run (2·dt), 2–2.5×
+        (dt/2), ≈ 1.3× (``dop853``); docs/integrators.md, "Error estimates".
     accuracy : the largest position error allowed over the run, relative to l (1e-15 … 0.1): chooses
         the method (RATTLE8; DOP853 with a user force) and its step or tolerance, refining until the
         estimate meets it, or raises ``InvalidInputError`` with the best float64 reached. Do not give

@@ -41,8 +41,72 @@ def test_the_estimate_is_within_a_factor_two_of_the_true_error_for_every_method(
     assert ratio.min() > 0.5 and ratio.max() < 2.0, (
         f"{method}: estimate/true in [{ratio.min()}, {ratio.max()}]"
     )
-    # the reference run's work: 2x for the half step, at most 2.5x for the companion
-    assert est.cost <= 2.5, f"{method}: reference run cost {est.cost:.2f}x the plain run"
+    # the reference run's work (save_every even: the coarse 2·dt companion), with the plain run ≤ 2.5x
+    if method != "dop853":
+        assert est.reference["companion"] == "2dt", est.reference
+    assert est.cost <= 1.5, f"{method}: reference run cost {est.cost:.2f}x the plain run"
+
+
+def test_the_coarse_companion_needs_save_times_on_its_grid() -> None:
+    # every step saved: each 2·dt step would be shortened to land on the odd samples, so dt/2
+    tr = pl.simulate(IDEAL, START, 2.0, method="rattle4", dt=1e-2, save_every=1, error_estimate=True)
+    est = tr.error_estimate
+    assert est.reference["companion"] == "dt/2" and "2·dt grid" in est.reference["why"]
+    assert est.cost == pytest.approx(2.0, rel=0.01)
+    # a few save_at times off the grid: one shortened step each, a small share: still 2·dt
+    tr = pl.simulate(
+        IDEAL, START, 20.0, method="rattle8", dt=0.0415, save_at=[1.0, 10.0, 20.0], error_estimate=True
+    )
+    assert tr.error_estimate.reference["companion"] == "2dt"
+    ratio = tr.error_estimate.position / tr.error.position
+    assert ratio.min() > 0.5 and ratio.max() < 2.0, ratio
+    # the true error with save_at leaving out t0: measured from the start at t0, not from t[0]
+    assert tr.error.max_position < 1e-4, tr.error.position
+
+
+def test_an_unstable_coarse_run_falls_back_to_the_half_step() -> None:
+    # RATTLE8 at 0.15/ω is stable, at 0.3/ω (the 2·dt run) it blows up next to the top
+    s0 = IDEAL.state_from_angles(theta=np.radians(150), phi_dot=0.3)
+    dt = 0.15 / np.sqrt(9.81)
+    tr = pl.simulate(IDEAL, s0, 20.0, method="rattle8", dt=dt, save_every=20, error_estimate=True)
+    est = tr.error_estimate
+    assert est.reference["companion"] == "dt/2" and "2·dt run failed" in est.reference["why"]
+    big = tr.error.position > 0.1 * tr.error.max_position
+    ratio = est.position[big] / tr.error.position[big]
+    assert ratio.min() > 0.5 and ratio.max() < 2.0, ratio
+
+
+def test_a_coarse_run_outside_the_asymptotic_regime_falls_back() -> None:
+    # 0.1/ω next to the top: the 2·dt run is 9e-2 l off the plain one (its phase is going)
+    s0 = IDEAL.state_from_angles(theta=np.radians(150), phi_dot=0.3)
+    dt = 100.0 / (2 * round(100.0 / (2 * 0.1 / np.sqrt(9.81))))
+    tr = pl.simulate(IDEAL, s0, 100.0, method="rattle8", dt=dt, save_every=100, error_estimate=True)
+    assert tr.error_estimate.reference["companion"] == "dt/2", tr.error_estimate.reference
+    assert "off the plain run" in tr.error_estimate.reference["why"]
+
+
+def test_round_off_is_not_divided_away() -> None:
+    # at rest 0.01° from the top RATTLE8 at a small step is dominated by round-off (the energy
+    # errors of the plain and the 2·dt run are alike, not 2^8 apart): the half-step companion,
+    # whose difference keeps round-off at its size (y_2h − y_h divided by 255 would hide it)
+    s0 = IDEAL.state_from_angles(theta=np.radians(179.99))
+    tr = pl.simulate(IDEAL, s0, 60.0, method="rattle8", dt=2e-3, save_every=1000, error_estimate=True)
+    est, true = tr.error_estimate, tr.error
+    assert est.reference["companion"] == "dt/2" and "round-off" in est.reference["why"]
+    assert true.max_position > 1e-10, "round-off is expected to dominate here"
+    # round-off is random: two realisations differ by about its size, not sample by sample
+    assert 0.1 < est.max_position / true.max_position < 10, (est.max_position, true.max_position)
+    coarse = pl.simulate(IDEAL, s0, 60.0, method="rattle8", dt=4e-3, save_at=tr.t)
+    hidden = np.max(np.linalg.norm(coarse.x - tr.x, axis=1)) / 255
+    assert hidden < 0.1 * true.max_position  # what the 2·dt estimate would have said
+
+
+def test_dop853_at_the_tightest_tolerance_uses_a_looser_companion() -> None:
+    tr = pl.simulate(IDEAL, START, 5.0, method="dop853", rtol=1e-9, error_estimate=True)
+    assert tr.error_estimate.reference["rtol"] == pytest.approx(1e-10)
+    tr = pl.simulate(IDEAL, START, 5.0, method="dop853", rtol=1e-15, atol=1e-17, error_estimate=True)
+    assert tr.error_estimate.reference["rtol"] == pytest.approx(1e-14)
+    assert tr.error_estimate.cost < 1.0
 
 
 def test_other_models_get_an_estimate_and_no_true_error() -> None:
