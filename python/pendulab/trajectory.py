@@ -464,9 +464,10 @@ class Trajectory:
         ]
         for label, err in (("estimate", self.error_estimate), ("error", self.error)):
             if err is not None:
+                how = err.how + (f", {err.reference['companion']}" if "companion" in err.reference else "")
                 lines.append(
                     f"{label + ':':<10}max |dx| = {err.max_position:.3e} m "
                     f"({err.max_position / p.length:.1e} l), "
-                    f"max |dv| = {err.max_velocity:.3e} m/s, at t_end {err.position[-1]:.3e} m  ({err.how})"
+                    f"max |dv| = {err.max_velocity:.3e} m/s, at t_end {err.position[-1]:.3e} m  ({how})"
                 )
         return "\n".join(lines)

@@ -131,7 +131,7 @@ def test_files_and_summary_carry_the_errors(tmp_path) -> None:
     assert "err_x_est" in text and "err_v" in text
     assert tr.metadata()["error_estimate"]["how"] == "richardson"
     summary = tr.summary()
-    assert "estimate: max |dx|" in summary and "(richardson)" in summary and "(exact)" in summary
+    assert "estimate: max |dx|" in summary and "(richardson, 2dt)" in summary and "(exact)" in summary
 
 
 @pytest.mark.parametrize("accuracy", [1e-6, 1e-10])
