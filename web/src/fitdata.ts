@@ -9,7 +9,7 @@ import type { UrlScenario } from './url';
 /** Largest data file the server fits [bytes] (python/pendulab/server/fit.py, MAX_FIT_BYTES). */
 export const MAX_FIT_BYTES = 2 * 2 ** 20;
 
-/** The models the fit handles (pendulab.fitting.problem.FITTABLE_MODELS). */
+/** The models the fit handles (pendulab.fitting.problem.ROD_MODELS: the lab runs the spring, but fits rods only). */
 export const FIT_MODELS = ['damped', 'ideal', 'rotating', 'slewing', 'vibrating'] as const;
 
 /** Body of POST /api/fit. */

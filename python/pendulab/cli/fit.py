@@ -17,6 +17,7 @@ from ..fitting import fit
 from ..fitting.problem import FITTABLE_MODELS, model_params
 from ..fitting.table import read_table
 from ..model import Pendulum
+from ..variants.spring import SwingingSpring
 from .common import _fail, _say, _user_errors, app
 
 
@@ -80,7 +81,13 @@ def fit_cmd(
                 _fail(f"--param {item!r}: give NAME=VALUE with NAME one of {', '.join(own)}")
             values[name.strip()] = _number(text, f"--param {name.strip()}")
         base = {k: values.pop(k) for k in ("length", "g", "mass") if k in values}
-        pendulum = Pendulum(**base, model=model, **values)
+        pendulum: Pendulum | SwingingSpring
+        if model == "spring":  # length: the rest length l0; stiffness k [N/m]
+            full = {n: float(spec["default"]) for n, spec in own.items()} | base | values
+            k_over_m = full["stiffness"] / full["mass"]
+            pendulum = SwingingSpring(k_over_m, full["length"], full["g"], full["mass"])
+        else:
+            pendulum = Pendulum(**base, model=model, **values)
         names = [c.strip() for c in columns.split(",")] if columns else None
         kwargs = read_table(data, names)
         where = None

@@ -23,6 +23,7 @@ import numpy as np
 from .._core import IntegrationError, InvalidInputError
 from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
+from ..variants.spring import SwingingSpring
 from .data import KINDS, observations, residual
 from .identify import analyse, jacobian
 from .problem import (
@@ -36,9 +37,10 @@ from .problem import (
     scale_of,
 )
 from .result import FitResult
+from .spring_model import SPRING_STATE
 from .start import gravity_starts, phase_starts, sideways_starts, starting_values
 
-POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness"}
+POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness", "r0"}
 MAX_EVALUATIONS = 20_000
 ANCHOR = 0.1
 POLISH_STEPS = 40
@@ -46,11 +48,12 @@ POLISH_STEPS = 40
 MISFIT = 2.0
 
 
-def _angles_of(pendulum: Pendulum, state: State) -> dict[str, float]:
-    """θ, φ [rad] and θ̇, φ̇ [rad/s] of a state (φ̇ = 0 at a pole, where φ means nothing)."""
+def _angles_of(state: State) -> dict[str, float]:
+    """θ, φ [rad] and θ̇, φ̇ [rad/s] of a state (φ̇ = 0 at a pole, where φ means nothing), with the
+    length r₀ = |x| [m] and its rate ṙ₀ [m/s] (used by the spring; r₀ = l on a rod)."""
     x, v = np.asarray(state.x), np.asarray(state.v)
     theta, phi = state.angles()
-    ell = pendulum.length
+    ell = float(np.linalg.norm(x))
     e_theta = np.array([math.cos(theta) * math.cos(phi), math.cos(theta) * math.sin(phi), math.sin(theta)])
     e_phi = np.array([-math.sin(phi), math.cos(phi), 0.0])
     rho = math.hypot(x[0], x[1])
@@ -59,6 +62,8 @@ def _angles_of(pendulum: Pendulum, state: State) -> dict[str, float]:
         "phi0": phi,
         "theta_dot0": float(v @ e_theta) / ell,
         "phi_dot0": float(v @ e_phi) / rho if rho > 1e-12 * ell else 0.0,
+        "r0": ell,
+        "r_dot0": float(v @ x) / ell,
     }
 
 
@@ -120,17 +125,18 @@ def _free_names(fit: Any, model: str, state_given: bool, columns: Mapping[str, i
         fit = [s.strip() for s in fit.split(",") if s.strip()]
     names: list[str] = []
     own = list(model_params(model))
+    state = [*STATE_NAMES, *(SPRING_STATE if model == "spring" else ())]
     pivot = list(PIVOT_NAMES) if columns.get("positions", 3) == 3 else ["pivot_x", "pivot_z"]
-    allowed = own + list(STATE_NAMES) + list(PIVOT_NAMES) + list(OFFSET_NAMES) + ["state", "pivot"]
+    allowed = own + state + list(PIVOT_NAMES) + list(OFFSET_NAMES) + ["state", "pivot"]
     for name in fit:
         if not isinstance(name, str) or name not in allowed:
             raise InvalidInputError(
                 f"cannot fit {name!r} for the {model!r} model; choose from {', '.join(allowed)}"
             )
-        expanded = list(STATE_NAMES) if name == "state" else pivot if name == "pivot" else [name]
+        expanded = state if name == "state" else pivot if name == "pivot" else [name]
         names += [n for n in expanded if n not in names]
     if not state_given:
-        names += [n for n in STATE_NAMES if n not in names]
+        names += [n for n in state if n not in names]
     if set(PIVOT_NAMES) & set(names) and "positions" not in columns:
         raise InvalidInputError("the pivot position is fitted from positions only; give positions=")
     if "t_offset" in names and model != "ideal":
@@ -150,7 +156,7 @@ def fit(
     planar_angle: Any = None,
     specific_force: Any = None,
     angular_speed: Any = None,
-    pendulum: Pendulum | None = None,
+    pendulum: Pendulum | SwingingSpring | None = None,
     fit: str | Sequence[str] = ("length", "g"),
     state0: State | None = None,
     pivot: Sequence[float] | None = None,
@@ -165,9 +171,11 @@ def fit(
     |a − g⃗| [m/s²], ``angular_speed`` |ω| [rad/s].
 
     ``pendulum``: the model and the starting/fixed values of its parameters (default the ideal
-    ``Pendulum()``); ``fit``: the parameters to fit (``pl.models()`` names, ``"state"``, ``"pivot"``
-    or single ``theta0``, ``phi0``, ``theta_dot0``, ``phi_dot0``, ``pivot_x/y/z``, ``t_offset``); the
-    start at the first time is fitted too unless ``state0`` is given. ``pivot`` [m]: the pivot in the
+    ``Pendulum()``; a :class:`pendulab.SwingingSpring` for the spring, whose ``length`` is the rest
+    length and ``stiffness`` k [N/m]); ``fit``: the parameters to fit (``pl.models()`` names,
+    ``"state"``, ``"pivot"`` or single ``theta0``, ``phi0``, ``theta_dot0``, ``phi_dot0``, the
+    spring's ``r0`` [m] and ``r_dot0`` [m/s], ``pivot_x/y/z``, ``t_offset``); the start at the first
+    time is fitted too unless ``state0`` is given. ``pivot`` [m]: the pivot in the
     data's frame when known (default the origin). ``sigma``: the noise of one value (a number, or
     kind → number; for angles that of θ and of the arc sin θ·φ; None: estimated from the residual).
     ``loss``: SciPy's "linear", "soft_l1", "huber", "cauchy" or "arctan" (robust against outliers;
@@ -179,8 +187,10 @@ def fit(
     from scipy.optimize import least_squares
 
     pendulum = Pendulum() if pendulum is None else pendulum
-    if not isinstance(pendulum, Pendulum):
-        raise InvalidInputError(f"pendulum must be a pendulab.Pendulum, got {type(pendulum).__name__}")
+    if not isinstance(pendulum, Pendulum | SwingingSpring):
+        raise InvalidInputError(
+            f"pendulum must be a pendulab.Pendulum or SwingingSpring, got {type(pendulum).__name__}"
+        )
     model = check_model(pendulum)
     if time_limit is not None and not (isinstance(time_limit, int | float) and time_limit > 0.0):
         raise InvalidInputError(f"time_limit = {time_limit!r} must be a positive number of seconds or None")
@@ -206,11 +216,20 @@ def fit(
         raise InvalidInputError(f"state0 must be a pendulab.State, got {type(state0).__name__}")
     free = _free_names(fit, model, state0 is not None, obs.columns)
     values: dict[str, float] = {n: float(spec["default"]) for n, spec in model_params(model).items()}
-    values.update({k: float(v) for k, v in pendulum.params().items() if k != "model"})
-    values.update({k: float(v) for k, v in pendulum.extra.items()})
+    if isinstance(pendulum, SwingingSpring):
+        values.update(
+            length=pendulum.rest_length,
+            g=pendulum.g,
+            mass=pendulum.mass,
+            stiffness=pendulum.k_over_m * pendulum.mass,
+        )
+        values.update(r0=pendulum.equilibrium_length, r_dot0=0.0)
+    else:
+        values.update({k: float(v) for k, v in pendulum.params().items() if k != "model"})
+        values.update({k: float(v) for k, v in pendulum.extra.items()})
     values.update(dict.fromkeys(STATE_NAMES, 0.0))
     if state0 is not None:
-        values.update(_angles_of(pendulum, state0))
+        values.update(_angles_of(state0))
     given_pivot = (0.0, 0.0, 0.0) if pivot is None else tuple(float(c) for c in pivot)
     if len(given_pivot) != 3 or not all(math.isfinite(c) for c in given_pivot):
         raise InvalidInputError(f"pivot must be 3 finite numbers [m], got {pivot!r}")

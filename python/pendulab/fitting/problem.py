@@ -9,11 +9,15 @@ Parameter names (SI units):
   [rad/s] (θ from the downward vertical, T-1.2);
 - ``pivot_x``, ``pivot_y``, ``pivot_z`` [m]: where the pivot is in the frame of measured positions;
 - ``t_offset`` [s]: the model's clock runs from t₀ + t_offset (ideal pendulum only: the exact solution
-  runs backward in time as well).
+  runs backward in time as well);
+- the swinging spring (``model = "spring"``, a :class:`pendulab.SwingingSpring`): ``length`` is its
+  rest length l₀, ``stiffness`` k [N/m], and the start has also ``r0`` [m], ``r_dot0`` [m/s]
+  (spring_model.py).
 
 The forward model is the exact solution (T-4.x) for the ideal pendulum and DOP853 at rtol 1e-12 with
 dense output at the sample times otherwise, so that its own error (≲ 1e-10 relative) stays far below
-any measurement noise and noise-free data are recovered to about 1e-8.
+any measurement noise and noise-free data are recovered to about 1e-8; the spring's is its own
+(spring_model.py).
 """
 
 from __future__ import annotations
@@ -29,12 +33,15 @@ from .._core import IntegrationError, InvalidInputError
 from ..model import FloatArray, Pendulum, State, models
 from ..simulation import simulate
 from ..theory.exact import exact
+from ..variants.spring import SwingingSpring
+from . import spring_model
 from .data import Observations, predict, residual
 
 STATE_NAMES = ("theta0", "phi0", "theta_dot0", "phi_dot0")
 PIVOT_NAMES = ("pivot_x", "pivot_y", "pivot_z")
 OFFSET_NAMES = ("t_offset",)
-FITTABLE_MODELS = ("ideal", "damped", "rotating", "slewing", "vibrating")
+ROD_MODELS = ("ideal", "damped", "rotating", "slewing", "vibrating")
+FITTABLE_MODELS = (*ROD_MODELS, "spring")
 UNITS_EXTRA = {
     "theta0": "rad",
     "phi0": "rad",
@@ -44,6 +51,8 @@ UNITS_EXTRA = {
     "pivot_y": "m",
     "pivot_z": "m",
     "t_offset": "s",
+    "r0": "m",
+    "r_dot0": "m/s",
 }
 RTOL = 1e-12
 ATOL = 1e-14
@@ -84,7 +93,11 @@ class Problem:
         out.update({name: float(x) for name, x in zip(self.free, u, strict=True)})
         return out
 
-    def pendulum(self, values: Mapping[str, float]) -> Pendulum:
+    def pendulum(self, values: Mapping[str, float]) -> Pendulum | SwingingSpring:
+        if self.model == "spring":
+            return SwingingSpring(
+                values["stiffness"] / values["mass"], values["length"], values["g"], values["mass"]
+            )
         own = model_params(self.model)
         extra = {
             k: values[k]
@@ -93,14 +106,21 @@ class Problem:
         }
         return Pendulum(values["length"], values["g"], values["mass"], model=self.model, **extra)
 
-    def state0(self, pendulum: Pendulum, values: Mapping[str, float]) -> State:
+    def state0(self, pendulum: Pendulum | SwingingSpring, values: Mapping[str, float]) -> State:
+        if isinstance(pendulum, SwingingSpring):
+            return State(*spring_model.start_vectors(values))
         return pendulum.state_from_angles(*(values[k] for k in STATE_NAMES))
 
-    def motion(self, values: Mapping[str, float]) -> tuple[Pendulum, FloatArray, FloatArray, FloatArray]:
+    def motion(
+        self, values: Mapping[str, float]
+    ) -> tuple[Pendulum | SwingingSpring, FloatArray, FloatArray, FloatArray]:
         """The pendulum and its x [m], v [m/s] at the sample times, with the model times τ [s]."""
         p = self.pendulum(values)
-        s = self.state0(p, values)
         tau = self.obs.t - self.t0 - values.get("t_offset", 0.0)
+        if isinstance(p, SwingingSpring):
+            x, v = spring_model.motion(values, tau)
+            return p, x, v, tau
+        s = self.state0(p, values)
         if p.is_ideal:
             x, v = exact(p, s).state(tau)
             return p, x, v, tau
@@ -114,7 +134,11 @@ class Problem:
         p, x, v, tau = self.motion(values)
         accel = None
         if "specific_force" in self.obs.values:
-            accel = p.diagnostics(x, v, tau)["acceleration"]
+            accel = (
+                spring_model.acceleration(x, p.k_over_m, p.rest_length, p.g)
+                if isinstance(p, SwingingSpring)
+                else p.diagnostics(x, v, tau)["acceleration"]
+            )
         gdir = np.array([0.0, 0.0, -1.0])
         if self.model == "damped":
             gdir = np.array(
@@ -124,6 +148,7 @@ class Problem:
         gravity = values["g"] * gdir
         pivot = np.array([values.get(k, 0.0) for k in PIVOT_NAMES])
         if self.model in ("slewing", "vibrating") and "positions" in self.obs.values:
+            assert isinstance(p, Pendulum)
             pivot = pivot + p.diagnostics(x, v, tau)["pivot"]
         return {
             kind: predict(kind, self.obs.columns[kind], x, v, accel, gravity, pivot)
@@ -150,14 +175,16 @@ class Problem:
         return np.where(np.isfinite(r), r, 1e6)
 
 
-def check_model(pendulum: Pendulum) -> str:
+def check_model(pendulum: Pendulum | SwingingSpring) -> str:
     """The model name, if the fit can handle it; a clear error otherwise."""
+    if isinstance(pendulum, SwingingSpring):
+        return "spring"
     if pendulum.force is not None or pendulum.pivot_samples is not None:
         raise InvalidInputError("fit takes a registry model, not a user force or a sampled pivot path")
     if pendulum.model not in FITTABLE_MODELS:
         raise InvalidInputError(
-            f"fit works with the rod models {', '.join(FITTABLE_MODELS)}; {pendulum.model!r} has its own "
-            "stepper (spring, string) and is not supported yet"
+            f"fit works with the models {', '.join(FITTABLE_MODELS)} (the spring as a pl.SwingingSpring); "
+            f"{pendulum.model!r} is not supported yet"
         )
     return pendulum.model
 
@@ -172,6 +199,8 @@ def bounds_of(model: str, name: str, value: float) -> tuple[float, float]:
     """Where the optimizer may go for ``name`` (the registry's limits; θ₀ in [0, π])."""
     if name == "theta0":
         return 0.0, math.pi
+    if name == "r0":
+        return 1e-9 * abs(value), math.inf
     if name in UNITS_EXTRA:
         return -math.inf, math.inf
     spec = model_params(model)[name]
@@ -187,8 +216,10 @@ def scale_of(name: str, value: float, length: float, period: float) -> float:
         return 1.0
     if name in ("theta_dot0", "phi_dot0"):
         return max(abs(value), 2.0 * math.pi / period)
-    if name in PIVOT_NAMES:
+    if name in (*PIVOT_NAMES, "r0"):
         return length
+    if name == "r_dot0":
+        return max(abs(value), length * 2.0 * math.pi / period)
     if name == "t_offset":
         return period / 10.0
     return max(abs(value), 1e-3 if name != "g" else 1e-2)

@@ -5,6 +5,7 @@ accept."""
 
 from __future__ import annotations
 
+import math
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -15,12 +16,17 @@ import numpy as np
 from ..display import Row, html_table, number
 from ..model import FloatArray, Pendulum, State
 from ..trajectory import Trajectory
+from ..variants.spring import SpringTrajectory, SwingingSpring
 from .data import KINDS, residual
 from .identify import Identifiability
 from .problem import STATE_NAMES, unit_of
 
 if TYPE_CHECKING:
     from .problem import Problem
+
+
+#: Legend names of the data columns per (kind, number of columns).
+_COLUMN_NAMES = {("positions", 3): ("x", "y", "z"), ("positions", 2): ("x", "z"), ("angles", 2): ("θ", "φ")}
 
 
 @dataclass
@@ -44,7 +50,7 @@ class FitResult:
     combinations: dict[str, tuple[float, float]]
     residuals: dict[str, FloatArray]
     t: FloatArray
-    pendulum: Pendulum
+    pendulum: Pendulum | SwingingSpring
     state0: State
     t0: float
     chi2: float
@@ -121,16 +127,30 @@ class FitResult:
         )
 
     @property
-    def trajectory(self) -> Trajectory:
-        """The fitted motion at the data times (model time 0 at the first sample, t₀ [s])."""
-        _, x, v, tau = self._problem.motion({**self.fixed, **self.params})
-        return Trajectory(self.pendulum, tau, x, v, "fit", {"t0": self.t0}, {"steps": 0, "samples": len(tau)})
+    def model(self) -> str:
+        """The fitted model's name (``pl.models()``)."""
+        return str(self._problem.model)
+
+    @property
+    def trajectory(self) -> Trajectory | SpringTrajectory:
+        """The fitted motion at the data times (model time 0 at the first sample, t₀ [s]); for the
+        spring a :class:`pendulab.SpringTrajectory` with its energy [J] and J₃ [kg m²/s]."""
+        p, x, v, tau = self._problem.motion({**self.fixed, **self.params})
+        if isinstance(p, SwingingSpring):
+            r = np.linalg.norm(x, axis=1)
+            m = p.mass
+            energy = 0.5 * m * np.einsum("ij,ij->i", v, v) + m * p.g * x[:, 2]
+            energy += 0.5 * m * p.k_over_m * (r - p.rest_length) ** 2
+            j3 = m * (x[:, 0] * v[:, 1] - x[:, 1] * v[:, 0])
+            return SpringTrajectory(p, tau, x, v, energy, j3, {"model": "spring", "t0": self.t0})
+        assert isinstance(p, Pendulum)
+        return Trajectory(p, tau, x, v, "fit", {"t0": self.t0}, {"steps": 0, "samples": len(tau)})
 
     @property
     def _defaults(self) -> dict[str, float]:
         from .problem import model_params
 
-        return {n: float(spec["default"]) for n, spec in model_params(self.pendulum.model).items()}
+        return {n: float(spec["default"]) for n, spec in model_params(self.model).items()}
 
     @property
     def reduced_chi2(self) -> float:
@@ -149,7 +169,7 @@ class FitResult:
         """A table of the fitted parameters ± standard errors (SI units), the combinations the data
         determine where single parameters are not, χ², the noise, what was held fixed, convergence."""
         lines = [
-            f"fit of the {self.pendulum.model} pendulum to {len(self.t)} samples "
+            f"fit of the {self.model} pendulum to {len(self.t)} samples "
             f"({', '.join(f'{k} [{KINDS[k]}]' for k in self.residuals)}), t0 = {self.t0:g} s"
         ]
         if self.dropped:
@@ -208,6 +228,8 @@ class FitResult:
 
         p = self.pendulum
         span = float(self.t[-1] - self.t[0]) if t_end is None else float(t_end)
+        if isinstance(p, SwingingSpring):
+            return self._spring_scenario(p, span, title)
         pend: dict[str, Any] = {"model": p.model, "length": p.length, "mass": p.mass, "g": p.g, **p.extra}
         theta, phi = self.state0.angles()
         vals = {**self.fixed, **self.params}
@@ -224,6 +246,28 @@ class FitResult:
         }
         if p.is_ideal:
             data["simulation"]["save_every"] = 10
+        return Scenario.from_dict(data, "<fit>")
+
+    def _spring_scenario(self, p: SwingingSpring, span: float, title: str | None) -> Any:
+        """The fitted spring as a scenario: the Cartesian start, the triple jump (``rattle4``) at a step
+        of 1e-2 of the fastest time scale."""
+        from ..scenario import Scenario
+
+        omega = max(math.sqrt(p.k_over_m), math.sqrt(abs(p.g) / p.equilibrium_length))
+        dt = min(1e-3, 1e-2 / omega)
+        every = max(1, round(0.01 / dt))  # samples 10 ms apart
+        data = {
+            "title": title or f"fitted to {len(self.t)} samples (pendulab fit)",
+            "pendulum": {
+                "model": "spring",
+                "length": p.rest_length,
+                "mass": p.mass,
+                "g": p.g,
+                "stiffness": p.k_over_m * p.mass,
+            },
+            "initial": {"x": [float(c) for c in self.state0.x], "v": [float(c) for c in self.state0.v]},
+            "simulation": {"t_end": span, "method": "rattle4", "dt": dt, "save_every": every},
+        }
         return Scenario.from_dict(data, "<fit>")
 
     def save(self, path: str | os.PathLike[str]) -> Path:
@@ -244,8 +288,9 @@ class FitResult:
             ax = fig.add_subplot(grid[row, 0])
             axr = fig.add_subplot(grid[row, 1], sharex=ax)
             for c in range(measured.shape[1]):
-                ax.plot(self.t, measured[:, c], ".", ms=2, alpha=0.5, label=f"{kind}[{c}] measured")
-                ax.plot(self.t, pred[kind][:, c], "-", lw=0.9, label=f"{kind}[{c}] fit")
+                name = _COLUMN_NAMES.get((kind, measured.shape[1]), (kind,) * 3)[c]
+                ax.plot(self.t, measured[:, c], ".", ms=2, alpha=0.5, label=f"{name} measured")
+                ax.plot(self.t, pred[kind][:, c], "-", lw=0.9, label=f"{name} fit")
                 axr.plot(self.t, self.residuals[kind][:, c], ".", ms=2)
             ax.set_ylabel(f"{kind} [{KINDS[kind]}]")
             axr.set_ylabel(f"residual [{KINDS[kind]}]")

@@ -33,6 +33,7 @@ from .._core import InvalidInputError
 from ..model import FloatArray
 from .data import Observations
 from .problem import PIVOT_NAMES
+from .spring_model import spring_start
 
 
 def sphere_fit(p: FloatArray) -> tuple[FloatArray, float] | None:
@@ -235,6 +236,12 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
             out[name] = value
     if "theta0" in free:
         out["theta0"] = min(max(out["theta0"], 0.0), math.pi)
+    if "stiffness" in values:  # the swinging spring: r₀, ṙ₀, k, l₀ (spring_model.py)
+        if "positions" in obs.values and obs.values["positions"].shape[1] == 3:
+            spring_start(t, rel, out, free, period)
+        elif "length" in free:  # the rest length below the hanging length
+            sag = out["g"] * out["mass"] / out["stiffness"]
+            out["length"] = max(out["length"] - sag, 0.1 * out["length"])
     return out
 
 
@@ -289,7 +296,7 @@ def gravity_starts(obs: Observations, start: dict[str, Any], free: set[str]) -> 
     has_speed = "angles" in obs.values or (
         "positions" in obs.values and obs.values["positions"].shape[1] == 3
     )
-    if not has_speed or not ({"g", "length"} & free):
+    if not has_speed or not ({"g", "length"} & free) or "stiffness" in start:  # a spring stores energy too
         return [start]
     rel = _relative_positions(obs, start, free)
     g_energy = energy_gravity(obs.t, rel) if rel is not None else None

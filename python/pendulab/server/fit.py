@@ -41,7 +41,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from .._core import IntegrationError, InvalidInputError
 from ..fitting import FitResult, fit
-from ..fitting.problem import FITTABLE_MODELS
+from ..fitting.problem import ROD_MODELS
 from ..fitting.table import parse_table
 from ..model import FloatArray, Pendulum
 from .protocol import validation_problems
@@ -67,7 +67,7 @@ class FitRequest(BaseModel):
 
     csv: str = Field(description="the data file's text (CSV, SI units)", max_length=MAX_FIT_BYTES)
     name: str = Field("data", description="the file's name, for messages", max_length=200)
-    model: str = Field("damped", description=f"one of {', '.join(FITTABLE_MODELS)}", max_length=40)
+    model: str = Field("damped", description=f"one of {', '.join(ROD_MODELS)}", max_length=40)
     fit: list[str] | None = Field(None, description="parameters to fit", max_length=24)
     columns: list[str] | None = Field(None, description="the file's column names in order", max_length=32)
     sigma: float | None = Field(None, description="noise of one value in the data's unit", gt=0.0, le=1e6)
@@ -156,8 +156,8 @@ def _finite(v: float) -> float | None:
 def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]:
     """Parses and fits the data of ``req`` (see the module doc); JSON-ready. Raises
     :class:`pendulab.InvalidInputError` naming what is wrong with the data or the settings."""
-    if req.model not in FITTABLE_MODELS:
-        raise InvalidInputError(f"model {req.model!r}: use one of {', '.join(FITTABLE_MODELS)}")
+    if req.model not in ROD_MODELS:
+        raise InvalidInputError(f"model {req.model!r}: use one of {', '.join(ROD_MODELS)}")
     data = parse_table(req.csv, req.columns, req.name)
     kinds = {k for k in data if k != "t"}
     names = req.fit if req.fit is not None else default_fit(req.model, kinds)
@@ -179,7 +179,7 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
     return {
         "report": res.report(),
         "warnings": [" ".join(str(w.message).split()) for w in caught],
-        "model": res.pendulum.model,
+        "model": res.model,
         "fit": names,
         "params": {
             n: {
