@@ -129,6 +129,7 @@ def main() -> None:
     cases = json.loads((REPO / "testdata" / "hard_cases.json").read_text())["cases"]
     points: dict[str, list[tuple[float, float, float]]] = {"dop853": [], "rattle8": []}
     met, total, missed = 0, 0, []
+    companions: dict[str, list[tuple[str, float]]] = {}
     for case in cases:
         ell = case["length"]
         p = pl.Pendulum(length=ell, mass=case["mass"], g=case["g"])
@@ -141,6 +142,12 @@ def main() -> None:
             times = [s["t"] for s in samples]
             kw = {"rtol": 1e-12, "atol": 1e-14 * ell} if method == "dop853" else {"dt": 0.05 / omega}
             tr = pl.simulate(p, s0, times[-1], method=method, save_at=times, error_estimate=True, **kw)
+            ref = tr.error_estimate.reference
+            companions.setdefault(method, []).append(
+                (ref.get("companion", "tighter"), tr.error_estimate.cost)
+            )
+            if ref.get("why"):
+                print(f"{case['name']} {method}: dt/2 companion: {ref['why']}")
             for s in samples:
                 i = int(np.argmin(np.abs(tr.t - s["t"])))
                 true = float(np.linalg.norm(tr.x[i] - np.array([float(c) for c in s["x_str"]])))
@@ -168,6 +175,13 @@ def main() -> None:
         print(
             f"{case['name']:28} accuracy=1e-8: true {worst / ell:.2e} l {'met' if ok else 'MISSED'}",
             flush=True,
+        )
+    for method, used in companions.items():
+        kinds = {k: sum(1 for c, _ in used if c == k) for k in sorted({c for c, _ in used})}
+        costs = [1.0 + c for _, c in used]
+        print(
+            f"{method}: companions {kinds}; total cost (rhs evaluations, plain run = 1) "
+            f"{min(costs):.2f} .. {max(costs):.2f}, median {float(np.median(costs)):.2f}"
         )
     for method, pts in points.items():
         arr = np.array(pts)
