@@ -35,6 +35,7 @@ from pendulab.server.protocol import (
     parse_command,
 )
 from pendulab.server.session import MAX_ELAPSED, MAX_SUBSAMPLES, resolve_scenario
+from pendulab.server.tick import tick_messages
 
 E, J3, TENSION = (FRAME_FIELDS.index(k) for k in ("energy", "j3", "tension"))
 
@@ -82,7 +83,7 @@ def test_schema_lists_parameters_with_units_limits_defaults_and_every_method(cli
     assert params["length"]["min"] > 0 and params["mass"]["min"] > 0
     assert [m["name"] for m in s["methods"]] == pl.method_names()
     assert {"order", "symplectic", "preserves_j3", "adaptive"} <= s["methods"][0].keys()
-    assert s["frame"]["fields"] == list(FRAME_FIELDS) and s["frame"]["record_bytes"] == 144 == RECORD_BYTES
+    assert s["frame"]["fields"] == list(FRAME_FIELDS) and s["frame"]["record_bytes"] == 152 == RECORD_BYTES
     assert s["frame"]["byte_order"] == "little" and s["frame"]["dtype"] == "float64"
     assert s["controls"]["dt"]["default"] == 1e-3 and s["controls"]["time_scale"]["default"] == 1.0
     assert "load_scenario" in s["commands"]
@@ -381,3 +382,16 @@ def test_urls_and_browser_detection(monkeypatch: pytest.MonkeyPatch) -> None:
     assert cli_serve.url_for("localhost", 8000) == "http://localhost:8000"
     monkeypatch.setenv("CI", "true")
     assert not cli_serve.browser_available()
+
+
+def test_the_status_counts_every_command_handled_applied_refused_or_dropped() -> None:
+    """``status.commands``: the page's language switch waits until it has reached the page's own count,
+    so that the URL it reloads from holds a command just sent (docs/web.md, "Languages")."""
+    s = Session(resolve_scenario("rosette"))
+    assert s.status()["commands"] == 0
+    out = tick_messages(s, [parse_command('{"type": "pause"}'), CommandError("bad")], 0.0, dropped=3)
+    statuses = [m for m in out if isinstance(m, dict) and m["type"] == "status"]
+    assert statuses[-1]["commands"] == 5 and statuses[-1]["paused"] is True
+    out = tick_messages(s, [CommandError("refused only")], 0.0)  # a status after refused ones too
+    assert [m["commands"] for m in out if isinstance(m, dict) and m["type"] == "status"] == [6]
+    assert not [m for m in tick_messages(s, [], 0.0) if isinstance(m, dict)]  # nothing new: no status

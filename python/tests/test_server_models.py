@@ -70,7 +70,8 @@ def test_schema_lists_every_model_of_the_registry_with_units_limits_and_slider_s
             assert p["ui_min"] < p["ui_max"] and p["step"] > 0
             assert p["ui_min"] <= p["default"] <= p["ui_max"], p
     assert "set_model" in s["commands"]
-    assert s["frame"]["fields"][-8:] == ["power", "a1", "a2", "a3", "pivot1", "pivot2", "pivot3", "taut"]
+    tail = ["power", "a1", "a2", "a3", "pivot1", "pivot2", "pivot3", "taut", "error_x"]
+    assert s["frame"]["fields"][-9:] == tail
 
 
 def test_scenarios_carry_their_model(client: TestClient) -> None:

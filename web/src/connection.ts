@@ -17,7 +17,26 @@ export function socketUrl(loc: Location): string {
   return `${scheme}//${loc.host}${dir}ws`;
 }
 
+/** Resolves true once the server has handled every command this page sent on the connection —
+ *  `handled()`, the latest status's `commands`, has reached `sent()` — or false after `timeoutMs` (a
+ *  server that never confirms: the caller goes on anyway). Checked every `pollMs`. The language switch
+ *  waits for it before it reloads the page from its URL, which the statuses keep up to date: a command
+ *  sent just before (a resume, a fitted scenario's commands) is then in the URL, not lost. */
+export function whenCaughtUp(handled: () => number | undefined, sent: () => number, timeoutMs: number, pollMs = 20): Promise<boolean> {
+  const end = Date.now() + timeoutMs;
+  return new Promise((resolve) => {
+    const check = () => {
+      if ((handled() ?? -1) >= sent()) resolve(true);
+      else if (Date.now() >= end) resolve(false);
+      else setTimeout(check, pollMs);
+    };
+    check();
+  });
+}
+
 export class Connection {
+  /** Commands sent on the current socket (a new socket, a new server session: counted from 0). */
+  sent = 0;
   private ws: WebSocket | null = null;
   private retryMs = 500;
   private closedByUs = false;
@@ -34,6 +53,7 @@ export class Connection {
     ws.binaryType = 'arraybuffer';
     ws.onopen = () => {
       this.retryMs = 500;
+      this.sent = 0;
       this.handlers.onOpen();
     };
     ws.onmessage = (ev: MessageEvent<unknown>) => {
@@ -63,6 +83,7 @@ export class Connection {
   send(cmd: Command): boolean {
     if (!this.isOpen || this.ws === null) return false;
     this.ws.send(JSON.stringify(cmd));
+    this.sent++;
     return true;
   }
 

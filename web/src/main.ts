@@ -2,7 +2,7 @@
 // from the store; controls send commands. Nothing here integrates: the server's core does all physics.
 import 'uplot/dist/uPlot.min.css';
 import './style.css';
-import { Connection, socketUrl } from './connection';
+import { Connection, socketUrl, whenCaughtUp } from './connection';
 import { DataPanel } from './panels/data';
 import { Controls } from './panels/controls';
 import { Plots } from './panels/plots';
@@ -169,9 +169,14 @@ async function main(): Promise<void> {
     help: () => help.toggle(),
     language: (l) => {
       window.localStorage?.setItem('pendulab.lang', l);
-      const q = new URLSearchParams(window.location.search);
-      q.set('lang', l);
-      window.location.search = q.toString();
+      // The page reloads from its URL, which each status updates: wait (≤ 2 s) until the server has
+      // handled every command sent, else one just sent — a resume, a fitted scenario — would be lost (the
+      // page came back paused, or with the old scenario, and waited for frames that never came).
+      void whenCaughtUp(() => store.status?.commands, () => conn?.sent ?? 0, 2000).then(() => {
+        const q = new URLSearchParams(window.location.search);
+        q.set('lang', l);
+        window.location.search = q.toString();
+      });
     },
     collapsed: () => undefined,
   });

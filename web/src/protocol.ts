@@ -3,9 +3,10 @@
 //
 // Frames: every binary WebSocket message holds one or more records of little-endian float64 values in the
 // order of `frame.json` (shared with the Python server, pendulab/server/frame.json):
-//   [t, x1, x2, x3, v1, v2, v3, energy, j3, tension, power, a1, a2, a3, pivot1, pivot2, pivot3, taut]
-//   in s, m, m/s, J, kg m²/s, N, W, m/s², m, 1. x, v and a are relative to the pivot (at `pivot`, 0 when
-//   fixed); taut is 0 while the string is slack (model `string`), else 1.
+//   [t, x1, x2, x3, v1, v2, v3, energy, j3, tension, power, a1, a2, a3, pivot1, pivot2, pivot3, taut, error_x]
+//   in s, m, m/s, J, kg m²/s, N, W, m/s², m, 1, m. x, v and a are relative to the pivot (at `pivot`, 0 when
+//   fixed); taut is 0 while the string is slack (model `string`), else 1; error_x is the global position
+//   error of the record's state (true or estimated, the status's `error_estimate` says how), −1 unknown.
 import layout from '../../python/pendulab/server/frame.json';
 
 export type Vec3 = [number, number, number];
@@ -33,13 +34,16 @@ const I = {
   a: [fieldIndex('a1'), fieldIndex('a2'), fieldIndex('a3')] as const,
   pivot: [fieldIndex('pivot1'), fieldIndex('pivot2'), fieldIndex('pivot3')] as const,
   taut: fieldIndex('taut'),
+  errorX: fieldIndex('error_x'),
 };
 
 /** One state as computed by the server's core: time t [s], position x [m] and velocity v [m/s] relative to
  *  the pivot, energy E [J], J₃ [kg m²/s], rod tension T [N], power of the non-conservative forces P [W],
  *  acceleration a = ẍ [m/s²] relative to the pivot (m a is the net force on the bob there) and the
  *  pivot's position [m] (0 for a fixed pivot; the bob is at pivot + x), and whether the rod, spring or
- *  string holds the bob (false only while the string is slack: free flight, tension 0). */
+ *  string holds the bob (false only while the string is slack: free flight, tension 0), and the global
+ *  position error of this state [m] since the stepper's start (the exact one for the ideal pendulum, else
+ *  an estimate: Status.error_estimate), or −1 while unknown (the estimate paused: out of work budget). */
 export interface Frame {
   t: number;
   x: Vec3;
@@ -51,6 +55,7 @@ export interface Frame {
   a: Vec3;
   pivot: Vec3;
   taut: boolean;
+  errorX: number;
 }
 
 export class ProtocolError extends Error {}
@@ -78,6 +83,7 @@ export function decodeFrames(buf: ArrayBuffer): Frame[] {
       a: vec(I.a),
       pivot: vec(I.pivot),
       taut: at(I.taut) !== 0,
+      errorX: at(I.errorX),
     });
   }
   return out;
@@ -100,6 +106,7 @@ export function encodeFrames(frames: readonly Frame[]): ArrayBuffer {
     I.a.forEach((i, c) => put(i, f.a[c] ?? NaN));
     I.pivot.forEach((i, c) => put(i, f.pivot[c] ?? NaN));
     put(I.taut, f.taut ? 1 : 0);
+    put(I.errorX, f.errorX);
   });
   return buf;
 }
@@ -148,7 +155,23 @@ export interface Status {
   t0: number;
   start: { x: Vec3; v: Vec3 };
   lagging: boolean;
+  /** Command messages of this connection the server has handled (applied, refused or dropped). */
+  commands?: number;
+  /** How the frames' error_x is obtained (docs/web.md, "Error estimate"). */
+  error_estimate?: ErrorEstimateInfo;
   frame_fields: string[];
+}
+
+/** The status's `error_estimate`: `how` the frames' error_x is obtained — `exact` (the ideal pendulum: the
+ *  true error against the exact solution), `richardson` (a companion at dt/2 = reference.dt, e ≈ |x_h −
+ *  x_h/2|·2^p/(2^p − 1), p = order), `companion` (dop853: a companion at reference.rtol, reference.atol),
+ *  or null (none; `note` says why) —, and `since` [s], the start the error is counted from. */
+export interface ErrorEstimateInfo {
+  how: 'exact' | 'richardson' | 'companion' | null;
+  order: number | null;
+  reference: { dt?: number; rtol?: number; atol?: number };
+  since: number;
+  note: string | null;
 }
 
 export interface ErrorNotice {

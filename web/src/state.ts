@@ -38,6 +38,7 @@ export const CSV_COLUMNS = [
   'pivot2 [m]',
   'pivot3 [m]',
   'taut [1]',
+  'error_x [m]',
 ] as const;
 
 export interface History {
@@ -72,7 +73,8 @@ export function lerp(a: number, b: number, s: number): number {
 
 /** Linear interpolation of two frames at parameter s ∈ [0, 1]; the position is put back on the sphere of
  *  radius lerp(|x_a|, |x_b|) so the bob never cuts the chord (the spring's and the slack string's radius
- *  varies, so the radius is interpolated too); slack if either frame is. Drawing only: no dynamics. */
+ *  varies, so the radius is interpolated too); slack if either frame is; the error unknown (−1) if either
+ *  is. Drawing only: no dynamics. */
 export function interpolateFrames(a: Frame, b: Frame, s: number): Frame {
   const vec = (p: Vec3, q: Vec3): Vec3 => [lerp(p[0], q[0], s), lerp(p[1], q[1], s), lerp(p[2], q[2], s)];
   const x = vec(a.x, b.x);
@@ -90,6 +92,7 @@ export function interpolateFrames(a: Frame, b: Frame, s: number): Frame {
     a: vec(a.a, b.a),
     pivot: vec(a.pivot, b.pivot),
     taut: a.taut && b.taut,
+    errorX: a.errorX < 0 || b.errorX < 0 ? -1 : lerp(a.errorX, b.errorX, s),
   };
 }
 
@@ -353,7 +356,7 @@ export class LabStore {
     };
     const header = CSV_COLUMNS.join(',');
     const rows = this.trajectory.map((f) =>
-      [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension, f.power, ...f.a, ...f.pivot, f.taut ? 1 : 0].map((v) => String(v)).join(','),
+      [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension, f.power, ...f.a, ...f.pivot, f.taut ? 1 : 0, f.errorX].map((v) => String(v)).join(','),
     );
     return [`# ${JSON.stringify(meta)}`, header, ...rows].join('\n') + '\n';
   }

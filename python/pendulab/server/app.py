@@ -366,6 +366,7 @@ async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ)
             now = anyio.current_time()
             elapsed, last = now - last, now
             commands = [inbox.popleft() for _ in range(min(len(inbox), MAX_PER_TICK))]
+            lost = dropped
             if dropped:
                 await ws.send_json(
                     error_notice(
@@ -374,7 +375,7 @@ async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ)
                     )
                 )
                 dropped = 0
-            work = functools.partial(tick_messages, session, commands, elapsed)
+            work = functools.partial(tick_messages, session, commands, elapsed, dropped=lost)
             await send_all(await anyio.to_thread.run_sync(work, limiter=limiter))
 
     async with anyio.create_task_group() as tg:

@@ -1,8 +1,10 @@
 """The lab's wire protocol (docs/web.md): binary state frames out, JSON commands in, JSON notices out.
 
 **Frames** (server → page): every binary WebSocket message holds one or more *records* of
-:data:`FRAME_FIELDS` as little-endian float64 — ``[t, x1, x2, x3, v1, v2, v3, energy, j3, tension]``
-in s, m, m/s, J, kg m²/s, N (80 bytes each). The layout is read from ``frame.json`` beside this file,
+:data:`FRAME_FIELDS` as little-endian float64 — ``[t, x1, x2, x3, v1, v2, v3, energy, j3, tension,
+power, a1, a2, a3, pivot1, pivot2, pivot3, taut, error_x]`` in s, m, m/s, J, kg m²/s, N, W, m/s², m, 1,
+m (152 bytes each; ``error_x``: the global position error, −1 while unknown, :mod:`.live_error`). The
+layout is read from ``frame.json`` beside this file,
 which the page's ``web/src/protocol.ts`` imports too, so the two cannot disagree.
 
 **Commands** (page → server): one JSON object per text message, told apart by ``"type"``

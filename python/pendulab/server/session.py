@@ -31,6 +31,7 @@ from ..model import Pendulum, State
 from ..scenario import ScenarioError
 from ..simulation import Stepper, methods
 from .budget import Budget, Slicer
+from .live_error import UNKNOWN, LiveError
 from .live_models import (
     DEFAULT_METHOD,
     OWN_STEPPER_MODELS,
@@ -78,7 +79,9 @@ MAX_EVENT_NOTICES = 16
 """Most ``event`` notices sent per tick (the latest ones; each says how many earlier were skipped):
 a fast bouncing string at a high time scale cannot flood the page."""
 
-_SCALAR = {name: FRAME_FIELDS.index(name) for name in ("t", "energy", "j3", "tension", "power", "taut")}
+_SCALAR = {
+    name: FRAME_FIELDS.index(name) for name in ("t", "energy", "j3", "tension", "power", "taut", "error_x")
+}
 _VECTOR = {name: FRAME_FIELDS.index(f"{name}1") for name in ("x", "v", "a", "pivot")}
 
 
@@ -86,11 +89,12 @@ def state_records(pendulum: Pendulum, t: np.ndarray, x: np.ndarray, v: np.ndarra
     """Frame records (N, RECORD_LEN) of states x [m], v [m/s] at times t [s]: the core's diagnostics at
     those times (time-dependent models: forcing, moving pivot), the acceleration ẍ [m/s²] relative to
     the pivot (m ẍ is the net force there) and the pivot's position [m] (0 for a fixed pivot); ``taut``
-    is 1 (the bob is on the sphere)."""
+    is 1 (the bob is on the sphere); ``error_x`` unknown until :meth:`Session.fill_errors`."""
     diag = pendulum.diagnostics(x, v, t)
     rec = np.zeros((len(t), RECORD_LEN))
     rec[:, _SCALAR["t"]] = t
     rec[:, _SCALAR["taut"]] = 1.0
+    rec[:, _SCALAR["error_x"]] = UNKNOWN
     for name in ("energy", "j3", "tension", "power"):
         rec[:, _SCALAR[name]] = diag[name]
     for name, values in (("x", x), ("v", v), ("a", diag["acceleration"]), ("pivot", diag.get("pivot"))):
@@ -103,7 +107,7 @@ def own_record(stepper: OwnStepper) -> np.ndarray:
     """The frame record (RECORD_LEN,) of the spring's or the string's stepper at its current state:
     the core's energy, J₃, tension (the spring's k(|r| − l₀); the string's, 0 while slack) and
     acceleration; power 0 (both conservative between the string's snaps), pivot 0; ``taut`` 0 while the
-    string is slack."""
+    string is slack; ``error_x`` unknown until :meth:`Session.fill_errors`."""
     d = stepper.diagnostics()
     s = stepper.state
     rec = np.zeros(RECORD_LEN)
@@ -111,6 +115,7 @@ def own_record(stepper: OwnStepper) -> np.ndarray:
     for name in ("energy", "j3", "tension"):
         rec[_SCALAR[name]] = d[name]
     rec[_SCALAR["taut"]] = 1.0 if d["taut"] else 0.0
+    rec[_SCALAR["error_x"]] = UNKNOWN
     for name, values in (("x", s.x), ("v", s.v), ("a", d["acceleration"])):
         rec[_VECTOR[name] : _VECTOR[name] + 3] = values
     return rec
@@ -140,9 +145,14 @@ def rebuild(pendulum: LabPendulum, **changes: Any) -> LabPendulum:
 
 
 class Session:
-    """The state of one client's lab. Not thread-safe: one owner calls :meth:`apply` and :meth:`advance`."""
+    """The state of one client's lab. Not thread-safe: one owner calls :meth:`apply` and :meth:`advance`.
 
-    def __init__(self, setup: Setup, resolve: Callable[[str], Setup] | None = None) -> None:
+    ``exact_error=False`` estimates the ideal pendulum's error with a companion too, as for the other
+    models, instead of taking the true error from the exact solution (for tests of the estimate)."""
+
+    def __init__(
+        self, setup: Setup, resolve: Callable[[str], Setup] | None = None, *, exact_error: bool = True
+    ) -> None:
         self._resolve = resolve or example_resolver(setup)
         self.time_scale = 1.0
         self.paused = False
@@ -152,6 +162,8 @@ class Session:
         self._slicer = Slicer()
         self._adaptive = {m["name"]: bool(m["adaptive"]) for m in methods()}
         self._events: list[tuple[dict[str, Any], int]] = []
+        self.exact_error = exact_error
+        self.commands = 0  # command messages handled (applied, refused or dropped): status.commands
         self._load(setup)
 
     # --- set-up ---
@@ -181,18 +193,41 @@ class Session:
         only once its stepper exists (a method refusing the model leaves the session unchanged). The
         spring and the string step with their own core steppers (:mod:`.live_models`)."""
         self._collect_events()  # the old stepper's events keep their epoch
-        dt = 0.0 if self.adaptive else self.dt
         p = self.pendulum if pendulum is None else pendulum
-        self.stepper: Stepper | OwnStepper
-        if p.model in OWN_STEPPER_MODELS:
-            self.stepper = own_stepper(p, state, self.method, self.dt, t)
-        else:
-            assert isinstance(p, Pendulum)
-            self.stepper = Stepper(p, state, method=self.method, dt=dt, rtol=self.rtol, atol=self.atol, t0=t)
+        self.stepper: Stepper | OwnStepper = self._make_stepper(p, state, t, {"dt": self.dt})
         self.pendulum = p
         self.clock = t
         self.pending_steps = 0  # a `step` still under way belonged to the stepper replaced
         self._slicer.reset()
+        options = {"dt": self.dt, "rtol": self.rtol, "atol": self.atol}
+        self.error = LiveError(
+            p,
+            state,
+            t,
+            self.method,
+            options,
+            self.adaptive,
+            lambda ref: self._make_stepper(p, state, t, options | ref),
+            exact=self.exact_error,
+        )
+
+    def _make_stepper(
+        self, p: LabPendulum, state: State, t: float, options: dict[str, float]
+    ) -> Stepper | OwnStepper:
+        """A stepper of ``p`` from ``state`` at ``t`` with the session's method and ``options`` (dt [s],
+        and rtol, atol for ``dop853``; the session's own where not given)."""
+        dt = float(options.get("dt", self.dt))
+        if p.model in OWN_STEPPER_MODELS:
+            return own_stepper(p, state, self.method, dt, t)
+        assert isinstance(p, Pendulum)
+        rtol, atol = options.get("rtol", self.rtol), options.get("atol", self.atol)
+        dt = 0.0 if self.adaptive else dt
+        return Stepper(p, state, method=self.method, dt=dt, rtol=rtol, atol=atol, t0=t)
+
+    def fill_errors(self, records: np.ndarray | None, budget: Budget) -> None:
+        """Sets the ``error_x`` column [m] of the current stepper's ``records`` (:mod:`.live_error`):
+        the companion steps only within what is left of ``budget``."""
+        self.error.fill(records, budget)
 
     @property
     def adaptive(self) -> bool:
@@ -229,6 +264,8 @@ class Session:
             "t0": self.t0,
             "start": {"x": [float(c) for c in start.x], "v": [float(c) for c in start.v]},
             "lagging": self.lagging,
+            "error_estimate": self.error.describe(),
+            "commands": self.commands,
             "frame_fields": list(FRAME_FIELDS),
         }
 

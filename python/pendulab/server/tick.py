@@ -9,7 +9,9 @@ Ctrl-C are served. In one tick, within one wall-time budget (:mod:`.budget`):
 1. the commands, in order (an ``error`` notice for each one refused), then the waiting steps of
    ``step`` commands; a ``status`` after them (and when a ``step`` of several ticks is done);
 2. the advance to the wall clock × time scale;
-3. the frames (the last discontinuity's record, the ``step`` frame, the advance's records), then the
+3. the error estimate of those records (:mod:`.live_error`), its companion stepping in what is left
+   of the budget: it never takes time from the lab's own stepping;
+4. the frames (the last discontinuity's record, the ``step`` frame, the advance's records), then the
    string's ``event`` notices, and a ``status`` when ``lagging`` changed.
 
 **No frame carries a non-finite number.** Records are checked before they are encoded: from the first
@@ -66,25 +68,36 @@ def finite_records(session: Session, records: np.ndarray | None, out: list[Messa
 def first_messages(session: Session) -> list[Message]:
     """What a new connection gets first: the status and the current state's frame."""
     out: list[Message] = [session.status()]
-    finite_records(session, session.records(), out)
+    records = session.records()
+    session.fill_errors(records, Budget())
+    finite_records(session, records, out)
     return out
 
 
 def tick_messages(
-    session: Session, commands: list[Any], elapsed: float, budget_seconds: float = TICK_BUDGET
+    session: Session,
+    commands: list[Any],
+    elapsed: float,
+    budget_seconds: float = TICK_BUDGET,
+    dropped: int = 0,
 ) -> list[Message]:
     """Carries out one tick of ``session`` (the module doc): ``commands`` are parsed commands or
-    :class:`CommandError` for refused messages, ``elapsed`` the wall-clock seconds since the last tick.
-    Returns the messages to send, in order. Not thread-safe per session: one tick at a time."""
+    :class:`CommandError` for refused messages, ``elapsed`` the wall-clock seconds since the last tick,
+    ``dropped`` the messages thrown away since the last tick (throttling). Returns the messages to send,
+    in order. Not thread-safe per session: one tick at a time.
+
+    ``session.commands`` counts every message handled — applied, refused or dropped — and the status
+    says it (``commands``): a page that counts what it sent knows when a status reflects all of it (the
+    page's language switch reloads from the URL only then)."""
     budget = Budget(budget_seconds)
     out: list[Message] = []
-    changed = False
+    changed = bool(commands) or dropped > 0  # the status after them, also after refused ones
+    session.commands += len(commands) + dropped
     records = None
     for item in commands:
         if isinstance(item, CommandError):
             out.append(error_notice(str(item), item.command))
             continue
-        changed = True
         try:
             result = session.apply(item)
         except CommandError as e:
@@ -106,6 +119,11 @@ def tick_messages(
     except CommandError as e:
         out.append(error_notice(str(e), e.command))
         out.append(session.status())
+    how = session.error.how
+    for part in (records, stepped, advanced):  # the error estimate in what is left of the budget
+        session.fill_errors(part, budget)
+    if session.error.how != how:
+        out.append(session.status())  # the companion stopped: the status's error_estimate says why
     for part in (records, stepped, advanced):
         if not finite_records(session, part, out):
             break  # paused: nothing after the first non-finite record

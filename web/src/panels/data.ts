@@ -2,8 +2,9 @@
 // so far, the model (for the swinging spring its length and stretch, for the string whether it is taut or
 // slack), and — for the ideal pendulum — the exact-solution quantities of the current orbit
 // (POST /api/exact): kind, turning heights, z-period, azimuthal advance, rotation number and its dynamic
-// and geometric parts. For the string, the last events (went slack, snapped taut with the energy lost).
-import type { ExactQuantities, Frame } from '../protocol';
+// and geometric parts. For the string, the last events (went slack, snapped taut with the energy lost). The
+// global position error of the state shown and how it was obtained (errorRows; docs/web.md, "Error estimate").
+import type { ExactQuantities, Frame, Status } from '../protocol';
 import type { LabStore } from '../state';
 import { offSphereNote, tetherStyle } from '../models';
 import { eventRow } from '../events';
@@ -31,6 +32,7 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
     ['z', fmt(f?.x[2], 6), 'm'],
     [t('data.method'), s ? `${s.method}${s.adaptive ? '' : `, dt = ${s.dt} s`}` : '—', ''],
     [t('data.state'), s ? `${s.paused ? t('data.paused') : t('data.running')}${s.lagging ? t('data.lagging') : ''}` : '—', ''],
+    ...errorRows(f, s),
   ];
   if (s && s.model !== 'ideal') {
     rows.splice(1, 0, [t('data.model'), s.model, '']);
@@ -59,6 +61,30 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
     rows.push(...(events.length > 0 ? events : [[t('data.events'), t('data.noEvents'), ''] as Row]));
   }
   return rows;
+}
+
+/** The rows of the error estimate (issue 17): the global position error of the state shown [m] (the
+ *  frames' error_x), relative to l, and how it was obtained (the status's error_estimate): the true error
+ *  against the exact solution for the ideal pendulum, else Richardson against a companion at dt/2 or, for
+ *  dop853, a companion at a tighter tolerance; "estimate paused" while the server's companion is behind. */
+export function errorRows(f: Frame | null, s: Status | null): Row[] {
+  const info = s?.error_estimate;
+  if (!s || !info) return [];
+  if (info.how === null) return [[t('data.errorHow'), info.note ?? t('data.errorNone'), '']];
+  const since = fmt(info.since, 6);
+  const how =
+    info.how === 'exact'
+      ? t('data.howExact', { since })
+      : info.how === 'richardson'
+        ? t('data.howRichardson', { dt: fmt(info.reference.dt, 3), p: info.order ?? '?', since })
+        : t('data.howCompanion', { rtol: fmt(info.reference.rtol, 3), since });
+  const e = f?.errorX;
+  const known = e !== undefined && e >= 0;
+  return [
+    [t('data.error'), known ? fmt(e, 3) : e === undefined ? '—' : t('data.errorPaused'), known ? 'm' : ''],
+    [t('data.errorRel'), known ? fmt(e / s.params.length, 3) : '—', ''],
+    [t('data.errorHow'), how, ''],
+  ];
 }
 
 /** Why there is no exact solution (null when there is one or it is on its way). */

@@ -316,15 +316,37 @@ export async function checkRecordingAndStereo(page, { check, WAIT, MIN_FPS }) {
   check(heap < 400e6, `page memory bounded: JS heap ${(heap / 1e6).toFixed(1)} MB`);
 }
 
+/** The data panel's rows as [label, value, unit]. */
+export const dataRows = (page) =>
+  page.evaluate(() => [...document.querySelectorAll('#data table tr')].map((tr) => [...tr.cells].map((c) => c.textContent ?? '')));
+
 export async function checkLanguage(page, { check, WAIT }) {
-  await page.locator('[data-input="language"]').selectOption('de');
+  // The switch right after a command (here a resume, as the measured-data check before leaves it): the page
+  // waits until the server's status has counted the command, so the reload keeps the run going. (It used
+  // to reload from a URL still saying paused=1: the page came back paused and no frames came.) The resume
+  // and the switch go in one task, so the resume's status cannot have arrived before the switch.
+  await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
+  await page.waitForFunction(() => window.pendulab.store.status?.paused === true, null, { timeout: WAIT });
+  await page.evaluate(() => {
+    window.pendulab.send({ type: 'resume' });
+    const select = document.querySelector('[data-input="language"]');
+    select.value = 'de';
+    select.dispatchEvent(new Event('change'));
+  });
   await page.waitForURL(/lang=de/, { timeout: WAIT });
-  await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 2, null, { timeout: WAIT });
+  const running = await page
+    .waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 2 && window.pendulab.store.status?.paused === false, null, { timeout: WAIT })
+    .then(() => true, (e) => String(e).split('\n')[0]);
+  const paused = /paused=1/.test(page.url());
+  check(running === true && !paused, `the language switch right after a resume keeps the lab running${running === true ? '' : ` (${running})`}${paused ? ' (reloaded paused)' : ''}`);
   const de = await page.evaluate(() => ({ lang: document.documentElement.lang, reset: document.querySelector('[data-action="reset"]').textContent, title: document.querySelector('[data-tool="stopwatch"] h3').textContent }));
+  await page.waitForFunction(() => [...document.querySelectorAll('#data td')].some((c) => c.textContent === 'Lagefehler |Δx|'), null, { timeout: WAIT });
+  const rowDe = (await dataRows(page)).find((r) => r[0] === 'Lagefehler |Δx|');
   await page.screenshot({ path: 'test-results/lab-de.png' });
   await page.locator('[data-input="language"]').selectOption('en');
   await page.waitForURL(/lang=en/, { timeout: WAIT });
   await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 2, null, { timeout: WAIT });
   const en = await page.evaluate(() => document.querySelector('[data-action="reset"]').textContent);
   check(de.lang === 'de' && de.reset === 'Zurück' && /Stoppuhr/.test(de.title) && en === 'Reset', `a second language (German) switches and back (${de.reset}, ${de.title})`);
+  check(rowDe !== undefined && rowDe[2] === 'm', `the error estimate in German: ${rowDe?.join(' ')}`);
 }

@@ -41,6 +41,20 @@ export async function checkFitData(page, { check, WAIT }) {
     )
     .then(() => true, () => false);
   check(loaded, 'the fitted damped pendulum is loaded into the running session');
+  // its method is dop853: the error is estimated by a companion run at a tighter tolerance (issue 17)
+  const estimated = await page
+    .waitForFunction(
+      () => {
+        const rows = [...document.querySelectorAll('#data table tr')].map((tr) => [...tr.cells].map((c) => c.textContent ?? ''));
+        const err = rows.find((r) => r[0] === 'position error |Δx|');
+        const how = rows.find((r) => r[0] === 'error obtained by');
+        return err && how && /companion run at rtol/.test(how[1]) && (Number(err[1]) > 0 || /estimate paused/.test(err[1])) ? `${err[1]} ${err[2]}, ${how[1]}` : false;
+      },
+      null,
+      { timeout: WAIT },
+    )
+    .then((h) => h.jsonValue(), () => null);
+  check(estimated !== null, `the fitted run's error is estimated by a companion: ${estimated}`);
   await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
   await page.waitForFunction(() => window.pendulab.store.status?.paused === true, null, { timeout: WAIT });
   await page.waitForTimeout(300);

@@ -1,7 +1,8 @@
 // End-to-end test of the running lab in Debian's headless chromium (playwright-core; no browser download).
 // Run by tests/e2e/run.sh (`make test-e2e`), which starts the server; by hand:
 //   pendulab serve --no-browser --port 8765 &  node tests/e2e/smoke.mjs http://127.0.0.1:8765
-// Checks (more in models.mjs, classroom.mjs and fitdata.mjs): no console errors, frames arrive and are drawn, the canvas shows the pendulum (pixels differ from
+// Checks (more in models.mjs, classroom.mjs and fitdata.mjs): no console errors, frames arrive and are drawn, the data panel shows the
+// position error (the true one on the ideal pendulum), the canvas shows the pendulum (pixels differ from
 // the background), the frame rate (median of the page's frame times, printed; above 25 fps, see MIN_FPS) and
 // the software renderer recognised (no MSAA there), negative g visibly changes the motion (the bob goes
 // above the pivot), pause stops the frames, the shared URL reproduces the scenario. Writes test-results/lab.png and test-results/lab-negative-g.png. Waits are generous (a loaded
@@ -12,7 +13,7 @@ import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
-import { checkEnergyAndTwin, checkKeyboard, checkLanguage, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios } from './classroom.mjs';
+import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
 const WAIT = 60_000; // ms: the longest any condition is waited for
@@ -62,6 +63,20 @@ try {
   watch(page);
   await page.goto(base + '/', { timeout: WAIT });
   await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: WAIT });
+
+  // the error estimate in the data panel (issue 17): rosette is the ideal pendulum, so the true error against
+  // the exact solution, in m and relative to l, a few seconds into the run well above round-off and far below l
+  await page.waitForFunction(() => (window.pendulab.store.latest()?.t ?? 0) > 2, null, { timeout: WAIT });
+  await page.waitForTimeout(300); // the panels redraw at 10 Hz
+  const rows = await dataRows(page);
+  const err = rows.find((r) => r[0] === 'position error |Δx|');
+  const rel = rows.find((r) => r[0] === 'position error / l');
+  const how = rows.find((r) => r[0] === 'error obtained by');
+  const e = Number(err?.[1]);
+  check(
+    err?.[2] === 'm' && e > 1e-9 && e < 1e-3 && Math.abs(Number(rel?.[1]) - e) <= 0.01 * e && /exact solution/.test(how?.[1] ?? ''),
+    `the data panel shows the position error: ${err?.join(' ')}, relative ${rel?.[1]}, by ${how?.[1]}`,
+  );
 
   // pacing: simulated time against the wall clock, measured around the same interval
   const a = await page.evaluate(() => ({ d: window.pendulab.drawn(), t: window.pendulab.store.latest().t, w: Date.now() }));
@@ -179,8 +194,8 @@ try {
     ['keyboard', checkKeyboard],
     ['energy and two pendulums', checkEnergyAndTwin],
     ['recording and stereo', checkRecordingAndStereo],
-    ['language', checkLanguage],
     ['measured data', checkFitData],
+    ['language', checkLanguage],
   ]) {
     const t0 = Date.now();
     await part(page, ctx);

@@ -44,6 +44,7 @@ const frame: Frame = {
   a: [0, 0, 0],
   pivot: [0, 0, 0],
   taut: true,
+  errorX: 0,
 };
 
 describe('event notices', () => {

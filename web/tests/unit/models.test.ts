@@ -30,7 +30,7 @@ function status(model: string, length = 1): Status {
 }
 
 function frame(x: Vec3, tension: number, taut: boolean): Frame {
-  return { t: 1, x, v: [0, 0, 0], energy: -1, j3: 0, tension, power: 0, a: [0, 0, -9.81], pivot: [0, 0, 0], taut };
+  return { t: 1, x, v: [0, 0, 0], energy: -1, j3: 0, tension, power: 0, a: [0, 0, -9.81], pivot: [0, 0, 0], taut, errorX: 0 };
 }
 
 describe('models off the sphere', () => {

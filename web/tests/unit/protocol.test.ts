@@ -21,22 +21,23 @@ const frame = (t: number): Frame => ({
   a: [-1, 0.5, 2],
   pivot: [0, 0, 0],
   taut: true,
+  errorX: 0,
 });
 
 describe('frame layout', () => {
-  it('is the shared frame.json: t, x, v, energy, j3, tension, power, a, pivot, taut as 144-byte float64 records', () => {
+  it('is the shared frame.json: t, x, v, energy, j3, tension, power, a, pivot, taut, error_x as 152-byte float64 records', () => {
     expect(FRAME_FIELDS).toEqual(layout.fields);
     expect(FRAME_FIELDS).toEqual([
       't', 'x1', 'x2', 'x3', 'v1', 'v2', 'v3', 'energy', 'j3', 'tension',
-      'power', 'a1', 'a2', 'a3', 'pivot1', 'pivot2', 'pivot3', 'taut',
+      'power', 'a1', 'a2', 'a3', 'pivot1', 'pivot2', 'pivot3', 'taut', 'error_x',
     ]);
-    expect(RECORD_BYTES).toBe(144);
+    expect(RECORD_BYTES).toBe(152);
     expect(layout.byte_order).toBe('little');
   });
 
   it('decodes little-endian float64 records written by hand in wire order', () => {
-    const first = [0.5, 1, 2, 3, 4, 5, 6, -7.25, 8, 9.5, -0.125, 11, 12, 13, 14, 15, 16, 0];
-    const second = [...first.slice(0, -1).map((v) => v + 100), 1];
+    const first = [0.5, 1, 2, 3, 4, 5, 6, -7.25, 8, 9.5, -0.125, 11, 12, 13, 14, 15, 16, 0, -1];
+    const second = [...first.slice(0, -2).map((v) => v + 100), 1, 2.5e-9];
     const values = [...first, ...second];
     const buf = new ArrayBuffer(values.length * 8);
     const view = new DataView(buf);
@@ -53,8 +54,10 @@ describe('frame layout', () => {
       a: [11, 12, 13],
       pivot: [14, 15, 16],
       taut: false,
+      errorX: -1,
     });
     expect(b?.t).toBe(100.5);
+    expect(b?.errorX).toBe(2.5e-9);
     expect(b?.taut).toBe(true);
     expect(b?.tension).toBe(109.5);
     expect(b?.pivot).toEqual([114, 115, 116]);
@@ -76,8 +79,8 @@ describe('frame layout', () => {
 
   it('refuses messages that are not whole records', () => {
     expect(() => decodeFrames(new ArrayBuffer(0))).toThrow(ProtocolError);
-    expect(() => decodeFrames(new ArrayBuffer(80))).toThrow(/multiple of 144 bytes, got 80/);
-    expect(decodeFrames(new ArrayBuffer(288))).toHaveLength(2);
+    expect(() => decodeFrames(new ArrayBuffer(80))).toThrow(/multiple of 152 bytes, got 80/);
+    expect(decodeFrames(new ArrayBuffer(304))).toHaveLength(2);
   });
 });
 

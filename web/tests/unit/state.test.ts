@@ -38,6 +38,7 @@ function frame(t: number, energy = -9.81, j3 = 1): Frame {
     a: [-Math.cos(t), -Math.sin(t), 0],
     pivot: [0, 0, 0],
     taut: true,
+    errorX: 0,
   };
 }
 
@@ -228,11 +229,11 @@ describe('LabStore', () => {
     expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ model: 'ideal', model_params: {} });
     expect(lines[1]).toBe(
       't [s],x1 [m],x2 [m],x3 [m],v1 [m/s],v2 [m/s],v3 [m/s],energy [J],j3 [kg m^2/s],tension [N],' +
-        'power [W],a1 [m/s^2],a2 [m/s^2],a3 [m/s^2],pivot1 [m],pivot2 [m],pivot3 [m],taut [1]',
+        'power [W],a1 [m/s^2],a2 [m/s^2],a3 [m/s^2],pivot1 [m],pivot2 [m],pivot3 [m],taut [1],error_x [m]',
     );
     const row = (lines[3] as string).split(',').map(Number);
     const [c, s] = [Math.cos(0.5), Math.sin(0.5)];
-    expect(row).toEqual([0.5, c, s, 0, -s, c, 0, -9.81, 1, 1, 0, -c, -s, 0, 0, 0, 0, 1]);
+    expect(row).toEqual([0.5, c, s, 0, -s, c, 0, -9.81, 1, 1, 0, -c, -s, 0, 0, 0, 0, 1, 0]);
   });
 
   it('notifies subscribers and keeps the last errors', () => {

@@ -15,6 +15,7 @@ function conical(t: number, R = 0.6, w = 2, h = 0.8): Frame {
     power: 0,
     pivot: [0, 0, 0],
     taut: true,
+    errorX: 0,
   };
 }
 
