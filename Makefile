@@ -14,7 +14,8 @@ STATIC := python/pendulab/server/static
 .DEFAULT_GOAL := build
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
-	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel
+	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
+	bench-peers-portable check-aarch64
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -153,6 +154,19 @@ bench:
 PORTABLE_ARGS ?=
 bench-portable:
 	$(PYTHON) bench/portable.py $(PORTABLE_ARGS)
+
+# The peers benchmark's full scans (Pendulab and the C baselines) for the portable wheel and a wheel
+# for this CPU only (-C target-cpu=native), run alternately (about 45 min): docs/performance.md
+# "Portable builds". PEERS_PORTABLE_ARGS="--rounds 3" for more rounds.
+PEERS_PORTABLE_ARGS ?=
+bench-peers-portable: build
+	$(PY) bench/peers/native_vs_portable.py $(PEERS_PORTABLE_ARGS)
+
+# The core type-checked for aarch64 (clippy -D warnings; needs the target's standard library:
+# `rustup target add aarch64-unknown-linux-gnu`, which .ci/run does): x86-only code stays behind cfg.
+check-aarch64:
+	CARGO_TARGET_DIR=$(CURDIR)/target/check-aarch64 cargo clippy -p pendulab-core \
+		--target aarch64-unknown-linux-gnu --all-targets -- -D warnings
 
 bench-compare: build
 	$(PY) bench/compare.py

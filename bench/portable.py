@@ -1,13 +1,17 @@
 """The portable build against a build for this CPU only, in one run (docs/performance.md, *Portable
-builds*): the criterion benches of pendulab-core compiled twice — the reference (by default this
-checkout with ``RUSTFLAGS="-C target-cpu=native"``; ``--reference DIR`` takes another checkout as it
-builds itself, e.g. a git worktree of the commit before a change) and this checkout with its own
-flags (the baseline CPU, hot loops dispatched at run time) — and run alternately, ``--rounds`` times
-each, so that the machine's load hits both alike. Reports the best median per benchmark [ns] and the
-ratio portable / reference (> 1: the portable build is slower).
+builds*): the criterion benches of pendulab-core compiled for each build — the reference (by default
+this checkout with ``RUSTFLAGS="-C target-cpu=native"``; ``--reference DIR`` takes another checkout as
+it builds itself), optionally ``--before DIR`` (another checkout with its own default flags, e.g. a
+git worktree of the commit before a change, to show before/after in the same run), and this checkout
+with its own flags (the baseline CPU, hot loops dispatched at run time) — and run alternately,
+``--rounds`` times each (the order rotating every round), so that the machine's load hits all alike.
+Reports per benchmark the median over the rounds of criterion's median [ns], the spread of the rounds
+(max/min − 1) and the ratios to the reference (> 1: slower than the reference), with the range of
+the per-round ratios.
 
-Usage: python3 bench/portable.py [--reference DIR] [--rounds 2] [--filter REGEX] [--markdown FILE]
-(``make bench-portable``; about 10 min on the 2-core reference machine).
+Usage: python3 bench/portable.py [--reference DIR] [--before DIR] [--rounds 3] [--filter REGEX]
+[--markdown FILE] (``make bench-portable``; about 10 min per round with three builds on the 2-core
+reference machine).
 """
 
 from __future__ import annotations
@@ -15,6 +19,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -71,39 +76,72 @@ def main() -> None:
     ap.add_argument(
         "--reference", type=Path, help="checkout built as the reference (default: this one, native)"
     )
-    ap.add_argument("--rounds", type=int, default=2)
+    ap.add_argument("--before", type=Path, help="another checkout built with its own flags (before/after)")
+    ap.add_argument("--rounds", type=int, default=3)
     ap.add_argument("--filter", help="criterion filter (regular expression over benchmark ids)")
     ap.add_argument("--markdown", type=Path, help="also write the table to this file")
     args = ap.parse_args()
     t0 = time.perf_counter()
+    load0 = os.getloadavg()[0]
     ref_dir = (args.reference or REPO).resolve()
     ref_flags = None if args.reference else "-C target-cpu=native"
-    ref = build(ref_dir, REPO / "target" / "bench-reference", ref_flags)
-    port = build(REPO, REPO / "target", None)
-    print(f"built ({time.perf_counter() - t0:.0f} s): {len(ref)} + {len(port)} bench executables", flush=True)
+    builds: dict[str, tuple[Path, list[Path]]] = {
+        "reference": (ref_dir, build(ref_dir, REPO / "target" / "bench-reference", ref_flags))
+    }
+    if args.before:
+        before = args.before.resolve()
+        builds["before"] = (before, build(before, REPO / "target" / "bench-before", None))
+    builds["portable"] = (REPO, build(REPO, REPO / "target", None))
+    kinds = list(builds)
+    print(f"built ({time.perf_counter() - t0:.0f} s): {', '.join(kinds)}", flush=True)
+    loads = [load0]
+    per_round: dict[str, list[dict[str, float]]] = {k: [] for k in kinds}
     with tempfile.TemporaryDirectory(prefix="criterion-portable-") as tmp:
         home = Path(tmp)
         for r in range(args.rounds):
-            run(ref, home, f"reference{r}", args.filter, ref_dir / "crates" / "pendulab-core")
-            run(port, home, f"portable{r}", args.filter, REPO / "crates" / "pendulab-core")
+            order = kinds[r % len(kinds) :] + kinds[: r % len(kinds)]
+            for kind in order:
+                checkout, exes = builds[kind]
+                run(exes, home, f"{kind}{r}", args.filter, checkout / "crates" / "pendulab-core")
+                per_round[kind].append(medians(home, f"{kind}{r}"))
+            loads.append(os.getloadavg()[0])
             print(f"round {r + 1}/{args.rounds} done ({time.perf_counter() - t0:.0f} s)", flush=True)
-        best: dict[str, dict[str, float]] = {"reference": {}, "portable": {}}
-        for kind in best:
-            for r in range(args.rounds):
-                for k, v in medians(home, f"{kind}{r}").items():
-                    best[kind][k] = min(v, best[kind].get(k, float("inf")))
     what = f"`{ref_dir}`" if args.reference else "this checkout with `-C target-cpu=native`"
+    others = [k for k in kinds if k != "reference"]
+    head = ["benchmark", *kinds]
+    for k in others:
+        head.append(f"{k} / reference (per-round range)")
     lines = [
-        f"Reference: {what}; portable: this checkout's default build. Best median of {args.rounds} "
-        f"alternating rounds, load average {os.getloadavg()[0]:.1f} at the end.",
+        f"Reference: {what}; "
+        + (f"before: `{builds['before'][0]}` (its default build); " if "before" in builds else "")
+        + f"portable: this checkout's default build. Median over {args.rounds} alternating rounds "
+        "(criterion's median per round; ± the spread max/min − 1 of the rounds); load average "
+        f"{min(loads):.1f}–{max(loads):.1f} (1-min average at the start and after each round).",
         "",
-        "| benchmark | reference | portable | portable / reference |",
-        "|---|---|---|---|",
+        "| " + " | ".join(head) + " |",
+        "|" + "---|" * len(head),
     ]
-    for k in sorted(set(best["reference"]) | set(best["portable"])):
-        a, b = best["reference"].get(k), best["portable"].get(k)
-        ratio = f"{b / a:.3f}" if a is not None and b is not None else "—"
-        lines.append(f"| `{k}` | {fmt(a)} | {fmt(b)} | {ratio} |")
+    ids = sorted(set().union(*(m for rounds in per_round.values() for m in rounds)))
+    for k in ids:
+        cells = [f"`{k}`"]
+        med: dict[str, float | None] = {}
+        for kind in kinds:
+            xs = [m[k] for m in per_round[kind] if k in m]
+            med[kind] = statistics.median(xs) if xs else None
+            spread = f" ±{(max(xs) / min(xs) - 1) * 100:.0f} %" if len(xs) > 1 else ""
+            cells.append(fmt(med[kind]) + (spread if xs else ""))
+        for kind in others:
+            a, b = med["reference"], med[kind]
+            if a is None or b is None:
+                cells.append("—")
+                continue
+            rr = [
+                m2[k] / m1[k]
+                for m1, m2 in zip(per_round["reference"], per_round[kind], strict=True)
+                if k in m1 and k in m2
+            ]
+            cells.append(f"{b / a:.3f} ({min(rr):.2f}–{max(rr):.2f})")
+        lines.append("| " + " | ".join(cells) + " |")
     table = "\n".join(lines)
     print(table)
     if args.markdown:

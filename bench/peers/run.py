@@ -582,6 +582,8 @@ def step_rates(cases: list[Case], quick: bool, available: dict[str, str | None])
         n,
         lambda: pl.simulate(p, s0, n * 1e-3, method="rattle", dt=1e-3, save_every=10**9, progress=False),
     )
+    sol, times = pl.exact(p, s0), np.linspace(0.0, T_END, n // 10)
+    put("pendulab exact (states at many times)", len(times), lambda: sol.state(times))
     if available.get("C") is None:
         lib = c_library()
 
@@ -1110,6 +1112,9 @@ def main() -> None:
     ap.add_argument(
         "--out", type=Path, help="results JSON (default results/peers.json, quick: peers_quick.json)"
     )
+    ap.add_argument(
+        "--no-report", action="store_true", help="write the results JSON only (no CSV, plot or docs)"
+    )
     ap.add_argument("--ensemble-worker", nargs=5, type=int, help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.ensemble_worker:
@@ -1184,7 +1189,7 @@ def main() -> None:
         "runs": [r.as_dict() for r in runs],
     }  # fmt: skip
     out.write_text(json.dumps(payload, indent=1, default=str) + "\n")
-    if not args.quick:
+    if not args.quick and not args.no_report:
         import csv
 
         with (RESULTS / "peers_runs.csv").open("w", newline="") as fh:
@@ -1194,7 +1199,7 @@ def main() -> None:
             for r in runs:
                 w.writerow({k: (json.dumps(v) if isinstance(v, dict) else v) for k, v in r.as_dict().items()})
         plot(runs, cases, PLOT)
-    docs = args.docs or (None if args.quick else DOCS)
+    docs = args.docs or (None if args.quick or args.no_report else DOCS)
     if docs is not None:
         body = markdown(runs, cases, rates, ens, rmap, tgt, meta)
         docs.write_text(hz.replace_between_markers(docs.read_text(), body))

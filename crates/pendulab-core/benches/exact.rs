@@ -1,10 +1,12 @@
 //! Cost of the exact solution (docs/theory.md §4): set-up per trajectory, one state at t = 1 s and at
-//! t = 10⁶ s (the same by construction), and 10⁵ states for an array of times (parallel).
+//! t = 10⁶ s (the same by construction), 10⁵ states for an array of times (parallel), and 10³ states
+//! (one dispatched batch on one thread), also restricted to the baseline instruction set
+//! (`isa::set_baseline_only`: what a CPU without AVX2/FMA runs).
 //! Rosette start: l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use pendulab_core::exact::ExactSolution;
-use pendulab_core::{IdealPendulum, Model, State};
+use pendulab_core::{isa, IdealPendulum, Model, State};
 
 fn bench(c: &mut Criterion) {
     let m = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
@@ -18,6 +20,16 @@ fn bench(c: &mut Criterion) {
     g.throughput(Throughput::Elements(times.len() as u64));
     g.sample_size(20);
     g.bench_function("states_at_1e5", |b| b.iter(|| sol.states_at(black_box(&times)).unwrap()));
+    g.finish();
+    let mut g = c.benchmark_group("exact_batch");
+    g.throughput(Throughput::Elements(1000));
+    for (name, baseline) in [("states_at_1e3", false), ("states_at_1e3_baseline_level", true)] {
+        g.bench_function(name, |b| {
+            isa::set_baseline_only(baseline);
+            b.iter(|| sol.states_at(black_box(&times[..1000])).unwrap());
+            isa::set_baseline_only(false);
+        });
+    }
     g.finish();
 }
 

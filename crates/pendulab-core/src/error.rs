@@ -205,6 +205,7 @@ pub fn require_non_negative(name: &'static str, value: f64, allowed: &'static st
 }
 
 /// Checks that `value` is finite.
+#[inline(always)]
 pub fn require_finite(name: &'static str, value: f64, allowed: &'static str) -> Result<f64> {
     if value.is_finite() {
         Ok(value)

@@ -2,9 +2,12 @@
 //!
 //! The crate is compiled for the baseline of its target (x86-64: SSE2; aarch64: NEON, FMA), so that
 //! one build runs on every CPU of that architecture. The loops where the time goes — the step and
-//! step-loop bodies of [`crate::Stepper`] (every method), the ensemble blocks of [`crate::ensemble`]
-//! and the string stepper's steps — run their body through [`fastest`], which compiles it once more for each
-//! of these x86-64 levels and picks the best one the CPU has, once per process:
+//! step-loop bodies of [`crate::Stepper`] (every method; DOP853's stages and dense output included),
+//! the ensemble blocks of [`crate::ensemble`], the string stepper's steps, and the exact solution's
+//! states ([`crate::exact::ExactSolution::state_and_azimuth`] and the batches of `states_at`, with the
+//! Jacobi functions, F, Π and Carlson's R_F, R_J, R_C inlined) — run their body through [`fastest`],
+//! which compiles it once more for each of these x86-64 levels and picks the best one the CPU has,
+//! once per process:
 //!
 //! | level | instructions | CPUs (roughly) |
 //! |---|---|---|
@@ -18,9 +21,15 @@
 //! one instruction where the level has FMA (x86-64-v3 and up, every aarch64), the C library's `fma`
 //! elsewhere (exact, but much slower: the baseline level is a correct fallback, not a fast one).
 //! Wider vectors only change how many lanes one instruction handles, never an operation's rounding.
-//! So a trajectory gets the same bits at every level, the ensemble and the single-trajectory path
-//! agree bit for bit whichever level each ran at, and `tests/isa.rs` checks both against
-//! [`set_baseline_only`].
+//! `f64::round` (a C library call at the SSE2 baseline) is written as [`round`], the same function in
+//! a few additions and comparisons. The C library's `sin`, `atan2`, … are called at every level
+//! alike. So a trajectory or an exact state gets the same bits at every level, the ensemble and the
+//! single-trajectory path agree bit for bit whichever level each ran at, and `tests/isa.rs` checks
+//! all of them against [`set_baseline_only`].
+//!
+//! On other architectures (aarch64: FMA is part of the baseline) the targets above do not apply and
+//! [`fastest`] runs its work as compiled; nothing here is x86-specific outside
+//! `cfg(target_arch = "x86_64")` (`make check-aarch64` type-checks the crate for aarch64).
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
@@ -48,6 +57,28 @@ pub fn fastest<R>(work: impl FnOnce() -> R) -> R {
 ))]
 fn on_best_level<R, F: FnOnce() -> R>(work: F) -> R {
     work()
+}
+
+/// x rounded to the nearest integer, halfway cases away from zero: the same number as
+/// [`f64::round`] for every input (±0, halves, |x| ≥ 2⁵², ±∞ and NaN included), but written with
+/// additions and comparisons only, so that it stays a few inline instructions at the x86-64
+/// baseline, where `f64::round` is a call into the C library (SSE2 has no rounding instruction;
+/// SSE4.1's `roundsd` is what the dispatched levels would use).
+///
+/// For |x| < 2⁵²: (|x| + 2⁵²) − 2⁵² is |x| rounded to an integer (ties to even, both operations
+/// exact but the first's rounding), one less where that went up gives ⌊|x|⌋, and |x| − ⌊|x|⌋ is exact,
+/// so the half-way test is exact.
+#[inline(always)]
+pub fn round(x: f64) -> f64 {
+    const TWO_52: f64 = 4503599627370496.0;
+    let a = x.abs();
+    if a >= TWO_52 || a.is_nan() {
+        return x; // already an integer, or ±∞, or NaN
+    }
+    let r = (a + TWO_52) - TWO_52;
+    let floor = if r > a { r - 1.0 } else { r };
+    let up = if a - floor >= 0.5 { floor + 1.0 } else { floor };
+    up.copysign(x)
 }
 
 /// The level [`fastest`] runs at on this CPU: `"x86-64-v4"`, `"x86-64-v3"` or `"baseline"`.
@@ -85,4 +116,40 @@ pub fn selected() -> &'static str {
 /// calls that start after it.
 pub fn set_baseline_only(on: bool) {
     BASELINE_ONLY.store(on, Ordering::Relaxed);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::round;
+
+    /// `round` is `f64::round` bit for bit: halves on both sides of every sign, the neighbours of
+    /// halves, signed zeros, the ends of the exact range 2⁵², infinities, NaN, and a sweep of
+    /// magnitudes from 1e-300 to 1e300.
+    #[test]
+    fn round_is_f64_round_bit_for_bit() {
+        let mut xs = vec![0.0, -0.0, 0.5, -0.5, 1.5, 2.5, -2.5, 0.49999999999999994, 4503599627370495.5];
+        xs.extend([4503599627370496.0, 4503599627370497.0, 9007199254740993.0, 1e300, f64::MAX]);
+        xs.extend([f64::MIN_POSITIVE, 5e-324, f64::INFINITY, f64::NAN, 1.0 - f64::EPSILON / 2.0]);
+        for k in -2000..2000 {
+            let h = k as f64 + 0.5;
+            xs.extend([
+                h,
+                h.next_up(),
+                h.next_down(),
+                k as f64,
+                (k as f64).next_up(),
+                (k as f64).next_down(),
+            ]);
+        }
+        let mut x = 1e-300f64;
+        while x < 1e300 {
+            xs.extend([x, -x, x * 0.7371, -x * 1.3333]);
+            x *= 1.0137;
+        }
+        for &x in &xs {
+            for x in [x, -x] {
+                assert_eq!(round(x).to_bits(), x.round().to_bits(), "round({x:e})");
+            }
+        }
+    }
 }

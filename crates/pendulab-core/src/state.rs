@@ -175,7 +175,7 @@ impl State {
 
 /// The projection onto TS² used by [`State::projected`] and by integrators that project after
 /// each step: x ← l x/|x|, v ← v − (x·v/l²) x. `None` when x = 0 or non-finite.
-#[inline]
+#[inline(always)]
 pub fn project_onto_tangent_bundle(length: f64, x: DVec3, v: DVec3) -> Option<State> {
     let r = x.length();
     if !(r > 0.0 && r.is_finite()) {

@@ -239,8 +239,10 @@ impl<M: Model> Stepper<M> {
             self.stats.rhs_evals += taken * s.evals_per_step();
             result
         }, {
+            // dop853: its step is inlined into this dispatched body (not `self.step()`, which
+            // would dispatch again and keep the stages out of line)
             for _ in 0..n {
-                self.step()?;
+                self.step_towards_here(f64::INFINITY)?;
             }
             Ok(())
         })
@@ -283,7 +285,14 @@ impl<M: Model> Stepper<M> {
         match &mut self.scheme {
             Scheme::Dop853(d) => {
                 let (a, b) = d.last_step_interval();
-                (a <= t_out && t_out <= b).then(|| d.dense_output(&self.model, t_out))
+                let model = &self.model;
+                // the interpolant's stages compiled for the CPU's best instruction set (crate::isa)
+                (a <= t_out && t_out <= b).then(|| {
+                    crate::isa::fastest(
+                        #[inline(always)]
+                        || d.dense_output(model, t_out),
+                    )
+                })
             }
             _ => None,
         }

@@ -1,14 +1,16 @@
 //! The instruction-set levels of `pendulab_core::isa` give the same numbers bit for bit: every
-//! method through the stepper (loop and single steps), the ensemble kernel (with damping and a
-//! summary), and the string stepper, once at the best level of this CPU and once restricted to the
-//! baseline (the plain fallback an older CPU runs). One test in its own binary, because the
+//! method through the stepper (loop and single steps, DOP853's dense output), the ensemble kernel
+//! (with damping and a summary), the string stepper, and the exact solution of every kind (single
+//! states and batches, the parallel path included), once at the best level of this CPU and once
+//! restricted to the baseline (the plain fallback an older CPU runs). One test in its own binary, because the
 //! restriction is process-wide. SI units; rosette-like starts.
 
 use pendulab_core::ensemble::{run_with, EnsembleSave, Extras, LANES};
+use pendulab_core::exact::ExactSolution;
 use pendulab_core::isa;
 use pendulab_core::model::{AnyModel, StringPendulum};
 use pendulab_core::string_run::StringStepper;
-use pendulab_core::{IdealPendulum, Method, Params, SolveOptions, State, Stepper};
+use pendulab_core::{DVec3, IdealPendulum, Method, Params, SolveOptions, State, Stepper};
 use std::sync::atomic::{AtomicBool, AtomicU64};
 
 fn start(params: &Params, k: usize) -> State {
@@ -31,6 +33,13 @@ fn everything() -> Vec<u64> {
         push(&mut out, a.state());
         a.step_to(a.t() + 0.0123).unwrap();
         push(&mut out, a.state());
+        if method == Method::Dop853 {
+            let (t0, t1) = (a.t(), {
+                a.step().unwrap();
+                a.t()
+            });
+            push(&mut out, &a.dense_output(0.7 * t0 + 0.3 * t1).unwrap());
+        }
         if method != Method::Rk4Angles {
             let mut b = Stepper::new(damped, 0.0, start(&params, 2), &opts).unwrap();
             b.step_n(500).unwrap();
@@ -54,7 +63,39 @@ fn everything() -> Vec<u64> {
     let mut st = StringStepper::new(string, 0.0, start(&params, 6), Method::Rattle, 1e-3).unwrap();
     st.step(3000).unwrap();
     push(&mut out, &st.state());
+    exact_states(&mut out);
     out
+}
+
+/// Exact states of every kind of motion (T-4.6) at single times and in batches (serial and
+/// parallel), as bits: positions, velocities and azimuths.
+fn exact_states(out: &mut Vec<u64>) {
+    let params = Params::new(1.3, 1.0, 9.81).unwrap();
+    let w0 = params.omega0();
+    let x = |theta: f64| DVec3::new(1.3 * theta.sin(), 0.0, -1.3 * theta.cos());
+    let starts = [
+        State { x: x(1.0), v: DVec3::new(0.3, 2.1, 0.4) }, // generic
+        State { x: x(2.4), v: DVec3::new(0.0, 0.9, 0.0) }, // generic, above the equator
+        State { x: x(0.7), v: DVec3::new(0.0, 1.3 * w0 * 0.7f64.sin() * 1.2, 0.0) }, // near conical
+        State { x: x(0.9), v: DVec3::new(0.5 * 0.9f64.cos(), 0.0, 0.5 * 0.9f64.sin()) }, // planar
+        State { x: x(0.2), v: DVec3::new(9.0 * 0.2f64.cos(), 0.0, 9.0 * 0.2f64.sin()) }, // over the top
+        State { x: x(1e-3), v: DVec3::new(1e-6, 0.0, 0.0) }, // small swing
+        State { x: DVec3::new(0.0, 0.0, -1.3), v: DVec3::new(2.0 * 1.3 * w0, 0.0, 0.0) }, // separatrix
+    ];
+    let times: Vec<f64> = (0..5000).map(|k| -37.0 + 0.0173 * k as f64 + 1e-3 * (k % 7) as f64).collect();
+    for s0 in starts {
+        let s0 = State::projected(&params, s0.x, s0.v).unwrap().0;
+        let sol = ExactSolution::new(&params, &s0).unwrap();
+        let mut push = |(s, phi): (State, f64)| {
+            out.extend([s.x, s.v].iter().flat_map(|w| w.to_array()).map(f64::to_bits));
+            out.push(phi.to_bits());
+        };
+        for t in [0.0, 0.31, -2.7, 1e3, 1e7] {
+            push(sol.state_and_azimuth(t).unwrap());
+        }
+        sol.states_at(&times[..100]).unwrap().into_iter().for_each(&mut push);
+        sol.states_at(&times).unwrap().into_iter().for_each(&mut push);
+    }
 }
 
 #[test]

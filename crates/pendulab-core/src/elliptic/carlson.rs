@@ -38,6 +38,7 @@ const RDJ_C: f64 = 574.7005687343988;
 const MAX_STEPS: usize = 64;
 
 /// R_F(x, y, z).
+#[inline(always)]
 pub(crate) fn rf(x: f64, y: f64, z: f64) -> f64 {
     let a0 = (x + y + z) / 3.0;
     let q = RF_C * (a0 - x).abs().max((a0 - y).abs()).max((a0 - z).abs());
@@ -66,7 +67,7 @@ pub(crate) fn rf(x: f64, y: f64, z: f64) -> f64 {
 }
 
 /// The degree-5 series shared by R_D and R_J, in E₂ … E₅.
-#[inline]
+#[inline(always)]
 fn series5(e2: f64, e3: f64, e4: f64, e5: f64) -> f64 {
     1.0 - 3.0 * e2 / 14.0 + e3 / 6.0 + 9.0 * e2 * e2 / 88.0 - 3.0 * e4 / 22.0 - 9.0 * e2 * e3 / 52.0
         + 3.0 * e5 / 26.0
@@ -104,6 +105,7 @@ pub(crate) fn rd(x: f64, y: f64, z: f64) -> f64 {
 }
 
 /// R_J(x, y, z, p) for p > 0.
+#[inline(always)]
 pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
     let a0 = (x + y + z + 2.0 * p) / 5.0;
     let delta = (p - x) * (p - y) * (p - z);
@@ -146,7 +148,7 @@ pub(crate) fn rj(x: f64, y: f64, z: f64, p: f64) -> f64 {
 /// keeps full accuracy when b ≪ 1 (p ≪ x, y, z in R_J), where 1 + e would cancel.
 /// 1 + e_m = 2√p_m(p_m + λ_m)/d_m follows from expanding Π(√p ± √x_i) (cf. Boost.Math's
 /// ellint_rj, which uses the same identity).
-#[inline]
+#[inline(always)]
 fn rc1(e: f64, b: f64) -> f64 {
     if e > 0.0 {
         let t = e.sqrt();
@@ -164,7 +166,7 @@ fn rc1(e: f64, b: f64) -> f64 {
 
 /// R_C(x, y) for 0 ≤ x < y, given the gap y − x > 0 separately (so that the caller can form it
 /// without cancellation): atan(√((y−x)/x))/√(y−x) = atan2(√(y−x), √x)/√(y−x) (DLMF 19.2.18).
-#[inline]
+#[inline(always)]
 pub(crate) fn rc_gap(x: f64, gap: f64) -> f64 {
     let t = gap.sqrt();
     if t == 0.0 {

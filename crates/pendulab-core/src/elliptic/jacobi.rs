@@ -128,16 +128,19 @@ impl JacobiParam {
         self.k.hi
     }
 
-    /// sn, cn, dn and am at u.
+    /// sn, cn, dn and am at u. Inlined into its caller with the inversion (so that a caller
+    /// dispatched by [`crate::isa`] gets it compiled for its instruction set).
     ///
     /// # Errors
     /// [`crate::Error::InvalidParameter`] if u is not finite.
+    #[inline(always)]
     pub fn eval(&self, u: f64) -> Result<Jacobi> {
         let u = require_finite("u", u, "a finite argument u (dimensionless)")?;
         Ok(self.eval_finite(u))
     }
 
     /// [`Self::eval`] for finite u.
+    #[inline(always)]
     fn eval_finite(&self, u: f64) -> Jacobi {
         let m = self.p.m;
         if m == 0.0 {
@@ -149,14 +152,10 @@ impl JacobiParam {
             return Jacobi { sn: u.tanh(), cn: sech, dn: sech, am: u.sinh().atan() };
         }
         if u.abs() >= HUGE_U {
-            let four_k = 4.0 * self.k.hi;
-            let rest = u % four_k; // exact
-            let mut v = self.eval_finite(rest);
-            v.am += (u - rest) / (2.0 * self.k.hi) * PI;
-            return v;
+            return self.eval_huge(u);
         }
         let two_k = 2.0 * self.k.hi;
-        let j = (u / two_k).round();
+        let j = crate::isa::round(u / two_k);
         let x = if j == 0.0 {
             u
         } else {
@@ -181,7 +180,19 @@ impl JacobiParam {
         Jacobi { sn, cn, dn, am }
     }
 
+    /// [`Self::eval_finite`] for |u| ≥ 2⁶⁰: u is first reduced exactly modulo the float 4K.
+    #[cold]
+    #[inline(never)]
+    fn eval_huge(&self, u: f64) -> Jacobi {
+        let four_k = 4.0 * self.k.hi;
+        let rest = u % four_k; // exact
+        let mut v = self.eval_finite(rest);
+        v.am += (u - rest) / (2.0 * self.k.hi) * PI;
+        v
+    }
+
     /// φ ∈ [0, ~π/4] with F(φ|m) = x, for 0 ≤ x ≤ F(π/4|m).
+    #[inline(always)]
     fn amplitude(&self, x: f64) -> f64 {
         let m = self.p.m;
         let x2 = x * x;
@@ -202,6 +213,7 @@ impl JacobiParam {
     /// χ ∈ [~0, π/4] with F(π/2 − χ|m) = x, i.e. G(χ) = w = K − x (w may be slightly negative
     /// when rounding puts x just beyond K; then χ < 0, as it should). The residual is taken
     /// from whichever of x, w is smaller, so that its absolute error is a few ulp of min(x, w).
+    #[inline(always)]
     fn co_amplitude(&self, x: f64, w: f64) -> f64 {
         let m1 = self.p.m1;
         let near_k = w < x;

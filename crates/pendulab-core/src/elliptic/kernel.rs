@@ -61,7 +61,7 @@ impl Param {
     }
 
     /// Δ² = 1 − m s² = c² + m′ s², whichever form has no cancellation.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn delta2(&self, s: f64, c: f64) -> f64 {
         let t = self.m * s * s;
         if t <= 0.5 {
@@ -76,6 +76,7 @@ impl Param {
 const N_TRANSFORM: f64 = -0.5;
 
 /// F(θ|m) for s = sin θ, c = cos θ ≥ 0.
+#[inline(always)]
 pub(crate) fn f_first(p: Param, s: f64, c: f64) -> f64 {
     if s == 0.0 {
         return 0.0;
@@ -102,6 +103,7 @@ pub(crate) fn pi_first(n: f64, p: Param, s: f64, c: f64) -> f64 {
 }
 
 /// [`pi_first`] with the complement n′ = 1 − n given to full relative accuracy.
+#[inline(always)]
 pub(crate) fn pi_first_c(n: f64, n1: f64, p: Param, s: f64, c: f64) -> f64 {
     if s == 0.0 {
         return 0.0;

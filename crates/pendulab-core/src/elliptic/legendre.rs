@@ -37,16 +37,18 @@ const P3: f64 = 1.1442377452219664e-17;
 const PHI_ALLOWED: &str = "a finite amplitude φ [rad]";
 
 /// φ = jπ + r with |r| ≤ π/2 (up to rounding); j = 0 and r = φ when |φ| ≤ π/2.
+#[inline(always)]
 pub(crate) fn reduce_pi(phi: f64) -> (f64, f64) {
     if phi.abs() <= FRAC_PI_2 {
         return (0.0, phi);
     }
-    let j = (phi / PI).round();
+    let j = crate::isa::round(phi / PI);
     (j, ((phi - j * P1) - j * P2) - j * P3)
 }
 
 /// The continuation of `first` (an integral over [0, θ] on the first quarter) to any φ, given
 /// the complete integral.
+#[inline(always)]
 fn continued(phi: f64, complete: Dd, first: impl Fn(f64, f64) -> f64) -> f64 {
     let (j, r) = reduce_pi(phi);
     let s = r.abs().sin();
@@ -163,7 +165,8 @@ pub fn ellipf_c(phi: f64, p: Param) -> Result<f64> {
 ///
 /// # Errors
 /// [`crate::Error::InvalidParameter`] unless φ is finite, n < 1, n′ > 0 and n + n′ = 1 within
-/// 4 ulp of max(1, |n|).
+/// 4 ulp of max(1, |n|). Inlined into its caller (the exact solution's dispatched loops, [`crate::isa`]).
+#[inline(always)]
 pub fn ellippi_inc_c(n: f64, n1: f64, phi: f64, p: Param) -> Result<f64> {
     let (n, n1) = super::check_n_pair(n, n1)?;
     let phi = require_finite("phi", phi, PHI_ALLOWED)?;

@@ -79,6 +79,7 @@ pub(crate) fn check_m(m: f64) -> Result<f64> {
 
 /// Checks n < 1 with its complement n′ = 1 − n > 0 consistent to 4 ulp of max(1, |n|).
 /// (n may round to 1 when n′ is tiny; n′ > 0 keeps the integral finite.)
+#[inline(always)]
 pub(crate) fn check_n_pair(n: f64, n1: f64) -> Result<(f64, f64)> {
     let n = if n == 1.0 { n } else { check_n(n)? };
     if n1 > 0.0 && n1.is_finite() && (n + n1 - 1.0).abs() <= 4.0 * f64::EPSILON * n.abs().max(1.0) {
@@ -93,6 +94,7 @@ pub(crate) fn check_n_pair(n: f64, n1: f64) -> Result<(f64, f64)> {
 }
 
 /// Checks that n is finite and n < 1 (rejects NaN).
+#[inline(always)]
 pub(crate) fn check_n(n: f64) -> Result<f64> {
     if n.is_finite() && n < 1.0 {
         Ok(n)

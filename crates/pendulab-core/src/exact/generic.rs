@@ -133,17 +133,20 @@ impl Generic {
     }
 
     /// Φ of T-4.4 at amplitude `am` ∈ [−π/2, π/2].
+    #[inline(always)]
     fn phi_partial(&self, am: f64) -> Result<f64> {
         Ok(0.5 * self.start.j / self.lambda
             * (ellippi_inc_c(self.n_plus, self.n1_plus, am, self.param)? / self.one_minus_u1
                 + ellippi_inc_c(self.n_minus, self.n1_minus, am, self.param)? / self.one_plus_u1))
     }
 
-    /// The state at dimensionless time τ after the start.
+    /// The state at dimensionless time τ after the start (inlined into the dispatched callers of
+    /// [`super::ExactSolution`]).
+    #[inline(always)]
     pub fn at(&self, tau: f64) -> Result<UnitState> {
         let s = self.lambda * tau + self.s0;
         let period = 2.0 * self.k;
-        let n = (s / period).round();
+        let n = crate::isa::round(s / period);
         let r = (-period).mul_add(n, s);
         let jf = self.jp.eval(r)?;
         let (sn, cn, dn) = (jf.sn, jf.cn, jf.dn);

@@ -76,6 +76,9 @@ impl Kind {
     }
 }
 
+/// Times per batch of [`ExactSolution::states_at`] (one dispatched loop, one rayon task).
+pub const BATCH: usize = 1024;
+
 /// u₂ − u₁ below this counts as conical (the label only; the formulas are the same).
 const CONICAL_WIDTH: f64 = 1e-12;
 
@@ -197,6 +200,17 @@ impl ExactSolution {
 
     /// The state at `t` [s] and the continuous azimuth φ(t) [rad].
     pub fn state_and_azimuth(&self, t: f64) -> Result<(State, f64)> {
+        // compiled for the CPU's best instruction set (crate::isa; the numbers are the same at every level)
+        crate::isa::fastest(
+            #[inline(always)]
+            || self.state_and_azimuth_here(t),
+        )
+    }
+
+    /// [`Self::state_and_azimuth`], inlined into the dispatched caller together with everything it
+    /// calls on the way (the Jacobi functions, F and Π, Carlson's R_F, R_J, R_C).
+    #[inline(always)]
+    fn state_and_azimuth_here(&self, t: f64) -> Result<(State, f64)> {
         if !t.is_finite() {
             return Err(Error::InvalidParameter { name: "t", value: t, allowed: "a finite time in s" });
         }
@@ -216,16 +230,28 @@ impl ExactSolution {
     }
 
     /// States and continuous azimuths at many times [s]; long arrays are split over all cores
-    /// (feature `parallel`, on by default). Fails on the first non-finite time.
+    /// (feature `parallel`, on by default) in batches of [`BATCH`] times, each batch's loop compiled
+    /// for the CPU's best instruction set ([`crate::isa`]). Fails on a non-finite time.
     pub fn states_at(&self, t: &[f64]) -> Result<Vec<(State, f64)>> {
         #[cfg(feature = "parallel")]
-        if t.len() >= 4096 {
+        if t.len() >= 4 * BATCH {
             use rayon::prelude::*;
-            return t.par_iter().with_min_len(1024).map(|&ti| self.state_and_azimuth(ti)).collect();
+            let parts: Vec<Vec<(State, f64)>> =
+                t.par_chunks(BATCH).map(|c| self.batch(c)).collect::<Result<_>>()?;
+            return Ok(parts.concat());
         }
-        t.iter().map(|&ti| self.state_and_azimuth(ti)).collect()
+        self.batch(t)
     }
 
+    /// The states at the times `t` [s], in one dispatched loop.
+    fn batch(&self, t: &[f64]) -> Result<Vec<(State, f64)>> {
+        crate::isa::fastest(
+            #[inline(always)]
+            || t.iter().map(|&ti| self.state_and_azimuth_here(ti)).collect(),
+        )
+    }
+
+    #[inline(always)]
     fn to_si(&self, u: UnitState, l: f64) -> (State, f64) {
         let lw = l * self.omega0;
         let x = DVec3::new(u.x[0] * l, u.x[1] * l, self.mirror * u.x[2] * l);

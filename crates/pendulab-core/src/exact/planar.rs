@@ -99,6 +99,7 @@ impl Planar {
     }
 
     /// Period of the argument s: 4K (libration), 2K (rotation), ∞ (separatrix).
+    #[inline(always)]
     fn period_s(&self) -> f64 {
         match self.motion {
             PlanarMotion::Libration => 4.0 * self.k,
@@ -112,11 +113,13 @@ impl Planar {
         self.period_s() / self.lambda
     }
 
-    /// The state at dimensionless time τ after the start.
+    /// The state at dimensionless time τ after the start (inlined into the dispatched callers of
+    /// [`super::ExactSolution`]).
+    #[inline(always)]
     pub fn at(&self, tau: f64) -> Result<UnitState> {
         let s = self.lambda * tau + self.s0;
         let period = self.period_s();
-        let r = if period.is_finite() { (-period).mul_add((s / period).round(), s) } else { s };
+        let r = if period.is_finite() { (-period).mul_add(crate::isa::round(s / period), s) } else { s };
         let jf = self.jp.eval(r)?;
         let (sn, cn, dn) = (jf.sn, jf.cn, jf.dn);
         let (h, u, h_tau, u_tau) = match self.motion {

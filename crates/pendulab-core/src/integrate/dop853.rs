@@ -46,20 +46,20 @@ struct Y6 {
 }
 
 impl Y6 {
-    #[inline]
+    #[inline(always)]
     fn axpy(self, a: f64, k: Y6) -> Y6 {
         Y6 { x: self.x + k.x * a, v: self.v + k.v * a }
     }
-    #[inline]
+    #[inline(always)]
     fn sub(self, o: Y6) -> Y6 {
         Y6 { x: self.x - o.x, v: self.v - o.v }
     }
-    #[inline]
+    #[inline(always)]
     fn scale(self, a: f64) -> Y6 {
         Y6 { x: self.x * a, v: self.v * a }
     }
     /// Σ (yᵢ/scaleᵢ)² over the six components.
-    #[inline]
+    #[inline(always)]
     fn scaled_norm2(self, scale: Y6) -> f64 {
         // A zero weight (atol = 0 and a component exactly 0) counts a zero as 0 and anything else as ∞.
         let q = |d: f64, s: f64| {
@@ -79,19 +79,20 @@ impl Y6 {
 }
 
 impl From<State> for Y6 {
+    #[inline(always)]
     fn from(s: State) -> Self {
         Y6 { x: s.x, v: s.v }
     }
 }
 
 /// The right-hand side of T-2.4: (ẋ, v̇).
-#[inline]
+#[inline(always)]
 fn rhs<M: Model>(model: &M, t: f64, y: Y6) -> Y6 {
     Y6 { x: y.v, v: acceleration(model, t, y.x, y.v) }
 }
 
 /// Error weights atol + rtol·max(|a|, |b|), componentwise.
-#[inline]
+#[inline(always)]
 fn error_scale(atol: f64, rtol: f64, a: Y6, b: Y6) -> Y6 {
     let s = |p: DVec3, q: DVec3| DVec3::splat(atol) + p.abs().max(q.abs()) * rtol;
     Y6 { x: s(a.x, b.x), v: s(a.v, b.v) }
@@ -230,6 +231,11 @@ impl Dop853 {
     /// The method ([`Dop853::attempt`]: stages, solution, error estimate; [`Dop853::accept`]:
     /// projection and the data of the step) is separate from the step-size controller
     /// ([`StepControl`]: the trial step, the factors after acceptance and rejection).
+    ///
+    /// Inlined (with its stages) into its caller, so that the stages are compiled for the
+    /// instruction set the caller was dispatched to ([`crate::Stepper`] runs it inside
+    /// [`crate::isa::fastest`]).
+    #[inline(always)]
     pub fn step<M: Model>(
         &mut self,
         model: &M,
@@ -365,6 +371,8 @@ impl Dop853 {
 
     /// The state at `t_out` ∈ [t₀, t₁] [s] of the last accepted step, from the order-7 interpolant
     /// (projected onto TS² when projection is on). Costs three evaluations on the first call per step.
+    /// Inlined like [`Dop853::step`] ([`crate::Stepper::dense_output`] dispatches it).
+    #[inline(always)]
     pub fn dense_output<M: Model>(&mut self, model: &M, t_out: f64) -> State {
         let h = self.h_old;
         // The ends exactly, not up to the interpolant's round-off.
@@ -397,6 +405,7 @@ impl Dop853 {
     }
 
     /// Extra stages 13‥15 and the coefficients F₀‥F₆ (Hairer's `contd8`).
+    #[inline(always)]
     fn interpolant<M: Model>(&mut self, model: &M) -> [Y6; 7] {
         let (h, t0, y0) = (self.h_old, self.t_old, self.y_old);
         for i in STAGES + 1..STAGES_DENSE {
@@ -431,6 +440,7 @@ impl Dop853 {
 /// [J/kg] and (x × v)·e₃ = `j3` [m²/s] (each only when given), by two Gauss–Newton steps of the
 /// minimal-norm correction. Where v ∥ e₃ × x (the turning points of z) the two conditions are
 /// dependent and only J₃ is imposed there.
+#[inline(always)]
 pub fn project_invariants(x: DVec3, v: DVec3, kinetic: Option<f64>, j3: Option<f64>) -> DVec3 {
     let w = DVec3::new(-x.y, x.x, 0.0);
     let mut v = v;
