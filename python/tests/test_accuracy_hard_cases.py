@@ -9,7 +9,8 @@ The true error is |x − x_golden| [m] at the stored times; the float64 floor is
   (DOP853 at rtol 1e-12 and RATTLE8 at dt = 0.05/ω, ω the motion's fastest rate);
 - ``accuracy=1e-8`` is met (true error ≤ 1e-8 l at every stored time) in at least 95 % of the cases.
 
-CI runs t ≤ 100 s (about 40 s of CPU); ``PENDULAB_LONG=1`` adds 10³ and 10⁴ s (many minutes).
+CI runs t ≤ 100 s (about 40 s of CPU); ``PENDULAB_LONG=1`` adds 10³ and 10⁴ s (about 9 min of CPU,
+most of it in ``accuracy=`` to 10⁴ s; its figures are in docs/integrators.md).
 """
 
 from __future__ import annotations
