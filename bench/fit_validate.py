@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""Are ``pl.fit``'s error bars honest? Synthetic data from known pendulums with Gaussian noise, many
-seeded trials per data kind: the fraction of trials whose true value lies within 2 standard errors
-(95.4 % for honest errors; the target is 90–98 %), and the largest relative error without noise
-(target ≤ 1e-8). Prints a Markdown table (for docs/fit.md) and writes it to
+"""Are ``pl.fit``'s error bars honest? Synthetic data from known pendulums with Gaussian noise, 300
+seeded trials per data kind by default: the fraction of trials whose true value lies within 2
+standard errors (95.4 % for honest errors; the target is 90–98 %), and the largest relative error
+without noise (target ≤ 1e-8). Prints a Markdown table (for docs/fit.md) and writes it to
 bench/results/fit_validate.md. Usage: ``make validate-fit`` or
 ``.venv/bin/python bench/fit_validate.py [--trials N] [--kinds a,b]``. SI units.
 """
@@ -149,7 +149,7 @@ def run_case(case: Case, trials: int) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--trials", type=int, default=100)
+    ap.add_argument("--trials", type=int, default=300)
     ap.add_argument("--kinds", default=None, help="comma-separated case numbers (1-based) to run")
     args = ap.parse_args()
     chosen = cases()
