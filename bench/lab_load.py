@@ -14,12 +14,16 @@ Three phases, in one run on this machine:
 
 For each phase: frames/s per client (min, median), the inter-frame gaps pooled over the clients
 (p50, p99, max) [ms], the server's CPU [% of one core] and resident memory (largest sampled) [MiB],
-and the ratio of the median frames/s to the baseline's. Targets of issue 12 on a 2-core machine when
+the ratio of the median frames/s to the baseline's, and the share of the normal clients' frame records
+that carry a known error estimate (``error_x`` ≥ 0; −1 is "estimate paused", docs/web.md). With
+``--model NAME`` every normal client first switches to that model (e.g. ``damped``: its error is
+estimated by a companion stepper at dt/2, about twice the stepping, where the default scenario, the
+ideal pendulum, takes the true error from the exact solution). Targets of issue 12 on a 2-core machine when
 otherwise idle: 50 × 60 s at ≥ 57 frames/s each with p99 gap ≤ 40 ms; beside the greedy client the
 normal ones ≥ 55 frames/s with no gap > 250 ms. The machine's load average is printed with the
 figures: the clients share the machine with the server, and so does anything else running.
 
-Run: ``.venv/bin/python bench/lab_load.py [--clients 50] [--seconds 60] [--markdown FILE]``
+Run: ``.venv/bin/python bench/lab_load.py [--clients 50] [--seconds 60] [--model NAME] [--markdown FILE]``
 (about 2.5 min with the defaults).
 """
 
@@ -39,7 +43,10 @@ from typing import Any
 import numpy as np
 import pendulab as pl
 import psutil
+from pendulab.server.protocol import FRAME_FIELDS
 from websockets.asyncio.client import connect
+
+ERROR_X = FRAME_FIELDS.index("error_x")
 
 
 def _max(model: str, name: str) -> float:
@@ -71,12 +78,17 @@ GREEDY_STEP = [
 class Client:
     """One page: the arrival times [s] of its frame messages."""
 
+    model: str | None = None
     arrivals: list[float] = field(default_factory=list)
+    records: int = 0
+    known: int = 0  # records with a known error estimate (error_x >= 0)
 
     async def run(self, url: str, seconds: float, start: asyncio.Event) -> None:
         """Receives all the time (nothing waits in a buffer); counts the frames that arrive within
         ``seconds`` after ``start`` is set."""
         async with connect(url, max_size=2**22, max_queue=None) as ws:
+            if self.model is not None:
+                await ws.send(json.dumps({"type": "set_model", "model": self.model}))
             end = None
             while end is None or time.monotonic() < end:
                 if end is None and start.is_set():
@@ -87,6 +99,9 @@ class Client:
                     continue
                 if end is not None and isinstance(msg, bytes):
                     self.arrivals.append(time.monotonic())
+                    err = np.frombuffer(msg, dtype="<f8").reshape(-1, len(FRAME_FIELDS))[:, ERROR_X]
+                    self.records += len(err)
+                    self.known += int(np.count_nonzero(err >= 0))
 
 
 async def greedy(url: str, seconds: float, start: asyncio.Event) -> None:
@@ -112,9 +127,9 @@ async def greedy(url: str, seconds: float, start: asyncio.Event) -> None:
 
 
 async def phase(
-    url: str, n: int, seconds: float, server: psutil.Process, with_greedy: bool
+    url: str, n: int, seconds: float, server: psutil.Process, with_greedy: bool, model: str | None
 ) -> dict[str, Any]:
-    clients = [Client() for _ in range(n)]
+    clients = [Client(model) for _ in range(n)]
     start = asyncio.Event()
     tasks = [asyncio.create_task(c.run(url, seconds, start)) for c in clients]
     if with_greedy:
@@ -140,6 +155,9 @@ async def phase(
         "gap_max_ms": float(gaps.max()),
         "server_cpu_percent": 100.0 * busy / (t1 - t0),
         "server_rss_mib": rss / 2**20,
+        "estimate_known_percent": 100.0
+        * sum(c.known for c in clients)
+        / max(1, sum(c.records for c in clients)),
     }
 
 
@@ -172,7 +190,11 @@ async def main_async(args: argparse.Namespace) -> list[dict[str, Any]]:
         ):
             print(f"{name} for {seconds:g} s ...", flush=True)
             rows.append(
-                {"phase": name, "seconds": seconds, **await phase(url, n, seconds, server, greedy_on)}
+                {
+                    "phase": name,
+                    "seconds": seconds,
+                    **await phase(url, n, seconds, server, greedy_on, args.model),
+                }
             )
         return rows
     finally:
@@ -186,14 +208,15 @@ def markdown(rows: list[dict[str, Any]]) -> str:
         f"Load average before the run: {LOAD_BEFORE}; after: {_load()} ({os.cpu_count()} cores).",
         "",
         "| phase | frames/s min | frames/s median | ÷ baseline | gap p50 [ms] | gap p99 [ms] | gap max [ms] "
-        "| server CPU [% of a core] | server RSS [MiB] |",
-        "|---|---|---|---|---|---|---|---|---|",
+        "| server CPU [% of a core] | server RSS [MiB] | error estimate known [%] |",
+        "|---|---|---|---|---|---|---|---|---|---|",
     ]
     for r in rows:
         out.append(
             f"| {r['phase']} ({r['seconds']:g} s) | {r['fps_min']:.1f} | {r['fps_median']:.1f} "
             f"| {r['fps_median'] / base:.3f} | {r['gap_p50_ms']:.1f} | {r['gap_p99_ms']:.1f} "
-            f"| {r['gap_max_ms']:.0f} | {r['server_cpu_percent']:.0f} | {r['server_rss_mib']:.0f} |"
+            f"| {r['gap_max_ms']:.0f} | {r['server_cpu_percent']:.0f} | {r['server_rss_mib']:.0f} "
+            f"| {r['estimate_known_percent']:.1f} |"
         )
     return "\n".join(out) + "\n"
 
@@ -210,6 +233,9 @@ def main() -> None:
     parser.add_argument("--clients", type=int, default=50, help="pages in the load phase (default 50)")
     parser.add_argument(
         "--seconds", type=float, default=60.0, help="length of the load phase [s] (default 60)"
+    )
+    parser.add_argument(
+        "--model", help="the model every normal client switches to (default: the server's scenario's)"
     )
     parser.add_argument("--markdown", help="also write the table to this file")
     args = parser.parse_args()
