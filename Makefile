@@ -136,14 +136,17 @@ test: lint test-rust test-python test-web test-e2e docs test-wheel
 
 # Hostile input, long (docs/limits.md, "Fuzzing"): FUZZ_CASES generated inputs per entry point of the
 # Python API (hypothesis) and of the Rust core (proptest), and the whole corpus of FUZZ_FILES mutated
-# scenario files through `pendulab validate` and `pendulab run`. CI runs the same tests with 60-256
-# cases and 80 files. Prints the counts; about an hour on 2 free cores at the defaults.
+# scenario files through `pendulab validate` and `pendulab run`; then the exact solution's degenerate
+# starts (docs/exact.md: FUZZ_CASES per family in Rust, 1000 per family in Python). CI runs the same
+# tests with 25-256 cases and 80 files. Prints the counts; about an hour on 2 free cores at the defaults.
 FUZZ_CASES ?= 10000
 FUZZ_FILES ?= 2500
 fuzz: build
 	PROPTEST_CASES=$(FUZZ_CASES) cargo test --release -p pendulab-core --test fuzz_props -- --nocapture
 	FUZZ_EXAMPLES=$(FUZZ_CASES) $(VENV)/bin/pytest python/tests/test_fuzz_api.py -q -s
 	$(PY) tools/fuzz_scenarios.py --files $(FUZZ_FILES) --seed 13
+	PROPTEST_CASES=$(FUZZ_CASES) cargo test --release -p pendulab-core --test exact_degenerate
+	PENDULAB_LONG=1 $(VENV)/bin/pytest python/tests/test_exact_degenerate.py -q
 
 bench:
 	cargo bench -p pendulab-core

@@ -146,7 +146,10 @@ impl JacobiParam {
         if m == 0.0 {
             return Jacobi { sn: u.sin(), cn: u.cos(), dn: 1.0, am: u };
         }
-        if m == 1.0 {
+        // m = 1 means m′ = 0: with its complement given (`with_complement`), a float m that rounds
+        // to 1 may still have m′ = 5e-17 > 0, a finite K ≈ 20 and cn, dn ≈ k′ sinh(K − u) near K —
+        // not sech u (an orbit next to the top read cn = 4e-9 for 6e-10 there).
+        if self.p.m1 == 0.0 {
             let t = (-u.abs()).exp();
             let sech = 2.0 * t / (1.0 + t * t);
             return Jacobi { sn: u.tanh(), cn: sech, dn: sech, am: u.sinh().atan() };

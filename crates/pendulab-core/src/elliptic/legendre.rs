@@ -183,3 +183,62 @@ pub fn ellippi_inc_c(n: f64, n1: f64, phi: f64, p: Param) -> Result<f64> {
     let complete = if phi.abs() > FRAC_PI_2 { pi_first_c(n, n1, p, 1.0, 0.0) } else { 0.0 };
     Ok(continued(phi, Dd { hi: complete, lo: 0.0 }, |s, c| pi_first_c(n, n1, p, s, c)))
 }
+
+/// Π(n; ϕ|m) for |ϕ| ≤ π/2 given by `s` = sin ϕ and `c` = cos ϕ ≥ 0 rather than by ϕ, with n′ = 1 − n
+/// and m′ as in [`ellippi_inc_c`]. Next to ϕ = ±π/2 the float ϕ fixes c only to ulp(π/2) = 2e-16
+/// absolute, and for n → 1 Π varies like 1/(c² + n′s²) there (1e16 for c² ≈ n′ ≈ 1e-17): an orbit
+/// passing 1e-8 l from the top pole lost 1e-8 rad of its azimuth that way. Here c keeps its own
+/// relative accuracy.
+///
+/// # Errors
+/// [`crate::Error::InvalidParameter`] unless s, c are finite with |s| ≤ 1 and c ≥ 0 (and n, n′ as in
+/// [`ellippi_inc_c`]).
+#[inline(always)]
+pub fn ellippi_sc(n: f64, n1: f64, s: f64, c: f64, p: Param) -> Result<f64> {
+    let (n, n1) = super::check_n_pair(n, n1)?;
+    let s = require_finite("s", s, "sin ϕ: finite, |s| ≤ 1")?;
+    let c = require_finite("c", c, "cos ϕ: finite, ≥ 0")?;
+    if s.abs() > 1.0 {
+        return Err(crate::Error::InvalidParameter { name: "s", value: s, allowed: "sin ϕ: |s| ≤ 1" });
+    }
+    if c < 0.0 {
+        return Err(crate::Error::InvalidParameter {
+            name: "c", value: c, allowed: "cos ϕ ≥ 0 (|ϕ| ≤ π/2)"
+        });
+    }
+    if s == 0.0 {
+        return Ok(s);
+    }
+    if p.m1 == 0.0 && c == 0.0 {
+        return Ok(f64::INFINITY.copysign(s));
+    }
+    Ok(pi_first_c(n, n1, p, s.abs(), c).copysign(s))
+}
+
+/// F(ϕ|m) for |ϕ| ≤ π/2 given by `s` = sin ϕ and `c` = cos ϕ ≥ 0 (normalised here), m with m′ as in
+/// [`ellipf_c`]: like [`ellippi_sc`], c keeps its relative accuracy next to ϕ = ±π/2, where
+/// ∂F/∂ϕ = 1/√(c² + m′s²) reaches 1/k′ (a start next to the separatrix, m′ = 5e-16, lost 6e-9 of its
+/// argument to fl(ϕ)). +∞ (sign of s) at c = 0 when m = 1.
+///
+/// # Errors
+/// [`crate::Error::InvalidParameter`] unless s, c are finite, c ≥ 0 and (s, c) ≠ (0, 0).
+pub fn ellipf_sc(s: f64, c: f64, p: Param) -> Result<f64> {
+    let s = require_finite("s", s, "sin ϕ: finite")?;
+    let c = require_finite("c", c, "cos ϕ: finite, ≥ 0")?;
+    let r = s.hypot(c);
+    if c < 0.0 || r == 0.0 {
+        return Err(crate::Error::InvalidParameter {
+            name: "c",
+            value: c,
+            allowed: "cos ϕ ≥ 0 (|ϕ| ≤ π/2), with sin ϕ and cos ϕ not both 0",
+        });
+    }
+    let (s, c) = (s / r, c / r);
+    if s == 0.0 {
+        return Ok(s);
+    }
+    if p.m1 == 0.0 && c == 0.0 {
+        return Ok(f64::INFINITY.copysign(s));
+    }
+    Ok(f_first(p, s.abs(), c).copysign(s))
+}

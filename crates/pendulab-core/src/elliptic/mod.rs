@@ -60,7 +60,7 @@ mod legendre;
 pub use complete::{ellipe, ellipk, ellipk_c, ellippi, ellippi_c};
 pub use jacobi::{am, jacobi, Jacobi, JacobiParam};
 pub use kernel::Param;
-pub use legendre::{ellipe_inc, ellipf, ellipf_c, ellippi_inc, ellippi_inc_c};
+pub use legendre::{ellipe_inc, ellipf, ellipf_c, ellipf_sc, ellippi_inc, ellippi_inc_c, ellippi_sc};
 
 use crate::error::{Error, Result};
 

@@ -17,6 +17,14 @@
 //! cancellation from the state. About u₀ the constant term is u̇₀² itself (the identity
 //! 2κρ² − j² = u̇₀², Lagrange's identity on TS²), so a start at a turning point is a root exactly
 //! and a conical start keeps u₂ − u₁ at round-off instead of √(round-off).
+//!
+//! The constant terms are P's exact values at the centres: P(−1) = P(+1) = −j² ≤ 0 ≤ u̇₀² = P(u₀).
+//! So u₁ is bracketed in [−1, u₀] and u₂ in [u₀, 1], and P is only ever taken from the expansion
+//! about the nearer centre (`root_between`): from the farther one its rounding,
+//! ≈ ε P″ gap², can exceed a nearly planar orbit's j² ≈ 1e-17 and flip the sign of P(±1) (such
+//! starts were refused, "invalid n1"). u₃ ≥ 1 is bracketed about +1. Newton falls back to the chord
+//! through the bracket, then to bisection, so that a root 1e-81 from its centre (j = 5e-41) is
+//! reached in a few steps rather than 270 halvings.
 
 /// Where a root is anchored.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -137,10 +145,10 @@ impl StartData {
         }
     }
 
-    /// Bracketed Newton (Newton with bisection fallback) for P(c + d) = 0 with d in [lo, hi].
-    fn solve(&self, c: Centre, lo: f64, hi: f64, guess: f64) -> f64 {
-        let (flo, _) = self.eval(c, lo);
-        let (fhi, _) = self.eval(c, hi);
+    /// Bracketed Newton (Newton with bisection fallback) for f(d) = 0 with d in [lo, hi].
+    fn solve_with(f: impl Fn(f64) -> (f64, f64), lo: f64, hi: f64, guess: f64) -> f64 {
+        let (flo, _) = f(lo);
+        let (fhi, _) = f(hi);
         if flo == 0.0 {
             return lo;
         }
@@ -152,21 +160,35 @@ impl StartData {
             return if flo.abs() <= fhi.abs() { lo } else { hi };
         }
         // orient so that f(a) < 0 < f(b)
-        let (mut a, mut b) = if flo < 0.0 { (lo, hi) } else { (hi, lo) };
+        let (mut a, mut b, mut fa, mut fb) = if flo < 0.0 { (lo, hi, flo, fhi) } else { (hi, lo, fhi, flo) };
         let mut d = if guess > lo.min(hi) && guess < lo.max(hi) { guess } else { 0.5 * (lo + hi) };
+        let mut secant_last = false;
         for _ in 0..200 {
-            let (f, df) = self.eval(c, d);
-            if f == 0.0 {
+            let (fd, df) = f(d);
+            if fd == 0.0 {
                 return d;
             }
-            if f < 0.0 {
-                a = d;
+            if fd < 0.0 {
+                (a, fa) = (d, fd);
             } else {
-                b = d;
+                (b, fb) = (d, fd);
             }
-            let newton = d - f / df;
-            let inside = (newton - a) * (newton - b) < 0.0;
-            let next = if inside && df != 0.0 { newton } else { 0.5 * (a + b) };
+            let inside = |t: f64| (t - a) * (t - b) < 0.0;
+            let newton = d - fd / df;
+            // Newton when it stays in the bracket; else the chord through the bracket's ends (a root
+            // 1e-81 from the end of a bracket 0.07 wide is 270 halvings away, but one chord from a
+            // near-linear P); bisection after a chord, so that a bent P cannot stall the chord.
+            let chord = a - fa * (b - a) / (fb - fa);
+            let next = if df != 0.0 && inside(newton) {
+                secant_last = false;
+                newton
+            } else if !secant_last && inside(chord) {
+                secant_last = true;
+                chord
+            } else {
+                secant_last = false;
+                0.5 * (a + b)
+            };
             if next == d || (a - b).abs() <= 2.0 * f64::EPSILON * d.abs().max(f64::MIN_POSITIVE) {
                 return next;
             }
@@ -175,9 +197,38 @@ impl StartData {
         d
     }
 
+    /// Bracketed Newton for P(c + d) = 0 with d in [lo, hi], P expanded about `c`.
+    fn solve(&self, c: Centre, lo: f64, hi: f64, guess: f64) -> f64 {
+        Self::solve_with(|d| self.eval(c, d), lo, hi, guess)
+    }
+
+    /// The root of P between the centres `near` and `far` (|gap| = |far − near| apart, `gap` signed
+    /// as far − near), where P(near) and P(far) — the exact constant terms −j² and u̇₀² of their
+    /// expansions — have opposite signs (or one is zero). The sign of P at the middle decides in
+    /// which half the root lies, and it is then found by Newton on the expansion about the centre
+    /// of that half: no value of P is ever taken from an expansion about the farther centre, whose
+    /// rounding (≈ ε·P″·gap²) can exceed a P(±1) = −j² of 1e-17 and flip its sign (near-planar
+    /// starts were refused that way). Returns the root anchored at the nearer centre.
+    fn root_between(&self, near: Centre, far: Centre, gap: f64) -> Root {
+        let half = 0.5 * gap;
+        let f_near = self.expansion(near)[0];
+        let f_half = self.eval(near, half).0;
+        if f_half == 0.0 {
+            return Root { centre: near, offset: half };
+        }
+        if f_near == 0.0 || f_half.signum() != f_near.signum() {
+            let (lo, hi) = if half < 0.0 { (half, 0.0) } else { (0.0, half) };
+            Root { centre: near, offset: self.solve(near, lo, hi, 0.5 * half) }
+        } else {
+            let (lo, hi) = if half < 0.0 { (0.0, -half) } else { (-half, 0.0) };
+            Root { centre: far, offset: self.solve(far, lo, hi, -0.5 * half) }
+        }
+    }
+
     /// Roots when the start is a turning point (u̇₀ = 0): P(u₀ + d) = d (P′(u₀) + ½P″(u₀) d + 2d²), so
     /// u₀ is a root exactly and the others solve the quadratic (stable form). Roots nearer ±1 than
-    /// u₀ are then polished by Newton on the expansion about ±1, which keeps 1 ± u relatively accurate.
+    /// u₀ are then found again on the expansion about ±1 ([`refine`](Self::refine)), which keeps 1 ± u
+    /// relatively accurate.
     fn roots_at_turning_point(&self) -> [Root; 3] {
         let [_, c1, c2] = self.expansion(Centre::Start);
         let disc = (c2 * c2 - 8.0 * c1).max(0.0);
@@ -190,13 +241,33 @@ impl StartData {
             let to_bottom = pm + di; // u − (−1)
             let to_top = pp - di; // 1 − u
             if di != 0.0 && to_bottom.abs() < di.abs() {
-                Root { centre: Centre::MinusOne, offset: self.polish(Centre::MinusOne, to_bottom) }
+                Root { centre: Centre::MinusOne, offset: self.refine(Centre::MinusOne, to_bottom, 0.5 * pm) }
             } else if di != 0.0 && to_top.abs() < di.abs() {
-                Root { centre: Centre::PlusOne, offset: self.polish(Centre::PlusOne, -to_top) }
+                Root { centre: Centre::PlusOne, offset: self.refine(Centre::PlusOne, -to_top, -0.5 * pp) }
             } else {
                 Root { centre: Centre::Start, offset: di }
             }
         })
+    }
+
+    /// The root near the pole `c` (±1) from the estimate `d`: bracketed between the pole, where
+    /// P = −j² < 0 exactly, and a point where P > 0 on the estimate's side — `half` (half-way to
+    /// u₀, signed) for a root between the pole and u₀, else 2d, 4d, … beyond the pole (u₃);
+    /// [`polish`](Self::polish) when no such bracket holds (j = 0, or round-off).
+    fn refine(&self, c: Centre, d: f64, half: f64) -> f64 {
+        let mut end = half;
+        if d * half < 0.0 && c == Centre::PlusOne {
+            end = 2.0 * d;
+            while self.eval(c, end).0 <= 0.0 && end.abs() < 1e300 {
+                end *= 2.0;
+            }
+        }
+        let (lo, hi) = if end < 0.0 { (end, 0.0) } else { (0.0, end) };
+        if self.j != 0.0 && self.eval(c, end).0 > 0.0 {
+            self.solve(c, lo, hi, d)
+        } else {
+            self.polish(c, d)
+        }
     }
 
     /// A few Newton steps on the expansion about `c` from `d`, kept while the residual falls.
@@ -235,28 +306,9 @@ impl StartData {
         if self.udot == 0.0 {
             return self.roots_at_turning_point();
         }
-        // u₁ in [−1, u₀]: about u₀ first, then about −1 if it is nearer there. The second bracket ends
-        // half-way between u₁ and u₀, where P > 0, not at u₀ itself: when the start is (within
-        // round-off) the other turning point, P(u₀) may round to either sign and the bracket at u₀
-        // would "find" u₀ (a small swing with J₃ ≠ 0 started at its widest point came out conical).
-        // (Only where P > 0 there: the first estimate itself may be off, e.g. P(+1) = −j² rounding
-        // positive in the expansion about u₀ puts d₂ at +1.)
-        let d1 = self.solve(Centre::Start, -pm, 0.0, -pm * 0.5);
-        let u1 = if -d1 > pm + d1 {
-            let half = pm + 0.5 * d1;
-            let hi = if self.eval(Centre::MinusOne, half).0 > 0.0 { half } else { pm };
-            Root { centre: Centre::MinusOne, offset: self.solve(Centre::MinusOne, 0.0, hi, pm + d1) }
-        } else {
-            Root { centre: Centre::Start, offset: d1 }
-        };
-        let d2 = self.solve(Centre::Start, 0.0, pp, pp * 0.5);
-        let u2 = if d2 > pp - d2 {
-            let half = -pp + 0.5 * d2;
-            let lo = if self.eval(Centre::PlusOne, half).0 > 0.0 { half } else { -pp };
-            Root { centre: Centre::PlusOne, offset: self.solve(Centre::PlusOne, lo, 0.0, d2 - pp) }
-        } else {
-            Root { centre: Centre::Start, offset: d2 }
-        };
+        // u₁ in [−1, u₀] where P(−1) = −j² < 0 < u̇₀² = P(u₀); u₂ in [u₀, 1] likewise.
+        let u1 = self.root_between(Centre::Start, Centre::MinusOne, -pm);
+        let u2 = self.root_between(Centre::Start, Centre::PlusOne, pp);
         // u₃ ≥ 1: expand the bracket until P > 0.
         let mut hi = 1.0;
         while self.eval(Centre::PlusOne, hi).0 <= 0.0 && hi < 1e300 {

@@ -14,7 +14,7 @@
 //! Near-conical orbits (a → 0) need no special case: m, n± → 0 and Φ → jτ/(1 − u₁²).
 
 use super::cubic::{Root, StartData};
-use crate::elliptic::{ellippi_c, ellippi_inc_c, JacobiParam, Param};
+use crate::elliptic::{ellippi_c, ellippi_sc, JacobiParam, Param};
 use crate::error::Result;
 
 /// A generic orbit: the roots and every constant of T-4.2 … T-4.5.
@@ -87,9 +87,11 @@ impl Generic {
         let one_minus_u2 = start.one_minus(u2);
         let n_plus = a / one_minus_u1;
         let n_minus = -a / one_plus_u1;
-        // complements 1 − n± = (1 ∓ u₂)/(1 ∓ u₁), from anchored differences
-        let n1_plus = one_minus_u2 / one_minus_u1;
-        let n1_minus = start.one_plus(u2) / one_plus_u1;
+        // complements 1 − n± = (1 ∓ u₂)/(1 ∓ u₁): n₋ ≤ 0 and n₊ ≤ ½ have no cancellation in 1 − n (and
+        // stay consistent with n when 1 + u₁ is tiny: near-planar orbits skim the pole, n₋ → −∞);
+        // n₊ > ½ (the orbit reaches up close to the top) takes it from the anchored differences.
+        let n1_plus = if n_plus <= 0.5 { 1.0 - n_plus } else { one_minus_u2 / one_minus_u1 };
+        let n1_minus = 1.0 - n_minus;
         let param = Param::with_complement(m, m1).unwrap_or(Param { m, m1: 1.0 - m });
         let jp = JacobiParam::with_complement(param);
         let k = jp.quarter_period();
@@ -105,7 +107,6 @@ impl Generic {
         } else {
             (0.0, 1.0)
         };
-        let phi_am = sn0.atan2(cn0);
         let s0 = super::amplitude_argument(sn0, cn0, param, k)?;
         let mut g = Self {
             start,
@@ -128,16 +129,19 @@ impl Generic {
             s0,
             phi_low: 0.0,
         };
-        g.phi_low = phi0 - g.phi_partial(phi_am)?;
+        g.phi_low = phi0 - g.phi_partial(sn0, cn0)?;
         Ok(g)
     }
 
-    /// Φ of T-4.4 at amplitude `am` ∈ [−π/2, π/2].
+    /// Φ of T-4.4 at the amplitude ϕ ∈ [−π/2, π/2] with sin ϕ = `sn`, cos ϕ = `cn` ≥ 0 (given as sn and
+    /// cn, not ϕ: at the top turning point ϕ = ±π/2, where an orbit passing close to the top pole has
+    /// n₊ → 1 and Φ varies like 1/cn², fl(ϕ) would cost the start's azimuth 1e-8 rad).
     #[inline(always)]
-    fn phi_partial(&self, am: f64) -> Result<f64> {
+    fn phi_partial(&self, sn: f64, cn: f64) -> Result<f64> {
+        let (sn, cn) = (sn.clamp(-1.0, 1.0), cn.max(0.0));
         Ok(0.5 * self.start.j / self.lambda
-            * (ellippi_inc_c(self.n_plus, self.n1_plus, am, self.param)? / self.one_minus_u1
-                + ellippi_inc_c(self.n_minus, self.n1_minus, am, self.param)? / self.one_plus_u1))
+            * (ellippi_sc(self.n_plus, self.n1_plus, sn, cn, self.param)? / self.one_minus_u1
+                + ellippi_sc(self.n_minus, self.n1_minus, sn, cn, self.param)? / self.one_plus_u1))
     }
 
     /// The state at dimensionless time τ after the start (inlined into the dispatched callers of
@@ -156,7 +160,7 @@ impl Generic {
         let u = if one_plus_u < one_minus_u { one_plus_u - 1.0 } else { 1.0 - one_minus_u };
         let rho = (one_plus_u * one_minus_u).sqrt();
         let u_tau = 2.0 * self.a * self.lambda * sn * cn * dn;
-        let phi = self.phi_low + n * self.delta_phi + self.phi_partial(jf.am)?;
+        let phi = self.phi_low + n * self.delta_phi + self.phi_partial(sn, cn)?;
         let (sp, cp) = phi.sin_cos();
         let rho_tau = -u * u_tau / rho;
         let w = self.start.j / rho;

@@ -33,13 +33,21 @@ use weierstrass::Weierstrass;
 /// `k` = K(m). Past |ϕ| = π/4 it is K − F(ψ | m) with tan ψ = cot ϕ / k′ (DLMF 19.7.8's complement,
 /// cot ϕ cot ψ = k′), because near m = 1 F climbs steeply to K at π/2: ∂F/∂ϕ = 1/√(1 − m sin²ϕ)
 /// reaches 1/k′, and the 6e-17 by which fl(π/2) misses π/2 would cost a turning point 6e-17/k′ of
-/// its argument (1.2e-10 for a start at rest 1e-6 rad from the top).
+/// its argument (1.2e-10 for a start at rest 1e-6 rad from the top). Both amplitudes enter as their
+/// sine and cosine (sin ψ = cn/r, cos ψ = k′|sn|/r, r = √(cn² + m′sn²)), never as an angle: fl(ψ)
+/// next to π/2 cost a start near the separatrix (m′ = 5e-16) 6e-9 of its argument.
 pub(crate) fn amplitude_argument(sn: f64, cn: f64, param: crate::elliptic::Param, k: f64) -> Result<f64> {
-    if cn >= sn.abs() {
-        return crate::elliptic::ellipf_c(sn.atan2(cn), param);
+    // m = 1 (the separatrix): K = ∞ and F(ϕ|1) = artanh(sin ϕ) straight from sn and cn (K − F(ψ)
+    // would be ∞ − ∞, a NaN for every start above the equator).
+    if cn >= sn.abs() || param.m1 == 0.0 {
+        return crate::elliptic::ellipf_sc(sn, cn, param);
     }
-    let psi = cn.atan2(param.m1.sqrt() * sn.abs());
-    Ok((k - crate::elliptic::ellipf_c(psi, param)?).copysign(sn))
+    let kp = param.m1.sqrt();
+    let r = cn.hypot(kp * sn);
+    if r == 0.0 {
+        return Ok(k.copysign(sn));
+    }
+    Ok((k - crate::elliptic::ellipf_sc(cn / r, kp * sn.abs() / r, param)?).copysign(sn))
 }
 
 /// Kind of motion, as named in docs/theory.md T-4.6.
@@ -82,6 +90,16 @@ pub const BATCH: usize = 1024;
 /// u₂ − u₁ below this counts as conical (the label only; the formulas are the same).
 const CONICAL_WIDTH: f64 = 1e-12;
 
+/// |j| below this (j = J₃/(m l² ω₀)) is solved as planar motion. The spherical orbit then differs
+/// from the planar one by O(j/√(1 + ε)) ≤ 1e-132 l even for swings of 1e-8 rad, while its roots
+/// would sit j²/(4(1 + ε)) ≈ 1e-280 from the poles, next to the end of the float range (at
+/// j = 1e-160, j² underflows to 0 and 1 + u₁ with it).
+pub const PLANAR_J: f64 = 1e-140;
+
+/// A start at rest whose distance from the vertical axis is at most this × |x| is at the pole
+/// (the equilibrium): a few ulps, e.g. l·sin(fl(π)) = 1.2e-16 l for θ = fl(π).
+pub const AXIS_ROUNDING: f64 = 4.0 * f64::EPSILON;
+
 #[derive(Debug, Clone)]
 enum Flow {
     Rest,
@@ -113,7 +131,10 @@ impl ExactSolution {
         let (l, g) = (params.length, params.g);
         let speed2 = s.v.length_squared();
         let rho2_abs = s.x.x * s.x.x + s.x.y * s.x.y;
-        let at_pole = rho2_abs == 0.0;
+        // At rest within rounding of the axis is the equilibrium: θ = fl(π) puts the bob
+        // l·sin(fl(π)) = 1.2e-16 l off it, from where (at rest) the exact motion would fall off the
+        // top after ~37/ω₀ — an artefact of rounding π, not the state meant.
+        let at_pole = rho2_abs <= (AXIS_ROUNDING * s.x.length()).powi(2);
         let (mirror, omega0) = (if g < 0.0 { -1.0 } else { 1.0 }, (g.abs() / l).sqrt());
         let base = Self {
             params: *params,
@@ -146,6 +167,11 @@ impl ExactSolution {
         // A J₃ within the rounding of x₁v₂ − x₂v₁ is zero: the start is planar to its own precision
         // (e.g. a start built from angles with φ̇ = 0).
         if j.abs() <= 4.0 * f64::EPSILON * ((x[0] * v[1]).abs() + (x[1] * v[0]).abs()) {
+            j = 0.0;
+        }
+        // Below PLANAR_J the planar motion is the exact one to far below the float64 floor, while
+        // the spherical formulas would need 1 + u₁ ≈ j²/(2(1 + ε)) below the smallest float.
+        if j.abs() < PLANAR_J {
             j = 0.0;
         }
         let (p_minus, p_plus) = if zm < 0.0 {

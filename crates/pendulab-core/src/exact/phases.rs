@@ -62,6 +62,33 @@ pub fn reduced_orbit_area(g: &Generic) -> f64 {
         let u3_minus_u = u3_minus_u2 + a * c2;
         2.0 * a * a * s2 * c2 * (2.0 * u3_minus_u).sqrt() / (one_plus_u * one_minus_u)
     };
-    let (half, _) = integrate(integrand, 0.0, std::f64::consts::FRAC_PI_2, 1e-14, 0.0);
+    let mut half = 0.0;
+    for w in area_breakpoints(g.one_plus_u1 / a, g.one_minus_u2 / a).windows(2) {
+        half += integrate(integrand, w[0], w[1], 1e-14, 0.0).0;
+    }
     2.0 * half
+}
+
+/// Breakpoints in ψ ∈ [0, π/2] for the area quadrature. An orbit passing a pole at 1 ± u = δ has the
+/// integrand step from 0 to ≈ 2a over ψ ≈ √(δ/a) next to ψ = 0 (the bottom) or π/2 (the top): a step
+/// 1e-8 wide, invisible to the quadrature's nodes on [0, π/2], whose missing area ≈ 2a√(δ/a) is of
+/// order j — so Δφ_geom = −A/j came out wrong by π for j ≈ 1e-8. The breakpoints w·4ᵏ (and
+/// π/2 − w·4ᵏ) up to π/8, with w = √(δ/a), resolve it; ≤ 240 pieces for the smallest j.
+fn area_breakpoints(bottom: f64, top: f64) -> Vec<f64> {
+    use std::f64::consts::{FRAC_PI_2, FRAC_PI_4, FRAC_PI_8};
+    let ladder = |r: f64| {
+        let mut w = r.sqrt();
+        let mut out = Vec::new();
+        while w.is_finite() && w > 0.0 && w < FRAC_PI_8 {
+            out.push(w);
+            w *= 4.0;
+        }
+        out
+    };
+    let mut pts = vec![0.0];
+    pts.extend(ladder(bottom));
+    pts.push(FRAC_PI_4);
+    pts.extend(ladder(top).iter().rev().map(|w| FRAC_PI_2 - w));
+    pts.push(FRAC_PI_2);
+    pts
 }

@@ -13,7 +13,7 @@
 //! e is oriented so that θ̇ ≥ 0 at the start; the argument s is reduced by the period (4K or 2K).
 
 use super::generic::UnitState;
-use crate::elliptic::{ellipf_c, JacobiParam, Param};
+use crate::elliptic::{JacobiParam, Param};
 use crate::error::Result;
 
 /// Which planar motion.
@@ -52,8 +52,11 @@ impl Planar {
     pub fn new(x: [f64; 3], v: [f64; 3], kappa: f64, p_minus: f64, p_plus: f64) -> Result<Self> {
         let (xh, vh) = ([x[0], x[1]], [v[0], v[1]]);
         let norm = |a: [f64; 2]| a[0].hypot(a[1]);
-        // The plane: along the horizontal position, or along the horizontal velocity at a pole.
-        let mut e = if norm(xh) > 0.0 { xh } else { vh };
+        // The plane: along the horizontal position, or along the horizontal velocity where that is
+        // the longer (always at a pole). With J₃ = 0 they are parallel; a J₃ at rounding level or
+        // below `PLANAR_J` tilts them by j/(ρ|v_h|), and the longer of the two loses the least:
+        // j/max(ρ, |v_h|) in x or v (units l, lω₀).
+        let mut e = if norm(xh) >= norm(vh) && norm(xh) > 0.0 { xh } else { vh };
         let ne = norm(e);
         e = if ne > 0.0 { [e[0] / ne, e[1] / ne] } else { [1.0, 0.0] };
         let h0 = x[0] * e[0] + x[1] * e[1];
@@ -91,7 +94,11 @@ impl Planar {
                 let m = 2.0 / one_plus_eps;
                 let param = Param::with_complement(m, eps_minus_one / one_plus_eps)
                     .unwrap_or(Param { m, m1: 1.0 - m });
-                (param, (0.5 * one_plus_eps).sqrt(), ellipf_c(0.5 * theta0, param)?)
+                // s₀ = F(θ₀/2 | m) from sin(θ₀/2) = ±√(p₋/2), cos(θ₀/2) = √(p₊/2) (not from fl(θ₀/2),
+                // which next to the top, θ₀/2 → π/2 with m → 1, is as bad as in `amplitude_argument`)
+                let (sh, ch) = (sign * (0.5 * p_minus).sqrt(), (0.5 * p_plus).sqrt());
+                let k = JacobiParam::with_complement(param).quarter_period();
+                (param, (0.5 * one_plus_eps).sqrt(), super::amplitude_argument(sh, ch, param, k)?)
             }
         };
         let jp = JacobiParam::with_complement(param);
