@@ -80,13 +80,23 @@ def main() -> None:
     ap.add_argument("--only", default="pendulab,C", help="families for run.py --only")
     ap.add_argument("--markdown", type=Path, help="also write the tables to this file")
     ap.add_argument("--skip-build", action="store_true", help="reuse the wheels installed by a previous run")
+    ap.add_argument(
+        "--more", action="store_true", help="keep the rounds of the previous run and add --rounds more"
+    )
     args = ap.parse_args()
     t0 = time.perf_counter()
     sites = {k: BUILD / f"site-{k}" for k in KINDS} if args.skip_build else {k: build_wheel(k) for k in KINDS}
     print(f"built ({time.perf_counter() - t0:.0f} s)", flush=True)
     per_round: dict[str, list[dict[str, float]]] = {k: [] for k in KINDS}
     loads: list[float] = [os.getloadavg()[0]]
-    for r in range(args.rounds):
+    first = 0
+    while args.more and all((BUILD / f"{k}{first}.json").exists() for k in KINDS):
+        for kind in KINDS:
+            res = json.loads((BUILD / f"{kind}{first}.json").read_text())
+            per_round[kind].append(figures(res))
+            loads += [res["meta"]["load_start"], res["meta"]["load_end"]]
+        first += 1
+    for r in range(first, first + args.rounds):
         for kind in KINDS if r % 2 == 0 else KINDS[::-1]:
             out = BUILD / f"{kind}{r}.json"
             env = dict(os.environ, PYTHONPATH=str(sites[kind]))
@@ -104,7 +114,7 @@ def main() -> None:
             per_round[kind].append(figures(res))
             loads += [res["meta"]["load_start"], res["meta"]["load_end"]]
             print(f"round {r + 1}: {kind} done ({time.perf_counter() - t0:.0f} s)", flush=True)
-    table = report(per_round, args.rounds, loads)
+    table = report(per_round, first + args.rounds, loads)
     print(table)
     if args.markdown:
         args.markdown.write_text(table + "\n")

@@ -18,8 +18,10 @@
 //! **The numbers do not depend on the choice.** Rust never contracts a·b + c into a fused
 //! multiply-add by itself, and the kernels that want one write it explicitly (`f64::mul_add`, see
 //! `integrate::rattle_kernel::fmadd`), which is the correctly rounded fused operation on every CPU:
-//! one instruction where the level has FMA (x86-64-v3 and up, every aarch64), the C library's `fma`
-//! elsewhere (exact, but much slower: the baseline level is a correct fallback, not a fast one).
+//! one instruction where the level has FMA (x86-64-v3 and up, every aarch64), elsewhere a call to the
+//! `fma` of Rust's `compiler_builtins` (the FMA instruction behind a call where the CPU has it, an
+//! exact software fma, about 13 ns, where it has not): exact, but much slower, so the baseline level
+//! is a correct fallback, not a fast one (docs/performance.md, "The price of the fallback").
 //! Wider vectors only change how many lanes one instruction handles, never an operation's rounding.
 //! `f64::round` (a C library call at the SSE2 baseline) is written as [`round`], the same function in
 //! a few additions and comparisons. The C library's `sin`, `atan2`, … are called at every level

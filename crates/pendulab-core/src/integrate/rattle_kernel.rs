@@ -39,8 +39,8 @@ use glam::DVec3;
 pub const SERIES_LIMIT: f64 = 1e-3;
 
 /// a·b + c with one rounding (IEEE fused multiply-add) on every CPU: one instruction in the FMA
-/// levels of [`crate::isa`] and on aarch64, the C library's exact `fma` in the x86-64 baseline
-/// (slow, which is why every caller on a hot path runs inside [`crate::isa::fastest`]).
+/// levels of [`crate::isa`] and on aarch64, a call to `compiler_builtins`' exact `fma` in the x86-64
+/// baseline (slow, which is why every caller on a hot path runs inside [`crate::isa::fastest`]).
 #[inline(always)]
 pub fn fmadd(a: f64, b: f64, c: f64) -> f64 {
     a.mul_add(b, c)
