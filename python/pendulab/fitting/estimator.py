@@ -20,7 +20,7 @@ from typing import Any
 
 import numpy as np
 
-from .._core import IntegrationError, InvalidInputError
+from .._core import InvalidInputError
 from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
 from ..variants.spring import SwingingSpring
@@ -37,13 +37,13 @@ from .problem import (
     scale_of,
 )
 from .result import FitResult
+from .search import polish, windows_of
 from .spring_model import SPRING_STATE
 from .start import gravity_starts, phase_starts, sideways_starts, starting_values
 
 POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness", "r0"}
 MAX_EVALUATIONS = 20_000
 ANCHOR = 0.1
-POLISH_STEPS = 40
 #: χ²/dof above this, with σ given, is warned about (a fit explaining the data to their noise gives ≈ 1).
 MISFIT = 2.0
 
@@ -69,55 +69,6 @@ def _angles_of(state: State) -> dict[str, float]:
 
 class _TimeUp(Exception):
     """The search ran past ``time_limit``."""
-
-
-def _windows(t: FloatArray, period: float) -> list[int]:
-    """Sample counts of growing time windows [t₀, t₀ + 4T·2ᵏ) shorter than the data (T the estimated
-    period): fitting them in turn keeps each stage's phase error small, so that a long record does
-    not trap the search in the wrong number of swings."""
-    span = float(t[-1] - t[0])
-    out: list[int] = []
-    width = 4.0 * period
-    while width < 0.6 * span:
-        n = int(np.searchsorted(t, t[0] + width))
-        if n >= 16 and (not out or n > out[-1]):
-            out.append(n)
-        width *= 2.0
-    return out
-
-
-def _polish(
-    weighted: Any,
-    u: FloatArray,
-    r: FloatArray,
-    jac: FloatArray,
-    steps: FloatArray,
-    positive: FloatArray,
-    lo: FloatArray,
-    hi: FloatArray,
-) -> tuple[FloatArray, FloatArray, FloatArray]:
-    """Gauss–Newton steps with central-difference Jacobians after the trust-region search: near the
-    optimum its forward differences stall short of the float64 floor on noise-free data; these steps
-    reach it (directions the data do not determine are left alone by the pseudo-inverse). Four steps,
-    and more (up to POLISH_STEPS) while each still cuts the misfit by 4× or more: along a direction
-    where the residual is quadratic (a planar swing seen along y: r ∝ φ̇₀²) Gauss–Newton only halves
-    the distance per step."""
-    for k in range(POLISH_STEPS):
-        step = np.linalg.lstsq(jac, -r, rcond=1e-10)[0]
-        trial = np.minimum(np.maximum(u + step, lo), hi)
-        try:
-            r_trial = weighted(trial)
-        except (InvalidInputError, IntegrationError):  # a step into a state the model refuses
-            break
-        before, after = float(r @ r), float(r_trial @ r_trial)
-        if not after < before or (k >= 4 and after > 0.25 * before):
-            break
-        small = np.all(np.abs(trial - u) <= 1e-13 * np.maximum(np.abs(u), 1.0))
-        u, r = trial, r_trial
-        jac = jacobian(weighted, u, steps, positive)
-        if small:
-            break
-    return u, r, jac
 
 
 def _free_names(fit: Any, model: str, state_given: bool, columns: Mapping[str, int]) -> list[str]:
@@ -302,7 +253,7 @@ def fit(
             method="trf",
         )
 
-    windows = _windows(obs.t, period)
+    windows = windows_of(obs.t, period)
     if len(starts) > 2:  # optimise from the two starts that already fit best on the first window
         first = problem.restricted(windows[0]) if windows else problem
         costs = [float(np.sum(first.safe_residuals([s[n] for n in free], sig) ** 2)) for s in starts]
@@ -354,7 +305,7 @@ def fit(
     steps = np.where(positive, 1e-5, scales * 1e-5)
     jac = jacobian(weighted, u, steps, positive)
     if loss == "linear" and not interrupted:
-        u, r, jac = _polish(weighted, u, r, jac, steps, positive, np.array(lower), np.array(upper))
+        u, r, jac = polish(weighted, u, r, jac, steps, positive, np.array(lower), np.array(upper))
     final = problem.with_free(u)
     n_res, k = r.size, len(free)
     dof = max(n_res - k, 1)
