@@ -340,7 +340,14 @@ export async function checkLanguage(page, { check, WAIT }) {
   const paused = /paused=1/.test(page.url());
   check(running === true && !paused, `the language switch right after a resume keeps the lab running${running === true ? '' : ` (${running})`}${paused ? ' (reloaded paused)' : ''}`);
   const de = await page.evaluate(() => ({ lang: document.documentElement.lang, reset: document.querySelector('[data-action="reset"]').textContent, title: document.querySelector('[data-tool="stopwatch"] h3').textContent }));
-  await page.waitForFunction(() => [...document.querySelectorAll('#data td')].some((c) => c.textContent === 'Lagefehler |Δx|'), null, { timeout: WAIT });
+  // the row comes with the panel, its value and unit with the first frame that carries an estimate
+  await page
+    .waitForFunction(
+      () => [...document.querySelectorAll('#data tr')].some((tr) => tr.cells[0]?.textContent === 'Lagefehler |Δx|' && tr.cells[2]?.textContent === 'm'),
+      null,
+      { timeout: WAIT },
+    )
+    .catch(() => undefined);
   const rowDe = (await dataRows(page)).find((r) => r[0] === 'Lagefehler |Δx|');
   await page.screenshot({ path: 'test-results/lab-de.png' });
   await page.locator('[data-input="language"]').selectOption('en');
