@@ -4,6 +4,7 @@ their error bars with noise — and the fitted scenario runs with `pendulab run`
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
@@ -66,3 +67,20 @@ def test_mass_and_stiffness_are_not_both_determined() -> None:
     res = pl.fit(t, positions=x, pendulum=pl.SwingingSpring(39.0, 0.75, 9.81, 1.0), fit="stiffness,mass")
     assert not res.determined["mass"] and not res.determined["stiffness"]
     assert res.combinations
+
+
+@pytest.mark.parametrize(
+    ("spring", "named"),
+    [
+        (pl.SwingingSpring(float("nan"), 0.75, 9.81, 1.0), "stiffness"),
+        (pl.SwingingSpring(-1.0, 0.75, 9.81, 1.0), "stiffness"),
+        (pl.SwingingSpring(1e308, 0.75, 9.81, 1.0), "stiffness"),
+        (pl.SwingingSpring(39.0, 0.0, 9.81, 1.0), "length"),
+        (pl.SwingingSpring(39.0, 0.75, math.inf, 1.0), "g"),
+        (pl.SwingingSpring(39.0, 0.75, 9.81, 0.0), "mass"),
+    ],
+)
+def test_a_bad_spring_is_a_clear_error_naming_the_value(spring: pl.SwingingSpring, named: str) -> None:
+    t, x = _positions(1.0, 30.0)
+    with pytest.raises(pl.InvalidInputError, match=f"spring's {named} = "):
+        pl.fit(t, positions=x, pendulum=spring, fit="stiffness,length")

@@ -174,6 +174,12 @@ def fit(
             mass=pendulum.mass,
             stiffness=pendulum.k_over_m * pendulum.mass,
         )
+        for name, spec in model_params(model).items():  # the registry's limits, as a Pendulum checks them
+            v = values[name]
+            if not (math.isfinite(v) and float(spec["min"]) <= v <= float(spec["max"])):
+                raise InvalidInputError(
+                    f"the spring's {name} = {v!r} {spec['unit']}: allowed is {spec['allowed']}"
+                )
         values.update(r0=pendulum.equilibrium_length, r_dot0=0.0)
     else:
         values.update({k: float(v) for k, v in pendulum.params().items() if k != "model"})
