@@ -116,17 +116,8 @@ def _smoothed(t: FloatArray, rel: FloatArray, period: float | None) -> tuple[Flo
 def spring_start(
     t: FloatArray, rel: FloatArray, out: dict[str, Any], free: set[str], period: float | None
 ) -> None:
-    """Starting values of a spring from 3-D positions relative to the pivot [m] (module doc): r₀ and
-    ṙ₀ from the first samples, and k/m, l₀ from the radial equation of motion;
-    parameters it cannot read off stay as given."""
-    r = np.linalg.norm(rel, axis=1)
-    if "length" in free:  # unless the equation of motion says better: l₀ = l − m g/k
-        hanging = float(np.median(r))
-        out["length"] = max(hanging - out["g"] * out["mass"] / out["stiffness"], 0.1 * hanging)
-    n = min(len(t), max(5, len(t) // 50))
-    c = np.polyfit(t[:n] - t[0], r[:n], min(2, n - 1))
-    out["r0"] = float(c[-1])
-    out["r_dot0"] = float(c[-2]) if len(c) > 1 else 0.0
+    """k/m and l₀ of a spring from 3-D positions relative to the pivot [m] by the radial equation of
+    motion (module doc), where the data allow it; otherwise ``out`` stays as it is."""
     if len(t) < 16:
         return
     smooth = _smoothed(t, rel, period)

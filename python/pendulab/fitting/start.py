@@ -237,11 +237,13 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
     if "theta0" in free:
         out["theta0"] = min(max(out["theta0"], 0.0), math.pi)
     if "stiffness" in values:  # the swinging spring: r₀, ṙ₀, k, l₀ (spring_model.py)
-        if "positions" in obs.values and obs.values["positions"].shape[1] == 3:
-            spring_start(t, rel, out, free, period)
-        elif "length" in free:  # the rest length below the hanging length
+        if "length" in free:  # the rest length l₀ = l − m g/k below the hanging length
             sag = out["g"] * out["mass"] / out["stiffness"]
             out["length"] = max(out["length"] - sag, 0.1 * out["length"])
+        if "positions" in obs.values and obs.values["positions"].shape[1] == 3:
+            r0, rd0 = _rates(t, np.linalg.norm(rel, axis=1), span)
+            out |= {k: v for k, v in (("r0", r0), ("r_dot0", rd0)) if k in free}
+            spring_start(t, rel, out, free, period)
     return out
 
 

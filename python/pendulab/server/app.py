@@ -69,7 +69,7 @@ from .rest import (
     scenario_toml,
 )
 from .schema import TICK_HZ, schema
-from .session import Session, Setup, example_resolver, model_params, resolve_scenario, scenario_files
+from .session import Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
 from .tick import Message, first_messages, tick_messages
 from .views import EMRequest, ReducedRequest, em_view, reduced_view
 
@@ -106,28 +106,13 @@ From a source checkout run <code>make web</code> (needs Node 20 and npm), then r
 The API is up: <a href="/api/schema">/api/schema</a>.</p>"""
 
 
-def _describe(setup: Setup) -> dict[str, Any]:
-    p = setup.pendulum
-    return {
-        "name": setup.name,
-        "title": setup.title,
-        "params": {"length": p.length, "mass": p.mass, "g": p.g},
-        "model": p.model,
-        "model_params": model_params(p),
-        "start": {"x": [float(c) for c in setup.state.x], "v": [float(c) for c in setup.state.v]},
-        "method": setup.method,
-        "dt": setup.dt,
-        "t0": setup.t0,
-    }
-
-
 def scenarios() -> list[dict[str, Any]]:
     """The example scenarios, each with its pendulum, start (x, v), method and dt; an invalid file is
     listed with ``error`` set instead."""
     out: list[dict[str, Any]] = []
     for name, path in scenario_files().items():
         try:
-            out.append(_describe(Setup.from_scenario(load_scenario(path), name)))
+            out.append(describe(Setup.from_scenario(load_scenario(path), name)))
         except (ScenarioError, OSError) as e:
             out.append({"name": name, "error": " ".join(str(e).split())})
     return out
@@ -215,7 +200,7 @@ def create_app(
     def get_scenarios() -> list[dict[str, Any]]:
         listed = scenarios()
         if default.name not in {s["name"] for s in listed}:  # a file given to `pendulab serve`
-            listed.insert(0, _describe(default))
+            listed.insert(0, describe(default))
         return listed
 
     @app.post("/api/exact")

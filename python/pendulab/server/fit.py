@@ -46,7 +46,7 @@ from ..fitting.table import parse_table
 from ..model import FloatArray, Pendulum
 from .protocol import validation_problems
 from .scenarios import Setup
-from .session import model_params
+from .session import describe
 
 MAX_FIT_BYTES = 2 * 2**20
 """Largest body of ``POST /api/fit`` [bytes] (about 50 000 rows of t, x, z)."""
@@ -133,22 +133,6 @@ def measured_path(res: FitResult, data: dict[str, Any]) -> dict[str, Any] | None
     }
 
 
-def _describe(setup: Setup) -> dict[str, Any]:
-    """The setup as ``GET /api/scenarios`` describes a scenario (the page loads it the same way)."""
-    p = setup.pendulum
-    return {
-        "name": None,
-        "title": setup.title,
-        "params": {"length": p.length, "mass": p.mass, "g": p.g},
-        "model": p.model,
-        "model_params": model_params(p),
-        "start": {"x": [float(c) for c in setup.state.x], "v": [float(c) for c in setup.state.v]},
-        "method": setup.method,
-        "dt": setup.dt,
-        "t0": setup.t0,
-    }
-
-
 def _finite(v: float) -> float | None:
     return float(v) if math.isfinite(v) else None
 
@@ -173,7 +157,7 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
         )
     scenario = res.to_scenario(title=f"fitted to {req.name[:80]}")
     try:
-        lab: dict[str, Any] | None = _describe(Setup.from_scenario(scenario, None))
+        lab: dict[str, Any] | None = describe(Setup.from_scenario(scenario, None))
     except ValueError:  # ScenarioError: a model the lab does not run
         lab = None
     return {

@@ -127,6 +127,24 @@ def model_params(pendulum: LabPendulum) -> dict[str, float]:
     return {p["name"]: given.get(p["name"], float(p["default"])) for p in own_params(pendulum.model)}
 
 
+def describe(setup: Setup) -> dict[str, Any]:
+    """A setup as ``GET /api/scenarios`` lists it and the page loads it (also a fitted scenario,
+    ``POST /api/fit``): name, title, length [m], mass [kg], g [m/s²], model and its parameters, the
+    start x [m], v [m/s], method, dt [s] and t0 [s]."""
+    p = setup.pendulum
+    return {
+        "name": setup.name,
+        "title": setup.title,
+        "params": {"length": p.length, "mass": p.mass, "g": p.g},
+        "model": p.model,
+        "model_params": model_params(p),
+        "start": {"x": [float(c) for c in setup.state.x], "v": [float(c) for c in setup.state.v]},
+        "method": setup.method,
+        "dt": setup.dt,
+        "t0": setup.t0,
+    }
+
+
 def rebuild(pendulum: LabPendulum, **changes: Any) -> LabPendulum:
     """The same model with some of length [m], mass [kg], g [m/s²] or its own parameters changed
     (``model=`` switches the model: its own parameters start from the registry's defaults)."""
