@@ -224,16 +224,52 @@ def require_finite_result(what: str, inputs: str, *arrays: Any) -> None:
             )
 
 
-_TOML_TOKENS = re.compile(
-    r'"""(?:\\.|[^\\])*?"""|\'\'\'.*?\'\'\'|"(?:\\.|[^"\\\n])*"|\'[^\'\n]*\'|#[^\n]*|[\[\]{}]', re.S
-)
+_TOML_INTERESTING = re.compile(r"[\"'#\[\]{}]")
+"""What the nesting check stops at: a string or comment start, a bracket or brace."""
+_BASIC_STOP = re.compile(r'[\\"\n]')
+"""Where a one-line basic string may end: an escape, its closing quote, or the end of the line."""
+_MULTILINE_STOP = re.compile(r'\\.|"""', re.S)
+"""Where a multi-line basic string may end: an escape (skipped) or its closing triple quote."""
+
+
+def _skip_string(text: str, i: int) -> int:
+    """The position after the TOML string starting at ``text[i]`` (a quote); an unterminated string
+    ends at its line's end (the parser reports it). Each character is looked at a bounded number of
+    times: linear in the string's length, whatever it holds."""
+    n = len(text)
+    if text.startswith('"""', i):
+        pos = i + 3
+        while (m := _MULTILINE_STOP.search(text, pos)) is not None:
+            if m.group() == '"""':
+                return m.end()
+            pos = m.end()
+        return n
+    if text.startswith("'''", i):
+        j = text.find("'''", i + 3)
+        return n if j < 0 else j + 3
+    if text[i] == "'":  # a literal string: no escapes, ends at the next quote on its line
+        j = text.find("'", i + 1)
+        stop = n if j < 0 else j
+        nl = text.find("\n", i + 1, stop)
+        return nl if nl >= 0 else (n if j < 0 else j + 1)
+    pos = i + 1
+    while (m := _BASIC_STOP.search(text, pos)) is not None:
+        c = m.group()
+        if c == "\\":
+            pos = m.end() + 1  # the escaped character, whatever it is
+        elif c == '"':
+            return m.end()
+        else:
+            return m.start()  # unterminated on its line
+    return n
 
 
 def read_file_capped(path: str | os.PathLike[str]) -> str:
     """The UTF-8 text of a scenario or sweep file, refused before parsing when it is larger than
     :data:`FILE_BYTES` (1 MiB; ``/dev/zero`` returns at once) or nests arrays and tables deeper than
     :data:`FILE_NESTING`. Read errors are ``OSError`` naming the file; a refusal is an
-    :class:`InvalidInputError` saying what is allowed (the caller adds the file name)."""
+    :class:`InvalidInputError` saying what is allowed (the caller adds the file name). A UTF-8 byte
+    order mark (Windows editors write one) is dropped."""
     source = os.fspath(path)
     try:
         with open(path, "rb") as f:
@@ -245,7 +281,7 @@ def read_file_capped(path: str | os.PathLike[str]) -> str:
             f"the file is larger than {FILE_BYTES} bytes (1 MiB); {LIMITS['file_bytes']['allowed']}"
         )
     try:
-        text = raw.decode("utf-8")
+        text = raw.decode("utf-8").removeprefix("\ufeff")
     except UnicodeDecodeError as e:
         raise InvalidInputError(f"not UTF-8 text (byte {e.start}): TOML files must be UTF-8") from None
     check_nesting(text)
@@ -254,20 +290,29 @@ def read_file_capped(path: str | os.PathLike[str]) -> str:
 
 def check_nesting(text: str) -> None:
     """Refuses TOML text whose arrays and inline tables nest deeper than :data:`FILE_NESTING` (before
-    parsing: the parser recurses once per level)."""
-    depth = deepest = 0
-    for m in _TOML_TOKENS.finditer(text):
-        c = m.group()
+    parsing: the parser recurses once per level). A scanner, not a backtracking regular expression:
+    linear time in the text's length whatever it holds (unterminated strings, runs of escapes)."""
+    depth = deepest = pos = 0
+    while (m := _TOML_INTERESTING.search(text, pos)) is not None:
+        c, i = m.group(), m.start()
+        if c in "\"'":
+            pos = _skip_string(text, i)
+            continue
+        if c == "#":  # a comment runs to the end of its line
+            nl = text.find("\n", i)
+            pos = len(text) if nl < 0 else nl + 1
+            continue
+        pos = i + 1
         if c in "[{":
             depth += 1
             deepest = max(deepest, depth)
             if deepest > FILE_NESTING:
-                line = text.count("\n", 0, m.start()) + 1
+                line = text.count("\n", 0, i) + 1
                 raise InvalidInputError(
                     f"arrays or tables nest more than {FILE_NESTING} levels deep (line {line}); "
                     f"{LIMITS['file_nesting']['allowed']}"
                 )
-        elif c in "]}":
+        else:
             depth = max(depth - 1, 0)
 
 

@@ -83,7 +83,7 @@ def test_a_bad_file_is_a_422_naming_row_and_column(client: TestClient) -> None:
     bad = "t,x,z\n0,0.1,-0.5\n0.1,oops,-0.5\n"
     r = client.post("/api/fit", content=json.dumps({"csv": bad, "name": "bad.csv"}), headers=JSON)
     assert r.status_code == 422
-    assert r.json()["detail"] == "bad.csv: row 2, column 'x': 'oops' is not a number"
+    assert r.json()["detail"] == "bad.csv: row 2 (line 3), column 'x': 'oops' is not a number"
     r = client.post("/api/fit", content=json.dumps({"csv": "a,b\n1,2\n"}), headers=JSON)
     assert r.status_code == 422 and "no time column 't'" in r.json()["detail"]
     r = client.post("/api/fit", content=json.dumps({"csv": "t,x,z\n", "model": "spring"}), headers=JSON)

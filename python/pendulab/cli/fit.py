@@ -1,10 +1,15 @@
 """``pendulab fit``: the pendulum that best explains measured data (docs/fit.md). Reads a CSV file,
 prints the report (parameters ± standard errors, what the data do not determine, χ²), writes the fitted
 scenario (TOML, which ``pendulab run`` and the lab accept) and optionally a figure. SI units; exit code
-0 on success, 2 on a user error (one ``error: …`` line), 130 on Ctrl-C."""
+0 on success, 2 on a user error (one ``error: …`` line), 130 on Ctrl-C.
+
+``--sigma`` is the noise of one measured value in its kind's SI unit: one number for every kind, or
+``KIND=VALUE`` per kind (repeatable): positions, horizontal [m]; angles, planar_angle (or angle)
+[rad]; specific_force [m/s²]; angular_speed [rad/s]."""
 
 from __future__ import annotations
 
+import inspect
 import math
 import warnings
 from pathlib import Path
@@ -15,10 +20,53 @@ import typer
 from .._core import InvalidInputError
 from ..fitting import fit
 from ..fitting.problem import FITTABLE_MODELS, model_params
-from ..fitting.table import read_table
+from ..fitting.table import read_table_notes
 from ..model import Pendulum
 from ..variants.spring import SwingingSpring
 from .common import _fail, _say, _user_errors, app
+
+SIGMA_KINDS = {
+    "positions": "positions",
+    "horizontal": "horizontal",
+    "angles": "angles",
+    "planar_angle": "planar_angle",
+    "angle": "planar_angle",
+    "specific_force": "specific_force",
+    "f": "specific_force",
+    "angular_speed": "angular_speed",
+    "w": "angular_speed",
+}
+"""``--sigma KIND=VALUE``: the names of the data kinds (and the column names that stand for them)."""
+
+
+def _sigma(items: list[str] | None, kinds: list[str]) -> float | dict[str, float] | None:
+    """``--sigma`` as pl.fit takes it: None, one number, or kind → number (each positive, finite)."""
+    if not items:
+        return None
+    if len(items) == 1 and "=" not in items[0]:
+        return _positive(items[0], "--sigma")
+    out: dict[str, float] = {}
+    for item in items:
+        name, sep, text = item.partition("=")
+        kind = SIGMA_KINDS.get(name.strip().lower())
+        if not sep or kind is None:
+            _fail(
+                f"--sigma {item[:60]!r}: give one number, or KIND=VALUE per kind with KIND one of "
+                f"{', '.join(SIGMA_KINDS)}"
+            )
+        if kind not in kinds:
+            _fail(f"--sigma {item[:60]!r}: the file has no {kind} data (it has {', '.join(kinds)})")
+        if kind in out:
+            _fail(f"--sigma: {kind} given twice")
+        out[kind] = _positive(text, f"--sigma {name.strip()}")
+    return out
+
+
+def _positive(text: str, what: str) -> float:
+    value = _number(text, what)
+    if not value > 0.0 or value < 1e-100 or value > 1e100:
+        _fail(f"{what}: {text.strip()[:40]!r} must be a positive number in [1e-100, 1e100] (SI units)")
+    return value
 
 
 def _number(text: str, what: str) -> float:
@@ -43,8 +91,11 @@ def fit_cmd(
         typer.Option(help="The file's column names in order (e.g. t,x,y,z); default its header row."),
     ] = None,
     sigma: Annotated[
-        float | None,
-        typer.Option(help="Noise of one measured value, in its unit; default: from the residual."),
+        list[str] | None,
+        typer.Option(
+            help="Noise of one measured value (SI): a number, or KIND=VALUE per data kind (repeatable, "
+            "e.g. positions=0.002, angle=0.01); default: from the residual."
+        ),
     ] = None,
     param: Annotated[
         list[str] | None,
@@ -66,8 +117,9 @@ def fit_cmd(
     ] = None,
 ) -> None:
     """Fit a pendulum to measured data and print the report. Column names: t [s]; x, y, z [m] (or x, z
-    seen along y); theta, phi [rad]; angle [rad] (a planar swing); specific_force [m/s^2];
-    angular_speed [rad/s]."""
+    seen along y, or x, y seen from above); theta, phi [rad]; angle [rad] (a planar swing);
+    specific_force [m/s^2]; angular_speed [rad/s]. Exports of Tracker, Logger Pro, phyphox, Cassy and
+    Excel are read as they are (docs/fit.md)."""
     with _user_errors():
         if out is not None and out.suffix.lower() != ".toml":
             _fail(f"--out {str(out)!r}: the fitted scenario is written as TOML; give a name ending in .toml")
@@ -89,7 +141,16 @@ def fit_cmd(
         else:
             pendulum = Pendulum(**base, model=model, **values)
         names = [c.strip() for c in columns.split(",")] if columns else None
-        kwargs = read_table(data, names)
+        kwargs, notes = read_table_notes(data, names)
+        for note in notes:
+            _say(f"data: {note}", err=True)
+        kinds = [k for k in kwargs if k != "t"]
+        if "horizontal" in kwargs and "horizontal" not in inspect.signature(fit).parameters:
+            _fail(
+                "horizontal positions (x, y seen from above) are read, but this version's fit does not "
+                "take them yet"
+            )
+        sigmas = _sigma(sigma, kinds)
         where = None
         if pivot is not None:
             parts = pivot.split(",")
@@ -99,7 +160,13 @@ def fit_cmd(
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             res = fit(
-                pendulum=pendulum, fit=fit_names, sigma=sigma, loss=loss, pivot=where, progress=None, **kwargs
+                pendulum=pendulum,
+                fit=fit_names,
+                sigma=sigmas,
+                loss=loss,
+                pivot=where,
+                progress=None,
+                **kwargs,
             )
         for w in caught:
             _say(f"warning: {w.message}", err=True)

@@ -9,6 +9,12 @@ accelerometer, which measures the specific force a − g⃗ [m/s²]; ``wx``, ``w
 deg → rad; deg/s → rad/s; g₀ = 9.80665 m/s² → m/s²); a unit that does not fit the column's quantity,
 pixels, or a phone's "linear acceleration" (gravity removed: not the specific force) is an error
 naming the column and what is allowed.
+
+Header cells as the common lab programs write them: ``x (cm)`` and ``Time [s]`` (video analysis,
+phyphox), ``t / s`` (Cassy, the ISO 80000 quantity / unit form), ``Latest: Time (s)`` and
+``Run 1: Angle (°)`` (Logger Pro and Graphical Analysis: the run's name before a colon), phyphox'
+``Absolute acceleration (m/s^2)`` and the gyroscope's ``Absolute (rad/s)``. Cells are split by
+``str`` methods, not a regular expression over the whole cell: linear time whatever the cell holds.
 """
 
 from __future__ import annotations
@@ -61,6 +67,9 @@ ALIASES = {
     "w": "angular_speed",
     "omega": "angular_speed",
     "planar_angle": "angle",
+    "α": "angle",
+    "θ": "theta",
+    "φ": "phi",
     "-": "-",
 }
 
@@ -68,26 +77,49 @@ _COMPONENT = re.compile(
     r"^(?:(?P<acc>acceleration|accel|acc|a)|(?P<gf>gf)|(?P<gyro>gyroscope|gyro|angular velocity|omega|w))"
     r"[ _]?(?P<axis>[xyz])$"
 )
-_UNIT = re.compile(r"^(?P<name>.*?)\s*[\(\[](?P<unit>[^\)\]]*)[\)\]]\s*$")
+MAX_NAME = 200
+"""The longest column name looked up [characters]; longer names are unknown columns."""
 
 
 def split_unit(cell: str) -> tuple[str, str | None]:
-    """``'x (cm)'`` → (``'x'``, ``'cm'``); ``'t'`` → (``'t'``, None)."""
-    m = _UNIT.match(cell.strip())
-    if m is None:
-        return cell.strip(), None
-    return m["name"].strip(), m["unit"].strip()
+    """``'x (cm)'`` → (``'x'``, ``'cm'``); ``'t / s'`` → (``'t'``, ``'s'``); ``'t'`` → (``'t'``,
+    None). The unit is the text in the last pair of brackets that ends the cell, else the text after
+    the first `` / ``."""
+    s = cell.strip()
+    if s[-1:] in (")", "]"):
+        i = max(s.rfind("("), s.rfind("["))
+        inner = s[i + 1 : -1]
+        if i >= 0 and ")" not in inner and "]" not in inner:
+            return s[:i].strip(), inner.strip()
+    name, sep, unit = s.partition(" / ")
+    if sep and name.strip() and unit.strip():
+        return name.strip(), unit.strip()
+    return s, None
+
+
+def drop_run(cell: str) -> str:
+    """A Logger Pro / Graphical Analysis header cell without its run's name: ``'Latest: Time (s)'``
+    → ``'Time (s)'`` (the colon must come before any unit bracket)."""
+    head, sep, rest = cell.partition(":")
+    if sep and rest.strip() and "(" not in head and "[" not in head:
+        return rest.strip()
+    return cell
 
 
 def column(cell: str, where: str) -> tuple[str, float]:
     """The data kind or component a header cell names and the factor to SI of its values: ``'x (cm)'``
     → (``'x'``, 0.01). Physics Toolbox's g-force columns ``gFx``, ``gFy``, ``gFz`` (the specific force
     in units of g₀) are accelerometer components in g unless a unit says otherwise."""
-    raw, unit = split_unit(cell)
+    raw, unit = split_unit(drop_run(cell))
+    if len(raw) > MAX_NAME:
+        return raw[:MAX_NAME].lower(), 1.0  # an unknown column (ignored or refused by the caller)
     name = column_name(raw, where)
     implied = "g" if re.fullmatch(r"gf[ _]?[xyz]|tgf", " ".join(raw.lower().split())) else None
     if name == "tgf":
         name = "specific_force"
+    if name == "absolute" and unit is not None:  # phyphox: the magnitude, named by its unit
+        u = unit.strip().lower().replace(" ", "")
+        name = "angular_speed" if u in UNITS["angular rate"] else "specific_force"
     return name, to_si(name, unit if unit is not None else implied, where)
 
 

@@ -1,9 +1,15 @@
-"""Measured data from a file: CSV (comma, semicolon, tab or whitespace separated; ``#`` comments; an
-optional header row naming the columns) as exported by video-analysis tools and phone sensor apps.
+"""Measured data from a file as lab software exports it: CSV (comma, semicolon, tab or whitespace
+separated; ``#`` comments; a header row naming the columns, possibly below a track or run name) from
+video analysis (Tracker, Logger Pro), phone sensor apps (phyphox, Physics Toolbox) and data loggers
+(Cassy, Vernier). The layout (BOM, preamble, header, separator, decimal comma): layout.py; the
+numbers: cells.py (NumPy's C reader); names and units: columns.py. SI units: a header cell naming its
+unit (``x (cm)``, ``t [ms]``, ``t / s``) is converted.
 
-Column names map to the data kinds of :func:`pendulab.fit` (SI units unless a header cell names its
-unit, ``x (cm)``, ``t [ms]``, which is converted: columns.py):
-``t`` [s]; ``x``, ``y``, ``z`` [m] (positions; ``x``, ``z`` alone: a camera looking along y);
+Column names map to the data kinds of :func:`pendulab.fit`:
+``t`` [s]; ``x``, ``y``, ``z`` [m] (positions; ``x``, ``z`` alone: a camera looking along y;
+``x``, ``y`` alone: *horizontal* positions seen from above, e.g. a crane hook's sway log — except in
+a video-analysis export (Tracker's track-name line, Logger Pro's run name), whose ``x``, ``y`` are the
+camera's horizontal and vertical, read as ``x``, ``z``);
 ``theta``, ``phi`` [rad] (angles); ``angle`` [rad] (planar_angle); ``specific_force`` or ``f``
 [m/s²]; ``angular_speed`` or ``w`` [rad/s]; accelerometer components ``ax, ay, az`` (also
 ``Acceleration x``, Physics Toolbox's ``gFx`` in g₀) → specific_force = |a|, gyroscope components
@@ -12,8 +18,6 @@ unit, ``x (cm)``, ``t [ms]``, which is converted: columns.py):
 
 from __future__ import annotations
 
-import csv
-import io
 import os
 from pathlib import Path
 from typing import Any
@@ -21,13 +25,16 @@ from typing import Any
 import numpy as np
 
 from .._core import InvalidInputError
+from .cells import read_cells
 from .columns import QUANTITY, column
+from .layout import Layout, clip, find_layout
 
 MAX_BYTES = 256 * 2**20
 """Largest data file read [bytes] (about 5 million rows of 5 columns)."""
 
 KNOWN = set(QUANTITY) | {"-"}
 VECTORS = {"specific_force": ("ax", "ay", "az"), "angular_speed": ("wx", "wy", "wz")}
+VIDEO_TOOLS = ("Tracker's track name", "Logger Pro's run name")
 
 
 def _columns(names: list[str], where: str) -> tuple[list[str], list[float]]:
@@ -35,16 +42,36 @@ def _columns(names: list[str], where: str) -> tuple[list[str], list[float]]:
     pairs = [column(raw, where) for raw in names]
     out = [n for n, _ in pairs]
     if "t" not in out:
-        raise InvalidInputError(f"{where}: no time column 't' among {names}; name the columns with --columns")
+        raise InvalidInputError(
+            f"{where}: no time column 't' among {_names(names)}; name the columns with --columns"
+        )
     repeated = sorted({n for n in out if n != "-" and n in KNOWN and out.count(n) > 1})
     if repeated:
-        raise InvalidInputError(f"{where}: column(s) {repeated} appear more than once among {names}")
+        raise InvalidInputError(
+            f"{where}: column(s) {repeated} appear more than once among {_names(names)} (an export of "
+            "several tracks or runs: keep one, or name the columns with --columns and '-' to skip)"
+        )
     return out, [f for _, f in pairs]
+
+
+def _names(names: list[str]) -> str:
+    """The header's names for an error message, each and the list abbreviated."""
+    shown = [clip(n) for n in names[:12]]
+    return "[" + ", ".join(shown) + (", ..." if len(names) > 12 else "") + "]"
 
 
 def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -> dict[str, Any]:
     """Reads a data file; returns the keyword arguments of :func:`pendulab.fit` (``t`` and the data
     kinds present). ``columns``: the names of the file's columns in order (default: its header row)."""
+    return read_table_notes(path, columns)[0]
+
+
+def read_table_notes(
+    path: str | os.PathLike[str], columns: list[str] | None = None
+) -> tuple[dict[str, Any], list[str]]:
+    """:func:`read_table` and notes on how the file was read (:func:`parse_table_notes`). The text
+    is UTF-8 (with or without a BOM), UTF-16 with a BOM (Excel's "Unicode text"), or else Windows-1252
+    (older Windows exports: ``°`` as one byte), said in a note."""
     p = Path(path)
     try:
         size = p.stat().st_size
@@ -52,62 +79,102 @@ def read_table(path: str | os.PathLike[str], columns: list[str] | None = None) -
             raise InvalidInputError(f"{p}: not a regular file")
         if size > MAX_BYTES:
             raise InvalidInputError(f"{p}: {size} bytes, more than the {MAX_BYTES} a data file may have")
-        with p.open("r", encoding="utf-8", errors="strict", newline="") as fh:
-            text = fh.read(MAX_BYTES + 1)
-    except UnicodeDecodeError as e:
-        raise InvalidInputError(f"{p}: not a text (UTF-8) file: {e.reason} at byte {e.start}") from e
+        with p.open("rb") as fh:
+            raw = fh.read(MAX_BYTES + 1)
     except OSError as e:
         raise InvalidInputError(f"{p}: cannot read: {e.strerror or e}") from e
-    if len(text) > MAX_BYTES:
+    if len(raw) > MAX_BYTES:
         raise InvalidInputError(f"{p}: more than {MAX_BYTES} bytes")
-    return parse_table(text, columns, str(p))
+    text, note = _decode(raw, str(p))
+    del raw
+    kwargs, notes = parse_table_notes(text, columns, str(p))
+    return kwargs, ([note] if note else []) + notes
+
+
+def _decode(raw: bytes, where: str) -> tuple[str, str | None]:
+    """The text of a file's bytes and a note on its encoding when it is not UTF-8."""
+    if raw.startswith((b"\xff\xfe", b"\xfe\xff")):
+        try:
+            return raw.decode("utf-16"), "read as UTF-16"
+        except UnicodeDecodeError as e:
+            raise InvalidInputError(f"{where}: not UTF-16 text: {e.reason} at byte {e.start}") from None
+    try:
+        return raw.decode("utf-8"), None
+    except UnicodeDecodeError as e:
+        first = e
+    try:
+        return raw.decode("cp1252"), f"not UTF-8 (byte {first.start}): read as Windows-1252"
+    except UnicodeDecodeError:
+        raise InvalidInputError(
+            f"{where}: not a text (UTF-8) file: {first.reason} at byte {first.start}"
+        ) from None
 
 
 def parse_table(text: str, columns: list[str] | None = None, where: str = "<data>") -> dict[str, Any]:
     """The text of a data file (see the module doc) as the keyword arguments of :func:`pendulab.fit`;
     ``where`` names it in error messages (a path, or e.g. the uploaded file's name). The caller bounds
     its size (:func:`read_table` at :data:`MAX_BYTES`)."""
-    lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
-    if not lines:
-        raise InvalidInputError(f"{where}: no data rows")
-    try:
-        dialect: Any = csv.Sniffer().sniff(lines[0], delimiters=",;\t ")
-    except csv.Error:
-        dialect = csv.excel
-    rows = list(csv.reader(io.StringIO("\n".join(lines)), dialect, skipinitialspace=True))
-    rows = [[c for c in r if c != ""] if dialect.delimiter == " " else r for r in rows]
-    header = None
-    try:
-        [float(c) for c in rows[0]]
-    except ValueError:
-        header, rows = rows[0], rows[1:]
-    names = columns if columns is not None else header
+    return parse_table_notes(text, columns, where)[0]
+
+
+def parse_table_notes(
+    text: str, columns: list[str] | None = None, where: str = "<data>"
+) -> tuple[dict[str, Any], list[str]]:
+    """:func:`parse_table` and notes for the user on how the file was read (the program it looks
+    like, a preamble skipped, how x, y were taken)."""
+    text = text.removeprefix("\ufeff")  # Excel's "CSV UTF-8" and Windows editors write a BOM
+    layout = find_layout(text, where)
+    names = columns if columns is not None else layout.header
     if names is None:
         raise InvalidInputError(
             f"{where}: the file has no header row: name its columns (e.g. --columns t,x,y,z)"
         )
-    names, factors = _columns(list(names), where)
-    unknown = [n for n in names if n not in KNOWN]
+    kinds, factors = _columns(list(names), where)
+    unknown = [n for n in kinds if n not in KNOWN]
     if unknown and columns is not None:
         raise InvalidInputError(f"unknown column name(s) {unknown}; use {', '.join(sorted(KNOWN))}")
-    width = len(names)
-    data = np.full((len(rows), width), np.nan)
-    for i, r in enumerate(rows):
-        if len(r) < width:
-            raise InvalidInputError(
-                f"{where}: row {i + 1} has {len(r)} values, the columns are {width}: {names}"
-            )
-        for j in range(width):
-            cell = r[j].strip()
-            if dialect.delimiter != "," and "," in cell and "." not in cell:
-                cell = cell.replace(",", ".")  # a decimal comma (a European locale's export)
-            try:
-                data[i, j] = float(cell) if cell not in ("", "nan", "NaN", "NA") else np.nan
-            except ValueError as e:
-                raise InvalidInputError(
-                    f"{where}: row {i + 1}, column {names[j]!r}: {cell[:40]!r} is not a number"
-                ) from e
-    col = {n: data[:, j] * factors[j] for j, n in enumerate(names) if n in KNOWN and n != "-"}
+    use = [j for j, n in enumerate(kinds) if n in KNOWN and n != "-"]
+    data = read_cells(
+        text,
+        layout,
+        [str(n) for n in names],
+        use,
+        where,
+        factors=[factors[j] for j in use],
+        quantities=[QUANTITY[kinds[j]] for j in use],
+    )
+    col = {kinds[j]: data[:, k] for k, j in enumerate(use)}
+    notes = _notes(layout, columns is not None)
+    return _kinds(col, kinds, layout, columns is not None, where, notes), notes
+
+
+def _video_export(layout: Layout) -> str | None:
+    """The video-analysis program whose export this looks like, if any: Tracker writes the track's
+    name (``mass A``) on the line above the header; Logger Pro and Graphical Analysis put the run's
+    name before each header cell (``Latest: X (m)``) or on a line of its own."""
+    header = layout.header or []
+    if any(":" in c.partition("(")[0] for c in header):
+        return VIDEO_TOOLS[1]
+    if layout.preamble:
+        last = layout.preamble[-1]
+        return VIDEO_TOOLS[1] if last.lower().startswith(("latest", "run ")) else VIDEO_TOOLS[0]
+    return None
+
+
+def _notes(layout: Layout, named: bool) -> list[str]:
+    notes = []
+    if layout.preamble and not named:
+        shown = ", ".join(clip(p) for p in layout.preamble[-3:])
+        notes.append(f"skipped {len(layout.preamble)} line(s) above the header row: {shown}")
+    if layout.decimal_comma:
+        notes.append("read decimal commas")
+    return notes
+
+
+def _kinds(
+    col: dict[str, Any], names: list[str], layout: Layout, named: bool, where: str, notes: list[str]
+) -> dict[str, Any]:
+    """The columns (in SI) as the data kinds of :func:`pendulab.fit`."""
     for kind, parts in VECTORS.items():  # a sensor's components → the frame-free magnitude
         have = [c for c in parts if c in col]
         if have and kind in col:  # the app wrote the magnitude too (Physics Toolbox's TgF): use it
@@ -124,9 +191,25 @@ def parse_table(text: str, columns: list[str] | None = None, where: str = "<data
     elif {"x", "z"} <= col.keys():
         out["positions"] = np.column_stack([col["x"], col["z"]])
     elif {"x", "y"} <= col.keys() and "z" not in col:
+        tool = None if named else _video_export(layout)
+        if tool is not None:  # a camera's image plane: x across, y up (Tracker's and Logger Pro's default)
+            out["positions"] = np.column_stack([col["x"], col["y"]])
+            notes.append(
+                f"x, y taken as a camera's (horizontal, vertical), the fit's x, z ({tool} above the "
+                "header: a video-analysis export); for positions seen from above name them "
+                "--columns t,x,y"
+            )
+        else:
+            out["horizontal"] = np.column_stack([col["x"], col["y"]])
+            notes.append(
+                "x, y taken as horizontal positions (seen from above, e.g. a crane hook's sway); for a "
+                "camera's side view (horizontal, vertical) name them --columns t,x,z"
+            )
+    elif ("x" in col) != ("z" in col) or "y" in col:
+        have = sorted(k for k in ("x", "y", "z") if k in col)
         raise InvalidInputError(
-            f"{where}: columns x, y but no z: a camera's (horizontal, vertical) are x, z here (z up); "
-            "rename them"
+            f"{where}: position column(s) {have} alone; positions are x, y, z, or x, z (a camera's side "
+            "view), or x, y (horizontal, seen from above)"
         )
     if {"theta", "phi"} <= col.keys():
         out["angles"] = np.column_stack([col["theta"], col["phi"]])
@@ -136,5 +219,7 @@ def parse_table(text: str, columns: list[str] | None = None, where: str = "<data
         if kind in col:
             out[kind] = col[kind]
     if len(out) == 1:
-        raise InvalidInputError(f"{where}: no data columns among {names}; see docs/fit.md for the names")
+        raise InvalidInputError(
+            f"{where}: no data columns among {_names(names)}; see docs/fit.md for the names"
+        )
     return out

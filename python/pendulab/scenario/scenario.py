@@ -150,6 +150,7 @@ class Scenario:
     @classmethod
     def from_toml_str(cls, text: str, source: str = "<string>") -> Scenario:
         """A scenario from TOML text; ``source`` names it in error messages."""
+        text = text.removeprefix("\ufeff")  # a UTF-8 byte order mark (Windows editors write one)
         try:
             check_nesting(text)
             data = tomllib.loads(text)

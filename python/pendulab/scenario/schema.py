@@ -359,6 +359,24 @@ class ScenarioSpec(_Section):
     initial: InitialSection = Field(description="the table [initial]")
     simulation: SimulationSection = Field(description="the table [simulation]")
 
+    @field_validator("title", "description")
+    @classmethod
+    def _printable(cls, value: str | None, info: Any) -> str | None:
+        """Text that reaches terminals and pages: no control characters (an ANSI escape sequence
+        could recolour, move or retitle the terminal that prints it); the description may have line
+        breaks and tabs."""
+        if value is None:
+            return None
+        allowed = "" if info.field_name == "title" else "\n\t"
+        bad = next((c for c in value if _is_control(c) and c not in allowed), None)
+        if bad is not None:
+            where = value.index(bad)
+            raise ValueError(
+                f"has the control character {bad!r} at character {where + 1}: a {info.field_name} is "
+                f"printable text{' on one line' if info.field_name == 'title' else ''} (no escape sequences)"
+            )
+        return value
+
 
 SECTIONS: dict[str, type[_Section]] = {
     "pendulum": PendulumSection,
@@ -388,6 +406,12 @@ UNITS: dict[str, dict[str, str]] = {
     },
 }
 """The unit of every dimensioned key (written as comments by :meth:`Scenario.to_toml`)."""
+
+
+def _is_control(c: str) -> bool:
+    """A C0 or C1 control character or DEL (ESC starts ANSI sequences; U+009B is a one-character CSI)."""
+    o = ord(c)
+    return o < 0x20 or 0x7F <= o <= 0x9F
 
 
 def _show(value: Any) -> str:
