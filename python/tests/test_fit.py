@@ -61,19 +61,26 @@ def test_angles_alone_determine_only_g_over_l(swing: tuple) -> None:
     _, _s, t, x = swing
     rng = np.random.default_rng(3)
     theta, phi = _angles(x)
-    res = pl.fit(t, angles=(theta + 1e-3 * rng.standard_normal(len(t)), phi), fit=["length", "g"], sigma=1e-3)
+    arc_noise = (
+        1e-3 * rng.standard_normal(len(t)) / np.sin(theta)
+    )  # sigma is that of θ and of the arc sin θ·φ
+    angles = (theta + 1e-3 * rng.standard_normal(len(t)), phi + arc_noise)
+    res = pl.fit(t, angles=angles, fit=["length", "g"], sigma=1e-3)
     assert not res.determined["length"] and not res.determined["g"]
     assert math.isinf(res.stderr["length"]) and math.isinf(res.stderr["g"])
     value, err = res.combinations["g/length"]
     assert abs(value - 9.79 / 0.8) < 3 * err and err < 1e-3 * value
-    assert "not determined by these data" in res.report() and "g/length" in res.report()
+    assert (
+        "not determined: the data determine only a combination" in res.report() and "g/length" in res.report()
+    )
     # the start is still determined
     assert res.determined["theta0"] and abs(res.params["theta0"] - 0.4) < 5 * res.stderr["theta0"]
 
 
 def test_mass_is_never_determined_by_kinematics(swing: tuple) -> None:
     _, s, t, x = swing
-    res = pl.fit(t, positions=x + 1e-4, fit=["length", "g", "mass"], sigma=1e-3, state0=s)
+    noisy = x + 1e-3 * np.random.default_rng(4).standard_normal(x.shape)
+    res = pl.fit(t, positions=noisy, fit=["length", "g", "mass"], sigma=1e-3, state0=s)
     assert not res.determined["mass"] and res.determined["length"] and res.determined["g"]
 
 
@@ -190,6 +197,7 @@ def test_nan_rows_are_dropped_and_unsorted_rows_sorted(swing: tuple) -> None:
     assert res2.params["g"] == pytest.approx(9.79, rel=1e-8)
 
 
+@pytest.mark.filterwarnings("ignore:positions. the residual:UserWarning")  # a search cut short leaves one
 def test_a_fit_that_does_not_converge_says_so() -> None:
     p = pl.Pendulum(length=0.5, g=9.81, damping=0.05)
     t = np.arange(0.0, 8.0, 1 / 30)

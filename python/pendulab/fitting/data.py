@@ -10,6 +10,9 @@ Kinds (docs/fit.md; equation numbers of docs/theory.md):
 ``angles``         rad          (θ, φ): polar angle from the downward vertical and azimuth; the
                                 residual is (Δθ, sin θ · Δφ) with Δφ wrapped to (−π, π], so that
                                 φ's meaninglessness at the bottom costs nothing.
+``horizontal``     m            the bob's horizontal position (x, y) (N, 2), seen from above (a crane
+                                hook's sway log, a camera under the ceiling); with ``pivot_x``,
+                                ``pivot_y`` fitted, in any frame parallel to ours.
 ``planar_angle``   rad          the signed angle of a swing in the x–z plane, atan2(x, −z).
 ``specific_force`` m/s²         |ẍ − g⃗|: what an accelerometer riding on the bob reads, the rod's
                                 pull per mass T/m for the ideal pendulum (T-2.3) — frame-free.
@@ -17,7 +20,10 @@ Kinds (docs/fit.md; equation numbers of docs/theory.md):
 ================== ============ =================================================================
 
 Times t [s] may be uneven and have gaps. Rows with NaN anywhere are dropped and counted; times must be
-distinct; unsorted rows are sorted (with a warning).
+distinct; unsorted rows are sorted (with a warning). Values beyond |v| = 1e12 (SI units), a record
+longer than 1e9 s or shorter than 1e-6 s, and samples closer than 1e-12 of the record's span are
+refused with the row named: no measurement is like that, and the fit's arithmetic would overflow or
+underflow on them.
 """
 
 from __future__ import annotations
@@ -35,6 +41,7 @@ from ..model import FloatArray
 
 KINDS: dict[str, str] = {
     "positions": "m",
+    "horizontal": "m",
     "angles": "rad",
     "planar_angle": "rad",
     "specific_force": "m/s^2",
@@ -44,6 +51,12 @@ KINDS: dict[str, str] = {
 
 MIN_SAMPLES = 8
 MAX_SAMPLES = 10_000_000
+MAX_VALUE = 1e12
+"""Largest |value| of any data kind in SI units (m, rad, m/s², rad/s) and of any time [s]."""
+SPAN = (1e-6, 1e9)
+"""Shortest and longest record [s]."""
+MIN_SPACING = 1e-12
+"""Smallest spacing of two samples, as a fraction of the record's span."""
 
 
 def _show(value: Any) -> str:
@@ -71,6 +84,8 @@ class Observations:
 
 
 def _as_array(name: str, value: Any, n: int) -> FloatArray:
+    if np.iscomplexobj(value):
+        raise InvalidInputError(f"{name} must be real numbers, got complex values")
     try:
         a = np.asarray(value, dtype=np.float64)
     except (TypeError, ValueError) as e:
@@ -81,6 +96,11 @@ def _as_array(name: str, value: Any, n: int) -> FloatArray:
         if a.ndim != 2 or a.shape[1] != 2:
             raise InvalidInputError(
                 f"angles must be (theta, phi): two arrays of N values [rad], got shape {a.shape}"
+            )
+    elif name == "horizontal":
+        if a.ndim != 2 or a.shape[1] != 2:
+            raise InvalidInputError(
+                f"horizontal must have shape (N, 2) [m] (x, y seen from above), got {a.shape}"
             )
     elif name == "positions":
         if a.ndim != 2 or a.shape[1] not in (2, 3):
@@ -126,6 +146,8 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
         for kind in sigma:
             if kind not in given:
                 raise InvalidInputError(f"sigma given for {kind!r}, but there are no {kind} data")
+    if np.iscomplexobj(t):
+        raise InvalidInputError("t must be real times [s], got complex values")
     try:
         times = np.asarray(t, dtype=np.float64)
     except (TypeError, ValueError) as e:
@@ -169,9 +191,35 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
                 "angles: θ must lie in [0, π] rad (the polar angle from the downward vertical); "
                 f"got values from {theta.min():.6g} to {theta.max():.6g} — degrees? use np.radians"
             )
+    _check_ranges(times, arrays)
     sig = {k: _sigma(k, sigma) for k in arrays}
     columns = {k: int(a.shape[1]) for k, a in arrays.items()}
     return Observations(np.ascontiguousarray(times), arrays, sig, dropped, columns)
+
+
+def _check_ranges(times: FloatArray, arrays: Mapping[str, FloatArray]) -> None:
+    """The limits of the module doc, each violation named with its row."""
+    for kind, a in [("t", times[:, None]), *arrays.items()]:
+        big = np.flatnonzero(np.any(np.abs(a) > MAX_VALUE, axis=1))
+        if big.size:
+            i = int(big[0])
+            raise InvalidInputError(
+                f"{kind} in sorted row {i}: {_show(a[i].tolist())} is beyond ±{MAX_VALUE:g} (SI units); "
+                "a measurement of a pendulum never is — check the file's units and columns"
+            )
+    span = float(times[-1] - times[0])
+    if not SPAN[0] <= span <= SPAN[1]:
+        raise InvalidInputError(
+            f"the record spans {span:.6g} s; a fit needs {SPAN[0]:g} s to {SPAN[1]:g} s (times in s?)"
+        )
+    gap = np.diff(times)
+    close = np.flatnonzero(gap < MIN_SPACING * span)
+    if close.size:
+        i = int(close[0])
+        raise InvalidInputError(
+            f"the times {times[i]!r} s and {times[i + 1]!r} s are {gap[i]:.3g} s apart, less than "
+            f"{MIN_SPACING:g} of the record's span {span:.6g} s: round-off, not a measurement"
+        )
 
 
 def wrap(angle: FloatArray) -> FloatArray:
@@ -193,6 +241,8 @@ def predict(
     if kind == "positions":
         p = x + pivot
         return p if columns == 3 else p[:, [0, 2]]
+    if kind == "horizontal":
+        return (x + pivot)[:, :2]
     if kind == "angles":
         rho = np.hypot(x[:, 0], x[:, 1])
         return np.column_stack([np.arctan2(rho, -x[:, 2]), np.arctan2(x[:, 1], x[:, 0])])

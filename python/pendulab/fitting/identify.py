@@ -10,7 +10,13 @@ finds such directions (singular values below 1e-4 of the largest: columns that c
 combination 10⁴ times less certain than the rest, which the data then cannot separate; Jacobian steps
 are equal in ln p, so an exact symmetry gives exactly dependent columns): their parameters are
 reported as not determined, with the combination that is (e.g. g/length and its error), and the
-covariance is the pseudo-inverse on the determined subspace.
+covariance is the inverse on the determined parameters alone. A parameter with a share in a cut
+direction above 1 % (in column-normalised units) is not determined: along that direction its variance
+is unbounded, and leaving it in would drop the direction silently and understate the others' errors.
+Before the decomposition, parameters whose column is negligible (≤ 1e-4 of the largest: a symmetry the
+data cannot see, or a stationary point such as a sideways rate of 0 seen from the side) are taken out,
+so that their normalised noise cannot stand in for a real direction. Every undetermined parameter
+carries its reason. Correlated residuals widen the error bars (Newey–West, goodness.py; T-10.5).
 """
 
 from __future__ import annotations
@@ -23,9 +29,25 @@ import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
 from ..model import FloatArray
+from .goodness import inflation
 
 SINGULAR = 1e-4
 """Relative singular value below which a direction of parameter space is not determined."""
+
+INVOLVED = 0.01
+"""A parameter whose share (in column-normalised units) of a cut direction exceeds this is reported as
+not determined: along that direction its variance is unbounded."""
+
+
+@dataclass
+class Correlation:
+    """What the Newey–West widening needs (goodness.py): the σ-weighted residual, the sample index of
+    each residual row, the number of samples and the residual's lag-1 autocorrelation."""
+
+    residual: FloatArray
+    sample: FloatArray
+    samples: int
+    lag1: float
 
 
 @dataclass
@@ -37,6 +59,8 @@ class Identifiability:
     determined: dict[str, bool]
     combinations: dict[str, tuple[float, float]] = field(default_factory=dict)
     singular_values: FloatArray = field(default_factory=lambda: np.zeros(0))
+    reasons: dict[str, str] = field(default_factory=dict)
+    inflation: dict[str, float] = field(default_factory=dict)
 
 
 def jacobian(
@@ -79,53 +103,127 @@ def _try(residuals: Callable[[FloatArray], FloatArray], u: FloatArray) -> FloatA
 
 
 def analyse(
-    names: Sequence[str], values: Mapping[str, float], jac: FloatArray, variance: float, positive: set[str]
+    names: Sequence[str],
+    values: Mapping[str, float],
+    jac: FloatArray,
+    variance: float,
+    positive: set[str],
+    correlation: Correlation | None = None,
 ) -> Identifiability:
     """The analysis of the module doc for the Jacobian ``jac`` (columns in parameter units) of the
-    σ-weighted residuals; ``variance`` multiplies the covariance (1 when σ is known)."""
+    σ-weighted residuals; ``variance`` multiplies the covariance (1 when σ is known); ``correlation``
+    (the residual and its sample index) widens the error bars for correlated residuals (goodness.py)."""
     k = len(names)
     p = np.array([values[n] for n in names], dtype=np.float64)
     log = np.array([n in positive and p[i] > 0.0 for i, n in enumerate(names)])
+    reasons: dict[str, str] = {}
+    cov = np.full((k, k), math.nan)
+    if not np.all(np.isfinite(jac)):  # a model run that overflowed: no linear algebra on it
+        bad = np.flatnonzero(~np.all(np.isfinite(jac), axis=0))
+        for i in bad:
+            reasons[names[i]] = "the model's response to it is not finite at the fit"
+        jac = np.where(np.isfinite(jac), jac, 0.0)
     # z: per unit of ln p (positive parameters) or of a typical size; y: z times the column norms
     size = np.where(log, p, np.maximum(np.abs(p), 1.0))
     jz = jac * size
-    norms = np.linalg.norm(jz, axis=0)
-    norms = np.where(norms > 0.0, norms, 1.0)
-    _, s, vt = np.linalg.svd(jz / norms, full_matrices=False)
-    cut = SINGULAR * (s[0] if s.size and s[0] > 0.0 else 1.0)
-    keep = s > cut
-    cov_y = (vt[keep].T / s[keep] ** 2) @ vt[keep]
-    cov_z = cov_y / np.outer(norms, norms)
-    cov = variance * cov_z * np.outer(size, size)
-    # a parameter that barely moves the residuals (a symmetry the data cannot see, such as φ₀ for
-    # frame-free data): its column is negligible before normalisation
     raw = np.linalg.norm(jz, axis=0)
-    undetermined: set[int] = {int(i) for i in np.flatnonzero(raw <= SINGULAR * max(float(raw.max()), 1e-300))}
+    # a parameter that barely moves the residuals (a symmetry the data cannot see, such as φ₀ for
+    # frame-free data, or a stationary point such as φ̇₀ = 0 seen from the side): out of the analysis
+    # before the others are normalised, so that its noise cannot stand in for a real weak direction
+    flat = raw <= SINGULAR * max(float(raw.max()) if raw.size else 0.0, 1e-300)
+    for i in np.flatnonzero(flat):
+        reasons.setdefault(
+            names[i],
+            "the residuals do not change with it at the fit (a symmetry of the data, or a stationary "
+            "point such as a sideways rate of 0 seen from the side)",
+        )
+    live = np.flatnonzero(~flat)
     combos: dict[str, tuple[float, float]] = {}
-    for n_y in vt[~keep]:
-        n_z = n_y / norms
-        n_z = n_z / np.max(np.abs(n_z))
-        involved = [int(i) for i in np.flatnonzero(np.abs(n_z) > 0.05)]
-        undetermined |= set(involved)
-        if len(involved) == 2 and all(log[i] for i in involved):
-            a, b = involved
-            if names[a] == "length":  # say g/length, the squared angular frequency, not its inverse
-                a, b = b, a
-            e = float(n_z[a] / n_z[b])
-            w = np.zeros(k)
-            w[a], w[b] = 1.0, -e
-            value = float(p[a] / p[b] ** e)
-            err = value * math.sqrt(max(float(variance * (w @ cov_z @ w)), 0.0))
-            if abs(e - 1.0) < 1e-3:
-                label = f"{names[a]}/{names[b]}"
-            elif abs(e + 1.0) < 1e-3:
-                label = f"{names[a]}*{names[b]}"
-            else:
-                label = f"{names[a]}/{names[b]}^{e:.4g}"
-            combos[label] = (value, err)
-    for i in undetermined:
-        cov[i, :] = math.nan
-        cov[:, i] = math.nan
-        cov[i, i] = math.inf
-    determined = {n: i not in undetermined for i, n in enumerate(names)}
-    return Identifiability(cov, determined, combos, s)
+    s = np.zeros(0)
+    if live.size:
+        norms = raw[live]
+        _, s, vt = np.linalg.svd(jz[:, live] / norms, full_matrices=False)
+        cut = SINGULAR * (s[0] if s.size and s[0] > 0.0 else 1.0)
+        keep = s > cut
+        # every parameter with a share in a direction the data cannot see is not determined alone
+        for n_y in vt[~keep]:
+            involved = [int(live[i]) for i in np.flatnonzero(np.abs(n_y) > INVOLVED)]
+            for i in involved:
+                reasons.setdefault(
+                    names[i],
+                    "the data determine only a combination of it with "
+                    + ", ".join(names[j] for j in involved if j != i),
+                )
+            combo = _combination(names, p, log, live, n_y / norms, vt[keep], s[keep], norms, variance)
+            if combo is not None:
+                combos[combo[0]] = combo[1]
+        good = np.array([names[i] not in reasons for i in live])
+        sub = live[good]
+        if sub.size:
+            js = jz[:, sub]
+            ns = np.linalg.norm(js, axis=0)
+            _, s2, vt2 = np.linalg.svd(js / ns, full_matrices=False)
+            cov_y = (vt2.T / s2**2) @ vt2
+            cov[np.ix_(sub, sub)] = variance * cov_y / np.outer(ns, ns) * np.outer(size[sub], size[sub])
+    widen = np.ones(k)
+    determined_idx = np.array([names[i] not in reasons for i in range(k)])
+    if correlation is not None and determined_idx.any():
+        widen = inflation(
+            jac,
+            correlation.residual,
+            correlation.sample,
+            correlation.samples,
+            correlation.lag1,
+            np.where(np.isfinite(cov), cov, 0.0),
+            determined_idx,
+        )
+        cov = cov * np.outer(widen, widen)
+    for i in range(k):
+        if names[i] in reasons:
+            cov[i, :] = math.nan
+            cov[:, i] = math.nan
+            cov[i, i] = math.inf
+    determined = {n: n not in reasons for n in names}
+    return Identifiability(
+        cov, determined, combos, s, reasons, {n: float(widen[i]) for i, n in enumerate(names)}
+    )
+
+
+def _combination(
+    names: Sequence[str],
+    p: FloatArray,
+    log: FloatArray,
+    live: FloatArray,
+    n_z_live: FloatArray,
+    vt_keep: FloatArray,
+    s_keep: FloatArray,
+    norms: FloatArray,
+    variance: float,
+) -> tuple[str, tuple[float, float]] | None:
+    """For a cut direction between two positive parameters (a scale symmetry such as g and l seen
+    through angles alone), the power-law combination p_a / p_b^e the data do determine, with its error
+    from the covariance on the determined directions."""
+    n_z = np.zeros(len(names))
+    n_z[live] = n_z_live
+    n_z = n_z / np.max(np.abs(n_z))
+    involved = [int(i) for i in np.flatnonzero(np.abs(n_z) > 0.05)]
+    if len(involved) != 2 or not all(log[i] for i in involved):
+        return None
+    a, b = involved
+    if names[a] == "length":  # say g/length, the squared angular frequency, not its inverse
+        a, b = b, a
+    e = float(n_z[a] / n_z[b])
+    w = np.zeros(len(names))
+    w[a], w[b] = 1.0, -e
+    cov_y = (vt_keep.T / s_keep**2) @ vt_keep
+    cov_z_live = cov_y / np.outer(norms, norms)
+    wl = w[live]
+    value = float(p[a] / p[b] ** e)
+    err = value * math.sqrt(max(float(variance * (wl @ cov_z_live @ wl)), 0.0))
+    if abs(e - 1.0) < 1e-3:
+        label = f"{names[a]}/{names[b]}"
+    elif abs(e + 1.0) < 1e-3:
+        label = f"{names[a]}*{names[b]}"
+    else:
+        label = f"{names[a]}/{names[b]}^{e:.4g}"
+    return label, (value, err)

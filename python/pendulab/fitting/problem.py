@@ -10,6 +10,12 @@ Parameter names (SI units):
 - ``pivot_x``, ``pivot_y``, ``pivot_z`` [m]: where the pivot is in the frame of measured positions;
 - ``t_offset`` [s]: the model's clock runs from t₀ + t_offset (ideal pendulum only: the exact solution
   runs backward in time as well);
+- systematic terms of the measurement (:data:`SYSTEMATIC_NAMES`, neutral by default): ``scale`` [1]
+  multiplies the positions about the pivot (a camera's scale bar: measured = pivot + scale·x);
+  ``angle_offset`` [rad] is added to a planar angle and to θ (an encoder's zero); ``force_bias``
+  [m/s²] to the specific force and ``rate_bias`` [rad/s] to the angular speed (a sensor's bias). A
+  clock rate is not among them: a clock running fast by a factor κ is indistinguishable from g/l
+  larger by κ², so only an independent time reference could tell.
 - the swinging spring (``model = "spring"``, a :class:`pendulab.SwingingSpring`): ``length`` is its
   rest length l₀, ``stiffness`` k [N/m], and the start has also ``r0`` [m], ``r_dot0`` [m/s]
   (spring_model.py).
@@ -40,6 +46,8 @@ from .data import Observations, predict, residual
 STATE_NAMES = ("theta0", "phi0", "theta_dot0", "phi_dot0")
 PIVOT_NAMES = ("pivot_x", "pivot_y", "pivot_z")
 OFFSET_NAMES = ("t_offset",)
+SYSTEMATIC_NAMES = {"scale": 1.0, "angle_offset": 0.0, "force_bias": 0.0, "rate_bias": 0.0}
+"""The systematic terms of the measurement and their neutral values (module doc)."""
 ROD_MODELS = ("ideal", "damped", "rotating", "slewing", "vibrating")
 FITTABLE_MODELS = (*ROD_MODELS, "spring")
 UNITS_EXTRA = {
@@ -51,6 +59,10 @@ UNITS_EXTRA = {
     "pivot_y": "m",
     "pivot_z": "m",
     "t_offset": "s",
+    "scale": "1",
+    "angle_offset": "rad",
+    "force_bias": "m/s^2",
+    "rate_bias": "rad/s",
     "r0": "m",
     "r_dot0": "m/s",
 }
@@ -147,13 +159,16 @@ class Problem:
             gdir = gdir / np.linalg.norm(gdir)
         gravity = values["g"] * gdir
         pivot = np.array([values.get(k, 0.0) for k in PIVOT_NAMES])
-        if self.model in ("slewing", "vibrating") and "positions" in self.obs.values:
+        if self.model in ("slewing", "vibrating") and {"positions", "horizontal"} & set(self.obs.values):
             assert isinstance(p, Pendulum)
             pivot = pivot + p.diagnostics(x, v, tau)["pivot"]
-        return {
-            kind: predict(kind, self.obs.columns[kind], x, v, accel, gravity, pivot)
+        scale = values.get("scale", 1.0)
+        seen = x if scale == 1.0 else scale * x
+        out = {
+            kind: predict(kind, self.obs.columns[kind], seen, v, accel, gravity, pivot)
             for kind in self.obs.values
         }
+        return _with_offsets(out, values)
 
     def residuals(self, values: Mapping[str, float], sigma: Mapping[str, float]) -> FloatArray:
         """(measured − predicted)/σ for every value of every kind, as one vector."""
@@ -165,14 +180,37 @@ class Problem:
         ]
         return np.concatenate(parts)
 
+    def penalty(self, sigma: Mapping[str, float]) -> float:
+        """A residual larger than any the data can give [units of σ]: what a model that cannot be
+        evaluated costs, 10³ times the largest |value| over its σ (at least 10⁶)."""
+        return max(
+            1e6, *(1e3 * float(np.max(np.abs(v))) / sigma[k] for k, v in self.obs.values.items() if v.size)
+        )
+
     def safe_residuals(self, u: Sequence[float], sigma: Mapping[str, float]) -> FloatArray:
         """:meth:`residuals` for the optimizer: a model that cannot be evaluated there (a start off the
-        registry's limits, a run that diverged) gives a large finite residual instead of an exception."""
+        registry's limits, a run that diverged) gives a large finite residual (:meth:`penalty`) instead
+        of an exception."""
         try:
             r = self.residuals(self.with_free(u), sigma)
-        except (InvalidInputError, IntegrationError):
-            return np.full(self.obs.n_residuals, 1e6)
-        return np.where(np.isfinite(r), r, 1e6)
+        except (InvalidInputError, IntegrationError, OverflowError, ZeroDivisionError):
+            return np.full(self.obs.n_residuals, self.penalty(sigma))
+        return np.where(np.isfinite(r), r, self.penalty(sigma))
+
+
+def _with_offsets(pred: dict[str, FloatArray], values: Mapping[str, float]) -> dict[str, FloatArray]:
+    """The systematic terms added to the predictions (module doc); neutral ones cost nothing."""
+    offset = values.get("angle_offset", 0.0)
+    if offset != 0.0:
+        if "planar_angle" in pred:
+            pred["planar_angle"] = pred["planar_angle"] + offset
+        if "angles" in pred:
+            pred["angles"] = pred["angles"] + np.array([offset, 0.0])
+    for name, kind in (("force_bias", "specific_force"), ("rate_bias", "angular_speed")):
+        bias = values.get(name, 0.0)
+        if bias != 0.0 and kind in pred:
+            pred[kind] = pred[kind] + bias
+    return pred
 
 
 def check_model(pendulum: Pendulum | SwingingSpring) -> str:
@@ -201,6 +239,8 @@ def bounds_of(model: str, name: str, value: float) -> tuple[float, float]:
         return 0.0, math.pi
     if name == "r0":
         return 1e-9 * abs(value), math.inf
+    if name == "scale":
+        return 1e-6, 1e6
     if name in UNITS_EXTRA:
         return -math.inf, math.inf
     spec = model_params(model)[name]
@@ -222,4 +262,8 @@ def scale_of(name: str, value: float, length: float, period: float) -> float:
         return max(abs(value), length * 2.0 * math.pi / period)
     if name == "t_offset":
         return period / 10.0
+    if name == "scale":
+        return 0.1
+    if name == "angle_offset":
+        return 0.01
     return max(abs(value), 1e-3 if name != "g" else 1e-2)

@@ -18,15 +18,21 @@ from ..model import FloatArray, Pendulum, State
 from ..trajectory import Trajectory
 from ..variants.spring import SpringTrajectory, SwingingSpring
 from .data import KINDS, residual
+from .goodness import Goodness
 from .identify import Identifiability
-from .problem import STATE_NAMES, unit_of
+from .problem import STATE_NAMES, SYSTEMATIC_NAMES, unit_of
 
 if TYPE_CHECKING:
     from .problem import Problem
 
 
 #: Legend names of the data columns per (kind, number of columns).
-_COLUMN_NAMES = {("positions", 3): ("x", "y", "z"), ("positions", 2): ("x", "z"), ("angles", 2): ("θ", "φ")}
+_COLUMN_NAMES = {
+    ("positions", 3): ("x", "y", "z"),
+    ("positions", 2): ("x", "z"),
+    ("horizontal", 2): ("x", "y"),
+    ("angles", 2): ("θ", "φ"),
+}
 
 
 @dataclass
@@ -37,7 +43,12 @@ class FitResult:
     order of ``names``; ``residuals``: kind → measured − fitted (N, columns) in the data's unit;
     ``chi2`` = Σ r², ``dof`` = values − unknowns, ``sigma``: the noise per kind (given or estimated);
     ``mirror_blind``: the data cannot tell the motion from its mirror image y → −y (positions seen as
-    x, z; a phone's frame-free scalars), so the sign of φ₀ and φ̇₀ is a choice."""
+    x, z; a phone's frame-free scalars), so the sign of φ₀ and φ̇₀ is a choice. ``goodness``: whether
+    the fitted motion explains the data (residual against the noise floor, autocorrelation, runs, χ²
+    probability, outliers) with its plain-language ``findings``; ``reasons``: why each undetermined
+    parameter is; ``inflation``: the factor each error bar was widened by for correlated residuals;
+    ``bounds``: each fitted parameter's allowed range (see :meth:`interval`); ``planar``: fitted as a
+    hinge (φ₀ = φ̇₀ = 0 held)."""
 
     names: list[str]
     params: dict[str, float]
@@ -65,6 +76,11 @@ class FitResult:
     interrupted: bool = False
     dropped: int = 0
     mirror_blind: bool = False
+    goodness: Goodness | None = None
+    reasons: dict[str, str] = field(default_factory=dict)
+    inflation: dict[str, float] = field(default_factory=dict)
+    bounds: dict[str, tuple[float, float]] = field(default_factory=dict)
+    planar: bool = False
     _problem: Any = field(default=None, repr=False)
 
     @classmethod
@@ -85,6 +101,9 @@ class FitResult:
         interrupted: bool,
         kinds: dict[str, str],
         mirror_blind: bool = False,
+        goodness: Goodness | None = None,
+        bounds: dict[str, tuple[float, float]] | None = None,
+        planar: bool = False,
     ) -> FitResult:
         names = list(problem.free)
         cov = ident.covariance
@@ -123,6 +142,11 @@ class FitResult:
             interrupted=interrupted,
             dropped=problem.obs.dropped,
             mirror_blind=mirror_blind,
+            goodness=goodness,
+            reasons=dict(ident.reasons),
+            inflation=dict(ident.inflation),
+            bounds=dict(bounds or {}),
+            planar=planar,
             _problem=problem,
         )
 
@@ -157,11 +181,47 @@ class FitResult:
         """χ²/dof: about 1 when the model explains the data to their noise."""
         return self.chi2 / self.dof
 
+    @property
+    def findings(self) -> list[str]:
+        """What looks wrong with the fit, in plain words (empty when nothing does; each was warned)."""
+        return list(self.goodness.findings) if self.goodness is not None else []
+
+    def interval(self, name: str, level: float = 0.95) -> tuple[float, float]:
+        """The linearised confidence interval of a fitted parameter [its unit] at ``level`` (0.95: ±1.96
+        standard errors), clipped to its allowed range: one-sided where the value sits at or near a
+        bound (e.g. a damping of 0), (−inf, inf) where the data do not determine it."""
+        from statistics import NormalDist
+
+        if name not in self.params:
+            raise KeyError(f"{name!r} was not fitted; fitted: {', '.join(self.names)}")
+        if not (isinstance(level, float | int) and 0.0 < level < 1.0):
+            raise ValueError(f"level = {level!r} must be between 0 and 1")
+        if not self.determined[name]:
+            return (-math.inf, math.inf)
+        half = NormalDist().inv_cdf(0.5 + level / 2.0) * self.stderr[name]
+        lo, hi = self.bounds.get(name, (-math.inf, math.inf))
+        value = self.params[name]
+        return (max(value - half, lo), min(value + half, hi))
+
+    def _at_bound(self, name: str) -> str:
+        lo, hi = self.bounds.get(name, (-math.inf, math.inf))
+        value, err = self.params[name], self.stderr[name]
+        for side, b in (("lower", lo), ("upper", hi)):
+            if math.isfinite(b) and abs(value - b) <= max(2.0 * err, 1e-12 * max(abs(b), 1.0)):
+                a, c = self.interval(name)
+                return f" (near its {side} bound {b:g}: 95 % interval [{a:.4g}, {c:.4g}])"
+        return ""
+
     def _rows(self) -> list[tuple[str, str, str, str]]:
         rows = []
         for n in self.names:
             value, err = self.params[n], self.stderr[n]
-            shown = f"± {number(err, 3)}" if self.determined[n] else "not determined by these data"
+            if self.determined[n]:
+                shown = f"± {number(err, 3)}" + self._at_bound(n)
+                if self.inflation.get(n, 1.0) > 1.05:
+                    shown += f" (x{self.inflation[n]:.3g} for correlated residuals)"
+            else:
+                shown = "not determined: " + self.reasons.get(n, "by these data")
             rows.append((n, f"{value:.10g}", shown, self.units.get(n, "")))
         return rows
 
@@ -187,6 +247,17 @@ class FitResult:
         noise = ", ".join(f"{k}: {number(s, 3)} {KINDS[k]}" for k, s in self.sigma.items())
         if self.sigma_estimated:
             noise += " (estimated from the residual, so chi2/dof = 1 by construction)"
+        if self.planar:
+            lines.append(
+                "  planar pendulum (a hinge): phi0 = phi_dot0 = 0 held; planar=False fits the spherical one"
+            )
+        if self.goodness is not None:
+            for kind, c in self.goodness.kinds.items():
+                lines.append(
+                    f"  {kind}: residual rms {number(c.rms, 3)} {KINDS[kind]}, noise floor of the data "
+                    f"{number(c.floor, 3)}, lag-1 autocorrelation {c.lag1:.3f}, runs z {c.runs_z:.2g}"
+                )
+            lines += [f"  WARNING: {text}" for text in self.goodness.findings]
         lines += [
             f"  chi2 = {self.chi2:.6g} for {self.dof} degrees of freedom "
             f"(chi2/dof = {self.reduced_chi2:.4g}); noise {noise}",
@@ -195,7 +266,7 @@ class FitResult:
                 f"{k} = {number(v)}"
                 + (f" {self.units[k]}" if self.units.get(k, "1") not in ("1", "") else "")
                 for k, v in self.fixed.items()
-                if k in ("length", "g", "mass") or v != self._defaults.get(k, 0.0)
+                if k in ("length", "g", "mass") or v != {**SYSTEMATIC_NAMES, **self._defaults}.get(k, 0.0)
             ),
             f"  {'converged' if self.converged else 'NOT converged'}: {self.message} "
             f"({self.evaluations} model runs, {self.starts} start(s), {self.seconds:.3g} s)",

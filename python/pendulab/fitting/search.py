@@ -1,4 +1,5 @@
-"""The two stages around :func:`pendulab.fit`'s trust-region search (estimator.py): the continuation
+"""The search of :func:`pendulab.fit` (:class:`Search`: the trust-region search with its anchor, clock
+and best-so-far record) and the two stages around it (estimator.py): the continuation
 over growing time windows, which keeps each stage's phase error small so that a long record does not
 trap the search in the wrong number of swings, and the Gauss–Newton polish after it, which takes
 noise-free data to the float64 floor (least squares, T-10.2; docs/fit.md, "How it works"). Units: SI.
@@ -6,7 +7,10 @@ noise-free data to the float64 floor (least squares, T-10.2; docs/fit.md, "How i
 
 from __future__ import annotations
 
-from typing import Any
+import math
+import time
+from collections.abc import Callable, Mapping, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -14,8 +18,13 @@ from .._core import IntegrationError, InvalidInputError
 from ..model import FloatArray
 from .identify import jacobian
 
+if TYPE_CHECKING:
+    from .problem import Problem
+
 #: At most this many Gauss–Newton steps (see :func:`polish`).
 POLISH_STEPS = 40
+#: The anchor's pull per unit of ln p or of a parameter's scale, in units of the residuals' σ.
+ANCHOR = 0.1
 
 
 def windows_of(t: FloatArray, period: float) -> list[int]:
@@ -42,14 +51,18 @@ def polish(
     positive: FloatArray,
     lo: FloatArray,
     hi: FloatArray,
+    time_up: Callable[[], bool] = lambda: False,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Gauss–Newton steps with central-difference Jacobians after the trust-region search: near the
     optimum its forward differences stall short of the float64 floor on noise-free data; these steps
     reach it (directions the data do not determine are left alone by the pseudo-inverse). Four steps,
     and more (up to POLISH_STEPS) while each still cuts the misfit by 4× or more: along a direction
     where the residual is quadratic (a planar swing seen along y: r ∝ φ̇₀²) Gauss–Newton only halves
-    the distance per step."""
+    the distance per step. Stops at ``time_up()`` and where the Jacobian or residual is not finite
+    (LAPACK would not return on an infinite matrix)."""
     for k in range(POLISH_STEPS):
+        if time_up() or not (np.all(np.isfinite(jac)) and np.all(np.isfinite(r))):
+            break
         step = np.linalg.lstsq(jac, -r, rcond=1e-10)[0]
         trial = np.minimum(np.maximum(u + step, lo), hi)
         try:
@@ -65,3 +78,114 @@ def polish(
         if small:
             break
     return u, r, jac
+
+
+class TimeUp(Exception):
+    """The search ran past ``time_limit``."""
+
+
+class Search:
+    """SciPy's trust-region reflective ``least_squares`` on a :class:`Problem`, with the anchor, the
+    clock, the record of the best values seen (what Ctrl-C or the time limit returns) and the window
+    continuation (estimator.py's module doc). ``sigma``: kind → the scale of its residuals [its unit]
+    (the given σ, or the noise floor read off the data: noise.py), so that the search and its anchor do
+    not depend on the units of the data."""
+
+    def __init__(
+        self,
+        problem: Problem,
+        start: Mapping[str, float],
+        scales: FloatArray,
+        bounds: tuple[FloatArray, FloatArray],
+        sigma: dict[str, float],
+        *,
+        loss: str,
+        max_evaluations: int,
+        time_limit: float | None,
+        logged: FloatArray,
+    ) -> None:
+        self.problem = problem
+        self.free = problem.free
+        self.u_start = np.array([start[n] for n in self.free], dtype=np.float64)
+        self.scales = scales
+        self.lower, self.upper = bounds
+        self.sigma = sigma
+        self.loss = loss
+        self.max_evaluations = max_evaluations
+        self.time_limit = time_limit
+        self.logged = logged
+        self.began = time.perf_counter()
+        self.best_cost = math.inf
+        self.best_u: FloatArray | None = None
+        self.last_u: FloatArray | None = None
+        self.result: Any = None
+
+    def time_up(self) -> bool:
+        """Whether ``time_limit`` [s] has passed since the search began."""
+        return self.time_limit is not None and time.perf_counter() - self.began > self.time_limit
+
+    def anchor(self, u: FloatArray) -> FloatArray:
+        """A faint pull towards the start (ANCHOR per unit of ln p or of the scale, in units of the
+        residuals' σ): it holds the directions the data do not determine (g and l together, from
+        angles) where they began instead of letting them drift to a bound, and biases the determined
+        ones by ~ANCHOR²/(JᵀJ), nothing."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            z = np.where(
+                self.logged,
+                np.log(np.maximum(u, 1e-300) / np.where(self.logged, self.u_start, 1.0)),
+                (u - self.u_start) / self.scales,
+            )
+        return ANCHOR * z
+
+    def clip(self, u: FloatArray) -> FloatArray:
+        return np.minimum(np.maximum(u, self.lower), self.upper)
+
+    def run(self, u0: FloatArray, on: Problem | None = None, tol: float = 1e-10) -> Any:
+        """One trust-region search from ``u0`` on ``on`` (default: the whole problem)."""
+        from scipy.optimize import least_squares  # SciPy is imported on first use (the io/lab extras)
+
+        on = self.problem if on is None else on
+
+        def fun(u: FloatArray) -> FloatArray:
+            if self.last_u is not None and self.time_up():
+                raise TimeUp
+            r = on.safe_residuals(u, self.sigma)
+            self.last_u = np.array(u, dtype=np.float64)  # on a window too: what an interruption returns
+            if on is self.problem:
+                cost = 0.5 * float(r @ r)
+                if cost < self.best_cost:
+                    self.best_cost, self.best_u = cost, np.array(u, dtype=np.float64)
+            return np.concatenate([r, self.anchor(u)])
+
+        return least_squares(
+            fun,
+            self.clip(u0),
+            bounds=(self.lower, self.upper),
+            x_scale=self.scales,
+            loss=self.loss,
+            f_scale=1.0,
+            max_nfev=self.max_evaluations,
+            xtol=tol,
+            ftol=tol,
+            gtol=tol,
+            diff_step=1e-8,
+            method="trf",
+        )
+
+    def from_start(self, values: Mapping[str, float], windows: Sequence[int]) -> Any:
+        """The continuation over the growing ``windows`` (sample counts), then the whole record; keeps
+        the best result so far in ``self.result``."""
+        u0 = np.array([values[n] for n in self.free], dtype=np.float64)
+        for n_samples in windows:
+            part = self.problem.restricted(n_samples)
+            u0 = self.run(u0, part, 1e-8).x
+            self.problem.evaluations += part.evaluations
+        res = self.run(u0)
+        if self.result is None or res.cost <= self.result.cost:
+            self.result = res
+        return res
+
+    def cost_at(self, values: Mapping[str, float], on: Problem) -> float:
+        """Σ r² of ``values`` on ``on`` (inf where the model refuses them)."""
+        r = on.safe_residuals([values[n] for n in self.free], self.sigma)
+        return float(r @ r)

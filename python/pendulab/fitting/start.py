@@ -32,6 +32,7 @@ import numpy as np
 from .._core import InvalidInputError
 from ..model import FloatArray
 from .data import Observations
+from .noise import noise_level
 from .problem import PIVOT_NAMES
 from .spring_model import spring_start
 
@@ -49,16 +50,6 @@ def sphere_fit(p: FloatArray) -> tuple[FloatArray, float] | None:
     if not (np.all(np.isfinite(centre)) and r2 > 0.0):
         return None
     return centre, math.sqrt(r2)
-
-
-def noise_level(t: FloatArray, s: FloatArray) -> float:
-    """The noise of a smooth signal sampled densely: from the median absolute second difference
-    (a white noise σ gives second differences of standard deviation σ√6; 0.6745 turns a median
-    absolute deviation into a standard deviation)."""
-    if len(s) < 5:
-        return 0.0
-    d2 = s[2:] - 2.0 * s[1:-1] + s[:-2]
-    return float(np.median(np.abs(d2)) / (0.6745 * math.sqrt(6.0)))
 
 
 def crossings_period(t: FloatArray, s: FloatArray) -> float | None:
@@ -149,6 +140,14 @@ def _relative_positions(obs: Observations, values: Mapping[str, float], free: se
                 pivot[-1] = p[:, -1].min() + ell
         rel = p - pivot
         return rel if cols == 3 else np.column_stack([rel[:, 0], np.zeros(len(rel)), rel[:, 1]])
+    if "horizontal" in obs.values:  # seen from above: the height from the length
+        h = obs.values["horizontal"]
+        centre = np.array([values["pivot_x"], values["pivot_y"]])
+        if free & {"pivot_x", "pivot_y"}:
+            centre = h.mean(axis=0)
+        rel2 = h - centre
+        rho = np.minimum(np.hypot(rel2[:, 0], rel2[:, 1]), 0.999 * ell)
+        return np.column_stack([rel2, -np.sqrt(ell * ell - rho * rho)])
     if "angles" in obs.values:
         th, ph = obs.values["angles"][:, 0], obs.values["angles"][:, 1]
         return ell * np.column_stack([np.sin(th) * np.cos(ph), np.sin(th) * np.sin(ph), -np.cos(th)])
@@ -196,6 +195,11 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
     rel = _relative_positions(obs, values, free)
     if rel is None:
         return _frame_free_start(obs, out, free)
+    if free & {"pivot_x", "pivot_y"} and "horizontal" in obs.values:
+        centre = obs.values["horizontal"] - rel[:, :2]
+        for k, name in enumerate(("pivot_x", "pivot_y")):
+            if name in free:
+                out[name] = float(centre[0, k])
     if free & set(PIVOT_NAMES) and "positions" in obs.values:
         p = obs.values["positions"]
         centre = p - (rel if p.shape[1] == 3 else rel[:, [0, 2]])

@@ -1,0 +1,261 @@
+"""Goodness of fit: does the fitted motion explain the data to their noise, and are the residuals the
+white noise the error bars assume? (docs/fit.md, "Noise and goodness of fit"; docs/theory.md T-10.3.)
+
+Per data kind, from the residual r (measured − fitted, the kind's unit, N × columns):
+
+- its rms against the data's white-noise floor (noise.py), read off the data before the fit: a model
+  that explains the data leaves about the floor; a multiple of it is a misfit;
+- the lag-1 autocorrelation ρ₁ and the Ljung–Box statistic Q = n(n+2) Σ_{k=1}^{h} ρ_k²/(n−k), which
+  is χ²(h)-distributed for white residuals (Ljung & Box 1978, Biometrika 65:297); the Wald–Wolfowitz
+  runs test of the residual's signs, z = (R − μ)/s with μ = 2n₊n₋/n + 1, s² = (μ−1)(μ−2)/(n−1);
+- with σ given, the χ² of the whole fit against the χ² distribution of its degrees of freedom (a fixed
+  threshold on χ²/dof is too lax for large N: its spread is √(2/dof));
+- outliers: values more than 5 robust standard deviations (1.4826 · median |r|) from the fit.
+
+Error bars that account for correlated residuals: the Newey–West (1987, Econometrica 55:703) sandwich
+C = A⁻¹ Ω A⁻¹ with A = JᵀJ and Ω = Σ_L w_L (Γ_L + Γ_Lᵀ), Γ_L = Σ_i g_i g_{i+L}ᵀ over the per-sample
+scores g_i = Σ_rows of sample i J_rowᵀ r_row, Bartlett weights w_L = 1 − L/(S+1), and the bandwidth
+S = 1.1447 (α n)^{1/3}, α = 4ρ²/((1−ρ)²(1+ρ)²) of Andrews (1991, Econometrica 59:817) for AR(1)
+residuals. Each parameter's error bar is the larger of the classical and the sandwich one
+(the classical covariance scaled by D = diag(max(1, √(C_sandwich,ii / C_ii))), so it stays positive
+definite); for white residuals the two agree.
+Units: SI, those of each data kind.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..model import FloatArray
+
+LJUNG_BOX_LAGS = 20
+#: p-values below this (Ljung–Box, χ²) are reported: about one false alarm in 10⁴ fits of a right model.
+P_ALARM = 1e-4
+#: |z| of the runs test above this is reported (two-sided p ≈ 7e-6).
+RUNS_ALARM = 4.5
+#: The residual's rms above this multiple of the noise floor is a misfit.
+FLOOR_ALARM = 1.5
+#: Columns of a kind whose residual rms is below this share of the largest column's are not tested.
+COLUMN_SHARE = 0.3
+#: Values farther than this many robust standard deviations from the fit are outliers.
+OUTLIER_SIGMAS = 5.0
+#: A relative residual below this (rms / the data's spread) is exact to round-off: no statistics.
+EXACT = 1e-9
+MAX_LAG_WORK = 2e8
+"""At most this many multiply-adds (lags × samples × unknowns²) for the Newey–West sum."""
+
+
+@dataclass
+class KindCheck:
+    """One data kind's residual statistics (unit: the kind's)."""
+
+    rms: float
+    floor: float
+    spread: float
+    lag1: float
+    ljung_box_p: float
+    runs_z: float
+    outliers: int
+    trend: float
+
+    @property
+    def correlated(self) -> bool:
+        return self.ljung_box_p < P_ALARM or abs(self.runs_z) > RUNS_ALARM
+
+    @property
+    def explained(self) -> float:
+        """The share of the data's variance the fitted motion explains, 1 − rms²/spread²."""
+        return 1.0 - (self.rms / self.spread) ** 2 if self.spread > 0.0 else 0.0
+
+
+@dataclass
+class Goodness:
+    """The checks of the module doc per kind, the χ² probability (σ given; None otherwise), the
+    factor each error bar was widened by for correlated residuals, and the plain-language findings."""
+
+    kinds: dict[str, KindCheck]
+    chi2_p: float | None
+    inflation: dict[str, float] = field(default_factory=dict)
+    findings: list[str] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return not self.findings
+
+
+def autocorrelations(x: FloatArray, lags: int) -> FloatArray:
+    """ρ_1 … ρ_lags of a series about its mean (0 for a constant series)."""
+    y = np.asarray(x, dtype=np.float64) - float(np.mean(x))
+    c0 = float(y @ y)
+    if c0 <= 0.0:
+        return np.zeros(lags)
+    return np.array([float(y[:-k] @ y[k:]) / c0 for k in range(1, lags + 1)])
+
+
+def ljung_box(x: FloatArray, lags: int = LJUNG_BOX_LAGS) -> tuple[float, float]:
+    """The Ljung–Box Q of the first ``lags`` autocorrelations and its χ²(lags) p-value."""
+    n = len(x)
+    h = max(1, min(lags, n // 5))
+    rho = autocorrelations(x, h)
+    q = float(n * (n + 2) * np.sum(rho**2 / (n - np.arange(1, h + 1))))
+    from scipy import stats  # SciPy is imported on first use (the io/lab extras)
+
+    return q, float(stats.chi2.sf(q, h))
+
+
+def runs_z(x: FloatArray) -> float:
+    """The Wald–Wolfowitz runs test z of the signs of ``x`` (0 when it cannot be formed)."""
+    s = np.asarray(x) > 0.0
+    n_pos = int(np.count_nonzero(s))
+    n = len(s)
+    n_neg = n - n_pos
+    if n_pos == 0 or n_neg == 0 or n < 3:
+        return 0.0
+    runs = 1 + int(np.count_nonzero(s[1:] != s[:-1]))
+    mu = 2.0 * n_pos * n_neg / n + 1.0
+    var = (mu - 1.0) * (mu - 2.0) / (n - 1.0)
+    return (runs - mu) / math.sqrt(var) if var > 0.0 else 0.0
+
+
+def check_kind(t: FloatArray, r: FloatArray, floor: float, spread: float) -> KindCheck:
+    """The statistics of one kind's residual (N, columns), as :class:`KindCheck`."""
+    a = r if r.ndim == 2 else r[:, None]
+    # the columns that carry the residual (a column 3x smaller than the largest adds < 10 % to χ²)
+    col_rms = np.sqrt(np.mean(a**2, axis=0))
+    cols = [j for j in range(a.shape[1]) if col_rms[j] >= COLUMN_SHARE * float(col_rms.max())]
+    lag1 = float(np.mean([autocorrelations(a[:, j], 1)[0] for j in cols]))
+    p_lb = min(ljung_box(a[:, j])[1] for j in cols)
+    z = max((runs_z(a[:, j]) for j in cols), key=abs)
+    outliers = 0
+    for j in cols:
+        dev = np.abs(a[:, j] - np.median(a[:, j]))
+        robust = 1.4826 * float(np.median(dev))
+        outliers += int(np.count_nonzero(dev > OUTLIER_SIGMAS * robust)) if robust > 0.0 else 0
+    # a slow drift: the share of the residual's variance a straight line in time explains
+    tt = (t - t.mean()) / max(float(np.ptp(t)), 1e-300)
+    trend = 0.0
+    total = float(np.sum((a - a.mean(axis=0)) ** 2))
+    if total > 0.0 and float(tt @ tt) > 0.0:
+        slopes = (tt @ (a - a.mean(axis=0))) / float(tt @ tt)
+        trend = float(np.sum(slopes**2) * float(tt @ tt)) / total
+    rms = float(math.sqrt(float(np.mean(a**2))))
+    return KindCheck(rms, floor, spread, lag1, p_lb, float(z), outliers, trend)
+
+
+def andrews_bandwidth(rho: float, n: int) -> int:
+    """Newey–West lags S for AR(1) residuals with lag-1 autocorrelation ``rho`` (module doc)."""
+    rho = min(max(rho, 0.0), 0.999)
+    if rho <= 0.0:
+        return 1
+    alpha = 4.0 * rho**2 / ((1.0 - rho) ** 2 * (1.0 + rho) ** 2)
+    return int(min(max(1, math.ceil(1.1447 * (alpha * n) ** (1.0 / 3.0))), n - 1))
+
+
+def scores(jac: FloatArray, r: FloatArray, sample: FloatArray, n: int) -> FloatArray:
+    """g_i = Σ over the residual rows of sample i of J_rowᵀ r_row: (n, unknowns)."""
+    weighted = jac * r[:, None]
+    return np.stack(
+        [np.bincount(sample, weights=weighted[:, j], minlength=n) for j in range(jac.shape[1])], 1
+    )
+
+
+def newey_west(g: FloatArray, lags: int) -> FloatArray:
+    """Ω = Σ_{L=−S}^{S} (1 − |L|/(S+1)) Γ_L of the scores ``g`` (n, k) (module doc)."""
+    n, k = g.shape
+    lags = int(min(lags, max(1, MAX_LAG_WORK // max(n * k * k, 1)), n - 1))
+    omega = g.T @ g
+    for lag in range(1, lags + 1):
+        gamma = g[:-lag].T @ g[lag:]
+        omega += (1.0 - lag / (lags + 1.0)) * (gamma + gamma.T)
+    return omega
+
+
+def inflation(
+    jac: FloatArray, r: FloatArray, sample: FloatArray, n: int, rho: float, cov: FloatArray, keep: FloatArray
+) -> FloatArray:
+    """Per unknown, max(1, √(C_sandwich,ii / C_ii)) for the determined ones (``keep``; 1 elsewhere):
+    how much correlated residuals widen the classical error bars ``cov``."""
+    out = np.ones(jac.shape[1])
+    idx = np.flatnonzero(keep)
+    if idx.size == 0:
+        return out
+    j = jac[:, idx]
+    a = j.T @ j
+    if not np.all(np.isfinite(a)):
+        return out
+    try:
+        a_inv = np.linalg.pinv(a, rcond=1e-14)
+    except np.linalg.LinAlgError:
+        return out
+    omega = newey_west(scores(j, r, sample, n), andrews_bandwidth(rho, n))
+    sandwich = a_inv @ omega @ a_inv
+    classical = np.diag(cov)[idx]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        ratio = np.diag(sandwich) / classical
+    ratio = np.where(np.isfinite(ratio), ratio, 1.0)
+    out[idx] = np.sqrt(np.maximum(ratio, 1.0))
+    return out
+
+
+def findings(checks: Mapping[str, KindCheck], chi2_p: float | None, chi2: float, dof: int) -> list[str]:
+    """Plain-language findings: what looks wrong and what to try (empty when nothing does)."""
+    from scipy import stats
+
+    out: list[str] = []
+    for kind, c in checks.items():
+        if c.spread > 0.0 and c.rms <= EXACT * c.spread:
+            continue  # noise-free data fitted to round-off: nothing to test
+        ratio = c.rms / c.floor if c.floor > 0.0 else math.inf
+        if c.explained < 0.5:
+            out.append(
+                f"{kind}: the fitted motion explains only {100 * max(c.explained, 0.0):.0f} % of the data's "
+                f"variance (residual rms {c.rms:.3g} against a spread of {c.spread:.3g}): the data may not "
+                "show a pendulum's swing above their noise, or the model or the starting values are far off"
+            )
+            continue
+        if c.correlated and ratio > FLOOR_ALARM:
+            drift = " with a slow drift over the record" if c.trend > 0.2 else ""
+            out.append(
+                f"{kind}: the fit misses the data systematically{drift}: the residual (rms {c.rms:.3g}, "
+                f"{ratio:.3g}x the data's noise floor {c.floor:.3g}) is correlated (lag-1 autocorrelation "
+                f"{c.lag1:.3f}, runs test z = {c.runs_z:.1f}). Either the model lacks something (another "
+                "damping law: fit 'drag' or dry friction; a sensor offset or bias; a moving pivot; wind; a "
+                "wrong scale or time base), or the noise itself is correlated (video tracking, filtering). "
+                "The error bars are widened for the correlation, but values may be biased by what is "
+                "missing; see res.plot()"
+            )
+        elif c.correlated:
+            out.append(
+                f"{kind}: the residual is correlated (lag-1 autocorrelation {c.lag1:.3f}, runs test "
+                f"z = {c.runs_z:.1f}) though no larger than the data's noise floor ({c.floor:.3g}): "
+                "correlated noise (video tracking, filtering) or a small systematic effect; the error "
+                "bars are widened for the correlation"
+            )
+        elif ratio > 2.0 * FLOOR_ALARM:
+            out.append(
+                f"{kind}: the residual rms {c.rms:.3g} is {ratio:.3g}x the noise floor {c.floor:.3g} "
+                "read off the data: a misfit, or noise that is not white"
+            )
+        n = c.outliers
+        if n >= 3:
+            out.append(
+                f"{kind}: {n} values lie more than {OUTLIER_SIGMAS:g} robust standard deviations from "
+                "the fit (outliers?): try loss='soft_l1'"
+            )
+    if chi2_p is not None and chi2_p < P_ALARM:
+        out.append(
+            f"the fitted motion misses the data by {math.sqrt(chi2 / dof):.3g}x their given noise: chi2 = "
+            f"{chi2:.6g} for {dof} degrees of freedom (chi2/dof = {chi2 / dof:.3g}) is improbable for a "
+            f"right model (p = {chi2_p:.2g}): a model that lacks something (damping, drag, a moving "
+            "pivot), a sigma too small, or a local minimum (try other starting values); see res.plot()"
+        )
+    elif chi2_p is not None and stats.chi2.cdf(chi2, dof) < P_ALARM:
+        out.append(
+            f"chi2/dof = {chi2 / dof:.3g} is improbably small for {dof} degrees of freedom: the given "
+            "sigma is too large, so the error bars are too"
+        )
+    return out
