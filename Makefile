@@ -200,7 +200,8 @@ bench-peers: $(PEERS_VENV)/.deps
 	$(PEERS_VENV)/bin/python -m pip install --quiet --force-reinstall --no-deps bench/peers/build/wheels/pendulab-*.whl
 	PEERS_RUSTFLAGS="$(PEERS_RUSTFLAGS)" $(PEERS_VENV)/bin/python bench/peers/run.py $(PEERS_ARGS)
 
-# pl.fit: are the error bars honest? 100 seeded noisy trials per data kind (about 15 min; docs/fit.md)
+# pl.fit with sigma left out on independent data: 40 seeded trials per case, right/wrong model, degenerate
+# data (docs/fit.md, Validation; bench/fit_validate.py --quick: 4 trials per case)
 validate-fit: build
 	$(PY) bench/fit_validate.py
 
