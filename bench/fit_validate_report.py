@@ -152,6 +152,8 @@ def summarise(
                 if shifts
                 else "no fit returned"
             )
+        if n == 0:
+            verdict, measure = "NOT RUN", "no noisy trial finished"
         s["verdict"] = verdict
         summary[str(i + 1)] = s
         rows.append(

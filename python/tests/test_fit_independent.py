@@ -21,7 +21,6 @@ import pendulab as pl
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "testdata" / "generate"))
 import independent_pendulum as ip
 
-PENDING = "issue 23: the fit's statistics with sigma=None (the lead's rewrite of fitting/) is pending"
 LIMIT = 30.0  # s of search per fit: a bound, not a speed target
 #: Warnings that say the search stopped, not that the data disagree with the model.
 NOT_A_DIAGNOSIS = ("time limit", "did not converge", "interrupted", "encountered")
@@ -66,7 +65,6 @@ def test_the_generator_is_exact() -> None:
     assert np.max(np.abs(v - v_ref)) < 1e-8
 
 
-@pytest.mark.xfail(strict=False, reason=PENDING)
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_truth_within_a_few_stderr_with_sigma_left_out(seed: int) -> None:
     t, pos = _video(VIDEO, seed)
@@ -82,7 +80,6 @@ def test_truth_within_a_few_stderr_with_sigma_left_out(seed: int) -> None:
     assert not said, said  # the model is right: no false alarm
 
 
-@pytest.mark.xfail(strict=False, reason=PENDING)
 def test_the_wrong_damping_law_is_said() -> None:
     """Quadratic drag fitted with viscous damping: the misfit is ≫ the noise, so a warning."""
     t, pos = _video(ip.Truth(length=0.6, drag=0.3), 4, start=(0.9, 0.0, 0.0, 0.3))
@@ -90,7 +87,6 @@ def test_the_wrong_damping_law_is_said() -> None:
     assert said
 
 
-@pytest.mark.xfail(strict=False, reason=PENDING)
 def test_outliers_with_the_plain_loss_are_said() -> None:
     t, pos = _video(VIDEO, 5, outlier_fraction=0.1)
     _, said = _fit(t, pos, ["length", "g", "damping", "pivot"])
@@ -109,7 +105,6 @@ DEGENERATE = [
         (0.0, 0.0, -1.0),
         1e-3,
         ["length", "g"],
-        marks=pytest.mark.xfail(strict=False, reason=PENDING),
     ),
     pytest.param("constant 3-D positions, no noise", (0.0, 0.0, -1.0), 0.0, ["length", "g"]),
     pytest.param(
@@ -117,7 +112,6 @@ DEGENERATE = [
         (0.31, 0.65),
         1.5e-3,
         ["length", "g", "damping", "pivot"],
-        marks=pytest.mark.xfail(strict=False, reason=PENDING),
     ),
 ]
 
@@ -140,7 +134,6 @@ def test_degenerate_data_get_a_clear_answer_in_seconds(
     assert said or not res.determined["g"], (what, res.params["g"], res.stderr["g"])
 
 
-@pytest.mark.xfail(strict=False, reason=PENDING)
 def test_pure_noise_as_a_planar_angle_gets_a_clear_answer() -> None:
     rng = np.random.default_rng(7)
     t = np.arange(0.0, 20.0, 0.02)
