@@ -10,7 +10,15 @@ Three phases, in one run on this machine:
 2. **load**: N clients (default 50) at once for T seconds (default 60);
 3. **greedy neighbour**: one client doing the most expensive things the server allows — the damped
    model with the largest forcing amplitude and frequency of the registry, ``dop853`` and time scale
-   1000, then a stream of ``step n=100000`` at ``rattle8``, dt = 1e-6 — beside 10 normal clients.
+   1000, then a stream of ``step n=100000`` at ``rattle8``, dt = 1e-6 — beside 10 normal clients;
+4. **a pupil in the room** (issue 30): 30 normal clients beside one misbehaving pupil (:class:`Pupil`:
+   16 greedy sessions, 4 of them flooding ``load_scenario``, 150 idle sockets reopened every 10 s, 40
+   parallel ``/api/reduced``, 12 parallel ``GET /api/scenarios``, pings without reading), and a
+   page's ``POST /api/exact`` every 0.5 s (the share answered 200 and the slowest answer).
+
+Every page connects from its own loopback address (127.0.1.1, 127.0.1.2, …: all of 127/8 is this
+machine), as the pupils of a class come from their own devices; the server's limits per client
+(docs/web.md, "A pupil in the room") apply to each address.
 
 For each phase: frames/s per client (min, median), the inter-frame gaps pooled over the clients
 (p50, p99, max) [ms], the server's CPU [% of one core] and resident memory (largest sampled) [MiB],
@@ -23,15 +31,17 @@ otherwise idle: 50 × 60 s at ≥ 57 frames/s each with p99 gap ≤ 40 ms; besid
 normal ones ≥ 55 frames/s with no gap > 250 ms. The machine's load average is printed with the
 figures: the clients share the machine with the server, and so does anything else running.
 
-Run: ``.venv/bin/python bench/lab_load.py [--clients 50] [--seconds 60] [--model NAME] [--markdown FILE]``
-(about 2.5 min with the defaults).
+Run: ``.venv/bin/python bench/lab_load.py [--clients 50] [--seconds 60] [--model NAME] [--only WORDS]
+[--markdown FILE]`` (about 3 min with the defaults; ``--only pupil`` runs only phase 4).
 """
 
 from __future__ import annotations
 
 import argparse
 import asyncio
+import contextlib
 import json
+import math
 import os
 import socket
 import subprocess
@@ -40,6 +50,7 @@ import time
 from dataclasses import dataclass, field
 from typing import Any
 
+import httpx
 import numpy as np
 import pendulab as pl
 import psutil
@@ -79,6 +90,7 @@ class Client:
     """One page: the arrival times [s] of its frame messages."""
 
     model: str | None = None
+    source: str = "127.0.0.1"  # the address it connects from: each page is its own device
     arrivals: list[float] = field(default_factory=list)
     records: int = 0
     known: int = 0  # records with a known error estimate (error_x >= 0)
@@ -86,7 +98,7 @@ class Client:
     async def run(self, url: str, seconds: float, start: asyncio.Event) -> None:
         """Receives all the time (nothing waits in a buffer); counts the frames that arrive within
         ``seconds`` after ``start`` is set."""
-        async with connect(url, max_size=2**22, max_queue=None) as ws:
+        async with connect(url, max_size=2**22, max_queue=None, local_addr=(self.source, 0)) as ws:
             if self.model is not None:
                 await ws.send(json.dumps({"type": "set_model", "model": self.model}))
             end = None
@@ -104,9 +116,18 @@ class Client:
                     self.known += int(np.count_nonzero(err >= 0))
 
 
+def page_address(i: int) -> str:
+    """The address page i connects from (127.0.0.0/8 is all this machine): 127.0.1.1, 127.0.1.2, …"""
+    return f"127.0.{1 + i // 250}.{1 + i % 250}"
+
+
+PUPIL = "127.0.0.2"
+"""The misbehaving pupil's address."""
+
+
 async def greedy(url: str, seconds: float, start: asyncio.Event) -> None:
     """The greedy client: the expensive run for half the time, then a stream of big steps."""
-    async with connect(url, max_size=2**22, max_queue=None) as ws:
+    async with connect(url, max_size=2**22, max_queue=None, local_addr=(PUPIL, 0)) as ws:
 
         async def drain() -> None:
             async for _ in ws:
@@ -126,14 +147,131 @@ async def greedy(url: str, seconds: float, start: asyncio.Event) -> None:
         reader.cancel()
 
 
+@dataclass
+class Pupil:
+    """A misbehaving pupil (one address, :data:`PUPIL`) doing everything of issue 30 at once: 16 greedy
+    sessions (GREEDY_RUN; 4 of them flooding ``load_scenario``), 150 idle sockets reopened every 10 s,
+    40 parallel ``POST /api/reduced`` (the largest), 12 parallel ``GET /api/scenarios`` and one
+    WebSocket pinging without reading. Counts what the server answered it."""
+
+    codes: dict[str, int] = field(default_factory=dict)
+    sessions: int = 0
+
+    def count(self, what: str) -> None:
+        self.codes[what] = self.codes.get(what, 0) + 1
+
+    async def run(self, port: int, seconds: float, start: asyncio.Event) -> None:
+        await start.wait()
+        end = time.monotonic() + seconds
+        jobs = [self.session(port, end, flood=i < 4) for i in range(16)]
+        jobs += [self.idle(port, end), self.pings(port, end)]
+        async with httpx.AsyncClient(
+            base_url=f"http://127.0.0.1:{port}",
+            transport=httpx.AsyncHTTPTransport(local_address=PUPIL),
+            timeout=60,
+            limits=httpx.Limits(max_connections=60),
+        ) as http:
+            body = {"length": 1.0, "g": 9.81, "theta": 2.9, "phi_dot": 0.1, "n": 4000, "grid": 121}
+            jobs += [self.rest(http, "POST", "/api/reduced", body, end) for _ in range(40)]
+            jobs += [self.rest(http, "GET", "/api/scenarios", None, end) for _ in range(12)]
+            await asyncio.gather(*jobs, return_exceptions=True)
+
+    async def session(self, port: int, end: float, flood: bool) -> None:
+        url = f"ws://127.0.0.1:{port}/ws"
+        async with connect(url, max_size=2**22, max_queue=None, local_addr=(PUPIL, 0)) as ws:
+
+            async def drain() -> None:
+                async for msg in ws:
+                    if isinstance(msg, str) and "too many lab sessions" in msg:
+                        self.count("session refused")
+
+            reader = asyncio.create_task(drain())
+            for c in GREEDY_RUN:
+                await ws.send(json.dumps(c))
+            self.sessions += 1
+            i = 0
+            while time.monotonic() < end and not reader.done():
+                if flood:
+                    name = ("kepler", "rosette")[i % 2]
+                    await ws.send(json.dumps({"type": "load_scenario", "name": name}))
+                    i += 1
+                await asyncio.sleep(0.005)
+            reader.cancel()
+
+    async def idle(self, port: int, end: float) -> None:
+        while time.monotonic() < end:
+            held = []
+            for _ in range(150):
+                try:
+                    held.append(await asyncio.open_connection("127.0.0.1", port, local_addr=(PUPIL, 0)))
+                except OSError:
+                    self.count("idle socket refused")
+            await asyncio.sleep(min(10.0, max(0.0, end - time.monotonic())))
+            for _, w in held:
+                w.close()
+
+    async def pings(self, port: int, end: float) -> None:
+        with contextlib.suppress(Exception):
+            async with connect(
+                f"ws://127.0.0.1:{port}/ws", max_queue=1, local_addr=(PUPIL, 0)
+            ) as ws:  # never reads (max_queue=1: the client stops reading as soon as one message waits)
+                while time.monotonic() < end:
+                    await ws.ping()
+                    await asyncio.sleep(0.0005)
+        self.count("ping socket cut")
+
+    async def rest(self, http: Any, method: str, path: str, body: Any, end: float) -> None:
+        while time.monotonic() < end:
+            try:
+                r = await http.request(method, path, json=body)
+                self.count(f"{path} {r.status_code}")
+                if r.status_code != 200:
+                    await asyncio.sleep(0.02)
+            except httpx.HTTPError:
+                self.count(f"{path} failed")
+                await asyncio.sleep(0.02)
+
+
+async def probe(port: int, seconds: float, start: asyncio.Event) -> list[float]:
+    """A well-behaved page's REST requests beside the pupil: ``POST /api/exact`` every 0.5 s from its
+    own address; the answer times [s] (inf for anything but 200)."""
+    await start.wait()
+    end = time.monotonic() + seconds
+    times: list[float] = []
+    transport = httpx.AsyncHTTPTransport(local_address="127.0.0.3")
+    async with httpx.AsyncClient(base_url=f"http://127.0.0.1:{port}", transport=transport, timeout=30) as c:
+        while time.monotonic() < end:
+            t0 = time.monotonic()
+            try:
+                r = await c.post("/api/exact", json={"theta": 1.0, "phi_dot": 1.0})
+                times.append(time.monotonic() - t0 if r.status_code == 200 else math.inf)
+            except httpx.HTTPError:
+                times.append(math.inf)
+            await asyncio.sleep(0.5)
+    return times
+
+
 async def phase(
-    url: str, n: int, seconds: float, server: psutil.Process, with_greedy: bool, model: str | None
+    url: str,
+    n: int,
+    seconds: float,
+    server: psutil.Process,
+    with_greedy: bool,
+    model: str | None,
+    with_pupil: bool = False,
 ) -> dict[str, Any]:
-    clients = [Client(model) for _ in range(n)]
+    clients = [Client(model, page_address(i)) for i in range(n)]
     start = asyncio.Event()
     tasks = [asyncio.create_task(c.run(url, seconds, start)) for c in clients]
     if with_greedy:
         tasks.append(asyncio.create_task(greedy(url, seconds, start)))
+    port = int(url.split(":")[2].split("/")[0])
+    pupil = Pupil()
+    probed: asyncio.Task[list[float]] | None = None
+    if with_pupil:
+        tasks.append(asyncio.create_task(pupil.run(port, seconds, start)))
+        probed = asyncio.create_task(probe(port, seconds, start))
+        tasks.append(probed)
     await asyncio.sleep(1.0)  # everyone connected and past the first frames
     cpu0, t0, rss = server.cpu_times(), time.monotonic(), 0
     start.set()
@@ -158,6 +296,16 @@ async def phase(
         "estimate_known_percent": 100.0
         * sum(c.known for c in clients)
         / max(1, sum(c.records for c in clients)),
+        **({} if probed is None else _probe_stats(probed.result(), pupil)),
+    }
+
+
+def _probe_stats(times: list[float], pupil: Pupil) -> dict[str, Any]:
+    ok = [t for t in times if math.isfinite(t)]
+    return {
+        "probe_ok_percent": 100.0 * len(ok) / max(1, len(times)),
+        "probe_max_ms": 1e3 * max(ok) if ok else math.inf,
+        "pupil": dict(sorted(pupil.codes.items())),
     }
 
 
@@ -171,7 +319,7 @@ async def main_async(args: argparse.Namespace) -> list[dict[str, Any]]:
     port = free_port()
     env = {**os.environ, "PENDULAB_NO_BROWSER": "1"}
     cmd = [sys.executable, "-c", "from pendulab.cli import main; main()", "serve", "--no-browser"]
-    cmd += ["--port", str(port), "--max-sessions", str(args.clients + 16)]
+    cmd += ["--port", str(port), "--max-sessions", str(args.clients + 32)]
     proc = subprocess.Popen(cmd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
         url = f"ws://127.0.0.1:{port}/ws"
@@ -183,17 +331,21 @@ async def main_async(args: argparse.Namespace) -> list[dict[str, Any]]:
                 await asyncio.sleep(0.1)
         server = psutil.Process(proc.pid)
         rows = []
-        for name, n, greedy_on, seconds in (
-            ("baseline: 1 client", 1, False, min(args.seconds, 10.0)),
-            (f"load: {args.clients} clients", args.clients, False, args.seconds),
-            ("greedy neighbour: 10 clients + 1 greedy", 10, True, min(args.seconds, 30.0)),
-        ):
+        phases = [
+            ("baseline: 1 client", 1, False, False, min(args.seconds, 10.0)),
+            (f"load: {args.clients} clients", args.clients, False, False, args.seconds),
+            ("greedy neighbour: 10 clients + 1 greedy", 10, True, False, min(args.seconds, 30.0)),
+            ("a pupil in the room: 30 clients + 1 pupil", 30, False, True, min(args.seconds, 30.0)),
+        ]
+        for name, n, greedy_on, pupil_on, seconds in phases:
+            if args.only and not any(word in name for word in args.only.split(",")):
+                continue
             print(f"{name} for {seconds:g} s ...", flush=True)
             rows.append(
                 {
                     "phase": name,
                     "seconds": seconds,
-                    **await phase(url, n, seconds, server, greedy_on, args.model),
+                    **await phase(url, n, seconds, server, greedy_on, args.model, pupil_on),
                 }
             )
         return rows
@@ -218,6 +370,15 @@ def markdown(rows: list[dict[str, Any]]) -> str:
             f"| {r['gap_max_ms']:.0f} | {r['server_cpu_percent']:.0f} | {r['server_rss_mib']:.0f} "
             f"| {r['estimate_known_percent']:.1f} |"
         )
+    for r in rows:
+        if "pupil" in r:
+            out.append("")
+            out.append(
+                f"Beside the pupil, a page's `POST /api/exact` every 0.5 s: {r['probe_ok_percent']:.0f} % "
+                f"answered 200, the slowest in {r['probe_max_ms']:.0f} ms. What the pupil got: "
+                + ", ".join(f"{k}: {v}" for k, v in r["pupil"].items())
+                + "."
+            )
     return "\n".join(out) + "\n"
 
 
@@ -238,6 +399,9 @@ def main() -> None:
         "--model", help="the model every normal client switches to (default: the server's scenario's)"
     )
     parser.add_argument("--markdown", help="also write the table to this file")
+    parser.add_argument(
+        "--only", help="run only the phases whose names contain one of these words (comma-separated)"
+    )
     args = parser.parse_args()
     rows = asyncio.run(main_async(args))
     table = markdown(rows)

@@ -140,7 +140,8 @@ print(" ".join(map(str, sorted(set(codes)))), len(codes))
 
 
 def test_a_flood_of_heavy_rest_requests_runs_beside_the_frames(port: int) -> None:
-    """Six clients (another process) post the largest reduced view as fast as they can."""
+    """Six clients (another process, one address: beyond its two at once it gets 429) post the largest
+    reduced view as fast as they can."""
     cmd = [sys.executable, "-c", FLOOD, str(port), "4.0"]
     with subprocess.Popen(cmd, stdout=subprocess.PIPE, text=True) as flood:
         try:
@@ -151,7 +152,7 @@ def test_a_flood_of_heavy_rest_requests_runs_beside_the_frames(port: int) -> Non
             if flood.poll() is None:
                 flood.kill()
     codes, count = out.split()[:-1], int(out.split()[-1])
-    assert count > 10 and set(codes) <= {"200", "503"}, out
+    assert count > 10 and set(codes) <= {"200", "429", "503"}, out  # 429: more than its share at once
     fair(port, gaps)
 
 

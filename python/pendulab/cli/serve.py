@@ -104,6 +104,12 @@ def serve(
         int,
         typer.Option(min=1, max=10_000, help="Most pages (WebSockets) served at once; one more is refused."),
     ] = 64,
+    max_sessions_per_client: Annotated[
+        int,
+        typer.Option(
+            min=1, max=10_000, help="Most pages one device (address) may hold open; one more is refused."
+        ),
+    ] = 8,
     allow_host: Annotated[
         list[str] | None,
         typer.Option(
@@ -150,7 +156,13 @@ def serve(
         _fail(str(e))
     with _user_errors():
         hosts = allowed_hosts(host, allow_host or ())
-        lab = create_app(scenario, max_sessions=max_sessions, allowed_hosts=hosts, token=secret)
+        lab = create_app(
+            scenario,
+            max_sessions=max_sessions,
+            allowed_hosts=hosts,
+            token=secret,
+            max_sessions_per_client=max_sessions_per_client,
+        )
     _check_port(host, port)
     url = url_for(host, port) if secret is None else lab_url(host, port, secret)
     server = uvicorn.Server(server_config(lab, host, port, max_sessions=max_sessions))

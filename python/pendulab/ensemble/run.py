@@ -22,11 +22,17 @@ import numpy as np
 from .. import validate as limits
 from .._core import EnsembleRun, InvalidInputError
 from .._progress import tqdm
+from ..memory import check_memory
 from ..model import FloatArray, Pendulum, State
 from .result import EnsembleResult
 from .save import Save
 
 _POLL_SECONDS = 0.05
+BYTES_PER_ROW = 512
+"""Memory [B] one start needs besides its saved samples (the copies of its state and parameters on
+both sides of the core, the summary, the masks); a saved sample of x, v takes 48 B, twice while it is
+handed back. Checked against the available memory before the run (:mod:`pendulab.memory`)."""
+
 _PROGRESS_AFTER = 5e7  # trajectory-steps
 
 
@@ -162,6 +168,11 @@ def simulate_ensemble(
             f"{n} trajectories × {n_save} samples need {n * n_save * 48 / 2**30:.1f} GiB (limit 4 GiB); "
             "save less often"
         )
+    check_memory(
+        f"an ensemble of {n} trajectories with {n_save} saved samples each",
+        n * (BYTES_PER_ROW + n_save * 96),
+        "integrate fewer starts at once (in chunks), or save less often",
+    )
     settle = None if settle_angle is None else limits.number("settle_angle", settle_angle, _SETTLE)
     if invalid.size:
         rows = ", ".join(str(i) for i in invalid[:10]) + (", …" if invalid.size > 10 else "")

@@ -180,8 +180,7 @@ class AccessGuard:
         if given is not None and _equal(given, self.token):
             if kind == "http" and scope["method"] == "GET" and not scope["path"].startswith("/api/"):
                 # First visit: the cookie, and the same URL without the token.
-                url = URL(scope=scope).remove_query_params(TOKEN_PARAM)
-                redirect = RedirectResponse(str(url.replace(scheme="", netloc="")) or "/", status_code=303)
+                redirect = RedirectResponse(local_location(scope), status_code=303)
                 redirect.set_cookie(self.cookie, self.token, httponly=True, samesite="strict", path="/")
                 await redirect(scope, receive, send)
                 return
@@ -203,6 +202,16 @@ class AccessGuard:
             f"refused: this lab needs its access token ({wrong} given); open the address that "
             "`pendulab serve` printed (it ends in ?token=...) or scan its QR code",
         )
+
+
+def local_location(scope: Scope) -> str:
+    """The request's own path and query without the token, as a redirect target that stays on this
+    server: a path of ``//evil.example/`` (or ``/\\evil.example``, which browsers read alike) would
+    otherwise be a link to another site (an open redirect), so leading slashes and backslashes are
+    folded into one ``/``."""
+    url = URL(scope=scope).remove_query_params(TOKEN_PARAM)
+    path = "/" + url.path.lstrip("/\\")
+    return path + (f"?{url.query}" if url.query else "")
 
 
 def _equal(a: str, b: str) -> bool:

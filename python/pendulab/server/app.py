@@ -20,13 +20,19 @@
 - ``POST /api/fit``: a measured data file fitted (:mod:`.fit`): report, parameters ± errors, the fitted
   scenario and the measured path.
 
-At most ``max_sessions`` clients are served at once (:data:`MAX_SESSIONS`); one more is refused.
+At most ``max_sessions`` clients are served at once (:data:`MAX_SESSIONS`), at most
+``max_sessions_per_client`` of one device; one more is refused. The room's stepping budget is shared
+fairly between the clients (:mod:`.room`).
 
 Every request first passes the access checks of :mod:`.access` (allowed ``Host`` names, same-origin
 pages only, the classroom token) and the HTTP hygiene of :mod:`.hygiene` (security headers, JSON bodies
-of at most 64 KiB, a data file for ``/api/fit`` of at most 2 MiB); the computing POST endpoints run in a
-bounded thread pool (:data:`REST_THREADS`; fits in their own, :mod:`.fit`), never in the event loop.
-``GET /api/docs`` is a self-contained page (:mod:`.api_docs`, no CDN).
+of at most 64 KiB, a data file for ``/api/fit`` of at most 2 MiB). The analyses (exact, reduced view,
+EM map) run in a killable worker process with a wall-time limit (:data:`WORK_SECONDS`), the fits in
+another (:mod:`.fit`, :mod:`.worker`), the quick endpoints (V_eff, TOML) in a bounded thread pool
+(:data:`REST_THREADS`): never in the event loop, and nothing a request runs can hold the server. One
+client may have at most two computations under way (HTTP 429 beyond). ``GET /api/schema`` and
+``/api/scenarios`` are computed once. ``GET /api/docs`` is a self-contained page (:mod:`.api_docs`,
+no CDN).
 """
 
 from __future__ import annotations
@@ -48,11 +54,12 @@ from fastapi.responses import HTMLResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
 from pydantic import BaseModel, ValidationError
 
-from .._core import IntegrationError, InvalidInputError, __version__
+from .._core import InvalidInputError, __version__
 from ..scenario import ScenarioError, load_scenario
 from .access import LOOPBACK_HOSTS, guard
 from .api_docs import api_docs_page
-from .fit import FIT_OPENAPI, MAX_FIT_BODY, post_fit
+from .budget import TICK_BUDGET
+from .fit import FIT_OPENAPI, FIT_QUEUE, FIT_WALL_SECONDS, FIT_WORKERS, MAX_FIT_BODY, fit_endpoint
 from .hygiene import RequestBodies, SecurityHeaders
 from .protocol import (
     CommandError,
@@ -68,10 +75,12 @@ from .rest import (
     exact_quantities,
     scenario_toml,
 )
+from .room import MAX_SESSIONS_PER_CLIENT, Room, client_key, too_many_requests_detail
 from .schema import TICK_HZ, schema
 from .session import Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
-from .tick import Message, first_messages, tick_messages
+from .tick import Carry, Message, first_messages, tick_messages
 from .views import EMRequest, ReducedRequest, em_view, reduced_view
+from .worker import Busy, WorkerPool, WorkFailed, WorkInvalid, WorkTimeout
 
 MAX_PENDING = 64
 """Most commands waiting for the next tick; more are dropped (throttling)."""
@@ -88,11 +97,18 @@ STEP_THREADS = 4
 :data:`pendulab.server.budget.TICK_BUDGET` seconds; the core releases the GIL while stepping)."""
 
 REST_THREADS = 1
-"""Worker threads of the computing POST endpoints (exact, V_eff, reduced view, EM map, TOML): at most
-this many run at once (the machine's cores are shared with the live sessions); the rest wait."""
+"""Worker threads of the quick POST endpoints (V_eff, TOML: bounded work); at most this many run at
+once (the machine's cores are shared with the live sessions); the rest wait."""
 
 REST_QUEUE = 32
-"""Most computing requests waiting for a worker; more are answered 503 (busy, try again)."""
+"""Most requests waiting for a worker (thread or process); more are answered 503 (busy, try again)."""
+
+WORK_WORKERS = 1
+"""Worker processes of the analyses (exact solution, reduced view, EM map: :mod:`.worker`)."""
+
+WORK_SECONDS = 10.0
+"""Most wall-time seconds of one analysis in its worker; past it the worker is killed and the page
+told (HTTP 503)."""
 
 STATIC_DIR = Path(__file__).with_name("static")
 
@@ -162,6 +178,9 @@ def create_app(
     max_sessions: int = MAX_SESSIONS,
     allowed_hosts: Sequence[str] = LOOPBACK_HOSTS,
     token: str | None = None,
+    max_sessions_per_client: int = MAX_SESSIONS_PER_CLIENT,
+    work_seconds: float = WORK_SECONDS,
+    fit_seconds: float = FIT_WALL_SECONDS,
 ) -> FastAPI:
     """The lab application; every client starts with ``scenario`` (an example name or a file; default
     ``rosette``). At most ``max_sessions`` WebSockets are served at once: one more gets an ``error``
@@ -179,6 +198,39 @@ def create_app(
     app.add_middleware(SecurityHeaders)
     rest_limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
     active = 0
+    room = Room(max_sessions_per_client)
+    analyses = WorkerPool("analysis", WORK_WORKERS, REST_QUEUE, work_seconds)
+    fits = WorkerPool("fit", FIT_WORKERS, FIT_QUEUE, fit_seconds)
+    app.state.room, app.state.pools = room, (analyses, fits)
+    cached: dict[str, bytes] = {}
+
+    def once(name: str, make: Callable[[], Any]) -> Response:
+        """A GET answer computed once per app (the schema and the examples do not change while the
+        server runs): a flood of GETs costs no computing."""
+        if name not in cached:
+            cached[name] = orjson.dumps(make())
+        return Response(cached[name], media_type="application/json")
+
+    async def analysis(request: Request, fn: Callable[..., Any], req: BaseModel) -> Response:
+        """``fn(req)`` in the analysis worker process, as JSON; 422/429/503 as the module doc says."""
+        with room.request(client_key(request.scope)) as allowed:
+            if not allowed:
+                return JSONResponse({"detail": too_many_requests_detail()}, status_code=429)
+            try:
+                return Response(await analyses.run(fn, req), media_type="application/json")
+            except WorkTimeout as e:
+                return JSONResponse({"detail": str(e)}, status_code=503)
+            except WorkInvalid as e:
+                return _unprocessable(e)
+
+    @app.exception_handler(Busy)
+    async def busy_pool(request: Request, exc: Busy) -> JSONResponse:
+        return JSONResponse({"detail": str(exc)}, status_code=503, headers={"retry-after": "1"})
+
+    @app.exception_handler(WorkFailed)
+    async def failed(request: Request, exc: WorkFailed) -> JSONResponse:
+        log.error("a computation failed: %s", exc)
+        return JSONResponse({"detail": f"internal error: {exc}"}, status_code=500)
 
     @app.exception_handler(_Busy)
     async def busy(request: Request, exc: _Busy) -> JSONResponse:
@@ -192,26 +244,26 @@ def create_app(
     def api_docs() -> HTMLResponse:
         return HTMLResponse(api_docs_page(app.openapi()))
 
-    @app.get("/api/schema")
-    def get_schema() -> dict[str, Any]:
-        return schema()
-
-    @app.get("/api/scenarios")
-    def get_scenarios() -> list[dict[str, Any]]:
+    def listed_scenarios() -> list[dict[str, Any]]:
         listed = scenarios()
         if default.name not in {s["name"] for s in listed}:  # a file given to `pendulab serve`
             listed.insert(0, describe(default))
         return listed
+
+    @app.get("/api/schema")
+    def get_schema() -> Response:
+        return once("schema", schema)
+
+    @app.get("/api/scenarios")
+    def get_scenarios() -> Response:
+        return once("scenarios", listed_scenarios)
 
     @app.post("/api/exact")
     async def post_exact(request: Request) -> JSONResponse:
         req = await _body(request, ExactRequest)
         if isinstance(req, JSONResponse):
             return req
-        try:
-            return await _compute(rest_limiters, _json, exact_quantities, req)
-        except (InvalidInputError, IntegrationError) as e:
-            return _unprocessable(e)
+        return await analysis(request, exact_quantities, req)
 
     @app.post("/api/effective_potential")
     async def post_potential(request: Request) -> JSONResponse:
@@ -225,20 +277,14 @@ def create_app(
         req = await _body(request, ReducedRequest)
         if isinstance(req, JSONResponse):
             return req
-        try:
-            return await _compute(rest_limiters, _json, reduced_view, req)
-        except (InvalidInputError, IntegrationError) as e:
-            return _unprocessable(e)
+        return await analysis(request, reduced_view, req)
 
     @app.post("/api/em_map")
     async def post_em_map(request: Request) -> JSONResponse:
         req = await _body(request, EMRequest)
         if isinstance(req, JSONResponse):
             return req
-        try:
-            return await _compute(rest_limiters, _json, em_view, req)
-        except (InvalidInputError, IntegrationError) as e:
-            return _unprocessable(e)
+        return await analysis(request, em_view, req)
 
     @app.post("/api/scenario.toml")
     async def post_scenario(request: Request) -> Response:
@@ -255,7 +301,7 @@ def create_app(
             headers={"content-disposition": 'attachment; filename="pendulab-scenario.toml"'},
         )
 
-    app.add_api_route("/api/fit", post_fit, methods=["POST"], openapi_extra=FIT_OPENAPI)
+    app.add_api_route("/api/fit", fit_endpoint(fits, room), methods=["POST"], openapi_extra=FIT_OPENAPI)
 
     @app.websocket("/ws")
     async def websocket(ws: WebSocket) -> None:
@@ -270,11 +316,19 @@ def create_app(
                 await ws.send_json(error_notice(message))
                 await ws.close(code=1013, reason="server full")
             return
+        key = client_key(ws.scope)
+        refused = room.open_session(key)
+        if refused is not None:
+            with contextlib.suppress(WebSocketDisconnect, OSError, RuntimeError):
+                await ws.send_json(error_notice(refused))
+                await ws.close(code=1013, reason="too many sessions from this device")
+            return
         active += 1
         try:
-            await run_session(ws, Session(default, resolve))
+            await run_session(ws, Session(default, resolve), share=lambda: room.share(key))
         finally:
             active -= 1
+            room.close_session(key)
 
     if (static / "index.html").is_file():
         app.mount("/", StaticFiles(directory=static, html=True), name="static")
@@ -305,11 +359,15 @@ def _loop_limiter(store: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter], 
 _STEP_LIMITERS: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
 
 
-async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ) -> None:
+async def run_session(
+    ws: WebSocket, session: Session, tick_hz: float = TICK_HZ, share: Callable[[], float] | None = None
+) -> None:
     """Serves one client until it goes away (see the module doc). Each tick's work — commands,
     stepping, frames — runs in a worker thread (:func:`.tick.tick_messages`, at most
-    :data:`STEP_THREADS` at once); the event loop only moves messages."""
+    :data:`STEP_THREADS` at once) within ``share()`` seconds (the session's share of the room,
+    :meth:`.room.Room.share`; default one tick's budget); the event loop only moves messages."""
     inbox: deque[Any] = deque()
+    carry = Carry()
     dropped = 0
     limiter = _loop_limiter(_STEP_LIMITERS, STEP_THREADS)
 
@@ -360,8 +418,15 @@ async def run_session(ws: WebSocket, session: Session, tick_hz: float = TICK_HZ)
                     )
                 )
                 dropped = 0
-            work = functools.partial(tick_messages, session, commands, elapsed, dropped=lost)
-            await send_all(await anyio.to_thread.run_sync(work, limiter=limiter))
+            budget = TICK_BUDGET if share is None else share()
+            work = functools.partial(
+                tick_messages, session, commands, elapsed, budget, dropped=lost, carry=carry
+            )
+            messages = await anyio.to_thread.run_sync(work, limiter=limiter)
+            if carry.left:  # not carried out within the budget: first at the next tick
+                inbox.extendleft(reversed(carry.left))
+                carry.left.clear()
+            await send_all(messages)
 
     async with anyio.create_task_group() as tg:
 

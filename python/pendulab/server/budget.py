@@ -6,7 +6,8 @@ Every tick a session may spend at most :data:`TICK_BUDGET` seconds of wall-clock
 of steps per simulated second has no bound the session could know beforehand (a forcing frequency of
 10⁴ rad/s needs thousands). The core is called in *slices* (:class:`Slicer`): n steps for a
 fixed-step method, ``step_to(t, max_steps=n)`` for ``dop853``, with n sized from the steps per second
-measured on the earlier slices so that a slice takes about :data:`SLICE_TIME`; the budget is checked
+measured on the earlier slices so that a slice takes about :data:`SLICE_TIME` (or half the budget when
+that is smaller: a session's share of a full room, :mod:`.room`); the budget is checked
 between slices, so a tick overruns it by at most one slice. Wall time, not CPU time: a session whose
 thread waits for a core is charged for the wait, so a crowded machine makes every session do less
 rather than every tick take longer. A session that runs out of budget before reaching the wall clock
@@ -24,6 +25,10 @@ TICK_BUDGET = 0.006
 SLICE_TIME = 0.0005
 """Wall-clock seconds one call into the core aims at (the granularity of the budget)."""
 
+MIN_SLICE_TIME = 0.00002
+"""Shortest slice [s]: a small budget (a session's share in a full room, :mod:`.room`) is spent in
+slices of half of it, at most :data:`SLICE_TIME`, at least this."""
+
 FIRST_SLICE = 64
 """Steps of the first slice of a new stepper (before its speed is known)."""
 
@@ -35,7 +40,9 @@ class Budget:
     """A deadline ``seconds`` from now (``time.perf_counter``)."""
 
     def __init__(self, seconds: float = TICK_BUDGET) -> None:
+        self.seconds = seconds
         self.deadline = time.perf_counter() + seconds
+        self.slice = max(MIN_SLICE_TIME, min(SLICE_TIME, 0.5 * seconds))
 
     def spent(self) -> bool:
         """True once the deadline has passed."""
@@ -54,8 +61,8 @@ class Slicer:
         """Forget the measured speed (a new stepper, method or model)."""
         self.rate: float | None = None  # steps per wall-clock second
 
-    def _size(self, most: int) -> int:
-        n = FIRST_SLICE if self.rate is None else int(self.rate * SLICE_TIME)
+    def _size(self, most: int, budget: Budget) -> int:
+        n = FIRST_SLICE if self.rate is None else int(self.rate * budget.slice)
         return max(1, min(n, MAX_SLICE, most))
 
     def _learn(self, steps: int, seconds: float) -> None:
@@ -67,7 +74,7 @@ class Slicer:
         when the budget is spent; returns the steps taken."""
         taken = 0
         while taken < n:
-            k = self._size(n - taken)
+            k = self._size(n - taken, budget)
             t0 = time.perf_counter()
             step(k)
             self._learn(k, time.perf_counter() - t0)
@@ -80,7 +87,7 @@ class Slicer:
         """Calls ``step_to(cap)`` (at most cap steps towards a target; True once there) in slices, at
         least one, until the target is reached (True) or the budget is spent (False)."""
         while True:
-            k = self._size(MAX_SLICE)
+            k = self._size(MAX_SLICE, budget)
             t0 = time.perf_counter()
             reached = step_to(k)
             if not reached:  # a full slice: its time measures the speed

@@ -18,35 +18,36 @@ docs/theory.md) and answers with
   l. Frame-free data (|a − g|, |ω|) have no path: ``measured`` is null.
 
 Work is bounded: the body is at most :data:`MAX_FIT_BODY` (the server's body check, :mod:`.hygiene`), the
-fits run one at a time in a worker thread of their own (:data:`FIT_THREADS`, :data:`FIT_QUEUE`), the search at
-most :data:`FIT_SECONDS` of wall time (then the best values reached are returned, marked not
-converged).
+fits run one at a time in a killable worker process of their own (:mod:`.worker`; :data:`FIT_WORKERS`,
+:data:`FIT_QUEUE`), the search at most :data:`FIT_SECONDS` of wall time (then the best values reached
+are returned, marked not converged), the whole request at most :data:`FIT_WALL_SECONDS` (then the
+worker is killed and the page told): no data file can hold the server.
 """
 
 from __future__ import annotations
 
-import asyncio
+import csv
 import json
 import math
 import warnings
-import weakref
+from collections.abc import Awaitable, Callable
 from typing import Any
 
-import anyio
 import numpy as np
-import orjson
 from fastapi import Request
 from fastapi.responses import JSONResponse, Response
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
-from .._core import IntegrationError, InvalidInputError
+from .._core import InvalidInputError
 from ..fitting import FitResult, fit
 from ..fitting.problem import ROD_MODELS
 from ..fitting.table import parse_table
 from ..model import FloatArray, Pendulum
 from .protocol import validation_problems
+from .room import Room, client_key, too_many_requests_detail
 from .scenarios import Setup
 from .session import describe
+from .worker import Busy, WorkerPool, WorkInvalid, WorkTimeout
 
 MAX_FIT_BYTES = 2 * 2**20
 """Largest body of ``POST /api/fit`` [bytes] (about 50 000 rows of t, x, z)."""
@@ -142,19 +143,32 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
     :class:`pendulab.InvalidInputError` naming what is wrong with the data or the settings."""
     if req.model not in ROD_MODELS:
         raise InvalidInputError(f"model {req.model!r}: use one of {', '.join(ROD_MODELS)}")
-    data = parse_table(req.csv, req.columns, req.name)
+    name = req.name[:80]
+    try:
+        data = parse_table(req.csv, req.columns, req.name)
+    except csv.Error as e:  # e.g. a field over the csv module's limit (a 200 kB cell)
+        raise InvalidInputError(f"{name}: not a readable CSV file: {e}") from None
     kinds = {k for k in data if k != "t"}
     names = req.fit if req.fit is not None else default_fit(req.model, kinds)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
-        res = fit(
-            pendulum=Pendulum(model=req.model),
-            fit=names,
-            sigma=req.sigma,
-            progress=False,
-            time_limit=time_limit,
-            **data,
-        )
+        try:
+            res = fit(
+                pendulum=Pendulum(model=req.model),
+                fit=names,
+                sigma=req.sigma,
+                progress=False,
+                time_limit=time_limit,
+                **data,
+            )
+        except InvalidInputError:
+            raise
+        except (ValueError, ArithmeticError) as e:  # numpy/SciPy on extreme data: said as the data's
+            raise InvalidInputError(
+                f"the fit of {name} failed: {' '.join(str(e).split())[:300]}; the data hold values "
+                "the fit cannot follow in floating point (times or positions extremely far apart or "
+                "close together, or a noise sigma far from the data's scale)"
+            ) from None
     scenario = res.to_scenario(title=f"fitted to {req.name[:80]}")
     try:
         lab: dict[str, Any] | None = describe(Setup.from_scenario(scenario, None))
@@ -191,12 +205,17 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
 MAX_FIT_BODY = MAX_FIT_BYTES + MAX_FIT_BYTES // 8
 """Largest JSON body [bytes]: the file plus room for its escaping (a newline is sent as two bytes)."""
 
-FIT_THREADS = 1
-"""Fits running at once (each takes a core for up to :data:`FIT_SECONDS`); the others wait. A pool of
-their own: a fit takes seconds, and must not hold up the quick computing endpoints (``REST_THREADS``)."""
+FIT_WORKERS = 1
+"""Fits running at once, each in a worker process of its own pool (:mod:`.worker`): a fit takes
+seconds and a core, and must not hold up the quick analyses (:data:`pendulab.server.app.WORK_SECONDS`)."""
 
 FIT_QUEUE = 4
 """Most fits waiting for the worker; more are answered 503 (busy, try again)."""
+
+FIT_WALL_SECONDS = 2 * FIT_SECONDS + 10
+"""Most wall-time seconds of one fit request in its worker, the error analysis and rendering included:
+past it the worker is killed and the page told (HTTP 503). The search itself is given half of it (at
+most :data:`FIT_SECONDS`)."""
 
 FIT_OPENAPI = {
     "requestBody": {
@@ -206,44 +225,46 @@ FIT_OPENAPI = {
 }
 """The body's schema for the API page (``/api/docs``): the endpoint reads the body itself."""
 
-_LIMITERS: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
-
 
 def _problem(status: int, detail: str) -> JSONResponse:
     return JSONResponse({"detail": " ".join(detail.split())}, status_code=status)
 
 
-def _rendered(req: FitRequest) -> Response:
-    """:func:`fit_data` as a JSON response, rendered in the worker thread with orjson (as the other
-    computing endpoints: the measured path is some 100 kB of numbers)."""
-    return Response(orjson.dumps(fit_data(req)), media_type="application/json")
+def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[Response]]:
+    """The handler of ``POST /api/fit`` for one app: its fits run in ``pool``'s worker processes, at
+    most :data:`~pendulab.server.room.MAX_REQUESTS_PER_CLIENT` computations per client (``room``)."""
 
+    async def post_fit(request: Request) -> Response:
+        """``POST /api/fit`` (see the module doc): 200 with the fit; 422 a bad body or bad data (naming
+        the problem), 429 when this client already has its computations under way, 503 when
+        :data:`FIT_QUEUE` fits already wait or the fit ran past :data:`FIT_WALL_SECONDS` (then it was
+        stopped). The server's :class:`.hygiene.RequestBodies` has already answered 415 to another
+        Content-Type than JSON and 413 to a body over :data:`MAX_FIT_BODY`."""
+        body = await request.body()
+        try:
+            raw = json.loads(body)
+        except (ValueError, RecursionError) as e:  # RecursionError: nested too deeply
+            return _problem(422, f"the body is not JSON: {str(e)[:200]}")
+        try:
+            req = FitRequest.model_validate(raw)
+        except ValidationError as e:
+            return _problem(422, validation_problems(e, skip=0))
+        with room.request(client_key(request.scope)) as allowed:
+            if not allowed:
+                return _problem(429, too_many_requests_detail())
+            seconds = pool.seconds
+            try:
+                out = await pool.run(fit_data, req, min(FIT_SECONDS, 0.5 * seconds))
+            except Busy:
+                return JSONResponse(
+                    {"detail": f"busy: {FIT_QUEUE} fits are waiting; try again in a moment"},
+                    status_code=503,
+                    headers={"retry-after": "5"},
+                )
+            except WorkTimeout as e:
+                return _problem(503, str(e))
+            except WorkInvalid as e:
+                return _problem(422, str(e))
+        return Response(out, media_type="application/json")
 
-async def post_fit(request: Request) -> Response:
-    """``POST /api/fit`` (see the module doc): 200 with the fit; 422 a bad body or bad data (naming the
-    problem), 503 when :data:`FIT_QUEUE` fits already wait. The server's :class:`.hygiene.RequestBodies`
-    has already answered 415 to another Content-Type than JSON and 413 to a body over
-    :data:`MAX_FIT_BODY`."""
-    body = await request.body()
-    try:
-        raw = json.loads(body)
-    except (ValueError, RecursionError) as e:  # RecursionError: nested too deeply
-        return _problem(422, f"the body is not JSON: {str(e)[:200]}")
-    try:
-        req = FitRequest.model_validate(raw)
-    except ValidationError as e:
-        return _problem(422, validation_problems(e, skip=0))
-    loop = asyncio.get_running_loop()
-    limiter = _LIMITERS.get(loop)
-    if limiter is None:
-        limiter = _LIMITERS[loop] = anyio.CapacityLimiter(FIT_THREADS)
-    if limiter.available_tokens == 0 and limiter.statistics().tasks_waiting >= FIT_QUEUE:
-        return JSONResponse(
-            {"detail": f"busy: {FIT_QUEUE} fits are waiting; try again in a moment"},
-            status_code=503,
-            headers={"retry-after": "5"},
-        )
-    try:
-        return await anyio.to_thread.run_sync(_rendered, req, limiter=limiter)
-    except (InvalidInputError, IntegrationError) as e:
-        return _problem(422, str(e))
+    return post_fit

@@ -14,20 +14,29 @@ bodies only and capped, slow clients timed out.
   within :data:`BODY_TIMEOUT` seconds (else 408). The endpoint then reads the body from memory.
 - :class:`TimedH11Protocol`: uvicorn's HTTP/1.1 protocol with a deadline for the request *headers*
   (:data:`HEADER_TIMEOUT`): a connection that opens and sends its headers slowly or never
-  (slowloris) is closed. uvicorn itself times out only idle keep-alive connections.
+  (slowloris) is closed. uvicorn itself times out only idle keep-alive connections. One client
+  (address) may hold at most :data:`~pendulab.server.room.MAX_CONNECTIONS_PER_CLIENT` connections;
+  more are cut as soon as they are accepted, so one client's idle sockets cannot fill the server's
+  connection limit for everyone.
+- :class:`LabWebSocketProtocol`: uvicorn's WebSocket protocol with at most :data:`MAX_WS_BUFFER` bytes
+  waiting for a client (a client that pings without reading is cut off).
 """
 
 from __future__ import annotations
 
 import asyncio
 import re
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
+from typing import Any
 
 import anyio
 from starlette.datastructures import Headers, MutableHeaders
 from starlette.responses import PlainTextResponse
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 from uvicorn.protocols.http.h11_impl import H11Protocol
+from uvicorn.protocols.websockets.websockets_sansio_impl import WebSocketsSansIOProtocol
+
+from .room import MAX_CONNECTIONS_PER_CLIENT
 
 MAX_BODY_BYTES = 64 * 1024
 """Largest request body [bytes] (the lab's requests are a few hundred bytes)."""
@@ -37,6 +46,10 @@ BODY_TIMEOUT = 10.0
 
 HEADER_TIMEOUT = 10.0
 """Most seconds a connection may take to send a request's headers."""
+
+MAX_WS_BUFFER = 1 << 20
+"""Most bytes waiting to be sent to one WebSocket client before it is cut off (a client that sends
+pings without reading)."""
 
 _HOST_RE = re.compile(r"^[A-Za-z0-9.\-]+(:\d{1,5})?$|^\[[0-9A-Fa-f:.]+\](:\d{1,5})?$")
 
@@ -157,15 +170,45 @@ async def _answer(scope: Scope, receive: Receive, send: Send, status: int, messa
     await response(scope, receive, send)
 
 
+def _open_from(connections: Iterable[Any], host: str) -> int:
+    """The open connections (HTTP and WebSocket protocols of uvicorn's server state) from ``host``."""
+    return sum(1 for c in connections if (getattr(c, "client", None) or ("",))[0] == host)
+
+
+class LabWebSocketProtocol(WebSocketsSansIOProtocol):
+    """uvicorn's WebSocket protocol with a bound on what waits to be sent to a client: the protocol
+    answers every ping with a pong at once, whether or not the client reads, so a client that sends
+    pings without reading would grow the server's memory without end. Past :data:`MAX_WS_BUFFER`
+    bytes waiting, the connection is cut (the lab's own frames never get there: the session waits
+    for the socket to drain before it sends more)."""
+
+    max_buffer = MAX_WS_BUFFER
+
+    def handle_ping(self) -> None:
+        super().handle_ping()
+        if self.transport.get_write_buffer_size() > self.max_buffer:
+            self.transport.abort()
+
+    def data_received(self, data: bytes) -> None:
+        if self.transport.is_closing():
+            return
+        super().data_received(data)
+
+
 class TimedH11Protocol(H11Protocol):
     """uvicorn's h11 protocol with a deadline for each request's headers (:data:`HEADER_TIMEOUT`,
     from the first byte of a request on a kept-alive connection, from the connection on a new one)."""
 
     header_timeout = HEADER_TIMEOUT
 
+    max_per_client = MAX_CONNECTIONS_PER_CLIENT
+
     def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
         self._header_timer: asyncio.TimerHandle | None = None
         super().connection_made(transport)
+        if self.client and _open_from(self.connections, self.client[0]) > self.max_per_client:
+            transport.abort()  # one client holding the server's connections (idle-socket churn)
+            return
         self._arm()
 
     def _waiting_for_headers(self) -> bool:

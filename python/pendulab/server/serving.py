@@ -15,7 +15,7 @@ from typing import Any
 
 import uvicorn
 
-from .hygiene import HEADER_TIMEOUT, TimedH11Protocol
+from .hygiene import HEADER_TIMEOUT, LabWebSocketProtocol, TimedH11Protocol
 
 SHUTDOWN_GRACE = 0.5
 """Seconds the open connections get to close after Ctrl-C or SIGTERM before they are cut."""
@@ -47,6 +47,7 @@ def server_config(
         port=port,
         log_level=log_level,
         http=protocol,
+        ws=LabWebSocketProtocol,
         ws_max_size=WS_MAX_BYTES,
         timeout_keep_alive=KEEP_ALIVE,
         timeout_graceful_shutdown=SHUTDOWN_GRACE,  # type: ignore[arg-type]  # uvicorn waits a float

@@ -23,6 +23,8 @@ last line, for the diagnostics computed from a finite state.
 
 from __future__ import annotations
 
+import time
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -65,6 +67,20 @@ def finite_records(session: Session, records: np.ndarray | None, out: list[Messa
     return False
 
 
+@dataclass
+class Carry:
+    """What a session's commands carry from tick to tick (the server keeps one per session): the
+    commands not carried out yet (``left``: the budget ran out; the server puts them back at the head
+    of the inbox) and the ``debt`` [s] of processor time its commands took beyond a tick's budget.
+    A tick carries out at least one command, more only while the budget lasts; while in debt, it
+    carries out none (stepping and frames go on) and pays off one tick's budget. So a page that
+    floods ``load_scenario`` gets about its share of the room (:mod:`.room`), not a tick's worth of
+    commands per tick."""
+
+    left: list[Any] = field(default_factory=list)
+    debt: float = 0.0
+
+
 def first_messages(session: Session) -> list[Message]:
     """What a new connection gets first: the status and the current state's frame."""
     out: list[Message] = [session.status()]
@@ -80,6 +96,7 @@ def tick_messages(
     elapsed: float,
     budget_seconds: float = TICK_BUDGET,
     dropped: int = 0,
+    carry: Carry | None = None,
 ) -> list[Message]:
     """Carries out one tick of ``session`` (the module doc): ``commands`` are parsed commands or
     :class:`CommandError` for refused messages, ``elapsed`` the wall-clock seconds since the last tick,
@@ -88,13 +105,26 @@ def tick_messages(
 
     ``session.commands`` counts every message handled — applied, refused or dropped — and the status
     says it (``commands``): a page that counts what it sent knows when a status reflects all of it (the
-    page's language switch reloads from the URL only then)."""
+    page's language switch reloads from the URL only then).
+
+    With ``carry`` (the server's), the commands are carried out within the session's budget too
+    (``load_scenario`` and the other commands that build a stepper cost real time): see
+    :class:`Carry`."""
     budget = Budget(budget_seconds)
     out: list[Message] = []
     changed = bool(commands) or dropped > 0  # the status after them, also after refused ones
-    session.commands += len(commands) + dropped
+    session.commands += dropped
     records = None
-    for item in commands:
+    cpu = time.thread_time()
+    if carry is not None and carry.debt > 0:  # paying for earlier commands: none this tick
+        carry.debt = max(0.0, carry.debt - budget_seconds)
+        carry.left.extend(commands)
+        commands, changed = [], dropped > 0
+    for i, item in enumerate(commands):
+        if carry is not None and i > 0 and budget.spent():
+            carry.left.extend(commands[i:])  # counted when carried out, at a later tick
+            break
+        session.commands += 1
         if isinstance(item, CommandError):
             out.append(error_notice(str(item), item.command))
             continue
@@ -105,6 +135,8 @@ def tick_messages(
             continue
         if result is not None:
             records = result  # only the last discontinuity matters; the status below announces it
+    if carry is not None and commands:
+        carry.debt += max(0.0, time.thread_time() - cpu - budget_seconds)
     was_lagging = session.lagging
     stepped = advanced = None
     try:

@@ -33,6 +33,7 @@ import numpy.typing as npt
 from .._core import ExactSolution as _ExactSolution
 from .._core import InvalidInputError
 from ..display import Row, html_table, number
+from ..memory import check_memory
 from ..model import FloatArray, Pendulum, State, _frozen
 from ..trajectory import Trajectory
 from ..validate import array, show
@@ -42,6 +43,10 @@ if TYPE_CHECKING:
     from collections.abc import Sequence
 
     from ..animate import Movie
+
+BYTES_PER_TIME = 96
+"""Memory [B] the exact solution needs per evaluation time: the core's x, v (3 + 3 float64), φ and
+the time, and the finiteness checks' masks (checked against the available memory first)."""
 
 KINDS = ("generic", "conical", "planar", "planar_rotating", "separatrix", "rest", "great_circle")
 """The kinds of motion (T-4.6), as ``ExactSolution.kind`` names them."""
@@ -129,7 +134,13 @@ class ExactSolution:
         return err
 
     def _states(self, times: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
-        """The core's states at ``times``, refused (naming the input) where not finite."""
+        """The core's states at ``times``, refused (naming the input) where not finite; refused before
+        anything is computed when the answer would not fit in memory (:mod:`pendulab.memory`)."""
+        check_memory(
+            f"the exact solution at {times.size} times",
+            times.size * BYTES_PER_TIME,
+            "ask for fewer times at once (in chunks)",
+        )
         try:
             x, v, phi = self._core.states(times)
         except InvalidInputError as e:

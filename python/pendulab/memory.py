@@ -1,0 +1,90 @@
+"""Memory checked before a large allocation (docs/limits.md, "Memory").
+
+A call that allocates memory in proportion to its input — the exact solution at 10⁸ times
+(:meth:`pendulab.ExactSolution.state`), an ensemble of 10⁷ starts (:func:`pendulab.simulate_ensemble`)
+— is inside the documented size limits on a large machine and far beyond a small one. When the
+allocation fails inside the Rust core, the process aborts (Rust's allocator does not raise), so the
+need is estimated first and refused with :class:`pendulab.InvalidInputError` when it exceeds
+:data:`USABLE_FRACTION` of what this process can still get (:func:`available_bytes`): the smallest of
+the memory the operating system reports available (``MemAvailable``), the room left under the
+process's address-space limit (``ulimit -v``, RLIMIT_AS) and under its cgroup's memory limit
+(containers). All sizes in bytes.
+"""
+
+from __future__ import annotations
+
+import os
+import resource
+from pathlib import Path
+
+from ._core import InvalidInputError
+
+USABLE_FRACTION = 0.8
+"""The share of the available memory one call may plan to fill."""
+
+
+def _meminfo(key: str) -> int | None:
+    try:
+        for line in Path("/proc/meminfo").read_text().splitlines():
+            if line.startswith(key + ":"):
+                return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return None
+
+
+def _own_status(key: str) -> int | None:
+    try:
+        for line in Path("/proc/self/status").read_text().splitlines():
+            if line.startswith(key + ":"):
+                return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return None
+
+
+def _cgroup_room() -> int | None:
+    """memory.max − memory.current of this process's cgroup (v2), or None without a limit."""
+    try:
+        rel = Path("/proc/self/cgroup").read_text().strip().split("\n")[0].split(":")[-1]
+        base = Path("/sys/fs/cgroup") / rel.lstrip("/")
+        top = (base / "memory.max").read_text().strip()
+        if top == "max":
+            return None
+        return int(top) - int((base / "memory.current").read_text().strip())
+    except (OSError, ValueError, IndexError):
+        return None
+
+
+def available_bytes() -> int | None:
+    """The memory this process can still allocate, as well as it can be told (module doc); None when
+    nothing is known (then nothing is refused)."""
+    known: list[int] = []
+    avail = _meminfo("MemAvailable")
+    if avail is None:
+        try:
+            avail = os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+        except (ValueError, OSError, AttributeError):
+            avail = None
+    if avail is not None:
+        known.append(avail)
+    for limit, used in ((resource.RLIMIT_AS, "VmSize"), (resource.RLIMIT_DATA, "VmData")):
+        soft = resource.getrlimit(limit)[0]
+        if soft != resource.RLIM_INFINITY:
+            known.append(soft - (_own_status(used) or 0))
+    room = _cgroup_room()
+    if room is not None:
+        known.append(room)
+    return max(0, min(known)) if known else None
+
+
+def check_memory(what: str, need: float, hint: str) -> None:
+    """Raises :class:`pendulab.InvalidInputError` when ``need`` bytes for ``what`` exceed
+    :data:`USABLE_FRACTION` of :func:`available_bytes`; ``hint`` says how to ask for less."""
+    have = available_bytes()
+    if have is None or need <= USABLE_FRACTION * have:
+        return
+    raise InvalidInputError(
+        f"{what} needs about {need / 2**30:.3g} GiB of memory, more than this process can get "
+        f"({have / 2**30:.3g} GiB available; at most {USABLE_FRACTION:.0%} of it is used); {hint}"
+    )

@@ -1,0 +1,112 @@
+"""Fairness per client and per room (docs/web.md, "Security": "a pupil in the room").
+
+A *client* is the address a connection comes from (a pupil's device; in classroom mode every pupil
+carries the same token, so the token cannot tell them apart). :class:`Room` keeps, per client:
+
+- its open lab sessions: at most ``per_client`` (:data:`MAX_SESSIONS_PER_CLIENT`); one more is refused
+  with an error notice, as the server-wide ``max_sessions`` is;
+- its computing requests under way (fits and analyses): at most :data:`MAX_REQUESTS_PER_CLIENT` at
+  once; one more gets HTTP 429 at once instead of taking a place in the shared queue
+  (:meth:`Room.request`);
+- the share of the room's stepping budget per tick (:meth:`Room.share`): :data:`ROOM_BUDGET` seconds of
+  wall time per tick are split equally between the clients with open sessions, and a client's share
+  equally between its sessions, each session's share at most one tick's
+  :data:`~pendulab.server.budget.TICK_BUDGET`. A page that needs less than its share (the usual
+  case) leaves it unused; a greedy one lags (``status.lagging``) instead of slowing the others, however
+  many sessions it opens. Commands such as ``load_scenario`` are carried out within the same share
+  (:func:`pendulab.server.tick.tick_messages`).
+
+The open connections per client are capped where connections are accepted
+(:class:`pendulab.server.hygiene.TimedH11Protocol`, :data:`MAX_CONNECTIONS_PER_CLIENT`). All times in
+seconds.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Iterator
+from typing import Any
+
+from .budget import TICK_BUDGET
+
+MAX_SESSIONS_PER_CLIENT = 8
+"""Default for the most lab sessions (WebSockets) one client (address) may hold open: a pupil with a
+few tabs."""
+
+MAX_REQUESTS_PER_CLIENT = 2
+"""Most computing requests (fits, exact solutions, reduced views, EM maps) one client may have under
+way or waiting at once; more are answered 429."""
+
+MAX_CONNECTIONS_PER_CLIENT = 24
+"""Most TCP connections one client may hold open at once (its lab sessions plus a browser's six
+keep-alive connections per tab, with room); more are closed as soon as they are accepted."""
+
+ROOM_BUDGET = 0.012
+"""Wall-clock seconds of stepping per tick (1/60 s) shared by all the room's sessions: about a third
+of two cores' time, the rest left for sending frames and answering requests."""
+
+
+def client_key(scope: dict[str, Any]) -> str:
+    """The client a request or WebSocket comes from: its address (``"?"`` when the server does not
+    know it)."""
+    client = scope.get("client")
+    return str(client[0]) if client else "?"
+
+
+class Room:
+    """The sessions and requests of every client (module doc). Used from the event loop only."""
+
+    def __init__(self, per_client: int = MAX_SESSIONS_PER_CLIENT, room_budget: float = ROOM_BUDGET):
+        self.per_client = per_client
+        self.room_budget = room_budget
+        self.sessions: dict[str, int] = {}
+        self.requests: dict[str, int] = {}
+
+    def open_session(self, key: str) -> str | None:
+        """Counts a new session of ``key``; None when allowed, else the message why not."""
+        have = self.sessions.get(key, 0)
+        if have >= self.per_client:
+            return (
+                f"too many lab sessions from your device: {have} are open, the most one device may "
+                f"have (pendulab serve --max-sessions-per-client {self.per_client}); close another tab"
+            )
+        self.sessions[key] = have + 1
+        return None
+
+    def close_session(self, key: str) -> None:
+        left = self.sessions.get(key, 0) - 1
+        if left > 0:
+            self.sessions[key] = left
+        else:
+            self.sessions.pop(key, None)
+
+    def share(self, key: str) -> float:
+        """The stepping budget [s] of one tick of one of ``key``'s sessions (module doc)."""
+        clients = max(1, len(self.sessions))
+        mine = max(1, self.sessions.get(key, 1))
+        return min(TICK_BUDGET, self.room_budget / clients / mine)
+
+    @contextlib.contextmanager
+    def request(self, key: str) -> Iterator[bool]:
+        """Counts a computing request of ``key`` while it runs; yields False (and counts nothing) when
+        the client already has :data:`MAX_REQUESTS_PER_CLIENT` under way."""
+        have = self.requests.get(key, 0)
+        if have >= MAX_REQUESTS_PER_CLIENT:
+            yield False
+            return
+        self.requests[key] = have + 1
+        try:
+            yield True
+        finally:
+            left = self.requests.get(key, 1) - 1
+            if left > 0:
+                self.requests[key] = left
+            else:
+                self.requests.pop(key, None)
+
+
+def too_many_requests_detail() -> str:
+    return (
+        f"too many requests at once from your device: at most {MAX_REQUESTS_PER_CLIENT} computations "
+        "may run or wait for one device; wait for the answers, then try again"
+    )
