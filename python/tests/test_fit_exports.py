@@ -167,3 +167,14 @@ def test_a_huge_header_cell_is_one_clear_error(tmp_path: Path) -> None:
     data = tmp_path / "wide.csv"
     data.write_text("t,x," + "(" * 200_000 + "\n" + ROWS)
     assert_user_error(*invoke("fit", str(data)), "characters long", "header row may have at most")
+
+
+def test_a_numerical_failure_inside_the_fit_is_one_error_line(monkeypatch: pytest.MonkeyPatch) -> None:
+    from pendulab.cli import fit as fit_cli
+
+    def broken(**_: object) -> None:
+        raise np.linalg.LinAlgError("SVD did not converge")
+
+    monkeypatch.setattr(fit_cli, "fit", broken)
+    code, out, err = invoke("fit", str(EXPORTS / "excel_utf8_bom.csv"))
+    assert_user_error(code, out, err, "the fit failed on these data", "SVD did not converge", "--fit")

@@ -9,12 +9,15 @@ scenario (TOML, which ``pendulab run`` and the lab accept) and optionally a figu
 
 from __future__ import annotations
 
+import contextlib
 import inspect
 import math
 import warnings
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Annotated
 
+import numpy as np
 import typer
 
 from .._core import InvalidInputError
@@ -67,6 +70,20 @@ def _positive(text: str, what: str) -> float:
     if not value > 0.0 or value < 1e-100 or value > 1e100:
         _fail(f"{what}: {text.strip()[:40]!r} must be a positive number in [1e-100, 1e100] (SI units)")
     return value
+
+
+@contextlib.contextmanager
+def _numeric_failures() -> Iterator[None]:
+    """A numerical failure inside the fit (LAPACK's SVD, an overflow) as one ``error:`` line naming
+    it and what to try, not a traceback: the data reached the fit but it cannot work with them."""
+    try:
+        yield
+    except (np.linalg.LinAlgError, ZeroDivisionError, OverflowError, FloatingPointError) as e:
+        _fail(
+            f"the fit failed on these data ({type(e).__name__}: {' '.join(str(e).split())[:120]}); check "
+            "that they show a swing (not a bob at rest, constant or pure noise), try fewer unknowns "
+            "(--fit) or give --sigma"
+        )
 
 
 def _number(text: str, what: str) -> float:
@@ -157,7 +174,7 @@ def fit_cmd(
             if len(parts) != 3:
                 _fail(f"--pivot {pivot!r}: give x,y,z in m")
             where = [_number(c, "--pivot") for c in parts]
-        with warnings.catch_warnings(record=True) as caught:
+        with warnings.catch_warnings(record=True) as caught, _numeric_failures():
             warnings.simplefilter("always")
             res = fit(
                 pendulum=pendulum,

@@ -50,6 +50,12 @@ def _empty_cells(delimiter: str) -> re.Pattern[str]:
     return re.compile(rf'(^|{d}){b}*(?:(?:""|NA|N/A){b}*)?(?={d}|\n)', re.M)
 
 
+def _may_have(body: str, needles: tuple[str, ...]) -> bool:
+    """Whether any of ``needles`` is in ``body`` (``str.find`` in C: a regular expression pass over
+    a million rows costs seconds, so it runs only when it may change something)."""
+    return any(needle in body for needle in needles)
+
+
 def read_cells(
     text: str,
     layout: Layout,
@@ -74,8 +80,11 @@ def read_cells(
     if layout.delimiter is not None:
         if not body.endswith("\n"):
             body += "\n"
-        body = _BLANK_LINE.sub("", body)
-        body = _empty_cells(layout.delimiter).sub(r"\1nan", body)
+        if _may_have(body, ("\n\n", "\n ", "\n\t")) or body[:1] in (" ", "\t", "\n"):
+            body = _BLANK_LINE.sub("", body)
+        d = layout.delimiter
+        if body[:1] == d or _may_have(body, (d + d, "\n" + d, d + "\n", d + " ", d + "\t", "NA", '""')):
+            body = _empty_cells(d).sub(r"\1nan", body)
     try:
         data = np.loadtxt(
             io.StringIO(body),
