@@ -10,7 +10,6 @@ scenario (TOML, which ``pendulab run`` and the lab accept) and optionally a figu
 from __future__ import annotations
 
 import contextlib
-import inspect
 import math
 import warnings
 from collections.abc import Iterator
@@ -162,11 +161,6 @@ def fit_cmd(
         for note in notes:
             _say(f"data: {note}", err=True)
         kinds = [k for k in kwargs if k != "t"]
-        if "horizontal" in kwargs and "horizontal" not in inspect.signature(fit).parameters:
-            _fail(
-                "horizontal positions (x, y seen from above) are read, but this version's fit does not "
-                "take them yet"
-            )
         sigmas = _sigma(sigma, kinds)
         where = None
         if pivot is not None:
