@@ -169,3 +169,26 @@ def test_the_fit_does_not_depend_on_the_unit() -> None:
     for name, k in scale.items():
         assert abs(mm.params[name] / k - res.params[name]) < 0.1 * res.stderr[name], name
         assert mm.stderr[name] / k == pytest.approx(res.stderr[name], rel=0.01), name
+
+
+REAL = Path(__file__).resolve().parents[2] / "testdata" / "real"
+
+
+@pytest.mark.parametrize(
+    ("name", "step"), [("multiarm_single_small_decay", 5), ("multiarm_single_large_decay", 4)]
+)
+def test_a_real_decay_with_dry_friction_says_the_model_lacks_something(name: str, step: int) -> None:
+    """Real encoder recordings (testdata/real/README.md: MIT-licensed, by others) whose amplitude
+    decays by dry friction and drag: viscous damping alone must not pass silently."""
+    d = np.loadtxt(REAL / f"{name}.csv", delimiter=",", comments="#", skiprows=4)
+    t, angle = d[::step, 0], d[::step, 1]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = pl.fit(
+            t,
+            planar_angle=angle,
+            pendulum=pl.Pendulum(model="damped", g=9.81, length=0.15),
+            fit=["length", "damping"],
+            time_limit=LIMIT,
+        )
+    assert _said(caught, res)
