@@ -85,9 +85,12 @@ def read_cells(
         d = layout.delimiter
         if body[:1] == d or _may_have(body, (d + d, "\n" + d, d + "\n", d + " ", d + "\t", "NA", '""')):
             body = _empty_cells(d).sub(r"\1nan", body)
+    raw = io.BytesIO(body.encode("utf-8"))  # 1 byte a character (StringIO holds 4)
+    del body
     try:
         data = np.loadtxt(
-            io.StringIO(body),
+            raw,
+            encoding="utf-8",
             dtype=np.float64,
             delimiter=layout.delimiter,
             comments="#",
@@ -95,7 +98,7 @@ def read_cells(
             usecols=use,
             ndmin=2,
         )
-    except ValueError:
+    except (ValueError, IndexError):
         data = None  # find the bad cell in the original text for the message
     if data is None or data.shape[1] != len(use):
         _raise_bad_cell(text, layout, names, use, where)
