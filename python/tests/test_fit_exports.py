@@ -54,6 +54,15 @@ def test_vernier_run_name_line_and_angle_in_degrees() -> None:
     )
 
 
+def test_vernier_format_names_short_names_and_units_lines() -> None:
+    data, notes = read_table_notes(EXPORTS / "vernier_format2.txt")
+    assert set(data) == {"t", "positions"}  # Logger Pro's video analysis: X, Y of the image plane
+    x, _ = _exact(0.65, 0.30, 0.0, data["t"])
+    np.testing.assert_allclose(data["t"], np.arange(60) / 20.0, atol=1e-12)
+    np.testing.assert_allclose(data["positions"], x[:, [0, 2]], atol=6e-6)
+    assert any("Logger Pro" in n for n in notes)
+
+
 def test_phyphox_accelerometer_and_semicolon_decimal_comma_gyroscope() -> None:
     acc = read_table(EXPORTS / "phyphox_acceleration.csv")
     x, v = _exact(0.70, 0.40, 0.0, acc["t"])

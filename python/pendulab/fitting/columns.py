@@ -45,9 +45,15 @@ QUANTITY = {
 
 #: Units accepted per quantity and their factor to SI (standard gravity g₀ = 9.80665 m/s², CGPM 1901).
 UNITS: dict[str, dict[str, float]] = {
-    "time": {"s": 1.0, "sec": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "min": 60.0},
-    "length": {"m": 1.0, "cm": 1e-2, "mm": 1e-3, "km": 1e3},
-    "angle": {"rad": 1.0, "deg": math.pi / 180.0, "°": math.pi / 180.0, "degree": math.pi / 180.0},
+    "time": {"s": 1.0, "sec": 1.0, "seconds": 1.0, "ms": 1e-3, "us": 1e-6, "µs": 1e-6, "min": 60.0},
+    "length": {"m": 1.0, "meters": 1.0, "metres": 1.0, "cm": 1e-2, "mm": 1e-3, "km": 1e3},
+    "angle": {
+        "rad": 1.0,
+        "deg": math.pi / 180.0,
+        "°": math.pi / 180.0,
+        "degree": math.pi / 180.0,
+        "degrees": math.pi / 180.0,
+    },
     "acceleration": {"m/s^2": 1.0, "m/s²": 1.0, "m/s2": 1.0, "ms^-2": 1.0, "m s^-2": 1.0, "g": 9.80665},
     "angular rate": {
         "rad/s": 1.0,
@@ -141,6 +147,12 @@ def column_name(raw: str, where: str) -> str:
     if m is not None:
         return ("w" if m["gyro"] else "a") + m["axis"]
     return text
+
+
+def is_unit(text: str) -> bool:
+    """Whether ``text`` is one of the units of :data:`UNITS` (a line of units: Vernier's format)."""
+    u = text.strip().lower().replace(" ", "")
+    return any(u in table for table in UNITS.values())
 
 
 def to_si(name: str, unit: str | None, where: str) -> float:

@@ -26,8 +26,8 @@ import numpy as np
 
 from .._core import InvalidInputError
 from .cells import read_cells
-from .columns import QUANTITY, column
-from .layout import Layout, clip, find_layout
+from .columns import QUANTITY, column, is_unit
+from .layout import Layout, clip, find_layout, split_line
 
 MAX_BYTES = 256 * 2**20
 """Largest data file read [bytes] (about 5 million rows of 5 columns)."""
@@ -124,7 +124,7 @@ def parse_table_notes(
     like, a preamble skipped, how x, y were taken)."""
     text = text.removeprefix("\ufeff")  # Excel's "CSV UTF-8" and Windows editors write a BOM
     layout = find_layout(text, where)
-    names = columns if columns is not None else layout.header
+    names = columns if columns is not None else _vernier_names(layout) or layout.header
     if names is None:
         raise InvalidInputError(
             f"{where}: the file has no header row: name its columns (e.g. --columns t,x,y,z)"
@@ -148,6 +148,20 @@ def parse_table_notes(
     return _kinds(col, kinds, layout, columns is not None, where, notes), notes
 
 
+def _vernier_names(layout: Layout) -> list[str] | None:
+    """The header of Vernier's text format (Logger Pro's *Export As Text*: ``Vernier Format 2``, the
+    source and date, the data set's name, then lines of long names, short names and units above the
+    data) as ``long name (unit)`` cells; None when the header row is not a line of units."""
+    units, above = layout.header, layout.preamble
+    if not units or not above or not all(u == "" or is_unit(u) for u in units):
+        return None
+    candidates = [split_line(line, layout.delimiter) for line in above[-2:]]  # long, short names
+    names = next((c for c in candidates if len(c) == len(units)), None)
+    if names is None:
+        return None
+    return [f"{n.strip()} ({u})" if u else n.strip() for n, u in zip(names, units, strict=True)]
+
+
 def _video_export(layout: Layout) -> str | None:
     """The video-analysis program whose export this looks like, if any: Tracker writes the track's
     name (``mass A``) on the line above the header; Logger Pro and Graphical Analysis put the run's
@@ -156,6 +170,8 @@ def _video_export(layout: Layout) -> str | None:
     if any(":" in c.partition("(")[0] for c in header):
         return VIDEO_TOOLS[1]
     if layout.preamble:
+        if layout.preamble[0].lower().startswith("vernier format"):
+            return VIDEO_TOOLS[1]
         last = layout.preamble[-1]
         return VIDEO_TOOLS[1] if last.lower().startswith(("latest", "run ")) else VIDEO_TOOLS[0]
     return None

@@ -76,6 +76,25 @@ def vernier_rotary() -> None:
     _write("vernier_rotary_run1.txt", "\n".join(lines) + "\n")
 
 
+def vernier_format() -> None:
+    """Logger Pro 3, File > Export As > Text (Vernier Format 2, tab delimited): the format line, the
+    source file and date, the data set's name, then lines of long names, short names and units, a
+    blank line, the data. Video analysis: X across, Y up (the image plane)."""
+    t = np.arange(60) / 20.0
+    x, _ = _swing(0.65, 0.30, 0.0, t)
+    lines = [
+        "Vernier Format 2",
+        "pendulum.cmbl 11/26/2026 16:00:00 .",
+        "Latest",
+        "Time\tX\tY",
+        "t\tX\tY",
+        "s\tm\tm",
+        "",
+    ]
+    lines += [f"{ti:.2f}\t{x[i, 0]:.5f}\t{x[i, 2]:.5f}" for i, ti in enumerate(t)]
+    _write("vernier_format2.txt", "\n".join(lines) + "\n", crlf=True)
+
+
 def phyphox() -> None:
     """phyphox (phyphox.org), "Acceleration with g", export "CSV (Comma, decimal point)": quoted
     header cells with units in brackets, numbers in its 9-decimal E format, the magnitude last; and
@@ -140,6 +159,7 @@ if __name__ == "__main__":
     tracker()
     logger_pro_video()
     vernier_rotary()
+    vernier_format()
     phyphox()
     cassy()
     excel()
