@@ -152,7 +152,7 @@ def test_a_flood_of_heavy_rest_requests_runs_beside_the_frames(port: int) -> Non
             if flood.poll() is None:
                 flood.kill()
     codes, count = out.split()[:-1], int(out.split()[-1])
-    assert count > 10 and set(codes) <= {"200", "429", "503"}, out  # 429: more than its share at once
+    assert count >= 6 and set(codes) <= {"200", "429", "503"}, out  # 429: more than its share at once
     fair(port, gaps)
 
 

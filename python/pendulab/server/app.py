@@ -213,7 +213,7 @@ def create_app(
 
     async def analysis(request: Request, fn: Callable[..., Any], req: BaseModel) -> Response:
         """``fn(req)`` in the analysis worker process, as JSON; 422/429/503 as the module doc says."""
-        with room.request(client_key(request.scope)) as allowed:
+        async with room.request(client_key(request.scope)) as allowed:
             if not allowed:
                 return JSONResponse({"detail": too_many_requests_detail()}, status_code=429)
             try:

@@ -249,7 +249,7 @@ def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[
             req = FitRequest.model_validate(raw)
         except ValidationError as e:
             return _problem(422, validation_problems(e, skip=0))
-        with room.request(client_key(request.scope)) as allowed:
+        async with room.request(client_key(request.scope)) as allowed:
             if not allowed:
                 return _problem(429, too_many_requests_detail())
             seconds = pool.seconds

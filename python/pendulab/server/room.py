@@ -6,8 +6,8 @@ carries the same token, so the token cannot tell them apart). :class:`Room` keep
 - its open lab sessions: at most ``per_client`` (:data:`MAX_SESSIONS_PER_CLIENT`); one more is refused
   with an error notice, as the server-wide ``max_sessions`` is;
 - its computing requests under way (fits and analyses): at most :data:`MAX_REQUESTS_PER_CLIENT` at
-  once; one more gets HTTP 429 at once instead of taking a place in the shared queue
-  (:meth:`Room.request`);
+  once; one more waits up to :data:`REQUEST_WAIT` for one of them to end, then gets HTTP 429,
+  instead of taking a place in the shared queue (:meth:`Room.request`);
 - the share of the room's stepping budget per tick (:meth:`Room.share`): :data:`ROOM_BUDGET` seconds of
   wall time per tick are split equally between the clients with open sessions, and a client's share
   equally between its sessions, each session's share at most one tick's
@@ -23,8 +23,10 @@ seconds.
 
 from __future__ import annotations
 
+import asyncio
 import contextlib
-from collections.abc import Iterator
+import time
+from collections.abc import AsyncIterator
 from typing import Any
 
 from .budget import TICK_BUDGET
@@ -36,6 +38,10 @@ few tabs."""
 MAX_REQUESTS_PER_CLIENT = 2
 """Most computing requests (fits, exact solutions, reduced views, EM maps) one client may have under
 way or waiting at once; more are answered 429."""
+
+REQUEST_WAIT = 2.0
+"""Most seconds a computing request beyond :data:`MAX_REQUESTS_PER_CLIENT` waits for one of its
+client's others to end before it is answered 429."""
 
 MAX_CONNECTIONS_PER_CLIENT = 24
 """Most TCP connections one client may hold open at once (its lab sessions plus a browser's six
@@ -86,15 +92,19 @@ class Room:
         mine = max(1, self.sessions.get(key, 1))
         return min(TICK_BUDGET, self.room_budget / clients / mine)
 
-    @contextlib.contextmanager
-    def request(self, key: str) -> Iterator[bool]:
-        """Counts a computing request of ``key`` while it runs; yields False (and counts nothing) when
-        the client already has :data:`MAX_REQUESTS_PER_CLIENT` under way."""
-        have = self.requests.get(key, 0)
-        if have >= MAX_REQUESTS_PER_CLIENT:
-            yield False
-            return
-        self.requests[key] = have + 1
+    @contextlib.asynccontextmanager
+    async def request(self, key: str, wait: float = REQUEST_WAIT) -> AsyncIterator[bool]:
+        """Counts a computing request of ``key`` while it runs. When the client already has
+        :data:`MAX_REQUESTS_PER_CLIENT` under way, the request waits up to ``wait`` seconds for one of
+        them to end (a client sending in a tight loop is slowed down, not answered at once), then
+        yields False (counting nothing): the caller answers 429."""
+        deadline = time.monotonic() + wait
+        while self.requests.get(key, 0) >= MAX_REQUESTS_PER_CLIENT:
+            if time.monotonic() >= deadline:
+                yield False
+                return
+            await asyncio.sleep(0.05)
+        self.requests[key] = self.requests.get(key, 0) + 1
         try:
             yield True
         finally:
