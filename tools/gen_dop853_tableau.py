@@ -40,15 +40,15 @@ def main() -> int:
         "//! [`E5`] and [`E3`] are the weights of the 5th- and 3rd-order error estimates.",
         "",
         "/// Number of stages of the 8th-order step (stage 12, f at the new point, is extra).",
-        f"pub(super) const STAGES: usize = {n};",
+        f"pub(crate) const STAGES: usize = {n};",
         "/// Stages including the FSAL stage and the three dense-output stages.",
-        f"pub(super) const STAGES_DENSE: usize = {n_ext};",
+        f"pub(crate) const STAGES_DENSE: usize = {n_ext};",
         "",
         "/// Nodes c_i.",
-        f"pub(super) const C: [f64; {n_ext}] = {row(co.C)};",
+        f"pub(crate) const C: [f64; {n_ext}] = {row(co.C)};",
         "",
         "/// Runge–Kutta matrix, row i holding a_ij for j < i (row 12 unused: stage 12 is f(t+h, y₁)).",
-        f"pub(super) const A: [&[f64]; {n_ext}] = [",
+        f"pub(crate) const A: [&[f64]; {n_ext}] = [",
     ]
     for i in range(n_ext):
         lines.append(f"    &{row(co.A[i, :i]) if i != n else '[]'},")
@@ -56,16 +56,16 @@ def main() -> int:
         "];",
         "",
         "/// Weights of the 8th-order solution.",
-        f"pub(super) const B: [f64; {n}] = {row(co.B)};",
+        f"pub(crate) const B: [f64; {n}] = {row(co.B)};",
         "",
         "/// Weights of the 5th-order error estimate (on stages 0‥11).",
-        f"pub(super) const E5: [f64; {n}] = {row(co.E5[:n])};",
+        f"pub(crate) const E5: [f64; {n}] = {row(co.E5[:n])};",
         "",
         "/// Weights of the 3rd-order error estimate (on stages 0‥11).",
-        f"pub(super) const E3: [f64; {n}] = {row(co.E3[:n])};",
+        f"pub(crate) const E3: [f64; {n}] = {row(co.E3[:n])};",
         "",
         "/// Dense-output coefficients: rows 3‥6 of the interpolant, on stages 0‥15.",
-        f"pub(super) const D: [[f64; {n_ext}]; 4] = [",
+        f"pub(crate) const D: [[f64; {n_ext}]; 4] = [",
     ]
     for i in range(4):
         lines.append(f"    {row(co.D[i])},")

@@ -322,6 +322,23 @@ def slewing_linear(
     t: FloatArray,
 ) -> dict[str, Any]: ...
 
+# --- python/rust/crane.rs: the crane dynamics (hoist, hook + payload, wind; T-11.4 – T-11.7) ---
+
+def crane_simulate(
+    pivot: tuple[FloatArray, FloatArray, FloatArray, FloatArray],
+    hoist: tuple[FloatArray, FloatArray, FloatArray, FloatArray],
+    body1: tuple[float, float],
+    body2: tuple[float, float, float] | None,
+    g: float,
+    damping: float,
+    wind: tuple[tuple[float, float, float], tuple[float, float, float], float, float, float],
+    y0: list[float],
+    save: FloatArray,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+) -> dict[str, Any]: ...
+
 # --- python/rust/force.rs: a user force given as a Python callable (the slow path) ---
 
 class ForceSolver:

@@ -8,11 +8,12 @@
 //!   `done`), one macro.
 //! - `tables.rs`: the registries of methods and models; `states.rs`: states and diagnostics.
 //! - `solver.rs`: `Solver`, `Stepper`; `force.rs`: `ForceSolver` (a Python force); `ensemble.rs`,
-//!   `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`: one binding per core module.
+//!   `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module.
 
 mod convert;
 mod getters;
 
+mod crane;
 mod ensemble;
 mod exact;
 mod force;
@@ -40,6 +41,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     spring::register(m)?;
     string::register(m)?;
     slewing::register(m)?;
+    crane::register(m)?;
     force::register(m)?;
     limits::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;

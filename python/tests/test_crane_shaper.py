@@ -1,4 +1,4 @@
-"""Command shapers (pendulab.crane.shaper, docs/theory.md T-8.1, T-8.2) against the published
+"""Command shapers (pendulab.crane.shaper, docs/theory.md T-11.1, T-11.2) against the published
 impulses and 5 % insensitivities (Singer & Seering 1990; Singhose 2009, Table 1), computed from our
 own V(ω, ζ) curve; the residual vibration against a direct sum of damped free vibrations."""
 

@@ -172,6 +172,12 @@ pub enum Error {
         /// What is wrong.
         reason: String,
     },
+    /// A crane run that cannot go on (a slack rope, a rope length ≤ 0, …).
+    #[error("crane: {reason}")]
+    Crane {
+        /// What happened, with the time.
+        reason: String,
+    },
 }
 
 /// What to do after a divergence: a smaller step, and a structure-preserving method unless one is in use.

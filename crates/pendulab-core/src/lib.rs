@@ -23,11 +23,13 @@
 //! - [`exact`]: the exact solution by elliptic functions (§4), phases (§5), energy–momentum map (T-6.4).
 //! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
 //! - [`quadrature`]: adaptive Gauss–Kronrod quadrature.
+//! - [`crane`]: cranes: hoisting, hook + payload, wind (§11).
 //! - [`elastic`]: the swinging spring (T-7.4) with its own symplectic integrators.
 //! - [`ensemble`]: many trajectories at once (SoA blocks, rayon), RATTLE.
 //! - [`error`]: the error type.
 //! - [`isa`]: run-time choice of the instruction set (AVX2/FMA, AVX-512) for the hot loops.
 
+pub mod crane;
 /// Elliptic integrals (Legendre, via Carlson) and Jacobi elliptic functions for the exact solution.
 pub mod elastic;
 pub mod elliptic;

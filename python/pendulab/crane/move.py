@@ -1,11 +1,11 @@
 """Point-to-point moves of a crane axis: acceleration- or jerk-limited profiles, shaped by convolution
-(docs/cranes.md, docs/theory.md T-8.3). A profile is written as steps of its highest derivative: with
+(docs/cranes.md, docs/theory.md T-11.3). A profile is written as steps of its highest derivative: with
 n = 2 (acceleration-limited, steps c_k of acceleration [m/s²]) or n = 3 (jerk-limited, steps c_k of
 jerk [m/s³]) at times τ_k,
 
     s(t) = Σ_k c_k (t − τ_k)₊ⁿ / n!,   ṡ = Σ c_k (t − τ_k)₊ⁿ⁻¹/(n − 1)!,   s̈ = Σ c_k (t − τ_k)₊ⁿ⁻²/(n − 2)!
 
-(T-8.3; x₊ = max(x, 0), x₊⁰ = H(x)), so the position, velocity and acceleration are analytic. A shaper
+(T-11.3; x₊ = max(x, 0), x₊⁰ = H(x)), so the position, velocity and acceleration are analytic. A shaper
 (A_i, t_i) turns every step into steps A_i c_k at τ_k + t_i: the shaped move is the unshaped one
 convolved with the impulse train, covers the same distance and ends t_N later.
 
@@ -81,7 +81,7 @@ class Profile:
         return float(self.position(self.t_end + 1.0) - self.start)
 
     def shaped(self, s: Shaper) -> Profile:
-        """This profile convolved with the shaper ``s`` (T-8.3)."""
+        """This profile convolved with the shaper ``s`` (T-11.3)."""
         knots = (self.knots[:, None] + s.times[None, :]).ravel()
         coeffs = (self.coeffs[:, None] * s.amplitudes[None, :]).ravel()
         order = np.argsort(knots, kind="stable")

@@ -1,14 +1,14 @@
-"""Command (input) shapers and their residual vibration (docs/cranes.md, docs/theory.md T-8.1, T-8.2).
+"""Command (input) shapers and their residual vibration (docs/cranes.md, docs/theory.md T-11.1, T-11.2).
 
 A shaper is a train of impulses A_i at times t_i (t_1 = 0, Σ A_i = 1); a command convolved with it
 moves the same distance but, for a lightly damped mode of angular frequency ω and damping ratio ζ,
 leaves the *percentage residual vibration* (Singer & Seering 1990, eq. 4; Singhose 2009)
 
     V(ω, ζ) = e^{−ζω t_N} √(C² + S²),   C = Σ A_i e^{ζω t_i} cos(ω_d t_i),
-                                        S = Σ A_i e^{ζω t_i} sin(ω_d t_i),   ω_d = ω √(1 − ζ²)   (T-8.1)
+                                        S = Σ A_i e^{ζω t_i} sin(ω_d t_i),   ω_d = ω √(1 − ζ²)   (T-11.1)
 
 of what the unshaped command leaves. With K = exp(−ζπ/√(1 − ζ²)) and the damped half period
-T_d/2 = π/ω_d (T-8.2):
+T_d/2 = π/ω_d (T-11.2):
 
 - ZV:   A = (1, K)/(1 + K),              t = (0, T_d/2);
 - ZVD:  A = (1, 2K, K²)/(1 + K)²,        t = (0, T_d/2, T_d);
@@ -186,7 +186,7 @@ def shaper(kind: str, omega: float, damping: float = 0.0, tolerance: float = 0.0
     """The shaper ``kind`` ("zv", "zvd", "zvdd", "ei", "2hump_ei") for the mode of angular frequency
     ``omega`` [rad/s] (> 0) and damping ratio ``damping`` ζ (0 ≤ ζ < 1; EI kinds ζ ≤ 0.3); EI kinds
     hold the residual vibration at or below ``tolerance`` V_tol (0 < V_tol < 1, a fraction) around the
-    design frequency. Formulas: module doc (T-8.2)."""
+    design frequency. Formulas: module doc (T-11.2)."""
     key = _ALIASES.get(str(kind).lower(), str(kind).lower())
     if key not in KINDS:
         raise InvalidInputError(f"shaper kind {kind!r} is not known; allowed: {', '.join(KINDS)}")
@@ -207,7 +207,7 @@ def shaper(kind: str, omega: float, damping: float = 0.0, tolerance: float = 0.0
 
 
 def residual_vibration(s: Shaper, omega: Any, damping: float = 0.0) -> FloatArray:
-    """V(ω, ζ) of T-8.1 at the angular frequencies ``omega`` [rad/s] (array, each > 0) for a mode of
+    """V(ω, ζ) of T-11.1 at the angular frequencies ``omega`` [rad/s] (array, each > 0) for a mode of
     damping ratio ``damping`` (0 ≤ ζ < 1): the residual vibration with the shaper as a fraction of
     the unshaped command's (1 = no reduction)."""
     w = np.asarray(omega, dtype=np.float64)

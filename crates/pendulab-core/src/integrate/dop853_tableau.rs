@@ -7,12 +7,12 @@
 //! [`E5`] and [`E3`] are the weights of the 5th- and 3rd-order error estimates.
 
 /// Number of stages of the 8th-order step (stage 12, f at the new point, is extra).
-pub(super) const STAGES: usize = 12;
+pub(crate) const STAGES: usize = 12;
 /// Stages including the FSAL stage and the three dense-output stages.
-pub(super) const STAGES_DENSE: usize = 16;
+pub(crate) const STAGES_DENSE: usize = 16;
 
 /// Nodes c_i.
-pub(super) const C: [f64; 16] = [
+pub(crate) const C: [f64; 16] = [
     0.0,
     0.05260015195876773,
     0.0789002279381516,
@@ -32,7 +32,7 @@ pub(super) const C: [f64; 16] = [
 ];
 
 /// Runge–Kutta matrix, row i holding a_ij for j < i (row 12 unused: stage 12 is f(t+h, y₁)).
-pub(super) const A: [&[f64]; 16] = [
+pub(crate) const A: [&[f64]; 16] = [
     &[],
     &[0.05260015195876773],
     &[0.0197250569845379, 0.0591751709536137],
@@ -147,7 +147,7 @@ pub(super) const A: [&[f64]; 16] = [
 ];
 
 /// Weights of the 8th-order solution.
-pub(super) const B: [f64; 12] = [
+pub(crate) const B: [f64; 12] = [
     0.054293734116568765,
     0.0,
     0.0,
@@ -163,7 +163,7 @@ pub(super) const B: [f64; 12] = [
 ];
 
 /// Weights of the 5th-order error estimate (on stages 0‥11).
-pub(super) const E5: [f64; 12] = [
+pub(crate) const E5: [f64; 12] = [
     0.01312004499419488,
     0.0,
     0.0,
@@ -179,7 +179,7 @@ pub(super) const E5: [f64; 12] = [
 ];
 
 /// Weights of the 3rd-order error estimate (on stages 0‥11).
-pub(super) const E3: [f64; 12] = [
+pub(crate) const E3: [f64; 12] = [
     -0.18980075407240762,
     0.0,
     0.0,
@@ -195,7 +195,7 @@ pub(super) const E3: [f64; 12] = [
 ];
 
 /// Dense-output coefficients: rows 3‥6 of the interpolant, on stages 0‥15.
-pub(super) const D: [[f64; 16]; 4] = [
+pub(crate) const D: [[f64; 16]; 4] = [
     [
         -8.428938276109013,
         0.0,

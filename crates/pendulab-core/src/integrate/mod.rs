@@ -13,7 +13,7 @@
 pub mod composition;
 pub mod dop853;
 mod dop853_control;
-mod dop853_tableau;
+pub(crate) mod dop853_tableau;
 pub mod rattle;
 pub mod rattle_kernel;
 pub mod rk4;

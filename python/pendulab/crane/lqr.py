@@ -1,0 +1,143 @@
+"""LQR anti-sway feedback for a trolley crane (docs/cranes.md, docs/theory.md T-11.9), beside the open-loop
+shapers. The trolley's acceleration u [m/s²] is the input (drives are speed/acceleration controlled);
+the load hangs on a rope of length l [m] at the angle θ [rad]. Nonlinear planar model:
+
+    ẍ = u,   l θ̈ = −g sin θ − u cos θ;
+
+linearised about rest, z = (x − x_target, ẋ, θ, θ̇):
+
+    ż = A z + B u,   A = [[0,1,0,0],[0,0,0,0],[0,0,0,1],[0,0,−g/l,0]],   B = (0, 1, 0, −1/l)ᵀ.
+
+u = −K z minimises ∫ zᵀQz + R u² dt with K = R⁻¹BᵀP and P from the continuous algebraic Riccati
+equation AᵀP + PA − PBR⁻¹BᵀP + Q = 0 (SciPy ``solve_continuous_are``). The closed loop runs in the
+nonlinear planar model (SciPy DOP853); its trolley motion is a :class:`~pendulab.crane.paths.Path`
+that can be replayed in the 3-D crane (``Crane(pivot=run.path)``). Units: m, s, rad, m/s².
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from scipy.integrate import solve_ivp
+from scipy.linalg import solve_continuous_are
+
+from .._core import InvalidInputError
+from .paths import Path
+from .shaper import FloatArray
+
+
+def _matrices(rope: float, g: float) -> tuple[FloatArray, FloatArray]:
+    a = np.array([[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1], [0, 0, -g / rope, 0]], dtype=float)
+    b = np.array([[0.0], [1.0], [0.0], [-1.0 / rope]])
+    return a, b
+
+
+@dataclass(frozen=True)
+class LQR:
+    """The LQR gain ``K`` (1, 4) for z = (x − x_target [m], ẋ [m/s], θ [rad], θ̇ [rad/s]), the closed-loop
+    ``poles`` [1/s], the ``rope`` [m], ``g`` [m/s²] and the acceleration limit ``a_max`` [m/s²] (u is
+    clipped to ±a_max; inf for none)."""
+
+    K: FloatArray
+    poles: FloatArray
+    rope: float
+    g: float
+    a_max: float
+
+    def control(self, z: FloatArray) -> FloatArray:
+        """u = clip(−K z, ±a_max) [m/s²] for states z (…, 4)."""
+        return np.asarray(np.clip(-(np.asarray(z) @ self.K[0]), -self.a_max, self.a_max), dtype=np.float64)
+
+    def simulate(self, distance: float, t_end: float, t_start: float = 0.0, sway: float = 0.0) -> LQRRun:
+        """The closed loop moving the trolley by ``distance`` [m] from rest at x = 0 at ``t_start`` [s]
+        (the load at the angle ``sway`` [rad]) until ``t_end`` [s], in the nonlinear planar model."""
+        d, t0, t1 = float(distance), float(t_start), float(t_end)
+        if not (math.isfinite(d) and math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
+            raise InvalidInputError(
+                f"need a finite distance and t_end > t_start, got {distance!r}, {t_end!r}"
+            )
+        big_l, g = self.rope, self.g
+
+        def rhs(_t: float, y: FloatArray) -> list[float]:
+            x, v, th, om = y
+            u = float(self.control(np.array([x - d, v, th, om])))
+            return [v, u, om, -(g * math.sin(th) + u * math.cos(th)) / big_l]
+
+        sol = solve_ivp(
+            rhs,
+            (t0, t1),
+            [0.0, 0.0, float(sway), 0.0],
+            method="DOP853",
+            rtol=1e-11,
+            atol=1e-12,
+            dense_output=True,
+        )
+        if not sol.success:
+            raise InvalidInputError(f"the closed loop could not be integrated: {sol.message}")
+        return LQRRun(self, d, t0, t1, sol.sol)
+
+
+class LQRRun(Path):
+    """A closed-loop run: ``trolley(t)`` (x, ẋ, u), ``sway(t)`` θ [rad]; as a :class:`Path` along e₁ the
+    trolley position [m], velocity and acceleration u (held at rest outside [t_start, t_end])."""
+
+    def __init__(self, ctrl: LQR, distance: float, t0: float, t1: float, dense: Any) -> None:
+        self.ctrl, self.distance, self._dense = ctrl, distance, dense
+        self.span = (t0, t1)
+        self.breaks = np.zeros(0)
+        self.t_end = t1
+
+    def _state(self, t: FloatArray) -> FloatArray:
+        tc = np.clip(t, *self.span)
+        return np.asarray(self._dense(tc).T, dtype=np.float64)  # (N, 4)
+
+    def trolley(self, t: Any) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Trolley position [m], velocity [m/s], acceleration [m/s²] at times t [s]."""
+        ts = np.atleast_1d(np.asarray(t, dtype=np.float64))
+        y = self._state(ts)
+        z = y - np.array([self.distance, 0.0, 0.0, 0.0])
+        inside = (ts >= self.span[0]) & (ts <= self.span[1])
+        return y[:, 0], np.where(inside, y[:, 1], 0.0), np.where(inside, self.ctrl.control(z), 0.0)
+
+    def sway(self, t: Any) -> FloatArray:
+        """The load's angle θ(t) [rad] in the planar model."""
+        return self._state(np.atleast_1d(np.asarray(t, dtype=np.float64)))[:, 2]
+
+    def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        x, v, a = self.trolley(t)
+        zero = np.zeros((t.size, 3))
+        p, dp, ddp = zero.copy(), zero.copy(), zero.copy()
+        p[:, 0], dp[:, 0], ddp[:, 0] = x, v, a
+        return p, dp, ddp
+
+
+def lqr(
+    rope: float,
+    g: float = 9.81,
+    q: tuple[float, float, float, float] = (1.0, 1.0, 10.0, 1.0),
+    r: float = 1.0,
+    a_max: float = math.inf,
+) -> LQR:
+    """The LQR anti-sway controller for a trolley with a load on ``rope`` [m] (module doc): diagonal
+    weights ``q`` on (x [m], ẋ [m/s], θ [rad], θ̇ [rad/s]) (≥ 0), ``r`` > 0 on u [m/s²], the
+    acceleration limit ``a_max`` [m/s²] (> 0; inf: none)."""
+    big_l, gg, rr, am = float(rope), float(g), float(r), float(a_max)
+    if not (math.isfinite(big_l) and big_l > 0):
+        raise InvalidInputError(f"rope = {rope!r} is not allowed: a length > 0 m")
+    if not (math.isfinite(gg) and gg > 0):
+        raise InvalidInputError(f"g = {g!r} is not allowed: a gravity > 0 m/s²")
+    qq = np.asarray(q, dtype=float)
+    if qq.shape != (4,) or not np.all(np.isfinite(qq)) or np.any(qq < 0) or qq[0] == 0:
+        raise InvalidInputError(f"q = {q!r} is not allowed: four finite weights >= 0, the first > 0")
+    if not (math.isfinite(rr) and rr > 0):
+        raise InvalidInputError(f"r = {r!r} is not allowed: a weight > 0")
+    if not (am > 0) or math.isnan(am):
+        raise InvalidInputError(f"a_max = {a_max!r} is not allowed: > 0 m/s² (inf for no limit)")
+    a, b = _matrices(big_l, gg)
+    p = solve_continuous_are(a, b, np.diag(qq), np.array([[rr]]))
+    k = (b.T @ p) / rr
+    poles = np.linalg.eigvals(a - b @ k)
+    return LQR(k, poles, big_l, gg, am)

@@ -1,0 +1,216 @@
+"""Crane kinematics as pivot paths P(t) with analytic Ṗ, P̈ (docs/cranes.md, docs/theory.md T-11.3):
+
+- gantry / overhead crane: P = P₀ + s_trolley(t) e_trolley + s_bridge(t) e_bridge (straight axes);
+- tower crane: slew angle θ(t) [rad], trolley radius r(t) [m], jib height h [m]:
+  P = (r cos θ, r sin θ, h),  Ṗ = ṙ e_r + r θ̇ e_θ,  P̈ = (r̈ − r θ̇²) e_r + (r θ̈ + 2 ṙ θ̇) e_θ;
+- luffing boom: slew θ(t), luff angle β(t) [rad] above the horizontal, boom length L [m], foot
+  height h [m]: the tip at radius ρ = L cos β and height z = h + L sin β, so
+  ρ̇ = −L sin β β̇, ρ̈ = −L (cos β β̇² + sin β β̈), ż = L cos β β̇, z̈ = L (cos β β̈ − sin β β̇²),
+  and the horizontal part as for the tower crane with r = ρ;
+- samples (t_i, P_i), e.g. a measured path from a CSV file: the C² not-a-knot cubic spline (SciPy).
+
+Every path gives ``position/velocity/acceleration(t)`` (arrays (N, 3), m, m/s, m/s²), its jump times
+``breaks`` (where P̈ may step) and ``pivot_samples(dt)`` for ``pendulab.Pendulum(pivot_samples=...)``
+(the existing moving-pivot model, T-7.2), and ``knots`` for the crane dynamics (T-11.4).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+
+from .._core import InvalidInputError
+from .move import Profile, profile
+from .shaper import FloatArray, Shaper
+
+Knots = tuple[FloatArray, FloatArray, FloatArray, FloatArray]
+
+
+def _unit(direction: Sequence[float]) -> FloatArray:
+    d = np.asarray(direction, dtype=np.float64)
+    n = float(np.linalg.norm(d)) if d.shape == (3,) else math.nan
+    if not (math.isfinite(n) and n > 0):
+        raise InvalidInputError(f"direction = {direction!r} is not allowed: three finite numbers, not all 0")
+    return d / n
+
+
+class Path:
+    """A pivot path (see the module doc). Subclasses define ``_pva(t)`` and ``breaks``."""
+
+    breaks: FloatArray = np.zeros(0)
+    t_end: float = 0.0
+
+    def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        raise NotImplementedError
+
+    def position(self, t: Any) -> FloatArray:
+        """P(t) [m], shape (N, 3) for N times [s]."""
+        return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[0]
+
+    def velocity(self, t: Any) -> FloatArray:
+        """Ṗ(t) [m/s], shape (N, 3)."""
+        return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[1]
+
+    def acceleration(self, t: Any) -> FloatArray:
+        """P̈(t) [m/s²], shape (N, 3) (right-continuous at the breaks)."""
+        return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[2]
+
+    def knots(self, t0: float, t1: float, dt: float = 0.05) -> Knots:
+        """Knots (t, P, Ṗ, P̈) on [t0, t1] [s] every ≤ ``dt`` [s] and at every break, which appears twice
+        (left and right values) so that the quintic Hermite interpolant of the core (T-11.4) steps there."""
+        inner = self.breaks[(self.breaks > t0) & (self.breaks < t1)]
+        grid = np.union1d(np.linspace(t0, t1, max(2, math.ceil((t1 - t0) / dt) + 1)), inner)
+        p, v, a = self._pva(grid)
+        if inner.size == 0:
+            return grid, p, v, a
+        idx = np.searchsorted(grid, inner)
+        _, _, a_left = self._pva(inner, left=True)
+        t_all = np.insert(grid, idx, inner)
+        p_all = np.insert(p, idx, p[idx], axis=0)
+        v_all = np.insert(v, idx, v[idx], axis=0)
+        a_all = np.insert(a, idx, a_left, axis=0)
+        return t_all, p_all, v_all, a_all
+
+    def pivot_samples(
+        self, t_end: float, dt: float = 0.01, t_start: float = 0.0
+    ) -> tuple[FloatArray, FloatArray]:
+        """(times [s], positions [m] (n, 3)) every ``dt`` on [t_start, t_end] for
+        ``pendulab.Pendulum(pivot_samples=...)``: the moving-pivot model then uses the cubic spline
+        through them (T-7.2), which smooths P̈'s steps over ~dt."""
+        if not (math.isfinite(dt) and dt > 0 and math.isfinite(t_end) and t_end > t_start):
+            raise InvalidInputError(f"need dt > 0 and t_end > t_start, got dt = {dt!r}, t_end = {t_end!r}")
+        t = np.linspace(t_start, t_end, math.ceil((t_end - t_start) / dt) + 1)
+        return t, self.position(t)
+
+
+@dataclass(frozen=True, eq=False)
+class Gantry(Path):
+    """Overhead / gantry crane: trolley and bridge profiles [m] along their axes from ``origin`` [m]."""
+
+    trolley: Profile | None = None
+    bridge: Profile | None = None
+    origin: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    trolley_axis: tuple[float, float, float] = (1.0, 0.0, 0.0)
+    bridge_axis: tuple[float, float, float] = (0.0, 1.0, 0.0)
+
+    def _axes(self) -> list[tuple[Profile, FloatArray]]:
+        out = []
+        for prof, axis in ((self.trolley, self.trolley_axis), (self.bridge, self.bridge_axis)):
+            if prof is not None:
+                out.append((prof, _unit(axis)))
+        return out
+
+    def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        p = np.tile(np.asarray(self.origin, dtype=np.float64), (t.size, 1))
+        v, a = np.zeros_like(p), np.zeros_like(p)
+        for prof, e in self._axes():
+            p += prof.position(t)[:, None] * e
+            v += prof.velocity(t)[:, None] * e
+            a += prof.acceleration(t, left)[:, None] * e
+        return p, v, a
+
+    @property
+    def breaks(self) -> FloatArray:  # type: ignore[override]
+        return np.unique(np.concatenate([np.zeros(0)] + [p.knots for p, _ in self._axes()]))
+
+    @property
+    def t_end(self) -> float:  # type: ignore[override]
+        return max([0.0] + [p.t_end for p, _ in self._axes()])
+
+
+@dataclass(frozen=True, eq=False)
+class Tower(Path):
+    """Tower crane: ``slew`` θ(t) [rad] and trolley ``radius`` r(t) [m] profiles (a Profile, or a
+    constant), jib ``height`` h [m]; boom luffing when ``boom`` L [m] is given and ``luff`` β(t) [rad]
+    replaces the radius (module doc)."""
+
+    slew: Profile | float = 0.0
+    radius: Profile | float = 10.0
+    height: float = 0.0
+    luff: Profile | float | None = None
+    boom: float | None = None
+
+    @staticmethod
+    def _eval(prof: Profile | float, t: FloatArray, left: bool) -> tuple[FloatArray, FloatArray, FloatArray]:
+        if isinstance(prof, Profile):
+            return prof.position(t), prof.velocity(t), prof.acceleration(t, left)
+        c = float(prof)
+        return np.full(t.size, c), np.zeros(t.size), np.zeros(t.size)
+
+    def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        th, dth, ddth = self._eval(self.slew, t, left)
+        zero = np.zeros(t.size)
+        if self.luff is not None and self.boom is not None:
+            b, db, ddb = self._eval(self.luff, t, left)
+            big_l = float(self.boom)
+            r, dr = big_l * np.cos(b), -big_l * np.sin(b) * db
+            ddr = -big_l * (np.cos(b) * db**2 + np.sin(b) * ddb)
+            z, dz = self.height + big_l * np.sin(b), big_l * np.cos(b) * db
+            ddz = big_l * (np.cos(b) * ddb - np.sin(b) * db**2)
+        else:
+            r, dr, ddr = self._eval(self.radius, t, left)
+            z, dz, ddz = np.full(t.size, float(self.height)), zero, zero
+        c, s = np.cos(th), np.sin(th)
+        er = np.stack([c, s, zero], axis=1)
+        et = np.stack([-s, c, zero], axis=1)
+        ez = np.array([0.0, 0.0, 1.0])
+        p = r[:, None] * er + z[:, None] * ez
+        v = dr[:, None] * er + (r * dth)[:, None] * et + dz[:, None] * ez
+        a = (ddr - r * dth**2)[:, None] * er + (r * ddth + 2 * dr * dth)[:, None] * et + ddz[:, None] * ez
+        return p, v, a
+
+    @property
+    def breaks(self) -> FloatArray:  # type: ignore[override]
+        ks = [p.knots for p in (self.slew, self.radius, self.luff) if isinstance(p, Profile)]
+        return np.unique(np.concatenate([np.zeros(0), *ks]))
+
+    @property
+    def t_end(self) -> float:  # type: ignore[override]
+        return max([0.0] + [p.t_end for p in (self.slew, self.radius, self.luff) if isinstance(p, Profile)])
+
+
+class Sampled(Path):
+    """A measured path through samples (t_i [s], P_i [m] (n, 3), n ≥ 4): the not-a-knot cubic spline."""
+
+    def __init__(self, times: Any, positions: Any) -> None:
+        t = np.asarray(times, dtype=np.float64).ravel()
+        p = np.asarray(positions, dtype=np.float64)
+        if t.size < 4 or p.shape != (t.size, 3) or not (np.all(np.isfinite(t)) and np.all(np.isfinite(p))):
+            raise InvalidInputError("pivot samples need n >= 4 finite times [s] and positions (n, 3) [m]")
+        if np.any(np.diff(t) <= 0):
+            raise InvalidInputError("pivot sample times must be strictly increasing")
+        self._spline = CubicSpline(t, p, axis=0)
+        self.breaks = np.zeros(0)
+        self.t_end = float(t[-1])
+
+    def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        s = self._spline
+        return s(t), s(t, 1), s(t, 2)
+
+
+def move(
+    distance: float,
+    v_max: float,
+    a_max: float,
+    j_max: float | None = None,
+    shaper: Shaper | None = None,
+    direction: Sequence[float] = (1.0, 0.0, 0.0),
+    t_start: float = 0.0,
+    origin: Sequence[float] = (0.0, 0.0, 0.0),
+) -> Gantry:
+    """A straight rest-to-rest move of the pivot over ``distance`` [m] along ``direction`` from
+    ``origin`` [m], starting at ``t_start`` [s], within ``v_max`` [m/s], ``a_max`` [m/s²] and, if
+    given, ``j_max`` [m/s³], convolved with ``shaper`` (T-11.3): a :class:`Gantry` path."""
+    prof = profile(distance, v_max, a_max, j_max=j_max, shaper=shaper, t_start=t_start)
+    o = np.asarray(origin, dtype=np.float64)
+    if o.shape != (3,) or not np.all(np.isfinite(o)):
+        raise InvalidInputError(f"origin = {origin!r} is not allowed: three finite numbers [m]")
+    e = _unit(direction)
+    return Gantry(
+        trolley=prof, origin=(float(o[0]), float(o[1]), float(o[2])), trolley_axis=(e[0], e[1], e[2])
+    )

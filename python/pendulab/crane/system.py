@@ -1,0 +1,278 @@
+"""The crane: a load on a hoisted rope below a moving pivot, optionally as hook + payload (a double
+spherical pendulum), with wind and damping (docs/cranes.md, docs/theory.md T-11.4 – T-11.8). The
+dynamics run in the core (``pendulab_core::crane``: adaptive DOP853 with projection onto the
+rheonomic constraints |x₁ − P(t)| = l(t), |x₂ − x₁| = l₂). SI units: m, kg, s, N, J, rad.
+
+Small-sway modes (T-11.8): one body, ω² = g/l; hook (m₁, rope L₁) + payload (m₂, rigging L₂),
+R = m₂/m₁: L₁L₂ω⁴ − (1 + R) g (L₁ + L₂) ω² + (1 + R) g² = 0.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from scipy.interpolate import CubicSpline
+
+from .._core import InvalidInputError, crane_simulate
+from .paths import Gantry, Path
+from .shaper import FloatArray
+
+MAX_SAVES = 500_000
+MAX_STEPS = 20_000_000
+
+
+class Hoist(Path):
+    """The rope length l(t) [m] through samples (``t`` [s] increasing, ``length`` [m] > 0, n ≥ 2): the
+    C² cubic spline with l̇ = 0 at both ends (clamped), held constant outside [t₀, t_n]; l̈ steps at
+    t₀ and t_n (breaks). Stored in the first component of a 3-vector for the core."""
+
+    def __init__(self, t: Any, length: Any) -> None:
+        ts = np.asarray(t, dtype=np.float64).ravel()
+        ls = np.asarray(length, dtype=np.float64).ravel()
+        if ts.size < 2 or ls.shape != ts.shape or not (np.all(np.isfinite(ts)) and np.all(np.isfinite(ls))):
+            raise InvalidInputError("Hoist needs n >= 2 finite times t [s] and as many rope lengths [m]")
+        if np.any(np.diff(ts) <= 0):
+            raise InvalidInputError(f"Hoist times must be strictly increasing, got {ts.tolist()}")
+        if np.any(ls <= 0):
+            raise InvalidInputError(f"Hoist lengths must be > 0 m, got {ls.tolist()}")
+        self._spline = CubicSpline(ts, ls, bc_type="clamped")
+        self.span = (float(ts[0]), float(ts[-1]))
+        self.breaks = np.array(self.span)
+        self.t_end = self.span[1]
+        fine = np.linspace(ts[0], ts[-1], 64 * ts.size)
+        if np.any(self._spline(fine) <= 0):
+            raise InvalidInputError("the Hoist spline through the lengths dips to <= 0 m; give more samples")
+
+    def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        a, b = self.span
+        inside = (t > a) & (t < b) | ((t == a) & (not left)) | ((t == b) & left)
+        tc = np.clip(t, a, b)
+        s = self._spline
+        q, dq, ddq = np.zeros((t.size, 3)), np.zeros((t.size, 3)), np.zeros((t.size, 3))
+        q[:, 0] = s(tc)
+        dq[:, 0] = np.where(inside, s(tc, 1), 0.0)
+        ddq[:, 0] = np.where(inside, s(tc, 2), 0.0)
+        return q, dq, ddq
+
+    def length(self, t: Any) -> FloatArray:
+        """l(t) [m]."""
+        return self.position(t)[:, 0]
+
+
+@dataclass(frozen=True)
+class Wind:
+    """Wind on the load (T-11.7): steady ``velocity`` w₀ [m/s] plus a (1 − cos) gust of peak ``gust``
+    [m/s] from ``gust_start`` [s] lasting ``gust_duration`` [s]; drag ½ρ c_W A |w − v|(w − v) with
+    ``air_density`` ρ [kg/m³], the payload's ``drag_coefficient`` c_W and ``area`` A [m²], the hook's
+    ``hook_drag_coefficient`` and ``hook_area`` [m²]."""
+
+    velocity: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    area: float = 0.0
+    drag_coefficient: float = 1.2
+    air_density: float = 1.225
+    gust: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    gust_start: float = 0.0
+    gust_duration: float = 1.0
+    hook_area: float = 0.0
+    hook_drag_coefficient: float = 1.2
+
+    def force(self, relative_speed: float) -> float:
+        """The payload's drag ½ρ c_W A u² [N] at the air speed u [m/s] relative to it."""
+        return 0.5 * self.air_density * self.drag_coefficient * self.area * relative_speed**2
+
+
+@dataclass(frozen=True)
+class CraneRun:
+    """A simulated crane: ``t`` [s] (N,); ``payload``, ``hook`` (None without a hook) and ``pivot``
+    positions [m] (N, 3) with velocities ``payload_velocity``, ``hook_velocity`` [m/s]; ``sway``
+    (N, 2): polar angle θ from the downward vertical and azimuth φ [rad] of the rope (pivot → hook,
+    or → payload without a hook); ``rigging_sway`` (N, 2) [rad] of hook → payload; ``rope`` l(t)
+    [m]; ``tension`` (N, 2) [N] rope, rigging; ``energy`` E = Σ ½m|v|² + m g z [J]; ``work`` the
+    works [J] done since the start by the hoist, the pivot, the wind and the damping (dict of (N,))."""
+
+    t: FloatArray
+    payload: FloatArray
+    hook: FloatArray | None
+    pivot: FloatArray
+    payload_velocity: FloatArray
+    hook_velocity: FloatArray | None
+    sway: FloatArray
+    rigging_sway: FloatArray | None
+    rope: FloatArray
+    tension: FloatArray
+    energy: FloatArray
+    work: dict[str, FloatArray] = field(default_factory=dict)
+    steps: int = 0
+
+    def energy_residual(self) -> FloatArray:
+        """E(t) − E(0) − (sum of the works) [J]: zero up to the integration error (T-11.6)."""
+        return np.asarray(self.energy - self.energy[0] - sum(self.work.values()), dtype=np.float64)
+
+    def offset(self) -> FloatArray:
+        """The payload's horizontal displacement from the pivot [m], (N, 2)."""
+        return np.asarray(self.payload[:, :2] - self.pivot[:, :2], dtype=np.float64)
+
+
+def _angles(d: FloatArray) -> FloatArray:
+    theta = np.arctan2(np.hypot(d[:, 0], d[:, 1]), -d[:, 2])
+    return np.stack([theta, np.arctan2(d[:, 1], d[:, 0])], axis=1)
+
+
+def _direction(name: str, angles: tuple[float, float]) -> FloatArray:
+    th, ph = (float(a) for a in angles)
+    if not (math.isfinite(th) and math.isfinite(ph) and 0 <= th < math.pi):
+        raise InvalidInputError(f"{name} = {angles!r} is not allowed: θ in [0, π) and a finite φ [rad]")
+    return np.array([math.sin(th) * math.cos(ph), math.sin(th) * math.sin(ph), -math.cos(th)])
+
+
+def _positive(name: str, value: Any, unit: str, zero_ok: bool = False) -> float:
+    v = float(value)
+    if not (math.isfinite(v) and (v >= 0 if zero_ok else v > 0)):
+        raise InvalidInputError(
+            f"{name} = {value!r} is not allowed: a finite number {'>=' if zero_ok else '>'} 0 {unit}"
+        )
+    return v
+
+
+class Crane:
+    """A crane (module doc): ``rope`` length [m] (the hoist's length at t = 0 when ``hoist`` is given),
+    ``pivot`` path (a :mod:`pendulab.crane.paths` path; default fixed at the origin), ``payload_mass``
+    [kg], ``hook_mass`` [kg] and ``rigging`` [m] (both or neither: the hook + payload double
+    pendulum), ``wind`` (:class:`Wind`), linear ``damping`` [1/s] relative to the pivot, ``g`` [m/s²],
+    ``hoist`` (:class:`Hoist`, the rope length l(t))."""
+
+    def __init__(
+        self,
+        rope: float,
+        pivot: Path | None = None,
+        payload_mass: float = 1000.0,
+        hook_mass: float | None = None,
+        rigging: float | None = None,
+        wind: Wind | None = None,
+        damping: float = 0.0,
+        g: float = 9.81,
+        hoist: Hoist | None = None,
+    ) -> None:
+        self.rope = _positive("rope", rope, "m")
+        self.pivot = pivot if pivot is not None else Gantry()
+        if not isinstance(self.pivot, Path):
+            raise InvalidInputError(
+                f"pivot must be a crane path (crane.move, crane.Gantry, ...), not {pivot!r}"
+            )
+        self.payload_mass = _positive("payload_mass", payload_mass, "kg")
+        if (hook_mass is None) != (rigging is None):
+            raise InvalidInputError("give hook_mass [kg] and rigging [m] together (or neither)")
+        self.hook_mass = None if hook_mass is None else _positive("hook_mass", hook_mass, "kg")
+        self.rigging = None if rigging is None else _positive("rigging", rigging, "m")
+        self.wind = wind if wind is not None else Wind()
+        self.damping = _positive("damping", damping, "1/s", zero_ok=True)
+        self.g = float(g)
+        if not math.isfinite(self.g):
+            raise InvalidInputError(f"g = {g!r} is not allowed: a finite gravity in m/s²")
+        l0 = float(hoist.length(0.0)[0]) if hoist is not None else self.rope
+        if not math.isclose(l0, self.rope, rel_tol=1e-9):
+            raise InvalidInputError(
+                f"rope = {rope!r} m but the hoist's length at t = 0 is {l0!r} m; give the same"
+            )
+        self.hoist = hoist if hoist is not None else Hoist([0.0, 1.0], [self.rope, self.rope])
+
+    def modes(self, rope: float | None = None) -> FloatArray:
+        """The small-sway angular frequencies [rad/s] (increasing) at rope length ``rope`` [m] (default
+        the rope at t = 0): √(g/l), or the two roots of T-11.8 with a hook."""
+        big_l1 = self.rope if rope is None else _positive("rope", rope, "m")
+        if self.g <= 0:
+            raise InvalidInputError(f"no sway modes for g = {self.g!r} <= 0 m/s²")
+        if self.hook_mass is None or self.rigging is None:
+            return np.array([math.sqrt(self.g / big_l1)])
+        big_l2, r, g = self.rigging, self.payload_mass / self.hook_mass, self.g
+        roots = np.roots([big_l1 * big_l2, -(1 + r) * g * (big_l1 + big_l2), (1 + r) * g * g])
+        return np.sqrt(np.sort(roots.real))
+
+    def simulate(
+        self,
+        t_end: float,
+        sway: tuple[float, float] = (0.0, 0.0),
+        rigging_sway: tuple[float, float] | None = None,
+        dt: float = 0.02,
+        t_start: float = 0.0,
+        rtol: float = 1e-10,
+        atol: float = 1e-10,
+    ) -> CraneRun:
+        """Runs from ``t_start`` to ``t_end`` [s], saving every ``dt`` [s], from the rope at polar angle
+        ``sway`` = (θ₀, φ₀) [rad] and the rigging at ``rigging_sway`` (θ, φ) [rad] (default: in line
+        with the rope), moving with the pivot and the hoist.
+        Raises ``InvalidInputError`` for a slack rope or rigging, a rope length ≤ 0, bad parameters."""
+        t0, t1 = float(t_start), float(t_end)
+        if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
+            raise InvalidInputError(
+                f"t_end = {t_end!r} s must be finite and later than t_start = {t_start!r} s"
+            )
+        dt = _positive("dt", dt, "s")
+        n = math.ceil((t1 - t0) / dt - 1e-9) + 1
+        if n > MAX_SAVES:
+            raise InvalidInputError(f"{n} saved samples exceed {MAX_SAVES}; raise dt or shorten t_end")
+        save = np.minimum(t0 + dt * np.arange(n), t1)
+        save[-1] = t1
+        u = _direction("sway", sway)
+        u2 = u if rigging_sway is None else _direction("rigging_sway", rigging_sway)
+        p, dp, _ = (a[0] for a in self.pivot._pva(np.array([t0])))
+        lq, ldq, _ = (a[0, 0] for a in self.hoist._pva(np.array([t0])))
+        y0 = np.zeros(16)
+        y0[0:3], y0[3:6] = p + lq * u, dp + ldq * u
+        hooked = self.hook_mass is not None and self.rigging is not None
+        if hooked:
+            y0[6:9], y0[9:12] = y0[0:3] + self.rigging * u2, y0[3:6]
+        w = self.wind
+        cwa_payload = w.drag_coefficient * w.area
+        if hooked:
+            body1 = (self.hook_mass, w.hook_drag_coefficient * w.hook_area)
+            body2 = (self.payload_mass, cwa_payload, self.rigging)
+        else:
+            body1, body2 = (self.payload_mass, cwa_payload), None
+        wind = (
+            tuple(map(float, w.velocity)),
+            tuple(map(float, w.gust)),
+            w.gust_start,
+            w.gust_duration,
+            w.air_density,
+        )
+        out = crane_simulate(
+            self.pivot.knots(t0 - 1.0, t1 + 1.0),
+            self.hoist.knots(t0 - 1.0, t1 + 1.0),
+            body1,
+            body2,
+            self.g,
+            self.damping,
+            wind,
+            y0.tolist(),
+            save,
+            rtol,
+            atol,
+            MAX_STEPS,
+        )
+        y, t = out["y"], out["t"]
+        piv = self.pivot.position(t)
+        x1, v1 = y[:, 0:3], y[:, 3:6]
+        x2, v2 = (y[:, 6:9], y[:, 9:12]) if hooked else (x1, v1)
+        energy = 0.5 * self.payload_mass * np.sum(v2 * v2, axis=1) + self.payload_mass * self.g * x2[:, 2]
+        if hooked:
+            energy += 0.5 * self.hook_mass * np.sum(v1 * v1, axis=1) + self.hook_mass * self.g * x1[:, 2]
+        work = {k: y[:, 12 + i] for i, k in enumerate(("hoist", "pivot", "wind", "damping"))}
+        return CraneRun(
+            t=t,
+            payload=x2,
+            hook=x1 if hooked else None,
+            pivot=piv,
+            payload_velocity=v2,
+            hook_velocity=v1 if hooked else None,
+            sway=_angles(x1 - piv),
+            rigging_sway=_angles(x2 - x1) if hooked else None,
+            rope=self.hoist.length(t),
+            tension=out["tension"],
+            energy=energy,
+            work=work,
+            steps=int(out["steps"]),
+        )

@@ -1,0 +1,102 @@
+//! Binding of the crane dynamics (`pendulab_core::crane`, docs/theory.md T-11.4 – T-11.7): knots of the
+//! prescribed pivot path and rope length in, saved states and tensions out. Conversions only; SI units
+//! (m, kg, s, N, J). The GIL is released while the core integrates.
+
+use crate::convert::{to_py, InvalidInputError};
+use numpy::ndarray::Array2;
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
+use pendulab_core::crane::{run, Body, CraneSystem, Hermite5, Knot, Tolerances, Wind};
+use pendulab_core::DVec3;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+type KnotArrays<'py> = (
+    PyReadonlyArray1<'py, f64>,
+    PyReadonlyArray2<'py, f64>,
+    PyReadonlyArray2<'py, f64>,
+    PyReadonlyArray2<'py, f64>,
+);
+
+fn knots(name: &str, k: &KnotArrays<'_>) -> PyResult<Hermite5> {
+    let t = k.0.as_array();
+    let (q, dq, ddq) = (k.1.as_array(), k.2.as_array(), k.3.as_array());
+    let n = t.len();
+    for (what, a) in [("values", &q), ("rates", &dq), ("second derivatives", &ddq)] {
+        if a.shape() != [n, 3] {
+            return Err(InvalidInputError::new_err(format!(
+                "{name} {what} have shape {:?}; expected ({n}, 3) for {n} knot times",
+                a.shape()
+            )));
+        }
+    }
+    let v = |a: &numpy::ndarray::ArrayView2<'_, f64>, i: usize| DVec3::new(a[[i, 0]], a[[i, 1]], a[[i, 2]]);
+    let list = (0..n).map(|i| Knot { t: t[i], q: v(&q, i), dq: v(&dq, i), ddq: v(&ddq, i) }).collect();
+    Hermite5::new(name, list).map_err(to_py)
+}
+
+/// Integrates the crane (`pendulab_core::crane::run`): `pivot` and `hoist` as knots (t [s] (n,),
+/// value, rate, second derivative (n, 3); the rope length in the first column), bodies (mass [kg],
+/// c_W A [m²]) with the rigging [m] for the payload under a hook, g [m/s²], damping [1/s], wind
+/// (steady (3,) [m/s], gust peak (3,) [m/s], gust start [s], duration [s], air density [kg/m³]),
+/// the start y0 (16,) and the save times [s]. Returns a dict: t (N,), y (N, 16), tension (N, 2) [N],
+/// steps, rejected.
+#[pyfunction]
+#[pyo3(signature = (pivot, hoist, body1, body2, g, damping, wind, y0, save, rtol, atol, max_steps))]
+#[allow(clippy::too_many_arguments)]
+pub fn crane_simulate<'py>(
+    py: Python<'py>,
+    pivot: KnotArrays<'py>,
+    hoist: KnotArrays<'py>,
+    body1: (f64, f64),
+    body2: Option<(f64, f64, f64)>,
+    g: f64,
+    damping: f64,
+    wind: ([f64; 3], [f64; 3], f64, f64, f64),
+    y0: [f64; 16],
+    save: PyReadonlyArray1<'py, f64>,
+    rtol: f64,
+    atol: f64,
+    max_steps: u64,
+) -> PyResult<Bound<'py, PyDict>> {
+    let sys = CraneSystem {
+        pivot: knots("pivot", &pivot)?,
+        hoist: knots("hoist", &hoist)?,
+        body1: Body { mass: body1.0, drag_area: body1.1 },
+        body2: body2.map(|(m, a, l2)| (Body { mass: m, drag_area: a }, l2)),
+        g,
+        damping,
+        wind: Wind {
+            steady: DVec3::from_array(wind.0),
+            gust: DVec3::from_array(wind.1),
+            gust_start: wind.2,
+            gust_duration: wind.3,
+            air_density: wind.4,
+        },
+    };
+    let save: Vec<f64> = save.as_array().to_vec();
+    let t0 = save.first().copied().unwrap_or(0.0);
+    let tol = Tolerances { rtol, atol, max_steps };
+    let out = py.allow_threads(|| run(&sys, t0, y0, &save, tol)).map_err(to_py)?;
+    let n = out.t.len();
+    let mut y = Array2::<f64>::zeros((n, 16));
+    let mut ten = Array2::<f64>::zeros((n, 2));
+    for i in 0..n {
+        for k in 0..16 {
+            y[[i, k]] = out.y[i][k];
+        }
+        ten[[i, 0]] = out.tension[i].0;
+        ten[[i, 1]] = out.tension[i].1;
+    }
+    let d = PyDict::new(py);
+    d.set_item("t", out.t.into_pyarray(py))?;
+    d.set_item("y", y.into_pyarray(py))?;
+    d.set_item("tension", ten.into_pyarray(py))?;
+    d.set_item("steps", out.steps.0)?;
+    d.set_item("rejected", out.steps.1)?;
+    Ok(d)
+}
+
+/// Registers the function.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(crane_simulate, m)?)
+}

@@ -1,0 +1,137 @@
+"""The crane dynamics (pendulab.crane.Crane, core ``crane`` module; docs/theory.md T-11.4 – T-11.8)
+against references worked out from the physics: the hook + payload modes of the characteristic
+equation in the spectrum of a simulated swing, adiabatic hoisting (θ ∝ l^(−3/4)), a wind step
+(equilibrium atan(F/mg), the first peak of a lightly damped step response) and the energy balance
+dE/dt = hoist + pivot + wind + damping power."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from pendulab import InvalidInputError, crane
+
+G = 9.81
+
+
+def _peak_frequency(t: np.ndarray, x: np.ndarray, lo: float, hi: float) -> float:
+    """The strongest angular frequency [rad/s] of x(t) in (lo, hi), a local maximum of the spectrum
+    (Hann window, zero padding, parabolic interpolation of the log spectrum)."""
+    dt = t[1] - t[0]
+    x = (x - x.mean()) * np.hanning(len(x))
+    nfft = 1 << 20
+    spec = np.abs(np.fft.rfft(x, nfft))
+    w = 2 * np.pi * np.fft.rfftfreq(nfft, dt)
+    band = np.flatnonzero((w > lo) & (w < hi))
+    i = int(band[np.argmax(spec[band])])
+    assert band[0] < i < band[-1], "the strongest component in the band is at its edge"
+    a, b, c = np.log(spec[i - 1 : i + 2])
+    return float(w[i] + 0.5 * (a - c) / (a - 2 * b + c) * (w[1] - w[0]))
+
+
+def test_hook_and_payload_modes_from_the_characteristic_equation() -> None:
+    l1, l2, m1, m2 = 8.0, 3.0, 200.0, 1000.0
+    c = crane.Crane(rope=l1, payload_mass=m2, hook_mass=m1, rigging=l2)
+    modes = c.modes()
+    r = m2 / m1
+    for w in modes:  # roots of L₁L₂ω⁴ − (1 + R) g (L₁ + L₂) ω² + (1 + R) g² = 0
+        assert l1 * l2 * w**4 - (1 + r) * G * (l1 + l2) * w**2 + (1 + r) * G**2 == pytest.approx(0, abs=1e-9)
+    run = c.simulate(t_end=400.0, sway=(0.001, 0.0), rigging_sway=(0.002, math.pi), dt=0.05)
+    for w in modes:  # small swing: the nonlinear shift (∝ amplitude², 1e-3 at 0.02 rad) is ~1e-5 here
+        assert _peak_frequency(run.t, run.payload[:, 0], 0.7 * w, 1.3 * w) == pytest.approx(w, rel=1e-4)
+    # one body: √(g/l)
+    assert crane.Crane(rope=l1).modes()[0] == pytest.approx(math.sqrt(G / l1), rel=1e-15)
+
+
+def test_adiabatic_hoisting_sway_scales_as_l_to_the_minus_three_quarters() -> None:
+    hoist = crane.Hoist(t=[20.0, 620.0], length=[12.0, 4.0])
+    c = crane.Crane(rope=12.0, payload_mass=1000.0, hoist=hoist)
+    run = c.simulate(t_end=680.0, sway=(0.03, 0.0), dt=0.02)
+    before = run.sway[run.t < 20.0, 0].max()
+    after = run.sway[run.t > 625.0, 0].max()
+    assert before == pytest.approx(0.03, rel=1e-6)
+    assert after / before == pytest.approx((4.0 / 12.0) ** -0.75, rel=5e-3)
+    assert np.all(run.tension[:, 0] > 0)
+
+
+def test_wind_step_equilibrium_and_first_peak() -> None:
+    m, rope = 1000.0, 10.0
+    wind = crane.Wind(velocity=(20.0, 0.0, 0.0), area=1.0, drag_coefficient=1.2, air_density=1.225)
+    c = crane.Crane(rope=rope, payload_mass=m, wind=wind)
+    run = c.simulate(t_end=400.0, dt=0.01)
+    force = wind.force(20.0)
+    alpha = math.atan(force / (m * G))
+    theta = run.sway[:, 0]
+    # after the swing has died out (aerodynamic damping), the load hangs at atan(F/mg)
+    assert theta[run.t > 380].mean() == pytest.approx(alpha, rel=2e-3)
+    # the first peak: a step onto a lightly damped oscillator overshoots by exp(−ζπ/√(1−ζ²)), ζ from
+    # the linearised drag ρ c_W A w/m = 2ζω; without damping it would be exactly 2α
+    omega = math.sqrt(G / rope)
+    zeta = 1.225 * 1.2 * 1.0 * 20.0 / m / (2 * omega)
+    first_peak = theta[run.t < math.pi / omega * 1.3].max()
+    assert first_peak == pytest.approx(
+        alpha * (1 + math.exp(-zeta * math.pi / math.sqrt(1 - zeta**2))), rel=5e-3
+    )
+    assert 1.9 * alpha < first_peak < 2 * alpha
+
+
+@pytest.mark.parametrize("hooked", [False, True])
+def test_energy_balance_with_hoist_pivot_wind_and_damping(hooked: bool) -> None:
+    path = crane.move(distance=6.0, v_max=0.8, a_max=0.4, t_start=2.0)
+    hoist = crane.Hoist(t=[1.0, 9.0, 14.0], length=[9.0, 6.5, 7.0])
+    wind = crane.Wind(
+        velocity=(3.0, 5.0, 0.0), area=2.0, hook_area=0.3, gust=(0, 8, 0), gust_start=5, gust_duration=4
+    )
+    kw = {"hook_mass": 150.0, "rigging": 2.5} if hooked else {}
+    c = crane.Crane(rope=9.0, pivot=path, payload_mass=800.0, wind=wind, damping=0.02, hoist=hoist, **kw)
+    run = c.simulate(t_end=30.0, sway=(0.1, 0.4), dt=0.05, rtol=1e-12, atol=1e-12)
+    scale = 800.0 * G * 9.0
+    assert np.abs(run.energy_residual()).max() < 1e-9 * scale
+    for k in ("hoist", "pivot", "wind", "damping"):
+        assert np.abs(run.work[k]).max() > 1e-3 * scale, k  # each power source did work
+    np.testing.assert_allclose(
+        np.linalg.norm(run.payload[:, :] - (run.hook if hooked else run.pivot), axis=1),
+        2.5 if hooked else run.rope,
+        rtol=1e-12,
+    )
+
+
+def test_residual_vibration_after_a_shaped_move_in_the_nonlinear_model() -> None:
+    rope = 10.0
+    w = math.sqrt(G / rope)
+    s = crane.shaper("zv", omega=0.85 * w)  # designed for the wrong frequency: V(ω) ≈ 0.23
+    expected = crane.residual_vibration(s, [w])[0]
+
+    def residual(shaper: crane.Shaper | None) -> float:
+        path = crane.move(distance=5.0, v_max=0.5, a_max=0.5, shaper=shaper, t_start=1.0)
+        run = crane.Crane(rope=rope, pivot=path, payload_mass=1000.0).simulate(
+            t_end=path.t_end + 30.0, dt=0.01
+        )
+        after = run.t > path.t_end + 1.0
+        x = run.offset()[after, 0]
+        v = (run.payload_velocity - path.velocity(run.t))[after, 0]
+        return float(np.mean(np.hypot(x, v / w)))
+
+    assert residual(s) / residual(None) == pytest.approx(expected, rel=1e-2)
+    assert residual(crane.shaper("zvd", omega=w)) / residual(None) < 1e-3
+
+
+@pytest.mark.parametrize(
+    ("make", "word"),
+    [
+        (lambda: crane.Crane(rope=-1.0), "rope"),
+        (lambda: crane.Crane(rope=5.0, hook_mass=100.0), "rigging"),
+        (lambda: crane.Crane(rope=5.0, hoist=crane.Hoist(t=[0, 10], length=[6, 3])), "hoist"),
+        (lambda: crane.Hoist(t=[0, 10], length=[6, -3]), "lengths"),
+        (lambda: crane.Crane(rope=5.0).simulate(t_end=-1.0), "t_end"),
+        (lambda: crane.Crane(rope=5.0, payload_mass=0.0), "payload_mass"),
+        (lambda: crane.Crane(rope=2.0, hoist=crane.Hoist(t=[0, 0.3], length=[2, 12])).simulate(1.0), "slack"),
+        (lambda: crane.move(distance=0.0, v_max=1.0, a_max=1.0), "distance"),
+        (lambda: crane.move(distance=1.0, v_max=1.0, a_max=-1.0), "a_max"),
+    ],
+)
+def test_bad_crane_input(make, word: str) -> None:  # type: ignore[no-untyped-def]
+    with pytest.raises(InvalidInputError, match=word):
+        make()
