@@ -13,6 +13,7 @@ from test_cli import assert_user_error, invoke
 
 import pendulab as pl
 from pendulab.scenario import Scenario, ScenarioError
+from pendulab.sweeps.file import load_sweep_file
 from pendulab.validate import FILE_NESTING, check_nesting
 
 ROSETTE = (SCENARIOS / "rosette.toml").read_text(encoding="utf-8")
@@ -77,3 +78,15 @@ def test_the_nesting_check_counts_brackets_outside_strings_and_comments(text: st
     check_nesting(nest(FILE_NESTING - deepest))
     with pytest.raises(pl.InvalidInputError, match="nest more than"):
         check_nesting(nest(FILE_NESTING - deepest + 1))
+
+
+def test_control_characters_in_a_sweep_title_are_refused(tmp_path: Path) -> None:
+    sweep = (SCENARIOS.parent / "sweeps" / "sway.toml").read_text(encoding="utf-8")
+    lines = [ln for ln in sweep.splitlines() if not ln.startswith("title = ")]
+    path = tmp_path / "escape_sweep.toml"
+    path.write_text('title = "\\u001b]0;pwned\\u0007sway"\n' + "\n".join(lines) + "\n", encoding="utf-8")
+    code, out, err = invoke("sweep", str(path), "--out", str(tmp_path / "out.parquet"))
+    assert_user_error(code, out, err, "control character")
+    assert "\x1b" not in out + err
+    path.write_bytes(b"\xef\xbb\xbf" + sweep.encode())  # a BOM is fine
+    assert load_sweep_file(path).title == load_sweep_file(SCENARIOS.parent / "sweeps" / "sway.toml").title

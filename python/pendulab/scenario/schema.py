@@ -362,20 +362,24 @@ class ScenarioSpec(_Section):
     @field_validator("title", "description")
     @classmethod
     def _printable(cls, value: str | None, info: Any) -> str | None:
-        """Text that reaches terminals and pages: no control characters (an ANSI escape sequence
-        could recolour, move or retitle the terminal that prints it); the description may have line
-        breaks and tabs."""
-        if value is None:
-            return None
-        allowed = "" if info.field_name == "title" else "\n\t"
-        bad = next((c for c in value if _is_control(c) and c not in allowed), None)
-        if bad is not None:
-            where = value.index(bad)
-            raise ValueError(
-                f"has the control character {bad!r} at character {where + 1}: a {info.field_name} is "
-                f"printable text{' on one line' if info.field_name == 'title' else ''} (no escape sequences)"
-            )
-        return value
+        """Text that reaches terminals and pages: no control characters (:func:`printable`)."""
+        return (
+            None if value is None else printable(value, info.field_name, one_line=info.field_name == "title")
+        )
+
+
+def printable(value: str, what: str, *, one_line: bool) -> str:
+    """``value`` when it has no control characters (an ANSI escape sequence in a title would
+    recolour, move or retitle the terminal that prints it); a description may have line breaks and
+    tabs. A ``ValueError`` naming the character and its position otherwise."""
+    allowed = "" if one_line else "\n\t"
+    bad = next((c for c in value if _is_control(c) and c not in allowed), None)
+    if bad is not None:
+        raise ValueError(
+            f"has the control character {bad!r} at character {value.index(bad) + 1}: a {what} is "
+            f"printable text{' on one line' if one_line else ''} (no escape sequences)"
+        )
+    return value
 
 
 SECTIONS: dict[str, type[_Section]] = {

@@ -41,13 +41,16 @@ from dataclasses import dataclass
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 from pydantic_core import ErrorDetails
 
 from .._core import InvalidInputError
 from ..model import Pendulum
 from ..scenario import ScenarioError
-from ..scenario.schema import _show  # a value as it looks in TOML, as scenario errors show it
+from ..scenario.schema import (
+    _show,  # a value as it looks in TOML, as scenario errors show it
+    printable,
+)
 from ..validate import check_depth, read_file_capped
 from . import design as sweep_design
 from .compute import QUANTITIES, make_spec
@@ -103,6 +106,11 @@ class SweepSpecFile(_Strict):
     fixed: dict[str, float] = Field(default_factory=dict)
     simulation: SimulationTable | None = None
     run: RunTable = Field(default_factory=RunTable)
+
+    @field_validator("title")
+    @classmethod
+    def _printable(cls, value: str) -> str:
+        return printable(value, "title", one_line=True)  # printed by `pendulab sweep`
 
     @model_validator(mode="after")
     def _one_design(self) -> SweepSpecFile:
