@@ -113,3 +113,32 @@ def test_many_rows_are_read_in_linear_time() -> None:
         return "t,x,z\n" + "".join(f"{i},0.{i % 97},-0.5\n" for i in range(n // 12))
 
     _assert_linear(make, parse_table, 1_200_000)
+
+
+CAP_SECONDS = 20.0
+"""A bound on one read at the caps: linear readers take well under a second (idle), a quadratic one
+hours (a 2 MiB first line of ``,'a`` at 28 s per 78 kB)."""
+
+
+@pytest.mark.parametrize(
+    "unit",
+    [",'a", "(", '"a",', "\t\"'", "0; ", "t,x,z\n0,1,2\n", "#\n", ",,\n", "\ufeff", " / ", ": "],
+)
+def test_an_upload_at_the_servers_cap_is_read_in_seconds(unit: str) -> None:
+    """The lab's fit upload is at most 2 MiB (server/fit.py MAX_FIT_BYTES): hostile text of that size,
+    as one line and as many lines, is read or refused within :data:`CAP_SECONDS`."""
+    cap = 2 * 2**20
+    for text in (unit * (cap // len(unit)), ("t,x,z\n" + unit + "\n") * (cap // (len(unit) + 7))):
+        start = time.perf_counter()
+        _quiet(parse_table)(text)
+        assert time.perf_counter() - start < CAP_SECONDS
+
+
+@pytest.mark.parametrize("unit", ['\\"', "'", '"""', "[", "]", "#", "{", '"\\', "a = '''"])
+def test_a_scenario_file_at_its_cap_is_checked_in_seconds(unit: str) -> None:
+    """Scenario and sweep files are at most 1 MiB (validate.FILE_BYTES)."""
+    text = "title = " + unit * ((2**20 - 8) // len(unit))
+    start = time.perf_counter()
+    _quiet(check_nesting)(text)
+    _quiet(Scenario.from_toml_str)(text)
+    assert time.perf_counter() - start < CAP_SECONDS
