@@ -7,7 +7,7 @@ of :mod:`pendulab.cli.common`; command modules import from ``common`` and never 
 
 from __future__ import annotations
 
-from . import animate, exact, fit, run, serve, sweep  # noqa: F401  (each registers its commands on `app`)
+from . import animate, crane, exact, fit, run, serve, sweep  # noqa: F401  (each registers its commands on `app`)
 from .common import EXIT_INTERRUPTED, EXIT_USER_ERROR, app
 
 

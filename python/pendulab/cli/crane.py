@@ -1,0 +1,167 @@
+"""``pendulab crane …``: command shapers and crane moves from the command line (docs/cranes.md,
+docs/cli.md; docs/theory.md §11). Subcommands: ``shaper`` (the impulse table and insensitivity of a
+shaper), ``sensitivity`` (V(ω/ω₀) of shapers: a table, or a plot with --plot), ``residual`` (a move's
+residual sway with and without a shaper, simulated in the nonlinear crane model). SI units (m, s,
+rad/s, kg); exit code 0 on success, 2 on a user error (one ``error: …`` line), 130 on Ctrl-C.
+``pendulab.crane`` (SciPy) is imported only when a crane command runs.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from .._core import InvalidInputError
+from .common import _fail, _say, _user_errors, app
+
+crane_app = typer.Typer(
+    help="Cranes: command shapers, their sensitivity, a move's residual sway (docs/cranes.md).",
+    no_args_is_help=True,
+)
+app.add_typer(crane_app, name="crane")
+
+_KIND_HELP = "Shaper kind: zv, zvd, zvdd, ei, 2hump_ei."
+_G = 9.81
+
+
+def _omega(omega: float | None, rope: float | None, g: float) -> float:
+    if (omega is None) == (rope is None):
+        _fail("give the design frequency as --omega [rad/s] or as --rope [m] (ω = √(g/l)), one of them")
+    if rope is not None:
+        if not (math.isfinite(rope) and rope > 0 and math.isfinite(g) and g > 0):
+            raise InvalidInputError(f"--rope {rope!r} m and --g {g!r} m/s² must be > 0")
+        return math.sqrt(g / rope)
+    assert omega is not None
+    return omega
+
+
+def _check_image(path: Path) -> None:
+    if path.suffix.lower() not in (".png", ".svg", ".pdf"):
+        _fail(f"--plot: unknown image suffix {path.suffix!r} in {str(path)!r}; use .png, .svg or .pdf")
+    if not path.resolve().parent.is_dir():
+        _fail(f"--plot {str(path)!r}: the directory {str(path.resolve().parent)!r} does not exist")
+
+
+@crane_app.command("shaper", short_help="A shaper's impulses (t_i [s], A_i) and its insensitivity.")
+def shaper_cmd(
+    kind: Annotated[str, typer.Argument(help=_KIND_HELP, show_default=False)],
+    omega: Annotated[float | None, typer.Option(help="Design angular frequency [rad/s].")] = None,
+    rope: Annotated[float | None, typer.Option(help="Or: rope length [m], ω = √(g/l).")] = None,
+    g: Annotated[float, typer.Option(help="Gravity [m/s²] (with --rope).")] = _G,
+    damping: Annotated[float, typer.Option(help="Damping ratio ζ of the mode (0 ≤ ζ < 1).")] = 0.0,
+    tolerance: Annotated[float, typer.Option(help="V_tol of the EI kinds (a fraction).")] = 0.05,
+) -> None:
+    """Prints the impulse times [s] and amplitudes of the shaper, its length and its insensitivity:
+    the width of the band of ω/ω₀ where V ≤ 5 % (T-11.1, T-11.2)."""
+    with _user_errors():
+        from .. import crane
+
+        w = _omega(omega, rope, g)
+        s = crane.shaper(kind, omega=w, damping=damping, tolerance=tolerance)
+        _say(f"{s.kind.upper()} shaper for ω = {w:.6g} rad/s, ζ = {damping:g}")
+        _say(f"{'i':>3} {'t_i [s]':>12} {'A_i':>12}")
+        for i, (t, a) in enumerate(s.table(), 1):
+            _say(f"{i:>3} {t:>12.6f} {a:>12.8f}")
+        width = crane.insensitivity(s, 0.05, damping)
+        _say(f"duration {s.duration:.6g} s; insensitivity (V ≤ 5 %) {width:.4f} ω₀")
+
+
+@crane_app.command("sensitivity", short_help="V(ω/ω₀) of shapers: a table, or a plot (--plot).")
+def sensitivity_cmd(
+    kinds: Annotated[list[str], typer.Argument(help=_KIND_HELP, show_default=False)],
+    damping: Annotated[float, typer.Option(help="Damping ratio ζ (design and plant).")] = 0.0,
+    tolerance: Annotated[float, typer.Option(help="V_tol of the EI kinds (a fraction).")] = 0.05,
+    lo: Annotated[float, typer.Option(help="Smallest ω/ω₀.")] = 0.5,
+    hi: Annotated[float, typer.Option(help="Largest ω/ω₀.")] = 1.5,
+    points: Annotated[int, typer.Option(min=2, max=100_001, help="Rows of the table.")] = 11,
+    plot: Annotated[
+        Path | None, typer.Option(help="Write the curves to this image (.png/.svg/.pdf).")
+    ] = None,
+) -> None:
+    """The residual vibration V [%] of each shaper kind against ω/ω₀ (T-11.1)."""
+    with _user_errors():
+        from .. import crane
+
+        if not (0 < lo < hi and math.isfinite(hi)):
+            raise InvalidInputError(f"--lo {lo!r} and --hi {hi!r}: need 0 < lo < hi")
+        if plot is not None:
+            _check_image(plot)
+        shapers = [crane.shaper(k, omega=1.0, damping=damping, tolerance=tolerance) for k in kinds]
+        x = np.linspace(lo, hi, points)
+        _say("ω/ω₀   " + "".join(f"{s.kind.upper():>10}" for s in shapers) + "   (V [%])")
+        for xi in x:
+            row = "".join(f"{100 * crane.residual_vibration(s, [xi], damping)[0]:>10.3f}" for s in shapers)
+            _say(f"{xi:<7.4f}{row}")
+        if plot is not None:
+            from ..crane.plot import plot_sensitivity
+            from ..plot import save_figure
+
+            save_figure(plot_sensitivity(shapers, (lo, hi), damping, tolerance), plot)
+            _say(f"wrote {plot}")
+
+
+@crane_app.command("residual", short_help="A move's residual sway, with and without a shaper.")
+def residual_cmd(
+    distance: Annotated[float, typer.Option(help="Move distance [m] (along x).")] = 5.0,
+    v_max: Annotated[float, typer.Option(help="Speed limit [m/s].")] = 0.5,
+    a_max: Annotated[float, typer.Option(help="Acceleration limit [m/s²].")] = 0.5,
+    j_max: Annotated[float | None, typer.Option(help="Jerk limit [m/s³] (default: none).")] = None,
+    rope: Annotated[float, typer.Option(help="Rope length [m].")] = 10.0,
+    payload_mass: Annotated[float, typer.Option(help="Payload mass [kg].")] = 1000.0,
+    hook_mass: Annotated[float | None, typer.Option(help="Hook mass [kg] (with --rigging).")] = None,
+    rigging: Annotated[float | None, typer.Option(help="Rigging length [m] (with --hook-mass).")] = None,
+    shaper: Annotated[str, typer.Option(help=_KIND_HELP)] = "zvd",
+    design_rope: Annotated[
+        float | None, typer.Option(help="Rope length [m] the shaper is designed for (default --rope).")
+    ] = None,
+    g: Annotated[float, typer.Option(help="Gravity [m/s²].")] = _G,
+    settle: Annotated[
+        float, typer.Option(help="Time after the move [s] over which the sway is measured.")
+    ] = 30.0,
+    plot: Annotated[
+        Path | None, typer.Option(help="Write sway vs time (shaped, unshaped) to this image.")
+    ] = None,
+) -> None:
+    """Simulates the move unshaped and shaped (the shaper designed for the lowest sway mode of the
+    design rope) in the nonlinear crane model and prints the residual sway amplitude of the payload
+    [m] after the move, their ratio, and the shaper's predicted V at the true lowest mode."""
+    with _user_errors():
+        from .. import crane
+
+        if plot is not None:
+            _check_image(plot)
+        settle = float(settle)
+        if not (math.isfinite(settle) and 0 < settle <= 3600):
+            raise InvalidInputError(f"--settle {settle!r}: a time in (0, 3600] s")
+        c0 = crane.Crane(rope=rope, payload_mass=payload_mass, hook_mass=hook_mass, rigging=rigging, g=g)
+        w_true = float(c0.modes()[0])
+        w_design = float(c0.modes(rope=design_rope)[0]) if design_rope is not None else w_true
+        s = crane.shaper(shaper, omega=w_design)
+        runs = {}
+        amps = {}
+        for label, sh in (("unshaped", None), (s.kind.upper(), s)):
+            path = crane.move(distance, v_max, a_max, j_max=j_max, shaper=sh, t_start=1.0)
+            c = crane.Crane(
+                rope=rope, pivot=path, payload_mass=payload_mass, hook_mass=hook_mass, rigging=rigging, g=g
+            )
+            run = c.simulate(t_end=path.t_end + settle, dt=0.02)
+            after = run.t > path.t_end
+            off = run.offset()[after]
+            amps[label] = float(np.max(np.hypot(off[:, 0], off[:, 1])))
+            runs[label] = run
+            _say(f"{label:>9}: move ends at {path.t_end:8.3f} s; residual sway {amps[label]:.5g} m")
+        ratio = amps[s.kind.upper()] / amps["unshaped"]
+        predicted = crane.residual_vibration(s, [w_true])[0]
+        modes = ", ".join(f"{m:.5g}" for m in c0.modes())
+        _say(f"ratio {ratio:.4g} (the shaper's V at ω = {w_true:.5g} rad/s: {predicted:.4g})")
+        _say(f"sway modes {modes} rad/s")
+        if plot is not None:
+            from ..crane.plot import plot_sway
+            from ..plot import save_figure
+
+            save_figure(plot_sway(runs), plot)
+            _say(f"wrote {plot}")

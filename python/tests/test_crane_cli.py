@@ -1,0 +1,54 @@
+"""``pendulab crane`` (python/pendulab/cli/crane.py, docs/cli.md): the shaper table, the sensitivity
+table and plot, a move's residual sway; user errors as one ``error:`` line with exit code 2."""
+
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+from test_cli import assert_user_error, invoke
+
+from pendulab import crane
+
+
+def test_shaper_table_matches_the_library() -> None:
+    code, out, _ = invoke("crane", "shaper", "zvd", "--rope", "10")
+    assert code == 0
+    s = crane.shaper("zvd", omega=math.sqrt(9.81 / 10))
+    rows = [line.split() for line in out.splitlines() if re.match(r"^\s+\d+\s", line)]
+    np.testing.assert_allclose([(float(r[1]), float(r[2])) for r in rows], s.table(), atol=1e-6)
+    assert "insensitivity (V ≤ 5 %) 0.2871" in out
+
+
+def test_sensitivity_table_and_plot(tmp_path: Path) -> None:
+    png = tmp_path / "v.png"
+    code, out, _ = invoke("crane", "sensitivity", "zv", "ei", "--points", "3", "--plot", str(png))
+    assert code == 0 and png.stat().st_size > 1000
+    row = next(line for line in out.splitlines() if line.startswith("1.0000"))
+    assert [float(v) for v in row.split()[1:]] == pytest.approx([0.0, 5.0], abs=1e-9)
+
+
+def test_residual_reports_the_shapers_ratio() -> None:
+    code, out, _ = invoke("crane", "residual", "--shaper", "zv", "--design-rope", "12", "--settle", "15")
+    assert code == 0, out
+    m = re.search(r"ratio ([\d.e-]+) \(the shaper's V at ω = [\d.]+ rad/s: ([\d.e-]+)\)", out)
+    assert m is not None, out
+    assert float(m.group(1)) == pytest.approx(float(m.group(2)), rel=0.03)
+
+
+@pytest.mark.parametrize(
+    ("args", "needle"),
+    [
+        (("crane", "shaper", "zq", "--omega", "1"), "zq"),
+        (("crane", "shaper", "zv"), "--omega"),
+        (("crane", "shaper", "zv", "--omega", "-2"), "omega"),
+        (("crane", "sensitivity", "zv", "--plot", "x.gif"), ".gif"),
+        (("crane", "residual", "--a-max", "0"), "a_max"),
+        (("crane", "residual", "--hook-mass", "100"), "rigging"),
+    ],
+)
+def test_user_errors(args: tuple[str, ...], needle: str) -> None:
+    assert_user_error(*invoke(*args), needle)
