@@ -89,6 +89,12 @@ def test_excel_byte_order_mark_crlf_and_german_locale(name: str) -> None:
     np.testing.assert_allclose(data["positions"], x[:, [0, 2]], atol=6e-7)
 
 
+def test_old_mac_line_ends() -> None:
+    """Excel for Mac's "CSV (Macintosh)" ends lines with CR alone."""
+    data = parse_table_notes("t,x,z\r0,0.1,-0.5\r0.1,0.2,-0.4\r")[0]
+    np.testing.assert_allclose(data["positions"], [[0.1, -0.5], [0.2, -0.4]])
+
+
 def test_x_y_without_z_are_horizontal_positions_not_a_rename() -> None:
     data, notes = read_table_notes(EXPORTS / "crane_hook_xy.csv")
     assert set(data) == {"t", "horizontal"}

@@ -123,6 +123,8 @@ def parse_table_notes(
     """:func:`parse_table` and notes for the user on how the file was read (the program it looks
     like, a preamble skipped, how x, y were taken)."""
     text = text.removeprefix("\ufeff")  # Excel's "CSV UTF-8" and Windows editors write a BOM
+    if "\r" in text and "\n" not in text:  # Excel for Mac's "CSV (Macintosh)": CR line ends
+        text = text.replace("\r", "\n")
     layout = find_layout(text, where)
     names = columns if columns is not None else _vernier_names(layout) or layout.header
     if names is None:
