@@ -268,3 +268,53 @@ def test_every_model_draws_on_every_panel(tmp_path, name):
         tmp_path / "m.mp4", fps=4, panels="3d,top,z,reduced,veff", size=(480, 270), vectors=True
     )
     assert movie.frames == 9
+
+
+@pytest.mark.parametrize(
+    "kwargs",
+    [
+        {"speed": 5e-324},  # span / speed overflows to inf frames (issue 30: OverflowError)
+        {"duration": 1e308},
+        {"t": (0.0, 1e308)},
+        {"fps": 30, "speed": 1e-300},
+    ],
+)
+def test_extreme_spans_and_speeds_are_clear_errors_not_overflows(tmp_path, sol, kwargs):
+    kwargs = {"t": (0.0, 10.0), **kwargs}
+    with pytest.raises(pl.InvalidInputError, match=r"frames .* exceed the limit of 100000"):
+        sol.animate(tmp_path / "m.gif", **kwargs)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_trail_longer_than_the_movie_is_the_whole_path(tmp_path, sol):
+    """trail=1e308 s overflowed when turned into a number of points; it is the whole path drawn so far."""
+    movie = sol.animate(tmp_path / "m.gif", t=(0.0, 1.0), fps=10, size=(160, 90), trail=1e308)
+    assert movie.frames == 11 and (tmp_path / "m.gif").stat().st_size > 0
+
+
+@pytest.mark.parametrize("span", [1.0, 100.0, 1000.0, 1e5])
+def test_gif_defaults_fit_the_pixel_cap(span):
+    from pendulab.animate.clock import make_clock
+    from pendulab.animate.encode import MAX_GIF_PIXELS, check_work, fit_gif, gif_fps
+
+    size, fps, speed = fit_gif(span, None, None, 1.0)
+    clock = make_clock((0.0, span), fps=gif_fps(fps), speed=speed, duration=None)
+    check_work("gif", size, clock.frames)  # raises if it does not fit
+    assert clock.frames * size[0] * size[1] <= MAX_GIF_PIXELS
+    assert clock.t_last >= span - clock.frame_dt  # the whole span is shown
+    assert fps >= 10.0 and (speed == 1.0) == (span * 10.0 + 1 <= MAX_GIF_PIXELS // (640 * 360))
+
+
+def test_cli_animate_takes_a_scenario_name_and_fits_a_gif(tmp_path, monkeypatch):
+    """`pendulab animate rosette --out a.gif` (issue 31: "rosette: No such file or directory"; and the
+    one-command GIF of a shipped scenario refused its own defaults)."""
+    from typer.testing import CliRunner
+
+    from pendulab import cli
+
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(cli.app, ["animate", "rosette", "--out", "a.gif", "--t-end", "2"])
+    assert result.exit_code == 0, result.output
+    assert "GIF: 640x360 at 20 frames/s, speed 1" in result.stderr
+    with Image.open(tmp_path / "a.gif") as im:
+        assert im.size == (640, 360) and im.n_frames == 41

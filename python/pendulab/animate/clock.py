@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from typing import NoReturn
 
 import numpy as np
 
@@ -91,6 +92,13 @@ def check_fps(fps: object) -> float:
     return _positive("fps", fps, "frames/s", MAX_FPS)
 
 
+def _too_many(frames: float, fps: float, what: str) -> NoReturn:
+    raise InvalidInputError(
+        f"{frames:.4g} frames (fps = {fps:g}, {what}) exceed the limit of {MAX_FRAMES}: "
+        "lower fps, raise speed or give a shorter duration"
+    )
+
+
 def make_clock(
     span: tuple[float, float],
     *,
@@ -111,11 +119,16 @@ def make_clock(
     t_start, t_end = (float(span[0]), float(span[1]))
     if not (math.isfinite(t_start) and math.isfinite(t_end) and t_end >= t_start):
         raise InvalidInputError(f"the time span ({t_start!r}, {t_end!r}) s must be finite with end >= start")
-    available = (t_end - t_start) / speed  # s of video the data can fill
+    available = (t_end - t_start) / speed  # s of video the data can fill (inf for a tiny speed)
     if duration is None:
-        frames = math.floor(available * fps * (1 + 1e-12)) + 1
+        wanted = available * fps * (1 + 1e-12)
+        if not wanted < MAX_FRAMES:  # also inf: checked before it becomes an integer
+            _too_many(wanted, fps, f"the span {t_end - t_start:g} s at speed = {speed:g}")
+        frames = math.floor(wanted) + 1
     else:
         duration = _positive("duration", duration, "s of video")
+        if not duration * fps <= MAX_FRAMES:
+            _too_many(duration * fps, fps, f"duration = {duration:g} s")
         frames = max(1, round(duration * fps))
         shown = t_start + speed * (frames - 1) / fps
         if shown > t_end + 1e-9 * max(1.0, abs(t_end)):
@@ -126,10 +139,7 @@ def make_clock(
                 "or a lower speed"
             )
     if frames > MAX_FRAMES:
-        raise InvalidInputError(
-            f"{frames} frames (fps = {fps:g}, {frames / fps:g} s of video) exceed the limit of {MAX_FRAMES}: "
-            "lower fps, raise speed or give a shorter duration"
-        )
+        _too_many(frames, fps, f"{frames / fps:g} s of video")
     substeps = 1
     if max_dense_dt is not None and max_dense_dt > 0 and frames > 1:
         substeps = int(min(MAX_SUBSTEPS, max(1, math.ceil(speed / fps / max_dense_dt))))

@@ -109,6 +109,46 @@ def check_work(fmt: str, size: tuple[int, int], frames: int) -> None:
         )
 
 
+GIF_SIZE = (640, 360)
+"""A GIF's frame size when none is given (``pendulab animate``): a quarter of 720p."""
+GIF_FPS = 20.0
+"""A GIF's frame rate when none is given (``pendulab animate``)."""
+MIN_GIF_FPS = 10.0
+"""The lowest frame rate chosen for a GIF (below, a faster speed is chosen instead)."""
+
+
+def fit_gif(
+    span: float, size: tuple[int, int] | None, fps: float | None, speed: float
+) -> tuple[tuple[int, int], float, float]:
+    """Size, frame rate and speed of a GIF of ``span`` simulated seconds that fits
+    :data:`MAX_GIF_PIXELS`: what is given is kept; a size not given is :data:`GIF_SIZE`, a frame rate
+    not given is :data:`GIF_FPS` or lower (down to :data:`MIN_GIF_FPS`); when that is not enough and
+    neither was given, the speed [simulated s per s of video] is raised until the frames fit.
+
+    Examples
+    --------
+    >>> size, fps, speed = fit_gif(100.0, None, None, 1.0)  # rosette: 100 s of motion
+    >>> size, round(fps, 2), speed  # 1668 frames of 640x360: 3.8e8 pixels
+    ((640, 360), 16.67, 1.0)
+    >>> fit_gif(1000.0, None, None, 1.0)  # 1000 s: at 10 frames/s and 5.77x speed, 1734 frames
+    ((640, 360), 10.0, 5.77)
+    >>> fit_gif(10.0, (1280, 720), 30.0, 1.0)  # given: kept (check_work refuses what does not fit)
+    ((1280, 720), 30.0, 1.0)
+    """
+    w, h = size if size is not None else GIF_SIZE
+    frames_cap = MAX_GIF_PIXELS // (w * h)
+    if fps is not None:
+        return (w, h), fps, speed
+    if not (math.isfinite(span) and span >= 0.0 and math.isfinite(speed) and speed > 0.0):
+        return (w, h), gif_fps(GIF_FPS), speed
+    rate = gif_fps(GIF_FPS)
+    while rate > MIN_GIF_FPS and span / speed * rate + 1 > frames_cap:
+        rate = gif_fps(100.0 / (round(100.0 / rate) + 1))
+    if size is None and span / speed * rate + 1 > frames_cap:
+        speed = math.ceil(100.0 * span * rate / (frames_cap - 2)) / 100.0  # 2 frames to spare
+    return (w, h), rate, speed
+
+
 class Encoder(Protocol):
     """Takes frames one at a time; ``close`` finishes the file, ``abort`` stops without finishing."""
 

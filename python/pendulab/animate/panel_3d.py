@@ -45,7 +45,9 @@ class Panel3D(Panel):
             [scene.theme.bob] if bobs == 1 else [scene.theme.gradient(i, bobs) for i in range(bobs)]
         )
         dt_dense = scene.clock.frame_dt / scene.step
-        self.trail_points = 0 if bobs > MAX_TRAILS else round(opts.trail / dt_dense) if opts.trail > 0 else 0
+        # at most the whole dense grid (a trail of 1e308 s is the whole path, not an overflow)
+        points = min(opts.trail / dt_dense, float(len(scene.x))) if opts.trail > 0 else 0.0
+        self.trail_points = 0 if bobs > MAX_TRAILS else round(points)
         speed = np.linalg.norm(scene.v, axis=-1)
         vmax = float(np.nanmax(speed)) if np.isfinite(speed).any() else 0.0
         self.vector_scale = 0.5 * self.radius / vmax if vmax > 0 else 0.0  # s: the fastest is l/2 long

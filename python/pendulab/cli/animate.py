@@ -15,13 +15,13 @@ from typing import Annotated
 import typer
 
 from ..animate.clock import check_fps, make_clock
-from ..animate.encode import check_size, check_work, format_of, gif_fps, parse_size
+from ..animate.encode import check_size, check_work, fit_gif, format_of, gif_fps, parse_size
 from ..animate.layout import boxes, panel_names
 from ..animate.movie import Movie
 from ..scenario import ScenarioError, load_scenario
 from ..theory.exact import exact
 from ..trajectory import Trajectory
-from .common import EXIT_INTERRUPTED, _fail, _say, _user_errors, app
+from .common import EXIT_INTERRUPTED, _fail, _say, _scenario_file, _user_errors, app
 
 
 def _check_movie_path(out: Path) -> str:
@@ -51,7 +51,9 @@ def animate(
     scenario: Annotated[
         Path,
         typer.Argument(
-            metavar="SCENARIO", help="Scenario file (TOML); see docs/scenarios.md.", show_default=False
+            metavar="SCENARIO",
+            help="Scenario file (TOML) or a shipped example's name (rosette); see docs/scenarios.md.",
+            show_default=False,
         ),
     ],
     out: Annotated[
@@ -67,13 +69,26 @@ def animate(
         ),
     ] = False,
     panels: Annotated[str, typer.Option(help="Comma-separated panels: 3d, top, z, reduced, veff.")] = "3d",
-    fps: Annotated[float, typer.Option(help="Frames per second of video (GIF: 100/n, at most 50).")] = 30.0,
+    fps: Annotated[
+        float | None,
+        typer.Option(
+            help="Frames per second of video (default 30; GIF: 100/n, at most 50; default 20 or less "
+            "to fit).",
+            show_default=False,
+        ),
+    ] = None,
     speed: Annotated[float, typer.Option(help="Simulated seconds per second of video.")] = 1.0,
     duration: Annotated[
         float | None,
         typer.Option(help="Seconds of video (default: the whole run at this speed).", show_default=False),
     ] = None,
-    size: Annotated[str, typer.Option(help="WIDTHxHEIGHT in pixels (even for .mp4 and .webm).")] = "1280x720",
+    size: Annotated[
+        str | None,
+        typer.Option(
+            help="WIDTHxHEIGHT in pixels (even for .mp4 and .webm; default 1280x720, GIF 640x360).",
+            show_default=False,
+        ),
+    ] = None,
     trail: Annotated[
         float | None,
         typer.Option(
@@ -95,11 +110,22 @@ def animate(
     number of frames); Ctrl-C stops, leaves no file and exits with code 130."""
     with _user_errors():
         fmt = _check_movie_path(out)
-        frame_size = parse_size(size)
+        given_size = parse_size(size) if size is not None else None
+        sc = load_scenario(_scenario_file(scenario)).with_overrides(t_end=t_end)
+        sim = sc.spec.simulation
+        if fmt == "gif":  # what is not given is chosen to fit a GIF's pixel cap (the speed too)
+            chosen = size is None or fps is None
+            if duration is None:
+                frame_size, fps, speed = fit_gif(sim.t_end - sim.t0, given_size, fps, speed)
+            else:
+                frame_size, fps, _ = fit_gif(duration * speed, given_size, fps, speed)
+            if chosen and not quiet:
+                _say(f"GIF: {frame_size[0]}x{frame_size[1]} at {fps:.3g} frames/s, speed {speed:g}", err=True)
+        else:
+            frame_size = given_size or (1280, 720)
+            fps = 30.0 if fps is None else fps
         check_size(fmt, frame_size)
         boxes(panel_names(panels, 1), *frame_size)
-        sc = load_scenario(scenario).with_overrides(t_end=t_end)
-        sim = sc.spec.simulation
         if sc.spec.pendulum.model == "spring":
             raise ScenarioError(
                 str(scenario),
