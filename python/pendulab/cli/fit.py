@@ -24,6 +24,7 @@ from ..fitting import fit
 from ..fitting.problem import FITTABLE_MODELS, model_params
 from ..fitting.table import read_table_notes
 from ..model import Pendulum
+from ..scenario.examples import find as find_example
 from ..variants.spring import SwingingSpring
 from .common import _fail, _say, _user_errors, app
 
@@ -97,7 +98,13 @@ def _number(text: str, what: str) -> float:
 
 @app.command("fit", short_help="Fit length, g, damping and the start to measured data (CSV).")
 def fit_cmd(
-    data: Annotated[Path, typer.Argument(metavar="DATA", help="CSV file of measurements (SI units).")],
+    data: Annotated[
+        Path,
+        typer.Argument(
+            metavar="DATA",
+            help="CSV file of measurements (SI units), or a shipped data set: example:filmed_swing.",
+        ),
+    ],
     model: Annotated[str, typer.Option(help=f"Model: {', '.join(FITTABLE_MODELS)}.")] = "ideal",
     fit_names: Annotated[
         str, typer.Option("--fit", help="Parameters to fit, comma separated (e.g. length,g,damping,pivot).")
@@ -157,7 +164,7 @@ def fit_cmd(
         else:
             pendulum = Pendulum(**base, model=model, **values)
         names = [c.strip() for c in columns.split(",")] if columns else None
-        kwargs, notes = read_table_notes(data, names)
+        kwargs, notes = read_table_notes(find_example(data, "data"), names)
         for note in notes:
             _say(f"data: {note}", err=True)
         kinds = [k for k in kwargs if k != "t"]

@@ -1,11 +1,12 @@
-"""The example scenarios and sweeps shipped inside the package (data files in
-``pendulab/examples/scenarios/*.toml`` and ``pendulab/examples/sweeps/*.toml``; the source tree's
-``examples/scenarios`` and ``examples/sweeps`` link there), found by name: ``pendulab run
-rosette``, ``pendulab scenarios``, ``pendulab sweep rotation_number``, the lab's scenario menu.
+"""The example scenarios, sweeps and measured data sets shipped inside the package (files in
+``pendulab/examples/scenarios/*.toml``, ``pendulab/examples/sweeps/*.toml`` and
+``pendulab/examples/data/*.csv``; the source tree's ``examples/scenarios``, ``examples/sweeps`` and
+``examples/data`` link there), found by name: ``pendulab run rosette``, ``pendulab scenarios``,
+``pendulab sweep rotation_number``, ``pendulab fit example:filmed_swing``, the lab's scenario menu.
 
-A name is a file's stem (``rosette`` for ``scenarios/rosette.toml``). :func:`find` takes either a
-path to a TOML file or such a name; a path that exists always wins, so a local ``rosette.toml`` is
-never shadowed by the example of the same name.
+A name is a file's stem (``rosette`` for ``scenarios/rosette.toml``), optionally written
+``example:rosette``. :func:`find` takes either a path to a file or such a name; a path that exists
+always wins, so a local ``rosette.toml`` is never shadowed by the example of the same name.
 """
 
 from __future__ import annotations
@@ -15,10 +16,13 @@ from pathlib import Path
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
 SCENARIOS = EXAMPLES / "scenarios"
 SWEEPS = EXAMPLES / "sweeps"
+DATA = EXAMPLES / "data"
+PREFIX = "example:"
+_SUFFIX = {"scenario": ".toml", "sweep": ".toml", "data": ".csv"}
 
 
-def _by_name(folder: Path) -> dict[str, Path]:
-    return {p.stem: p for p in sorted(folder.glob("*.toml"))} if folder.is_dir() else {}
+def _by_name(folder: Path, suffix: str = ".toml") -> dict[str, Path]:
+    return {p.stem: p for p in sorted(folder.glob(f"*{suffix}"))} if folder.is_dir() else {}
 
 
 def scenario_files() -> dict[str, Path]:
@@ -31,23 +35,39 @@ def sweep_files() -> dict[str, Path]:
     return _by_name(SWEEPS)
 
 
+def data_files() -> dict[str, Path]:
+    """The shipped measured data sets (CSV, SI units; ``docs/fit.md``) by name, sorted by name."""
+    return _by_name(DATA, ".csv")
+
+
 def find(text: str | Path, kind: str = "scenario") -> Path:
     """The file ``text`` names: an existing path as given, else the shipped example ``kind``
-    (``"scenario"`` or ``"sweep"``) of that name (with or without ``.toml``).
+    (``"scenario"``, ``"sweep"`` or ``"data"``) of that name, with or without its suffix
+    (``.toml``; ``.csv`` for data) and with or without the prefix ``example:``.
 
     Raises :class:`FileNotFoundError` naming the argument and listing the examples of that kind.
+
+    Examples
+    --------
+    >>> find("rosette").name
+    'rosette.toml'
+    >>> find("example:filmed_swing", "data").name
+    'filmed_swing.csv'
     """
-    if kind not in ("scenario", "sweep"):
-        raise ValueError(f"kind = {kind!r}: must be 'scenario' or 'sweep'")
+    if kind not in _SUFFIX:
+        raise ValueError(f"kind = {kind!r}: must be 'scenario', 'sweep' or 'data'")
     path = Path(text)
     if path.is_file():
         return path
-    examples = scenario_files() if kind == "scenario" else sweep_files()
-    name = path.name[: -len(".toml")] if path.name.endswith(".toml") and path.parent == Path() else str(text)
+    examples = {"scenario": scenario_files, "sweep": sweep_files, "data": data_files}[kind]()
+    name = str(text).removeprefix(PREFIX)
+    suffix = _SUFFIX[kind]
+    if name.endswith(suffix) and Path(name).parent == Path():
+        name = name[: -len(suffix)]
     if name in examples:
         return examples[name]
     known = ", ".join(examples) or "none shipped"
+    listing = "`pendulab scenarios` lists them" if kind != "data" else "docs/fit.md describes them"
     raise FileNotFoundError(
-        f"{text}: No such file, and no example {kind} of that name (examples: {known}; "
-        f"`pendulab scenarios` lists them)"
+        f"{text}: No such file, and no example {kind} of that name (examples: {known}; {listing})"
     )

@@ -24,6 +24,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
+
 import pendulab as pl
 
 HERE = Path(__file__).resolve().parent
