@@ -3,7 +3,8 @@
 Pendulab's docstrings are prose; the few with a NumPy-style ``Parameters`` section write each entry on
 one line, ``name : description``, where the NumPy convention reads the text after the colon as the
 type. This extension rewrites such entries to ``name`` followed by the indented description before
-the docstring is parsed, so the parameters table shows the description as a description, and puts
+the docstring is parsed (``a, b : text`` as one entry each, so that each row shows its own default from
+the signature), so the parameters table shows the description as a description, and puts
 prose that follows the section under a "Notes" header (a NumPy section runs to the next header).
 """
 
@@ -12,7 +13,10 @@ from __future__ import annotations
 import re
 from typing import Any
 
-import griffe
+try:
+    import griffe
+except ImportError:  # python/tests/test_docs_api.py uses one_line_entries_to_numpy without the docs tools
+    griffe = None
 
 _SECTION = re.compile(r"^(?P<indent>[ \t]*)(?:Parameters|Other Parameters)\n(?P=indent)-{3,}\n", re.MULTILINE)
 _ENTRY = re.compile(r"^(?P<name>\*{0,2}\w+(?:, \*{0,2}\w+)*) : (?P<text>.+)$")
@@ -34,16 +38,19 @@ def one_line_entries_to_numpy(text: str) -> str:
             out += ["Notes", "-----"]
             in_section = False
         match = _ENTRY.match(line) if in_section else None
-        if match:
-            out += [match.group("name"), f"    {match.group('text')}"]
+        if match:  # "rtol, atol : text": one entry each, so each row gets its own default
+            for name in match.group("name").split(", "):
+                out += [name, f"    {match.group('text')}"]
         else:
             out.append(line)
     return "\n".join(out)
 
 
-class OneLineNumpyParameters(griffe.Extension):
-    """Applies :func:`one_line_entries_to_numpy` to every docstring."""
+if griffe is not None:
 
-    def on_instance(self, *, obj: griffe.Object, **kwargs: Any) -> None:
-        if obj.docstring is not None and "----" in obj.docstring.value:
-            obj.docstring.value = one_line_entries_to_numpy(obj.docstring.value)
+    class OneLineNumpyParameters(griffe.Extension):
+        """Applies :func:`one_line_entries_to_numpy` to every docstring."""
+
+        def on_instance(self, *, obj: griffe.Object, **kwargs: Any) -> None:
+            if obj.docstring is not None and "----" in obj.docstring.value:
+                obj.docstring.value = one_line_entries_to_numpy(obj.docstring.value)

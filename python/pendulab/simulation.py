@@ -132,6 +132,9 @@ def simulate(
 
     Parameters
     ----------
+    pendulum : the :class:`Pendulum` (model and parameters, SI units).
+    state : the start, a :class:`State` on TS² of this pendulum (``pendulum.state_from_angles(...)``).
+    t_end : the end time [s] (> ``t0``).
     method : a name from :func:`methods` (default ``"rattle"``; ``"dop853"`` for a pendulum with a
         user ``force`` callable, which the RATTLE family cannot integrate).
     dt : step size [s] of fixed-step methods (default 1e-3 s); for ``dop853`` an optional initial step.
@@ -144,6 +147,7 @@ def simulate(
     save_every : keep every n-th step (default 1), plus the initial and final states.
     save_at : array of times [s] to keep instead (dense output for ``dop853``; fixed-step methods
         land on each time exactly).
+    t0 : the start time [s] of ``state`` (default 0.0).
     progress : show a progress bar (default: only for runs of more than 5·10⁶ steps).
     max_saved_bytes : memory limit for saved samples (default 4 GiB); exceeding it is an error
         raised before the run starts (fixed-step methods) or when reached (``dop853``).
