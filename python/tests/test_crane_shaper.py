@@ -141,3 +141,19 @@ def test_bad_shaper_input(kwargs: dict, word: str) -> None:
 def test_bad_residual_vibration_input() -> None:
     with pytest.raises(InvalidInputError, match="omega"):
         crane.residual_vibration(crane.shaper("zv", 1.0), [1.0, -2.0])
+
+
+def test_shaper_for_a_range_of_rope_lengths() -> None:
+    lo, hi = crane.rope_range(8.0, 12.0)
+    assert (lo, hi) == pytest.approx((math.sqrt(9.81 / 12), math.sqrt(9.81 / 8)), rel=1e-15)
+    s = crane.shaper_for_range(lo, hi)  # ±10 % around the middle: ZVD (width 0.287 > 0.2) suffices
+    assert s.kind == "zvd" and s.omega == pytest.approx(0.5 * (lo + hi))
+    assert crane.worst_vibration(s, lo, hi) <= 0.05
+    # the midpoint is the best design: V is equal at both ends, and moving it makes one end worse
+    v = crane.residual_vibration(s, [lo, hi])
+    assert v[0] == pytest.approx(v[1], rel=1e-9)
+    for shift in (0.98, 1.02):
+        other = crane.shaper("zvd", omega=s.omega * shift)
+        assert crane.worst_vibration(other, lo, hi) > crane.worst_vibration(s, lo, hi)
+    with pytest.raises(InvalidInputError, match="no single shaper"):
+        crane.shaper_for_range(0.5, 2.0)

@@ -21,6 +21,7 @@ except ImportError as exc:  # pragma: no cover - exercised only without SciPy
 from .lqr import LQR, LQRRun, lqr
 from .move import Profile, profile
 from .paths import Gantry, Path, Sampled, Tower, move
+from .robust import rope_range, shaper_for_range, worst_vibration
 from .shaper import KINDS, Shaper, insensitivity, residual_vibration, shaper
 from .system import Crane, CraneRun, Hoist, Wind
 
@@ -43,5 +44,8 @@ __all__ = [
     "move",
     "profile",
     "residual_vibration",
+    "rope_range",
     "shaper",
+    "shaper_for_range",
+    "worst_vibration",
 ]
