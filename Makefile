@@ -15,7 +15,7 @@ STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
-	bench-peers-portable check-aarch64
+	bench-peers-portable check-aarch64 wasm test-wasm lab-html bench-wasm
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -110,6 +110,23 @@ fmt: venv
 test-rust:
 	cargo test --release -p pendulab-core
 
+# The lab's engine as WebAssembly (crates/pendulab-wasm, plain C ABI; docs/lab.md): needs the target,
+# `rustup target add wasm32-unknown-unknown` (.ci/run installs it).
+WASM := target/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm
+wasm:
+	@rustc --print target-libdir --target wasm32-unknown-unknown >/dev/null 2>&1 && \
+		test -d "$$(rustc --print target-libdir --target wasm32-unknown-unknown)" || { \
+		echo "error: the Rust target wasm32-unknown-unknown is not installed: run 'rustup target add wasm32-unknown-unknown'" >&2; exit 1; }
+	cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm
+	@ls -l $(WASM)
+
+# The engine's tests: natively (cargo test), then the .wasm in node against the native build's
+# trajectories of every lab model and method (bit for bit, or 1e-12 l where libm differs).
+test-wasm: wasm
+	cargo test --release -p pendulab-wasm
+	cargo build --release -p pendulab-wasm --example trajectory
+	node crates/pendulab-wasm/tests/parity.mjs $(WASM) target/release/examples/trajectory
+
 test-python: build
 	$(VENV)/bin/pytest python/tests -q
 
@@ -132,7 +149,7 @@ docs-serve: build $(VENV)/.docs-deps
 	$(VENV)/bin/mkdocs serve --strict -a 127.0.0.1:8001
 
 test: DOCS_EXECUTE := false
-test: lint test-rust test-python test-web test-e2e docs test-wheel
+test: lint test-rust test-wasm test-python test-web test-e2e docs test-wheel
 
 # Hostile input, long (docs/limits.md, "Fuzzing"): FUZZ_CASES generated inputs per entry point of the
 # Python API (hypothesis) and of the Rust core (proptest), and the whole corpus of FUZZ_FILES mutated

@@ -178,6 +178,10 @@ pub enum Error {
         /// What happened, with the time.
         reason: String,
     },
+    /// A request a live session ([`crate::live`]) cannot carry out, said in full (what was asked and
+    /// what is allowed).
+    #[error("{0}")]
+    Refused(String),
 }
 
 /// What to do after a divergence: a smaller step, and a structure-preserving method unless one is in use.

@@ -27,6 +27,8 @@
 //! - [`elastic`]: the swinging spring (T-7.4) with its own symplectic integrators.
 //! - [`ensemble`]: many trajectories at once (SoA blocks, rayon), RATTLE.
 //! - [`error`]: the error type.
+//! - [`live`]: the lab's live session (pacing, per-tick budget with the time passed in, frame records,
+//!   error estimate), shared by the server and the page's WebAssembly engine.
 //! - [`isa`]: run-time choice of the instruction set (AVX2/FMA, AVX-512) for the hot loops.
 
 pub mod crane;
@@ -38,6 +40,7 @@ pub mod error;
 pub mod exact;
 pub mod integrate;
 pub mod isa;
+pub mod live;
 pub mod model;
 pub mod quadrature;
 pub mod reduce;

@@ -1,0 +1,294 @@
+//! What a live session runs: a pendulum of any lab model by registry name ([`LivePendulum`]) and its
+//! incremental stepper ([`LiveStepper`]) — the rod models through [`Stepper`] over [`AnyModel`], the
+//! swinging spring (T-7.4) through [`SpringStepper`], the string through [`StringStepper`] — with the
+//! frame record of its current state ([`super::frame`]). SI units: l [m], m [kg], g [m/s²], t [s].
+
+use super::frame::{rod_record, Record};
+use crate::elastic::{SpringStepper, SwingingSpring};
+use crate::error::{Error, Result};
+use crate::integrate::Method;
+use crate::model::registry::{check_limits, spec, AnyModel};
+use crate::model::string::StringPendulum;
+use crate::model::{self as model_mod};
+use crate::state::{Params, State};
+use crate::stepper::{SolveOptions, Stepper};
+use crate::string_run::{StringEvent, StringStepper};
+use crate::DVec3;
+
+/// The lab's models that step with their own core steppers, not [`Stepper`].
+pub const OWN_STEPPER_MODELS: [&str; 2] = ["spring", "string"];
+/// The spring's methods and their orders: Störmer–Verlet (2) and its triple jump (4).
+pub const SPRING_ORDERS: [(&str, u32); 2] = [("rattle", 2), ("rattle4", 4)];
+/// The string's methods: fixed step and keeping TS² in the taut phases.
+pub const STRING_METHODS: [&str; 5] = ["rattle", "rattle4", "rattle6", "rattle8", "rkmk4"];
+/// The method a session switches to when its method cannot run the spring or the string.
+pub const DEFAULT_METHOD: Method = Method::Rattle;
+
+/// The methods that can run `model` in the lab (None: every method of [`Stepper`]).
+pub fn methods_for(model: &str) -> Option<Vec<&'static str>> {
+    match model {
+        "spring" => Some(SPRING_ORDERS.iter().map(|(m, _)| *m).collect()),
+        "string" => Some(STRING_METHODS.to_vec()),
+        _ => None,
+    }
+}
+
+/// The models a live session runs: the registry's `interactive` ones, the spring and the string.
+pub fn live_models() -> Vec<&'static str> {
+    crate::model::registry::MODELS
+        .iter()
+        .filter(|m| m.interactive || OWN_STEPPER_MODELS.contains(&m.name))
+        .map(|m| m.name)
+        .collect()
+}
+
+/// A pendulum of a lab model: the registry name, l, m, g ([`Params`]; for the spring l is the rest
+/// length l₀) and every own parameter of the model (the given ones, else the registry's defaults).
+#[derive(Debug, Clone, PartialEq)]
+pub struct LivePendulum {
+    /// Registry name.
+    pub model: &'static str,
+    /// Length [m], mass [kg], g [m/s²].
+    pub params: Params,
+    /// The model's own parameters in the registry's order (SI units).
+    pub own: Vec<(&'static str, f64)>,
+}
+
+impl LivePendulum {
+    /// Model `name` with l [m], m [kg], g [m/s²] and own parameters by name (defaults for the rest);
+    /// errors name an unknown model, an unknown parameter or a value outside the registry's limits.
+    pub fn new(name: &str, length: f64, mass: f64, g: f64, given: &[(String, f64)]) -> Result<Self> {
+        let ms = spec(name)?;
+        if !live_models().contains(&ms.name) {
+            return Err(Error::Refused(format!(
+                "model {:?} does not run in the lab (use pendulab run); the lab's models: {}",
+                ms.name,
+                live_models().join(", ")
+            )));
+        }
+        let params = Params::new(length, mass, g)?;
+        let mut own: Vec<(&'static str, f64)> = ms.params.iter().map(|p| (p.name, p.default)).collect();
+        for (key, value) in given {
+            let Some(i) = ms.params.iter().position(|p| p.name == key) else {
+                return Err(Error::UnknownParameter {
+                    model: ms.name,
+                    name: key.clone(),
+                    available: ms.params.iter().map(|p| p.name).collect::<Vec<_>>().join(", "),
+                });
+            };
+            own[i].1 = check_limits(&ms.params[i], *value)?;
+        }
+        let p = Self { model: ms.name, params, own };
+        p.check()?;
+        Ok(p)
+    }
+
+    fn check(&self) -> Result<()> {
+        match self.model {
+            "spring" => self.spring().map(|_| ()),
+            "string" => StringPendulum::new(self.params, self.get("restitution")).map(|_| ()),
+            _ => self.rod_model().map(|_| ()),
+        }
+    }
+
+    /// The own parameter `name` (0 when the model has none of that name).
+    pub fn get(&self, name: &str) -> f64 {
+        self.own.iter().find(|(n, _)| *n == name).map_or(0.0, |(_, v)| *v)
+    }
+
+    /// The same model with some of l, m, g and own parameters changed, or another model (`model`;
+    /// its own parameters start from the registry's defaults, overridden by `given`).
+    pub fn rebuild(
+        &self,
+        model: Option<&str>,
+        length: Option<f64>,
+        mass: Option<f64>,
+        g: Option<f64>,
+        given: &[(String, f64)],
+    ) -> Result<Self> {
+        let name = model.unwrap_or(self.model);
+        let mut all: Vec<(String, f64)> = if name == self.model {
+            self.own.iter().map(|(n, v)| (n.to_string(), *v)).collect()
+        } else {
+            Vec::new()
+        };
+        all.extend(given.iter().cloned());
+        let p = &self.params;
+        Self::new(name, length.unwrap_or(p.length), mass.unwrap_or(p.mass), g.unwrap_or(p.g), &all)
+    }
+
+    /// The rod model (every model but the spring and the string).
+    pub fn rod_model(&self) -> Result<AnyModel> {
+        AnyModel::build(self.model, self.params, &self.own)
+    }
+
+    fn spring(&self) -> Result<SwingingSpring> {
+        let p = &self.params;
+        SwingingSpring::new(self.get("stiffness") / p.mass, p.length, p.g, p.mass)
+    }
+
+    /// A state (x [m], v [m/s]) of this pendulum: on TS² (or moved there with `project`); the spring
+    /// takes any finite state with x ≠ 0; the string also a slack one strictly inside the sphere.
+    pub fn state(&self, x: DVec3, v: DVec3, project: bool) -> Result<State> {
+        let finite = x.is_finite() && v.is_finite();
+        if self.model == "spring" {
+            if !finite || x == DVec3::ZERO {
+                return Err(Error::InvalidParameter {
+                    name: "(x, v)",
+                    value: x.length(),
+                    allowed: "the spring's state must be finite with x ≠ 0 (m, m/s)",
+                });
+            }
+            return Ok(State { x, v });
+        }
+        if self.model == "string" && finite && x.length() < self.params.length * (1.0 - 1e-9) {
+            return Ok(State { x, v });
+        }
+        if project {
+            Ok(State::projected(&self.params, x, v)?.0)
+        } else {
+            State::on_tangent_bundle(&self.params, x, v)
+        }
+    }
+
+    /// The state at polar angle θ [rad] from the downward vertical, azimuth φ, rates θ̇, φ̇ [rad/s]; the
+    /// spring's on the sphere of its equilibrium length l₀ + m g/k (l₀ when that is not positive).
+    pub fn state_from_angles(&self, theta: f64, phi: f64, theta_dot: f64, phi_dot: f64) -> Result<State> {
+        let mut params = self.params;
+        if self.model == "spring" {
+            let ell = self.spring()?.equilibrium_length();
+            if ell.is_finite() && ell > 0.0 {
+                params.length = ell;
+            }
+        }
+        State::from_angles(&params, theta, phi, theta_dot, phi_dot)
+    }
+
+    /// The state for this pendulum after a change of model or parameters: kept for the spring and the
+    /// slack string, else moved onto TS².
+    pub fn carry(&self, s: &State) -> Result<State> {
+        self.state(s.x, s.v, true)
+    }
+}
+
+/// A stepper of a [`LivePendulum`], whichever kind its model needs.
+#[derive(Debug, Clone)]
+pub enum LiveStepper {
+    /// A rod model through the incremental [`Stepper`] (every method).
+    Rod(Box<Stepper<AnyModel>>),
+    /// The swinging spring: whole steps of dt of Störmer–Verlet or its triple jump.
+    Spring(SpringStepper),
+    /// The string: the grid t₀ + k·dt, its taut/slack mode inside.
+    String(Box<StringStepper>),
+}
+
+impl LiveStepper {
+    /// A stepper of `p` from `state` at `t0` [s] with `method`, step `dt` [s] (0 for `dop853`: automatic)
+    /// and, for `dop853`, `rtol`, `atol`.
+    pub fn new(
+        p: &LivePendulum,
+        state: State,
+        t0: f64,
+        method: Method,
+        dt: f64,
+        rtol: f64,
+        atol: f64,
+    ) -> Result<Self> {
+        let name = method.info().name;
+        if let Some(allowed) = methods_for(p.model) {
+            if !allowed.contains(&name) {
+                let what = if p.model == "spring" {
+                    "it leaves the sphere: rattle runs Störmer–Verlet (order 2), rattle4 its triple jump (order 4)"
+                } else {
+                    "its taut phases need a fixed-step method that keeps TS²"
+                };
+                return Err(Error::Refused(format!(
+                    "method {name:?} cannot run the {:?} model ({what}); use one of {}",
+                    p.model,
+                    allowed.join(", ")
+                )));
+            }
+        }
+        Ok(match p.model {
+            "spring" => {
+                let order = SPRING_ORDERS.iter().find(|(m, _)| *m == name).map_or(2, |(_, o)| *o);
+                LiveStepper::Spring(SpringStepper::new(p.spring()?, state, t0, dt, order)?)
+            }
+            "string" => {
+                let model = StringPendulum::new(p.params, p.get("restitution"))?;
+                LiveStepper::String(Box::new(StringStepper::new(model, t0, state, method, dt)?))
+            }
+            _ => {
+                let options = SolveOptions { method, dt, rtol, atol, project: true };
+                LiveStepper::Rod(Box::new(Stepper::new(p.rod_model()?, t0, state, &options)?))
+            }
+        })
+    }
+
+    /// Time reached [s].
+    pub fn t(&self) -> f64 {
+        match self {
+            LiveStepper::Rod(s) => s.t(),
+            LiveStepper::Spring(s) => s.t(),
+            LiveStepper::String(s) => s.t(),
+        }
+    }
+
+    /// State reached (x [m], v [m/s]).
+    pub fn state(&self) -> State {
+        match self {
+            LiveStepper::Rod(s) => *s.state(),
+            LiveStepper::Spring(s) => s.state(),
+            LiveStepper::String(s) => s.state(),
+        }
+    }
+
+    /// `n` steps (`dop853`: n accepted steps).
+    pub fn step(&mut self, n: u64) -> Result<()> {
+        match self {
+            LiveStepper::Rod(s) => s.step_n(n),
+            LiveStepper::Spring(s) => s.step(n),
+            LiveStepper::String(s) => s.step(n),
+        }
+    }
+
+    /// Towards `t` [s] with at most `cap` steps; true once exactly there (`dop853` lands on `t`).
+    pub fn step_to_capped(&mut self, t: f64, cap: u64) -> Result<bool> {
+        match self {
+            LiveStepper::Rod(s) => s.step_to_capped(t, cap),
+            _ => unreachable!("only the rod models run the adaptive method"),
+        }
+    }
+
+    /// The string's events since the last call (empty for the other models).
+    pub fn take_events(&mut self) -> Vec<StringEvent> {
+        match self {
+            LiveStepper::String(s) => s.take_events(),
+            _ => Vec::new(),
+        }
+    }
+
+    /// The frame record of the current state (`error_x` unknown).
+    pub fn record(&self) -> Record {
+        match self {
+            LiveStepper::Rod(s) => rod_record(s.model(), s.t(), s.state()),
+            LiveStepper::Spring(s) => {
+                let (sp, st) = (s.spring(), s.state());
+                Record::own(
+                    s.t(),
+                    &st,
+                    sp.energy(&st),
+                    sp.j3(&st),
+                    sp.tension(&st),
+                    sp.acceleration(st.x),
+                    true,
+                )
+            }
+            LiveStepper::String(s) => {
+                let (m, st) = (s.model(), s.state());
+                let (e, j) = (model_mod::energy(m, &st), model_mod::j3(m, &st));
+                Record::own(s.t(), &st, e, j, s.tension(), s.acceleration(), s.is_taut())
+            }
+        }
+    }
+}

@@ -1,0 +1,150 @@
+//! The live session (`pendulab_core::live`): its frames are the stepper's states bit for bit, paced by
+//! the time passed in, within the budget of the clock passed in; the error estimate; the commands.
+
+use pendulab_core::live::session::StateSpec;
+use pendulab_core::live::{Command, LivePendulum, LiveSession, Out, Record, Setup, TICK_BUDGET};
+use pendulab_core::model::registry::AnyModel;
+use pendulab_core::{DVec3, Method, Params, SolveOptions, Stepper};
+use std::cell::Cell;
+
+fn setup(model: &str, method: Method, dt: f64) -> Setup {
+    let pendulum = LivePendulum::new(model, 1.0, 1.0, 9.81, &[]).unwrap();
+    let state = pendulum.state_from_angles(1.0, 0.0, 0.0, 1.5).unwrap();
+    Setup {
+        name: Some("test".into()),
+        title: None,
+        pendulum,
+        state,
+        method,
+        dt,
+        rtol: 1e-10,
+        atol: 1e-12,
+        t0: 0.0,
+    }
+}
+
+fn frames(out: &[Out]) -> Vec<Record> {
+    out.iter().filter_map(|o| if let Out::Frames(r) = o { Some(r.clone()) } else { None }).flatten().collect()
+}
+
+fn free_clock() -> f64 {
+    0.0 // never spent: an unlimited budget
+}
+
+#[test]
+fn ticks_step_the_same_steps_as_the_stepper() {
+    let s = setup("ideal", Method::Rattle, 1e-3);
+    let mut session = LiveSession::new(s.clone()).unwrap();
+    let mut got = frames(&session.first_messages(&free_clock));
+    for _ in 0..60 {
+        got.extend(frames(&session.tick(Vec::new(), 1.0 / 60.0, &free_clock, TICK_BUDGET, 0)));
+    }
+    // one second of simulated time at time scale 1, in whole steps of dt
+    let last = got.last().unwrap();
+    assert!((last.t() - 1.0).abs() < 1.5e-3, "t = {}", last.t());
+    let model = AnyModel::build("ideal", Params::new(1.0, 1.0, 9.81).unwrap(), &[]).unwrap();
+    let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..Default::default() };
+    let mut reference = Stepper::new(model, 0.0, s.state, &opts).unwrap();
+    for r in &got[1..] {
+        let n = ((r.t() - reference.t()) / 1e-3).round() as u64;
+        reference.step_n(n).unwrap();
+        assert_eq!(r.t(), reference.t());
+        assert_eq!(r.x(), reference.state().x); // bit for bit
+                                                // the exact error is small and known (RATTLE's global error at dt = 1 ms, ~1e-6 m)
+        let e = r.0[18];
+        assert!((0.0..1e-4).contains(&e), "error_x = {e}");
+    }
+    assert!(got[1..].iter().any(|r| r.0[18] > 0.0));
+    assert_eq!(got[0].0[18], 0.0);
+}
+
+#[test]
+fn an_exhausted_budget_lags_and_never_piles_up_time() {
+    // every reading of the clock costs 1 ms: the budget of 6 ms is spent after a few slices
+    let now = Cell::new(0.0);
+    let clock = || {
+        now.set(now.get() + 1e-3);
+        now.get()
+    };
+    let mut session = LiveSession::new(setup("ideal", Method::Rattle8, 1e-5)).unwrap();
+    session.time_scale = 100.0;
+    let out = session.tick(Vec::new(), 0.1, &clock, TICK_BUDGET, 0);
+    assert!(session.lagging);
+    let t = session.stepper.t();
+    assert!(t > 0.0 && t < 10.0, "t = {t}");
+    assert!(out.iter().any(|o| matches!(o, Out::Status)), "the status says lagging");
+}
+
+#[test]
+fn richardson_estimate_is_the_scaled_difference_to_the_half_step_companion() {
+    let s = setup("damped", Method::Rk4, 1e-2);
+    let mut session = LiveSession::new(s.clone()).unwrap();
+    let mut got = Vec::new();
+    for _ in 0..30 {
+        got.extend(frames(&session.tick(Vec::new(), 1.0 / 60.0, &free_clock, 1.0, 0)));
+    }
+    let model = AnyModel::build("damped", s.pendulum.params, &s.pendulum.own).unwrap();
+    let half = SolveOptions { method: Method::Rk4, dt: 5e-3, ..Default::default() };
+    let mut fine = Stepper::new(model, 0.0, s.state, &half).unwrap();
+    let r = got.last().unwrap();
+    fine.step_n((r.t() / 5e-3).round() as u64).unwrap();
+    let want = 16.0 / 15.0 * (r.x() - fine.state().x).length();
+    assert_eq!(r.0[18], want);
+    assert!(want > 0.0);
+}
+
+#[test]
+fn commands_change_the_session_or_name_what_is_wrong() {
+    let mut session = LiveSession::new(setup("ideal", Method::Rk4, 1e-3)).unwrap();
+    // a length change keeps the angles
+    let before = session.stepper.state();
+    session.apply(Command::SetParams { length: Some(2.0), mass: None, g: None, params: vec![] }).unwrap();
+    assert_eq!(session.stepper.state().x, before.x * 2.0);
+    assert_eq!(session.epoch, 1);
+    // an unknown parameter is named, the session unchanged
+    let e = session
+        .apply(Command::SetParams { length: None, mass: None, g: None, params: vec![("dampin".into(), 1.0)] })
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("dampin") && e.contains("has no parameter"), "{e}");
+    assert_eq!(session.epoch, 1);
+    // the spring cannot run rk4: the session switches to rattle
+    session
+        .apply(Command::SetModel { model: "spring".into(), params: vec![("stiffness".into(), 200.0)] })
+        .unwrap();
+    assert_eq!(session.method, Method::Rattle);
+    assert_eq!(session.pendulum.get("stiffness"), 200.0);
+    let e =
+        session.apply(Command::SetMethod { method: Some(Method::Dop853), dt: None }).unwrap_err().to_string();
+    assert!(e.contains("use one of rattle, rattle4"), "{e}");
+    assert_eq!(session.method, Method::Rattle);
+    // an offline model is refused
+    let e = session.apply(Command::SetModel { model: "sampled_pivot".into(), params: vec![] }).unwrap_err();
+    assert!(e.to_string().contains("does not run in the lab"), "{e}");
+    // a state off the sphere of the rod
+    session.apply(Command::SetModel { model: "ideal".into(), params: vec![] }).unwrap();
+    let off = StateSpec::Cartesian { x: DVec3::new(0.0, 0.0, -1.0), v: DVec3::ZERO, project: false };
+    assert!(session.apply(Command::SetState(off)).unwrap_err().to_string().contains("not on TS²"));
+    // step: n steps, paused, taken in the next tick
+    session.apply(Command::Step(5)).unwrap();
+    assert!(session.paused);
+    let t = session.stepper.t();
+    let out = session.tick(Vec::new(), 0.1, &free_clock, TICK_BUDGET, 0);
+    assert!((session.stepper.t() - t - 5e-3).abs() < 1e-12);
+    assert_eq!(frames(&out).len(), 1);
+}
+
+#[test]
+fn string_events_reach_the_tick() {
+    let mut s = setup("string", Method::Rattle, 1e-3);
+    s.state = s.pendulum.state_from_angles(2.0, 0.0, 0.0, 0.0).unwrap(); // above the equator at rest: goes slack
+    let mut session = LiveSession::new(s).unwrap();
+    let mut events = 0;
+    let mut slack = false;
+    for _ in 0..120 {
+        let out = session.tick(Vec::new(), 1.0 / 60.0, &free_clock, 1.0, 0);
+        events += out.iter().filter(|o| matches!(o, Out::Event(..))).count();
+        slack |= frames(&out).iter().any(|r| r.0[17] == 0.0);
+    }
+    assert!(events >= 2 && slack, "{events} events, slack {slack}");
+}

@@ -1,0 +1,103 @@
+//! One page's engine: the example scenarios and a [`LiveSession`], driven by JSON command messages and
+//! ticks, answering with the same messages a `pendulab serve` WebSocket sends — binary frames of
+//! float64 records and JSON notices — packed into one buffer for the Web Worker to unpack
+//! ([`pack`]: per message a kind byte, 0 frames or 1 JSON text, its length as u32 little-endian, the
+//! bytes). Time is passed in: the seconds elapsed since the last tick and a clock for the budget.
+
+use crate::wire::{error_notice, event_notice, parse_command, setup_from, status};
+use pendulab_core::live::session::Setup;
+use pendulab_core::live::{Clock, LiveSession, Out};
+use serde_json::Value;
+
+/// A message kind in the packed buffer: binary frame records.
+pub const KIND_FRAMES: u8 = 0;
+/// A message kind in the packed buffer: a JSON notice.
+pub const KIND_JSON: u8 = 1;
+
+/// The scenarios and the session of one page (or one pendulum of two).
+pub struct Engine {
+    setups: Vec<Value>,
+    /// The session.
+    pub session: LiveSession,
+}
+
+impl Engine {
+    /// From `{"scenarios": [... as GET /api/scenarios ...], "scenario": name}`: the session starts with
+    /// the named scenario (default: the first that loads).
+    pub fn new(config: &str) -> Result<Engine, String> {
+        let cfg: Value =
+            serde_json::from_str(config).map_err(|e| format!("engine configuration is not JSON: {e}"))?;
+        let setups = cfg["scenarios"].as_array().cloned().unwrap_or_default();
+        let wanted = cfg["scenario"].as_str();
+        let first = setups
+            .iter()
+            .filter(|d| wanted.is_none() || d["name"].as_str() == wanted)
+            .find_map(|d| setup_from(d).ok())
+            .ok_or_else(|| format!("no scenario to start from (asked for {wanted:?})"))?;
+        let session = LiveSession::new(first).map_err(|e| e.to_string())?;
+        Ok(Engine { setups, session })
+    }
+
+    fn resolve(setups: &[Value], name: &str) -> Result<Setup, String> {
+        match setups.iter().find(|d| d["name"].as_str() == Some(name)) {
+            Some(d) => setup_from(d),
+            None => {
+                let names: Vec<&str> = setups.iter().filter_map(|d| d["name"].as_str()).collect();
+                Err(format!("unknown scenario {name:?}; available: {}", names.join(", ")))
+            }
+        }
+    }
+
+    /// What a new connection gets first (status, the current frame), packed.
+    pub fn first(&mut self, clock: &dyn Clock) -> Vec<u8> {
+        let out = self.session.first_messages(clock);
+        pack(&self.session, &out)
+    }
+
+    /// One tick: `messages` are the command texts received since the last tick, `elapsed` [s] the wall
+    /// clock since then, `budget` [s] the stepping time allowed; the messages to send, packed.
+    pub fn tick(&mut self, messages: &[String], elapsed: f64, clock: &dyn Clock, budget: f64) -> Vec<u8> {
+        let setups = &self.setups;
+        let commands = messages.iter().map(|m| parse_command(m, &|n| Self::resolve(setups, n))).collect();
+        let out = self.session.tick(commands, elapsed, clock, budget, 0);
+        pack(&self.session, &out)
+    }
+}
+
+/// The messages `out` as one buffer (the module doc).
+pub fn pack(session: &LiveSession, out: &[Out]) -> Vec<u8> {
+    let mut buf = Vec::new();
+    let mut put = |kind: u8, bytes: &[u8]| {
+        buf.push(kind);
+        buf.extend_from_slice(&(bytes.len() as u32).to_le_bytes());
+        buf.extend_from_slice(bytes);
+    };
+    for o in out {
+        match o {
+            Out::Frames(records) => {
+                let bytes: Vec<u8> = records.iter().flat_map(|r| r.0).flat_map(f64::to_le_bytes).collect();
+                put(KIND_FRAMES, &bytes);
+            }
+            Out::Status => put(KIND_JSON, status(session).to_string().as_bytes()),
+            Out::Error(message, command) => {
+                put(KIND_JSON, error_notice(message, *command).to_string().as_bytes())
+            }
+            Out::Event(e, epoch, skipped) => {
+                put(KIND_JSON, event_notice(e, *epoch, *skipped).to_string().as_bytes())
+            }
+        }
+    }
+    buf
+}
+
+/// The messages of a packed buffer: (kind, bytes).
+pub fn unpack(buf: &[u8]) -> Vec<(u8, &[u8])> {
+    let mut out = Vec::new();
+    let mut i = 0;
+    while i + 5 <= buf.len() {
+        let n = u32::from_le_bytes(buf[i + 1..i + 5].try_into().unwrap()) as usize;
+        out.push((buf[i], &buf[i + 5..i + 5 + n]));
+        i += 5 + n;
+    }
+    out
+}

@@ -1,0 +1,105 @@
+//! The page's engine natively (the same code runs as WebAssembly): scenarios, commands as JSON text
+//! checked as the server checks them, the packed messages (status, frames, errors).
+
+use pendulab_wasm::engine::{unpack, Engine, KIND_FRAMES, KIND_JSON};
+use serde_json::Value;
+
+const CONFIG: &str = r#"{"scenarios": [
+  {"name": "rosette", "title": "A rosette", "params": {"length": 1.0, "mass": 1.0, "g": 9.81}, "model": "ideal",
+   "model_params": {}, "start": {"x": [0.8414709848078965, 0.0, -0.5403023058681398], "v": [0.0, 2.0, 0.0]},
+   "method": "rattle", "dt": 0.001, "t0": 0.0},
+  {"name": "damped_swing", "title": "Damped", "params": {"length": 2.0, "mass": 1.0, "g": 9.81}, "model": "damped",
+   "model_params": {"damping": 0.5}, "start": {"x": [0.0, 0.0, -2.0], "v": [1.0, 0.0, 0.0]},
+   "method": "rk4", "dt": 0.002, "t0": 1.0}
+]}"#;
+
+fn clock() -> f64 {
+    0.0
+}
+
+fn messages(buf: &[u8]) -> (Vec<Value>, usize) {
+    let mut notices = Vec::new();
+    let mut records = 0;
+    for (kind, bytes) in unpack(buf) {
+        if kind == KIND_JSON {
+            notices.push(serde_json::from_slice(bytes).unwrap());
+        } else {
+            assert_eq!(kind, KIND_FRAMES);
+            assert_eq!(bytes.len() % 152, 0);
+            records += bytes.len() / 152;
+        }
+    }
+    (notices, records)
+}
+
+#[test]
+fn first_messages_are_the_status_and_a_frame() {
+    let mut e = Engine::new(CONFIG).unwrap();
+    let (notices, records) = messages(&e.first(&clock));
+    assert_eq!(records, 1);
+    let s = &notices[0];
+    assert_eq!(s["type"], "status");
+    assert_eq!(s["scenario"], "rosette");
+    assert_eq!(s["method"], "rattle");
+    assert_eq!(s["error_estimate"]["how"], "exact");
+    assert_eq!(s["frame_fields"].as_array().unwrap().len(), 19);
+}
+
+#[test]
+fn commands_are_checked_as_the_server_checks_them() {
+    let mut e = Engine::new(CONFIG).unwrap();
+    let sent = [
+        "not json",
+        r#"{"type": "fly"}"#,
+        r#"{"type": "pause", "extra": 1}"#,
+        r#"{"type": "set_params", "length": 5000}"#,
+        r#"{"type": "set_method", "method": "euler"}"#,
+        r#"{"type": "load_scenario", "name": "nowhere"}"#,
+        r#"{"type": "step", "n": 0}"#,
+        r#"{"type": "set_model", "model": "damped", "params": {"damping": -1}}"#,
+    ];
+    let (notices, _) = messages(&e.tick(&sent.map(String::from), 0.0, &clock, 1.0));
+    let errors: Vec<String> = notices
+        .iter()
+        .filter(|n| n["type"] == "error")
+        .map(|n| n["message"].as_str().unwrap().to_string())
+        .collect();
+    assert_eq!(errors.len(), sent.len(), "{errors:?}");
+    for (got, want) in errors.iter().zip([
+        "not JSON",
+        "unknown command type \"fly\"",
+        "unknown key 'extra'",
+        "length = 5000: must be between 0.001 and 1000 m",
+        "unknown method \"euler\"",
+        "unknown scenario \"nowhere\"; available: rosette, damped_swing",
+        "n = 0: an integer from 1 to 100000",
+        "invalid damping",
+    ]) {
+        assert!(got.contains(want), "{got:?} lacks {want:?}");
+    }
+    let status = notices.iter().rfind(|n| n["type"] == "status").unwrap();
+    assert_eq!(status["commands"], sent.len());
+    assert_eq!(status["epoch"], 0, "nothing changed");
+}
+
+#[test]
+fn a_scenario_loads_and_runs_paced_by_the_time_passed_in() {
+    let mut e = Engine::new(CONFIG).unwrap();
+    let cmds = [r#"{"type": "load_scenario", "name": "damped_swing"}"#.to_string()];
+    let (notices, records) = messages(&e.tick(&cmds, 0.0, &clock, 1.0));
+    assert_eq!(records, 1);
+    let s = notices.iter().find(|n| n["type"] == "status").unwrap();
+    assert_eq!(s["model"], "damped");
+    assert_eq!(s["model_params"]["damping"], 0.5);
+    assert_eq!(s["t0"], 1.0);
+    assert_eq!(s["error_estimate"]["how"], "richardson");
+    assert_eq!(s["error_estimate"]["reference"]["dt"], 0.001);
+    for _ in 0..30 {
+        e.tick(&[], 1.0 / 60.0, &clock, 1.0);
+    }
+    // half a second of simulated time in whole steps of 2 ms
+    assert!((e.session.stepper.t() - 1.5).abs() < 2.5e-3, "{}", e.session.stepper.t());
+    let set = [r#"{"type": "set_time_scale", "time_scale": 4}"#.to_string()];
+    let (_, records) = messages(&e.tick(&set, 1.0 / 60.0, &clock, 1.0));
+    assert_eq!(records, 4, "four records per tick at time scale 4");
+}
