@@ -7,8 +7,9 @@ Three sorts of case (docs/fit.md, "Validation"):
 
 - ``right``: the model fitted is the one that made the data (white or AR(1) noise, quantisation,
   outliers with a robust loss, mid-swing starts, elliptical swings seen from the side, a pivot off the
-  origin). Measured: how often each true parameter lies within ±2 stderr (target 90–98 %) and how often
-  a warning is raised anyway (false alarms).
+  origin; cases 22–24: the sensor's offset, bias or scale fitted as a systematic term). Measured:
+  how often each true parameter lies within ±2 stderr (target 90–98 %) and how often a warning is
+  raised anyway (false alarms).
 - ``wrong``: the data contain physics or sensor effects the fitted model lacks (wind, dry pivot
   friction, a wrong damping law, an accelerometer bias, an encoder zero offset, a camera scale error
   with g fixed, outliers with the plain loss). Measured: how often the fit warns (target ≥ 95 %).
@@ -97,7 +98,7 @@ def _video(
         "g": truth.g,
         "damping": truth.damping,
         "drag": truth.drag,
-        **{names[c]: pivot[c] for c in columns},
+        **{names[c]: pivot[c] * scale for c in columns},  # measured = pivot' + scale·x, pivot' = scale·pivot
     }
 
     def make(rng: np.random.Generator, s: float) -> Data:
@@ -172,6 +173,16 @@ def _pure_noise(rng_sigma: float = 0.01) -> Callable[..., Data]:
     return make
 
 
+def _also(make: Callable[[np.random.Generator, float], Data], **truth: float) -> Callable[..., Data]:
+    """``make`` with more true values: the systematic terms a case fits (scale, angle_offset, …)."""
+
+    def more(rng: np.random.Generator, s: float) -> Data:
+        d = make(rng, s)
+        return Data(d.kw, {**d.truth, **truth}, d.sigma, d.sigma_kw)
+
+    return more
+
+
 VIDEO = ip.Truth(length=0.6, g=9.81, damping=0.010)
 VIDEO_FIT = ["length", "g", "damping", "pivot"]
 DAMPED: dict[str, Any] = {"model": "damped"}
@@ -218,7 +229,7 @@ def cases() -> list[Case]:
             "planar, 50 Hz, 15 s, white σ 2 mrad then 2400 steps/turn",
         ),
         Case(
-            "phone |a-g|, |w|, ellipse, mid-swing",
+            "phone (specific force, angular speed), ellipse, mid-swing",
             "right",
             ["length", "g", "damping"],
             DAMPED,
@@ -369,6 +380,36 @@ def cases() -> list[Case]:
             DAMPED,
             _video(VIDEO),
             "the fit must not depend on the unit of the numbers",
+        ),
+        # --- the systematic terms fitted (the model is right again) -----------------------------
+        Case(
+            "encoder, zero offset 0.03 rad, angle_offset fitted",
+            "right",
+            ["g", "damping", "drag", "angle_offset"],
+            {"model": "damped", "length": 0.5},
+            _also(
+                _encoder(
+                    enc_truth, amplitude=0.6, t_from=0.2, duration=20.0, rate=50.0, sigma=2e-3, offset=0.03
+                ),
+                angle_offset=0.03,
+            ),
+            "case 12 with the encoder's zero fitted",
+        ),
+        Case(
+            "phone, accelerometer bias, force_bias fitted",
+            "right",
+            ["length", "g", "damping", "force_bias"],
+            DAMPED,
+            _also(_phone(phone_truth, bias=0.05), force_bias=0.05),
+            "case 13 with the bias fitted",
+        ),
+        Case(
+            "video x,z, scale error 5 %, g fixed, scale fitted",
+            "right",
+            ["length", "damping", "pivot", "scale"],
+            {"model": "damped", "g": 9.81},
+            _also(_video(VIDEO, scale=1.05), scale=1.05),
+            "case 14 with the scale bar fitted (g known)",
         ),
     ]
 
