@@ -332,6 +332,7 @@ def crane_simulate(
     g: float,
     damping: float,
     wind: tuple[tuple[float, float, float], tuple[float, float, float], float, float, float],
+    turbulence: tuple[list[float], list[list[float]], list[list[float]]],
     y0: list[float],
     save: FloatArray,
     rtol: float,

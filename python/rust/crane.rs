@@ -37,11 +37,12 @@ fn knots(name: &str, k: &KnotArrays<'_>) -> PyResult<Hermite5> {
 /// Integrates the crane (`pendulab_core::crane::run`): `pivot` and `hoist` as knots (t [s] (n,),
 /// value, rate, second derivative (n, 3); the rope length in the first column), bodies (mass [kg],
 /// c_W A [m²]) with the rigging [m] for the payload under a hook, g [m/s²], damping [1/s], wind
-/// (steady (3,) [m/s], gust peak (3,) [m/s], gust start [s], duration [s], air density [kg/m³]),
+/// (steady (3,) [m/s], gust peak (3,) [m/s], gust start [s], duration [s], air density [kg/m³],
+/// turbulence modes: ω_k [rad/s] (K,), amplitudes [m/s] (K, 3), phases [rad] (K, 3)),
 /// the start y0 (16,) and the save times [s]. Returns a dict: t (N,), y (N, 16), tension (N, 2) [N],
 /// steps, rejected.
 #[pyfunction]
-#[pyo3(signature = (pivot, hoist, body1, body2, g, damping, wind, y0, save, rtol, atol, max_steps))]
+#[pyo3(signature = (pivot, hoist, body1, body2, g, damping, wind, turbulence, y0, save, rtol, atol, max_steps))]
 #[allow(clippy::too_many_arguments)]
 pub fn crane_simulate<'py>(
     py: Python<'py>,
@@ -52,12 +53,23 @@ pub fn crane_simulate<'py>(
     g: f64,
     damping: f64,
     wind: ([f64; 3], [f64; 3], f64, f64, f64),
+    turbulence: (Vec<f64>, Vec<[f64; 3]>, Vec<[f64; 3]>),
     y0: [f64; 16],
     save: PyReadonlyArray1<'py, f64>,
     rtol: f64,
     atol: f64,
     max_steps: u64,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let (om, amp, ph) = turbulence;
+    if amp.len() != om.len() || ph.len() != om.len() {
+        return Err(InvalidInputError::new_err(format!(
+            "turbulence: {} frequencies, {} amplitudes, {} phases; give as many of each",
+            om.len(),
+            amp.len(),
+            ph.len()
+        )));
+    }
+    let modes = (0..om.len()).map(|k| (om[k], DVec3::from_array(amp[k]), DVec3::from_array(ph[k]))).collect();
     let sys = CraneSystem {
         pivot: knots("pivot", &pivot)?,
         hoist: knots("hoist", &hoist)?,
@@ -71,6 +83,7 @@ pub fn crane_simulate<'py>(
             gust_start: wind.2,
             gust_duration: wind.3,
             air_density: wind.4,
+            turbulence: modes,
         },
     };
     let save: Vec<f64> = save.as_array().to_vec();

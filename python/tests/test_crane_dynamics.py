@@ -135,3 +135,21 @@ def test_residual_vibration_after_a_shaped_move_in_the_nonlinear_model() -> None
 def test_bad_crane_input(make, word: str) -> None:  # type: ignore[no-untyped-def]
     with pytest.raises(InvalidInputError, match=word):
         make()
+
+
+def test_seeded_turbulence_has_its_intensity_and_repeats() -> None:
+    wind = crane.Wind(velocity=(10.0, 0.0, 0.0), area=1.0, turbulence=2.0, turbulence_scale=50.0, seed=7)
+    _, amp, _ = wind.modes()
+    assert np.sum(amp[:, 0] ** 2) / 2 == pytest.approx(4.0, rel=2e-3)  # Σ a²/2 = σ² (tails cut at 1e∓3/T)
+    t = np.arange(0.0, 20000.0, 0.25)
+    w = wind.velocity_at(t)
+    assert w[:, 0].mean() == pytest.approx(10.0, abs=0.15)
+    assert w[:, 1].std() == pytest.approx(2.0, rel=0.08)
+    c = crane.Crane(rope=10.0, payload_mass=500.0, wind=wind)
+    a, b = c.simulate(t_end=20.0, dt=0.1), c.simulate(t_end=20.0, dt=0.1)
+    np.testing.assert_array_equal(a.payload, b.payload)
+    other = crane.Crane(rope=10.0, payload_mass=500.0, wind=crane.Wind(**{**wind.__dict__, "seed": 8}))
+    assert np.abs(other.simulate(t_end=20.0, dt=0.1).payload - a.payload).max() > 1e-3
+    assert np.abs(a.energy_residual()).max() < 1e-6 * 500 * G * 10
+    with pytest.raises(InvalidInputError, match="steady wind"):
+        crane.Wind(turbulence=1.0).modes()

@@ -65,9 +65,12 @@ class Hoist(Path):
 @dataclass(frozen=True)
 class Wind:
     """Wind on the load (T-11.7): steady ``velocity`` w₀ [m/s] plus a (1 − cos) gust of peak ``gust``
-    [m/s] from ``gust_start`` [s] lasting ``gust_duration`` [s]; drag ½ρ c_W A |w − v|(w − v) with
-    ``air_density`` ρ [kg/m³], the payload's ``drag_coefficient`` c_W and ``area`` A [m²], the hook's
-    ``hook_drag_coefficient`` and ``hook_area`` [m²]."""
+    [m/s] from ``gust_start`` [s] lasting ``gust_duration`` [s], plus seeded turbulence of intensity
+    ``turbulence`` σ [m/s] per axis and length scale ``turbulence_scale`` L [m] (Dryden-type spectrum
+    S(ω) = σ² (2T/π)/(1 + (Tω)²), T = L/|w₀|, as ``turbulence_modes`` cosines of random phase from
+    ``seed``); drag ½ρ c_W A |w − v|(w − v) with ``air_density`` ρ [kg/m³], the payload's
+    ``drag_coefficient`` c_W and ``area`` A [m²], the hook's ``hook_drag_coefficient`` and
+    ``hook_area`` [m²]."""
 
     velocity: tuple[float, float, float] = (0.0, 0.0, 0.0)
     area: float = 0.0
@@ -78,10 +81,52 @@ class Wind:
     gust_duration: float = 1.0
     hook_area: float = 0.0
     hook_drag_coefficient: float = 1.2
+    turbulence: float = 0.0
+    turbulence_scale: float = 50.0
+    turbulence_modes: int = 64
+    seed: int = 0
 
     def force(self, relative_speed: float) -> float:
         """The payload's drag ½ρ c_W A u² [N] at the air speed u [m/s] relative to it."""
         return 0.5 * self.air_density * self.drag_coefficient * self.area * relative_speed**2
+
+    def modes(self) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """The turbulence as (ω_k [rad/s] (K,), amplitudes a_k [m/s] (K, 3), phases φ_k [rad] (K, 3)):
+        w_turb = Σ a_k cos(ω_k t + φ_k) per axis, ω_k log-spaced over [10⁻³, 10³]/T, a_k = √(2 S Δω)."""
+        sigma = float(self.turbulence)
+        if sigma == 0.0:
+            return np.zeros(0), np.zeros((0, 3)), np.zeros((0, 3))
+        speed = float(np.linalg.norm(self.velocity))
+        if not (math.isfinite(sigma) and sigma > 0):
+            raise InvalidInputError(f"turbulence = {self.turbulence!r} is not allowed: an intensity >= 0 m/s")
+        if not speed > 0:
+            raise InvalidInputError("turbulence needs a steady wind velocity (its time scale is L/|w₀|)")
+        scale = _positive("turbulence_scale", self.turbulence_scale, "m")
+        k = int(self.turbulence_modes)
+        if not 8 <= k <= 4096:
+            raise InvalidInputError(f"turbulence_modes = {self.turbulence_modes!r}: between 8 and 4096")
+        tau = scale / speed
+        edges = np.geomspace(1e-3 / tau, 1e3 / tau, k + 1)
+        om = np.sqrt(edges[:-1] * edges[1:])
+        psd = sigma**2 * (2 * tau / math.pi) / (1 + (tau * om) ** 2)
+        amp = np.sqrt(2 * psd * np.diff(edges))
+        rng = np.random.default_rng(self.seed)
+        phases = rng.uniform(0.0, 2 * math.pi, size=(k, 3))
+        return om, np.repeat(amp[:, None], 3, axis=1), phases
+
+    def velocity_at(self, t: Any) -> FloatArray:
+        """w(t) [m/s], (N, 3): steady + gust + turbulence (as the core evaluates it)."""
+        ts = np.atleast_1d(np.asarray(t, dtype=np.float64))
+        w = np.tile(np.asarray(self.velocity, dtype=np.float64), (ts.size, 1))
+        s = (ts - self.gust_start) / self.gust_duration
+        inside = (s >= 0) & (s <= 1)
+        w += np.where(inside, 0.5 * (1 - np.cos(2 * math.pi * s)), 0.0)[:, None] * np.asarray(
+            self.gust, dtype=float
+        )
+        om, amp, ph = self.modes()
+        for k in range(om.size):
+            w += amp[k] * np.cos(om[k] * ts[:, None] + ph[k])
+        return w
 
 
 @dataclass(frozen=True)
@@ -239,6 +284,8 @@ class Crane:
             w.gust_duration,
             w.air_density,
         )
+        om, amp, ph = w.modes()
+        turbulence = (om.tolist(), amp.tolist(), ph.tolist())
         out = crane_simulate(
             self.pivot.knots(t0 - 1.0, t1 + 1.0),
             self.hoist.knots(t0 - 1.0, t1 + 1.0),
@@ -247,6 +294,7 @@ class Crane:
             self.g,
             self.damping,
             wind,
+            turbulence,
             y0.tolist(),
             save,
             rtol,

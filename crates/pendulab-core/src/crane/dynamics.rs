@@ -15,7 +15,7 @@
 //!
 //! so the hoist's l̈ enters the tension. Applied forces per body: wind drag relative to the air
 //! F = ½ρ c_W A |w − v|(w − v) with w(t) = w₀ + w_g ½(1 − cos 2π(t − t_g)/T_g) during the gust
-//! (T-11.7), and linear damping −m c (v − Ṗ) relative to the pivot. Energy E = Σ ½m_i|v_i|² + m_i g z_i
+//! plus turbulence Σ a_k cos(ω_k t + φ_k) (T-11.7), and linear damping −m c (v − Ṗ) relative to the pivot. Energy E = Σ ½m_i|v_i|² + m_i g z_i
 //! changes at the rate (the rigging, rigid, does no work)
 //!
 //!   dE/dt = −T₁ l̇ (hoist) − T₁ (r₁/l)·Ṗ (pivot) + Σ F_wind,i·v_i (wind) + Σ F_damp,i·v_i (damping),
@@ -27,8 +27,8 @@ use super::hermite::Hermite5;
 use crate::error::{Error, Result};
 use glam::DVec3;
 
-/// Wind: steady velocity, a (1 − cos) gust and the air density (T-11.7).
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// Wind: steady velocity, a (1 − cos) gust, turbulence as a sum of modes and the air density (T-11.7).
+#[derive(Debug, Clone, PartialEq)]
 pub struct Wind {
     /// Steady wind velocity w₀ [m/s].
     pub steady: DVec3,
@@ -40,6 +40,9 @@ pub struct Wind {
     pub gust_duration: f64,
     /// Air density ρ [kg/m³].
     pub air_density: f64,
+    /// Turbulence modes (ω_k [rad/s], amplitude a_k [m/s] per axis, phase φ_k [rad] per axis):
+    /// w_turb(t) = Σ a_k cos(ω_k t + φ_k), component by component.
+    pub turbulence: Vec<(f64, DVec3, DVec3)>,
 }
 
 impl Wind {
@@ -50,16 +53,22 @@ impl Wind {
         gust_start: 0.0,
         gust_duration: 1.0,
         air_density: 1.225,
+        turbulence: Vec::new(),
     };
 
     /// w(t) [m/s].
     pub fn velocity(&self, t: f64) -> DVec3 {
         let s = (t - self.gust_start) / self.gust_duration;
-        if (0.0..=1.0).contains(&s) {
+        let mut w = if (0.0..=1.0).contains(&s) {
             self.steady + self.gust * (0.5 * (1.0 - (2.0 * std::f64::consts::PI * s).cos()))
         } else {
             self.steady
+        };
+        for &(om, a, ph) in &self.turbulence {
+            let arg = DVec3::splat(om * t) + ph;
+            w += a * DVec3::new(arg.x.cos(), arg.y.cos(), arg.z.cos());
         }
+        w
     }
 }
 
@@ -147,7 +156,17 @@ impl CraneSystem {
         check("wind velocity", w.steady.length_squared(), w.steady.is_finite(), "finite m/s")?;
         check("gust velocity", w.gust.length_squared(), w.gust.is_finite(), "finite m/s")?;
         check("gust start", w.gust_start, true, "a finite time in s")?;
-        check("gust duration", w.gust_duration, w.gust_duration > 0.0, "a duration > 0 s")
+        check("gust duration", w.gust_duration, w.gust_duration > 0.0, "a duration > 0 s")?;
+        for &(om, a, ph) in &w.turbulence {
+            check("turbulence frequency", om, true, "a finite angular frequency in rad/s")?;
+            check(
+                "turbulence amplitude",
+                a.length_squared(),
+                a.is_finite() && ph.is_finite(),
+                "finite m/s and rad",
+            )?;
+        }
+        Ok(())
     }
 
     /// The right-hand side at (t, y); `t_piece` picks the piece of the prescribed motions at jumps.

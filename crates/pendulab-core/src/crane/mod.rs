@@ -37,7 +37,11 @@ mod tests {
             body2: hook.then_some((Body { mass: 500.0, drag_area: 1.0 }, 2.0)),
             g: 9.81,
             damping: 0.01,
-            wind: Wind { steady: DVec3::new(5.0, 1.0, 0.0), ..Wind::CALM },
+            wind: Wind {
+                steady: DVec3::new(5.0, 1.0, 0.0),
+                turbulence: vec![(0.7, DVec3::new(1.0, 0.5, 0.1), DVec3::new(0.3, 1.0, 2.0))],
+                ..Wind::CALM
+            },
         }
     }
 
