@@ -134,7 +134,9 @@ def parse_table_notes(
     kinds, factors = _columns(list(names), where)
     unknown = [n for n in kinds if n not in KNOWN]
     if unknown and columns is not None:
-        raise InvalidInputError(f"unknown column name(s) {unknown}; use {', '.join(sorted(KNOWN))}")
+        raise InvalidInputError(
+            f"{where}: unknown column name(s) {_names(unknown)}; use {', '.join(sorted(KNOWN))}"
+        )
     use = [j for j, n in enumerate(kinds) if n in KNOWN and n != "-"]
     data = read_cells(
         text,
