@@ -16,7 +16,7 @@ import numpy as np
 import typer
 
 from .._core import InvalidInputError
-from .common import _fail, _say, _user_errors, app
+from .common import _check_output, _fail, _say, _user_errors, app
 
 crane_app = typer.Typer(
     help="Cranes: command shapers, their sensitivity, a move's residual sway (docs/cranes.md).",
@@ -165,3 +165,66 @@ def residual_cmd(
 
             save_figure(plot_sway(runs), plot)
             _say(f"wrote {plot}")
+
+
+@crane_app.command("run", short_help="Run a crane file ([crane], [move], [shaper], [hoist], [wind], ...).")
+def run_cmd(
+    file: Annotated[
+        Path, typer.Argument(help="Crane file (TOML; docs/cranes.md 'Crane files').", show_default=False)
+    ],
+    out: Annotated[Path | None, typer.Option("--out", "-o", help="Write the run to this .csv file.")] = None,
+    plot: Annotated[Path | None, typer.Option(help="Write sway vs time to this image.")] = None,
+) -> None:
+    """Runs the crane of FILE and prints its sway modes [rad/s], the residual sway after the move [m],
+    the largest rope tension [N] and the energy balance E − E₀ − ΣW [J]; --out writes t [s], pivot,
+    hook, payload [m], rope [m], tensions [N], energy and works [J] as CSV."""
+    with _user_errors():
+        from ..crane.scenario import load
+
+        if out is not None:
+            if out.suffix.lower() != ".csv":
+                _fail(f"--out {str(out)!r}: crane runs are written as .csv")
+            _check_output(out)
+        if plot is not None:
+            _check_image(plot)
+        sc = load(file)
+        run = sc.run()
+        modes = ", ".join(f"{m:.5g}" for m in sc.crane.modes())
+        _say(
+            f"{sc.title or file}: sway modes {modes} rad/s; shaper {sc.shaper.kind if sc.shaper else 'none'}"
+        )
+        after = run.t >= sc.move_end
+        sway = float(np.hypot(*run.offset()[after].T).max())
+        _say(f"largest sway after the move (t >= {sc.move_end:.3f} s): {sway:.5g} m")
+        balance = np.abs(run.energy_residual()).max()
+        _say(f"largest rope tension {run.tension[:, 0].max():.6g} N; E - E0 - W max {balance:.3g} J")
+        if out is not None:
+            _write_csv(run, out)
+            _say(f"wrote {out}")
+        if plot is not None:
+            from ..crane.plot import plot_sway
+            from ..plot import save_figure
+
+            save_figure(plot_sway({"run": run}, t_marks=[sc.move_end] if sc.move_end else []), plot)
+            _say(f"wrote {plot}")
+
+
+def _write_csv(run: object, out: Path) -> None:
+    from ..crane.system import CraneRun
+    from ..io import atomic_path
+
+    assert isinstance(run, CraneRun)
+    cols = {"t [s]": run.t}
+    for name, arr in (("pivot", run.pivot), ("hook", run.hook), ("payload", run.payload)):
+        if arr is not None:
+            for i, ax in enumerate("xyz"):
+                cols[f"{name}_{ax} [m]"] = arr[:, i]
+    cols["rope [m]"] = run.rope
+    cols["tension_rope [N]"] = run.tension[:, 0]
+    cols["tension_rigging [N]"] = run.tension[:, 1]
+    cols["energy [J]"] = run.energy
+    for k, v in run.work.items():
+        cols[f"work_{k} [J]"] = v
+    table = np.column_stack(list(cols.values()))
+    with atomic_path(out) as tmp:
+        np.savetxt(tmp, table, delimiter=",", header=",".join(cols), comments="", fmt="%.17g")

@@ -1,0 +1,71 @@
+"""Crane files (pendulab.crane.scenario, ``pendulab crane run``; docs/cranes.md "Crane files"): the
+shipped example runs and keeps its energy balance, the file's crane equals the one built in Python,
+and bad contents are one clear error naming the key."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from test_cli import assert_user_error, invoke
+
+from pendulab import InvalidInputError, crane
+from pendulab.crane.scenario import load, parse
+
+EXAMPLE = Path(__file__).resolve().parents[2] / "examples" / "cranes" / "gantry_zvd.toml"
+
+
+def test_the_example_runs_from_the_command_line(tmp_path: Path) -> None:
+    out = tmp_path / "run.csv"
+    code, text, err = invoke("crane", "run", str(EXAMPLE), "--out", str(out))
+    assert code == 0, err
+    assert "sway modes 0.91, 7.9949 rad/s; shaper zvd" in text
+    data = np.genfromtxt(out, delimiter=",", names=True)
+    work = sum(data[k] for k in data.dtype.names if k.startswith("work_"))
+    assert np.abs(data["energy_J"] - data["energy_J"][0] - work).max() < 1e-6
+
+
+def test_the_file_builds_the_same_crane_as_python() -> None:
+    sc = load(EXAMPLE)
+    s = crane.shaper("zvd", omega=float(sc.crane.modes()[0]))
+    np.testing.assert_allclose(sc.shaper.times, s.times, rtol=1e-15)
+    path = crane.move(5.0, 0.5, 0.5, shaper=s, t_start=1.0)
+    t = np.linspace(0, 30, 301)
+    np.testing.assert_allclose(sc.crane.pivot.position(t), path.position(t), atol=1e-15)
+    assert sc.crane.hoist.length([12.0])[0] == pytest.approx(8.0)
+    assert sc.move_end == pytest.approx(path.t_end)
+
+
+BASE = {"crane": {"rope": 10.0}, "simulation": {"t_end": 5.0}}
+
+
+@pytest.mark.parametrize(
+    ("patch", "needle"),
+    [
+        ({"crane": {"rope": 10.0, "ropes": 3.0}}, "ropes"),
+        ({"crane": {"rope": -1.0}}, "crane.rope"),
+        ({"crane": {"rope": "10"}}, "crane.rope"),
+        ({"shaper": {"kind": "zv"}}, "needs a [move]"),
+        (
+            {
+                "move": {"distance": 1.0, "v_max": 1.0, "a_max": 1.0},
+                "shaper": {"kind": "zv", "omega": 1.0, "rope": 2.0},
+            },
+            "not both",
+        ),
+        ({"move": {"distance": 1.0, "v_max": 1.0, "a_max": 1.0}, "shaper": {"kind": "zz"}}, "zz"),
+        ({"wind": {"turbulence": 1.0}}, "steady wind"),
+        ({"hoist": {"t": [0.0, 1.0], "length": [9.0, 8.0]}}, "hoist"),
+    ],
+)
+def test_bad_files(patch: dict, needle: str) -> None:
+    with pytest.raises(InvalidInputError, match=needle.replace("[", r"\[").replace("]", r"\]")):
+        parse({**BASE, **patch})
+
+
+def test_cli_user_errors(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[crane]\nrope = 10.0\n")
+    assert_user_error(*invoke("crane", "run", str(bad)), "simulation")
+    assert_user_error(*invoke("crane", "run", str(EXAMPLE), "--out", str(tmp_path / "x.parquet")), ".csv")
