@@ -90,3 +90,12 @@ def test_control_characters_in_a_sweep_title_are_refused(tmp_path: Path) -> None
     assert "\x1b" not in out + err
     path.write_bytes(b"\xef\xbb\xbf" + sweep.encode())  # a BOM is fine
     assert load_sweep_file(path).title == load_sweep_file(SCENARIOS.parent / "sweeps" / "sway.toml").title
+
+
+def test_a_fitted_scenarios_title_drops_control_characters_of_the_uploads_name() -> None:
+    from pendulab.server.fit import FitRequest, fit_data
+
+    text = (SCENARIOS.parents[0] / "data" / "crane_sway.csv").read_text(encoding="utf-8")
+    res = fit_data(FitRequest(csv=text, name="sway\x1b[31m.csv", model="damped"))
+    title = Scenario.from_toml_str(res["scenario_toml"]).title
+    assert title == "fitted to sway[31m.csv"

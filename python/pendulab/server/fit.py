@@ -169,7 +169,8 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
                 "the fit cannot follow in floating point (times or positions extremely far apart or "
                 "close together, or a noise sigma far from the data's scale)"
             ) from None
-    scenario = res.to_scenario(title=f"fitted to {req.name[:80]}")
+    shown = "".join(c for c in name if c.isprintable())  # a title has no control characters
+    scenario = res.to_scenario(title=f"fitted to {shown}")
     try:
         lab: dict[str, Any] | None = describe(Setup.from_scenario(scenario, None))
     except ValueError:  # ScenarioError: a model the lab does not run
