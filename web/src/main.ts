@@ -279,10 +279,14 @@ async function main(): Promise<void> {
     onOpen: () => {
       store.setConnected(true);
       byId('conn').textContent = t('conn.connected');
+      byId('offline').hidden = true;
     },
     onClose: () => {
       store.setConnected(false);
       byId('conn').textContent = t('conn.retrying');
+      // the server is gone: an unmistakable banner above the view (the footer's grey text was all before)
+      byId('offline').textContent = t('conn.gone');
+      byId('offline').hidden = false;
       // a new server session starts from the default scenario: bring back the one shown
       if (store.status !== null) startup = commandsFor(fromStatus(store.status));
     },
@@ -382,6 +386,7 @@ async function main(): Promise<void> {
     const mass = p?.mass ?? 1;
     const g = p?.g ?? 9.81;
     const second = twin?.drawn(store.playT, view.trailSeconds) ?? null;
+    scene.setTwinLayout(twin?.layout() ?? null);
     const changed = sceneInputs.changed([
       f,
       store.trail,
@@ -437,10 +442,10 @@ async function main(): Promise<void> {
 }
 
 main().catch((e: unknown) => {
-  const el = document.getElementById('message');
+  const el = document.getElementById('offline');
   if (el) {
-    el.textContent = `the lab could not start: ${e instanceof Error ? e.message : String(e)}`;
-    el.classList.add('shown');
+    el.textContent = `${t('conn.noStart')} ${e instanceof Error ? e.message : String(e)}`;
+    el.hidden = false;
   }
   console.error(e);
 });

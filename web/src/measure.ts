@@ -64,45 +64,110 @@ export class Stopwatch {
 }
 
 export interface PeriodReading {
-  /** Mean time between successive lowest points [s] over the last crossings, or null before two. */
+  /** What the motion is, recognised from the motion itself: `swing` (the bob passes through the bottom:
+   *  its horizontal distance from the vertical at the lowest point is below `planarRatio` of the largest in
+   *  the half swing before), `orbit` (it goes round the vertical, never through the bottom), or null
+   *  before the first two lowest points. */
+  kind: 'swing' | 'orbit' | null;
+  /** swing: the mean full period [s] (back through the bottom in the same direction: every second lowest
+   *  point of a to-and-fro swing, every one of a swing over the top); orbit: the mean z-period T_z [s]
+   *  between successive lowest points. Null before one whole period. */
   period: number | null;
-  /** Mean change of the unwrapped azimuth over the same intervals [rad], or null. */
+  /** orbit: the mean change of the unwrapped azimuth per T_z [rad] (T-4.5's Δφ), else null. */
   advance: number | null;
-  /** How many intervals the means are over. */
+  /** orbit: how far the orbit's pattern turns per round, 2Δφ − 2π [rad] (Airy's precession, T-6.3, for a
+   *  small ellipse; Δφ = π is a closed ellipse), else null. */
+  precession: number | null;
+  /** Lowest points per full period: 2 for a to-and-fro swing, 1 for a swing over the top or an orbit. */
+  lowPerPeriod: 1 | 2;
+  /** How many whole periods (swing) or z-periods (orbit) the means are over. */
   intervals: number;
+  /** The largest angle from the downward vertical [rad] in the window of the means (mean over its half
+   *  swings, root mean square), null before it. */
+  amplitude: number | null;
+  /** The smallest and largest angle from the vertical [rad] since the last lowest point (an orbit's band). */
+  thetaMin: number | null;
+  thetaMax: number | null;
+  /** Simulated times [s] of the first and last lowest point the means are over. */
+  from: number | null;
+  to: number | null;
 }
 
-/** The period timer: fed every received frame of one trajectory, in time order. A crossing counts only
- *  when z rose by more than `minRise` [m] since the last one (a conical orbit's rounding noise in ż is no
- *  oscillation). The means are over the last `keep` intervals. */
+interface Low {
+  /** Time of the lowest point [s], interpolated linearly in ż. */
+  t: number;
+  /** Unwrapped azimuth there [rad]. */
+  phi: number;
+  /** Horizontal velocity direction there (unit). */
+  dir: [number, number];
+  /** True when the bob passed (through) the bottom: planar-like. */
+  through: boolean;
+  /** Largest θ [rad] in the half swing that ended here. */
+  thetaMax: number;
+  /** Smallest θ [rad] in the half swing that ended here. */
+  thetaMin: number;
+}
+
+const EMPTY: PeriodReading = {
+  kind: null,
+  period: null,
+  advance: null,
+  precession: null,
+  lowPerPeriod: 1,
+  intervals: 0,
+  amplitude: null,
+  thetaMin: null,
+  thetaMax: null,
+  from: null,
+  to: null,
+};
+
+/** The period timer: fed every received frame of one trajectory, in time order. It finds the lowest points
+ *  of the bob (ż = v₃ changes sign from − to +) — a measurement of the streamed states, for every model,
+ *  damped or not. A lowest point counts only when z rose by more than `minRise` [m] since the last one (a
+ *  conical orbit's rounding noise in ż is no oscillation). At a lowest point the bob passes (through) the
+ *  bottom when its horizontal distance from the vertical is below `planarRatio` of the largest in the half
+ *  swing before: a swing, whose full period pairs the lowest points by the direction the bob moves there
+ *  (same direction again: one period). Otherwise the bob goes round: an orbit, with T_z and Δφ (T-4.5).
+ *  The means are over the last `keep` periods. */
 export class PeriodTimer {
   private prev: Frame | null = null;
   private phi = 0;
-  private crossings: { t: number; phi: number }[] = [];
+  private lows: Low[] = [];
   private zLow = Infinity;
   private zHigh = -Infinity;
+  private rMax = 0;
+  private thMax = 0;
+  private thMin = Infinity;
 
   constructor(
     private readonly minRise = 1e-7,
     private readonly keep = 10,
+    private readonly planarRatio = 0.02,
   ) {}
 
   reset(): void {
     this.prev = null;
     this.phi = 0;
-    this.crossings = [];
+    this.lows = [];
     this.zLow = Infinity;
     this.zHigh = -Infinity;
+    this.rMax = 0;
+    this.thMax = 0;
+    this.thMin = Infinity;
   }
 
   push(f: Frame): void {
     const p = this.prev;
     if (p !== null && f.t <= p.t) return;
     const phiNow = Math.atan2(f.x[1], f.x[0]);
+    const r = Math.hypot(f.x[0], f.x[1]);
+    const th = Math.atan2(r, -f.x[2]);
     if (p === null) {
       this.phi = phiNow;
       this.prev = f;
       this.zLow = this.zHigh = f.x[2];
+      [this.rMax, this.thMax, this.thMin] = [r, th, th];
       return;
     }
     const phiPrev = this.phi;
@@ -114,23 +179,110 @@ export class PeriodTimer {
       const s = a === b ? 0 : -a / (b - a);
       const t = p.t + s * (f.t - p.t);
       const phi = phiPrev + s * (this.phi - phiPrev);
-      if (this.crossings.length === 0 || this.zHigh - this.zLow > this.minRise) {
-        this.crossings.push({ t, phi });
-        if (this.crossings.length > this.keep + 1) this.crossings.shift();
+      if (this.lows.length === 0 || this.zHigh - this.zLow > this.minRise) {
+        // the horizontal position and velocity at the lowest point, interpolated like t
+        const lerp = (u: number, w: number) => u + s * (w - u);
+        const rx = lerp(p.x[0], f.x[0]);
+        const ry = lerp(p.x[1], f.x[1]);
+        const vx = lerp(p.v[0], f.v[0]);
+        const vy = lerp(p.v[1], f.v[1]);
+        const vh = Math.hypot(vx, vy) || 1;
+        const rLow = Math.hypot(rx, ry);
+        const rTop = Math.max(this.rMax, rLow);
+        this.lows.push({
+          t,
+          phi,
+          dir: [vx / vh, vy / vh],
+          through: rTop > 0 && rLow <= this.planarRatio * rTop,
+          thetaMax: this.thMax,
+          thetaMin: Math.min(this.thMin, th),
+        });
+        if (this.lows.length > 2 * this.keep + 1) this.lows.shift();
       }
       this.zLow = this.zHigh = f.x[2];
+      [this.rMax, this.thMax, this.thMin] = [r, th, th];
+      this.prev = f;
+      return;
     }
+    this.rMax = Math.max(this.rMax, r);
+    this.thMax = Math.max(this.thMax, th);
+    this.thMin = Math.min(this.thMin, th);
     this.prev = f;
   }
 
   reading(): PeriodReading {
-    const c = this.crossings;
-    const n = c.length - 1;
-    if (n < 1) return { period: null, advance: null, intervals: 0 };
-    const first = c[0] as { t: number; phi: number };
-    const last = c[n] as { t: number; phi: number };
-    return { period: (last.t - first.t) / n, advance: (last.phi - first.phi) / n, intervals: n };
+    const c = this.lows;
+    const last = c[c.length - 1];
+    if (last === undefined || c.length < 2) return { ...EMPTY };
+    const band = { thetaMin: Math.min(last.thetaMin, this.thMin), thetaMax: Math.max(last.thetaMax, this.thMax) };
+    if (last.through) {
+      // a swing: the lowest points where the bob moves the way it moves at the last one end whole periods
+      const same: Low[] = [];
+      let within = 0;
+      for (let k = c.length - 1; k >= 0 && same.length <= this.keep; k--) {
+        const l = c[k] as Low;
+        if (!l.through) break;
+        if (l.dir[0] * last.dir[0] + l.dir[1] * last.dir[1] > 0) same.push(l);
+        within = k;
+      }
+      const n = same.length - 1;
+      const first = same[n] as Low;
+      const prevLow = c[c.length - 2] as Low;
+      const lowPerPeriod = prevLow.dir[0] * last.dir[0] + prevLow.dir[1] * last.dir[1] > 0 ? 1 : 2;
+      // the amplitude: root mean square of the half swings' largest angles in the window
+      const half = c.slice(Math.max(within, c.indexOf(first)) + 1);
+      const amp = half.length > 0 ? Math.sqrt(half.reduce((acc, l) => acc + l.thetaMax ** 2, 0) / half.length) : last.thetaMax;
+      return {
+        ...EMPTY,
+        kind: 'swing',
+        period: n < 1 ? null : (last.t - first.t) / n,
+        lowPerPeriod,
+        intervals: Math.max(n, 0),
+        amplitude: amp,
+        ...band,
+        from: n < 1 ? null : first.t,
+        to: last.t,
+      };
+    }
+    let k0 = c.length - 1;
+    while (k0 > 0 && c.length - 1 - k0 < this.keep && !(c[k0 - 1] as Low).through) k0--;
+    const first = c[k0] as Low;
+    const n = c.length - 1 - k0;
+    if (n < 1) return { ...EMPTY, kind: 'orbit', ...band };
+    const advance = (last.phi - first.phi) / n;
+    return {
+      ...EMPTY,
+      kind: 'orbit',
+      period: (last.t - first.t) / n,
+      advance,
+      precession: Math.sign(advance) * (2 * Math.abs(advance) - 2 * Math.PI),
+      intervals: n,
+      ...band,
+      from: first.t,
+      to: last.t,
+    };
   }
+}
+
+/** The complete elliptic integral of the first kind K(m), m = k² ∈ [0, 1), by the arithmetic–geometric
+ *  mean: K = π / (2 AGM(1, √(1 − m))) (a closed-form value, no motion integrated). */
+export function ellipticK(m: number): number {
+  let [a, b] = [1, Math.sqrt(1 - m)];
+  for (let i = 0; i < 40 && Math.abs(a - b) > 1e-16 * a; i++) [a, b] = [(a + b) / 2, Math.sqrt(a * b)];
+  return Math.PI / (2 * a);
+}
+
+/** The theory's period of a planar swing of amplitude θ_a [rad] (T-4.6: 4K(k²)/ω₀, k = sin(θ_a/2),
+ *  ω₀ = √(|g|/l)) with linear friction c [1/s] (T-7.1: θ̈ + c θ̇ + ω₀² sin θ = 0; for small swings the
+ *  damped angular frequency ω_d = √(ω₀² − c²/4), so the period grows by ω₀/ω_d), or null when
+ *  it does not swing (g ≤ 0, c ≥ 2ω₀, θ_a ≥ π). For light damping and a decaying amplitude this is the
+ *  leading order in both; docs/web.md gives its accuracy. */
+export function swingTheory(length: number, g: number, damping: number, amplitude: number): number | null {
+  if (!(g > 0) || !(length > 0) || !(amplitude >= 0) || amplitude >= Math.PI) return null;
+  const w0sq = g / length;
+  const wd = Math.sqrt(w0sq - damping ** 2 / 4);
+  if (!(wd > 0)) return null;
+  return (4 * ellipticK(Math.sin(amplitude / 2) ** 2)) / wd;
 }
 
 export interface EnergySplit {
@@ -159,19 +311,33 @@ export function workBetween(a: Frame, b: Frame): number {
   return 0.5 * (a.power + b.power) * (b.t - a.t);
 }
 
-/** The period timer's numbers beside the exact ones (ExactQuantities of the server): the z-period T_z [s]
- *  and the advance Δφ [rad]. A planar swing (kind `planar`, J₃ = 0) passes the bottom twice per swing, so z
- *  repeats after half the swing period the exact solution reports (T-4.3's 4K/ω₀): there the measured
- *  value is doubled and compared as the swing period, and Δφ (φ jumps by π at the pole) is not compared. */
+/** The period timer's numbers beside the exact or theory ones. `exact` is the server's ExactQuantities of
+ *  the ideal pendulum's orbit (null for other models or before it arrives); `theory` the swing period from
+ *  `swingTheory` (null when it does not apply). A swing (recognised from the motion) is compared as the
+ *  full swing period: the exact solution reports it for a planar orbit (kind `planar`), and for a
+ *  nearly planar one (tiny J₃, kind `generic`) its z-period is half of it. Δφ and the precession are
+ *  compared for orbits only (φ jumps by π at the bottom of a swing). */
 export function periodComparison(
   m: PeriodReading,
   exact: { kind: string; period_z: number | null; period_z_infinite: boolean; azimuth_advance: number | null } | null,
-): { swing: boolean; period: [number | null, number | null]; advance: [number | null, number | null] } {
-  const swing = exact?.kind === 'planar';
-  const exactT = exact === null || exact.period_z_infinite ? null : exact.period_z;
+  theory: number | null = null,
+): {
+  swing: boolean;
+  period: [number | null, number | null];
+  advance: [number | null, number | null];
+  precession: [number | null, number | null];
+} {
+  const swing = m.kind === null ? exact?.kind === 'planar' : m.kind === 'swing';
+  const exactT = exact === null || exact.period_z_infinite || exact.period_z === null ? null : exact.period_z;
+  let reference: number | null = exactT;
+  if (swing && exactT !== null && exact?.kind !== 'planar') reference = m.lowPerPeriod * exactT;
+  if (exact === null) reference = theory;
+  const adv = exact?.azimuth_advance ?? null;
+  const prec = (d: number | null) => (d === null ? null : Math.sign(d) * (2 * Math.abs(d) - 2 * Math.PI));
   return {
     swing,
-    period: [m.period === null ? null : swing ? 2 * m.period : m.period, exactT],
-    advance: [swing ? null : m.advance, exact?.azimuth_advance ?? null],
+    period: [m.period, reference],
+    advance: [swing ? null : m.advance, swing ? null : adv],
+    precession: [swing ? null : m.precession, swing ? null : prec(adv)],
   };
 }

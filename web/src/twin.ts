@@ -3,11 +3,13 @@
 // another integrator, or damping beside the ideal one — and the scene draws it beside the first (in green).
 // Both are reset together, so their times agree; the separation |r₁ − r₂| of the bobs [m] (r = pivot + x)
 // is the difference of the two streamed states at the first one's frame times (the second's frames
-// interpolated, never integrated). Run, pause, reset and step go to both.
+// interpolated, never integrated). Run, pause, reset and step go to both. Mode `own`: a pendulum of its own
+// length, mass and start (the same model, g and method), drawn beside the first from a pivot of its own —
+// PhET's experiment, the period against length and mass, each timed by its own period timer.
 import type { Command, Frame, Status, Vec3 } from './protocol';
 import { interpolateFrames } from './state';
 
-export type TwinMode = 'off' | 'epsilon' | 'method' | 'damped';
+export type TwinMode = 'off' | 'epsilon' | 'method' | 'damped' | 'own';
 
 export interface TwinOptions {
   mode: TwinMode;
@@ -17,6 +19,21 @@ export interface TwinOptions {
   method: string;
   /** The second pendulum's damping c [1/s] (mode `damped`). */
   damping: number;
+  /** Mode `own`: the second pendulum's own rod length [m], bob mass [kg] and start angle θ₀ [rad] (a planar
+   *  swing from rest, φ₀ = 0), hung from its own pivot beside the first (drawn side by side). */
+  length: number;
+  mass: number;
+  theta: number;
+}
+
+/** The horizontal offset [m] at which the second pivot is drawn in mode `own`, beside the first: the two
+ *  spheres of reach (radii l₁, l₂ [m]) side by side with a gap of a tenth of their sum, along the default
+ *  camera's screen-right direction (scene.ts: the camera looks from (3.3, −3.9, ·)). Drawing only: each
+ *  session's states stay relative to its own pivot. */
+export function sideBySide(l1: number, l2: number): Vec3 {
+  const d = 1.1 * (l1 + l2);
+  const r = Math.hypot(3.9, 3.3);
+  return [(d * 3.9) / r, (d * 3.3) / r, 0];
 }
 
 /** x [m] turned by ε [rad] in θ (away from the downward vertical) about the pivot, |x| kept. */
@@ -33,14 +50,18 @@ export function twinCommands(s: Status, o: TwinOptions): Command[] {
   const cmds: Command[] = [];
   if (s.scenario) cmds.push({ type: 'load_scenario', name: s.scenario });
   const damped = o.mode === 'damped';
+  const own = o.mode === 'own';
   const model = damped && s.model === 'ideal' ? 'damped' : s.model;
   const params = { ...s.model_params };
   if (damped) params['damping'] = o.damping;
   cmds.push({ type: 'set_model', model, params });
-  cmds.push({ type: 'set_params', length: s.params.length, mass: s.params.mass, g: s.params.g });
+  cmds.push({ type: 'set_params', length: own ? o.length : s.params.length, mass: own ? o.mass : s.params.mass, g: s.params.g });
   cmds.push({ type: 'set_method', method: o.mode === 'method' ? o.method : s.method, dt: s.dt });
-  const x = o.mode === 'epsilon' ? tiltedStart(s.start.x, o.epsilon) : s.start.x;
-  cmds.push({ type: 'set_state', x, v: s.start.v, project: true });
+  if (own) cmds.push({ type: 'set_state', theta: o.theta, phi: 0, theta_dot: 0, phi_dot: 0 });
+  else {
+    const x = o.mode === 'epsilon' ? tiltedStart(s.start.x, o.epsilon) : s.start.x;
+    cmds.push({ type: 'set_state', x, v: s.start.v, project: true });
+  }
   cmds.push({ type: 'set_time_scale', time_scale: s.time_scale });
   cmds.push({ type: 'reset' });
   cmds.push({ type: s.paused ? 'pause' : 'resume' });

@@ -7,12 +7,14 @@
 import { EN } from './en';
 import type { Words } from './en';
 import { DE, DE_MODELS, DE_PARAMS } from './de';
+import { FR, FR_MODELS, FR_PARAMS } from './fr';
 
 export type Key = keyof Words;
 
 export const LANGUAGES = {
   en: { name: 'English', words: EN, params: {} as Record<string, [string, string]>, models: {} as Record<string, string> },
   de: { name: 'Deutsch', words: DE, params: DE_PARAMS, models: DE_MODELS },
+  fr: { name: 'Français', words: FR, params: FR_PARAMS, models: FR_MODELS },
 } as const;
 export type Lang = keyof typeof LANGUAGES;
 
@@ -58,4 +60,17 @@ export function paramWords(name: string, label: string, help: string): [label: s
 /** A registry model's label in the current language: the table's own, else the registry's. */
 export function modelWords(name: string, label: string): string {
   return (LANGUAGES[current].models as Record<string, string | undefined>)[name] ?? label;
+}
+
+/** A method's name for a student (`method.<name>` of the table: "Symplectic (RATTLE, 2nd order)"), else
+ *  its code name with its order. */
+export function methodWords(name: string, order: number): string {
+  const key = `method.${name}`;
+  return Object.hasOwn(EN, key) ? t(key as Key) : t('method.other', { name, n: order });
+}
+
+/** An exact orbit kind (`kind.<kind>` of the table: "swings to and fro in a plane"), else the code word. */
+export function kindWords(kind: string): string {
+  const key = `kind.${kind}`;
+  return Object.hasOwn(EN, key) ? t(key as Key) : kind;
 }

@@ -9,7 +9,7 @@ import type { ViewOptions } from '../scene/scene';
 import { ModelControls } from './model';
 import { addParam, throttle } from './params';
 import { addViewControls } from './view';
-import { t } from '../i18n';
+import { methodWords, t } from '../i18n';
 
 export interface ControlActions {
   send(cmd: Command): void;
@@ -54,18 +54,14 @@ export class Controls {
     // --- integrator ---
     const integ = this.gui.addFolder(t('gui.integrator')).close();
     const methodLabels: Record<string, string> = {};
-    for (const info of schema.methods) {
-      const props = [t('gui.order', { n: info.order }), info.symplectic ? t('gui.symplectic') : '', info.adaptive ? t('gui.adaptive') : '']
-        .filter(Boolean)
-        .join(', ');
-      methodLabels[`${info.name} (${props})`] = info.name;
-    }
+    // the words a student reads ("Symplectic (RATTLE, 2nd order)"); the code name in the tooltip
+    for (const info of schema.methods) methodLabels[methodWords(info.name, info.order)] = info.name;
     m['method'] = schema.methods.find((x) => x.default)?.name ?? schema.methods[0]?.name ?? 'rattle';
     const method = integ
       .add(m, 'method', methodLabels)
       .name(t('gui.method'))
       .onChange((v: string) => actions.send({ type: 'set_method', method: v }));
-    method.domElement.title = schema.methods.map((x) => `${x.name}: ${x.summary}`).join('\n');
+    method.domElement.title = schema.methods.map((x) => `${methodWords(x.name, x.order)} — ${x.name}: ${x.summary}`).join('\n');
     this.synced.push(method);
     const dtLim = schema.controls.dt;
     m['dt'] = dtLim.default ?? 1e-3;

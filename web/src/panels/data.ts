@@ -9,7 +9,7 @@ import type { LabStore } from '../state';
 import { offSphereNote, tetherStyle } from '../models';
 import { eventRow } from '../events';
 import { fmt } from '../format';
-import { t } from '../i18n';
+import { kindWords, methodWords, modelWords, t } from '../i18n';
 
 export { fmt };
 
@@ -22,20 +22,20 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
   const ex = store.tensionExtremes;
   const rows: Row[] = [
     ['t', fmt(f?.t, 7), 's'],
-    ['E', fmt(f?.energy, 10), 'J'],
-    ['E − E₀', f && ref ? fmt(f.energy - ref.energy, 3) : '—', 'J'],
-    ['J₃', fmt(f?.j3, 10), 'kg m²/s'],
-    ['J₃ − J₃(0)', f && ref ? fmt(f.j3 - ref.j3, 3) : '—', 'kg m²/s'],
+    [t('data.energy'), fmt(f?.energy, 10), 'J'],
+    [t('data.energyChange'), f && ref ? fmt(f.energy - ref.energy, 3) : '—', 'J'],
+    [t('data.spin'), fmt(f?.j3, 10), 'kg m²/s'],
+    [t('data.spinChange'), f && ref ? fmt(f.j3 - ref.j3, 3) : '—', 'kg m²/s'],
     [t('data.tension'), fmt(f?.tension, 6), 'N'],
     [t('data.tensionMin'), ex ? `${fmt(ex.min, 6)} (t = ${fmt(ex.tMin, 4)} s)` : '—', 'N'],
     [t('data.tensionMax'), ex ? `${fmt(ex.max, 6)} (t = ${fmt(ex.tMax, 4)} s)` : '—', 'N'],
-    ['z', fmt(f?.x[2], 6), 'm'],
-    [t('data.method'), s ? `${s.method}${s.adaptive ? '' : `, dt = ${s.dt} s`}` : '—', ''],
+    [t('data.height'), fmt(f?.x[2], 6), 'm'],
+    [t('data.method'), s ? `${methodWords(s.method, 0)}${s.adaptive ? '' : `, dt = ${s.dt} s`}` : '—', ''],
     [t('data.state'), s ? `${s.paused ? t('data.paused') : t('data.running')}${s.lagging ? t('data.lagging') : ''}` : '—', ''],
     ...errorRows(f, s),
   ];
   if (s && s.model !== 'ideal') {
-    rows.splice(1, 0, [t('data.model'), s.model, '']);
+    rows.splice(1, 0, [t('data.model'), modelWords(s.model, s.model), '']);
     rows.splice(4, 0, [t('data.power'), fmt(f?.power, 6), 'W']);
   }
   const at = rows.findIndex((r) => r[0] === t('data.tension'));
@@ -103,8 +103,8 @@ export function exactRows(q: ExactQuantities | null): Row[] {
   if (q === null) return [];
   const h = q.turning_heights;
   const rows: Row[] = [
-    [t('data.kind'), q.kind, ''],
-    ['z₁, z₂', `${fmt(h[0])}, ${fmt(h[1])}`, 'm'],
+    [t('data.kind'), kindWords(q.kind), ''],
+    [t('data.turning'), `${fmt(h[0])}, ${fmt(h[1])}`, 'm'],
   ];
   if (h.length > 2) rows.push([t('data.z3'), fmt(h[2]), 'm']);
   rows.push([q.kind === 'planar' ? t('data.swingPeriod') : t('data.periodZ'), q.period_z_infinite ? '∞' : fmt(q.period_z), 's']);

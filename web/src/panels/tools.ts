@@ -4,7 +4,7 @@
 // commands or read the store; the measurements themselves are measure.ts's (no physics here).
 import type { Command, Status } from '../protocol';
 import type { LabStore } from '../state';
-import { DEG, periodComparison, sphericalAngles, Stopwatch } from '../measure';
+import { DEG, periodComparison, sphericalAngles, Stopwatch, swingTheory } from '../measure';
 import { fmt } from '../format';
 import { t } from '../i18n';
 import type { Key } from '../i18n';
@@ -205,25 +205,52 @@ export class Tools {
 
   private fillPeriod(): void {
     const m = this.store.periodTimer.reading();
-    const c = periodComparison(m, this.store.exact);
+    const theory = m.kind === 'swing' && m.amplitude !== null ? swingTheoryFor(this.store.status, m.amplitude) : null;
+    const c = periodComparison(m, this.store.exact, theory);
     const pct = ([a, b]: [number | null, number | null]) => (a === null || b === null || b === 0 ? '' : `${(((a - b) / b) * 100).toFixed(2)} %`);
     const deg = (v: number | null) => (v === null ? '—' : (v * DEG).toFixed(2));
-    const rows: [string, string, string, string][] = [
-      ['', t('tools.measured'), t('tools.exact'), t('tools.difference')],
-      [c.swing ? t('tools.swingPeriod') : 'T_z [s]', fmt(c.period[0], 5), fmt(c.period[1], 5), pct(c.period)],
-      ['Δφ [°]', deg(c.advance[0]), deg(c.advance[1]), pct(c.advance)],
+    const kind =
+      m.kind === null ? t('tools.kindNone') : m.kind === 'orbit' ? t('tools.kindOrbit') : m.lowPerPeriod === 1 ? t('tools.kindOver') : t('tools.kindSwing');
+    const reference = this.store.exact !== null ? t('tools.exact') : t('tools.theory');
+    const rows: [string, string, string, string, string][] = [
+      ['head', '', t('tools.measured'), reference, t('tools.difference')],
+      ['kind', t('tools.motion'), kind, '', ''],
     ];
+    if (c.swing) {
+      rows.push(['period', t('tools.periodSwing'), fmt(c.period[0], 5), fmt(c.period[1], 5), pct(c.period)]);
+      rows.push(['amplitude', t('tools.amplitude'), deg(m.amplitude), '', '']);
+    } else {
+      rows.push(['period', t('tools.periodZ'), fmt(c.period[0], 5), fmt(c.period[1], 5), pct(c.period)]);
+      rows.push(['advance', t('tools.advance'), deg(c.advance[0]), deg(c.advance[1]), pct(c.advance)]);
+      rows.push(['precession', t('tools.precession'), deg(c.precession[0]), deg(c.precession[1]), '']);
+      rows.push(['band', t('tools.band'), m.thetaMin === null ? '—' : `${deg(m.thetaMin)} … ${deg(m.thetaMax)}`, '', '']);
+    }
     const table = this.periodTable;
-    rows.forEach((r, i) => {
+    while (table.rows.length > rows.length) table.deleteRow(-1);
+    rows.forEach(([name, ...r], i) => {
       const tr = table.rows[i] ?? table.insertRow();
+      tr.dataset['row'] = name;
       while (tr.cells.length < 4) tr.insertCell();
       r.forEach((v, k) => {
         const cell = tr.cells[k];
         if (cell && cell.textContent !== v) cell.textContent = v;
       });
     });
-    const caption = t('tools.periodCount', { n: m.intervals });
+    const caption = m.intervals === 0 ? t('tools.periodWait') : t(c.swing ? 'tools.periodCount' : 'tools.periodCountZ', { n: m.intervals });
     if (table.caption?.textContent !== caption) table.createCaption().textContent = caption;
     table.dataset['period'] = m.period === null ? '' : String(m.period);
+    table.dataset['kind'] = m.kind ?? '';
   }
+}
+
+/** The theory's swing period (`swingTheory`) for the current model, where it applies: the ideal pendulum
+ *  (before the server's exact value arrives) and the `damped` model with linear friction only (no drag, no
+ *  forcing, gravity straight down); else null. */
+export function swingTheoryFor(status: Status | null, amplitude: number): number | null {
+  if (status === null) return null;
+  const mp = status.model_params ?? {};
+  const zero = (k: string) => (mp[k] ?? 0) === 0;
+  if (status.model === 'damped' && !(zero('drag') && zero('forcing_amplitude') && zero('gravity_x') && zero('gravity_y'))) return null;
+  if (status.model !== 'ideal' && status.model !== 'damped') return null;
+  return swingTheory(status.params.length, status.params.g, mp['damping'] ?? 0, amplitude);
 }

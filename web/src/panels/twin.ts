@@ -7,10 +7,10 @@ import { LabStore } from '../state';
 import type { TrailSlice } from '../scene/scene';
 import { CurvePlot, dataRange } from './curves';
 import { Visibility } from './visible';
-import { separation, twinCommands } from '../twin';
+import { separation, sideBySide, twinCommands } from '../twin';
 import type { TwinMode, TwinOptions } from '../twin';
 import { DEG } from '../measure';
-import { t } from '../i18n';
+import { methodWords, t } from '../i18n';
 
 export interface TwinActions {
   /** Sends to the first pendulum's session. */
@@ -20,7 +20,10 @@ export interface TwinActions {
 
 export class TwinPanel {
   readonly store = new LabStore();
-  readonly options: TwinOptions = { mode: 'off', epsilon: 0.01 / DEG, method: 'rk4', damping: 0.5 };
+  readonly options: TwinOptions = { mode: 'off', epsilon: 0.01 / DEG, method: 'rk4', damping: 0.5, length: 0.5, mass: 1, theta: 10 / DEG };
+  private readonly periods: HTMLTableElement;
+  /** Sets the panel's inputs to `o` (a shared link's second pendulum). */
+  private readonly setInputs: (o: TwinOptions) => void;
   private conn: Connection | null = null;
   private pending: Command[] = [];
   private readonly plot: CurvePlot;
@@ -45,6 +48,7 @@ export class TwinPanel {
     mode.dataset['input'] = 'twin-mode';
     const modes: [TwinMode, string][] = [
       ['off', t('twin.off')],
+      ['own', t('twin.own')],
       ['epsilon', t('twin.epsilon')],
       ['method', t('twin.method')],
       ['damped', t('twin.damped')],
@@ -72,7 +76,7 @@ export class TwinPanel {
     for (const m of methods) {
       const o = document.createElement('option');
       o.value = m.name;
-      o.textContent = m.name;
+      o.textContent = methodWords(m.name, m.order);
       method.appendChild(o);
     }
     method.value = methods.some((m) => m.name === 'rk4') ? 'rk4' : (methods[0]?.name ?? '');
@@ -87,6 +91,24 @@ export class TwinPanel {
     damp.dataset['input'] = 'twin-damping';
     damp.style.width = '5em';
     dampLabel.appendChild(damp);
+    // mode `own`: its own length, mass and start angle (PhET's lesson: does length or mass change the period?)
+    const ownBox = document.createElement('span');
+    const numberInput = (label: string, name: string, value: string, step: string): HTMLInputElement => {
+      const l = document.createElement('label');
+      l.append(`${label} `);
+      const i = document.createElement('input');
+      i.type = 'number';
+      i.step = step;
+      i.value = value;
+      i.dataset['input'] = name;
+      i.style.width = '4.5em';
+      l.appendChild(i);
+      ownBox.appendChild(l);
+      return i;
+    };
+    const len2 = numberInput(t('twin.length'), 'twin-length', '0.5', '0.05');
+    const mass2 = numberInput(t('twin.mass'), 'twin-mass', '1', '0.1');
+    const theta2 = numberInput(t('twin.theta'), 'twin-theta', '10', '1');
     const start = document.createElement('button');
     start.type = 'button';
     start.dataset['action'] = 'twin-start';
@@ -95,6 +117,7 @@ export class TwinPanel {
       epsLabel.hidden = mode.value !== 'epsilon';
       methodLabel.hidden = mode.value !== 'method';
       dampLabel.hidden = mode.value !== 'damped';
+      ownBox.hidden = mode.value !== 'own';
       start.hidden = mode.value === 'off';
     };
     mode.addEventListener('change', () => {
@@ -106,14 +129,36 @@ export class TwinPanel {
       this.options.epsilon = Number(eps.value) / DEG;
       this.options.method = method.value;
       this.options.damping = Number(damp.value);
+      this.options.length = Number(len2.value);
+      this.options.mass = Number(mass2.value);
+      this.options.theta = Number(theta2.value) / DEG;
       if (!Number.isFinite(this.options.epsilon) || !(this.options.damping >= 0)) {
         actions.explain(t('twin.bad'));
+        return;
+      }
+      const o = this.options;
+      if (o.mode === 'own' && !(o.length > 0 && o.mass > 0 && o.theta >= 0 && o.theta <= Math.PI)) {
+        actions.explain(t('twin.badOwn'));
         return;
       }
       this.start();
     });
     showFor();
-    box.append(modeLabel, ' ', epsLabel, methodLabel, dampLabel, ' ', start);
+    this.setInputs = (o) => {
+      mode.value = o.mode;
+      eps.value = String(o.epsilon * DEG);
+      method.value = o.method;
+      damp.value = String(o.damping);
+      len2.value = String(o.length);
+      mass2.value = String(o.mass);
+      theta2.value = String(o.theta * DEG);
+      showFor();
+    };
+    // both pendulums' periods, each measured by its own timer from its own motion
+    this.periods = document.createElement('table');
+    this.periods.dataset['readout'] = 'twin-periods';
+    this.periods.hidden = true;
+    box.append(modeLabel, ' ', epsLabel, methodLabel, dampLabel, ownBox, ' ', start, this.periods);
     container.appendChild(box);
     this.plot = new CurvePlot(container, t('twin.separation'), 't [s]', '|r₁ − r₂| [m]', 140);
     this.plot.canvas.dataset['plot'] = 'separation';
@@ -123,6 +168,21 @@ export class TwinPanel {
 
   get on(): boolean {
     return this.conn !== null;
+  }
+
+  /** Where the scene draws the second pendulum: its own length and its pivot beside the first (mode `own`,
+   *  with both statuses known), else null (the first's pivot). */
+  layout(): { offset: [number, number, number]; length: number } | null {
+    const [a, b] = [this.first.status, this.store.status];
+    if (this.conn === null || this.options.mode !== 'own' || a === null || b === null) return null;
+    return { offset: sideBySide(a.params.length, b.params.length), length: b.params.length };
+  }
+
+  /** Starts the second pendulum as `o` says (a shared link), once the first has its status. */
+  restore(o: TwinOptions): void {
+    Object.assign(this.options, o);
+    this.setInputs(o);
+    if (o.mode !== 'off') this.start();
   }
 
   /** (Re)starts both pendulums together: the second becomes the first's copy with its one difference. */
@@ -145,6 +205,7 @@ export class TwinPanel {
     } else this.flush();
     this.actions.send({ type: 'reset' });
     this.plot.canvas.parentElement?.removeAttribute('hidden');
+    this.periods.hidden = false;
   }
 
   private flush(): void {
@@ -159,6 +220,7 @@ export class TwinPanel {
     this.store.clear();
     this.store.status = null;
     this.plot.canvas.parentElement?.setAttribute('hidden', '');
+    this.periods.hidden = true;
   }
 
   /** Run, pause, reset and step go to both pendulums. */
@@ -176,11 +238,41 @@ export class TwinPanel {
     return { frame: this.store.displayed(), trail: { frames: this.store.trail, start, end } };
   }
 
-  /** Redraws the separation plot (10 times a second). */
+  /** Redraws the periods table and the separation plot (10 times a second). */
   update(width: number): void {
+    if (this.conn !== null) this.fillPeriods();
     if (this.conn === null || !this.visibility.visible(this.plot.canvas)) return;
     const sep = separation(this.first.history.frames, this.store.trajectory);
     this.plot.draw(width, [{ x: sep.t, y: sep.d, color: '#c8f560', label: t('twin.separation') }], dataRange(sep.t, 0.02), dataRange([0, ...sep.d]));
+  }
+
+  /** The two pendulums side by side: length, mass, start angle and the period each one's timer measured. */
+  private fillPeriods(): void {
+    const row = (name: string, store: LabStore): string[] => {
+      const s = store.status;
+      const r = store.periodTimer.reading();
+      const th = s === null ? null : Math.atan2(Math.hypot(s.start.x[0], s.start.x[1]), -s.start.x[2]) * DEG;
+      return [
+        name,
+        s === null ? '—' : s.params.length.toPrecision(3),
+        s === null ? '—' : s.params.mass.toPrecision(3),
+        th === null ? '—' : th.toFixed(1),
+        r.period === null ? '—' : `${r.period.toFixed(4)} (${r.intervals})`,
+      ];
+    };
+    const rows = [
+      ['', t('twin.colLength'), t('twin.colMass'), t('twin.colTheta'), t('twin.colPeriod')],
+      row(t('twin.first'), this.first),
+      row(t('twin.second'), this.store),
+    ];
+    rows.forEach((r, i) => {
+      const tr = this.periods.rows[i] ?? this.periods.insertRow();
+      while (tr.cells.length < r.length) tr.insertCell();
+      r.forEach((v, k) => {
+        const c = tr.cells[k];
+        if (c && c.textContent !== v) c.textContent = v;
+      });
+    });
   }
 
   /** The separation now, for tests: [t [s], |r₁ − r₂| [m]] pairs of the last update's data. */

@@ -38,7 +38,9 @@ export function addViewControls(
       setTopView(v);
       changed();
     });
-  const stereo = vf.add(view, 'stereo', [...STEREO_MODES]).name(t('gui.stereo')).onChange(changed);
+  const stereoWords: Record<string, Key> = { off: 'stereo.off', anaglyph: 'stereo.anaglyph', 'side by side': 'stereo.sideBySide' };
+  const stereoLabels = Object.fromEntries(STEREO_MODES.map((m) => [stereoWords[m] ? t(stereoWords[m]) : m, m]));
+  const stereo = vf.add(view, 'stereo', stereoLabels).name(t('gui.stereo')).onChange(changed);
   stereo.domElement.title = t('gui.stereoHelp');
   stereo.domElement.dataset['control'] = 'stereo';
   vf.close();

@@ -146,6 +146,8 @@ export class PendulumScene {
   private followAt: THREE.Vector3 | null = null;
   /** The largest |x| [m] drawn in this fit (the spring stretches past l). */
   private reach = 1;
+  private twinLayoutKey = '';
+  private twinLayout: { offset: readonly [number, number, number]; length: number } | null = null;
   private sideBySide: StereoEffect | null = null;
   /** Dragging the bob on the sphere (drag.ts); null until `enableDrag`. */
   drag: BobDrag | null = null;
@@ -280,7 +282,7 @@ export class PendulumScene {
     this.reachLines.scale.setScalar(l);
     this.pivot.scale.setScalar(l);
     this.bob.scale.setScalar(0.05 * l);
-    this.twin.setLength(l);
+    this.twin.setLength(this.twinLayout?.length ?? l);
     this.handle.scale.setScalar(HANDLE_RADIUS * l);
     this.axes.scale.setScalar(l);
     if (changed) this.resetCamera();
@@ -299,11 +301,15 @@ export class PendulumScene {
    *  or, with a fixed pivot off the origin, that too) fills 90 % of the canvas's narrower side; with
    *  `follow` (the slewing crane) the camera looks at the pivot and moves with it. */
   resetCamera(): void {
-    const l = this.extent;
+    const tw = this.twinLayout;
+    // with a second pendulum beside the first, a sphere around both spheres of reach, centred between them
+    const half = tw === null ? 0 : 0.5 * Math.hypot(...tw.offset);
+    const l = tw === null ? this.extent : half + Math.max(this.extent, tw.length);
     const r = 1.1 * l; // the bob's radius and the ruler's labels
     const aspect = this.stereo === 'side by side' ? this.camera.aspect / 2 : this.camera.aspect;
     const d = framingDistance(r, this.camera.fov, aspect);
-    const centre = this.follow && this.followAt !== null ? this.followAt : new THREE.Vector3();
+    const centre = this.follow && this.followAt !== null ? this.followAt.clone() : new THREE.Vector3();
+    if (tw !== null) centre.add(new THREE.Vector3(...tw.offset).multiplyScalar(0.5));
     if (this.topView) this.camera.position.set(0, -1e-4 * d, d).add(centre);
     else this.camera.position.set(3.3, -3.9, 1.5).normalize().multiplyScalar(d).add(centre);
     this.controls.target.copy(centre);
@@ -489,6 +495,19 @@ export class PendulumScene {
     this.camera.position.add(dx);
     this.controls.target.add(dx);
     this.followAt.copy(pivot);
+  }
+
+  /** The second pendulum of its own (two-pendulum mode `own`): rod length `length` [m], its pivot drawn at
+   *  `offset` [m] beside the first; the camera frames both spheres of reach. Null: the second hangs from the
+   *  first's pivot with the first's length (the other modes). */
+  setTwinLayout(layout: { offset: readonly [number, number, number]; length: number } | null): void {
+    const key = layout === null ? '' : `${layout.offset.join(',')}|${layout.length}`;
+    if (key === this.twinLayoutKey) return;
+    this.twinLayoutKey = key;
+    this.twinLayout = layout;
+    this.twin.setLength(layout?.length ?? this.length);
+    this.twin.setOffset(layout?.offset ?? null);
+    this.resetCamera();
   }
 
   /** Draws the second pendulum at state `f` (null: hidden) with its trail frames (two-pendulum mode). */

@@ -21,12 +21,16 @@ export class TwinDrawing {
   readonly group = new THREE.Group();
   readonly bob: THREE.Mesh;
   private readonly rod: THREE.Mesh;
+  /** The second pivot, drawn when it is not the first's (mode `own`). */
+  private readonly pivotMark: THREE.Mesh;
   private readonly trail: THREE.Line;
   private readonly positions = new Float32Array(3 * (TRAIL_MAX + 1));
   private readonly tmpX = new THREE.Vector3();
   private readonly tmpPivot = new THREE.Vector3();
   private readonly tmpDir = new THREE.Vector3();
   private length = 1;
+  /** Where the second pivot is drawn relative to the first [m] (mode `own`: side by side; else 0). */
+  readonly offset = new THREE.Vector3();
 
   constructor() {
     this.bob = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), new THREE.MeshStandardMaterial({ color: TWIN_COLOR, roughness: 0.4 }));
@@ -39,7 +43,9 @@ export class TwinDrawing {
     g.setDrawRange(0, 0);
     this.trail = new THREE.Line(g, new THREE.LineBasicMaterial({ color: TWIN_COLOR, transparent: true, opacity: 0.6 }));
     this.trail.frustumCulled = false;
-    this.group.add(this.bob, this.rod, this.trail);
+    this.pivotMark = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8), new THREE.MeshStandardMaterial({ color: TWIN_COLOR }));
+    this.pivotMark.visible = false;
+    this.group.add(this.bob, this.rod, this.trail, this.pivotMark);
     this.group.visible = false;
   }
 
@@ -49,12 +55,21 @@ export class TwinDrawing {
     this.bob.scale.setScalar(0.045 * l);
   }
 
+  /** Hangs the second pendulum from its own pivot at `offset` [m] from the first (null: the same pivot). */
+  setOffset(offset: readonly [number, number, number] | null): void {
+    if (offset === null) this.offset.set(0, 0, 0);
+    else this.offset.fromArray(offset);
+    this.pivotMark.visible = offset !== null;
+    this.pivotMark.position.copy(this.offset);
+    this.pivotMark.scale.setScalar(0.03 * this.length);
+  }
+
   /** Draws the state `f` (null: hidden) with the trail frames. */
   update(f: Frame | null, trail: TwinTrail): void {
     this.group.visible = f !== null;
     if (f === null) return;
     const x = this.tmpX.fromArray(f.x);
-    const pivot = this.tmpPivot.fromArray(f.pivot);
+    const pivot = this.tmpPivot.fromArray(f.pivot).add(this.offset);
     this.bob.position.copy(x).add(pivot);
     const r = x.length();
     if (r > 0) {
@@ -66,9 +81,9 @@ export class TwinDrawing {
     const p = this.positions;
     for (let i = 0; i < n; i++) {
       const g = trail.frames[trail.end - n + i] as Frame;
-      p[3 * i] = g.x[0] + g.pivot[0];
-      p[3 * i + 1] = g.x[1] + g.pivot[1];
-      p[3 * i + 2] = g.x[2] + g.pivot[2];
+      p[3 * i] = g.x[0] + g.pivot[0] + this.offset.x;
+      p[3 * i + 1] = g.x[1] + g.pivot[1] + this.offset.y;
+      p[3 * i + 2] = g.x[2] + g.pivot[2] + this.offset.z;
     }
     const geom = this.trail.geometry;
     geom.setDrawRange(0, n);

@@ -3,14 +3,14 @@
 // pendulums' commands and separation.
 import { describe, expect, it } from 'vitest';
 import type { Frame, Status, Vec3 } from '../../src/protocol';
-import { DEG, energySplit, PeriodTimer, periodComparison, sphericalAngles, Stopwatch, workBetween, wrapAngle } from '../../src/measure';
+import { DEG, ellipticK, energySplit, PeriodTimer, periodComparison, sphericalAngles, Stopwatch, swingTheory, workBetween, wrapAngle } from '../../src/measure';
 import { FLOAT64_EPS, logRange, MIN_RELATIVE_SPAN, relativeDrift, safeRange } from '../../src/panels/ranges';
 import { columns, VARIABLES } from '../../src/variables';
 import { ownsKeys, shortcutFor, sliderSteps } from '../../src/keyboard';
 import { chooseLanguage, LANGUAGES, modelWords, paramWords, setLanguage, t } from '../../src/i18n';
 import { EN } from '../../src/i18n/en';
-import { frameAt, positionAt, separation, tiltedStart, twinCommands } from '../../src/twin';
-import { frictionCommand, GRAVITY_PRESETS, startCommand } from '../../src/panels/tools';
+import { frameAt, positionAt, separation, sideBySide, tiltedStart, twinCommands } from '../../src/twin';
+import { frictionCommand, GRAVITY_PRESETS, startCommand, swingTheoryFor } from '../../src/panels/tools';
 import { framingDistance } from '../../src/scene/scene';
 import { rulerStep } from '../../src/scene/instruments';
 import { tick } from '../../src/panels/curves';
@@ -78,17 +78,109 @@ describe('period timer', () => {
   });
 });
 
+/** A planar motion in the vertical plane at azimuth `az` with signed angle θ(t) and rate θ̇(t) [rad, rad/s],
+ *  l = 1 m, sampled at 60 Hz for `seconds`, optionally with a small sideways offset `side` [m] (a thin
+ *  ellipse: J₃ ≠ 0). */
+function planar(theta: (t: number) => number, rate: (t: number) => number, seconds: number, az = 0.7, side = 0): Frame[] {
+  const out: Frame[] = [];
+  const [c, s] = [Math.cos(az), Math.sin(az)];
+  for (let k = 0; k <= seconds * 60; k++) {
+    const t = k / 60;
+    const [q, w] = [theta(t), rate(t)];
+    const u = side * Math.cos(2 * Math.PI * t);
+    const x: Vec3 = [Math.sin(q) * c - u * s, Math.sin(q) * s + u * c, -Math.cos(q)];
+    out.push(frame(t, x, [Math.cos(q) * w * c, Math.cos(q) * w * s, Math.sin(q) * w]));
+  }
+  return out;
+}
+
+describe('period timer: swings recognised from the motion', () => {
+  // a damped swing θ = A e^{−γt} cos(ω_d t): its zeros, the lowest points, are exactly π/ω_d apart
+  const [A, gamma, wd] = [0.17, 0.15, 3.1285];
+  const theta = (t: number) => A * Math.exp(-gamma * t) * Math.cos(wd * t);
+  const rate = (t: number) => -A * Math.exp(-gamma * t) * (gamma * Math.cos(wd * t) + wd * Math.sin(wd * t));
+  const Td = (2 * Math.PI) / wd;
+  it('a damped planar swing: the full period 2π/ω_d (not half), counted in whole periods', () => {
+    const p = new PeriodTimer();
+    for (const f of planar(theta, rate, 2.3 * Td)) p.push(f);
+    const r = p.reading();
+    expect(r.kind).toBe('swing');
+    expect(r.lowPerPeriod).toBe(2);
+    expect(r.intervals).toBe(2); // lowest points at T/4, 3T/4, …, 9T/4: two whole periods, not four
+    expect(Math.abs((r.period as number) - Td) / Td).toBeLessThan(1e-4);
+    expect(r.advance).toBeNull();
+    expect(r.amplitude as number).toBeGreaterThan(0.1);
+    expect(r.amplitude as number).toBeLessThan(A);
+  });
+  it('one period is null until the bob passes the bottom the same way again', () => {
+    const p = new PeriodTimer();
+    for (const f of planar(theta, rate, 0.9 * Td)) p.push(f);
+    expect(p.reading().period).toBeNull();
+    expect(p.reading().intervals).toBe(0);
+  });
+  it('a swing over the top: one lowest point per period', () => {
+    const w = 7;
+    const p = new PeriodTimer();
+    for (const f of planar((t) => w * t + 1, () => w, 5)) p.push(f);
+    const r = p.reading();
+    expect(r.kind).toBe('swing');
+    expect(r.lowPerPeriod).toBe(1);
+    expect(Math.abs((r.period as number) - (2 * Math.PI) / w) / ((2 * Math.PI) / w)).toBeLessThan(1e-4);
+  });
+  it('a nearly planar swing (a thin ellipse, J₃ ≠ 0) is a swing; a wide one an orbit', () => {
+    const thin = new PeriodTimer();
+    for (const f of planar((t) => 0.3 * Math.cos(2 * Math.PI * t), (t) => -0.6 * Math.PI * Math.sin(2 * Math.PI * t), 6, 0, 0.001)) thin.push(f);
+    expect(thin.reading().kind).toBe('swing');
+    expect(Math.abs((thin.reading().period as number) - 1)).toBeLessThan(1e-3);
+  });
+});
+
 describe('period comparison', () => {
-  it('a planar swing is compared as the swing period (z repeats twice per swing), without Δφ', () => {
-    const m = { period: 1.01, advance: 3.1, intervals: 4 };
-    const planar = periodComparison(m, { kind: 'planar', period_z: 2.02, period_z_infinite: false, azimuth_advance: null });
-    expect(planar.swing).toBe(true);
-    expect(planar.period).toEqual([2.02, 2.02]);
-    expect(planar.advance).toEqual([null, null]);
-    const generic = periodComparison(m, { kind: 'generic', period_z: 1.02, period_z_infinite: false, azimuth_advance: 3.2 });
+  const reading = { kind: null, period: 1.01, advance: 3.1, precession: 0.2, lowPerPeriod: 2, intervals: 4, amplitude: 0.1, thetaMin: 0, thetaMax: 0.1, from: 0, to: 4 } as const;
+  it('a swing is compared as the full swing period, without Δφ', () => {
+    const swing = { ...reading, kind: 'swing' as const, period: 2.02 };
+    const planarQ = periodComparison(swing, { kind: 'planar', period_z: 2.02, period_z_infinite: false, azimuth_advance: null });
+    expect(planarQ.swing).toBe(true);
+    expect(planarQ.period).toEqual([2.02, 2.02]);
+    expect(planarQ.advance).toEqual([null, null]);
+    // nearly planar: the exact solution's z-period is half the swing
+    const thin = periodComparison(swing, { kind: 'generic', period_z: 1.01, period_z_infinite: false, azimuth_advance: 3.15 });
+    expect(thin.period).toEqual([2.02, 2.02]);
+    // no exact solution (damped): the theory
+    expect(periodComparison(swing, null, 2.03).period).toEqual([2.02, 2.03]);
+  });
+  it('an orbit: T_z, Δφ and the precession 2Δφ − 2π', () => {
+    const orbit = { ...reading, kind: 'orbit' as const };
+    const generic = periodComparison(orbit, { kind: 'generic', period_z: 1.02, period_z_infinite: false, azimuth_advance: 3.2 });
     expect(generic.period).toEqual([1.01, 1.02]);
     expect(generic.advance).toEqual([3.1, 3.2]);
-    expect(periodComparison(m, null).period).toEqual([1.01, null]);
+    expect(generic.precession[1]).toBeCloseTo(6.4 - 2 * Math.PI, 14);
+    expect(periodComparison(orbit, null).period).toEqual([1.01, null]);
+  });
+});
+
+describe('swing theory', () => {
+  it('K(0) = π/2; the period ratio 4K(sin²(θ₀/2))/2π against the 1911 Britannica table (T-6.2)', () => {
+    expect(ellipticK(0)).toBeCloseTo(Math.PI / 2, 15);
+    const table: [number, number][] = [[0.1, 1.0062], [0.3, 1.0585], [0.5, 1.1804], [0.9, 2.0724]];
+    for (const [f, ratio] of table) {
+      const T = swingTheory(1, 9.81, 0, f * Math.PI) as number;
+      expect(Math.abs(T / (2 * Math.PI * Math.sqrt(1 / 9.81)) - ratio)).toBeLessThan(6e-5);
+    }
+  });
+  it('friction c lengthens the small-swing period by ω₀/ω_d, ω_d = √(ω₀² − c²/4); overdamped: none', () => {
+    const w0 = Math.sqrt(9.81);
+    expect(swingTheory(1, 9.81, 0.3, 0)).toBeCloseTo((2 * Math.PI) / Math.sqrt(w0 ** 2 - 0.0225), 12);
+    expect(swingTheory(1, 9.81, 7, 0.1)).toBeNull();
+    expect(swingTheory(1, -9.81, 0, 0.1)).toBeNull();
+  });
+  it('applies to the ideal pendulum and to linear friction only', () => {
+    const status = (model: string, model_params: Record<string, number>) =>
+      ({ model, model_params, params: { length: 2, mass: 1, g: 9.81 } }) as unknown as Status;
+    expect(swingTheoryFor(status('damped', { damping: 0.3, drag: 0 }), 0)).toBeCloseTo(swingTheory(2, 9.81, 0.3, 0) as number, 14);
+    expect(swingTheoryFor(status('damped', { damping: 0.3, drag: 0.1 }), 0)).toBeNull();
+    expect(swingTheoryFor(status('spring', {}), 0)).toBeNull();
+    expect(swingTheoryFor(null, 0)).toBeNull();
   });
 });
 
@@ -165,8 +257,9 @@ describe('words', () => {
   it('picks the language from the URL, then the stored choice, then the browser', () => {
     expect(chooseLanguage('de', 'en', ['en-US'])).toBe('de');
     expect(chooseLanguage(null, 'de', ['en-US'])).toBe('de');
-    expect(chooseLanguage(null, null, ['fr-FR', 'de-AT'])).toBe('de');
-    expect(chooseLanguage('xx', null, ['fr'])).toBe('en');
+    expect(chooseLanguage(null, null, ['it-IT', 'de-AT'])).toBe('de');
+    expect(chooseLanguage(null, null, ['fr-CA', 'de-AT'])).toBe('fr');
+    expect(chooseLanguage('xx', null, ['it'])).toBe('en');
   });
   it('every language has every key, non-empty, with the same placeholders', () => {
     for (const { words } of Object.values(LANGUAGES)) {
@@ -217,13 +310,21 @@ describe('two pendulums', () => {
     expect(sphericalAngles(x).theta).toBeCloseTo(0.51, 14);
   });
   it('copies the first pendulum with one difference and resets', () => {
-    const c = twinCommands(status({ scenario: 'rosette' }), { mode: 'damped', epsilon: 0, method: 'rk4', damping: 0.5 });
+    const c = twinCommands(status({ scenario: 'rosette' }), { mode: 'damped', epsilon: 0, method: 'rk4', damping: 0.5, length: 1, mass: 1, theta: 0 });
     expect(c[0]).toEqual({ type: 'load_scenario', name: 'rosette' });
     expect(c).toContainEqual({ type: 'set_model', model: 'damped', params: { damping: 0.5 } });
     expect(c.at(-2)).toEqual({ type: 'reset' });
-    const m = twinCommands(status({ paused: true }), { mode: 'method', epsilon: 0, method: 'rk4', damping: 0 });
+    const m = twinCommands(status({ paused: true }), { mode: 'method', epsilon: 0, method: 'rk4', damping: 0, length: 1, mass: 1, theta: 0 });
     expect(m).toContainEqual({ type: 'set_method', method: 'rk4', dt: 0.001 });
     expect(m.at(-1)).toEqual({ type: 'pause' });
+  });
+  it('own: a pendulum of its own length, mass and start angle, its pivot drawn beside the first', () => {
+    const c = twinCommands(status({}), { mode: 'own', epsilon: 0, method: 'rk4', damping: 0, length: 0.5, mass: 2, theta: 0.2 });
+    expect(c).toContainEqual({ type: 'set_params', length: 0.5, mass: 2, g: 9.81 });
+    expect(c).toContainEqual({ type: 'set_state', theta: 0.2, phi: 0, theta_dot: 0, phi_dot: 0 });
+    const d = sideBySide(1, 0.5);
+    expect(Math.hypot(...d)).toBeCloseTo(1.65, 14); // the spheres of reach 1 m and 0.5 m apart by a tenth
+    expect(d[2]).toBe(0);
   });
   it('positions between coarse frames to O(h⁴): a conical orbit sampled 0.1 s apart', () => {
     const w = 3;
