@@ -19,9 +19,32 @@ export async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
   return body as T;
 }
 
-function post<T>(path: string, body: unknown): Promise<T> {
-  return getJSON<T>(path, { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(body) });
+/** A request that was no longer wanted when its turn came (a newer epoch or parameters): not sent. */
+export class Stale extends Error {}
+
+/** The server computes at most 2 requests per client at once and answers 429 beyond (docs/web.md, "A pupil
+ *  in the room"); a page asks one at a time (two pages or a page and its second pendulum's fit stay within
+ *  the limit), in order, and skips a request that is `stale()` when its turn comes. */
+const MAX_IN_FLIGHT = 1;
+let inFlight = 0;
+const waiting: (() => void)[] = [];
+
+async function post<T>(path: string, body: unknown, stale: () => boolean = () => false): Promise<T> {
+  if (inFlight >= MAX_IN_FLIGHT) await new Promise<void>((go) => waiting.push(go));
+  inFlight++;
+  try {
+    if (stale()) throw new Stale(`${path}: no longer needed`);
+    return await getJSON<T>(path, { method: 'POST', headers: { 'content-type': 'application/json' }, body: JSON.stringify(body) });
+  } finally {
+    inFlight--;
+    waiting.shift()?.();
+  }
 }
+
+/** Reports `e` unless the request was skipped as stale. */
+const unlessStale = (report: (e: unknown) => void) => (e: unknown) => {
+  if (!(e instanceof Stale)) report(e);
+};
 
 const message = (e: unknown): string => (e instanceof Error ? e.message : String(e));
 
@@ -70,11 +93,11 @@ export class Analyses {
     if (key === this.veffKey && !(stale && now - this.veffAt > 1000)) return;
     if (key !== this.veffKey) this.veff = null;
     [this.veffKey, this.veffAt, this.veffJ3] = [key, now, f.j3];
-    post<EffectivePotential>('api/effective_potential', { length: p.length, mass: p.mass, g: p.g, j3: f.j3 }).then(
+    post<EffectivePotential>('api/effective_potential', { length: p.length, mass: p.mass, g: p.g, j3: f.j3 }, () => this.veffKey !== key).then(
       (q) => {
         if (this.veffKey === key) this.veff = q;
       },
-      (e: unknown) => this.explain(`V_eff: ${message(e)}`),
+      unlessStale((e) => this.explain(`V_eff: ${message(e)}`)),
     );
   }
 
@@ -86,11 +109,11 @@ export class Analyses {
     this.emKey = key;
     this.em = null;
     if (p.g === 0) return; // no potential, no map
-    post<EMView>('api/em_map', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }).then(
+    post<EMView>('api/em_map', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }, () => this.emKey !== key).then(
       (q) => {
         if (this.emKey === key) this.em = q;
       },
-      (e: unknown) => this.explain(`energy–momentum map: ${message(e)}`),
+      unlessStale((e) => this.explain(`energy–momentum map: ${message(e)}`)),
     );
   }
 
@@ -105,11 +128,12 @@ export class Analyses {
     }
     this.reduced.setNote(null);
     const p = status.params;
-    post<ReducedCurves>('api/reduced', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }).then(
+    const gone = () => this.store.status?.epoch !== status.epoch;
+    post<ReducedCurves>('api/reduced', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }, gone).then(
       (q) => {
-        if (this.store.status?.epoch === status.epoch) this.reduced.set(q);
+        if (!gone()) this.reduced.set(q);
       },
-      (e: unknown) => this.reduced.setNote(`reduced view: ${message(e)}`),
+      unlessStale((e) => this.reduced.setNote(`reduced view: ${message(e)}`)),
     );
   }
 
@@ -118,7 +142,7 @@ export class Analyses {
     this.exactEpoch = status.epoch;
     if (status.model !== 'ideal') return;
     const p = status.params;
-    post<ExactQuantities>('api/exact', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }).then(
+    post<ExactQuantities>('api/exact', { length: p.length, mass: p.mass, g: p.g, x: f.x, v: f.v }, () => this.store.status?.epoch !== status.epoch).then(
       (q) => {
         if (this.store.status?.epoch === status.epoch) this.store.setExact(q);
       },

@@ -99,3 +99,28 @@ export function accessibleSliders(gui: GUI): void {
     });
   }
 }
+
+/** What a key does on the focused 3-D view (issue 28: the view and the bob by keyboard): the arrows turn the
+ *  camera (5° a press), + and − zoom, Shift + ← → moves the bob's start by ∓1° of θ, or null. */
+export function viewKey(key: string, shift: boolean): { orbit: [number, number]; zoom: number } | { bob: number } | null {
+  const step = (5 * Math.PI) / 180;
+  if (shift && key === 'ArrowLeft') return { bob: -1 };
+  if (shift && key === 'ArrowRight') return { bob: 1 };
+  switch (key) {
+    case 'ArrowLeft':
+      return { orbit: [-step, 0], zoom: 1 };
+    case 'ArrowRight':
+      return { orbit: [step, 0], zoom: 1 };
+    case 'ArrowUp':
+      return { orbit: [0, step], zoom: 1 };
+    case 'ArrowDown':
+      return { orbit: [0, -step], zoom: 1 };
+    case '+':
+    case '=':
+      return { orbit: [0, 0], zoom: 1 / 1.1 };
+    case '-':
+      return { orbit: [0, 0], zoom: 1.1 };
+    default:
+      return null;
+  }
+}

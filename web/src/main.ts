@@ -19,7 +19,10 @@ import { ChangeGate, FrameCosts, RateLimiter } from './perf';
 import { gravityDirection } from './scene/vectors';
 import { scenarioRequest } from './export';
 import { LabStore } from './state';
-import { commandsFor, decodeUrl, encodeUrl, fromStatus } from './url';
+import { commandsFor, decodeUrl, encodeUrl, encodeView, fromStatus, linkContents } from './url';
+import type { UrlScenario } from './url';
+import { STEREO_MODES } from './scene/scene';
+import { language } from './i18n';
 import { chooseLanguage, setLanguage, t } from './i18n';
 import { Toolbar } from './panels/toolbar';
 import { Tools } from './panels/tools';
@@ -29,7 +32,9 @@ import { TwinPanel } from './panels/twin';
 import { HelpOverlay } from './panels/help';
 import { driftScales } from './panels/plots';
 import { Recorder } from './record';
-import { accessibleSliders, ownsKeys, shortcutFor } from './keyboard';
+import { accessibleSliders, ownsKeys, shortcutFor, viewKey } from './keyboard';
+import { describeMotion } from './describe';
+import { DEG, sphericalAngles } from './measure';
 import { energySplit } from './measure';
 import { FitDataPanel } from './panels/fitdata';
 import { loadCommands } from './fitdata';
@@ -131,8 +136,21 @@ async function main(): Promise<void> {
   const data = new DataPanel(byId('data'));
 
   const fromUrl = decodeUrl(window.location.search);
+  // a shared link's view options: only known ones, of the default's type (the stereo mode one of its words)
+  for (const [k, v] of Object.entries(fromUrl.value.view ?? {})) {
+    const d = (DEFAULT_VIEW as unknown as Record<string, unknown>)[k];
+    const ok = d !== undefined && typeof d === typeof v && (k !== 'stereo' || (STEREO_MODES as readonly unknown[]).includes(v));
+    if (ok) (view as unknown as Record<string, unknown>)[k] = v;
+    else fromUrl.problems.push(`view: ${k} = ${String(v)} is not a view option`);
+  }
   if (fromUrl.problems.length > 0) explain(`link: ${fromUrl.problems.join('; ')}`);
   let startup: Command[] = commandsFor(fromUrl.value);
+  // with a second pendulum, the paused time's steps wait until both run (they go to both)
+  let replay: Command[] = [];
+  if (fromUrl.value.twin !== undefined) {
+    replay = startup.filter((c) => c.type === 'step');
+    startup = startup.filter((c) => c.type !== 'step');
+  }
   let conn: Connection | null = null;
   let twin: TwinPanel | null = null;
   const send = (cmd: Command) => {
@@ -180,7 +198,31 @@ async function main(): Promise<void> {
     },
     collapsed: () => undefined,
   });
+  // the 3-D view by keyboard: focusable, the arrows turn the camera, + − zoom, Shift + ← → the bob's start
+  const canvas = scene.renderer.domElement;
+  canvas.tabIndex = 0;
+  canvas.setAttribute('aria-label', `${t('page.scene')}. ${t('help.camera')}; Shift + ← →: ${t('help.bobKeys')}`);
+  canvas.addEventListener('keydown', (e) => {
+    const k = viewKey(e.key, e.shiftKey);
+    if (k === null || e.ctrlKey || e.metaKey || e.altKey) return;
+    e.preventDefault();
+    if ('orbit' in k) scene.orbitBy(k.orbit[0], k.orbit[1], k.zoom);
+    else {
+      const s = store.status;
+      if (s === null) return;
+      if (!s.paused) send({ type: 'pause' });
+      const a = sphericalAngles(s.start.x);
+      const theta = Math.min(Math.max(a.theta + k.bob / DEG, 0), Math.PI);
+      send({ type: 'set_state', theta, phi: a.phi, theta_dot: 0, phi_dot: 0 });
+      explain(t('describe.text', { theta: (theta * DEG).toFixed(0), dir: t('describe.rest'), v: '0.00' }), true);
+    }
+  });
   document.addEventListener('keydown', (e) => {
+    if ((e.key === 'd' || e.key === 'D') && !e.ctrlKey && !e.metaKey && !e.altKey && !ownsKeys(e.target, e.key) && !help.open) {
+      const latest = store.latest();
+      tools.describe(describeMotion(store.displayed(), latest ? energySplit(latest, store.status?.params.mass ?? 1, store.status?.params.g ?? 9.81, store.status?.params.length ?? 1, store.work) : null), performance.now(), true);
+      return;
+    }
     const action = shortcutFor(e.key, e.ctrlKey || e.metaKey || e.altKey);
     if (action === null) return;
     if (action === 'close') {
@@ -241,11 +283,13 @@ async function main(): Promise<void> {
     },
     screenshot: () => download(`pendulab-${store.status?.scenario ?? 'lab'}.png`, scene.screenshot()),
     copyLink: () => {
+      writeUrl();
       const link = window.location.href;
+      const what = linkContents(lab());
       navigator.clipboard?.writeText(link).then(
-        () => explain(t('msg.linkCopied'), true),
-        () => explain(link),
-      ) ?? explain(link);
+        () => explain(t('msg.linkCopied', { what }), true),
+        () => explain(`${link} — ${what}`, true),
+      ) ?? explain(`${link} — ${what}`, true);
     },
     viewChanged: (v, top) => {
       scene.setTopView(top);
@@ -253,6 +297,27 @@ async function main(): Promise<void> {
     },
   });
 
+  // the whole lab in the URL (docs/web.md, "Share and export"): the server's status, the view options that
+  // differ from the defaults, the chosen plot, the second pendulum, the language
+  const lab = (): UrlScenario => {
+    const s = store.status;
+    const u: UrlScenario = s === null ? {} : fromStatus(s);
+    u.view = encodeView(view as unknown as Record<string, boolean | number | string>, DEFAULT_VIEW as unknown as Record<string, boolean | number | string>);
+    if (chosen.choice.x !== 't' || chosen.choice.y !== 'theta') u.plot = [chosen.choice.x, chosen.choice.y];
+    if (twin?.on && twin.options.mode !== 'off') u.twin = { ...twin.options };
+    u.lang = language();
+    return u;
+  };
+  const writeUrl = () => {
+    if (startup.length > 0 || store.status === null) return;
+    const q = `?${encodeUrl(lab())}`;
+    if (q !== window.location.search) window.history.replaceState(null, '', q);
+  };
+  if (fromUrl.value.plot) chosen.choose(...fromUrl.value.plot);
+  tools.showOverlay('ruler', view.ruler);
+  tools.showOverlay('protractor', view.protractor);
+  scene.setStereo(view.stereo);
+  let twinToRestore = fromUrl.value.twin ?? null;
   const analyses = new Analyses(store, reduced, explain);
   twin = new TwinPanel(byId('tools'), store, schema.methods, socketUrl(window.location), { send, explain });
   accessibleSliders(controls.gui);
@@ -272,7 +337,7 @@ async function main(): Promise<void> {
     scene.setLength(s.params.length);
     scene.setModel(s.model);
     portraits.setModel(s.model);
-    if (startup.length === 0) window.history.replaceState(null, '', `?${encodeUrl(fromStatus(s))}`);
+    writeUrl();
   };
 
   conn = new Connection(socketUrl(window.location), {
@@ -312,6 +377,20 @@ async function main(): Promise<void> {
         const cmds = startup;
         startup = [];
         for (const c of cmds) send(c);
+      }
+      // a shared link's second pendulum: a copy of the first once the server has the link's scenario
+      if (twinToRestore !== null) {
+        const o = twinToRestore;
+        twinToRestore = null;
+        void whenCaughtUp(() => store.status?.commands, () => conn?.sent ?? 0, 5000)
+          .then(() => {
+            twin?.restore(o);
+            return whenCaughtUp(() => (twin?.store.status?.paused ? 1 : undefined), () => 1, 5000);
+          })
+          .then(() => {
+            for (const c of replay) send(c);
+            replay = [];
+          });
       }
     },
     onProtocolError: (msg) => explain(`protocol: ${msg}`),
@@ -422,8 +501,11 @@ async function main(): Promise<void> {
       chosen.update(store.history.frames, ctx, twin?.on ? twin.store.history.frames : null);
       twin?.update(byId('plots').clientWidth - 8);
       tools.update(f?.x ?? null, f?.t ?? null);
+      writeUrl();
       const latest = store.latest();
-      energy.draw(latest ? energySplit(latest, mass, g, length, store.work) : null, store.status?.model !== 'ideal');
+      const split = latest ? energySplit(latest, mass, g, length, store.work) : null;
+      energy.draw(split, store.status?.model !== 'ideal');
+      tools.describe(describeMotion(f, split), now);
       t1 = performance.now();
       costs.add('plots setData', t1 - t0);
       portraits.update(store.history, f, analyses.veff, p?.mass ?? 1, p?.g ?? 9.81, p?.length ?? 1);

@@ -4,7 +4,18 @@
 // comma-separated, SI units), l [m], m [kg], g [m/s²], method, dt [s], ts (time scale), x, v (the start:
 // three numbers each, comma-separated, in m and m/s), paused (1). Numbers are written with JavaScript's
 // shortest round-trip form, so every float64 reads back bit for bit.
+//
+// The whole lab (issue 28: a teacher hands out a prepared experiment): lang (the language), at [s] (the
+// paused time since the start: replayed by `step` commands of the fixed-step method, which reach the same
+// state bit for bit), view (the view options that differ from the defaults: `ruler`, `-trail`,
+// `stereo:anaglyph`, `trailSeconds:20`), plot (the chosen plot's x,y variables) and twin (the second
+// pendulum: `own:l:m:θ₀°`, `eps:ε°`, `method:name`, `damped:c`).
 import type { Command, ModelParams, Status, Vec3 } from './protocol';
+import type { TwinOptions } from './twin';
+import { t } from './i18n';
+
+/** A view option's value (scene.ts ViewOptions): a toggle, a number or a word (the stereo mode). */
+export type ViewValue = boolean | number | string;
 
 export interface UrlScenario {
   scenario?: string;
@@ -19,6 +30,35 @@ export interface UrlScenario {
   x?: Vec3;
   v?: Vec3;
   paused?: boolean;
+  /** The language of the page (i18n code). */
+  lang?: string;
+  /** The paused time since the start [s] (only with paused and a fixed-step method). */
+  at?: number;
+  /** View options that differ from the defaults. */
+  view?: Record<string, ViewValue>;
+  /** The chosen plot's variables [x, y] (variables.ts names). */
+  plot?: [string, string];
+  /** The second pendulum (TwinOptions without the mode `off`; angles in radians). */
+  twin?: TwinOptions;
+}
+
+const DEG = 180 / Math.PI;
+
+/** The `view` value: the options of `view` that differ from `defaults`. */
+export function encodeView(view: Readonly<Record<string, ViewValue>>, defaults: Readonly<Record<string, ViewValue>>): Record<string, ViewValue> {
+  const out: Record<string, ViewValue> = {};
+  for (const [k, v] of Object.entries(view)) if (k in defaults && defaults[k] !== v) out[k] = v;
+  return out;
+}
+
+function twinText(o: TwinOptions): string | null {
+  // angles in degrees to 12 digits (15° read back is 15, not 14.999999999999998)
+  const deg = (a: number) => num(Number((a * DEG).toPrecision(12)));
+  if (o.mode === 'own') return `own:${num(o.length)}:${num(o.mass)}:${deg(o.theta)}`;
+  if (o.mode === 'epsilon') return `eps:${deg(o.epsilon)}`;
+  if (o.mode === 'method') return `method:${o.method}`;
+  if (o.mode === 'damped') return `damped:${num(o.damping)}`;
+  return null;
 }
 
 function num(n: number): string {
@@ -42,6 +82,14 @@ export function encodeUrl(u: UrlScenario): string {
   if (u.x !== undefined) q.set('x', u.x.map(num).join(','));
   if (u.v !== undefined) q.set('v', u.v.map(num).join(','));
   if (u.paused === true) q.set('paused', '1');
+  if (u.at !== undefined && u.at > 0) q.set('at', num(u.at));
+  if (u.view !== undefined && Object.keys(u.view).length > 0) {
+    q.set('view', Object.entries(u.view).map(([k, v]) => (typeof v === 'boolean' ? (v ? k : `-${k}`) : `${k}:${typeof v === 'number' ? num(v) : v}`)).join(','));
+  }
+  if (u.plot !== undefined) q.set('plot', u.plot.join(','));
+  const tw = u.twin === undefined ? null : twinText(u.twin);
+  if (tw !== null) q.set('twin', tw);
+  if (u.lang !== undefined) q.set('lang', u.lang);
   return q.toString();
 }
 
@@ -59,7 +107,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   const q = new URLSearchParams(query.startsWith('?') ? query.slice(1) : query);
   const value: UrlScenario = {};
   const problems: string[] = [];
-  const known = new Set(['s', 'model', 'mp', 'l', 'm', 'g', 'method', 'dt', 'ts', 'x', 'v', 'paused', 'lang']);
+  const known = new Set(['s', 'model', 'mp', 'l', 'm', 'g', 'method', 'dt', 'ts', 'x', 'v', 'paused', 'lang', 'at', 'view', 'plot', 'twin']);
   for (const key of q.keys()) if (!known.has(key)) problems.push(`unknown URL key ${key}`);
   const name = (key: string): string | undefined => {
     const t = q.get(key);
@@ -127,7 +175,57 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   }
   const paused = q.get('paused');
   if (paused !== null) value.paused = paused === '1' || paused === 'true';
+  const lang = q.get('lang');
+  if (lang !== null && /^[a-z]{2}$/.test(lang)) value.lang = lang;
+  const at = number('at');
+  if (at !== undefined) {
+    if (at >= 0 && at <= 1e6) value.at = at;
+    else problems.push(`at = ${at} is not a time 0 … 1e6 s`);
+  }
+  const view = q.get('view');
+  if (view !== null) {
+    const v: Record<string, ViewValue> = {};
+    for (const item of view.split(',').filter(Boolean)) {
+      const m = /^(-?)([A-Za-z]{1,30})(?::([A-Za-z0-9 .+-]{1,30}))?$/.exec(item);
+      if (m === null) {
+        problems.push(`view: ${JSON.stringify(item)} is not a view option`);
+        continue;
+      }
+      const [, neg, key, val] = m as unknown as [string, string, string, string | undefined];
+      if (val === undefined) v[key] = neg !== '-';
+      else v[key] = parseNumber(val) ?? val;
+    }
+    value.view = v;
+  }
+  const plot = q.get('plot');
+  if (plot !== null) {
+    const p = plot.split(',');
+    if (p.length === 2 && p.every((n) => /^[a-z0-9_]{1,20}$/i.test(n))) value.plot = [p[0] as string, p[1] as string];
+    else problems.push(`plot = ${JSON.stringify(plot)} is not two variable names`);
+  }
+  const twin = q.get('twin');
+  if (twin !== null) {
+    const o = decodeTwin(twin);
+    if (o === null) problems.push(`twin = ${JSON.stringify(twin)} is not own:l:m:θ₀, eps:ε, method:name or damped:c`);
+    else value.twin = o;
+  }
   return { value, problems };
+}
+
+/** The second pendulum of a `twin` value, or null when it cannot be read. */
+export function decodeTwin(text: string): TwinOptions | null {
+  const o: TwinOptions = { mode: 'off', epsilon: 0.01 / DEG, method: 'rk4', damping: 0.5, length: 0.5, mass: 1, theta: 10 / DEG };
+  const [kind, ...rest] = text.split(':');
+  const nums = rest.map(parseNumber);
+  if (kind === 'own' && nums.length === 3 && nums.every((n) => n !== null)) {
+    const [l, m, th] = nums as [number, number, number];
+    if (!(l > 0 && m > 0 && th >= 0 && th <= 180)) return null;
+    return { ...o, mode: 'own', length: l, mass: m, theta: th / DEG };
+  }
+  if (kind === 'eps' && nums.length === 1 && nums[0] !== null) return { ...o, mode: 'epsilon', epsilon: (nums[0] as number) / DEG };
+  if (kind === 'damped' && nums.length === 1 && (nums[0] ?? -1) >= 0) return { ...o, mode: 'damped', damping: nums[0] as number };
+  if (kind === 'method' && rest.length === 1 && NAME.test(rest[0] as string)) return { ...o, mode: 'method', method: rest[0] as string };
+  return null;
 }
 
 /** What the URL should say for a status (the scenario as it stands: parameters, method, start). */
@@ -146,6 +244,8 @@ export function fromStatus(s: Status): UrlScenario {
   if (s.scenario !== null) u.scenario = s.scenario;
   if (Object.keys(s.model_params).length > 0) u.modelParams = { ...s.model_params };
   if (s.paused) u.paused = true;
+  // the paused time, where fixed steps can replay it exactly
+  if (s.paused && !s.adaptive && s.t > s.t0) u.at = s.t - s.t0;
   return u;
 }
 
@@ -168,5 +268,29 @@ export function commandsFor(u: UrlScenario): Command[] {
   if (u.x !== undefined && u.v !== undefined) out.push({ type: 'set_state', x: u.x, v: u.v });
   if (out.length > 0) out.push({ type: 'reset' });
   if (u.paused === true) out.push({ type: 'pause' });
+  // the paused time: the same fixed steps again from the start (the server's limit is 100 000 per command)
+  if (u.paused === true && u.at !== undefined && u.at > 0 && u.dt !== undefined && u.dt > 0) {
+    let n = Math.round(u.at / u.dt);
+    if (n > 10_000_000) n = 0; // more than a minute of work: not replayed (the start is kept)
+    while (n > 0) {
+      const k = Math.min(n, 100_000);
+      out.push({ type: 'step', n: k });
+      n -= k;
+    }
+  }
   return out;
+}
+
+/** What a link carries, in the page's words, for the "copy link" message: the scenario always, then the
+ *  paused time, the view options, the chosen plot, the second pendulum and the language. */
+export function linkContents(u: UrlScenario): string {
+  const parts = [t('link.scenario')];
+  if (u.paused === true) parts.push(u.at !== undefined && u.at > 0 ? t('link.pausedAt', { t: u.at.toFixed(3) }) : t('link.paused'));
+  const view = Object.entries(u.view ?? {}).map(([k, v]) => (typeof v === 'boolean' ? (v ? k : `−${k}`) : `${k} ${v}`));
+  if (view.length > 0) parts.push(t('link.view', { list: view.join(', ') }));
+  if (u.plot !== undefined) parts.push(t('link.plot', { x: u.plot[0], y: u.plot[1] }));
+  const tw = u.twin === undefined ? null : twinText(u.twin);
+  if (tw !== null) parts.push(t('link.twin', { what: tw }));
+  if (u.lang !== undefined) parts.push(t('link.lang', { lang: u.lang }));
+  return parts.join('; ');
 }

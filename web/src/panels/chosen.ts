@@ -13,6 +13,18 @@ export class ChosenPlot {
   private readonly plot: CurvePlot;
   private readonly visibility = new Visibility();
   readonly choice = { x: 't', y: 'theta' };
+  private readonly selects: Partial<Record<'x' | 'y', HTMLSelectElement>> = {};
+
+  /** Plots `y` against `x` (variables.ts names; a shared link's plot). False when one is unknown. */
+  choose(x: string, y: string): boolean {
+    if (![x, y].every((n) => VARIABLES.some((v) => v.name === n))) return false;
+    this.choice.x = x;
+    this.choice.y = y;
+    if (this.selects.x) this.selects.x.value = x;
+    if (this.selects.y) this.selects.y.value = y;
+    this.labels();
+    return true;
+  }
 
   constructor(private readonly container: HTMLElement) {
     const bar = document.createElement('div');
@@ -33,6 +45,7 @@ export class ChosenPlot {
         select.appendChild(o);
       }
       select.value = this.choice[axis];
+      this.selects[axis] = select;
       select.addEventListener('change', () => {
         this.choice[axis] = select.value;
         this.labels();

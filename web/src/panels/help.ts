@@ -1,6 +1,6 @@
 // The `?` overlay (docs/web.md, "Keyboard"): the keyboard shortcuts and the colour key of the scene (the
 // vectors, the bob and its trail, the second pendulum). A modal dialog over the page while open; Esc, the
-// close button or `?` closes it and gives the focus back.
+// close button or `?` closes it and gives the focus back; while it is open the focus stays in it.
 import { ARROW_COLORS } from '../scene/scene';
 import type { VectorName } from '../scene/vectors';
 import { t } from '../i18n';
@@ -34,6 +34,9 @@ export class HelpOverlay {
       ['S', 'help.s'],
       ['← → ↑ ↓', 'help.arrows'],
       ['Page ↑ / Page ↓', 'help.page'],
+      ['← → ↑ ↓ / + −', 'help.camera'],
+      ['Shift + ← →', 'help.bobKeys'],
+      ['D', 'help.describe'],
       ['Tab', 'help.tab'],
       ['?', 'help.help'],
       ['Esc', 'help.esc'],
@@ -73,6 +76,25 @@ export class HelpOverlay {
     box.append(h, keys, h3, key, close);
     el.appendChild(box);
     el.addEventListener('click', (e) => e.target === el && this.toggle(false));
+    // the focus stays in the dialog while it is open: Tab and Shift+Tab cycle through its controls
+    el.addEventListener('keydown', (e) => {
+      if (e.key !== 'Tab') return;
+      const items = [...el.querySelectorAll<HTMLElement>('button, [href], input, select, [tabindex]:not([tabindex="-1"])')];
+      const first = items[0];
+      const last = items[items.length - 1];
+      if (first === undefined || last === undefined) return;
+      if (e.shiftKey && document.activeElement === first) {
+        e.preventDefault();
+        last.focus();
+      } else if (!e.shiftKey && document.activeElement === last) {
+        e.preventDefault();
+        first.focus();
+      }
+    });
+    // a focus that leaves the open dialog (a click outside it, a screen reader's jump) comes back
+    document.addEventListener('focusin', (e) => {
+      if (this.open && e.target instanceof Node && !el.contains(e.target)) this.el.querySelector<HTMLElement>('button')?.focus();
+    });
   }
 
   get open(): boolean {

@@ -38,9 +38,17 @@ export function startCommand(thetaDeg: number, phiDeg: number, phiDotDeg: number
   return { type: 'set_state', theta: thetaDeg / DEG, phi: phiDeg / DEG, theta_dot: 0, phi_dot: phiDotDeg / DEG };
 }
 
+/** The mystery planet's gravity [m/s²] for a uniform random u ∈ [0, 1): 2 … 20 m/s² in steps of 0.01,
+ *  never within 0.3 m/s² of a preset (a class should not recognise it by the period alone). */
+export function mysteryGravity(u: number): number {
+  let g = Math.round((2 + 18 * u) * 100) / 100;
+  for (const [, p] of GRAVITY_PRESETS) if (Math.abs(g - p) < 0.3) g = Math.round((g + 0.6) * 100) / 100;
+  return g;
+}
+
 export interface ToolActions {
   send(cmd: Command): void;
-  explain(text: string): void;
+  explain(text: string, info?: boolean): void;
   /** The ruler or the protractor switched on or off in the scene. */
   overlay(which: 'ruler' | 'protractor', on: boolean): void;
 }
@@ -80,6 +88,43 @@ export class Tools {
   private readonly frictionValue: HTMLOutputElement;
   private readonly gravity: HTMLSelectElement;
   private now = 0;
+  /** The mystery planet's g [m/s²] while its value is hidden (null: none). */
+  mysteryG: number | null = null;
+  private readonly reveal: HTMLButtonElement;
+  private readonly description: HTMLElement;
+  private readonly describeLive: HTMLInputElement;
+  private describedAt = -Infinity;
+  private spokenUntil = -Infinity;
+
+  private endMystery(): void {
+    this.mysteryG = null;
+    document.body.classList.remove('mystery');
+    this.reveal.hidden = true;
+  }
+
+  /** The motion in words (describe.ts) under the angles: with "describe every 5 s" on it is a polite live
+   *  region renewed every 5 s (a screen reader reads it out); `now` forces it (the D key). */
+  describe(text: string, wallMs: number, now = false): void {
+    const live = this.describeLive.checked;
+    if (now) this.spokenUntil = wallMs + 3000; // a region asked to speak stays live while it is read out
+    this.description.setAttribute('aria-live', live || wallMs < this.spokenUntil ? 'polite' : 'off');
+    if (!now && live && wallMs - this.describedAt < 5000) return;
+    if (!now && !live && wallMs - this.describedAt < 1000) return;
+    this.describedAt = wallMs;
+    if (this.description.textContent !== text) this.description.textContent = text;
+    else if (now) {
+      // the same words again: a screen reader reads a live region only when it changes
+      this.description.textContent = '';
+      requestAnimationFrame(() => (this.description.textContent = text));
+    }
+  }
+  private readonly overlayBoxes: Partial<Record<'ruler' | 'protractor', HTMLInputElement>> = {};
+
+  /** Shows the ruler's or the protractor's state (a shared link's view). */
+  showOverlay(which: 'ruler' | 'protractor', on: boolean): void {
+    const box = this.overlayBoxes[which];
+    if (box) box.checked = on;
+  }
 
   constructor(
     container: HTMLElement,
@@ -113,10 +158,23 @@ export class Tools {
     this.gravity = el('select', { 'data-input': 'gravity-preset' });
     this.gravity.appendChild(el('option', { value: '' }, t('gravity.custom')));
     for (const [key, g] of GRAVITY_PRESETS) this.gravity.appendChild(el('option', { value: String(g) }, `${t(key)} (${g} m/s²)`));
+    this.gravity.appendChild(el('option', { value: 'mystery' }, t('tools.mystery')));
+    const reveal = el('button', { type: 'button', 'data-action': 'reveal-g', hidden: '' }, t('tools.reveal'));
+    this.reveal = reveal;
     this.gravity.addEventListener('change', () => {
-      if (this.gravity.value !== '') actions.send({ type: 'set_params', g: Number(this.gravity.value) });
+      if (this.gravity.value === 'mystery') {
+        this.mysteryG = mysteryGravity(Math.random());
+        document.body.classList.add('mystery');
+        reveal.hidden = false;
+        actions.send({ type: 'set_params', g: this.mysteryG });
+        actions.explain(t('tools.mysteryOn'), true);
+      } else if (this.gravity.value !== '') actions.send({ type: 'set_params', g: Number(this.gravity.value) });
     });
-    gl.appendChild(this.gravity);
+    reveal.addEventListener('click', () => {
+      actions.explain(t('tools.revealed', { g: this.mysteryG ?? '?' }), true);
+      this.endMystery();
+    });
+    gl.append(this.gravity, ' ', reveal);
     const fl = el('label');
     fl.append(`${t('tools.friction')} `);
     this.friction = el('input', { type: 'range', min: '0', max: '2', step: '0.01', 'data-input': 'friction' });
@@ -137,7 +195,11 @@ export class Tools {
     // the angles now
     const now = section(container, t('tools.now'), 'angles');
     this.angleText = el('div', { class: 'big', 'data-readout': 'angles', 'aria-live': 'off' });
-    now.appendChild(this.angleText);
+    this.description = el('p', { class: 'describe', 'data-readout': 'describe', 'aria-live': 'off', 'aria-atomic': 'true' });
+    const dl = el('label');
+    this.describeLive = el('input', { type: 'checkbox', 'data-input': 'describe' });
+    dl.append(this.describeLive, ` ${t('describe.toggle')}`);
+    now.append(this.angleText, this.description, dl);
 
     // stopwatch
     const sw = section(container, t('tools.stopwatch'), 'stopwatch');
@@ -170,6 +232,7 @@ export class Tools {
       const l = el('label');
       const box = el('input', { type: 'checkbox', 'data-input': which });
       box.addEventListener('change', () => actions.overlay(which, box.checked));
+      this.overlayBoxes[which] = box;
       l.append(box, ` ${t(which === 'ruler' ? 'tools.ruler' : 'tools.protractor')}`);
       ov.appendChild(l);
     }
@@ -178,7 +241,8 @@ export class Tools {
   /** Shows the server's status: the gravity preset that matches g, the damping on the friction slider. */
   sync(s: Status): void {
     const match = GRAVITY_PRESETS.find(([, g]) => g === s.params.g);
-    if (document.activeElement !== this.gravity) this.gravity.value = match ? String(match[1]) : '';
+    if (this.mysteryG !== null && s.params.g !== this.mysteryG) this.endMystery(); // g changed by other means
+    if (document.activeElement !== this.gravity) this.gravity.value = this.mysteryG !== null ? 'mystery' : match ? String(match[1]) : '';
     const c = s.model_params?.['damping'];
     if (document.activeElement !== this.friction) {
       this.friction.value = String(c ?? 0);

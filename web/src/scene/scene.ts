@@ -497,6 +497,21 @@ export class PendulumScene {
     this.followAt.copy(pivot);
   }
 
+  /** Turns the camera about its target by `azimuth` [rad] around the vertical and `elevation` [rad] up or
+   *  down (kept off the poles), and moves it `zoom` times as far (keyboard access to the view). */
+  orbitBy(azimuth: number, elevation: number, zoom = 1): void {
+    const offset = this.camera.position.clone().sub(this.controls.target);
+    const sph = new THREE.Spherical().setFromCartesianCoords(offset.x, offset.z, -offset.y); // y-up spherical
+    sph.theta += azimuth;
+    sph.phi = Math.min(Math.max(sph.phi - elevation, 0.05), Math.PI - 0.05);
+    sph.radius *= zoom;
+    const v = new THREE.Vector3().setFromSpherical(sph);
+    this.camera.position.set(v.x, -v.z, v.y).add(this.controls.target);
+    this.camera.lookAt(this.controls.target);
+    this.controls.update();
+    this.invalid = true;
+  }
+
   /** The second pendulum of its own (two-pendulum mode `own`): rod length `length` [m], its pivot drawn at
    *  `offset` [m] beside the first; the camera frames both spheres of reach. Null: the second hangs from the
    *  first's pivot with the first's length (the other modes). */

@@ -95,7 +95,7 @@ export async function checkTouch(page, { check, WAIT }) {
     open = ws;
     ws.connectToServer();
   });
-  await page2.goto(page.url(), { timeout: WAIT });
+  await page2.goto(new URL(page.url()).origin + '/', { timeout: WAIT });
   await page2.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 2, null, { timeout: WAIT });
   const before = await page2.evaluate(() => document.getElementById('offline').hidden);
   refuse = true;
@@ -244,6 +244,60 @@ async function checkDampedPeriod(page, { check, WAIT }) {
   check(/mean over \d+ periods/.test(r.row) && !/turn between lowest points/.test(r.row), 'the damped swing counts whole periods and shows no azimuth advance');
 }
 
+/** A prepared lab handed out (issue 28): the link carries the view options, the chosen plot, the second
+ *  pendulum, the language and the paused time; a new page opened from it shows the same, at the same time
+ *  and state (the paused time replayed by the same fixed steps), and "copy link" says what it carries. */
+export async function checkShare(page, { check, WAIT }) {
+  await page.evaluate(() => {
+    window.pendulab.send({ type: 'load_scenario', name: 'rosette' });
+    window.pendulab.send({ type: 'pause' });
+  });
+  await page.waitForFunction(() => window.pendulab.store.status?.scenario === 'rosette' && window.pendulab.store.status.paused, null, { timeout: WAIT });
+  await page.locator('[data-input="ruler"]').check();
+  await page.locator('[data-input="chosen-y"]').selectOption('energy');
+  await page.locator('[data-input="chosen-x"]').selectOption('theta');
+  await page.locator('[data-input="twin-mode"]').selectOption('own');
+  await page.locator('[data-input="twin-length"]').fill('0.5');
+  await page.locator('[data-input="twin-mass"]').fill('1');
+  await page.locator('[data-input="twin-theta"]').fill('15');
+  await page.locator('[data-action="twin-start"]').click();
+  await page.waitForFunction(() => window.pendulab.twin.status?.params.length === 0.5 && window.pendulab.twin.status.paused, null, { timeout: WAIT });
+  await page.evaluate(() => window.pendulab.send({ type: 'step', n: 1234 }));
+  await page.waitForFunction(() => window.pendulab.store.status.t > 1.2 && /at=/.test(location.search) && /twin=own/.test(location.search) && /view=/.test(location.search) && /plot=/.test(location.search), null, { timeout: WAIT });
+  await page.evaluate(() => [...document.querySelectorAll('#gui .lil-controller.lil-function button, #gui .controller.function button')].find((b) => /copy link to this lab/.test(b.textContent)).click());
+  await page.waitForFunction(() => /second pendulum own:0\.5:1:15/.test(document.getElementById('message').textContent), null, { timeout: WAIT });
+  const said = await page.evaluate(() => document.getElementById('message').textContent);
+  check(/paused at 1\.234 s/.test(said) && /ruler/.test(said) && /plot energy against theta/.test(said), `"copy link" says what the link carries: ${said.replace(/^.* — /, '').slice(0, 160)}`);
+  const want = await page.evaluate(() => {
+    const f = window.pendulab.store.latest();
+    return { t: window.pendulab.store.status.t, x: f.x, url: location.href };
+  });
+  const page2 = await page.context().newPage();
+  await page2.goto(want.url, { timeout: WAIT });
+  await page2.waitForFunction(
+    (t) => window.pendulab?.store.status?.paused && window.pendulab.store.status.t === t && window.pendulab.twin.status?.params.length === 0.5 && window.pendulab.twin.status.t === t,
+    want.t,
+    { timeout: WAIT, polling: 100 },
+  );
+  await page2.waitForTimeout(300);
+  const got = await page2.evaluate(() => ({
+    x: window.pendulab.store.latest().x,
+    ruler: document.querySelector('[data-input="ruler"]').checked,
+    plot: [document.querySelector('[data-input="chosen-x"]').value, document.querySelector('[data-input="chosen-y"]').value],
+    twinMode: document.querySelector('[data-input="twin-mode"]').value,
+    lang: document.documentElement.lang,
+  }));
+  const dx = Math.hypot(...got.x.map((v, i) => v - want.x[i]));
+  check(dx === 0 && got.ruler && got.plot.join() === 'theta,energy' && got.twinMode === 'own' && got.lang === 'en', `the link reopens the lab paused at t = ${want.t} s, the same state (|Δx| = ${dx}), ruler, plot ${got.plot.join('/')}, second pendulum ${got.twinMode}, language ${got.lang}`);
+  await page2.close();
+  await page.locator('[data-input="ruler"]').uncheck();
+  await page.locator('[data-input="twin-mode"]').selectOption('off');
+  await page.locator('[data-input="chosen-y"]').selectOption('theta');
+  await page.locator('[data-input="chosen-x"]').selectOption('t');
+  await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+  await page.waitForFunction(() => window.pendulab.store.status?.paused === false, null, { timeout: WAIT });
+}
+
 export async function checkKeyboard(page, { check, WAIT }) {
   await page.evaluate(() => window.pendulab.send({ type: 'load_scenario', name: 'rosette' }));
   await page.waitForFunction(() => window.pendulab.store.status?.scenario === 'rosette', null, { timeout: WAIT });
@@ -268,9 +322,15 @@ export async function checkKeyboard(page, { check, WAIT }) {
   await page.keyboard.press('?');
   const shown = await page.evaluate(() => !document.getElementById('help').hidden && /Space/.test(document.getElementById('help').textContent) && document.querySelectorAll('#help .swatch').length >= 9);
   await page.screenshot({ path: 'test-results/help-overlay.png' });
+  // the focus stays in the dialog: Tab and Shift+Tab from its only control land on it again
+  await page.keyboard.press('Tab');
+  await page.keyboard.press('Tab');
+  await page.keyboard.press('Shift+Tab');
+  const kept = await page.evaluate(() => document.getElementById('help').contains(document.activeElement));
   await page.keyboard.press('Escape');
   const closed = await page.evaluate(() => document.getElementById('help').hidden);
-  check(shown && closed, '? shows the shortcuts and the colour key; Esc closes it');
+  check(shown && closed && kept, '? shows the shortcuts and the colour key, keeps the focus while open; Esc closes it');
+  await checkInclusion(page, { check, WAIT });
   // a focused slider: Tab reaches it, arrows and Page keys move it
   const slider = page.locator('[data-param="length"] .lil-slider');
   await slider.focus();
@@ -286,6 +346,38 @@ export async function checkKeyboard(page, { check, WAIT }) {
   const label = await slider.getAttribute('aria-label');
   check(l1 > l0 && l2 < l1 && Math.abs((l1 - l2) - 10 * (l1 - l0)) < 1e-9 && role === 'slider' && /length/.test(label) && parseFloat(ring) >= 2, `a focused slider moves with the arrows and Page keys (l ${l0} → ${l1} → ${l2} m), has a label and a ${ring} focus ring`);
   await page.evaluate(() => window.pendulab.send({ type: 'set_params', length: 1 }));
+}
+
+/** Issue 28's inclusion tools: the 3-D view by keyboard (arrows turn the camera, Shift + → moves the bob's
+ *  start by 1°), the motion in words (D), and the mystery planet's hidden g. */
+async function checkInclusion(page, { check, WAIT }) {
+  const canvas = page.locator('#scene-canvas');
+  await canvas.focus();
+  const cam0 = await page.evaluate(() => window.pendulab.bobOnScreen());
+  await page.keyboard.press('ArrowLeft');
+  await page.keyboard.press('ArrowLeft');
+  await page.waitForTimeout(200);
+  const cam1 = await page.evaluate(() => window.pendulab.bobOnScreen());
+  const th = () => page.evaluate(() => Math.atan2(Math.hypot(...window.pendulab.store.status.start.x.slice(0, 2)), -window.pendulab.store.status.start.x[2]) * 180 / Math.PI);
+  const th0 = await th();
+  await page.keyboard.press('Shift+ArrowRight');
+  await page.waitForFunction((a) => Math.abs(Math.atan2(Math.hypot(...window.pendulab.store.status.start.x.slice(0, 2)), -window.pendulab.store.status.start.x[2]) * 180 / Math.PI - a - 1) < 1e-6, th0, { timeout: WAIT });
+  const th1 = await th();
+  check(Math.hypot(cam1.x - cam0.x, cam1.y - cam0.y) > 3 && Math.abs(th1 - th0 - 1) < 1e-6, `the 3-D view by keyboard: the arrows turn the camera (the bob moved ${Math.hypot(cam1.x - cam0.x, cam1.y - cam0.y).toFixed(0)} px on the page), Shift+→ the start θ ${th0.toFixed(2)}° → ${th1.toFixed(2)}°`);
+  await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+  await page.waitForTimeout(300);
+  await page.keyboard.press('d');
+  await page.waitForFunction(() => /from the vertical/.test(document.querySelector('[data-readout="describe"]').textContent), null, { timeout: WAIT });
+  const words = await page.evaluate(() => ({ text: document.querySelector('[data-readout="describe"]').textContent, live: document.querySelector('[data-readout="describe"]').getAttribute('aria-live') }));
+  check(words.live === 'polite' && /speed \d+\.\d\d m\/s; energy \d+ % kinetic, \d+ % potential/.test(words.text), `D describes the motion in a live region: "${words.text}"`);
+  await page.locator('[data-input="gravity-preset"]').selectOption('mystery');
+  await page.waitForFunction(() => window.pendulab.store.status.params.g !== 9.81 && document.body.classList.contains('mystery'), null, { timeout: WAIT });
+  const hidden = await page.evaluate(() => getComputedStyle(document.querySelector('#gui [data-param="g"] .lil-widget')).visibility);
+  const g = await page.evaluate(() => window.pendulab.store.status.params.g);
+  await page.locator('[data-action="reveal-g"]').click();
+  const revealed = await page.evaluate(() => ({ text: document.getElementById('message').textContent, shown: !document.body.classList.contains('mystery') }));
+  check(hidden === 'hidden' && g >= 2 && g <= 21 && revealed.shown && revealed.text.includes(String(g)), `mystery planet: g hidden (${hidden}) until revealed as ${g} m/s²`);
+  await page.evaluate(() => window.pendulab.send({ type: 'set_params', g: 9.81 }));
 }
 
 export async function checkEnergyAndTwin(page, { check, WAIT, simulated }) {

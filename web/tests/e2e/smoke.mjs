@@ -13,7 +13,7 @@ import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
-import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkTouch } from './classroom.mjs';
+import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
 const ONLY = (process.env.E2E_ONLY ?? '').split(',').filter(Boolean);
@@ -197,6 +197,7 @@ try {
     ['scenarios', checkScenarios],
     ['plots', checkPlots],
     ['period timer', checkPeriodTimer],
+    ['share link', checkShare],
     ['keyboard', checkKeyboard],
     ['energy and two pendulums', checkEnergyAndTwin],
     ['recording and stereo', checkRecordingAndStereo],

@@ -10,7 +10,9 @@ import { ownsKeys, shortcutFor, sliderSteps } from '../../src/keyboard';
 import { chooseLanguage, LANGUAGES, modelWords, paramWords, setLanguage, t } from '../../src/i18n';
 import { EN } from '../../src/i18n/en';
 import { frameAt, positionAt, separation, sideBySide, tiltedStart, twinCommands } from '../../src/twin';
-import { frictionCommand, GRAVITY_PRESETS, startCommand, swingTheoryFor } from '../../src/panels/tools';
+import { frictionCommand, GRAVITY_PRESETS, mysteryGravity, startCommand, swingTheoryFor } from '../../src/panels/tools';
+import { describeMotion } from '../../src/describe';
+import { viewKey } from '../../src/keyboard';
 import { framingDistance } from '../../src/scene/scene';
 import { rulerStep } from '../../src/scene/instruments';
 import { tick } from '../../src/panels/curves';
@@ -377,5 +379,30 @@ describe('classroom controls', () => {
   it('records WebM when the browser can', () => {
     expect(webmType((t) => t === 'video/webm;codecs=vp8')).toBe('video/webm;codecs=vp8');
     expect(webmType(() => false)).toBeNull();
+  });
+});
+
+describe('inclusion (issue 28)', () => {
+  it('describes the motion: angle, rising or falling, speed, the energy split', () => {
+    setLanguage('en');
+    const x: Vec3 = [Math.sin(0.2), 0, -Math.cos(0.2)];
+    const text = describeMotion(frame(0, x, [0.5, 0, 0.1]), { kinetic: 3, potential: 1, lost: 0, total: 4 });
+    expect(text).toBe('angle 11° from the vertical, rising, speed 0.51 m/s; energy 75 % kinetic, 25 % potential');
+    expect(describeMotion(frame(0, x, [0, 0, 0]), null)).toContain('at rest');
+    expect(describeMotion(frame(0, x, [1, 0, -0.5]), { kinetic: 1, potential: 1, lost: 2, total: 4 })).toMatch(/falling.*25 % kinetic, 25 % potential, 50 % lost/);
+  });
+  it('keys on the 3-D view: arrows turn, + − zoom, Shift + ← → the bob', () => {
+    expect(viewKey('ArrowLeft', false)).toEqual({ orbit: [(-5 * Math.PI) / 180, 0], zoom: 1 });
+    expect(viewKey('ArrowRight', true)).toEqual({ bob: 1 });
+    expect(viewKey('-', false)).toEqual({ orbit: [0, 0], zoom: 1.1 });
+    expect(viewKey('x', false)).toBeNull();
+  });
+  it('a mystery planet is 2 … 20.6 m/s², never near a preset', () => {
+    for (let k = 0; k < 1000; k++) {
+      const g = mysteryGravity(k / 1000);
+      expect(g).toBeGreaterThanOrEqual(2);
+      expect(g).toBeLessThanOrEqual(20.6);
+      for (const [, p] of GRAVITY_PRESETS) expect(Math.abs(g - p)).toBeGreaterThanOrEqual(0.29);
+    }
   });
 });

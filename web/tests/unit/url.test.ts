@@ -1,7 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import type { Status } from '../../src/protocol';
 import type { UrlScenario } from '../../src/url';
-import { commandsFor, decodeUrl, encodeUrl, fromStatus } from '../../src/url';
+import { commandsFor, decodeTwin, decodeUrl, encodeUrl, encodeView, fromStatus, linkContents } from '../../src/url';
 
 const status: Status = {
   type: 'status',
@@ -76,10 +76,50 @@ describe('URL round trip', () => {
       'set_state',
       'reset',
       'pause',
+      'step',
     ]);
+    expect(cmds[8]).toEqual({ type: 'step', n: 24600 }); // the paused time 12.3 s in steps of 0.5 ms
     expect(cmds[1]).toEqual({ type: 'set_model', model: 'damped', params: status.model_params });
     expect(cmds[2]).toEqual({ type: 'set_params', length: 0.7, mass: 2.5, g: -9.81 });
     expect(cmds[5]).toEqual({ type: 'set_state', x: status.start.x, v: status.start.v });
     expect(commandsFor({})).toEqual([]);
+  });
+});
+
+describe('the whole lab in the link (issue 28)', () => {
+  it('carries the view options that differ, the plot, the second pendulum, the language and the paused time', () => {
+    const defaults = { trail: true, ruler: false, stereo: 'off', trailSeconds: 10 };
+    const view = encodeView({ trail: false, ruler: true, stereo: 'anaglyph', trailSeconds: 10 }, defaults);
+    expect(view).toEqual({ trail: false, ruler: true, stereo: 'anaglyph' });
+    const u: UrlScenario = { ...fromStatus(status), view, plot: ['theta', 'energy'], lang: 'fr' };
+    const own = decodeTwin('own:0.25:2:10');
+    if (own !== null) u.twin = own;
+    const q = encodeUrl(u);
+    expect(q).toContain('view=-trail%2Cruler%2Cstereo%3Aanaglyph');
+    const { value, problems } = decodeUrl(q);
+    expect(problems).toEqual([]);
+    expect(value.view).toEqual(view);
+    expect(value.plot).toEqual(['theta', 'energy']);
+    expect(value.lang).toBe('fr');
+    expect(value.at).toBe(12.3);
+    expect(value.twin?.mode).toBe('own');
+    expect(value.twin?.length).toBe(0.25);
+    expect(value.twin?.mass).toBe(2);
+    expect((value.twin?.theta ?? 0) * (180 / Math.PI)).toBeCloseTo(10, 12);
+    expect(linkContents(value)).toMatch(/paused at 12\.300 s.*view: −trail, ruler, stereo anaglyph.*plot energy against theta.*second pendulum own:0\.25:2:10.*language fr/);
+  });
+  it('reads every second pendulum and names what it cannot read', () => {
+    expect(decodeTwin('eps:0.5')?.epsilon).toBeCloseTo((0.5 * Math.PI) / 180, 15);
+    expect(decodeTwin('method:rk4')?.method).toBe('rk4');
+    expect(decodeTwin('damped:0.3')?.damping).toBe(0.3);
+    expect(decodeTwin('own:-1:2:10')).toBeNull();
+    expect(decodeTwin('fly:1')).toBeNull();
+    const bad = decodeUrl('twin=own:1&plot=a&view=x%3Ay%3Az&at=-3');
+    expect(bad.problems).toHaveLength(4);
+  });
+  it('does not replay a paused time for an adaptive method or a running lab', () => {
+    expect(fromStatus({ ...status, adaptive: true }).at).toBeUndefined();
+    expect(fromStatus({ ...status, paused: false }).at).toBeUndefined();
+    expect(commandsFor({ ...fromStatus(status), paused: false }).some((c) => c.type === 'step')).toBe(false);
   });
 });
