@@ -56,6 +56,7 @@ import pendulab as pl
 import psutil
 from pendulab.server.protocol import FRAME_FIELDS
 from websockets.asyncio.client import connect
+from websockets.exceptions import ConnectionClosed
 
 ERROR_X = FRAME_FIELDS.index("error_x")
 
@@ -177,13 +178,18 @@ class Pupil:
             await asyncio.gather(*jobs, return_exceptions=True)
 
     async def session(self, port: int, end: float, flood: bool) -> None:
+        with contextlib.suppress(ConnectionClosed, OSError):
+            await self._session(port, end, flood)
+
+    async def _session(self, port: int, end: float, flood: bool) -> None:
         url = f"ws://127.0.0.1:{port}/ws"
         async with connect(url, max_size=2**22, max_queue=None, local_addr=(PUPIL, 0)) as ws:
 
             async def drain() -> None:
-                async for msg in ws:
-                    if isinstance(msg, str) and "too many lab sessions" in msg:
-                        self.count("session refused")
+                with contextlib.suppress(ConnectionClosed):
+                    async for msg in ws:
+                        if isinstance(msg, str) and "too many lab sessions" in msg:
+                            self.count("session refused")
 
             reader = asyncio.create_task(drain())
             for c in GREEDY_RUN:

@@ -21,9 +21,15 @@ from ws_session import LabClient
 import pendulab as pl
 from pendulab import cli
 from pendulab.cli import serve as cli_serve
-from pendulab.server import FRAME_FIELDS, RECORD_BYTES, Session, create_app, decode_records, encode_records
-from pendulab.server import app as server_app
-from pendulab.server.app import MAX_PENDING
+from pendulab.server import (
+    FRAME_FIELDS,
+    RECORD_BYTES,
+    Session,
+    create_app,
+    decode_records,
+    encode_records,
+    ticker,
+)
 from pendulab.server.budget import FIRST_SLICE, Budget
 from pendulab.server.protocol import (
     RECORD_LEN,
@@ -36,6 +42,7 @@ from pendulab.server.protocol import (
 )
 from pendulab.server.session import MAX_ELAPSED, MAX_SUBSAMPLES, resolve_scenario
 from pendulab.server.tick import tick_messages
+from pendulab.server.ticker import MAX_PENDING
 
 E, J3, TENSION = (FRAME_FIELDS.index(k) for k in ("energy", "j3", "tension"))
 
@@ -238,8 +245,8 @@ def test_a_flooding_client_is_throttled_and_still_served(
     # Deterministic, whatever the machine's speed: the ticks apply nothing while the client floods, so
     # the inbox fills to its (small) limit and the rest is dropped; then the ticks catch up.
     assert MAX_PENDING >= 32  # the real limit
-    monkeypatch.setattr(server_app, "MAX_PENDING", 4)
-    monkeypatch.setattr(server_app, "MAX_PER_TICK", 0)
+    monkeypatch.setattr(ticker, "MAX_PENDING", 4)
+    monkeypatch.setattr(ticker, "MAX_PER_TICK", 0)
     with client.websocket_connect("/ws") as ws:
         for _ in range(10):
             ws.send_text('{"type": "set_time_scale", "time_scale": 2.0}')
@@ -248,7 +255,7 @@ def test_a_flooding_client_is_throttled_and_still_served(
             _, err = until(ws, lambda k, v: is_error(k, v) and "throttled" in v["message"])
             dropped += int(re.search(r"(\d+) command\(s\) dropped", err["message"]).group(1))
         assert dropped == 6
-        monkeypatch.setattr(server_app, "MAX_PER_TICK", 32)
+        monkeypatch.setattr(ticker, "MAX_PER_TICK", 32)
         until(ws, is_status(time_scale=2.0))
         ws.send_json({"type": "set_time_scale", "time_scale": 3.0})
         until(ws, is_status(time_scale=3.0))

@@ -310,27 +310,32 @@ def test_idle_sockets_of_one_client_cannot_fill_the_server(port: int) -> None:
 
 
 def test_parallel_computing_requests_of_one_client_do_not_crowd_out_another(port: int) -> None:
-    """Issue 30: 40 parallel ``/api/reduced`` requests got others' ``/api/exact`` 503 in 22 of 25."""
+    """Issue 30: 40 parallel ``/api/reduced`` requests got others' ``/api/exact`` 503 in 22 of 25 (they
+    filled the shared queue); now one client has at most two under way or waiting, the rest wait for
+    those (then 429) or are cut beyond its connection limit."""
     body = {"length": 1.0, "g": 9.81, "theta": 2.9, "phi_dot": 0.1, "n": 4000, "grid": 121}
     codes: list[int] = []
 
     def flood() -> None:
         transport = httpx.HTTPTransport(local_address=_local(4))
         with httpx.Client(base_url=f"http://127.0.0.1:{port}", transport=transport, timeout=30) as c:
-            for _ in range(3):
-                codes.append(c.post("/api/reduced", json=body).status_code)
+            for _ in range(2):
+                try:
+                    codes.append(c.post("/api/reduced", json=body).status_code)
+                except httpx.TransportError:
+                    codes.append(-1)  # cut: more connections than one client may hold
 
-    threads = [threading.Thread(target=flood) for _ in range(20)]
+    threads = [threading.Thread(target=flood) for _ in range(40)]
     for t in threads:
         t.start()
-    time.sleep(0.2)
+    time.sleep(0.3)
     mine = [
         httpx.post(f"http://127.0.0.1:{port}/api/exact", json={"theta": 1.0}, timeout=30) for _ in range(5)
     ]
     for t in threads:
         t.join(60)
-    assert [r.status_code for r in mine] == [200] * 5
-    assert 429 in codes and set(codes) <= {200, 429}, sorted(set(codes))
+    assert [r.status_code for r in mine] == [200] * 5, [r.text[:200] for r in mine]
+    assert 200 in codes and set(codes) <= {200, 429, -1}, codes
 
 
 def test_get_answers_are_cached(monkeypatch: pytest.MonkeyPatch) -> None:

@@ -4,13 +4,14 @@
 
 - ``GET /`` and ``/assets/…``: the front end built from ``web/`` (``make web`` copies it into
   ``static/`` beside this file; it is committed, so a user with only the Python package needs no Node).
-- ``WS /ws``: one :class:`~pendulab.server.session.Session` per client. The handler runs two tasks:
-  one reads and validates commands into a bounded inbox (a client that floods is throttled: beyond
-  :data:`MAX_PENDING` waiting commands the rest are dropped with an error notice), the other ticks at
-  :data:`TICK_HZ` and hands the waiting commands to a worker thread (:mod:`.tick`), which applies
-  them and advances the stepper to wall clock × time scale within a wall-time budget; the ticker
-  sends what it returns. Only the ticker writes to the socket, only its worker touches the session.
-  A client vanishing mid-stream ends its own tasks only.
+- ``WS /ws``: one :class:`~pendulab.server.session.Session` per client, seated in the room's ticker
+  (:mod:`.ticker`). The handler runs two tasks: one reads and validates commands into the seat's
+  bounded inbox (a client that floods is throttled: beyond :data:`.ticker.MAX_PENDING` waiting
+  commands the rest are dropped with an error notice), the other sends what the seat's outbox
+  receives. The ticker ticks every seat at :data:`TICK_HZ` in worker threads (:mod:`.tick`), which
+  apply the commands and advance the stepper to wall clock × time scale within the session's share
+  of the room's budget. Only the handler writes to its socket, only the ticker's worker touches the
+  session. A client vanishing mid-stream ends its own tasks only.
 - ``GET /api/schema``: every model's parameters (units, limits, defaults), controls, methods, frames.
 - ``GET /api/scenarios``: the example scenarios (model, pendulum, start, method, dt).
 - ``POST /api/exact``: the exact-solution quantities of a state (kind, turning heights, periods, phases).
@@ -41,8 +42,8 @@ import asyncio
 import contextlib
 import functools
 import logging
+import time
 import weakref
-from collections import deque
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, TypeVar
@@ -78,15 +79,10 @@ from .rest import (
 from .room import MAX_SESSIONS_PER_CLIENT, Room, client_key, too_many_requests_detail
 from .schema import TICK_HZ, schema
 from .session import Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
-from .tick import Carry, Message, first_messages, tick_messages
+from .tick import Message, first_messages
+from .ticker import Seat, room_ticker
 from .views import EMRequest, ReducedRequest, em_view, reduced_view
 from .worker import Busy, WorkerPool, WorkFailed, WorkInvalid, WorkTimeout
-
-MAX_PENDING = 64
-"""Most commands waiting for the next tick; more are dropped (throttling)."""
-
-MAX_PER_TICK = 32
-"""Most commands applied per tick."""
 
 MAX_SESSIONS = 64
 """Default for the most lab sessions (WebSockets) at once (a class of 30 with a second tab each); more
@@ -362,17 +358,15 @@ _STEP_LIMITERS: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.
 async def run_session(
     ws: WebSocket, session: Session, tick_hz: float = TICK_HZ, share: Callable[[], float] | None = None
 ) -> None:
-    """Serves one client until it goes away (see the module doc). Each tick's work — commands,
-    stepping, frames — runs in a worker thread (:func:`.tick.tick_messages`, at most
-    :data:`STEP_THREADS` at once) within ``share()`` seconds (the session's share of the room,
-    :meth:`.room.Room.share`; default one tick's budget); the event loop only moves messages."""
-    inbox: deque[Any] = deque()
-    carry = Carry()
-    dropped = 0
+    """Serves one client until it goes away (see the module doc): its commands go to its
+    :class:`~.ticker.Seat` in the room's :class:`~.ticker.Ticker`, which ticks every session in worker
+    threads (:func:`.tick.tick_messages`, round robin) within ``share()`` seconds each (the session's
+    share of the room, :meth:`.room.Room.share`; default one tick's budget); this handler sends what
+    the seat's outbox receives. The event loop only moves messages."""
+    seat = Seat(session, share or (lambda: TICK_BUDGET))
     limiter = _loop_limiter(_STEP_LIMITERS, STEP_THREADS)
 
     async def receive() -> None:
-        nonlocal dropped
         while True:
             msg = await ws.receive()
             if msg["type"] == "websocket.disconnect":
@@ -383,10 +377,7 @@ async def run_session(
                 item = parse_command(text if text is not None else (data or b""))
             except CommandError as e:
                 item = e
-            if len(inbox) >= MAX_PENDING:
-                dropped += 1
-            else:
-                inbox.append(item)
+            seat.put(item)
 
     async def send_all(messages: list[Message]) -> None:
         for m in messages:
@@ -395,38 +386,21 @@ async def run_session(
             else:
                 await ws.send_json(m)
 
-    async def tick() -> None:
-        nonlocal dropped
-        period = 1.0 / tick_hz
+    async def send() -> None:
         await send_all(await anyio.to_thread.run_sync(first_messages, session, limiter=limiter))
-        last = next_tick = anyio.current_time()
-        while True:
-            next_tick += period
-            delay = next_tick - anyio.current_time()
-            if delay < 0:  # behind: do not try to catch up with a burst
-                next_tick, delay = anyio.current_time(), 0.0
-            await anyio.sleep(delay)
-            now = anyio.current_time()
-            elapsed, last = now - last, now
-            commands = [inbox.popleft() for _ in range(min(len(inbox), MAX_PER_TICK))]
-            lost = dropped
-            if dropped:
-                await ws.send_json(
-                    error_notice(
-                        f"throttled: {dropped} command(s) dropped (more than {MAX_PENDING} waiting); "
-                        f"send at most {int(tick_hz * MAX_PER_TICK)} per second"
-                    )
-                )
-                dropped = 0
-            budget = TICK_BUDGET if share is None else share()
-            work = functools.partial(
-                tick_messages, session, commands, elapsed, budget, dropped=lost, carry=carry
-            )
-            messages = await anyio.to_thread.run_sync(work, limiter=limiter)
-            if carry.left:  # not carried out within the budget: first at the next tick
-                inbox.extendleft(reversed(carry.left))
-                carry.left.clear()
-            await send_all(messages)
+        ticker = room_ticker(tick_hz)
+        seat.last = time.monotonic()
+        ticker.join(seat)
+        try:
+            while True:
+                await seat.ready.wait()
+                seat.ready.clear()
+                if seat.failed is not None:
+                    raise seat.failed
+                while seat.outbox:
+                    await send_all(seat.outbox.popleft())
+        finally:
+            ticker.leave(seat)
 
     async with anyio.create_task_group() as tg:
 
@@ -437,7 +411,7 @@ async def run_session(
 
         async def ticker() -> None:
             try:
-                await tick()
+                await send()
             except (WebSocketDisconnect, OSError):
                 pass  # sending to a client that went away
             except RuntimeError as e:  # starlette: sending after the socket closed
