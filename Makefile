@@ -101,6 +101,9 @@ lint: venv
 	$(VENV)/bin/ruff check python bench testdata/generate tools docs/gallery
 	$(VENV)/bin/ruff format --check python bench testdata/generate tools docs/gallery
 	$(PY) tools/check_imports.py
+	$(PY) tools/check_rust_modules.py crates/pendulab-core/src
+	$(PY) tools/check_rust_modules.py python/rust
+	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 
 fmt: venv
 	cargo fmt --all

@@ -1,5 +1,5 @@
 //! The elastic pendulum, or swinging spring (docs/theory.md T-7.4): a bob of mass m on a massless spring
-//! of stiffness k [N/m] and rest length l₀ [m] from a fixed pivot, in gravity g along −e₃:
+//! of stiffness k [N/m] and rest length l₀ \[m\] from a fixed pivot, in gravity g along −e₃:
 //!
 //!   r̈ = −(k/m)(|r| − l₀) r/|r| − g e₃,   equilibrium length l = l₀ + m g/k,
 //!   E = ½m|v|² + ½k(|r| − l₀)² + m g z,   J₃ = m (x v_y − y v_x),
@@ -20,16 +20,16 @@ use glam::DVec3;
 pub struct SwingingSpring {
     /// Stiffness per unit mass k/m [1/s²], > 0.
     pub k_over_m: f64,
-    /// Rest length l₀ [m], > 0.
+    /// Rest length l₀ \[m\], > 0.
     pub rest_length: f64,
     /// Gravity g [m/s²] along −e₃ (any sign).
     pub g: f64,
-    /// Mass m [kg], > 0 (only scales E and J₃).
+    /// Mass m \[kg\], > 0 (only scales E and J₃).
     pub mass: f64,
 }
 
 impl SwingingSpring {
-    /// Validated parameters: k/m > 0 [1/s²], l₀ > 0 [m], finite g [m/s²], m > 0 [kg].
+    /// Validated parameters: k/m > 0 [1/s²], l₀ > 0 \[m\], finite g [m/s²], m > 0 \[kg\].
     pub fn new(k_over_m: f64, rest_length: f64, g: f64, mass: f64) -> Result<Self> {
         require_positive(
             "k_over_m",
@@ -42,12 +42,12 @@ impl SwingingSpring {
         Ok(Self { k_over_m, rest_length, g, mass })
     }
 
-    /// The equilibrium length l = l₀ + g/(k/m) [m] (hanging at rest, g > 0).
+    /// The equilibrium length l = l₀ + g/(k/m) \[m\] (hanging at rest, g > 0).
     pub fn equilibrium_length(&self) -> f64 {
         self.rest_length + self.g / self.k_over_m
     }
 
-    /// The spring at the 1:1:2 resonance √(k/m) = 2√(g/l) for a given equilibrium length l [m]:
+    /// The spring at the 1:1:2 resonance √(k/m) = 2√(g/l) for a given equilibrium length l \[m\]:
     /// k/m = 4g/l and l₀ = l − g/(k/m) = 3l/4.
     pub fn resonant(equilibrium_length: f64, g: f64, mass: f64) -> Result<Self> {
         require_positive("equilibrium_length", equilibrium_length, "a length > 0 m")?;
@@ -62,7 +62,7 @@ impl SwingingSpring {
         r * (-self.k_over_m * (len - self.rest_length) / len) - DVec3::new(0.0, 0.0, self.g)
     }
 
-    /// Energy E [J].
+    /// Energy E \[J\].
     pub fn energy(&self, s: &State) -> f64 {
         let stretch = s.x.length() - self.rest_length;
         self.mass * (0.5 * s.v.length_squared() + 0.5 * self.k_over_m * stretch * stretch + self.g * s.x.z)
@@ -73,7 +73,7 @@ impl SwingingSpring {
         self.mass * (s.x.x * s.v.y - s.x.y * s.v.x)
     }
 
-    /// One Störmer–Verlet step of `h` [s]: v ← v + (h/2)a(r); r ← r + h v; v ← v + (h/2)a(r).
+    /// One Störmer–Verlet step of `h` \[s\]: v ← v + (h/2)a(r); r ← r + h v; v ← v + (h/2)a(r).
     #[inline(always)]
     pub fn verlet(&self, s: &mut State, h: f64) {
         let v_half = s.v + self.acceleration(s.x) * (0.5 * h);
@@ -107,13 +107,13 @@ impl SwingingSpring {
         }
     }
 
-    /// The spring's tension k(|r| − l₀) [N] (> 0 stretched and pulling, < 0 compressed and pushing).
+    /// The spring's tension k(|r| − l₀) \[N\] (> 0 stretched and pulling, < 0 compressed and pushing).
     pub fn tension(&self, s: &State) -> f64 {
         self.mass * self.k_over_m * (s.x.length() - self.rest_length)
     }
 
-    /// Integrates `n_steps` steps of `dt` [s] from `start`, keeping the start and every
-    /// `save_every`-th state (and the last): returns (times [s], states).
+    /// Integrates `n_steps` steps of `dt` \[s\] from `start`, keeping the start and every
+    /// `save_every`-th state (and the last): returns (times \[s\], states).
     pub fn simulate(
         &self,
         start: State,
@@ -156,7 +156,7 @@ pub struct SpringStepper {
 }
 
 impl SpringStepper {
-    /// A stepper from `start` (x [m] away from the pivot, v [m/s]) at `t0` [s] with step `dt` [s] and
+    /// A stepper from `start` (x \[m\] away from the pivot, v [m/s]) at `t0` \[s\] with step `dt` \[s\] and
     /// `order` 2 (Störmer–Verlet) or 4 (triple jump).
     pub fn new(spring: SwingingSpring, start: State, t0: f64, dt: f64, order: u32) -> Result<Self> {
         require_finite("t0", t0, "the start time must be finite (s)")?;
@@ -168,7 +168,7 @@ impl SpringStepper {
                 allowed: "a finite start away from the pivot (|r| > 0 m)",
             });
         }
-        crate::model::registry::check_limits(&crate::model::registry::STATE[1], start.x.length())?;
+        crate::limits::check_limits(&crate::limits::STATE[1], start.x.length())?;
         crate::state::check_speed(start.v)?;
         let mut s = start;
         spring.step(&mut s, 0.0, order)?; // a zero step: checks the order, changes nothing
@@ -191,12 +191,12 @@ impl SpringStepper {
         Ok(())
     }
 
-    /// Time reached t₀ + k·dt [s].
+    /// Time reached t₀ + k·dt \[s\].
     pub fn t(&self) -> f64 {
         self.t0 + self.k as f64 * self.dt
     }
 
-    /// State reached (r [m], v [m/s]).
+    /// State reached (r \[m\], v [m/s]).
     pub fn state(&self) -> State {
         self.s
     }

@@ -10,7 +10,7 @@
 //! trajectory, the time after which the sway angle from the stable equilibrium −sign(g) e₃ stays at
 //! or below a threshold (cos sway = −sign(g) z/l; resolution one step). Layout: blocks of [`LANES`] trajectories in structure-of-arrays
 //! form (each coordinate a fixed-size array), so the lane loop has no branches and the compiler
-//! vectorises it (for the widest vectors the CPU has, chosen at run time: [`crate::isa`]); blocks run in parallel with rayon (feature `parallel`). Per-trajectory length l [m]
+//! vectorises it (for the widest vectors the CPU has, chosen at run time: [`crate::isa`]); blocks run in parallel with rayon (feature `parallel`). Per-trajectory length l \[m\]
 //! and gravity g [m/s²]. Memory is bounded by what is saved (final state, every n-th step, or a
 //! summary), never by trajectories × steps. Progress is a shared step counter and a cancel flag is
 //! checked every [`CHECK_EVERY`] steps. SI units throughout.
@@ -183,7 +183,7 @@ pub enum EnsembleSave {
     Every(u64),
 }
 
-/// Per-trajectory extremes over the run (per unit mass): z [m], E/m [J/kg], J₃/m [m²/s].
+/// Per-trajectory extremes over the run (per unit mass): z \[m\], E/m [J/kg], J₃/m [m²/s].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Summary {
     /// min z, max z.
@@ -199,16 +199,16 @@ pub struct Summary {
 }
 
 /// The result of [`run`]: saved states per trajectory (trajectory-major: `states[traj][sample]`),
-/// the sample times [s], per-trajectory summaries, and whether the run was cancelled.
+/// the sample times \[s\], per-trajectory summaries, and whether the run was cancelled.
 #[derive(Debug, Clone)]
 pub struct EnsembleResult {
-    /// Saved times [s] (shared by all trajectories).
+    /// Saved times \[s\] (shared by all trajectories).
     pub t: Vec<f64>,
     /// `states[k]` holds trajectory k's saved states.
     pub states: Vec<Vec<State>>,
     /// Per-trajectory extremes (when requested).
     pub summary: Option<Vec<Summary>>,
-    /// Per trajectory (with [`Extras::settle_angle`]): the time [s] after which the sway stayed at or
+    /// Per trajectory (with [`Extras::settle_angle`]): the time \[s\] after which the sway stayed at or
     /// below the threshold until the end of the run (0: never above; +∞: above at the last step; to
     /// within one step dt).
     pub settle_time: Option<Vec<f64>>,
@@ -224,13 +224,13 @@ pub struct Extras<'a> {
     /// Linear damping c [1/s] (force −m c v, T-7.1): empty (undamped), one value for all
     /// trajectories, or one per trajectory; each ≥ 0 and finite.
     pub damping: &'a [f64],
-    /// Sway angle [rad] in (0, π) from the stable equilibrium at or below which a trajectory counts as
+    /// Sway angle \[rad\] in (0, π) from the stable equilibrium at or below which a trajectory counts as
     /// settled; when given, the result holds each trajectory's settle time.
     pub settle_angle: Option<f64>,
 }
 
-/// Integrates `starts` (with per-trajectory `length` [m] and `g` [m/s²], each of length 1 — broadcast
-/// — or of the ensemble's length) by `n_steps` RATTLE steps of `dt` [s]. `progress` counts
+/// Integrates `starts` (with per-trajectory `length` \[m\] and `g` [m/s²], each of length 1 — broadcast
+/// — or of the ensemble's length) by `n_steps` RATTLE steps of `dt` \[s\]. `progress` counts
 /// trajectory-steps done; setting `cancel` stops every block at its next check.
 #[allow(clippy::too_many_arguments)]
 pub fn run(

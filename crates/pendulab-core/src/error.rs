@@ -57,9 +57,9 @@ pub enum Error {
          use a Cartesian method such as 'rattle' or 'dop853'"
     )]
     PoleSingularity {
-        /// Time of the refusal [s].
+        /// Time of the refusal \[s\].
         t: f64,
-        /// Polar angle from the downward vertical [rad].
+        /// Polar angle from the downward vertical \[rad\].
         theta: f64,
         /// sin θ at that moment.
         sin_theta: f64,
@@ -71,9 +71,9 @@ pub enum Error {
         "step size underflow at t = {t} s: h = {h:e} s is too small for rtol = {rtol:e}, atol = {atol:e}"
     )]
     StepSizeUnderflow {
-        /// Time at which it happened [s].
+        /// Time at which it happened \[s\].
         t: f64,
-        /// Step size reached [s].
+        /// Step size reached \[s\].
         h: f64,
         /// Relative tolerance in force.
         rtol: f64,
@@ -86,11 +86,11 @@ pub enum Error {
         diverged_advice(method)
     )]
     Diverged {
-        /// Time [s].
+        /// Time \[s\].
         t: f64,
         /// Method name.
         method: &'static str,
-        /// Step size [s].
+        /// Step size \[s\].
         dt: f64,
     },
     /// The requested output does not fit in memory.
@@ -98,9 +98,9 @@ pub enum Error {
     TooManySamples {
         /// Number of samples requested.
         samples: u64,
-        /// Memory they would need [bytes].
+        /// Memory they would need \[bytes\].
         bytes: u64,
-        /// The limit [bytes].
+        /// The limit \[bytes\].
         limit: u64,
     },
     /// The reduced flow with reconstruction (T-3.4, T-3.6) came too close to a pole.
@@ -109,7 +109,7 @@ pub enum Error {
          φ̇ = J₃/(m(l² − z²)) is singular; use the exact solution or a Cartesian integrator there"
     )]
     ReducedFlowPole {
-        /// Time [s].
+        /// Time \[s\].
         t: f64,
         /// σ₁ = z/l at that time.
         sigma1: f64,

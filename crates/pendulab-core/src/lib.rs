@@ -8,17 +8,18 @@
 //! - SI units throughout: m, kg, s, rad, J, N.
 //! - z axis up; for g > 0 gravity acts along −z and the bob hangs at rest at z = −l. Any finite g
 //!   is allowed (g < 0 pulls up, g = 0 leaves only the rod).
-//! - A state is (x, v) ∈ TS²: position x [m] relative to the pivot with |x| = l, velocity v [m/s]
+//! - A state is (x, v) ∈ TS²: position x \[m\] relative to the pivot with |x| = l, velocity v [m/s]
 //!   with x·v = 0 ([`State`]).
 //! - Polar angle θ from the downward vertical, azimuth φ = atan2(y, x).
 //!
 //! ## Modules
+//! - [`limits`]: the table of limits (units, defaults, allowed ranges) every layer checks against.
 //! - [`state`]: parameters, states on TS², angles, projection.
 //! - [`model`]: models (applied forces) and the constrained equations T-2.2/T-2.4, diagnostics
 //!   E, J₃, tension (T-2.3, T-2.6).
 //! - [`integrate`]: the integrators and their registry [`Method`].
 //! - [`stepper`]: incremental integration (init / step / state).
-//! - [`solve`]: batch solving with saving rules, chunked for progress and cancellation.
+//! - [`mod@solve`]: batch solving with saving rules, chunked for progress and cancellation.
 //! - [`string_run`]: the string pendulum's hybrid stepper and runner (events, free flight, snaps).
 //! - [`exact`]: the exact solution by elliptic functions (§4), phases (§5), energy–momentum map (T-6.4).
 //! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
@@ -32,7 +33,6 @@
 //! - [`isa`]: run-time choice of the instruction set (AVX2/FMA, AVX-512) for the hot loops.
 
 pub mod crane;
-/// Elliptic integrals (Legendre, via Carlson) and Jacobi elliptic functions for the exact solution.
 pub mod elastic;
 pub mod elliptic;
 pub mod ensemble;
@@ -40,6 +40,7 @@ pub mod error;
 pub mod exact;
 pub mod integrate;
 pub mod isa;
+pub mod limits;
 pub mod live;
 pub mod model;
 pub mod quadrature;

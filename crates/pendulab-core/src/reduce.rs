@@ -73,7 +73,7 @@ pub fn oscillator_velocity_squared(s1: f64, h: f64, j: f64, gamma: f64) -> f64 {
     2.0 * (h - gamma * s1) * (1.0 - s1 * s1) - j * j
 }
 
-/// Largest azimuth increment per step [rad] before [`reduced_flow`] refuses (accuracy near a pole).
+/// Largest azimuth increment per step \[rad\] before [`reduced_flow`] refuses (accuracy near a pole).
 pub const MAX_AZIMUTH_STEP: f64 = 0.05;
 
 /// (σ̇₁, σ̇₂, σ̇₃, φ̇) of the reduced flow with reconstruction.
@@ -83,7 +83,7 @@ fn rhs(y: [f64; 4], gamma: f64, j: f64) -> [f64; 4] {
 }
 
 /// Integrates the reduced flow T-3.4 with the reconstruction T-3.6 from `start` over `n` RK4 steps
-/// of `dt` [s] and returns the states at every step (n + 1 of them, t = 0, dt, …), rebuilt as
+/// of `dt` \[s\] and returns the states at every step (n + 1 of them, t = 0, dt, …), rebuilt as
 /// x = l(√(1 − σ₁²) cos φ, √(1 − σ₁²) sin φ, σ₁) and v from σ₂, σ₆ and the sign of the radial motion.
 pub fn reduced_flow(length: f64, g: f64, start: &State, dt: f64, n: usize) -> Result<Vec<State>> {
     if !(dt.is_finite() && dt > 0.0) {

@@ -21,7 +21,7 @@ use crate::stepper::{SolveOptions, Stepper};
 pub enum SaveAt {
     /// The initial state, every n-th step (n ≥ 1) and the final state.
     Every(u64),
-    /// Exactly these times [s], increasing, within [t₀, t_end].
+    /// Exactly these times \[s\], increasing, within [t₀, t_end].
     Times(Vec<f64>),
 }
 
@@ -30,10 +30,10 @@ pub const BYTES_PER_SAMPLE: u64 = 7 * 8;
 /// Default limit on the memory of saved samples: 4 GiB.
 pub const DEFAULT_MAX_SAVED_BYTES: u64 = 4 << 30;
 
-/// Saved samples: times [s] and states.
+/// Saved samples: times \[s\] and states.
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct Samples {
-    /// Times [s].
+    /// Times \[s\].
     pub t: Vec<f64>,
     /// States at those times.
     pub states: Vec<State>,
@@ -68,7 +68,7 @@ fn too_many(samples: u64, max_samples: u64) -> Result<()> {
 /// Refuses a fixed-step run that plans more than the registry's `steps` limit of (t_end − t₀)/dt
 /// steps (10¹⁰), before any work starts.
 pub fn check_planned_steps(steps: f64) -> Result<()> {
-    let limit = crate::model::registry::limit("steps");
+    let limit = crate::limits::limit("steps");
     if steps.is_nan() || steps > limit.max {
         return Err(Error::InvalidParameter {
             name: "(t_end - t0)/dt",

@@ -13,7 +13,7 @@
 //! this within [`TS2_TOLERANCE`] (relative), or project explicitly and report by how much.
 
 use crate::error::{require_finite, Error, Result};
-use crate::model::registry::check_limits;
+use crate::limits::check_limits;
 use glam::DVec3;
 
 /// Relative tolerance of the TS² check: |(|x| − l)/l| and |x·v|/(l·|v|) must not exceed it.
@@ -22,9 +22,9 @@ pub const TS2_TOLERANCE: f64 = 1e-9;
 /// Physical parameters of the ideal pendulum.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Params {
-    /// Rod length l [m], l > 0.
+    /// Rod length l \[m\], l > 0.
     pub length: f64,
-    /// Bob mass m [kg], m > 0.
+    /// Bob mass m \[kg\], m > 0.
     pub mass: f64,
     /// Gravitational acceleration g [m/s²], any finite sign: g > 0 pulls along −z, g < 0 along +z.
     pub g: f64,
@@ -32,10 +32,10 @@ pub struct Params {
 
 impl Params {
     /// Validated parameters within the limits of the model registry
-    /// ([`crate::model::registry::COMMON`]: l ∈ [1e-6, 1e4] m, m ∈ [1e-6, 1e6] kg, g ∈ [−1e4, 1e4]
+    /// ([`crate::limits::COMMON`]: l ∈ [1e-6, 1e4] m, m ∈ [1e-6, 1e6] kg, g ∈ [−1e4, 1e4]
     /// m/s², negative and zero allowed).
     pub fn new(length: f64, mass: f64, g: f64) -> Result<Self> {
-        let [l, m, gravity] = [0, 1, 2].map(|i| &crate::model::registry::COMMON[i]);
+        let [l, m, gravity] = [0, 1, 2].map(|i| &crate::limits::COMMON[i]);
         check_limits(l, length)?;
         check_limits(m, mass)?;
         check_limits(gravity, g)?;
@@ -48,36 +48,36 @@ impl Params {
     }
 }
 
-/// A point (x, v) of TS²: position x [m] of the bob relative to the pivot, velocity v [m/s].
+/// A point (x, v) of TS²: position x \[m\] of the bob relative to the pivot, velocity v [m/s].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct State {
-    /// Position [m], |x| = l.
+    /// Position \[m\], |x| = l.
     pub x: DVec3,
     /// Velocity [m/s], x·v = 0.
     pub v: DVec3,
 }
 
-/// How far [`State::projected`] moved a state: the norms of the changes in x [m] and v [m/s].
+/// How far [`State::projected`] moved a state: the norms of the changes in x \[m\] and v [m/s].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Projection {
-    /// |x_projected − x| [m].
+    /// |x_projected − x| \[m\].
     pub dx: f64,
     /// |v_projected − v| [m/s].
     pub dv: f64,
 }
 
-/// Residuals of the constraints: (|x| − l) [m] and x·v [m²/s].
+/// Residuals of the constraints: (|x| − l) \[m\] and x·v [m²/s].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct ConstraintResiduals {
-    /// |x| − l [m].
+    /// |x| − l \[m\].
     pub length: f64,
     /// x·v [m²/s].
     pub tangency: f64,
 }
 
-/// The bob's speed |v| within the registry's bound ([`crate::model::registry::STATE`]: 1e7 m/s).
+/// The bob's speed |v| within the registry's bound ([`crate::limits::STATE`]: 1e7 m/s).
 pub fn check_speed(v: DVec3) -> Result<()> {
-    check_limits(&crate::model::registry::STATE[0], v.length()).map(|_| ())
+    check_limits(&crate::limits::STATE[0], v.length()).map(|_| ())
 }
 
 fn check_finite(name: &'static str, a: DVec3) -> Result<()> {
@@ -90,7 +90,7 @@ fn check_finite(name: &'static str, a: DVec3) -> Result<()> {
 }
 
 impl State {
-    /// A state from Cartesian position x [m] and velocity v [m/s], checked to lie on TS² within
+    /// A state from Cartesian position x \[m\] and velocity v [m/s], checked to lie on TS² within
     /// [`TS2_TOLERANCE`] (relative). Errors name the failing residual.
     pub fn on_tangent_bundle(params: &Params, x: DVec3, v: DVec3) -> Result<Self> {
         check_finite("x", x)?;
@@ -146,7 +146,7 @@ impl State {
         Ok((s, moved))
     }
 
-    /// The state at polar angle θ [rad] from the downward vertical, azimuth φ [rad], and their
+    /// The state at polar angle θ \[rad\] from the downward vertical, azimuth φ \[rad\], and their
     /// rates θ̇, φ̇ [rad/s] (see the module doc for the formula). Always on TS².
     pub fn from_angles(params: &Params, theta: f64, phi: f64, theta_dot: f64, phi_dot: f64) -> Result<Self> {
         require_finite("theta", theta, "the polar angle θ must be a finite number of radians")?;
@@ -166,13 +166,13 @@ impl State {
         Ok(Self { x, v })
     }
 
-    /// Polar angle θ ∈ [0, π] from the downward vertical and azimuth φ ∈ (−π, π] [rad].
+    /// Polar angle θ ∈ [0, π] from the downward vertical and azimuth φ ∈ (−π, π] \[rad\].
     pub fn angles(&self) -> (f64, f64) {
         let rho = self.x.truncate().length();
         ((rho).atan2(-self.x.z), self.x.y.atan2(self.x.x))
     }
 
-    /// Constraint residuals |x| − l [m] and x·v [m²/s] (both 0 on TS²).
+    /// Constraint residuals |x| − l \[m\] and x·v [m²/s] (both 0 on TS²).
     pub fn residuals(&self, length: f64) -> ConstraintResiduals {
         ConstraintResiduals { length: self.x.length() - length, tangency: self.x.dot(self.v) }
     }

@@ -1,5 +1,5 @@
 //! The incremental stepper: one integrator, one model, one state, advanced step by step
-//! (init / step / state), as a live viewer or the batch solver in [`crate::solve`] needs it.
+//! (init / step / state), as a live viewer or the batch solver in [`mod@crate::solve`] needs it.
 //!
 //! Fixed-step methods take steps of `dt` on the grid t = t_anchor + k·dt (computed by
 //! multiplication, so 10⁸ steps accumulate no round-off in t); [`Stepper::step_to`] shortens the
@@ -22,7 +22,7 @@ use crate::state::State;
 pub struct SolveOptions {
     /// The integrator (default: RATTLE).
     pub method: Method,
-    /// Step size [s] of fixed-step methods; for `dop853` the initial step guess (0 = automatic).
+    /// Step size \[s\] of fixed-step methods; for `dop853` the initial step guess (0 = automatic).
     pub dt: f64,
     /// Relative tolerance of `dop853` (ignored by fixed-step methods).
     pub rtol: f64,
@@ -77,7 +77,7 @@ pub struct Stepper<M: Model> {
 }
 
 impl<M: Model> Stepper<M> {
-    /// A stepper at time `t0` [s] in `state`, validated: dt > 0 for fixed-step methods, valid
+    /// A stepper at time `t0` \[s\] in `state`, validated: dt > 0 for fixed-step methods, valid
     /// tolerances for `dop853`, a finite t0.
     pub fn new(model: M, t0: f64, state: State, options: &SolveOptions) -> Result<Self> {
         if !t0.is_finite() {
@@ -129,7 +129,7 @@ impl<M: Model> Stepper<M> {
         })
     }
 
-    /// Current time [s].
+    /// Current time \[s\].
     pub fn t(&self) -> f64 {
         self.t
     }
@@ -149,7 +149,7 @@ impl<M: Model> Stepper<M> {
     pub fn stats(&self) -> Stats {
         self.stats
     }
-    /// Fixed step size [s] (for `dop853`: the initial step guess).
+    /// Fixed step size \[s\] (for `dop853`: the initial step guess).
     pub fn dt(&self) -> f64 {
         self.dt
     }
@@ -170,7 +170,7 @@ impl<M: Model> Stepper<M> {
         self.step_towards(f64::INFINITY)
     }
 
-    /// One step, but never past `t_stop` [s]; a fixed step that would pass it is shortened to land on it.
+    /// One step, but never past `t_stop` \[s\]; a fixed step that would pass it is shortened to land on it.
     pub fn step_towards(&mut self, t_stop: f64) -> Result<()> {
         // compiled for the CPU's best instruction set (crate::isa; the numbers are the same at every level)
         crate::isa::fastest(
@@ -248,7 +248,7 @@ impl<M: Model> Stepper<M> {
         })
     }
 
-    /// Advances to exactly `t_target` [s] (≥ the current time): fixed-step methods take full steps
+    /// Advances to exactly `t_target` \[s\] (≥ the current time): fixed-step methods take full steps
     /// and shorten the last; `dop853` steps past nothing and lands on `t_target`.
     pub fn step_to(&mut self, t_target: f64) -> Result<()> {
         self.step_to_capped(t_target, u64::MAX).map(|_| ())
@@ -279,7 +279,7 @@ impl<M: Model> Stepper<M> {
         Ok(true)
     }
 
-    /// Dense output of `dop853` at `t_out` [s] inside its last step; `None` for other methods.
+    /// Dense output of `dop853` at `t_out` \[s\] inside its last step; `None` for other methods.
     /// The three extra stages are computed on the first call after a step, hence `&mut self`.
     pub fn dense_output(&mut self, t_out: f64) -> Option<State> {
         match &mut self.scheme {

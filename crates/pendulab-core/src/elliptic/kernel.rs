@@ -26,7 +26,7 @@
 
 use super::carlson::{rc_gap, rd, rf, rj};
 
-/// The parameter m and its complement m′ = 1 − m. [`Param::new`] forms m′ by subtraction (exact for
+/// The parameter m and its complement m′ = 1 − m. `Param::new` forms m′ by subtraction (exact for
 /// m ≥ ½, Sterbenz, but then m′ carries the absolute rounding error of m, relative ε/m′);
 /// [`Param::with_complement`] takes an m′ computed to full relative accuracy by the caller (e.g.
 /// from differences of roots), which is what keeps K, F, Π accurate as m → 1.

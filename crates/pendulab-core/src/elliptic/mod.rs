@@ -7,14 +7,14 @@
 //!
 //! | function | definition | domain |
 //! | --- | --- | --- |
-//! | [`ellipk`](crate::elliptic::ellipk)`(m)` | K(m) = F(π/2\|m) | 0 ≤ m ≤ 1; K(1) = +∞ |
-//! | [`ellipe`](crate::elliptic::ellipe)`(m)` | E(m) = E(π/2\|m) | 0 ≤ m ≤ 1; E(1) = 1 |
-//! | [`ellippi`](crate::elliptic::ellippi)`(n, m)` | Π(n\|m) = Π(n; π/2\|m) | n < 1, 0 ≤ m ≤ 1; +∞ at m = 1 |
-//! | [`ellipf`](crate::elliptic::ellipf)`(φ, m)` | ∫₀^φ dθ/√(1 − m sin²θ) (DLMF 19.2.4) | any finite φ |
-//! | [`ellipe_inc`](crate::elliptic::ellipe_inc)`(φ, m)` | ∫₀^φ √(1 − m sin²θ) dθ (DLMF 19.2.5) | any finite φ |
-//! | [`ellippi_inc`](crate::elliptic::ellippi_inc)`(n, φ, m)` | ∫₀^φ dθ/((1 − n sin²θ)√(1 − m sin²θ)) (DLMF 19.2.7) | any finite φ, n < 1 |
-//! | [`jacobi`](crate::elliptic::jacobi)`(u, m)` | sn, cn, dn, am with F(am(u)\|m) = u (DLMF 22.16.1) | any finite u |
-//! | [`am`](crate::elliptic::am)`(u, m)` | the amplitude alone, continuous in u | any finite u |
+//! | [`ellipk`]`(m)` | K(m) = F(π/2\|m) | 0 ≤ m ≤ 1; K(1) = +∞ |
+//! | [`ellipe`]`(m)` | E(m) = E(π/2\|m) | 0 ≤ m ≤ 1; E(1) = 1 |
+//! | [`ellippi`]`(n, m)` | Π(n\|m) = Π(n; π/2\|m) | n < 1, 0 ≤ m ≤ 1; +∞ at m = 1 |
+//! | [`ellipf`]`(φ, m)` | ∫₀^φ dθ/√(1 − m sin²θ) (DLMF 19.2.4) | any finite φ |
+//! | [`ellipe_inc`]`(φ, m)` | ∫₀^φ √(1 − m sin²θ) dθ (DLMF 19.2.5) | any finite φ |
+//! | [`ellippi_inc`]`(n, φ, m)` | ∫₀^φ dθ/((1 − n sin²θ)√(1 − m sin²θ)) (DLMF 19.2.7) | any finite φ, n < 1 |
+//! | [`jacobi`]`(u, m)` | sn, cn, dn, am with F(am(u)\|m) = u (DLMF 22.16.1) | any finite u |
+//! | [`am`]`(u, m)` | the amplitude alone, continuous in u | any finite u |
 //!
 //! The incomplete integrals are odd in φ and continued past ±π/2 by quasi-periodicity,
 //! X(φ + jπ) = X(φ) + 2jX_complete (DLMF 19.2.10), so that Π(n; am(u)|m) is smooth in u as
@@ -23,7 +23,7 @@
 //!
 //! ## Bad input
 //! Every public function returns [`crate::Error::InvalidParameter`] (naming `m`, `n`, `phi`
-//! or `u`; [`carlson_rd`](crate::elliptic::carlson_rd): `x`, `y`, `z`) for m < 0, m > 1,
+//! or `u`; [`carlson_rd`]: `x`, `y`, `z`) for m < 0, m > 1,
 //! n ≥ 1, non-finite n, φ or u, and NaN anywhere; it never panics and never returns NaN.
 //! (m < 0 and n > 1 are meaningful elsewhere — imaginary modulus, principal values — but the
 //! pendulum never needs them.) Infinite results occur only where the integral diverges (K, F,

@@ -52,11 +52,11 @@ pub struct Generic {
     pub k: f64,
     /// The Jacobi functions at this m (K in double-double).
     pub jp: JacobiParam,
-    /// Azimuthal advance per z-period Δφ (T-4.5) [rad].
+    /// Azimuthal advance per z-period Δφ (T-4.5) \[rad\].
     pub delta_phi: f64,
     /// Start argument s₀ ∈ [−K, K].
     pub s0: f64,
-    /// Azimuth at the lowest point preceding the start, φ₀ − Φ(s₀) [rad].
+    /// Azimuth at the lowest point preceding the start, φ₀ − Φ(s₀) \[rad\].
     pub phi_low: f64,
 }
 
@@ -67,12 +67,12 @@ pub struct UnitState {
     pub x: [f64; 3],
     /// v/(lω₀).
     pub v: [f64; 3],
-    /// Continuous azimuth φ [rad].
+    /// Continuous azimuth φ \[rad\].
     pub phi: f64,
 }
 
 impl Generic {
-    /// Sets up the orbit through a start with azimuth `phi0` [rad] (requires j ≠ 0). Errors only if
+    /// Sets up the orbit through a start with azimuth `phi0` \[rad\] (requires j ≠ 0). Errors only if
     /// the start data are not finite.
     pub fn new(start: StartData, phi0: f64) -> Result<Self> {
         let roots = start.roots();

@@ -1,5 +1,5 @@
 //! The exact solution of the ideal spherical pendulum (docs/theory.md §4) from any state on TS², for any
-//! g: positions and velocities at any time t [s] (negative too) at a cost independent of t, the
+//! g: positions and velocities at any time t \[s\] (negative too) at a cost independent of t, the
 //! turning heights, the parameter m, the z-period and the azimuthal advance per z-period.
 //!
 //! Cases (T-4.6), chosen from the start:
@@ -124,7 +124,7 @@ pub struct ExactSolution {
 }
 
 impl ExactSolution {
-    /// The solution through `start` at t = 0. The state must be on TS² within [`TS2_TOLERANCE`]
+    /// The solution through `start` at t = 0. The state must be on TS² within [`TS2_TOLERANCE`](crate::state::TS2_TOLERANCE)
     /// (relative); use [`State::projected`] first otherwise. `TS2_TOLERANCE`: [`crate::state::TS2_TOLERANCE`].
     pub fn new(params: &Params, start: &State) -> Result<Self> {
         let s = State::on_tangent_bundle(params, start.x, start.v)?;
@@ -216,7 +216,7 @@ impl ExactSolution {
         &self.start
     }
 
-    /// The state at time `t` [s] (any finite t, negative too).
+    /// The state at time `t` \[s\] (any finite t, negative too).
     pub fn state(&self, t: f64) -> Result<State> {
         if !t.is_finite() {
             return Err(Error::InvalidParameter { name: "t", value: t, allowed: "a finite time in s" });
@@ -224,7 +224,7 @@ impl ExactSolution {
         Ok(self.state_and_azimuth(t)?.0)
     }
 
-    /// The state at `t` [s] and the continuous azimuth φ(t) [rad].
+    /// The state at `t` \[s\] and the continuous azimuth φ(t) \[rad\].
     pub fn state_and_azimuth(&self, t: f64) -> Result<(State, f64)> {
         // compiled for the CPU's best instruction set (crate::isa; the numbers are the same at every level)
         crate::isa::fastest(
@@ -255,7 +255,7 @@ impl ExactSolution {
         }
     }
 
-    /// States and continuous azimuths at many times [s]; long arrays are split over all cores
+    /// States and continuous azimuths at many times \[s\]; long arrays are split over all cores
     /// (feature `parallel`, on by default) in batches of [`BATCH`] times, each batch's loop compiled
     /// for the CPU's best instruction set ([`crate::isa`]). Fails on a non-finite time.
     pub fn states_at(&self, t: &[f64]) -> Result<Vec<(State, f64)>> {
@@ -285,7 +285,7 @@ impl ExactSolution {
         (State { x, v }, u.phi)
     }
 
-    /// Turning heights [m], ascending: (z₁, z₂) between which z moves, and z₃ (the third root of
+    /// Turning heights \[m\], ascending: (z₁, z₂) between which z moves, and z₃ (the third root of
     /// T-4.1, outside [−l, l]) for the generic case. For planar motion (−l, z₂) or (−l, l).
     pub fn turning_heights(&self) -> (f64, f64, Option<f64>) {
         let l = self.params.length;
@@ -322,7 +322,7 @@ impl ExactSolution {
         }
     }
 
-    /// The period of z(t) [s]: T-4.3 (generic), 4K/ω₀ for a planar swing (z itself repeats after
+    /// The period of z(t) \[s\]: T-4.3 (generic), 4K/ω₀ for a planar swing (z itself repeats after
     /// half of it, 2K/ω₀; the swing period is returned), one revolution over the top, 2π/ω on a great
     /// circle; ∞ on the separatrix; None at rest and on an exactly conical orbit's constant z.
     pub fn period_z(&self) -> Option<f64> {
@@ -334,7 +334,7 @@ impl ExactSolution {
         }
     }
 
-    /// Azimuthal advance per z-period Δφ [rad] (T-4.5) for generic and conical orbits; None otherwise.
+    /// Azimuthal advance per z-period Δφ \[rad\] (T-4.5) for generic and conical orbits; None otherwise.
     pub fn azimuth_advance(&self) -> Option<f64> {
         match &self.flow {
             Flow::Generic(g) => Some(g.delta_phi),
@@ -362,7 +362,7 @@ impl ExactSolution {
         self.cubic.as_ref().map(Weierstrass::new)
     }
 
-    /// The height z(t) [m] and its rate ż(t) [m/s] from the Weierstrass form, an independent second
+    /// The height z(t) \[m\] and its rate ż(t) [m/s] from the Weierstrass form, an independent second
     /// path to the z of [`state`](Self::state); None where [`weierstrass`](Self::weierstrass) is
     /// None.
     pub fn height_weierstrass(&self, t: &[f64]) -> Result<Option<Vec<(f64, f64)>>> {

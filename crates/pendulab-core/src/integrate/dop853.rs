@@ -130,7 +130,7 @@ pub struct Dop853 {
 
 impl Dop853 {
     /// A new integrator. `rtol` ∈ [1e-15, 1] and `atol` ≥ 0 [m and m/s] are the tolerances;
-    /// `h_max` [s] caps the step (∞ for none); `h_init` [s] is the first step (None: Hairer's guess).
+    /// `h_max` \[s\] caps the step (∞ for none); `h_init` \[s\] is the first step (None: Hairer's guess).
     pub fn new(rtol: f64, atol: f64, project: bool, h_max: f64, h_init: Option<f64>) -> Result<Self> {
         if !(RTOL_MIN..=1.0).contains(&rtol) {
             return Err(Error::InvalidParameter {
@@ -198,7 +198,7 @@ impl Dop853 {
         self.targets = None;
     }
 
-    /// The interval [t₀, t₁] [s] of the last accepted step (empty/NaN before the first step).
+    /// The interval [t₀, t₁] \[s\] of the last accepted step (empty/NaN before the first step).
     pub fn last_step_interval(&self) -> (f64, f64) {
         (self.t_old, self.t_old + self.h_old)
     }
@@ -224,13 +224,13 @@ impl Dop853 {
         (100.0 * h).min(h1).min(self.h_max).min(span)
     }
 
-    /// One accepted step from (`t`, `s`), never past `t_stop` [s] (which may be +∞); rejected
+    /// One accepted step from (`t`, `s`), never past `t_stop` \[s\] (which may be +∞); rejected
     /// attempts are counted in `stats`. Fails with [`Error::StepSizeUnderflow`] when the tolerance
     /// cannot be met with a step above round-off of t (e.g. the solution became non-finite).
     ///
-    /// The method ([`Dop853::attempt`]: stages, solution, error estimate; [`Dop853::accept`]:
+    /// The method (`Dop853::attempt`: stages, solution, error estimate; `Dop853::accept`:
     /// projection and the data of the step) is separate from the step-size controller
-    /// ([`StepControl`]: the trial step, the factors after acceptance and rejection).
+    /// (`StepControl`: the trial step, the factors after acceptance and rejection).
     ///
     /// Inlined (with its stages) into its caller, so that the stages are compiled for the
     /// instruction set the caller was dispatched to ([`crate::Stepper`] runs it inside
@@ -369,7 +369,7 @@ impl Dop853 {
         Ok(())
     }
 
-    /// The state at `t_out` ∈ [t₀, t₁] [s] of the last accepted step, from the order-7 interpolant
+    /// The state at `t_out` ∈ [t₀, t₁] \[s\] of the last accepted step, from the order-7 interpolant
     /// (projected onto TS² when projection is on). Costs three evaluations on the first call per step.
     /// Inlined like [`Dop853::step`] ([`crate::Stepper::dense_output`] dispatches it).
     #[inline(always)]

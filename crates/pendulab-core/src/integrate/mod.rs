@@ -37,7 +37,7 @@ pub struct Stats {
 
 /// A fixed-step one-step method on TS² (everything except `dop853`).
 pub trait FixedStep {
-    /// Advances `s` from time `t` [s] by `dt` [s] (dt may be negative for symmetric methods).
+    /// Advances `s` from time `t` \[s\] by `dt` \[s\] (dt may be negative for symmetric methods).
     fn step<M: Model>(&mut self, model: &M, t: f64, s: &mut State, dt: f64) -> Result<()>;
     /// Right-hand-side evaluations per step (for [`Stats::rhs_evals`]).
     fn evals_per_step(&self) -> u64;
@@ -45,7 +45,7 @@ pub trait FixedStep {
     fn reset(&mut self) {}
 }
 
-/// Takes `n` fixed steps of `dt` [s] with `scheme` on the grid t = `t_anchor` + k·dt from step `*k`
+/// Takes `n` fixed steps of `dt` \[s\] with `scheme` on the grid t = `t_anchor` + k·dt from step `*k`
 /// on, advancing `*k` with every step taken (also when a step fails): the one fixed-step loop, which
 /// every driver ([`crate::Stepper::step_n`], hence [`crate::Solver`]) runs. A wrapped model
 /// (`AnyModel`) chooses its variant once, through [`Model::visit`], so the loop is monomorphised per

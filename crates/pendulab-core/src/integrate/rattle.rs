@@ -47,7 +47,7 @@ pub struct Rattle {
 }
 
 impl Rattle {
-    /// One RATTLE step of size `h` [s]; returns `false` when the position quadratic has no real
+    /// One RATTLE step of size `h` \[s\]; returns `false` when the position quadratic has no real
     /// root (h far too large for the motion). The arithmetic is in [`super::rattle_kernel`].
     #[inline(always)]
     pub fn advance<M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> bool {

@@ -30,7 +30,7 @@
 //! Fused multiply-adds (`fmadd`: one rounding, shorter latency) are written explicitly and are the
 //! correctly rounded fused operation on every CPU, so the numbers do not depend on the instruction
 //! set the hot loops were dispatched to ([`crate::isa`]); the single-trajectory and ensemble paths
-//! agree bit for bit. SI units: lengths [m], velocities [m/s], h [s].
+//! agree bit for bit. SI units: lengths \[m\], velocities [m/s], h \[s\].
 
 use glam::DVec3;
 
@@ -61,16 +61,16 @@ pub fn dot(a: DVec3, b: DVec3) -> f64 {
 /// The position quadratic q m² + 2 b m + c = 0 of one step, m = h μ.
 #[derive(Debug, Clone, Copy)]
 pub struct PositionQuadratic {
-    /// |x₀|² [m²].
+    /// |x₀|² \[m²\].
     pub q: f64,
-    /// x₀·(x₀ + h w) [m²].
+    /// x₀·(x₀ + h w) \[m²\].
     pub b: f64,
-    /// |x₀ + h w|² − l² [m²], expanded so that l² cancels exactly.
+    /// |x₀ + h w|² − l² \[m²\], expanded so that l² cancels exactly.
     pub c: f64,
 }
 
 impl PositionQuadratic {
-    /// The quadratic for position `x0` [m], w = v₀ + k₀ [m/s], step `h` [s] and l² = `l2` [m²].
+    /// The quadratic for position `x0` \[m\], w = v₀ + k₀ [m/s], step `h` \[s\] and l² = `l2` \[m²\].
     #[inline(always)]
     pub fn new(x0: DVec3, w: DVec3, h: f64, l2: f64) -> Self {
         let q = dot(x0, x0);
@@ -127,7 +127,7 @@ pub struct ProjectionPolynomial {
 }
 
 impl ProjectionPolynomial {
-    /// Coefficients from x₀ [m], w [m/s], the end kick k₁ [m/s], the quadratic, h [s] and 1/l².
+    /// Coefficients from x₀ \[m\], w [m/s], the end kick k₁ [m/s], the quadratic, h \[s\] and 1/l².
     #[inline(always)]
     pub fn new(x0: DVec3, w: DVec3, kick1: DVec3, quad: &PositionQuadratic, h: f64, inv_l2: f64) -> Self {
         let e = w + kick1;
@@ -142,7 +142,7 @@ impl ProjectionPolynomial {
     }
 }
 
-/// x₁ = x₀ + h v½ [m], Kahan-compensated with the running compensation `comp`.
+/// x₁ = x₀ + h v½ \[m\], Kahan-compensated with the running compensation `comp`.
 #[inline(always)]
 pub fn advance_position(x0: DVec3, v_half: DVec3, h: f64, comp: &mut DVec3) -> DVec3 {
     let y = fmadd3(v_half, h, -*comp);

@@ -35,7 +35,7 @@ pub enum AnyModel {
 }
 
 impl AnyModel {
-    /// The `sampled_pivot` model: the pivot on the spline through `times` [s] and `positions` [m]
+    /// The `sampled_pivot` model: the pivot on the spline through `times` \[s\] and `positions` \[m\]
     /// ([`PivotSamples`]), with linear damping c ≥ 0 [1/s] relative to the pivot.
     pub fn sampled_pivot(params: Params, times: &[f64], positions: &[DVec3], damping: f64) -> Result<Self> {
         let samples = PivotSamples::new(times, positions)?;

@@ -34,7 +34,7 @@ pub struct Forcing {
     pub amplitude: f64,
     /// Angular frequency ω [rad/s].
     pub omega: f64,
-    /// Phase ψ [rad].
+    /// Phase ψ \[rad\].
     pub phase: f64,
     /// Direction e (unit vector).
     pub direction: DVec3,
@@ -120,7 +120,7 @@ impl Extended {
         Ok(self)
     }
 
-    /// The Earth-like frame: rate |Ω| [rad/s] at latitude λ [rad], axes (east, north, up).
+    /// The Earth-like frame: rate |Ω| [rad/s] at latitude λ \[rad\], axes (east, north, up).
     pub fn with_latitude_frame(self, rate: f64, latitude: f64) -> Result<Self> {
         crate::error::require_finite("frame_rate", rate, "a finite rate in rad/s")?;
         if latitude.is_nan() || latitude.abs() > std::f64::consts::FRAC_PI_2 {

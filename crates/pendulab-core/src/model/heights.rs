@@ -22,7 +22,7 @@
 
 use glam::DVec3;
 
-/// Height above the lowest point, h = l − d·x [m], for x on the sphere of radius `length` and a unit
+/// Height above the lowest point, h = l − d·x \[m\], for x on the sphere of radius `length` and a unit
 /// direction `d` of gravity; accurate to a few ulp of h itself on the lower hemisphere.
 pub fn height_above_lowest(length: f64, d: DVec3, x: DVec3) -> f64 {
     let along = d.dot(x);
@@ -33,7 +33,7 @@ pub fn height_above_lowest(length: f64, d: DVec3, x: DVec3) -> f64 {
     }
 }
 
-/// Depth below the highest point, q = l + d·x [m]; accurate to a few ulp of q on the upper hemisphere.
+/// Depth below the highest point, q = l + d·x \[m\]; accurate to a few ulp of q on the upper hemisphere.
 pub fn depth_below_highest(length: f64, d: DVec3, x: DVec3) -> f64 {
     let along = d.dot(x);
     if along < 0.0 {
@@ -44,7 +44,7 @@ pub fn depth_below_highest(length: f64, d: DVec3, x: DVec3) -> f64 {
 }
 
 /// V(to) − V(from) [J/kg] for the uniform field g⃗ = `g_vec` [m/s²] (V = −g⃗·x), both points on the
-/// sphere of radius `length` [m], measured from the pole nearer to both (see the module doc).
+/// sphere of radius `length` \[m\], measured from the pole nearer to both (see the module doc).
 pub fn gravity_potential_change(g_vec: DVec3, length: f64, from: DVec3, to: DVec3) -> f64 {
     let g = g_vec.length();
     if g == 0.0 {

@@ -20,7 +20,7 @@ pub struct IdealPendulum {
 }
 
 impl IdealPendulum {
-    /// Validated model: length l > 0 [m], mass m > 0 [kg], gravity g [m/s²] of any sign.
+    /// Validated model: length l > 0 \[m\], mass m > 0 \[kg\], gravity g [m/s²] of any sign.
     pub fn new(length: f64, mass: f64, g: f64) -> Result<Self> {
         Ok(Self { params: Params::new(length, mass, g)? })
     }

@@ -7,8 +7,8 @@
 //!   d²(|x|²)/dt² = 0 on TS². For the ideal pendulum f = −g e₃, so λ = (g z − |v|²)/l².
 //! - T-2.4 Hamiltonian form on T*R³ (y = ẋ): ẋ = y, ẏ = f + λ(x, y) x, the same vector field
 //!   extended off TS² (TS² is invariant but unstable, so unprojected methods drift away).
-//! - T-2.3 Rod tension T = −m λ l = m(|v|² + x·f)/l [N], positive when the rod pulls.
-//! - T-2.6 Energy E = m(½|v|² + V(x)) [J] and vertical angular momentum J₃ = m (x × v)·e₃ [kg m²/s].
+//! - T-2.3 Rod tension T = −m λ l = m(|v|² + x·f)/l \[N\], positive when the rod pulls.
+//! - T-2.6 Energy E = m(½|v|² + V(x)) \[J\] and vertical angular momentum J₃ = m (x × v)·e₃ [kg m²/s].
 //!
 //! Models: [`IdealPendulum`] (§2), [`Extended`] (damping, drag, periodic force, any gravity
 //! direction, rotating frame; §7), [`MovingPivot`] (T-7.2) and the hybrid [`StringPendulum`] (a
@@ -74,7 +74,7 @@ pub trait Model: Send + Sync {
     fn has_velocity_forces(&self) -> bool {
         false
     }
-    /// The exact flow over `h` [s] of v̇ = P(x)(f(t, x, v) − kick) at fixed x, taking tangent
+    /// The exact flow over `h` \[s\] of v̇ = P(x)(f(t, x, v) − kick) at fixed x, taking tangent
     /// vectors to tangent vectors (used by RATTLE's Strang splitting). Default: identity.
     #[inline(always)]
     fn velocity_flow(&self, _x: DVec3, v: DVec3, _h: f64) -> DVec3 {
@@ -128,7 +128,7 @@ pub fn acceleration<M: Model + ?Sized>(model: &M, t: f64, x: DVec3, v: DVec3) ->
     f + x * multiplier(model.params().length, x, v, f)
 }
 
-/// Total energy E = m(½|v|² + V(x)) [J] (T-2.6).
+/// Total energy E = m(½|v|² + V(x)) \[J\] (T-2.6).
 pub fn energy<M: Model + ?Sized>(model: &M, s: &State) -> f64 {
     model.params().mass * (0.5 * s.v.length_squared() + model.potential_per_mass(s.x))
 }
@@ -138,7 +138,7 @@ pub fn j3<M: Model + ?Sized>(model: &M, s: &State) -> f64 {
     model.params().mass * (s.x.x * s.v.y - s.x.y * s.v.x)
 }
 
-/// Rod tension T = m(|v|² + x·f)/l [N] (T-2.3); T < 0 means the rod pushes (a string would go slack).
+/// Rod tension T = m(|v|² + x·f)/l \[N\] (T-2.3); T < 0 means the rod pushes (a string would go slack).
 pub fn tension<M: Model + ?Sized>(model: &M, t: f64, s: &State) -> f64 {
     let p = model.params();
     let f = model.applied_acceleration(t, s.x, s.v);

@@ -30,16 +30,16 @@ use std::sync::Arc;
 pub enum PivotPath {
     /// p(t) = (R cos ωt, R sin ωt, h).
     Slewing {
-        /// Boom radius R [m].
+        /// Boom radius R \[m\].
         radius: f64,
         /// Slewing rate ω [rad/s].
         rate: f64,
-        /// Pivot height h [m].
+        /// Pivot height h \[m\].
         height: f64,
     },
     /// p(t) = (0, 0, A cos νt).
     Vertical {
-        /// Amplitude A [m].
+        /// Amplitude A \[m\].
         amplitude: f64,
         /// Angular frequency ν [rad/s].
         frequency: f64,
@@ -49,7 +49,7 @@ pub enum PivotPath {
 }
 
 impl PivotPath {
-    /// Pivot position p(t) [m].
+    /// Pivot position p(t) \[m\].
     pub fn position(&self, t: f64) -> DVec3 {
         match *self {
             PivotPath::Slewing { radius, rate, height } => {
@@ -62,7 +62,7 @@ impl PivotPath {
             PivotPath::Samples(ref s) => s.position(t),
         }
     }
-    /// The slewing crane's boom frame: `x` (pivot-relative [m]) at time t [s] rotated by −ωt about e₃,
+    /// The slewing crane's boom frame: `x` (pivot-relative \[m\]) at time t \[s\] rotated by −ωt about e₃,
     /// i.e. (radial, tangential, vertical) components with respect to the boom; `None` for other paths.
     pub fn boom_frame(&self, t: f64, x: DVec3) -> Option<DVec3> {
         match *self {

@@ -1,6 +1,6 @@
 //! The linearised slewing crane (docs/theory.md T-7.2) in closed form: small sway of the payload under a
 //! boom tip moving on the circle p(t) = R(cos ωt, sin ωt, h), in the boom frame (x radial, y
-//! tangential, both the bob's horizontal displacement from the pivot [m]; ω₀² = g/l):
+//! tangential, both the bob's horizontal displacement from the pivot \[m\]; ω₀² = g/l):
 //!
 //!   ẍ − 2ωẏ + (ω₀² − ω²)x = ω²R,   ÿ + 2ωẋ + (ω₀² − ω²)y = 0            (T-7.2)
 //!
@@ -18,7 +18,7 @@
 //! Refused: g ≤ 0 (no hanging equilibrium to linearise about), c ≥ 2ω₀ (not oscillatory), and the
 //! resonance ω = ω₀ without damping (|ω₀² − ω² + icω| ≤ 1e-9 ω₀²), where the offset is infinite and
 //! the linear response grows without bound. Valid while the sway is small against l (and R ω² small
-//! against g). Units: l, R [m]; g [m/s²]; ω, ω₀, Ω [rad/s]; c [1/s]; t [s].
+//! against g). Units: l, R \[m\]; g [m/s²]; ω, ω₀, Ω [rad/s]; c [1/s]; t \[s\].
 
 use crate::error::{Error, Result};
 use crate::state::Params;
@@ -60,12 +60,12 @@ pub struct LinearSlewing {
     damping: f64,
 }
 
-/// The boom-frame sway at one time: displacement (x radial, y tangential) [m] and its rates [m/s].
+/// The boom-frame sway at one time: displacement (x radial, y tangential) \[m\] and its rates [m/s].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Sway {
-    /// Radial displacement x [m].
+    /// Radial displacement x \[m\].
     pub x: f64,
-    /// Tangential displacement y [m].
+    /// Tangential displacement y \[m\].
     pub y: f64,
     /// ẋ [m/s] (rate in the rotating boom frame).
     pub vx: f64,
@@ -74,7 +74,7 @@ pub struct Sway {
 }
 
 impl LinearSlewing {
-    /// From l [m] and g [m/s²] of `params`, boom radius R [m], slewing rate ω [rad/s] and damping c
+    /// From l \[m\] and g [m/s²] of `params`, boom radius R \[m\], slewing rate ω [rad/s] and damping c
     /// [1/s] (≥ 0), with the refusals of the module doc.
     pub fn new(params: &Params, radius: f64, rate: f64, damping: f64) -> Result<Self> {
         crate::error::require_finite("radius", radius, "a finite boom radius R in m")?;
@@ -120,7 +120,7 @@ impl LinearSlewing {
         C(w * w * self.radius, 0.0).div(C(self.omega0 * self.omega0 - w * w, self.damping * w))
     }
 
-    /// The static offset (radial, tangential) [m] in the boom frame: ω²R/(ω₀² − ω² + icω).
+    /// The static offset (radial, tangential) \[m\] in the boom frame: ω²R/(ω₀² − ω² + icω).
     pub fn static_offset(&self) -> (f64, f64) {
         let z = self.static_c();
         (z.0, z.1)
@@ -137,7 +137,7 @@ impl LinearSlewing {
         ((om - self.rate).abs(), om + self.rate)
     }
 
-    /// The sway at time t [s] from the boom-frame start (x₀, y₀) [m] with rates (ẋ₀, ẏ₀) [m/s] at t = 0.
+    /// The sway at time t \[s\] from the boom-frame start (x₀, y₀) \[m\] with rates (ẋ₀, ẏ₀) [m/s] at t = 0.
     pub fn sway(&self, start: Sway, t: f64) -> Sway {
         let om = self.omega_damped();
         let (lp, lm) = (C(-self.rate + om, 0.5 * self.damping), C(-self.rate - om, 0.5 * self.damping));

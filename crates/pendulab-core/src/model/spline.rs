@@ -1,4 +1,4 @@
-//! A pivot path given as samples (times t_i [s], positions p_i [m]): the C² cubic spline through them
+//! A pivot path given as samples (times t_i \[s\], positions p_i \[m\]): the C² cubic spline through them
 //! with not-a-knot end conditions (the third derivative is continuous at t₁ and t_{n−1}, as in
 //! SciPy's `CubicSpline` default), one per coordinate. It gives the pivot's velocity ṗ [m/s] and the
 //! acceleration p̈ [m/s²] that enters the moving-pivot equation ẍ = −g e₃ − p̈(t) + λx (T-7.2).
@@ -35,7 +35,7 @@ fn bad(reason: String) -> Error {
 }
 
 impl PivotSamples {
-    /// The spline through `times` [s] (≥ 4, finite, strictly increasing) and `positions` [m].
+    /// The spline through `times` \[s\] (≥ 4, finite, strictly increasing) and `positions` \[m\].
     pub fn new(times: &[f64], positions: &[DVec3]) -> Result<Self> {
         if times.len() != positions.len() {
             return Err(bad(format!("{} times but {} positions", times.len(), positions.len())));
@@ -97,7 +97,7 @@ impl PivotSamples {
         Ok(Self { t: times.to_vec(), p: positions.to_vec(), m })
     }
 
-    /// The sampled interval [t₀, t_n] [s].
+    /// The sampled interval [t₀, t_n] \[s\].
     pub fn span(&self) -> (f64, f64) {
         (self.t[0], self.t[self.t.len() - 1])
     }
@@ -109,7 +109,7 @@ impl PivotSamples {
         (i, (self.t[i + 1] - t) / h, h)
     }
 
-    /// p(t) [m].
+    /// p(t) \[m\].
     pub fn position(&self, t: f64) -> DVec3 {
         let (i, a, h) = self.locate(t);
         let b = 1.0 - a;

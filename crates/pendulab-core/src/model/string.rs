@@ -1,6 +1,6 @@
 //! The pendulum on a string (rope) instead of a rod: the ideal pendulum (docs/theory.md §2) while the
 //! string is taut, a free projectile while it is slack, and an impulsive jerk when it snaps taut.
-//! SI units: l [m], m [kg], g [m/s²], t [s], x [m], v [m/s], T [N], E [J].
+//! SI units: l \[m\], m \[kg\], g [m/s²], t \[s\], x \[m\], v [m/s], T \[N\], E \[J\].
 //!
 //! - **Taut** (|x| = l, T ≥ 0): the constrained equations T-2.2, integrated by a method that keeps
 //!   TS² (the RATTLE family or RKMK4). The string can only pull: its tension is the rod's (T-2.3),
@@ -58,25 +58,25 @@ impl StringPendulum {
         self.restitution
     }
 
-    /// The string's tension T = m(|v|² − g z)/l [N] of a state on the sphere (T-2.3); it is taut
+    /// The string's tension T = m(|v|² − g z)/l \[N\] of a state on the sphere (T-2.3); it is taut
     /// only while T ≥ 0.
     pub fn tension(&self, s: &State) -> f64 {
         let p = &self.params;
         p.mass * (s.v.length_squared() - p.g * s.x.z) / p.length
     }
 
-    /// The height z* = 2E/(3 m g) [m] at which T = 0 for energy E [J] (g ≠ 0).
+    /// The height z* = 2E/(3 m g) \[m\] at which T = 0 for energy E \[J\] (g ≠ 0).
     pub fn slack_height(&self, energy: f64) -> f64 {
         2.0 * energy / (3.0 * self.params.mass * self.params.g)
     }
 
-    /// The free-flight state τ [s] after (x, v): the exact parabola under gravity.
+    /// The free-flight state τ \[s\] after (x, v): the exact parabola under gravity.
     pub fn flight(&self, s: &State, tau: f64) -> State {
         let a = DVec3::new(0.0, 0.0, -self.params.g);
         State { x: s.x + s.v * tau + a * (0.5 * tau * tau), v: s.v + a * tau }
     }
 
-    /// The flight time τ* > 0 [s] until |x| = l again, from `s` with |x| ≤ l; `None` if the bob
+    /// The flight time τ* > 0 \[s\] until |x| = l again, from `s` with |x| ≤ l; `None` if the bob
     /// never reaches the sphere (g = 0 and v = 0). `zeros` is how many leading coefficients are zero
     /// by construction: 2 after a leave at T = 0 (c₀ = c₁ = 0, and c₂ = lT/m ≤ 0), 1 after an inward
     /// rebound (c₀ = 0), 0 from inside the sphere; they are divided out so that the root at τ = 0 is
@@ -120,7 +120,7 @@ impl StringPendulum {
     }
 
     /// The snap at arrival on the sphere: x is put on it exactly, and v ← v − (1 + e)u with u the
-    /// outward radial velocity. Returns the new state, the energy lost [J] and whether the string is
+    /// outward radial velocity. Returns the new state, the energy lost \[J\] and whether the string is
     /// taut afterwards (no rebound, or one below the chatter limit of the module doc).
     pub fn snap(&self, s: &State) -> (State, f64, bool) {
         let (l, m) = (self.params.length, self.params.mass);

@@ -80,7 +80,7 @@ pub struct StringRunner {
 }
 
 impl StringRunner {
-    /// A run of `stepper` from its time to `t_end` [s] keeping `save`; `max_saved_bytes` bounds the
+    /// A run of `stepper` from its time to `t_end` \[s\] keeping `save`; `max_saved_bytes` bounds the
     /// memory of the samples (an error when exceeded). Checks the save rule and keeps the start
     /// (for [`SaveAt::Times`]: when the first time is the start time).
     pub fn new(stepper: StringStepper, t_end: f64, save: SaveAt, max_saved_bytes: u64) -> Result<Self> {
@@ -213,8 +213,8 @@ impl StringRunner {
 }
 
 impl StringPendulum {
-    /// Simulates from `state` at `t0` [s] to `t_end` [s] with `method` (rattle, rattle4, rattle6,
-    /// rattle8 or rkmk4) and step `dt` [s] in the taut phases, keeping every `save_every`-th grid
+    /// Simulates from `state` at `t0` \[s\] to `t_end` \[s\] with `method` (rattle, rattle4, rattle6,
+    /// rattle8 or rkmk4) and step `dt` \[s\] in the taut phases, keeping every `save_every`-th grid
     /// point, every event and t_end. The start may be on the sphere (|x| = l within 1e-9 relative) or
     /// inside it (slack); outside it is an error. `max_saved_bytes` bounds the memory of the samples.
     /// One [`StringStepper`] run to `t_end`.

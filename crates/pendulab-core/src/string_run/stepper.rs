@@ -106,8 +106,8 @@ pub struct StringStepper {
 }
 
 impl StringStepper {
-    /// A stepper from `state` at `t0` [s] with `method` (rattle, rattle4, rattle6, rattle8 or rkmk4)
-    /// and step `dt` [s] in the taut phases. The start may be on the sphere (|x| = l within 1e-9
+    /// A stepper from `state` at `t0` \[s\] with `method` (rattle, rattle4, rattle6, rattle8 or rkmk4)
+    /// and step `dt` \[s\] in the taut phases. The start may be on the sphere (|x| = l within 1e-9
     /// relative: taut, unless T < 0 or it moves off the sphere) or inside it (slack, flying); beyond
     /// it is an error.
     pub fn new(model: StringPendulum, t0: f64, state: State, method: Method, dt: f64) -> Result<Self> {
@@ -172,12 +172,12 @@ impl StringStepper {
         })
     }
 
-    /// Time reached [s].
+    /// Time reached \[s\].
     pub fn t(&self) -> f64 {
         self.t
     }
 
-    /// State reached (x [m], v [m/s]); inside the sphere while slack.
+    /// State reached (x \[m\], v [m/s]); inside the sphere while slack.
     pub fn state(&self) -> State {
         self.s
     }
@@ -202,7 +202,7 @@ impl StringStepper {
         std::mem::take(&mut self.events)
     }
 
-    /// The string's tension [N] at the state reached: T-2.3 while taut (≥ 0), 0 while slack.
+    /// The string's tension \[N\] at the state reached: T-2.3 while taut (≥ 0), 0 while slack.
     pub fn tension(&self) -> f64 {
         if self.is_taut() {
             self.model.tension(&self.s)
@@ -229,7 +229,7 @@ impl StringStepper {
         self.advance(t_end, u64::MAX, &mut |_, _, _| Ok(()))
     }
 
-    /// Advances to `t_end` [s], calling `push(t, state, taut)` at every `save_every`-th grid point,
+    /// Advances to `t_end` \[s\], calling `push(t, state, taut)` at every `save_every`-th grid point,
     /// after every event and at t_end; nothing when `t_end` is not after the time reached.
     pub fn advance(
         &mut self,
