@@ -34,9 +34,9 @@ pub struct Wind {
     pub steady: DVec3,
     /// Peak gust velocity w_g [m/s] (added to w₀ at the gust's middle).
     pub gust: DVec3,
-    /// Gust start t_g [s].
+    /// Gust start t_g \[s\].
     pub gust_start: f64,
-    /// Gust duration T_g [s] (> 0 when `gust` is nonzero).
+    /// Gust duration T_g \[s\] (> 0 when `gust` is nonzero).
     pub gust_duration: f64,
     /// Air density ρ [kg/m³].
     pub air_density: f64,
@@ -72,25 +72,25 @@ impl Wind {
     }
 }
 
-/// One body: mass [kg] and its drag area c_W A [m²].
+/// One body: mass \[kg\] and its drag area c_W A \[m²\].
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Body {
-    /// Mass m [kg] (> 0).
+    /// Mass m \[kg\] (> 0).
     pub mass: f64,
-    /// Drag coefficient times area c_W A [m²] (≥ 0).
+    /// Drag coefficient times area c_W A \[m²\] (≥ 0).
     pub drag_area: f64,
 }
 
 /// The crane system (see the module doc).
 #[derive(Debug, Clone)]
 pub struct CraneSystem {
-    /// Pivot path P(t) [m].
+    /// Pivot path P(t) \[m\].
     pub pivot: Hermite5,
-    /// Rope length l(t) [m] in the first component.
+    /// Rope length l(t) \[m\] in the first component.
     pub hoist: Hermite5,
     /// Body 1 (the hook, or the payload when there is no hook).
     pub body1: Body,
-    /// Body 2, the payload on rigging of length l₂ [m], if there is a hook.
+    /// Body 2, the payload on rigging of length l₂ \[m\], if there is a hook.
     pub body2: Option<(Body, f64)>,
     /// Gravity g [m/s²] along −z.
     pub g: f64,
@@ -123,7 +123,7 @@ fn put(y: &mut Y, i: usize, v: DVec3) {
 pub struct Eval {
     /// dy/dt.
     pub dy: Y,
-    /// Rope tension T₁ [N] and rigging tension T₂ [N] (0 without a hook).
+    /// Rope tension T₁ \[N\] and rigging tension T₂ \[N\] (0 without a hook).
     pub tension: (f64, f64),
 }
 
@@ -253,7 +253,7 @@ impl CraneSystem {
         Some(())
     }
 
-    /// The mechanical energy E = Σ ½ m|v|² + m g z [J] of y.
+    /// The mechanical energy E = Σ ½ m|v|² + m g z \[J\] of y.
     pub fn energy(&self, y: &Y) -> f64 {
         let m1 = self.body1.mass;
         let mut e = 0.5 * m1 * v3(y, 3).length_squared() + m1 * self.g * y[2];

@@ -1,5 +1,5 @@
-//! A prescribed motion q(t) ∈ R³ (a crane's pivot [m], or the rope length in the first component
-//! [m]) given at knots t_i [s] by its value q_i, rate q̇_i and second derivative q̈_i: the piecewise
+//! A prescribed motion q(t) ∈ R³ (a crane's pivot \[m\], or the rope length in the first component
+//! \[m\]) given at knots t_i \[s\] by its value q_i, rate q̇_i and second derivative q̈_i: the piecewise
 //! quintic Hermite interpolant (docs/theory.md T-11.4). On [t_i, t_{i+1}], h = t_{i+1} − t_i,
 //! s = (t − t_i)/h:
 //!
@@ -18,10 +18,10 @@
 use crate::error::{Error, Result};
 use glam::DVec3;
 
-/// One knot: time t [s], value q, rate q̇ and second derivative q̈ (units of q per s⁰, s¹, s²).
+/// One knot: time t \[s\], value q, rate q̇ and second derivative q̈ (units of q per s⁰, s¹, s²).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Knot {
-    /// Time [s].
+    /// Time \[s\].
     pub t: f64,
     /// Value.
     pub q: DVec3,
@@ -86,17 +86,17 @@ impl Hermite5 {
         Ok(Self { knots, coeffs })
     }
 
-    /// The first and last knot times [s].
+    /// The first and last knot times \[s\].
     pub fn span(&self) -> (f64, f64) {
         (self.knots[0].t, self.knots[self.knots.len() - 1].t)
     }
 
-    /// The times [s] of the jumps (repeated knots), increasing.
+    /// The times \[s\] of the jumps (repeated knots), increasing.
     pub fn breaks(&self) -> Vec<f64> {
         self.knots.windows(2).filter(|w| w[0].t == w[1].t).map(|w| w[0].t).collect()
     }
 
-    /// (q, q̇, q̈) at t [s], on the piece that contains `t_piece` (an integrator passes the middle of
+    /// (q, q̇, q̈) at t \[s\], on the piece that contains `t_piece` (an integrator passes the middle of
     /// its step, so that a step ending on a jump uses the values from before it).
     pub fn eval_on(&self, t: f64, t_piece: f64) -> (DVec3, DVec3, DVec3) {
         let n = self.knots.len();
@@ -120,7 +120,7 @@ impl Hermite5 {
         (q, dq / h, ddq / (h * h))
     }
 
-    /// (q, q̇, q̈) at t [s] (right-continuous at jumps).
+    /// (q, q̇, q̈) at t \[s\] (right-continuous at jumps).
     pub fn eval(&self, t: f64) -> (DVec3, DVec3, DVec3) {
         self.eval_on(t, t)
     }

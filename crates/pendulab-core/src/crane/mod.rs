@@ -6,7 +6,7 @@
 //! - [`hermite`]: prescribed motions (pivot path, rope length) as piecewise quintic Hermite (T-11.4);
 //! - [`dynamics`]: the equations of motion, tensions, energy and the works of hoist, pivot, wind and
 //!   damping (T-11.5 – T-11.7);
-//! - [`run`]: the integrator.
+//! - [`mod@run`]: the integrator.
 //!
 //! The command shapers, moves and crane kinematics (T-11.1 – T-11.3) are pure functions of time and live
 //! in the Python package (`pendulab.crane`); they reach this module as knots of the prescribed motions.

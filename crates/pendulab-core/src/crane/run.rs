@@ -1,6 +1,6 @@
 //! Integration of the crane system ([`CraneSystem`], T-11.5 – T-11.7) by adaptive Dormand–Prince 8(5,3)
 //! (the tableau of [`crate::integrate::dop853`]; Hairer, Nørsett & Wanner 1993, Sec. II.10) on
-//! y ∈ R¹⁶ (positions [m], velocities [m/s], works [J]), with the projection onto the constraints
+//! y ∈ R¹⁶ (positions \[m\], velocities [m/s], works \[J\]), with the projection onto the constraints
 //! (T-11.5) after every accepted step. The steps end exactly on every save time and on every jump of
 //! the prescribed motions (a trapezoidal move's acceleration steps), so no step straddles a jump and
 //! the stages of a step use the prescribed motion's piece of that step. Error estimate and step
@@ -15,14 +15,14 @@ use super::dynamics::{CraneSystem, DIM, Y};
 use crate::error::{Error, Result};
 use crate::integrate::dop853_tableau::{A, B, C, E3, E5, STAGES};
 
-/// What a run saves at each save time: t [s], the state y and the tensions (T₁, T₂) [N].
+/// What a run saves at each save time: t \[s\], the state y and the tensions (T₁, T₂) \[N\].
 #[derive(Debug, Clone, Default)]
 pub struct CraneOutput {
-    /// Save times [s].
+    /// Save times \[s\].
     pub t: Vec<f64>,
     /// States y (see [`super::dynamics`]).
     pub y: Vec<Y>,
-    /// Rope and rigging tension [N].
+    /// Rope and rigging tension \[N\].
     pub tension: Vec<(f64, f64)>,
     /// Accepted and rejected steps.
     pub steps: (u64, u64),
