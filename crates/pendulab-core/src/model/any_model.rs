@@ -90,6 +90,7 @@ impl AnyModel {
                 Extended::ideal(params)
                     .with_gravity_direction(vec("gravity_x", "gravity_y", "gravity_z"))?
                     .with_damping(get("damping").unwrap(), get("drag").unwrap())?
+                    .with_friction(get("friction").unwrap(), get("friction_speed").unwrap())?
                     .with_forcing(
                         get("forcing_amplitude").unwrap(),
                         get("forcing_omega").unwrap(),

@@ -89,6 +89,24 @@ const DAMPED: &[ParamSpec] = &[
     )
     .within(0.0, 1e4, "a number in [0, 1e4] 1/m"),
     p(
+        "friction",
+        "dry pivot friction",
+        "rad/s^2",
+        0.0,
+        0.0,
+        "dry (Coulomb) friction at the pivot: a torque m l² ε_f against the swing, whatever its speed (T-7.6)",
+    )
+    .within(0.0, 1e4, "a number in [0, 1e4] rad/s^2"),
+    p(
+        "friction_speed",
+        "dry friction smoothing speed",
+        "rad/s",
+        super::extended::DEFAULT_FRICTION_SPEED,
+        0.0,
+        "below this angular speed the dry friction fades out smoothly, as tanh(|ω|/ω_ε) (T-7.6)",
+    )
+    .within(1e-9, 1e3, "a number in [1e-9, 1e3] rad/s"),
+    p(
         "forcing_amplitude",
         "driving strength A",
         "m/s^2",
