@@ -103,6 +103,7 @@ lint: venv
 	$(PY) tools/check_imports.py
 	$(PY) tools/check_rust_modules.py crates/pendulab-core/src
 	$(PY) tools/check_rust_modules.py python/rust
+	$(PY) tools/check_rust_modules.py crates/pendulab-wasm/src
 	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 
 fmt: venv

@@ -54,8 +54,8 @@ impl Engine {
         pack(&self.session, &out)
     }
 
-    /// One tick: `messages` are the command texts received since the last tick, `elapsed` [s] the wall
-    /// clock since then, `budget` [s] the stepping time allowed; the messages to send, packed.
+    /// One tick: `messages` are the command texts received since the last tick, `elapsed` \[s\] the wall
+    /// clock since then, `budget` \[s\] the stepping time allowed; the messages to send, packed.
     pub fn tick(&mut self, messages: &[String], elapsed: f64, clock: &dyn Clock, budget: f64) -> Vec<u8> {
         let setups = &self.setups;
         let commands = messages.iter().map(|m| parse_command(m, &|n| Self::resolve(setups, n))).collect();

@@ -32,7 +32,7 @@ mod clock {
 mod clock {
     use std::sync::OnceLock;
     use std::time::Instant;
-    /// A monotonic clock [s] (native builds: tests and the benchmark).
+    /// A monotonic clock \[s\] (native builds: tests and the benchmark).
     pub fn now() -> f64 {
         static START: OnceLock<Instant> = OnceLock::new();
         START.get_or_init(Instant::now).elapsed().as_secs_f64()
@@ -85,7 +85,7 @@ pub extern "C" fn pl_out_ptr() -> *const u8 {
     OUT.with(|o| o.borrow().as_ptr())
 }
 
-/// The last answer's length [bytes].
+/// The last answer's length \[bytes\].
 #[no_mangle]
 pub extern "C" fn pl_out_len() -> usize {
     OUT.with(|o| o.borrow().len())

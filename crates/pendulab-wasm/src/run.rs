@@ -1,7 +1,7 @@
 //! A plain trajectory of any lab model (no pacing, no budget): what the parity test and the benchmark
-//! compare between the native build and WebAssembly. Input JSON: `model`, `length` [m], `mass` [kg],
-//! `g` [m/s²], `params` (own, SI), the start as `theta`, `phi` [rad], `theta_dot`, `phi_dot` [rad/s],
-//! `method`, `dt` [s], `steps` (per record; `dop853` lands on the records' times k·steps·dt) and `records`; output: the records' float64 values
+//! compare between the native build and WebAssembly. Input JSON: `model`, `length` \[m\], `mass` \[kg\],
+//! `g` [m/s²], `params` (own, SI), the start as `theta`, `phi` \[rad\], `theta_dot`, `phi_dot` [rad/s],
+//! `method`, `dt` \[s\], `steps` (per record; `dop853` lands on the records' times k·steps·dt) and `records`; output: the records' float64 values
 //! (frame.json's layout, error_x unknown) — `records + 1` of them, the start first.
 
 use pendulab_core::live::{LivePendulum, LiveStepper, Record};

@@ -1,7 +1,7 @@
 //! The lab's wire format on the page's side of the engine (docs/web.md, "Commands", "Notices"): JSON
 //! command messages checked against the lab's limits into [`Command`]s (as the server's
 //! `pendulab.server.protocol` checks them), scenarios as `GET /api/scenarios` describes them into
-//! [`Setup`]s, and the `status` and `event` notices as JSON. SI units: l [m], m [kg], g [m/s²], t [s].
+//! [`Setup`]s, and the `status` and `event` notices as JSON. SI units: l \[m\], m \[kg\], g [m/s²], t \[s\].
 
 use pendulab_core::live::error::Reference;
 use pendulab_core::live::session::{Command, Setup, StateSpec};

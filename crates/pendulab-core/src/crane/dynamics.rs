@@ -40,7 +40,7 @@ pub struct Wind {
     pub gust_duration: f64,
     /// Air density ρ [kg/m³].
     pub air_density: f64,
-    /// Turbulence modes (ω_k [rad/s], amplitude a_k [m/s] per axis, phase φ_k [rad] per axis):
+    /// Turbulence modes (ω_k [rad/s], amplitude a_k [m/s] per axis, phase φ_k \[rad\] per axis):
     /// w_turb(t) = Σ a_k cos(ω_k t + φ_k), component by component.
     pub turbulence: Vec<(f64, DVec3, DVec3)>,
 }

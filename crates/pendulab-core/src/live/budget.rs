@@ -6,7 +6,7 @@
 //! calls the steppers in slices of about [`SLICE_TIME`] seconds, sized from the steps per second it
 //! measured on earlier slices, and checks the budget between slices, so a tick overruns its budget by
 //! at most one slice. The same constants as the Python server's `pendulab.server.budget`.
-//! Units: seconds [s] throughout.
+//! Units: seconds \[s\] throughout.
 
 /// Wall-clock seconds one session may step per tick (a tick is 1/60 s ≈ 16.7 ms).
 pub const TICK_BUDGET: f64 = 0.006;
@@ -17,7 +17,7 @@ pub const FIRST_SLICE: u64 = 64;
 /// Most steps of one slice.
 pub const MAX_SLICE: u64 = 1 << 22;
 
-/// A source of wall-clock time [s] (monotonic; the origin does not matter).
+/// A source of wall-clock time \[s\] (monotonic; the origin does not matter).
 pub trait Clock {
     /// Seconds since some fixed origin.
     fn now(&self) -> f64;
@@ -36,7 +36,7 @@ pub struct Budget<'c> {
 }
 
 impl<'c> Budget<'c> {
-    /// A budget of `seconds` [s] from now on `clock`.
+    /// A budget of `seconds` \[s\] from now on `clock`.
     pub fn new(clock: &'c dyn Clock, seconds: f64) -> Self {
         Self { clock, deadline: clock.now() + seconds }
     }
@@ -46,7 +46,7 @@ impl<'c> Budget<'c> {
         self.clock.now() >= self.deadline
     }
 
-    /// The clock's time now [s].
+    /// The clock's time now \[s\].
     pub fn now(&self) -> f64 {
         self.clock.now()
     }

@@ -1,4 +1,4 @@
-//! The global error of a live run, in every frame record's `error_x` [m] (docs/web.md, "Error
+//! The global error of a live run, in every frame record's `error_x` \[m\] (docs/web.md, "Error
 //! estimate"), as the Python server's `pendulab.server.live_error` computes it:
 //!
 //! - **exact** (the ideal pendulum): |x − x_exact(t)| against the exact solution from the same start
@@ -46,12 +46,12 @@ impl How {
     }
 }
 
-/// The companion's settings: dt [s], or rtol and atol.
+/// The companion's settings: dt \[s\], or rtol and atol.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Reference {
     /// None (exact, or no estimate).
     None,
-    /// A fixed step [s].
+    /// A fixed step \[s\].
     Dt(f64),
     /// Tolerances.
     Tol {
@@ -65,7 +65,7 @@ pub enum Reference {
 /// The live error estimate of one stepper's run from its start.
 #[derive(Debug, Clone)]
 pub struct LiveError {
-    /// Start time [s]: the error is counted from here.
+    /// Start time \[s\]: the error is counted from here.
     pub t0: f64,
     /// How (None: no estimate; `note` says why).
     pub how: Option<How>,
@@ -84,7 +84,7 @@ pub struct LiveError {
 }
 
 impl LiveError {
-    /// The estimate for a run of `p` from `start` at `t0` [s] with `method`, `dt` [s], `rtol`, `atol`;
+    /// The estimate for a run of `p` from `start` at `t0` \[s\] with `method`, `dt` \[s\], `rtol`, `atol`;
     /// `exact = false` estimates the ideal pendulum's error with a companion too.
     #[allow(clippy::too_many_arguments)]
     pub fn new(
@@ -149,7 +149,7 @@ impl LiveError {
         e
     }
 
-    /// Sets `error_x` [m] of `records` (this run's, in time order): 0 at the start, the error where
+    /// Sets `error_x` \[m\] of `records` (this run's, in time order): 0 at the start, the error where
     /// known, [`UNKNOWN`] where the companion did not get there within `budget`.
     pub fn fill(&mut self, records: &mut [Record], budget: &Budget<'_>) {
         let mut reached = true;

@@ -1,11 +1,11 @@
 //! Frame records: one state of a live run as the lab's wire format carries it (docs/web.md, "Frames";
 //! the layout is `python/pendulab/server/frame.json`, which a test compares with [`FRAME_FIELDS`]).
 //!
-//! A record is [`RECORD_LEN`] float64 values: t [s], x [m], v [m/s] (relative to the pivot), energy E
-//! [J] (T-2.6; the spring's kinetic + elastic + gravity), J₃ [kg m²/s], the rod's tension T [N] (T-2.3;
-//! the spring's k(|r| − l₀), the slack string's 0), the power P [W] of the non-conservative forces
+//! A record is [`RECORD_LEN`] float64 values: t \[s\], x \[m\], v [m/s] (relative to the pivot), energy E
+//! \[J\] (T-2.6; the spring's kinetic + elastic + gravity), J₃ [kg m²/s], the rod's tension T \[N\] (T-2.3;
+//! the spring's k(|r| − l₀), the slack string's 0), the power P \[W\] of the non-conservative forces
 //! (T-7.1), the acceleration a = ẍ [m/s²] relative to the pivot (T-2.2: m a is the net force there),
-//! the pivot's position [m] (0 when fixed), taut (1, or 0 while the string is slack) and error_x [m],
+//! the pivot's position \[m\] (0 when fixed), taut (1, or 0 while the string is slack) and error_x \[m\],
 //! the global position error ([`UNKNOWN`] until the error estimate fills it, [`super::error`]).
 
 use crate::model::registry::AnyModel;
@@ -68,12 +68,12 @@ impl Record {
         r
     }
 
-    /// Time [s].
+    /// Time \[s\].
     pub fn t(&self) -> f64 {
         self.0[T]
     }
 
-    /// Position x [m].
+    /// Position x \[m\].
     pub fn x(&self) -> DVec3 {
         DVec3::new(self.0[X], self.0[X + 1], self.0[X + 2])
     }
@@ -84,7 +84,7 @@ impl Record {
     }
 }
 
-/// The record of a rod model's state at time t [s]: the core's diagnostics at that time (forcing and a
+/// The record of a rod model's state at time t \[s\]: the core's diagnostics at that time (forcing and a
 /// moving pivot depend on it), as the Python server's `state_records` computes them.
 pub fn rod_record(model: &AnyModel, t: f64, s: &State) -> Record {
     let mut r = Record([0.0; RECORD_LEN]);

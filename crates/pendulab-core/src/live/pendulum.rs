@@ -1,7 +1,7 @@
 //! What a live session runs: a pendulum of any lab model by registry name ([`LivePendulum`]) and its
 //! incremental stepper ([`LiveStepper`]) — the rod models through [`Stepper`] over [`AnyModel`], the
 //! swinging spring (T-7.4) through [`SpringStepper`], the string through [`StringStepper`] — with the
-//! frame record of its current state ([`super::frame`]). SI units: l [m], m [kg], g [m/s²], t [s].
+//! frame record of its current state ([`super::frame`]). SI units: l \[m\], m \[kg\], g [m/s²], t \[s\].
 
 use super::frame::{rod_record, Record};
 use crate::elastic::{SpringStepper, SwingingSpring};
@@ -48,14 +48,14 @@ pub fn live_models() -> Vec<&'static str> {
 pub struct LivePendulum {
     /// Registry name.
     pub model: &'static str,
-    /// Length [m], mass [kg], g [m/s²].
+    /// Length \[m\], mass \[kg\], g [m/s²].
     pub params: Params,
     /// The model's own parameters in the registry's order (SI units).
     pub own: Vec<(&'static str, f64)>,
 }
 
 impl LivePendulum {
-    /// Model `name` with l [m], m [kg], g [m/s²] and own parameters by name (defaults for the rest);
+    /// Model `name` with l \[m\], m \[kg\], g [m/s²] and own parameters by name (defaults for the rest);
     /// errors name an unknown model, an unknown parameter or a value outside the registry's limits.
     pub fn new(name: &str, length: f64, mass: f64, g: f64, given: &[(String, f64)]) -> Result<Self> {
         let ms = spec(name)?;
@@ -127,7 +127,7 @@ impl LivePendulum {
         SwingingSpring::new(self.get("stiffness") / p.mass, p.length, p.g, p.mass)
     }
 
-    /// A state (x [m], v [m/s]) of this pendulum: on TS² (or moved there with `project`); the spring
+    /// A state (x \[m\], v [m/s]) of this pendulum: on TS² (or moved there with `project`); the spring
     /// takes any finite state with x ≠ 0; the string also a slack one strictly inside the sphere.
     pub fn state(&self, x: DVec3, v: DVec3, project: bool) -> Result<State> {
         let finite = x.is_finite() && v.is_finite();
@@ -151,7 +151,7 @@ impl LivePendulum {
         }
     }
 
-    /// The state at polar angle θ [rad] from the downward vertical, azimuth φ, rates θ̇, φ̇ [rad/s]; the
+    /// The state at polar angle θ \[rad\] from the downward vertical, azimuth φ, rates θ̇, φ̇ [rad/s]; the
     /// spring's on the sphere of its equilibrium length l₀ + m g/k (l₀ when that is not positive).
     pub fn state_from_angles(&self, theta: f64, phi: f64, theta_dot: f64, phi_dot: f64) -> Result<State> {
         let mut params = self.params;
@@ -183,7 +183,7 @@ pub enum LiveStepper {
 }
 
 impl LiveStepper {
-    /// A stepper of `p` from `state` at `t0` [s] with `method`, step `dt` [s] (0 for `dop853`: automatic)
+    /// A stepper of `p` from `state` at `t0` \[s\] with `method`, step `dt` \[s\] (0 for `dop853`: automatic)
     /// and, for `dop853`, `rtol`, `atol`.
     pub fn new(
         p: &LivePendulum,
@@ -225,7 +225,7 @@ impl LiveStepper {
         })
     }
 
-    /// Time reached [s].
+    /// Time reached \[s\].
     pub fn t(&self) -> f64 {
         match self {
             LiveStepper::Rod(s) => s.t(),
@@ -234,7 +234,7 @@ impl LiveStepper {
         }
     }
 
-    /// State reached (x [m], v [m/s]).
+    /// State reached (x \[m\], v [m/s]).
     pub fn state(&self) -> State {
         match self {
             LiveStepper::Rod(s) => *s.state(),
@@ -252,7 +252,7 @@ impl LiveStepper {
         }
     }
 
-    /// Towards `t` [s] with at most `cap` steps; true once exactly there (`dop853` lands on `t`).
+    /// Towards `t` \[s\] with at most `cap` steps; true once exactly there (`dop853` lands on `t`).
     pub fn step_to_capped(&mut self, t: f64, cap: u64) -> Result<bool> {
         match self {
             LiveStepper::Rod(s) => s.step_to_capped(t, cap),

@@ -22,7 +22,7 @@ use crate::DVec3;
 pub const MAX_PENDING_STEPS: u64 = 1_000_000;
 /// Most frame records sent per tick.
 pub const MAX_SUBSAMPLES: usize = 16;
-/// Longest wall-clock interval [s] one tick catches up on.
+/// Longest wall-clock interval \[s\] one tick catches up on.
 pub const MAX_ELAPSED: f64 = 0.1;
 /// Most `event` notices sent per tick (the latest).
 pub const MAX_EVENT_NOTICES: usize = 16;
@@ -36,24 +36,24 @@ pub struct Setup {
     pub title: Option<String>,
     /// The pendulum.
     pub pendulum: LivePendulum,
-    /// The start (x [m], v [m/s]).
+    /// The start (x \[m\], v [m/s]).
     pub state: State,
     /// The integrator.
     pub method: Method,
-    /// Step [s] (dop853: initial guess).
+    /// Step \[s\] (dop853: initial guess).
     pub dt: f64,
     /// dop853's relative tolerance.
     pub rtol: f64,
     /// dop853's absolute tolerance.
     pub atol: f64,
-    /// Start time [s].
+    /// Start time \[s\].
     pub t0: f64,
 }
 
 /// A state as a command gives it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum StateSpec {
-    /// x [m], v [m/s]; `project` moves them onto TS².
+    /// x \[m\], v [m/s]; `project` moves them onto TS².
     Cartesian {
         /// Position.
         x: DVec3,
@@ -62,14 +62,14 @@ pub enum StateSpec {
         /// Project onto TS².
         project: bool,
     },
-    /// θ, φ [rad], θ̇, φ̇ [rad/s].
+    /// θ, φ \[rad\], θ̇, φ̇ [rad/s].
     Angles([f64; 4]),
 }
 
 /// A command, already checked against the lab's limits (the wire's JSON parsing does that).
 #[derive(Debug, Clone)]
 pub enum Command {
-    /// New l [m], m [kg], g [m/s²] and/or own parameters; the model kept.
+    /// New l \[m\], m \[kg\], g [m/s²] and/or own parameters; the model kept.
     SetParams {
         /// Length.
         length: Option<f64>,
@@ -89,7 +89,7 @@ pub enum Command {
     },
     /// A new state and start.
     SetState(StateSpec),
-    /// Method and/or dt [s].
+    /// Method and/or dt \[s\].
     SetMethod {
         /// Method.
         method: Option<Method>,
@@ -156,13 +156,13 @@ pub struct LiveSession {
     pub error: LiveError,
     /// Method.
     pub method: Method,
-    /// Step [s].
+    /// Step \[s\].
     pub dt: f64,
     /// dop853 tolerances.
     pub rtol: f64,
     /// dop853 absolute tolerance.
     pub atol: f64,
-    /// Start time of the scenario [s].
+    /// Start time of the scenario \[s\].
     pub t0: f64,
     /// Simulated seconds per wall-clock second.
     pub time_scale: f64,
@@ -462,7 +462,7 @@ impl LiveSession {
 
     /// One tick (the Python server's `tick_messages`): the commands in order (`Err`: a message refused
     /// before it became a command, with its text and command name), the waiting steps, the advance by
-    /// `elapsed` [s], the error estimate in what is left of `budget_seconds`, the frames, the string's
+    /// `elapsed` \[s\], the error estimate in what is left of `budget_seconds`, the frames, the string's
     /// events, and status notices where something changed. `dropped`: messages thrown away (throttling).
     pub fn tick(
         &mut self,
