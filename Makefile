@@ -46,7 +46,7 @@ build: venv
 
 # A wheel for other machines and an sdist, in dist/ (README "Install"): abi3 (CPython >= 3.11),
 # manylinux2014 (glibc >= 2.17; linked by zig from PyPI's ziglang), the baseline CPU with run-time
-# AVX2/AVX-512 dispatch; checked with auditwheel. `pip install 'dist/pendulab-<version>-*.whl[lab]'`.
+# AVX2/AVX-512 dispatch; checked with auditwheel. `pip install "$$(ls dist/pendulab-*.whl)[lab]"` (README.md, Install).
 wheel: venv
 	rm -rf dist
 	PATH="$(CURDIR)/$(VENV)/bin:$$PATH" $(VENV)/bin/maturin build --release --quiet -m python/Cargo.toml \

@@ -1,11 +1,14 @@
-"""Uses the built wheel as a new user would: installs ``dist/pendulab-*.whl[lab]`` into a fresh virtual
-environment in a temporary folder outside the checkout and, from there, runs
+"""Uses the built wheel as a new user would: runs the README's install lines (the block after the
+``wheel-install`` marker in README.md, without its ``make wheel``) exactly as written in bash, with HOME in a
+temporary folder (so ``~/pendulab-env`` is a fresh virtual environment outside the checkout) and the wheel
+in ``dist/`` beside it; then, from another folder, runs
 
 1. the README's quickstart (the Python block after the ``quickstart`` marker in README.md),
 2. ``pendulab scenarios`` (every shipped example listed) and ``pendulab run rosette`` by name,
 3. ``pendulab serve --no-browser``: the page at the URL it prints, and one status notice plus one
    binary frame over its WebSocket (sent with the page's own Origin and Host),
-4. the package's data: examples, the built lab page, ``py.typed`` and the ``_core.pyi`` stubs,
+4. the package's data: examples (scenarios, sweeps, measured data), the built lab page, ``py.typed``,
+   the ``_core.pyi`` stubs and the LICENSE,
 5. when ``qemu-x86_64`` is installed (Debian's ``qemu-user``) on an x86-64 machine: the import and a
    RATTLE run and an ensemble under an emulated CPU without AVX, AVX2, FMA or AVX-512 (``--qemu-cpu``,
    default Nehalem, x86-64-v2), whose numbers must equal the native run's bit for bit.
@@ -45,6 +48,12 @@ print(" ".join(float(v).hex() for v in [*tr.x[-1], *tr.v[-1], *res.x[:, -1].rave
 """
 
 
+LICENSE_FILES = """
+from importlib.metadata import files
+print(" ".join(str(f) for f in files("pendulab") if "licenses" in str(f) or "LICENSE" in str(f)))
+"""
+
+
 def say(msg: str) -> None:
     print(f"check_wheel: {msg}", flush=True)
 
@@ -68,6 +77,19 @@ def quickstart() -> str:
     if m is None:
         sys.exit("check_wheel: README.md has no ```python block after a <!-- quickstart --> marker")
     return m.group(1)
+
+
+def install_lines() -> list[str]:
+    """The README's wheel-install block, without ``make wheel`` (done before this script runs)."""
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    m = re.search(r"<!-- wheel-install[^>]*-->\s*```\w*\n(.*?)```", text, re.S)
+    if m is None:
+        sys.exit("check_wheel: README.md has no code block after a <!-- wheel-install --> marker")
+    lines = [line.split("  #")[0].strip() for line in m.group(1).splitlines()]
+    lines = [line for line in lines if line]
+    if not lines or lines[0] != "make wheel" or not any(line.startswith("pip install") for line in lines):
+        sys.exit(f"check_wheel: the README's wheel-install block is not 'make wheel' then pip: {lines}")
+    return lines[1:]
 
 
 def free_port() -> int:
@@ -155,21 +177,42 @@ def main() -> None:
     wheel = wheels[0].resolve()
     t_start = time.perf_counter()
     with tempfile.TemporaryDirectory(prefix="pendulab-wheel-") as tmp:
-        venv, work = Path(tmp) / "venv", Path(tmp) / "work"
-        work.mkdir()
+        home, src, work = Path(tmp) / "home", Path(tmp) / "src", Path(tmp) / "work"
+        for d in (home, src, work):
+            d.mkdir()
+        (src / "dist").mkdir()
+        (src / "dist" / wheel.name).symlink_to(wheel)
         env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "VIRTUAL_ENV", "PYTHONHOME")}
-        env["PATH"] = f"{venv / 'bin'}{os.pathsep}{env.get('PATH', '')}"
+        # pip's download cache stays the user's own (~/.cache/pip), not the temporary HOME's
+        env.setdefault("PIP_CACHE_DIR", str(Path.home() / ".cache" / "pip"))
         env["PYTHONUNBUFFERED"] = "1"
+        # the README's lines as written (the `python3` on PATH, `~` = the temporary HOME)
+        script = "set -e\n" + "\n".join(install_lines()) + "\n"
+        run(["bash", "-c", script], src, {**env, "HOME": str(home)}, timeout=900)
+        venv = home / "pendulab-env"
+        if not (venv / "bin" / "python").is_file():
+            sys.exit(f"check_wheel: FAILED: the README's install lines made no environment at {venv}")
+        env["PATH"] = f"{venv / 'bin'}{os.pathsep}{env.get('PATH', '')}"
         py = str(venv / "bin" / "python")
-        run([sys.executable, "-m", "venv", str(venv)], work, env)
-        run([py, "-m", "pip", "install", "--quiet", f"{wheel}[lab]"], work, env, timeout=900)
         where = run(
             [py, "-c", "import pendulab, pathlib; print(pathlib.Path(pendulab.__file__).parent)"], work, env
         )
         pkg = Path(where.strip())
         if not pkg.is_relative_to(venv):
             sys.exit(f"check_wheel: FAILED: pendulab imported from {pkg}, not from the fresh environment")
-        for rel in ("py.typed", "_core.pyi", "server/static/index.html", "examples/scenarios/rosette.toml"):
+        licence = run([py, "-c", LICENSE_FILES], work, env).split()
+        if not any(Path(f).name == "LICENSE" for f in licence):
+            sys.exit(
+                f"check_wheel: FAILED: the wheel has no LICENSE file (dist-info licence files: {licence})"
+            )
+        data = {p.name for p in (REPO / "examples" / "data").glob("*.csv")}
+        for rel in (
+            "py.typed",
+            "_core.pyi",
+            "server/static/index.html",
+            "examples/scenarios/rosette.toml",
+            *(f"examples/data/{name}" for name in sorted(data)),
+        ):
             if not (pkg / rel).is_file():
                 sys.exit(f"check_wheel: FAILED: the installed package lacks {rel}")
         shipped = {p.stem for p in (REPO / "examples" / "scenarios").glob("*.toml")}
@@ -177,7 +220,10 @@ def main() -> None:
         sweeps = {p.stem for p in (REPO / "examples" / "sweeps").glob("*.toml")}
         if installed != shipped or {p.stem for p in (pkg / "examples" / "sweeps").glob("*.toml")} != sweeps:
             sys.exit(f"check_wheel: FAILED: the wheel's examples {sorted(installed)} != {sorted(shipped)}")
-        say(f"ok: package data ({len(installed)} scenarios, {len(sweeps)} sweeps, lab page, py.typed, stubs)")
+        say(
+            f"ok: package data ({len(installed)} scenarios, {len(sweeps)} sweeps, {len(data)} data sets, "
+            "lab page, py.typed, stubs, LICENSE)"
+        )
         (work / "quickstart.py").write_text(quickstart(), encoding="utf-8")
         run([py, "quickstart.py"], work, env)
         listing = run([str(venv / "bin" / "pendulab"), "scenarios"], work, env)
