@@ -1,0 +1,288 @@
+"""Every code block of README.md and docs/*.md runs as written (issue 31: a new user can follow any page
+to the letter). Blocks are taken from the text, nothing is added to them:
+
+- ``python`` blocks: the blocks of one page run in order, in one fresh namespace (names defined earlier
+  on the page stay defined, as for a reader going down the page; nothing else is set up), in a child
+  process whose working folder is a temporary folder with ``examples`` linked to the checkout's (the
+  pages are written for the top of the checkout). A block that is a script (``if __name__ ==
+  "__main__":``) runs as its own file. Matplotlib draws off screen (``MPLBACKEND=Agg``).
+- shell blocks (```` ```sh ````, ```` ```console ````, or untagged with a first line that is a command):
+  each command runs in bash there, with ``pendulab`` and ``python`` of this environment first on PATH.
+  In a transcript (lines ``$ command`` followed by its output) a command whose shown output has
+  lines starting with ``error:`` must fail with exit code 2 and print ``error:``; every other command
+  must succeed.
+  Commands that cannot finish are checked, not run: a synopsis line (placeholders in capitals such as
+  ``FILE.toml``, ``[optional parts]``, ``…``) and ``pendulab serve`` (a server runs until stopped) must
+  name a real command and only options its ``--help`` lists; a ``make TARGET`` line must name a
+  target of the Makefile (``make -n``; building takes minutes and is what CI does anyway).
+- other blocks (output, TOML, file trees) are text.
+
+A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; :data:`ALLOWED_SKIPS` keeps that
+list short and explicit. The README's wheel-install block (``<!-- wheel-install … -->``) is run by
+tools/check_wheel.py (``make test-wheel``), its sweep script by test_readme.py.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import re
+import shlex
+import subprocess
+import sys
+import warnings
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+import pytest
+from conftest import REPO
+
+PAGES = [REPO / "README.md", *sorted((REPO / "docs").glob("*.md"))]
+COMMANDS = ("pendulab", "make", "python", "python3", "pip", ".", "source", "echo", "cd")
+# Blocks that are not run, by page: (first line of the block, reason). Keep this short.
+ALLOWED_SKIPS = {
+    "README.md": {"make wheel": "run by tools/check_wheel.py (make test-wheel) against the built wheel"},
+}
+TIMEOUT = 300.0  # s, one page's python blocks or one shell command
+
+
+@dataclass(frozen=True)
+class Block:
+    page: str
+    line: int  # 1-based line of the opening fence
+    lang: str
+    text: str
+    marker: str  # the HTML comment just before the block, if any
+
+    @property
+    def where(self) -> str:
+        return f"{self.page}:{self.line}"
+
+
+def blocks(path: Path) -> list[Block]:
+    lines = path.read_text(encoding="utf-8").split("\n")
+    out, i = [], 0
+    while i < len(lines):
+        m = re.match(r"^```(\w*)\s*$", lines[i])
+        if not m:
+            i += 1
+            continue
+        j = i + 1
+        while not lines[j].startswith("```"):
+            j += 1
+        k = i - 1
+        while k >= 0 and not lines[k].strip():
+            k -= 1
+        marker = lines[k].strip() if k >= 0 and lines[k].strip().startswith("<!--") else ""
+        out.append(Block(path.name, i + 1, m.group(1), "\n".join(lines[i + 1 : j]), marker))
+        i = j + 1
+    return out
+
+
+def kind(b: Block) -> str:
+    """python, shell or text."""
+    if b.lang == "python":
+        return "python"
+    if b.lang in ("sh", "bash", "console", "shell"):
+        return "shell"
+    if b.lang:
+        return "text"
+    first = next((ln for ln in b.text.splitlines() if ln.strip()), "")
+    word = first.removeprefix("$ ").split(" ")[0]
+    return "shell" if word in COMMANDS else "text"
+
+
+def skipped(b: Block) -> str | None:
+    """The reason a block is not run here, or None."""
+    if "wheel-install" in b.marker:
+        return "run by tools/check_wheel.py"
+    m = re.match(r"<!--\s*docs-test:\s*skip\s*\((.+)\)\s*-->", b.marker)
+    return m.group(1) if m else None
+
+
+ALL = [b for page in PAGES for b in blocks(page)]
+
+
+def test_skip_markers_are_few_and_listed() -> None:
+    found = {(b.page, b.text.splitlines()[0].split("  #")[0].strip()) for b in ALL if skipped(b)}
+    allowed = {(page, first) for page, entries in ALLOWED_SKIPS.items() for first in entries}
+    assert found == allowed, f"skipped blocks {sorted(found)} != the list ALLOWED_SKIPS {sorted(allowed)}"
+
+
+# ------------------------------------------------------------------------------------------ python
+
+RUNNER = r"""
+import json, sys, traceback
+blocks = json.load(open(sys.argv[1], encoding="utf-8"))
+ns = {"__name__": "__docs__"}
+for where, code in blocks:
+    try:
+        exec(compile(code, where, "exec"), ns)
+    except BaseException:
+        traceback.print_exc()
+        sys.exit(f"FAILED: the block at {where}")
+    print("ok", where, flush=True)
+"""
+
+
+def _env() -> dict[str, str]:
+    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH",)}
+    env["PATH"] = f"{Path(sys.executable).parent}{os.pathsep}{env.get('PATH', '')}"
+    env["MPLBACKEND"] = "Agg"
+    env["PYTHONPATH"] = os.pathsep.join(p for p in sys.path if p)
+    return env
+
+
+@pytest.fixture
+def work(tmp_path: Path) -> Path:
+    (tmp_path / "examples").symlink_to(REPO / "examples")
+    return tmp_path
+
+
+PY_PAGES = sorted({b.page for b in ALL if kind(b) == "python" and not skipped(b)})
+
+
+@pytest.mark.parametrize("page", PY_PAGES)
+def test_python_blocks_run_as_written(page: str, work: Path) -> None:
+    todo = [b for b in ALL if b.page == page and kind(b) == "python" and not skipped(b)]
+    scripts = [b for b in todo if re.search(r"""if __name__ == ["']__main__["']:""", b.text)]
+    inline = [b for b in todo if b not in scripts]
+    if scripts and page != "README.md":  # README.md's script: test_readme.py runs it, with its output checked
+        for b in scripts:
+            (work / "script.py").write_text(b.text, encoding="utf-8")
+            _check([sys.executable, "script.py"], work, b.where)
+    (work / "blocks.json").write_text(json.dumps([(b.where, b.text) for b in inline]), encoding="utf-8")
+    _check([sys.executable, "-c", RUNNER, "blocks.json"], work, page)
+
+
+def _check(cmd: list[str], cwd: Path, where: str) -> subprocess.CompletedProcess[str]:
+    p = subprocess.run(cmd, cwd=cwd, env=_env(), capture_output=True, text=True, timeout=TIMEOUT)
+    assert p.returncode == 0, f"{where}:\n{p.stdout[-2000:]}\n{p.stderr[-4000:]}"
+    return p
+
+
+# ------------------------------------------------------------------------------------------- shell
+
+
+@dataclass(frozen=True)
+class Command:
+    text: str
+    expect_error: bool
+
+
+def commands(b: Block) -> list[Command]:
+    lines = b.text.splitlines()
+    out: list[Command] = []
+    if any(ln.startswith("$ ") for ln in lines):  # a transcript: commands and their output
+        for i, ln in enumerate(lines):
+            if ln.startswith("$ "):
+                shown = []
+                for x in lines[i + 1 :]:
+                    if x.startswith("$ "):
+                        break
+                    shown.append(x)
+                out.append(Command(ln[2:].strip(), any(x.startswith("error:") for x in shown)))
+        return out
+    for ln in lines:
+        if not ln.strip():
+            continue
+        if ln[0].isspace() and out:  # the continuation of a long synopsis
+            out[-1] = Command(out[-1].text + " " + ln.strip(), False)
+        else:
+            out.append(Command(re.sub(r"\s+#\s.*$", "", ln).strip(), False))
+    return out
+
+
+def is_synopsis(cmd: str) -> bool:
+    words = shlex.split(cmd, comments=True)
+    if words[:2] == ["pendulab", "serve"]:
+        return True
+    return any(
+        w.startswith("[") or w in ("...", "…") or re.fullmatch(r"[A-Z][A-Z_]*(\.\w+)?(:[A-Z_:]+)?", w)
+        for w in words
+    )
+
+
+@cache
+def _help(sub: str) -> str:
+    from typer.testing import CliRunner
+
+    from pendulab import cli
+
+    result = CliRunner().invoke(cli.app, [sub, "--help"])
+    assert result.exit_code == 0, f"pendulab {sub} --help failed: {result.output}"
+    return result.stdout
+
+
+def check_synopsis(cmd: str, where: str) -> None:
+    words = shlex.split(cmd, comments=True)
+    assert words[0] == "pendulab", f"{where}: a synopsis of something other than pendulab: {cmd!r}"
+    sub = words[1]
+    if sub.startswith("-"):
+        return
+    text = _help(sub)
+    for w in words[2:]:
+        for opt in re.findall(r"(?<![\w-])(--?[a-zA-Z][\w-]*)", w):
+            assert re.search(rf"(?<![\w-]){re.escape(opt)}(?![\w-])", text), (
+                f"{where}: `{cmd}`: pendulab {sub} has no option {opt}"
+            )
+
+
+SHELL = [b for b in ALL if kind(b) == "shell" and not skipped(b)]
+
+
+@pytest.mark.parametrize("block", SHELL, ids=[b.where for b in SHELL])
+def test_shell_blocks_run_as_written(block: Block, work: Path) -> None:
+    for c in commands(block):
+        words = shlex.split(c.text, comments=True)
+        if words[0] == "make":
+            target = words[1] if len(words) > 1 else ""
+            p = subprocess.run(
+                ["make", "-n", *words[1:]], cwd=REPO, capture_output=True, text=True, timeout=60
+            )
+            assert p.returncode == 0, f"{block.where}: make has no target {target!r}: {p.stderr}"
+            continue
+        if words[0] in (".", "source"):
+            assert (REPO / words[1]).exists() or words[1].startswith("~"), f"{block.where}: no {words[1]}"
+            continue
+        if is_synopsis(c.text):
+            check_synopsis(c.text, block.where)
+            continue
+        code, stderr = _run(c.text, work)
+        if c.expect_error:
+            assert code == 2 and "error:" in stderr, (
+                f"{block.where}: `{c.text}` should fail (exit 2), got {code}:\n{stderr}"
+            )
+        else:
+            assert code == 0, f"{block.where}: `{c.text}` failed ({code}):\n{stderr[-3000:]}"
+
+
+_SHELL_SYNTAX = re.compile(r"[|&;<>*?$`~(){}]")
+
+
+def _run(text: str, work: Path) -> tuple[int, str]:
+    """Exit code and stderr of one command run in ``work``: a plain ``pendulab …`` line in this process
+    (typer's CliRunner: the same app as the ``pendulab`` script, without a second of start-up per line),
+    anything with shell syntax (pipes, globs, variables) in bash."""
+    words = shlex.split(text, comments=True)
+    if words[0] == "pendulab" and not _SHELL_SYNTAX.search(text):
+        from typer.testing import CliRunner
+
+        from pendulab import cli
+
+        cwd = Path.cwd()
+        os.chdir(work)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("default")  # as for a user: printed, not raised (pytest's "error")
+                result = CliRunner().invoke(cli.app, words[1:])
+        finally:
+            os.chdir(cwd)
+        if result.exception is not None and not isinstance(result.exception, SystemExit):
+            raise result.exception
+        return result.exit_code, result.stderr
+    p = subprocess.run(
+        ["bash", "-c", text], cwd=work, env=_env(), capture_output=True, text=True, timeout=TIMEOUT
+    )
+    return p.returncode, p.stderr
