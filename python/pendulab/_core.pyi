@@ -339,6 +339,19 @@ def crane_simulate(
     atol: float,
     max_steps: int,
 ) -> dict[str, Any]: ...
+def crane_residual_grid(
+    moves: list[tuple[tuple[FloatArray, FloatArray, FloatArray, FloatArray], float]],
+    ropes: list[float],
+    ratios: list[float],
+    hook_mass: float,
+    rigging: float,
+    g: float,
+    settle: float,
+    dt: float,
+    rtol: float,
+    atol: float,
+    max_steps: int,
+) -> FloatArray: ...
 
 # --- python/rust/force.rs: a user force given as a Python callable (the slow path) ---
 

@@ -5,7 +5,9 @@
 use crate::convert::{to_py, InvalidInputError};
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
-use pendulab_core::crane::{run, Body, CraneSystem, Hermite5, Knot, Tolerances, Wind};
+use pendulab_core::crane::{
+    residual_grid, run, Body, CraneSystem, GridSpec, Hermite5, Knot, Tolerances, Wind,
+};
 use pendulab_core::DVec3;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -109,7 +111,35 @@ pub fn crane_simulate<'py>(
     Ok(d)
 }
 
-/// Registers the function.
+/// The residual sway [m] of hook + payload cranes (`pendulab_core::crane::grid`) for every
+/// (move, rope [m], ratio m₂/m₁): `moves` as (knots, move end [s]); hook mass [kg], rigging [m],
+/// g [m/s²], settle and save interval [s], tolerances. Returns (n_moves·n_ropes·n_ratios,) in that
+/// order. Runs in parallel with the GIL released.
+#[pyfunction]
+#[pyo3(signature = (moves, ropes, ratios, hook_mass, rigging, g, settle, dt, rtol, atol, max_steps))]
+#[allow(clippy::too_many_arguments)]
+pub fn crane_residual_grid<'py>(
+    py: Python<'py>,
+    moves: Vec<(KnotArrays<'py>, f64)>,
+    ropes: Vec<f64>,
+    ratios: Vec<f64>,
+    hook_mass: f64,
+    rigging: f64,
+    g: f64,
+    settle: f64,
+    dt: f64,
+    rtol: f64,
+    atol: f64,
+    max_steps: u64,
+) -> PyResult<Bound<'py, numpy::PyArray1<f64>>> {
+    let paths = moves.iter().map(|(k, end)| Ok((knots("pivot", k)?, *end))).collect::<PyResult<Vec<_>>>()?;
+    let spec = GridSpec { hook_mass, rigging, g, settle, dt, tol: Tolerances { rtol, atol, max_steps } };
+    let out = py.allow_threads(|| residual_grid(&paths, &ropes, &ratios, &spec)).map_err(to_py)?;
+    Ok(out.into_pyarray(py))
+}
+
+/// Registers the functions.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
-    m.add_function(wrap_pyfunction!(crane_simulate, m)?)
+    m.add_function(wrap_pyfunction!(crane_simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(crane_residual_grid, m)?)
 }

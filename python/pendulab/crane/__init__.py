@@ -18,6 +18,7 @@ try:
 except ImportError as exc:  # pragma: no cover - exercised only without SciPy
     raise ImportError("pendulab.crane needs SciPy: pip install 'pendulab[crane]' (or scipy>=1.11)") from exc
 
+from .grid import GridResult, residual_grid
 from .lqr import LQR, LQRRun, lqr
 from .move import Profile, profile
 from .paths import Gantry, Path, Sampled, Tower, move
@@ -31,6 +32,7 @@ __all__ = [
     "Crane",
     "CraneRun",
     "Gantry",
+    "GridResult",
     "Hoist",
     "LQRRun",
     "Path",
@@ -43,6 +45,7 @@ __all__ = [
     "lqr",
     "move",
     "profile",
+    "residual_grid",
     "residual_vibration",
     "rope_range",
     "shaper",

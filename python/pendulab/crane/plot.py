@@ -80,3 +80,23 @@ def plot_top_view(runs: Mapping[str, CraneRun]) -> Any:
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     return fig
+
+
+def plot_grid(result: Any) -> Any:
+    """A :class:`~pendulab.crane.grid.GridResult` as a crane engineer's chart: the residual sway [m]
+    against the rope length [m] for each shaper, the line the median and the band the range over
+    the payload ratios (log scale)."""
+    fig = new_figure(figsize=(7.5, 4.5))
+    ax = fig.add_subplot()
+    for i, label in enumerate(result.labels):
+        s = np.maximum(result.sway[i], 1e-9)
+        line = ax.plot(result.ropes, np.median(s, axis=1), label=label.upper())[0]
+        ax.fill_between(result.ropes, s.min(axis=1), s.max(axis=1), color=line.get_color(), alpha=0.2)
+    ax.set_yscale("log")
+    ax.set_xlabel("rope length [m]")
+    ax.set_ylabel("residual sway of the payload [m]")
+    r = result.ratios
+    ax.set_title(f"{result.sway.size} runs: payload/hook mass ratio {r.min():g} … {r.max():g} (bands)")
+    ax.grid(alpha=0.3, which="both")
+    ax.legend()
+    return fig

@@ -6,16 +6,19 @@
 //! - [`hermite`]: prescribed motions (pivot path, rope length) as piecewise quintic Hermite (T-11.4);
 //! - [`dynamics`]: the equations of motion, tensions, energy and the works of hoist, pivot, wind and
 //!   damping (T-11.5 – T-11.7);
-//! - [`mod@run`]: the integrator.
+//! - [`mod@run`]: the integrator;
+//! - [`grid`]: the residual sway of moves over a grid of rope lengths and payload ratios, in parallel.
 //!
 //! The command shapers, moves and crane kinematics (T-11.1 – T-11.3) are pure functions of time and live
 //! in the Python package (`pendulab.crane`); they reach this module as knots of the prescribed motions.
 
 pub mod dynamics;
+pub mod grid;
 pub mod hermite;
 pub mod run;
 
 pub use dynamics::{Body, CraneSystem, Wind};
+pub use grid::{residual_grid, GridSpec};
 pub use hermite::{Hermite5, Knot};
 pub use run::{run, CraneOutput, Tolerances};
 
@@ -115,5 +118,14 @@ mod tests {
         )
         .unwrap_err();
         assert!(err.to_string().contains("slack"), "{err}");
+    }
+
+    #[test]
+    fn save_times_a_rounding_error_apart_are_both_saved() {
+        let sys = system(false, 0.0);
+        let tol = Tolerances { rtol: 1e-10, atol: 1e-10, max_steps: 100_000 };
+        let out = run(&sys, 0.0, start(&sys, 0.1), &[0.0, 1e-16, 2e-16, 1.0], tol).unwrap();
+        assert_eq!(out.t, vec![0.0, 1e-16, 2e-16, 1.0]);
+        assert_eq!(out.y[0], out.y[2]);
     }
 }
