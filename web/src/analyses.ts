@@ -41,6 +41,17 @@ async function post<T>(path: string, body: unknown, stale: () => boolean = () =>
   }
 }
 
+/** Resolves once no computation of this page is under way or waiting (at most `timeoutMs`): a reload (the
+ *  language switch) then leaves none running on the server, which counts a client's computations across
+ *  its pages and answers 429 beyond 2. */
+export function computationsIdle(timeoutMs: number): Promise<void> {
+  const end = Date.now() + timeoutMs;
+  return new Promise((resolve) => {
+    const check = () => (inFlight === 0 && waiting.length === 0) || Date.now() >= end ? resolve() : setTimeout(check, 20);
+    check();
+  });
+}
+
 /** Reports `e` unless the request was skipped as stale. */
 const unlessStale = (report: (e: unknown) => void) => (e: unknown) => {
   if (!(e instanceof Stale)) report(e);

@@ -7,7 +7,7 @@ import { DataPanel } from './panels/data';
 import { Controls } from './panels/controls';
 import { Plots } from './panels/plots';
 import { Portraits } from './panels/portraits';
-import { Analyses, getJSON } from './analyses';
+import { Analyses, computationsIdle, getJSON } from './analyses';
 import type { Command, ScenarioInfo, Schema, Status, Vec3 } from './protocol';
 import { eventMessage } from './events';
 import { ReducedView } from './scene/reduced';
@@ -97,9 +97,11 @@ async function main(): Promise<void> {
   setLanguage(lang);
   document.documentElement.lang = lang;
   document.title = t('page.title');
+  byId('page-title').textContent = t('page.title');
   byId('units').textContent = t('page.units');
   byId('scene').setAttribute('aria-label', t('page.scene'));
   byId('panel').setAttribute('aria-label', t('page.panel'));
+  byId('panel-title').textContent = t('page.panel');
   const store = new LabStore();
   const message = byId('message');
   let messageTimer: ReturnType<typeof setTimeout> | null = null;
@@ -190,7 +192,7 @@ async function main(): Promise<void> {
       // The page reloads from its URL, which each status updates: wait (≤ 2 s) until the server has
       // handled every command sent, else one just sent — a resume, a fitted scenario — would be lost (the
       // page came back paused, or with the old scenario, and waited for frames that never came).
-      void whenCaughtUp(() => store.status?.commands, () => conn?.sent ?? 0, 2000).then(() => {
+      void Promise.all([whenCaughtUp(() => store.status?.commands, () => conn?.sent ?? 0, 2000), computationsIdle(2000)]).then(() => {
         const q = new URLSearchParams(window.location.search);
         q.set('lang', l);
         window.location.search = q.toString();

@@ -230,6 +230,8 @@ export const DE: Words = {
   'plot.tension': 'Stangenkraft T(t)',
   'plot.time': 'Zeit t [s]',
   'plot.floor': 'float64-Rundung 2,2e-16',
+  'alt.empty': 'noch keine Daten',
+  'alt.summary': '{y} von {yLo} bis {yHi} gegen {x} von {xLo} bis {xHi}; jetzt {yNow} bei {xNow}',
   'chosen.title': 'Beliebige Größen zeichnen',
   'chosen.xAxis': 'waagerecht',
   'chosen.yAxis': 'senkrecht',

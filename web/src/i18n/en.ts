@@ -228,6 +228,8 @@ export const EN = {
   'plot.tension': 'rod tension T(t)',
   'plot.time': 'time t [s]',
   'plot.floor': 'float64 roundoff 2.2e-16',
+  'alt.empty': 'no data yet',
+  'alt.summary': '{y} from {yLo} to {yHi} against {x} from {xLo} to {xHi}; now {yNow} at {xNow}',
   'chosen.title': 'Plot any variables',
   'chosen.xAxis': 'across',
   'chosen.yAxis': 'up',

@@ -230,6 +230,8 @@ export const FR: Words = {
   'plot.tension': 'tension de la tige T(t)',
   'plot.time': 'temps t [s]',
   'plot.floor': 'arrondi float64 2,2e-16',
+  'alt.empty': 'pas encore de données',
+  'alt.summary': '{y} de {yLo} à {yHi} selon {x} de {xLo} à {xHi} ; maintenant {yNow} à {xNow}',
   'chosen.title': 'Tracer des grandeurs au choix',
   'chosen.xAxis': 'en abscisse',
   'chosen.yAxis': 'en ordonnée',

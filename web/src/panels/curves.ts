@@ -3,6 +3,7 @@
 // current energy as a horizontal line and the current θ as a vertical one. The ranges are pure functions
 // (unit-tested); the drawing only maps data to pixels. Each layer with a label gets a legend entry.
 import { safeRange } from './ranges';
+import { chartSummary, setAltText } from './alttext';
 
 export interface Range {
   lo: number;
@@ -55,7 +56,7 @@ export class CurvePlot {
 
   constructor(
     container: HTMLElement,
-    title: string,
+    private title: string,
     public xLabel: string,
     public yLabel: string,
     private readonly height = 150,
@@ -68,6 +69,7 @@ export class CurvePlot {
     wrap.appendChild(h);
     this.canvas = document.createElement('canvas');
     this.canvas.setAttribute('aria-label', title);
+    this.canvas.setAttribute('role', 'img');
     wrap.appendChild(this.canvas);
     container.appendChild(wrap);
     this.ctx = this.canvas.getContext('2d');
@@ -81,6 +83,8 @@ export class CurvePlot {
     yr: Range,
     marks: { hLine?: number | null; vLine?: number | null; dot?: [number, number] | null } = {},
   ): void {
+    const first = layers[0];
+    setAltText(this.canvas, chartSummary(this.title, this.xLabel, this.yLabel, first?.x ?? [], first?.y ?? []));
     const ctx = this.ctx;
     if (ctx === null) return;
     const ratio = Math.min(window.devicePixelRatio || 1, 2);

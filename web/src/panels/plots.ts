@@ -12,6 +12,7 @@ import { Visibility } from './visible';
 import { FLOAT64_EPS, logRange, relativeDrift, safeRange } from './ranges';
 import { t } from '../i18n';
 import type { Key } from '../i18n';
+import { chartSummary, setAltText } from './alttext';
 
 /** What a drift is divided by: E_s = max(|E₀|, m·max(|g|, 1)·l) [J], J_s = max(|J₃(0)|, m l √(max(|g|, 1) l))
  *  [kg m²/s] (the natural units of the pendulum, so a zero E₀ or J₃(0) does not divide by 0). */
@@ -175,7 +176,9 @@ export class Plots {
       Object.assign(shown, { h, n, t: tLast, ev: events });
       const ys = h[spec.key];
       const drift = spec.drift;
-      chart.setData([h.t, drift ? ys.map((d) => relativeDrift(d, scales[drift])) : ys]);
+      const y = drift ? ys.map((d) => relativeDrift(d, scales[drift])) : ys;
+      chart.setData([h.t, y]);
+      setAltText(chart.root, chartSummary(spec.axis, t('plot.time'), spec.axis, h.t, y));
     });
   }
 }

@@ -5,6 +5,7 @@
 // recording, the anaglyph's frame rate and the second language. Waits are generous (a loaded 2-core
 // machine), but every check compares against a bound and can fail.
 import { readFileSync } from 'node:fs';
+import { createRequire } from 'node:module';
 
 const overlaps = (a, b) => a.left < b.right - 0.5 && b.left < a.right - 0.5 && a.top < b.bottom - 0.5 && b.top < a.bottom - 0.5;
 const boxes = (page) =>
@@ -592,4 +593,36 @@ export async function checkLanguage(page, { check, WAIT }) {
   const en = await page.evaluate(() => document.querySelector('[data-action="reset"]').textContent);
   check(de.lang === 'de' && de.reset === 'Zurück' && /Stoppuhr/.test(de.title) && en === 'Reset', `a second language (German) switches and back (${de.reset}, ${de.title})`);
   check(rowDe !== undefined && rowDe[2] === 'm', `the error estimate in German: ${rowDe?.join(' ')}`);
+}
+
+/** axe-core (issue 28): zero violations of its default rules on the lab as a projector and a phone show it,
+ *  with the help dialog open, and with the second pendulum's panel in use. */
+export async function checkAxe(page, { check, WAIT }) {
+  const source = readFileSync(createRequire(import.meta.url).resolve('axe-core/axe.min.js'), 'utf8');
+  await page.evaluate(source); // evaluated by the test driver, as the page's CSP forbids inline scripts
+  const run = () =>
+    page.evaluate(async () =>
+      (await window.axe.run(document)).violations.map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(', ')}`),
+    );
+  const found = [];
+  for (const [w, h] of [
+    [1280, 800],
+    [390, 844],
+  ]) {
+    await page.setViewportSize({ width: w, height: h });
+    await page.waitForTimeout(400);
+    found.push(...(await run()).map((v) => `${w}×${h} ${v}`));
+  }
+  await page.setViewportSize({ width: 1280, height: 800 });
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('?');
+  await page.waitForFunction(() => !document.getElementById('help').hidden, null, { timeout: WAIT });
+  found.push(...(await run()).map((v) => `help open ${v}`));
+  await page.keyboard.press('Escape');
+  await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+  await page.locator('[data-plot="chosen"]').scrollIntoViewIfNeeded();
+  await page.waitForFunction(() => /\d at \d/.test(document.querySelector('[data-plot="chosen"]').getAttribute('aria-label')), null, { timeout: WAIT });
+  const alt = await page.evaluate(() => [...document.querySelectorAll('.plot.curve canvas, .uplot')].map((c) => [c.getAttribute('role'), c.getAttribute('aria-label')]));
+  check(alt.length >= 4 && alt.every(([r, a]) => r === 'img' && a), `every chart (${alt.length}) carries a text alternative, e.g. "${alt.find(([, a]) => /\d at \d/.test(a))?.[1]}"`);
+  check(found.length === 0, `axe-core ${await page.evaluate(() => window.axe.version)}: no violations${found.length ? ': ' + found.join('; ') : ''}`);
 }

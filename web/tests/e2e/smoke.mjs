@@ -13,7 +13,7 @@ import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
-import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch } from './classroom.mjs';
+import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch, checkAxe } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
 const ONLY = (process.env.E2E_ONLY ?? '').split(',').filter(Boolean);
@@ -203,6 +203,7 @@ try {
     ['recording and stereo', checkRecordingAndStereo],
     ['measured data', checkFitData],
     ['language', checkLanguage],
+    ['axe accessibility', checkAxe],
   ]) {
     if (ONLY.length > 0 && !ONLY.some((w) => name.includes(w))) continue;
     const t0 = Date.now();

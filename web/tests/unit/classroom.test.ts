@@ -12,6 +12,7 @@ import { EN } from '../../src/i18n/en';
 import { frameAt, positionAt, separation, sideBySide, tiltedStart, twinCommands } from '../../src/twin';
 import { frictionCommand, GRAVITY_PRESETS, mysteryGravity, startCommand, swingTheoryFor } from '../../src/panels/tools';
 import { describeMotion } from '../../src/describe';
+import { chartSummary } from '../../src/panels/alttext';
 import { viewKey } from '../../src/keyboard';
 import { framingDistance } from '../../src/scene/scene';
 import { rulerStep } from '../../src/scene/instruments';
@@ -404,5 +405,10 @@ describe('inclusion (issue 28)', () => {
       expect(g).toBeLessThanOrEqual(20.6);
       for (const [, p] of GRAVITY_PRESETS) expect(Math.abs(g - p)).toBeGreaterThanOrEqual(0.29);
     }
+  });
+  it('charts have a text alternative: ranges and the latest point', () => {
+    setLanguage('en');
+    expect(chartSummary('height z(t)', 'time t [s]', 'z [m]', [0, 1, 2], [-1, -0.5, null])).toBe('height z(t): z [m] from -1.00 to -0.500 against time t [s] from 0.00 to 1.00; now — at 2.00');
+    expect(chartSummary('T', 'x', 'y', [], [])).toBe('T: no data yet');
   });
 });
