@@ -171,7 +171,7 @@ def test_one_client_may_hold_only_its_share_of_sessions() -> None:
 
 
 def test_the_room_budget_is_shared_by_clients_then_by_their_sessions() -> None:
-    room = Room(per_client=8, room_budget=0.012)
+    room = Room(per_client=8, room_budget=0.012)  # (the default is 8 ms)
     for _ in range(8):
         assert room.open_session("greedy") is None
     assert room.open_session("greedy") is not None

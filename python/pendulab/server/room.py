@@ -47,9 +47,10 @@ MAX_CONNECTIONS_PER_CLIENT = 24
 """Most TCP connections one client may hold open at once (its lab sessions plus a browser's six
 keep-alive connections per tab, with room); more are closed as soon as they are accepted."""
 
-ROOM_BUDGET = 0.012
-"""Wall-clock seconds of stepping per tick (1/60 s) shared by all the room's sessions: about a third
-of two cores' time, the rest left for sending frames and answering requests."""
+ROOM_BUDGET = 0.008
+"""Wall-clock seconds of stepping per tick (1/60 s ≈ 16.7 ms) shared by all the room's sessions: about a
+quarter of two cores' time, the rest left for the sessions' frames, sending them and answering
+requests (one tick of the whole room must fit in 16.7 ms, :mod:`.ticker`)."""
 
 
 def client_key(scope: dict[str, Any]) -> str:
