@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
+from .display import Row, html_table, number
+
 
 @dataclass(frozen=True)
 class ErrorEstimate:
@@ -36,6 +38,22 @@ class ErrorEstimate:
     how: str
     reference: dict[str, Any] = field(default_factory=dict)
     cost: float = 0.0
+
+    def __repr__(self) -> str:
+        return (
+            f"ErrorEstimate({self.how}, {len(self.position)} samples, max position error "
+            f"{number(np.max(self.position, initial=0.0), 3)} m, max velocity error "
+            f"{number(np.max(self.velocity, initial=0.0), 3)} m/s, cost {number(self.cost, 3)})"
+        )
+
+    def _repr_html_(self) -> str:
+        rows: list[Row] = [
+            ("how", self.how, ""),
+            ("max position error", float(np.max(self.position, initial=0.0)), "m"),
+            ("max velocity error", float(np.max(self.velocity, initial=0.0)), "m/s"),
+            ("work of the reference run(s) / plain run", self.cost, ""),
+        ]
+        return html_table("Estimated global error", rows)
 
     @property
     def max_position(self) -> float:

@@ -10,7 +10,9 @@ A notebook added to docs/tour/ is picked up automatically. Each runs in its own 
 
 from __future__ import annotations
 
+import re
 import time
+import tomllib
 from pathlib import Path
 
 import pytest
@@ -31,9 +33,9 @@ machine does not fail it; they take 7–14 s each on the 2-core reference machin
 load (docs/tour/index.md)."""
 
 
-def test_the_tour_has_its_seven_notebooks():
+def test_the_tour_has_its_notebooks_and_the_readme_counts_them():
     names = [p.name for p in NOTEBOOKS]
-    assert names[:7] == [
+    assert names[:8] == [
         "01_newton_lagrange.ipynb",
         "02_hamiltonian_integrators.ipynb",
         "03_reduction.ipynb",
@@ -41,7 +43,36 @@ def test_the_tour_has_its_seven_notebooks():
         "05_phases.ipynb",
         "06_real_pendulums.ipynb",
         "07_many_trajectories.ipynb",
+        "08_fitting.ipynb",
     ]
+    words = {7: "Seven", 8: "Eight", 9: "Nine", 10: "Ten", 11: "Eleven", 12: "Twelve"}
+    readme = (REPO / "README.md").read_text(encoding="utf-8")
+    assert f"{words[len(names)]} Jupyter notebooks in `docs/tour/`" in readme
+
+
+# third-party modules the notebooks import -> the distribution that brings them
+_DISTRIBUTION = {"matplotlib": "matplotlib", "scipy": "scipy", "distributed": "dask", "IPython": "ipykernel"}
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
+def test_notebook_states_its_extra_and_the_extra_has_what_it_imports(path: Path):
+    nb = nbformat.read(path, as_version=4)
+    top = nb.cells[0]
+    assert top.cell_type == "markdown" and "[tour]" in top.source, f"{path.name}: say the extra at the top"
+    extra = tomllib.loads((REPO / "python" / "pyproject.toml").read_text())["project"][
+        "optional-dependencies"
+    ]
+    tour = {re.split(r"[\[<>=]", req)[0] for req in extra["tour"]}
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        for module in re.findall(r"^\s*(?:from|import)\s+(\w+)", cell.source, flags=re.M):
+            if module in _DISTRIBUTION:
+                assert _DISTRIBUTION[module] in tour, (
+                    f"{path.name} imports {module}: add it to the tour extra"
+                )
+        if ".mp4" in cell.source or ".webm" in cell.source:
+            assert "imageio-ffmpeg" in tour
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])

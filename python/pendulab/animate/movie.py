@@ -13,6 +13,8 @@ removes the temporary file and re-raises: no half-written movie is ever left beh
 
 from __future__ import annotations
 
+import base64
+import html
 import math
 import os
 import time
@@ -66,6 +68,39 @@ class Movie:
     def frames_per_second(self) -> float:
         """Frames rendered and encoded per second of wall time."""
         return self.frames / self.seconds if self.seconds > 0 else float("inf")
+
+    def __repr__(self) -> str:
+        w, h = self.size
+        return (
+            f"Movie({self.path.name}: {self.format}, {self.frames} frames, {self.duration:.3g} s at "
+            f"{self.fps:.3g} frames/s, {w}x{h}, t = {self.t_start:g} .. {self.t_end:.6g} s, "
+            f"{self.bytes / 1e6:.2f} MB)"
+        )
+
+    def _repr_html_(self) -> str:
+        """The movie itself in a notebook: the file embedded as a data URI (a GIF as an image, MP4 and
+        WebM as a looping video with controls), so that it plays in exported and rendered notebooks
+        (the documentation site) with no file beside them; a movie larger than
+        :data:`MAX_EMBED_BYTES` is shown by its description only."""
+        label = html.escape(repr(self))
+        try:
+            data = self.path.read_bytes() if self.bytes <= MAX_EMBED_BYTES else None
+        except OSError:
+            data = None
+        if data is None:
+            return f"<p><code>{label}</code> (not embedded: larger than {MAX_EMBED_BYTES / 1e6:g} MB)</p>"
+        b64 = base64.b64encode(data).decode("ascii")
+        w, h = self.size
+        if self.format == "gif":
+            return f'<img src="data:image/gif;base64,{b64}" width="{w}" height="{h}" alt="{label}">'
+        return (
+            f'<video controls loop autoplay muted playsinline width="{w}" height="{h}" title="{label}">'
+            f'<source src="data:video/{self.format};base64,{b64}" type="video/{self.format}"></video>'
+        )
+
+
+MAX_EMBED_BYTES = 8_000_000
+"""Largest movie file [bytes] that :meth:`Movie._repr_html_` embeds into a notebook."""
 
 
 def _finite(name: str, value: object, unit: str, lower: float = -math.inf, upper: float = math.inf) -> float:

@@ -22,6 +22,7 @@ from typing import Literal
 import numpy as np
 
 from .._core import InvalidInputError
+from ..display import Row, html_table, number
 from ..model import FloatArray
 from ..trajectory import Trajectory
 
@@ -45,6 +46,21 @@ class MeasuredAdvance:
     delta_phi: float
     period_z: float
     reference: str
+
+    def __repr__(self) -> str:
+        return (
+            f"MeasuredAdvance(Δφ = {number(self.delta_phi, 10)} rad per z-period over {len(self.per_period)} "
+            f"periods, T_z = {number(self.period_z, 10)} s, {self.reference})"
+        )
+
+    def _repr_html_(self) -> str:
+        rows: list[Row] = [
+            ("Δφ per z-period (mean)", self.delta_phi, "rad"),
+            ("z-periods measured", len(self.per_period), ""),
+            ("T_z (mean)", self.period_z, "s"),
+            ("events", self.reference, ""),
+        ]
+        return html_table("Measured azimuthal advance", rows)
 
 
 def _hermite(

@@ -28,6 +28,7 @@ import numpy as np
 from .. import io
 from .._core import InvalidInputError, conical_curve, rotation_numbers
 from .._core import monodromy as _monodromy
+from ..display import html_table, number
 from ..model import FloatArray, Pendulum
 from ..validate import MAX_SAMPLES, finite, integer, invalid
 
@@ -96,6 +97,24 @@ class EMMap:
     energy_unit: float
     momentum_unit: float
     critical_values: dict[str, tuple[float, float]] = field(default_factory=dict)
+
+    def _summary(self) -> list[tuple[str, Any, str]]:
+        return [
+            ("grid (n_J3 × n_E)", f"{len(self.J3)} × {len(self.E)}", ""),
+            ("J₃ from … to", f"{number(self.J3[0])} … {number(self.J3[-1])}", "kg m²/s"),
+            ("E from … to", f"{number(self.E[0])} … {number(self.E[-1])}", "J"),
+            ("points in the image", int(np.isfinite(self.W).sum()), ""),
+            ("m|g|l, m l² ω₀", f"{number(self.energy_unit)}, {number(self.momentum_unit)}", "J, kg m²/s"),
+        ]
+
+    def __repr__(self) -> str:
+        return (
+            f"EMMap({len(self.J3)} x {len(self.E)} grid, J3 = {number(self.J3[0])} … {number(self.J3[-1])} "
+            f"kg m²/s, E = {number(self.E[0])} … {number(self.E[-1])} J, pendulum={self.pendulum!r})"
+        )
+
+    def _repr_html_(self) -> str:
+        return html_table("Energy–momentum map (rotation number W)", self._summary())
 
     def monodromy(self, radius: float = 0.5, n: int = 720) -> float:
         """The change of W carried once around the top on the circle (j, ε) = (r sin α, 1 + r cos α),

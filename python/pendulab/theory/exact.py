@@ -68,6 +68,21 @@ class Phases:
     dynamic: float
     geometric: float
 
+    def __repr__(self) -> str:
+        return (
+            f"Phases(total={number(self.total, 10)} rad = dynamic {number(self.dynamic, 10)} "
+            f"+ geometric {number(self.geometric, 10)} rad)"
+        )
+
+    def _repr_html_(self) -> str:
+        rows: list[Row] = [
+            ("Δφ per z-period (T-4.5)", self.total, "rad"),
+            ("dynamic part Δφ_dyn", self.dynamic, "rad"),
+            ("geometric part Δφ_geom", self.geometric, "rad"),
+            ("total − (dynamic + geometric)", number(self.difference, 3), "rad"),
+        ]
+        return html_table("Phases of one z-period (T-5.1)", rows)
+
     @property
     def sum(self) -> float:
         """Δφ_dyn + Δφ_geom [rad]."""
@@ -408,13 +423,19 @@ class ExactSolution:
             span = 10.0
         return np.linspace(0.0, span, points)
 
-    def plot(self, t: Any = None, path: str | os.PathLike[str] | None = None, **kwargs: Any) -> Any:
-        """The overview figure of the exact motion at the times ``t`` [s] (default
+    def plot(self, path: str | os.PathLike[str] | None = None, *, t: Any = None, **kwargs: Any) -> Any:
+        """The overview figure of the exact motion at the times ``t`` [s] (keyword; default
         :meth:`default_times`): the path on the sphere, z(t) between the turning heights z₁, z₂
         (dashed), and the drift of E and J₃ — which for the exact solution stays at rounding level.
-        Saved atomically to ``path`` if given. Needs matplotlib. Returns the Figure."""
+        Saved atomically to ``path`` if given (first argument or keyword, as for every ``plot``
+        method: ``sol.plot("x.png")``). Needs matplotlib. Returns the Figure."""
         from ..plot.overview import plot_overview
 
+        if path is not None and not isinstance(path, str | os.PathLike):
+            raise InvalidInputError(
+                f"plot(path={show(path)}): path must be a file name (.png, .svg, .pdf); "
+                "give the times as t=... [s]"
+            )
         times = self.default_times() if t is None else t
         kwargs.setdefault("turning_heights", self.turning_heights[:2])
         kwargs.setdefault("title", f"exact solution ({self.kind})")

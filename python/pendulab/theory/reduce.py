@@ -35,6 +35,8 @@ from .._core import InvalidInputError
 from .._core import invariants as _invariants
 from .._core import reduced_flow as _reduced_flow
 from .._core import relation_residuals as _relation_residuals
+from ..display import html_table
+from ..display import number as fmt
 from ..model import FloatArray, Pendulum, State, check_pendulum_state
 from ..trajectory import Trajectory
 from ..validate import number
@@ -65,6 +67,31 @@ class Reduced:
     relation_residuals: FloatArray
     casimir: FloatArray
     hamiltonian: FloatArray
+
+    def _summary(self) -> list[tuple[str, float, str]]:
+        h = self.hamiltonian
+        return [
+            ("samples", len(self.t), ""),
+            ("t", float(self.t[-1]) if len(self.t) else 0.0, "s (last)"),
+            ("σ₆ = J₃/(m l²) (first)", float(self.sigma[0, 5]) if len(self.t) else math.nan, "1/s"),
+            ("max |Casimir| (T-3.3)", float(np.max(np.abs(self.casimir), initial=0.0)), "1/s²"),
+            ("max |relations| (T-3.2)", float(np.max(np.abs(self.relation_residuals), initial=0.0)), ""),
+            (
+                "max |H − H₀| (H = E/(m l²))",
+                float(np.max(np.abs(h - h[0]), initial=0.0)) if len(h) else 0.0,
+                "1/s²",
+            ),
+        ]
+
+    def __repr__(self) -> str:
+        n, t_end, j, cas, _, dh = (v for _, v, _ in self._summary())
+        return (
+            f"Reduced({n} samples, t = 0 … {fmt(t_end)} s, σ₆ = {fmt(j)} 1/s, max |C| = {fmt(cas, 3)} 1/s², "
+            f"max |ΔH| = {fmt(dh, 3)} 1/s²)"
+        )
+
+    def _repr_html_(self) -> str:
+        return html_table("Reduced (Holm's σ₁…σ₆ along a trajectory)", self._summary())
 
     @property
     def j(self) -> FloatArray:

@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from .._core import InvalidInputError, slewing_linear
+from ..display import Row, html_table, number, vector
 from ..model import FloatArray, Pendulum, State, models
 
 
@@ -33,6 +34,23 @@ class SlewingSway:
     v_tangential: FloatArray
     static_offset: tuple[float, float]
     frequencies: tuple[float, float]
+
+    def __repr__(self) -> str:
+        return (
+            f"SlewingSway({len(self.t)} samples, t = {number(self.t[0])} … {number(self.t[-1])} s, "
+            f"max |radial| = {number(np.max(np.abs(self.radial), initial=0.0), 4)} m, "
+            f"max |tangential| = {number(np.max(np.abs(self.tangential), initial=0.0), 4)} m)"
+        )
+
+    def _repr_html_(self) -> str:
+        rows: list[Row] = [
+            ("samples", len(self.t), ""),
+            ("max |radial sway|", float(np.max(np.abs(self.radial), initial=0.0)), "m"),
+            ("max |tangential sway|", float(np.max(np.abs(self.tangential), initial=0.0)), "m"),
+            ("static offset (radial, tangential)", vector(self.static_offset), "m"),
+            ("natural frequencies", vector(self.frequencies), "rad/s"),
+        ]
+        return html_table("Slewing crane: the small sway (T-7.2)", rows)
 
 
 def _slewing_params(pendulum: Pendulum) -> dict[str, float]:

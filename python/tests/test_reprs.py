@@ -1,0 +1,95 @@
+"""Every public result object shows itself briefly: a one-line ``repr`` of at most a few hundred
+characters (EMMap's printed a 14 kB array, Reduced's 26 kB) and an HTML table for notebooks
+(``_repr_html_``; Phases and Reduced had none). A movie shows itself as the movie, embedded."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import pendulab as pl
+
+MAX_REPR = 300  # characters
+
+
+def _objects(tmp_path) -> dict[str, object]:
+    p = pl.Pendulum()
+    s0 = p.state_from_angles(theta=np.radians(60), phi_dot=2.0)
+    tr = pl.simulate(p, s0, t_end=2.0, save_every=10, error_estimate=True)
+    sol = pl.exact(p, s0)
+    ensemble = pl.simulate_ensemble(p, pl.states_from_angles(p, theta=np.linspace(0.1, 1, 5)), t_end=1.0)
+    crane = pl.Pendulum(model="slewing", radius=0.02, rate=0.5)
+    return {
+        "Pendulum": p,
+        "State": s0,
+        "Trajectory": tr,
+        "ErrorEstimate": tr.error_estimate,
+        "ExactSolution": sol,
+        "Phases": sol.phases(),
+        "Reduced": pl.reduce(tr),
+        "EMMap": pl.em_map(p, grid=(200, 200)),
+        "MeasuredAdvance": pl.measured_azimuth_advance(pl.simulate(p, s0, t_end=5.0, method="rattle8")),
+        "EnsembleResult": ensemble,
+        "SweepResult": pl.sweep({"theta0": np.linspace(0.1, 1.0, 5)}, "rotation_number", progress=False),
+        "SpringTrajectory": pl.simulate_spring(
+            pl.SwingingSpring.resonant(1.0), [0.1, 0, -1.0], [0, 0.1, 0], t_end=1.0
+        ),
+        "SlewingSway": pl.slewing_sway(crane, np.linspace(0, 1, 500)),
+        "Movie": sol.animate(tmp_path / "m.gif", t=(0.0, 1.0), fps=10, size=(96, 64), progress=False),
+    }
+
+
+@pytest.fixture(scope="module")
+def objects(tmp_path_factory) -> dict[str, object]:
+    return _objects(tmp_path_factory.mktemp("reprs"))
+
+
+NAMES = [
+    "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases", "Reduced", "EMMap",
+    "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway", "Movie",
+]  # fmt: skip
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_short_repr_and_an_html_table(objects, name):
+    obj = objects[name]
+    text = repr(obj)
+    assert len(text) <= MAX_REPR and "\n" not in text and "array(" not in text, text
+    assert text.startswith(name.split(".")[-1] + "("), text
+    html = obj._repr_html_()  # type: ignore[attr-defined]
+    assert (isinstance(html, str) and len(html) < 20_000) or name == "Movie"
+    if name != "Movie":
+        assert "<table" in html
+
+
+def test_a_movie_embeds_itself(objects):
+    html = objects["Movie"]._repr_html_()
+    assert html.startswith('<img src="data:image/gif;base64,R0lGOD')  # "GIF8" in base64
+
+
+def test_every_public_result_class_is_covered():
+    results = {n for n in pl.__all__ if n[0].isupper()} - {
+        "InvalidInputError", "IntegrationError", "ScenarioError", "Pendulum", "State", "Save", "Scenario",
+        "Stepper", "SwingingSpring", "FitResult",  # FitResult: test_fit checks its report and tables
+    }  # fmt: skip
+    assert results <= set(NAMES), sorted(results - set(NAMES))
+
+
+def test_plot_methods_take_the_path_first_or_as_a_keyword(tmp_path, objects):
+    """sol.plot("x.png") failed (its first argument was t); every plot method now has path first."""
+    pytest.importorskip("matplotlib")
+    import inspect
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    for name in ("Trajectory", "ExactSolution"):
+        method = objects[name].plot
+        first = next(iter(inspect.signature(method).parameters))
+        assert first == "path", (name, first)
+    sol = objects["ExactSolution"]
+    sol.plot(tmp_path / "a.png")
+    sol.plot(path=tmp_path / "b.png", t=np.linspace(0.0, 2.0, 50))
+    assert (tmp_path / "a.png").stat().st_size > 0 and (tmp_path / "b.png").stat().st_size > 0
+    with pytest.raises(pl.InvalidInputError, match="give the times as t="):
+        sol.plot(np.linspace(0.0, 1.0, 5))
