@@ -128,4 +128,15 @@ mod tests {
         assert_eq!(out.t, vec![0.0, 1e-16, 2e-16, 1.0]);
         assert_eq!(out.y[0], out.y[2]);
     }
+
+    #[test]
+    fn zero_gravity_at_rest_is_not_slack() {
+        let mut sys = system(true, 0.0);
+        sys.g = 0.0;
+        sys.wind = Wind::CALM;
+        sys.pivot = fixed("pivot", DVec3::ZERO, DVec3::ZERO, 10.0);
+        let tol = Tolerances { rtol: 1e-10, atol: 1e-10, max_steps: 100_000 };
+        let out = run(&sys, 0.0, start(&sys, 0.3), &[0.0, 5.0], tol).unwrap();
+        assert_eq!(out.y[1][0..12], out.y[0][0..12]);
+    }
 }
