@@ -15,7 +15,7 @@ STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
-	bench-peers-portable check-aarch64 wasm test-wasm lab-html bench-wasm
+	bench-peers-portable check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -124,6 +124,30 @@ wasm:
 	cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm
 	@ls -l $(WASM)
 
+# The lab with nothing to install (docs/lab.md): one HTML file with the engine (.wasm, base64), its Web
+# Worker (a Blob URL), the schema and example scenarios (tools/lab_snapshot.py: the server's answers),
+# scripts and styles inlined; opens from file:// with no network. At most 3 MB.
+LAB_HTML := dist/pendulab-lab.html
+lab-html: build wasm web/node_modules/.package-lock.json
+	mkdir -p target dist
+	$(PY) tools/lab_snapshot.py target/lab-snapshot.json
+	cd web && PENDULAB_WASM=../$(WASM) PENDULAB_LAB_SNAPSHOT=../target/lab-snapshot.json LAB_OUT_DIR=../target/lab-html \
+		node_modules/.bin/vite build -c vite.lab.config.mjs --logLevel warn
+	cp target/lab-html/index.html $(LAB_HTML).tmp && mv $(LAB_HTML).tmp $(LAB_HTML)
+	@size=$$(stat -c %s $(LAB_HTML)); echo "$(LAB_HTML): $$size bytes"; \
+		if [ "$$size" -gt 3145728 ]; then echo "error: $(LAB_HTML) is $$size bytes, over the 3 MB budget" >&2; exit 1; fi
+
+# The one-file lab end to end: opened from file:// in headless chromium with every network request
+# refused (web/tests/e2e/lab_file.mjs; docs/lab.md). Screenshot: web/test-results/lab-file.png.
+test-lab-html: lab-html
+	cd web && CHROMIUM=$${CHROMIUM:-$$(command -v chromium || command -v chromium-browser)} \
+		node tests/e2e/lab_file.mjs $(CURDIR)/$(LAB_HTML)
+
+# RATTLE steps/s of the engine in node beside the native build (docs/performance.md; say the load).
+bench-wasm: wasm
+	cargo build --release -p pendulab-wasm --example trajectory
+	node bench/wasm_steps.mjs $(WASM) target/release/examples/trajectory
+
 # The engine's tests: natively (cargo test), then the .wasm in node against the native build's
 # trajectories of every lab model and method (bit for bit, or 1e-12 l where libm differs).
 test-wasm: wasm
@@ -145,15 +169,15 @@ test-tour: build
 # The guided tour's notebooks are run while the site is built (DOCS_EXECUTE=false: rendered without
 # outputs); `make test` runs them once, in test-python (test_tour.py), and builds the site without.
 DOCS_EXECUTE ?= true
-docs: build $(VENV)/.docs-deps
+docs: build $(VENV)/.docs-deps lab-html
 	rm -rf target/docs-gallery target/docs-notebooks
 	PENDULAB_DOCS_EXECUTE=$(DOCS_EXECUTE) $(VENV)/bin/mkdocs build --strict --clean
 
-docs-serve: build $(VENV)/.docs-deps
+docs-serve: build $(VENV)/.docs-deps lab-html
 	$(VENV)/bin/mkdocs serve --strict -a 127.0.0.1:8001
 
 test: DOCS_EXECUTE := false
-test: lint test-rust test-wasm test-python test-web test-e2e docs test-wheel
+test: lint test-rust test-wasm test-python test-web test-e2e test-lab-html docs test-wheel
 
 # Hostile input, long (docs/limits.md, "Fuzzing"): FUZZ_CASES generated inputs per entry point of the
 # Python API (hypothesis) and of the Rust core (proptest), and the whole corpus of FUZZ_FILES mutated

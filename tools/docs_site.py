@@ -16,6 +16,8 @@
   by mkdocs-jupyter) are added to the navigation in name order, each titled by its first heading; the
   files that running them writes into ``docs/tour/`` (movies) are removed after the build. MathJax is
   copied into the site from the ``jupyter-server-mathjax`` package, so that formulas render offline.
+- **The lab.** ``dist/pendulab-lab.html`` (``make lab-html``, which ``make docs`` runs first) is copied
+  to ``site/lab/index.html``: the whole lab in the site, its physics in the page (docs/lab.md).
 - **Checks after the build** (each failure fails the build): the API page has an anchor for every
   name of ``pendulab.__all__``, and no page loads a script, stylesheet or font from the network (the
   site must be readable offline from ``site/index.html``).
@@ -49,6 +51,7 @@ GALLERY_TIMEOUT = 120.0  # s per script
 MEDIA = {".png": "image", ".svg": "image", ".gif": "image", ".mp4": "video", ".webm": "video"}
 TOUR_GLOB = "tour/*.ipynb"
 CLI_MARKER = "<!-- cli-reference -->"
+LAB_HTML = ROOT / "dist" / "pendulab-lab.html"
 
 # Sphinx roles in docstrings (``:class:`pendulab.X```), which Markdown renders as ``:class:<code>…``.
 _ROLE = re.compile(r":(?:class|func|meth|mod|attr|data|exc|obj|ref):(<code>)~?")
@@ -234,8 +237,17 @@ def on_post_build(config: Any) -> None:
         made.unlink()
     if any(docs.glob(TOUR_GLOB)):
         _copy_mathjax(site / "assets" / "mathjax")
+    _copy_lab(site / "lab")
     _check_api_coverage(site / "reference" / "api.html")
     _check_offline(site)
+
+
+def _copy_lab(target: Path) -> None:
+    """The one-file lab at ``site/lab/index.html`` (``make lab-html`` builds it)."""
+    if not LAB_HTML.is_file():
+        raise PluginError(f"{LAB_HTML.relative_to(ROOT)} is missing: run 'make lab-html' (make docs does)")
+    target.mkdir(parents=True, exist_ok=True)
+    shutil.copy2(LAB_HTML, target / "index.html")
 
 
 def _copy_mathjax(target: Path) -> None:

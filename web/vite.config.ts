@@ -5,6 +5,8 @@ import { defineConfig } from 'vite';
 
 export default defineConfig({
   base: './',
+  // the one-file lab's bundle (vite.lab.config.ts, docs/lab.md); none in the server's page
+  define: { __PENDULAB_LAB__: 'null' },
   build: {
     outDir: 'dist',
     emptyOutDir: true,

@@ -1,7 +1,10 @@
-// The WebSocket to `pendulab serve` (/ws): binary frames and JSON notices in, JSON commands out.
+// The WebSocket to `pendulab serve` (/ws), or the in-page engine with the same messages (engine/, docs/lab.md):
+// binary frames and JSON notices in, JSON commands out.
 // Reconnects with back-off when the server goes away; commands sent while closed are dropped.
 import type { Command, Frame, Notice } from './protocol';
 import { decodeFrames, parseNotice, ProtocolError } from './protocol';
+import type { SocketLike } from './engine';
+import { openSocket } from './engine';
 
 export interface ConnectionHandlers {
   onFrames(frames: Frame[]): void;
@@ -37,7 +40,7 @@ export function whenCaughtUp(handled: () => number | undefined, sent: () => numb
 export class Connection {
   /** Commands sent on the current socket (a new socket, a new server session: counted from 0). */
   sent = 0;
-  private ws: WebSocket | null = null;
+  private ws: SocketLike | null = null;
   private retryMs = 500;
   private closedByUs = false;
 
@@ -49,7 +52,7 @@ export class Connection {
   }
 
   private open(): void {
-    const ws = new WebSocket(this.url);
+    const ws = openSocket(this.url); // the server's WebSocket, or the in-page engine (engine/)
     ws.binaryType = 'arraybuffer';
     ws.onopen = () => {
       this.retryMs = 500;
@@ -77,7 +80,7 @@ export class Connection {
   }
 
   get isOpen(): boolean {
-    return this.ws !== null && this.ws.readyState === WebSocket.OPEN;
+    return this.ws !== null && this.ws.readyState === 1; // WebSocket.OPEN
   }
 
   send(cmd: Command): boolean {

@@ -39,6 +39,8 @@ import { energySplit } from './measure';
 import { FitDataPanel } from './panels/fitdata';
 import { loadCommands } from './fitdata';
 import type { EnergySplit } from './measure';
+import type { EngineKind } from './engine';
+import { installEngine } from './engine';
 
 declare global {
   interface Window {
@@ -69,6 +71,8 @@ declare global {
       plotScales: () => { key: string; distr: number; min: number | null; max: number | null }[];
       /** The number of points of a fitted data file's measured path drawn in the scene (0: none). */
       measuredPoints: () => number;
+      /** Where the physics runs: "wasm" (in this page, docs/lab.md) or "server" (`pendulab serve`). */
+      engine: () => EngineKind;
     };
   }
 }
@@ -89,6 +93,7 @@ function download(name: string, href: string): void {
 }
 
 async function main(): Promise<void> {
+  const engine = await installEngine(); // the one-file lab: the core in a Web Worker (docs/lab.md)
   const lang = chooseLanguage(
     new URLSearchParams(window.location.search).get('lang'),
     window.localStorage?.getItem('pendulab.lang') ?? null,
@@ -448,6 +453,7 @@ async function main(): Promise<void> {
     lastVideo: () => lastVideo,
     plotScales: () => plots.scales(),
     measuredPoints: () => scene.measuredPoints(),
+    engine: () => engine,
   };
   let lastWall = performance.now();
   // the scene follows every frame; the panels (numbers, plots, portraits) at 10 Hz, which reads as live

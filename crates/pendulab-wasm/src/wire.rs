@@ -266,7 +266,7 @@ pub fn parse_command(
 }
 
 /// A setup from one entry of `GET /api/scenarios` (name, title, params, model, model_params, start,
-/// method, dt, t0); rtol, atol take their defaults.
+/// method, dt, t0, and the one-file lab's rtol, atol: their defaults when absent).
 pub fn setup_from(d: &Value) -> Result<Setup, String> {
     let name = d["name"].as_str().unwrap_or("?");
     let bad = |what: &str| format!("scenario {name:?}: {what}");
@@ -305,8 +305,8 @@ pub fn setup_from(d: &Value) -> Result<Setup, String> {
         state,
         method,
         dt: num(d, "dt")?,
-        rtol: DEFAULT_RTOL,
-        atol: DEFAULT_ATOL,
+        rtol: d["rtol"].as_f64().unwrap_or(DEFAULT_RTOL),
+        atol: d["atol"].as_f64().unwrap_or(DEFAULT_ATOL),
         t0: num(d, "t0").unwrap_or(0.0),
     })
 }

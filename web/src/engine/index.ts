@@ -1,0 +1,59 @@
+// Which engine runs the physics (docs/lab.md): the server's (`pendulab serve`, a WebSocket) or the page's
+// own — the Rust core as WebAssembly in a Web Worker, in the one-file lab (`make lab-html`), which carries
+// the .wasm, the schema and the example scenarios in `__PENDULAB_LAB__` (a Vite define; null in the
+// server's bundle, so none of the engine's code is in it). Both speak the same commands and send the
+// same frames and notices; connection.ts opens whichever `openSocket` gives.
+
+/** What the one-file lab carries: the engine (base64 .wasm), GET /api/schema's and /api/scenarios'
+ *  answers as the server gave them when the file was built, and the scenario to start with. */
+export interface LabBundle {
+  wasm: string;
+  schema: unknown;
+  scenarios: unknown[];
+  scenario: string | null;
+}
+
+declare const __PENDULAB_LAB__: LabBundle | null;
+
+export type EngineKind = 'wasm' | 'server';
+
+/** The WebSocket members connection.ts uses; the in-page engine's socket has them too. */
+export interface SocketLike {
+  binaryType: BinaryType;
+  readonly readyState: number;
+  onopen: ((ev: Event) => unknown) | null;
+  onmessage: ((ev: MessageEvent) => unknown) | null;
+  onclose: ((ev: CloseEvent) => unknown) | null;
+  send(data: string): void;
+  close(): void;
+}
+
+let factory: ((url: string) => SocketLike) | null = null;
+
+/** The bundle of the one-file lab, or null (the server's page). */
+export function labBundle(): LabBundle | null {
+  return typeof __PENDULAB_LAB__ !== 'undefined' ? __PENDULAB_LAB__ : null;
+}
+
+/** "wasm" when the physics runs in this page, "server" when `pendulab serve` computes it. */
+export function engineKind(): EngineKind {
+  return labBundle() !== null ? 'wasm' : 'server';
+}
+
+/** Prepares the in-page engine when this page carries one (a no-op for the server's page): sockets
+ *  become Web Workers running the core, and the page's REST requests are answered in the page. */
+export async function installEngine(): Promise<EngineKind> {
+  const lab = labBundle();
+  if (lab === null) return 'server';
+  const { EngineSocket } = await import('./socket');
+  const { installApi } = await import('./api');
+  const wasm = Uint8Array.from(atob(lab.wasm), (c) => c.charCodeAt(0));
+  factory = () => new EngineSocket(wasm, lab);
+  installApi(lab);
+  return 'wasm';
+}
+
+/** A socket to the engine: the WebSocket at `url`, or the in-page engine once installed. */
+export function openSocket(url: string): SocketLike {
+  return factory !== null ? factory(url) : new WebSocket(url);
+}

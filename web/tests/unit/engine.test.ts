@@ -1,0 +1,60 @@
+// The in-page engine's transport without a browser (docs/lab.md): the packed answers of the WebAssembly
+// engine unpacked into the WebSocket's messages, and the page's REST requests answered in the page.
+import { describe, expect, it } from 'vitest';
+import { KIND_FRAMES, KIND_JSON, unpack } from '../../src/engine/wasm';
+import { answer, needsServer } from '../../src/engine/api';
+import { decodeFrames, encodeFrames, parseNotice, RECORD_BYTES } from '../../src/protocol';
+import type { Frame } from '../../src/protocol';
+
+function pack(parts: [number, Uint8Array][]): Uint8Array {
+  const n = parts.reduce((s, [, b]) => s + 5 + b.length, 0);
+  const out = new Uint8Array(n);
+  const view = new DataView(out.buffer);
+  let i = 0;
+  for (const [kind, bytes] of parts) {
+    out[i] = kind;
+    view.setUint32(i + 1, bytes.length, true);
+    out.set(bytes, i + 5);
+    i += 5 + bytes.length;
+  }
+  return out;
+}
+
+const frame: Frame = {
+  t: 0.25, x: [0.1, 0.2, -0.97], v: [1, 2, 0.6], energy: -9.5, j3: 0.1, tension: 12, power: 0, a: [0, 0, 1],
+  pivot: [0, 0, 0], taut: true, errorX: 1e-9,
+};
+
+describe('unpack', () => {
+  it('gives frames as ArrayBuffers and notices as texts, in order', () => {
+    const frames = new Uint8Array(encodeFrames([frame, { ...frame, t: 0.5 }]));
+    const status = new TextEncoder().encode('{"type":"error","message":"m","command":null}');
+    const got = unpack(pack([[KIND_JSON, status], [KIND_FRAMES, frames]]));
+    expect(got).toHaveLength(2);
+    expect(parseNotice(got[0] as string)).toEqual({ type: 'error', message: 'm', command: null });
+    const buf = got[1] as ArrayBuffer;
+    expect(buf.byteLength).toBe(2 * RECORD_BYTES);
+    expect(decodeFrames(buf)[1]).toEqual({ ...frame, t: 0.5 });
+  });
+  it('gives nothing for an empty answer', () => {
+    expect(unpack(new Uint8Array(0))).toEqual([]);
+  });
+});
+
+describe('answer', () => {
+  const lab = { wasm: '', schema: { tick_hz: 60 }, scenarios: [{ name: 'rosette' }], scenario: 'rosette' };
+  it('answers the schema and the scenarios from the file', async () => {
+    expect(await answer('api/schema', lab)?.json()).toEqual({ tick_hz: 60 });
+    expect(await answer('./api/scenarios', lab)?.json()).toEqual([{ name: 'rosette' }]);
+  });
+  it('says plainly what needs the server', async () => {
+    const r = answer('api/fit', lab);
+    expect(r?.status).toBe(501);
+    expect((await r?.json()).detail).toBe(needsServer('fitting a data file'));
+    expect(needsServer('x')).toMatch(/pendulab serve/);
+  });
+  it('leaves other requests to the network', () => {
+    expect(answer('https://example.org/api/schema', lab)).toBeNull();
+    expect(answer('style.css', lab)).toBeNull();
+  });
+});
