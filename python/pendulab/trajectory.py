@@ -343,9 +343,10 @@ class Trajectory:
         ``trail`` [s], ``vectors``, ``azimuth``, ``elevation`` [deg], ``progress`` (see
         :func:`pendulab.animate.render`; ``docs/animate.md``)."""
         from .animate import from_samples, render
+        from .animate.words import method_words, model_words
 
         p = self.pendulum
-        label = self.method if p.is_ideal else f"{p.model} model, {self.method}"
+        label = f"{model_words(p.model)}: {method_words(self.method)}"
         motion = from_samples(self.t, self.x, self.v, length=p.length, g=p.g, mass=p.mass, label=label)
         return render(
             motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options

@@ -24,6 +24,8 @@ FADE_STEPS = 12
 MAX_RODS = 20
 MAX_TRAILS = 50
 WIRE_POINTS = 73
+AXIS_LENGTH = 0.35
+"""Length of the x, y, z axes drawn at the pivot, as a fraction of l."""
 
 
 class Panel3D(Panel):
@@ -53,6 +55,7 @@ class Panel3D(Panel):
         self.vector_scale = 0.5 * self.radius / vmax if vmax > 0 else 0.0  # s: the fastest is l/2 long
 
     def background(self, draw: ImageDraw.ImageDraw) -> None:
+        """The sphere of reach as a wireframe, x, y, z axes at the pivot and the title."""
         theme, r = self.theme, self.radius
         s = np.linspace(0.0, 2.0 * np.pi, WIRE_POINTS)
         curves = []
@@ -69,6 +72,10 @@ class Panel3D(Panel):
             polyline(draw, np.where(front[:, None], np.nan, pts), theme.wire_back)
             polyline(draw, np.where(front[:, None], pts, np.nan), theme.wire_front)
         pivot = self.camera.project(np.zeros(3))
+        for axis, name in zip(np.eye(3), "xyz", strict=True):  # short x, y, z axes at the pivot (z up)
+            tip = self.camera.project(AXIS_LENGTH * r * axis)
+            polyline(draw, np.array([pivot, tip]), theme.axes)
+            draw.text(tuple(tip + 4.0), name, fill=theme.axes, font=font(13))
         disc(draw, pivot, 3.0, theme.rod)
         draw.text(
             (self.box.left + 8, self.box.top + 6), self.scene.motion.label, fill=theme.text, font=font(16)

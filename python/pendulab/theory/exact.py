@@ -367,7 +367,12 @@ class ExactSolution:
 
         p = self._pendulum
         motion = from_function(
-            states, length=p.length, g=p.g, mass=p.mass, span=span, label=f"exact ({self.kind})"
+            states,
+            length=p.length,
+            g=p.g,
+            mass=p.mass,
+            span=span,
+            label=f"exact solution ({self.kind} motion)",
         )
         return render(
             motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
