@@ -123,7 +123,7 @@ def fit(
         values.update(phi0=0.0, phi_dot0=0.0)
     floors = {k: floor_of(obs.t, columns_for_noise(k, v)) for k, v in obs.values.items()}
     spreads = {k: spread_of(columns_for_noise(k, v)) for k, v in obs.values.items()}
-    check_motion(floors, spreads)
+    check_motion(floors, spreads, {k: float(np.max(np.abs(v))) for k, v in obs.values.items()})
     if len(obs) <= len(free):
         raise InvalidInputError(f"{len(obs)} samples cannot determine {len(free)} unknowns: give more data")
     start = starting_values(obs, values, set(free))
@@ -171,6 +171,20 @@ def fit(
         planar=planar,
         n_starts=n_starts,
     )
+
+
+def robust_weights(loss: str, z: FloatArray) -> FloatArray:
+    """ρ'(z) of SciPy's robust losses at z = r² (scale 1): the weight each residual has at the
+    optimum of ½Σρ(r²), as in iteratively reweighted least squares (1 for the linear loss)."""
+    if loss == "soft_l1":
+        return 1.0 / np.sqrt(1.0 + z)
+    if loss == "huber":
+        return np.where(z <= 1.0, 1.0, 1.0 / np.sqrt(np.maximum(z, 1.0)))
+    if loss == "cauchy":
+        return 1.0 / (1.0 + z)
+    if loss == "arctan":
+        return 1.0 / (1.0 + z * z)
+    return np.ones_like(z)
 
 
 def _starts(obs: Observations, start: dict[str, Any], free: list[str]) -> tuple[list[dict[str, Any]], bool]:
@@ -271,7 +285,9 @@ def _conclude(
         return problem.residuals(problem.with_free(uu), sig)
 
     r = weighted(u)
-    positive = np.array([n in POSITIVE and u[i] > 0.0 for i, n in enumerate(free)])
+    # logarithmic steps for positive parameters well away from 0 (a damping at its bound 0 gets
+    # additive ones, one-sided there: jacobian())
+    positive = np.array([n in POSITIVE and u[i] > 0.01 * search.scales[i] for i, n in enumerate(free)])
     steps = np.where(positive, 1e-5, search.scales * 1e-5)
     jac = jacobian(weighted, u, steps, positive)
     if search.loss == "linear" and not interrupted:
@@ -279,6 +295,9 @@ def _conclude(
     final = problem.with_free(u)
     n_res, k = r.size, len(free)
     dof = max(n_res - k, 1)
+    if search.loss != "linear":  # the robust loss's weights (IRLS): outliers leave the error analysis
+        w = np.sqrt(robust_weights(search.loss, r * r))
+        r, jac = r * w, jac * w[:, None]
     chi2 = float(r @ r)
     obs = problem.obs
     sigma_known = all(s is not None for s in obs.sigma.values())
@@ -292,14 +311,15 @@ def _conclude(
     sample = np.concatenate([np.repeat(np.arange(len(obs)), obs.columns[kind]) for kind in obs.values])
     exact = all(c.spread > 0.0 and c.rms <= EXACT * c.spread for c in checks.values())
     correlation = None if exact else Correlation(r, sample, len(obs), lag1)  # round-off has no statistics
-    ident = analyse(free, final, jac, variance, POSITIVE, correlation)
+    logged = {n for i, n in enumerate(free) if positive[i]}
+    ident = analyse(free, final, jac, variance, logged, correlation)
     chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
     chi2_p = None
     if sigma_known:
         from scipy import stats
 
         chi2_p = float(stats.chi2.sf(chi2, dof))
-    said = findings(checks, chi2_p, chi2, dof)
+    said = findings(checks, chi2_p, chi2, dof, robust=search.loss != "linear")
     g_fit = final["g"]
     if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
         said.append(

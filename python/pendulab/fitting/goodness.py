@@ -43,8 +43,10 @@ FLOOR_ALARM = 1.5
 COLUMN_SHARE = 0.3
 #: Values farther than this many robust standard deviations from the fit are outliers.
 OUTLIER_SIGMAS = 5.0
-#: A relative residual below this (rms / the data's spread) is exact to round-off: no statistics.
-EXACT = 1e-9
+#: A relative residual below this (rms / the data's spread) is noise-free data fitted to the model's
+#: own precision (a sideways rate resolved to √ε, round-off): no statistics. Real measurements are
+#: noisier by orders of magnitude (a 2400-step encoder: 1e-3 of a swing).
+EXACT = 1e-6
 MAX_LAG_WORK = 2e8
 """At most this many multiply-adds (lags × samples × unknowns²) for the Newey–West sum."""
 
@@ -54,6 +56,7 @@ class KindCheck:
     """One data kind's residual statistics (unit: the kind's)."""
 
     rms: float
+    robust_rms: float
     floor: float
     spread: float
     lag1: float
@@ -143,7 +146,8 @@ def check_kind(t: FloatArray, r: FloatArray, floor: float, spread: float) -> Kin
         slopes = (tt @ (a - a.mean(axis=0))) / float(tt @ tt)
         trend = float(np.sum(slopes**2) * float(tt @ tt)) / total
     rms = float(math.sqrt(float(np.mean(a**2))))
-    return KindCheck(rms, floor, spread, lag1, p_lb, float(z), outliers, trend)
+    robust_rms = float(math.sqrt(np.mean((1.4826 * np.median(np.abs(a), axis=0)) ** 2)))
+    return KindCheck(rms, robust_rms, floor, spread, lag1, p_lb, float(z), outliers, trend)
 
 
 def andrews_bandwidth(rho: float, n: int) -> int:
@@ -201,15 +205,20 @@ def inflation(
     return out
 
 
-def findings(checks: Mapping[str, KindCheck], chi2_p: float | None, chi2: float, dof: int) -> list[str]:
-    """Plain-language findings: what looks wrong and what to try (empty when nothing does)."""
+def findings(
+    checks: Mapping[str, KindCheck], chi2_p: float | None, chi2: float, dof: int, robust: bool = False
+) -> list[str]:
+    """Plain-language findings: what looks wrong and what to try (empty when nothing does). With a
+    ``robust`` loss the residual's size is its robust spread (1.4826 · median |r|) and outliers are
+    not reported: the loss already discounts them."""
     from scipy import stats
 
     out: list[str] = []
     for kind, c in checks.items():
         if c.spread > 0.0 and c.rms <= EXACT * c.spread:
             continue  # noise-free data fitted to round-off: nothing to test
-        ratio = c.rms / c.floor if c.floor > 0.0 else math.inf
+        size = c.robust_rms if robust else c.rms
+        ratio = size / c.floor if c.floor > 0.0 else math.inf
         if c.explained < 0.5:
             out.append(
                 f"{kind}: the fitted motion explains only {100 * max(c.explained, 0.0):.0f} % of the data's "
@@ -220,7 +229,7 @@ def findings(checks: Mapping[str, KindCheck], chi2_p: float | None, chi2: float,
         if c.correlated and ratio > FLOOR_ALARM:
             drift = " with a slow drift over the record" if c.trend > 0.2 else ""
             out.append(
-                f"{kind}: the fit misses the data systematically{drift}: the residual (rms {c.rms:.3g}, "
+                f"{kind}: the fit misses the data systematically{drift}: the residual (rms {size:.3g}, "
                 f"{ratio:.3g}x the data's noise floor {c.floor:.3g}) is correlated (lag-1 autocorrelation "
                 f"{c.lag1:.3f}, runs test z = {c.runs_z:.1f}). Either the model lacks something (another "
                 "damping law: fit 'drag' or dry friction; a sensor offset or bias; a moving pivot; wind; a "
@@ -232,21 +241,22 @@ def findings(checks: Mapping[str, KindCheck], chi2_p: float | None, chi2: float,
             out.append(
                 f"{kind}: the residual is correlated (lag-1 autocorrelation {c.lag1:.3f}, runs test "
                 f"z = {c.runs_z:.1f}) though no larger than the data's noise floor ({c.floor:.3g}): "
-                "correlated noise (video tracking, filtering) or a small systematic effect; the error "
-                "bars are widened for the correlation"
+                "correlated noise (video tracking, filtering), or a small systematic effect the model "
+                "lacks (a sensor bias: fit force_bias, rate_bias or angle_offset; a damping law); the "
+                "error bars are widened for the correlation"
             )
         elif ratio > 2.0 * FLOOR_ALARM:
             out.append(
-                f"{kind}: the residual rms {c.rms:.3g} is {ratio:.3g}x the noise floor {c.floor:.3g} "
+                f"{kind}: the residual rms {size:.3g} is {ratio:.3g}x the noise floor {c.floor:.3g} "
                 "read off the data: a misfit, or noise that is not white"
             )
         n = c.outliers
-        if n >= 3:
+        if n >= 3 and not robust:
             out.append(
                 f"{kind}: {n} values lie more than {OUTLIER_SIGMAS:g} robust standard deviations from "
                 "the fit (outliers?): try loss='soft_l1'"
             )
-    if chi2_p is not None and chi2_p < P_ALARM:
+    if chi2_p is not None and chi2_p < P_ALARM and not robust:
         out.append(
             f"the fitted motion misses the data by {math.sqrt(chi2 / dof):.3g}x their given noise: chi2 = "
             f"{chi2:.6g} for {dof} degrees of freedom (chi2/dof = {chi2 / dof:.3g}) is improbable for a "

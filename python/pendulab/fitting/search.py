@@ -23,6 +23,9 @@ if TYPE_CHECKING:
 
 #: At most this many Gauss–Newton steps (see :func:`polish`).
 POLISH_STEPS = 40
+#: A window of the continuation gets this fraction of ``max_evaluations``: it only brings the search
+#: near the optimum of the whole record (a model that misses the data would crawl in each window).
+WINDOW_SHARE = 10
 #: The anchor's pull per unit of ln p or of a parameter's scale, in units of the residuals' σ.
 ANCHOR = 0.1
 
@@ -84,6 +87,15 @@ class TimeUp(Exception):
     """The search ran past ``time_limit``."""
 
 
+class _Abandoned(Exception):
+    """A later start used more than its share of model runs while still worse than the best."""
+
+
+#: A start after the first may use this many times the first's model runs (plus 200) before it is
+#: abandoned, unless it is already better than the best so far.
+START_SHARE = 4
+
+
 class Search:
     """SciPy's trust-region reflective ``least_squares`` on a :class:`Problem`, with the anchor, the
     clock, the record of the best values seen (what Ctrl-C or the time limit returns) and the window
@@ -119,6 +131,10 @@ class Search:
         self.best_u: FloatArray | None = None
         self.last_u: FloatArray | None = None
         self.result: Any = None
+        self.calls = 0  # model runs through fun (the Jacobians' included)
+        self.call_budget: int | None = None
+        self.first_calls = 0
+        self.start_cost = math.inf
 
     def time_up(self) -> bool:
         """Whether ``time_limit`` [s] has passed since the search began."""
@@ -140,8 +156,11 @@ class Search:
     def clip(self, u: FloatArray) -> FloatArray:
         return np.minimum(np.maximum(u, self.lower), self.upper)
 
-    def run(self, u0: FloatArray, on: Problem | None = None, tol: float = 1e-10) -> Any:
-        """One trust-region search from ``u0`` on ``on`` (default: the whole problem)."""
+    def run(
+        self, u0: FloatArray, on: Problem | None = None, tol: float = 1e-10, evaluations: int | None = None
+    ) -> Any:
+        """One trust-region search from ``u0`` on ``on`` (default: the whole problem), with at most
+        ``evaluations`` residual evaluations besides the Jacobians' (default ``max_evaluations``)."""
         from scipy.optimize import least_squares  # SciPy is imported on first use (the io/lab extras)
 
         on = self.problem if on is None else on
@@ -149,12 +168,15 @@ class Search:
         def fun(u: FloatArray) -> FloatArray:
             if self.last_u is not None and self.time_up():
                 raise TimeUp
+            self.calls += 1
             r = on.safe_residuals(u, self.sigma)
             self.last_u = np.array(u, dtype=np.float64)  # on a window too: what an interruption returns
-            if on is self.problem:
-                cost = 0.5 * float(r @ r)
-                if cost < self.best_cost:
-                    self.best_cost, self.best_u = cost, np.array(u, dtype=np.float64)
+            cost = 0.5 * float(r @ r)
+            self.start_cost = min(self.start_cost, cost)
+            if on is self.problem and cost < self.best_cost:
+                self.best_cost, self.best_u = cost, np.array(u, dtype=np.float64)
+            if self.call_budget is not None and self.calls > self.call_budget and self._behind(on):
+                raise _Abandoned
             return np.concatenate([r, self.anchor(u)])
 
         return least_squares(
@@ -164,7 +186,7 @@ class Search:
             x_scale=self.scales,
             loss=self.loss,
             f_scale=1.0,
-            max_nfev=self.max_evaluations,
+            max_nfev=self.max_evaluations if evaluations is None else evaluations,
             xtol=tol,
             ftol=tol,
             gtol=tol,
@@ -172,15 +194,41 @@ class Search:
             method="trf",
         )
 
+    def _behind(self, on: Problem) -> bool:
+        """Whether this start's best cost on ``on`` is still above that of the best result so far."""
+        if on is self.problem:
+            return self.start_cost > self.best_cost
+        if self.result is None:
+            return False
+        best = 0.5 * self.cost_at(dict(zip(self.free, self.result.x, strict=True)), on)
+        return self.start_cost > best
+
     def from_start(self, values: Mapping[str, float], windows: Sequence[int]) -> Any:
         """The continuation over the growing ``windows`` (sample counts), then the whole record; keeps
-        the best result so far in ``self.result``."""
+        the best result so far in ``self.result``. A start after the first that needs more than
+        START_SHARE times the first's model runs while still worse than the best is abandoned (None):
+        a model that misses the data can crawl for thousands of runs from a poor start."""
+        first = self.result is None
+        began = self.calls
+        self.call_budget = None if first else began + START_SHARE * self.first_calls + 200
+        self.start_cost = math.inf
         u0 = np.array([values[n] for n in self.free], dtype=np.float64)
-        for n_samples in windows:
-            part = self.problem.restricted(n_samples)
-            u0 = self.run(u0, part, 1e-8).x
-            self.problem.evaluations += part.evaluations
-        res = self.run(u0)
+        try:
+            for n_samples in windows:
+                part = self.problem.restricted(n_samples)
+                self.start_cost = math.inf
+                try:
+                    u0 = self.run(u0, part, 1e-8, max(10, self.max_evaluations // WINDOW_SHARE)).x
+                finally:
+                    self.problem.evaluations += part.evaluations
+            self.start_cost = math.inf
+            res = self.run(u0)
+        except _Abandoned:
+            return None
+        finally:
+            self.call_budget = None
+        if first:
+            self.first_calls = self.calls - began
         if self.result is None or res.cost <= self.result.cost:
             self.result = res
         return res

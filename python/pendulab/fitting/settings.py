@@ -139,9 +139,14 @@ def is_planar(planar: Any, obs: Observations, fit: Any) -> bool:
 
 
 def off_origin(obs: Observations, model: str) -> bool:
-    """Positions that cannot hang from the origin: seen from the side (x, z) all above it, as a
+    """Positions that cannot hang from the origin: seen from above (x, y) a sway centred farther from
+    it than a fifth of its width; seen from the side (x, z) all above it, as a
     pendulum under gravity never is (start.py, check_upright); in 3-D (a rod) a distance from it that
     varies by more than 5 %, as a rod's bob's never does."""
+    h = obs.values.get("horizontal")
+    if h is not None:  # seen from above: a sway centred away from the origin
+        centre = h.mean(axis=0)
+        return float(np.hypot(*centre)) > 0.2 * float(np.max(np.hypot(*(h - centre).T)))
     p = obs.values.get("positions")
     if p is None:
         return False
@@ -189,11 +194,14 @@ def initial_values(
     return values
 
 
-def check_motion(floors: Mapping[str, float], spreads: Mapping[str, float]) -> None:
-    """Refuses data in which no kind moves more than :data:`MOTION` times its noise floor: a bob at
-    rest, constant readings or pure noise determine no length, g or damping, and a search would only
-    fit the noise."""
-    if any(spreads[k] > MOTION * floors[k] and spreads[k] > 0.0 for k in spreads):
+def check_motion(
+    floors: Mapping[str, float], spreads: Mapping[str, float], sizes: Mapping[str, float]
+) -> None:
+    """Refuses data in which no kind moves more than :data:`MOTION` times its noise floor (and more
+    than 1e-9 of its values' size ``sizes``, the round-off of constant readings): a bob at rest,
+    constant readings or pure noise determine no length, g or damping, and a search would only fit
+    the noise."""
+    if any(spreads[k] > max(MOTION * floors[k], 1e-9 * sizes[k], 1e-300) for k in spreads):
         return
     said = "; ".join(f"{k}: spread {spreads[k]:.3g}, noise floor {floors[k]:.3g} {KINDS[k]}" for k in spreads)
     raise InvalidInputError(

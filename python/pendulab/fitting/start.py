@@ -52,6 +52,33 @@ def sphere_fit(p: FloatArray) -> tuple[FloatArray, float] | None:
     return centre, math.sqrt(r2)
 
 
+def running_median(s: FloatArray, width: int = 5) -> FloatArray:
+    """The median of each ``width`` consecutive samples (edges padded with the median of the first and
+    last ``width``, so that a spike at an end is not repeated): removes isolated outliers (spikes in
+    a tracked video) and keeps a densely sampled swing's crossings and any monotone run exactly."""
+    if len(s) < 2 * width:
+        return s
+    half = width // 2
+    head, tail = float(np.median(s[:width])), float(np.median(s[-width:]))
+    padded = np.concatenate([np.full(half, head), s, np.full(half, tail)])
+    return np.median(np.lib.stride_tricks.sliding_window_view(padded, width), axis=1)
+
+
+def despiked(s: FloatArray) -> FloatArray:
+    """``s`` with isolated outliers replaced by the running median, when it has them (more than 0.5 %
+    of its samples farther than 5 noise levels (noise.py) and 5 % of its spread from the running
+    median); otherwise ``s``
+    as it is (a median flattens a swing's turning points a little)."""
+    smooth = running_median(s)
+    dev = np.abs(s - smooth)
+    # a spike stands out of the noise and is a sizable part of the swing (a median's flattening of
+    # the turning points is neither, on densely sampled data)
+    scale = max(5.0 * noise_level(np.arange(len(s), dtype=np.float64), s), 0.05 * float(np.std(s)))
+    if scale > 0.0 and np.count_nonzero(dev > scale) > 0.005 * len(s):
+        return smooth
+    return s
+
+
 def crossings_period(t: FloatArray, s: FloatArray) -> float | None:
     """The period [s] of an oscillating signal from its crossings of its mean: a crossing counts only
     once the signal has gone from below −h to above +h or back (hysteresis, h = 3× the noise, at most
@@ -157,6 +184,21 @@ def _relative_positions(obs: Observations, values: Mapping[str, float], free: se
     return None
 
 
+def _length_from_above(obs: Observations, values: Mapping[str, float], free: set[str]) -> float:
+    """A length [m] for data seen from above, which show the sway but not the height: l = g/ω² from
+    the period of the sway's principal component (small swings), with g known; with g free too,
+    the given length unless the sway is wider than half of it."""
+    h = obs.values["horizontal"]
+    centred = h - h.mean(axis=0)
+    axis = np.linalg.svd(centred, full_matrices=False)[2][0]
+    period = crossings_period(obs.t, despiked(centred @ axis))
+    ell = values["length"]
+    wide = float(np.max(np.hypot(centred[:, 0], centred[:, 1]))) > 0.5 * ell
+    if period is None or ("g" in free and not wide):
+        return ell
+    return abs(values["g"]) / (2.0 * math.pi / period) ** 2
+
+
 def check_length_hint(radius: float, length: float, free: bool) -> None:
     """The positions' distance from the pivot [m] against the given length [m]: a fixed length that
     the data contradict (by more than a factor 2) is an error, a starting value off by more than a
@@ -192,6 +234,9 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
     result has the same keys as ``values``."""
     out = dict(values)
     t = obs.t
+    if "horizontal" in obs.values and "length" in free:
+        out["length"] = _length_from_above(obs, values, free)
+        values = out
     rel = _relative_positions(obs, values, free)
     if rel is None:
         return _frame_free_start(obs, out, free)
@@ -213,6 +258,7 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
         check_length_hint(radius, values["length"], "length" in free)
         if "length" in free:
             out["length"] = radius
+    rel = np.column_stack([despiked(rel[:, j]) for j in range(3)])  # a tracked video's spikes
     horizontal = rel[:, :2] - rel[:, :2].mean(axis=0)
     axis = np.linalg.svd(horizontal, full_matrices=False)[2][0]
     swing = horizontal @ axis
@@ -233,7 +279,7 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
     phi = np.unwrap(np.arctan2(x[:, 1], x[:, 0]))
     period_guess = period or 2.0 * math.pi * math.sqrt(ell / max(abs(out["g"]), 1e-9))
     span = period_guess / 20.0
-    th0, thd0 = _rates(t, theta, span)
+    th0, thd0 = _rates(t, theta, span)  # a monotone run is kept exactly
     ph0, phd0 = _rates(t, phi, span)
     for name, value in zip(("theta0", "phi0", "theta_dot0", "phi_dot0"), (th0, ph0, thd0, phd0), strict=True):
         if name in free:
