@@ -198,6 +198,12 @@ def cli_reference_markdown() -> str:
         if not command.hidden:
             ctx = command.context_class(command, info_name=name, parent=root_ctx)
             out.append(_command_markdown(command, ctx, f"pendulab {name}", level=2))
+            # a command group (``pendulab crane …``): its subcommands below it
+            for sub_name in sorted(getattr(command, "commands", {})):
+                sub = command.commands[sub_name]
+                if not sub.hidden:
+                    sub_ctx = sub.context_class(sub, info_name=sub_name, parent=ctx)
+                    out.append(_command_markdown(sub, sub_ctx, f"pendulab {name} {sub_name}", level=3))
     return "\n".join(out)
 
 
