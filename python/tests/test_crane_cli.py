@@ -52,3 +52,28 @@ def test_residual_reports_the_shapers_ratio() -> None:
 )
 def test_user_errors(args: tuple[str, ...], needle: str) -> None:
     assert_user_error(*invoke(*args), needle)
+
+
+def test_grid_command_writes_every_case(tmp_path: Path) -> None:
+    out = tmp_path / "grid.csv"
+    code, text, err = invoke(
+        "crane",
+        "grid",
+        "--ropes",
+        "6:10:2",
+        "--ratios",
+        "2:8:2",
+        "--shapers",
+        "none,zvd",
+        "--settle",
+        "5",
+        "--out",
+        str(out),
+    )
+    assert code == 0, err
+    rows = [line.split(",") for line in out.read_text().splitlines()[1:]]
+    assert len(rows) == 8 and {r[0] for r in rows} == {"unshaped", "zvd"}
+    res = crane.residual_grid([6.0, 10.0], [2.0, 8.0], [None], settle=5.0)
+    np.testing.assert_allclose([float(r[3]) for r in rows[:4]], res.sway[0].ravel(), rtol=1e-12)
+    assert "8 runs in" in text
+    assert_user_error(*invoke("crane", "grid", "--ropes", "5:1:3"), "--ropes")

@@ -228,3 +228,90 @@ def _write_csv(run: object, out: Path) -> None:
     table = np.column_stack(list(cols.values()))
     with atomic_path(out) as tmp:
         np.savetxt(tmp, table, delimiter=",", header=",".join(cols), comments="", fmt="%.17g")
+
+
+def _span(option: str, spec: str, geometric: bool) -> np.ndarray:
+    """START:STOP:N → N values (linear, or geometric for ratios)."""
+    parts = spec.split(":")
+    try:
+        lo, hi, n = float(parts[0]), float(parts[1]), int(parts[2])
+    except (ValueError, IndexError):
+        raise InvalidInputError(f"{option} {spec!r}: expected START:STOP:N, e.g. 5:30:50") from None
+    if len(parts) != 3 or not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo <= hi and 1 <= n <= 10_000):
+        raise InvalidInputError(f"{option} {spec!r}: need 0 < START <= STOP and 1 <= N <= 10000")
+    return np.geomspace(lo, hi, n) if geometric else np.linspace(lo, hi, n)
+
+
+@crane_app.command("grid", short_help="Residual sway over rope lengths x payload ratios x shapers.")
+def grid_cmd(
+    ropes: Annotated[str, typer.Option(help="Rope lengths START:STOP:N [m] (linear).")] = "5:30:20",
+    ratios: Annotated[
+        str, typer.Option(help="Payload/hook mass ratios START:STOP:N (geometric).")
+    ] = "1:30:10",
+    shapers: Annotated[
+        str, typer.Option(help="Comma-separated kinds; 'none' for unshaped.")
+    ] = "none,zv,zvd,ei",
+    design_rope: Annotated[float | None, typer.Option(help="Rope [m] the shapers are designed for.")] = None,
+    distance: Annotated[float, typer.Option(help="Move distance [m].")] = 5.0,
+    v_max: Annotated[float, typer.Option(help="Speed limit [m/s].")] = 0.5,
+    a_max: Annotated[float, typer.Option(help="Acceleration limit [m/s²].")] = 0.5,
+    j_max: Annotated[float | None, typer.Option(help="Jerk limit [m/s³].")] = None,
+    hook_mass: Annotated[float, typer.Option(help="Hook mass [kg].")] = 100.0,
+    rigging: Annotated[float, typer.Option(help="Rigging length [m].")] = 2.0,
+    g: Annotated[float, typer.Option(help="Gravity [m/s²].")] = _G,
+    settle: Annotated[
+        float, typer.Option(help="Time after the move [s] over which the sway is measured.")
+    ] = 20.0,
+    out: Annotated[Path | None, typer.Option("--out", "-o", help="Write the grid to this .csv file.")] = None,
+    plot: Annotated[Path | None, typer.Option(help="Write the chart to this image.")] = None,
+) -> None:
+    """Simulates every rope length × payload ratio × shaper (hook + payload cranes in the core, in
+    parallel) and prints the median and largest residual sway [m] per shaper; --out writes every case
+    (shaper, rope [m], ratio, sway [m]) as CSV, --plot the chart (docs/cranes.md "A grid of cases")."""
+    with _user_errors():
+        import time
+
+        from .. import crane
+
+        if out is not None:
+            if out.suffix.lower() != ".csv":
+                _fail(f"--out {str(out)!r}: the grid is written as .csv")
+            _check_output(out)
+        if plot is not None:
+            _check_image(plot)
+        lr, rr = _span("--ropes", ropes, False), _span("--ratios", ratios, True)
+        design = design_rope if design_rope is not None else 0.5 * (lr[0] + lr[-1])
+        probe = crane.Crane(
+            rope=design,
+            payload_mass=hook_mass * float(np.median(rr)),
+            hook_mass=hook_mass,
+            rigging=rigging,
+            g=g,
+        )
+        w = float(probe.modes()[0])
+        kinds = [k.strip().lower() for k in shapers.split(",") if k.strip()]
+        shs = [None if k == "none" else crane.shaper(k, omega=w) for k in kinds]
+        t0 = time.perf_counter()
+        res = crane.residual_grid(lr, rr, shs, distance, v_max, a_max, j_max, hook_mass, rigging, g, settle)
+        elapsed = time.perf_counter() - t0
+        _say(f"{res.sway.size} runs in {elapsed:.2f} s; shapers designed for ω = {w:.5g} rad/s")
+        for i, label in enumerate(res.labels):
+            _say(f"{label:>9}: median {np.median(res.sway[i]):.4g} m, largest {res.sway[i].max():.4g} m")
+        if out is not None:
+            from ..io import atomic_path
+
+            with atomic_path(out) as tmp, open(tmp, "w", encoding="utf-8") as f:
+                f.write("shaper,rope [m],ratio,sway [m]\n")
+                for i, label in enumerate(res.labels):
+                    for j, rope in enumerate(res.ropes):
+                        for k, ratio in enumerate(res.ratios):
+                            f.write(
+                                f"{label},{float(rope)!r},{float(ratio)!r},{float(res.sway[i, j, k])!r}\n"
+                            )
+            _say(f"wrote {out}")
+        if plot is not None:
+            from ..crane.plot import plot_grid
+            from ..plot import save_figure
+
+            save_figure(plot_grid(res), plot)
+            _say(f"wrote {plot}")
