@@ -91,6 +91,11 @@ def test_energy_balance_with_hoist_pivot_wind_and_damping(hooked: bool) -> None:
     assert np.abs(run.energy_residual()).max() < 1e-9 * scale
     for k in ("hoist", "pivot", "wind", "damping"):
         assert np.abs(run.work[k]).max() > 1e-3 * scale, k  # each power source did work
+    for k in ("hoist", "pivot"):  # the reported powers integrate to the works (trapezoid, dt = 0.05 s)
+        from scipy.integrate import cumulative_trapezoid
+
+        integral = cumulative_trapezoid(run.power[k], run.t, initial=0.0)
+        assert np.abs(integral - run.work[k]).max() < 2e-3 * np.abs(run.work[k]).max(), k
     np.testing.assert_allclose(
         np.linalg.norm(run.payload[:, :] - (run.hook if hooked else run.pivot), axis=1),
         2.5 if hooked else run.rope,

@@ -215,7 +215,8 @@ def _write_csv(run: object, out: Path) -> None:
 
     assert isinstance(run, CraneRun)
     cols = {"t [s]": run.t}
-    for name, arr in (("pivot", run.pivot), ("hook", run.hook), ("payload", run.payload)):
+    hook = run.hook if run.rigging_sway is not None else None  # a separate hook only
+    for name, arr in (("pivot", run.pivot), ("hook", hook), ("payload", run.payload)):
         if arr is not None:
             for i, ax in enumerate("xyz"):
                 cols[f"{name}_{ax} [m]"] = arr[:, i]

@@ -131,25 +131,28 @@ class Wind:
 
 @dataclass(frozen=True)
 class CraneRun:
-    """A simulated crane: ``t`` [s] (N,); ``payload``, ``hook`` (None without a hook) and ``pivot``
-    positions [m] (N, 3) with velocities ``payload_velocity``, ``hook_velocity`` [m/s]; ``sway``
+    """A simulated crane: ``t`` [s] (N,); ``payload``, ``hook`` (the rope's end: the payload itself
+    without a separate hook) and ``pivot`` positions [m] (N, 3) with velocities ``payload_velocity``,
+    ``hook_velocity`` [m/s]; ``sway``
     (N, 2): polar angle θ from the downward vertical and azimuth φ [rad] of the rope (pivot → hook,
     or → payload without a hook); ``rigging_sway`` (N, 2) [rad] of hook → payload; ``rope`` l(t)
     [m]; ``tension`` (N, 2) [N] rope, rigging; ``energy`` E = Σ ½m|v|² + m g z [J]; ``work`` the
-    works [J] done since the start by the hoist, the pivot, the wind and the damping (dict of (N,))."""
+    works [J] done since the start by the hoist, the pivot, the wind and the damping (dict of (N,));
+    ``power`` the hoist's −T₁ l̇ and the pivot's −T₁ (r₁/l)·Ṗ [W] at the saved times (dict of (N,))."""
 
     t: FloatArray
     payload: FloatArray
-    hook: FloatArray | None
+    hook: FloatArray
     pivot: FloatArray
     payload_velocity: FloatArray
-    hook_velocity: FloatArray | None
+    hook_velocity: FloatArray
     sway: FloatArray
     rigging_sway: FloatArray | None
     rope: FloatArray
     tension: FloatArray
     energy: FloatArray
     work: dict[str, FloatArray] = field(default_factory=dict)
+    power: dict[str, FloatArray] = field(default_factory=dict)
     steps: int = 0
 
     def energy_residual(self) -> FloatArray:
@@ -309,18 +312,26 @@ class Crane:
         if hooked:
             energy += 0.5 * self.hook_mass * np.sum(v1 * v1, axis=1) + self.hook_mass * self.g * x1[:, 2]
         work = {k: y[:, 12 + i] for i, k in enumerate(("hoist", "pivot", "wind", "damping"))}
+        rope = self.hoist.length(t)
+        t1 = out["tension"][:, 0]
+        u1 = (x1 - piv) / rope[:, None]
+        power = {
+            "hoist": -t1 * self.hoist.velocity(t)[:, 0],
+            "pivot": -t1 * np.sum(u1 * self.pivot.velocity(t), axis=1),
+        }
         return CraneRun(
             t=t,
             payload=x2,
-            hook=x1 if hooked else None,
+            hook=x1,
             pivot=piv,
             payload_velocity=v2,
-            hook_velocity=v1 if hooked else None,
+            hook_velocity=v1,
             sway=_angles(x1 - piv),
             rigging_sway=_angles(x2 - x1) if hooked else None,
-            rope=self.hoist.length(t),
+            rope=rope,
             tension=out["tension"],
             energy=energy,
             work=work,
+            power=power,
             steps=int(out["steps"]),
         )
