@@ -60,6 +60,8 @@ declare global {
       /** The second pendulum's store (two-pendulum mode) and where its bob is drawn on the page. */
       twin: LabStore;
       twinOnScreen: () => { x: number; y: number } | null;
+      /** Where the ruler's and the protractor's centres are drawn on the page (null: not shown). */
+      instrumentsOnScreen: () => { ruler: { x: number; y: number } | null; protractor: { x: number; y: number } | null };
       sphereOnScreen: () => { left: number; right: number; top: number; bottom: number };
       /** The separation of the two bobs, |r₁ − r₂| [m] at the first one's history times [s]. */
       separation: () => { t: number[]; d: number[] };
@@ -249,6 +251,14 @@ async function main(): Promise<void> {
     explain,
     overlay: (which, on) => {
       view[which] = on;
+    },
+    move: (which, by) => {
+      const [shift, lift] = which === 'ruler' ? (['rulerShift', 'rulerLift'] as const) : (['protractorShift', 'protractorLift'] as const);
+      const round = (v: number) => Math.round(v * 1000) / 1000; // link-friendly numbers
+      view[shift] = by === null ? 0 : round(view[shift] + by[0]);
+      view[lift] = by === null ? 0 : round(view[lift] + by[1]);
+      view[which] = true;
+      tools.showOverlay(which, true);
     },
   });
   const energy = new EnergyBars(byId('energy'));
@@ -447,6 +457,7 @@ async function main(): Promise<void> {
     frameCosts: () => costs.take(),
     twin: twin.store,
     twinOnScreen: () => scene.twinOnScreen(),
+    instrumentsOnScreen: () => scene.instrumentsOnScreen(),
     sphereOnScreen: () => scene.sphereOnScreen(),
     separation: () => twin?.separationNow() ?? { t: [], d: [] },
     energy: () => energy.shown,

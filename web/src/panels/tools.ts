@@ -51,6 +51,8 @@ export interface ToolActions {
   explain(text: string, info?: boolean): void;
   /** The ruler or the protractor switched on or off in the scene. */
   overlay(which: 'ruler' | 'protractor', on: boolean): void;
+  /** The ruler or the protractor moved by [sideways, up] rod lengths; null: back to its place. */
+  move(which: 'ruler' | 'protractor', by: [number, number] | null): void;
 }
 
 function el<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Record<string, string> = {}, text = ''): HTMLElementTagNameMap[K] {
@@ -233,8 +235,22 @@ export class Tools {
       const box = el('input', { type: 'checkbox', 'data-input': which });
       box.addEventListener('change', () => actions.overlay(which, box.checked));
       this.overlayBoxes[which] = box;
+      // movable (issue 28): buttons a finger, a mouse and the keyboard can use, a twentieth of l a press
+      const pad = el('span', { class: 'move-pad', role: 'group', 'aria-label': t('tools.moveGroup', { what: t(which === 'ruler' ? 'tools.ruler' : 'tools.protractor') }) });
+      const moves: [string, Key, [number, number] | null][] = [
+        ['◀', 'tools.moveLeft', [-0.05, 0]],
+        ['▶', 'tools.moveRight', [0.05, 0]],
+        ['▲', 'tools.moveUp', [0, 0.05]],
+        ['▼', 'tools.moveDown', [0, -0.05]],
+        ['⟲', 'tools.moveBack', null],
+      ];
+      for (const [glyph, words, by] of moves) {
+        const b = el('button', { type: 'button', 'data-action': `move-${which}`, 'aria-label': t(words), title: t(words) }, glyph);
+        b.addEventListener('click', () => actions.move(which, by));
+        pad.appendChild(b);
+      }
       l.append(box, ` ${t(which === 'ruler' ? 'tools.ruler' : 'tools.protractor')}`);
-      ov.appendChild(l);
+      ov.append(l, pad);
     }
   }
 

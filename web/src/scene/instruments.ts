@@ -59,6 +59,8 @@ export class Instruments {
   private readonly dial = new THREE.Group();
   private readonly thetaLabel = new Label('', 0.1);
   private built = -1;
+  private readonly pivot = new THREE.Vector3();
+  private moved: { ruler: [number, number]; protractor: [number, number] } = { ruler: [0, 0], protractor: [0, 0] };
 
   constructor() {
     this.ruler.visible = false;
@@ -123,6 +125,16 @@ export class Instruments {
   face(camera: THREE.Vector3): void {
     const p = this.ruler.position;
     this.ruler.rotation.set(0, 0, Math.atan2(camera.x - p.x, -(camera.y - p.y)));
+    this.placeRuler();
+  }
+
+  /** The ruler's place: the pivot, moved by `moved.ruler` [rod lengths] along its own x (the camera's right)
+   *  and up. */
+  private placeRuler(): void {
+    const a = this.ruler.rotation.z;
+    const [shift, lift] = this.moved.ruler;
+    const l = this.built > 0 ? this.built : 1;
+    this.ruler.position.set(this.pivot.x + shift * l * Math.cos(a), this.pivot.y + shift * l * Math.sin(a), this.pivot.z + lift * l);
   }
 
   /** Places both at the pivot [m] for rod length l [m] and turns the protractor to the bob at x (relative
@@ -134,18 +146,27 @@ export class Instruments {
     rulerOn: boolean,
     protractorOn: boolean,
     camera: THREE.Vector3,
+    moved: { ruler: [number, number]; protractor: [number, number] } = { ruler: [0, 0], protractor: [0, 0] },
   ): void {
     this.ruler.visible = rulerOn;
     this.protractor.visible = protractorOn;
     if (!rulerOn && !protractorOn) return;
     this.build(l);
+    this.moved = moved;
+    this.pivot.copy(pivot);
     this.ruler.position.copy(pivot);
     this.face(camera);
-    this.protractor.position.copy(pivot);
     const phi = Math.atan2(x[1], x[0]);
+    // the protractor moved along its dial's plane (the vertical plane through the bob) and up
+    const [ps, pl] = moved.protractor;
+    const c = Number.isFinite(phi) ? Math.cos(phi) : 1;
+    const sn = Number.isFinite(phi) ? Math.sin(phi) : 0;
+    this.protractor.position.set(pivot.x + ps * l * c, pivot.y + ps * l * sn, pivot.z + pl * l);
     const theta = Math.atan2(Math.hypot(x[0], x[1]), -x[2]);
     this.dial.rotation.set(0, 0, Number.isFinite(phi) ? phi : 0);
-    const r = 0.55 * l;
+    // the reading half way between the vertical and the rod, beyond the dial's labels (at 0.48 l), so that
+    // at small angles it no longer sits on the 0° label (issue 28)
+    const r = 0.72 * l;
     const mid = theta / 2;
     this.thetaLabel.sprite.position.set(r * Math.sin(mid) * Math.cos(phi), r * Math.sin(mid) * Math.sin(phi), -r * Math.cos(mid));
     this.thetaLabel.sprite.scale.set(0.4 * l, 0.1 * l, 1);

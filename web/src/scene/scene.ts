@@ -48,6 +48,12 @@ export interface ViewOptions extends Record<VectorName, boolean> {
   /** The ruler and the protractor (instruments.ts). */
   ruler: boolean;
   protractor: boolean;
+  /** Where the ruler and the protractor were moved to, in rod lengths from their places (issue 28: movable):
+   *  the ruler sideways (to the camera's right) and up, the protractor along its dial's plane and up. */
+  rulerShift: number;
+  rulerLift: number;
+  protractorShift: number;
+  protractorLift: number;
 }
 
 export const STEREO_MODES = ['off', 'anaglyph', 'side by side'] as const;
@@ -71,6 +77,10 @@ export const DEFAULT_VIEW: ViewOptions = {
   stereo: 'off',
   ruler: false,
   protractor: false,
+  rulerShift: 0,
+  rulerLift: 0,
+  protractorShift: 0,
+  protractorLift: 0,
 };
 
 /** Arrow colours (the legend in docs/web.md). */
@@ -438,7 +448,10 @@ export class PendulumScene {
     this.followPivot(pivot);
     this.reach = Math.max(this.reach, Math.hypot(...f.x));
     this.fit(this.reach + (this.follow ? 0 : pivot.length()));
-    this.instruments.update(pivot, f.x, this.length, view.ruler, view.protractor, this.camera.position);
+    this.instruments.update(pivot, f.x, this.length, view.ruler, view.protractor, this.camera.position, {
+      ruler: [view.rulerShift, view.rulerLift],
+      protractor: [view.protractorShift, view.protractorLift],
+    });
     const boomR = Math.hypot(pivot.x, pivot.y);
     this.boom.visible = boomR > 1e-9 * this.length;
     if (this.boom.visible) {
@@ -546,6 +559,11 @@ export class PendulumScene {
    *  camera) on the page, for tests: inside the canvas means the whole sphere is in view. */
   sphereOnScreen(): { left: number; right: number; top: number; bottom: number } {
     return sphereBox(this.sphere.position, this.sphere.scale.x, this.camera, this.renderer.domElement);
+  }
+
+  /** Where the ruler's and the protractor's centres are on the page [CSS px] (for tests). */
+  instrumentsOnScreen(): { ruler: { x: number; y: number } | null; protractor: { x: number; y: number } | null } {
+    return { ruler: this.onScreen(this.instruments.ruler), protractor: this.onScreen(this.instruments.protractor) };
   }
 
   /** The second pendulum's bob on the page [CSS px], or null when it is not drawn (for tests). */

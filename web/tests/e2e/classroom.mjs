@@ -200,6 +200,17 @@ export async function checkPeriodTimer(page, { check, WAIT }) {
   await page.locator('[data-input="protractor"]').check();
   await page.waitForTimeout(400);
   await page.screenshot({ path: 'test-results/tools-ruler-protractor.png' });
+  // movable (issue 28): the ruler two steps right and one up, the protractor one down; the link carries it
+  const rulerBox = () => page.evaluate(() => window.pendulab.instrumentsOnScreen());
+  const r0 = await rulerBox();
+  for (const [which, n] of [['ruler', 1], ['ruler', 1], ['ruler', 2], ['protractor', 3]]) await page.locator(`[data-action="move-${which}"]`).nth(n).click();
+  await page.waitForFunction(() => /rulerShift%3A0\.1/.test(location.search) && /rulerLift%3A0\.05/.test(location.search) && /protractorLift%3A-0\.05/.test(location.search), null, { timeout: WAIT });
+  await page.waitForTimeout(300);
+  const r1 = await rulerBox();
+  await page.screenshot({ path: 'test-results/tools-ruler-moved.png' });
+  check(Math.hypot(r1.ruler.x - r0.ruler.x, r1.ruler.y - r0.ruler.y) > 5 && Math.hypot(r1.protractor.x - r0.protractor.x, r1.protractor.y - r0.protractor.y) > 5, `the ruler and the protractor move (by ${Math.round(Math.hypot(r1.ruler.x - r0.ruler.x, r1.ruler.y - r0.ruler.y))} and ${Math.round(Math.hypot(r1.protractor.x - r0.protractor.x, r1.protractor.y - r0.protractor.y))} px on the page), and the link carries where`);
+  await page.locator('[data-action="move-ruler"]').nth(4).click();
+  await page.locator('[data-action="move-protractor"]').nth(4).click();
   await page.locator('[data-input="ruler"]').uncheck();
   await page.locator('[data-input="protractor"]').uncheck();
   await page.evaluate(() => window.pendulab.send({ type: 'set_time_scale', time_scale: 1 }));
