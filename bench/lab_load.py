@@ -224,7 +224,8 @@ class Pupil:
                 while time.monotonic() < end:
                     await ws.ping()
                     await asyncio.sleep(0.0005)
-        self.count("ping socket cut")
+        if time.monotonic() < end:
+            self.count("ping socket cut")
 
     async def rest(self, http: Any, method: str, path: str, body: Any, end: float) -> None:
         while time.monotonic() < end:
