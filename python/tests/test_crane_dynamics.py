@@ -177,3 +177,26 @@ def test_tower_and_luffing_cranes_keep_the_rope_and_the_energy_balance() -> None
         rope = np.linalg.norm(run.hook - run.pivot, axis=1)
         np.testing.assert_allclose(rope, 12.0, rtol=1e-7)
         assert run.work["pivot"][-1] != 0.0
+
+
+def test_against_an_independent_planar_model_in_minimal_coordinates() -> None:
+    # payload at (x_p + l sin θ, −l cos θ) with l(t) prescribed: l θ̈ + 2 l̇ θ̇ + ẍ_p cos θ + g sin θ = 0
+    # (Euler–Lagrange, hand-written), integrated by SciPy's DOP853 and compared with the core's run
+    from scipy.integrate import solve_ivp
+
+    path = crane.move(4.0, 0.6, 0.4, j_max=0.8, t_start=1.0)
+    hoist = crane.Hoist(t=[2.0, 12.0], length=[10.0, 6.0])
+    run = crane.Crane(rope=10.0, pivot=path, payload_mass=700.0, hoist=hoist).simulate(
+        t_end=25.0, sway=(0.05, 0.0), dt=0.05, rtol=1e-12, atol=1e-12
+    )
+
+    def rhs(t: float, y: np.ndarray) -> list[float]:
+        th, om = y
+        (rope,), (dl,) = hoist.length([t]), hoist.velocity([t])[:, 0]
+        acc = path.acceleration([t])[0, 0]
+        return [om, -(2 * dl * om + acc * math.cos(th) + G * math.sin(th)) / rope]
+
+    sol = solve_ivp(rhs, (0.0, 25.0), [0.05, 0.0], method="DOP853", rtol=1e-12, atol=1e-12, t_eval=run.t)
+    x_ref = hoist.length(run.t) * np.sin(sol.y[0])
+    np.testing.assert_allclose(run.offset()[:, 0], x_ref, atol=1e-7)
+    np.testing.assert_allclose(run.payload[:, 2], -hoist.length(run.t) * np.cos(sol.y[0]), atol=1e-7)
