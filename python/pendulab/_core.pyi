@@ -56,6 +56,25 @@ def methods() -> list[MethodInfo]: ...
 def check_params(length: float, mass: float, g: float) -> None: ...
 def models() -> list[ModelInfo]: ...
 def limits() -> list[ParamSpec]: ...
+def sensitivities(
+    length: float,
+    mass: float,
+    g: float,
+    model: str,
+    params: list[tuple[str, float]],
+    angles: list[float],
+    times: FloatArray,
+    rtol: float = 1e-12,
+    atol: float = 1e-14,
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """x (n, 3) [m], v (n, 3) [m/s] at ``times`` [s] (≥ 0, non-decreasing; the start (θ₀, φ₀ [rad],
+    θ̇₀, φ̇₀ [rad/s]) at t = 0) and dx, dv (n, 3, 9) by ``sensitivity_params()`` (T-10.7); the models
+    ideal, damped, rotating with their registry ``params``."""
+
+def sensitivity_params() -> list[str]:
+    """theta0, phi0, theta_dot0, phi_dot0, length, g, damping, drag, friction: the last axis of
+    ``sensitivities``."""
+
 def check_model(
     length: float,
     mass: float,

@@ -18,6 +18,7 @@ mod ensemble;
 mod exact;
 mod force;
 mod limits;
+mod sensitivity;
 mod slewing;
 mod solver;
 mod spring;
@@ -44,6 +45,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     crane::register(m)?;
     force::register(m)?;
     limits::register(m)?;
+    sensitivity::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

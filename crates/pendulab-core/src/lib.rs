@@ -24,6 +24,8 @@
 //! - [`exact`]: the exact solution by elliptic functions (§4), phases (§5), energy–momentum map (T-6.4).
 //! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
 //! - [`quadrature`]: adaptive Gauss–Kronrod quadrature.
+//! - [`sensitivity`]: the real pendulum's motion with its derivatives by start and parameters (a
+//!   fit's Jacobian, T-10.5).
 //! - [`crane`]: cranes: hoisting, hook + payload, wind (§11).
 //! - [`elastic`]: the swinging spring (T-7.4) with its own symplectic integrators.
 //! - [`ensemble`]: many trajectories at once (SoA blocks, rayon), RATTLE.
@@ -45,6 +47,7 @@ pub mod live;
 pub mod model;
 pub mod quadrature;
 pub mod reduce;
+pub mod sensitivity;
 pub mod solve;
 pub mod state;
 pub mod stepper;

@@ -78,6 +78,10 @@ def model_params(model: str) -> dict[str, dict[str, Any]]:
     raise InvalidInputError(f"unknown model {model!r}")
 
 
+Motion = tuple[Pendulum | SwingingSpring, FloatArray, FloatArray, FloatArray]
+"""A pendulum and its x [m], v [m/s] at the sample times, with the model times τ [s]."""
+
+
 @dataclass
 class Problem:
     """Everything a fit evaluates: the model, all parameter values (the free ones are overwritten by
@@ -123,9 +127,7 @@ class Problem:
             return State(*spring_model.start_vectors(values))
         return pendulum.state_from_angles(*(values[k] for k in STATE_NAMES))
 
-    def motion(
-        self, values: Mapping[str, float]
-    ) -> tuple[Pendulum | SwingingSpring, FloatArray, FloatArray, FloatArray]:
+    def motion(self, values: Mapping[str, float]) -> Motion:
         """The pendulum and its x [m], v [m/s] at the sample times, with the model times τ [s]."""
         p = self.pendulum(values)
         tau = self.obs.t - self.t0 - values.get("t_offset", 0.0)
@@ -141,9 +143,10 @@ class Problem:
         tr = simulate(p, s, float(tau[-1]), method="dop853", rtol=RTOL, atol=ATOL * p.length, save_at=tau)
         return p, tr.x, tr.v, tau
 
-    def predictions(self, values: Mapping[str, float]) -> dict[str, FloatArray]:
-        """Each data kind as the model with ``values`` predicts it."""
-        p, x, v, tau = self.motion(values)
+    def predictions(self, values: Mapping[str, float], motion: Motion | None = None) -> dict[str, FloatArray]:
+        """Each data kind as the model with ``values`` predicts it (from ``motion``, the result of
+        :meth:`motion`, when given: the exact Jacobian of sensitivity.py moves it by its derivatives)."""
+        p, x, v, tau = motion if motion is not None else self.motion(values)
         accel = None
         if "specific_force" in self.obs.values:
             accel = (
@@ -170,10 +173,13 @@ class Problem:
         }
         return _with_offsets(out, values)
 
-    def residuals(self, values: Mapping[str, float], sigma: Mapping[str, float]) -> FloatArray:
-        """(measured − predicted)/σ for every value of every kind, as one vector."""
+    def residuals(
+        self, values: Mapping[str, float], sigma: Mapping[str, float], motion: Motion | None = None
+    ) -> FloatArray:
+        """(measured − predicted)/σ for every value of every kind, as one vector (``motion``: as in
+        :meth:`predictions`)."""
         self.evaluations += 1
-        pred = self.predictions(values)
+        pred = self.predictions(values, motion)
         parts = [
             (residual(kind, self.obs.values[kind], pred[kind]) / sigma[kind]).ravel()
             for kind in self.obs.values
