@@ -31,10 +31,12 @@ from .theory.exact import ExactSolution, Phases, exact
 from .theory.reduce import Reduced, reduce, reduced_flow
 from .trajectory import Trajectory
 from .validate import limits
+from .variants.compound import CompoundPendulum, Part
 from .variants.crane import SlewingSway, slewing_sway
 from .variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 
 __all__ = [
+    "CompoundPendulum",
     "EMMap",
     "EnsembleResult",
     "ErrorEstimate",
@@ -43,6 +45,7 @@ __all__ = [
     "IntegrationError",
     "InvalidInputError",
     "MeasuredAdvance",
+    "Part",
     "Pendulum",
     "Phases",
     "Reduced",
