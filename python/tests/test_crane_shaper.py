@@ -155,5 +155,9 @@ def test_shaper_for_a_range_of_rope_lengths() -> None:
     for shift in (0.98, 1.02):
         other = crane.shaper("zvd", omega=s.omega * shift)
         assert crane.worst_vibration(other, lo, hi) > crane.worst_vibration(s, lo, hi)
+    # a wide range (0.5 … 2 rad/s): a product of shapers spread over it, V ≤ 5 % everywhere
+    wide = crane.shaper_for_range(0.5, 2.0)
+    assert "*" in wide.kind and crane.worst_vibration(wide, 0.5, 2.0) <= 0.05
+    assert wide.amplitudes.sum() == pytest.approx(1.0, abs=1e-14)
     with pytest.raises(InvalidInputError, match="no single shaper"):
-        crane.shaper_for_range(0.5, 2.0)
+        crane.shaper_for_range(0.05, 5.0)

@@ -4,7 +4,10 @@ symmetric about ω/ω₀ = 1 in the neighbourhood that matters (ZV: V = |cos(π�
 EI: the same symmetric form), so the design frequency that makes the largest V over [ω_lo, ω_hi]
 smallest is the midpoint ω₀ = (ω_lo + ω_hi)/2, where V is equal at both ends. Without a kind, the
 shortest of ZV, ZVD, EI, ZVDD, two-hump EI whose largest V over the range is ≤ the tolerance is
-chosen. Units: rad/s, m, m/s².
+chosen; if none is, the shortest product of n ZV (or ZVD) shapers designed at n frequencies spread
+evenly over the range (ZV n = 2 … 8, ZVD n = 2 … 5: at most 256 impulses; each factor puts a zero
+of V at its frequency). Units: rad/s, m,
+m/s².
 """
 
 from __future__ import annotations
@@ -36,8 +39,8 @@ def shaper_for_range(
     """The shaper for sway frequencies anywhere in [``omega_min``, ``omega_max``] [rad/s] (0 < min ≤
     max), designed at their midpoint (module doc): of ``kind`` if given, else the shortest kind whose
     largest V over the range is ≤ ``tolerance`` (a fraction). ``ei_tolerance`` is the EI kinds' V_tol.
-    Raises ``InvalidInputError`` when no single kind meets the tolerance (then multiply shapers
-    designed across the range, or narrow it)."""
+    Without a kind and when no single kind meets the tolerance, the shortest product of 2 … 8 ZV or
+    ZVD shapers spread over the range (module doc); ``InvalidInputError`` when none does."""
     lo, hi = float(omega_min), float(omega_max)
     if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo <= hi):
         raise InvalidInputError(f"need 0 < omega_min <= omega_max (rad/s), got {omega_min!r}, {omega_max!r}")
@@ -50,10 +53,22 @@ def shaper_for_range(
         worst[k] = worst_vibration(s, lo, hi)
         if worst[k] <= tolerance:
             return s
+    products = []
+    for n in range(2, 9):
+        freqs = lo + (hi - lo) * (np.arange(n) + 0.5) / n
+        for k in ("zv", "zvd") if n <= 5 else ("zv",):  # at most 256 impulses
+            prod = shaper(k, omega=float(freqs[0]))
+            for f in freqs[1:]:
+                prod = prod * shaper(k, omega=float(f))
+            if worst_vibration(prod, lo, hi) <= tolerance:
+                products.append(prod)
+        if products:
+            best = min(products, key=lambda p: p.duration)
+            return Shaper(best.times, best.amplitudes, f"{best.kind}", mid, 0.0, math.nan)
     summary = ", ".join(f"{k} {100 * v:.1f} %" for k, v in worst.items())
     raise InvalidInputError(
         f"no single shaper keeps V <= {100 * tolerance:g} % over {lo:g}…{hi:g} rad/s (worst: {summary}); "
-        "multiply shapers designed across the range, or narrow it"
+        "nor a product of up to 8 ZV/ZVD shapers across it; narrow the range"
     )
 
 
