@@ -34,6 +34,8 @@ import { driftScales } from './panels/plots';
 import { Recorder } from './record';
 import { accessibleSliders, ownsKeys, shortcutFor, viewKey } from './keyboard';
 import { describeMotion } from './describe';
+import { initAdvanced } from './advanced';
+import { Glossary } from './panels/glossary';
 import { DEG, sphericalAngles } from './measure';
 import { energySplit } from './measure';
 import { FitDataPanel } from './panels/fitdata';
@@ -103,6 +105,7 @@ async function main(): Promise<void> {
   );
   setLanguage(lang);
   document.documentElement.lang = lang;
+  initAdvanced();
   document.title = t('page.title');
   byId('page-title').textContent = t('page.title');
   byId('units').textContent = t('page.units');
@@ -337,6 +340,7 @@ async function main(): Promise<void> {
   let twinToRestore = fromUrl.value.twin ?? null;
   const analyses = new Analyses(store, reduced, explain);
   twin = new TwinPanel(byId('tools'), store, schema.methods, socketUrl(window.location), { send, explain });
+  new Glossary(byId('tools'));
   accessibleSliders(controls.gui);
 
   const onStatus = (s: Status) => {

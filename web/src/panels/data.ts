@@ -10,6 +10,7 @@ import { offSphereNote, tetherStyle } from '../models';
 import { eventRow } from '../events';
 import { fmt } from '../format';
 import { kindWords, methodWords, modelWords, t } from '../i18n';
+import { isAdvanced } from '../advanced';
 
 export { fmt };
 
@@ -106,11 +107,12 @@ export function exactRows(q: ExactQuantities | null): Row[] {
     [t('data.kind'), kindWords(q.kind), ''],
     [t('data.turning'), `${fmt(h[0])}, ${fmt(h[1])}`, 'm'],
   ];
-  if (h.length > 2) rows.push([t('data.z3'), fmt(h[2]), 'm']);
+  if (h.length > 2 && isAdvanced()) rows.push([t('data.z3'), fmt(h[2]), 'm']);
   rows.push([q.kind === 'planar' ? t('data.swingPeriod') : t('data.periodZ'), q.period_z_infinite ? '∞' : fmt(q.period_z), 's']);
   if (q.azimuth_advance !== null) rows.push([t('data.advance'), fmt(q.azimuth_advance), 'rad']);
-  if (q.rotation_number !== null) rows.push([t('data.rotation'), fmt(q.rotation_number), '']);
-  if (q.phases !== null) {
+  // the rotation number and the split of Δφ are the advanced layer's (advanced.ts)
+  if (q.rotation_number !== null && isAdvanced()) rows.push([t('data.rotation'), fmt(q.rotation_number), '']);
+  if (q.phases !== null && isAdvanced()) {
     rows.push([t('data.dynamic'), fmt(q.phases.dynamic), 'rad']);
     rows.push([t('data.geometric'), fmt(q.phases.geometric), 'rad']);
   }

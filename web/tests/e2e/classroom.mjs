@@ -390,6 +390,19 @@ async function checkInclusion(page, { check, WAIT }) {
   const revealed = await page.evaluate(() => ({ text: document.getElementById('message').textContent, shown: !document.body.classList.contains('mystery') }));
   check(hidden === 'hidden' && g >= 2 && g <= 21 && revealed.shown && revealed.text.includes(String(g)), `mystery planet: g hidden (${hidden}) until revealed as ${g} m/s²`);
   await page.evaluate(() => window.pendulab.send({ type: 'set_params', g: 9.81 }));
+  // the glossary opens by a click (a tap) with its text on the page; formula numbers only in the advanced layer
+  const refs = () => page.evaluate(() => [...document.querySelectorAll('[title]')].filter((e) => /T-\d+\.\d+|§\s?\d/.test(e.title)).length);
+  const plain = await refs();
+  await page.locator('[data-tool="glossary"] summary').first().click();
+  const gloss = await page.evaluate(() => {
+    const d = document.querySelector('[data-tool="glossary"] details');
+    return { open: d.open, h: d.querySelector('p').getBoundingClientRect().height, text: d.querySelector('p').textContent };
+  });
+  await page.locator('[data-input="advanced"]').check();
+  const full = await refs();
+  await page.locator('[data-input="advanced"]').uncheck();
+  const again = await refs();
+  check(gloss.open && gloss.h > 10 && plain === 0 && full > 0 && again === 0, `glossary: "${gloss.text.slice(0, 60)}…" shown on the page; tooltips with formula numbers: ${plain} plain, ${full} advanced`);
 }
 
 export async function checkEnergyAndTwin(page, { check, WAIT, simulated }) {

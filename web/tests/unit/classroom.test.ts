@@ -12,6 +12,7 @@ import { EN } from '../../src/i18n/en';
 import { frameAt, positionAt, separation, sideBySide, tiltedStart, twinCommands } from '../../src/twin';
 import { frictionCommand, GRAVITY_PRESETS, mysteryGravity, startCommand, swingTheoryFor } from '../../src/panels/tools';
 import { describeMotion } from '../../src/describe';
+import { stripFormulaRefs } from '../../src/advanced';
 import { chartSummary } from '../../src/panels/alttext';
 import { viewKey } from '../../src/keyboard';
 import { framingDistance } from '../../src/scene/scene';
@@ -410,5 +411,11 @@ describe('inclusion (issue 28)', () => {
     setLanguage('en');
     expect(chartSummary('height z(t)', 'time t [s]', 'z [m]', [0, 1, 2], [-1, -0.5, null])).toBe('height z(t): z [m] from -1.00 to -0.500 against time t [s] from 0.00 to 1.00; now — at 2.00');
     expect(chartSummary('T', 'x', 'y', [], [])).toBe('T: no data yet');
+  });
+  it('the plain layer drops formula numbers from the words, keeping the rest', () => {
+    expect(stripFormulaRefs('linear viscous damping (T-7.1), the force −m c v')).toBe('linear viscous damping, the force −m c v');
+    expect(stripFormulaRefs('classic RK4 on the Cartesian ODE T-2.4, no projection')).toBe('classic RK4 on the Cartesian ODE, no projection');
+    expect(stripFormulaRefs('Holm’s Figure 2 (docs/theory.md §3)')).toBe('Holm’s Figure 2');
+    expect(stripFormulaRefs('in a rotating frame (Foucault, T-7.3), optionally damped')).toBe('in a rotating frame (Foucault), optionally damped');
   });
 });
