@@ -33,6 +33,11 @@ def one_line_entries_to_numpy(text: str) -> str:
             in_section = True
             out.append(line)
             continue
+        header = i + 1 < len(lines) and re.fullmatch(r"\s*-{3,}\s*", lines[i + 1]) is not None
+        if in_section and header:  # the next NumPy section ("Examples") ends this one
+            in_section = False
+            out.append(line)
+            continue
         prose = in_section and line.strip() and not line.startswith((" ", "-")) and not _ENTRY.match(line)
         if prose and out and not out[-1].strip():
             out += ["Notes", "-----"]

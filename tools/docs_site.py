@@ -15,7 +15,9 @@
 - **Guided tour.** ``docs/tour/index.md`` and the notebooks ``docs/tour/*.ipynb`` (rendered, and run,
   by mkdocs-jupyter) are added to the navigation in name order, each titled by its first heading; the
   files that running them writes into ``docs/tour/`` (movies) are removed after the build. MathJax is
-  copied into the site from the ``jupyter-server-mathjax`` package, so that formulas render offline.
+  copied into the site from the ``jupyter-server-mathjax`` package, so that formulas render offline
+  (with its STIX-Web fonts: ``config/pendulab.js``); each tour page links to its notebook's download
+  and to the lab.
 - **The lab.** ``dist/pendulab-lab.html`` (``make lab-html``, which ``make docs`` runs first) is copied
   to ``site/lab/index.html``: the whole lab in the site, its physics in the page (docs/lab.md).
 - **Checks after the build** (each failure fails the build): the API page has an anchor for every
@@ -236,6 +238,21 @@ def on_page_content(content: str, **kwargs: Any) -> str:
     return _ROLE.sub(r"\1", content)
 
 
+def on_post_page(output: str, page: Any, **kwargs: Any) -> str:
+    """A tour page gets, under its title, a link that downloads its notebook (the .ipynb that
+    mkdocs-jupyter copies beside the page) and one that opens the lab (``lab/index.html``)."""
+    source = getattr(page.file, "src_uri", "")
+    if not (source.startswith("tour/") and source.endswith(".ipynb")):
+        return output
+    name = html.escape(Path(source).name)
+    links = (
+        f'<p class="pendulab-tour-links"><a href="{name}" download>Download this notebook</a> '
+        "(it runs with the <code>tour</code> extra: README, <em>Install</em>) · "
+        '<a href="../lab/index.html">Open the lab</a></p>'
+    )
+    return re.sub(r"(<h1\b[^>]*>.*?</h1>)", lambda m: m.group(1) + links, output, count=1, flags=re.DOTALL)
+
+
 def on_post_build(config: Any) -> None:
     site = Path(config["site_dir"])
     docs = Path(config["docs_dir"])
@@ -256,6 +273,13 @@ def _copy_lab(target: Path) -> None:
     shutil.copy2(LAB_HTML, target / "index.html")
 
 
+MATHJAX_CONFIG = """MathJax.Hub.Config({
+  "HTML-CSS": {availableFonts: [], preferredFont: null, webFont: "STIX-Web", imageFont: null}
+});
+MathJax.Ajax.loadComplete("[MathJax]/config/pendulab.js");
+"""
+
+
 def _copy_mathjax(target: Path) -> None:
     try:
         import jupyter_server_mathjax
@@ -263,6 +287,10 @@ def _copy_mathjax(target: Path) -> None:
         raise PluginError("the guided tour needs MathJax: pip install jupyter-server-mathjax") from e
     source = Path(jupyter_server_mathjax.__file__).parent / "static"
     shutil.copytree(source, target, dirs_exist_ok=True)
+    # jupyter-server-mathjax ships the STIX-Web fonts only: without this configuration (named in
+    # mkdocs.yml's custom_mathjax_url) MathJax asks for its TeX fonts first and every tour page logs a
+    # 404 for jax/output/HTML-CSS/fonts/TeX/fontdata.js.
+    (target / "config" / "pendulab.js").write_text(MATHJAX_CONFIG, encoding="utf-8")
 
 
 def _check_api_coverage(api_page: Path) -> None:

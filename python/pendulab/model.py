@@ -58,6 +58,16 @@ def models() -> list[ModelInfo]:
     ``description`` and ``allowed`` (in words). Length [m], mass [kg] and g [m/s²] come first in every
     model; the rest are the model's own keywords of :class:`Pendulum` and keys of scenario files.
     ``pendulab models`` prints the same table.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> [m['name'] for m in pl.models()][:3]
+    ['ideal', 'damped', 'rotating']
+    >>> damped = next(m for m in pl.models() if m['name'] == 'damped')
+    >>> [(q['name'], q['unit']) for q in damped['params']][3:5]
+    [('damping', '1/s'), ('drag', '1/m')]
     """
     return _models()
 
@@ -157,6 +167,16 @@ class Pendulum:
     **extra : the model's parameters, e.g. ``Pendulum(length=1.0, g=9.81, mass=1.0, damping=0.003)``.
 
     Raises ``InvalidInputError`` (a ``ValueError``) naming the bad value and the allowed range.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)
+    >>> p
+    Pendulum(length=1.0, g=9.81, mass=1.0)
+    >>> pl.Pendulum(damping=0.003).model
+    'damped'
     """
 
     def __init__(
@@ -327,6 +347,16 @@ class Pendulum:
         Without ``project`` the state must lie on TS² (|x| = l and x·v = 0 to 1e-9 relative);
         with ``project=True`` it is moved there (x ← l x/|x|, v ← its tangential part) and
         ``State.projection`` says by how much.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import pendulab as pl
+        >>> p = pl.Pendulum(length=2.0)
+        >>> p.state([0.0, 0.0, -2.0], [1.0, 0.0, 0.0])
+        State(x=[0, 0, -2] m, v=[1, 0, 0] m/s; θ=0°, φ=0°)
+        >>> p.state([0.0, 0.0, -2.1], [1.0, 0.0, 0.0], project=True).projection
+        (0.10000000000000009, 0.0)
         """
         xa, va = _vec3("x", x), array("v", v, _SPEED, shape=(3,))
         if flag("project", project):
@@ -358,7 +388,19 @@ class Pendulum:
         is required; the others default to 0. Angles are limited to ±1e6 (rad or degrees), rates to
         ±1e9 (rad/s or °/s), and the velocity they give to 1e7 m/s (docs/limits.md). A θ beyond 2π rad
         is allowed but warned about, since it is most often meant in degrees (``theta=60`` is 60 rad,
-        not 60°)."""
+        not 60°).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import pendulab as pl
+        >>> p = pl.Pendulum()
+        >>> s = p.state_from_angles(theta=np.radians(60), phi_dot=2.0)
+        >>> s
+        State(x=[0.866025, 0, -0.5] m, v=[0, 1.73205, 0] m/s; θ=60°, φ=0°)
+        >>> p.state_from_angles(theta_deg=90).x
+        array([ 1.000000e+00,  0.000000e+00, -6.123234e-17])
+        """
         values = []
         for name, rad, deg in (
             ("theta", theta, theta_deg),

@@ -99,12 +99,30 @@ def _method_table() -> dict[str, MethodInfo]:
 
 
 def methods() -> list[MethodInfo]:
-    """The registered integrators: name, order, symplectic, preserves_ts2, preserves_j3, adaptive, …"""
+    """The registered integrators: name, order, symplectic, preserves_ts2, preserves_j3, adaptive, …
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> [m['name'] for m in pl.methods()][:3]
+    ['rattle', 'rattle4', 'rattle6']
+    >>> pl.methods()[0]['order']
+    2
+    """
     return _methods()
 
 
 def method_names() -> list[str]:
-    """Names of the registered integrators."""
+    """Names of the registered integrators.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> pl.method_names()
+    ['rattle', 'rattle4', 'rattle6', 'rattle8', 'dop853', 'rkmk4', 'rk4', 'rk4_angles']
+    """
     return [m["name"] for m in _methods()]
 
 
@@ -171,6 +189,20 @@ def simulate(
     The ``"string"`` model (a rope that goes slack) is hybrid and runs in
     :func:`pendulab.variants.string_pendulum.simulate_string`: methods rattle, rattle4, rattle6, rattle8 or
     rkmk4 with ``dt`` in the taut phases, ``save_every`` or ``save_at``, progress and Ctrl-C as here.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum()
+    >>> s0 = p.state_from_angles(theta=np.radians(60), phi_dot=2.0)
+    >>> tr = pl.simulate(p, s0, t_end=1.0, dt=1e-3, save_every=100)
+    >>> tr.t
+    array([0. , 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1. ])
+    >>> bool(abs(tr.energy - tr.energy[0]).max() < 1e-4)  # J: RATTLE's energy error at dt = 1 ms
+    True
+    >>> tr.method
+    'rattle'
     """
     check_pendulum_state(pendulum, state)
     drift = choice("drift", drift, ("raise", "warn"))
@@ -319,6 +351,17 @@ class Stepper:
 
     Same methods and options as :func:`simulate`; ``set_state`` replaces the state (e.g. after the
     user drags the bob).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum()
+    >>> st = pl.Stepper(p, p.state_from_angles(theta=0.5), method='rattle', dt=1e-3)
+    >>> st.step(1000)
+    State(x=[-0.478686, 0, -0.877986] m, v=[-0.0781417, 0, 0.0426035] m/s; θ=28.5996°, φ=180°)
+    >>> round(st.t, 12)
+    1.0
     """
 
     def __init__(

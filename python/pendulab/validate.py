@@ -58,7 +58,16 @@ def limits() -> list[ParamSpec]:
     """Every limit: the shared model parameters (length [m], mass [kg], g [m/s²]) and the bounds of
     states, times, steps, samples, bytes and files, each a dict ``name``, ``unit``, ``default``,
     ``min``, ``max``, ``description`` (the reason for the bound) and ``allowed`` (in words). The
-    models' own parameters and their limits: :func:`pendulab.models`. ``docs/limits.md`` lists both."""
+    models' own parameters and their limits: :func:`pendulab.models`. ``docs/limits.md`` lists both.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> lim = {row['name']: row for row in pl.limits()}
+    >>> lim['length']['min'], lim['length']['max'], lim['length']['unit']
+    (1e-06, 10000.0, 'm')
+    """
     return [*COMMON.values(), *LIMITS.values()]
 
 

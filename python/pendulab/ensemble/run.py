@@ -127,7 +127,20 @@ def simulate_ensemble(
     pl.Save.summary()`` (see :class:`~pendulab.save.Save`); or the older keywords ``save_every`` (keep
     every n-th step; default the final state only) and ``summary`` (default True).
     ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. ``method``: only
-    ``"rattle"``. The number of steps is round(t_end/dt); t_end must be a multiple of dt to 1e-9."""
+    ``"rattle"``. The number of steps is round(t_end/dt); t_end must be a multiple of dt to 1e-9.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum()
+    >>> starts = pl.states_from_angles(p, theta=np.linspace(0.1, 1.0, 4))
+    >>> res = pl.simulate_ensemble(p, starts, t_end=1.0, dt=1e-3, progress=False)
+    >>> res.x.shape
+    (4, 2, 3)
+    >>> res
+    EnsembleResult(4 trajectories, 2 saved times, t = 0 … 1 s, 1000 steps)
+    """
     if not isinstance(pendulum, Pendulum):
         raise limits.invalid("pendulum", pendulum, "a pendulab.Pendulum")
     if method != "rattle":
@@ -245,7 +258,16 @@ def states_from_angles(
     pendulum: Pendulum, theta: Any, phi: Any = 0.0, theta_dot: Any = 0.0, phi_dot: Any = 0.0
 ) -> FloatArray:
     """(N, 6) array of (x, v) from arrays of θ [rad] (from the downward vertical), φ [rad], θ̇, φ̇
-    [rad/s], broadcast together (the same formulas as ``Pendulum.state_from_angles``)."""
+    [rad/s], broadcast together (the same formulas as ``Pendulum.state_from_angles``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum()
+    >>> pl.states_from_angles(p, theta=[0.1, 0.2], phi_dot=1.0).shape
+    (2, 6)
+    """
     th, ph, thd, phd = np.broadcast_arrays(
         *(np.asarray(a, dtype=np.float64) for a in (theta, phi, theta_dot, phi_dot))
     )

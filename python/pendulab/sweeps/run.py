@@ -125,6 +125,17 @@ def sweep(
     ``progress``: a bar over chunks on stderr (default: for sweeps of more than a few seconds).
 
     Returns a :class:`~pendulab.sweeps.results.SweepResult` (columns as NumPy arrays, ``to_xarray()``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> design = {'theta0': np.linspace(0.5, 1.5, 3), 'phi_dot0': [1.0]}
+    >>> sw = pl.sweep(design, 'rotation_number', progress=False)
+    >>> sw
+    SweepResult(3 points (grid), quantities ['rotation_number'])
+    >>> sw['rotation_number'].shape
+    (3,)
     """
     t0 = time.perf_counter()
     d = as_design(design)

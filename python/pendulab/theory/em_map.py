@@ -223,7 +223,18 @@ def em_map(
     [kg m²/s] × ``e_range`` [J]. Defaults: j ∈ [−2.4, 2.4] m l² ω₀ and ε ∈ [−1.1, 2.5] m|g|l, which hold
     the bottom, the top and the monodromy loop. Grid points within 1e-12 (relative to the J₃ range) of
     J₃ = 0 are put on it. g < 0 is mapped as its mirror image (module docstring); g = 0, models other
-    than the ideal pendulum, bad ranges and grids raise :class:`pendulab.InvalidInputError`."""
+    than the ideal pendulum, bad ranges and grids raise :class:`pendulab.InvalidInputError`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> emm = pl.em_map(pl.Pendulum(), grid=(100, 100))
+    >>> emm.W.shape
+    (100, 100)
+    >>> round(emm.monodromy())
+    -1
+    """
     eu, mu = _units(pendulum)
     if not pendulum.is_ideal:
         raise InvalidInputError(

@@ -236,6 +236,15 @@ class ExactSolution:
         has geometric part 0). Any other kind raises :class:`pendulab.InvalidInputError` saying why:
         the split divides by J₃, planar motion has no azimuthal advance, and with g = 0 there is no
         potential (great circles).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> import pendulab as pl
+        >>> p = pl.Pendulum()
+        >>> ph = pl.exact(p, p.state_from_angles(theta=np.radians(60), phi_dot=2.0)).phases()
+        >>> round(ph.total, 9), round(ph.dynamic + ph.geometric, 9)
+        (3.83116239, 3.83116239)
         """
         p = self._core.phases()
         if p is None and self._pendulum.g == 0.0:
@@ -452,5 +461,19 @@ def exact(pendulum: Pendulum, state: State) -> ExactSolution:
     (docs/theory.md §4).
 
     Raises :class:`pendulab.InvalidInputError` for a state off TS² or non-finite values.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum()
+    >>> sol = pl.exact(p, p.state_from_angles(theta=np.radians(60), phi_dot=2.0))
+    >>> sol.kind
+    'generic'
+    >>> round(sol.period_z, 6)
+    1.079669
+    >>> x, v = sol.state(np.array([0.0, 1e6]))
+    >>> x.shape
+    (2, 3)
     """
     return ExactSolution(pendulum, state)

@@ -113,7 +113,20 @@ def invariants(pendulum: Pendulum, x: object, v: object) -> FloatArray:
 
 
 def reduce(traj: Trajectory) -> Reduced:
-    """σ₁ … σ₆, the relation residuals, the Casimir and H along a trajectory (T-3.1 … T-3.3)."""
+    """σ₁ … σ₆, the relation residuals, the Casimir and H along a trajectory (T-3.1 … T-3.3).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum()
+    >>> tr = pl.simulate(p, p.state_from_angles(theta=1.0, phi_dot=2.0), t_end=1.0, save_every=100)
+    >>> red = pl.reduce(tr)
+    >>> red.sigma.shape
+    (11, 6)
+    >>> abs(red.casimir).max() < 1e-12
+    True
+    """
     if not isinstance(traj, Trajectory):
         raise InvalidInputError(f"reduce needs a pendulab.Trajectory, got {type(traj).__name__}")
     p = traj.pendulum
