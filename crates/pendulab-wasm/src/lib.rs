@@ -9,6 +9,7 @@
 //! The one import is `env.pl_now() -> f64`, the wall clock in seconds (`performance.now()/1000`),
 //! for the per-tick budget. SI units throughout; frames are frame.json's float64 records.
 
+pub mod analyses;
 pub mod engine;
 pub mod run;
 pub mod wire;
@@ -164,4 +165,13 @@ pub extern "C" fn pl_run(ptr: *const u8, len: usize) -> i32 {
             -1
         }
     }
+}
+
+/// A REST request answered in the page ([`analyses::request`]: `{"path": "api/exact" |
+/// "api/effective_potential", "body": {…}}`): its HTTP status, with the JSON answer in the output.
+#[no_mangle]
+pub extern "C" fn pl_request(ptr: *const u8, len: usize) -> i32 {
+    let (status, body) = analyses::request(&input(ptr, len));
+    set_out(body.to_string().into_bytes());
+    i32::from(status)
 }

@@ -103,3 +103,41 @@ fn a_scenario_loads_and_runs_paced_by_the_time_passed_in() {
     let (_, records) = messages(&e.tick(&set, 1.0 / 60.0, &clock, 1.0));
     assert_eq!(records, 4, "four records per tick at time scale 4");
 }
+
+#[test]
+fn the_exact_solution_answered_in_the_page_has_the_small_swing_period() {
+    use pendulab_wasm::analyses::request;
+    // a planar swing of 0.1 rad: T = 2π√(l/g)(1 + θ₀²/16 + 11θ₀⁴/3072 + …) (the swing period)
+    let (l, g, th) = (1.3f64, 9.81f64, 0.1f64);
+    let (status, a) = request(&format!(
+        r#"{{"path": "api/exact", "body": {{"length": {l}, "mass": 2.0, "g": {g}, "theta": {th}}}}}"#
+    ));
+    assert_eq!(status, 200, "{a}");
+    assert_eq!(a["kind"], "planar");
+    let t = a["period_z"].as_f64().unwrap();
+    let series =
+        2.0 * std::f64::consts::PI * (l / g).sqrt() * (1.0 + th * th / 16.0 + 11.0 * th.powi(4) / 3072.0);
+    assert!((t / series - 1.0).abs() < 1e-7, "{t} vs {series}");
+    assert!(a["phases"].is_null() && a["phases_note"].as_str().unwrap().contains("planar"));
+    // bad input: named, 422
+    let (status, a) = request(r#"{"path": "api/exact", "body": {"length": -1, "theta": 1}}"#);
+    assert_eq!(status, 422);
+    assert!(a["detail"].as_str().unwrap().contains("length = -1"), "{a}");
+    assert_eq!(request(r#"{"path": "api/fit", "body": {}}"#).0, 404);
+}
+
+#[test]
+fn v_eff_has_its_minimum_at_the_conical_orbit() {
+    use pendulab_wasm::analyses::request;
+    // the conical orbit at θc: φ̇² = g/(l cos θc), J₃ = m l² sin²θc φ̇ — V_eff's minimum (T-2.5)
+    let (l, m, g, tc) = (0.8, 1.5, 9.81, 0.7f64);
+    let j3 = m * l * l * tc.sin().powi(2) * (g / (l * tc.cos())).sqrt();
+    let n = 2000;
+    let (status, a) = request(&format!(
+        r#"{{"path": "api/effective_potential", "body": {{"length": {l}, "mass": {m}, "g": {g}, "j3": {j3}, "n": {n}}}}}"#
+    ));
+    assert_eq!(status, 200, "{a}");
+    let at = a["minimum"]["theta"].as_f64().unwrap();
+    assert!((at - tc).abs() <= std::f64::consts::PI / (n + 1) as f64, "{at} vs {tc}");
+    assert_eq!(a["theta"].as_array().unwrap().len(), n);
+}

@@ -47,9 +47,12 @@ export async function installEngine(): Promise<EngineKind> {
   if (lab === null) return 'server';
   const { EngineSocket } = await import('./socket');
   const { installApi } = await import('./api');
-  const wasm = Uint8Array.from(atob(lab.wasm), (c) => c.charCodeAt(0));
+  const { Engine } = await import('./wasm');
+  // compiled once: the quick analyses on this thread, each socket's worker instantiates the same module
+  const wasm = await WebAssembly.compile(Uint8Array.from(atob(lab.wasm), (c) => c.charCodeAt(0)));
   factory = () => new EngineSocket(wasm, lab);
-  installApi(lab);
+  installApi(lab, await Engine.load(wasm));
+
   return 'wasm';
 }
 

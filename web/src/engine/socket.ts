@@ -14,7 +14,7 @@ export class EngineSocket implements SocketLike {
   onclose: ((ev: CloseEvent) => unknown) | null = null;
   private readonly worker: Worker;
 
-  constructor(wasm: Uint8Array, lab: LabBundle) {
+  constructor(wasm: WebAssembly.Module, lab: LabBundle) {
     this.worker = new EngineWorker();
     this.worker.onmessage = (ev: MessageEvent<FromWorker>) => this.receive(ev.data);
     this.worker.onerror = (ev) => {
@@ -24,11 +24,11 @@ export class EngineSocket implements SocketLike {
     const schema = lab.schema as { tick_hz?: number };
     const init: ToWorker = {
       type: 'init',
-      wasm: wasm.slice().buffer,
+      wasm,
       config: JSON.stringify({ scenarios: lab.scenarios, scenario: lab.scenario }),
       tickHz: schema.tick_hz ?? 60,
     };
-    this.worker.postMessage(init, [init.wasm]);
+    this.worker.postMessage(init);
   }
 
   private receive(m: FromWorker): void {

@@ -12,6 +12,7 @@ export interface EngineExports {
   pl_session_tick(handle: number, ptr: number, len: number, elapsed: number, budget: number): number;
   pl_session_free(handle: number): void;
   pl_run(ptr: number, len: number): number;
+  pl_request(ptr: number, len: number): number;
 }
 
 /** A packed answer's kinds (crates/pendulab-wasm/src/engine.rs). */
@@ -21,8 +22,13 @@ export const KIND_JSON = 1;
 export class Engine {
   private constructor(private readonly w: EngineExports) {}
 
-  static async load(bytes: BufferSource): Promise<Engine> {
-    const { instance } = await WebAssembly.instantiate(bytes, { env: { pl_now: () => performance.now() / 1000 } });
+  /** An engine from the .wasm's bytes or its compiled module (compiled once, shared with the worker). */
+  static async load(source: BufferSource | WebAssembly.Module): Promise<Engine> {
+    const imports = { env: { pl_now: () => performance.now() / 1000 } };
+    const instance =
+      source instanceof WebAssembly.Module
+        ? await WebAssembly.instantiate(source, imports)
+        : (await WebAssembly.instantiate(source, imports)).instance;
     return new Engine(instance.exports as unknown as EngineExports);
   }
 
@@ -53,6 +59,13 @@ export class Engine {
 
   close(handle: number): void {
     this.w.pl_session_free(handle);
+  }
+
+  /** A REST request answered by the core in the page (crates/pendulab-wasm/src/analyses.rs): api/exact,
+   *  api/effective_potential; its HTTP status and JSON answer. */
+  request(path: string, body: unknown): { status: number; body: unknown } {
+    const { code, out } = this.call(JSON.stringify({ path, body }), (p, n) => this.w.pl_request(p, n));
+    return { status: code, body: JSON.parse(new TextDecoder().decode(out)) as unknown };
   }
 
   /** A plain trajectory (crates/pendulab-wasm/src/run.rs): its float64 records. */

@@ -68,6 +68,13 @@ try {
   const s0 = await status(page);
   const err = await page.evaluate(() => window.pendulab.store.latest().errorX);
   check(s0.error_estimate?.how === 'exact' && err > 1e-12 && err < 1e-3, `the true error travels in the frames: ${err} m (${s0.error_estimate?.how})`);
+  // the exact solution's quantities, computed by the core in the page (the period timer compares them)
+  const exact = await page.evaluate(async (s) => {
+    const r = await fetch('api/exact', { method: 'POST', body: JSON.stringify({ ...s.params, ...s.start }) });
+    return r.json();
+  }, s0);
+  check(exact.kind === 'generic' && exact.period_z > 0 && Math.abs(exact.energy - (await page.evaluate(() => window.pendulab.store.trajectory[0].energy))) < 1e-12,
+    `the exact solution in the page: ${exact.kind}, T_z = ${exact.period_z} s, W = ${exact.rotation_number}`);
   await page.screenshot({ path: 'test-results/lab-file.png' });
 
   // the same commands as over the WebSocket: the model picker's damped model, then its damping

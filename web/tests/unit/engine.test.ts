@@ -53,6 +53,16 @@ describe('answer', () => {
     expect((await r?.json()).detail).toBe(needsServer('fitting a data file'));
     expect(needsServer('x')).toMatch(/pendulab serve/);
   });
+  it('hands the analyses the core answers in the page to the engine, with the request body', async () => {
+    const asked: [string, unknown][] = [];
+    const engine = { request: (path: string, body: unknown) => (asked.push([path, body]), { status: 200, body: { kind: 'generic' } }) };
+    const r = answer('api/exact', lab, engine as never, '{"length": 1}');
+    expect(r?.status).toBe(200);
+    expect(await r?.json()).toEqual({ kind: 'generic' });
+    expect(asked).toEqual([['api/exact', { length: 1 }]]);
+    expect(answer('api/effective_potential', lab, engine as never, 'not json')?.status).toBe(422);
+    expect(answer('api/em_map', lab, engine as never, '{}')?.status).toBe(501);
+  });
   it('leaves other requests to the network', () => {
     expect(answer('https://example.org/api/schema', lab)).toBeNull();
     expect(answer('style.css', lab)).toBeNull();
