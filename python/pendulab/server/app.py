@@ -89,8 +89,8 @@ MAX_SESSIONS = 64
 are refused with an error notice."""
 
 STEP_THREADS = 4
-"""Worker threads stepping the sessions (each tick of each session is one job of at most about
-:data:`pendulab.server.budget.TICK_BUDGET` seconds; the core releases the GIL while stepping)."""
+"""Worker threads computing a new session's first messages (its status and first frame); the ticks
+themselves run in the room's ticker (:mod:`.ticker`)."""
 
 REST_THREADS = 1
 """Worker threads of the quick POST endpoints (V_eff, TOML: bounded work); at most this many run at
