@@ -107,3 +107,24 @@ def test_a_shaped_move_drives_the_moving_pivot_model() -> None:
         return float(np.mean(np.hypot(tr.x[after, 0], tr.v[after, 0] / w)))
 
     assert residual(s) / residual(None) == pytest.approx(expected, rel=1e-2)
+
+
+def test_a_measured_path_from_csv(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    path = crane.move(3.0, 0.5, 0.3, j_max=0.5, direction=(1.0, 1.0, 0.0))
+    t = np.linspace(0.0, 20.0, 2001)
+    p = path.position(t)
+    f = tmp_path / "trolley.csv"
+    f.write_text(
+        "t,x,y,z\n"
+        + "\n".join(",".join(repr(float(v)) for v in (a, *row)) for a, row in zip(t, p, strict=True))
+    )
+    sampled = crane.Sampled.from_csv(str(f))
+    mid = np.linspace(0.5, 19.5, 97)
+    np.testing.assert_allclose(sampled.position(mid), path.position(mid), atol=1e-9)
+    np.testing.assert_allclose(sampled.acceleration(mid), path.acceleration(mid), atol=2e-3)
+    run = crane.Crane(rope=8.0, pivot=sampled).simulate(t_end=19.0, dt=0.1)
+    ref = crane.Crane(rope=8.0, pivot=path).simulate(t_end=19.0, dt=0.1)
+    np.testing.assert_allclose(run.payload, ref.payload, atol=1e-3)
+    (tmp_path / "bad.csv").write_text("t,x,y,z\n0,0,0,0\n1,,0,0\n2,0,0,0\n3,0,0,0\n")
+    with pytest.raises(pl.InvalidInputError, match="row 2"):
+        crane.Sampled.from_csv(str(tmp_path / "bad.csv"))

@@ -188,6 +188,27 @@ class Sampled(Path):
         self.breaks = np.zeros(0)
         self.t_end = float(t[-1])
 
+    @classmethod
+    def from_csv(cls, path: str, columns: Sequence[int] = (0, 1, 2, 3), skip_header: int = 1) -> Sampled:
+        """A measured path from a CSV file: the columns (t [s], x, y, z [m]) by index, after
+        ``skip_header`` lines (comments starting with # are skipped; at most 10⁶ rows)."""
+        cols = tuple(int(c) for c in columns)
+        if len(cols) != 4:
+            raise InvalidInputError(f"columns = {columns!r}: four column indices (t, x, y, z)")
+        try:
+            data = np.genfromtxt(
+                path, delimiter=",", skip_header=skip_header, usecols=cols, max_rows=1_000_001
+            )
+        except (ValueError, IndexError) as e:
+            raise InvalidInputError(f"{path}: cannot read columns {cols} as numbers: {e}") from None
+        data = np.atleast_2d(data)
+        if data.shape[0] > 1_000_000:
+            raise InvalidInputError(f"{path}: more than 10⁶ rows")
+        if not np.all(np.isfinite(data)):
+            bad = int(np.argwhere(~np.isfinite(data))[0, 0])
+            raise InvalidInputError(f"{path}: row {bad + 1} of the data has an empty or non-numeric value")
+        return cls(data[:, 0], data[:, 1:4])
+
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
         s = self._spline
         return s(t), s(t, 1), s(t, 2)
