@@ -82,7 +82,7 @@ from .session import Session, Setup, describe, example_resolver, resolve_scenari
 from .tick import Message, first_messages
 from .ticker import Seat, room_ticker
 from .views import EMRequest, ReducedRequest, em_view, reduced_view
-from .worker import Busy, WorkerPool, WorkFailed, WorkInvalid, WorkTimeout
+from .worker import Busy, WorkFailed, WorkInvalid, WorkTimeout, shared_pool
 
 MAX_SESSIONS = 64
 """Default for the most lab sessions (WebSockets) at once (a class of 30 with a second tab each); more
@@ -195,8 +195,8 @@ def create_app(
     rest_limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
     active = 0
     room = Room(max_sessions_per_client)
-    analyses = WorkerPool("analysis", WORK_WORKERS, REST_QUEUE, work_seconds)
-    fits = WorkerPool("fit", FIT_WORKERS, FIT_QUEUE, fit_seconds)
+    analyses = shared_pool("analysis", WORK_WORKERS, REST_QUEUE, work_seconds)
+    fits = shared_pool("fit", FIT_WORKERS, FIT_QUEUE, fit_seconds)
     app.state.room, app.state.pools = room, (analyses, fits)
     cached: dict[str, bytes] = {}
 

@@ -19,7 +19,7 @@ for bad input (the core's :class:`~pendulab.InvalidInputError` and ``Integration
 ValueError, ArithmeticError: HTTP 422), :class:`WorkFailed` for anything else (HTTP 500, logged).
 Workers ignore SIGINT (a Ctrl-C in the terminal reaches the whole process group; the server ends
 them itself) and end when the server's end of their pipe closes (the server killed by SIGKILL).
-Times in seconds.
+The apps of one process share their pools (:func:`shared_pool`). Times in seconds.
 """
 
 from __future__ import annotations
@@ -241,3 +241,18 @@ class WorkerPool:
         if kind == "invalid":
             raise WorkInvalid(str(value))
         raise WorkFailed(str(value))
+
+
+_SHARED: dict[tuple[str, int, int, float], WorkerPool] = {}
+_SHARED_LOCK = threading.Lock()
+
+
+def shared_pool(name: str, size: int = 1, queue: int = 4, seconds: float = 30.0) -> WorkerPool:
+    """The process's pool with these settings, made on first use: the apps of one process (the tests
+    make many) share their workers instead of each keeping processes of its own."""
+    key = (name, size, queue, float(seconds))
+    with _SHARED_LOCK:
+        pool = _SHARED.get(key)
+        if pool is None:
+            pool = _SHARED[key] = WorkerPool(name, size, queue, seconds)
+        return pool
