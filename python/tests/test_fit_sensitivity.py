@@ -14,7 +14,7 @@ from pendulab import _core
 from pendulab.fitting.data import observations
 from pendulab.fitting.identify import jacobian
 from pendulab.fitting.problem import Problem, model_params
-from pendulab.fitting.sensitivity import exact_jacobian
+from pendulab.fitting.sensitivity import MOTIONLESS, SENSITIVE, exact_jacobian
 
 START = {"theta0": 1.1, "phi0": 0.2, "theta_dot0": 0.1, "phi_dot0": 0.6}
 
@@ -74,7 +74,10 @@ def test_the_exact_jacobian_is_the_difference_quotient(
     problem = _problem(model, extra, dict.fromkeys(kinds), free)
     sigma = {k: 1.0 for k in kinds}
     u = np.array([problem.values[n] for n in free])
+    before = problem.evaluations
     exact = exact_jacobian(problem, problem.values, sigma)
+    differenced = sum(n not in SENSITIVE and n not in MOTIONLESS and n != "t_offset" for n in free)
+    assert problem.evaluations == before + 1 + 2 * differenced  # model runs, not moved predictions
     assert exact is not None and exact.shape == (problem.obs.n_residuals, len(free))
     # central differences of the forward model (rtol 1e-12): error ~ h² f''' + 1e-12/h ~ 1e-7 relative
     steps = 1e-5 * np.maximum(np.abs(u), 1e-2)

@@ -40,7 +40,10 @@ def exact_jacobian(
 ) -> FloatArray | None:
     """∂r/∂u for the free parameters ``problem.free`` at ``values`` (columns in their units), from one
     run of the forward sensitivities; ``None`` for a model the core has none for (pivot models, the
-    spring) or a clock offset that starts the model before its start state."""
+    spring) or a clock offset that starts the model before its start state. A model that cannot be
+    run there raises as :meth:`Problem.residuals` does (``InvalidInputError``, ``IntegrationError``).
+    ``problem.evaluations`` counts the sensitivity run as one model run (plus two per column that had
+    to be differenced), not the predictions it moves."""
     if problem.model not in MODELS:
         return None
     p = problem.pendulum(values)
@@ -68,6 +71,7 @@ def exact_jacobian(
         motion: Motion = (problem.pendulum(vals), xs, vs, tau)
         return problem.residuals(vals, sigma, motion)
 
+    runs = problem.evaluations + 1
     columns = []
     for name in problem.free:
         h = step * max(abs(values[name]), 1e-3 if name != "g" else 1e-2)
@@ -84,6 +88,7 @@ def exact_jacobian(
             tx, tv = np.zeros_like(x), np.zeros_like(v)
         else:  # no sensitivity in the core: the full residuals, differenced
             columns.append((problem.residuals(up, sigma) - problem.residuals(down, sigma)) / (2.0 * h))
+            runs += 2
             continue
         if name in own and values[name] - h < float(own[name]["min"]):  # at a bound (drag = 0): one-sided
             twice = dict(values)
@@ -96,4 +101,5 @@ def exact_jacobian(
             columns.append((-3.0 * r0 + 4.0 * r1 - r2) / (2.0 * h))
             continue
         columns.append((at(up, x + h * tx, v + h * tv) - at(down, x - h * tx, v - h * tv)) / (2.0 * h))
+    problem.evaluations = runs
     return np.column_stack(columns)
