@@ -1,8 +1,8 @@
 //! The server's quick analyses answered in the page (docs/lab.md): `POST /api/exact` — the exact
 //! solution's quantities of the ideal pendulum's orbit through a state (T-4.1–T-4.6, phases T-5.1) — and
-//! `POST /api/effective_potential` — V_eff(θ) = −m g l cos θ + J₃²/(2 m l² sin²θ) [J] (T-2.5) — with the
-//! same request bodies, limits and answers as `pendulab.server.rest`. SI units: l [m], m [kg], g [m/s²],
-//! J₃ [kg m²/s], θ [rad], periods [s].
+//! `POST /api/effective_potential` — V_eff(θ) = −m g l cos θ + J₃²/(2 m l² sin²θ) \[J\] (T-2.5) — with the
+//! same request bodies, limits and answers as `pendulab.server.rest`. SI units: l \[m\], m \[kg\], g [m/s²],
+//! J₃ [kg m²/s], θ \[rad\], periods \[s\].
 
 use crate::wire::LIMITS;
 use pendulab_core::exact::phases::phases;
