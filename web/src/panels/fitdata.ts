@@ -27,6 +27,7 @@ export class FitDataPanel {
   private readonly names: HTMLInputElement;
   private readonly clear: HTMLButtonElement;
   private readonly report: HTMLPreElement;
+  private readonly warnings: HTMLUListElement;
   private busy = false;
 
   constructor(parent: HTMLElement, private readonly actions: FitDataActions) {
@@ -53,12 +54,16 @@ export class FitDataPanel {
     this.clear.addEventListener('click', () => this.reset());
     this.report = el('pre', { class: 'fit-report', 'data-output': 'fit-report', 'aria-live': 'polite' });
     this.report.hidden = true;
+    // the fit's warnings (a model that does not fit the data, a parameter not determined) above the report,
+    // where they cannot be missed (issue 28: an ideal fit of damped data said g = 11.0 without a word)
+    this.warnings = el('ul', { class: 'fit-warnings', 'data-output': 'fit-warnings' });
+    this.warnings.hidden = true;
     for (const row of [load, modelLabel, namesLabel, this.clear]) {
       const p = el('p');
       p.appendChild(row);
       s.appendChild(p);
     }
-    s.appendChild(this.report);
+    s.append(this.warnings, this.report);
     parent.appendChild(s);
     this.input.addEventListener('change', () => {
       const file = this.input.files?.[0];
@@ -70,6 +75,8 @@ export class FitDataPanel {
   reset(): void {
     this.report.hidden = true;
     this.report.textContent = '';
+    this.warnings.hidden = true;
+    this.warnings.replaceChildren();
     this.clear.disabled = true;
     this.input.value = '';
     this.actions.cleared();
@@ -100,6 +107,10 @@ export class FitDataPanel {
       const lines = [answer.report, '', ...paramLines(answer.params), ...answer.warnings.map((w) => `warning: ${w}`)];
       if (answer.measured === null) lines.push(t('fit.noPath'));
       this.report.textContent = lines.join('\n');
+      // the warnings of the fit, and the report's own warning lines
+      const said = [...answer.warnings, ...answer.report.split('\n').filter((l) => /warning|does not fit|misfit/i.test(l))].map((l) => l.replace(/^\s*warning:\s*/i, '').trim());
+      this.warnings.replaceChildren(...[...new Set(said)].map((w) => el('li', {}, `⚠ ${w}`)));
+      this.warnings.hidden = said.length === 0;
       this.clear.disabled = false;
       this.actions.loaded(answer, file.name);
     } catch (e: unknown) {

@@ -33,6 +33,13 @@ export async function checkFitData(page, { check, WAIT }) {
   const text = (await report.textContent()) ?? '';
   const fitted = Number(/^length = (\S+) ±/m.exec(text)?.[1]);
   check(Math.abs(fitted - 0.62) < 0.02, `the lab fits filmed_swing.csv and shows the report (length = ${fitted} m; truth 0.620 m)`);
+  const fits = await page.evaluate(() => {
+    const r = document.querySelector('[data-output="fit-report"]');
+    const w = document.querySelector('[data-output="fit-warnings"]');
+    return { over: r.scrollWidth - r.clientWidth, warnings: w.hidden ? 0 : w.children.length };
+  });
+  check(fits.over <= 1, `the fit report wraps inside the panel (no sideways overflow; ${fits.warnings} warnings shown above it)`);
+
   const loaded = await page
     .waitForFunction(
       (l) => window.pendulab.store.status?.model === 'damped' && Math.abs(window.pendulab.store.status.params.length - l) < 1e-5,
@@ -77,4 +84,13 @@ export async function checkFitData(page, { check, WAIT }) {
   check(points > 500 && inkWith > inkWithout + 50, `the measured path is drawn dotted (${points} points, ${inkWith} gold pixels, ${inkWithout} once cleared)`);
   check(cleared === 0 && (await report.isHidden()), 'the measured path and the report clear');
   await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
+  // the wrong model (the ideal pendulum for a damped swing): the fit says so, above the report
+  await page.locator('[data-input="fit-model"]').selectOption('ideal');
+  await input.setInputFiles([]);
+  await input.setInputFiles('../examples/data/filmed_swing.csv');
+  await page.waitForFunction(() => /fit of the ideal pendulum|ideal/i.test(document.querySelector('[data-output="fit-report"]')?.textContent ?? '') && !/fitting/.test(document.querySelector('[data-output="fit-report"]').textContent), null, { timeout: WAIT });
+  const wrong = await page.evaluate(() => ({ n: document.querySelector('[data-output="fit-warnings"]').hidden ? 0 : document.querySelector('[data-output="fit-warnings"]').children.length, text: document.querySelector('[data-output="fit-warnings"]').textContent }));
+  check(wrong.n >= 1 && /misses the data/.test(wrong.text), `the wrong model (ideal for a damped swing) is flagged above the report: ${wrong.text.slice(0, 90)}…`);
+  await page.locator('[data-action="fit-clear"]').click();
+  await page.locator('[data-input="fit-model"]').selectOption('damped');
 }
