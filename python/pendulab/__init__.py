@@ -18,7 +18,7 @@ from ._core import IntegrationError, InvalidInputError, __version__
 from .ensemble.run import EnsembleResult, simulate_ensemble, states_from_angles
 from .ensemble.save import Save
 from .error_estimate import ErrorEstimate
-from .fitting import FitResult, fit
+from .fitting import Comparison, FitResult, compare_fits, fit
 from .model import Pendulum, State, models
 from .scenario import Scenario, ScenarioError, load_scenario
 from .simulation import Stepper, method_names, methods, simulate
@@ -36,6 +36,7 @@ from .variants.crane import SlewingSway, slewing_sway
 from .variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 
 __all__ = [
+    "Comparison",
     "CompoundPendulum",
     "EMMap",
     "EnsembleResult",
@@ -60,6 +61,7 @@ __all__ = [
     "SwingingSpring",
     "Trajectory",
     "__version__",
+    "compare_fits",
     "em_map",
     "exact",
     "fit",

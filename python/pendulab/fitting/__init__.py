@@ -3,8 +3,9 @@
 ``start`` starting values from the data, ``identify`` what the data determine, ``estimator`` the
 least-squares fit, ``result`` the result. SI units throughout."""
 
+from .compare import Comparison, compare_fits
 from .data import KINDS
 from .estimator import fit
 from .result import FitResult
 
-__all__ = ["KINDS", "FitResult", "fit"]
+__all__ = ["KINDS", "Comparison", "FitResult", "compare_fits", "fit"]

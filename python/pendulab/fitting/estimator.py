@@ -119,8 +119,9 @@ def fit(
             stacklevel=2,
         )
     free = free_names(fit_names, model, state0 is not None, obs.columns, planar)
-    if planar and state0 is None:
-        values.update(phi0=0.0, phi_dot0=0.0)
+    if planar and state0 is None:  # the swing's plane is x–z; φ₀ = π puts a negative first angle
+        first = obs.values.get("planar_angle", np.zeros((1, 1)))[: min(5, len(obs)), 0]
+        values.update(phi0=math.pi if float(np.median(first)) < 0.0 else 0.0, phi_dot0=0.0)
     floors = {k: floor_of(obs.t, columns_for_noise(k, v)) for k, v in obs.values.items()}
     spreads = {k: spread_of(columns_for_noise(k, v)) for k, v in obs.values.items()}
     check_motion(floors, spreads, {k: float(np.max(np.abs(v))) for k, v in obs.values.items()})
@@ -207,20 +208,27 @@ def _run(search: Search, starts: list[dict[str, Any]], period: float, show: bool
         costs = [search.cost_at(s, first) for s in starts]
         starts = [starts[i] for i in np.argsort(costs)[:2]]
     bar = tqdm(total=len(starts), desc="fit", unit="start", leave=False) if show else None
+    robust, search.loss = search.loss, "linear"  # a robust loss refits from the plain optimum
+    nested = None
     try:
-        nested = None
         nested = _nested_start(search, starts[0], windows)
-        for s in ([nested] if nested is not None else []) + starts:
+        if nested is not None:  # already an optimum of the whole record: no windows
+            search.from_start(nested, [])
+        for s in starts:
             search.from_start(s, windows)
             if bar is not None:
                 bar.update(1)
-        # several data kinds with unknown noise: weigh each by its own residual scatter and refit
+        # several data kinds with unknown noise: weigh each by its own residual scatter and refit;
+        # a robust loss: its scale from the robust spread of the plain fit's residual (noise-free
+        # data then stay exact, where a scale of the noise floor made every residual an outlier)
         unknown = [k for k, s in problem.obs.sigma.items() if s is None]
-        if len(problem.obs.values) > 1 and unknown:
+        if (len(problem.obs.values) > 1 and unknown) or robust != "linear":
             predicted = problem.predictions(problem.with_free(search.result.x))
             for kind in unknown:
                 part = residual(kind, problem.obs.values[kind], predicted[kind])
-                search.sigma[kind] = max(float(np.sqrt(np.mean(part**2))), 1e-300)
+                spread = 1.4826 * float(np.median(np.abs(part))) if robust != "linear" else 0.0
+                search.sigma[kind] = max(spread or float(np.sqrt(np.mean(part**2))), 1e-300)
+            search.loss = robust
             search.best_cost, search.result = math.inf, search.run(search.result.x)
     except (KeyboardInterrupt, TimeUp) as e:
         cause = "Ctrl-C" if isinstance(e, KeyboardInterrupt) else f"the time limit of {search.time_limit:g} s"
@@ -228,6 +236,7 @@ def _run(search: Search, starts: list[dict[str, Any]], period: float, show: bool
         warnings.warn(f"fit {why}: returning the best values reached", RuntimeWarning, stacklevel=3)
         return True, why, len(starts)
     finally:
+        search.loss = robust
         if bar is not None:
             bar.close()
     return False, "", len(starts) + (nested is not None)
@@ -236,32 +245,37 @@ def _run(search: Search, starts: list[dict[str, Any]], period: float, show: bool
 def _nested_start(
     search: Search, start: Mapping[str, float], windows: Sequence[int]
 ) -> dict[str, float] | None:
-    """With several dissipation laws free, the optimum of the model with only the first of them
-    (the others at 0) as a start of the full search, so that adding a law never ends in a worse
-    optimum than the model without it."""
+    """With several dissipation laws free, the optimum of the nested models — the first law alone,
+    then with the second, … (DISSIPATION's order), each from the previous optimum with the new law at
+    0 — as a start of the full search, so that adding a law never ends in a worse optimum than the
+    chain of models without it."""
     free = search.free
     laws = [n for n in DISSIPATION if n in free]
     if len(laws) < 2:
         return None
-    base = dict(start) | dict.fromkeys(laws[1:], 0.0)
-    keep = [i for i, n in enumerate(free) if n not in laws[1:]]
     problem = search.problem
-    smaller = Problem(problem.model, base, [free[i] for i in keep], problem.obs)
-    inner = Search(
-        smaller,
-        base,
-        search.scales[keep],
-        (search.lower[keep], search.upper[keep]),
-        search.sigma,
-        loss=search.loss,
-        max_evaluations=search.max_evaluations,
-        time_limit=None if search.time_limit is None else max(search.time_limit / 2.0, 1e-3),
-        logged=search.logged[keep],
-    )
-    inner.began = search.began
-    res = inner.from_start(base, windows)
-    problem.evaluations += smaller.evaluations
-    return base | dict(zip(smaller.free, (float(x) for x in res.x), strict=True))
+    current = dict(start) | dict.fromkeys(laws[1:], 0.0)
+    for k in range(1, len(laws)):
+        keep = [i for i, n in enumerate(free) if n not in laws[k:]]
+        smaller = Problem(problem.model, current, [free[i] for i in keep], problem.obs)
+        inner = Search(
+            smaller,
+            current,
+            search.scales[keep],
+            (search.lower[keep], search.upper[keep]),
+            search.sigma,
+            loss=search.loss,
+            max_evaluations=search.max_evaluations,
+            time_limit=search.time_limit,
+            logged=search.logged[keep],
+        )
+        inner.began = search.began
+        try:
+            res = inner.from_start(current, windows if k == 1 else [])
+        finally:
+            problem.evaluations += smaller.evaluations
+        current = current | dict(zip(smaller.free, (float(x) for x in res.x), strict=True))
+    return current
 
 
 def _conclude(
@@ -289,9 +303,15 @@ def _conclude(
     # additive ones, one-sided there: jacobian())
     positive = np.array([n in POSITIVE and u[i] > 0.01 * search.scales[i] for i, n in enumerate(free)])
     steps = np.where(positive, 1e-5, search.scales * 1e-5)
-    jac = jacobian(weighted, u, steps, positive)
+
+    def jac_of(uu: FloatArray) -> FloatArray | None:
+        return search.exact_jacobian(problem, uu)  # forward sensitivities (sensitivity.py) or None
+
+    exact = jac_of(u)
+    jac = exact if exact is not None else jacobian(weighted, u, steps, positive)
     if search.loss == "linear" and not interrupted:
-        u, r, jac = polish(weighted, u, r, jac, steps, positive, search.lower, search.upper, search.time_up)
+        bounds = (search.lower, search.upper)
+        u, r, jac = polish(weighted, u, r, jac, steps, positive, *bounds, search.time_up, jac_of)
     final = problem.with_free(u)
     n_res, k = r.size, len(free)
     dof = max(n_res - k, 1)
@@ -313,6 +333,7 @@ def _conclude(
     correlation = None if exact else Correlation(r, sample, len(obs), lag1)  # round-off has no statistics
     logged = {n for i, n in enumerate(free) if positive[i]}
     ident = analyse(free, final, jac, variance, logged, correlation)
+    misfit = chi2  # Σ r² in units of the search's σ (the data's own floor when σ is not given)
     chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
     chi2_p = None
     if sigma_known:
@@ -356,4 +377,5 @@ def _conclude(
         goodness=goodness,
         bounds={n: (float(search.lower[i]), float(search.upper[i])) for i, n in enumerate(free)},
         planar=planar,
+        misfit=misfit,
     )

@@ -81,6 +81,7 @@ class FitResult:
     inflation: dict[str, float] = field(default_factory=dict)
     bounds: dict[str, tuple[float, float]] = field(default_factory=dict)
     planar: bool = False
+    misfit: float = math.nan
     _problem: Any = field(default=None, repr=False)
 
     @classmethod
@@ -104,6 +105,7 @@ class FitResult:
         goodness: Goodness | None = None,
         bounds: dict[str, tuple[float, float]] | None = None,
         planar: bool = False,
+        misfit: float = math.nan,
     ) -> FitResult:
         names = list(problem.free)
         cov = ident.covariance
@@ -147,6 +149,7 @@ class FitResult:
             inflation=dict(ident.inflation),
             bounds=dict(bounds or {}),
             planar=planar,
+            misfit=misfit,
             _problem=problem,
         )
 
@@ -175,6 +178,25 @@ class FitResult:
         from .problem import model_params
 
         return {n: float(spec["default"]) for n, spec in model_params(self.model).items()}
+
+    @property
+    def aic(self) -> float:
+        """Akaike's information criterion of this fit, for comparing models fitted to the same data
+        (smaller is better; docs/fit.md "Which dissipation law"): χ² + 2k with σ given, otherwise
+        n ln(S/n) + 2k with S the sum of squared residuals in units of the data's noise floor."""
+        return self._deviance + 2.0 * len(self.names)
+
+    @property
+    def bic(self) -> float:
+        """The Bayesian (Schwarz) information criterion: as :attr:`aic` with k ln n for 2k."""
+        return self._deviance + len(self.names) * math.log(self.dof + len(self.names))
+
+    @property
+    def _deviance(self) -> float:
+        n = self.dof + len(self.names)
+        if not self.sigma_estimated:
+            return self.chi2
+        return n * math.log(max(self.misfit, 1e-300) / n)
 
     @property
     def reduced_chi2(self) -> float:
@@ -247,6 +269,9 @@ class FitResult:
         noise = ", ".join(f"{k}: {number(s, 3)} {KINDS[k]}" for k, s in self.sigma.items())
         if self.sigma_estimated:
             noise += " (estimated from the residual, so chi2/dof = 1 by construction)"
+        lines.append(
+            f"  AIC {self.aic:.6g}, BIC {self.bic:.6g} (pl.compare_fits ranks fits of the same data)"
+        )
         if self.planar:
             lines.append(
                 "  planar pendulum (a hinge): phi0 = phi_dot0 = 0 held; planar=False fits the spherical one"

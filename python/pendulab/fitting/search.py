@@ -55,13 +55,15 @@ def polish(
     lo: FloatArray,
     hi: FloatArray,
     time_up: Callable[[], bool] = lambda: False,
+    jac_of: Callable[[FloatArray], FloatArray | None] = lambda u: None,
 ) -> tuple[FloatArray, FloatArray, FloatArray]:
     """Gauss–Newton steps with central-difference Jacobians after the trust-region search: near the
     optimum its forward differences stall short of the float64 floor on noise-free data; these steps
     reach it (directions the data do not determine are left alone by the pseudo-inverse). Four steps,
     and more (up to POLISH_STEPS) while each still cuts the misfit by 4× or more: along a direction
     where the residual is quadratic (a planar swing seen along y: r ∝ φ̇₀²) Gauss–Newton only halves
-    the distance per step. Stops at ``time_up()`` and where the Jacobian or residual is not finite
+    the distance per step. ``jac_of(u)``: an exact Jacobian where there is one (None: central
+    differences). Stops at ``time_up()`` and where the Jacobian or residual is not finite
     (LAPACK would not return on an infinite matrix)."""
     for k in range(POLISH_STEPS):
         if time_up() or not (np.all(np.isfinite(jac)) and np.all(np.isfinite(r))):
@@ -77,7 +79,8 @@ def polish(
             break
         small = np.all(np.abs(trial - u) <= 1e-13 * np.maximum(np.abs(u), 1.0))
         u, r = trial, r_trial
-        jac = jacobian(weighted, u, steps, positive)
+        exact = jac_of(u)
+        jac = exact if exact is not None else jacobian(weighted, u, steps, positive)
         if small:
             break
     return u, r, jac
@@ -153,6 +156,26 @@ class Search:
             )
         return ANCHOR * z
 
+    def anchor_slope(self, u: FloatArray) -> FloatArray:
+        """d(anchor)/du, the diagonal of the anchor's Jacobian."""
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return ANCHOR * np.where(self.logged, 1.0 / np.maximum(u, 1e-300), 1.0 / self.scales)
+
+    def exact_jacobian(self, on: Problem, u: FloatArray) -> FloatArray | None:
+        """∂r/∂u by forward sensitivities (sensitivity.py) where the model has them, finite and
+        evaluable at ``u``; None otherwise (the caller differences). Each counts as one model run."""
+        from .sensitivity import exact_jacobian
+
+        before = on.evaluations  # its cheap re-evaluations of the predictions are not model runs
+        try:
+            j = exact_jacobian(on, on.with_free(u), self.sigma)
+        except (InvalidInputError, IntegrationError, OverflowError, ZeroDivisionError, ValueError):
+            return None
+        finally:
+            on.evaluations = before + 1
+        self.calls += 1
+        return j if j is not None and np.all(np.isfinite(j)) else None
+
     def clip(self, u: FloatArray) -> FloatArray:
         return np.minimum(np.maximum(u, self.lower), self.upper)
 
@@ -179,9 +202,19 @@ class Search:
                 raise _Abandoned
             return np.concatenate([r, self.anchor(u)])
 
+        def jac(u: FloatArray) -> FloatArray:
+            if self.time_up():
+                raise TimeUp
+            j = self.exact_jacobian(on, u)
+            if j is None:  # the model refused this point: central differences of the safe residuals
+                j = jacobian(lambda uu: on.safe_residuals(uu, self.sigma), u, 1e-7 * self.scales)
+            return np.vstack([j, np.diag(self.anchor_slope(u))])
+
+        exact = self.exact_jacobian(on, self.clip(u0)) is not None
         return least_squares(
             fun,
             self.clip(u0),
+            jac=jac if exact else "2-point",
             bounds=(self.lower, self.upper),
             x_scale=self.scales,
             loss=self.loss,
