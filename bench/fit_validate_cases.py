@@ -7,9 +7,10 @@ Three sorts of case (docs/fit.md, "Validation"):
 
 - ``right``: the model fitted is the one that made the data (white or AR(1) noise, quantisation,
   outliers with a robust loss, mid-swing starts, elliptical swings seen from the side, a pivot off the
-  origin; cases 22–24: the sensor's offset, bias or scale fitted as a systematic term). Measured:
-  how often each true parameter lies within ±2 stderr (target 90–98 %) and how often a warning is
-  raised anyway (false alarms).
+  origin; cases 22–24: the sensor's offset, bias or scale fitted as a systematic term; 25: dry
+  friction fitted; 26: a swing that starts on the negative side). Measured: how often each true
+  parameter lies within ±2 stderr (target 90–98 %) and how often a warning is raised anyway (false
+  alarms).
 - ``wrong``: the data contain physics or sensor effects the fitted model lacks (wind, dry pivot
   friction, a wrong damping law, an accelerometer bias, an encoder zero offset, a camera scale error
   with g fixed, outliers with the plain loss). Measured: how often the fit warns (target ≥ 95 %).
@@ -410,6 +411,30 @@ def cases() -> list[Case]:
             {"model": "damped", "g": 9.81},
             _also(_video(VIDEO, scale=1.05), scale=1.05),
             "case 14 with the scale bar fitted (g known)",
+        ),
+        Case(
+            "encoder, dry pivot friction fitted (friction)",
+            "right",
+            ["length", "damping", "friction"],
+            {
+                "model": "damped",
+                "g": 9.80,
+                "damping": 0.01,
+                "friction_speed": coulomb.coulomb_speed / coulomb.length,  # ω_ε = v_ε/l (T-7.6)
+            },
+            _also(
+                _encoder(coulomb, amplitude=1.5, t_from=0.4, duration=30.0, rate=50.0, sigma=3e-4),
+                friction=coulomb.coulomb / coulomb.length,  # ε_f = μ/l [rad/s²]
+            ),
+            "case 11 with the damped model's dry friction fitted",
+        ),
+        Case(
+            "encoder, viscous + drag, released on the negative side",
+            "right",
+            ["g", "damping", "drag"],
+            {"model": "damped", "length": 0.5},
+            _encoder(enc_truth, amplitude=-1.2, t_from=0.1, duration=15.0, rate=50.0, sigma=2e-3),
+            "case 3 mirrored: the first sample at a negative angle",
         ),
     ]
 
