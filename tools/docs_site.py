@@ -18,7 +18,9 @@
   copied into the site from the ``jupyter-server-mathjax`` package, so that formulas render offline
   (with its STIX-Web fonts: ``config/pendulab.js``); each tour page links to its notebook's download
   and to the lab.
-- **The lab.** ``dist/pendulab-lab.html`` (``make lab-html``, which ``make docs`` runs first) is copied
+- **The lab.** The marker ``<!-- lab-scenarios -->`` in ``docs/lab.md`` becomes a table of the example
+  scenarios, each with its "open in the lab" link (``lab/index.html?s=NAME``, the lab's share-link
+  form). ``dist/pendulab-lab.html`` (``make lab-html``, which ``make docs`` runs first) is copied
   to ``site/lab/index.html``: the whole lab in the site, its physics in the page (docs/lab.md).
 - **Checks after the build** (each failure fails the build): the API page has an anchor for every
   name of ``pendulab.__all__``, and no page loads a script, stylesheet or font from the network (the
@@ -54,6 +56,7 @@ MEDIA = {".png": "image", ".svg": "image", ".gif": "image", ".mp4": "video", ".w
 TOUR_GLOB = "tour/*.ipynb"
 CLI_MARKER = "<!-- cli-reference -->"
 LAB_HTML = ROOT / "dist" / "pendulab-lab.html"
+LAB_MARKER = "<!-- lab-scenarios -->"
 
 # Sphinx roles in docstrings (``:class:`pendulab.X```), which Markdown renders as ``:class:<code>…``.
 _ROLE = re.compile(r":(?:class|func|meth|mod|attr|data|exc|obj|ref):(<code>)~?")
@@ -183,10 +186,26 @@ def _run_gallery_script(script: Path) -> list[Path]:
 
 
 def on_page_markdown(markdown: str, page: Any, **kwargs: Any) -> str:
-    """Fills in the CLI reference."""
+    """Fills in the CLI reference and the lab's scenario links."""
+    if LAB_MARKER in markdown:
+        markdown = markdown.replace(LAB_MARKER, lab_scenarios_markdown())
     if CLI_MARKER not in markdown:
         return markdown
     return markdown.replace(CLI_MARKER, cli_reference_markdown())
+
+
+def lab_scenarios_markdown() -> str:
+    """A table of the example scenarios the lab runs, each opened in the site's lab by its share link."""
+    from pendulab.server.app import scenarios
+
+    rows = ["| scenario | what | |", "|---|---|---|"]
+    for s in scenarios():
+        if "error" in s:
+            continue
+        title = _escape(str(s.get("title") or ""))
+        link = f'<a href="lab/index.html?s={s["name"]}">open in the lab</a>'
+        rows.append(f"| `{s['name']}` | {title} | {link} |")
+    return "\n".join(rows)
 
 
 def cli_reference_markdown() -> str:
