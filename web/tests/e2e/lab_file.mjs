@@ -106,6 +106,19 @@ try {
   });
   check(fit.status === 501 && /pendulab serve/.test(fit.detail), `fitting says it needs the server: ${fit.detail}`);
 
+  // two pendulums: the second is a second session in a second worker, started ε = 0.5° apart
+  await page.locator('[data-input="twin-mode"]').selectOption('epsilon');
+  await page.locator('[data-input="twin-epsilon"]').fill('0.5');
+  await page.locator('[data-action="twin-start"]').click();
+  await page.waitForFunction(() => window.pendulab.twin.trajectory.length > 30 && window.pendulab.separation().t.length > 10, null, { timeout: WAIT, polling: 100 });
+  const sep = await page.evaluate(() => {
+    const s = window.pendulab.separation();
+    return { d0: s.d[0], l: window.pendulab.store.status.params.length, twin: window.pendulab.twin.status.scenario };
+  });
+  const want = 2 * sep.l * Math.sin((0.5 * Math.PI) / 180 / 2);
+  check(Math.abs(sep.d0 - want) < 0.02 * want, `two pendulums, two workers: separation ${sep.d0.toExponential(3)} m at the start (2 l sin(ε/2) = ${want.toExponential(3)} m)`);
+  await page.locator('[data-input="twin-mode"]').selectOption('off');
+
   // the share link: the page's URL, opened in a second page from file://, reproduces the run
   await page.evaluate(() => window.pendulab.send({ type: 'set_params', length: 1.7, g: 3.71 }));
   await page.waitForFunction(() => window.pendulab.store.status?.params.length === 1.7, null, { timeout: WAIT });
