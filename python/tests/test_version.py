@@ -27,7 +27,11 @@ def _cargo_version() -> str:
 
 
 def test_crates_and_pyproject_take_the_workspace_version() -> None:
-    for manifest in ("crates/pendulab-core/Cargo.toml", "python/Cargo.toml"):
+    for manifest in (
+        "crates/pendulab-core/Cargo.toml",
+        "crates/pendulab-wasm/Cargo.toml",
+        "python/Cargo.toml",
+    ):
         package = tomllib.loads((ROOT / manifest).read_text(encoding="utf-8"))["package"]
         assert package["version"] == {"workspace": True}, manifest
     project = tomllib.loads((ROOT / "python/pyproject.toml").read_text(encoding="utf-8"))["project"]
