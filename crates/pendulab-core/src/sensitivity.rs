@@ -225,7 +225,6 @@ pub fn sensitivities(
     let mut h = 1e-3 * period_scale.max(1e-6);
     let mut k = [[0.0; N]; STAGES];
     let mut y1 = [0.0; N];
-    let mut yi = [0.0; N];
     let mut tries = 0usize;
     for &target in times {
         while t < target {
@@ -237,31 +236,38 @@ pub fn sensitivities(
             let ht = if clamped { target - t } else { h };
             rhs(model, t, &y, &mut k[0]);
             for i in 1..STAGES {
-                for n in 0..N {
-                    let mut acc = y[n];
-                    for (j, kj) in k.iter().enumerate().take(i) {
-                        acc += ht * A[i][j] * kj[n];
+                // y + h Σ_j A[i][j] k_j, one stage at a time over all components (A has many zeros)
+                let mut yi = y;
+                for (j, kj) in k.iter().enumerate().take(i) {
+                    let c = ht * A[i][j];
+                    if c != 0.0 {
+                        for (z, kz) in yi.iter_mut().zip(kj) {
+                            *z += c * kz;
+                        }
                     }
-                    yi[n] = acc;
                 }
-                let (head, tail) = k.split_at_mut(i);
-                let _ = head;
-                rhs(model, t + C[i] * ht, &yi, &mut tail[0]);
+                rhs(model, t + C[i] * ht, &yi, &mut k[i]);
+            }
+            let (mut incr, mut e5, mut e3) = ([0.0; N], [0.0; 6], [0.0; 6]);
+            for (i, ki) in k.iter().enumerate() {
+                if B[i] != 0.0 {
+                    for (z, kz) in incr.iter_mut().zip(ki) {
+                        *z += B[i] * kz;
+                    }
+                }
+                for n in 0..6 {
+                    e5[n] += E5[i] * ki[n];
+                    e3[n] += E3[i] * ki[n];
+                }
             }
             let (mut n5, mut n3) = (0.0, 0.0);
             for n in 0..N {
-                let (mut incr, mut e5, mut e3) = (0.0, 0.0, 0.0);
-                for (i, ki) in k.iter().enumerate() {
-                    incr += B[i] * ki[n];
-                    e5 += E5[i] * ki[n];
-                    e3 += E3[i] * ki[n];
-                }
-                y1[n] = y[n] + ht * incr;
-                if n < 6 {
-                    let sk = atol + rtol * y[n].abs().max(y1[n].abs());
-                    n5 += (e5 / sk) * (e5 / sk);
-                    n3 += (e3 / sk) * (e3 / sk);
-                }
+                y1[n] = y[n] + ht * incr[n];
+            }
+            for n in 0..6 {
+                let sk = atol + rtol * y[n].abs().max(y1[n].abs());
+                n5 += (e5[n] / sk) * (e5[n] / sk);
+                n3 += (e3[n] / sk) * (e3[n] / sk);
             }
             let err = if n5 == 0.0 && n3 == 0.0 { 0.0 } else { ht * n5 / (6.0 * (n5 + 0.01 * n3)).sqrt() };
             if !err.is_finite() || y1.iter().any(|z| !z.is_finite()) {
