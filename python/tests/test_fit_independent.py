@@ -194,7 +194,6 @@ def test_a_real_decay_with_dry_friction_says_the_model_lacks_something(name: str
     assert _said(caught, res)
 
 
-@pytest.mark.xfail(strict=False, reason="the hinge fit's start: theta0 held in [0, pi] (reported 2026-11-26)")
 def test_a_planar_swing_starting_on_the_negative_side() -> None:
     """An encoder's swing released at rest at −0.5 rad (no noise): the planar angle is signed, so the
     fit must find it as it finds the mirror image at +0.5 rad (to 1e-6)."""
