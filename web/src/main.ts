@@ -209,7 +209,14 @@ async function main(): Promise<void> {
       });
     },
     collapsed: () => undefined,
+    present: (on) => {
+      view.present = on;
+      document.body.classList.toggle('present', on);
+      toolbar.showPresenting(on);
+    },
   });
+  document.body.classList.toggle('present', view.present);
+  toolbar.showPresenting(view.present);
   // the 3-D view by keyboard: focusable, the arrows turn the camera, + − zoom, Shift + ← → the bob's start
   const canvas = scene.renderer.domElement;
   canvas.tabIndex = 0;

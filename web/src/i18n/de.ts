@@ -26,6 +26,7 @@ export const DE: Words = {
   'toolbar.record': 'Video aufnehmen (WebM)',
   'toolbar.recordStop': 'Aufnahme beenden und Video speichern',
   'toolbar.help': 'Tastenkürzel und Farben (?)',
+  'toolbar.present': 'Präsentationsmodus: große Schrift für einen Beamer',
   'toolbar.language': 'Sprache',
   'toolbar.collapse': 'Leiste ausblenden',
   'toolbar.expand': 'Leiste einblenden',

@@ -24,6 +24,7 @@ export const EN = {
   'toolbar.record': 'record a video (WebM)',
   'toolbar.recordStop': 'stop recording and download the video',
   'toolbar.help': 'keyboard shortcuts and colour key (?)',
+  'toolbar.present': 'presentation mode: large type for a projector',
   'toolbar.language': 'language',
   'toolbar.collapse': 'hide the panel',
   'toolbar.expand': 'show the panel',

@@ -26,6 +26,7 @@ export const FR: Words = {
   'toolbar.record': 'filmer la vue (WebM)',
   'toolbar.recordStop': 'arrêter de filmer et télécharger la vidéo',
   'toolbar.help': 'raccourcis clavier et légende des couleurs (?)',
+  'toolbar.present': 'mode présentation : gros caractères pour un vidéoprojecteur',
   'toolbar.language': 'langue',
   'toolbar.collapse': 'masquer le panneau',
   'toolbar.expand': 'afficher le panneau',

@@ -16,6 +16,8 @@ export interface ToolbarActions {
   help(): void;
   language(lang: Lang): void;
   collapsed(on: boolean): void;
+  /** Presentation mode (large type for a projector) switched on or off. */
+  present(on: boolean): void;
 }
 
 function button(action: string, text: string, title: string, open = false): HTMLButtonElement {
@@ -33,6 +35,12 @@ export class Toolbar {
   readonly runButton: HTMLButtonElement;
   readonly recordButton: HTMLButtonElement;
   private readonly toggle: HTMLButtonElement;
+  private readonly presentButton: HTMLButtonElement;
+
+  /** Shows whether presentation mode is on. */
+  showPresenting(on: boolean): void {
+    this.presentButton.setAttribute('aria-pressed', String(on));
+  }
 
   constructor(
     bar: HTMLElement,
@@ -57,6 +65,10 @@ export class Toolbar {
     this.recordButton.addEventListener('click', () => actions.record());
     const help = button('help', '?', t('toolbar.help'));
     help.addEventListener('click', () => actions.help());
+    // presentation mode: large type for a projector at the back of a classroom
+    this.presentButton = button('present', 'A⁺', t('toolbar.present'), true);
+    this.presentButton.setAttribute('aria-pressed', 'false');
+    this.presentButton.addEventListener('click', () => actions.present(this.presentButton.getAttribute('aria-pressed') !== 'true'));
     const lang = document.createElement('select');
     lang.dataset['input'] = 'language';
     lang.classList.add('when-open');
@@ -69,7 +81,7 @@ export class Toolbar {
     }
     lang.value = language();
     lang.addEventListener('change', () => actions.language(lang.value as Lang));
-    bar.append(this.toggle, this.runButton, reset, step, this.recordButton, help, lang);
+    bar.append(this.toggle, this.runButton, reset, step, this.recordButton, help, this.presentButton, lang);
     this.setCollapsed(false);
     // the arrow points where the panel goes: right on a wide screen, down on a phone
     window.matchMedia(PHONE).addEventListener('change', () => this.setCollapsed(panel.classList.contains('collapsed')));

@@ -54,6 +54,8 @@ export interface ViewOptions extends Record<VectorName, boolean> {
   rulerLift: number;
   protractorShift: number;
   protractorLift: number;
+  /** Presentation mode: large type in the panel (the page's; kept here so that a link carries it). */
+  present: boolean;
 }
 
 export const STEREO_MODES = ['off', 'anaglyph', 'side by side'] as const;
@@ -81,6 +83,7 @@ export const DEFAULT_VIEW: ViewOptions = {
   rulerLift: 0,
   protractorShift: 0,
   protractorLift: 0,
+  present: false,
 };
 
 /** Arrow colours (the legend in docs/web.md). */

@@ -87,6 +87,15 @@ export async function checkTouch(page, { check, WAIT }) {
     await page.screenshot({ path: `test-results/touch-${w}x${h}.png` });
   }
   await page.setViewportSize({ width: 1280, height: 800 });
+  // presentation mode: large type, the view still free and the whole sphere in it; the link carries it
+  await page.locator('[data-action="present"]').click();
+  await page.waitForFunction(() => /present/.test(location.search), null, { timeout: WAIT });
+  await page.waitForTimeout(500);
+  const big = await page.evaluate(() => ({ watch: parseFloat(getComputedStyle(document.querySelector('[data-readout="stopwatch"]')).fontSize), body: parseFloat(getComputedStyle(document.querySelector('.tools label')).fontSize) }));
+  const pb = await boxes(page);
+  await page.screenshot({ path: 'test-results/presentation.png' });
+  check(big.watch >= 30 && big.body >= 18 && !overlaps(pb.canvas, pb.panel) && inside(pb.sphere, pb.canvas), `presentation mode: ${big.body} px type, ${big.watch} px readouts, the view free with the whole sphere in it`);
+  await page.locator('[data-action="present"]').click();
   // the server goes away: the page's socket is closed and every reconnection refused, then let through
   const page2 = await page.context().newPage();
   let refuse = false;
