@@ -282,3 +282,16 @@ def test_a_real_decay_needs_friction_and_drag_and_says_so() -> None:
     assert ranked.best is fits[3] and ranked.delta_bic[-1] > 10.0
     assert "ruled out" in ranked.table()
     assert all(r.planar and r.params["length"] == pytest.approx(0.153, rel=0.02) for r in fits.values())
+
+
+def test_profile_likelihood_agrees_with_the_linear_interval_where_the_valley_is_straight(
+    filmed: tuple,
+) -> None:
+    t, xz = filmed
+    noisy = xz + 0.002 * np.random.default_rng(0).standard_normal(xz.shape)
+    res = pl.fit(t, positions=noisy, pendulum=damped(), fit=["length", "g", "damping"])
+    lo, hi = res.profile("g")
+    a, b = res.interval("g")
+    assert lo == pytest.approx(a, abs=0.05 * (b - a)) and hi == pytest.approx(b, abs=0.05 * (b - a))
+    with pytest.raises(KeyError, match="was not fitted"):
+        res.profile("drag")

@@ -32,7 +32,7 @@ from .data import KINDS, Observations, observations, residual
 from .goodness import EXACT, Goodness, check_kind, findings
 from .identify import Correlation, analyse, jacobian
 from .noise import columns_for_noise, floor_of, spread_of
-from .problem import PIVOT_NAMES, Problem, bounds_of, scale_of
+from .problem import PIVOT_NAMES, POSITIVE, Problem, bounds_of, scale_of
 from .result import FitResult
 from .search import Search, TimeUp, polish, windows_of
 from .settings import (
@@ -46,7 +46,6 @@ from .settings import (
 )
 from .start import gravity_starts, phase_starts, sideways_starts, starting_values
 
-POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness", "r0", "scale"}
 #: Dissipation laws, in the order the nested search frees them (estimator.py, :func:`_nested_start`).
 DISSIPATION = ("damping", "friction", "drag")
 
@@ -378,4 +377,6 @@ def _conclude(
         bounds={n: (float(search.lower[i]), float(search.upper[i])) for i, n in enumerate(free)},
         planar=planar,
         misfit=misfit,
+        search_sigma=dict(sig),
+        variance=variance,
     )

@@ -46,6 +46,8 @@ from .data import Observations, predict, residual
 STATE_NAMES = ("theta0", "phi0", "theta_dot0", "phi_dot0")
 PIVOT_NAMES = ("pivot_x", "pivot_y", "pivot_z")
 OFFSET_NAMES = ("t_offset",)
+POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness", "r0", "scale"}
+"""Parameters that are positive by nature: the search and the error analysis work in ln p for them."""
 SYSTEMATIC_NAMES = {"scale": 1.0, "angle_offset": 0.0, "force_bias": 0.0, "rate_bias": 0.0}
 """The systematic terms of the measurement and their neutral values (module doc)."""
 ROD_MODELS = ("ideal", "damped", "rotating", "slewing", "vibrating")

@@ -83,6 +83,8 @@ class FitResult:
     planar: bool = False
     misfit: float = math.nan
     _problem: Any = field(default=None, repr=False)
+    _search_sigma: dict[str, float] = field(default_factory=dict, repr=False)
+    _variance: float = field(default=1.0, repr=False)
 
     @classmethod
     def build(
@@ -106,6 +108,8 @@ class FitResult:
         bounds: dict[str, tuple[float, float]] | None = None,
         planar: bool = False,
         misfit: float = math.nan,
+        search_sigma: dict[str, float] | None = None,
+        variance: float = 1.0,
     ) -> FitResult:
         names = list(problem.free)
         cov = ident.covariance
@@ -151,6 +155,8 @@ class FitResult:
             planar=planar,
             misfit=misfit,
             _problem=problem,
+            _search_sigma=dict(search_sigma or {}),
+            _variance=variance,
         )
 
     @property
@@ -224,6 +230,16 @@ class FitResult:
         lo, hi = self.bounds.get(name, (-math.inf, math.inf))
         value = self.params[name]
         return (max(value - half, lo), min(value + half, hi))
+
+    def profile(self, name: str, level: float = 0.95, max_refits: int = 40) -> tuple[float, float]:
+        """The profile-likelihood interval of a fitted parameter [its unit] at ``level``: where the
+        misfit, minimised over all other unknowns with ``name`` held, has risen by the χ²(1) quantile
+        (3.84 at 0.95) in units of the noise (profile.py). Unlike :meth:`interval` it follows a curved
+        or one-sided valley; each side costs up to ``max_refits``/2 refits. An end the misfit never
+        rises enough to reach (a bound, or a parameter the data do not determine) is ±inf or the bound."""
+        from .profile import profile_interval
+
+        return profile_interval(self, name, level, max_refits)
 
     def _at_bound(self, name: str) -> str:
         lo, hi = self.bounds.get(name, (-math.inf, math.inf))
