@@ -5,9 +5,11 @@
 //! J₃ [kg m²/s], θ \[rad\], periods \[s\].
 
 use crate::wire::LIMITS;
+use pendulab_core::exact::energy_momentum::conical_boundary;
 use pendulab_core::exact::phases::phases;
 use pendulab_core::exact::ExactSolution;
 use pendulab_core::model::{energy, j3, IdealPendulum};
+use pendulab_core::reduce::invariants;
 use pendulab_core::state::Params;
 use pendulab_core::{DVec3, State};
 use serde_json::{json, Value};
@@ -146,6 +148,98 @@ pub fn effective_potential(body: &Value) -> Answer {
     result.map_or_else(unprocessable, |v| (200, v))
 }
 
+/// Longest stretch of the orbit [s] the reduced view shows (the server's `MAX_ORBIT_TIME`).
+pub const MAX_ORBIT_TIME: f64 = 30.0;
+
+fn count(body: &Value, key: &str, default: u64, lo: u64, hi: u64) -> Result<u64, String> {
+    body.get(key)
+        .map_or(Some(default), Value::as_u64)
+        .filter(|n| (lo..=hi).contains(n))
+        .ok_or(format!("{key}: an integer from {lo} to {hi}"))
+}
+
+/// `POST /api/em_map`.
+pub fn em_view(body: &Value) -> Answer {
+    let result = (|| -> Result<Value, String> {
+        let p = params(body)?;
+        let s = state(body, &p)?;
+        let n = count(body, "n", 401, 16, 4001)? as usize;
+        if p.g == 0.0 {
+            return Err(
+                "the energy-momentum map needs gravity: g = 0 m/s^2 has no potential (every orbit is a \
+                        great circle); give g > 0 (or g < 0, the mirror image)"
+                    .into(),
+            );
+        }
+        let (eu, mu) = (p.mass * p.g.abs() * p.length, p.mass * p.length * p.length * p.omega0());
+        // heights u = z/l ∈ (−1, 0) spaced to resolve both ends, as pendulab.theory.em_map
+        let half: Vec<(f64, f64)> = (1..n - 1)
+            .map(|i| {
+                let s = i as f64 / (n - 1) as f64;
+                conical_boundary(-(0.5 * PI * s).cos().powi(2))
+            })
+            .collect();
+        let mut j: Vec<f64> = half.iter().rev().map(|(j, _)| -j * mu).collect();
+        let mut e: Vec<f64> = half.iter().rev().map(|(_, e)| e * eu).collect();
+        j.push(0.0);
+        e.push(-eu);
+        j.extend(half.iter().map(|(j, _)| j * mu));
+        e.extend(half.iter().map(|(_, e)| e * eu));
+        let model = IdealPendulum::new(p.length, p.mass, p.g).map_err(|e| e.to_string())?;
+        Ok(json!({
+            "boundary": { "j3": j, "energy": e },
+            "bottom": { "j3": 0.0, "energy": -eu },
+            "top": { "j3": 0.0, "energy": eu },
+            "point": { "j3": j3(&model, &s), "energy": energy(&model, &s) },
+            "units": { "j3": "kg m^2/s", "energy": "J" },
+        }))
+    })();
+    result.map_or_else(unprocessable, |v| (200, v))
+}
+
+/// `POST /api/reduced`.
+pub fn reduced_view(body: &Value) -> Answer {
+    let result = (|| -> Result<Value, String> {
+        let p = params(body)?;
+        let s = state(body, &p)?;
+        let n = count(body, "n", 400, 16, 4000)? as usize;
+        let grid = count(body, "grid", 41, 5, 121)? as usize;
+        let sol = ExactSolution::new(&p, &s).map_err(|e| e.to_string())?;
+        let span = match sol.period_z() {
+            Some(t) if t.is_finite() && t > 0.0 => t.min(MAX_ORBIT_TIME),
+            _ => MAX_ORBIT_TIME,
+        };
+        let mut orbit = [Vec::with_capacity(n), Vec::with_capacity(n), Vec::with_capacity(n)];
+        for i in 0..n {
+            let t = span * i as f64 / (n - 1) as f64;
+            let sigma = invariants(p.length, &sol.state(t).map_err(|e| e.to_string())?);
+            for (k, o) in orbit.iter_mut().enumerate() {
+                o.push(sigma[k]);
+            }
+        }
+        let sigma = invariants(p.length, &s);
+        let (j, gamma) = (sigma[5], p.g / p.length);
+        let h = 0.5 * sigma[2] + gamma * sigma[0];
+        let s2max = (1.5 * orbit[1].iter().fold(0.0f64, |m, v| m.max(v.abs()))).max(1.0).max(j.abs());
+        let line = |a: f64, b: f64| -> Vec<f64> {
+            (0..grid).map(|i| a + (b - a) * i as f64 / (grid - 1) as f64).collect()
+        };
+        let (s1, s2) = (line(-0.95, 0.95), line(-s2max, s2max));
+        let s3: Vec<Vec<f64>> =
+            s1.iter().map(|a| s2.iter().map(|b| (b * b + j * j) / (1.0 - a * a)).collect()).collect();
+        Ok(json!({
+            "orbit": { "sigma1": orbit[0], "sigma2": orbit[1], "sigma3": orbit[2] },
+            "orbit_time": span,
+            "surface": { "sigma1": s1, "sigma2": s2, "sigma3": s3 },
+            "plane": { "h": h, "gamma": gamma },
+            "point": [sigma[0], sigma[1], sigma[2]],
+            "j": j,
+            "units": { "sigma1": "1", "sigma2": "1/s", "sigma3": "1/s^2", "h": "1/s^2", "gamma": "1/s^2", "j": "1/s" },
+        }))
+    })();
+    result.map_or_else(unprocessable, |v| (200, v))
+}
+
 /// The answer to a request `{"path": "api/…", "body": {…}}` (404 for paths not answered here).
 pub fn request(text: &str) -> Answer {
     let Ok(req) = serde_json::from_str::<Value>(text) else {
@@ -154,6 +248,8 @@ pub fn request(text: &str) -> Answer {
     match req["path"].as_str().unwrap_or("") {
         "api/exact" => exact_quantities(&req["body"]),
         "api/effective_potential" => effective_potential(&req["body"]),
+        "api/em_map" => em_view(&req["body"]),
+        "api/reduced" => reduced_view(&req["body"]),
         other => (404, json!({ "detail": format!("{other} is not answered in the page") })),
     }
 }

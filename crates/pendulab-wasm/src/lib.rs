@@ -168,7 +168,8 @@ pub extern "C" fn pl_run(ptr: *const u8, len: usize) -> i32 {
 }
 
 /// A REST request answered in the page ([`analyses::request`]: `{"path": "api/exact" |
-/// "api/effective_potential", "body": {…}}`): its HTTP status, with the JSON answer in the output.
+/// "api/effective_potential" | "api/em_map" | "api/reduced", "body": {…}}`): its HTTP status, with the
+/// JSON answer in the output.
 #[no_mangle]
 pub extern "C" fn pl_request(ptr: *const u8, len: usize) -> i32 {
     let (status, body) = analyses::request(&input(ptr, len));

@@ -141,3 +141,50 @@ fn v_eff_has_its_minimum_at_the_conical_orbit() {
     assert!((at - tc).abs() <= std::f64::consts::PI / (n + 1) as f64, "{at} vs {tc}");
     assert_eq!(a["theta"].as_array().unwrap().len(), n);
 }
+
+fn nums(v: &Value) -> Vec<f64> {
+    v.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect()
+}
+
+#[test]
+fn a_conical_orbit_lies_on_the_energy_momentum_boundary() {
+    use pendulab_wasm::analyses::request;
+    let (l, m, g, tc) = (1.2f64, 0.5f64, 9.81f64, 1.0f64);
+    let phi_dot = (g / (l * tc.cos())).sqrt();
+    let (status, a) = request(&format!(
+        r#"{{"path": "api/em_map", "body": {{"length": {l}, "mass": {m}, "g": {g}, "theta": {tc}, "phi_dot": {phi_dot}, "n": 4001}}}}"#
+    ));
+    assert_eq!(status, 200, "{a}");
+    let (j, e) = (nums(&a["boundary"]["j3"]), nums(&a["boundary"]["energy"]));
+    let (pj, pe) = (a["point"]["j3"].as_f64().unwrap(), a["point"]["energy"].as_f64().unwrap());
+    assert!((pj - m * l * l * tc.sin().powi(2) * phi_dot).abs() < 1e-12);
+    // the vertex is the bottom, and the conical point is on the curve (to its sampling)
+    let w = m * g * l;
+    assert!(j.iter().zip(&e).any(|(a, b)| *a == 0.0 && (*b + w).abs() < 1e-12));
+    let (ju, eu) = (m * l * l * (g / l).sqrt(), w);
+    let d = j.iter().zip(&e).map(|(a, b)| ((a - pj) / ju).hypot((b - pe) / eu)).fold(f64::INFINITY, f64::min);
+    assert!(d < 2e-3, "{d}");
+    assert_eq!(request(r#"{"path": "api/em_map", "body": {"g": 0, "theta": 1}}"#).0, 422);
+}
+
+#[test]
+fn the_reduced_orbit_keeps_the_casimir_and_the_energy_plane() {
+    use pendulab_wasm::analyses::request;
+    let (status, a) = request(
+        r#"{"path": "api/reduced", "body": {"length": 1.5, "mass": 1, "g": 9.81, "theta": 1.2, "theta_dot": 0.4, "phi_dot": 2.0}}"#,
+    );
+    assert_eq!(status, 200, "{a}");
+    let (s1, s2, s3) =
+        (nums(&a["orbit"]["sigma1"]), nums(&a["orbit"]["sigma2"]), nums(&a["orbit"]["sigma3"]));
+    let (j, h, gamma) =
+        (a["j"].as_f64().unwrap(), a["plane"]["h"].as_f64().unwrap(), a["plane"]["gamma"].as_f64().unwrap());
+    assert_eq!(s1.len(), 400);
+    for i in 0..s1.len() {
+        // T-3.2/T-3.3: C = σ₃(1 − σ₁²) − σ₂² − j² = 0 and H = ½σ₃ + γσ₁ = h along the orbit
+        let c = s3[i] * (1.0 - s1[i] * s1[i]) - s2[i] * s2[i] - j * j;
+        assert!(c.abs() < 1e-9 * s3[i].max(1.0), "C = {c} at {i}");
+        assert!((0.5 * s3[i] + gamma * s1[i] - h).abs() < 1e-9 * h.abs().max(1.0), "H at {i}");
+    }
+    // the orbit spans one z-period: σ₁ comes back to where it started
+    assert!((s1[0] - s1[s1.len() - 1]).abs() < 1e-9);
+}

@@ -1,14 +1,13 @@
 // The page's REST requests when the physics runs in the page (docs/lab.md): GET api/schema and
 // api/scenarios are answered from what the one-file lab carries (the server's answers when the file was
-// built); POST api/exact and api/effective_potential by the core in the page (an Engine on this thread:
-// quick, bounded computations); what needs Python — the fit of a data file, the energy–momentum map and
-// the reduced view (computed by the server's worker processes), the scenario as TOML — is answered 501
-// with a message saying so, which the panels show.
+// built); POST api/exact, api/effective_potential, api/em_map and api/reduced by the core in the page
+// (an Engine on this thread: bounded computations, a few ms); what needs Python — the fit of a data file,
+// the scenario as a TOML file — is answered 501 with a message saying so, which the panels show.
 import type { LabBundle } from './index';
 import type { Engine } from './wasm';
 
 /** The requests the core answers in the page. */
-export const IN_PAGE = ['api/exact', 'api/effective_potential'];
+export const IN_PAGE = ['api/exact', 'api/effective_potential', 'api/em_map', 'api/reduced'];
 
 /** The message of a request that needs the server. */
 export function needsServer(what: string): string {
@@ -17,8 +16,6 @@ export function needsServer(what: string): string {
 
 const WHAT: Record<string, string> = {
   'api/fit': 'fitting a data file',
-  'api/em_map': 'the energy–momentum map',
-  'api/reduced': 'the reduced view',
   'api/scenario.toml': 'the scenario as a TOML file',
 };
 

@@ -62,7 +62,7 @@ export class Engine {
   }
 
   /** A REST request answered by the core in the page (crates/pendulab-wasm/src/analyses.rs): api/exact,
-   *  api/effective_potential; its HTTP status and JSON answer. */
+   *  api/effective_potential, api/em_map, api/reduced; its HTTP status and JSON answer. */
   request(path: string, body: unknown): { status: number; body: unknown } {
     const { code, out } = this.call(JSON.stringify({ path, body }), (p, n) => this.w.pl_request(p, n));
     return { status: code, body: JSON.parse(new TextDecoder().decode(out)) as unknown };

@@ -75,6 +75,12 @@ try {
   }, s0);
   check(exact.kind === 'generic' && exact.period_z > 0 && Math.abs(exact.energy - (await page.evaluate(() => window.pendulab.store.trajectory[0].energy))) < 1e-12,
     `the exact solution in the page: ${exact.kind}, T_z = ${exact.period_z} s, W = ${exact.rotation_number}`);
+  const views = await page.evaluate(async (s) => {
+    const post = async (path) => (await fetch(path, { method: 'POST', body: JSON.stringify({ ...s.params, ...s.start }) })).json();
+    const [em, red] = [await post('api/em_map'), await post('api/reduced')];
+    return { boundary: em.boundary?.j3.length, orbit: red.orbit?.sigma1.length };
+  }, s0);
+  check(views.boundary > 100 && views.orbit > 100, `the EM map and the reduced view in the page (${views.boundary} boundary points, ${views.orbit} orbit points)`);
   await page.screenshot({ path: 'test-results/lab-file.png' });
 
   // the same commands as over the WebSocket: the model picker's damped model, then its damping

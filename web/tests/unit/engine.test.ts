@@ -61,7 +61,7 @@ describe('answer', () => {
     expect(await r?.json()).toEqual({ kind: 'generic' });
     expect(asked).toEqual([['api/exact', { length: 1 }]]);
     expect(answer('api/effective_potential', lab, engine as never, 'not json')?.status).toBe(422);
-    expect(answer('api/em_map', lab, engine as never, '{}')?.status).toBe(501);
+    expect(answer('api/scenario.toml', lab, engine as never, '{}')?.status).toBe(501);
   });
   it('leaves other requests to the network', () => {
     expect(answer('https://example.org/api/schema', lab)).toBeNull();
