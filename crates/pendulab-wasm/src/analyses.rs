@@ -148,7 +148,7 @@ pub fn effective_potential(body: &Value) -> Answer {
     result.map_or_else(unprocessable, |v| (200, v))
 }
 
-/// Longest stretch of the orbit [s] the reduced view shows (the server's `MAX_ORBIT_TIME`).
+/// Longest stretch of the orbit \[s\] the reduced view shows (the server's `MAX_ORBIT_TIME`).
 pub const MAX_ORBIT_TIME: f64 = 30.0;
 
 fn count(body: &Value, key: &str, default: u64, lo: u64, hi: u64) -> Result<u64, String> {
