@@ -64,6 +64,8 @@ declare global {
       twinOnScreen: () => { x: number; y: number } | null;
       /** Where the ruler's and the protractor's centres are drawn on the page (null: not shown). */
       instrumentsOnScreen: () => { ruler: { x: number; y: number } | null; protractor: { x: number; y: number } | null };
+      /** Tones the sonification played (a tone per lowest point while the sound is on). */
+      tones: () => number;
       sphereOnScreen: () => { left: number; right: number; top: number; bottom: number };
       /** The separation of the two bobs, |r₁ − r₂| [m] at the first one's history times [s]. */
       separation: () => { t: number[]; d: number[] };
@@ -469,6 +471,7 @@ async function main(): Promise<void> {
     twin: twin.store,
     twinOnScreen: () => scene.twinOnScreen(),
     instrumentsOnScreen: () => scene.instrumentsOnScreen(),
+    tones: () => tools.tones,
     sphereOnScreen: () => scene.sphereOnScreen(),
     separation: () => twin?.separationNow() ?? { t: [], d: [] },
     energy: () => energy.shown,
@@ -530,7 +533,7 @@ async function main(): Promise<void> {
       const ctx = { mass, g, length };
       chosen.update(store.history.frames, ctx, twin?.on ? twin.store.history.frames : null);
       twin?.update(byId('plots').clientWidth - 8);
-      tools.update(f?.x ?? null, f?.t ?? null);
+      tools.update(f?.x ?? null, f?.t ?? null, f ? Math.hypot(...f.v) : 0);
       writeUrl();
       const latest = store.latest();
       const split = latest ? energySplit(latest, mass, g, length, store.work) : null;

@@ -134,6 +134,8 @@ export class PeriodTimer {
   private prev: Frame | null = null;
   private phi = 0;
   private lows: Low[] = [];
+  /** Lowest points counted since the last reset (the sound's clicks, tools.ts). */
+  lowCount = 0;
   private zLow = Infinity;
   private zHigh = -Infinity;
   private rMax = 0;
@@ -150,6 +152,7 @@ export class PeriodTimer {
     this.prev = null;
     this.phi = 0;
     this.lows = [];
+    this.lowCount = 0;
     this.zLow = Infinity;
     this.zHigh = -Infinity;
     this.rMax = 0;
@@ -198,6 +201,7 @@ export class PeriodTimer {
           thetaMin: Math.min(this.thMin, th),
         });
         if (this.lows.length > 2 * this.keep + 1) this.lows.shift();
+        this.lowCount++;
       }
       this.zLow = this.zHigh = f.x[2];
       [this.rMax, this.thMax, this.thMin] = [r, th, th];

@@ -235,6 +235,7 @@ export const DE: Words = {
   'describe.energy': '; Energie {k} % kinetisch, {u} % potentiell',
   'describe.lost': ', {p} % durch Reibung verloren',
   'describe.toggle': 'Bewegung alle 5 s beschreiben (Bildschirmleser; D: jetzt)',
+  'tools.sound': 'Ton: ein Ton an jedem tiefsten Punkt (höher, wenn schneller)',
   'tools.mystery': 'geheimer Planet (g aus der Periode bestimmen)',
   'tools.reveal': 'g zeigen',
   'tools.mysteryOn': 'ein geheimer Planet: Schwingungen stoppen und g = 4π² l / T² ausrechnen',

@@ -233,6 +233,7 @@ export const EN = {
   'describe.energy': '; energy {k} % kinetic, {u} % potential',
   'describe.lost': ', {p} % lost to friction',
   'describe.toggle': 'describe the motion every 5 s (screen readers; D: now)',
+  'tools.sound': 'sound: a tone at each lowest point (higher when faster)',
   'tools.mystery': 'mystery planet (find g from the period)',
   'tools.reveal': 'reveal g',
   'tools.mysteryOn': 'a mystery planet: time the swings and work out g = 4π² l / T²',

@@ -235,6 +235,7 @@ export const FR: Words = {
   'describe.energy': ' ; énergie {k} % cinétique, {u} % potentielle',
   'describe.lost': ', {p} % perdue par frottement',
   'describe.toggle': 'décrire le mouvement toutes les 5 s (lecteurs d’écran ; D : maintenant)',
+  'tools.sound': 'son : un ton à chaque point le plus bas (plus aigu si plus rapide)',
   'tools.mystery': 'planète mystère (trouver g avec la période)',
   'tools.reveal': 'révéler g',
   'tools.mysteryOn': 'une planète mystère : chronométrer les oscillations et calculer g = 4π² l / T²',

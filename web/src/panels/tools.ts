@@ -46,6 +46,12 @@ export function mysteryGravity(u: number): number {
   return g;
 }
 
+/** The tone [Hz] for a bob passing its lowest point at `speed` [m/s]: 440 Hz at rest, an octave up per
+ *  2 m/s, at most 1760 Hz. */
+export function soundPitch(speed: number): number {
+  return Math.min(1760, 440 * 2 ** (Math.max(0, speed) / 2));
+}
+
 export interface ToolActions {
   send(cmd: Command): void;
   explain(text: string, info?: boolean): void;
@@ -96,6 +102,31 @@ export class Tools {
   private readonly description: HTMLElement;
   private readonly describeLive: HTMLInputElement;
   private describedAt = -Infinity;
+  private readonly sound: HTMLInputElement;
+  private audio: AudioContext | null = null;
+  private heard = 0;
+  /** Tones played (for tests). */
+  tones = 0;
+
+  /** A tone for each new lowest point while the sound is on; `speed` [m/s] there sets the pitch. */
+  private listen(speed: number): void {
+    const n = this.store.periodTimer.lowCount;
+    if (n < this.heard) this.heard = n; // the timer was reset
+    if (n === this.heard) return;
+    this.heard = n;
+    if (!this.sound.checked || typeof AudioContext === 'undefined') return;
+    this.audio ??= new AudioContext();
+    const ctx = this.audio;
+    const osc = ctx.createOscillator();
+    const gain = ctx.createGain();
+    osc.frequency.value = soundPitch(speed);
+    gain.gain.setValueAtTime(0.15, ctx.currentTime);
+    gain.gain.exponentialRampToValueAtTime(0.001, ctx.currentTime + 0.12);
+    osc.connect(gain).connect(ctx.destination);
+    osc.start();
+    osc.stop(ctx.currentTime + 0.12);
+    this.tones++;
+  }
   private spokenUntil = -Infinity;
 
   private endMystery(): void {
@@ -201,7 +232,12 @@ export class Tools {
     const dl = el('label');
     this.describeLive = el('input', { type: 'checkbox', 'data-input': 'describe' });
     dl.append(this.describeLive, ` ${t('describe.toggle')}`);
-    now.append(this.angleText, this.description, dl);
+    // sonification: a short tone each time the bob passes its lowest point (the period timer's count), its
+    // pitch rising with the speed there — the rhythm of the swing to the ear
+    const sl = el('label');
+    this.sound = el('input', { type: 'checkbox', 'data-input': 'sound' });
+    sl.append(this.sound, ` ${t('tools.sound')}`);
+    now.append(this.angleText, this.description, dl, sl);
 
     // stopwatch
     const sw = section(container, t('tools.stopwatch'), 'stopwatch');
@@ -268,8 +304,9 @@ export class Tools {
   }
 
   /** The readouts at the drawn frame (10 times a second). */
-  update(x: readonly [number, number, number] | null, tNow: number | null): void {
+  update(x: readonly [number, number, number] | null, tNow: number | null, speed = 0): void {
     if (tNow !== null) this.now = tNow;
+    this.listen(speed);
     const angles = x === null ? null : sphericalAngles(x as [number, number, number]);
     const text = angles === null ? '—' : `θ = ${(angles.theta * DEG).toFixed(1)}°   φ = ${(angles.phi * DEG).toFixed(1)}°`;
     if (this.angleText.textContent !== text) this.angleText.textContent = text;

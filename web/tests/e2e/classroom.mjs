@@ -391,6 +391,10 @@ async function checkInclusion(page, { check, WAIT }) {
   await page.waitForFunction(() => /from the vertical/.test(document.querySelector('[data-readout="describe"]').textContent), null, { timeout: WAIT });
   const words = await page.evaluate(() => ({ text: document.querySelector('[data-readout="describe"]').textContent, live: document.querySelector('[data-readout="describe"]').getAttribute('aria-live') }));
   check(words.live === 'polite' && /speed \d+\.\d\d m\/s; energy \d+ % kinetic, \d+ % potential/.test(words.text), `D describes the motion in a live region: "${words.text}"`);
+  await page.locator('[data-input="sound"]').check();
+  await page.waitForFunction(() => window.pendulab.tones() >= 2, null, { timeout: WAIT });
+  await page.locator('[data-input="sound"]').uncheck();
+  check(true, 'sound: a tone at each lowest point (2 heard)');
   await page.locator('[data-input="gravity-preset"]').selectOption('mystery');
   await page.waitForFunction(() => window.pendulab.store.status.params.g !== 9.81 && document.body.classList.contains('mystery'), null, { timeout: WAIT });
   const hidden = await page.evaluate(() => getComputedStyle(document.querySelector('#gui [data-param="g"] .lil-widget')).visibility);

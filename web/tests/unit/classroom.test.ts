@@ -10,7 +10,7 @@ import { ownsKeys, shortcutFor, sliderSteps } from '../../src/keyboard';
 import { chooseLanguage, LANGUAGES, modelWords, paramWords, setLanguage, t } from '../../src/i18n';
 import { EN } from '../../src/i18n/en';
 import { frameAt, positionAt, separation, sideBySide, tiltedStart, twinCommands } from '../../src/twin';
-import { frictionCommand, GRAVITY_PRESETS, mysteryGravity, startCommand, swingTheoryFor } from '../../src/panels/tools';
+import { frictionCommand, GRAVITY_PRESETS, mysteryGravity, soundPitch, startCommand, swingTheoryFor } from '../../src/panels/tools';
 import { describeMotion } from '../../src/describe';
 import { stripFormulaRefs } from '../../src/advanced';
 import { chartSummary } from '../../src/panels/alttext';
@@ -417,5 +417,13 @@ describe('inclusion (issue 28)', () => {
     expect(stripFormulaRefs('classic RK4 on the Cartesian ODE T-2.4, no projection')).toBe('classic RK4 on the Cartesian ODE, no projection');
     expect(stripFormulaRefs('Holm’s Figure 2 (docs/theory.md §3)')).toBe('Holm’s Figure 2');
     expect(stripFormulaRefs('in a rotating frame (Foucault, T-7.3), optionally damped')).toBe('in a rotating frame (Foucault), optionally damped');
+  });
+  it('sound: 440 Hz at rest, an octave per 2 m/s, at most 1760 Hz; one count per lowest point', () => {
+    expect(soundPitch(0)).toBe(440);
+    expect(soundPitch(2)).toBe(880);
+    expect(soundPitch(100)).toBe(1760);
+    const p = new PeriodTimer();
+    for (const f of planar((t) => 0.3 * Math.cos(2 * Math.PI * t), (t) => -0.6 * Math.PI * Math.sin(2 * Math.PI * t), 2.1)) p.push(f);
+    expect(p.lowCount).toBe(4); // lowest points at 0.25, 0.75, 1.25, 1.75 s
   });
 });
