@@ -339,7 +339,8 @@ class Trajectory:
         ``fps`` [frames per s of video]; ``speed`` [simulated s per s of video]; ``duration`` [s of
         video] (default: all of it); ``panels``: any of ``3d``, ``top``, ``z``, ``reduced``, ``veff``;
         ``size`` [px] (width, height) or "1280x720". Between saved samples the bob moves along the
-        cubic Hermite interpolant of (x, v) (error O(h⁴) in the sample spacing h). ``options``:
+        cubic Hermite interpolant of (x, v) (error O(h⁴) in the sample spacing h); a moving pivot's
+        path is drawn and the rod hangs from where the pivot is. ``options``:
         ``trail`` [s], ``vectors``, ``azimuth``, ``elevation`` [deg], ``progress`` (see
         :func:`pendulab.animate.render`; ``docs/animate.md``)."""
         from .animate import from_samples, render
@@ -347,7 +348,9 @@ class Trajectory:
 
         p = self.pendulum
         label = f"{model_words(p.model)}: {method_words(self.method)}"
-        motion = from_samples(self.t, self.x, self.v, length=p.length, g=p.g, mass=p.mass, label=label)
+        motion = from_samples(
+            self.t, self.x, self.v, length=p.length, g=p.g, mass=p.mass, label=label, pivot=self.pivot
+        )
         return render(
             motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
         )

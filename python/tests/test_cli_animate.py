@@ -94,3 +94,27 @@ def test_ctrl_c_stops_the_movie_and_leaves_no_file(tmp_path):
     assert proc.returncode == 130, stderr
     assert stderr.strip().endswith("error: interrupted (Ctrl-C)") and "Traceback" not in stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_animate_the_swinging_spring(tmp_path):
+    out = tmp_path / "spring.gif"
+    code, stdout, _ = invoke(
+        "animate", str(SCENARIOS / "swinging_spring.toml"), "--out", str(out), "--t-end", "1.0",
+        "--size", "320x180", "--fps", "5", "--panels", "3d,z",
+    )  # fmt: skip
+    assert code == 0, stdout
+    assert "6 frames" in stdout
+    with Image.open(out) as im:
+        assert im.size == (320, 180) and im.n_frames >= 2  # identical frames are merged in a GIF
+
+
+@pytest.mark.parametrize(
+    ("args", "message"),
+    [(["--exact"], "'spring' model has none"), (["--panels", "3d,veff"], "takes the panels 3d, top, z")],
+)
+def test_animate_refuses_what_a_spring_cannot_show(tmp_path, args, message):
+    code, _, stderr = invoke(
+        "animate", str(SCENARIOS / "swinging_spring.toml"), "--out", str(tmp_path / "m.mp4"), *args
+    )
+    assert code == 2 and message in stderr, stderr
+    assert list(tmp_path.iterdir()) == []

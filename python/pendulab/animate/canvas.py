@@ -51,6 +51,9 @@ class Theme:
     axes: RGB = (120, 120, 120)
     faint: RGB = (200, 214, 230)
     energy: RGB = (255, 127, 14)
+    pivot: RGB = (148, 103, 189)
+    """A moving pivot's path (whole: faint; recent: a fading trail) and the pivot itself."""
+    floor: RGB = (232, 235, 240)
     ensemble: tuple[RGB, ...] = ((68, 1, 84), (59, 82, 139), (33, 145, 140), (94, 201, 98), (253, 200, 37))
     """The ensemble's bobs are coloured along this gradient in the order of their rows."""
 
@@ -67,6 +70,8 @@ class Theme:
             self.axes,
             self.faint,
             self.energy,
+            self.pivot,
+            self.floor,
         ]
         return named + [self.gradient(i, GRADIENT_STEPS) for i in range(GRADIENT_STEPS)]
 

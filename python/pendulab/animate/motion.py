@@ -17,6 +17,13 @@ data. Three sources:
 
 The states come as arrays of shape (n_times, n_bobs, 3). Bobs whose samples are not finite (the
 invalid start rows of an ensemble) stay NaN and are not drawn.
+
+A moving pivot (models ``slewing``, ``vibrating``, ``sampled_pivot``) is given as its positions
+p(t_i) [m] at the samples; between them p(t) is the same cubic Hermite interpolant, with the
+velocities ṗ(t_i) estimated by second-order finite differences (:func:`numpy.gradient`; error
+O(h³)). The bob is then at p(t) + x(t) in the inertial frame; the 3-D panel draws the rod from p(t)
+and the pivot's path. A swinging spring (``spring=True``) is drawn with a coil whose length |x|
+varies instead of a rod.
 """
 
 from __future__ import annotations
@@ -33,6 +40,9 @@ from ..model import FloatArray
 StateFunction = Callable[[FloatArray], tuple[FloatArray, FloatArray]]
 """times (n,) [s] → (x, v), each (n, n_bobs, 3) [m], [m/s]."""
 
+PivotFunction = Callable[[FloatArray], FloatArray]
+"""times (n,) [s] → the pivot's position p (n, 3) [m] in the inertial frame."""
+
 
 @dataclass(frozen=True)
 class Motion:
@@ -41,7 +51,8 @@ class Motion:
     ``length`` [m] is the radius of the sphere drawn (the rod length; the largest for an ensemble),
     ``g`` [m/s²] and ``mass`` [kg] enter the energy panels, ``span`` [s] is the time range with data
     (``None`` at either end: unbounded, as for the exact solution), ``label`` names the source in the
-    movie ("exact", "rattle", …)."""
+    movie ("exact", "rattle", …). ``pivot`` gives a moving pivot's position p(t) [m] (``None``: fixed
+    at the origin), and x is relative to it; ``spring``: draw a coil of varying length, not a rod."""
 
     states: StateFunction
     bobs: int
@@ -50,6 +61,8 @@ class Motion:
     mass: float
     span: tuple[float, float]
     label: str
+    pivot: PivotFunction | None = None
+    spring: bool = False
 
     @property
     def small_period(self) -> float:
@@ -83,10 +96,21 @@ def hermite(t: FloatArray, x: FloatArray, v: FloatArray, times: FloatArray) -> t
 
 
 def from_samples(
-    t: FloatArray, x: FloatArray, v: FloatArray, *, length: float, g: float, mass: float, label: str
+    t: FloatArray,
+    x: FloatArray,
+    v: FloatArray,
+    *,
+    length: float,
+    g: float,
+    mass: float,
+    label: str,
+    pivot: FloatArray | None = None,
+    spring: bool = False,
 ) -> Motion:
     """A motion from saved samples: ``t`` (n,) [s] increasing, ``x`` and ``v`` of shape (n, 3) for one
-    bob or (bobs, n, 3) for an ensemble [m], [m/s]; states between samples by :func:`hermite`."""
+    bob or (bobs, n, 3) for an ensemble [m], [m/s]; states between samples by :func:`hermite`.
+    ``pivot`` (n, 3) [m]: a moving pivot's positions at the samples (module doc); ``spring``: a
+    swinging spring (module doc)."""
     t = np.asarray(t, dtype=np.float64)
     x = np.asarray(x, dtype=np.float64)
     v = np.asarray(v, dtype=np.float64)
@@ -108,4 +132,32 @@ def from_samples(
         return hermite(t, xs, vs, np.asarray(times, dtype=np.float64))
 
     span = (float(t[0]), float(t[-1]))
-    return Motion(states, int(xs.shape[1]), float(length), float(g), float(mass), span, label)
+    return Motion(
+        states,
+        int(xs.shape[1]),
+        float(length),
+        float(g),
+        float(mass),
+        span,
+        label,
+        _pivot_function(t, pivot),
+        bool(spring),
+    )
+
+
+def _pivot_function(t: FloatArray, pivot: FloatArray | None) -> PivotFunction | None:
+    """p(t) through the pivot's samples (module doc); ``None`` if there is none or it never moves."""
+    if pivot is None:
+        return None
+    p = np.asarray(pivot, dtype=np.float64)
+    if p.shape != (len(t), 3):
+        raise InvalidInputError(f"pivot positions must be (n, 3) = ({len(t)}, 3) [m]; got {p.shape}")
+    if not np.isfinite(p).all():
+        raise InvalidInputError("the pivot positions must be finite to be animated")
+    if len(t) == 1 or np.all(p == p[0]):
+        p0 = p[0].copy()
+        if not p0.any():
+            return None
+        return lambda times: np.repeat(p0[None], len(np.atleast_1d(times)), axis=0)
+    pv = np.gradient(p, t, axis=0, edge_order=2 if len(t) > 2 else 1)
+    return lambda times: hermite(t, p[:, None], pv[:, None], np.asarray(times, dtype=np.float64))[0][:, 0]

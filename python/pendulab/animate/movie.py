@@ -37,6 +37,9 @@ from .scene import Options, Panel, Scene
 DENSE_PER_PERIOD = 80
 """Dense samples per small-oscillation period 2π√(l/g) at least (smooth trails and curves)."""
 
+SPHERE_PANELS = ("reduced", "veff")
+"""Panels of a pendulum on the sphere |x| = l, which a swinging spring does not take."""
+
 PROGRESS_AFTER = 150
 """Movies with more frames than this show a progress bar unless ``progress=False``."""
 
@@ -137,6 +140,12 @@ class _Plan:
         self.size = parse_size(size)
         check_size(fmt, self.size)
         self.names = panel_names(panels, motion.bobs)
+        on_sphere = [n for n in self.names if n in SPHERE_PANELS]
+        if motion.spring and on_sphere:
+            raise InvalidInputError(
+                f"panel {on_sphere[0]!r} shows a pendulum on the sphere; a swinging spring leaves it and "
+                "takes 3d, top, z"
+            )
         self.fps = gif_fps(check_fps(fps)) if fmt == "gif" else check_fps(fps)
         self.clock = make_clock(
             motion.span,

@@ -2,7 +2,8 @@
 
 :class:`Scene` holds the dense grid of the movie clock (``clock.substeps`` samples per frame,
 frame k at dense index k·substeps): times ``t`` [s], positions ``x`` [m] and velocities ``v``
-[m/s] of shape (n_dense, bobs, 3), and the conserved quantities per unit of what the panels need:
+[m/s] of shape (n_dense, bobs, 3) relative to the pivot (a moving pivot's position ``pivot`` [m],
+(n_dense, 3)), and the conserved quantities per unit of what the panels need:
 
     E = m(½|v|² + g z)  [J],   J₃ = m (x × v)·e₃  [kg m²/s]          (T-2.6)
 
@@ -45,6 +46,8 @@ class Scene:
         self.t = clock.dense_times()
         self.x, self.v = motion.states(self.t)
         self.step = clock.substeps
+        # a moving pivot's position p [m] (n_dense, 3) in the inertial frame; None when it is fixed
+        self.pivot = None if motion.pivot is None else np.asarray(motion.pivot(self.t), dtype=np.float64)
 
     @property
     def bobs(self) -> int:

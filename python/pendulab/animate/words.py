@@ -16,6 +16,8 @@ _METHOD_NAMES = {
     "rk4": "classic Runge–Kutta 4, Cartesian",
     "rk4_angles": "classic Runge–Kutta 4 in angles",
     "exact": "exact solution",
+    "stormer_verlet": "Störmer–Verlet (symplectic, order 2)",
+    "triple_jump": "Störmer–Verlet, triple jump (symplectic, order 4)",
 }
 
 _MODEL_NAMES = {

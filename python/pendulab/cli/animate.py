@@ -17,10 +17,11 @@ import typer
 from ..animate.clock import check_fps, make_clock
 from ..animate.encode import check_size, check_work, fit_gif, format_of, gif_fps, parse_size
 from ..animate.layout import boxes, panel_names
-from ..animate.movie import Movie
+from ..animate.movie import SPHERE_PANELS, Movie
 from ..scenario import ScenarioError, load_scenario
 from ..theory.exact import exact
 from ..trajectory import Trajectory
+from ..variants.spring import SpringTrajectory
 from .common import EXIT_INTERRUPTED, _fail, _say, _scenario_file, _user_errors, app
 
 
@@ -125,12 +126,19 @@ def animate(
             frame_size = given_size or (1280, 720)
             fps = 30.0 if fps is None else fps
         check_size(fmt, frame_size)
-        boxes(panel_names(panels, 1), *frame_size)
-        if sc.spec.pendulum.model == "spring":
+        names = panel_names(panels, 1)
+        boxes(names, *frame_size)
+        is_spring = sc.spec.pendulum.model == "spring"
+        if is_spring and exact_:
             raise ScenarioError(
                 str(scenario),
-                "the 'spring' model is a swinging spring that leaves the sphere; "
-                "movies take pendulum scenarios",
+                "--exact draws the exact solution of the ideal pendulum; the 'spring' model has none "
+                "(leave out --exact to integrate it)",
+            )
+        if is_spring and set(names) & set(SPHERE_PANELS):
+            raise ScenarioError(
+                str(scenario),
+                f"--panels {panels}: a swinging spring leaves the sphere and takes the panels 3d, top, z",
             )
         # the movie clock over the run's span: fps, speed, duration and the frame limits, before the run
         span = (0.0, sim.t_end - sim.t0) if exact_ else (sim.t0, sim.t_end)
@@ -161,7 +169,7 @@ def animate(
             with warnings.catch_warnings():
                 warnings.filterwarnings("ignore", message="simulation interrupted", category=RuntimeWarning)
                 tr = sc.run(progress=progress)
-            assert isinstance(tr, Trajectory)
+            assert isinstance(tr, Trajectory | SpringTrajectory)
             if tr.interrupted:
                 _say(f"interrupted (Ctrl-C) at t = {tr.t[-1]:g} s; no movie written", err=True)
                 raise typer.Exit(EXIT_INTERRUPTED)

@@ -129,6 +129,28 @@ class SpringTrajectory:
         """Writes the run atomically; the format from the suffix (.csv, .parquet, .nc)."""
         return io.save(self, path)  # type: ignore[arg-type]
 
+    def animate(self, path: str | os.PathLike[str], **options: Any) -> Any:
+        """Writes a movie of the swinging spring to ``path`` (.mp4, .webm or .gif): a coil from the
+        pivot to the bob whose drawn length is |x| [m]; panels ``3d``, ``top``, ``z``. ``options`` as
+        :meth:`pendulab.Trajectory.animate` (fps, speed, duration, panels, size, trail [s], ...);
+        returns a :class:`pendulab.animate.Movie`."""
+        from ..animate import from_samples, render
+        from ..animate.words import method_words, model_words
+
+        sp = self.spring
+        method = str(self.file_metadata()["method"])
+        motion = from_samples(
+            self.t,
+            self.x,
+            self.v,
+            length=sp.equilibrium_length,
+            g=sp.g,
+            mass=sp.mass,
+            label=f"{model_words('spring')}: {method_words(method)}",
+            spring=True,
+        )
+        return render(motion, path, **options)
+
     def __repr__(self) -> str:
         if len(self) == 0:
             return "SpringTrajectory(no samples)"
