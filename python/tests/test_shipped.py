@@ -17,7 +17,7 @@ from pendulab.scenario import examples
 
 
 def test_example_data_are_package_files_found_by_name() -> None:
-    assert set(examples.data_files()) == {"crane_sway", "filmed_swing", "phone_pendulum"}
+    assert set(examples.data_files()) == {"crane_sway", "encoder_decay", "filmed_swing", "phone_pendulum"}
     for spelling in ("filmed_swing", "filmed_swing.csv", "example:filmed_swing"):
         assert examples.find(spelling, "data") == examples.DATA / "filmed_swing.csv"
     assert examples.DATA.is_relative_to(examples.EXAMPLES)
