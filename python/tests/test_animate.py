@@ -332,11 +332,15 @@ def pivot_motion(tr: pl.Trajectory, with_pivot: bool = True) -> animate.Motion:
     return animate.from_samples(tr.t, tr.x, tr.v, length=p.length, g=p.g, mass=p.mass, label="m", pivot=pivot)
 
 
-@pytest.mark.parametrize("name", ["slewing", "vibrating"])
+@pytest.mark.parametrize("name", ["slewing", "vibrating", "sampled_pivot"])
 def test_a_moving_pivot_is_drawn_where_it_is_with_its_path(name):
     """The pivot's disc (its own colour) is where the camera puts p(t_k); its trail and the rod hang
     from it. Without the pivot passed, no pixel has the pivot's colour."""
-    p = pl.Pendulum(**MODELS[name])
+    if name == "sampled_pivot":  # a pivot swung 0.3 m sideways at 2 rad/s, given by 31 samples
+        ts = np.linspace(0.0, 3.0, 31)
+        p = pl.Pendulum(pivot_samples=(ts, np.stack([0.3 * np.sin(2 * ts), 0 * ts, 0 * ts], -1)))
+    else:
+        p = pl.Pendulum(**MODELS[name])
     tr = pl.simulate(p, p.state_from_angles(theta=0.5, phi=0.0, theta_dot=0.0, phi_dot=0.5), t_end=2.0)
     theme = animate.movie.Theme()
     size = (320, 240)
