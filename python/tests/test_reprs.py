@@ -4,6 +4,8 @@ characters (EMMap's printed a 14 kB array, Reduced's 26 kB) and an HTML table fo
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pytest
 
@@ -36,7 +38,19 @@ def _objects(tmp_path) -> dict[str, object]:
         ),
         "SlewingSway": pl.slewing_sway(crane, np.linspace(0, 1, 500)),
         "Movie": sol.animate(tmp_path / "m.gif", t=(0.0, 1.0), fps=10, size=(96, 64), progress=False),
+        "Comparison": pl.compare_fits([_fit(["length"]), _fit(["length", "damping"])]),
     }
+
+
+def _fit(names: list[str]) -> pl.FitResult:
+    """A small fit of a damped swing (for the Comparison of two fits)."""
+    p = pl.Pendulum(length=0.5, damping=0.05)
+    t = np.linspace(0.0, 6.0, 200)
+    tr = pl.simulate(p, p.state_from_angles(0.3), 6.0, method="dop853", save_at=t)
+    angle = np.arctan2(tr.x[:, 0], -tr.x[:, 2]) + 1e-3 * np.random.default_rng(0).standard_normal(len(t))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # the undamped fit misses the decay, and says so
+        return pl.fit(t, planar_angle=angle, pendulum=pl.Pendulum(length=0.5, model="damped"), fit=names)
 
 
 @pytest.fixture(scope="module")
@@ -47,6 +61,7 @@ def objects(tmp_path_factory) -> dict[str, object]:
 NAMES = [
     "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases", "Reduced", "EMMap",
     "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway", "Movie",
+    "Comparison",
 ]  # fmt: skip
 
 
@@ -71,6 +86,7 @@ def test_every_public_result_class_is_covered():
     results = {n for n in pl.__all__ if n[0].isupper()} - {
         "InvalidInputError", "IntegrationError", "ScenarioError", "Pendulum", "State", "Save", "Scenario",
         "Stepper", "SwingingSpring", "FitResult",  # FitResult: test_fit checks its report and tables
+        "CompoundPendulum", "Part",  # inputs (a pendulum's geometry), like Pendulum and State
     }  # fmt: skip
     assert results <= set(NAMES), sorted(results - set(NAMES))
 

@@ -25,7 +25,7 @@
 //! - [`reduce`]: S¹-invariants σ₁…σ₆, Casimir, the reduced (Nambu) flow and reconstruction (§3).
 //! - [`quadrature`]: adaptive Gauss–Kronrod quadrature.
 //! - [`sensitivity`]: the real pendulum's motion with its derivatives by start and parameters (a
-//!   fit's Jacobian, T-10.5).
+//!   fit's Jacobian, T-10.7).
 //! - [`crane`]: cranes: hoisting, hook + payload, wind (§11).
 //! - [`elastic`]: the swinging spring (T-7.4) with its own symplectic integrators.
 //! - [`ensemble`]: many trajectories at once (SoA blocks, rayon), RATTLE.

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._core import InvalidInputError
+from ..display import Row, html_table
 from .result import FitResult
 
 #: BIC differences: below this a model is not distinguished from the best; above 10 it is ruled out.
@@ -53,7 +54,16 @@ class Comparison:
         return self.fits[0]
 
     def __repr__(self) -> str:
-        return self.table()
+        best = ", ".join(n for n in self.best.names if not n.endswith("0"))
+        runner = f", next dBIC={self.delta_bic[1]:.3g}" if len(self.delta_bic) > 1 else ""
+        return f"Comparison({len(self.fits)} fits, best: {best}{runner})"
+
+    def _repr_html_(self) -> str:
+        rows: list[Row] = []
+        for res, d in zip(self.fits, self.delta_bic, strict=True):
+            names = ", ".join(n for n in res.names if not n.endswith("0"))
+            rows.append((names, f"BIC {res.bic:.6g}, AIC {res.aic:.6g}", f"ΔBIC {d:.3g}"))
+        return html_table("Fits ranked by BIC", rows, note="ranked.table(), ranked.best")
 
 
 def compare_fits(results: Sequence[FitResult]) -> Comparison:

@@ -1,5 +1,5 @@
 """Goodness of fit: does the fitted motion explain the data to their noise, and are the residuals the
-white noise the error bars assume? (docs/fit.md, "Noise and goodness of fit"; docs/theory.md T-10.3.)
+white noise the error bars assume? (docs/fit.md, "Noise and goodness of fit"; docs/theory.md T-10.5.)
 
 Per data kind, from the residual r (measured − fitted, the kind's unit, N × columns):
 
