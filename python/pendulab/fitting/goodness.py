@@ -47,6 +47,9 @@ OUTLIER_SIGMAS = 5.0
 #: own precision (a sideways rate resolved to √ε, round-off): no statistics. Real measurements are
 #: noisier by orders of magnitude (a 2400-step encoder: 1e-3 of a swing).
 EXACT = 1e-6
+#: Andrews' AR(1) bandwidth is multiplied by this: the Bartlett sum's downward bias falls as 1/S, and
+#: with the plug-in S itself the error bars of fits to AR(1) noise covered too rarely (bench/fit_validate.py).
+BANDWIDTH = 2.0
 MAX_LAG_WORK = 2e8
 """At most this many multiply-adds (lags × samples × unknowns²) for the Newey–West sum."""
 
@@ -156,7 +159,7 @@ def andrews_bandwidth(rho: float, n: int) -> int:
     if rho <= 0.0:
         return 1
     alpha = 4.0 * rho**2 / ((1.0 - rho) ** 2 * (1.0 + rho) ** 2)
-    return int(min(max(1, math.ceil(1.1447 * (alpha * n) ** (1.0 / 3.0))), n - 1))
+    return int(min(max(1, math.ceil(BANDWIDTH * 1.1447 * (alpha * n) ** (1.0 / 3.0))), n - 1))
 
 
 def scores(jac: FloatArray, r: FloatArray, sample: FloatArray, n: int) -> FloatArray:
