@@ -295,3 +295,22 @@ def test_profile_likelihood_agrees_with_the_linear_interval_where_the_valley_is_
     assert lo == pytest.approx(a, abs=0.05 * (b - a)) and hi == pytest.approx(b, abs=0.05 * (b - a))
     with pytest.raises(KeyError, match="was not fitted"):
         res.profile("drag")
+
+
+def test_the_time_limit_is_kept_within_a_second() -> None:
+    """Issue 30: pl.fit(time_limit=5) returned after 32.8 s. A four-law fit of a real decay stopped at
+    1 s, even inside the nested models, returns the start read off the data, marked interrupted."""
+    path = Path(__file__).resolve().parents[2] / "testdata" / "real" / "multiarm_single_large_decay.csv"
+    d = np.loadtxt(path, delimiter=",", comments="#", skiprows=4)
+    began = time.perf_counter()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        res = pl.fit(
+            d[:, 0],
+            planar_angle=d[:, 1],
+            pendulum=damped(0.15),
+            fit=["length", "damping", "drag", "friction"],
+            time_limit=1.0,
+        )
+    assert time.perf_counter() - began < 2.0
+    assert res.interrupted and not res.converged and "time limit of 1 s" in res.message

@@ -155,6 +155,8 @@ def fit(
         u, message = search.result.x, str(search.result.message)
     elif search.best_u is not None or search.last_u is not None:  # interrupted (in a window: its last)
         u = search.best_u if search.best_u is not None else search.last_u
+    elif interrupted:  # stopped in the nested models before the full one ran: the start read off the data
+        u = np.array([start[n] for n in free], dtype=np.float64)
     else:
         raise InvalidInputError(
             "the model could not be evaluated at any start: check the data and the pendulum"
