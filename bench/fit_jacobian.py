@@ -98,6 +98,24 @@ def main() -> None:
             f"solve, {label:28s} {took:7.2f} s  cost {res.cost:.6e}  residual runs {res.nfev}, "
             f"Jacobians {res.njev}; max |u - truth|/truth {np.max(np.abs(res.x - u_true) / scales):.1e}"
         )
+    theta = prob.obs.values["planar_angle"][:, 0]
+    for _ in range(2):  # pl.fit as a user calls it: sigma left out, starting values read off the data
+        t0 = time.perf_counter()
+        res = pl.fit(
+            prob.obs.t,
+            planar_angle=theta,
+            pendulum=pl.Pendulum(0.4, 9.80, model="damped"),
+            fit=["length", "damping", "drag", "friction"],
+            progress=False,
+        )
+        took = time.perf_counter() - t0
+        off = max(
+            abs(res.params[n] - TRUE[n]) / res.stderr[n] for n in ("length", "damping", "drag", "friction")
+        )
+        print(
+            f"pl.fit (sigma left out)  {took:7.2f} s  model runs {res.evaluations}, "
+            f"largest |error|/stderr {off:.2g}"
+        )
     print(f"load after {os.getloadavg()}")
 
 
