@@ -203,7 +203,8 @@ class Problem:
             r = self.residuals(self.with_free(u), sigma)
         except (InvalidInputError, IntegrationError, OverflowError, ZeroDivisionError):
             return np.full(self.obs.n_residuals, self.penalty(sigma))
-        return np.where(np.isfinite(r), r, self.penalty(sigma))
+        finite = np.isfinite(r)
+        return r if finite.all() else np.where(finite, r, self.penalty(sigma))
 
 
 def _with_offsets(pred: dict[str, FloatArray], values: Mapping[str, float]) -> dict[str, FloatArray]:
