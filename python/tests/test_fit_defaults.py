@@ -314,3 +314,19 @@ def test_the_time_limit_is_kept_within_a_second() -> None:
         )
     assert time.perf_counter() - began < 2.0
     assert res.interrupted and not res.converged and "time limit of 1 s" in res.message
+
+
+def test_a_near_camera_is_fitted_as_perspective(filmed: tuple) -> None:
+    """A camera 3 m in front of the pivot sees the bob's offset shrunk by 1/(1 + y/3 m): fitted without
+    it the swing misses the data (warned); with ``perspective`` κ = 1/D it comes back exactly."""
+    t = np.linspace(0.0, 20.0, 600)
+    x, _, _ = cartesian(*mid_swing(), t, damping=0.01)
+    kappa = 1.0 / 3.0
+    seen = x[:, [0, 2]] / (1.0 + kappa * x[:, 1])[:, None]
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        pl.fit(t, positions=seen, pendulum=damped(), fit=["length", "g", "damping"])
+    assert any("misses the data" in str(w.message) for w in caught)
+    res = pl.fit(t, positions=seen, pendulum=damped(), fit=["length", "g", "damping", "perspective"])
+    assert res.params["perspective"] == pytest.approx(kappa, rel=1e-6)
+    assert res.params["g"] == pytest.approx(9.81, rel=1e-7)

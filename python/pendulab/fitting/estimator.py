@@ -80,8 +80,9 @@ def fit(
     ``"state"``, ``"pivot"`` or single ``theta0``, ``phi0``, ``theta_dot0``, ``phi_dot0``, the
     spring's ``r0`` [m] and ``r_dot0`` [m/s], ``pivot_x/y/z``, ``t_offset`` [s], and the systematic
     terms ``scale`` [1] (positions' scale bar), ``angle_offset`` [rad] (an encoder's zero),
-    ``force_bias`` [m/s²], ``rate_bias`` [rad/s]); the start at the first time is fitted too unless
-    ``state0`` is given. ``pivot`` [m]: the pivot in the data's frame when known (default: the origin,
+    ``force_bias`` [m/s²], ``rate_bias`` [rad/s], ``perspective`` [1/m]: 1/(a camera's distance));
+    the start at the first time is fitted too unless ``state0`` is given. ``pivot`` [m]: the pivot in
+    the data's frame when known (default: the origin,
     or fitted when the positions do not hang from it). ``sigma``: the noise of one value (a number,
     or kind → number; for angles that of θ and of the arc sin θ·φ; None: the search runs in units of
     the noise floor read off the data and the error bars take the residual's scatter). ``loss``:

@@ -13,7 +13,9 @@ Parameter names (SI units):
 - systematic terms of the measurement (:data:`SYSTEMATIC_NAMES`, neutral by default): ``scale`` [1]
   multiplies the positions about the pivot (a camera's scale bar: measured = pivot + scale·x);
   ``angle_offset`` [rad] is added to a planar angle and to θ (an encoder's zero); ``force_bias``
-  [m/s²] to the specific force and ``rate_bias`` [rad/s] to the angular speed (a sensor's bias). A
+  [m/s²] to the specific force and ``rate_bias`` [rad/s] to the angular speed (a sensor's bias);
+  ``perspective`` κ = 1/D [1/m] is a camera at distance D in front of the pivot looking along +y, which
+  sees the bob's offset from the pivot shrunk by 1/(1 + κ y) (a pinhole; 0: the far-away camera). A
   clock rate is not among them: a clock running fast by a factor κ is indistinguishable from g/l
   larger by κ², so only an independent time reference could tell.
 - the swinging spring (``model = "spring"``, a :class:`pendulab.SwingingSpring`): ``length`` is its
@@ -48,7 +50,13 @@ PIVOT_NAMES = ("pivot_x", "pivot_y", "pivot_z")
 OFFSET_NAMES = ("t_offset",)
 POSITIVE = {"length", "mass", "g", "damping", "drag", "stiffness", "r0", "scale"}
 """Parameters that are positive by nature: the search and the error analysis work in ln p for them."""
-SYSTEMATIC_NAMES = {"scale": 1.0, "angle_offset": 0.0, "force_bias": 0.0, "rate_bias": 0.0}
+SYSTEMATIC_NAMES = {
+    "scale": 1.0,
+    "angle_offset": 0.0,
+    "force_bias": 0.0,
+    "rate_bias": 0.0,
+    "perspective": 0.0,
+}
 """The systematic terms of the measurement and their neutral values (module doc)."""
 ROD_MODELS = ("ideal", "damped", "rotating", "slewing", "vibrating")
 FITTABLE_MODELS = (*ROD_MODELS, "spring")
@@ -65,6 +73,7 @@ UNITS_EXTRA = {
     "angle_offset": "rad",
     "force_bias": "m/s^2",
     "rate_bias": "rad/s",
+    "perspective": "1/m",
     "r0": "m",
     "r_dot0": "m/s",
 }
@@ -169,6 +178,12 @@ class Problem:
             pivot = pivot + p.diagnostics(x, v, tau)["pivot"]
         scale = values.get("scale", 1.0)
         seen = x if scale == 1.0 else scale * x
+        kappa = values.get("perspective", 0.0)
+        if kappa != 0.0:  # a pinhole camera at distance 1/κ in front of the pivot, looking along +y
+            depth = 1.0 + kappa * x[:, 1]
+            if not np.all(depth > 0.0):
+                raise InvalidInputError(f"perspective = {kappa!r} 1/m puts the bob behind the camera")
+            seen = seen / depth[:, None]
         out = {
             kind: predict(kind, self.obs.columns[kind], seen, v, accel, gravity, pivot)
             for kind in self.obs.values
@@ -275,4 +290,6 @@ def scale_of(name: str, value: float, length: float, period: float) -> float:
         return 0.1
     if name == "angle_offset":
         return 0.01
+    if name == "perspective":
+        return 0.1 / length
     return max(abs(value), 1e-3 if name != "g" else 1e-2)
