@@ -44,7 +44,7 @@ from .settings import (
     is_planar,
     off_origin,
 )
-from .start import gravity_starts, phase_starts, sideways_starts, starting_values
+from .start import gravity_starts, phase_starts, sideways_starts, signed_start, starting_values
 
 #: Dissipation laws, in the order the nested search frees them (estimator.py, :func:`_nested_start`).
 DISSIPATION = ("damping", "friction", "drag")
@@ -119,15 +119,16 @@ def fit(
             stacklevel=2,
         )
     free = free_names(fit_names, model, state0 is not None, obs.columns, planar)
-    if planar and state0 is None:  # the swing's plane is x–z; φ₀ = π puts a negative first angle
-        first = obs.values.get("planar_angle", np.zeros((1, 1)))[: min(5, len(obs)), 0]
-        values.update(phi0=math.pi if float(np.median(first)) < 0.0 else 0.0, phi_dot0=0.0)
+    if planar and state0 is None:  # the swing's plane is x–z, θ₀ signed (a negative first angle)
+        values.update(phi0=0.0, phi_dot0=0.0)
     floors = {k: floor_of(obs.t, columns_for_noise(k, v)) for k, v in obs.values.items()}
     spreads = {k: spread_of(columns_for_noise(k, v)) for k, v in obs.values.items()}
     check_motion(floors, spreads, {k: float(np.max(np.abs(v))) for k, v in obs.values.items()})
     if len(obs) <= len(free):
         raise InvalidInputError(f"{len(obs)} samples cannot determine {len(free)} unknowns: give more data")
     start = starting_values(obs, values, set(free))
+    if planar and "planar_angle" in obs.values:
+        start |= signed_start(obs, start, set(free))
     starts, mirror_blind = _starts(obs, start, free)
     problem = Problem(model, start, free, obs)
     period = 2.0 * math.pi * math.sqrt(start["length"] / max(abs(start["g"]), 1e-9))
@@ -162,6 +163,7 @@ def fit(
         raise InvalidInputError(
             "the model could not be evaluated at any start: check the data and the pendulum"
         )
+    u = _unsigned(np.array(u, dtype=np.float64), free)
     return _conclude(
         search,
         np.asarray(u, dtype=np.float64),
@@ -174,6 +176,19 @@ def fit(
         planar=planar,
         n_starts=n_starts,
     )
+
+
+def _unsigned(u: FloatArray, free: Sequence[str]) -> FloatArray:
+    """A negative θ₀ reported as θ₀ > 0 with φ₀ + π (and −θ̇₀) when φ₀ is fitted too: the same state
+    (problem.py, state0); with φ₀ held (a hinge) the signed angle is what a user reads."""
+    names = list(free)
+    if "theta0" in names and "phi0" in names and u[names.index("theta0")] < 0.0:
+        i, j = names.index("theta0"), names.index("phi0")
+        u[i] = -u[i]
+        u[j] = math.remainder(u[j] + math.pi, 2.0 * math.pi)
+        if "theta_dot0" in names:
+            u[names.index("theta_dot0")] *= -1.0
+    return u
 
 
 def robust_weights(loss: str, z: FloatArray) -> FloatArray:
@@ -277,6 +292,9 @@ def _nested_start(
         finally:
             problem.evaluations += smaller.evaluations
         current = current | dict(zip(smaller.free, (float(x) for x in res.x), strict=True))
+        # the next law starts just off its bound 0, where a difference quotient can see it
+        added = laws[k]
+        current[added] = max(current[added], 0.01 * float(search.scales[free.index(added)]))
     return current
 
 

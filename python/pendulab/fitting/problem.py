@@ -136,7 +136,10 @@ class Problem:
     def state0(self, pendulum: Pendulum | SwingingSpring, values: Mapping[str, float]) -> State:
         if isinstance(pendulum, SwingingSpring):
             return State(*spring_model.start_vectors(values))
-        return pendulum.state_from_angles(*(values[k] for k in STATE_NAMES))
+        theta, phi, theta_dot, phi_dot = (values[k] for k in STATE_NAMES)
+        if theta < 0.0:  # a signed θ₀ (a hinge's swing through the bottom): (−θ, φ) is (θ, φ + π), θ̇ → −θ̇
+            theta, phi, theta_dot = -theta, phi + math.pi, -theta_dot
+        return pendulum.state_from_angles(theta, phi, theta_dot, phi_dot)
 
     def motion(self, values: Mapping[str, float]) -> Motion:
         """The pendulum and its x [m], v [m/s] at the sample times, with the model times τ [s]."""
@@ -259,8 +262,8 @@ def unit_of(model: str, name: str) -> str:
 
 def bounds_of(model: str, name: str, value: float) -> tuple[float, float]:
     """Where the optimizer may go for ``name`` (the registry's limits; θ₀ in [0, π])."""
-    if name == "theta0":
-        return 0.0, math.pi
+    if name == "theta0":  # signed: a swing crosses the bottom smoothly (state0: (−θ, φ) = (θ, φ + π))
+        return -math.pi, math.pi
     if name == "r0":
         return 1e-9 * abs(value), math.inf
     if name == "scale":

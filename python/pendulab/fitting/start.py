@@ -297,6 +297,21 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
     return out
 
 
+def signed_start(obs: Observations, start: Mapping[str, float], free: set[str]) -> dict[str, float]:
+    """θ₀ and θ̇₀ of a hinge (φ₀ = 0 held) from the signed planar angle itself (a quadratic through the
+    first samples, spikes removed): |angle|, which the 3-D start uses, has a corner where the swing
+    crosses the bottom."""
+    angle = despiked(np.unwrap(obs.values["planar_angle"][:, 0]))
+    period = 2.0 * math.pi * math.sqrt(start["length"] / max(abs(start["g"]), 1e-9))
+    th0, thd0 = _rates(obs.t, angle, period / 20.0)
+    out = {}
+    if "theta0" in free:
+        out["theta0"] = min(max(th0, -math.pi), math.pi)
+    if "theta_dot0" in free:
+        out["theta_dot0"] = thd0
+    return out
+
+
 def _frame_free_start(obs: Observations, out: dict[str, Any], free: set[str]) -> dict[str, Any]:
     f = obs.values.get("specific_force")
     w = obs.values.get("angular_speed")
