@@ -135,9 +135,9 @@ export async function checkViews(page, { check, WAIT, simulated }) {
     .waitForFunction(
       (t) => {
         const h = window.pendulab.handleOnScreen();
-        return h !== null && Math.hypot(h.x - t.x, h.y - t.y) < TIP_PX;
+        return h !== null && Math.hypot(h.x - t.x, h.y - t.y) < t.px;
       },
-      target,
+      { ...target, px: TIP_PX }, // the page does not see this module's constants: passed in
       { timeout: 10_000 },
     )
     .catch(() => {});
