@@ -20,6 +20,8 @@ from ._core import ForceSolver, IntegrationError, InvalidInputError, Solver
 from ._core import Stepper as _Stepper
 from ._core import methods as _methods
 from .accuracy import estimate, run_to_accuracy, true_error
+from .display import Row, html_table
+from .display import number as shown
 from .model import Pendulum, State, check_pendulum_state
 from .trajectory import Trajectory
 from .validate import (
@@ -390,6 +392,7 @@ class Stepper:
                 "the incremental Stepper does not take a user force callable; use pendulab.simulate"
             )
         self._dt = dt
+        self._method = method
         self._adaptive = bool(_method_table()[method]["adaptive"])
         self.pendulum = pendulum
         self._core = _Stepper(
@@ -405,6 +408,29 @@ class Stepper:
             **pendulum._model_kwargs(),
             conserve=bool(conserve),
         )
+
+    def __repr__(self) -> str:
+        theta, phi = self.state.angles_deg()
+        step = "adaptive" if self._adaptive else f"dt={shown(self._dt)} s"
+        return (
+            f"Stepper({self._method}, {step}, t={shown(self.t)} s, θ={shown(theta)}°, "
+            f"φ={shown(phi)}°, steps={self._core.stats['steps']}; {self.pendulum!r})"
+        )
+
+    def _repr_html_(self) -> str:
+        theta, phi = self.state.angles_deg()
+        stats = self.stats
+        rows: list[Row] = [
+            ("method", self._method, ""),
+            ("step dt", "adaptive" if self._adaptive else self._dt, "" if self._adaptive else "s"),
+            ("time t", self.t, "s"),
+            ("polar angle θ", theta, "°"),
+            ("azimuth φ", phi, "°"),
+            ("steps taken (rejected)", f"{stats['steps']} ({stats.get('rejected', 0)})", ""),
+            ("model", self.pendulum.model, ""),
+            ("length l", self.pendulum.length, "m"),
+        ]
+        return html_table("Stepper", rows)
 
     @property
     def t(self) -> float:

@@ -8,6 +8,7 @@ import warnings
 
 import numpy as np
 import pytest
+from conftest import REPO
 
 import pendulab as pl
 
@@ -21,7 +22,11 @@ def _objects(tmp_path) -> dict[str, object]:
     sol = pl.exact(p, s0)
     ensemble = pl.simulate_ensemble(p, pl.states_from_angles(p, theta=np.linspace(0.1, 1, 5)), t_end=1.0)
     crane = pl.Pendulum(model="slewing", radius=0.02, rate=0.5)
+    stepper = pl.Stepper(pl.Pendulum(model="damped", damping=0.2), s0, method="rattle4", dt=1e-3)
+    stepper.step(100)
     return {
+        "Scenario": pl.load_scenario(REPO / "examples" / "scenarios" / "damped.toml"),
+        "Stepper": stepper,
         "Pendulum": p,
         "State": s0,
         "Trajectory": tr,
@@ -59,9 +64,9 @@ def objects(tmp_path_factory) -> dict[str, object]:
 
 
 NAMES = [
-    "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases", "Reduced", "EMMap",
-    "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway", "Movie",
-    "Comparison",
+    "Scenario", "Stepper", "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases",
+    "Reduced", "EMMap", "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway",
+    "Movie", "Comparison",
 ]  # fmt: skip
 
 
@@ -84,11 +89,35 @@ def test_a_movie_embeds_itself(objects):
 
 def test_every_public_result_class_is_covered():
     results = {n for n in pl.__all__ if n[0].isupper()} - {
-        "InvalidInputError", "IntegrationError", "ScenarioError", "Pendulum", "State", "Save", "Scenario",
-        "Stepper", "SwingingSpring", "FitResult",  # FitResult: test_fit checks its report and tables
+        "InvalidInputError", "IntegrationError", "ScenarioError", "Pendulum", "State", "Save",
+        "SwingingSpring", "FitResult",  # FitResult: test_fit checks its report and tables
         "CompoundPendulum", "Part",  # inputs (a pendulum's geometry), like Pendulum and State
     }  # fmt: skip
     assert results <= set(NAMES), sorted(results - set(NAMES))
+
+
+def test_scenario_and_stepper_say_what_they_hold(objects):
+    """Scenario printed its whole pydantic spec (520 characters), Stepper ``<... object at 0x...>``."""
+    sc, st = repr(objects["Scenario"]), repr(objects["Stepper"])
+    assert sc.startswith("Scenario('damped.toml': damped, damping=0.05, l=1 m"), sc
+    assert "rattle4, dt=0.001 s" in sc, sc
+    assert "t=0…60 s" in sc and "θ₀=60°" in sc, sc
+    assert st.startswith("Stepper(rattle4, dt=0.001 s, t=0.1 s, θ=") and "steps=100" in st, st
+    assert "damping=0.2" in st, st
+
+
+def test_every_public_class_has_its_own_short_repr():
+    """Inputs too (Part, CompoundPendulum, Save, SwingingSpring): a repr of their own, one short line."""
+    import inspect
+
+    for name in pl.__all__:
+        cls = getattr(pl, name)
+        if inspect.isclass(cls) and not issubclass(cls, Exception):
+            assert cls.__repr__ is not object.__repr__, f"{name} has no repr of its own"
+    compound = pl.CompoundPendulum((pl.Part.rod(0.4, 0.6), pl.Part.sphere(1.5, 0.04, 0.55)))
+    for obj in (compound, pl.Save(every_n=10), pl.SwingingSpring.resonant(1.0)):
+        text = repr(obj)
+        assert len(text) <= MAX_REPR and "\n" not in text and " object at 0x" not in text, text
 
 
 def test_plot_methods_take_the_path_first_or_as_a_keyword(tmp_path, objects):

@@ -49,6 +49,7 @@ from typing import Any
 from pydantic import ValidationError
 
 from .._core import IntegrationError, InvalidInputError, __version__
+from ..display import Row, html_table, number, with_unit
 from ..io import atomic_path
 from ..model import Pendulum, State
 from ..simulation import simulate
@@ -276,6 +277,41 @@ class Scenario:
             )
         except (IntegrationError, InvalidInputError) as e:  # name the file the run came from
             raise type(e)(f"{sc.source}: {e}") from None
+
+    # --- showing itself ---
+
+    def _summary(self) -> list[Row]:
+        p, sim = self.spec.pendulum, self.spec.simulation
+        theta, phi = self._state.angles_deg()
+        step = "adaptive" if sim.is_adaptive() else with_unit(sim.resolved_dt(), "s")
+        rows: list[Row] = [
+            ("model", p.model, ""),
+            *((k, v if isinstance(v, int | float) else repr(v), "") for k, v in p.params.items()),
+            ("length l", p.length, "m"),
+            ("mass m", p.mass, "kg"),
+            ("gravity g", p.g, "m/s²"),
+            ("start θ, φ", f"{number(theta)}, {number(phi)}", "°"),
+            ("method", sim.method, ""),
+            ("step dt", step, ""),
+            ("time span t0 … t_end", f"{number(sim.t0)} … {number(sim.t_end)}", "s"),
+        ]
+        return rows
+
+    def __repr__(self) -> str:
+        p, sim = self.spec.pendulum, self.spec.simulation
+        theta, phi = self._state.angles_deg()
+        step = "adaptive" if sim.is_adaptive() else f"dt={number(sim.resolved_dt())} s"
+        name = Path(self.source).name if self.source and not self.source.startswith("<") else self.source
+        params = "".join(f", {k}={number(v)}" for k, v in p.params.items() if isinstance(v, int | float))
+        return (
+            f"Scenario({name!r}: {p.model}{params}, l={number(p.length)} m, m={number(p.mass)} kg, "
+            f"g={number(p.g)} m/s², θ₀={number(theta)}°, φ₀={number(phi)}°; {sim.method}, {step}, "
+            f"t={number(sim.t0)}…{number(sim.t_end)} s)"
+        )
+
+    def _repr_html_(self) -> str:
+        title = f"Scenario {self.title}" if self.title else "Scenario"
+        return html_table(title, self._summary(), note=f"from {self.source}")
 
     # --- writing ---
 
