@@ -87,6 +87,7 @@ web: web/node_modules/.package-lock.json
 
 test-web: web/node_modules/.package-lock.json
 	cd web && node_modules/.bin/tsc --noEmit
+	cd web && node_modules/.bin/eslint src   # max-lines-per-function (web/eslint.config.mjs)
 	cd web && node_modules/.bin/vitest run
 
 # The lab end to end: `pendulab serve` on a free port, the committed bundle in Debian's headless chromium

@@ -1,0 +1,107 @@
+// The connection's handlers: frames into the store, statuses into every panel that mirrors the server
+// (controls, tools, toolbar, scene, portraits, energy bars, the URL), errors and events into the message
+// line, the offline banner when the server is gone, and a shared link's commands once the server answers.
+import { Connection, socketUrl, whenCaughtUp } from '../connection';
+import type { Analyses } from '../analyses';
+import { eventMessage } from '../events';
+import type { Notice, Status } from '../protocol';
+import type { FrameCosts } from '../perf';
+import type { Controls } from '../panels/controls';
+import type { EnergyBars } from '../panels/energy';
+import type { Portraits } from '../panels/portraits';
+import type { Toolbar } from '../panels/toolbar';
+import type { Tools } from '../panels/tools';
+import { accessibleSliders } from '../keyboard';
+import { t } from '../i18n';
+import { byId } from './page';
+import type { MessageLine } from './page';
+import type { SharedLink } from './link';
+import type { LabCore } from './session';
+
+/** The panels a status updates. */
+export interface StatusPanels {
+  controls: Controls;
+  tools: Tools;
+  toolbar: Toolbar;
+  portraits: Portraits;
+  energy: EnergyBars;
+}
+
+function onStatus(lab: LabCore, panels: StatusPanels, messages: MessageLine, link: SharedLink, s: Status): void {
+  const { store, scene } = lab;
+  const before = store.status;
+  store.onStatus(s);
+  // the previous scenario's news (a string event, a hint) is no longer about what is shown
+  if (before !== null && (before.scenario !== s.scenario || before.model !== s.model)) messages.clearNews();
+  if (before === null || before.epoch !== s.epoch) panels.energy.rescale();
+  panels.controls.sync(s);
+  accessibleSliders(panels.controls.gui);
+  panels.tools.sync(s);
+  panels.toolbar.showRunning(s.paused);
+  scene.setLength(s.params.length);
+  scene.setModel(s.model);
+  panels.portraits.setModel(s.model);
+  link.write();
+}
+
+/** A shared link's second pendulum: a copy of the first once the server has the link's scenario; then
+ *  the link's paused time is stepped on both. */
+function restoreTwin(lab: LabCore, link: SharedLink): void {
+  const o = link.twinToRestore;
+  const twin = lab.session.twin;
+  if (o === null || twin === null) return;
+  link.twinToRestore = null;
+  void whenCaughtUp(() => lab.store.status?.commands, () => lab.session.sent(), 5000)
+    .then(() => {
+      twin.restore(o);
+      return whenCaughtUp(() => (twin.store.status?.paused ? 1 : undefined), () => 1, 5000);
+    })
+    .then(() => {
+      for (const c of link.replay) lab.session.send(c);
+      link.replay = [];
+    });
+}
+
+function onNotice(lab: LabCore, panels: StatusPanels, messages: MessageLine, link: SharedLink, n: Notice): void {
+  if (n.type === 'error') {
+    lab.store.onError(n);
+    lab.explain(n.command ? `${n.command}: ${n.message}` : n.message);
+    return;
+  }
+  if (n.type === 'event') {
+    lab.store.onEvent(n);
+    lab.explain(eventMessage(n), true);
+    return;
+  }
+  onStatus(lab, panels, messages, link, n);
+  for (const c of link.takeStartup()) lab.session.send(c);
+  restoreTwin(lab, link);
+}
+
+/** Opens the connection (the session's `conn`). */
+export function connect(lab: LabCore, panels: StatusPanels, messages: MessageLine, link: SharedLink, analyses: Analyses, costs: FrameCosts): void {
+  const { store } = lab;
+  lab.session.conn = new Connection(socketUrl(window.location), {
+    onOpen: () => {
+      store.setConnected(true);
+      byId('conn').textContent = t('conn.connected');
+      byId('offline').hidden = true;
+    },
+    onClose: () => {
+      store.setConnected(false);
+      byId('conn').textContent = t('conn.retrying');
+      // the server is gone: an unmistakable banner above the view (the footer's grey text was all before)
+      byId('offline').textContent = t('conn.gone');
+      byId('offline').hidden = false;
+      link.restoreShown();
+    },
+    onFrames: (frames) => {
+      const t0 = performance.now();
+      store.onFrames(frames);
+      analyses.onFrames();
+      costs.add('frames received', performance.now() - t0);
+    },
+    onNotice: (n) => onNotice(lab, panels, messages, link, n),
+    onProtocolError: (msg) => lab.explain(`protocol: ${msg}`),
+  });
+}
