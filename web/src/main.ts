@@ -32,11 +32,12 @@ import { wireToolbar } from './wiring/toolbar';
 import { wireKeys } from './wiring/keys';
 import { wireTools } from './wiring/tools';
 import { wireControls } from './wiring/controls';
-import { connect } from './wiring/connect';
+import { connect, openEarly } from './wiring/connect';
 import { wireGestures } from './wiring/gestures';
 import { startLoop } from './wiring/loop';
 import type { DrawnPanels } from './wiring/loop';
 import type { LabHandles } from './wiring/debug';
+import { mark } from './wiring/debug';
 
 /** The 3-D view with the drawing quality this machine allows (a software rasteriser — headless
  *  chromium, no GPU — draws without MSAA at one pixel per CSS pixel, and the footer says so). */
@@ -76,15 +77,19 @@ function handles(lab: LabCore, p: DrawnPanels, quality: RenderQuality, costs: Fr
 }
 
 async function main(): Promise<void> {
+  mark('start');
   const engine = await installEngine(); // the one-file lab: the core in a Web Worker (docs/lab.md)
+  const early = openEarly(); // the socket's handshake overlaps building the page (wiring/connect.ts)
   setUpPage();
   const store = new LabStore();
   const messages = new MessageLine(byId('message'));
   const explain = messages.explain;
   const [schema, scenarios] = await Promise.all([getJSON<Schema>('api/schema'), getJSON<ScenarioInfo[]>('api/scenarios')]);
   store.tickHz = schema.tick_hz;
+  mark('schema');
   const quality = renderQuality(probeRenderer(), window.devicePixelRatio);
   const scene = makeScene(quality);
+  mark('scene');
   const costs = new FrameCosts();
   const chosen = new ChosenPlot(byId('plots'));
   const plots = new Plots(byId('plots'), (ms) => costs.add('plots drawn (uPlot)', ms));
@@ -94,6 +99,7 @@ async function main(): Promise<void> {
   const view = { ...DEFAULT_VIEW };
   const link = new SharedLink(store, view, explain); // a shared link's view options, scenario and second pendulum
   const session = new Session(store, explain);
+  session.conn = early.conn;
   const lab: LabCore = { store, scene, view, session, explain };
   const { toolbar, help, lastVideo } = wireToolbar(lab);
   const tools = wireTools(lab);
@@ -107,7 +113,8 @@ async function main(): Promise<void> {
   link.attach(chosen, twin);
   new Glossary(byId('tools'));
   accessibleSliders(controls.gui);
-  connect(lab, { controls, tools, toolbar, portraits, energy }, messages, link, analyses, costs);
+  mark('panels');
+  connect(lab, early.held, { controls, tools, toolbar, portraits, energy }, messages, link, analyses, costs);
   wireGestures(lab);
   const panels: DrawnPanels = { plots, chosen, portraits, reduced, data, energy, tools, analyses };
   let drawn = () => 0;

@@ -1,7 +1,11 @@
 // The connection's handlers: frames into the store, statuses into every panel that mirrors the server
 // (controls, tools, toolbar, scene, portraits, energy bars, the URL), errors and events into the message
 // line, the offline banner when the server is gone, and a shared link's commands once the server answers.
+// The socket is opened first thing (`openEarly`), its messages held until these handlers are attached: the
+// WebSocket handshake with a loaded server took 0.4–1.2 s, which now overlaps building the page.
 import { Connection, socketUrl, whenCaughtUp } from '../connection';
+import type { ConnectionHandlers } from '../connection';
+import type { Frame } from '../protocol';
 import type { Analyses } from '../analyses';
 import { eventMessage } from '../events';
 import type { Notice, Status } from '../protocol';
@@ -17,6 +21,7 @@ import { byId } from './page';
 import type { MessageLine } from './page';
 import type { SharedLink } from './link';
 import type { LabCore } from './session';
+import { mark } from './debug';
 
 /** The panels a status updates. */
 export interface StatusPanels {
@@ -73,16 +78,58 @@ function onNotice(lab: LabCore, panels: StatusPanels, messages: MessageLine, lin
     lab.explain(eventMessage(n), true);
     return;
   }
+  mark('first status');
   onStatus(lab, panels, messages, link, n);
   for (const c of link.takeStartup()) lab.session.send(c);
   restoreTwin(lab, link);
 }
 
-/** Opens the connection (the session's `conn`). */
-export function connect(lab: LabCore, panels: StatusPanels, messages: MessageLine, link: SharedLink, analyses: Analyses, costs: FrameCosts): void {
+/** Connection handlers that hold every call until the real ones are attached, then replay them in order. */
+export class HeldHandlers implements ConnectionHandlers {
+  private real: ConnectionHandlers | null = null;
+  private held: ((h: ConnectionHandlers) => void)[] = [];
+
+  private call(f: (h: ConnectionHandlers) => void): void {
+    if (this.real !== null) f(this.real);
+    else this.held.push(f);
+  }
+
+  onOpen(): void {
+    this.call((h) => h.onOpen());
+  }
+  onClose(): void {
+    this.call((h) => h.onClose());
+  }
+  onFrames(frames: Frame[]): void {
+    this.call((h) => h.onFrames(frames));
+  }
+  onNotice(notice: Notice): void {
+    this.call((h) => h.onNotice(notice));
+  }
+  onProtocolError(message: string): void {
+    this.call((h) => h.onProtocolError(message));
+  }
+
+  /** From now on calls go to `h`; the held ones first, in the order they came. */
+  attach(h: ConnectionHandlers): void {
+    this.real = h;
+    for (const f of this.held.splice(0)) f(h);
+  }
+}
+
+/** Opens the socket now (the session's `conn`), its messages held until `connect` attaches the handlers. */
+export function openEarly(): { conn: Connection; held: HeldHandlers } {
+  const held = new HeldHandlers();
+  mark('socket opening');
+  return { conn: new Connection(socketUrl(window.location), held), held };
+}
+
+/** Attaches the lab's handlers to the early connection (held messages replayed in order). */
+export function connect(lab: LabCore, held: HeldHandlers, panels: StatusPanels, messages: MessageLine, link: SharedLink, analyses: Analyses, costs: FrameCosts): void {
   const { store } = lab;
-  lab.session.conn = new Connection(socketUrl(window.location), {
+  held.attach({
     onOpen: () => {
+      mark('socket open');
       store.setConnected(true);
       byId('conn').textContent = t('conn.connected');
       byId('offline').hidden = true;
@@ -96,6 +143,7 @@ export function connect(lab: LabCore, panels: StatusPanels, messages: MessageLin
       link.restoreShown();
     },
     onFrames: (frames) => {
+      mark('first frames');
       const t0 = performance.now();
       store.onFrames(frames);
       analyses.onFrames();

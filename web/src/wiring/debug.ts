@@ -47,3 +47,12 @@ declare global {
     pendulab?: LabHandles;
   }
 }
+
+/** Marks a step of the start-up in the browser's performance timeline (`pendulab:<step>`; ms since the
+ *  navigation began): each step once; the end-to-end test reads them to say where the time to the first frame goes. */
+export function mark(step: string): void {
+  if (marked.has(step)) return;
+  marked.add(step);
+  performance.mark(`pendulab:${step}`);
+}
+const marked = new Set<string>();

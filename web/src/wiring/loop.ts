@@ -19,6 +19,7 @@ import { gravityDirection } from '../scene/vectors';
 import { byId } from './page';
 import type { SharedLink } from './link';
 import type { LabCore } from './session';
+import { mark } from './debug';
 
 /** Everything the loop draws besides the scene. */
 export interface DrawnPanels {
@@ -99,10 +100,18 @@ export function startLoop(lab: LabCore, panels: DrawnPanels, link: SharedLink, c
   const panelTick = new RateLimiter(100);
   const gate = new ChangeGate();
   const frame = (now: number) => {
+    mark('loop');
     lab.store.advancePlayhead((now - lastWall) / 1000);
     lastWall = now;
-    if (drawScene(lab, gate, costs)) drawn++;
-    if (panelTick.due(now)) drawPanels(lab, panels, link, costs, now);
+    if (drawScene(lab, gate, costs)) {
+      drawn++;
+      mark('first render');
+      if (lab.store.frames.length > 0) mark('first frame drawn');
+    }
+    if (panelTick.due(now)) {
+      drawPanels(lab, panels, link, costs, now);
+      mark('panels drawn');
+    }
     requestAnimationFrame(frame);
   };
   requestAnimationFrame(frame);

@@ -75,14 +75,23 @@ export async function checkTouch(page, { check, WAIT }) {
     const b = await page.evaluate(() => {
       const r = (el) => el.getBoundingClientRect().toJSON();
       const small = [];
-      for (const el of document.querySelectorAll('#toolbar button, #toolbar select, .tools button, .tools select, .tools input:not([type=checkbox]), .tools label:has(> input[type=checkbox])')) {
+      // everything a finger can touch in the panel, with every lil-gui folder and <details> opened for the
+      // count (and closed again): buttons, pickers (lil-gui's invisible <select> over its value too), inputs,
+      // check box labels, folder titles, lil-gui rows, glossary entries, links
+      const closed = [...document.querySelectorAll('#gui .lil-gui.lil-closed > .lil-title, #panel details:not([open]) > summary')];
+      for (const c of closed) c.click();
+      const TOUCHABLE = '#panel button, #panel select, #panel input:not([type=checkbox]):not([type=hidden]), #panel label:has(> input[type=checkbox]), #panel summary, #panel .lil-gui .lil-controller, #panel .lil-gui .lil-title, #panel a[href]';
+      let n = 0;
+      for (const el of document.querySelectorAll(TOUCHABLE)) {
         const q = el.getBoundingClientRect();
-        if (q.width > 0 && q.height > 0 && q.height < 44 - 0.5) small.push(`${el.dataset.action ?? el.dataset.input ?? el.tagName} ${q.height.toFixed(0)} px`);
+        if (q.width > 0 && q.height > 0) n++;
+        if (q.width > 0 && q.height > 0 && q.height < 44 - 0.5) small.push(`${el.dataset.action ?? el.dataset.input ?? el.tagName + ' ' + el.textContent.slice(0, 24)} ${q.height.toFixed(0)} px`);
       }
-      return { canvas: r(document.getElementById('scene-canvas')), message: r(document.getElementById('message')), small, toolsFirst: document.getElementById('tools').getBoundingClientRect().top < document.getElementById('gui').getBoundingClientRect().top };
+      for (const c of closed.reverse()) c.click();
+      return { canvas: r(document.getElementById('scene-canvas')), message: r(document.getElementById('message')), small, n, toolsFirst: document.getElementById('tools').getBoundingClientRect().top < document.getElementById('gui').getBoundingClientRect().top };
     });
     check(b.message.height > 0 && !overlaps(b.canvas, b.message), `${name}: a message (${Math.round(b.message.width)}×${Math.round(b.message.height)} px) does not cover the view`);
-    check(b.small.length === 0, `${name}: every control of the toolbar and the classroom tools is at least 44 px tall${b.small.length ? ': ' + b.small.slice(0, 6).join(', ') : ''}`);
+    check(b.small.length === 0 && b.n > 60, `${name}: every one of the panel's ${b.n} touch targets (toolbar, tools, lil-gui rows and pickers, glossary) is at least 44 px tall${b.small.length ? ': ' + b.small.slice(0, 6).join(', ') : ''}`);
     check(b.toolsFirst, `${name}: the classroom tools come before the other controls`);
     await page.screenshot({ path: `test-results/touch-${w}x${h}.png` });
   }

@@ -13,6 +13,7 @@ import { join } from 'node:path';
 import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
+import { checkFirstFrame } from './startup.mjs';
 import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch, checkAxe } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
@@ -192,6 +193,7 @@ try {
   }
   const ctx = { check, WAIT, simulated, errors, MIN_FPS };
   for (const [name, part] of [
+    ['first frame', checkFirstFrame],
     ['layout', checkLayout],
     ['touch and server gone', checkTouch],
     ['scenarios', checkScenarios],
