@@ -104,29 +104,67 @@ def diagnostics(
     pivot: tuple[FloatArray, FloatArray] | None = None,
 ) -> dict[str, FloatArray]: ...
 
-class Solver:
+# --- python/rust/spec.rs: the run as one description, (spec, state, options) ---
+
+StateArrays = tuple[FloatArray, FloatArray]
+"""A start state: x0 [m], v0 [m/s], 3 components each."""
+
+class ModelSpec:
+    """A model built and checked once: a registry model (l [m], m [kg], g [m/s²], its extra
+    parameters, pivot samples (times [s], positions [m])) or, by ``spring_model``, the swinging spring."""
+
     def __init__(
         self,
         length: float,
         mass: float,
         g: float,
-        x0: FloatArray,
-        v0: FloatArray,
-        t0: float,
-        t_end: float,
-        method: str,
-        dt: float,
-        rtol: float,
-        atol: float,
-        project: bool,
+        model_name: str | None = None,
+        extra: list[tuple[str, float]] | None = None,
+        pivot: tuple[FloatArray, FloatArray] | None = None,
+    ) -> None: ...
+    @staticmethod
+    def spring_model(k_over_m: float, rest_length: float, g: float, mass: float) -> ModelSpec: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def length(self) -> float: ...
+    @property
+    def mass(self) -> float: ...
+    @property
+    def g(self) -> float: ...
+
+class RunOptions:
+    """How to run (keywords only; the method's dt [s], rtol, atol and projection default to the
+    core's ``SolveOptions``): t0, t_end [s], conserve, the save rule, the saved-bytes cap, the spring's
+    order (2 or 4)."""
+
+    def __init__(
+        self,
+        *,
+        t0: float = 0.0,
+        t_end: float | None = None,
+        method: str | None = None,
+        dt: float | None = None,
+        rtol: float | None = None,
+        atol: float | None = None,
+        project: bool | None = None,
+        conserve: bool = False,
         save_every: int | None = None,
         save_times: FloatArray | None = None,
         max_saved_bytes: int | None = None,
-        model_name: str | None = None,
-        extra: list[tuple[str, float]] | None = None,
-        conserve: bool = False,
-        pivot: tuple[FloatArray, FloatArray] | None = None,
+        order: int = 2,
     ) -> None: ...
+    @property
+    def t0(self) -> float: ...
+    @property
+    def t_end(self) -> float | None: ...
+    @property
+    def method(self) -> str: ...
+    @property
+    def dt(self) -> float: ...
+
+class Solver:
+    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
     def advance(self, budget: int) -> bool: ...
     def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
     @property
@@ -139,24 +177,7 @@ class Solver:
     def stats(self) -> StatsDict: ...
 
 class Stepper:
-    def __init__(
-        self,
-        length: float,
-        mass: float,
-        g: float,
-        x0: FloatArray,
-        v0: FloatArray,
-        t0: float,
-        method: str,
-        dt: float,
-        rtol: float,
-        atol: float,
-        project: bool,
-        model_name: str | None = None,
-        extra: list[tuple[str, float]] | None = None,
-        conserve: bool = False,
-        pivot: tuple[FloatArray, FloatArray] | None = None,
-    ) -> None: ...
+    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
     def step(self, n: int = 1) -> None: ...
     def step_to(self, t: float, max_steps: int | None = None) -> bool: ...
     def set_state(self, x: FloatArray, v: FloatArray) -> None: ...
@@ -227,31 +248,11 @@ class EnsembleRun:
 # --- python/rust/spring.rs: the swinging spring ---
 
 def spring_simulate(
-    k_over_m: float,
-    rest_length: float,
-    g: float,
-    mass: float,
-    x0: FloatArray,
-    v0: FloatArray,
-    dt: float,
-    n_steps: int,
-    save_every: int = 1,
-    order: int = 2,
+    spec: ModelSpec, state: StateArrays, options: RunOptions, n_steps: int
 ) -> dict[str, Any]: ...
 
 class SpringStepper:
-    def __init__(
-        self,
-        k_over_m: float,
-        rest_length: float,
-        g: float,
-        mass: float,
-        x0: FloatArray,
-        v0: FloatArray,
-        t0: float,
-        dt: float,
-        order: int = 2,
-    ) -> None: ...
+    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
     def step(self, n: int = 1) -> None: ...
     def diagnostics(self) -> dict[str, Any]: ...
     @property
@@ -263,38 +264,10 @@ class SpringStepper:
 
 # --- python/rust/string.rs: the string pendulum (hybrid: taut, slack, snaps) ---
 
-def string_simulate(
-    length: float,
-    mass: float,
-    g: float,
-    restitution: float,
-    x0: FloatArray,
-    v0: FloatArray,
-    t0: float,
-    t_end: float,
-    method: str,
-    dt: float,
-    save_every: int = 1,
-    max_saved_bytes: int | None = None,
-) -> dict[str, Any]: ...
+def string_simulate(spec: ModelSpec, state: StateArrays, options: RunOptions) -> dict[str, Any]: ...
 
 class StringRunner:
-    def __init__(
-        self,
-        length: float,
-        mass: float,
-        g: float,
-        restitution: float,
-        x0: FloatArray,
-        v0: FloatArray,
-        t0: float,
-        t_end: float,
-        method: str,
-        dt: float,
-        save_every: int | None = None,
-        save_at: FloatArray | None = None,
-        max_saved_bytes: int | None = None,
-    ) -> None: ...
+    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
     def advance(self, max_steps: int, /) -> bool: ...
     def take_samples(self, all: bool = False) -> dict[str, Any]: ...
     @property
@@ -305,18 +278,7 @@ class StringRunner:
     def stats(self) -> dict[str, int]: ...
 
 class StringStepper:
-    def __init__(
-        self,
-        length: float,
-        mass: float,
-        g: float,
-        restitution: float,
-        x0: FloatArray,
-        v0: FloatArray,
-        t0: float,
-        method: str,
-        dt: float,
-    ) -> None: ...
+    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
     def step(self, n: int = 1) -> None: ...
     def diagnostics(self) -> dict[str, Any]: ...
     def take_events(self) -> list[dict[str, Any]]: ...
@@ -377,25 +339,10 @@ def crane_residual_grid(
 class ForceSolver:
     def __init__(
         self,
-        length: float,
-        mass: float,
-        g: float,
-        x0: FloatArray,
-        v0: FloatArray,
-        t0: float,
-        t_end: float,
-        method: str,
-        dt: float,
-        rtol: float,
-        atol: float,
-        project: bool,
+        spec: ModelSpec,
+        state: StateArrays,
+        options: RunOptions,
         force: Callable[[float, list[float], list[float]], Any],
-        save_every: int | None = None,
-        save_times: FloatArray | None = None,
-        max_saved_bytes: int | None = None,
-        model_name: str | None = None,
-        extra: list[tuple[str, float]] | None = None,
-        pivot: tuple[FloatArray, FloatArray] | None = None,
     ) -> None: ...
     def advance(self, budget: int) -> bool: ...
     def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...

@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
-from ._core import InvalidInputError, check_model, project_state, state_on_ts2
+from ._core import InvalidInputError, ModelSpec, project_state, state_on_ts2
 from ._core import diagnostics as _diagnostics
 from ._core import models as _models
 from ._core import state_from_angles as _state_from_angles
@@ -105,6 +105,11 @@ class State:
         """Polar angle θ from the downward vertical and azimuth φ = atan2(y, x) [rad]."""
         rho = float(np.hypot(self.x[0], self.x[1]))
         return float(np.arctan2(rho, -self.x[2])), float(np.arctan2(self.x[1], self.x[0]))
+
+    @property
+    def pair(self) -> tuple[FloatArray, FloatArray]:
+        """(x [m], v [m/s]) as contiguous arrays: the state a core class takes with a spec and options."""
+        return np.ascontiguousarray(self.x), np.ascontiguousarray(self.v)
 
     def as_array(self) -> FloatArray:
         """The state as one array (x₁, x₂, x₃, v₁, v₂, v₃) [m, m/s]."""
@@ -221,8 +226,11 @@ class Pendulum:
                 _frozen(array("pivot_samples times", times, "time").ravel()),
                 _frozen(array("pivot_samples positions", positions, "position")),
             )
-        # validates everything (names, ranges, pivot samples) once, in the core
-        check_model(float(length), float(mass), float(g), model, list(self._extra.items()), pivot=self._pivot)
+        # validates everything (names, ranges, pivot samples) once, in the core, and keeps the model
+        # built there: every run takes this spec (python/rust/spec.rs)
+        self._spec = ModelSpec(
+            float(length), float(mass), float(g), model, list(self._extra.items()), self._pivot
+        )
         self.model = model
         self._length = float(length)
         self._g = float(g)
@@ -301,6 +309,12 @@ class Pendulum:
     def is_ideal(self) -> bool:
         """True for the ideal pendulum (the exact solution and the angle method need it)."""
         return self.model == "ideal" and self._force is None
+
+    @property
+    def spec(self) -> ModelSpec:
+        """The model as the core built and checked it (``pendulab._core.ModelSpec``): what every run
+        of this pendulum hands to the core, with a run's ``RunOptions`` and its start state."""
+        return self._spec
 
     def _core_args(self) -> tuple[float, float, float]:
         return self._length, self._mass, self._g

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ._chunks import _PROGRESS_AFTER_STEPS, run_in_chunks
-from ._core import ForceSolver, IntegrationError, InvalidInputError, Solver
+from ._core import ForceSolver, IntegrationError, InvalidInputError, RunOptions, Solver
 from ._core import Stepper as _Stepper
 from ._core import methods as _methods
 from .accuracy import estimate, run_to_accuracy, true_error
@@ -291,24 +291,24 @@ def simulate(
         raise InvalidInputError("give either save_every or save_at, not both")
     _check_conserve(pendulum, conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
-    args = (
-        *pendulum._core_args(),
-        np.ascontiguousarray(state.x),
-        np.ascontiguousarray(state.v),
-        float(t0),
-        float(t_end),
-        method,
-        float(dt),
-        float(rtol),
-        float(atol),
-        bool(project),
+    run = RunOptions(
+        t0=float(t0),
+        t_end=float(t_end),
+        method=method,
+        dt=float(dt),
+        rtol=float(rtol),
+        atol=float(atol),
+        project=bool(project),
+        conserve=bool(conserve),
+        save_every=None if save_every is None else int(save_every),
+        save_times=times,
+        max_saved_bytes=max_saved_bytes,
     )
-    saving = (None if save_every is None else int(save_every), times, max_saved_bytes)
     solver: Solver | ForceSolver
     if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)
-        solver = ForceSolver(*args, pendulum.force, *saving, **pendulum._model_kwargs())
+        solver = ForceSolver(pendulum.spec, state.pair, run, pendulum.force)
     else:
-        solver = Solver(*args, *saving, **pendulum._model_kwargs(), conserve=bool(conserve))
+        solver = Solver(pendulum.spec, state.pair, run)
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
     parts, interrupted = run_in_chunks(solver, show, f"{method} to t={t_end:g} s", stacklevel=2)
@@ -395,19 +395,16 @@ class Stepper:
         self._method = method
         self._adaptive = bool(_method_table()[method]["adaptive"])
         self.pendulum = pendulum
-        self._core = _Stepper(
-            *pendulum._core_args(),
-            np.ascontiguousarray(state.x),
-            np.ascontiguousarray(state.v),
-            float(t0),
-            method,
-            float(dt),
-            float(rtol),
-            float(atol),
-            bool(project),
-            **pendulum._model_kwargs(),
+        run = RunOptions(
+            t0=float(t0),
+            method=method,
+            dt=float(dt),
+            rtol=float(rtol),
+            atol=float(atol),
+            project=bool(project),
             conserve=bool(conserve),
         )
+        self._core = _Stepper(pendulum.spec, state.pair, run)
 
     def __repr__(self) -> str:
         theta, phi = self.state.angles_deg()

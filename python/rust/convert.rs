@@ -1,12 +1,11 @@
 //! Conversions between Python/numpy and `pendulab-core`: core errors to Python exceptions, vectors
-//! and arrays of 3-vectors, models built from the registry's names, solve options, saved samples and
-//! work counters. SI units throughout (m, kg, s, rad); arrays of 3-vectors are float64 of shape (N, 3).
+//! and arrays of 3-vectors, models built from the registry's names, saved samples and work counters. SI units throughout (m, kg, s, rad); arrays of 3-vectors are float64 of shape (N, 3).
 
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pendulab_core::model::registry::AnyModel;
 use pendulab_core::solve::Samples;
-use pendulab_core::{DVec3, Error, IdealPendulum, Method, Params, SaveAt, SolveOptions, Stats};
+use pendulab_core::{DVec3, Error, IdealPendulum, Params, Stats};
 use pyo3::create_exception;
 use pyo3::exceptions::{PyRuntimeError, PyValueError};
 use pyo3::prelude::*;
@@ -102,26 +101,6 @@ pub(crate) fn any_model(
             "pivot samples belong to the 'sampled_pivot' model, not to {name:?}"
         ))),
         (_, None) => AnyModel::build(name, params, &pairs).map_err(to_py),
-    }
-}
-
-/// Solve options from the method's name, dt [s], rtol, atol [m and m/s] and projection.
-pub(crate) fn options(method: &str, dt: f64, rtol: f64, atol: f64, project: bool) -> PyResult<SolveOptions> {
-    Ok(SolveOptions { method: Method::from_name(method).map_err(to_py)?, dt, rtol, atol, project })
-}
-
-/// The save rule of a batch solver: every `save_every`-th step (default 1) or exactly `save_times` [s]
-/// (not both).
-pub(crate) fn save_rule(
-    save_every: Option<u64>,
-    save_times: Option<PyReadonlyArray1<'_, f64>>,
-) -> PyResult<SaveAt> {
-    match (save_every, save_times) {
-        (Some(_), Some(_)) => {
-            Err(InvalidInputError::new_err("give either save_every or save_times, not both"))
-        }
-        (_, Some(ts)) => Ok(SaveAt::Times(ts.as_array().to_vec())),
-        (n, None) => Ok(SaveAt::Every(n.unwrap_or(1))),
     }
 }
 

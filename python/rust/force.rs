@@ -9,13 +9,10 @@
 //! error is kept, the state is poisoned with NaN so that the core stops at the end of the step, and
 //! the error is raised to Python in place of the core's "diverged".
 
-use crate::convert::{
-    any_model, options, samples_to_numpy, save_rule, to_py, vec3, Arrays, InvalidInputError, PivotArrays,
-};
+use crate::convert::{samples_to_numpy, to_py, Arrays, InvalidInputError};
 use crate::getters::pymethods_with_getters;
-use numpy::PyReadonlyArray1;
+use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
 use pendulab_core::model::AnyModel;
-use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
 use pendulab_core::{DVec3, Method, Model, Params, Solver, State};
 use pyo3::prelude::*;
 use std::sync::{Arc, Mutex};
@@ -115,51 +112,22 @@ impl Model for Handle {
 pymethods_with_getters! {
     impl ForceSolver {
         #[new]
-        #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, force, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, pivot=None))]
-        #[allow(clippy::too_many_arguments)]
-        fn new(
-            length: f64,
-            mass: f64,
-            g: f64,
-            x0: PyReadonlyArray1<'_, f64>,
-            v0: PyReadonlyArray1<'_, f64>,
-            t0: f64,
-            t_end: f64,
-            method: &str,
-            dt: f64,
-            rtol: f64,
-            atol: f64,
-            project: bool,
-            force: Py<PyAny>,
-            save_every: Option<u64>,
-            save_times: Option<PyReadonlyArray1<'_, f64>>,
-            max_saved_bytes: Option<u64>,
-            model_name: Option<&str>,
-            extra: Option<Vec<(String, f64)>>,
-            pivot: Option<PivotArrays<'_>>,
-        ) -> PyResult<Self> {
-            let base = any_model(length, mass, g, model_name, extra, pivot)?;
-            let opts = options(method, dt, rtol, atol, project)?;
-            if !matches!(opts.method, Method::Dop853 | Method::Rkmk4 | Method::Rk4) {
+        fn new(spec: &ModelSpec, state: StateArrays<'_>, options: &RunOptions, force: Py<PyAny>) -> PyResult<Self> {
+            let base = spec.registry()?;
+            let o = options;
+            if !matches!(o.solve.method, Method::Dop853 | Method::Rkmk4 | Method::Rk4) {
                 return Err(InvalidInputError::new_err(format!(
-                    "method {method:?} cannot integrate a force given as a Python callable: it may depend on \
+                    "method {:?} cannot integrate a force given as a Python callable: it may depend on \
                      v, which the RATTLE family's kicks f(t, x, 0) leave out (and rk4_angles is for the ideal \
-                     pendulum only); use 'dop853' (recommended, with projection onto TS²), 'rkmk4' or 'rk4'"
+                     pendulum only); use 'dop853' (recommended, with projection onto TS²), 'rkmk4' or 'rk4'",
+                    o.solve.method.info().name
                 )));
             }
-            let s = State::on_tangent_bundle(base.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
-            let save = save_rule(save_every, save_times)?;
+            let (x0, v0) = start(&state)?;
+            let s = State::on_tangent_bundle(base.params(), x0, v0).map_err(to_py)?;
             let model = Arc::new(PyForce { base, force, error: Mutex::new(None) });
-            let inner = Solver::new(
-                Handle(model.clone()),
-                t0,
-                s,
-                t_end,
-                &opts,
-                save,
-                max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES),
-            )
-            .map_err(to_py)?;
+            let inner = Solver::new(Handle(model.clone()), o.t0, s, o.t_end()?, &o.solve, o.save.clone(), o.max_saved_bytes)
+                .map_err(to_py)?;
             if let Some(e) = model.take_error() {
                 return Err(e);
             }

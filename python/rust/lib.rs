@@ -7,6 +7,7 @@
 //! - `getters.rs`: the getters the stepping classes share (`t`, `x`, `v`, `stats`, `progress`,
 //!   `done`), one macro.
 //! - `tables.rs`: the registries of methods and models; `states.rs`: states and diagnostics.
+//! - `spec.rs`: `ModelSpec` and `RunOptions`, the run as one description (`(spec, state, options)`).
 //! - `solver.rs`: `Solver`, `Stepper`; `force.rs`: `ForceSolver` (a Python force); `ensemble.rs`,
 //!   `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module.
 
@@ -21,6 +22,7 @@ mod limits;
 mod sensitivity;
 mod slewing;
 mod solver;
+mod spec;
 mod spring;
 mod states;
 mod string;
@@ -36,6 +38,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("IntegrationError", m.py().get_type::<IntegrationError>())?;
     tables::register(m)?;
     states::register(m)?;
+    spec::register(m)?;
     solver::register(m)?;
     exact::register(m)?;
     ensemble::register(m)?;

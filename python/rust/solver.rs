@@ -1,12 +1,13 @@
 //! The batch solver and the incremental stepper of the rod models as Python classes (`Solver`:
 //! advanced in chunks with the GIL released, for progress bars and Ctrl-C; `Stepper`: step / step_to
-//! / state, for live viewing). Conversions only; SI units (m, kg, s).
+//! / state, for live viewing), both built from `(spec, state, options)` (`spec.rs`). Conversions only;
+//! SI units (m, kg, s).
 
-use crate::convert::{any_model, options, samples_to_numpy, save_rule, to_py, vec3, Arrays, PivotArrays};
+use crate::convert::{samples_to_numpy, to_py, vec3, Arrays};
 use crate::getters::pymethods_with_getters;
+use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
 use numpy::PyReadonlyArray1;
 use pendulab_core::model::registry::AnyModel;
-use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
 use pendulab_core::{Model, Solver, State, Stepper};
 use pyo3::prelude::*;
 
@@ -19,37 +20,14 @@ struct Solver_ {
 pymethods_with_getters! {
     impl Solver_ {
         #[new]
-        #[pyo3(signature = (length, mass, g, x0, v0, t0, t_end, method, dt, rtol, atol, project, save_every=None, save_times=None, max_saved_bytes=None, model_name=None, extra=None, conserve=false, pivot=None))]
-        #[allow(clippy::too_many_arguments)]
-        fn new(
-            length: f64,
-            mass: f64,
-            g: f64,
-            x0: PyReadonlyArray1<'_, f64>,
-            v0: PyReadonlyArray1<'_, f64>,
-            t0: f64,
-            t_end: f64,
-            method: &str,
-            dt: f64,
-            rtol: f64,
-            atol: f64,
-            project: bool,
-            save_every: Option<u64>,
-            save_times: Option<PyReadonlyArray1<'_, f64>>,
-            max_saved_bytes: Option<u64>,
-            model_name: Option<&str>,
-            extra: Option<Vec<(String, f64)>>,
-            conserve: bool,
-            pivot: Option<PivotArrays<'_>>,
-        ) -> PyResult<Self> {
-            let m = any_model(length, mass, g, model_name, extra, pivot)?;
-            let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
-            let save = save_rule(save_every, save_times)?;
-            let opts = options(method, dt, rtol, atol, project)?;
-            let mut inner =
-                Solver::new(m, t0, s, t_end, &opts, save, max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES))
-                    .map_err(to_py)?;
-            inner.stepper_mut().set_invariant_projection(conserve);
+        fn new(spec: &ModelSpec, state: StateArrays<'_>, options: &RunOptions) -> PyResult<Self> {
+            let m = spec.registry()?;
+            let (x0, v0) = start(&state)?;
+            let s = State::on_tangent_bundle(m.params(), x0, v0).map_err(to_py)?;
+            let o = options;
+            let mut inner = Solver::new(m, o.t0, s, o.t_end()?, &o.solve, o.save.clone(), o.max_saved_bytes)
+                .map_err(to_py)?;
+            inner.stepper_mut().set_invariant_projection(o.conserve);
             Ok(Self { inner })
         }
 
@@ -81,30 +59,12 @@ struct Stepper_ {
 pymethods_with_getters! {
     impl Stepper_ {
         #[new]
-        #[pyo3(signature = (length, mass, g, x0, v0, t0, method, dt, rtol, atol, project, model_name=None, extra=None, conserve=false, pivot=None))]
-        #[allow(clippy::too_many_arguments)]
-        fn new(
-            length: f64,
-            mass: f64,
-            g: f64,
-            x0: PyReadonlyArray1<'_, f64>,
-            v0: PyReadonlyArray1<'_, f64>,
-            t0: f64,
-            method: &str,
-            dt: f64,
-            rtol: f64,
-            atol: f64,
-            project: bool,
-            model_name: Option<&str>,
-            extra: Option<Vec<(String, f64)>>,
-            conserve: bool,
-            pivot: Option<PivotArrays<'_>>,
-        ) -> PyResult<Self> {
-            let m = any_model(length, mass, g, model_name, extra, pivot)?;
-            let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
-            let opts = options(method, dt, rtol, atol, project)?;
-            let mut inner = Stepper::new(m, t0, s, &opts).map_err(to_py)?;
-            inner.set_invariant_projection(conserve);
+        fn new(spec: &ModelSpec, state: StateArrays<'_>, options: &RunOptions) -> PyResult<Self> {
+            let m = spec.registry()?;
+            let (x0, v0) = start(&state)?;
+            let s = State::on_tangent_bundle(m.params(), x0, v0).map_err(to_py)?;
+            let mut inner = Stepper::new(m, options.t0, s, &options.solve).map_err(to_py)?;
+            inner.set_invariant_projection(options.conserve);
             Ok(Self { inner })
         }
 

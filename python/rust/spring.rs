@@ -1,37 +1,37 @@
 //! Binding of the swinging spring (`pendulab_core::elastic`, T-7.4). Conversions only; SI units.
 
-use crate::convert::{arr3, to_py, vec3};
+use crate::convert::{arr3, to_py, InvalidInputError};
 use crate::getters::pymethods_with_getters;
+use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
 use numpy::ndarray::{Array1, Array2};
-use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1};
-use pendulab_core::elastic::{SpringStepper, SwingingSpring};
-use pendulab_core::State;
+use numpy::{IntoPyArray, PyArray1, PyArray2};
+use pendulab_core::elastic::SpringStepper;
+use pendulab_core::{SaveAt, State};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-/// Integrates the spring (k/m [1/s²], l₀ [m], g [m/s²], m [kg]) from x0, v0 [m, m/s] for `n_steps`
-/// steps of `dt` [s] with Störmer–Verlet (order 2) or its triple jump (order 4); returns a dict of
+/// Integrates the spring (`ModelSpec.spring_model`: k/m [1/s²], l₀ [m], g [m/s²], m [kg]) from the
+/// state (x0, v0) [m, m/s] for `n_steps` steps of the options' `dt` [s], keeping every `save_every`-th,
+/// with Störmer–Verlet (`order` 2) or its triple jump (order 4); returns a dict of
 /// t (n,), x, v (n, 3), energy [J], j3 [kg m²/s].
 #[pyfunction]
-#[pyo3(signature = (k_over_m, rest_length, g, mass, x0, v0, dt, n_steps, save_every=1, order=2))]
-#[allow(clippy::too_many_arguments)]
 pub fn spring_simulate<'py>(
     py: Python<'py>,
-    k_over_m: f64,
-    rest_length: f64,
-    g: f64,
-    mass: f64,
-    x0: PyReadonlyArray1<'py, f64>,
-    v0: PyReadonlyArray1<'py, f64>,
-    dt: f64,
+    spec: &ModelSpec,
+    state: StateArrays<'py>,
+    options: &RunOptions,
     n_steps: u64,
-    save_every: u64,
-    order: u32,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let sp = SwingingSpring::new(k_over_m, rest_length, g, mass).map_err(to_py)?;
-    let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
+    let sp = spec.spring()?;
+    let (x, v) = start(&state)?;
+    let SaveAt::Every(save_every) = options.save else {
+        return Err(InvalidInputError::new_err(
+            "spring_simulate saves every n-th step: give save_every, not save_times",
+        ));
+    };
+    let (dt, order) = (options.solve.dt, options.order);
     let (t, states) =
-        py.allow_threads(|| sp.simulate(start, dt, n_steps, save_every, order)).map_err(to_py)?;
+        py.allow_threads(|| sp.simulate(State { x, v }, dt, n_steps, save_every, order)).map_err(to_py)?;
     let n = states.len();
     let (mut x, mut v) = (Array2::<f64>::zeros((n, 3)), Array2::<f64>::zeros((n, 3)));
     for (i, s) in states.iter().enumerate() {
@@ -56,8 +56,8 @@ pub fn spring_simulate<'py>(
     Ok(d)
 }
 
-/// The swinging spring stepped incrementally (the lab): k/m [1/s²], l₀ [m], g [m/s²], m [kg], the
-/// start x0, v0 [m, m/s] at t0 [s], step dt [s], order 2 (Störmer–Verlet) or 4 (triple jump).
+/// The swinging spring stepped incrementally (the lab): the spring's spec, the start x0, v0 [m, m/s],
+/// the options' t0 [s], step dt [s] and order 2 (Störmer–Verlet) or 4 (triple jump).
 #[pyclass(module = "pendulab._core", name = "SpringStepper")]
 struct SpringStepper_ {
     inner: SpringStepper,
@@ -66,22 +66,11 @@ struct SpringStepper_ {
 pymethods_with_getters! {
     impl SpringStepper_ {
         #[new]
-        #[pyo3(signature = (k_over_m, rest_length, g, mass, x0, v0, t0, dt, order=2))]
-        #[allow(clippy::too_many_arguments)]
-        fn new(
-            k_over_m: f64,
-            rest_length: f64,
-            g: f64,
-            mass: f64,
-            x0: PyReadonlyArray1<'_, f64>,
-            v0: PyReadonlyArray1<'_, f64>,
-            t0: f64,
-            dt: f64,
-            order: u32,
-        ) -> PyResult<Self> {
-            let sp = SwingingSpring::new(k_over_m, rest_length, g, mass).map_err(to_py)?;
-            let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-            Ok(Self { inner: SpringStepper::new(sp, start, t0, dt, order).map_err(to_py)? })
+        fn new(spec: &ModelSpec, state: StateArrays<'_>, options: &RunOptions) -> PyResult<Self> {
+            let sp = spec.spring()?;
+            let (x, v) = start(&state)?;
+            let o = options;
+            Ok(Self { inner: SpringStepper::new(sp, State { x, v }, o.t0, o.solve.dt, o.order).map_err(to_py)? })
         }
 
         /// Takes `n` steps of dt.

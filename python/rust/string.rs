@@ -2,14 +2,13 @@
 //! (taut phases, leave and snap events, analytic free flight) as numpy arrays. Conversions only;
 //! SI units.
 
-use crate::convert::{arr3, stats_dict, to_py, vec3};
+use crate::convert::{arr3, stats_dict, to_py, InvalidInputError};
 use crate::getters::pymethods_with_getters;
+use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
 use numpy::ndarray::{Array1, Array2};
-use numpy::{IntoPyArray, PyArray1, PyReadonlyArray1};
-use pendulab_core::model::StringPendulum;
-use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
+use numpy::{IntoPyArray, PyArray1};
 use pendulab_core::string_run::{EventKind, StringEvent, StringRun, StringRunner, StringStepper};
-use pendulab_core::{Method, Params, SaveAt, State};
+use pendulab_core::{SaveAt, State};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -23,34 +22,29 @@ fn rows(states: impl ExactSizeIterator<Item = pendulab_core::DVec3>) -> Array2<f
     a
 }
 
-/// Simulates the string pendulum (l [m], m [kg], g [m/s²], restitution e ∈ [0, 1]) from x0, v0
-/// [m, m/s] at t0 [s] to t_end [s] with `method` (rattle, rattle4, rattle6, rattle8, rkmk4) and step
-/// dt [s]; returns a dict of t (n,), x, v (n, 3), taut (n,) bool, stats, and events: a dict of
+/// Simulates the string pendulum (the spec's `string` model: l [m], m [kg], g [m/s²], restitution
+/// e ∈ [0, 1]) from the state (x0, v0) [m, m/s] at the options' t0 [s] to t_end [s] with their
+/// `method` (rattle, rattle4, rattle6, rattle8, rkmk4), step dt [s] and `save_every`; returns a dict of t (n,), x, v (n, 3), taut (n,) bool, stats, and events: a dict of
 /// arrays t (k,), kind (k,) str ("slack" or "taut"), x, v_before, v_after (k, 3), energy_lost (k,) [J].
 #[pyfunction]
-#[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, t_end, method, dt, save_every=1, max_saved_bytes=None))]
-#[allow(clippy::too_many_arguments)]
 pub fn string_simulate<'py>(
     py: Python<'py>,
-    length: f64,
-    mass: f64,
-    g: f64,
-    restitution: f64,
-    x0: PyReadonlyArray1<'py, f64>,
-    v0: PyReadonlyArray1<'py, f64>,
-    t0: f64,
-    t_end: f64,
-    method: &str,
-    dt: f64,
-    save_every: u64,
-    max_saved_bytes: Option<u64>,
+    spec: &ModelSpec,
+    state: StateArrays<'py>,
+    options: &RunOptions,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let sp = StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
-    let method = Method::from_name(method).map_err(to_py)?;
-    let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-    let limit = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
-    let run =
-        py.allow_threads(|| sp.simulate(t0, start, t_end, method, dt, save_every, limit)).map_err(to_py)?;
+    let sp = spec.string()?;
+    let (x, v) = start(&state)?;
+    let o = options;
+    let SaveAt::Every(save_every) = o.save else {
+        return Err(InvalidInputError::new_err(
+            "string_simulate saves every n-th step: give save_every, not save_times",
+        ));
+    };
+    let (method, dt, limit, t_end) = (o.solve.method, o.solve.dt, o.max_saved_bytes, o.t_end()?);
+    let run = py
+        .allow_threads(|| sp.simulate(o.t0, State { x, v }, t_end, method, dt, save_every, limit))
+        .map_err(to_py)?;
     run_dict(py, run)
 }
 
@@ -82,9 +76,8 @@ fn run_dict(py: Python<'_>, run: StringRun) -> PyResult<Bound<'_, PyDict>> {
 }
 
 /// A batch run of the string pendulum in chunks (`pl.simulate` drives it: progress bar, Ctrl-C):
-/// l [m], m [kg], g [m/s²], restitution e, the start x0, v0 [m, m/s] at t0 [s], t_end [s], `method`
-/// and dt [s] as for [`string_simulate`]; keeping every `save_every`-th grid point, the events and
-/// t_end (default), or exactly the times `save_at` [s]. A run in chunks is `string_simulate`'s run
+/// the spec, state and options as for [`string_simulate`]; keeping every `save_every`-th grid point,
+/// the events and t_end (default), or exactly the times `save_times` [s]. A run in chunks is `string_simulate`'s run
 /// bit for bit.
 #[pyclass(module = "pendulab._core", name = "StringRunner")]
 struct StringRunner_ {
@@ -94,34 +87,12 @@ struct StringRunner_ {
 pymethods_with_getters! {
     impl StringRunner_ {
         #[new]
-        #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, t_end, method, dt, save_every=None, save_at=None, max_saved_bytes=None))]
-        #[allow(clippy::too_many_arguments)]
-        fn new(
-            length: f64,
-            mass: f64,
-            g: f64,
-            restitution: f64,
-            x0: PyReadonlyArray1<'_, f64>,
-            v0: PyReadonlyArray1<'_, f64>,
-            t0: f64,
-            t_end: f64,
-            method: &str,
-            dt: f64,
-            save_every: Option<u64>,
-            save_at: Option<PyReadonlyArray1<'_, f64>>,
-            max_saved_bytes: Option<u64>,
-        ) -> PyResult<Self> {
-            let sp =
-                StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
-            let method = Method::from_name(method).map_err(to_py)?;
-            let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-            let save = match save_at {
-                Some(ts) => SaveAt::Times(ts.as_array().to_vec()),
-                None => SaveAt::Every(save_every.unwrap_or(1)),
-            };
-            let stepper = StringStepper::new(sp, t0, start, method, dt).map_err(to_py)?;
-            let limit = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
-            Ok(Self { inner: StringRunner::new(stepper, t_end, save, limit).map_err(to_py)? })
+        fn new(spec: &ModelSpec, state: StateArrays<'_>, options: &RunOptions) -> PyResult<Self> {
+            let sp = spec.string()?;
+            let (x, v) = start(&state)?;
+            let o = options;
+            let stepper = StringStepper::new(sp, o.t0, State { x, v }, o.solve.method, o.solve.dt).map_err(to_py)?;
+            Ok(Self { inner: StringRunner::new(stepper, o.t_end()?, o.save.clone(), o.max_saved_bytes).map_err(to_py)? })
         }
 
         /// Advances by about `max_steps` grid steps (GIL released); True once t_end is reached.
@@ -145,9 +116,9 @@ pymethods_with_getters! {
     }
 }
 
-/// The string pendulum stepped incrementally (the lab): l [m], m [kg], g [m/s²], restitution e, the
-/// start x0, v0 [m, m/s] at t0 [s] (on the sphere or inside it: slack), `method` (rattle, rattle4,
-/// rattle6, rattle8, rkmk4) and step dt [s] of the taut phases. Its mode (taut, or slack on a
+/// The string pendulum stepped incrementally (the lab): the spec's `string` model, the start x0, v0
+/// [m, m/s] (on the sphere or inside it: slack) at the options' t0 [s], their `method` (rattle,
+/// rattle4, rattle6, rattle8, rkmk4) and step dt [s] of the taut phases. Its mode (taut, or slack on a
 /// flight) is part of its state: stepping on continues the same hybrid run.
 #[pyclass(module = "pendulab._core", name = "StringStepper")]
 struct StringStepper_ {
@@ -157,24 +128,11 @@ struct StringStepper_ {
 pymethods_with_getters! {
     impl StringStepper_ {
         #[new]
-        #[pyo3(signature = (length, mass, g, restitution, x0, v0, t0, method, dt))]
-        #[allow(clippy::too_many_arguments)]
-        fn new(
-            length: f64,
-            mass: f64,
-            g: f64,
-            restitution: f64,
-            x0: PyReadonlyArray1<'_, f64>,
-            v0: PyReadonlyArray1<'_, f64>,
-            t0: f64,
-            method: &str,
-            dt: f64,
-        ) -> PyResult<Self> {
-            let sp =
-                StringPendulum::new(Params::new(length, mass, g).map_err(to_py)?, restitution).map_err(to_py)?;
-            let method = Method::from_name(method).map_err(to_py)?;
-            let start = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-            Ok(Self { inner: StringStepper::new(sp, t0, start, method, dt).map_err(to_py)? })
+        fn new(spec: &ModelSpec, state: StateArrays<'_>, options: &RunOptions) -> PyResult<Self> {
+            let sp = spec.string()?;
+            let (x, v) = start(&state)?;
+            let o = options;
+            Ok(Self { inner: StringStepper::new(sp, o.t0, State { x, v }, o.solve.method, o.solve.dt).map_err(to_py)? })
         }
 
         /// Takes `n` steps of the grid t0 + k·dt (to the n-th grid point after the last one reached).

@@ -132,9 +132,8 @@ def _one_call(
     p: pl.Pendulum, s0: pl.State, t_end: float, method: str, dt: float, **kw: Any
 ) -> dict[str, Any]:
     """The run in one call of the core (``_core.string_simulate``), no chunks."""
-    return _core.string_simulate(
-        p.length, p.mass, p.g, p.extra.get("restitution", 0.0), s0.x, s0.v, 0.0, t_end, method, dt, **kw
-    )
+    run = _core.RunOptions(t0=0.0, t_end=t_end, method=method, dt=dt, **kw)
+    return _core.string_simulate(p.spec, s0.pair, run)
 
 
 _StringRunner = _core.StringRunner

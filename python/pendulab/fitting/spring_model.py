@@ -25,7 +25,7 @@ from typing import Any
 
 import numpy as np
 
-from .._core import InvalidInputError, spring_simulate
+from .._core import InvalidInputError, ModelSpec, RunOptions, spring_simulate
 from ..model import FloatArray
 
 SPRING_STATE = ("r0", "r_dot0")
@@ -71,9 +71,8 @@ def motion(values: Mapping[str, float], tau: FloatArray) -> tuple[FloatArray, Fl
             f"{1 / omega:.3g} s); at most {MAX_STEPS}: fit a shorter record"
         )
     dt = span / n if span > 0.0 else 1.0
-    out = spring_simulate(
-        float(k_over_m), float(rest), float(g), float(values["mass"]), x0, v0, dt, int(n), 1, 4
-    )
+    spec = ModelSpec.spring_model(float(k_over_m), float(rest), float(g), float(values["mass"]))
+    out = spring_simulate(spec, (x0, v0), RunOptions(dt=dt, save_every=1, order=4), int(n))
     xs, vs = out["x"], out["v"]
     if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(vs))):
         raise InvalidInputError("the spring's motion diverged at these parameters")

@@ -18,7 +18,7 @@ import re
 
 import numpy as np
 
-from .._core import InvalidInputError, Solver, spring_simulate
+from .._core import InvalidInputError, RunOptions, Solver, spring_simulate
 from ..model import Pendulum, State, _frozen
 from ..variants.spring import SwingingSpring
 from .errors import ScenarioError
@@ -98,21 +98,19 @@ def check_run_settings(pendulum: Pendulum, state: State, sim: SimulationSection,
             raise ScenarioError(source, f"[simulation] {e}") from None
         return
     try:  # the core's own up-front checks (memory of the saved samples, save times), no stepping
-        Solver(
-            *pendulum._core_args(),
-            np.ascontiguousarray(state.x),
-            np.ascontiguousarray(state.v),
-            sim.t0,
-            sim.t_end,
-            sim.method,
-            sim.resolved_dt(),
-            *sim.resolved_tolerances(),
-            True,
-            sim.save_every,
-            None if sim.save_at is None else np.asarray(sim.save_at, dtype=np.float64),
-            None,
-            **pendulum._model_kwargs(),
+        rtol, atol = sim.resolved_tolerances()
+        run = RunOptions(
+            t0=sim.t0,
+            t_end=sim.t_end,
+            method=sim.method,
+            dt=sim.resolved_dt(),
+            rtol=rtol,
+            atol=atol,
+            project=True,
+            save_every=sim.save_every,
+            save_times=None if sim.save_at is None else np.asarray(sim.save_at, dtype=np.float64),
         )
+        Solver(pendulum.spec, state.pair, run)
     except InvalidInputError as e:
         raise ScenarioError(source, f"[simulation] {e}") from None
 
@@ -150,16 +148,7 @@ def build_spring(spec: ScenarioSpec, source: str) -> tuple[SwingingSpring, State
         state = Pendulum(length=ell, g=p.g, mass=p.mass).state_from_angles(*ini.angles())
     try:  # the core's checks of parameters, start and step, without stepping
         spring_simulate(
-            spring.k_over_m,
-            spring.rest_length,
-            spring.g,
-            spring.mass,
-            np.ascontiguousarray(state.x),
-            np.ascontiguousarray(state.v),
-            sim.resolved_dt(),
-            0,
-            int(sim.save_every or 1),
-            2,
+            spring.spec, state.pair, RunOptions(dt=sim.resolved_dt(), save_every=int(sim.save_every or 1)), 0
         )
     except InvalidInputError as e:
         raise ScenarioError(source, f"[pendulum] {e}") from None

@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 
-from .._core import InvalidInputError, models
+from .._core import InvalidInputError, RunOptions, models
 from .._core import SpringStepper as _SpringStepper
 from .._core import StringStepper as _StringStepper
 from ..model import Pendulum, State
@@ -157,6 +157,11 @@ def scenario_pendulum(sc: Scenario) -> LabPendulum:
     return p
 
 
+def _pair(state: State) -> tuple[Any, Any]:
+    """The start (x [m], v [m/s]) as float64 arrays (a spring's state need not lie on a sphere)."""
+    return np.ascontiguousarray(state.x, dtype=np.float64), np.ascontiguousarray(state.v, dtype=np.float64)
+
+
 class SpringStepper:
     """The swinging spring stepped in the core (``_SpringStepper``): ``rattle`` runs Störmer–Verlet
     (order 2), ``rattle4`` its triple jump (order 4), as in scenario files; whole steps of dt."""
@@ -165,17 +170,8 @@ class SpringStepper:
         check_method("spring", method)
         sp = pendulum.spring
         self.pendulum = pendulum
-        self._core = _SpringStepper(
-            sp.k_over_m,
-            sp.rest_length,
-            sp.g,
-            sp.mass,
-            np.ascontiguousarray(state.x, dtype=np.float64),
-            np.ascontiguousarray(state.v, dtype=np.float64),
-            float(t0),
-            float(dt),
-            SPRING_ORDERS[method],
-        )
+        run = RunOptions(t0=float(t0), dt=float(dt), order=SPRING_ORDERS[method])
+        self._core = _SpringStepper(sp.spec, _pair(state), run)
 
     @property
     def t(self) -> float:
@@ -202,15 +198,8 @@ class StringStepper:
     def __init__(self, pendulum: Pendulum, state: State, method: str, dt: float, t0: float) -> None:
         check_method("string", method)
         self.pendulum = pendulum
-        self._core = _StringStepper(
-            *pendulum._core_args(),
-            float(pendulum.extra.get("restitution", 0.0)),
-            np.ascontiguousarray(state.x, dtype=np.float64),
-            np.ascontiguousarray(state.v, dtype=np.float64),
-            float(t0),
-            method,
-            float(dt),
-        )
+        run = RunOptions(t0=float(t0), method=method, dt=float(dt))
+        self._core = _StringStepper(pendulum.spec, _pair(state), run)
 
     @property
     def t(self) -> float:

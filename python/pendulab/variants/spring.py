@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 from .. import io
-from .._core import InvalidInputError, spring_simulate
+from .._core import InvalidInputError, ModelSpec, RunOptions, spring_simulate
 from ..display import Row, html_table, number, relative_drift
 from ..model import FloatArray
 
@@ -41,6 +41,13 @@ class SwingingSpring:
     def equilibrium_length(self) -> float:
         """l = l₀ + g/(k/m) [m]."""
         return self.rest_length + self.g / self.k_over_m
+
+    @property
+    def spec(self) -> ModelSpec:
+        """The spring as the core builds and checks it (``pendulab._core.ModelSpec``), for its runs."""
+        return ModelSpec.spring_model(
+            float(self.k_over_m), float(self.rest_length), float(self.g), float(self.mass)
+        )
 
 
 @dataclass(frozen=True)
@@ -217,16 +224,10 @@ def simulate_spring(
         raise InvalidInputError(f"t_end = {t_end!r} s and dt = {dt!r} s must be finite and > 0")
     n = max(1, round(t_end / dt))
     out = spring_simulate(
-        float(spring.k_over_m),
-        float(spring.rest_length),
-        float(spring.g),
-        float(spring.mass),
-        np.ascontiguousarray(np.asarray(x0, dtype=np.float64)),
-        np.ascontiguousarray(np.asarray(v0, dtype=np.float64)),
-        float(t_end / n),
+        spring.spec,
+        (np.ascontiguousarray(x0, dtype=np.float64), np.ascontiguousarray(v0, dtype=np.float64)),
+        RunOptions(dt=float(t_end / n), save_every=int(save_every), order=int(order)),
         int(n),
-        int(save_every),
-        int(order),
     )
     meta = {"model": "spring", "dt": t_end / n, "order": order, "t_end": t_end}
     return SpringTrajectory(spring, out["t"], out["x"], out["v"], out["energy"], out["j3"], meta)

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from .._chunks import _PROGRESS_AFTER_STEPS, run_in_chunks
-from .._core import InvalidInputError, StringRunner
+from .._core import InvalidInputError, RunOptions, StringRunner
 from ..model import Pendulum, State
 from ..trajectory import Trajectory
 
@@ -85,19 +85,16 @@ def simulate_string(
         raise InvalidInputError(f"save_every = {save_every!r} must be an integer >= 1")
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
     dt = 1e-3 if dt is None else float(dt)
-    runner = StringRunner(
-        *pendulum._core_args(),
-        float(pendulum.extra.get("restitution", 0.0)),
-        np.ascontiguousarray(state.x),
-        np.ascontiguousarray(state.v),
-        float(t0),
-        float(t_end),
-        method,
-        dt,
-        None if save_every is None else int(save_every),
-        times,
-        max_saved_bytes,
+    run = RunOptions(
+        t0=float(t0),
+        t_end=float(t_end),
+        method=method,
+        dt=dt,
+        save_every=None if save_every is None else int(save_every),
+        save_times=times,
+        max_saved_bytes=max_saved_bytes,
     )
+    runner = StringRunner(pendulum.spec, state.pair, run)
     expected_steps = (t_end - t0) / dt
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
     parts, interrupted = run_in_chunks(

@@ -1,0 +1,258 @@
+//! The run as one description crossing the border: `ModelSpec` (the model, built and checked once:
+//! a registry model by name with l [m], m [kg], g [m/s²], its extra parameters and pivot samples, or
+//! the swinging spring) and `RunOptions` (t0, t_end [s], the method, dt [s], rtol, atol [m and m/s],
+//! projection, conserve, the save rule, the saved-bytes cap, the spring's order). Every stepping
+//! class takes `(spec, state, options)` with the state a pair (x0 [m], v0 [m/s]). Conversions only.
+
+use crate::convert::{any_model, to_py, vec3, InvalidInputError, PivotArrays};
+use numpy::PyReadonlyArray1;
+use pendulab_core::elastic::SwingingSpring;
+use pendulab_core::model::registry::AnyModel;
+use pendulab_core::model::StringPendulum;
+use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
+use pendulab_core::{DVec3, Method, Model, SaveAt, SolveOptions};
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+
+/// The model a spec holds.
+#[derive(Clone)]
+enum Built {
+    /// A registry model on the sphere (rods, moving pivots, the string).
+    Registry(AnyModel),
+    /// The swinging spring (off the sphere).
+    Spring(SwingingSpring),
+}
+
+/// A model built once and checked (`Pendulum`, `SwingingSpring`, the string and pivot models build
+/// it): `ModelSpec(length, mass, g, model_name=None, extra=None, pivot=None)` for the registry's
+/// models, `ModelSpec.spring(k_over_m, rest_length, g, mass)` for the swinging spring. Pickled by
+/// its arguments.
+#[pyclass(module = "pendulab._core", name = "ModelSpec", frozen)]
+pub(crate) struct ModelSpec {
+    built: Built,
+    args: Py<PyTuple>,
+}
+
+impl ModelSpec {
+    /// The registry model (a copy: every run owns its model).
+    pub(crate) fn registry(&self) -> PyResult<AnyModel> {
+        match &self.built {
+            Built::Registry(m) => Ok(m.clone()),
+            Built::Spring(_) => Err(InvalidInputError::new_err(
+                "the swinging spring runs off the sphere: use its own classes (SpringStepper, spring_simulate)",
+            )),
+        }
+    }
+
+    /// The string pendulum (the registry's `string` model).
+    pub(crate) fn string(&self) -> PyResult<StringPendulum> {
+        match &self.built {
+            Built::Registry(AnyModel::String(sp)) => Ok(*sp),
+            _ => Err(InvalidInputError::new_err(format!(
+                "the string pendulum's classes take the 'string' model, not {:?}",
+                self.name()
+            ))),
+        }
+    }
+
+    /// The swinging spring.
+    pub(crate) fn spring(&self) -> PyResult<SwingingSpring> {
+        match &self.built {
+            Built::Spring(sp) => Ok(*sp),
+            Built::Registry(m) => Err(InvalidInputError::new_err(format!(
+                "the spring's classes take ModelSpec.spring(...), not the model {:?}",
+                m.name()
+            ))),
+        }
+    }
+}
+
+#[pymethods]
+impl ModelSpec {
+    #[new]
+    #[pyo3(signature = (length, mass, g, model_name=None, extra=None, pivot=None))]
+    fn new(
+        py: Python<'_>,
+        length: f64,
+        mass: f64,
+        g: f64,
+        model_name: Option<&str>,
+        extra: Option<Vec<(String, f64)>>,
+        pivot: Option<PivotArrays<'_>>,
+    ) -> PyResult<Self> {
+        let pivot_args = pivot.as_ref().map(|(t, p)| (t.as_any().clone(), p.as_any().clone()));
+        let args = PyTuple::new(
+            py,
+            [
+                length.into_pyobject(py)?.into_any(),
+                mass.into_pyobject(py)?.into_any(),
+                g.into_pyobject(py)?.into_any(),
+                model_name.into_pyobject(py)?.into_any(),
+                extra.clone().into_pyobject(py)?.into_any(),
+                pivot_args.into_pyobject(py)?.into_any(),
+            ],
+        )?;
+        let built = Built::Registry(any_model(length, mass, g, model_name, extra, pivot)?);
+        Ok(Self { built, args: args.unbind() })
+    }
+
+    /// The swinging spring: k/m [1/s²], rest length l₀ [m], g [m/s²], m [kg].
+    #[staticmethod]
+    fn spring_model(py: Python<'_>, k_over_m: f64, rest_length: f64, g: f64, mass: f64) -> PyResult<Self> {
+        let sp = SwingingSpring::new(k_over_m, rest_length, g, mass).map_err(to_py)?;
+        let args = PyTuple::new(py, [k_over_m, rest_length, g, mass])?;
+        Ok(Self { built: Built::Spring(sp), args: args.unbind() })
+    }
+
+    /// The model's registry name (`spring` for the swinging spring).
+    #[getter]
+    fn name(&self) -> &'static str {
+        match &self.built {
+            Built::Registry(m) => m.name(),
+            Built::Spring(_) => "spring",
+        }
+    }
+
+    /// Length l [m] (the spring: its rest length l₀).
+    #[getter]
+    fn length(&self) -> f64 {
+        match &self.built {
+            Built::Registry(m) => m.params().length,
+            Built::Spring(sp) => sp.rest_length,
+        }
+    }
+
+    /// Mass m [kg].
+    #[getter]
+    fn mass(&self) -> f64 {
+        match &self.built {
+            Built::Registry(m) => m.params().mass,
+            Built::Spring(sp) => sp.mass,
+        }
+    }
+
+    /// Gravity g [m/s²].
+    #[getter]
+    fn g(&self) -> f64 {
+        match &self.built {
+            Built::Registry(m) => m.params().g,
+            Built::Spring(sp) => sp.g,
+        }
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyTuple>)> {
+        let py = slf.py();
+        let me = slf.get();
+        let ctor = match me.built {
+            Built::Registry(_) => slf.get_type().into_any(),
+            Built::Spring(_) => slf.get_type().getattr("spring_model")?,
+        };
+        Ok((ctor, me.args.bind(py).clone()))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "ModelSpec({:?}, l={} m, m={} kg, g={} m/s²)",
+            self.name(),
+            self.length(),
+            self.mass(),
+            self.g()
+        )
+    }
+}
+
+/// How to run: the start time t0 [s], the end t_end [s] (batch runs), the method and its dt [s],
+/// rtol, atol [m and m/s] and projection onto TS² (defaults: the core's `SolveOptions`), conserve
+/// (E and J₃ imposed after each step), the save rule (every `save_every`-th step, or exactly
+/// `save_times` [s]), the cap on saved bytes, and the spring's order (2 or 4).
+#[pyclass(module = "pendulab._core", name = "RunOptions", frozen)]
+pub(crate) struct RunOptions {
+    pub(crate) t0: f64,
+    t_end: Option<f64>,
+    pub(crate) solve: SolveOptions,
+    pub(crate) conserve: bool,
+    pub(crate) save: SaveAt,
+    pub(crate) max_saved_bytes: u64,
+    pub(crate) order: u32,
+}
+
+impl RunOptions {
+    /// The end time t_end [s]; an error for a batch run without one.
+    pub(crate) fn t_end(&self) -> PyResult<f64> {
+        self.t_end.ok_or_else(|| InvalidInputError::new_err("a batch run needs t_end [s] in its RunOptions"))
+    }
+}
+
+#[pymethods]
+impl RunOptions {
+    #[new]
+    #[pyo3(signature = (*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=false, save_every=None, save_times=None, max_saved_bytes=None, order=2))]
+    #[allow(clippy::too_many_arguments)] // keyword-only: the one place the run's options are listed
+    fn new(
+        t0: f64,
+        t_end: Option<f64>,
+        method: Option<&str>,
+        dt: Option<f64>,
+        rtol: Option<f64>,
+        atol: Option<f64>,
+        project: Option<bool>,
+        conserve: bool,
+        save_every: Option<u64>,
+        save_times: Option<PyReadonlyArray1<'_, f64>>,
+        max_saved_bytes: Option<u64>,
+        order: u32,
+    ) -> PyResult<Self> {
+        let d = SolveOptions::default();
+        let solve = SolveOptions {
+            method: match method {
+                Some(name) => Method::from_name(name).map_err(to_py)?,
+                None => d.method,
+            },
+            dt: dt.unwrap_or(d.dt),
+            rtol: rtol.unwrap_or(d.rtol),
+            atol: atol.unwrap_or(d.atol),
+            project: project.unwrap_or(d.project),
+        };
+        let save = match (save_every, save_times) {
+            (Some(_), Some(_)) => {
+                return Err(InvalidInputError::new_err("give either save_every or save_times, not both"))
+            }
+            (_, Some(ts)) => SaveAt::Times(ts.as_array().to_vec()),
+            (n, None) => SaveAt::Every(n.unwrap_or(1)),
+        };
+        let max_saved_bytes = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
+        Ok(Self { t0, t_end, solve, conserve, save, max_saved_bytes, order })
+    }
+
+    /// The method's name.
+    #[getter]
+    fn method(&self) -> &'static str {
+        self.solve.method.info().name
+    }
+    #[getter]
+    fn t0(&self) -> f64 {
+        self.t0
+    }
+    #[getter(t_end)]
+    fn t_end_getter(&self) -> Option<f64> {
+        self.t_end
+    }
+    #[getter]
+    fn dt(&self) -> f64 {
+        self.solve.dt
+    }
+}
+
+/// A start state as given: x0 [m], v0 [m/s] (3 components each; the classes check it on TS²).
+pub(crate) type StateArrays<'py> = (PyReadonlyArray1<'py, f64>, PyReadonlyArray1<'py, f64>);
+
+/// The start vectors of a [`StateArrays`] pair, named x0 and v0 in errors.
+pub(crate) fn start(state: &StateArrays<'_>) -> PyResult<(DVec3, DVec3)> {
+    Ok((vec3("x0", &state.0)?, vec3("v0", &state.1)?))
+}
+
+/// Registers the classes.
+pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<ModelSpec>()?;
+    m.add_class::<RunOptions>()
+}
