@@ -75,14 +75,6 @@ def sensitivity_params() -> list[str]:
     """theta0, phi0, theta_dot0, phi_dot0, length, g, damping, drag, friction: the last axis of
     ``sensitivities``."""
 
-def check_model(
-    length: float,
-    mass: float,
-    g: float,
-    model_name: str | None = None,
-    extra: list[tuple[str, float]] | None = None,
-    pivot: tuple[FloatArray, FloatArray] | None = None,
-) -> None: ...
 def state_on_ts2(
     length: float, mass: float, g: float, x: FloatArray, v: FloatArray
 ) -> tuple[FloatArray, FloatArray]: ...
@@ -93,15 +85,7 @@ def state_from_angles(
     length: float, mass: float, g: float, theta: float, phi: float, theta_dot: float, phi_dot: float
 ) -> tuple[FloatArray, FloatArray]: ...
 def diagnostics(
-    length: float,
-    mass: float,
-    g: float,
-    x: FloatArray,
-    v: FloatArray,
-    model_name: str | None = None,
-    extra: list[tuple[str, float]] | None = None,
-    t: FloatArray | None = None,
-    pivot: tuple[FloatArray, FloatArray] | None = None,
+    spec: ModelSpec, x: FloatArray, v: FloatArray, t: FloatArray | None = None
 ) -> dict[str, FloatArray]: ...
 
 # --- python/rust/spec.rs: the run as one description, (spec, state, options) ---

@@ -316,15 +316,6 @@ class Pendulum:
         of this pendulum hands to the core, with a run's ``RunOptions`` and its start state."""
         return self._spec
 
-    def _core_args(self) -> tuple[float, float, float]:
-        return self._length, self._mass, self._g
-
-    def _model_kwargs(self) -> dict[str, Any]:
-        kwargs: dict[str, Any] = {"model_name": self.model, "extra": list(self._extra.items())}
-        if self._pivot is not None:
-            kwargs["pivot"] = self._pivot
-        return kwargs
-
     def __repr__(self) -> str:
         extras = "".join(f", {k}={v!r}" for k, v in self._extra.items())
         model = "" if _infer_model(set(self._extra)) == self.model else f", model={self.model!r}"
@@ -378,9 +369,9 @@ class Pendulum:
                 raise invalid(
                     "x", xa.tolist(), f"a position at least 1e-9 l = {1e-9 * self._length:g} m from the pivot"
                 )
-            (xp, vp), dx, dv = project_state(*self._core_args(), xa, va)
+            (xp, vp), dx, dv = project_state(self._length, self._mass, self._g, xa, va)
             return State(_frozen(xp), _frozen(vp), (dx, dv))
-        xs, vs = state_on_ts2(*self._core_args(), xa, va)
+        xs, vs = state_on_ts2(self._length, self._mass, self._g, xa, va)
         return State(_frozen(xs), _frozen(vs))
 
     def state_from_angles(
@@ -448,7 +439,7 @@ class Pendulum:
                 UserWarning,
                 stacklevel=2,
             )
-        x, v = _state_from_angles(*self._core_args(), *values)
+        x, v = _state_from_angles(self._length, self._mass, self._g, *values)
         _check_speed(np.asarray(v), f"(theta_dot, phi_dot) = ({values[2]!r}, {values[3]!r}) rad/s")
         return State(_frozen(x), _frozen(v))
 
@@ -468,7 +459,7 @@ class Pendulum:
             if ta.ndim == 0:
                 ta = np.full(xa.shape[0], float(ta))
             ta = np.ascontiguousarray(ta.ravel())
-        d = _diagnostics(*self._core_args(), xa, va, **self._model_kwargs(), t=ta)
+        d = _diagnostics(self._spec, xa, va, ta)
         if self._force is not None:
             # the user force: its power F·v, its share x·F/l of the tension, and its tangential part
             # (F − x (x·F)/l²)/m of the acceleration (the rod takes the radial part, T-2.2)

@@ -3,7 +3,8 @@
 //! TS², power, the acceleration of T-2.2, the pivot's path). SI units: x [m], v [m/s], t [s], angles
 //! [rad], arrays of 3-vectors (N, 3).
 
-use crate::convert::{any_model, arr3, model, to_py, vec3, InvalidInputError, PivotArrays, StatePair};
+use crate::convert::{arr3, model, to_py, vec3, InvalidInputError, StatePair};
+use crate::spec::ModelSpec;
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
 use pendulab_core::model::{acceleration, energy, j3, tension};
@@ -59,24 +60,20 @@ fn state_from_angles(
     Ok((arr3(py, s.x), arr3(py, s.v)))
 }
 
-/// Diagnostics along arrays x, v of shape (N, 3): energy [J], j3 [kg m²/s], tension [N],
-/// radius_error = |x| − l [m], tangency = x·v [m²/s], power [W], acceleration (N, 3) [m/s²].
+/// Diagnostics of the spec's model along arrays x, v of shape (N, 3) at times t [s] (default 0):
+/// energy [J], j3 [kg m²/s], tension [N], radius_error = |x| − l [m], tangency = x·v [m²/s], power
+/// [W], acceleration (N, 3) [m/s²]; a moving pivot's path (N, 3) [m] when t is given.
 #[pyfunction]
-#[pyo3(signature = (length, mass, g, x, v, model_name=None, extra=None, t=None, pivot=None))]
-#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (spec, x, v, t=None))]
 fn diagnostics<'py>(
     py: Python<'py>,
-    length: f64,
-    mass: f64,
-    g: f64,
+    spec: &ModelSpec,
     x: PyReadonlyArray2<'py, f64>,
     v: PyReadonlyArray2<'py, f64>,
-    model_name: Option<&str>,
-    extra: Option<Vec<(String, f64)>>,
     t: Option<PyReadonlyArray1<'py, f64>>,
-    pivot: Option<PivotArrays<'py>>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    let m = any_model(length, mass, g, model_name, extra, pivot)?;
+    let m = spec.registry()?;
+    let length = m.params().length;
     let times = t.map(|t| t.as_array().to_vec());
     let (x, v) = (x.as_array(), v.as_array());
     if x.ncols() != 3 || v.dim() != x.dim() {

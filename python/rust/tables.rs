@@ -1,8 +1,8 @@
 //! The registries as Python tables: the integrators (`methods`: declared order and properties) and
 //! the models (`models`: names, parameters with units, defaults and limits), and the checks of a
-//! model against them (`check_model`, `check_params`). SI units as the registries list them.
+//! model against them (`check_params`; a model is checked by building its `ModelSpec`). SI units as the registries list them.
 
-use crate::convert::{any_model, model, PivotArrays};
+use crate::convert::model;
 use pendulab_core::model::registry::{ParamSpec, COMMON, MODELS};
 use pendulab_core::Method;
 use pyo3::prelude::*;
@@ -20,21 +20,6 @@ pub(crate) fn param_dict<'py>(py: Python<'py>, p: &ParamSpec) -> PyResult<Bound<
     d.set_item("description", p.description)?;
     d.set_item("allowed", p.allowed)?;
     Ok(d)
-}
-
-/// Validates a model: l > 0 m, m > 0 kg, finite g, a registered name and its parameters (and the
-/// pivot samples of `sampled_pivot`).
-#[pyfunction]
-#[pyo3(signature = (length, mass, g, model_name=None, extra=None, pivot=None))]
-fn check_model(
-    length: f64,
-    mass: f64,
-    g: f64,
-    model_name: Option<&str>,
-    extra: Option<Vec<(String, f64)>>,
-    pivot: Option<PivotArrays<'_>>,
-) -> PyResult<()> {
-    any_model(length, mass, g, model_name, extra, pivot).map(|_| ())
 }
 
 /// Validates the parameters (l > 0 m, m > 0 kg, finite g in m/s²).
@@ -88,6 +73,5 @@ fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(methods, m)?)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;
-    m.add_function(wrap_pyfunction!(check_model, m)?)?;
     m.add_function(wrap_pyfunction!(check_params, m)?)
 }

@@ -162,9 +162,7 @@ def reduced_flow(pendulum: Pendulum, state: State, t_end: float, dt: float = 1e-
         )
     n = max(n, 1)
     h = t_end / n
-    x, v = _reduced_flow(
-        *pendulum._core_args(), np.ascontiguousarray(state.x), np.ascontiguousarray(state.v), h, n
-    )
+    x, v = _reduced_flow(pendulum.length, pendulum.mass, pendulum.g, *state.pair, h, n)
     t = h * np.arange(n + 1, dtype=np.float64)
     t[-1] = t_end
     return Trajectory(pendulum, t, x, v, "reduced_rk4", {"dt": h, "t0": 0.0, "t_end": t_end}, {"steps": n})
