@@ -223,14 +223,82 @@ def simulate(
             "max_saved_bytes": max_saved_bytes,
             "drift": drift,
         }
-        if accuracy is not None:
-            plain = {k: v for k, v in plain.items() if k not in ("rtol", "atol")}
-            return run_to_accuracy(simulate, pendulum, state, t_end, accuracy, plain)
-        tr = simulate(pendulum, state, t_end, **plain)
-        if tr.interrupted:
-            return tr
-        est = estimate(simulate, tr, state, plain | {"method": tr.method})
-        return dataclasses.replace(tr, error_estimate=est, error=true_error(pendulum, state, tr))
+        return _with_error_estimate(pendulum, state, t_end, accuracy, plain)
+    run = check_run(
+        pendulum,
+        t_end,
+        method=method,
+        dt=dt,
+        rtol=rtol,
+        atol=atol,
+        project=project,
+        conserve=conserve,
+        save_every=save_every,
+        save_at=save_at,
+        t0=t0,
+        progress=progress,
+        max_saved_bytes=max_saved_bytes,
+        drift=drift,
+    )
+    if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
+        return _run_string(pendulum, state, run)
+    return _run_in_core(pendulum, state, run)
+
+
+def _with_error_estimate(
+    pendulum: Pendulum, state: State, t_end: float, accuracy: float | None, plain: dict[str, Any]
+) -> Trajectory:
+    """``accuracy``: refined until the estimate meets it (pendulab/accuracy); else ``error_estimate``:
+    the plain run with its estimated error and, for the ideal pendulum, its true error."""
+    if accuracy is not None:
+        plain = {k: v for k, v in plain.items() if k not in ("rtol", "atol")}
+        return run_to_accuracy(simulate, pendulum, state, t_end, accuracy, plain)
+    tr = simulate(pendulum, state, t_end, **plain)
+    if tr.interrupted:
+        return tr
+    est = estimate(simulate, tr, state, plain | {"method": tr.method})
+    return dataclasses.replace(tr, error_estimate=est, error=true_error(pendulum, state, tr))
+
+
+@dataclasses.dataclass(frozen=True)
+class RunSettings:
+    """The settings of one :func:`simulate` run, checked (:func:`check_run`): SI units, t0 < t_end [s];
+    ``dt`` None for the method's default (1 ms; dop853: automatic), ``save_at`` the save times [s]."""
+
+    method: str
+    dt: float | None
+    rtol: float
+    atol: float
+    project: bool
+    conserve: bool
+    t0: float
+    t_end: float
+    save_every: int | None
+    save_at: Any
+    progress: bool | None
+    max_saved_bytes: int | None
+    drift: str
+
+
+def check_run(
+    pendulum: Pendulum,
+    t_end: Any,
+    *,
+    method: Any,
+    dt: Any,
+    rtol: Any,
+    atol: Any,
+    project: Any,
+    conserve: Any,
+    save_every: Any,
+    save_at: Any,
+    t0: Any,
+    progress: Any,
+    max_saved_bytes: Any,
+    drift: str,
+) -> RunSettings:
+    """Every argument of :func:`simulate` checked against :mod:`pendulab.validate` before any work
+    starts (docs/limits.md), as one :class:`RunSettings`."""
     if method is None:
         method = "dop853" if pendulum.force is not None else "rattle"
     method, dt, rtol, atol, project, conserve, t0 = check_settings(
@@ -256,23 +324,47 @@ def simulate(
         raise InvalidInputError(
             "conserve=True would hold E and J₃ fixed, but the user force does work (dE/dt = F·v)"
         )
-    if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
-        from .variants.string_pendulum import check_string_settings, simulate_string
+    return RunSettings(
+        method,
+        dt,
+        rtol,
+        atol,
+        project,
+        conserve,
+        t0,
+        t_end,
+        save_every,
+        save_at,
+        progress,
+        max_saved_bytes,
+        drift,
+    )
 
-        check_string_settings(method, conserve=conserve)
-        return simulate_string(
-            pendulum,
-            state,
-            t_end,
-            method=method,
-            dt=dt,
-            save_every=save_every,
-            save_at=save_at,
-            t0=t0,
-            progress=progress,
-            max_saved_bytes=max_saved_bytes,
-            _stacklevel=3,
-        )
+
+def _run_string(pendulum: Pendulum, state: State, run: RunSettings) -> Trajectory:
+    """The string pendulum's hybrid run (variants/string_pendulum.py)."""
+    from .variants.string_pendulum import check_string_settings, simulate_string
+
+    check_string_settings(run.method, conserve=run.conserve)
+    return simulate_string(
+        pendulum,
+        state,
+        run.t_end,
+        method=run.method,
+        dt=run.dt,
+        save_every=run.save_every,
+        save_at=run.save_at,
+        t0=run.t0,
+        progress=run.progress,
+        max_saved_bytes=run.max_saved_bytes,
+        _stacklevel=4,
+    )
+
+
+def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajectory:
+    """The run of a rod model in the core's ``Solver`` (``ForceSolver`` with a user force), in chunks
+    (progress bar, Ctrl-C), as a :class:`Trajectory`."""
+    method, t0, t_end, save_every, save_at = run.method, run.t0, run.t_end, run.save_every, run.save_at
     if pendulum.pivot_samples is not None:
         first, last = float(pendulum.pivot_samples[0][0]), float(pendulum.pivot_samples[0][-1])
         if not (first <= t0 and t_end <= last):
@@ -283,46 +375,47 @@ def simulate(
     info = _method_table().get(method)
     if info is None:
         raise InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")
+    dt = run.dt
     if dt is None:
         dt = 0.0 if info["adaptive"] else DEFAULTS["dt"]
         if not info["adaptive"]:
             planned_steps(t0, t_end, dt)
     if save_every is not None and save_at is not None:
         raise InvalidInputError("give either save_every or save_at, not both")
-    _check_conserve(pendulum, conserve)
+    _check_conserve(pendulum, run.conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
-    run = RunOptions(
+    options = RunOptions(
         t0=float(t0),
         t_end=float(t_end),
         method=method,
         dt=float(dt),
-        rtol=float(rtol),
-        atol=float(atol),
-        project=bool(project),
-        conserve=bool(conserve),
+        rtol=float(run.rtol),
+        atol=float(run.atol),
+        project=bool(run.project),
+        conserve=bool(run.conserve),
         save_every=None if save_every is None else int(save_every),
         save_times=times,
-        max_saved_bytes=max_saved_bytes,
+        max_saved_bytes=run.max_saved_bytes,
     )
     solver: Solver | ForceSolver
     if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)
-        solver = ForceSolver(pendulum.spec, state.pair, run, pendulum.force)
+        solver = ForceSolver(pendulum.spec, state.pair, options, pendulum.force)
     else:
-        solver = Solver(pendulum.spec, state.pair, run)
+        solver = Solver(pendulum.spec, state.pair, options)
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
-    show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
-    parts, interrupted = run_in_chunks(solver, show, f"{method} to t={t_end:g} s", stacklevel=2)
+    show = run.progress if run.progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
+    parts, interrupted = run_in_chunks(solver, show, f"{method} to t={t_end:g} s", stacklevel=3)
     t = np.concatenate([p[0] for p in parts])
     x = np.concatenate([p[1] for p in parts])
     v = np.concatenate([p[2] for p in parts])
-    options = {"dt": dt, "t0": t0, "t_end": t_end}
+    meta = {"dt": dt, "t0": t0, "t_end": t_end}
     if info["adaptive"]:
-        options |= {"rtol": rtol, "atol": atol, "project": project}
+        meta |= {"rtol": run.rtol, "atol": run.atol, "project": run.project}
     if save_every is not None:
-        options["save_every"] = int(save_every)
-    if not info["preserves_ts2"] and not (info["adaptive"] and project):
-        _check_drift(pendulum, t, x, method, project, drift)
-    return Trajectory(pendulum, t, x, v, method, options, dict(solver.stats), interrupted)
+        meta["save_every"] = int(save_every)
+    if not info["preserves_ts2"] and not (info["adaptive"] and run.project):
+        _check_drift(pendulum, t, x, method, run.project, run.drift)
+    return Trajectory(pendulum, t, x, v, method, meta, dict(solver.stats), interrupted)
 
 
 def _check_drift(pendulum: Pendulum, t: Any, x: Any, method: str, project: bool, drift: str) -> None:
@@ -343,7 +436,7 @@ def _check_drift(pendulum: Pendulum, t: Any, x: Any, method: str, project: bool,
         f"tolerance {DRIFT_TOLERANCE:g}; {how} (drift='warn' keeps the run with a warning)"
     )
     if drift == "warn":
-        warnings.warn(msg, RuntimeWarning, stacklevel=3)
+        warnings.warn(msg, RuntimeWarning, stacklevel=4)
         return
     raise IntegrationError(msg)
 

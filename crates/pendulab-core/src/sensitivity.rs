@@ -181,6 +181,9 @@ const MAX_STEPS: usize = 100_000_000;
 /// Integrates the model from the start angles `angles` = (θ₀, φ₀ \[rad\], θ̇₀, φ̇₀ [rad/s]) at t = 0
 /// through the save times `times` \[s\] (finite, non-decreasing, ≥ 0) at relative tolerance `rtol` and
 /// absolute tolerance `atol` [m, m/s], returning the motion and its sensitivities (module doc).
+// One adaptive DOP853 loop over 60 coupled equations with its save-time stops: split, its state would
+// have to be passed between the pieces (the exception listed in Cargo.toml).
+#[allow(clippy::too_many_lines)]
 pub fn sensitivities(
     model: &Extended,
     angles: [f64; 4],

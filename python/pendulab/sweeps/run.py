@@ -83,6 +83,37 @@ def _positive_int(name: str, value: Any, most: int) -> int:
     return int(value)
 
 
+def _check_backend(
+    backend: Any, scheduler: Any, workers: Any, chunk_size: Any
+) -> tuple[str, int | None, int | None]:
+    """The backend's name (default: threads, or dask with a scheduler), workers and chunk size, checked."""
+    if backend is None:
+        backend = "threads" if scheduler is None else "dask"
+    if backend not in BACKENDS:
+        raise _bad(f"backend = {limits.show(backend)}: use one of {', '.join(BACKENDS)}")
+    if scheduler is not None and backend != "dask":
+        raise _bad(f"scheduler = {limits.show(scheduler)} needs backend 'dask', not {limits.show(backend)}")
+    if workers is not None:
+        workers = _positive_int("workers", workers, 1024)
+    if scheduler is not None and workers is not None:
+        raise _bad("workers sets the threads pool or a new LocalCluster, not a given scheduler")
+    if chunk_size is not None:
+        chunk_size = _positive_int("chunk_size", chunk_size, MAX_CHUNK)
+    return str(backend), workers, chunk_size
+
+
+def _open_target(
+    out: Any, resume: bool, meta: dict[str, Any], chunk_size: int | None, spec: Any, n: int, units: Any
+) -> tuple[MemorySink | OutputDir, int]:
+    """Where the chunks go (memory, or the directory / .parquet file ``out``) and the chunk size."""
+    if out is None:
+        if resume:
+            raise _bad("resume=True needs out (the directory or .parquet file to continue)")
+        return MemorySink(n, units), chunk_size or default_chunk_size(spec)
+    target = OutputDir.open(out, meta, chunk_size, default_chunk_size(spec), n, resume)
+    return target, target.chunk_size
+
+
 def sweep(
     design: Any,
     quantity: str | Sequence[str],
@@ -144,30 +175,11 @@ def sweep(
         raise limits.invalid("design", f"<{d.n} points>", f"at most {limits.MAX_SAMPLES:.0e} points")
     if spec.t_end is not None and spec.dt is not None:  # trajectory-steps: the work of the whole sweep
         limits.planned_steps(0.0, spec.t_end * d.n, spec.dt)
-    if backend is None:
-        backend = "threads" if scheduler is None else "dask"
-    if backend not in BACKENDS:
-        raise _bad(f"backend = {limits.show(backend)}: use one of {', '.join(BACKENDS)}")
-    if scheduler is not None and backend != "dask":
-        raise _bad(f"scheduler = {limits.show(scheduler)} needs backend 'dask', not {limits.show(backend)}")
-    if workers is not None:
-        workers = _positive_int("workers", workers, 1024)
-    if scheduler is not None and workers is not None:
-        raise _bad("workers sets the threads pool or a new LocalCluster, not a given scheduler")
-    if chunk_size is not None:
-        chunk_size = _positive_int("chunk_size", chunk_size, MAX_CHUNK)
+    backend, workers, chunk_size = _check_backend(backend, scheduler, workers, chunk_size)
     fp = fingerprint(d, spec)
     units = {"point": "1", **{k: AXES[k] for k in d.names}, **spec.output_units()}
     meta = {"design": d.describe(), "spec": spec.describe(), "fingerprint": fp, "columns": units}
-    target: MemorySink | OutputDir
-    if out is None:
-        if resume:
-            raise _bad("resume=True needs out (the directory or .parquet file to continue)")
-        size = chunk_size or default_chunk_size(spec)
-        target = MemorySink(d.n, units)
-    else:
-        target = OutputDir.open(out, meta, chunk_size, default_chunk_size(spec), d.n, resume)
-        size = target.chunk_size
+    target, size = _open_target(out, resume, meta, chunk_size, spec, d.n, units)
     n_chunks = math.ceil(d.n / size)
     todo = [i for i in range(n_chunks) if not target.has(i)]
     stats: dict[str, Any] = {"chunks": n_chunks, "chunk_size": size, "skipped": n_chunks - len(todo)}
