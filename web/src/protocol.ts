@@ -178,6 +178,10 @@ export interface ErrorNotice {
   type: 'error';
   message: string;
   command: string | null;
+  /** The message's key and values (python/pendulab/server/messages.json) when the server keyed it: the
+   *  page shows `server.<key>` of its language (i18n `serverWords`). */
+  key?: string;
+  values?: Record<string, string | number>;
 }
 
 /** One event of the string pendulum (model `string`), computed by the server's core: `slack`, the tension
@@ -211,7 +215,13 @@ export function parseNotice(text: string): Notice {
   if (!isObject(raw)) throw new ProtocolError('notice is not a JSON object');
   if (raw['type'] === 'error' && typeof raw['message'] === 'string') {
     const command = typeof raw['command'] === 'string' ? raw['command'] : null;
-    return { type: 'error', message: raw['message'], command };
+    const notice: ErrorNotice = { type: 'error', message: raw['message'], command };
+    const values = raw['values'];
+    if (typeof raw['key'] === 'string' && isObject(values) && Object.values(values).every((v) => typeof v === 'string' || typeof v === 'number')) {
+      notice.key = raw['key'];
+      notice.values = values as Record<string, string | number>;
+    }
+    return notice;
   }
   if (raw['type'] === 'status') {
     const p = raw['params'];

@@ -309,14 +309,16 @@ def create_app(
                 f"(pendulab serve --max-sessions {max_sessions}); close another tab or try again later"
             )
             with contextlib.suppress(WebSocketDisconnect, OSError, RuntimeError):
-                await ws.send_json(error_notice(message))
+                await ws.send_json(error_notice(message, None, "server_full", {"active": active}))
                 await ws.close(code=1013, reason="server full")
             return
         key = client_key(ws.scope)
         refused = room.open_session(key)
         if refused is not None:
             with contextlib.suppress(WebSocketDisconnect, OSError, RuntimeError):
-                await ws.send_json(error_notice(refused))
+                await ws.send_json(
+                    error_notice(refused, None, "device_full", {"have": room.sessions.get(key, 0)})
+                )
                 await ws.close(code=1013, reason="too many sessions from this device")
             return
         active += 1
@@ -420,7 +422,9 @@ async def run_session(
             except Exception as e:
                 log.error("lab session failed", exc_info=e)
                 with contextlib.suppress(Exception):
-                    await ws.send_json(error_notice(f"internal error: {e}"))
+                    await ws.send_json(
+                        error_notice(f"internal error: {e}", None, "internal_error", {"detail": str(e)})
+                    )
                     await ws.close(code=1011)
             tg.cancel_scope.cancel()
 

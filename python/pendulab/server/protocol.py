@@ -38,6 +38,12 @@ if TYPE_CHECKING:
     from .._core import ModelInfo, ParamSpec
 
 _LAYOUT = json.loads((Path(__file__).with_name("frame.json")).read_text(encoding="utf-8"))
+#: the error notices a page translates: key -> English words with {placeholders} (``messages.json``)
+MESSAGES: dict[str, str] = {
+    k: v
+    for k, v in json.loads(Path(__file__).with_name("messages.json").read_text(encoding="utf-8")).items()
+    if not k.startswith("_")
+}
 
 FRAME_FIELDS: tuple[str, ...] = tuple(_LAYOUT["fields"])
 """Names of the float64 values of one frame record, in wire order."""
@@ -283,11 +289,20 @@ COMMAND_TYPES: tuple[str, ...] = (
 
 
 class CommandError(ValueError):
-    """A message that is not a valid command; ``command`` is its type when that could be read."""
+    """A message that is not a valid command; ``command`` is its type when that could be read; ``key``
+    and ``values`` name the message for a page that translates it (``messages.json``; None: not keyed)."""
 
-    def __init__(self, message: str, command: str | None = None) -> None:
+    def __init__(
+        self,
+        message: str,
+        command: str | None = None,
+        key: str | None = None,
+        values: dict[str, Any] | None = None,
+    ) -> None:
         super().__init__(message)
         self.command = command
+        self.key = key
+        self.values = values or {}
 
 
 def _show(value: Any) -> str:
@@ -314,7 +329,8 @@ def parse_command(text: str | bytes) -> Command:
     try:
         return COMMAND.validate_python(raw)
     except ValidationError as e:
-        raise CommandError(validation_problems(e, skip=1), command=kind) from None
+        key, values = validation_key(e, skip=1)
+        raise CommandError(validation_problems(e, skip=1), command=kind, key=key, values=values) from None
 
 
 def validation_problems(e: ValidationError, skip: int = 0) -> str:
@@ -338,6 +354,46 @@ def _problem(err: Any, skip: int) -> str:
     return f"{key} = {shown}: {msg[:1].lower()}{msg[1:]}"
 
 
+#: pydantic's error types the page translates: type -> (message key, the limit's name in ``ctx``)
+_KEYED = {
+    "greater_than_equal": ("too_small", "ge"),
+    "greater_than": ("too_small_strict", "gt"),
+    "less_than_equal": ("too_large", "le"),
+    "less_than": ("too_large_strict", "lt"),
+    "missing": ("missing", None),
+    "extra_forbidden": ("unknown_key", None),
+}
+
+
+def validation_key(e: ValidationError, skip: int = 0) -> tuple[str | None, dict[str, Any]]:
+    """The message key and values (``messages.json``) of a pydantic error with one problem of a kind the
+    page translates; ``(None, {})`` otherwise (the page shows the English message)."""
+    errors = e.errors()
+    if len(errors) != 1 or errors[0]["type"] not in _KEYED:
+        return None, {}
+    err = errors[0]
+    key, limit = _KEYED[err["type"]]
+    values: dict[str, Any] = {"name": ".".join(str(p) for p in err["loc"][skip:])}
+    if limit is not None:
+        values |= {"value": _show(err.get("input")), "limit": err.get("ctx", {}).get(limit)}
+    return key, values
+
+
+def message(key: str, **values: Any) -> str:
+    """The English words of message ``key`` (``messages.json``) with ``values`` filled in."""
+    return MESSAGES[key].format(**values)
+
+
+def keyed_notice(key: str, command: str | None = None, **values: Any) -> dict[str, Any]:
+    """An ``error`` notice of message ``key``: its English words, the key and the values."""
+    return error_notice(message(key, **values), command, key, values)
+
+
+def error_notice_of(e: CommandError) -> dict[str, Any]:
+    """The ``error`` notice of a refused command (keyed when the error is)."""
+    return error_notice(str(e), e.command, e.key, e.values)
+
+
 def check_model_params(model: str, names: Any) -> None:
     """:class:`CommandError` when ``names`` are not all parameters of ``model`` (the message lists them)."""
     try:
@@ -346,9 +402,15 @@ def check_model_params(model: str, names: Any) -> None:
         raise CommandError(str(e), command="set_params") from None
 
 
-def error_notice(message: str, command: str | None = None) -> dict[str, Any]:
-    """The JSON ``error`` notice."""
-    return {"type": "error", "message": message, "command": command}
+def error_notice(
+    message: str, command: str | None = None, key: str | None = None, values: dict[str, Any] | None = None
+) -> dict[str, Any]:
+    """The JSON ``error`` notice; with ``key`` (``messages.json``) and its ``values`` for a page that
+    translates the message."""
+    notice: dict[str, Any] = {"type": "error", "message": message, "command": command}
+    if key is not None:
+        notice |= {"key": key, "values": values or {}}
+    return notice
 
 
 def event_notice(event: dict[str, Any], epoch: int, skipped: int = 0) -> dict[str, Any]:

@@ -316,7 +316,9 @@ class Session:
             raise CommandError(" ".join(str(e).split()), command=cmd.type) from None
         except IntegrationError as e:
             self.paused = True
-            raise CommandError(f"integration stopped: {e}; paused", command=cmd.type) from None
+            raise CommandError(
+                f"integration stopped: {e}; paused", cmd.type, "integration_stopped", {"detail": str(e)}
+            ) from None
 
     def _apply(self, cmd: Command) -> np.ndarray | None:
         match cmd:
@@ -403,7 +405,10 @@ class Session:
         except IntegrationError as e:
             self.pending_steps = 0
             raise CommandError(
-                f"integration stopped at t = {self.stepper.t:g} s: {e}; paused", "step"
+                f"integration stopped at t = {self.stepper.t:g} s: {e}; paused",
+                "step",
+                "integration_stopped",
+                {"detail": str(e)},
             ) from None
         self.clock = self.stepper.t
         return self.records()
@@ -450,7 +455,11 @@ class Session:
             )
         except IntegrationError as e:
             self.paused = True
-            raise CommandError(f"integration stopped at t = {self.stepper.t:g} s: {e}; paused") from None
+            raise CommandError(
+                f"integration stopped at t = {self.stepper.t:g} s: {e}; paused",
+                key="integration_stopped",
+                values={"detail": str(e)},
+            ) from None
 
     def _sample(self, advance: Callable[[int], bool], n: int) -> np.ndarray:
         """Records of the states after ``advance(k)`` for k < n; ``advance`` returns False when the

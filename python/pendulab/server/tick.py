@@ -30,7 +30,7 @@ from typing import Any
 import numpy as np
 
 from .budget import TICK_BUDGET, Budget
-from .protocol import FRAME_FIELDS, CommandError, encode_records, error_notice
+from .protocol import FRAME_FIELDS, CommandError, encode_records, error_notice_of, keyed_notice
 from .session import Session
 
 Message = dict[str, Any] | bytes
@@ -53,16 +53,10 @@ def finite_records(session: Session, records: np.ndarray | None, out: list[Messa
         out.append(encode_records(records[:first]))
     bad = [FRAME_FIELDS[i] for i in np.flatnonzero(~finite[first])]
     t = records[first, FRAME_FIELDS.index("t")]
-    when = f"t = {t:.6g} s" if np.isfinite(t) else f"t ≈ {session.stepper.t:.6g} s"
+    when = f"{t:.6g}" if np.isfinite(t) else f"≈ {session.stepper.t:.6g}"
     session.paused = True
     session.pending_steps = 0
-    out.append(
-        error_notice(
-            f"the motion left floating point at {when}: {', '.join(bad[:6])} not finite "
-            f"(parameters or a start this extreme drive it beyond 1e308); paused — reset, or change "
-            f"the parameters"
-        )
-    )
+    out.append(keyed_notice("nonfinite_motion", t=when, fields=", ".join(bad[:6])))
     out.append(session.status())
     return False
 
@@ -126,12 +120,12 @@ def tick_messages(
             break
         session.commands += 1
         if isinstance(item, CommandError):
-            out.append(error_notice(str(item), item.command))
+            out.append(error_notice_of(item))
             continue
         try:
             result = session.apply(item)
         except CommandError as e:
-            out.append(error_notice(str(e), e.command))
+            out.append(error_notice_of(e))
             continue
         if result is not None:
             records = result  # only the last discontinuity matters; the status below announces it
@@ -142,14 +136,14 @@ def tick_messages(
     try:
         stepped = session.take_pending_steps(budget)
     except CommandError as e:
-        out.append(error_notice(str(e), e.command))
+        out.append(error_notice_of(e))
         changed = True
     if changed or (stepped is not None and session.pending_steps == 0):
         out.append(session.status())  # after the commands and a finished `step`: its t is the frame's
     try:
         advanced = session.advance(elapsed, budget)
     except CommandError as e:
-        out.append(error_notice(str(e), e.command))
+        out.append(error_notice_of(e))
         out.append(session.status())
     how = session.error.how
     for part in (records, stepped, advanced):  # the error estimate in what is left of the budget

@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from .budget import TICK_BUDGET
-from .protocol import error_notice
+from .protocol import keyed_notice
 from .session import Session
 from .tick import Carry, Message, tick_messages
 
@@ -104,12 +104,7 @@ class Seat:
 
         def tick(out: list[Message]) -> list[Message]:
             if lost:
-                out.append(
-                    error_notice(
-                        f"throttled: {lost} command(s) dropped (more than {MAX_PENDING} waiting); "
-                        f"send at most {int(tick_hz * MAX_PER_TICK)} per second"
-                    )
-                )
+                out.append(keyed_notice("throttled", lost=lost, per_second=int(tick_hz * MAX_PER_TICK)))
             out.extend(tick_messages(session, commands, elapsed, budget, dropped=lost, carry=carry))
             return out
 

@@ -74,3 +74,22 @@ export function kindWords(kind: string): string {
   const key = `kind.${kind}`;
   return Object.hasOwn(EN, key) ? t(key as Key) : kind;
 }
+
+/** A shipped scenario's title (`scenario.<name>` of the table), else the file's own `title`, else its name. */
+export function scenarioWords(name: string, title: string | null | undefined): string {
+  const key = `scenario.${name}`;
+  return Object.hasOwn(EN, key) ? t(key as Key) : (title ?? name);
+}
+
+/** A model's one-line description for a student (`modelHelp.<name>`), else the registry's summary. */
+export function modelHelp(name: string, summary: string): string {
+  const key = `modelHelp.${name}`;
+  return Object.hasOwn(EN, key) ? t(key as Key) : summary;
+}
+
+/** An error notice of the server in the page's language: `server.<key>` of the table filled with the
+ *  notice's values when the server keyed it (python/pendulab/server/messages.json), else its English text. */
+export function serverWords(n: { message: string; key?: string; values?: Record<string, string | number> }): string {
+  const key = `server.${n.key ?? ''}`;
+  return n.key !== undefined && Object.hasOwn(EN, key) ? t(key as Key, n.values ?? {}) : n.message;
+}

@@ -9,7 +9,7 @@ import type { ViewOptions } from '../scene/scene';
 import { ModelControls } from './model';
 import { addParam, throttle } from './params';
 import { addViewControls } from './view';
-import { methodWords, t } from '../i18n';
+import { language, methodWords, scenarioWords, t } from '../i18n';
 
 export interface ControlActions {
   send(cmd: Command): void;
@@ -61,7 +61,8 @@ export class Controls {
       .add(m, 'method', methodLabels)
       .name(t('gui.method'))
       .onChange((v: string) => actions.send({ type: 'set_method', method: v }));
-    method.domElement.title = schema.methods.map((x) => `${methodWords(x.name, x.order)} — ${x.name}: ${x.summary}`).join('\n');
+    // the code name for the curious; the registry's English summary only on the English page
+    method.domElement.title = schema.methods.map((x) => `${methodWords(x.name, x.order)} — ${x.name}${language() === 'en' ? `: ${x.summary}` : ''}`).join('\n');
     this.synced.push(method);
     const dtLim = schema.controls.dt;
     m['dt'] = dtLim.default ?? 1e-3;
@@ -108,7 +109,7 @@ export class Controls {
     run.add(m, 'reset').name(t('toolbar.reset'));
     const names: Record<string, string> = {};
     // the title a class reads (the file's name is in the URL and the tooltip)
-    for (const s of scenarios) if (s.error === undefined) names[s.title ? `${s.title}` : s.name] = s.name;
+    for (const s of scenarios) if (s.error === undefined) names[scenarioWords(s.name, s.title)] = s.name;
     m['scenario'] = '';
     const scen = run
       .add(m, 'scenario', names)
@@ -116,7 +117,7 @@ export class Controls {
       .onChange((v: string) => actions.send({ type: 'load_scenario', name: v }));
     scen.domElement.title = scenarios
       .filter((s) => s.error === undefined)
-      .map((s) => `${s.name}: ${s.title ?? ''}`)
+      .map((s) => `${s.name}: ${scenarioWords(s.name, s.title)}`)
       .join('\n');
     this.synced.push(scen);
 

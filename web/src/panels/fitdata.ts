@@ -4,7 +4,8 @@
 // other in the scene), and a button that clears the path. The checking and the commands are fitdata.ts's.
 import { FIT_MODELS, MAX_FIT_BYTES, fitRequest, paramLines, readFitAnswer } from '../fitdata';
 import type { FitAnswer } from '../fitdata';
-import { t } from '../i18n';
+import { language, modelWords, paramWords, t } from '../i18n';
+import type { FittedParam } from '../fitdata';
 
 export interface FitDataActions {
   /** A fit of file `name` arrived: load its scenario, draw its measured path. */
@@ -21,6 +22,16 @@ function el<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Record<string,
   return e;
 }
 
+/** The fitted parameters in the page's language: `label = value ± error unit` (registry labels translated). */
+function studentLines(params: Record<string, FittedParam>): string[] {
+  return Object.entries(params).map(([name, p]) => {
+    const [label] = paramWords(name, name, '');
+    const err = p.determined && p.stderr !== null ? ` ± ${p.stderr.toPrecision(2)}` : ` ${t('fit.notDetermined')}`;
+    const unit = p.unit && p.unit !== '1' ? ` ${p.unit}` : '';
+    return `${label} = ${p.value.toPrecision(6)}${err}${unit}`;
+  });
+}
+
 export class FitDataPanel {
   readonly input: HTMLInputElement;
   private readonly model: HTMLSelectElement;
@@ -28,6 +39,9 @@ export class FitDataPanel {
   private readonly clear: HTMLButtonElement;
   private readonly report: HTMLPreElement;
   private readonly warnings: HTMLUListElement;
+  /** In German and French: the server's full report (English) folded away under a translated summary. */
+  private readonly full = el('details', { class: 'fit-full', 'data-output': 'fit-full' });
+  private readonly fullText = el('pre', { class: 'fit-report' });
   private busy = false;
 
   constructor(parent: HTMLElement, private readonly actions: FitDataActions) {
@@ -41,7 +55,7 @@ export class FitDataPanel {
     const modelLabel = el('label');
     modelLabel.append(`${t('fit.model')} `);
     this.model = el('select', { 'data-input': 'fit-model' });
-    for (const m of FIT_MODELS) this.model.appendChild(el('option', { value: m }, m));
+    for (const m of FIT_MODELS) this.model.appendChild(el('option', { value: m }, modelWords(m, m)));
     modelLabel.appendChild(this.model);
     const namesLabel = el('label');
     namesLabel.append(`${t('fit.params')} `);
@@ -63,7 +77,9 @@ export class FitDataPanel {
       p.appendChild(row);
       s.appendChild(p);
     }
-    s.append(this.warnings, this.report);
+    this.full.append(el('summary', {}, t('fit.fullReport')), this.fullText);
+    this.full.hidden = true;
+    s.append(this.warnings, this.report, this.full);
     parent.appendChild(s);
     this.input.addEventListener('change', () => {
       const file = this.input.files?.[0];
@@ -77,6 +93,7 @@ export class FitDataPanel {
     this.report.textContent = '';
     this.warnings.hidden = true;
     this.warnings.replaceChildren();
+    this.full.hidden = true;
     this.clear.disabled = true;
     this.input.value = '';
     this.actions.cleared();
@@ -104,7 +121,14 @@ export class FitDataPanel {
       }
       const answer = readFitAnswer(raw);
       if (typeof answer === 'string') throw new Error(answer);
-      const lines = [answer.report, '', ...paramLines(answer.params), ...answer.warnings.map((w) => `warning: ${w}`)];
+      // English: the server's report as it is; other languages: a translated summary and parameters, the
+      // English report folded away below (the warnings above stay the server's words)
+      const english = language() === 'en';
+      const state = t(answer.converged ? 'fit.converged' : 'fit.notConverged');
+      const head = english ? [answer.report, '', ...paramLines(answer.params)] : [t('fit.summary', { model: modelWords(this.model.value, this.model.value), state }), '', ...studentLines(answer.params)];
+      const lines = [...head, ...answer.warnings.map((w) => `⚠ ${w}`)];
+      this.fullText.textContent = answer.report;
+      this.full.hidden = english;
       if (answer.measured === null) lines.push(t('fit.noPath'));
       this.report.textContent = lines.join('\n');
       // the warnings of the fit, and the report's own warning lines

@@ -29,13 +29,13 @@ export class HelpOverlay {
     h.textContent = t('help.title');
     const keys = document.createElement('table');
     const rows: [string, Key][] = [
-      ['Space', 'help.space'],
+      [t('key.space'), 'help.space'],
       ['R', 'help.r'],
       ['S', 'help.s'],
       ['← → ↑ ↓', 'help.arrows'],
-      ['Page ↑ / Page ↓', 'help.page'],
+      [t('key.page'), 'help.page'],
       ['← → ↑ ↓ / + −', 'help.camera'],
-      ['Shift + ← →', 'help.bobKeys'],
+      [`${t('key.shift')} + ← →`, 'help.bobKeys'],
       ['D', 'help.describe'],
       ['Tab', 'help.tab'],
       ['?', 'help.help'],

@@ -7,7 +7,7 @@ import type GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { Command, ModelParams, ModelSchema, Schema, Status } from '../protocol';
 import { addParam, throttle } from './params';
-import { modelWords, t } from '../i18n';
+import { modelHelp, modelWords, t } from '../i18n';
 
 export interface ModelActions {
   send(cmd: Command): void;
@@ -51,7 +51,7 @@ export class ModelControls {
       .name(t('gui.model'))
       .onChange((name: string) => actions.send(pickCommand(name)));
     this.picker.domElement.dataset['control'] = 'model';
-    this.picker.domElement.title = schema.models.map((m) => `${m.name}: ${m.summary}`).join('\n');
+    this.picker.domElement.title = [t('gui.modelsHelp'), ...schema.models.map((m) => `${modelWords(m.name, m.label ?? m.name)} (${m.name}): ${modelHelp(m.name, m.summary)}`)].join('\n');
     this.sendParam = throttle((name: string, value: number) => {
       actions.send({ type: 'set_params', params: { [name]: value } });
     }, 50);

@@ -16,7 +16,7 @@ import type { Portraits } from '../panels/portraits';
 import type { Toolbar } from '../panels/toolbar';
 import type { Tools } from '../panels/tools';
 import { accessibleSliders } from '../keyboard';
-import { t } from '../i18n';
+import { serverWords, t } from '../i18n';
 import { byId } from './page';
 import type { MessageLine } from './page';
 import type { SharedLink } from './link';
@@ -70,7 +70,8 @@ function restoreTwin(lab: LabCore, link: SharedLink): void {
 function onNotice(lab: LabCore, panels: StatusPanels, messages: MessageLine, link: SharedLink, n: Notice): void {
   if (n.type === 'error') {
     lab.store.onError(n);
-    lab.explain(n.command ? `${n.command}: ${n.message}` : n.message);
+    const words = serverWords(n); // the page's language when the server keyed the message
+    lab.explain(n.command ? `${n.command}: ${words}` : words);
     return;
   }
   if (n.type === 'event') {

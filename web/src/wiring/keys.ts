@@ -14,7 +14,7 @@ function wireCanvasKeys(lab: LabCore): void {
   const { scene, store, session, explain } = lab;
   const canvas = scene.renderer.domElement;
   canvas.tabIndex = 0;
-  canvas.setAttribute('aria-label', `${t('page.scene')}. ${t('help.camera')}; Shift + ← →: ${t('help.bobKeys')}`);
+  canvas.setAttribute('aria-label', `${t('page.scene')}. ${t('help.camera')}; ${t('key.shift')} + ← →: ${t('help.bobKeys')}`);
   canvas.addEventListener('keydown', (e) => {
     const k = viewKey(e.key, e.shiftKey);
     if (k === null || e.ctrlKey || e.metaKey || e.altKey) return;

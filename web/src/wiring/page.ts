@@ -43,6 +43,8 @@ export function setUpPage(): void {
   byId('scene').setAttribute('aria-label', t('page.scene'));
   byId('panel').setAttribute('aria-label', t('page.panel'));
   byId('panel-title').textContent = t('page.panel');
+  const regions = { tools: 'page.tools', energy: 'page.energy', data: 'page.data', plots: 'page.plots', portraits: 'page.portraits', reduced: 'page.reduced' } as const;
+  for (const [id, key] of Object.entries(regions)) byId(id).setAttribute('aria-label', t(key));
 }
 
 /** Shows a text in the message line: a problem (red) or, with `info`, news (blue). */

@@ -14,6 +14,7 @@ import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
 import { checkFirstFrame } from './startup.mjs';
+import { checkWords } from './words.mjs';
 import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch, checkAxe } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
@@ -205,6 +206,7 @@ try {
     ['recording and stereo', checkRecordingAndStereo],
     ['measured data', checkFitData],
     ['language', checkLanguage],
+    ['words in every language', checkWords],
     ['axe accessibility', checkAxe],
   ]) {
     if (ONLY.length > 0 && !ONLY.some((w) => name.includes(w))) continue;

@@ -1,0 +1,77 @@
+"""The lab server's keyed error notices (``pendulab/server/messages.json``; docs/web.md, "Languages"): a
+notice a page translates carries ``key`` and ``values`` beside its English ``message``; every key's words
+fill from the values the server sends, and the page's tables translate every key (checked here against
+the TypeScript tables' text, and in web/tests/unit/messages.test.ts against their placeholders)."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from pendulab.server.protocol import (
+    MESSAGES,
+    CommandError,
+    error_notice_of,
+    keyed_notice,
+    message,
+    parse_command,
+)
+
+I18N = Path(__file__).resolve().parents[2] / "web" / "src" / "i18n"
+
+
+def _refusal(text: str) -> CommandError:
+    with pytest.raises(CommandError) as e:
+        parse_command(text)
+    return e.value
+
+
+@pytest.mark.parametrize(
+    ("command", "key", "values"),
+    [
+        (
+            '{"type": "set_params", "length": -1}',
+            "too_small",
+            {"name": "length", "value": "-1", "limit": 1e-3},
+        ),
+        (
+            '{"type": "set_params", "g": 1e9}',
+            "too_large",
+            {"name": "g", "value": "1000000000.0", "limit": 1e3},
+        ),
+        ('{"type": "set_params", "colour": 3}', "unknown_key", {"name": "colour"}),
+    ],
+)
+def test_a_refused_value_is_keyed_with_its_name_value_and_limit(command: str, key: str, values: dict) -> None:
+    e = _refusal(command)
+    assert (e.key, e.values) == (key, values)
+    notice = error_notice_of(e)
+    assert notice["key"] == key and notice["values"] == values and notice["command"] == "set_params"
+    assert notice["message"] == str(e)  # the English message is unchanged
+    assert message(key, **values)  # every placeholder filled
+
+
+def test_two_problems_are_not_keyed() -> None:
+    e = _refusal('{"type": "set_params", "length": -1, "mass": -1}')
+    assert e.key is None and "key" not in error_notice_of(e)
+
+
+def test_keyed_notices_fill_every_placeholder() -> None:
+    n = keyed_notice("nonfinite_motion", t="1.5", fields="energy, tension")
+    assert n["message"] == message("nonfinite_motion", t="1.5", fields="energy, tension")
+    assert "energy, tension not finite" in n["message"] and "{" not in n["message"]
+    with pytest.raises(KeyError):
+        keyed_notice("throttled", lost=3)  # per_second missing: never a half-filled message
+
+
+@pytest.mark.parametrize("lang", ["en", "de", "fr"])
+def test_every_key_is_in_every_page_table(lang: str) -> None:
+    table = (I18N / f"{lang}.ts").read_text(encoding="utf-8")
+    missing = [k for k in MESSAGES if f"'server.{k}'" not in table]
+    assert not missing, f"{lang}.ts lacks server.{missing}"
+    for k, words in MESSAGES.items():
+        line = re.search(rf"'server\.{k}': (['`\"])(.*)\1,", table)
+        assert line is not None, k
+        assert set(re.findall(r"\{(\w+)\}", line.group(2))) == set(re.findall(r"\{(\w+)\}", words)), (lang, k)

@@ -1,0 +1,55 @@
+// The server's keyed messages (python/pendulab/server/messages.json) and the shipped scenarios in every
+// language (issue 28): the English table's `server.<key>` is the JSON's words, every language has every key
+// with the same placeholders, a keyed notice is parsed and shown in the page's language, and each scenario
+// file of python/pendulab/examples/scenarios has a title in every table.
+import { describe, expect, it } from 'vitest';
+import messages from '../../../python/pendulab/server/messages.json';
+import { LANGUAGES, scenarioWords, serverWords, setLanguage } from '../../src/i18n';
+import { EN } from '../../src/i18n/en';
+import { parseNotice } from '../../src/protocol';
+
+const holes = (s: string) => [...s.matchAll(/\{(\w+)\}/g)].map((m) => m[1]).sort();
+const keys = Object.keys(messages).filter((k) => !k.startsWith('_'));
+
+describe('server messages', () => {
+  it('the English table says what messages.json says; every language has every key and placeholder', () => {
+    expect(keys.length).toBeGreaterThan(8);
+    for (const k of keys) {
+      const words = (messages as Record<string, string>)[k] as string;
+      expect(EN[`server.${k}` as keyof typeof EN]).toBe(words);
+      for (const { words: table } of Object.values(LANGUAGES)) expect(holes(table[`server.${k}` as keyof typeof EN])).toEqual(holes(words));
+    }
+  });
+
+  it('a keyed notice is shown in the page language; an unkeyed or unknown one as the server wrote it', () => {
+    const n = parseNotice(JSON.stringify({ type: 'error', message: 'length = -1: input should be ≥ 0.001', command: 'set_params', key: 'too_small', values: { name: 'length', value: '-1', limit: 0.001 } }));
+    expect(n.type === 'error' && n.key).toBe('too_small');
+    if (n.type !== 'error') return;
+    setLanguage('de');
+    expect(serverWords(n)).toBe('length = -1: mindestens 0.001 erlaubt');
+    setLanguage('fr');
+    expect(serverWords(n)).toBe('length = -1 : au moins 0.001');
+    expect(serverWords({ message: 'something new', key: 'no_such_key', values: {} })).toBe('something new');
+    expect(serverWords({ message: 'plain' })).toBe('plain');
+    // values that are not strings or numbers: the key is dropped, the English message kept
+    const odd = parseNotice(JSON.stringify({ type: 'error', message: 'm', command: null, key: 'missing', values: { name: { x: 1 } } }));
+    expect(odd.type === 'error' && odd.key).toBe(undefined);
+    setLanguage('en');
+  });
+});
+
+describe('scenario titles', () => {
+  it('every shipped scenario has its title in every language', () => {
+    const files = import.meta.glob('../../../python/pendulab/examples/scenarios/*.toml', { query: '?raw' });
+    const names = Object.keys(files).map((f) => f.replace(/^.*\//, '').slice(0, -5));
+    expect(names.length).toBeGreaterThan(10);
+    for (const lang of Object.keys(LANGUAGES) as (keyof typeof LANGUAGES)[]) {
+      setLanguage(lang);
+      for (const n of names) {
+        expect(Object.hasOwn(LANGUAGES[lang].words, `scenario.${n}`), `${lang}: scenario.${n}`).toBe(true);
+        expect(scenarioWords(n, null)).not.toBe(n);
+      }
+    }
+    setLanguage('en');
+  });
+});
