@@ -24,9 +24,7 @@ from .error_estimate import ErrorEstimate
 from .model import FloatArray, Pendulum, State, models
 
 if TYPE_CHECKING:
-    from collections.abc import Sequence
-
-    from .animate import Movie
+    from .animate import Movie, MovieSettings
 
 UNITS = {
     "t": "s",
@@ -323,24 +321,17 @@ class Trajectory:
         return Path(path)
 
     def animate(
-        self,
-        path: str | os.PathLike[str],
-        *,
-        fps: float = 30.0,
-        speed: float = 1.0,
-        duration: float | None = None,
-        panels: str | Sequence[str] = ("3d",),
-        size: Any = (1280, 720),
-        **options: Any,
+        self, path: str | os.PathLike[str], settings: MovieSettings | None = None, **options: Any
     ) -> Movie:
         """Writes a movie of this trajectory to ``path`` (.mp4, .webm or .gif) and returns a
         :class:`pendulab.animate.Movie` (frames, fps, size, bytes, ...).
 
+        ``settings``: a :class:`pendulab.animate.MovieSettings`, and/or its fields as keywords:
         ``fps`` [frames per s of video]; ``speed`` [simulated s per s of video]; ``duration`` [s of
         video] (default: all of it); ``panels``: any of ``3d``, ``top``, ``z``, ``reduced``, ``veff``;
         ``size`` [px] (width, height) or "1280x720". Between saved samples the bob moves along the
         cubic Hermite interpolant of (x, v) (error O(h⁴) in the sample spacing h); a moving pivot's
-        path is drawn and the rod hangs from where the pivot is. ``options``:
+        path is drawn and the rod hangs from where the pivot is. Also
         ``trail`` [s], ``vectors``, ``azimuth``, ``elevation`` [deg], ``progress`` (see
         :func:`pendulab.animate.render`; ``docs/animate.md``)."""
         from .animate import from_samples, render
@@ -351,9 +342,7 @@ class Trajectory:
         motion = from_samples(
             self.t, self.x, self.v, length=p.length, g=p.g, mass=p.mass, label=label, pivot=self.pivot
         )
-        return render(
-            motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
-        )
+        return render(motion, path, settings, **options)
 
     def _key_numbers(self) -> list[Row]:
         p, e, j = self.pendulum, self.energy, self.j3

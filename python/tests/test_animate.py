@@ -288,7 +288,7 @@ def test_extreme_spans_and_speeds_are_clear_errors_not_overflows(tmp_path, sol, 
 
 def test_a_trail_longer_than_the_movie_is_the_whole_path(tmp_path, sol):
     """trail=1e308 s overflowed when turned into a number of points; it is the whole path drawn so far."""
-    movie = sol.animate(tmp_path / "m.gif", t=(0.0, 1.0), fps=10, size=(160, 90), trail=1e308)
+    movie = sol.animate(tmp_path / "m.gif", t=(0.0, 1.0), fps=10, size=(320, 180), trail=1e308)
     assert movie.frames == 11 and (tmp_path / "m.gif").stat().st_size > 0
 
 
@@ -422,3 +422,21 @@ def test_the_3d_panel_has_a_floor_grid(sol):
     floor = theme_pixels(shot, animate.movie.Theme().floor)
     assert len(floor) > 200
     assert floor[:, 1].mean() > 130  # pixels below the pivot at w = 120
+
+
+def test_movie_settings_are_one_object_reused_and_overridden() -> None:
+    """A MovieSettings gives the same frames as its fields as keywords; keywords go over it; an unknown
+    keyword is named."""
+    from pendulab.animate import MovieSettings, frames
+    from pendulab.animate.movie import movie_settings
+
+    p = pl.Pendulum()
+    tr = pl.simulate(p, p.state_from_angles(theta=0.6, phi_dot=1.0), t_end=0.5, dt=1e-2)
+    m = pl.animate.from_samples(tr.t, tr.x, tr.v, length=1.0, g=9.81, mass=1.0, label="x")
+    look = MovieSettings(fps=10, size=(320, 180), panels="3d,top")
+    a = [np.asarray(f) for f in frames(m, look)]
+    b = [np.asarray(f) for f in frames(m, fps=10, size=(320, 180), panels="3d,top")]
+    assert len(a) == len(b) > 1 and all(np.array_equal(x, y) for x, y in zip(a, b, strict=True))
+    assert movie_settings(look, {"fps": 5}).fps == 5 and look.fps == 10
+    with pytest.raises(TypeError, match="unknown movie setting"):
+        movie_settings(look, {"frames_per_second": 5})

@@ -16,7 +16,7 @@ from .clock import MAX_FRAMES, MAX_POSITIONS, Clock
 from .encode import FORMATS
 from .layout import PANELS
 from .motion import Motion, from_function, from_samples
-from .movie import Movie, frames, render
+from .movie import Movie, MovieSettings, frames, render
 
 __all__ = [
     "FORMATS",
@@ -26,6 +26,7 @@ __all__ = [
     "Clock",
     "Motion",
     "Movie",
+    "MovieSettings",
     "frames",
     "from_function",
     "from_samples",

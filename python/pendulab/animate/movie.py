@@ -18,9 +18,10 @@ import html
 import math
 import os
 import time
-from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass, fields, replace
 from pathlib import Path
+from typing import Any
 
 from PIL import Image, ImageDraw
 
@@ -119,27 +120,65 @@ def _finite(name: str, value: object, unit: str, lower: float = -math.inf, upper
     return x
 
 
+@dataclass(frozen=True)
+class MovieSettings:
+    """How a movie looks, named once for :func:`render`, :func:`frames` and every ``animate`` method
+    (``Trajectory``, ``ExactSolution``, ``EnsembleResult``, ``SpringTrajectory``, ``pendulab
+    animate``), each of which takes a ``MovieSettings`` and/or these fields as keywords.
+
+    ``fps`` [frames/s of video]; ``speed`` [simulated s per s of video]; ``duration`` [s of video]
+    (default: the whole span of the data); ``panels``: names from ``3d``, ``top``, ``z``,
+    ``reduced``, ``veff`` (a list or "3d,top,z"); ``size``: (width, height) [px] or "1280x720";
+    ``trail`` [s] of fading trail (default one small-oscillation period 2π√(l/g); 0: none);
+    ``vectors``: draw the velocity; ``azimuth``, ``elevation`` [deg]: the 3-D camera; ``progress``:
+    a bar over frames (default: for longer movies). Checked when the movie is planned.
+    """
+
+    fps: float = 30.0
+    speed: float = 1.0
+    duration: float | None = None
+    panels: str | Sequence[str] = ("3d",)
+    size: object = (1280, 720)
+    trail: float | None = None
+    vectors: bool = False
+    azimuth: float = 35.0
+    elevation: float = 18.0
+    progress: bool | None = None
+
+
+_SETTING_NAMES = frozenset(f.name for f in fields(MovieSettings))
+
+
+def movie_settings(
+    settings: MovieSettings | None = None, options: Mapping[str, Any] | None = None
+) -> MovieSettings:
+    """``settings`` (default: :class:`MovieSettings`'s defaults) with the keywords ``options`` put in;
+    a keyword that is not a movie setting is a TypeError naming the ones there are."""
+    options = dict(options or {})
+    unknown = sorted(set(options) - _SETTING_NAMES)
+    if unknown:
+        raise TypeError(f"unknown movie setting(s) {unknown}; the settings are {sorted(_SETTING_NAMES)}")
+    if settings is not None and not isinstance(settings, MovieSettings):
+        raise TypeError(f"settings = {settings!r} must be a pendulab.animate.MovieSettings")
+    return replace(settings or MovieSettings(), **options)
+
+
 class _Plan:
     """Everything checked and computed before the first frame."""
 
-    def __init__(
-        self,
-        motion: Motion,
-        fmt: str,
-        *,
-        fps: float,
-        speed: float,
-        duration: float | None,
-        panels: str | Sequence[str],
-        size: object,
-        trail: float | None,
-        vectors: bool,
-        azimuth: float,
-        elevation: float,
-    ) -> None:
-        self.size = parse_size(size)
+    def __init__(self, motion: Motion, fmt: str, settings: MovieSettings) -> None:
+        s = settings
+        fps, speed, duration, trail, azimuth, elevation = (
+            s.fps,
+            s.speed,
+            s.duration,
+            s.trail,
+            s.azimuth,
+            s.elevation,
+        )
+        self.size = parse_size(s.size)
         check_size(fmt, self.size)
-        self.names = panel_names(panels, motion.bobs)
+        self.names = panel_names(s.panels, motion.bobs)
         on_sphere = [n for n in self.names if n in SPHERE_PANELS]
         if motion.spring and on_sphere:
             raise InvalidInputError(
@@ -158,7 +197,7 @@ class _Plan:
         check_work(fmt, self.size, self.clock.frames)
         trail_s = motion.small_period if trail is None else _finite("trail", trail, "s", lower=0.0)
         view = (_finite("azimuth", azimuth, "deg"), _finite("elevation", elevation, "deg", -90.0, 90.0))
-        options = Options(trail_s, bool(vectors), *view)
+        options = Options(trail_s, bool(s.vectors), *view)
         self.theme = Theme()
         self.scene = Scene(motion, self.clock, options, self.theme)
         self.panels: list[Panel] = [
@@ -181,76 +220,27 @@ class _Plan:
             yield frame
 
 
-def frames(
-    motion: Motion,
-    *,
-    fps: float = 30.0,
-    speed: float = 1.0,
-    duration: float | None = None,
-    panels: str | Sequence[str] = ("3d",),
-    size: object = (1280, 720),
-    trail: float | None = None,
-    vectors: bool = False,
-    azimuth: float = 35.0,
-    elevation: float = 18.0,
-) -> Iterator[Image.Image]:
-    """The frames of the movie :func:`render` would write, as RGB Pillow images (no file)."""
-    plan = _Plan(
-        motion,
-        "mp4",
-        fps=fps,
-        speed=speed,
-        duration=duration,
-        panels=panels,
-        size=size,
-        trail=trail,
-        vectors=vectors,
-        azimuth=azimuth,
-        elevation=elevation,
-    )
-    return plan.frames()
+def frames(motion: Motion, settings: MovieSettings | None = None, **options: Any) -> Iterator[Image.Image]:
+    """The frames of the movie :func:`render` would write, as RGB Pillow images (no file); the
+    settings as for :func:`render`."""
+    return _Plan(motion, "mp4", movie_settings(settings, options)).frames()
 
 
 def render(
-    motion: Motion,
-    path: str | os.PathLike[str],
-    *,
-    fps: float = 30.0,
-    speed: float = 1.0,
-    duration: float | None = None,
-    panels: str | Sequence[str] = ("3d",),
-    size: object = (1280, 720),
-    trail: float | None = None,
-    vectors: bool = False,
-    azimuth: float = 35.0,
-    elevation: float = 18.0,
-    progress: bool | None = None,
+    motion: Motion, path: str | os.PathLike[str], settings: MovieSettings | None = None, **options: Any
 ) -> Movie:
     """Writes the movie of ``motion`` to ``path`` (.mp4, .webm or .gif) and describes it.
 
-    ``fps`` [frames/s of video]; ``speed`` [simulated s per s of video]; ``duration`` [s of video]
-    (default: the whole span of the data); ``panels``: names from ``3d``, ``top``, ``z``,
-    ``reduced``, ``veff`` (a list or "3d,top,z"); ``size``: (width, height) [px] or "1280x720";
-    ``trail`` [s] of fading trail (default one small-oscillation period 2π√(l/g); 0: none);
-    ``vectors``: draw the velocity; ``azimuth``, ``elevation`` [deg]: the 3-D camera. Raises
+    ``settings``: a :class:`MovieSettings` (fps [frames/s of video], speed [simulated s per s of
+    video], duration [s of video], panels, size [px], trail [s], vectors, azimuth, elevation [deg],
+    progress); ``options``: any of its fields as keywords, over ``settings``. Raises
     :class:`~pendulab.InvalidInputError` naming the bad value before any work is done.
     """
     fmt = format_of(path)
-    plan = _Plan(
-        motion,
-        fmt,
-        fps=fps,
-        speed=speed,
-        duration=duration,
-        panels=panels,
-        size=size,
-        trail=trail,
-        vectors=vectors,
-        azimuth=azimuth,
-        elevation=elevation,
-    )
+    s = movie_settings(settings, options)
+    plan = _Plan(motion, fmt, s)
     clock = plan.clock
-    show = clock.frames > PROGRESS_AFTER if progress is None else bool(progress)
+    show = clock.frames > PROGRESS_AFTER if s.progress is None else bool(s.progress)
     target = Path(path)
     start = time.perf_counter()
     with atomic_path(target) as tmp:

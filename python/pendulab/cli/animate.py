@@ -17,7 +17,7 @@ import typer
 from ..animate.clock import check_fps, make_clock
 from ..animate.encode import check_size, check_work, fit_gif, format_of, gif_fps, parse_size
 from ..animate.layout import boxes, panel_names
-from ..animate.movie import SPHERE_PANELS, Movie
+from ..animate.movie import SPHERE_PANELS, Movie, MovieSettings
 from ..scenario import ScenarioError, load_scenario
 from ..theory.exact import exact
 from ..trajectory import Trajectory
@@ -146,23 +146,23 @@ def animate(
             span, fps=gif_fps(check_fps(fps)) if fmt == "gif" else fps, speed=speed, duration=duration
         )
         check_work(fmt, frame_size, clock.frames)
-        options = {
-            "fps": fps,
-            "speed": speed,
-            "duration": duration,
-            "panels": panels,
-            "size": frame_size,
-            "trail": trail,
-            "vectors": vectors,
-            "progress": progress,
-        }
+        settings = MovieSettings(
+            fps=fps,
+            speed=speed,
+            duration=duration,
+            panels=panels,
+            size=frame_size,
+            trail=trail,
+            vectors=vectors,
+            progress=progress,
+        )
         if exact_:
             sol = exact(sc.pendulum(), sc.initial_state())
             if not quiet:
                 _say(
                     f"exact solution of {scenario} ({sol.kind}), t = 0 .. {sim.t_end - sim.t0:g} s", err=True
                 )
-            movie = sol.animate(out, t=(0.0, sim.t_end - sim.t0), **options)  # type: ignore[arg-type]
+            movie = sol.animate(out, settings, t=(0.0, sim.t_end - sim.t0))
         else:
             if not quiet:
                 _say(f"running {scenario} ({sim.method}, t = {sim.t0:g} .. {sim.t_end:g} s)", err=True)
@@ -173,6 +173,6 @@ def animate(
             if tr.interrupted:
                 _say(f"interrupted (Ctrl-C) at t = {tr.t[-1]:g} s; no movie written", err=True)
                 raise typer.Exit(EXIT_INTERRUPTED)
-            movie = tr.animate(out, **options)  # type: ignore[arg-type]
+            movie = tr.animate(out, settings)
         if not quiet:
             _say(_report(movie))

@@ -32,9 +32,7 @@ from ..display import Row, html_table, number
 from ..model import FloatArray
 
 if TYPE_CHECKING:
-    from collections.abc import Sequence
-
-    from ..animate import Movie
+    from ..animate import Movie, MovieSettings
 
 SUMMARY_UNITS = {
     "z_min": "m",
@@ -195,15 +193,7 @@ class EnsembleResult:
         return save(self, path)
 
     def animate(
-        self,
-        path: str | os.PathLike[str],
-        *,
-        fps: float = 30.0,
-        speed: float = 1.0,
-        duration: float | None = None,
-        panels: str | Sequence[str] = ("3d",),
-        size: Any = (1280, 720),
-        **options: Any,
+        self, path: str | os.PathLike[str], settings: MovieSettings | None = None, **options: Any
     ) -> Movie:
         """Writes a movie of all N bobs at once to ``path`` (.mp4, .webm or .gif), coloured by row, over
         the saved times (Hermite-interpolated between them, as :meth:`pendulab.Trajectory.animate`).
@@ -223,6 +213,4 @@ class EnsembleResult:
             mass=float(params.get("mass", 1.0)),
             label=f"{len(self)} trajectories, {self.metadata.get('method', 'rattle')}",
         )
-        return render(
-            motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
-        )
+        return render(motion, path, settings, **options)

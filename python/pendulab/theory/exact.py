@@ -40,9 +40,8 @@ from ..validate import array, show
 
 if TYPE_CHECKING:
     import os
-    from collections.abc import Sequence
 
-    from ..animate import Movie
+    from ..animate import Movie, MovieSettings
 
 BYTES_PER_TIME = 96
 """Memory [B] the exact solution needs per evaluation time: the core's x, v (3 + 3 float64), φ and
@@ -345,24 +344,23 @@ class ExactSolution:
     def animate(
         self,
         path: str | os.PathLike[str],
+        settings: MovieSettings | None = None,
         *,
         t: tuple[float, float] | None = None,
-        fps: float = 30.0,
-        speed: float = 1.0,
-        duration: float | None = None,
-        panels: str | Sequence[str] = ("3d",),
-        size: Any = (1280, 720),
         **options: Any,
     ) -> Movie:
         """Writes a movie of the exact motion over ``t`` = (t_start, t_end) [s] to ``path`` (.mp4,
         .webm or .gif): every frame is :meth:`state` at its time (T-4.2 … T-4.4), nothing is
         integrated or interpolated, at any frame rate. ``t`` defaults to (0, speed · duration), or
         (0, 10 s) without a duration. The other arguments are those of
-        :meth:`pendulab.Trajectory.animate`; returns a :class:`pendulab.animate.Movie`."""
+        :meth:`pendulab.Trajectory.animate` (a :class:`pendulab.animate.MovieSettings` and/or its
+        fields as keywords); returns a :class:`pendulab.animate.Movie`."""
         from ..animate import from_function, render
+        from ..animate.movie import movie_settings
 
+        s = movie_settings(settings, options)
         if t is None:
-            t = (0.0, speed * duration if duration is not None else 10.0)
+            t = (0.0, s.speed * s.duration if s.duration is not None else 10.0)
         try:
             span = (float(t[0]), float(t[1]))
         except (TypeError, ValueError, IndexError):
@@ -381,9 +379,7 @@ class ExactSolution:
             span=span,
             label=f"exact solution ({self.kind} motion)",
         )
-        return render(
-            motion, path, fps=fps, speed=speed, duration=duration, panels=panels, size=size, **options
-        )
+        return render(motion, path, s)
 
     def summary(self) -> str:
         """A few lines: kind, turning heights, z-period, Δφ and W (SI units)."""

@@ -136,10 +136,11 @@ class SpringTrajectory:
         """Writes the run atomically; the format from the suffix (.csv, .parquet, .nc)."""
         return io.save(self, path)  # type: ignore[arg-type]
 
-    def animate(self, path: str | os.PathLike[str], **options: Any) -> Any:
+    def animate(self, path: str | os.PathLike[str], settings: Any = None, **options: Any) -> Any:
         """Writes a movie of the swinging spring to ``path`` (.mp4, .webm or .gif): a coil from the
-        pivot to the bob whose drawn length is |x| [m]; panels ``3d``, ``top``, ``z``. ``options`` as
-        :meth:`pendulab.Trajectory.animate` (fps, speed, duration, panels, size, trail [s], ...);
+        pivot to the bob whose drawn length is |x| [m]; panels ``3d``, ``top``, ``z``. ``settings`` (a
+        :class:`pendulab.animate.MovieSettings`) and ``options`` as :meth:`pendulab.Trajectory.animate`
+        (fps, speed, duration, panels, size, trail [s], ...);
         returns a :class:`pendulab.animate.Movie`."""
         from ..animate import from_samples, render
         from ..animate.words import method_words, model_words
@@ -156,7 +157,7 @@ class SpringTrajectory:
             label=f"{model_words('spring')}: {method_words(method)}",
             spring=True,
         )
-        return render(motion, path, **options)
+        return render(motion, path, settings, **options)
 
     def __repr__(self) -> str:
         if len(self) == 0:
