@@ -4,7 +4,7 @@
 use crate::convert::{to_py, InvalidInputError};
 use numpy::ndarray::{Array1, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
-use pendulab_core::ensemble::{run_with, EnsembleResult, EnsembleSave, Extras};
+use pendulab_core::ensemble::{check, run_with, EnsembleResult, EnsembleSave, Extras};
 use pendulab_core::{DVec3, Result as CoreResult, State};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
@@ -85,9 +85,8 @@ impl EnsembleRun {
         let cancel = Arc::new(AtomicBool::new(false));
         let total = n_steps.saturating_mul(starts.len() as u64);
         // Validate before starting the thread, so bad input raises here and not later.
-        let (p0, c0) = (AtomicU64::new(0), AtomicBool::new(false));
         let extras = Extras { damping: &damping, settle_angle };
-        run_with(&starts, &length, &g, &extras, dt, 0, save, false, &p0, &c0).map_err(to_py)?;
+        check(&starts, &length, &g, &extras, dt, n_steps, save).map_err(to_py)?;
         let (p, c) = (progress.clone(), cancel.clone());
         let finished = Arc::new(Finished::default());
         let on_exit = FinishOnDrop(finished.clone());
@@ -154,17 +153,12 @@ impl EnsembleRun {
             .allow_threads(|| handle.join())
             .map_err(|_| PyRuntimeError::new_err("the ensemble thread panicked"))?
             .map_err(to_py)?;
-        let (n, ns) = (res.states.len(), res.t.len());
-        let mut x = Array3::<f64>::zeros((n, ns, 3));
-        let mut v = Array3::<f64>::zeros((n, ns, 3));
-        for (i, traj) in res.states.iter().enumerate() {
-            for (j, s) in traj.iter().enumerate() {
-                for k in 0..3 {
-                    x[[i, j, k]] = s.x[k];
-                    v[[i, j, k]] = s.v[k];
-                }
-            }
-        }
+        let (n, ns) = (res.len(), res.t.len());
+        let (x, v) = py.allow_threads(|| {
+            let x = Array3::from_shape_fn((n, ns, 3), |(i, j, k)| res.states[i * ns + j].x[k]);
+            let v = Array3::from_shape_fn((n, ns, 3), |(i, j, k)| res.states[i * ns + j].v[k]);
+            (x, v)
+        });
         let d = PyDict::new(py);
         d.set_item("t", Array1::from(res.t).into_pyarray(py))?;
         let (xs, vs): (Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>) =

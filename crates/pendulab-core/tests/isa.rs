@@ -52,9 +52,7 @@ fn everything() -> Vec<u64> {
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
     let res = run_with(&starts, &[1.3], &[9.81], &extras, 1e-3, 1500, EnsembleSave::Every(500), true, &p, &c)
         .unwrap();
-    for traj in &res.states {
-        traj.iter().for_each(|s| push(&mut out, s));
-    }
+    res.states.iter().for_each(|s| push(&mut out, s));
     for s in res.summary.unwrap() {
         out.extend([s.z.0, s.z.1, s.energy_per_mass.0, s.energy_per_mass.1].map(f64::to_bits));
     }

@@ -8,171 +8,32 @@
 //! the single-trajectory path of the `damped` model: the exact damping flow v ↦ e^{−c h/2} v before
 //! and after each step (Strang splitting, conformal symplectic). Optional settle tracking records, per
 //! trajectory, the time after which the sway angle from the stable equilibrium −sign(g) e₃ stays at
-//! or below a threshold (cos sway = −sign(g) z/l; resolution one step). Layout: blocks of [`LANES`] trajectories in structure-of-arrays
-//! form (each coordinate a fixed-size array), so the lane loop has no branches and the compiler
-//! vectorises it (for the widest vectors the CPU has, chosen at run time: [`crate::isa`]); blocks run in parallel with rayon (feature `parallel`). Per-trajectory length l \[m\]
+//! or below a threshold (cos sway = −sign(g) z/l; resolution one step).
+//!
+//! Layout (`block.rs`): blocks of [`LANES`] trajectories in structure-of-arrays form, stepped [`TILE`]
+//! lanes at a time with the tile's state in vector registers for a whole chunk of steps, branch-free
+//! over the lanes, compiled for the widest vectors the CPU has ([`crate::isa`]). Each rayon worker
+//! (feature `parallel`) builds its blocks from the starts and writes their samples straight into the
+//! one result array (`output.rs`: times, summaries, settle times). Per-trajectory length l \[m\]
 //! and gravity g [m/s²]. Memory is bounded by what is saved (final state, every n-th step, or a
 //! summary), never by trajectories × steps. Progress is a shared step counter and a cancel flag is
 //! checked every [`CHECK_EVERY`] steps. SI units throughout.
 
 use crate::error::{Error, Result};
-use crate::integrate::rattle_kernel::{
-    advance_position, advance_velocity, fmadd3, PositionQuadratic, ProjectionPolynomial,
-};
 use crate::state::State;
 use glam::DVec3;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
 
-/// Trajectories per block (the vector width the lane loop is written for).
+/// Trajectories per block (the unit of parallel work; a multiple of [`TILE`]).
 pub const LANES: usize = 64;
 /// Steps between progress updates and cancel checks in each block.
 pub const CHECK_EVERY: u64 = 1024;
 
-type Lanes = [f64; LANES];
-
-/// One block: positions, velocities, Kahan compensations and parameters of LANES trajectories.
-#[derive(Clone)]
-struct Block {
-    x: [Lanes; 3],
-    v: [Lanes; 3],
-    cx: [Lanes; 3],
-    cv: [Lanes; 3],
-    /// l² and 1/l² per lane (as the single path computes them).
-    l2: Lanes,
-    inv_l2: Lanes,
-    g: Lanes,
-    /// e^{−c dt/2} per lane (1 without damping) and whether any lane is damped.
-    decay_half: Lanes,
-    damped: bool,
-    /// −sign(g)/l per lane (cos sway = z · down) and cos of the settle threshold (all lanes).
-    down: Lanes,
-    cos_settle: f64,
-    /// Index of the last sample whose sway exceeded the threshold (−1: none).
-    last_out: Lanes,
-    /// Number of real lanes (the rest repeat lane 0 and are ignored).
-    len: usize,
-    /// Per-lane summary: min z, max z, min E/m, max E/m, min J₃/m, max J₃/m.
-    summary: [Lanes; 6],
-    /// Per lane: crossings of the pivot's horizontal plane so far, and the side (1: z > 0) at the
-    /// last sample.
-    crossings: Lanes,
-    above: Lanes,
-}
-
-impl Block {
-    /// One step of every lane (identical arithmetic to `Rattle::advance` for f = −g e₃, with the
-    /// damping flow on either side when a lane is damped).
-    #[inline(always)]
-    fn step(&mut self, h: f64) {
-        if self.damped {
-            self.decay();
-        }
-        self.rattle(h);
-        if self.damped {
-            self.decay();
-        }
-    }
-
-    /// The exact flow of linear damping for dt/2: v ↦ e^{−c dt/2} v (the `damped` model's
-    /// `velocity_flow` without drag or frame rotation, same arithmetic).
-    #[inline(always)]
-    fn decay(&mut self) {
-        for c in 0..3 {
-            for i in 0..LANES {
-                self.v[c][i] *= self.decay_half[i];
-            }
-        }
-    }
-
-    /// Records sample `k` as outside the settle band where the sway exceeds the threshold.
-    #[inline(always)]
-    fn track_settle(&mut self, k: f64) {
-        for i in 0..LANES {
-            let out = self.x[2][i] * self.down[i] < self.cos_settle;
-            self.last_out[i] = if out { k } else { self.last_out[i] };
-        }
-    }
-
-    /// One undamped RATTLE step of every lane, with the single-trajectory path's arithmetic
-    /// (`integrate::rattle_kernel`, uniform field k = −(h/2) g e₃). Pass 1 finds μ from the series
-    /// for all lanes; the rare lanes outside its range (large steps) take the closed form; pass 2
-    /// updates x and v. Both passes are branch-free over the lanes.
-    #[inline(always)]
-    fn rattle(&mut self, h: f64) {
-        let half = 0.5 * h;
-        let mut mu: Lanes = [0.0; LANES];
-        let mut series_ok = true;
-        for (i, m) in mu.iter_mut().enumerate() {
-            let (x0, w, _) = self.lane(i, half);
-            let quad = PositionQuadratic::new(x0, w, h, self.l2[i]);
-            let (series, ok) = quad.multiplier_series(h);
-            *m = series;
-            series_ok &= ok;
-        }
-        if !series_ok {
-            for (i, m) in mu.iter_mut().enumerate() {
-                let (x0, w, _) = self.lane(i, half);
-                let quad = PositionQuadratic::new(x0, w, h, self.l2[i]);
-                *m = quad.multiplier(h);
-            }
-        }
-        // w and the quadratic are recomputed rather than kept from pass 1: a few vectorised
-        // multiply-adds per lane, measured 1.4× faster than storing them (an array of structs)
-        for (i, &mu) in mu.iter().enumerate() {
-            let (x0, w, kick) = self.lane(i, half);
-            let quad = PositionQuadratic::new(x0, w, h, self.l2[i]);
-            let p = ProjectionPolynomial::new(x0, w, kick, &quad, h, self.inv_l2[i]).at(mu);
-            let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
-            let mut cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
-            let mut cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
-            let x1 = advance_position(x0, fmadd3(x0, mu, w), h, &mut cx);
-            let v1 = advance_velocity(v0, kick + kick, x0, mu, x1, p, &mut cv);
-            for c in 0..3 {
-                self.x[c][i] = x1[c];
-                self.v[c][i] = v1[c];
-                self.cx[c][i] = cx[c];
-                self.cv[c][i] = cv[c];
-            }
-        }
-    }
-
-    /// Lane `i`'s position x₀, w = v₀ + k and the kick k = (h/2)(−g e₃) (the ideal model's
-    /// `kick_acceleration · h/2`, same arithmetic).
-    #[inline(always)]
-    fn lane(&self, i: usize, half: f64) -> (DVec3, DVec3, DVec3) {
-        let x0 = DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]);
-        let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
-        let kick = DVec3::new(0.0, 0.0, -self.g[i]) * half;
-        (x0, v0 + kick, kick)
-    }
-
-    #[inline(always)]
-    fn update_summary(&mut self) {
-        for i in 0..LANES {
-            let (x, y, z) = (self.x[0][i], self.x[1][i], self.x[2][i]);
-            let (vx, vy, vz) = (self.v[0][i], self.v[1][i], self.v[2][i]);
-            let e = 0.5 * (vx * vx + vy * vy + vz * vz) + self.g[i] * z;
-            let j = x * vy - y * vx;
-            let s = &mut self.summary;
-            s[0][i] = s[0][i].min(z);
-            s[1][i] = s[1][i].max(z);
-            s[2][i] = s[2][i].min(e);
-            s[3][i] = s[3][i].max(e);
-            s[4][i] = s[4][i].min(j);
-            s[5][i] = s[5][i].max(j);
-            let above = if z > 0.0 { 1.0 } else { 0.0 };
-            self.crossings[i] += (above - self.above[i]).abs();
-            self.above[i] = above;
-        }
-    }
-
-    fn state(&self, i: usize) -> State {
-        State {
-            x: DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]),
-            v: DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]),
-        }
-    }
-}
+mod block;
+mod output;
+pub use block::TILE;
+use block::{Block, Lanes, Track};
+use output::{sample_count, sample_times, settle_times, summaries};
 
 /// What an ensemble run keeps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -198,14 +59,15 @@ pub struct Summary {
     pub crossings: u64,
 }
 
-/// The result of [`run`]: saved states per trajectory (trajectory-major: `states[traj][sample]`),
+/// The result of [`run`]: saved states (trajectory-major, one flat array: [`EnsembleResult::trajectory`]),
 /// the sample times \[s\], per-trajectory summaries, and whether the run was cancelled.
 #[derive(Debug, Clone)]
 pub struct EnsembleResult {
     /// Saved times \[s\] (shared by all trajectories).
     pub t: Vec<f64>,
-    /// `states[k]` holds trajectory k's saved states.
-    pub states: Vec<Vec<State>>,
+    /// Every trajectory's saved states, trajectory after trajectory: trajectory k's sample j is
+    /// `states[k * t.len() + j]` (one allocation, whatever the number of trajectories).
+    pub states: Vec<State>,
     /// Per-trajectory extremes (when requested).
     pub summary: Option<Vec<Summary>>,
     /// Per trajectory (with [`Extras::settle_angle`]): the time \[s\] after which the sway stayed at or
@@ -216,6 +78,24 @@ pub struct EnsembleResult {
     pub cancelled: bool,
     /// Steps taken by every trajectory.
     pub steps: u64,
+}
+
+impl EnsembleResult {
+    /// Number of trajectories.
+    pub fn len(&self) -> usize {
+        self.states.len() / self.t.len().max(1)
+    }
+
+    /// True when the run had no trajectory (never: [`run`] needs at least one).
+    pub fn is_empty(&self) -> bool {
+        self.states.is_empty()
+    }
+
+    /// Trajectory k's saved states, one per time of [`EnsembleResult::t`].
+    pub fn trajectory(&self, k: usize) -> &[State] {
+        let ns = self.t.len();
+        &self.states[k * ns..(k + 1) * ns]
+    }
 }
 
 /// Optional per-trajectory extras of an ensemble run ([`run_with`]).
@@ -262,30 +142,56 @@ pub fn run_with(
     cancel: &AtomicBool,
 ) -> Result<EnsembleResult> {
     let plan = Plan::checked(starts, length, g, extras, dt, n_steps, save)?;
-    let mut blocks: Vec<Block> =
-        (0..starts.len().div_ceil(LANES)).map(|b| plan.block(b, starts, length, g, dt)).collect();
+    let (n, ns) = (starts.len(), sample_count(n_steps, plan.every));
+    let mut states = vec![State { x: DVec3::NAN, v: DVec3::NAN }; n * ns];
     let run = BlockRun { dt, n_steps, every: plan.every, with_summary, track: plan.track, progress, cancel };
-    let work = |blk: &mut Block| run.block(blk);
+    // each worker builds its blocks from the starts and writes their samples into its part of
+    // `states`: both cores work from the first block on, and nothing is copied afterwards
+    let work = |(b, out): (usize, &mut [State])| {
+        let mut blk = plan.block(b, starts, length, g, dt);
+        let (steps, cancelled) = run.block(&mut blk, out, ns);
+        (blk, steps, cancelled)
+    };
     #[cfg(feature = "parallel")]
     let outputs: Vec<_> = {
         use rayon::prelude::*;
-        blocks.par_iter_mut().map(work).collect()
+        states.par_chunks_mut(LANES * ns).enumerate().map(work).collect()
     };
     #[cfg(not(feature = "parallel"))]
-    let outputs: Vec<_> = blocks.iter_mut().map(work).collect();
+    let outputs: Vec<_> = states.chunks_mut(LANES * ns).enumerate().map(work).collect();
     let cancelled = outputs.iter().any(|o| o.2);
     let steps = outputs.iter().map(|o| o.1).min().unwrap_or(0);
     let t = sample_times(steps, plan.every, n_steps, dt);
-    let mut states: Vec<Vec<State>> = outputs.into_iter().flat_map(|o| o.0).collect();
-    for s in &mut states {
-        s.truncate(t.len());
+    let nt = t.len();
+    if nt < ns {
+        // stopped early: every trajectory keeps the samples all of them reached
+        for k in 1..n {
+            states.copy_within(k * ns..k * ns + nt, k * nt);
+        }
+        states.truncate(n * nt);
     }
-    if states.iter().any(|s| !s.last().is_some_and(State::is_finite)) {
+    if (0..n).any(|k| !states[k * nt + nt - 1].is_finite()) {
         return Err(Error::Diverged { t: steps as f64 * dt, method: "rattle (ensemble)", dt });
     }
+    let blocks: Vec<Block> = outputs.into_iter().map(|o| o.0).collect();
     let summary = with_summary.then(|| summaries(&blocks));
     let settle_time = plan.track.then(|| settle_times(&blocks, steps, dt));
     Ok(EnsembleResult { t, states, summary, settle_time, cancelled, steps })
+}
+
+/// Checks the input of [`run_with`] as the run would (and fails with the same error), without
+/// running or allocating anything: for callers that start the run elsewhere (a background thread).
+#[allow(clippy::too_many_arguments)]
+pub fn check(
+    starts: &[State],
+    length: &[f64],
+    g: &[f64],
+    extras: &Extras<'_>,
+    dt: f64,
+    n_steps: u64,
+    save: EnsembleSave,
+) -> Result<()> {
+    Plan::checked(starts, length, g, extras, dt, n_steps, save).map(|_| ())
 }
 
 /// A parameter given once for all trajectories (length 1) or per trajectory: its value for trajectory k.
@@ -415,88 +321,37 @@ struct BlockRun<'a> {
 }
 
 impl BlockRun<'_> {
-    /// Runs one block: its saved states per lane, the steps taken and whether it was cancelled.
+    /// Runs one block, writing lane i's sample j to `out[i * ns + j]`: the steps taken and whether it
+    /// was cancelled.
     #[inline]
-    fn block(&self, blk: &mut Block) -> (Vec<Vec<State>>, u64, bool) {
+    fn block(&self, blk: &mut Block, out: &mut [State], ns: usize) -> (u64, bool) {
         let (n_steps, every) = (self.n_steps, self.every);
-        let mut saved: Vec<Vec<State>> = (0..blk.len).map(|i| vec![blk.state(i)]).collect();
+        let mut sample = 0;
+        let mut save = |blk: &Block| {
+            for i in 0..blk.len {
+                out[i * ns + sample] = blk.state(i);
+            }
+            sample += 1;
+        };
+        save(blk);
+        let track = Track { summary: self.with_summary, settle: self.track };
         let mut done = 0u64;
         while done < n_steps {
             let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
             // the lane loops compiled for the CPU's widest vectors (AVX-512, AVX2 + FMA; crate::isa)
             crate::isa::fastest(
                 #[inline(always)]
-                || {
-                    for j in 1..=chunk {
-                        blk.step(self.dt);
-                        if self.with_summary {
-                            blk.update_summary();
-                        }
-                        if self.track {
-                            blk.track_settle((done + j) as f64);
-                        }
-                    }
-                },
+                || blk.steps(chunk, self.dt, done, track),
             );
             done += chunk;
             self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
             if done % every == 0 || done == n_steps {
-                for (i, s) in saved.iter_mut().enumerate() {
-                    s.push(blk.state(i));
-                }
+                save(blk);
             }
             if self.cancel.load(Ordering::Relaxed) {
-                return (saved, done, true);
+                return (done, true);
             }
         }
-        (saved, done, false)
+        (done, false)
     }
-}
-
-/// The sample times [s] of a run that took `steps` of `n_steps` steps of `dt`, saving every `every`-th
-/// step and the last: 0, then every multiple of `every` (and n_steps) up to `steps`.
-fn sample_times(steps: u64, every: u64, n_steps: u64, dt: f64) -> Vec<f64> {
-    let mut t: Vec<f64> = vec![0.0];
-    let mut k = 0;
-    while k < steps {
-        k = (k + every - k % every).min(n_steps);
-        if k > steps {
-            break;
-        }
-        t.push(k as f64 * dt);
-    }
-    t
-}
-
-/// Every trajectory's extremes and plane crossings, in order.
-fn summaries(blocks: &[Block]) -> Vec<Summary> {
-    blocks
-        .iter()
-        .flat_map(|b| {
-            (0..b.len).map(|i| Summary {
-                z: (b.summary[0][i], b.summary[1][i]),
-                energy_per_mass: (b.summary[2][i], b.summary[3][i]),
-                j3_per_mass: (b.summary[4][i], b.summary[5][i]),
-                crossings: b.crossings[i] as u64,
-            })
-        })
-        .collect()
-}
-
-/// Every trajectory's settle time [s] after `steps` steps of `dt` (+∞: outside at the last sample).
-fn settle_times(blocks: &[Block], steps: u64, dt: f64) -> Vec<f64> {
-    blocks
-        .iter()
-        .flat_map(|b| {
-            (0..b.len).map(|i| {
-                let k = b.last_out[i];
-                // outside at the last sample: not settled within the run
-                if k >= steps as f64 {
-                    f64::INFINITY
-                } else {
-                    (k + 1.0) * dt
-                }
-            })
-        })
-        .collect()
 }
