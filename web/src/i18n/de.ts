@@ -398,6 +398,8 @@ export const DE: Words = {
   'key.space': 'Leertaste',
   'key.page': 'Bild ↑ / Bild ↓',
   'key.shift': 'Umschalt',
+  'toolbar.simpleShort': 'Einfach',
+  'toolbar.simple': 'einfache Ansicht: nur die Werkzeuge für den Unterricht (Länge, Masse, Schwerkraft, Reibung, Stoppuhr, Periode, Lineal, Energie); noch einmal drücken für alles',
 };
 
 /** The registry's parameters in German: [label, help] by key (the units stay SI). */

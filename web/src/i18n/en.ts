@@ -396,6 +396,8 @@ export const EN = {
   'key.space': 'Space',
   'key.page': 'Page ↑ / Page ↓',
   'key.shift': 'Shift',
+  'toolbar.simpleShort': 'Simple',
+  'toolbar.simple': 'simple view: only the classroom tools (length, mass, gravity, friction, stopwatch, period, ruler, energy); press again for everything',
 };
 
 export type Words = { readonly [K in keyof typeof EN]: string };

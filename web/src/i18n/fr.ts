@@ -398,6 +398,8 @@ export const FR: Words = {
   'key.space': 'Espace',
   'key.page': 'Pg préc. / Pg suiv.',
   'key.shift': 'Maj',
+  'toolbar.simpleShort': 'Simple',
+  'toolbar.simple': 'vue simple : seulement les outils de classe (longueur, masse, gravité, frottement, chronomètre, période, règle, énergie) ; appuyer à nouveau pour tout voir',
 };
 
 /** The registry's parameters in French: [label, help] by key (the units stay SI). */

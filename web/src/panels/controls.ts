@@ -21,6 +21,13 @@ export interface ControlActions {
   viewChanged(view: ViewOptions, topView: boolean): void;
 }
 
+/** A folder of `gui` named `title`, its element tagged `data-folder="tag"` (the simple view's CSS keeps some). */
+function taggedFolder(gui: GUI, title: string, tag: string): GUI {
+  const f = gui.addFolder(title);
+  f.domElement.dataset['folder'] = tag;
+  return f;
+}
+
 export class Controls {
   readonly gui: GUI;
   private readonly model: Record<string, number | string | boolean | (() => void)>;
@@ -41,7 +48,7 @@ export class Controls {
     this.model = m;
 
     // --- pendulum: length, mass, g (every model has them), then the model and its own parameters ---
-    const pend = this.gui.addFolder(t('gui.pendulum'));
+    const pend = taggedFolder(this.gui, t('gui.pendulum'), 'pendulum'); // the simple view keeps it and `run`
     const sendParams = throttle((name: string, value: number) => {
       actions.send({ type: 'set_params', [name]: value } as Command);
     }, 50);
@@ -81,7 +88,7 @@ export class Controls {
     this.synced.push(dt);
 
     // --- run ---
-    const run = this.gui.addFolder(t('gui.run'));
+    const run = taggedFolder(this.gui, t('gui.run'), 'run');
     const tsLim = schema.controls.time_scale;
     m['time_scale'] = tsLim.default ?? 1;
     const ts = run

@@ -18,6 +18,8 @@ export interface ToolbarActions {
   collapsed(on: boolean): void;
   /** Presentation mode (large type for a projector) switched on or off. */
   present(on: boolean): void;
+  /** The simple view (the classroom tools only) switched on or off. */
+  simple(on: boolean): void;
 }
 
 function button(action: string, text: string, title: string, open = false): HTMLButtonElement {
@@ -36,10 +38,16 @@ export class Toolbar {
   readonly recordButton: HTMLButtonElement;
   private readonly toggle: HTMLButtonElement;
   private readonly presentButton: HTMLButtonElement;
+  private readonly simpleButton: HTMLButtonElement;
 
   /** Shows whether presentation mode is on. */
   showPresenting(on: boolean): void {
     this.presentButton.setAttribute('aria-pressed', String(on));
+  }
+
+  /** Shows whether the simple view is on. */
+  showSimple(on: boolean): void {
+    this.simpleButton.setAttribute('aria-pressed', String(on));
   }
 
   constructor(
@@ -69,6 +77,10 @@ export class Toolbar {
     this.presentButton = button('present', 'A⁺', t('toolbar.present'), true);
     this.presentButton.setAttribute('aria-pressed', 'false');
     this.presentButton.addEventListener('click', () => actions.present(this.presentButton.getAttribute('aria-pressed') !== 'true'));
+    // the simple view: PhET-level tools only (the physicist's panels folded away)
+    this.simpleButton = button('simple', t('toolbar.simpleShort'), t('toolbar.simple'), true);
+    this.simpleButton.setAttribute('aria-pressed', 'false');
+    this.simpleButton.addEventListener('click', () => actions.simple(this.simpleButton.getAttribute('aria-pressed') !== 'true'));
     const lang = document.createElement('select');
     lang.dataset['input'] = 'language';
     lang.classList.add('when-open');
@@ -81,7 +93,7 @@ export class Toolbar {
     }
     lang.value = language();
     lang.addEventListener('change', () => actions.language(lang.value as Lang));
-    bar.append(this.toggle, this.runButton, reset, step, this.recordButton, help, this.presentButton, lang);
+    bar.append(this.toggle, this.runButton, reset, step, this.recordButton, help, this.simpleButton, this.presentButton, lang);
     this.setCollapsed(false);
     // the arrow points where the panel goes: right on a wide screen, down on a phone
     window.matchMedia(PHONE).addEventListener('change', () => this.setCollapsed(panel.classList.contains('collapsed')));

@@ -56,6 +56,8 @@ export interface ViewOptions extends Record<VectorName, boolean> {
   protractorLift: number;
   /** Presentation mode: large type in the panel (the page's; kept here so that a link carries it). */
   present: boolean;
+  /** The simple view: the classroom tools only (docs/web.md, "Simple view"). */
+  simple: boolean;
 }
 
 export const STEREO_MODES = ['off', 'anaglyph', 'side by side'] as const;
@@ -84,6 +86,7 @@ export const DEFAULT_VIEW: ViewOptions = {
   protractorShift: 0,
   protractorLift: 0,
   present: false,
+  simple: false,
 };
 
 /** Arrow colours (the legend in docs/web.md). */

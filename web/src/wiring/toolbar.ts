@@ -60,8 +60,15 @@ export function wireToolbar(lab: LabCore): ToolbarParts {
       document.body.classList.toggle('present', on);
       toolbar.showPresenting(on);
     },
+    simple: (on) => {
+      view.simple = on;
+      document.body.classList.toggle('simple', on);
+      toolbar.showSimple(on);
+    },
   });
   document.body.classList.toggle('present', view.present);
   toolbar.showPresenting(view.present);
+  document.body.classList.toggle('simple', view.simple);
+  toolbar.showSimple(view.simple);
   return { toolbar, help, lastVideo: () => lastVideo };
 }

@@ -15,6 +15,7 @@ import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
 import { checkFirstFrame } from './startup.mjs';
 import { checkWords } from './words.mjs';
+import { checkSimpleView } from './simple.mjs';
 import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch, checkAxe } from './classroom.mjs';
 
 const base = process.argv[2] ?? 'http://127.0.0.1:8765';
@@ -197,6 +198,7 @@ try {
     ['first frame', checkFirstFrame],
     ['layout', checkLayout],
     ['touch and server gone', checkTouch],
+    ['simple view', checkSimpleView],
     ['scenarios', checkScenarios],
     ['plots', checkPlots],
     ['period timer', checkPeriodTimer],

@@ -7,7 +7,7 @@
 // refuses (a length of −1 m) is explained in German from the server's message key (messages.json).
 const SAME = {
   de: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Integrator', 'Pause', 'rad'],
-  fr: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Pause', 'rad', 'angle θ [°]', 'distance |x| [m]', 'tension T [N]', 'amplitude', 'axes', 'exact', 'tension', 'tension max', 'tension min'],
+  fr: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Pause', 'rad', 'Simple', 'angle θ [°]', 'distance |x| [m]', 'tension T [N]', 'amplitude', 'axes', 'exact', 'tension', 'tension max', 'tension min'],
 };
 
 /** Every text of the page in language `lang` (a new page; closed after). */

@@ -1,0 +1,41 @@
+// End-to-end check of the simple view (issue 28: "a simple view with PhET-level tools first"), run by
+// smoke.mjs: the toolbar's *Simple* folds the physicist's panels away (data, plots, portraits, reduced
+// view, fitting, the integrator, view, vectors and export folders, the model picker) and keeps what PhET's
+// Pendulum Lab has — length and mass (lil-gui's Pendulum folder), gravity and friction, the start angle,
+// stopwatch, period timer, ruler and protractor, energy bars, two pendulums, slow motion —; the link
+// carries it; with presentation mode on top the type is large; pressing again brings everything back.
+const shown = (sel) => [...document.querySelectorAll(sel)].some((e) => e.getClientRects().length > 0 && e.getBoundingClientRect().height > 0);
+
+async function state(page) {
+  return page.evaluate((shownSrc) => {
+    const isShown = new Function(`return (${shownSrc})`)();
+    const targets = [...document.querySelectorAll('#panel button, #panel select, #panel input, #panel .lil-controller')].filter((e) => e.getClientRects().length > 0).length;
+    const gone = ['#data', '#plots', '#portraits', '#reduced', '.tools[data-tool="fit"]', '[data-control="model"]'].filter((s) => isShown(s));
+    const kept = ['[data-tool="start"]', '[data-tool="world"]', '[data-tool="stopwatch"]', '[data-tool="period"]', '[data-tool="overlays"]', '[data-tool="twin"]', '#energy', '#gui [data-folder="pendulum"] .lil-controller.lil-number', '#gui [data-folder="run"]'].filter((s) => !isShown(s));
+    const folders = [...document.querySelectorAll('#gui .lil-root > .lil-children > .lil-gui')].filter((f) => f.getClientRects().length > 0).length;
+    return { targets, gone, kept, folders, simple: document.body.classList.contains('simple') };
+  }, shown.toString());
+}
+
+export async function checkSimpleView(page, { check, WAIT }) {
+  const full = await state(page);
+  await page.locator('[data-action="simple"]').click();
+  await page.waitForFunction(() => /simple/.test(location.search), null, { timeout: WAIT });
+  const simple = await state(page);
+  await page.screenshot({ path: 'test-results/simple-view.png' });
+  check(simple.simple && simple.gone.length === 0 && simple.folders === 2, `simple view: the data panel, plots, portraits, reduced view, fitting, model picker and ${full.folders - 2} settings folders are folded away${simple.gone.length ? ' (still shown: ' + simple.gone.join(', ') + ')' : ''}`);
+  check(simple.kept.length === 0 && simple.targets < full.targets, `simple view: PhET's tools kept (length and mass, gravity and friction, start, stopwatch, period, ruler, energy, two pendulums, slow motion); ${simple.targets} controls instead of ${full.targets}${simple.kept.length ? '; missing: ' + simple.kept.join(', ') : ''}`);
+  // the link hands the simple view out; presentation mode on top of it
+  const p2 = await page.context().newPage();
+  await p2.goto(page.url(), { timeout: WAIT });
+  await p2.waitForFunction(() => window.pendulab?.store.status != null, null, { timeout: WAIT }); // the link may be paused: no frames
+  await p2.locator('[data-action="present"]').click();
+  const both = await p2.evaluate(() => ({ simple: document.body.classList.contains('simple'), size: parseFloat(getComputedStyle(document.querySelector('.tools label')).fontSize), data: document.getElementById('data').getClientRects().length }));
+  await p2.screenshot({ path: 'test-results/simple-presentation.png' });
+  await p2.close();
+  check(both.simple && both.data === 0 && both.size >= 18, `the link opens the simple view; with presentation mode on top ${both.size} px type`);
+  await page.locator('[data-action="simple"]').click();
+  await page.waitForFunction(() => !/simple/.test(location.search), null, { timeout: WAIT });
+  const back = await state(page);
+  check(!back.simple && back.folders === full.folders && back.targets === full.targets, `pressing Simple again brings everything back (${back.targets} controls)`);
+}
