@@ -15,7 +15,7 @@ STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
-	bench-peers-portable check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm
+	bench-peers-portable check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm test-tour-wheel
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -90,10 +90,11 @@ test-web: web/node_modules/.package-lock.json
 	cd web && node_modules/.bin/eslint src   # max-lines-per-function (web/eslint.config.mjs)
 	cd web && node_modules/.bin/vitest run
 
-# The lab end to end: `pendulab serve` on a free port, the committed bundle in Debian's headless chromium
-# (web/tests/e2e/run.sh; needs `apt-get install chromium`, which .ci/run does). Screenshots and the
-# measured frame rate: web/test-results/.
-test-e2e: build web/node_modules/.package-lock.json
+# The lab end to end, once per transport: `pendulab serve` on a free port with the committed bundle, then
+# the one-file lab (dist/pendulab-lab.html) from file:// with every network request refused, the same
+# checks in Debian's headless chromium (web/tests/e2e/run.sh; needs `apt-get install chromium`, which
+# .ci/run does). Screenshots and the measured frame rate: web/test-results/.
+test-e2e: build web/node_modules/.package-lock.json lab-html
 	bash web/tests/e2e/run.sh
 
 lint: venv
@@ -156,12 +157,21 @@ test-wasm: wasm
 	cargo build --release -p pendulab-wasm --example trajectory
 	node crates/pendulab-wasm/tests/parity.mjs $(WASM) target/release/examples/trajectory
 
+# PYTEST_ARGS: `make test` leaves out the tour's runs in .venv (test-tour-wheel runs them as a user would).
 test-python: build
-	$(VENV)/bin/pytest python/tests -q
+	$(VENV)/bin/pytest python/tests -q $(PYTEST_ARGS)
 
-# The guided tour alone (docs/tour/*.ipynb run by nbclient; also part of test-python): 70 s to 2 min.
+# The guided tour alone (docs/tour/*.ipynb run by nbclient in .venv; also part of test-python): 70 s to 2 min.
 test-tour: build
 	$(VENV)/bin/pytest python/tests/test_tour.py -q
+
+# The guided tour as a user runs it (issue 31): the wheel installed with the `tour` extra by the README's
+# line in a fresh environment outside the checkout, every notebook run there, each within 20 s
+# (TOUR_LIMIT; a slower one fails with its name and time): tools/check_tour.py. `make test` runs it
+# instead of the tour's runs in .venv.
+TOUR_LIMIT ?= 20
+test-tour-wheel: wheel
+	$(PYTHON) tools/check_tour.py dist --limit $(TOUR_LIMIT)
 
 # The documentation site (mkdocs.yml, hooks in tools/docs_site.py) into site/, strict: a broken link,
 # a missing API entry, a failing gallery script or notebook, or a page that loads anything from the
@@ -178,7 +188,8 @@ docs-serve: build $(VENV)/.docs-deps lab-html
 	$(VENV)/bin/mkdocs serve --strict -a 127.0.0.1:8001
 
 test: DOCS_EXECUTE := false
-test: lint test-rust test-wasm test-python test-web test-e2e test-lab-html docs test-wheel
+test: PYTEST_ARGS := --deselect python/tests/test_tour.py::test_notebook_runs
+test: lint test-rust test-wasm test-python test-web test-e2e test-lab-html docs test-wheel test-tour-wheel
 
 # Hostile input, long (docs/limits.md, "Fuzzing"): FUZZ_CASES generated inputs per entry point of the
 # Python API (hypothesis) and of the Rust core (proptest), and the whole corpus of FUZZ_FILES mutated

@@ -17,11 +17,13 @@
   files that running them writes into ``docs/tour/`` (movies) are removed after the build. MathJax is
   copied into the site from the ``jupyter-server-mathjax`` package, so that formulas render offline
   (with its STIX-Web fonts: ``config/pendulab.js``); each tour page links to its notebook's download
-  and to the lab.
+  and opens the lab in the notebook's set-up.
 - **The lab.** The marker ``<!-- lab-scenarios -->`` in ``docs/lab.md`` becomes a table of the example
   scenarios, each with its "open in the lab" link (``lab/index.html?s=NAME``, the lab's share-link
-  form). ``dist/pendulab-lab.html`` (``make lab-html``, which ``make docs`` runs first) is copied
-  to ``site/lab/index.html``: the whole lab in the site, its physics in the page (docs/lab.md).
+  form); every gallery figure and tour notebook has one too (``tools/lab_links.py`` says where each
+  is written; a script or notebook without one fails the build). ``dist/pendulab-lab.html``
+  (``make lab-html``, which ``make docs`` runs first) is copied to ``site/lab/index.html``: the
+  whole lab in the site, its physics in the page (docs/lab.md).
 - **Checks after the build** (each failure fails the build): the API page has an anchor for every
   name of ``pendulab.__all__``, and no page loads a script, stylesheet or font from the network (the
   site must be readable offline from ``site/index.html``).
@@ -31,6 +33,7 @@ from __future__ import annotations
 
 import hashlib
 import html
+import importlib.util
 import json
 import os
 import re
@@ -57,6 +60,18 @@ TOUR_GLOB = "tour/*.ipynb"
 CLI_MARKER = "<!-- cli-reference -->"
 LAB_HTML = ROOT / "dist" / "pendulab-lab.html"
 LAB_MARKER = "<!-- lab-scenarios -->"
+
+
+def _load_lab_links() -> Any:
+    """tools/lab_links.py (the site's "open in the lab" links; the tests read it too)."""
+    spec = importlib.util.spec_from_file_location("lab_links", Path(__file__).with_name("lab_links.py"))
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+lab_links = _load_lab_links()
 
 # Sphinx roles in docstrings (``:class:`pendulab.X```), which Markdown renders as ``:class:<code>…``.
 _ROLE = re.compile(r":(?:class|func|meth|mod|attr|data|exc|obj|ref):(<code>)~?")
@@ -127,7 +142,14 @@ def on_files(files: Files, config: Any) -> Files:
     for script in scripts:
         outputs = _run_gallery_script(script)
         title, body = _docstring_parts(script)
-        sections += [f"## {title}", "", body, ""]
+        query = lab_links.gallery_query(script)
+        if query is None:
+            raise PluginError(
+                f"gallery script {script.name} has no 'Lab: QUERY' line in its docstring (its "
+                "'open in the lab' link: tools/lab_links.py)"
+            )
+        body = lab_links.without_lab_line(body)
+        sections += [f"## {title}", "", body, "", lab_links.link_html(query, "../"), ""]
         for out in outputs:
             uri = f"gallery/{script.stem}/{out.name}"
             files.append(File.generated(config, uri, abs_src_path=str(out)))
@@ -203,7 +225,7 @@ def lab_scenarios_markdown() -> str:
         if "error" in s:
             continue
         title = _escape(str(s.get("title") or ""))
-        link = f'<a href="lab/index.html?s={s["name"]}">open in the lab</a>'
+        link = lab_links.link_html(lab_links.scenario_query(s["name"]), "", "open in the lab")
         rows.append(f"| `{s['name']}` | {title} | {link} |")
     return "\n".join(rows)
 
@@ -259,15 +281,19 @@ def on_page_content(content: str, **kwargs: Any) -> str:
 
 def on_post_page(output: str, page: Any, **kwargs: Any) -> str:
     """A tour page gets, under its title, a link that downloads its notebook (the .ipynb that
-    mkdocs-jupyter copies beside the page) and one that opens the lab (``lab/index.html``)."""
+    mkdocs-jupyter copies beside the page) and one that opens the lab in the notebook's set-up (the
+    share-link query of its metadata ``pendulab.lab``: tools/lab_links.py)."""
     source = getattr(page.file, "src_uri", "")
     if not (source.startswith("tour/") and source.endswith(".ipynb")):
         return output
     name = html.escape(Path(source).name)
+    query = lab_links.tour_query(Path(page.file.abs_src_path))
+    if query is None:
+        raise PluginError(f'{source} has no lab link: add {{"pendulab": {{"lab": "QUERY"}}}} to its metadata')
     links = (
         f'<p class="pendulab-tour-links"><a href="{name}" download>Download this notebook</a> '
         "(it runs with the <code>tour</code> extra: README, <em>Install</em>) · "
-        '<a href="../lab/index.html">Open the lab</a></p>'
+        f"{lab_links.link_html(query, '../')}</p>"
     )
     return re.sub(r"(<h1\b[^>]*>.*?</h1>)", lambda m: m.group(1) + links, output, count=1, flags=re.DOTALL)
 

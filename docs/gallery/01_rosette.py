@@ -3,6 +3,8 @@
 Released 60° from the downward vertical with a sideways spin, the bob swings between two heights
 z₁ and z₂ (the circles, from the exact solution, T-4.1) while its lowest point advances by
 Δφ per period of z (T-4.5). Integrated with the default method, RATTLE, for 20 s.
+
+Lab: s=rosette&plot=x,y
 """
 
 import numpy as np

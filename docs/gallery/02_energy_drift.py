@@ -4,6 +4,9 @@ Near the upright position the constraint |x| = l is unstable for the Cartesian e
 plain RK4 drifts off the sphere and its energy with it (a few seconds later it blows up); DOP853
 with projection onto TS² stays near its tolerance, its energy error growing slowly; RATTLE
 (symplectic, T-8.1) and its eighth-order composition keep the energy error bounded, without drift.
+
+Lab:
+model=ideal&l=1&m=1&g=9.81&method=rattle&dt=0.001&x=0.17364817766693028,0,0.984807753012208&v=0,0.08682408883346514,0&plot=t,energy
 """
 
 import warnings

@@ -3,6 +3,8 @@
 In (σ₁, σ₂, σ₃) = (z/l, ż/l, |v|²/l²) the orbit is the intersection of the surface C = 0 fixed by
 J₃ (T-3.3) with the plane of constant energy H = ½σ₃ + gσ₁; the reduced flow is σ̇ = ∇H × ∇C
 (T-3.4).
+
+Lab: s=rosette&method=rattle4&dt=0.001&plot=z,zdot
 """
 
 import numpy as np

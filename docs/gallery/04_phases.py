@@ -3,6 +3,8 @@
 The azimuthal advance per period of z splits into a dynamic part, 2 T_z ⟨K⟩ / J₃, and a geometric
 part, minus the area the reduced orbit encloses in the (z, p_z) plane over J₃ (T-5.1). Both come from
 the exact solution: no integration.
+
+Lab: s=rosette&plot=t,phi
 """
 
 import numpy as np

@@ -3,6 +3,8 @@
 Baroudy animated the spherical pendulum in Maple from Jacobi's elliptic functions with 60 precomputed
 positions; here every frame is the exact state at its time (T-4.2–T-4.4), so any frame rate costs the
 same. The 3-D panel and the top view, 6 s of motion.
+
+Lab: s=rosette
 """
 
 import numpy as np

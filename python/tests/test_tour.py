@@ -5,7 +5,9 @@ sign of the Nambu flow, T-4.2 against SciPy's elliptic functions, the phase spli
 Foucault's 31.8 h, an ensemble row against pl.simulate), so a failing claim fails this test.
 
 A notebook added to docs/tour/ is picked up automatically. Each runs in its own temporary directory
-(the movies they write go there).
+(the movies they write go there). This runs them in the development environment (``make test-tour``);
+``make test`` leaves ``test_notebook_runs`` out and runs them instead as a user would, in a fresh
+environment with the wheel's ``tour`` extra, each within 20 s (``tools/check_tour.py``).
 """
 
 from __future__ import annotations

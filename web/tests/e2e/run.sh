@@ -1,16 +1,22 @@
 #!/usr/bin/env bash
-# The lab's end-to-end test (`make test-e2e`, part of `make test`): starts `pendulab serve --no-browser` on
-# a free port in the background, waits until it answers, runs web/tests/e2e/smoke.mjs against it in
-# Debian's headless chromium (playwright-core, never a downloaded browser) and stops the server on every
-# exit path (success, failure, Ctrl-C). Screenshots go to web/test-results/ (gitignored).
+# The lab's end-to-end test (`make test-e2e`, part of `make test`), once per transport (issue 26 item 7):
+# 1. server: starts `pendulab serve --no-browser` on a free port in the background, waits until it
+#    answers, runs web/tests/e2e/smoke.mjs against it in Debian's headless chromium (playwright-core,
+#    never a downloaded browser) and stops the server on every exit path (success, failure, Ctrl-C);
+# 2. file: the same smoke.mjs against dist/pendulab-lab.html (`make lab-html`) opened from file:// with
+#    every network request refused; what needs Python is skipped there, each with its reason printed.
+# Screenshots go to web/test-results/ (gitignored; the file transport's end in -file.png).
 #
 # Environment: PENDULAB (default .venv/bin/pendulab), CHROMIUM (default: chromium on PATH),
-# E2E_SERVER_TIMEOUT [s] to wait for the server (default 90: a loaded 2-core machine starts it slowly).
+# E2E_SERVER_TIMEOUT [s] to wait for the server (default 90: a loaded 2-core machine starts it slowly),
+# E2E_TRANSPORTS (default "server file": which runs), LAB_HTML (default dist/pendulab-lab.html).
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 
 PENDULAB=${PENDULAB:-.venv/bin/pendulab}
 PY=${PY:-.venv/bin/python}
+TRANSPORTS=${E2E_TRANSPORTS:-server file}
+LAB_HTML=${LAB_HTML:-dist/pendulab-lab.html}
 CHROMIUM=${CHROMIUM:-$(command -v chromium || command -v chromium-browser || true)}
 if [ -z "$CHROMIUM" ] || [ ! -x "$CHROMIUM" ]; then
   echo "error: the end-to-end test needs Debian's chromium: 'apt-get install chromium' (.ci/run does it)," \
@@ -21,6 +27,32 @@ if [ ! -x "$PENDULAB" ]; then
   echo "error: $PENDULAB not found: run 'make build' first" >&2
   exit 1
 fi
+case " $TRANSPORTS " in
+  *" file "*)
+    if [ ! -f "$LAB_HTML" ]; then
+      echo "error: $LAB_HTML not found (the e2e suite's file transport opens it): run 'make lab-html' first" >&2
+      exit 1
+    fi
+    ;;
+esac
+status=0
+started=$SECONDS
+ABS_PY="$(cd "$(dirname "$PY")" && pwd)/$(basename "$PY")" # doclinks.mjs runs tools/lab_links.py with it
+
+run_file() {
+  local t0=$SECONDS
+  echo "== e2e: the one-file lab $LAB_HTML from file://, network refused, chromium $CHROMIUM"
+  (cd web && CHROMIUM="$CHROMIUM" PY="$ABS_PY" node tests/e2e/smoke.mjs "$(cd .. && realpath "$LAB_HTML")") || status=1
+  echo "== e2e: file transport took $((SECONDS - t0)) s"
+}
+
+case " $TRANSPORTS " in
+  *" server "*) ;;
+  *)
+    run_file
+    exit "$status"
+    ;;
+esac
 
 port=$("$PY" -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 log=$(mktemp)
@@ -60,10 +92,15 @@ until "$PY" -c "import urllib.request, sys; urllib.request.urlopen(sys.argv[1], 
 done
 echo "== e2e: pendulab serve at $base (pid $server), chromium $CHROMIUM"
 
-status=0
-(cd web && CHROMIUM="$CHROMIUM" node tests/e2e/smoke.mjs "$base") || status=$?
+(cd web && CHROMIUM="$CHROMIUM" PY="$ABS_PY" node tests/e2e/smoke.mjs "$base") || status=$?
 if [ "$status" -ne 0 ]; then
   echo "-- server log:" >&2
   cat "$log" >&2
 fi
+echo "== e2e: server transport took $((SECONDS - started)) s"
+stop_server
+trap - EXIT
+case " $TRANSPORTS " in
+  *" file "*) run_file ;;
+esac
 exit "$status"

@@ -1,15 +1,26 @@
-// End-to-end test of the running lab in Debian's headless chromium (playwright-core; no browser download).
-// Run by tests/e2e/run.sh (`make test-e2e`), which starts the server; by hand:
+// End-to-end test of the running lab in Debian's headless chromium (playwright-core; no browser download),
+// once per transport (issue 26 item 7): against `pendulab serve` (the physics on the server, over the
+// WebSocket) and against the one-file lab dist/pendulab-lab.html opened from file:// with every network
+// request refused (the physics in the page, WebAssembly); the same checks, so every panel and tool is
+// tested with both. Run by tests/e2e/run.sh (`make test-e2e`), which starts the server and runs both; by hand:
 //   pendulab serve --no-browser --port 8765 &  node tests/e2e/smoke.mjs http://127.0.0.1:8765
+//   node tests/e2e/smoke.mjs ../dist/pendulab-lab.html        (after `make lab-html`)
+// What needs Python is skipped in the file transport, each with its reason printed (`skip …`): the
+// server going away (there is none), fitting a data file and the scenario as a TOML file (the page says
+// they need `pendulab serve`: checked instead). Classroom mode (many devices, one server) is not part of
+// this suite.
 // Checks (more in models.mjs, classroom.mjs and fitdata.mjs): no console errors, frames arrive and are drawn, the data panel shows the
 // position error (the true one on the ideal pendulum), the canvas shows the pendulum (pixels differ from
 // the background), the frame rate (median of the page's frame times, printed; above 25 fps, see MIN_FPS) and
 // the software renderer recognised (no MSAA there), negative g visibly changes the motion (the bob goes
-// above the pivot), pause stops the frames, the shared URL reproduces the scenario. Writes test-results/lab.png and test-results/lab-negative-g.png. Waits are generous (a loaded
+// above the pivot), pause stops the frames, the shared URL reproduces the scenario, a sample of the
+// documentation site's "open in the lab" links (tools/lab_links.py) opens in its set-up. Writes
+// test-results/lab.png and test-results/lab-negative-g.png (…-file.png for the file transport). Waits are generous (a loaded
 // 2-core machine), but every check compares against a bound and can fail.
 import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve } from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { chromium } from 'playwright-core';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
@@ -17,8 +28,13 @@ import { checkFirstFrame } from './startup.mjs';
 import { checkWords } from './words.mjs';
 import { checkSimpleView } from './simple.mjs';
 import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch, checkAxe } from './classroom.mjs';
+import { checkDocLinks } from './doclinks.mjs';
 
-const base = process.argv[2] ?? 'http://127.0.0.1:8765';
+const target = process.argv[2] ?? 'http://127.0.0.1:8765';
+/** "server" (`pendulab serve` at an http URL) or "file" (the one-file lab from file://, no network). */
+const transport = /^https?:/.test(target) ? 'server' : 'file';
+const home = transport === 'server' ? target.replace(/\/$/, '') + '/' : target.startsWith('file:') ? target : pathToFileURL(resolve(target)).href;
+const shot = (name) => `test-results/${name}${transport === 'file' ? '-file' : ''}.png`;
 const ONLY = (process.env.E2E_ONLY ?? '').split(',').filter(Boolean);
 const WAIT = 60_000;
 const MIN_FPS = 25; // see the frame-rate check below // ms: the longest any condition is waited for
@@ -36,14 +52,34 @@ const context = await chromium.launchPersistentContext(userDataDir, {
     '--disable-background-networking',
     '--disable-component-update',
     '--disable-sync',
+    // the file transport: no name resolves, so nothing could reach a network even past the route below
+    ...(transport === 'file' ? ['--host-resolver-rules=MAP * ~NOTFOUND'] : []),
   ],
 });
+// the file transport: every request that is not the file itself (or a blob:/data: URL it makes) is
+// refused and counted; the count must stay 0
+const refused = [];
+if (transport === 'file') {
+  await context.route('**/*', (route) => {
+    const url = route.request().url();
+    if (/^(file|blob|data):/.test(url)) return route.continue();
+    refused.push(url);
+    return route.abort();
+  });
+}
+console.log(`== e2e transport: ${transport} (${home})`);
 const failures = [];
 let checks = 0;
 const check = (ok, what) => {
   checks++;
   console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
   if (!ok) failures.push(what);
+};
+const skipped = [];
+/** A part that cannot run in this transport, with the reason (printed, and counted in the summary). */
+const skip = (what, reason) => {
+  skipped.push(what);
+  console.log(`skip ${what} (${transport} transport): ${reason}`);
 };
 const errors = [];
 const watch = (page) => {
@@ -66,7 +102,7 @@ try {
   mkdirSync('test-results', { recursive: true });
   const page = context.pages()[0] ?? (await context.newPage());
   watch(page);
-  await page.goto(base + '/', { timeout: WAIT });
+  await page.goto(home, { timeout: WAIT });
   await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: WAIT });
 
   // E2E_ONLY=period,language (by hand, while working on a part): only the parts whose names contain one of
@@ -148,7 +184,7 @@ try {
     });
     check(lit.differ > 0.005, `canvas shows the scene (${(100 * lit.differ).toFixed(2)} % of pixels differ from background)`);
     check(lit.bob > 30, `canvas shows the bob (${lit.bob} orange pixels)`);
-    await page.screenshot({ path: 'test-results/lab.png' });
+    await page.screenshot({ path: shot('lab') });
 
     // negative g: the bob, which stayed below the pivot, swings up above it
     await simulated(page, 2);
@@ -158,7 +194,7 @@ try {
     await simulated(page, 2);
     const zUp = await maxZ(page);
     check(zDown < 0 && zUp > 0.5, `negative g: highest z ${zDown.toFixed(3)} m → ${zUp.toFixed(3)} m (above the pivot)`);
-    await page.screenshot({ path: 'test-results/lab-negative-g.png' });
+    await page.screenshot({ path: shot('lab-negative-g') });
 
     await page.evaluate(() => window.pendulab.send({ type: 'pause' }));
     await page.waitForFunction(() => window.pendulab.store.status?.paused === true, null, { timeout: WAIT });
@@ -189,11 +225,15 @@ try {
     check(JSON.stringify(got) === JSON.stringify(want), `the shared URL reproduces the scenario (${url.split('?')[1]})`);
     await page2.close();
 
-    await checkModels(page, { check, WAIT, simulated });
+    await checkModels(page, { check, skip, transport, WAIT, simulated });
     await checkOffSphere(page, { check, WAIT, simulated });
     await checkViews(page, { check, WAIT, simulated });
   }
-  const ctx = { check, WAIT, simulated, errors, MIN_FPS };
+  if (ONLY.length === 0) {
+    const engine = await page.evaluate(() => window.pendulab.engine());
+    check(engine === (transport === 'file' ? 'wasm' : 'server'), `window.pendulab.engine() is "${engine}" in the ${transport} transport`);
+  }
+  const ctx = { check, skip, transport, WAIT, simulated, errors, MIN_FPS, shot };
   for (const [name, part] of [
     ['first frame', checkFirstFrame],
     ['layout', checkLayout],
@@ -210,6 +250,7 @@ try {
     ['language', checkLanguage],
     ['words in every language', checkWords],
     ['axe accessibility', checkAxe],
+    ['doc links', checkDocLinks],
   ]) {
     if (ONLY.length > 0 && !ONLY.some((w) => name.includes(w))) continue;
     const t0 = Date.now();
@@ -217,6 +258,7 @@ try {
     console.log(`   (${name}: ${((Date.now() - t0) / 1000).toFixed(1)} s)`);
   }
 
+  if (transport === 'file') check(refused.length === 0, `no network request (${refused.length} refused${refused.length ? ': ' + refused.slice(0, 3).join(', ') : ''})`);
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.join(' | ') : ''}`);
 } catch (e) {
   failures.push(String(e));
@@ -225,5 +267,5 @@ try {
   await context.close();
   rmSync(userDataDir, { recursive: true, force: true });
 }
-console.log(`e2e: ${checks - failures.length} passed, ${failures.length} failed`);
+console.log(`e2e (${transport}): ${checks - failures.length} passed, ${failures.length} failed, ${skipped.length} parts skipped${skipped.length ? ' (' + skipped.join(', ') + ')' : ''}`);
 process.exit(failures.length ? 1 : 0);
