@@ -10,10 +10,11 @@ import os from 'node:os';
 
 const FIRST_FRAME_S = 10;
 
-export async function checkFirstFrame(page, { check, WAIT }) {
+export async function checkFirstFrame(page, { check, transport, WAIT }) {
   const fresh = await page.context().newPage();
   const load = os.loadavg()[0];
-  await fresh.goto(new URL(page.url()).origin + '/', { timeout: WAIT });
+  // the page without a query: the server's root, or the one-file lab's file:// URL
+  await fresh.goto(transport === 'file' ? page.url().split('?')[0] : new URL(page.url()).origin + '/', { timeout: WAIT });
   await fresh.waitForFunction(() => performance.getEntriesByName('pendulab:first frame drawn').length > 0, null, { timeout: WAIT });
   const m = await fresh.evaluate(() => {
     const out = {};
@@ -27,5 +28,6 @@ export async function checkFirstFrame(page, { check, WAIT }) {
   console.log(`first frame (load ${load.toFixed(1)} on ${os.cpus().length} cores): ${order.map(([k, v]) => `${k} ${(v / 1000).toFixed(2)}`).join(', ')} s`);
   const first = m['first frame drawn'] / 1000;
   check(first < FIRST_FRAME_S, `the first frame is drawn ${first.toFixed(2)} s after the navigation (load ${load.toFixed(1)}; bound ${FIRST_FRAME_S} s)`);
+  // (the one-file lab marks its in-page engine's connection the same way)
   check(m['socket opening'] < m['scene'] && m['socket opening'] < m['panels'], `the socket is opened (${(m['socket opening'] / 1000).toFixed(2)} s) before the scene and panels are built (${(m['scene'] / 1000).toFixed(2)} s, ${(m['panels'] / 1000).toFixed(2)} s)`);
 }
