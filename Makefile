@@ -15,7 +15,7 @@ STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
-	bench-peers-portable check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm test-tour-wheel
+	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm test-tour-wheel
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -227,6 +227,11 @@ bench-peers-portable: build
 check-aarch64:
 	CARGO_TARGET_DIR=$(CURDIR)/target/check-aarch64 cargo clippy -p pendulab-core \
 		--target aarch64-unknown-linux-gnu --all-targets -- -D warnings
+
+# The machine's roof (FMA per vector width, triad bandwidth) and the hot kernels on it (issue 29):
+# bench/roofline/results/roofline.json, docs/img/roofline.png, docs/performance.md "How fast, and why".
+bench-roofline: build
+	$(PY) bench/roofline/run.py $(ROOFLINE_ARGS)
 
 bench-compare: build
 	$(PY) bench/compare.py
