@@ -137,6 +137,8 @@ def test_data_the_model_does_not_describe_are_warned_about(case: str) -> None:
         res = pl.fit(t, pendulum=damped(0.8), fit=fit, **data)
     said = [str(w.message) for w in caught]
     assert any("correlated" in m for m in said) and res.findings and "WARNING" in res.report()
+    # a misfit is never excused as correlated noise: its residual stays correlated once prewhitened
+    assert not any("not a misfit" in m for m in said), said
     if case == "accelerometer bias":  # the warning names what to try
         assert any("force_bias" in m for m in said)
 
@@ -244,7 +246,8 @@ def test_horizontal_positions_of_a_crane_hook() -> None:
 
 def test_correlated_noise_widens_the_error_bars() -> None:
     """AR(1) noise (ρ = 0.9): the widening factor is about √((1+ρ)/(1−ρ)) ≈ 4.4 for a slowly varying
-    parameter; white noise leaves the classical bars."""
+    parameter, and the finding names correlated noise, not a misfit (the residual prewhitened by its
+    AR(1) fit is white); white noise leaves the classical bars."""
     t = np.arange(0.0, 20.0, 0.01)
     x, _, _ = cartesian(mid_swing(0.8)[0] * 0.8 / 0.6, np.zeros(3), t)
     rng = np.random.default_rng(11)
@@ -253,9 +256,10 @@ def test_correlated_noise_widens_the_error_bars() -> None:
     ar[0] = e[0]
     for i in range(1, len(t)):
         ar[i] = 0.9 * ar[i - 1] + math.sqrt(1 - 0.81) * e[i]
-    with pytest.warns(UserWarning, match="correlated"):
+    with pytest.warns(UserWarning, match="correlated noise .* not a misfit"):
         res = pl.fit(t, positions=x + 1e-3 * ar, fit=["length", "g"])
     assert res.inflation["g"] > 2.0
+    assert not any("misses the data systematically" in f for f in res.findings)
     white = pl.fit(t, positions=x + 1e-3 * e, fit=["length", "g"])
     assert white.inflation["g"] < 1.3 and white.findings == []
 

@@ -27,7 +27,9 @@ import numpy as np
 from .._core import InvalidInputError
 from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
+from ..variants.compound import CompoundPendulum
 from ..variants.spring import SwingingSpring
+from .body import BodyFit, pendulum_of
 from .data import KINDS, Observations, observations, residual
 from .goodness import EXACT, Goodness, check_kind, findings
 from .identify import Correlation, analyse, jacobian
@@ -69,6 +71,7 @@ def fit(
     progress: bool | None = None,
     time_limit: float | None = None,
     planar: bool | None = None,
+    body: CompoundPendulum | None = None,
 ) -> FitResult:
     """Fits a pendulum to data: times ``t`` [s] with one or more of ``positions`` [m] (N, 3) or (N, 2)
     = (x, z) seen along y, ``horizontal`` [m] (N, 2) = (x, y) seen from above, ``angles`` = (θ, φ)
@@ -88,12 +91,17 @@ def fit(
     the noise floor read off the data and the error bars take the residual's scatter). ``loss``:
     SciPy's "linear", "soft_l1", "huber", "cauchy" or "arctan" (robust against outliers; scale 1 σ or
     the noise floor). ``planar``: a hinge (φ₀ = φ̇₀ = 0 held): default True for data of a planar
-    angle alone, False otherwise. At most ``max_evaluations`` runs of the model per start. Returns a
+    angle alone, False otherwise. ``body``: a :class:`pendulab.CompoundPendulum` of known geometry
+    swinging with ``pendulum``'s model, g and laws: its l_eq and M replace the pendulum's length and
+    mass (body.py), and ``res.body`` gives the pivot torques and, with ``length`` fitted, the part
+    position it implies. At most ``max_evaluations`` runs of the model per start. Returns a
     :class:`FitResult` whose ``goodness`` says whether the model explains the data (each finding is
     also warned); Ctrl-C returns the best values so far (``converged`` False), and so does reaching
     ``time_limit`` [s] (the error analysis after it adds a few model runs per unknown). Raises
     :class:`pendulab.InvalidInputError` naming bad data or settings, and for data that show no motion
     above their noise."""
+    if body is not None:
+        pendulum = pendulum_of(body, pendulum)
     pendulum = Pendulum() if pendulum is None else pendulum
     model = check_settings(pendulum, time_limit, loss, max_evaluations)
     data = {
@@ -164,7 +172,7 @@ def fit(
             "the model could not be evaluated at any start: check the data and the pendulum"
         )
     u = _unsigned(np.array(u, dtype=np.float64), free)
-    return _conclude(
+    res = _conclude(
         search,
         np.asarray(u, dtype=np.float64),
         floors,
@@ -176,6 +184,9 @@ def fit(
         planar=planar,
         n_starts=n_starts,
     )
+    if body is not None:
+        res.body = BodyFit.of(body, res.params, res.stderr)
+    return res
 
 
 def _unsigned(u: FloatArray, free: Sequence[str]) -> FloatArray:
@@ -379,6 +390,7 @@ def _conclude(
     return FitResult.build(
         problem=problem,
         values=final,
+        predictions=pred,
         sigma={
             k: (obs.sigma[k] if obs.sigma[k] is not None else sig[k] * math.sqrt(variance))
             for k in obs.values

@@ -82,6 +82,8 @@ class FitResult:
     bounds: dict[str, tuple[float, float]] = field(default_factory=dict)
     planar: bool = False
     misfit: float = math.nan
+    #: A compound pendulum's geometry, pivot torques and implied part position (body.py), or None.
+    body: Any = None
     _problem: Any = field(default=None, repr=False)
     _search_sigma: dict[str, float] = field(default_factory=dict, repr=False)
     _variance: float = field(default=1.0, repr=False)
@@ -110,6 +112,7 @@ class FitResult:
         misfit: float = math.nan,
         search_sigma: dict[str, float] | None = None,
         variance: float = 1.0,
+        predictions: dict[str, FloatArray] | None = None,
     ) -> FitResult:
         names = list(problem.free)
         cov = ident.covariance
@@ -118,7 +121,7 @@ class FitResult:
             corr = cov / np.outer(err, err)
         pendulum = problem.pendulum(values)
         state0 = problem.state0(pendulum, values)
-        pred = problem.predictions(values)
+        pred = problem.predictions(values) if predictions is None else predictions  # one model run
         res = {k: residual(k, problem.obs.values[k], pred[k]) for k in problem.obs.values}
         own = [n for n in values if n not in names]
         return cls(
@@ -288,6 +291,8 @@ class FitResult:
         lines.append(
             f"  AIC {self.aic:.6g}, BIC {self.bic:.6g} (pl.compare_fits ranks fits of the same data)"
         )
+        if self.body is not None:
+            lines += self.body.report_lines()
         if self.planar:
             lines.append(
                 "  planar pendulum (a hinge): phi0 = phi_dot0 = 0 held; planar=False fits the spherical one"
