@@ -20,6 +20,7 @@ import { t } from './i18n';
 import { EnergyBars } from './panels/energy';
 import { ChosenPlot } from './panels/chosen';
 import { TwinPanel } from './panels/twin';
+import { ExtraPendulums } from './panels/extras';
 import { Glossary } from './panels/glossary';
 import { accessibleSliders } from './keyboard';
 import { installEngine } from './engine';
@@ -65,6 +66,8 @@ function handles(lab: LabCore, p: DrawnPanels, quality: RenderQuality, costs: Fr
     quality: () => quality,
     frameCosts: () => costs.take(),
     twinOnScreen: () => scene.twinOnScreen(),
+    extras: () => session.twin?.extras?.running() ?? [],
+    extrasOnScreen: () => scene.extrasOnScreen(),
     instrumentsOnScreen: () => scene.instrumentsOnScreen(),
     tones: () => p.tools.tones,
     sphereOnScreen: () => scene.sphereOnScreen(),
@@ -110,6 +113,7 @@ async function main(): Promise<void> {
   const analyses = new Analyses(store, reduced, explain);
   const twin = new TwinPanel(byId('tools'), store, schema.methods, socketUrl(window.location), { send: session.send, explain });
   session.twin = twin;
+  twin.extras = new ExtraPendulums(byId('tools'), socketUrl(window.location), explain);
   link.attach(chosen, twin);
   new Glossary(byId('tools'));
   accessibleSliders(controls.gui);

@@ -128,3 +128,17 @@ export function separation(first: readonly Frame[], second: readonly Frame[]): {
   }
   return { t, d };
 }
+
+/** The pivots of a row of pendulums of lengths `lengths` [m] (the first at the origin): each next one
+ *  beside the one before, as `sideBySide` places the second, so no two spheres of reach overlap. Returns
+ *  the offsets [m] of pendulums 2 … n from the first. Drawing only. */
+export function rowOffsets(lengths: readonly number[]): Vec3[] {
+  const out: Vec3[] = [];
+  let at: Vec3 = [0, 0, 0];
+  for (let i = 1; i < lengths.length; i++) {
+    const step = sideBySide(lengths[i - 1] as number, lengths[i] as number);
+    at = [at[0] + step[0], at[1] + step[1], at[2] + step[2]];
+    out.push(at);
+  }
+  return out;
+}

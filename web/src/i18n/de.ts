@@ -400,6 +400,11 @@ export const DE: Words = {
   'key.shift': 'Umschalt',
   'toolbar.simpleShort': 'Einfach',
   'toolbar.simple': 'einfache Ansicht: nur die Werkzeuge für den Unterricht (Länge, Masse, Schwerkraft, Reibung, Stoppuhr, Periode, Lineal, Energie); noch einmal drücken für alles',
+  'extras.add': '+ noch ein Pendel (eigene Länge, Masse, Start)',
+  'extras.pendulum': 'Pendel {n}',
+  'extras.remove': 'Pendel {n} entfernen',
+  'extras.title': 'Bis zu vier Pendel',
+  'extras.hint': 'Mit dem zweiten Pendel auf „eigene Länge, Masse und Start“: Pendel 3 und 4 hinzufügen, dann startet „beide starten“ alle, jedes mit seiner eigenen Periodenmessung.',
 };
 
 /** The registry's parameters in German: [label, help] by key (the units stay SI). */

@@ -398,6 +398,11 @@ export const EN = {
   'key.shift': 'Shift',
   'toolbar.simpleShort': 'Simple',
   'toolbar.simple': 'simple view: only the classroom tools (length, mass, gravity, friction, stopwatch, period, ruler, energy); press again for everything',
+  'extras.add': '+ another pendulum (own length, mass, start)',
+  'extras.pendulum': 'pendulum {n}',
+  'extras.remove': 'remove pendulum {n}',
+  'extras.title': 'Up to four pendulums',
+  'extras.hint': 'With the second pendulum on “its own length, mass and start”: add pendulums 3 and 4, then “start both” starts all, each timed by its own period timer.',
 };
 
 export type Words = { readonly [K in keyof typeof EN]: string };

@@ -400,6 +400,11 @@ export const FR: Words = {
   'key.shift': 'Maj',
   'toolbar.simpleShort': 'Simple',
   'toolbar.simple': 'vue simple : seulement les outils de classe (longueur, masse, gravité, frottement, chronomètre, période, règle, énergie) ; appuyer à nouveau pour tout voir',
+  'extras.add': '+ un autre pendule (longueur, masse, départ propres)',
+  'extras.pendulum': 'pendule {n}',
+  'extras.remove': 'retirer le pendule {n}',
+  'extras.title': 'Jusqu’à quatre pendules',
+  'extras.hint': 'Avec le deuxième pendule sur « longueur, masse et départ propres » : ajouter les pendules 3 et 4, puis « démarrer les deux » les démarre tous, chacun chronométré par sa propre mesure de période.',
 };
 
 /** The registry's parameters in French: [label, help] by key (the units stay SI). */

@@ -7,7 +7,9 @@ import { LabStore } from '../state';
 import type { TrailSlice } from '../scene/scene';
 import { CurvePlot, dataRange } from './curves';
 import { Visibility } from './visible';
-import { separation, sideBySide, twinCommands } from '../twin';
+import { rowOffsets, separation, sideBySide, twinCommands } from '../twin';
+import type { ExtraPendulums } from './extras';
+import type { Frame, Vec3 } from '../protocol';
 import type { TwinMode, TwinOptions } from '../twin';
 import { DEG } from '../measure';
 import { methodWords, t } from '../i18n';
@@ -16,6 +18,15 @@ export interface TwinActions {
   /** Sends to the first pendulum's session. */
   send(cmd: Command): void;
   explain(text: string, info?: boolean): void;
+}
+
+/** The pendulum of `store` at the first one's drawn time `t` [s] (clamped to its frames) with its trail. */
+function drawnAt(store: LabStore, t: number | null, trailSeconds: number): { frame: Frame | null; trail: TrailSlice } | null {
+  if (t === null || store.frames.length === 0) return null;
+  const fs = store.frames;
+  store.playT = Math.min(Math.max(t, (fs[0] as Frame).t), (fs[fs.length - 1] as Frame).t);
+  const { start, end } = store.trailRange(trailSeconds);
+  return { frame: store.displayed(), trail: { frames: store.trail, start, end } };
 }
 
 export class TwinPanel {
@@ -28,6 +39,8 @@ export class TwinPanel {
   private pending: Command[] = [];
   private readonly plot: CurvePlot;
   private readonly visibility = new Visibility();
+  /** Pendulums 3 and 4 beside the second in mode `own` (panels/extras.ts; null: none). */
+  extras: ExtraPendulums | null = null;
 
   constructor(
     container: HTMLElement,
@@ -178,6 +191,24 @@ export class TwinPanel {
     return { offset: sideBySide(a.params.length, b.params.length), length: b.params.length };
   }
 
+  /** Where the scene draws pendulums 3 and 4 (mode `own`): pivots in a row after the second (twin.ts
+   *  `rowOffsets`), each with its length [m]. */
+  extraLayouts(): { offset: Vec3; length: number }[] {
+    const a = this.first.status;
+    const b = this.store.status;
+    const more = this.extras?.running() ?? [];
+    if (this.layout() === null || a === null || b === null || more.length === 0) return [];
+    const lengths = more.map((s) => (s.status as NonNullable<LabStore['status']>).params.length);
+    const offsets = rowOffsets([a.params.length, b.params.length, ...lengths]);
+    return lengths.map((length, i) => ({ offset: offsets[i + 1] as Vec3, length }));
+  }
+
+  /** Pendulums 3 and 4 at the first one's drawn time `t` [s] with their trails. */
+  drawnExtras(t: number | null, trailSeconds: number): { frame: Frame | null; trail: TrailSlice }[] {
+    if (this.conn === null || this.options.mode !== 'own') return [];
+    return (this.extras?.running() ?? []).map((s) => drawnAt(s, t, trailSeconds) ?? { frame: null, trail: { frames: [], start: 0, end: 0 } });
+  }
+
   /** Starts the second pendulum as `o` says (a shared link), once the first has its status. */
   restore(o: TwinOptions): void {
     Object.assign(this.options, o);
@@ -190,6 +221,8 @@ export class TwinPanel {
     const s = this.first.status;
     if (s === null) return this.actions.explain(t('msg.notConnected'));
     this.pending = twinCommands(s, this.options);
+    if (this.options.mode === 'own') this.extras?.start(s);
+    else this.extras?.stop();
     if (this.conn === null) {
       this.conn = new Connection(this.socket, {
         onOpen: () => this.flush(),
@@ -215,6 +248,7 @@ export class TwinPanel {
   }
 
   stop(): void {
+    this.extras?.stop();
     this.conn?.close();
     this.conn = null;
     this.store.clear();
@@ -226,16 +260,14 @@ export class TwinPanel {
   /** Run, pause, reset and step go to both pendulums. */
   mirror(cmd: Command): void {
     if (this.conn === null) return;
+    this.extras?.mirror(cmd);
     if (cmd.type === 'pause' || cmd.type === 'resume' || cmd.type === 'reset' || cmd.type === 'step') this.conn.send(cmd);
   }
 
   /** The second pendulum at the first one's drawn time `t` [s] with its trail (null: not shown). */
   drawn(t: number | null, trailSeconds: number): { frame: ReturnType<LabStore['displayed']>; trail: TrailSlice } | null {
-    if (this.conn === null || t === null || this.store.frames.length === 0) return null;
-    const fs = this.store.frames;
-    this.store.playT = Math.min(Math.max(t, (fs[0] as { t: number }).t), (fs[fs.length - 1] as { t: number }).t);
-    const { start, end } = this.store.trailRange(trailSeconds);
-    return { frame: this.store.displayed(), trail: { frames: this.store.trail, start, end } };
+    if (this.conn === null) return null;
+    return drawnAt(this.store, t, trailSeconds);
   }
 
   /** Redraws the periods table and the separation plot (10 times a second). */
@@ -264,7 +296,9 @@ export class TwinPanel {
       ['', t('twin.colLength'), t('twin.colMass'), t('twin.colTheta'), t('twin.colPeriod')],
       row(t('twin.first'), this.first),
       row(t('twin.second'), this.store),
+      ...(this.extras?.running() ?? []).map((st, i) => row(t('extras.pendulum', { n: i + 3 }), st)),
     ];
+    while (this.periods.rows.length > rows.length) this.periods.deleteRow(-1);
     rows.forEach((r, i) => {
       const tr = this.periods.rows[i] ?? this.periods.insertRow();
       while (tr.cells.length < r.length) tr.insertCell();

@@ -21,7 +21,7 @@ import { layeredOpacity } from './quality';
 import { Instruments } from './instruments';
 import { MaskAnaglyph } from './anaglyph';
 import { framingDistance, reachLines, sphereBox } from './framing';
-import { TwinDrawing } from './twin';
+import { EXTRA_COLORS, TwinDrawing } from './twin';
 import { MeasuredDrawing } from './measured';
 
 export { framingDistance } from './framing';
@@ -155,6 +155,10 @@ export class PendulumScene {
   private readonly boom: THREE.Line;
   /** The second pendulum (two-pendulum mode): bob, rod and trail (twin.ts). */
   private readonly twin = new TwinDrawing();
+  /** Pendulums 3 and 4 (panels/extras.ts), each from its own pivot in a row after the second. */
+  private readonly extras = EXTRA_COLORS.map((c) => new TwinDrawing(c));
+  private extraLayouts: readonly { offset: readonly [number, number, number]; length: number }[] = [];
+  private extrasKey = '';
   /** A fitted data file's measured path, dotted (measured.ts). */
   private readonly measured = new MeasuredDrawing();
   /** The camera follows the pivot (the slewing crane: the pendulum stays framed as the boom turns). */
@@ -275,7 +279,7 @@ export class PendulumScene {
       this.tether.group,
       this.handle,
       this.boom,
-      this.twin.group,
+      this.twin.group, ...this.extras.map((e) => e.group),
       this.measured.line,
       this.instruments.ruler,
       this.instruments.protractor,
@@ -298,7 +302,8 @@ export class PendulumScene {
     this.reachLines.scale.setScalar(l);
     this.pivot.scale.setScalar(l);
     this.bob.scale.setScalar(0.05 * l);
-    this.twin.setLength(this.twinLayout?.length ?? l);
+    this.twin.setLength(this.twinLayout?.length ?? l, Math.max(this.twinLayout?.length ?? 0, l));
+    this.extras.forEach((e, i) => e.setLength(this.extraLayouts[i]?.length ?? l, Math.max(this.extraLayouts[i]?.length ?? 0, l)));
     this.handle.scale.setScalar(HANDLE_RADIUS * l);
     this.axes.scale.setScalar(l);
     if (changed) this.resetCamera();
@@ -317,10 +322,12 @@ export class PendulumScene {
    *  or, with a fixed pivot off the origin, that too) fills 90 % of the canvas's narrower side; with
    *  `follow` (the slewing crane) the camera looks at the pivot and moves with it. */
   resetCamera(): void {
-    const tw = this.twinLayout;
-    // with a second pendulum beside the first, a sphere around both spheres of reach, centred between them
+    // with pendulums beside the first (in a row), a sphere around every sphere of reach, centred between
+    // the first pivot and the last
+    const row = this.twinLayout === null ? [] : [this.twinLayout, ...this.extraLayouts];
+    const tw = row[row.length - 1] ?? null;
     const half = tw === null ? 0 : 0.5 * Math.hypot(...tw.offset);
-    const l = tw === null ? this.extent : half + Math.max(this.extent, tw.length);
+    const l = tw === null ? this.extent : half + Math.max(this.extent, ...row.map((p) => p.length));
     const r = 1.1 * l; // the bob's radius and the ruler's labels
     const aspect = this.stereo === 'side by side' ? this.camera.aspect / 2 : this.camera.aspect;
     const d = framingDistance(r, this.camera.fov, aspect);
@@ -539,9 +546,35 @@ export class PendulumScene {
     if (key === this.twinLayoutKey) return;
     this.twinLayoutKey = key;
     this.twinLayout = layout;
-    this.twin.setLength(layout?.length ?? this.length);
+    this.twin.setLength(layout?.length ?? this.length, Math.max(layout?.length ?? 0, this.length));
     this.twin.setOffset(layout?.offset ?? null);
     this.resetCamera();
+  }
+
+  /** Pendulums 3 and 4: their rod lengths [m] and pivots at `offset` [m] from the first (none: hidden). */
+  setExtras(layouts: readonly { offset: readonly [number, number, number]; length: number }[]): void {
+    const key = layouts.map((p) => `${p.offset.join(',')}|${p.length}`).join(';');
+    if (key === this.extrasKey) return;
+    this.extrasKey = key;
+    this.extraLayouts = layouts;
+    this.extras.forEach((e, i) => {
+      const p = layouts[i];
+      if (p === undefined) return e.update(null, { frames: [], start: 0, end: 0 });
+      e.setLength(p.length, Math.max(p.length, this.length));
+      e.setOffset(p.offset);
+    });
+    this.resetCamera();
+  }
+
+  /** Draws pendulums 3 and 4 at their states (null: hidden) with their trails. */
+  updateExtras(drawn: readonly { frame: Frame | null; trail: TrailSlice }[]): void {
+    this.extras.forEach((e, i) => e.update(drawn[i]?.frame ?? null, drawn[i]?.trail ?? { frames: [], start: 0, end: 0 }));
+    this.invalid = true;
+  }
+
+  /** Pendulums 3 and 4's bobs on the page [CSS px] (for tests), those drawn. */
+  extrasOnScreen(): { x: number; y: number }[] {
+    return this.extras.filter((e) => e.group.visible).flatMap((e) => this.onScreen(e.bob) ?? []);
   }
 
   /** Draws the second pendulum at state `f` (null: hidden) with its trail frames (two-pendulum mode). */

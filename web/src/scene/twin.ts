@@ -7,6 +7,8 @@ import { TRAIL_MAX } from '../state';
 
 /** The colour of the second pendulum. */
 export const TWIN_COLOR = 0xc8f560;
+/** The colours of pendulums 3 and 4 (panels/extras.ts). */
+export const EXTRA_COLORS = [0xff7ad9, 0x6fd3ff] as const;
 
 const Y = new THREE.Vector3(0, 1, 0);
 
@@ -32,27 +34,28 @@ export class TwinDrawing {
   /** Where the second pivot is drawn relative to the first [m] (mode `own`: side by side; else 0). */
   readonly offset = new THREE.Vector3();
 
-  constructor() {
-    this.bob = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), new THREE.MeshStandardMaterial({ color: TWIN_COLOR, roughness: 0.4 }));
+  constructor(color: number = TWIN_COLOR) {
+    this.bob = new THREE.Mesh(new THREE.SphereGeometry(1, 24, 16), new THREE.MeshStandardMaterial({ color, roughness: 0.4 }));
     this.rod = new THREE.Mesh(
       new THREE.CylinderGeometry(1, 1, 1, 8),
-      new THREE.MeshStandardMaterial({ color: TWIN_COLOR, metalness: 0.3, roughness: 0.5 }),
+      new THREE.MeshStandardMaterial({ color, metalness: 0.3, roughness: 0.5 }),
     );
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.BufferAttribute(this.positions, 3));
     g.setDrawRange(0, 0);
-    this.trail = new THREE.Line(g, new THREE.LineBasicMaterial({ color: TWIN_COLOR, transparent: true, opacity: 0.6 }));
+    this.trail = new THREE.Line(g, new THREE.LineBasicMaterial({ color, transparent: true, opacity: 0.6 }));
     this.trail.frustumCulled = false;
-    this.pivotMark = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8), new THREE.MeshStandardMaterial({ color: TWIN_COLOR }));
+    this.pivotMark = new THREE.Mesh(new THREE.SphereGeometry(1, 12, 8), new THREE.MeshStandardMaterial({ color }));
     this.pivotMark.visible = false;
     this.group.add(this.bob, this.rod, this.trail, this.pivotMark);
     this.group.visible = false;
   }
 
-  /** Rescales to rod length l [m]. */
-  setLength(l: number): void {
-    this.length = l;
-    this.bob.scale.setScalar(0.045 * l);
+  /** Rescales to rod length l [m]; the bob, rod and pivot drawn at the size of a pendulum of length
+   *  `size` [m] (a row of pendulums: the first's, so that a short one stays as visible as the others). */
+  setLength(l: number, size = l): void {
+    this.length = size;
+    this.bob.scale.setScalar(0.045 * size);
   }
 
   /** Hangs the second pendulum from its own pivot at `offset` [m] from the first (null: the same pivot). */

@@ -19,6 +19,9 @@ export interface LabHandles {
   /** The second pendulum's store (two-pendulum mode) and where its bob is drawn on the page. */
   twin: LabStore;
   twinOnScreen: () => { x: number; y: number } | null;
+  /** Pendulums 3 and 4 (panels/extras.ts): their stores and where their bobs are drawn on the page. */
+  extras: () => LabStore[];
+  extrasOnScreen: () => { x: number; y: number }[];
   /** Where the ruler's and the protractor's centres are drawn on the page (null: not shown). */
   instrumentsOnScreen: () => { ruler: { x: number; y: number } | null; protractor: { x: number; y: number } | null };
   /** Tones the sonification played (a tone per lowest point while the sound is on). */

@@ -50,11 +50,14 @@ function drawScene(lab: LabCore, gate: ChangeGate, costs: FrameCosts): boolean {
   const twin = session.twin;
   const second = twin?.drawn(store.playT, view.trailSeconds) ?? null;
   scene.setTwinLayout(twin?.layout() ?? null);
-  const inputs = [f, store.trail, start, end, mass, g, ...gdir, ...Object.values(view), second?.frame ?? null, second?.trail.end ?? 0];
+  scene.setExtras(twin?.extraLayouts() ?? []);
+  const more = twin?.drawnExtras(store.playT, view.trailSeconds) ?? [];
+  const inputs = [f, store.trail, start, end, mass, g, ...gdir, ...Object.values(view), second?.frame ?? null, second?.trail.end ?? 0, ...more.map((m) => m.frame)];
   const changed = gate.changed(inputs);
   if (changed) {
     scene.update(f, { frames: store.trail, start, end }, view, mass, g, gdir);
     scene.updateTwin(second?.frame ?? null, second?.trail ?? { frames: [], start: 0, end: 0 });
+    scene.updateExtras(more);
   }
   const t1 = performance.now();
   costs.add('scene update', t1 - t0);

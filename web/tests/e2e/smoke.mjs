@@ -27,6 +27,7 @@ import { checkFitData } from './fitdata.mjs';
 import { checkFirstFrame } from './startup.mjs';
 import { checkWords } from './words.mjs';
 import { checkSimpleView } from './simple.mjs';
+import { checkFourPendulums } from './four.mjs';
 import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch, checkAxe } from './classroom.mjs';
 import { checkDocLinks } from './doclinks.mjs';
 
@@ -245,6 +246,7 @@ try {
     ['share link', checkShare],
     ['keyboard', checkKeyboard],
     ['energy and two pendulums', checkEnergyAndTwin],
+    ['four pendulums', checkFourPendulums],
     ['recording and stereo', checkRecordingAndStereo],
     ['measured data', checkFitData],
     ['language', checkLanguage],

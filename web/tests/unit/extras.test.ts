@@ -1,0 +1,25 @@
+// Pendulums in a row (twin.ts rowOffsets; panels/extras.ts): the second pivot where sideBySide puts it,
+// each next one beside the one before with the same gap rule, all on one line, no spheres overlapping.
+import { describe, expect, it } from 'vitest';
+import { rowOffsets, sideBySide } from '../../src/twin';
+
+describe('a row of pendulums', () => {
+  it('places pivots 2 … n beside each other along one line, 1.1 (l_i + l_{i+1}) apart [m]', () => {
+    const lengths = [1, 0.25, 1, 0.5];
+    const off = rowOffsets(lengths);
+    expect(off).toHaveLength(3);
+    expect(off[0]).toEqual(sideBySide(1, 0.25));
+    const pivots = [[0, 0, 0], ...off];
+    for (let i = 1; i < pivots.length; i++) {
+      const [a, b] = [pivots[i - 1] as number[], pivots[i] as number[]];
+      const gap = Math.hypot(b[0]! - a[0]!, b[1]! - a[1]!, b[2]! - a[2]!);
+      expect(gap).toBeCloseTo(1.1 * (lengths[i - 1]! + lengths[i]!), 12);
+      expect(gap).toBeGreaterThan(lengths[i - 1]! + lengths[i]!); // spheres of reach apart
+      // collinear: every pivot on the line through the first two
+      const d = off[0] as number[];
+      expect(b[0]! * d[1]! - b[1]! * d[0]!).toBeCloseTo(0, 12);
+      expect(b[2]).toBe(0);
+    }
+    expect(rowOffsets([2])).toEqual([]);
+  });
+});
