@@ -16,18 +16,21 @@
 //! | baseline | what the build targets (SSE2 on x86-64) | everything else, and every non-x86 CPU |
 //!
 //! **The numbers do not depend on the choice.** Rust never contracts a·b + c into a fused
-//! multiply-add by itself, and the kernels that want one write it explicitly (`f64::mul_add`, see
-//! `integrate::rattle_kernel::fmadd`), which is the correctly rounded fused operation on every CPU:
-//! one instruction where the level has FMA (x86-64-v3 and up, every aarch64), elsewhere a call to the
-//! `fma` of Rust's `compiler_builtins` (the FMA instruction behind a call where the CPU has it, an
-//! exact software fma, about 13 ns, where it has not): exact, but much slower, so the baseline level
-//! is a correct fallback, not a fast one (docs/performance.md, "The price of the fallback").
-//! Wider vectors only change how many lanes one instruction handles, never an operation's rounding.
-//! `f64::round` (a C library call at the SSE2 baseline) is written as [`round`], the same function in
-//! a few additions and comparisons. The C library's `sin`, `atan2`, … are called at every level
-//! alike. So a trajectory or an exact state gets the same bits at every level, the ensemble and the
-//! single-trajectory path agree bit for bit whichever level each ran at, and `tests/isa.rs` checks
-//! all of them against [`set_baseline_only`].
+//! multiply-add by itself, and the hot kernels contain none: the RATTLE kernel's multiply-adds
+//! (`integrate::rattle_kernel::fmadd`, shared with the ensemble) are plain a·b + c with two roundings
+//! (decided with measurements in docs/performance.md, "No CPU left behind": a fused operation is one
+//! instruction only where the CPU has FMA, and an exact software routine, about 13 ns a call,
+//! on older x86-64 CPUs and in WebAssembly, which made those 3–20× slower). + − × ÷ and √ are
+//! correctly rounded on every CPU, so every level computes the same bits; wider vectors only change
+//! how many lanes one instruction handles, never an operation's rounding. `f64::round` (a C library
+//! call at the SSE2 baseline) is written as [`round`], the same function in a few additions and
+//! comparisons. Where an exact product is needed (the range reductions of the exact solution,
+//! `elliptic::jacobi`, `exact::planar`, `exact::generic`), `f64::mul_add` is kept: correctly rounded
+//! everywhere, a few calls per exact state. The C library's `sin`, `atan2`, … are called at every
+//! level alike. So a trajectory or an exact state gets the same bits at every level, the ensemble and
+//! the single-trajectory path agree bit for bit whichever level each ran at, `tests/isa.rs` checks
+//! all of them against [`set_baseline_only`], and `tests/rattle_unfused.rs` checks RATTLE and the
+//! ensemble against a step written out with explicit unfused arithmetic.
 //!
 //! On other architectures (aarch64: FMA is part of the baseline) the targets above do not apply and
 //! [`fastest`] runs its work as compiled; nothing here is x86-specific outside

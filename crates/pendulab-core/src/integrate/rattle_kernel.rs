@@ -11,7 +11,7 @@
 //! C(z) = Σ Catₙ zⁿ = 1 + z + 2z² + 5z³ + 14z⁴ + 42z⁵ + 132z⁶ + … the Catalan series of
 //! (1 − √(1 − 4z)) / (2z). For the step sizes that matter z = O((h ω)²) is tiny, and the series
 //! truncated after z⁶ is exact to < 4.3·10⁻¹⁹ relative for |z| ≤ [`SERIES_LIMIT`] (tail
-//! ≤ Cat₇ |z|⁷ / (1 − 4|z|)): one division (1/b) and a few fused multiply-adds instead of a square
+//! ≤ Cat₇ |z|⁷ / (1 − 4|z|)): one division (1/b) and a few multiply-adds instead of a square
 //! root and a division on the step's dependency chain. Larger |z| uses the closed form.
 //!
 //! When the applied acceleration does not depend on position (a uniform field, possibly varying in
@@ -27,10 +27,15 @@
 //! Updates are Kahan-compensated (the compensation folded into the increment): x₁ = x₀ + (h v½ − cₓ),
 //! v₁ = v₀ + ((k₀ + k₁ − c_v) + μ x₀ − p x₁) with p = x₁·u / l².
 //!
-//! Fused multiply-adds (`fmadd`: one rounding, shorter latency) are written explicitly and are the
-//! correctly rounded fused operation on every CPU, so the numbers do not depend on the instruction
-//! set the hot loops were dispatched to ([`crate::isa`]); the single-trajectory and ensemble paths
-//! agree bit for bit. SI units: lengths \[m\], velocities [m/s], h \[s\].
+//! The multiply-adds (`fmadd`, `fmadd3`, `dot`) are plain a·b + c, rounded twice — never fused —
+//! on every CPU and in WebAssembly: + − × ÷ are correctly rounded everywhere, so the numbers do not
+//! depend on the instruction set the hot loops were dispatched to ([`crate::isa`]), nor on the CPU,
+//! nor on the engine (native or the page's wasm); the single-trajectory and ensemble paths agree bit
+//! for bit. (A fused `f64::mul_add` gives the same bits everywhere too, but it is one instruction only
+//! where the CPU has FMA and an exact software routine elsewhere: 3–20× slower on older x86-64 CPUs,
+//! 25× in WebAssembly; docs/performance.md, "No CPU left behind".) `tests/rattle_unfused.rs` checks
+//! the stepper and the ensemble against this arithmetic written out by hand. SI units: lengths \[m\],
+//! velocities [m/s], h \[s\].
 
 use glam::DVec3;
 
@@ -38,12 +43,12 @@ use glam::DVec3;
 /// < 429 |z|⁷ / (1 − 4|z|) < 4.3·10⁻¹⁹).
 pub const SERIES_LIMIT: f64 = 1e-3;
 
-/// a·b + c with one rounding (IEEE fused multiply-add) on every CPU: one instruction in the FMA
-/// levels of [`crate::isa`] and on aarch64, a call to `compiler_builtins`' exact `fma` in the x86-64
-/// baseline (slow, which is why every caller on a hot path runs inside [`crate::isa::fastest`]).
+/// a·b + c, unfused (two roundings: the product, then the sum) on every CPU and in WebAssembly, so
+/// the same bits everywhere and no software fma on CPUs without FMA (module doc). The name is kept
+/// for the kernels that call it; do not turn it into `f64::mul_add`.
 #[inline(always)]
 pub fn fmadd(a: f64, b: f64, c: f64) -> f64 {
-    a.mul_add(b, c)
+    a * b + c
 }
 
 /// a·s + c componentwise.
@@ -52,7 +57,7 @@ pub fn fmadd3(a: DVec3, s: f64, c: DVec3) -> DVec3 {
     DVec3::new(fmadd(a.x, s, c.x), fmadd(a.y, s, c.y), fmadd(a.z, s, c.z))
 }
 
-/// The dot product as a short tree ((a_x b_x + a_y b_y) + a_z b_z, fused).
+/// The dot product as a_z b_z + (a_y b_y + a_x b_x), unfused.
 #[inline(always)]
 pub fn dot(a: DVec3, b: DVec3) -> f64 {
     fmadd(a.z, b.z, fmadd(a.y, b.y, a.x * b.x))

@@ -1,0 +1,133 @@
+//! The RATTLE kernel's arithmetic is plain IEEE a·b + c (two roundings), never a fused multiply-add:
+//! the stepper (at the best instruction-set level of this CPU, and restricted to the baseline) and the
+//! ensemble kernel give, bit for bit, the numbers of a reference step written out below with explicit
+//! unfused `*` and `+` in the kernel's order of operations (T-2.1, T-2.2; the module doc of
+//! `integrate::rattle_kernel`). Because + − × ÷ are correctly rounded on every CPU and in
+//! WebAssembly, these are then the numbers of every x86-64 level, of aarch64 and of the page's engine
+//! (docs/performance.md, "No CPU left behind"). The test has teeth: the same reference with fused
+//! multiply-adds (the kernel before 2026-11-26) gives other bits. SI units: \[m\], [m/s], \[s\].
+
+use pendulab_core::ensemble::{run_with, EnsembleSave, Extras};
+use pendulab_core::isa;
+use pendulab_core::{IdealPendulum, Method, Params, SolveOptions, State, Stepper};
+use std::sync::atomic::{AtomicBool, AtomicU64};
+
+type V = [f64; 3];
+
+fn add(a: V, b: V) -> V {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+fn sub(a: V, b: V) -> V {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+/// a·b + c: unfused, or fused when `fused` (the test's teeth: the kernel before 2026-11-26).
+fn fm(a: f64, b: f64, c: f64, fused: bool) -> f64 {
+    if fused {
+        a.mul_add(b, c)
+    } else {
+        a * b + c
+    }
+}
+/// a·s + c componentwise.
+fn fm3(a: V, s: f64, c: V, fused: bool) -> V {
+    [fm(a[0], s, c[0], fused), fm(a[1], s, c[1], fused), fm(a[2], s, c[2], fused)]
+}
+/// a_z b_z + (a_y b_y + a_x b_x).
+fn dot(a: V, b: V, fused: bool) -> f64 {
+    fm(a[2], b[2], fm(a[1], b[1], a[0] * b[0], fused), fused)
+}
+
+/// The ideal pendulum's RATTLE steps from (x, v), compensations carried, uniform-field path with the
+/// Catalan series for μ (asserted to apply); every multiply-add fused when `fused`.
+fn reference(x: V, v: V, l: f64, g: f64, h: f64, steps: usize, fused: bool) -> (V, V) {
+    let f = fused;
+    let (mut x, mut v) = (x, v);
+    let (mut cx, mut cv) = ([0.0; 3], [0.0; 3]);
+    let half = 0.5 * h;
+    let l2 = l * l;
+    let inv_l2 = 1.0 / l2;
+    let kick = [0.0 * half, 0.0 * half, -g * half];
+    for _ in 0..steps {
+        let w = add(v, kick);
+        let q = dot(x, x, f);
+        let xw = dot(x, w, f);
+        let ww = dot(w, w, f);
+        let b = fm(h, xw, q, f);
+        let c = fm(h, fm(h, ww, xw + xw, f), q - l2, f);
+        let ib = 1.0 / b;
+        let z = 0.25 * q * c * (ib * ib);
+        assert!(z.abs() <= 1e-3 && b > 0.0, "the series must apply (z = {z:e})");
+        let z2 = z * z;
+        let low = fm(z2, fm(5.0, z, 2.0, f), 1.0 + z, f);
+        let high = fm(z2, 132.0, fm(42.0, z, 14.0, f), f);
+        let series = fm(z2 * z2, high, low, f);
+        let mu = c * (ib * (-0.5 / h)) * series;
+        let v_half = fm3(x, mu, w, f);
+        let y = fm3(v_half, h, [-cx[0], -cx[1], -cx[2]], f);
+        let x1 = add(x, y);
+        cx = sub(sub(x1, x), y);
+        let e = add(w, kick);
+        let xe = dot(x, e, f);
+        let (pa, pb, pc) = (fm(h, dot(w, e, f), xe, f) * inv_l2, fm(h, xe, b, f) * inv_l2, h * q * inv_l2);
+        let p = fm(mu, fm(mu, pc, pb, f), pa, f);
+        let yv = fm3(x1, -p, fm3(x, mu, sub(add(kick, kick), cv), f), f);
+        let v1 = add(v, yv);
+        cv = sub(sub(v1, v), yv);
+        (x, v) = (x1, v1);
+    }
+    (x, v)
+}
+
+fn bits(x: V, v: V) -> Vec<u64> {
+    x.iter().chain(v.iter()).map(|a| a.to_bits()).collect()
+}
+
+fn state_bits(s: &State) -> Vec<u64> {
+    bits(s.x.to_array(), s.v.to_array())
+}
+
+#[test]
+fn rattle_is_the_unfused_reference_bit_for_bit_at_every_level_and_in_the_ensemble() {
+    let (l, g, h, steps) = (1.3, 9.81, 1e-3, 2000);
+    let params = Params::new(l, 0.7, g).unwrap();
+    let starts: Vec<State> = [(1.1, 0.2, 0.3, 1.4), (0.4, 0.0, 0.0, 2.5), (2.7, 1.0, -0.5, 0.3)]
+        .iter()
+        .map(|&(th, ph, thd, phd)| State::from_angles(&params, th, ph, thd, phd).unwrap())
+        .collect();
+    let opts = SolveOptions { method: Method::Rattle, dt: h, ..SolveOptions::default() };
+    let ideal = IdealPendulum::new(l, 0.7, g).unwrap();
+    let mut expected = Vec::new();
+    for s0 in &starts {
+        let (x0, v0) = (s0.x.to_array(), s0.v.to_array());
+        let (x, v) = reference(x0, v0, l, g, h, steps, false);
+        let want = bits(x, v);
+        let (xf, vf) = reference(x0, v0, l, g, h, steps, true);
+        assert_ne!(bits(xf, vf), want, "fused multiply-adds give other bits (the test's teeth)");
+        for baseline in [false, true] {
+            isa::set_baseline_only(baseline);
+            let mut st = Stepper::new(ideal, 0.0, *s0, &opts).unwrap();
+            st.step_n(steps as u64).unwrap();
+            isa::set_baseline_only(false);
+            assert_eq!(state_bits(st.state()), want, "stepper ({}) from {s0:?}", isa::selected());
+        }
+        expected.push(want);
+    }
+    let (progress, cancel) = (AtomicU64::new(0), AtomicBool::new(false));
+    let extras = Extras { damping: &[], settle_angle: None };
+    let ens = run_with(
+        &starts,
+        &[l],
+        &[g],
+        &extras,
+        h,
+        steps as u64,
+        EnsembleSave::Final,
+        false,
+        &progress,
+        &cancel,
+    )
+    .unwrap();
+    for (k, want) in expected.iter().enumerate() {
+        assert_eq!(&state_bits(ens.trajectory(k).last().unwrap()), want, "ensemble, trajectory {k}");
+    }
+}
