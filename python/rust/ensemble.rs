@@ -17,13 +17,13 @@ use std::time::Duration;
 /// Set (and waiters woken) when the run's thread ends, also if it panics: [`EnsembleRun::wait`]
 /// returns the moment the run is done instead of at the next poll.
 #[derive(Default)]
-struct Finished {
-    done: Mutex<bool>,
-    changed: Condvar,
+pub(crate) struct Finished {
+    pub(crate) done: Mutex<bool>,
+    pub(crate) changed: Condvar,
 }
 
 /// Marks the run finished when dropped, i.e. when the thread's closure returns or unwinds.
-struct FinishOnDrop(Arc<Finished>);
+pub(crate) struct FinishOnDrop(pub(crate) Arc<Finished>);
 
 impl Drop for FinishOnDrop {
     fn drop(&mut self) {

@@ -9,13 +9,14 @@
 //! - `tables.rs`: the registries of methods and models; `states.rs`: states and diagnostics.
 //! - `spec.rs`: `ModelSpec` and `RunOptions`, the run as one description (`(spec, state, options)`).
 //! - `solver.rs`: `Solver`, `Stepper`; `force.rs`: `ForceSolver` (a Python force); `ensemble.rs`,
-//!   `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module.
+//!   `ensemble_adaptive.rs`, `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module.
 
 mod convert;
 mod getters;
 
 mod crane;
 mod ensemble;
+mod ensemble_adaptive;
 mod exact;
 mod force;
 mod limits;
@@ -42,6 +43,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     solver::register(m)?;
     exact::register(m)?;
     ensemble::register(m)?;
+    ensemble_adaptive::register(m)?;
     spring::register(m)?;
     string::register(m)?;
     slewing::register(m)?;

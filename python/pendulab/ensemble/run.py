@@ -24,6 +24,7 @@ from .._core import EnsembleRun, InvalidInputError
 from .._progress import tqdm
 from ..memory import check_memory
 from ..model import FloatArray, Pendulum, State
+from .adaptive import simulate_adaptive
 from .result import EnsembleResult
 from .save import Save
 
@@ -119,6 +120,9 @@ def simulate_ensemble(
     damping: Any = None,
     settle_angle: float | None = None,
     progress: bool | None = None,
+    rtol: float = 1e-10,
+    atol: float = 1e-12,
+    conserve: bool = False,
 ) -> EnsembleResult:
     """Integrates N starts (an (N, 6) array of (x, v) or a list of ``State``) to ``t_end`` [s] with
     RATTLE at step ``dt`` [s]. ``length`` [m], ``g`` [m/s²] and ``damping`` c [1/s] default to the
@@ -126,8 +130,14 @@ def simulate_ensemble(
     values for per-trajectory parameters. ``save``: what to keep, e.g. ``pl.Save.every(1000) |
     pl.Save.summary()`` (see :class:`~pendulab.save.Save`); or the older keywords ``save_every`` (keep
     every n-th step; default the final state only) and ``summary`` (default True).
-    ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. ``method``: only
-    ``"rattle"``. The number of steps is round(t_end/dt); t_end must be a multiple of dt to 1e-9.
+    ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. The number of steps
+    is round(t_end/dt); t_end must be a multiple of dt to 1e-9.
+
+    ``method="dop853"``: any rod model of the registry (drag, forcing, friction, a moving pivot, …),
+    each trajectory adaptive with tolerances ``rtol``, ``atol`` [m, m/s] (and ``conserve``, as in
+    :func:`~pendulab.simulate`), exactly ``simulate(pendulum, start, t_end, method="dop853",
+    save_at=[0, t_end])``; trajectories in parallel on all cores; final states only (t = 0 and
+    t_end), no summary, the pendulum's own parameters for all (``dt`` is not used).
 
     Examples
     --------
@@ -143,11 +153,14 @@ def simulate_ensemble(
     """
     if not isinstance(pendulum, Pendulum):
         raise limits.invalid("pendulum", pendulum, "a pendulab.Pendulum")
-    if method != "rattle":
+    if method not in ("rattle", "dop853"):
         raise InvalidInputError(
-            f"method = {limits.show(method)}: the ensemble kernel runs 'rattle' (vectorised); loop over "
-            "pl.simulate for the other methods"
+            f"method = {limits.show(method)}: simulate_ensemble runs 'rattle' (vectorised; ideal or "
+            "linearly damped pendulum) or 'dop853' (adaptive, any rod model); loop over pl.simulate for "
+            "the other methods"
         )
+    if method == "dop853":
+        return _adaptive(pendulum, states, t_end, locals())
     if save is not None:
         if not isinstance(save, Save):
             raise InvalidInputError(f"save must be a pl.Save rule, got {limits.show(save)}")
@@ -251,6 +264,34 @@ def simulate_ensemble(
         meta,
         out.get("settle_time"),
         invalid.astype(np.int64),
+    )
+
+
+_RATTLE_ONLY = ("save", "save_every", "summary", "length", "g", "damping", "settle_angle")
+
+
+def _adaptive(pendulum: Pendulum, states: Any, t_end: Any, kw: dict[str, Any]) -> EnsembleResult:
+    """``simulate_ensemble(method="dop853")``: the keywords checked, then :mod:`.adaptive`."""
+    given = [k for k in _RATTLE_ONLY if kw[k] is not None]
+    if given:
+        raise InvalidInputError(
+            f"simulate_ensemble(method='dop853') keeps the final states of the pendulum's own model: "
+            f"{', '.join(given)} apply to method='rattle' only"
+        )
+    x, v = _as_states(states)
+    if not (np.isfinite(x).all() and np.isfinite(v).all()):
+        raise InvalidInputError("method='dop853' needs every start row finite (no NaN or inf)")
+    t_end = limits.number("t_end", t_end, "time", positive=True)
+    return simulate_adaptive(
+        pendulum,
+        x,
+        v,
+        t_end,
+        method="dop853",
+        rtol=kw["rtol"],
+        atol=kw["atol"],
+        conserve=kw["conserve"],
+        progress=kw["progress"],
     )
 
 

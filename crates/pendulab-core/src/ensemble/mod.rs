@@ -29,6 +29,7 @@ pub const LANES: usize = 64;
 /// Steps between progress updates and cancel checks in each block.
 pub const CHECK_EVERY: u64 = 1024;
 
+pub mod adaptive;
 mod block;
 mod output;
 pub use block::TILE;
