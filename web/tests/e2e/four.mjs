@@ -7,7 +7,7 @@
 // all four bobs drawn apart inside the view; the whole experiment within 60 s of wall time.
 const TOL = 2e-3;
 
-export async function checkFourPendulums(page, { check, WAIT }) {
+export async function checkFourPendulums(page, { check, WAIT, shot }) {
   const t0 = Date.now();
   await page.evaluate(() => {
     const send = window.pendulab.send;
@@ -53,7 +53,7 @@ export async function checkFourPendulums(page, { check, WAIT }) {
       canvas: { left: c.left, right: c.right, top: c.top, bottom: c.bottom },
     };
   });
-  await page.screenshot({ path: 'test-results/four-pendulums.png' });
+  await page.screenshot({ path: shot('four-pendulums') });
   const [T1, T2, T3, T4] = got.T;
   check(
     got.l.join() === '1,0.25,1,0.5' && got.m.join() === '1,1,3,1' && got.rows === 5,

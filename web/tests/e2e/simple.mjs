@@ -17,12 +17,12 @@ async function state(page) {
   }, shown.toString());
 }
 
-export async function checkSimpleView(page, { check, WAIT }) {
+export async function checkSimpleView(page, { check, WAIT, shot }) {
   const full = await state(page);
   await page.locator('[data-action="simple"]').click();
   await page.waitForFunction(() => /simple/.test(location.search), null, { timeout: WAIT });
   const simple = await state(page);
-  await page.screenshot({ path: 'test-results/simple-view.png' });
+  await page.screenshot({ path: shot('simple-view') });
   check(simple.simple && simple.gone.length === 0 && simple.folders === 2, `simple view: the data panel, plots, portraits, reduced view, fitting, model picker and ${full.folders - 2} settings folders are folded away${simple.gone.length ? ' (still shown: ' + simple.gone.join(', ') + ')' : ''}`);
   check(simple.kept.length === 0 && simple.targets < full.targets, `simple view: PhET's tools kept (length and mass, gravity and friction, start, stopwatch, period, ruler, energy, two pendulums, slow motion); ${simple.targets} controls instead of ${full.targets}${simple.kept.length ? '; missing: ' + simple.kept.join(', ') : ''}`);
   // the link hands the simple view out; presentation mode on top of it
@@ -31,7 +31,7 @@ export async function checkSimpleView(page, { check, WAIT }) {
   await p2.waitForFunction(() => window.pendulab?.store.status != null, null, { timeout: WAIT }); // the link may be paused: no frames
   await p2.locator('[data-action="present"]').click();
   const both = await p2.evaluate(() => ({ simple: document.body.classList.contains('simple'), size: parseFloat(getComputedStyle(document.querySelector('.tools label')).fontSize), data: document.getElementById('data').getClientRects().length }));
-  await p2.screenshot({ path: 'test-results/simple-presentation.png' });
+  await p2.screenshot({ path: shot('simple-presentation') });
   await p2.close();
   check(both.simple && both.data === 0 && both.size >= 18, `the link opens the simple view; with presentation mode on top ${both.size} px type`);
   await page.locator('[data-action="simple"]').click();
