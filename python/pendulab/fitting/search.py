@@ -252,21 +252,25 @@ class Search:
             return np.vstack([j, np.diag(self.anchor_slope(u))])
 
         exact = self.exact_jacobian(on, self.clip(u0)) is not None
-        return least_squares(
-            fun,
-            self.clip(u0),
-            jac=jac if exact else "2-point",
-            bounds=(self.lower, self.upper),
-            x_scale=self.scales,
-            loss=self.loss,
-            f_scale=1.0,
-            max_nfev=self.max_evaluations if evaluations is None else evaluations,
-            xtol=tol,
-            ftol=tol,
-            gtol=tol,
-            diff_step=1e-8,
-            method="trf",
-        )
+        # a search that wanders where the motion grows without bound (g < 0, an inverted swing) meets
+        # Jacobians of 1e200: SciPy then shrinks its trust region, and numpy's overflow warnings
+        # would reach the user by the hundred
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            return least_squares(
+                fun,
+                self.clip(u0),
+                jac=jac if exact else "2-point",
+                bounds=(self.lower, self.upper),
+                x_scale=self.scales,
+                loss=self.loss,
+                f_scale=1.0,
+                max_nfev=self.max_evaluations if evaluations is None else evaluations,
+                xtol=tol,
+                ftol=tol,
+                gtol=tol,
+                diff_step=1e-8,
+                method="trf",
+            )
 
     def _behind(self, on: Problem) -> bool:
         """Whether this start's best cost on ``on`` is still above that of the best result so far."""
