@@ -91,36 +91,8 @@ impl<M: Model> Solver<M> {
         max_saved_bytes: u64,
     ) -> Result<Self> {
         let stepper = Stepper::new(model, t0, state, options)?;
-        if !(t_end.is_finite() && t_end > t0) {
-            return Err(Error::InvalidParameter {
-                name: "t_end",
-                value: t_end,
-                allowed: "the end time must be a finite number of seconds after the start time",
-            });
-        }
-        if !options.method.info().adaptive {
-            check_planned_steps((t_end - t0) / options.dt)?;
-        }
-        let max_samples = max_saved_bytes / BYTES_PER_SAMPLE;
-        match &save {
-            SaveAt::Every(0) => {
-                return Err(Error::InvalidParameter {
-                    name: "save_every",
-                    value: 0.0,
-                    allowed: "save_every must be an integer ≥ 1 (steps between saved samples)",
-                })
-            }
-            SaveAt::Every(n) => {
-                if !options.method.info().adaptive {
-                    let steps = ((t_end - t0) / options.dt).ceil();
-                    too_many((steps / *n as f64).ceil() as u64 + 2, max_samples)?;
-                }
-            }
-            SaveAt::Times(ts) => {
-                check_save_times(ts, t0, t_end)?;
-                too_many(ts.len() as u64, max_samples)?;
-            }
-        }
+        let fixed_steps = (!options.method.info().adaptive).then(|| (t_end - t0) / options.dt);
+        let max_samples = check_run(t0, t_end, &save, max_saved_bytes, fixed_steps)?;
         let mut solver = Self {
             stepper,
             t0,
@@ -280,6 +252,50 @@ pub fn solve<M: Model>(
         }
     }
     Ok((solver.take_samples(), solver.stats(), interrupted))
+}
+
+/// The checks of a batch run's end and save rule, made before any step by [`Solver`] and the string
+/// pendulum's runner alike: t_end \[s\] finite and after t₀; with `fixed_steps` (the (t_end − t₀)/dt
+/// of a fixed-step method) the planned steps within their limit; `save_every` ≥ 1; the save times
+/// ([`check_save_times`]); and the samples the rule will keep within `max_saved_bytes` (save times:
+/// their number; every n-th of fixed steps: ⌈steps/n⌉ + 2). Returns the cap on samples.
+pub(crate) fn check_run(
+    t0: f64,
+    t_end: f64,
+    save: &SaveAt,
+    max_saved_bytes: u64,
+    fixed_steps: Option<f64>,
+) -> Result<u64> {
+    if !(t_end.is_finite() && t_end > t0) {
+        return Err(Error::InvalidParameter {
+            name: "t_end",
+            value: t_end,
+            allowed: "the end time must be a finite number of seconds after the start time",
+        });
+    }
+    if let Some(steps) = fixed_steps {
+        check_planned_steps(steps)?;
+    }
+    let max_samples = max_saved_bytes / BYTES_PER_SAMPLE;
+    match save {
+        SaveAt::Every(0) => {
+            return Err(Error::InvalidParameter {
+                name: "save_every",
+                value: 0.0,
+                allowed: "save_every must be an integer ≥ 1 (steps between saved samples)",
+            })
+        }
+        SaveAt::Every(n) => {
+            if let Some(steps) = fixed_steps {
+                too_many((steps.ceil() / *n as f64).ceil() as u64 + 2, max_samples)?;
+            }
+        }
+        SaveAt::Times(ts) => {
+            check_save_times(ts, t0, t_end)?;
+            too_many(ts.len() as u64, max_samples)?;
+        }
+    }
+    Ok(max_samples)
 }
 
 /// Save times [s] must be given, finite, within [`t0`, `t_end`] and strictly increasing (shared by

@@ -85,35 +85,8 @@ impl StringRunner {
     /// (for [`SaveAt::Times`]: when the first time is the start time).
     pub fn new(stepper: StringStepper, t_end: f64, save: SaveAt, max_saved_bytes: u64) -> Result<Self> {
         let t0 = stepper.t();
-        if !(t_end.is_finite() && t_end > t0) {
-            return Err(Error::InvalidParameter {
-                name: "t_end",
-                value: t_end,
-                allowed: "the end time must be a finite number of seconds after the start time",
-            });
-        }
-        let max_samples = max_saved_bytes / BYTES_PER_SAMPLE;
-        match &save {
-            SaveAt::Every(0) => {
-                return Err(Error::InvalidParameter {
-                    name: "save_every",
-                    value: 0.0,
-                    allowed: "save_every must be an integer ≥ 1 (steps between saved samples)",
-                })
-            }
-            SaveAt::Every(_) => {}
-            SaveAt::Times(ts) => {
-                crate::solve::check_save_times(ts, t0, t_end)?;
-                if ts.len() as u64 > max_samples {
-                    let samples = ts.len() as u64;
-                    return Err(Error::TooManySamples {
-                        samples,
-                        bytes: samples * BYTES_PER_SAMPLE,
-                        limit: max_samples * BYTES_PER_SAMPLE,
-                    });
-                }
-            }
-        }
+        // the same checks as the rod's Solver (its steps are not planned: events add states)
+        let max_samples = crate::solve::check_run(t0, t_end, &save, max_saved_bytes, None)?;
         let mut runner = Self {
             t_start: t0,
             t_end,
