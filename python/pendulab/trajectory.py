@@ -22,6 +22,7 @@ from . import io
 from .display import Row, html_table, number, relative_drift
 from .error_estimate import ErrorEstimate
 from .model import FloatArray, Pendulum, State, models
+from .overview import plot_overview
 
 if TYPE_CHECKING:
     from .animate import Movie, MovieSettings
@@ -387,10 +388,8 @@ class Trajectory:
 
     def plot(self, path: str | os.PathLike[str] | None = None, **kwargs: Any) -> Any:
         """An overview figure: the path on the sphere, z(t), and the drift of E and J₃ (log scale,
-        float64 floor marked) — :func:`pendulab.plot.overview.plot_overview`; saved atomically to
+        float64 floor marked) — :func:`pendulab.overview.plot_overview`; saved atomically to
         ``path`` if given (.png, .svg, .pdf). Needs matplotlib. Returns the Figure."""
-        from .plot.overview import plot_overview
-
         return plot_overview(self, path, **kwargs)
 
     def summary(self) -> str:

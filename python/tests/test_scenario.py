@@ -260,6 +260,15 @@ def test_overrides_are_validated_and_replace_save_at() -> None:
         sc.run(dt=-0.1)
     with pytest.raises(pl.ScenarioError, match="unknown method 'euler'"):
         sc.with_overrides(method="euler")
+    # one object for the overrides, the same as its fields as keywords; keywords go over it
+    from pendulab.scenario import RunOverrides
+
+    quick = RunOverrides(method="rattle4", dt=1e-3, save_every=250)
+    assert sc.with_overrides(quick) == sc.with_overrides(method="rattle4", dt=1e-3, save_every=250)
+    assert np.array_equal(sc.run(overrides=quick).x, tr.x)
+    assert sc.with_overrides(quick, save_every=500).expected_samples() == 3
+    with pytest.raises(TypeError, match="unknown run override"):
+        sc.with_overrides(steps=5)
 
 
 def test_save_at_lands_on_the_times() -> None:

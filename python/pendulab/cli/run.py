@@ -20,7 +20,7 @@ import typer
 
 from .._core import InvalidInputError
 from ..model import models as model_table
-from ..scenario import Scenario, ScenarioError, load_scenario
+from ..scenario import RunOverrides, Scenario, ScenarioError, load_scenario
 from ..scenario.examples import scenario_files, sweep_files
 from ..simulation import methods as method_table
 from .common import (
@@ -114,9 +114,10 @@ def run(
     with _user_errors():
         if out is not None:
             _check_output(out)
-        sc = load_scenario(_scenario_file(scenario)).with_overrides(
+        overrides = RunOverrides(
             method=method, dt=dt, t_end=t_end, save_every=save_every, rtol=rtol, atol=atol
         )
+        sc = load_scenario(_scenario_file(scenario)).with_overrides(overrides)
         projection = sc.initial_state().projection
         if not quiet:
             _say(f"running {scenario}" + (f": {sc.title}" if sc.title else ""), err=True)

@@ -103,21 +103,7 @@ def sweep_cmd(
         if backend is not None and backend not in BACKENDS:
             _fail(f"--backend {backend!r}: use one of {', '.join(BACKENDS)}")
         sf = load_sweep_file(_sweep_file(sweep_file))
-        kwargs = sf.sweep_kwargs()
-        for key, value in (
-            ("workers", workers),
-            ("scheduler", scheduler),
-            ("backend", backend),
-            ("chunk_size", chunk_size),
-        ):
-            if value is not None:
-                kwargs[key] = value
-        if scheduler is not None and backend is None:
-            kwargs["backend"] = "dask"
-        if workers is not None and scheduler is None:
-            kwargs["scheduler"] = None
-        if kwargs["scheduler"] is not None:
-            kwargs["workers"] = None
+        kwargs = sf.sweep_kwargs(workers=workers, scheduler=scheduler, backend=backend, chunk_size=chunk_size)
         if not quiet:
             _say(f"sweep {sweep_file}" + (f": {sf.title}" if sf.title else ""), err=True)
             _say(_plan(sf, kwargs), err=True)

@@ -1,4 +1,4 @@
-"""Crane figures (matplotlib on demand, via :mod:`pendulab.plot.figure`; no pyplot): the sensitivity
+"""Crane figures (matplotlib on demand, via :mod:`pendulab.figure`; no pyplot): the sensitivity
 curves V(ω/ω₀) of shapers (T-11.1), the sway against time of several runs (shaped vs unshaped, LQR),
 and the load's path seen from above. Each returns a ``matplotlib.figure.Figure``; write it with
 ``pendulab.plot.save_figure(fig, "x.png")``. Axes in SI units.
@@ -11,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from ..plot.figure import new_figure
+from ..figure import new_figure
 from .shaper import Shaper, residual_vibration
 from .system import CraneRun
 

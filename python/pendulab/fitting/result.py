@@ -394,7 +394,7 @@ class FitResult:
     def plot(self, path: str | os.PathLike[str] | None = None) -> Any:
         """Data and fit, the residuals, and the parameter correlations; saved atomically to ``path``
         if given. Needs matplotlib. Returns the Figure."""
-        from ..plot.figure import new_figure, save_figure
+        from ..figure import new_figure, save_figure
 
         kinds = list(self.residuals)
         fig = new_figure(figsize=(12.0, 3.2 * len(kinds) + 1.0), layout="constrained")

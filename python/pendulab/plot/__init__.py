@@ -15,8 +15,8 @@ global backend is touched; files are rendered with the Agg canvas and written at
 file + rename), in the format of the suffix (.png, .svg, .pdf). Axes carry SI units.
 """
 
+from ..figure import FORMATS, new_figure, require_matplotlib, save_figure
 from .em_map import plot_em_map
-from .figure import FORMATS, new_figure, require_matplotlib, save_figure
 from .phases import plot_phases
 from .reduced import plot_reduced
 from .trajectory import plot_trajectory

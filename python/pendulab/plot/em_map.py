@@ -14,8 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from ..figure import new_figure, save_figure
 from ..theory.em_map import EMMap
-from .figure import new_figure, save_figure
 
 
 def plot_em_map(

@@ -21,9 +21,9 @@ from typing import Any
 import numpy as np
 
 from .._core import InvalidInputError
+from ..figure import new_figure, save_figure
 from ..theory.exact import ExactSolution, Phases
 from ..theory.reduce import reduce
-from .figure import new_figure, save_figure
 
 _COLORS = {"dynamic": "tab:blue", "geometric": "tab:orange", "sum": "tab:green"}
 _SYMLOG_RATIO = 20.0

@@ -13,9 +13,9 @@ from typing import Any
 
 import numpy as np
 
+from ..figure import new_figure, save_figure
 from ..theory.reduce import Reduced, reduce
 from ..trajectory import Trajectory
-from .figure import new_figure, save_figure
 
 
 def plot_reduced(

@@ -20,10 +20,10 @@ import numpy as np
 import numpy.typing as npt
 
 from .._core import InvalidInputError
+from ..figure import new_figure, save_figure
 from ..model import FloatArray
 from ..theory.exact import ExactSolution
 from ..trajectory import Trajectory
-from .figure import new_figure, save_figure
 
 KINDS = ("sphere", "top", "both")
 """What :func:`plot_trajectory` draws."""

@@ -2,6 +2,7 @@
 as pydantic models (``schema``), the error messages (``errors``), and building the pendulum or spring
 and its start with the core's checks (``build``). Keys and units: ``docs/scenarios.md``."""
 
+from .overrides import RunOverrides
 from .scenario import (
     MODELS,
     SECTIONS,
@@ -23,6 +24,7 @@ __all__ = [
     "UNITS",
     "InitialSection",
     "PendulumSection",
+    "RunOverrides",
     "Scenario",
     "ScenarioError",
     "ScenarioSpec",

@@ -58,6 +58,7 @@ from ..validate import check_depth, check_nesting, read_file_capped
 from ..variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
 from .errors import ScenarioError, _problem, _syntax_error
+from .overrides import RunOverrides, run_overrides
 from .schema import (
     MODELS,
     SECTIONS,
@@ -162,32 +163,14 @@ class Scenario:
             raise ScenarioError(source, str(e)) from None
         return cls.from_dict(data, source)
 
-    def with_overrides(
-        self,
-        *,
-        method: str | None = None,
-        dt: float | None = None,
-        t_end: float | None = None,
-        save_every: int | None = None,
-        rtol: float | None = None,
-        atol: float | None = None,
-    ) -> Scenario:
-        """A copy with some ``[simulation]`` settings replaced (``None`` keeps the file's value).
+    def with_overrides(self, overrides: RunOverrides | None = None, **fields: Any) -> Scenario:
+        """A copy with some ``[simulation]`` settings replaced: a :class:`RunOverrides` and/or its
+        fields as keywords (method, dt [s], t_end [s], save_every, rtol, atol [m and m/s]; ``None``
+        keeps the file's value).
 
         ``save_every`` replaces a ``save_at`` list of the file. The result is validated like a file.
         """
-        given = {
-            k: v
-            for k, v in {
-                "method": method,
-                "dt": dt,
-                "t_end": t_end,
-                "save_every": save_every,
-                "rtol": rtol,
-                "atol": atol,
-            }.items()
-            if v is not None
-        }
+        given = run_overrides(overrides, fields).given()
         if not given:
             return self
         data = self.to_dict()
@@ -230,24 +213,15 @@ class Scenario:
         return 1 + math.ceil(steps / (sim.save_every or 1))
 
     def run(
-        self,
-        progress: bool | None = None,
-        *,
-        method: str | None = None,
-        dt: float | None = None,
-        t_end: float | None = None,
-        save_every: int | None = None,
-        rtol: float | None = None,
-        atol: float | None = None,
+        self, progress: bool | None = None, overrides: RunOverrides | None = None, **fields: Any
     ) -> Trajectory | SpringTrajectory:
-        """Simulates the scenario; keyword arguments override ``[simulation]`` (see :meth:`with_overrides`).
+        """Simulates the scenario; a :class:`RunOverrides` and/or its fields as keywords override
+        ``[simulation]`` (see :meth:`with_overrides`).
 
         ``progress`` as in :func:`pendulab.simulate` (default: a bar only for long runs). Ctrl-C returns
         the samples computed so far with ``Trajectory.interrupted = True``.
         """
-        sc = self.with_overrides(
-            method=method, dt=dt, t_end=t_end, save_every=save_every, rtol=rtol, atol=atol
-        )
+        sc = self.with_overrides(overrides, **fields)
         sim = sc.spec.simulation
         if sc._spring is not None:
             run = simulate_spring(

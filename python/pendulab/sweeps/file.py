@@ -133,8 +133,35 @@ class SweepFile:
     def title(self) -> str:
         return self.spec.title
 
-    def sweep_kwargs(self) -> dict[str, Any]:
-        """The keywords of :func:`pendulab.sweep` this file sets (not out, resume, progress)."""
+    def sweep_kwargs(
+        self,
+        *,
+        workers: int | None = None,
+        scheduler: str | None = None,
+        backend: str | None = None,
+        chunk_size: int | None = None,
+    ) -> dict[str, Any]:
+        """The keywords of :func:`pendulab.sweep` this file sets (not out, resume, progress), with the
+        ``[run]`` settings overridden where given (``pendulab sweep``'s options): a scheduler implies
+        the dask backend and replaces the file's workers; workers given alone replace its scheduler."""
+        kwargs = self._file_kwargs()
+        for key, value in (
+            ("workers", workers),
+            ("scheduler", scheduler),
+            ("backend", backend),
+            ("chunk_size", chunk_size),
+        ):
+            if value is not None:
+                kwargs[key] = value
+        if scheduler is not None and backend is None:
+            kwargs["backend"] = "dask"
+        if workers is not None and scheduler is None:
+            kwargs["scheduler"] = None
+        if kwargs["scheduler"] is not None:
+            kwargs["workers"] = None
+        return kwargs
+
+    def _file_kwargs(self) -> dict[str, Any]:
         sim, run = self.spec.simulation, self.spec.run
         return {
             "quantity": self.spec.quantity,

@@ -35,6 +35,7 @@ from .._core import InvalidInputError
 from ..display import Row, html_table, number
 from ..memory import check_memory
 from ..model import FloatArray, Pendulum, State, _frozen
+from ..overview import plot_overview
 from ..trajectory import Trajectory
 from ..validate import array, show
 
@@ -437,8 +438,6 @@ class ExactSolution:
         (dashed), and the drift of E and J₃ — which for the exact solution stays at rounding level.
         Saved atomically to ``path`` if given (first argument or keyword, as for every ``plot``
         method: ``sol.plot("x.png")``). Needs matplotlib. Returns the Figure."""
-        from ..plot.overview import plot_overview
-
         if path is not None and not isinstance(path, str | os.PathLike):
             raise InvalidInputError(
                 f"plot(path={show(path)}): path must be a file name (.png, .svg, .pdf); "

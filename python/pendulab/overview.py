@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .._core import InvalidInputError
+from ._core import InvalidInputError
 from .figure import new_figure, save_figure
 
 FLOAT64_EPS = float(np.finfo(np.float64).eps)

@@ -9,8 +9,8 @@ from typing import Any
 
 import numpy as np
 
-from .._core import InvalidInputError
-from ..io import atomic_path
+from ._core import InvalidInputError
+from .io import atomic_path
 
 FORMATS = (".png", ".svg", ".pdf")
 
