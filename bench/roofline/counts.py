@@ -2,11 +2,13 @@
 source (bench/roofline/run.py puts them on the roofline).
 
 How: every line of a kernel's hot path is read once and its operations tallied in the tables below, one
-row per function with the file it is in. A fused multiply-add (``fmadd``, ``mul_add``) counts 2 flop;
+row per function with the file it is in. A fused multiply-add (C's contracted a·b + c) counts 2 flop;
+the RATTLE kernel's ``fmadd`` is an unfused a·b + c since 2026-11-26 (issue 29 item 4), a multiplication
+and an addition, 2 flop as well, so its rows list no FMAs;
 an addition, subtraction, multiplication, division or square root 1; sign changes, abs, min/max,
 comparisons and selects 0 (no arithmetic; they use other execution ports). Loop-invariant work that
 the compiler hoists out of the step loop (h/2, −0.5/h, 1/l²) is not counted. A dot product
-``rattle_kernel::dot`` is 1 mul + 2 fma = 5 flop; an unfused glam ``a.dot(b)`` or ``length_squared``
+``rattle_kernel::dot`` is 3 mul + 2 add = 5 flop; an unfused glam ``a.dot(b)`` or ``length_squared``
 3 mul + 2 add = 5 flop. "Executed" counts what the machine does (recomputed values included);
 the figures are per unit of work (one trajectory-step, one step, one state).
 
@@ -26,13 +28,13 @@ Row = tuple[str, str, int, int, int]
 
 RATTLE_STEP: list[Row] = [
     ("kick (0, 0, −g)·h/2 and w = v₀ + k₀", "integrate/rattle.rs", 6, 0, 1),
-    ("PositionQuadratic::new: |x₀|², x₀·w, |w|² (3 dots), b, c", "integrate/rattle_kernel.rs", 5, 9, 1),
-    ("multiplier_series: 1/b, z, z², Catalan polynomial, μ", "integrate/rattle_kernel.rs", 11, 5, 1),
-    ("v½ = x₀ μ + w (fmadd3)", "integrate/rattle_kernel.rs", 0, 3, 1),
-    ("advance_position: h v½ − cₓ, x₀ + y, Kahan (x₁ − x₀) − y", "integrate/rattle_kernel.rs", 9, 3, 1),
+    ("PositionQuadratic::new: |x₀|², x₀·w, |w|² (3 dots), b, c", "integrate/rattle_kernel.rs", 23, 0, 1),
+    ("multiplier_series: 1/b, z, z², Catalan polynomial, μ", "integrate/rattle_kernel.rs", 21, 0, 1),
+    ("v½ = x₀ μ + w (fmadd3)", "integrate/rattle_kernel.rs", 6, 0, 1),
+    ("advance_position: h v½ − cₓ, x₀ + y, Kahan (x₁ − x₀) − y", "integrate/rattle_kernel.rs", 15, 0, 1),
     ("kick k₁ = (0, 0, −g)·h/2 (uniform field)", "integrate/rattle.rs", 3, 0, 1),
-    ("ProjectionPolynomial::new: e = w + k₁, x₀·e, w·e, a, b, c", "integrate/rattle_kernel.rs", 9, 6, 1),
-    ("ProjectionPolynomial::at: a + μ(b + μ c)", "integrate/rattle_kernel.rs", 0, 2, 1),
+    ("ProjectionPolynomial::new: e = w + k₁, x₀·e, w·e, a, b, c", "integrate/rattle_kernel.rs", 21, 0, 1),
+    ("ProjectionPolynomial::at: a + μ(b + μ c)", "integrate/rattle_kernel.rs", 4, 0, 1),
     (
         "advance_velocity: k₀ + k₁, − c_v, + μ x₀, − p x₁, v₀ + y, Kahan",
         "integrate/rattle_kernel.rs",
@@ -45,10 +47,10 @@ RATTLE_STEP: list[Row] = [
 
 ENSEMBLE_STEP: list[Row] = [
     ("kick (0, 0, −g·h/2): one mul (the zeros are +0 exactly), w = v₀ + k", "ensemble/block.rs", 4, 0, 1),
-    ("PositionQuadratic::new: |x₀|², x₀·w, |w|² (3 dots), b, c", "integrate/rattle_kernel.rs", 5, 9, 1),
-    ("multiplier_series: 1/b, z, z², Catalan polynomial, μ", "integrate/rattle_kernel.rs", 11, 5, 1),
-    ("ProjectionPolynomial::new (k₁ = k₀) and at(μ)", "integrate/rattle_kernel.rs", 9, 8, 1),
-    ("v½ = x₀ μ + w, advance_position", "integrate/rattle_kernel.rs", 9, 6, 1),
+    ("PositionQuadratic::new: |x₀|², x₀·w, |w|² (3 dots), b, c", "integrate/rattle_kernel.rs", 23, 0, 1),
+    ("multiplier_series: 1/b, z, z², Catalan polynomial, μ", "integrate/rattle_kernel.rs", 21, 0, 1),
+    ("ProjectionPolynomial::new (k₁ = k₀) and at(μ)", "integrate/rattle_kernel.rs", 25, 0, 1),
+    ("v½ = x₀ μ + w, advance_position", "integrate/rattle_kernel.rs", 21, 0, 1),
     (
         "advance_velocity: k + k (one add: 0 + 0 folds), − c_v, + μ x₀, − p x₁, v₀ + y, Kahan",
         "integrate/rattle_kernel.rs",
