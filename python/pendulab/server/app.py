@@ -254,33 +254,29 @@ def create_app(
     def get_scenarios() -> Response:
         return once("scenarios", listed_scenarios)
 
-    @app.post("/api/exact")
-    async def post_exact(request: Request) -> JSONResponse:
-        req = await _body(request, ExactRequest)
-        if isinstance(req, JSONResponse):
-            return req
-        return await analysis(request, exact_quantities, req)
+    def post_route(
+        path: str, name: str, kind: type[M], fn: Callable[[M], Any], *, worker: bool = True
+    ) -> None:
+        """POST ``path``, the request boilerplate named once: the body read and checked as ``kind`` (422
+        naming the problem), then ``fn(body)`` as JSON — in the analysis worker process (``worker``:
+        429/503 as the module doc says) or, for a quick answer, on a thread of this process."""
 
-    @app.post("/api/effective_potential")
-    async def post_potential(request: Request) -> JSONResponse:
-        req = await _body(request, PotentialRequest)
-        if isinstance(req, JSONResponse):
-            return req
-        return await _compute(rest_limiters, _json, effective_potential, req)
+        async def endpoint(request: Request) -> Response:
+            req = await _body(request, kind)
+            if isinstance(req, JSONResponse):
+                return req
+            if worker:
+                return await analysis(request, fn, req)
+            return await _compute(rest_limiters, _json, fn, req)
 
-    @app.post("/api/reduced")
-    async def post_reduced(request: Request) -> JSONResponse:
-        req = await _body(request, ReducedRequest)
-        if isinstance(req, JSONResponse):
-            return req
-        return await analysis(request, reduced_view, req)
+        app.add_api_route(path, endpoint, methods=["POST"], name=name)
 
-    @app.post("/api/em_map")
-    async def post_em_map(request: Request) -> JSONResponse:
-        req = await _body(request, EMRequest)
-        if isinstance(req, JSONResponse):
-            return req
-        return await analysis(request, em_view, req)
+    post_route("/api/exact", "post_exact", ExactRequest, exact_quantities)
+    post_route(
+        "/api/effective_potential", "post_potential", PotentialRequest, effective_potential, worker=False
+    )
+    post_route("/api/reduced", "post_reduced", ReducedRequest, reduced_view)
+    post_route("/api/em_map", "post_em_map", EMRequest, em_view)
 
     @app.post("/api/scenario.toml")
     async def post_scenario(request: Request) -> Response:
