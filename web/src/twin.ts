@@ -9,6 +9,9 @@
 import type { Command, Frame, Status, Vec3 } from './protocol';
 import { interpolateFrames } from './state';
 
+/** At most this many pendulums besides the first two (panels/extras.ts). */
+export const MAX_EXTRAS = 2;
+
 export type TwinMode = 'off' | 'epsilon' | 'method' | 'damped' | 'own';
 
 export interface TwinOptions {
@@ -21,6 +24,15 @@ export interface TwinOptions {
   damping: number;
   /** Mode `own`: the second pendulum's own rod length [m], bob mass [kg] and start angle θ₀ [rad] (a planar
    *  swing from rest, φ₀ = 0), hung from its own pivot beside the first (drawn side by side). */
+  length: number;
+  mass: number;
+  theta: number;
+  /** Mode `own`: pendulums 3 and 4 (panels/extras.ts), each its rod length [m], mass [kg] and θ₀ [rad]. */
+  extras?: ExtraOptions[];
+}
+
+/** One more pendulum of mode `own`: rod length [m], bob mass [kg], start angle θ₀ [rad]. */
+export interface ExtraOptions {
   length: number;
   mass: number;
   theta: number;

@@ -11,7 +11,8 @@
 // `stereo:anaglyph`, `trailSeconds:20`), plot (the chosen plot's x,y variables) and twin (the second
 // pendulum: `own:l:m:θ₀°`, `eps:ε°`, `method:name`, `damped:c`).
 import type { Command, ModelParams, Status, Vec3 } from './protocol';
-import type { TwinOptions } from './twin';
+import type { ExtraOptions, TwinOptions } from './twin';
+import { MAX_EXTRAS } from './twin';
 import { t } from './i18n';
 
 /** A view option's value (scene.ts ViewOptions): a toggle, a number or a word (the stereo mode). */
@@ -54,7 +55,8 @@ export function encodeView(view: Readonly<Record<string, ViewValue>>, defaults: 
 function twinText(o: TwinOptions): string | null {
   // angles in degrees to 12 digits (15° read back is 15, not 14.999999999999998)
   const deg = (a: number) => num(Number((a * DEG).toPrecision(12)));
-  if (o.mode === 'own') return `own:${num(o.length)}:${num(o.mass)}:${deg(o.theta)}`;
+  // mode own: the second pendulum, then pendulums 3 and 4 after commas (l:m:θ₀ each)
+  if (o.mode === 'own') return [`own:${num(o.length)}:${num(o.mass)}:${deg(o.theta)}`, ...(o.extras ?? []).map((e) => `${num(e.length)}:${num(e.mass)}:${deg(e.theta)}`)].join(',');
   if (o.mode === 'epsilon') return `eps:${deg(o.epsilon)}`;
   if (o.mode === 'method') return `method:${o.method}`;
   if (o.mode === 'damped') return `damped:${num(o.damping)}`;
@@ -212,16 +214,27 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   return { value, problems };
 }
 
+/** One pendulum of mode own from its `l:m:θ₀` parts (θ₀ in degrees), null if not three numbers in range. */
+function ownPendulum(parts: readonly string[]): ExtraOptions | null {
+  const nums = parts.map(parseNumber);
+  if (nums.length !== 3 || nums.some((n) => n === null)) return null;
+  const [l, m, th] = nums as [number, number, number];
+  return l > 0 && m > 0 && th >= 0 && th <= 180 ? { length: l, mass: m, theta: th / DEG } : null;
+}
+
 /** The second pendulum of a `twin` value, or null when it cannot be read. */
 export function decodeTwin(text: string): TwinOptions | null {
   const o: TwinOptions = { mode: 'off', epsilon: 0.01 / DEG, method: 'rk4', damping: 0.5, length: 0.5, mass: 1, theta: 10 / DEG };
-  const [kind, ...rest] = text.split(':');
+  const [first = '', ...more] = text.split(',');
+  const [kind, ...rest] = first.split(':');
   const nums = rest.map(parseNumber);
-  if (kind === 'own' && nums.length === 3 && nums.every((n) => n !== null)) {
-    const [l, m, th] = nums as [number, number, number];
-    if (!(l > 0 && m > 0 && th >= 0 && th <= 180)) return null;
-    return { ...o, mode: 'own', length: l, mass: m, theta: th / DEG };
+  if (kind === 'own') {
+    const own = [rest, ...more.map((e) => e.split(':'))].map(ownPendulum);
+    if (own.length > 1 + MAX_EXTRAS || own.some((p) => p === null)) return null;
+    const [second, ...extras] = own as ExtraOptions[];
+    return { ...o, mode: 'own', ...(second as ExtraOptions), ...(extras.length > 0 ? { extras } : {}) };
   }
+  if (more.length > 0) return null;
   if (kind === 'eps' && nums.length === 1 && nums[0] !== null) return { ...o, mode: 'epsilon', epsilon: (nums[0] as number) / DEG };
   if (kind === 'damped' && nums.length === 1 && (nums[0] ?? -1) >= 0) return { ...o, mode: 'damped', damping: nums[0] as number };
   if (kind === 'method' && rest.length === 1 && NAME.test(rest[0] as string)) return { ...o, mode: 'method', method: rest[0] as string };

@@ -8,11 +8,11 @@ import { Connection } from '../connection';
 import type { Command, Status } from '../protocol';
 import { LabStore } from '../state';
 import { twinCommands } from '../twin';
-import type { TwinOptions } from '../twin';
+import { MAX_EXTRAS } from '../twin';
+import type { ExtraOptions, TwinOptions } from '../twin';
 import { DEG } from '../measure';
 import { t } from '../i18n';
 
-export const MAX_EXTRAS = 2;
 
 /** One more pendulum: its inputs, its session and its store. */
 interface Extra {
@@ -75,8 +75,25 @@ export class ExtraPendulums {
     });
   }
 
-  private addRow(): void {
-    if (this.extras.length >= MAX_EXTRAS) return;
+  /** The pendulums as their inputs say (θ₀ in rad), for the share link. */
+  values(): ExtraOptions[] {
+    return this.extras.map((e) => ({ length: Number(e.inputs.length.value), mass: Number(e.inputs.mass.value), theta: Number(e.inputs.theta.value) / DEG }));
+  }
+
+  /** Makes the rows `list` (a shared link's pendulums 3 and 4). */
+  setRows(list: readonly ExtraOptions[]): void {
+    while (this.extras.length > 0) this.removeLast();
+    for (const o of list.slice(0, MAX_EXTRAS)) {
+      const e = this.addRow();
+      if (e === null) return;
+      e.inputs.length.value = String(o.length);
+      e.inputs.mass.value = String(o.mass);
+      e.inputs.theta.value = String(Number((o.theta * DEG).toPrecision(12)));
+    }
+  }
+
+  private addRow(): Extra | null {
+    if (this.extras.length >= MAX_EXTRAS) return null;
     const n = this.extras.length + 3;
     const row = document.createElement('p');
     row.dataset['extra'] = String(n);
@@ -95,8 +112,10 @@ export class ExtraPendulums {
     remove.addEventListener('click', () => this.removeLast());
     row.appendChild(remove);
     this.list.appendChild(row);
-    this.extras.push({ store: new LabStore(), row, inputs, conn: null, pending: [] });
+    const e: Extra = { store: new LabStore(), row, inputs, conn: null, pending: [] };
+    this.extras.push(e);
     this.show();
+    return e;
   }
 
   private removeLast(): void {

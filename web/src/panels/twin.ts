@@ -213,6 +213,7 @@ export class TwinPanel {
   restore(o: TwinOptions): void {
     Object.assign(this.options, o);
     this.setInputs(o);
+    this.extras?.setRows(o.extras ?? []);
     if (o.mode !== 'off') this.start();
   }
 
@@ -221,8 +222,13 @@ export class TwinPanel {
     const s = this.first.status;
     if (s === null) return this.actions.explain(t('msg.notConnected'));
     this.pending = twinCommands(s, this.options);
-    if (this.options.mode === 'own') this.extras?.start(s);
-    else this.extras?.stop();
+    if (this.options.mode === 'own' && this.extras !== null) {
+      this.extras.start(s);
+      this.options.extras = this.extras.values(); // the share link carries them
+    } else {
+      this.extras?.stop();
+      delete this.options.extras;
+    }
     if (this.conn === null) {
       this.conn = new Connection(this.socket, {
         onOpen: () => this.flush(),

@@ -4,7 +4,8 @@
 // second (mode "own") 0.25 m; pendulum 3 the first's length with three times its mass; pendulum 4 0.5 m;
 // all released from 10°. Each one's period timer (from its own motion) must give T₃ = T₁ (mass does not
 // matter), T₂/T₁ = √(0.25) and T₄/T₁ = √(0.5) (the same amplitude: the ratio is exactly √(l/l₁)) to 2e-3;
-// all four bobs drawn apart inside the view; the whole experiment within 60 s of wall time.
+// all four bobs drawn apart inside the view; the whole experiment within 60 s of wall time; the share
+// link carries all four.
 const TOL = 2e-3;
 
 export async function checkFourPendulums(page, { check, WAIT, shot }) {
@@ -68,6 +69,14 @@ export async function checkFourPendulums(page, { check, WAIT, shot }) {
   for (let i = 0; i < got.bobs.length; i++) for (let j = i + 1; j < got.bobs.length; j++) apart = Math.min(apart, Math.hypot(got.bobs[i].x - got.bobs[j].x, got.bobs[i].y - got.bobs[j].y));
   check(got.bobs.length === 4 && inside && apart > 20, `all four bobs drawn in the view, side by side (at least ${apart.toFixed(0)} px apart)`);
   check(seconds < 60, `the experiment took ${seconds.toFixed(1)} s of wall time from the first setting to four periods (a minute allowed)`);
+  // the share link carries pendulums 3 and 4: a second page opened with it runs all four again
+  await page.waitForFunction(() => /twin=own%3A0\.25%3A1%3A10%2C1%3A3%3A10%2C0\.5%3A1%3A10/.test(location.search), null, { timeout: WAIT });
+  const p2 = await page.context().newPage();
+  await p2.goto(page.url(), { timeout: WAIT });
+  await p2.waitForFunction(() => window.pendulab?.extras().length === 2 && window.pendulab.twin.status?.params.length === 0.25, null, { timeout: WAIT, polling: 200 });
+  const again = await p2.evaluate(() => window.pendulab.extras().map((s) => `${s.status.params.length}:${s.status.params.mass}`));
+  await p2.close();
+  check(again.join() === '1:3,0.5:1', `the link carries all four (twin=own:0.25:1:10,1:3:10,0.5:1:10): a page opened with it runs pendulums 3 and 4 again (${again.join(', ')})`);
   await page.locator('[data-input="twin-mode"]').selectOption('off');
   await page.locator('[data-action="extra-remove-4"]').click();
   await page.locator('[data-action="extra-remove-3"]').click();

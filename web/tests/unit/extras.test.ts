@@ -2,6 +2,7 @@
 // each next one beside the one before with the same gap rule, all on one line, no spheres overlapping.
 import { describe, expect, it } from 'vitest';
 import { rowOffsets, sideBySide } from '../../src/twin';
+import { decodeTwin, decodeUrl, encodeUrl } from '../../src/url';
 
 describe('a row of pendulums', () => {
   it('places pivots 2 … n beside each other along one line, 1.1 (l_i + l_{i+1}) apart [m]', () => {
@@ -21,5 +22,29 @@ describe('a row of pendulums', () => {
       expect(b[2]).toBe(0);
     }
     expect(rowOffsets([2])).toEqual([]);
+  });
+});
+
+describe('pendulums 3 and 4 in the share link', () => {
+  it('own:l:m:θ₀ of the second, then l:m:θ₀ of each more after commas, read back exactly', () => {
+    const deg = Math.PI / 180;
+    const twin = { mode: 'own' as const, epsilon: 0, method: 'rk4', damping: 0, length: 0.25, mass: 1, theta: 10 * deg, extras: [{ length: 1, mass: 3, theta: 10 * deg }, { length: 0.5, mass: 1, theta: 15 * deg }] };
+    const q = encodeUrl({ twin });
+    expect(decodeURIComponent(q)).toContain('twin=own:0.25:1:10,1:3:10,0.5:1:15');
+    const back = decodeUrl(q);
+    expect(back.problems).toEqual([]);
+    expect(back.value.twin?.extras?.map((e) => [e.length, e.mass, Math.round(e.theta / deg)])).toEqual([
+      [1, 3, 10],
+      [0.5, 1, 15],
+    ]);
+    expect(decodeTwin('own:0.25:1:10')?.extras).toBeUndefined();
+  });
+
+  it('refuses more than two more, a bad one, or extras after another mode', () => {
+    expect(decodeTwin('own:1:1:10,1:1:10,1:1:10,1:1:10')).toBeNull();
+    expect(decodeTwin('own:1:1:10,0:1:10')).toBeNull();
+    expect(decodeTwin('own:1:1:10,1:1')).toBeNull();
+    expect(decodeTwin('eps:0.5,1:1:10')).toBeNull();
+    expect(decodeUrl('twin=own:1:1:10,1:-1:10').problems).toHaveLength(1);
   });
 });
