@@ -9,7 +9,8 @@
 //! - `tables.rs`: the registries of methods and models; `states.rs`: states and diagnostics.
 //! - `spec.rs`: `ModelSpec` and `RunOptions`, the run as one description (`(spec, state, options)`).
 //! - `solver.rs`: `Solver`, `Stepper`; `force.rs`: `ForceSolver` (a Python force); `ensemble.rs`,
-//!   `ensemble_adaptive.rs`, `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module.
+//!   `ensemble_adaptive.rs`, `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module;
+//!   `live.rs`: `LiveSession`, the lab's live session (the server's sessions).
 
 mod convert;
 mod getters;
@@ -20,6 +21,7 @@ mod ensemble_adaptive;
 mod exact;
 mod force;
 mod limits;
+mod live;
 mod sensitivity;
 mod slewing;
 mod solver;
@@ -51,6 +53,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     force::register(m)?;
     limits::register(m)?;
     sensitivity::register(m)?;
+    live::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())
 }

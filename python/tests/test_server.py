@@ -20,6 +20,7 @@ from ws_session import LabClient
 
 import pendulab as pl
 from pendulab import cli
+from pendulab._core import LiveSession
 from pendulab.cli import serve as cli_serve
 from pendulab.server import (
     FRAME_FIELDS,
@@ -30,7 +31,6 @@ from pendulab.server import (
     encode_records,
     ticker,
 )
-from pendulab.server.budget import FIRST_SLICE, Budget
 from pendulab.server.protocol import (
     RECORD_LEN,
     CommandError,
@@ -285,11 +285,11 @@ def test_pacing_follows_wall_clock_times_time_scale_in_whole_steps() -> None:
     rec = s.advance(1 / 60)
     assert rec is not None and rec[0, 0] == pytest.approx(0.033, abs=1e-15)  # the fraction carries over
     s.apply(SetParams(type="set_params", g=9.81))  # a new stepper: same t
-    s.time_scale = 10.0
+    s.apply(parse_command('{"type": "set_time_scale", "time_scale": 10.0}'))
     rec = s.advance(0.05)
     assert rec is not None and len(rec) == 10 and rec[-1, 0] == pytest.approx(0.533, abs=1e-12)
-    s.time_scale = 1000.0
-    rec = s.advance(1.0, Budget(60.0))  # a stall: catches up at most MAX_ELAPSED, in MAX_SUBSAMPLES records
+    s.apply(parse_command('{"type": "set_time_scale", "time_scale": 1000.0}'))
+    rec = s.advance(1.0, 60.0)  # a stall: catches up at most MAX_ELAPSED, in MAX_SUBSAMPLES records
     assert rec is not None and len(rec) == MAX_SUBSAMPLES
     assert rec[-1, 0] == pytest.approx(0.533 + 1000 * MAX_ELAPSED, abs=1e-9)
     s.apply(Pause(type="pause"))
@@ -299,28 +299,28 @@ def test_pacing_follows_wall_clock_times_time_scale_in_whole_steps() -> None:
 def test_a_tick_stops_stepping_when_its_time_budget_is_spent_and_says_it_lags() -> None:
     s = session()
     s.apply(SetMethod(type="set_method", dt=1e-6))
-    s.time_scale = 1000.0
-    rec = s.advance(0.05, Budget(0.0))  # spent from the start: one slice of a new stepper, then stop
+    s.apply(parse_command('{"type": "set_time_scale", "time_scale": 1000.0}'))
+    rec = s.advance(0.05, 0.0)  # spent from the start: one slice of a new stepper, then stop
     assert s.lagging and rec is not None and len(rec) == 1
-    assert rec[-1, 0] == pytest.approx(FIRST_SLICE * 1e-6, rel=1e-9)
-    assert s.clock == s.stepper.t  # behind real time, not piling up the missing time
-    s.time_scale = 1.0
-    s.advance(0.001, Budget(60.0))
+    assert rec[-1, 0] == pytest.approx(LiveSession.FIRST_SLICE * 1e-6, rel=1e-9)
+    assert s.clock == s.t  # behind real time, not piling up the missing time
+    s.apply(parse_command('{"type": "set_time_scale", "time_scale": 1.0}'))
+    s.advance(0.001, 60.0)
     assert not s.lagging
 
 
 def test_length_change_keeps_angles_and_rates_and_reset_returns_to_the_start() -> None:
     s = session()
     s.advance(0.05)
-    before = s.stepper.state
+    before = s.state
     s.apply(SetParams(type="set_params", length=0.5))
-    after = s.stepper.state
+    after = s.state
     np.testing.assert_allclose(after.x, 0.5 * np.asarray(before.x), atol=1e-15)
     np.testing.assert_allclose(after.v, 0.5 * np.asarray(before.v), atol=1e-15)
     assert after.angles() == pytest.approx(before.angles(), abs=1e-14)
     rec = s.apply(pl.server.protocol.Reset(type="reset"))
     assert rec is not None and rec[0, 0] == 0.0
-    theta, _ = s.stepper.state.angles()
+    theta, _ = s.state.angles()
     assert theta == pytest.approx(math.radians(60), abs=1e-14) and s.epoch == 2
 
 
@@ -330,7 +330,7 @@ def test_set_state_off_ts2_can_be_projected_and_errors_leave_the_session_unchang
         s.apply(SetState(type="set_state", x=[0.0, 0.0, -1.5], v=[1.0, 0.0, 0.0]))
     assert s.epoch == 0
     s.apply(SetState(type="set_state", x=[0.0, 0.0, -1.5], v=[1.0, 0.0, 0.3], project=True))
-    np.testing.assert_allclose(s.stepper.state.x, [0.0, 0.0, -1.0], atol=1e-15)
+    np.testing.assert_allclose(s.state.x, [0.0, 0.0, -1.0], atol=1e-15)
     with pytest.raises(CommandError, match="no such scenario"):
         s.apply(parse_command('{"type": "load_scenario", "name": "nope"}'))
 
@@ -339,7 +339,7 @@ def test_an_integration_failure_pauses_with_an_error() -> None:
     s = session()
     s.apply(SetMethod(type="set_method", method="rk4_angles"))
     s.apply(SetState(type="set_state", theta=0.3))  # planar: swings through the pole, where angles fail
-    s.time_scale = 10.0
+    s.apply(parse_command('{"type": "set_time_scale", "time_scale": 10.0}'))
     with pytest.raises(CommandError, match=r"rk4_angles.*pole.*paused"):
         for _ in range(20):
             s.advance(0.05)

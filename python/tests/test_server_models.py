@@ -5,6 +5,7 @@ does not stall another one."""
 
 from __future__ import annotations
 
+import json
 import threading
 import time
 from typing import Any
@@ -17,8 +18,9 @@ from ws_session import LabClient, receive, status_with, until
 
 import pendulab as pl
 from pendulab import cli
+from pendulab._core import InvalidInputError
 from pendulab.server import FRAME_FIELDS, Session, create_app
-from pendulab.server.protocol import CommandError, parse_command
+from pendulab.server.protocol import LIMITS, CommandError, parse_command
 from pendulab.server.session import resolve_scenario
 
 F = {name: i for i, name in enumerate(FRAME_FIELDS)}
@@ -163,7 +165,7 @@ def test_a_method_that_refuses_the_model_leaves_the_session_unchanged() -> None:
 def test_frames_carry_time_dependent_diagnostics_net_force_and_the_moving_pivot() -> None:
     s = Session(resolve_scenario("rosette"))
     apply(s, '{"type": "set_model", "model": "vibrating", "params": {"amplitude": 0.05, "frequency": 30}}')
-    s.time_scale = 3.0
+    s.apply(parse_command('{"type": "set_time_scale", "time_scale": 3.0}'))
     r = np.concatenate([s.advance(0.05) for _ in range(10)])
     t = r[:, 0]
     assert np.ptp(t) > 1.0
@@ -346,3 +348,34 @@ def test_a_slack_string_downloads_as_a_scenario_that_runs(client: TestClient) ->
     assert tr.taut is not None and not tr.taut[0] and bool(tr.taut.any())
     outside = client.post("/api/scenario.toml", json=body | {"x": [0.0, 0.0, -1.2]})
     assert outside.status_code == 422 and "TS²" in outside.json()["detail"]
+
+
+@pytest.mark.parametrize(
+    ("kind", "key"),
+    [
+        ("set_params", "length"),
+        ("set_params", "mass"),
+        ("set_params", "g"),
+        ("set_method", "dt"),
+        ("set_time_scale", "time_scale"),
+    ],
+)
+def test_the_cores_command_check_accepts_every_value_the_servers_accepts(kind: str, key: str) -> None:
+    """The server checks a command with its pydantic models first, then the core's live session checks
+    it again (``crates/pendulab-core/src/live/wire.rs``, the page's only check): at both ends of each of
+    the server's ``LIMITS`` the core agrees, so no command the server accepts is refused by the core."""
+    lim = LIMITS[key]
+    for value in (lim["min"], lim["max"]):
+        s = Session(resolve_scenario("rosette"))
+        text = json.dumps({"type": kind, key: value})
+        cmd = parse_command(text)  # the server's check
+        s.core.apply(text)  # the core's: raises if it refused
+        status = s.status()
+        got = status["params"][key] if kind == "set_params" else status[key]
+        assert got == value
+        outside = value + abs(value) * 1e-9 if value == lim["max"] else value - abs(value) * 1e-9
+        with pytest.raises(CommandError):
+            parse_command(json.dumps({"type": kind, key: outside}))
+        with pytest.raises(InvalidInputError, match=key):
+            s.core.apply(json.dumps({"type": kind, key: outside}))
+        assert cmd.type == kind

@@ -194,7 +194,7 @@ def test_the_room_budget_is_shared_by_clients_then_by_their_sessions() -> None:
 
 def test_commands_are_carried_out_within_the_budget_and_the_rest_wait() -> None:
     s = Session(resolve_scenario("rosette"))
-    names = ("kepler", "rosette") * 10
+    names = ("damped", "rosette") * 10
     loads = [parse_command(json.dumps({"type": "load_scenario", "name": n})) for n in names]
     carry = tick.Carry()
     tick.tick_messages(s, loads, 1 / 60, 1e-6, carry=carry)

@@ -4,7 +4,7 @@
 //! ([`pack`]: per message a kind byte, 0 frames or 1 JSON text, its length as u32 little-endian, the
 //! bytes). Time is passed in: the seconds elapsed since the last tick and a clock for the budget.
 
-use crate::wire::{error_notice, event_notice, parse_command, setup_from, status};
+use crate::wire::{error_notice, event_notice, keyed_notice, parse_command, setup_from};
 use pendulab_core::live::session::Setup;
 use pendulab_core::live::{Clock, LiveSession, Out};
 use serde_json::Value;
@@ -51,7 +51,7 @@ impl Engine {
     /// What a new connection gets first (status, the current frame), packed.
     pub fn first(&mut self, clock: &dyn Clock) -> Vec<u8> {
         let out = self.session.first_messages(clock);
-        pack(&self.session, &out)
+        pack(&out)
     }
 
     /// One tick: `messages` are the command texts received since the last tick, `elapsed` \[s\] the wall
@@ -60,12 +60,12 @@ impl Engine {
         let setups = &self.setups;
         let commands = messages.iter().map(|m| parse_command(m, &|n| Self::resolve(setups, n))).collect();
         let out = self.session.tick(commands, elapsed, clock, budget, 0);
-        pack(&self.session, &out)
+        pack(&out)
     }
 }
 
 /// The messages `out` as one buffer (the module doc).
-pub fn pack(session: &LiveSession, out: &[Out]) -> Vec<u8> {
+pub fn pack(out: &[Out]) -> Vec<u8> {
     let mut buf = Vec::new();
     let mut put = |kind: u8, bytes: &[u8]| {
         buf.push(kind);
@@ -78,9 +78,12 @@ pub fn pack(session: &LiveSession, out: &[Out]) -> Vec<u8> {
                 let bytes: Vec<u8> = records.iter().flat_map(|r| r.0).flat_map(f64::to_le_bytes).collect();
                 put(KIND_FRAMES, &bytes);
             }
-            Out::Status => put(KIND_JSON, status(session).to_string().as_bytes()),
+            Out::Status(v) => put(KIND_JSON, v.to_string().as_bytes()),
             Out::Error(message, command) => {
                 put(KIND_JSON, error_notice(message, *command).to_string().as_bytes())
+            }
+            Out::Keyed(message, command, key, values) => {
+                put(KIND_JSON, keyed_notice(message, *command, key, values).to_string().as_bytes())
             }
             Out::Event(e, epoch, skipped) => {
                 put(KIND_JSON, event_notice(e, *epoch, *skipped).to_string().as_bytes())

@@ -12,7 +12,8 @@
 pub mod analyses;
 pub mod engine;
 pub mod run;
-pub mod wire;
+/// The wire format, shared with the server (`pendulab_core::live::wire`).
+pub use pendulab_core::live::wire;
 
 use engine::Engine;
 use std::cell::RefCell;

@@ -4,8 +4,8 @@ Needs the ``lab`` extra (``pip install 'pendulab[lab]'``: fastapi, uvicorn, webs
 by ``pendulab serve`` and the tests, so the rest of the package works without it.
 
 - :mod:`.protocol`: frame layout (``frame.json``), the JSON commands (pydantic), encoding.
-- :mod:`.session`: one client's pendulum, stepper and pacing, free of I/O.
-- :mod:`.live_error`: the running motion's global position error in every frame (exact or estimated).
+- :mod:`.session`: one client's lab: the core's live session (``pendulab._core.LiveSession``: pendulum,
+  stepper, pacing, frames and their error estimate), free of I/O.
 - :mod:`.scenarios`: the scenarios a session starts from (examples by name, a file, built in).
 - :mod:`.schema`: ``/api/schema`` (the registry's models and parameters, slider spans).
 - :mod:`.rest`: the computing endpoints (exact solution, V_eff, scenario as TOML).

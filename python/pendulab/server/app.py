@@ -59,7 +59,6 @@ from .._core import InvalidInputError, __version__
 from ..scenario import ScenarioError, load_scenario
 from .access import LOOPBACK_HOSTS, guard
 from .api_docs import api_docs_page
-from .budget import TICK_BUDGET
 from .fit import FIT_OPENAPI, FIT_QUEUE, FIT_WALL_SECONDS, FIT_WORKERS, MAX_FIT_BODY, fit_endpoint
 from .hygiene import RequestBodies, SecurityHeaders
 from .protocol import (
@@ -78,7 +77,7 @@ from .rest import (
 )
 from .room import MAX_SESSIONS_PER_CLIENT, Room, client_key, too_many_requests_detail
 from .schema import TICK_HZ, schema
-from .session import Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
+from .session import TICK_BUDGET, Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
 from .tick import Message, first_messages
 from .ticker import Seat, room_ticker
 from .views import EMRequest, ReducedRequest, em_view, reduced_view

@@ -3,9 +3,9 @@
 **Frames** (server → page): every binary WebSocket message holds one or more *records* of
 :data:`FRAME_FIELDS` as little-endian float64 — ``[t, x1, x2, x3, v1, v2, v3, energy, j3, tension,
 power, a1, a2, a3, pivot1, pivot2, pivot3, taut, error_x]`` in s, m, m/s, J, kg m²/s, N, W, m/s², m, 1,
-m (152 bytes each; ``error_x``: the global position error, −1 while unknown, :mod:`.live_error`). The
-layout is read from ``frame.json`` beside this file,
-which the page's ``web/src/protocol.ts`` imports too, so the two cannot disagree.
+m (152 bytes each; ``error_x``: the global position error, −1 while unknown, docs/web.md "Error
+estimate"). The layout is read from ``frame.json`` beside this file, which the page's
+``web/src/protocol.ts`` imports too, so the two cannot disagree.
 
 **Commands** (page → server): one JSON object per text message, told apart by ``"type"``
 (a pydantic discriminated union, :data:`COMMAND`): ``set_params``, ``set_model``, ``set_state``,
@@ -30,9 +30,9 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
 from .._core import models
-from ..model import State
+from ..model import Pendulum, State
 from ..simulation import method_names
-from .live_models import OWN_STEPPER_MODELS, LabPendulum
+from .live_models import OWN_STEPPER_MODELS
 
 if TYPE_CHECKING:
     from .._core import ModelInfo, ParamSpec
@@ -192,9 +192,8 @@ class StateSpec(_Command):
             raise ValueError("give x and v (m, m/s), or at least theta (rad) with phi, theta_dot, phi_dot")
         return self
 
-    def to_state(self, pendulum: LabPendulum) -> State:
-        """The state for ``pendulum``; ``InvalidInputError`` when it is off TS² (and not projected;
-        the spring has no sphere, the string's slack states lie inside it)."""
+    def to_state(self, pendulum: Pendulum) -> State:
+        """The state for ``pendulum``; ``InvalidInputError`` when it is off TS² (and not projected)."""
         if self.x is not None and self.v is not None:
             return pendulum.state(self.x, self.v, project=self.project)
         return pendulum.state_from_angles(
@@ -392,14 +391,6 @@ def keyed_notice(key: str, command: str | None = None, **values: Any) -> dict[st
 def error_notice_of(e: CommandError) -> dict[str, Any]:
     """The ``error`` notice of a refused command (keyed when the error is)."""
     return error_notice(str(e), e.command, e.key, e.values)
-
-
-def check_model_params(model: str, names: Any) -> None:
-    """:class:`CommandError` when ``names`` are not all parameters of ``model`` (the message lists them)."""
-    try:
-        _check_param_names(model, names)
-    except ValueError as e:
-        raise CommandError(str(e), command="set_params") from None
 
 
 def error_notice(

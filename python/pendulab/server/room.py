@@ -11,7 +11,7 @@ carries the same token, so the token cannot tell them apart). :class:`Room` keep
 - the share of the room's stepping budget per tick (:meth:`Room.share`): :data:`ROOM_BUDGET` seconds of
   wall time per tick are split equally between the clients with open sessions, and a client's share
   equally between its sessions, each session's share at most one tick's
-  :data:`~pendulab.server.budget.TICK_BUDGET`. A page that needs less than its share (the usual
+  :data:`~pendulab.server.session.TICK_BUDGET`. A page that needs less than its share (the usual
   case) leaves it unused; a greedy one lags (``status.lagging``) instead of slowing the others, however
   many sessions it opens. Commands such as ``load_scenario`` are carried out within the same share
   (:func:`pendulab.server.tick.tick_messages`).
@@ -29,7 +29,7 @@ import time
 from collections.abc import AsyncIterator
 from typing import Any
 
-from .budget import TICK_BUDGET
+from .session import TICK_BUDGET
 
 MAX_SESSIONS_PER_CLIENT = 8
 """Default for the most lab sessions (WebSockets) one client (address) may hold open: a pupil with a

@@ -1,25 +1,27 @@
-"""One lab session: a pendulum, an incremental :class:`pendulab.Stepper` and the pacing, without any I/O.
+"""One lab session: the core's live session (``pendulab._core.LiveSession``, ``crates/pendulab-core/src/
+live``) with what only the server has — scenarios read from files, resolved by name (never a path).
 
-The WebSocket handler (:mod:`pendulab.server.app`) owns one :class:`Session` per client, calls
-:meth:`Session.apply` for each validated command and :meth:`Session.advance` once per tick with the
-wall-clock time elapsed; both return what to send (frame records, JSON notices). Keeping this free
-of asyncio and sockets makes it testable on its own and keeps the physics in the core: the session
-only decides *how far* to step, the core steps.
+The live-session logic lives once, in Rust, and the page's own engine (WebAssembly, ``crates/
+pendulab-wasm``) runs the same code: the pendulum of any lab model and its stepper (the rod models,
+the swinging spring T-7.4, the string), the pacing by the wall clock × time scale in slices within a
+per-tick wall-time budget, the frame records (``frame.json``: energy T-2.6, J₃, tension T-2.3,
+power T-7.1, acceleration T-2.2), the error estimate in every record (exact T-4.x for the ideal
+pendulum, else a companion run: docs/web.md, "Error estimate"), the commands, one tick's messages
+and the ``status`` notice. This module converts what crosses the border: a scenario as the JSON of
+``GET /api/scenarios`` (:func:`describe`, with rtol and atol), a validated command (pydantic,
+:mod:`.protocol`) as its JSON, ``load_scenario`` as the scenario it names, and the messages back as
+``bytes`` (frame records) and dicts (JSON notices).
 
-Pacing: while running, the simulated time advances by (wall-clock seconds elapsed) × ``time_scale``.
-Fixed-step methods take whole steps of exactly ``dt`` (``Stepper.step(n)``), so a live run is the
-same sequence of steps as ``pl.simulate`` with that ``dt`` — the frames show the method's true long-time
-behaviour; the adaptive ``dop853`` lands on the target times with ``step_to``. Each tick sends up to
-:data:`MAX_SUBSAMPLES` records spread over the tick's simulated interval (more when faster than real
-time, so trails and plots stay smooth). A tick's stepping — a ``step`` command's n steps and the
-advance — shares one wall-time budget (:mod:`.budget`): the core is called in slices until the work is
-done or the budget spent; then the simulation runs slower than asked and ``status.lagging`` says so
-(a ``step`` of many steps goes on at the next ticks, its frame sent when done).
+Pacing (docs/web.md, "Pacing"): while running, the simulated time advances by (wall-clock seconds
+elapsed) × ``time_scale``; fixed-step methods take whole steps of exactly ``dt``, so a live run is the
+same sequence of steps as ``pl.simulate`` with that ``dt``; ``dop853`` lands on the target times. A
+tick sends up to :data:`MAX_SUBSAMPLES` records; out of budget the simulation runs slower than asked
+and ``status.lagging`` says so. Times in seconds, SI units throughout.
 """
 
 from __future__ import annotations
 
-import math
+import json
 import tomllib
 from collections.abc import Callable
 from typing import Any
@@ -27,98 +29,34 @@ from typing import Any
 import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
+from .._core import LiveSession as _LiveSession
 from ..model import Pendulum, State
 from ..scenario import ScenarioError
-from ..simulation import Stepper, methods
-from .budget import Budget, Slicer
-from .live_error import UNKNOWN, LiveError
-from .live_models import (
-    DEFAULT_METHOD,
-    OWN_STEPPER_MODELS,
-    LabPendulum,
-    OwnStepper,
-    carry_state,
-    lab_pendulum,
-    methods_for,
-    own_stepper,
-)
-from .protocol import (
-    FRAME_FIELDS,
-    RECORD_LEN,
-    Command,
-    CommandError,
-    LoadScenario,
-    Pause,
-    Reset,
-    Resume,
-    SetMethod,
-    SetModel,
-    SetParams,
-    SetState,
-    SetTimeScale,
-    Step,
-    check_model_params,
-    event_notice,
-    own_params,
-)
+from .live_models import LabPendulum, SpringPendulum
+from .protocol import Command, CommandError, LoadScenario, decode_records, error_notice_of, own_params
 from .scenarios import Setup, example_resolver, resolve_scenario, scenario_files
 
 __all__ = ["Session", "Setup", "example_resolver", "model_params", "resolve_scenario", "scenario_files"]
 
-MAX_PENDING_STEPS = 1_000_000
-"""Most steps of ``step`` commands waiting to be taken; a ``step`` beyond is refused (it would keep the
-session busy for long)."""
+TICK_BUDGET: float = _LiveSession.TICK_BUDGET
+"""Wall-clock seconds one session may step per tick (a tick is 1/60 s ≈ 16.7 ms)."""
 
-MAX_SUBSAMPLES = 16
+MAX_PENDING_STEPS: int = _LiveSession.MAX_PENDING_STEPS
+"""Most steps of ``step`` commands waiting to be taken; a ``step`` beyond is refused."""
+
+MAX_SUBSAMPLES: int = _LiveSession.MAX_SUBSAMPLES
 """Most frame records sent per tick."""
 
-MAX_ELAPSED = 0.1
+MAX_ELAPSED: float = _LiveSession.MAX_ELAPSED
 """Longest wall-clock interval [s] one tick catches up on (after a stall the run resumes, not jumps)."""
 
-MAX_EVENT_NOTICES = 16
-"""Most ``event`` notices sent per tick (the latest ones; each says how many earlier were skipped):
-a fast bouncing string at a high time scale cannot flood the page."""
+MAX_EVENT_NOTICES: int = _LiveSession.MAX_EVENT_NOTICES
+"""Most ``event`` notices sent per tick (the latest; each says how many earlier were skipped)."""
 
-_SCALAR = {
-    name: FRAME_FIELDS.index(name) for name in ("t", "energy", "j3", "tension", "power", "taut", "error_x")
-}
-_VECTOR = {name: FRAME_FIELDS.index(f"{name}1") for name in ("x", "v", "a", "pivot")}
+Message = dict[str, Any] | bytes
+"""A JSON notice (dict) or a binary frame message (bytes)."""
 
-
-def state_records(pendulum: Pendulum, t: np.ndarray, x: np.ndarray, v: np.ndarray) -> np.ndarray:
-    """Frame records (N, RECORD_LEN) of states x [m], v [m/s] at times t [s]: the core's diagnostics at
-    those times (time-dependent models: forcing, moving pivot), the acceleration ẍ [m/s²] relative to
-    the pivot (m ẍ is the net force there) and the pivot's position [m] (0 for a fixed pivot); ``taut``
-    is 1 (the bob is on the sphere); ``error_x`` unknown until :meth:`Session.fill_errors`."""
-    diag = pendulum.diagnostics(x, v, t)
-    rec = np.zeros((len(t), RECORD_LEN))
-    rec[:, _SCALAR["t"]] = t
-    rec[:, _SCALAR["taut"]] = 1.0
-    rec[:, _SCALAR["error_x"]] = UNKNOWN
-    for name in ("energy", "j3", "tension", "power"):
-        rec[:, _SCALAR[name]] = diag[name]
-    for name, values in (("x", x), ("v", v), ("a", diag["acceleration"]), ("pivot", diag.get("pivot"))):
-        if values is not None:
-            rec[:, _VECTOR[name] : _VECTOR[name] + 3] = values
-    return rec
-
-
-def own_record(stepper: OwnStepper) -> np.ndarray:
-    """The frame record (RECORD_LEN,) of the spring's or the string's stepper at its current state:
-    the core's energy, J₃, tension (the spring's k(|r| − l₀); the string's, 0 while slack) and
-    acceleration; power 0 (both conservative between the string's snaps), pivot 0; ``taut`` 0 while the
-    string is slack; ``error_x`` unknown until :meth:`Session.fill_errors`."""
-    d = stepper.diagnostics()
-    s = stepper.state
-    rec = np.zeros(RECORD_LEN)
-    rec[_SCALAR["t"]] = stepper.t
-    for name in ("energy", "j3", "tension"):
-        rec[_SCALAR[name]] = d[name]
-    rec[_SCALAR["taut"]] = 1.0 if d["taut"] else 0.0
-    rec[_SCALAR["error_x"]] = UNKNOWN
-    for name, values in (("x", s.x), ("v", s.v), ("a", d["acceleration"])):
-        rec[_VECTOR[name] : _VECTOR[name] + 3] = values
-    return rec
+_LOAD_ERRORS = (InvalidInputError, ScenarioError, tomllib.TOMLDecodeError, OSError)
 
 
 def model_params(pendulum: LabPendulum) -> dict[str, float]:
@@ -145,25 +83,21 @@ def describe(setup: Setup) -> dict[str, Any]:
     }
 
 
-def rebuild(pendulum: LabPendulum, **changes: Any) -> LabPendulum:
-    """The same model with some of length [m], mass [kg], g [m/s²] or its own parameters changed
-    (``model=`` switches the model: its own parameters start from the registry's defaults)."""
-    model = changes.pop("model", None) or pendulum.model
-    common = {k: changes.pop(k, None) for k in ("length", "mass", "g")}
-    own = model_params(pendulum) if model == pendulum.model else {}
-    own |= {p["name"]: float(p["default"]) for p in own_params(model) if p["name"] not in own}
-    own |= {k: float(v) for k, v in changes.items()}
-    return lab_pendulum(
-        pendulum.length if common["length"] is None else common["length"],
-        pendulum.g if common["g"] is None else common["g"],
-        pendulum.mass if common["mass"] is None else common["mass"],
-        model,
-        **own,
-    )
+def setup_json(setup: Setup) -> str:
+    """The JSON of a setup as the core's live session reads it: :func:`describe` with the tolerances."""
+    return json.dumps(describe(setup) | {"rtol": setup.rtol, "atol": setup.atol})
+
+
+def _records(data: bytes | None) -> np.ndarray | None:
+    return None if not data else decode_records(data)
+
+
+def _message(m: bytes | str) -> Message:
+    return m if isinstance(m, bytes) else json.loads(m)
 
 
 class Session:
-    """The state of one client's lab. Not thread-safe: one owner calls :meth:`apply` and :meth:`advance`.
+    """One client's lab (module doc). Not thread-safe: one owner ticks it.
 
     ``exact_error=False`` estimates the ideal pendulum's error with a companion too, as for the other
     models, instead of taking the true error from the exact solution (for tests of the estimate)."""
@@ -172,318 +106,184 @@ class Session:
         self, setup: Setup, resolve: Callable[[str], Setup] | None = None, *, exact_error: bool = True
     ) -> None:
         self._resolve = resolve or example_resolver(setup)
-        self.time_scale = 1.0
-        self.paused = False
-        self.epoch = 0
-        self.lagging = False
-        self.pending_steps = 0
-        self._slicer = Slicer()
-        self._adaptive = {m["name"]: bool(m["adaptive"]) for m in methods()}
-        self._events: list[tuple[dict[str, Any], int]] = []
-        self.exact_error = exact_error
-        self.commands = 0  # command messages handled (applied, refused or dropped): status.commands
-        self._load(setup)
+        self._setups: dict[str, str] = {}  # scenarios resolved by name (their JSON), each read once
+        self.core = _LiveSession(setup_json(setup), exact_error)
 
-    # --- set-up ---
+    # --- what crosses the border ---
 
-    def _load(self, setup: Setup) -> None:
-        self.scenario = setup.name
-        self.title = setup.title
-        self.pendulum = setup.pendulum
-        self.method, self.dt, self.rtol, self.atol = setup.method, setup.dt, setup.rtol, setup.atol
-        self.t0 = setup.t0
-        self._set_start(setup.state)
-        self._new_stepper(setup.state, setup.t0)
+    def _setup(self, name: str) -> str:
+        if name not in self._setups:
+            self._setups[name] = setup_json(self._resolve(name))
+        return self._setups[name]
 
-    def _set_start(self, state: State) -> None:
-        self._start, self._start_length = state, self.pendulum.length
+    def _item(self, cmd: Command | CommandError) -> str | tuple[Any, ...]:
+        """A parsed command as the core's tick takes it: its JSON, or for ``load_scenario`` the
+        scenario it names; :class:`CommandError` for a refused message or an unknown scenario."""
+        if isinstance(cmd, CommandError):
+            raise cmd
+        if isinstance(cmd, LoadScenario):
+            try:
+                return ("setup", self._setup(cmd.name))
+            except _LOAD_ERRORS as e:
+                raise CommandError(" ".join(str(e).split()), command=cmd.type) from None
+        return cmd.model_dump_json(exclude_none=True)
 
-    def _start_state(self) -> State:
-        """The start for the current pendulum: after a length change, the same angles and angular rates."""
-        ell = self.pendulum.length
-        if ell == self._start_length:
-            return self._start
-        k = ell / self._start_length
-        return carry_state(self.pendulum, np.array(self._start.x) * k, np.array(self._start.v) * k)
+    def tick(
+        self,
+        commands: list[Any],
+        elapsed: float,
+        budget_seconds: float = TICK_BUDGET,
+        dropped: int = 0,
+        debt: float | None = None,
+    ) -> tuple[list[Message], list[Any], float | None]:
+        """One tick in the core (``LiveSession.tick``, the interpreter lock released while it steps):
+        the messages to send, the commands left for a later tick and the debt [s] (see
+        :class:`~.tick.Carry`; with ``debt`` None every command is carried out). Refused messages
+        (:class:`CommandError`, keyed for a page that translates them) and unknown scenarios are
+        answered first, counted with ``dropped`` (each gets a status after it, as a command does)."""
+        refused: list[Message] = []
+        items, passed = [], []
+        for c in commands:
+            try:
+                items.append(self._item(c))
+                passed.append(c)
+            except CommandError as e:
+                refused.append(error_notice_of(e))
+        raw, taken, debt = self.core.tick(items, elapsed, budget_seconds, dropped + len(refused), debt)
+        return refused + [_message(m) for m in raw], passed[taken:], debt
 
-    def _new_stepper(self, state: State, t: float, pendulum: LabPendulum | None = None) -> None:
-        """A stepper from ``state`` at ``t``; with ``pendulum``, that pendulum replaces the current one
-        only once its stepper exists (a method refusing the model leaves the session unchanged). The
-        spring and the string step with their own core steppers (:mod:`.live_models`)."""
-        self._collect_events()  # the old stepper's events keep their epoch
-        p = self.pendulum if pendulum is None else pendulum
-        self.stepper: Stepper | OwnStepper = self._make_stepper(p, state, t, {"dt": self.dt})
-        self.pendulum = p
-        self.clock = t
-        self.pending_steps = 0  # a `step` still under way belonged to the stepper replaced
-        self._slicer.reset()
-        options = {"dt": self.dt, "rtol": self.rtol, "atol": self.atol}
-        self.error = LiveError(
-            p,
-            state,
-            t,
-            self.method,
-            options,
-            self.adaptive,
-            lambda ref: self._make_stepper(p, state, t, options | ref),
-            exact=self.exact_error,
-        )
-
-    def _make_stepper(
-        self, p: LabPendulum, state: State, t: float, options: dict[str, float]
-    ) -> Stepper | OwnStepper:
-        """A stepper of ``p`` from ``state`` at ``t`` with the session's method and ``options`` (dt [s],
-        and rtol, atol for ``dop853``; the session's own where not given)."""
-        dt = float(options.get("dt", self.dt))
-        if p.model in OWN_STEPPER_MODELS:
-            return own_stepper(p, state, self.method, dt, t)
-        assert isinstance(p, Pendulum)
-        rtol, atol = options.get("rtol", self.rtol), options.get("atol", self.atol)
-        dt = 0.0 if self.adaptive else dt
-        return Stepper(p, state, method=self.method, dt=dt, rtol=rtol, atol=atol, t0=t)
-
-    def fill_errors(self, records: np.ndarray | None, budget: Budget) -> None:
-        """Sets the ``error_x`` column [m] of the current stepper's ``records`` (:mod:`.live_error`):
-        the companion steps only within what is left of ``budget``."""
-        self.error.fill(records, budget)
-
-    @property
-    def adaptive(self) -> bool:
-        """True when the method chooses its own steps (``dop853``)."""
-        return self._adaptive[self.method]
-
-    # --- what is sent ---
-
-    def records(self) -> np.ndarray:
-        """The current state as one frame record, shape (1, RECORD_LEN)."""
-        if not isinstance(self.stepper, Stepper):
-            return own_record(self.stepper)[None, :]
-        s = self.stepper.state
-        return state_records(self.pendulum, np.array([self.stepper.t]), s.x[None, :], s.v[None, :])
+    def first_messages(self) -> list[Message]:
+        """What a new connection gets first: the status and the current state's frame."""
+        return [_message(m) for m in self.core.first_messages()]
 
     def status(self) -> dict[str, Any]:
         """The JSON ``status`` notice: everything the page needs to show and to encode in its URL."""
-        start = self._start_state()
-        p = self.pendulum
-        return {
-            "type": "status",
-            "epoch": self.epoch,
-            "scenario": self.scenario,
-            "title": self.title,
-            "paused": self.paused,
-            "time_scale": self.time_scale,
-            "method": self.method,
-            "adaptive": self.adaptive,
-            "dt": self.dt,
-            "params": {"length": p.length, "mass": p.mass, "g": p.g},
-            "model": p.model,
-            "model_params": model_params(p),
-            "t": self.stepper.t,
-            "t0": self.t0,
-            "start": {"x": [float(c) for c in start.x], "v": [float(c) for c in start.v]},
-            "lagging": self.lagging,
-            "error_estimate": self.error.describe(),
-            "commands": self.commands,
-            "frame_fields": list(FRAME_FIELDS),
-        }
+        return json.loads(self.core.status())
 
-    def _collect_events(self) -> None:
-        take = getattr(getattr(self, "stepper", None), "take_events", None)
-        if take is not None:
-            self._events.extend((e, self.epoch) for e in take())
-
-    def take_event_notices(self) -> list[dict[str, Any]]:
-        """The JSON ``event`` notices of the string's leaves and snaps (the core's
-        ``StringStepper.take_events()``) since the last call, oldest first: at most
-        :data:`MAX_EVENT_NOTICES`, the latest, each counting the earlier ones it skipped. Empty for the
-        other models."""
-        self._collect_events()
-        events, self._events = self._events, []
-        skipped = max(0, len(events) - MAX_EVENT_NOTICES)
-        return [event_notice(e, epoch, skipped) for e, epoch in events[skipped:]]
-
-    # --- commands ---
+    # --- one part of a tick at a time (tests, tools) ---
 
     def apply(self, cmd: Command) -> np.ndarray | None:
-        """Carries out one command; returns frame records to send at once (or None).
-
-        Raises :class:`CommandError` when the command is valid JSON but cannot be carried out here
-        (unknown scenario, a state off TS², …); the session is then unchanged.
-        """
+        """Carries out one command; the frame record to send at once (or None). :class:`CommandError`
+        when it cannot be carried out here (unknown scenario, a state off TS², …): the session is then
+        unchanged (an integration that cannot go on pauses it)."""
+        item = self._item(cmd)
         try:
-            return self._apply(cmd)
-        except (InvalidInputError, ScenarioError, tomllib.TOMLDecodeError, OSError) as e:
+            return _records(self.core.apply(item))
+        except (InvalidInputError, IntegrationError) as e:
             raise CommandError(" ".join(str(e).split()), command=cmd.type) from None
-        except IntegrationError as e:
-            self.paused = True
-            raise CommandError(
-                f"integration stopped: {e}; paused", cmd.type, "integration_stopped", {"detail": str(e)}
-            ) from None
 
-    def _apply(self, cmd: Command) -> np.ndarray | None:
-        match cmd:
-            case SetParams():
-                p = self.pendulum
-                check_model_params(p.model, cmd.params or {})
-                new = rebuild(p, length=cmd.length, mass=cmd.mass, g=cmd.g, **(cmd.params or {}))
-                s, k = self.stepper.state, new.length / p.length
-                state = new.state(np.array(s.x) * k, np.array(s.v) * k, project=True)
-                self._new_stepper(state, self.stepper.t, new)
-                self.epoch += 1
-                return self.records()
-            case SetModel():
-                new = rebuild(self.pendulum, model=cmd.model, **cmd.params)
-                s = self.stepper.state
-                old = self.method
-                allowed = methods_for(cmd.model)
-                if allowed is not None and self.method not in allowed:
-                    self.method = DEFAULT_METHOD  # the spring and the string run the RATTLE family
-                try:
-                    self._new_stepper(carry_state(new, s.x, s.v), self.stepper.t, new)
-                except Exception:
-                    self.method = old
-                    raise
-                self.epoch += 1
-                return self.records()
-            case SetState():
-                state = cmd.to_state(self.pendulum)
-                self._new_stepper(state, self.stepper.t)
-                self._set_start(state)
-                self.epoch += 1
-                return self.records()
-            case SetMethod():
-                old = (self.method, self.dt)
-                self.method = cmd.method or self.method
-                self.dt = cmd.dt or self.dt
-                try:
-                    self._new_stepper(self.stepper.state, self.stepper.t)
-                except Exception:
-                    self.method, self.dt = old
-                    raise
-                return None
-            case SetTimeScale():
-                self.time_scale = cmd.time_scale
-                return None
-            case Pause():
-                self.paused = True
-                return None
-            case Resume():
-                self.paused = False
-                self.pending_steps = 0
-                self.clock = self.stepper.t
-                return None
-            case Step():
-                if self.pending_steps + cmd.n > MAX_PENDING_STEPS:
-                    raise CommandError(
-                        f"still stepping: {self.pending_steps} steps are waiting to be taken (at most "
-                        f"{MAX_PENDING_STEPS}); wait for the frame, or pause",
-                        command="step",
-                    )
-                self.paused = True
-                self.pending_steps += cmd.n  # taken within the tick's budget (take_pending_steps)
-                return None
-            case Reset():
-                self._new_stepper(self._start_state(), self.t0)
-                self.epoch += 1
-                return self.records()
-            case LoadScenario():
-                self._load(self._resolve(cmd.name))
-                self.epoch += 1
-                return self.records()
-        raise CommandError(f"command {cmd.type!r} is not handled")  # pragma: no cover - exhaustive
-
-    # --- pacing ---
-
-    def take_pending_steps(self, budget: Budget) -> np.ndarray | None:
-        """Takes the waiting steps of ``step`` commands within ``budget``; the frame record of the state
-        reached (None when none were waiting). Raises :class:`CommandError` (command ``step``) and
-        pauses when the integration cannot go on."""
-        if self.pending_steps <= 0:
-            return None
+    def advance(self, elapsed: float, budget_seconds: float = TICK_BUDGET) -> np.ndarray | None:
+        """Advances by ``elapsed`` wall-clock seconds × time_scale within ``budget_seconds``; the records
+        reached (None: none; ``error_x`` unknown). :class:`CommandError` when the integration stops."""
         try:
-            self.pending_steps -= self._slicer.steps(self.stepper.step, self.pending_steps, budget)
-        except IntegrationError as e:
-            self.pending_steps = 0
-            raise CommandError(
-                f"integration stopped at t = {self.stepper.t:g} s: {e}; paused",
-                "step",
-                "integration_stopped",
-                {"detail": str(e)},
-            ) from None
-        self.clock = self.stepper.t
-        return self.records()
+            return _records(self.core.advance(elapsed, budget_seconds))
+        except (InvalidInputError, IntegrationError) as e:
+            raise CommandError(str(e)) from None
 
-    def advance(self, elapsed: float, budget: Budget | None = None) -> np.ndarray | None:
-        """Advances by ``elapsed`` wall-clock seconds × time_scale within ``budget`` (default: a new
-        :class:`Budget` of one tick); the records to send (or None). Out of budget, it stops where it
-        got to and sets ``lagging``.
-
-        Raises :class:`CommandError` (command None) and pauses when the integration cannot go on.
-        """
-        if self.paused:
-            return None
-        budget = Budget() if budget is None else budget
-        elapsed = min(max(float(elapsed), 0.0), MAX_ELAPSED)
-        t = self.stepper.t
-        self.clock = max(self.clock, t) + elapsed * self.time_scale
-        n_sub = max(1, min(MAX_SUBSAMPLES, math.ceil(self.time_scale - 1e-9)))
+    def take_pending_steps(self, budget_seconds: float = TICK_BUDGET) -> np.ndarray | None:
+        """Takes the waiting steps of ``step`` commands within ``budget_seconds``; the record reached."""
         try:
-            if self.adaptive:
-                targets = [t + (self.clock - t) * (i + 1) / n_sub for i in range(n_sub)]
-                stepper = self.stepper
-                assert isinstance(stepper, Stepper)
+            return _records(self.core.take_pending_steps(budget_seconds))
+        except (InvalidInputError, IntegrationError) as e:
+            raise CommandError(str(e), command="step") from None
 
-                def to_target(k: int) -> bool:
-                    target = targets[k]
+    def fill_errors(self, records: np.ndarray, budget_seconds: float = TICK_BUDGET) -> np.ndarray:
+        """``records`` (the current stepper's, in time order) with ``error_x`` [m] filled within
+        ``budget_seconds`` (−1 where the estimate did not get there)."""
+        data = np.ascontiguousarray(records, dtype="<f8").tobytes()
+        out = _records(self.core.fill_errors(data, budget_seconds))
+        return np.empty((0, records.shape[-1])) if out is None else out
 
-                    def capped(cap: int) -> bool:
-                        stepper.step_to(target, max_steps=cap)
-                        return stepper.t >= target
+    def take_event_notices(self) -> list[dict[str, Any]]:
+        """The JSON ``event`` notices of the string's leaves and snaps since the last call, oldest
+        first: at most :data:`MAX_EVENT_NOTICES`, the latest, each counting the earlier ones it skipped."""
+        return [json.loads(m) for m in self.core.take_event_notices()]
 
-                    return self._slicer.until(capped, budget)
+    def records(self) -> np.ndarray:
+        """The current state as one frame record, shape (1, RECORD_LEN) (``error_x`` unknown)."""
+        out = _records(self.core.record())
+        assert out is not None
+        return out
 
-                return self._sample(to_target, n_sub)
-            n = math.floor((self.clock - t) / self.dt + 1e-9)
-            if n <= 0:
-                self.lagging = False
-                return None
-            n_sub = min(n_sub, n)
-            bounds = [round(n * (i + 1) / n_sub) for i in range(n_sub)]
-            steps = [b - a for a, b in zip([0, *bounds[:-1]], bounds, strict=True)]
-            return self._sample(
-                lambda k: self._slicer.steps(self.stepper.step, steps[k], budget) == steps[k], n_sub
-            )
-        except IntegrationError as e:
-            self.paused = True
-            raise CommandError(
-                f"integration stopped at t = {self.stepper.t:g} s: {e}; paused",
-                key="integration_stopped",
-                values={"detail": str(e)},
-            ) from None
+    # --- state ---
 
-    def _sample(self, advance: Callable[[int], bool], n: int) -> np.ndarray:
-        """Records of the states after ``advance(k)`` for k < n; ``advance`` returns False when the
-        budget ran out first: the records stop there, the session lags (its clock is set back to
-        where the stepper got, so the missing time is not piled up)."""
-        done = True
-        taken = 0
-        ts = np.empty(n)
-        xs = np.empty((n, 3))
-        vs = np.empty((n, 3))
-        rows = []
-        for k in range(n):
-            done = advance(k)
-            if isinstance(self.stepper, Stepper):
-                s = self.stepper.state
-                ts[taken], xs[taken], vs[taken] = self.stepper.t, s.x, s.v
-            else:
-                rows.append(own_record(self.stepper))
-            taken += 1
-            if not done:
-                break
-        self.lagging = not done
-        if not done:
-            self.clock = self.stepper.t
-        if not isinstance(self.stepper, Stepper):
-            return np.vstack(rows)
-        return state_records(self.pendulum, ts[:taken], xs[:taken], vs[:taken])
+    @property
+    def state(self) -> State:
+        """The state reached (x [m], v [m/s])."""
+        return State(self.core.x, self.core.v)
+
+    @property
+    def pendulum(self) -> LabPendulum:
+        """The current pendulum, as the status describes it (l [m], m [kg], g [m/s²], model and its own
+        parameters): a new object."""
+        st = self.status()
+        p, own = st["params"], st["model_params"]
+        if st["model"] == "spring":
+            return SpringPendulum(p["length"], p["g"], p["mass"], own["stiffness"])
+        return Pendulum(length=p["length"], mass=p["mass"], g=p["g"], model=st["model"], **own)
+
+    @property
+    def error_start(self) -> tuple[float, State]:
+        """The time [s] and state the error estimate counts from."""
+        t0, x, v = self.core.error_start
+        return t0, State(x, v)
+
+    @property
+    def t(self) -> float:
+        """Time reached [s]."""
+        return self.core.t
+
+    @property
+    def clock(self) -> float:
+        """The simulated time [s] the pacing aims at."""
+        return self.core.clock
+
+    @property
+    def paused(self) -> bool:
+        """Paused."""
+        return self.core.paused
+
+    @property
+    def epoch(self) -> int:
+        """Discontinuities so far (reset, new state, parameters, model, scenario)."""
+        return self.core.epoch
+
+    @property
+    def lagging(self) -> bool:
+        """Out of budget in the last advance."""
+        return self.core.lagging
+
+    @property
+    def pending_steps(self) -> int:
+        """Steps of ``step`` commands waiting."""
+        return self.core.pending_steps
+
+    @property
+    def commands(self) -> int:
+        """Command messages handled (applied, refused or dropped): ``status.commands``."""
+        return self.core.commands
+
+    @property
+    def scenario(self) -> str | None:
+        """Scenario name."""
+        return self.core.scenario
+
+    @property
+    def model(self) -> str:
+        """The model's registry name."""
+        return self.core.model
+
+    @property
+    def method(self) -> str:
+        """The method's name."""
+        return self.core.method
+
+    @property
+    def dt(self) -> float:
+        """Step [s]."""
+        return self.core.dt
+
+    @property
+    def time_scale(self) -> float:
+        """Simulated seconds per wall-clock second."""
+        return self.core.time_scale

@@ -31,9 +31,8 @@ from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from typing import Any
 
-from .budget import TICK_BUDGET
 from .protocol import keyed_notice
-from .session import Session
+from .session import TICK_BUDGET, Session
 from .tick import Carry, Message, tick_messages
 
 log = logging.getLogger("pendulab.server")

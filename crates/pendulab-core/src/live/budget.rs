@@ -5,13 +5,17 @@
 //! Worker or a monotonic clock on a server. A [`Budget`] is a deadline on that clock; a [`Slicer`]
 //! calls the steppers in slices of about [`SLICE_TIME`] seconds, sized from the steps per second it
 //! measured on earlier slices, and checks the budget between slices, so a tick overruns its budget by
-//! at most one slice. The same constants as the Python server's `pendulab.server.budget`.
+//! at most one slice; a small budget (a session's share of a full room) is sliced finer. The Python
+//! server drives this code through the bindings (`pendulab._core.LiveSession`).
 //! Units: seconds \[s\] throughout.
 
 /// Wall-clock seconds one session may step per tick (a tick is 1/60 s ≈ 16.7 ms).
 pub const TICK_BUDGET: f64 = 0.006;
 /// Wall-clock seconds one call into a stepper aims at (the granularity of the budget).
 pub const SLICE_TIME: f64 = 0.0005;
+/// Shortest slice \[s\]: a small budget (a session's share of a full room) is spent in slices of half
+/// of it, at most [`SLICE_TIME`], at least this.
+pub const MIN_SLICE_TIME: f64 = 0.00002;
 /// Steps of the first slice of a new stepper (before its speed is known).
 pub const FIRST_SLICE: u64 = 64;
 /// Most steps of one slice.
@@ -29,16 +33,23 @@ impl<F: Fn() -> f64> Clock for F {
     }
 }
 
-/// A deadline on a [`Clock`]: `seconds` from when it was made.
+/// A deadline on a [`Clock`]: `seconds` from when it was made, spent in slices of `slice` seconds.
 pub struct Budget<'c> {
     clock: &'c dyn Clock,
     deadline: f64,
+    slice: f64,
 }
 
 impl<'c> Budget<'c> {
     /// A budget of `seconds` \[s\] from now on `clock`.
     pub fn new(clock: &'c dyn Clock, seconds: f64) -> Self {
-        Self { clock, deadline: clock.now() + seconds }
+        let slice = (0.5 * seconds).clamp(MIN_SLICE_TIME, SLICE_TIME);
+        Self { clock, deadline: clock.now() + seconds, slice }
+    }
+
+    /// Seconds \[s\] one slice aims at: half the budget, between [`MIN_SLICE_TIME`] and [`SLICE_TIME`].
+    pub fn slice(&self) -> f64 {
+        self.slice
     }
 
     /// True once the deadline has passed.
@@ -70,10 +81,10 @@ impl Slicer {
         self.rate = None;
     }
 
-    fn size(&self, most: u64) -> u64 {
+    fn size(&self, most: u64, budget: &Budget<'_>) -> u64 {
         let n = match self.rate {
             None => FIRST_SLICE,
-            Some(r) => (r * SLICE_TIME) as u64,
+            Some(r) => (r * budget.slice) as u64,
         };
         n.min(MAX_SLICE).min(most).max(1)
     }
@@ -96,7 +107,7 @@ impl Slicer {
     ) -> Result<u64, E> {
         let mut taken = 0;
         while taken < n {
-            let k = self.size(n - taken);
+            let k = self.size(n - taken, budget);
             let t0 = budget.now();
             step(k)?;
             self.learn(k, budget.now() - t0);
@@ -116,7 +127,7 @@ impl Slicer {
         budget: &Budget<'_>,
     ) -> Result<bool, E> {
         loop {
-            let k = self.size(MAX_SLICE);
+            let k = self.size(MAX_SLICE, budget);
             let t0 = budget.now();
             let reached = step_to(k)?;
             if reached {
@@ -155,10 +166,16 @@ mod tests {
         // 6000 steps fit the budget; the overrun is at most one slice of SLICE_TIME (500 steps)
         assert!((6000..=6500).contains(&taken), "{taken}");
         // 1e6 steps/s × SLICE_TIME (up to the round-off of the clock's differences)
-        let size = slicer.size(u64::MAX);
+        let size = slicer.size(u64::MAX, &budget);
         assert!((499..=500).contains(&size), "{size}");
-        // a budget already spent still takes one slice
+        // a small budget (a share of a full room): slices of half of it, at least MIN_SLICE_TIME
+        assert_eq!(Budget::new(&clock, 1e-4).slice(), 5e-5);
+        assert_eq!(Budget::new(&clock, 1e-6).slice(), MIN_SLICE_TIME);
+        let small = slicer.size(u64::MAX, &Budget::new(&clock, 1e-4));
+        assert!((49..=50).contains(&small), "{small}");
+        // a budget already spent still takes one slice (of MIN_SLICE_TIME: 20 steps)
         let spent = Budget::new(&clock, 0.0);
-        assert_eq!(slicer.steps(|_| Ok::<(), ()>(()), 10_000, &spent).unwrap(), size);
+        let one = slicer.steps(|_| Ok::<(), ()>(()), 10_000, &spent).unwrap();
+        assert!((19..=20).contains(&one), "{one}");
     }
 }

@@ -67,6 +67,8 @@ pub enum Reference {
 pub struct LiveError {
     /// Start time \[s\]: the error is counted from here.
     pub t0: f64,
+    /// The start state (x \[m\], v [m/s]) the error is counted from.
+    pub start: State,
     /// How (None: no estimate; `note` says why).
     pub how: Option<How>,
     /// The method's order (Richardson).
@@ -99,6 +101,7 @@ impl LiveError {
     ) -> Self {
         let mut e = LiveError {
             t0,
+            start,
             how: None,
             order: None,
             reference: Reference::None,

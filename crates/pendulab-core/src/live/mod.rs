@@ -4,19 +4,21 @@
 //! error estimate that travels with them (exact T-4.x for the ideal pendulum, else a companion run),
 //! the commands and one tick's messages. No threads and no clock of its own: the caller passes in the
 //! wall-clock time elapsed and a [`budget::Clock`], so the same code runs in the Python server's worker
-//! threads and in a browser's Web Worker as WebAssembly (`crates/pendulab-wasm`). SI units throughout.
+//! threads (`pendulab._core.LiveSession`) and in a browser's Web Worker as WebAssembly (`crates/pendulab-wasm`). SI units throughout.
 //!
 //! - [`budget`]: [`budget::Clock`], [`budget::Budget`], [`budget::Slicer`].
 //! - [`frame`]: the record layout (`frame.json`) and the records of states.
 //! - [`pendulum`]: [`pendulum::LivePendulum`] (a lab model by registry name) and [`pendulum::LiveStepper`].
 //! - [`error`]: [`error::LiveError`], the `error_x` column.
 //! - [`session`]: [`session::LiveSession`]: commands, pacing, ticks.
+//! - [`wire`]: JSON commands, scenarios and notices (the page's and the server's wire format).
 
 pub mod budget;
 pub mod error;
 pub mod frame;
 pub mod pendulum;
 pub mod session;
+pub mod wire;
 
 pub use budget::{Budget, Clock, Slicer, TICK_BUDGET};
 pub use frame::{Record, FRAME_FIELDS, RECORD_LEN, UNKNOWN};

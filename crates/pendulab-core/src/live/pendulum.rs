@@ -70,11 +70,16 @@ impl LivePendulum {
         let mut own: Vec<(&'static str, f64)> = ms.params.iter().map(|p| (p.name, p.default)).collect();
         for (key, value) in given {
             let Some(i) = ms.params.iter().position(|p| p.name == key) else {
-                return Err(Error::UnknownParameter {
-                    model: ms.name,
-                    name: key.clone(),
-                    available: ms.params.iter().map(|p| p.name).collect::<Vec<_>>().join(", "),
-                });
+                let own: Vec<&str> = ms.params.iter().map(|p| p.name).collect();
+                let has = if own.is_empty() {
+                    "it has none besides length, mass, g".to_string()
+                } else {
+                    format!("its parameters: {}", own.join(", "))
+                };
+                return Err(Error::Refused(format!(
+                    "the '{}' model has no parameter '{key}'; {has}",
+                    ms.name
+                )));
             };
             own[i].1 = check_limits(&ms.params[i], *value)?;
         }

@@ -9,14 +9,15 @@
 //! records spread over its simulated interval. Units: SI (s, m, m/s, kg, m/s²).
 
 use super::budget::{Budget, Clock, Slicer, TICK_BUDGET};
-use super::error::LiveError;
-use super::frame::Record;
+use super::error::{LiveError, Reference};
+use super::frame::{Record, FRAME_FIELDS};
 use super::pendulum::{methods_for, LivePendulum, LiveStepper, DEFAULT_METHOD};
 use crate::error::{Error, Result};
 use crate::integrate::Method;
 use crate::state::State;
 use crate::string_run::StringEvent;
 use crate::DVec3;
+use serde_json::{json, Value};
 
 /// Most steps of `step` commands waiting to be taken.
 pub const MAX_PENDING_STEPS: u64 = 1_000_000;
@@ -133,12 +134,15 @@ impl Command {
 pub enum Out {
     /// Frame records (one binary message).
     Frames(Vec<Record>),
-    /// A status notice (the front end reads [`LiveSession`]'s fields when it serialises it).
-    Status,
+    /// A status notice ([`LiveSession::status`] when it was made).
+    Status(Value),
     /// An error notice: message and the command it was about.
     Error(String, Option<&'static str>),
     /// One of the string's events, its epoch and how many earlier ones of the tick were skipped.
     Event(StringEvent, u64, usize),
+    /// An error notice a page translates: the English message, the command it was about, the message
+    /// key (`python/pendulab/server/messages.json`) and its values.
+    Keyed(String, Option<&'static str>, &'static str, Value),
 }
 
 /// One client's lab (not thread-safe: one owner calls [`LiveSession::tick`]).
@@ -179,6 +183,7 @@ pub struct LiveSession {
     /// Estimate the ideal pendulum's error from the exact solution.
     pub exact_error: bool,
     clock: f64,
+    stop: Option<String>,
     start: State,
     start_length: f64,
     slicer: Slicer,
@@ -220,6 +225,7 @@ impl LiveSession {
             commands: 0,
             exact_error: true,
             clock: setup.t0,
+            stop: None,
             start: setup.state,
             slicer: Slicer::new(),
             events: Vec::new(),
@@ -234,6 +240,60 @@ impl LiveSession {
         }
         let k = ell / self.start_length;
         self.pendulum.carry(&State { x: self.start.x * k, v: self.start.v * k }).unwrap_or(self.start)
+    }
+
+    /// Estimate the ideal pendulum's error from the exact solution (`on`, the default) or with a
+    /// companion as for the other models (tests of the estimate); the estimate starts afresh from the
+    /// current state.
+    pub fn set_exact_error(&mut self, on: bool) -> Result<()> {
+        self.exact_error = on;
+        self.new_stepper(self.stepper.state(), self.stepper.t(), None)
+    }
+
+    /// The simulated time \[s\] the pacing aims at (the stepper's time when it keeps up).
+    pub fn clock(&self) -> f64 {
+        self.clock
+    }
+
+    /// The `status` notice (docs/web.md, "Notices"): everything the page shows and encodes in its URL.
+    pub fn status(&self) -> Value {
+        let p = &self.pendulum.params;
+        let start = self.start_state();
+        let e = &self.error;
+        let reference = match e.reference {
+            Reference::None => json!({}),
+            Reference::Dt(dt) => json!({ "dt": dt }),
+            Reference::Tol { rtol, atol } => json!({ "rtol": rtol, "atol": atol }),
+        };
+        let own: serde_json::Map<String, Value> =
+            self.pendulum.own.iter().map(|(k, v)| (k.to_string(), json!(v))).collect();
+        json!({
+            "type": "status",
+            "epoch": self.epoch,
+            "scenario": self.scenario,
+            "title": self.title,
+            "paused": self.paused,
+            "time_scale": self.time_scale,
+            "method": self.method.info().name,
+            "adaptive": self.adaptive(),
+            "dt": self.dt,
+            "params": { "length": p.length, "mass": p.mass, "g": p.g },
+            "model": self.pendulum.model,
+            "model_params": own,
+            "t": self.stepper.t(),
+            "t0": self.t0,
+            "start": { "x": start.x.to_array(), "v": start.v.to_array() },
+            "lagging": self.lagging,
+            "error_estimate": {
+                "how": e.how.map(|h| h.name()),
+                "order": e.order,
+                "reference": reference,
+                "since": e.t0,
+                "note": e.note,
+            },
+            "commands": self.commands,
+            "frame_fields": FRAME_FIELDS,
+        })
     }
 
     /// True when the method chooses its own steps (`dop853`).
@@ -288,6 +348,7 @@ impl LiveSession {
         self.apply_inner(cmd).map_err(|e| match e {
             Error::Diverged { .. } | Error::StepSizeUnderflow { .. } | Error::PoleSingularity { .. } => {
                 self.paused = true;
+                self.stop = Some(e.to_string());
                 Error::Refused(format!("integration stopped: {e}; paused"))
             }
             other => other,
@@ -381,6 +442,7 @@ impl LiveSession {
             Err(e) => {
                 self.pending_steps = 0;
                 self.paused = true;
+                self.stop = Some(e.to_string());
                 return Err(Error::Refused(format!(
                     "integration stopped at t = {} s: {e}; paused",
                     self.stepper.t()
@@ -438,6 +500,7 @@ impl LiveSession {
         })();
         if let Err(e) = result {
             self.paused = true;
+            self.stop = Some(e.to_string());
             return Err(Error::Refused(format!(
                 "integration stopped at t = {} s: {e}; paused",
                 self.stepper.t()
@@ -455,15 +518,16 @@ impl LiveSession {
         let budget = Budget::new(clock, TICK_BUDGET);
         let mut rec = vec![self.record()];
         self.error.fill(&mut rec, &budget);
-        let mut out = vec![Out::Status];
+        let mut out = vec![Out::Status(self.status())];
         self.finite(rec, &mut out);
         out
     }
 
-    /// One tick (the Python server's `tick_messages`): the commands in order (`Err`: a message refused
-    /// before it became a command, with its text and command name), the waiting steps, the advance by
-    /// `elapsed` \[s\], the error estimate in what is left of `budget_seconds`, the frames, the string's
-    /// events, and status notices where something changed. `dropped`: messages thrown away (throttling).
+    /// One tick: the commands in order (`Err`: a message refused before it became a command, with its
+    /// text and command name), the waiting steps, the advance by `elapsed` \[s\], the error estimate in
+    /// what is left of `budget_seconds`, the frames, the string's events, and status notices where
+    /// something changed. `dropped`: messages thrown away (throttling). [`LiveSession::tick_fair`]
+    /// with every command carried out.
     pub fn tick(
         &mut self,
         commands: Vec<std::result::Result<Command, (String, Option<&'static str>)>>,
@@ -472,22 +536,57 @@ impl LiveSession {
         budget_seconds: f64,
         dropped: u64,
     ) -> Vec<Out> {
+        self.tick_fair(commands, elapsed, clock, budget_seconds, dropped, None).0
+    }
+
+    /// [`LiveSession::tick`], with the commands inside the budget when `debt` \[s\] is given (a server
+    /// with many sessions): at least one command, more only while the budget lasts; the wall time the
+    /// commands took beyond `budget_seconds` is added to `debt`, and while in debt the tick carries out
+    /// none (stepping and frames go on) and pays off `budget_seconds`. So a page that floods
+    /// `load_scenario` gets about its share of the room, not a tick's worth of commands per tick.
+    /// Returns the messages and how many of `commands` were carried out (the rest wait for the caller
+    /// to hand them in again; they are counted in `commands` then).
+    pub fn tick_fair(
+        &mut self,
+        commands: Vec<std::result::Result<Command, (String, Option<&'static str>)>>,
+        elapsed: f64,
+        clock: &dyn Clock,
+        budget_seconds: f64,
+        dropped: u64,
+        mut debt: Option<&mut f64>,
+    ) -> (Vec<Out>, usize) {
         let budget = Budget::new(clock, budget_seconds);
+        let started = budget.now();
         let mut out = Vec::new();
         let mut changed = !commands.is_empty() || dropped > 0;
-        self.commands += commands.len() as u64 + dropped;
+        self.commands += dropped;
+        let mut taken = 0;
         let mut parts: [Vec<Record>; 3] = [Vec::new(), Vec::new(), Vec::new()];
-        for item in commands {
-            match item {
-                Err((message, command)) => out.push(Out::Error(message, command)),
-                Ok(cmd) => {
-                    let name = cmd.name();
-                    match self.apply(cmd) {
-                        Ok(Some(r)) => parts[0] = vec![r], // only the last discontinuity matters
-                        Ok(None) => {}
-                        Err(e) => out.push(Out::Error(e.to_string(), Some(name))),
+        if let Some(d) = debt.as_deref_mut().filter(|d| **d > 0.0) {
+            *d = (*d - budget_seconds).max(0.0); // paying for earlier commands: none this tick
+            changed = dropped > 0;
+        } else {
+            let fair = debt.is_some();
+            for item in commands {
+                if fair && taken > 0 && budget.spent() {
+                    break;
+                }
+                taken += 1;
+                self.commands += 1;
+                match item {
+                    Err((message, command)) => out.push(Out::Error(message, command)),
+                    Ok(cmd) => {
+                        let name = cmd.name();
+                        match self.apply(cmd) {
+                            Ok(Some(r)) => parts[0] = vec![r], // only the last discontinuity matters
+                            Ok(None) => {}
+                            Err(e) => out.push(self.error_out(e, Some(name))),
+                        }
                     }
                 }
+            }
+            if let Some(d) = debt.filter(|_| taken > 0) {
+                *d += (budget.now() - started - budget_seconds).max(0.0);
             }
         }
         let was_lagging = self.lagging;
@@ -498,18 +597,18 @@ impl LiveSession {
             }
             Ok(None) => {}
             Err(e) => {
-                out.push(Out::Error(e.to_string(), Some("step")));
+                out.push(self.error_out(e, Some("step")));
                 changed = true;
             }
         }
         if changed {
-            out.push(Out::Status);
+            out.push(Out::Status(self.status()));
         }
         match self.advance(elapsed, &budget) {
             Ok(r) => parts[2] = r,
             Err(e) => {
-                out.push(Out::Error(e.to_string(), None));
-                out.push(Out::Status);
+                out.push(self.error_out(e, None));
+                out.push(Out::Status(self.status()));
             }
         }
         let how = self.error.how;
@@ -517,21 +616,39 @@ impl LiveSession {
             self.error.fill(part, &budget);
         }
         if self.error.how != how {
-            out.push(Out::Status);
+            out.push(Out::Status(self.status()));
         }
         for part in parts {
             if !self.finite(part, &mut out) {
                 break;
             }
         }
+        out.extend(self.take_event_notices());
+        if self.lagging != was_lagging {
+            out.push(Out::Status(self.status()));
+        }
+        (out, taken)
+    }
+
+    /// The string's events since the last call as `event` notices, oldest first: at most
+    /// [`MAX_EVENT_NOTICES`], the latest, each counting the earlier ones skipped (empty for the other
+    /// models). Each keeps the epoch it happened in.
+    pub fn take_event_notices(&mut self) -> Vec<Out> {
         self.collect_events();
         let events = std::mem::take(&mut self.events);
         let skipped = events.len().saturating_sub(MAX_EVENT_NOTICES);
-        out.extend(events.into_iter().skip(skipped).map(|(e, epoch)| Out::Event(e, epoch, skipped)));
-        if self.lagging != was_lagging {
-            out.push(Out::Status);
+        events.into_iter().skip(skipped).map(|(e, epoch)| Out::Event(e, epoch, skipped)).collect()
+    }
+
+    /// The notice of an error of a command, a step or the advance: keyed `integration_stopped` (with
+    /// the integrator's words as `detail`) when the integration stopped, else plain.
+    fn error_out(&mut self, e: Error, command: Option<&'static str>) -> Out {
+        match self.stop.take() {
+            Some(detail) => {
+                Out::Keyed(e.to_string(), command, "integration_stopped", json!({ "detail": detail }))
+            }
+            None => Out::Error(e.to_string(), command),
         }
-        out
     }
 
     /// Appends `records` up to the first one holding a non-finite value; if there is one, pauses, adds
@@ -549,20 +666,35 @@ impl LiveSession {
         if first > 0 {
             out.push(Out::Frames(records[..first].to_vec()));
         }
-        let when =
-            if t.is_finite() { format!("t = {t:.6} s") } else { format!("t ≈ {:.6} s", self.stepper.t()) };
+        let when = if t.is_finite() { short(t) } else { format!("≈ {}", short(self.stepper.t())) };
+        let fields = bad.iter().take(6).cloned().collect::<Vec<_>>().join(", ");
         self.paused = true;
         self.pending_steps = 0;
-        out.push(Out::Error(
+        out.push(Out::Keyed(
             format!(
-                "the motion left floating point at {when}: {} not finite (parameters or a start this extreme \
-                 drive it beyond 1e308); paused — reset, or change the parameters",
-                bad.iter().take(6).cloned().collect::<Vec<_>>().join(", ")
+                "the motion left floating point at t = {when} s ({fields} not finite): parameters or a start \
+                 this extreme; paused — reset, or change the parameters"
             ),
             None,
+            "nonfinite_motion",
+            json!({ "t": when, "fields": fields }),
         ));
-        out.push(Out::Status);
+        out.push(Out::Status(self.status()));
         false
+    }
+}
+
+/// `x` with 6 significant digits, trailing zeros dropped (Python's `{:.6g}` for the lab's times).
+fn short(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() {
+        return format!("{x}");
+    }
+    let digits = (5 - x.abs().log10().floor() as i32).clamp(0, 17) as usize;
+    let s = format!("{x:.digits$}");
+    if s.contains('.') {
+        s.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        s
     }
 }
 
@@ -577,4 +709,48 @@ fn make(
 ) -> Result<LiveStepper> {
     let dt = if method.info().adaptive { 0.0 } else { dt };
     LiveStepper::new(p, state, t, method, dt, rtol, atol)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::live::frame::FRAME_FIELDS;
+
+    /// No frame carries a non-finite number: the records up to the first bad one are sent, the session
+    /// pauses and an error names the quantities and the time.
+    #[test]
+    fn a_non_finite_record_is_never_sent_the_session_pauses_and_names_the_cause() {
+        let p = LivePendulum::new("ideal", 1.0, 1.0, 9.81, &[]).unwrap();
+        let state = p.state_from_angles(1.0, 0.0, 0.0, 2.0).unwrap();
+        let setup = Setup {
+            name: None,
+            title: None,
+            pendulum: p,
+            state,
+            method: Method::Rattle,
+            dt: 1e-3,
+            rtol: 1e-10,
+            atol: 1e-12,
+            t0: 0.0,
+        };
+        let mut s = LiveSession::new(setup).unwrap();
+        let mut bad = s.record();
+        let at = |name: &str| FRAME_FIELDS.iter().position(|f| *f == name).unwrap();
+        bad.0[at("energy")] = f64::INFINITY;
+        bad.0[at("tension")] = f64::NAN;
+        let mut out = Vec::new();
+        assert!(!s.finite(vec![s.record(), bad, s.record()], &mut out));
+        assert!(matches!(&out[0], Out::Frames(r) if r.len() == 1), "the first record only");
+        let Out::Keyed(message, None, "nonfinite_motion", values) = &out[1] else { panic!("{:?}", out[1]) };
+        assert!(message.contains("(energy, tension not finite)"), "{message}");
+        assert!(message.contains("t = 0 s") && message.contains("paused"), "{message}");
+        assert_eq!(values, &json!({ "t": "0", "fields": "energy, tension" }));
+        assert_eq!(
+            (short(1.5), short(0.016), short(123.4567891), short(1e-7)),
+            ("1.5".into(), "0.016".into(), "123.457".into(), "0.0000001".into())
+        );
+        assert!(matches!(&out[2], Out::Status(v) if v["paused"] == true) && s.paused && out.len() == 3);
+        let mut good = Vec::new();
+        assert!(s.finite(vec![s.record()], &mut good) && matches!(&good[..], [Out::Frames(_)]));
+    }
 }

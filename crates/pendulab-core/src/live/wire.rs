@@ -1,14 +1,14 @@
-//! The lab's wire format on the page's side of the engine (docs/web.md, "Commands", "Notices"): JSON
-//! command messages checked against the lab's limits into [`Command`]s (as the server's
-//! `pendulab.server.protocol` checks them), scenarios as `GET /api/scenarios` describes them into
-//! [`Setup`]s, and the `status` and `event` notices as JSON. SI units: l \[m\], m \[kg\], g [m/s²], t \[s\].
+//! The lab's wire format (docs/web.md, "Commands", "Notices"), for both engines — the page's
+//! (`crates/pendulab-wasm`) and the server's (`pendulab._core.LiveSession`): JSON command messages
+//! checked against the lab's limits into [`Command`]s (the server checks them first with the
+//! pydantic models of `pendulab.server.protocol`, which also give its API schema: the one twin left,
+//! the limits below are its `LIMITS`, a test compares them), scenarios as `GET /api/scenarios`
+//! describes them into [`Setup`]s, and the `status` and `event` notices as JSON. SI units: l \[m\], m \[kg\], g [m/s²], t \[s\].
 
-use pendulab_core::live::error::Reference;
-use pendulab_core::live::session::{Command, Setup, StateSpec};
-use pendulab_core::live::LivePendulum;
-use pendulab_core::live::{LiveSession, FRAME_FIELDS};
-use pendulab_core::string_run::{EventKind, StringEvent};
-use pendulab_core::{DVec3, Method};
+use super::pendulum::LivePendulum;
+use super::session::{Command, LiveSession, Setup, StateSpec};
+use crate::string_run::{EventKind, StringEvent};
+use crate::{DVec3, Method};
 use serde_json::{json, Map, Value};
 
 /// Longest command message read (a command is a few hundred bytes).
@@ -211,7 +211,7 @@ pub fn parse_command(
                 Some(v) => match v.as_str().map(Method::from_name) {
                     Some(Ok(m)) => Some(m),
                     _ => {
-                        let names: Vec<_> = pendulab_core::integrate::all().iter().map(|m| m.name).collect();
+                        let names: Vec<_> = crate::integrate::all().iter().map(|m| m.name).collect();
                         problems.push(format!("unknown method {}; available: {}", show(v), names.join(", ")));
                         None
                     }
@@ -313,52 +313,26 @@ pub fn setup_from(d: &Value) -> Result<Setup, String> {
     })
 }
 
-fn own_params(p: &LivePendulum) -> Value {
-    Value::Object(p.own.iter().map(|(k, v)| (k.to_string(), json!(v))).collect())
+/// A setup from the JSON text of one scenario description ([`setup_from`]).
+pub fn setup_from_json(text: &str) -> Result<Setup, String> {
+    let value: Value = serde_json::from_str(text).map_err(|e| format!("the scenario is not JSON: {e}"))?;
+    setup_from(&value)
 }
 
-/// The `status` notice (the server's `Session.status`).
+/// The `status` notice (the same as [`LiveSession::status`]).
 pub fn status(s: &LiveSession) -> Value {
-    let p = &s.pendulum.params;
-    let start = s.start_state();
-    let e = &s.error;
-    let reference = match e.reference {
-        Reference::None => json!({}),
-        Reference::Dt(dt) => json!({ "dt": dt }),
-        Reference::Tol { rtol, atol } => json!({ "rtol": rtol, "atol": atol }),
-    };
-    json!({
-        "type": "status",
-        "epoch": s.epoch,
-        "scenario": s.scenario,
-        "title": s.title,
-        "paused": s.paused,
-        "time_scale": s.time_scale,
-        "method": s.method.info().name,
-        "adaptive": s.adaptive(),
-        "dt": s.dt,
-        "params": { "length": p.length, "mass": p.mass, "g": p.g },
-        "model": s.pendulum.model,
-        "model_params": own_params(&s.pendulum),
-        "t": s.stepper.t(),
-        "t0": s.t0,
-        "start": { "x": start.x.to_array(), "v": start.v.to_array() },
-        "lagging": s.lagging,
-        "error_estimate": {
-            "how": e.how.map(|h| h.name()),
-            "order": e.order,
-            "reference": reference,
-            "since": e.t0,
-            "note": e.note,
-        },
-        "commands": s.commands,
-        "frame_fields": FRAME_FIELDS,
-    })
+    s.status()
 }
 
 /// The `error` notice.
 pub fn error_notice(message: &str, command: Option<&str>) -> Value {
     json!({ "type": "error", "message": message, "command": command })
+}
+
+/// The `error` notice of a message a page translates: `key` (`python/pendulab/server/messages.json`)
+/// and its `values` beside the English `message`.
+pub fn keyed_notice(message: &str, command: Option<&str>, key: &str, values: &Value) -> Value {
+    json!({ "type": "error", "message": message, "command": command, "key": key, "values": values })
 }
 
 /// The `event` notice of one of the string's leaves or snaps.
