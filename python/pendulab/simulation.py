@@ -414,13 +414,17 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
     if save_every is not None:
         meta["save_every"] = int(save_every)
     if not info["preserves_ts2"] and not (info["adaptive"] and run.project):
-        _check_drift(pendulum, t, x, method, run.project, run.drift)
+        _check_drift(pendulum, t, x, v, method, run.project, run.drift)
     return Trajectory(pendulum, t, x, v, method, meta, dict(solver.stats), interrupted)
 
 
-def _check_drift(pendulum: Pendulum, t: Any, x: Any, method: str, project: bool, drift: str) -> None:
-    """Stops (or warns about) an unprojected run whose |(|x| − l)/l| passed :data:`DRIFT_TOLERANCE`."""
-    err = np.abs(np.linalg.norm(x, axis=1) / pendulum.length - 1.0)
+def _check_drift(pendulum: Pendulum, t: Any, x: Any, v: Any, method: str, project: bool, drift: str) -> None:
+    """Stops (or warns about) an unprojected run whose |(|x| − l)/l| passed :data:`DRIFT_TOLERANCE`
+    (l(t) of a hoisted rope, from the core's diagnostics)."""
+    if pendulum.model == "hoisted":
+        err = np.abs(pendulum.diagnostics(x, v, t)["radius_error"]) / pendulum.length
+    else:
+        err = np.abs(np.linalg.norm(x, axis=1) / pendulum.length - 1.0)
     bad = np.flatnonzero(~(err <= DRIFT_TOLERANCE))
     if bad.size == 0:
         return

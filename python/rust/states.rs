@@ -61,8 +61,9 @@ fn state_from_angles(
 }
 
 /// Diagnostics of the spec's model along arrays x, v of shape (N, 3) at times t [s] (default 0):
-/// energy [J], j3 [kg m²/s], tension [N], radius_error = |x| − l [m], tangency = x·v [m²/s], power
-/// [W], acceleration (N, 3) [m/s²]; a moving pivot's path (N, 3) [m] when t is given.
+/// energy [J], j3 [kg m²/s], tension [N], radius_error = |x| − l(t) [m], tangency = x·v − l l̇
+/// [m²/s] (l̇ ≠ 0 only for a hoisted rope), power [W], acceleration (N, 3) [m/s²]; a moving pivot's
+/// path (N, 3) [m] when t is given.
 #[pyfunction]
 #[pyo3(signature = (spec, x, v, t=None))]
 fn diagnostics<'py>(
@@ -73,7 +74,6 @@ fn diagnostics<'py>(
     t: Option<PyReadonlyArray1<'py, f64>>,
 ) -> PyResult<Bound<'py, PyDict>> {
     let m = spec.registry()?;
-    let length = m.params().length;
     let times = t.map(|t| t.as_array().to_vec());
     let (x, v) = (x.as_array(), v.as_array());
     if x.ncols() != 3 || v.dim() != x.dim() {
@@ -98,14 +98,16 @@ fn diagnostics<'py>(
             x: DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]]),
             v: DVec3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]),
         };
-        let r = s.residuals(length);
+        let ti = times.as_ref().map_or(0.0, |ts| ts[i]);
+        // the rope's length l(t) and rate (a hoisted rope: |x| = l(t), x·v = l l̇; else l and 0)
+        let (l_t, rate) = (m.rope_length(ti), m.rope_rate(ti));
+        let r = s.residuals(l_t);
         out[0][i] = energy(&m, &s);
         out[1][i] = j3(&m, &s);
-        let ti = times.as_ref().map_or(0.0, |ts| ts[i]);
         out[2][i] = tension(&m, ti, &s);
         out[5][i] = m.params().mass * m.power_per_mass(ti, s.x, s.v);
         out[3][i] = r.length;
-        out[4][i] = r.tangency;
+        out[4][i] = r.tangency - l_t * rate;
     }
     let d = PyDict::new(py);
     for (name, values) in
@@ -118,12 +120,11 @@ fn diagnostics<'py>(
     let mut acc = Array2::<f64>::zeros((n, 3));
     for i in 0..n {
         let ti = times.as_ref().map_or(0.0, |ts| ts[i]);
-        let a = acceleration(
-            &m,
-            ti,
-            DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]]),
-            DVec3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]),
-        );
+        let state = State {
+            x: DVec3::new(x[[i, 0]], x[[i, 1]], x[[i, 2]]),
+            v: DVec3::new(v[[i, 0]], v[[i, 1]], v[[i, 2]]),
+        };
+        let a = m.physical_acceleration(ti, &state).unwrap_or_else(|| acceleration(&m, ti, state.x, state.v));
         for k in 0..3 {
             acc[[i, k]] = a[k];
         }

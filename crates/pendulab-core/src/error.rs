@@ -133,7 +133,7 @@ pub enum Error {
         available: String,
     },
     /// A method that cannot integrate this model.
-    #[error("method '{method}' cannot integrate the '{model}' model (it supports only the ideal pendulum); use 'rattle' or 'dop853'")]
+    #[error("method '{method}' cannot integrate the '{model}' model (it supports only the ideal pendulum and the hoisted rope below a fixed pivot); use 'rattle' or 'dop853'")]
     UnsupportedModel {
         /// Method name.
         method: &'static str,

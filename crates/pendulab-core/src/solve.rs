@@ -90,6 +90,9 @@ impl<M: Model> Solver<M> {
         save: SaveAt,
         max_saved_bytes: u64,
     ) -> Result<Self> {
+        if t_end.is_finite() && t_end >= t0 {
+            model.check_run(t0, t_end)?;
+        }
         let stepper = Stepper::new(model, t0, state, options)?;
         let fixed_steps = (!options.method.info().adaptive).then(|| (t_end - t0) / options.dt);
         let max_samples = check_run(t0, t_end, &save, max_saved_bytes, fixed_steps)?;
@@ -110,7 +113,9 @@ impl<M: Model> Solver<M> {
             SaveAt::Times(ts) => ts[0] == t0,
         };
         if starts_saved {
-            solver.push(t0, state)?;
+            // the stepper's start, physical (a hoisted rope: the rope's rate added to the given state)
+            let start = solver.stepper.state();
+            solver.push(t0, start)?;
             solver.next_time = usize::from(matches!(solver.save, SaveAt::Times(_)));
         }
         Ok(solver)
@@ -170,7 +175,7 @@ impl<M: Model> Solver<M> {
                     let at_end = self.stepper.t() >= self.t_end;
                     if self.since_save == n || at_end {
                         self.since_save = 0;
-                        let (t, s) = (self.stepper.t(), *self.stepper.state());
+                        let (t, s) = (self.stepper.t(), self.stepper.state());
                         self.push(t, s)?;
                     }
                     self.done = at_end;
@@ -222,7 +227,7 @@ impl<M: Model> Solver<M> {
     fn sample_at(&mut self, target: f64) -> Option<State> {
         let t = self.stepper.t();
         if t == target {
-            Some(*self.stepper.state())
+            Some(self.stepper.state())
         } else if t > target {
             self.stepper.dense_output(target)
         } else {

@@ -91,7 +91,7 @@ impl<M: Model> Stepper<M> {
         if model.is_hybrid() {
             return Err(Error::HybridModel { model: model.name() });
         }
-        if options.method == Method::Rk4Angles && !model.is_ideal() {
+        if options.method == Method::Rk4Angles && model.angle_form(t0).is_none() {
             return Err(Error::UnsupportedModel { method: info.name, model: model.name() });
         }
         let scheme = match options.method {
@@ -116,6 +116,7 @@ impl<M: Model> Stepper<M> {
         if !info.adaptive {
             require_positive("dt", options.dt, "the step size dt must be a finite number > 0 s")?;
         }
+        let state = model.integrator_state(t0, state);
         Ok(Self {
             model,
             scheme,
@@ -133,9 +134,9 @@ impl<M: Model> Stepper<M> {
     pub fn t(&self) -> f64 {
         self.t
     }
-    /// Current state.
-    pub fn state(&self) -> &State {
-        &self.state
+    /// Current state (physical: for a hoisted rope on |x| = l(t), [`Model::to_physical`]).
+    pub fn state(&self) -> State {
+        self.model.to_physical(self.t, self.state)
     }
     /// The model.
     pub fn model(&self) -> &M {
@@ -156,7 +157,7 @@ impl<M: Model> Stepper<M> {
 
     /// Replaces the state (e.g. after a user drags the bob); the grid is re-anchored at the current time.
     pub fn set_state(&mut self, state: State) {
-        self.state = state;
+        self.state = self.model.integrator_state(self.t, state);
         self.t_anchor = self.t;
         self.k = 0;
         with_fixed!(&mut self.scheme, s => s.reset(), {
@@ -290,7 +291,7 @@ impl<M: Model> Stepper<M> {
                 (a <= t_out && t_out <= b).then(|| {
                     crate::isa::fastest(
                         #[inline(always)]
-                        || d.dense_output(model, t_out),
+                        || model.to_physical(t_out, d.dense_output(model, t_out)),
                     )
                 })
             }

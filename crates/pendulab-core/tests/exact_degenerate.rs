@@ -229,7 +229,7 @@ fn check_family(kind: u8, r: [f64; 6], lg: (f64, f64)) -> Result<(), TestCaseErr
         reference.step_to(t).unwrap();
         // DOP853's own error at rtol 1e-13 over τ ≤ 2 (up to ~1e-11 next to the top); the bugs
         // this guards against were 1e-9 … 1
-        let e = rel_err(&m, &s, reference.state());
+        let e = rel_err(&m, &s, &reference.state());
         prop_assert!(e < 1e-10, "{:?} t = {t}: exact vs DOP853 {e:e}", sol.kind());
     }
     Ok(())

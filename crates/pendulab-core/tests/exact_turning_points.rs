@@ -11,7 +11,7 @@ fn rattle8(m: IdealPendulum, s0: State, t: f64) -> State {
     let opts = SolveOptions { method: Method::Rattle8, dt: 1e-3, ..SolveOptions::default() };
     let mut st = Stepper::new(m, 0.0, s0, &opts).unwrap();
     st.step_to(t).unwrap();
-    *st.state()
+    st.state()
 }
 
 #[test]

@@ -174,7 +174,7 @@ fn every_integrator_runs_friction_and_the_splitting_keeps_its_orders() {
         let opts = SolveOptions { method, dt, rtol: 1e-13, atol: 1e-15, project: true };
         let mut st = Stepper::new(m.clone(), 0.0, s0, &opts).unwrap();
         st.step_to(2.0).unwrap();
-        *st.state()
+        st.state()
     };
     let reference = run(Method::Dop853, 0.0);
     for method in Method::ALL.into_iter().filter(|&k| k != Method::Rk4Angles && k != Method::Dop853) {

@@ -111,7 +111,7 @@ proptest! {
         let opts = SolveOptions { method: m, dt, rtol, atol, project: true };
         if let Ok(mut st) = Stepper::new(model, 0.0, s0, &opts) {
             if st.step_n(n).and_then(|_| st.check_finite()).is_ok() {
-                prop_assert!(finite(st.state()) && st.t().is_finite(), "{m:?} dt = {dt}: {:?}", st.state());
+                prop_assert!(finite(&st.state()) && st.t().is_finite(), "{m:?} dt = {dt}: {:?}", st.state());
             }
         }
     }

@@ -37,7 +37,7 @@ fn long_run(method: Method, dt: f64, steps: u64, s0: State) -> RunReport {
     let chunk = 100;
     for k in 0..steps / chunk {
         st.step_n(chunk).unwrap();
-        let s = st.state();
+        let s = &st.state();
         let res = s.residuals(l);
         r.max_radius_error = r.max_radius_error.max(res.length.abs() / l);
         r.max_tangency = r.max_tangency.max(res.tangency.abs() / (l * s.v.length().max(1e-300)));

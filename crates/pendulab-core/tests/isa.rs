@@ -30,9 +30,9 @@ fn everything() -> Vec<u64> {
         let ideal = IdealPendulum::new(params.length, params.mass, params.g).unwrap();
         let mut a = Stepper::new(ideal, 0.0, start(&params, 1), &opts).unwrap();
         a.step_n(700).unwrap();
-        push(&mut out, a.state());
+        push(&mut out, &a.state());
         a.step_to(a.t() + 0.0123).unwrap();
-        push(&mut out, a.state());
+        push(&mut out, &a.state());
         if method == Method::Dop853 {
             let (t0, t1) = (a.t(), {
                 a.step().unwrap();
@@ -43,7 +43,7 @@ fn everything() -> Vec<u64> {
         if method != Method::Rk4Angles {
             let mut b = Stepper::new(damped, 0.0, start(&params, 2), &opts).unwrap();
             b.step_n(500).unwrap();
-            push(&mut out, b.state());
+            push(&mut out, &b.state());
         }
     }
     let starts: Vec<State> = (0..LANES + 3).map(|k| start(&params, k % 7)).collect();

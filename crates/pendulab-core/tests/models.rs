@@ -21,7 +21,7 @@ fn build(name: &str, extra: &[(&str, f64)]) -> AnyModel {
 fn run<M: Model>(m: M, s0: State, t: f64, opts: &SolveOptions) -> State {
     let mut st = Stepper::new(m, 0.0, s0, opts).unwrap();
     st.step_to(t).unwrap();
-    *st.state()
+    st.state()
 }
 
 fn opts(method: Method, dt: f64) -> SolveOptions {

@@ -30,9 +30,9 @@ fn quarter_period(model: IdealPendulum, theta0: f64, dt: f64) -> f64 {
     let s0 = State::from_angles(model.params(), theta0, 0.0, 0.0, 0.0).unwrap();
     let mut st = Stepper::new(model, 0.0, s0, &fixed(Method::Rattle8, dt)).unwrap();
     loop {
-        let (t0, a) = (st.t(), *st.state());
+        let (t0, a) = (st.t(), st.state());
         st.step().unwrap();
-        let b = *st.state();
+        let b = st.state();
         if b.x.x <= 0.0 {
             // Solve the Hermite cubic p(s) = 0 on s ∈ [0, 1] by bisection.
             let (p0, p1, m0, m1) = (a.x.x, b.x.x, a.v.x * dt, b.v.x * dt);
@@ -117,7 +117,7 @@ fn negative_gravity_mirrors_positive_gravity() {
         let mut b = Stepper::new(down, 0.0, mirror(&s0), &fixed(method, 1e-3)).unwrap();
         a.step_to(10.0).unwrap();
         b.step_to(10.0).unwrap();
-        let (sa, sb) = (*a.state(), mirror(b.state()));
+        let (sa, sb) = (a.state(), mirror(&b.state()));
         let d = (sa.x - sb.x).length() + (sa.v - sb.v).length();
         assert!(d < 1e-12, "{}: mirror images differ by {d:e}", method.info().name);
         assert!(sb.x.z < 0.0 || sa.x.z < 0.0 || d < 1e-12);

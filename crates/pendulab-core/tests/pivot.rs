@@ -85,7 +85,7 @@ fn moving_pivot_power_balance() {
     for k in 1..=10_000 {
         st.step_to(k as f64 * 1e-3).unwrap();
         t.push(st.t());
-        s.push(*st.state());
+        s.push(st.state());
     }
     let worst = power_balance_residual(&m, &t, &s).iter().fold(0.0f64, |a, r| a.max(r.abs()));
     assert!(worst < 1e-5, "{worst:e} J");
@@ -129,7 +129,7 @@ fn sampled_pivot_follows_the_analytic_path() {
     let run = |m: AnyModel| {
         let mut st = Stepper::new(m, 0.0, s0, &opts(1e-3)).unwrap();
         st.step_to(10.0).unwrap();
-        *st.state()
+        st.state()
     };
     let params = *exact.params();
     let (a, b) = (run(exact), run(sampled));

@@ -17,7 +17,7 @@ fn trajectory_states(n: usize, dt: f64) -> Vec<(f64, State)> {
     (0..n)
         .map(|k| {
             st.step_to(k as f64 * dt).unwrap();
-            (st.t(), *st.state())
+            (st.t(), st.state())
         })
         .collect()
 }

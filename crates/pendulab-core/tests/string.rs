@@ -38,7 +38,7 @@ fn never_slack_is_the_rod_pendulum_bit_for_bit() {
         for (k, s) in run.states.iter().enumerate().skip(1) {
             st.step_n(1).unwrap();
             assert_eq!(run.t[k], st.t());
-            assert_eq!(s, st.state(), "{} differs from the rod at step {k}", method.info().name);
+            assert_eq!(*s, st.state(), "{} differs from the rod at step {k}", method.info().name);
         }
     }
 }

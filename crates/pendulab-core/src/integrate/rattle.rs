@@ -23,7 +23,9 @@
 //!
 //! Velocity-dependent forces (damping, drag, Coriolis) are not kicked: the model gives their exact
 //! flow at fixed x ([`Model::velocity_flow`]), applied for h/2 before and after the step (Strang
-//! splitting; second order, conformal symplectic for linear damping).
+//! splitting; second order, conformal symplectic for linear damping). A flow that changes with time
+//! (the hoisted rope's −2(l̇/l)v, T-11.10) is frozen at t before and at t + h after the step, which
+//! keeps the step symmetric.
 
 use super::rattle_kernel::{
     advance_position, advance_velocity, dot, fmadd3, PositionQuadratic, ProjectionPolynomial,
@@ -58,7 +60,7 @@ impl Rattle {
         let half = 0.5 * h;
         if model.has_velocity_forces() {
             // Strang splitting: the exact velocity flow for h/2 on either side (see model::extended).
-            s.v = model.velocity_flow(s.x, s.v, half);
+            s.v = model.velocity_flow_at(t, s.x, s.v, half);
         }
         let (x0, v0) = (s.x, s.v);
         let kick0 = model.kick_acceleration(t, x0) * half;
@@ -87,7 +89,7 @@ impl Rattle {
         s.v = advance_velocity(v0, kick0 + kick1, x0, mu, x1, p, &mut self.comp_v);
         s.x = x1;
         if model.has_velocity_forces() {
-            s.v = model.velocity_flow(s.x, s.v, half);
+            s.v = model.velocity_flow_at(t + h, s.x, s.v, half);
         }
         true
     }

@@ -9,7 +9,9 @@
 //! φ is undefined, so a planar swing through the bottom or any orbit near the top breaks it. This
 //! method **refuses** (returns [`Error::PoleSingularity`]) as soon as any stage comes within
 //! sin θ < [`POLE_LIMIT`] of a pole, instead of returning garbage. The sphere itself is exact (the
-//! state is rebuilt from angles). Only for the ideal pendulum with gravity along e₃.
+//! state is rebuilt from angles). Only for the ideal pendulum with gravity along e₃, and for the
+//! hoisted rope below a fixed pivot (T-11.10: g/l(t) and the term −(2 l̇/l + c)(θ̇, φ̇), from
+//! [`Model::angle_form`]; the angles of the integrators' state are the rope's).
 //!
 //! Round-off: the angles are carried between steps and advanced by compensated (Kahan) sums of
 //! the RK4 increments (φ kept in (−π, π] by subtracting 2π exactly, its low part going into the
@@ -71,20 +73,44 @@ impl Rk4Angles {
 
     /// The RK4 increment y₁ − y₀ (h/6)(k₁ + 2k₂ + 2k₃ + k₄), refusing near a pole.
     fn increment(model: &IdealPendulum, t: f64, y: [f64; 4], h: f64) -> Result<[f64; 4]> {
+        Self::increment_of(|_, y| model.angle_rhs(y), t, y, h)
+    }
+
+    /// The RK4 increment of y' = rhs(t, y), refusing near a pole.
+    fn increment_of(
+        rhs: impl Fn(f64, [f64; 4]) -> [f64; 4],
+        t: f64,
+        y: [f64; 4],
+        h: f64,
+    ) -> Result<[f64; 4]> {
         let add = |a: &[f64; 4], k: &[f64; 4], c: f64| std::array::from_fn::<f64, 4, _>(|i| a[i] + c * k[i]);
         guard(t, &y)?;
-        let k1 = model.angle_rhs(y);
+        let k1 = rhs(t, y);
         let y2 = add(&y, &k1, 0.5 * h);
         guard(t + 0.5 * h, &y2)?;
-        let k2 = model.angle_rhs(y2);
+        let k2 = rhs(t + 0.5 * h, y2);
         let y3 = add(&y, &k2, 0.5 * h);
         guard(t + 0.5 * h, &y3)?;
-        let k3 = model.angle_rhs(y3);
+        let k3 = rhs(t + 0.5 * h, y3);
         let y4 = add(&y, &k3, h);
         guard(t + h, &y4)?;
-        let k4 = model.angle_rhs(y4);
+        let k4 = rhs(t + h, y4);
         Ok(std::array::from_fn(|i| h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])))
     }
+}
+
+/// The angle form T-2.5 with the time-dependent g/l(t) and the term −γ(t)(θ̇, φ̇) of a model's
+/// [`Model::angle_form`] (the hoisted rope, T-11.10; γ = 2 l̇/l + c).
+fn angle_rhs_with<M: Model>(model: &M, t: f64, y: [f64; 4]) -> [f64; 4] {
+    let [theta, _phi, theta_dot, phi_dot] = y;
+    let (s, c) = theta.sin_cos();
+    let (g_over_l, gamma) = model.angle_form(t).unwrap_or((f64::NAN, f64::NAN));
+    [
+        theta_dot,
+        phi_dot,
+        phi_dot * phi_dot * s * c - g_over_l * s - gamma * theta_dot,
+        -2.0 * theta_dot * phi_dot * c / s - gamma * phi_dot,
+    ]
 }
 
 /// Kahan summation: returns s + d with the running compensation `c` (true sum ≈ result − c).
@@ -107,7 +133,11 @@ impl FixedStep for Rk4Angles {
         }
         let y = self.y;
         guard(t, &y)?;
-        let dy = Self::increment(&ideal, t, y, h)?;
+        let dy = if model.is_ideal() {
+            Self::increment(&ideal, t, y, h)?
+        } else {
+            Self::increment_of(|t, y| angle_rhs_with(model, t, y), t, y, h)?
+        };
         let mut comp = self.comp;
         let mut y1: [f64; 4] = std::array::from_fn(|i| compensated_add(y[i], dy[i], &mut comp[i]));
         // φ back into (−π, π]: φ ∓ TAU is exact here (Sterbenz), TAU_LO goes into the compensation.

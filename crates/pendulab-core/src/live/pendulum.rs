@@ -242,7 +242,7 @@ impl LiveStepper {
     /// State reached (x \[m\], v [m/s]).
     pub fn state(&self) -> State {
         match self {
-            LiveStepper::Rod(s) => *s.state(),
+            LiveStepper::Rod(s) => s.state(),
             LiveStepper::Spring(s) => s.state(),
             LiveStepper::String(s) => s.state(),
         }
@@ -276,7 +276,7 @@ impl LiveStepper {
     /// The frame record of the current state (`error_x` unknown).
     pub fn record(&self) -> Record {
         match self {
-            LiveStepper::Rod(s) => rod_record(s.model(), s.t(), s.state()),
+            LiveStepper::Rod(s) => rod_record(s.model(), s.t(), &s.state()),
             LiveStepper::Spring(s) => {
                 let (sp, st) = (s.spring(), s.state());
                 Record::own(

@@ -3,12 +3,13 @@
 //! [`IdealPendulum`], its fast path). Loops over steps dispatch once ([`Model::visit`]), not once per
 //! step. Parameters in SI units as the registry lists them.
 
+use super::hoist::{Hoisted, RopeLaw};
 use super::pivot::{MovingPivot, PivotPath};
 use super::registry::spec;
 use super::spline::PivotSamples;
 use super::{Extended, IdealPendulum, Model, ModelVisitor, StringPendulum};
 use crate::error::{Error, Result};
-use crate::state::Params;
+use crate::state::{Params, State};
 use glam::DVec3;
 
 impl AnyModel {
@@ -16,6 +17,7 @@ impl AnyModel {
     pub fn pivot(&self) -> Option<&PivotPath> {
         match self {
             AnyModel::Pivot(m) => Some(m.path()),
+            AnyModel::Hoisted(m) => Some(m.inner().path()),
             _ => None,
         }
     }
@@ -30,6 +32,8 @@ pub enum AnyModel {
     Extended(Extended, &'static str),
     /// A moving pivot.
     Pivot(MovingPivot),
+    /// A hoisted rope below a pivot (l(t), [`super::hoist`]).
+    Hoisted(Hoisted),
     /// A string instead of a rod (hybrid: simulated by [`StringPendulum::simulate`]).
     String(StringPendulum),
 }
@@ -126,6 +130,23 @@ impl AnyModel {
                 crate::elastic::SwingingSpring::new(k / params.mass, params.length, params.g, params.mass)?;
                 return Err(Error::OffSphereModel { model: "spring" });
             }
+            "hoisted" => AnyModel::Hoisted(Hoisted::new(
+                MovingPivot::new(
+                    params,
+                    PivotPath::Slewing {
+                        radius: get("radius").unwrap(),
+                        rate: get("rate").unwrap(),
+                        height: get("height").unwrap(),
+                    },
+                    get("damping").unwrap(),
+                )?,
+                RopeLaw {
+                    length: params.length,
+                    rate: get("hoist_rate").unwrap(),
+                    amplitude: get("hoist_amplitude").unwrap(),
+                    frequency: get("hoist_frequency").unwrap(),
+                },
+            )?),
             "string" => AnyModel::String(StringPendulum::new(params, get("restitution").unwrap())?),
             _ => AnyModel::Pivot(MovingPivot::new(
                 params,
@@ -145,6 +166,7 @@ macro_rules! both {
             AnyModel::Ideal($m) => $e,
             AnyModel::Extended($m, _) => $e,
             AnyModel::Pivot($m) => $e,
+            AnyModel::Hoisted($m) => $e,
             AnyModel::String($m) => $e,
         }
     };
@@ -156,6 +178,7 @@ impl Model for AnyModel {
             AnyModel::Ideal(_) => "ideal",
             AnyModel::Extended(_, name) => name,
             AnyModel::Pivot(m) => m.name(),
+            AnyModel::Hoisted(m) => m.name(),
             AnyModel::String(m) => m.name(),
         }
     }
@@ -204,5 +227,35 @@ impl Model for AnyModel {
     }
     fn power_per_mass(&self, t: f64, x: DVec3, v: DVec3) -> f64 {
         both!(self, m => m.power_per_mass(t, x, v))
+    }
+    #[inline(always)]
+    fn velocity_flow_at(&self, t: f64, x: DVec3, v: DVec3, h: f64) -> DVec3 {
+        both!(self, m => m.velocity_flow_at(t, x, v, h))
+    }
+    fn rope_length(&self, t: f64) -> f64 {
+        both!(self, m => m.rope_length(t))
+    }
+    fn rope_rate(&self, t: f64) -> f64 {
+        both!(self, m => m.rope_rate(t))
+    }
+    fn physical_acceleration(&self, t: f64, s: &State) -> Option<DVec3> {
+        both!(self, m => m.physical_acceleration(t, s))
+    }
+    #[inline(always)]
+    fn to_physical(&self, t: f64, s: State) -> State {
+        both!(self, m => m.to_physical(t, s))
+    }
+    #[inline(always)]
+    fn integrator_state(&self, t: f64, s: State) -> State {
+        both!(self, m => m.integrator_state(t, s))
+    }
+    fn physical_tension(&self, t: f64, s: &State) -> Option<f64> {
+        both!(self, m => m.physical_tension(t, s))
+    }
+    fn angle_form(&self, t: f64) -> Option<(f64, f64)> {
+        both!(self, m => m.angle_form(t))
+    }
+    fn check_run(&self, t0: f64, t1: f64) -> Result<()> {
+        both!(self, m => m.check_run(t0, t1))
     }
 }

@@ -69,6 +69,9 @@ impl Model for IdealPendulum {
     fn is_ideal(&self) -> bool {
         true
     }
+    fn angle_form(&self, _t: f64) -> Option<(f64, f64)> {
+        Some((self.params().g / self.params().length, 0.0))
+    }
     fn kick_is_uniform(&self) -> bool {
         true
     }

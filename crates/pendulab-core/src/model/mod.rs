@@ -17,6 +17,7 @@
 pub mod any_model;
 pub mod extended;
 pub mod heights;
+pub mod hoist;
 pub mod ideal;
 pub mod pivot;
 pub mod registry;
@@ -25,6 +26,7 @@ pub mod spline;
 pub mod string;
 
 pub use extended::Extended;
+pub use hoist::{Hoisted, RopeLaw};
 pub use ideal::IdealPendulum;
 pub use pivot::{MovingPivot, PivotPath};
 pub use registry::AnyModel;
@@ -79,6 +81,54 @@ pub trait Model: Send + Sync {
     #[inline(always)]
     fn velocity_flow(&self, _x: DVec3, v: DVec3, _h: f64) -> DVec3 {
         v
+    }
+    /// [`Model::velocity_flow`] with the time `t` \[s\] at which the flow is frozen (RATTLE calls it at
+    /// the start and at the end of a step); for models whose velocity forces change with time (the
+    /// hoisted rope, [`hoist`]). Default: [`Model::velocity_flow`].
+    #[inline(always)]
+    fn velocity_flow_at(&self, _t: f64, x: DVec3, v: DVec3, h: f64) -> DVec3 {
+        self.velocity_flow(x, v, h)
+    }
+    /// The rope length l(t) \[m\] at time t \[s\]. Default: the constant `params().length`.
+    fn rope_length(&self, _t: f64) -> f64 {
+        self.params().length
+    }
+    /// The rope's rate l̇(t) [m/s] at time t \[s\]. Default: 0 (a constant length).
+    fn rope_rate(&self, _t: f64) -> f64 {
+        0.0
+    }
+    /// The acceleration ẍ [m/s²] at a physical state when T-2.2 on the fixed sphere does not apply
+    /// (the hoisted rope: ẍ = F + Λx); None for the models on a fixed sphere.
+    fn physical_acceleration(&self, _t: f64, _s: &State) -> Option<DVec3> {
+        None
+    }
+    /// The physical state of the integrators' state `s` at time t \[s\] (the hoisted rope integrates
+    /// a state scaled onto |x| = l, [`hoist`]). Default: `s` itself.
+    #[inline(always)]
+    fn to_physical(&self, _t: f64, s: State) -> State {
+        s
+    }
+    /// The integrators' state of the physical state `s` at time t \[s\] (inverse of
+    /// [`Model::to_physical`]). Default: `s` itself.
+    #[inline(always)]
+    fn integrator_state(&self, _t: f64, s: State) -> State {
+        s
+    }
+    /// The rod's or rope's tension \[N\] at a physical state when T-2.3 does not apply (the hoisted
+    /// rope); None for the models on a fixed sphere.
+    fn physical_tension(&self, _t: f64, _s: &State) -> Option<f64> {
+        None
+    }
+    /// (g/l [1/s²], γ [1/s]) of the angle form T-2.5 at time t with the extra term −γ·(θ̇, φ̇), for the
+    /// models that have one (`rk4_angles`): the ideal pendulum (γ = 0), the hoisted rope below a fixed
+    /// pivot. Default: None.
+    fn angle_form(&self, _t: f64) -> Option<(f64, f64)> {
+        None
+    }
+    /// Refuses a run over [t0, t1] \[s\] the model cannot make (a hoisted rope that would become too
+    /// short), before any step. Default: every run.
+    fn check_run(&self, _t0: f64, _t1: f64) -> crate::error::Result<()> {
+        Ok(())
     }
     /// True for hybrid models (the string pendulum: taut and slack phases with events), which the
     /// plain [`crate::Stepper`] refuses; they have their own driver ([`crate::string_run`]).
@@ -140,6 +190,9 @@ pub fn j3<M: Model + ?Sized>(model: &M, s: &State) -> f64 {
 
 /// Rod tension T = m(|v|² + x·f)/l \[N\] (T-2.3); T < 0 means the rod pushes (a string would go slack).
 pub fn tension<M: Model + ?Sized>(model: &M, t: f64, s: &State) -> f64 {
+    if let Some(tension) = model.physical_tension(t, s) {
+        return tension;
+    }
     let p = model.params();
     let f = model.applied_acceleration(t, s.x, s.v);
     -p.mass * multiplier(p.length, s.x, s.v, f) * p.length

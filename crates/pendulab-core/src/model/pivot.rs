@@ -142,6 +142,21 @@ impl MovingPivot {
     pub fn path(&self) -> &PivotPath {
         &self.path
     }
+
+    /// Linear damping c [1/s] relative to the pivot.
+    pub fn damping(&self) -> f64 {
+        self.damping
+    }
+
+    /// True when the pivot does not move (a slewing path of radius 0 or rate 0, a vibration of
+    /// amplitude 0 or frequency 0).
+    pub fn path_is_fixed(&self) -> bool {
+        match self.path {
+            PivotPath::Slewing { radius, rate, .. } => radius == 0.0 || rate == 0.0,
+            PivotPath::Vertical { amplitude, frequency } => amplitude == 0.0 || frequency == 0.0,
+            PivotPath::Samples(_) => false,
+        }
+    }
 }
 
 impl Model for MovingPivot {

@@ -240,6 +240,37 @@ const VIBRATING: &[ParamSpec] = &[
         .within(0.0, 1e4, "a number in [0, 1e4] 1/s"),
 ];
 
+const HOISTED: &[ParamSpec] = &[
+    p(
+        "hoist_rate",
+        "hoist rate r",
+        "m/s",
+        -0.02,
+        -INF,
+        "rope length l(t) = l + r t + a sin(ν t) (T-11.10); r < 0 hoists the load up, r > 0 lowers it",
+    )
+    .within(-1e3, 1e3, "a number in [-1e3, 1e3] m/s"),
+    p("hoist_amplitude", "hoist amplitude a", "m", 0.0, -INF, "amplitude a of the periodic part of l(t)")
+        .within(-1e4, 1e4, "a number in [-1e4, 1e4] m"),
+    p("hoist_frequency", "hoist frequency ν", "rad/s", 0.0, -INF, "angular frequency ν of the periodic part of l(t)")
+        .within(-1e5, 1e5, "a number in [-1e5, 1e5] rad/s"),
+    p(
+        "radius",
+        "boom radius R",
+        "m",
+        0.0,
+        -INF,
+        "the pivot on a slewing boom tip (R cos ωt, R sin ωt, h), as the 'slewing' model; R = 0: a fixed pivot",
+    )
+    .within(-1e4, 1e4, "a number in [-1e4, 1e4] m"),
+    p("rate", "slewing rate ω", "rad/s", 0.0, -INF, "how fast the boom turns")
+        .within(-1e3, 1e3, "a number in [-1e3, 1e3] rad/s"),
+    p("height", "height of the boom tip above the origin", "m", 0.0, -INF, "height of the pivot above the origin")
+        .within(-1e4, 1e4, "a number in [-1e4, 1e4] m"),
+    p("damping", "friction (linear damping) c", "1/s", 0.0, 0.0, "linear damping c relative to the pivot")
+        .within(0.0, 1e4, "a number in [0, 1e4] 1/s"),
+];
+
 const SAMPLED: &[ParamSpec] = &[p(
     "damping",
     "friction (linear damping) c",
@@ -310,6 +341,13 @@ pub const MODELS: &[ModelSpec] = &[
         summary: "vertically vibrated pivot (Kapitza's inverted pendulum, T-7.2)",
         interactive: true,
         params: VIBRATING,
+    },
+    ModelSpec {
+        name: "hoisted",
+        label: "Hoisted rope (crane)",
+        summary: "the rope length l(t) changes during the run: |x − P(t)| = l(t) below a fixed or slewing pivot (T-11.10)",
+        interactive: false,
+        params: HOISTED,
     },
     ModelSpec {
         name: "sampled_pivot",

@@ -20,7 +20,7 @@ pub fn fixed(method: Method, dt: f64) -> SolveOptions {
 pub fn run_to(model: IdealPendulum, s0: State, t_end: f64, options: &SolveOptions) -> State {
     let mut st = Stepper::new(model, 0.0, s0, options).unwrap();
     st.step_to(t_end).unwrap();
-    *st.state()
+    st.state()
 }
 
 /// Distance between two states in R⁶, position in units of l and velocity in units of l ω₀.
