@@ -5,11 +5,16 @@ grids are refused before any work."""
 from __future__ import annotations
 
 import math
+import signal
+import subprocess
+import sys
+import time
 
 import numpy as np
 import pytest
 
 from pendulab import InvalidInputError, crane
+from pendulab.crane import grid as grid_module
 
 
 def test_grid_cells_equal_single_runs() -> None:
@@ -41,3 +46,40 @@ def test_bad_grids() -> None:
         crane.residual_grid([5.0], [0.0], [None])
     with pytest.raises(InvalidInputError, match="exceed"):
         crane.residual_grid(np.ones(1001), np.ones(1000), [None, None])
+
+
+def test_the_grid_runs_in_chunks_and_ctrl_c_keeps_what_is_done(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The sweeps' driver: chunks of one shaper × a block of ropes give the same numbers as one call of
+    the core; SIGINT stops after the chunks in flight, the rest NaN, ``interrupted`` set, a warning."""
+    zv = crane.shaper("zv", omega=1.0)
+    args = (np.linspace(6, 12, 5), [2.0, 5.0], [None, zv])
+    whole = crane.residual_grid(*args, settle=5.0, progress=False)  # one chunk per shaper
+    monkeypatch.setattr(grid_module, "CHUNK_CASES", 4)  # blocks of 2 ropes: 3 chunks per shaper
+    chunked = crane.residual_grid(*args, settle=5.0, progress=True, workers=2)
+    assert not chunked.interrupted and np.all(np.isfinite(chunked.sway))
+    np.testing.assert_array_equal(chunked.sway, whole.sway)
+    script = (
+        "import numpy as np, warnings\n"
+        "from pendulab import crane\n"
+        "print('start', flush=True)\n"
+        "with warnings.catch_warnings(record=True) as w:\n"
+        "    warnings.simplefilter('always')\n"
+        "    ropes, ratios = np.linspace(5, 30, 400), np.geomspace(1, 30, 50)\n"
+        "    r = crane.residual_grid(ropes, ratios, [None], progress=False)\n"
+        "print(r.interrupted, int(np.isnan(r.sway).sum()), r.sway.size, [str(x.message) for x in w])\n"
+    )
+    proc = subprocess.Popen(
+        [sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )
+    try:
+        assert proc.stdout is not None
+        assert proc.stdout.readline().strip() == "start"
+        time.sleep(1.5)
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 0, err
+    flag, nan, size, messages = out.strip().split(" ", 3)
+    assert flag == "True" and 0 < int(nan) < int(size) == 20_000, out
+    assert "crane grid interrupted" in messages, out

@@ -34,6 +34,7 @@ from .common import (
     _user_errors,
     app,
 )
+from .crane import report
 
 
 def _settings(sc: Scenario) -> str:
@@ -118,6 +119,13 @@ def run(
             method=method, dt=dt, t_end=t_end, save_every=save_every, rtol=rtol, atol=atol
         )
         sc = load_scenario(_scenario_file(scenario)).with_overrides(overrides)
+        if sc.is_crane:  # a [crane] file: the crane's run and report (pendulab crane run)
+            if out is not None and out.suffix.lower() != ".csv":
+                _fail(f"--out {str(out)!r}: crane runs are written as .csv")
+            if not quiet:
+                _say(f"running {scenario}" + (f": {sc.title}" if sc.title else ""), err=True)
+            report(sc.crane(), str(scenario), out)
+            return
         projection = sc.initial_state().projection
         if not quiet:
             _say(f"running {scenario}" + (f": {sc.title}" if sc.title else ""), err=True)

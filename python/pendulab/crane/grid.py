@@ -1,11 +1,18 @@
 """The residual sway of a move over a grid of rope lengths × payload ratios × shapers, each case a hook +
 payload crane (T-11.5) simulated in the core in parallel (``pendulab_core::crane::grid``; docs/cranes.md
 "A grid of cases", docs/performance.md). Units: m, kg, s, m/s, m/s², m/s³.
+
+The grid runs in chunks (one shaper × a block of rope lengths, about :data:`CHUNK_CASES` cases each)
+on the sweeps' driver (:func:`pendulab.sweeps.backends.drive` on its thread pool: the core releases the
+GIL and runs each chunk's cases in parallel), with a progress bar and a clean stop on Ctrl-C after the
+chunks in flight: the cases not computed are NaN and ``GridResult.interrupted`` is True.
 """
 
 from __future__ import annotations
 
 import math
+import threading
+import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -13,22 +20,27 @@ from typing import Any
 import numpy as np
 
 from .._core import InvalidInputError, crane_residual_grid
+from .._progress import tqdm
+from ..sweeps.backends import Threads, drive
 from .paths import move
 from .shaper import FloatArray, Shaper
 
 MAX_CASES = 1_000_000
+CHUNK_CASES = 200
+"""Cases per chunk (one shaper, a block of rope lengths × every ratio): a few tenths of a second."""
 
 
 @dataclass(frozen=True)
 class GridResult:
     """``sway`` [m] (n_shapers, n_ropes, n_ratios): the payload's largest horizontal distance from the
     pivot after the move; ``ropes`` [m], ``ratios`` (m₂/m₁), ``labels`` (one per shaper, "unshaped"
-    for None)."""
+    for None); ``interrupted`` when Ctrl-C stopped the grid (the cases not computed are NaN)."""
 
     sway: FloatArray
     ropes: FloatArray
     ratios: FloatArray
     labels: tuple[str, ...]
+    interrupted: bool = False
 
 
 def residual_grid(
@@ -46,10 +58,16 @@ def residual_grid(
     dt: float = 0.05,
     rtol: float = 1e-8,
     atol: float = 1e-8,
+    *,
+    progress: bool | None = None,
+    workers: int = 1,
 ) -> GridResult:
     """Moves the pivot by ``distance`` along x (limits ``v_max``, ``a_max``, ``j_max``), once per shaper
     (None: unshaped), for every rope length [m] × payload ratio m₂/m₁ (hook ``hook_mass`` [kg],
-    ``rigging`` [m]); the residual sway is measured every ``dt`` [s] for ``settle`` [s] after the move."""
+    ``rigging`` [m]); the residual sway is measured every ``dt`` [s] for ``settle`` [s] after the move.
+    Runs in chunks (module doc): ``progress`` shows a bar (default: for more than 1000 cases),
+    ``workers`` chunks run at once (each already parallel in the core). Ctrl-C returns what is done
+    (NaN elsewhere, ``interrupted`` True) with a RuntimeWarning."""
     lr = np.asarray(ropes, dtype=np.float64).ravel()
     rr = np.asarray(ratios, dtype=np.float64).ravel()
     n = len(shapers) * lr.size * rr.size
@@ -59,13 +77,46 @@ def residual_grid(
         raise InvalidInputError(f"{n} cases exceed {MAX_CASES}; use a coarser grid")
     if not (math.isfinite(settle) and 0 < settle <= 3600 and math.isfinite(dt) and 0 < dt <= settle):
         raise InvalidInputError(f"need 0 < dt <= settle <= 3600 s, got dt = {dt!r}, settle = {settle!r}")
+    if not (isinstance(workers, int) and 1 <= workers <= 64):
+        raise InvalidInputError(f"workers = {workers!r}: an integer in [1, 64]")
+    # every value checked once, up front, by the core (a bad rope or ratio fails before any work)
+    crane_residual_grid([], lr.tolist(), rr.tolist(), hook_mass, rigging, g, settle, dt, rtol, atol, 1)
     moves: list[Any] = []
     labels = []
     for s in shapers:
         path = move(distance, v_max, a_max, j_max=j_max, shaper=s, t_start=0.0)
         moves.append((path.knots(-1.0, path.t_end + settle + 1.0), path.t_end))
         labels.append("unshaped" if s is None else s.kind)
-    out = crane_residual_grid(
-        moves, lr.tolist(), rr.tolist(), hook_mass, rigging, g, settle, dt, rtol, atol, 10_000_000
-    )
-    return GridResult(np.asarray(out).reshape(len(shapers), lr.size, rr.size), lr, rr, tuple(labels))
+    sway = np.full((len(shapers), lr.size, rr.size), np.nan)
+    block = max(1, CHUNK_CASES // rr.size)
+    chunks = [(i, j) for i in range(len(shapers)) for j in range(0, lr.size, block)]
+
+    def work(chunk: tuple[int, int], cancel: threading.Event) -> Any:
+        i, j = chunk
+        if cancel.is_set():
+            return None
+        ropes_block = lr[j : j + block].tolist()
+        return crane_residual_grid(
+            [moves[i]], ropes_block, rr.tolist(), hook_mass, rigging, g, settle, dt, rtol, atol, 10_000_000
+        )
+
+    def done(k: int, values: Any) -> None:
+        i, j = chunks[k]
+        if values is not None:
+            sway[i, j : j + block] = np.asarray(values).reshape(-1, rr.size)
+
+    show = n > 1000 if progress is None else progress
+    bar = tqdm(total=len(chunks), unit="chunk", desc="crane grid", leave=False, disable=not show)
+    interrupted = False
+    with bar:
+        try:
+            drive(Threads(workers), work, list(range(len(chunks))), lambda k: chunks[k], done, bar)
+        except KeyboardInterrupt:
+            interrupted = True
+            left = int(np.isnan(sway).sum())
+            warnings.warn(
+                f"crane grid interrupted: {n - left} of {n} cases computed, the rest are NaN",
+                RuntimeWarning,
+                stacklevel=2,
+            )
+    return GridResult(sway, lr, rr, tuple(labels), interrupted)

@@ -4,7 +4,10 @@ rigging [m], damping [1/s], g [m/s²]), optional ``[move]`` (a straight pivot mo
 omega [rad/s] or rope [m]; default the crane's lowest sway mode), ``[hoist]`` (t [s], length [m]),
 ``[wind]`` (the :class:`~pendulab.crane.system.Wind` fields) and ``[simulation]`` (t_end, dt [s],
 sway and rigging_sway [rad], rtol, atol). Unknown keys, wrong types, NaN/inf are errors naming the
-key; files above 1 MiB are refused. ``pendulab crane run FILE`` runs one.
+key; files above 1 MiB are refused. ``pendulab crane run FILE`` runs one. The tables are those of a
+scenario file with ``[crane]`` (:mod:`pendulab.scenario.crane_schema`): ``pl.load_scenario``,
+``pendulab run`` and ``pendulab validate`` read the same files, building the crane with
+:func:`from_spec`.
 """
 
 from __future__ import annotations
@@ -13,91 +16,18 @@ import math
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Annotated, Any
+from typing import Any
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import ValidationError
 
 from .._core import InvalidInputError
+from ..scenario.crane_schema import CraneSpec
 from .paths import Gantry, move
 from .paths import Path as CranePath
 from .shaper import Shaper, shaper
 from .system import Crane, CraneRun, Hoist, Wind
 
 MAX_BYTES = 1 << 20
-
-_Pos = Annotated[float, Field(gt=0, le=1e6)]
-_NonNeg = Annotated[float, Field(ge=0, le=1e6)]
-_Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
-
-
-class _Section(BaseModel):
-    model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
-
-
-class _CraneSec(_Section):
-    rope: _Pos
-    payload_mass: _Pos = 1000.0
-    hook_mass: _Pos | None = None
-    rigging: _Pos | None = None
-    damping: _NonNeg = 0.0
-    g: Annotated[float, Field(gt=0, le=1e3)] = 9.81
-
-
-class _MoveSec(_Section):
-    distance: Annotated[float, Field(ge=-1e5, le=1e5)]
-    v_max: _Pos
-    a_max: _Pos
-    j_max: _Pos | None = None
-    direction: _Vec3 = [1.0, 0.0, 0.0]
-    t_start: _NonNeg = 0.0
-
-
-class _ShaperSec(_Section):
-    kind: str
-    omega: _Pos | None = None
-    rope: _Pos | None = None
-    damping: Annotated[float, Field(ge=0, lt=1)] = 0.0
-    tolerance: Annotated[float, Field(gt=0, lt=1)] = 0.05
-
-
-class _HoistSec(_Section):
-    t: Annotated[list[float], Field(min_length=2, max_length=100_000)]
-    length: Annotated[list[float], Field(min_length=2, max_length=100_000)]
-
-
-class _WindSec(_Section):
-    velocity: _Vec3 = [0.0, 0.0, 0.0]
-    area: _NonNeg = 0.0
-    drag_coefficient: _NonNeg = 1.2
-    air_density: _NonNeg = 1.225
-    gust: _Vec3 = [0.0, 0.0, 0.0]
-    gust_start: float = 0.0
-    gust_duration: _Pos = 1.0
-    hook_area: _NonNeg = 0.0
-    hook_drag_coefficient: _NonNeg = 1.2
-    turbulence: _NonNeg = 0.0
-    turbulence_scale: _Pos = 50.0
-    turbulence_modes: Annotated[int, Field(ge=8, le=4096)] = 64
-    seed: Annotated[int, Field(ge=0, le=2**63 - 1)] = 0
-
-
-class _SimSec(_Section):
-    t_end: Annotated[float, Field(gt=0, le=1e6)]
-    dt: _Pos = 0.02
-    sway: Annotated[list[float], Field(min_length=2, max_length=2)] = [0.0, 0.0]
-    rigging_sway: Annotated[list[float], Field(min_length=2, max_length=2)] | None = None
-    rtol: Annotated[float, Field(ge=1e-14, le=1e-3)] = 1e-10
-    atol: Annotated[float, Field(gt=0, le=1.0)] = 1e-10
-
-
-class _File(_Section):
-    crane: _CraneSec
-    simulation: _SimSec
-    move: _MoveSec | None = None
-    shaper: _ShaperSec | None = None
-    hoist: _HoistSec | None = None
-    wind: _WindSec | None = None
-    title: str = ""
 
 
 @dataclass(frozen=True)
@@ -136,9 +66,24 @@ def _describe(e: ValidationError) -> str:
 def parse(data: dict[str, Any], source: str = "<crane file>") -> CraneScenario:
     """A :class:`CraneScenario` from the parsed TOML ``data``; errors name ``source`` and the key."""
     try:
-        f = _File.model_validate(data)
+        f = CraneSpec.model_validate(data)
     except ValidationError as e:
         raise InvalidInputError(f"{source}: {_describe(e)}") from None
+    return from_spec(f, source)
+
+
+def from_spec(f: CraneSpec, source: str = "<crane file>") -> CraneScenario:
+    """A :class:`CraneScenario` from validated tables (what a scenario file with ``[crane]`` holds,
+    :mod:`pendulab.scenario.crane_schema`); ``InvalidInputError`` naming ``source`` when the crane
+    cannot be built (a move the limits cannot make, an unknown shaper kind, a bad hoist)."""
+    try:
+        return _build(f, source)
+    except InvalidInputError as e:
+        text = str(e)
+        raise InvalidInputError(text if text.startswith(source) else f"{source}: {text}") from None
+
+
+def _build(f: CraneSpec, source: str) -> CraneScenario:
     c = f.crane
     probe = Crane(rope=c.rope, payload_mass=c.payload_mass, hook_mass=c.hook_mass, rigging=c.rigging, g=c.g)
     s = None
@@ -190,7 +135,7 @@ def parse(data: dict[str, Any], source: str = "<crane file>") -> CraneScenario:
         sim.rtol,
         sim.atol,
         move_end,
-        f.title,
+        f.title or "",
     )
 
 

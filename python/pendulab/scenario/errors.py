@@ -13,6 +13,7 @@ from __future__ import annotations
 import difflib
 import re
 import tomllib
+import typing
 from typing import Any
 
 from pydantic import BaseModel
@@ -76,23 +77,26 @@ _BOUNDS = {
 }
 
 
-def _model_at(loc: tuple[int | str, ...]) -> type[BaseModel] | None:
-    """The pydantic model holding the key at ``loc`` (None if there is none)."""
-    model: type[BaseModel] = ScenarioSpec
+def _model_at(loc: tuple[int | str, ...], root: type[BaseModel] = ScenarioSpec) -> type[BaseModel] | None:
+    """The pydantic model holding the key at ``loc`` (None if there is none), from ``root`` (the
+    pendulum's :class:`ScenarioSpec` or the crane's ``CraneSpec``); an optional table counts."""
+    model: type[BaseModel] = root
     for part in loc[:-1]:
         if not isinstance(part, str):
             return None
         info = model.model_fields.get(part)
         sub = info.annotation if info is not None else None
-        if not (isinstance(sub, type) and issubclass(sub, BaseModel)):
+        options = typing.get_args(sub) if typing.get_args(sub) else (sub,)
+        tables = [o for o in options if isinstance(o, type) and issubclass(o, BaseModel)]
+        if not tables:
             return None
-        model = sub
+        model = tables[0]
     return model
 
 
-def _allowed(loc: tuple[int | str, ...]) -> str | None:
+def _allowed(loc: tuple[int | str, ...], root: type[BaseModel] = ScenarioSpec) -> str | None:
     keys = tuple(p for p in loc if isinstance(p, str))
-    model = _model_at(keys)
+    model = _model_at(keys, root)
     if model is None or not keys:
         return None
     info = model.model_fields.get(keys[-1])
@@ -125,14 +129,15 @@ def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
     return text + f"; allowed keys in [pendulum] for model {model!r}: {', '.join(keys)}"
 
 
-def _problem(err: ErrorDetails, data: Any = None) -> str:
+def _problem(err: ErrorDetails, data: Any = None, root: type[BaseModel] = ScenarioSpec) -> str:
     """One readable line for one pydantic error: the dotted key, the bad value, what is allowed.
-    ``data`` is the raw input (it names the model whose keys ``[pendulum]`` takes)."""
+    ``data`` is the raw input (it names the model whose keys ``[pendulum]`` takes); ``root`` the
+    file's schema (the crane's ``CraneSpec`` for a file with ``[crane]``)."""
     loc = tuple(err["loc"])
     kind, value = err["type"], err.get("input")
-    if kind == "extra_forbidden" and len(loc) == 2 and loc[0] == "pendulum":
+    if kind == "extra_forbidden" and len(loc) == 2 and loc[0] == "pendulum" and root is ScenarioSpec:
         return _unknown_pendulum_key(str(loc[1]), value, _pendulum_model(data))
-    allowed = _allowed(loc)
+    allowed = _allowed(loc, root)
     if loc[:2] == ("pendulum", "params") and len(loc) == 3:  # a model parameter: shown as written
         model = _pendulum_model(data)
         name = str(loc[2])
@@ -142,12 +147,12 @@ def _problem(err: ErrorDetails, data: Any = None) -> str:
             allowed = f"{spec['allowed']} (in {unit}; {spec['description']})"
         loc = ("pendulum", name)
     key = abbreviate(_key(loc))
-    if kind == "missing" and len(loc) == 1 and loc[0] in SECTIONS:
+    if kind == "missing" and len(loc) == 1 and (loc[0] in SECTIONS or loc[0] in root.model_fields):
         return f"the table [{key}] is missing"
     if kind == "missing":
         return f"{key} is missing; expected {allowed}" if allowed else f"{key} is missing"
     if kind == "extra_forbidden":
-        parent = _model_at(loc)
+        parent = _model_at(loc, root)
         names = list(parent.model_fields) if parent is not None else []
         section = f"[{_key(loc[:-1])}]" if len(loc) > 1 else "the top level"
         hint = difflib.get_close_matches(str(loc[-1])[:100], names, n=1)

@@ -33,6 +33,10 @@ messages (:class:`ScenarioError`) in :mod:`pendulab.scenario.errors`, building t
 spring and its start with the core's checks in :mod:`pendulab.scenario.build`; this module holds
 :class:`Scenario` (construction, overrides, running, TOML writing) and :func:`load_scenario`, and
 re-exports the public names of the others.
+
+A file with a ``[crane]`` table describes a crane instead (docs/scenarios.md "Cranes"; the tables in
+:mod:`pendulab.scenario.crane_schema`): it is validated here like any scenario, and the crane is
+built and run by :mod:`pendulab.crane` (imported only for such a file: it needs SciPy).
 """
 
 from __future__ import annotations
@@ -57,6 +61,7 @@ from ..trajectory import Trajectory
 from ..validate import check_depth, check_nesting, read_file_capped
 from ..variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
+from .crane_schema import CRANE_SECTIONS, CraneSpec, is_crane
 from .errors import ScenarioError, _problem, _syntax_error
 from .overrides import RunOverrides, run_overrides
 from .schema import (
@@ -111,15 +116,20 @@ class Scenario:
     settings are (``source`` is not compared).
     """
 
-    spec: ScenarioSpec
+    spec: ScenarioSpec | CraneSpec
     source: str = field(default="<string>", compare=False)
     _pendulum: Pendulum = field(init=False, repr=False, compare=False)
     _spring: SwingingSpring | None = field(init=False, repr=False, compare=False)
     _state: State = field(init=False, repr=False, compare=False)
+    _crane: Any = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        p, sim = self.spec.pendulum, self.spec.simulation
         object.__setattr__(self, "_spring", None)
+        object.__setattr__(self, "_crane", None)
+        if isinstance(self.spec, CraneSpec):
+            object.__setattr__(self, "_crane", _build_crane(self.spec, self.source))
+            return
+        p, sim = self.spec.pendulum, self.spec.simulation
         if p.model == "spring":  # off the sphere: its own integrator (spring.py), not a Pendulum
             spring, state = build_spring(self.spec, self.source)
             object.__setattr__(self, "_spring", spring)
@@ -130,6 +140,30 @@ class Scenario:
         object.__setattr__(self, "_state", start_state(pendulum, self.spec.initial, self.source))
         check_run_settings(pendulum, self._state, sim, self.source)
 
+    @property
+    def is_crane(self) -> bool:
+        """True for a file with ``[crane]`` (a crane, :meth:`crane`), not a pendulum."""
+        return isinstance(self.spec, CraneSpec)
+
+    def crane(self) -> Any:
+        """The ``pendulab.crane.scenario.CraneScenario`` of a file with ``[crane]`` (its ``crane``,
+        ``shaper``, ``t_end``, ``dt`` [s], ``move_end`` [s], ``run()``); :class:`ScenarioError` for a
+        pendulum's file."""
+        if self._crane is None:
+            raise ScenarioError(
+                self.source, "this scenario is a pendulum, not a crane: it has no [crane] table"
+            )
+        return self._crane
+
+    def _pendulum_spec(self) -> ScenarioSpec:
+        if not isinstance(self.spec, ScenarioSpec):
+            raise ScenarioError(
+                self.source,
+                "this scenario is a crane ([crane]), not a pendulum: see Scenario.crane(); "
+                "it runs with Scenario.run() and `pendulab run`",
+            )
+        return self.spec
+
     def spring(self) -> SwingingSpring | None:
         """The swinging spring of a ``model = "spring"`` scenario (None for the pendulum models)."""
         return self._spring
@@ -139,14 +173,23 @@ class Scenario:
     @classmethod
     def from_dict(cls, data: dict[str, Any], source: str = "<dict>") -> Scenario:
         """A scenario from the parsed TOML structure (nested dicts); :class:`ScenarioError` if invalid."""
+        root: type[ScenarioSpec] | type[CraneSpec] = CraneSpec if is_crane(data) else ScenarioSpec
+        if root is CraneSpec and ("pendulum" in data or "initial" in data):
+            extra = [f"[{k}]" for k in ("pendulum", "initial") if k in data]
+            raise ScenarioError(
+                source,
+                f"a file with [crane] describes a crane, so {' and '.join(extra)} "
+                f"{'does' if len(extra) == 1 else 'do'} not belong in it: a crane file has "
+                f"the tables {', '.join(f'[{k}]' for k in CRANE_SECTIONS)} (docs/scenarios.md, Cranes)",
+            )
         try:
             check_depth(data)
-            spec = ScenarioSpec.model_validate(data)
+            spec = root.model_validate(data)
         except InvalidInputError as e:
             raise ScenarioError(source, str(e)) from None
         except ValidationError as e:
             errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
-            raise ScenarioError(source, [_problem(err, data) for err in errors]) from None
+            raise ScenarioError(source, [_problem(err, data, root) for err in errors]) from None
         return cls(spec, source)
 
     @classmethod
@@ -173,6 +216,12 @@ class Scenario:
         given = run_overrides(overrides, fields).given()
         if not given:
             return self
+        if self.is_crane and (wrong := sorted(set(given) - {"dt", "t_end", "rtol", "atol"})):
+            raise ScenarioError(
+                self.source,
+                f"a crane run takes no {', '.join(wrong)} (its [simulation] has t_end, dt, sway, "
+                "rigging_sway, rtol, atol: the crane has its own adaptive integrator)",
+            )
         data = self.to_dict()
         data["simulation"].update(given)
         if "save_every" in given:
@@ -185,11 +234,12 @@ class Scenario:
     @property
     def title(self) -> str | None:
         """The file's title, if any."""
-        return self.spec.title
+        return self.spec.title or None
 
     def pendulum(self) -> Pendulum:
         """The pendulum of ``[pendulum]`` (length [m], mass [kg], g [m/s²]). A ``model = "spring"``
         scenario has none (:meth:`spring` instead): :class:`ScenarioError`."""
+        self._pendulum_spec()
         if self._spring is not None:
             raise ScenarioError(
                 self.source,
@@ -200,10 +250,13 @@ class Scenario:
 
     def initial_state(self) -> State:
         """The start of ``[initial]`` on TS²; with project = true, ``State.projection`` says how far."""
+        self._pendulum_spec()
         return self._state
 
     def expected_samples(self) -> int | None:
         """How many samples a run will save (``None`` when an adaptive method decides, with save_every)."""
+        if isinstance(self.spec, CraneSpec):
+            return 1 + math.ceil(self.spec.simulation.t_end / self.spec.simulation.dt - 1e-9)
         sim = self.spec.simulation
         if sim.save_at is not None:
             return len(sim.save_at)
@@ -219,10 +272,17 @@ class Scenario:
         ``[simulation]`` (see :meth:`with_overrides`).
 
         ``progress`` as in :func:`pendulab.simulate` (default: a bar only for long runs). Ctrl-C returns
-        the samples computed so far with ``Trajectory.interrupted = True``.
+        the samples computed so far with ``Trajectory.interrupted = True``. A crane's file returns the
+        crane's run (``pendulab.crane.CraneRun``; overrides: t_end, dt, rtol, atol).
         """
         sc = self.with_overrides(overrides, **fields)
-        sim = sc.spec.simulation
+        if sc._crane is not None:
+            try:
+                return sc._crane.run()  # type: ignore[no-any-return]
+            except (IntegrationError, InvalidInputError) as e:
+                raise type(e)(f"{sc.source}: {e}") from None
+        spec = sc._pendulum_spec()
+        sim = spec.simulation
         if sc._spring is not None:
             run = simulate_spring(
                 sc._spring,
@@ -292,12 +352,23 @@ class Scenario:
     def to_dict(self) -> dict[str, Any]:
         """The settings as nested dicts (defaults filled in, unset optional keys left out)."""
         data = self.spec.model_dump(exclude_none=True)
-        data["pendulum"].update(data["pendulum"].pop("params", {}))
+        if "pendulum" in data:
+            data["pendulum"].update(data["pendulum"].pop("params", {}))
         return data
 
     def to_toml(self) -> str:
         """The scenario as TOML text (units as comments); loading it gives an equal scenario."""
         data = self.to_dict()
+        if isinstance(self.spec, CraneSpec):
+            lines = [
+                f"# Pendulab crane scenario (pendulab {__version__}); SI units (docs/scenarios.md, Cranes)"
+            ]
+            lines += [f"{k} = {_toml_value(data[k])}" for k in ("title", "description") if k in data]
+            for section in CRANE_SECTIONS:
+                if section in data:
+                    lines += ["", f"[{section}]"]
+                    lines += [f"{key} = {_toml_value(value)}" for key, value in data[section].items()]
+            return "\n".join(lines) + "\n"
         model = self.spec.pendulum.model
         units = {section: dict(table) for section, table in UNITS.items()}
         units["pendulum"] |= {k: p["unit"] for k, p in _own_params(model).items() if p["unit"] != "1"}
@@ -318,6 +389,19 @@ class Scenario:
         with atomic_path(path) as tmp:
             tmp.write_text(text, encoding="utf-8")
         return Path(path)
+
+
+def _build_crane(spec: CraneSpec, source: str) -> Any:
+    """The crane of a validated ``[crane]`` file, built by :mod:`pendulab.crane` (imported here only:
+    it needs SciPy); what it refuses is a :class:`ScenarioError` naming the file."""
+    try:
+        from ..crane.scenario import from_spec
+    except ImportError as e:
+        raise ScenarioError(source, f"a crane scenario needs pendulab.crane: {e}") from None
+    try:
+        return from_spec(spec, source)
+    except InvalidInputError as e:
+        raise ScenarioError(source, str(e).removeprefix(f"{source}: ")) from None
 
 
 def load_scenario(path: str | os.PathLike[str]) -> Scenario:

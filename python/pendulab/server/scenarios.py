@@ -50,8 +50,12 @@ class Setup:
     @classmethod
     def from_scenario(cls, sc: Scenario, name: str | None) -> Setup:
         """The setup of ``sc``; :class:`ScenarioError` if its model does not run in the lab (sampled
-        pivot paths run with ``pendulab run`` only)."""
-        model = sc.spec.pendulum.model
+        pivot paths run with ``pendulab run`` only; a crane's file, ``[crane]``, too)."""
+        if sc.is_crane:
+            raise ScenarioError(
+                sc.source, "a crane scenario ([crane]) runs with pendulab run, not in the lab"
+            )
+        model = sc._pendulum_spec().pendulum.model
         if model not in MODEL_SPECS:
             raise ScenarioError(
                 sc.source,
