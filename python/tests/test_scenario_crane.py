@@ -27,6 +27,11 @@ def test_the_example_is_a_crane_scenario_that_round_trips_through_toml() -> None
     assert again == sc and again.is_crane
     c = sc.crane()
     assert c.shaper is not None and c.shaper.kind == "zv"
+    assert (
+        repr(sc)
+        == "Scenario('crane_hoist.toml': crane, rope=12 m, payload=2000 kg, hoisted, shaper zv; t=0…40 s)"
+    )
+    assert "sway modes" in sc._repr_html_() and "0.904" in sc._repr_html_()
     assert c.crane.hoist.length([14.0])[0] == pytest.approx(6.0)
 
 

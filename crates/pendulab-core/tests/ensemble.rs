@@ -131,7 +131,7 @@ fn final_only_and_cancellation() {
     for k in [0, 63, 64, 99] {
         let mut st = Stepper::new(m, 0.0, s[k], &opts).unwrap();
         st.step_n(100).unwrap();
-        assert_eq!(res.trajectory(k), &[s[k], *st.state()], "trajectory {k}");
+        assert_eq!(res.trajectory(k), &[s[k], st.state()], "trajectory {k}");
     }
 }
 

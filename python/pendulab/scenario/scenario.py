@@ -314,7 +314,20 @@ class Scenario:
 
     # --- showing itself ---
 
+    def _crane_summary(self) -> list[Row]:
+        c, sim = self._crane, self.spec.simulation
+        return [
+            ("crane: rope", self.spec.crane.rope, "m"),  # type: ignore[union-attr]
+            ("payload mass", self.spec.crane.payload_mass, "kg"),  # type: ignore[union-attr]
+            ("sway modes", ", ".join(number(float(w)) for w in c.crane.modes()), "rad/s"),
+            ("shaper", c.shaper.kind if c.shaper is not None else "none", ""),
+            ("hoist", "yes" if self.spec.hoist is not None else "no", ""),  # type: ignore[union-attr]
+            ("time span 0 … t_end", f"0 … {number(sim.t_end)}", "s"),
+        ]
+
     def _summary(self) -> list[Row]:
+        if self.is_crane:
+            return self._crane_summary()
         p, sim = self.spec.pendulum, self.spec.simulation
         theta, phi = self._state.angles_deg()
         step = "adaptive" if sim.is_adaptive() else with_unit(sim.resolved_dt(), "s")
@@ -332,10 +345,18 @@ class Scenario:
         return rows
 
     def __repr__(self) -> str:
+        name = Path(self.source).name if self.source and not self.source.startswith("<") else self.source
+        if isinstance(self.spec, CraneSpec):
+            c = self.spec.crane
+            return (
+                f"Scenario({name!r}: crane, rope={number(c.rope)} m, payload={number(c.payload_mass)} kg"
+                f"{', hoisted' if self.spec.hoist else ''}"
+                f"{', shaper ' + self.spec.shaper.kind if self.spec.shaper else ''}; "
+                f"t=0…{number(self.spec.simulation.t_end)} s)"
+            )
         p, sim = self.spec.pendulum, self.spec.simulation
         theta, phi = self._state.angles_deg()
         step = "adaptive" if sim.is_adaptive() else f"dt={number(sim.resolved_dt())} s"
-        name = Path(self.source).name if self.source and not self.source.startswith("<") else self.source
         params = "".join(f", {k}={number(v)}" for k, v in p.params.items() if isinstance(v, int | float))
         return (
             f"Scenario({name!r}: {p.model}{params}, l={number(p.length)} m, m={number(p.mass)} kg, "

@@ -3,7 +3,7 @@
 //! [`IdealPendulum`], its fast path). Loops over steps dispatch once ([`Model::visit`]), not once per
 //! step. Parameters in SI units as the registry lists them.
 
-use super::hoist::{Hoisted, RopeLaw};
+use super::hoist::Hoisted;
 use super::pivot::{MovingPivot, PivotPath};
 use super::registry::spec;
 use super::spline::PivotSamples;
@@ -130,22 +130,10 @@ impl AnyModel {
                 crate::elastic::SwingingSpring::new(k / params.mass, params.length, params.g, params.mass)?;
                 return Err(Error::OffSphereModel { model: "spring" });
             }
-            "hoisted" => AnyModel::Hoisted(Hoisted::new(
-                MovingPivot::new(
-                    params,
-                    PivotPath::Slewing {
-                        radius: get("radius").unwrap(),
-                        rate: get("rate").unwrap(),
-                        height: get("height").unwrap(),
-                    },
-                    get("damping").unwrap(),
-                )?,
-                RopeLaw {
-                    length: params.length,
-                    rate: get("hoist_rate").unwrap(),
-                    amplitude: get("hoist_amplitude").unwrap(),
-                    frequency: get("hoist_frequency").unwrap(),
-                },
+            "hoisted" => AnyModel::Hoisted(Hoisted::slewing(
+                params,
+                ["radius", "rate", "height", "damping"].map(|k| get(k).unwrap()),
+                ["hoist_rate", "hoist_amplitude", "hoist_frequency"].map(|k| get(k).unwrap()),
             )?),
             "string" => AnyModel::String(StringPendulum::new(params, get("restitution").unwrap())?),
             _ => AnyModel::Pivot(MovingPivot::new(

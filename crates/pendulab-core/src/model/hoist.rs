@@ -87,6 +87,17 @@ impl Hoisted {
         Ok(Self { inner, rope })
     }
 
+    /// The registry's `hoisted` model: below the slewing boom tip `pivot` = (radius \[m\], rate
+    /// [rad/s], height \[m\], damping [1/s]) (a fixed pivot for radius or rate 0) on the rope
+    /// `hoist` = (rate [m/s], amplitude \[m\], frequency [rad/s]) of the law l + r t + a sin νt.
+    pub fn slewing(params: Params, pivot: [f64; 4], hoist: [f64; 3]) -> Result<Self> {
+        let [radius, rate, height, damping] = pivot;
+        let path = super::pivot::PivotPath::Slewing { radius, rate, height };
+        let [r, amplitude, frequency] = hoist;
+        let rope = RopeLaw { length: params.length, rate: r, amplitude, frequency };
+        Self::new(MovingPivot::new(params, path, damping)?, rope)
+    }
+
     /// The rope length law.
     pub fn rope(&self) -> &RopeLaw {
         &self.rope
