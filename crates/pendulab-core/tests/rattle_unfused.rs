@@ -108,7 +108,7 @@ fn rattle_is_the_unfused_reference_bit_for_bit_at_every_level_and_in_the_ensembl
             let mut st = Stepper::new(ideal, 0.0, *s0, &opts).unwrap();
             st.step_n(steps as u64).unwrap();
             isa::set_baseline_only(false);
-            assert_eq!(state_bits(st.state()), want, "stepper ({}) from {s0:?}", isa::selected());
+            assert_eq!(state_bits(&st.state()), want, "stepper ({}) from {s0:?}", isa::selected());
         }
         expected.push(want);
     }
