@@ -219,3 +219,21 @@ fn capped_step_to_stops_at_the_cap_and_resumes_into_the_same_run() {
     assert!(!cut.step_to_capped(6.0, 0).unwrap() && cut.t() == 5.0);
     assert!(cut.step_to_capped(4.0, 10).is_err(), "a target in the past is refused");
 }
+
+/// A first step near f64::MAX, or a state at rest (which accepts any step, so the step grows by the
+/// largest factor each time until t overflows): `step_n` with t_stop = ∞ returns an error instead of
+/// dividing an infinite step for ever (tests/fuzz_props.rs hung on such a case).
+#[test]
+fn a_step_that_overflows_the_time_is_an_error_not_a_hang() {
+    use pendulab_core::Params;
+    let p = Params::new(1.0, 1.0, 9.81).unwrap();
+    for (theta, dt) in [(0.0, f64::MAX), (0.0, 1e300), (0.5, f64::MAX), (0.0, 0.0)] {
+        let s0 = State::from_angles(&p, theta, 0.0, 0.0, 0.0).unwrap();
+        let opts = SolveOptions { method: Method::Dop853, dt, rtol: 1e-8, atol: 1e-10, project: true };
+        let mut st = Stepper::new(IdealPendulum::from_params(p), 0.0, s0, &opts).unwrap();
+        match st.step_n(2000) {
+            Ok(()) => assert!(st.t().is_finite(), "theta {theta}, dt {dt:e}: t = {}", st.t()),
+            Err(e) => assert!(e.to_string().contains("dop853"), "{e}"),
+        }
+    }
+}

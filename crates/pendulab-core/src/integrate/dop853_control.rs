@@ -27,7 +27,8 @@ pub(super) struct StepControl {
 impl StepControl {
     /// The trial step from `t0` for the proposal `h`, and whether it lands on `t_stop`: capped by
     /// h_max; the rest of the span when within 1.01 h of `t_stop` (dop853.f: land rather than leave a
-    /// sliver). [`Error::StepSizeUnderflow`] when it is NaN or below ten ulp of t.
+    /// sliver). [`Error::StepSizeUnderflow`] when it is NaN or below ten ulp of t, [`Error::Diverged`] when
+    /// it or t + h is infinite.
     #[inline(always)]
     pub(super) fn trial(&self, h: f64, t0: f64, t_stop: f64) -> Result<(f64, bool)> {
         let span = t_stop - t0;
@@ -35,6 +36,12 @@ impl StepControl {
         let last = t0 + 1.01 * h >= t_stop;
         if last {
             h = span;
+        }
+        // a step so large that the time overflows (a state at rest accepts any step, which then
+        // grows by FAC_MAX each time; or a first step near f64::MAX): refused, or the rejections
+        // would divide an infinite step for ever (tests/fuzz_props.rs hung on it)
+        if !(h.is_nan() || (h.is_finite() && (t0 + h).is_finite())) {
+            return Err(Error::Diverged { t: t0, method: "dop853", dt: h });
         }
         let h_floor = 10.0 * (t0.abs().max(span.min(1.0)) * f64::EPSILON).max(f64::MIN_POSITIVE);
         if h.is_nan() || h < h_floor {
