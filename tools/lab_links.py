@@ -33,6 +33,18 @@ LAB_LINE = re.compile(r"^Lab:\s*(\S+)\s*$", re.M)
 """The docstring line of a gallery script that gives its lab link's query."""
 
 
+def lab_scenarios() -> list[Path]:
+    """The example scenario files the lab runs: all but the crane files (a ``[crane]`` table), which
+    run with ``pendulab run`` (the lab has no crane mode yet, docs/cranes.md)."""
+    import tomllib
+
+    return [
+        p
+        for p in sorted(SCENARIO_DIR.glob("*.toml"))
+        if "crane" not in tomllib.loads(p.read_text(encoding="utf-8"))
+    ]
+
+
 def scenario_query(name: str) -> str:
     """The lab link's query of an example scenario."""
     return f"s={name}"
@@ -60,7 +72,7 @@ def tour_query(notebook: Path) -> str | None:
 def all_links() -> list[tuple[str, str | None]]:
     """Every (where, query) of the site: the example scenarios, the gallery scripts, the notebooks."""
     out: list[tuple[str, str | None]] = [
-        (f"examples/scenarios/{p.name}", scenario_query(p.stem)) for p in sorted(SCENARIO_DIR.glob("*.toml"))
+        (f"examples/scenarios/{p.name}", scenario_query(p.stem)) for p in lab_scenarios()
     ]
     out += [(f"docs/gallery/{p.name}", gallery_query(p)) for p in sorted(GALLERY_DIR.glob("[0-9]*.py"))]
     out += [(f"docs/tour/{p.name}", tour_query(p)) for p in sorted(TOUR_DIR.glob("*.ipynb"))]

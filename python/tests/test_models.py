@@ -393,7 +393,8 @@ def test_forcing_direction_defaults_only_when_no_component_is_given() -> None:
 
 
 def test_the_registry_says_which_models_the_stepper_can_run(pendulum: pl.Pendulum) -> None:
-    """``interactive`` is True exactly for the models the incremental Stepper (the lab) runs."""
+    """``interactive`` is True exactly for the models the incremental Stepper (the lab) runs, but
+    ``hoisted``: the Stepper runs it (every method, T-11.10) while the lab has no crane mode yet."""
     s0 = pendulum.state_from_angles(*ROSETTE)
     for m in pl.models():
         own = {p["name"]: p["default"] for p in m["params"] if p["name"] not in COMMON}
@@ -402,4 +403,4 @@ def test_the_registry_says_which_models_the_stepper_can_run(pendulum: pl.Pendulu
             ran = True
         except pl.InvalidInputError:
             ran = False
-        assert ran == m["interactive"], m["name"]
+        assert ran == (m["interactive"] or m["name"] == "hoisted"), m["name"]
