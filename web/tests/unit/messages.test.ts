@@ -40,8 +40,15 @@ describe('server messages', () => {
 
 describe('scenario titles', () => {
   it('every shipped scenario has its title in every language', () => {
-    const files = import.meta.glob('../../../python/pendulab/examples/scenarios/*.toml', { query: '?raw' });
-    const names = Object.keys(files).map((f) => f.replace(/^.*\//, '').slice(0, -5));
+    const files = import.meta.glob('../../../python/pendulab/examples/scenarios/*.toml', {
+      query: '?raw',
+      import: 'default',
+      eager: true,
+    }) as Record<string, string>;
+    // crane files ([crane]) run with `pendulab run`: the lab does not list them (no crane mode yet)
+    const names = Object.entries(files)
+      .filter(([, text]) => !/^\[crane\]/m.test(text))
+      .map(([f]) => f.replace(/^.*\//, '').slice(0, -5));
     expect(names.length).toBeGreaterThan(10);
     for (const lang of Object.keys(LANGUAGES) as (keyof typeof LANGUAGES)[]) {
       setLanguage(lang);
