@@ -54,3 +54,26 @@ def test_the_running_median_keeps_a_monotone_start_and_removes_a_spike() -> None
     first[0] += 2.0  # a spike at the very first sample: the start read off the data must not see it
     assert abs(running_median(first)[0] - s[0]) < 0.05
     assert np.array_equal(despiked(s), s)  # no spikes: the data as they are
+
+
+def test_further_starts_are_skipped_only_at_the_noise_floor() -> None:
+    """estimator.at_noise_floor: a result whose χ²/dof (in units of the search's σ, the k anchor
+    residuals left out) is at most FLOOR_CHI2 ends the search; one above it, a failed one, or a robust
+    loss's does not."""
+    from types import SimpleNamespace
+
+    from pendulab.fitting.estimator import FLOOR_CHI2, at_noise_floor
+
+    n, k = 1000, 3
+    dof = n - k
+
+    def search(chi2: float, success: bool = True, loss: str = "linear") -> SimpleNamespace:
+        fun = np.zeros(n + k)  # n data residuals and k anchor residuals
+        result = SimpleNamespace(success=success, cost=0.5 * chi2, fun=fun)
+        return SimpleNamespace(result=result, free=["a", "b", "c"], loss=loss)
+
+    assert at_noise_floor(search(FLOOR_CHI2 * dof))
+    assert not at_noise_floor(search(1.01 * FLOOR_CHI2 * dof))
+    assert not at_noise_floor(search(0.5 * dof, success=False))
+    assert not at_noise_floor(search(0.5 * dof, loss="soft_l1"))
+    assert not at_noise_floor(SimpleNamespace(result=None, free=["a"], loss="linear"))

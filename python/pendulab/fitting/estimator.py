@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from .._blas import one_blas_thread
 from .._core import InvalidInputError
 from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
@@ -52,6 +53,7 @@ from .start import gravity_starts, phase_starts, sideways_starts, signed_start, 
 DISSIPATION = ("damping", "friction", "drag")
 
 
+@one_blas_thread
 def fit(
     t: Any,
     *,
@@ -237,13 +239,16 @@ def _run(search: Search, starts: list[dict[str, Any]], period: float, show: bool
         starts = [starts[i] for i in np.argsort(costs)[:2]]
     bar = tqdm(total=len(starts), desc="fit", unit="start", leave=False) if show else None
     robust, search.loss = search.loss, "linear"  # a robust loss refits from the plain optimum
-    nested = None
+    nested, ran = None, 0
     try:
         nested = _nested_start(search, starts[0], windows)
         if nested is not None:  # already an optimum of the whole record: no windows
             search.from_start(nested, [])
         for s in starts:
+            if at_noise_floor(search):  # no other start can do measurably better
+                break
             search.from_start(s, windows)
+            ran += 1
             if bar is not None:
                 bar.update(1)
         # several data kinds with unknown noise: weigh each by its own residual scatter and refit;
@@ -262,12 +267,29 @@ def _run(search: Search, starts: list[dict[str, Any]], period: float, show: bool
         cause = "Ctrl-C" if isinstance(e, KeyboardInterrupt) else f"the time limit of {search.time_limit:g} s"
         why = f"interrupted ({cause})"
         warnings.warn(f"fit {why}: returning the best values reached", RuntimeWarning, stacklevel=3)
-        return True, why, len(starts)
+        return True, why, max(ran + (nested is not None), 1)
     finally:
         search.loss = robust
         if bar is not None:
             bar.close()
-    return False, "", len(starts) + (nested is not None)
+    return False, "", ran + (nested is not None)
+
+
+#: The best result so far ends the search when its χ²/dof in units of the search's σ (the given σ, or
+#: the noise floor read off the data) is at most this: it explains the data to their noise, so a
+#: further start could only find an optimum that the data cannot tell from it.
+FLOOR_CHI2 = 1.5
+
+
+def at_noise_floor(search: Search) -> bool:
+    """Whether the best result so far explains the data to their noise (χ²/dof ≤ FLOOR_CHI2 in units
+    of the search's σ; the anchor's k residuals are left out)."""
+    res = search.result
+    if res is None or not res.success or search.loss != "linear":
+        return False
+    k = len(search.free)
+    dof = max(int(res.fun.size) - 2 * k, 1)  # res.fun holds the data's residuals and the k anchors
+    return bool(2.0 * float(res.cost) <= FLOOR_CHI2 * dof)
 
 
 def _nested_start(
