@@ -14,11 +14,10 @@ import tseslint from 'typescript-eslint';
 const LIMIT = 60;
 /** file -> its longest function's lines today (the function, and why it is still long). */
 const EXCEPTIONS = {
-  'src/panels/twin.ts': 134, // TwinPanel constructor: the second pendulum's inputs, built in order
+  'src/panels/twin.ts': 121, // TwinPanel constructor: the second pendulum's inputs, built in order
   'src/panels/tools.ts': 115, // Tools constructor: presets, stopwatch, period timer, ruler, sound, description
   'src/url.ts': 108, // decodeUrl: one check per query key, each naming the bad value
   'src/panels/controls.ts': 97, // Controls constructor: the lil-gui folders
-  'src/scene/scene.ts': 93, // PendulumScene constructor (69: update): the three.js objects
   'src/panels/curves.ts': 81, // CurvePlot.draw: axes, ticks, curves and labels on one canvas
   'src/panels/help.ts': 73, // HelpOverlay constructor: the shortcut table and the colour key
 };

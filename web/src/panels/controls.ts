@@ -5,7 +5,7 @@
 import GUI from 'lil-gui';
 import type { Controller } from 'lil-gui';
 import type { Command, ScenarioInfo, Schema, Status } from '../protocol';
-import type { ViewOptions } from '../scene/scene';
+import type { ViewOptions } from '../scene/options';
 import { ModelControls } from './model';
 import { addParam, throttle } from './params';
 import { addViewControls } from './view';

@@ -23,7 +23,10 @@ interface Extra {
   pending: Command[];
 }
 
-function numberInput(row: HTMLElement, label: string, name: string, value: string, step: string): HTMLInputElement {
+/** A labelled number input (`label` then the field, 4.5 em wide) appended to `row`: `name` is its
+ *  data-input (the e2e tests' handle), `value` and `step` its starting value and step. The inputs of
+ *  pendulums 2 (panels/twin.ts, mode `own`), 3 and 4. */
+export function numberInput(row: HTMLElement, label: string, name: string, value: string, step: string): HTMLInputElement {
   const l = document.createElement('label');
   l.append(`${label} `);
   const i = document.createElement('input');

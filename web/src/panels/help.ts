@@ -1,7 +1,7 @@
 // The `?` overlay (docs/web.md, "Keyboard"): the keyboard shortcuts and the colour key of the scene (the
 // vectors, the bob and its trail, the second pendulum). A modal dialog over the page while open; Esc, the
 // close button or `?` closes it and gives the focus back; while it is open the focus stays in it.
-import { ARROW_COLORS } from '../scene/scene';
+import { ARROW_COLORS } from '../scene/options';
 import type { VectorName } from '../scene/vectors';
 import { t } from '../i18n';
 import type { Key } from '../i18n';

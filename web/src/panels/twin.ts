@@ -4,11 +4,12 @@
 import { Connection } from '../connection';
 import type { Command, MethodInfo } from '../protocol';
 import { LabStore } from '../state';
-import type { TrailSlice } from '../scene/scene';
+import type { TrailSlice } from '../scene/trail';
 import { CurvePlot, dataRange } from './curves';
 import { Visibility } from './visible';
 import { rowOffsets, separation, sideBySide, twinCommands } from '../twin';
 import type { ExtraPendulums } from './extras';
+import { numberInput } from './extras';
 import type { Frame, Vec3 } from '../protocol';
 import type { TwinMode, TwinOptions } from '../twin';
 import { DEG } from '../measure';
@@ -106,22 +107,9 @@ export class TwinPanel {
     dampLabel.appendChild(damp);
     // mode `own`: its own length, mass and start angle (PhET's lesson: does length or mass change the period?)
     const ownBox = document.createElement('span');
-    const numberInput = (label: string, name: string, value: string, step: string): HTMLInputElement => {
-      const l = document.createElement('label');
-      l.append(`${label} `);
-      const i = document.createElement('input');
-      i.type = 'number';
-      i.step = step;
-      i.value = value;
-      i.dataset['input'] = name;
-      i.style.width = '4.5em';
-      l.appendChild(i);
-      ownBox.appendChild(l);
-      return i;
-    };
-    const len2 = numberInput(t('twin.length'), 'twin-length', '0.5', '0.05');
-    const mass2 = numberInput(t('twin.mass'), 'twin-mass', '1', '0.1');
-    const theta2 = numberInput(t('twin.theta'), 'twin-theta', '10', '1');
+    const len2 = numberInput(ownBox, t('twin.length'), 'twin-length', '0.5', '0.05');
+    const mass2 = numberInput(ownBox, t('twin.mass'), 'twin-mass', '1', '0.1');
+    const theta2 = numberInput(ownBox, t('twin.theta'), 'twin-theta', '10', '1');
     const start = document.createElement('button');
     start.type = 'button';
     start.dataset['action'] = 'twin-start';

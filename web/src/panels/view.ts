@@ -2,10 +2,10 @@
 // of the angular momentum and the torque (relative to the pivot, metres). Only the drawing changes: nothing
 // is sent to the server.
 import type GUI from 'lil-gui';
-import type { ViewOptions } from '../scene/scene';
-import { STEREO_MODES } from '../scene/scene';
+import type { ViewOptions } from '../scene/options';
+import { STEREO_MODES } from '../scene/options';
 import type { VectorName } from '../scene/vectors';
-import { ARROW_COLORS } from '../scene/scene';
+import { ARROW_COLORS } from '../scene/options';
 import { t } from '../i18n';
 import type { Key } from '../i18n';
 

@@ -2,8 +2,8 @@
 // options, the commands that rebuild its scenario, its second pendulum, its paused time) and writing the
 // current lab back into the address bar. Times in the link are simulated seconds [s], angles radians.
 import type { Command } from '../protocol';
-import { DEFAULT_VIEW, STEREO_MODES } from '../scene/scene';
-import type { ViewOptions } from '../scene/scene';
+import { DEFAULT_VIEW, STEREO_MODES } from '../scene/options';
+import type { ViewOptions } from '../scene/options';
 import type { LabStore } from '../state';
 import type { TwinOptions } from '../twin';
 import type { ChosenPlot } from '../panels/chosen';

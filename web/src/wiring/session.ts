@@ -4,7 +4,8 @@
 import type { Connection } from '../connection';
 import type { Command } from '../protocol';
 import type { LabStore } from '../state';
-import type { PendulumScene, ViewOptions } from '../scene/scene';
+import type { PendulumScene } from '../scene/scene';
+import type { ViewOptions } from '../scene/options';
 import type { TwinPanel } from '../panels/twin';
 import { t } from '../i18n';
 import type { Explain } from './page';
