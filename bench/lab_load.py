@@ -14,7 +14,10 @@ Three phases, in one run on this machine:
 4. **a pupil in the room** (issue 30): 30 normal clients beside one misbehaving pupil (:class:`Pupil`:
    16 greedy sessions, 4 of them flooding ``load_scenario``, 150 idle sockets reopened every 10 s, 40
    parallel ``/api/reduced``, 12 parallel ``GET /api/scenarios``, pings without reading), and a
-   page's ``POST /api/exact`` every 0.5 s (the share answered 200 and the slowest answer).
+   page's ``POST /api/exact`` every 0.5 s (the share answered 200 and the slowest answer). The pupil
+   runs in a process of its own (it is another device: in this process its loops made the measured
+   pages read their frames late), and the processor time of the server's worker processes, of the
+   pages' clients and of the pupil is printed with the phase.
 
 Every page connects from its own loopback address (127.0.1.1, 127.0.1.2, …: all of 127/8 is this
 machine), as the pupils of a class come from their own devices; the server's limits per client
@@ -42,6 +45,7 @@ import asyncio
 import contextlib
 import json
 import math
+import multiprocessing
 import os
 import socket
 import subprocess
@@ -161,8 +165,10 @@ class Pupil:
     def count(self, what: str) -> None:
         self.codes[what] = self.codes.get(what, 0) + 1
 
-    async def run(self, port: int, seconds: float, start: asyncio.Event) -> None:
-        await start.wait()
+    async def run(self, port: int, seconds: float, begin: float) -> None:
+        """Everything at once from ``begin`` (``time.monotonic()``, the same clock in every process of
+        this machine) for ``seconds``."""
+        await asyncio.sleep(max(0.0, begin - time.monotonic()))
         end = time.monotonic() + seconds
         jobs = [self.session(port, end, flood=i < 4) for i in range(16)]
         jobs += [self.idle(port, end), self.pings(port, end)]
@@ -273,14 +279,16 @@ async def phase(
     if with_greedy:
         tasks.append(asyncio.create_task(greedy(url, seconds, start)))
     port = int(url.split(":")[2].split("/")[0])
-    pupil = Pupil()
     probed: asyncio.Task[list[float]] | None = None
+    pupil: asyncio.Future[tuple[dict[str, int], float]] | None = None
+    begin = time.monotonic() + 1.0  # everyone connected and past the first frames
     if with_pupil:
-        tasks.append(asyncio.create_task(pupil.run(port, seconds, start)))
+        pupil = asyncio.get_running_loop().run_in_executor(None, pupil_process, port, seconds, begin)
         probed = asyncio.create_task(probe(port, seconds, start))
         tasks.append(probed)
-    await asyncio.sleep(1.0)  # everyone connected and past the first frames
+    await asyncio.sleep(max(0.0, begin - time.monotonic()))
     cpu0, t0, rss = server.cpu_times(), time.monotonic(), 0
+    me0, workers0 = _cpu(psutil.Process()), _children_cpu(server)
     start.set()
     while not all(t.done() for t in tasks):
         rss = max(rss, server.memory_info().rss)
@@ -288,6 +296,9 @@ async def phase(
     await asyncio.gather(*tasks)
     cpu1, t1 = server.cpu_times(), time.monotonic()
     busy = (cpu1.user + cpu1.system) - (cpu0.user + cpu0.system)
+    workers = sum(t - workers0.get(pid, 0.0) for pid, t in _children_cpu(server).items())
+    clients_cpu = _cpu(psutil.Process()) - me0
+    codes, pupil_cpu = await pupil if pupil is not None else ({}, math.nan)
     fps = np.array([len(c.arrivals) / seconds for c in clients])
     gaps = np.concatenate([np.diff(c.arrivals) for c in clients if len(c.arrivals) > 1]) * 1e3
     return {
@@ -300,19 +311,50 @@ async def phase(
         "gap_max_ms": float(gaps.max()),
         "server_cpu_percent": 100.0 * busy / (t1 - t0),
         "server_rss_mib": rss / 2**20,
+        "workers_cpu_percent": 100.0 * workers / (t1 - t0),
+        "clients_cpu_percent": 100.0 * clients_cpu / (t1 - t0),
+        "pupil_cpu_percent": 100.0 * pupil_cpu / (t1 - t0),
         "estimate_known_percent": 100.0
         * sum(c.known for c in clients)
         / max(1, sum(c.records for c in clients)),
-        **({} if probed is None else _probe_stats(probed.result(), pupil)),
+        **({} if probed is None else _probe_stats(probed.result(), codes)),
     }
 
 
-def _probe_stats(times: list[float], pupil: Pupil) -> dict[str, Any]:
+def _cpu(proc: psutil.Process) -> float:
+    """Processor seconds (user + system) of ``proc`` so far."""
+    t = proc.cpu_times()
+    return float(t.user + t.system)
+
+
+def _children_cpu(server: psutil.Process) -> dict[int, float]:
+    """Processor seconds of the server's worker processes (fits, analyses), by process id."""
+    out = {}
+    for child in server.children(recursive=True):
+        with contextlib.suppress(psutil.Error):
+            out[child.pid] = _cpu(child)
+    return out
+
+
+def pupil_process(port: int, seconds: float, begin: float) -> tuple[dict[str, int], float]:
+    """The pupil in a process of its own (it is another device: its own work must not slow the pages'
+    clients in this process); what the server answered it and the processor seconds it used."""
+    with multiprocessing.get_context("spawn").Pool(1) as pool:
+        return pool.apply(_pupil_main, (port, seconds, begin))
+
+
+def _pupil_main(port: int, seconds: float, begin: float) -> tuple[dict[str, int], float]:
+    pupil, cpu0 = Pupil(), _cpu(psutil.Process())
+    asyncio.run(pupil.run(port, seconds, begin))
+    return dict(sorted(pupil.codes.items())), _cpu(psutil.Process()) - cpu0
+
+
+def _probe_stats(times: list[float], codes: dict[str, int]) -> dict[str, Any]:
     ok = [t for t in times if math.isfinite(t)]
     return {
         "probe_ok_percent": 100.0 * len(ok) / max(1, len(times)),
         "probe_max_ms": 1e3 * max(ok) if ok else math.inf,
-        "pupil": dict(sorted(pupil.codes.items())),
+        "pupil": codes,
     }
 
 
@@ -384,7 +426,9 @@ def markdown(rows: list[dict[str, Any]]) -> str:
                 f"Beside the pupil, a page's `POST /api/exact` every 0.5 s: {r['probe_ok_percent']:.0f} % "
                 f"answered 200, the slowest in {r['probe_max_ms']:.0f} ms. What the pupil got: "
                 + ", ".join(f"{k}: {v}" for k, v in r["pupil"].items())
-                + "."
+                + ". Processor time [% of a core]: the server's worker processes "
+                f"{r['workers_cpu_percent']:.0f}, the pages' clients {r['clients_cpu_percent']:.0f}, "
+                f"the pupil's process {r['pupil_cpu_percent']:.0f}."
             )
     return "\n".join(out) + "\n"
 

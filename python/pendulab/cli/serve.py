@@ -175,6 +175,8 @@ def serve(
         )
     elif host not in ("127.0.0.1", "localhost", "::1"):
         _say(f"listening on {host} without a token (--no-token): anyone on the network can use the lab")
+    for pool in lab.state.pools:  # the workers' first start (the fork server imports the package)
+        threading.Thread(target=pool.warm, daemon=True).start()  # would delay the first analysis
     if not no_browser and browser_available():
         threading.Thread(target=_open_when_up, args=(server, url), daemon=True).start()
     with contextlib.suppress(KeyboardInterrupt):  # uvicorn re-raises the Ctrl-C it handled: exit 0

@@ -16,10 +16,12 @@ bodies only and capped, slow clients timed out.
   (:data:`HEADER_TIMEOUT`): a connection that opens and sends its headers slowly or never
   (slowloris) is closed. uvicorn itself times out only idle keep-alive connections. One client
   (address) may hold at most :data:`~pendulab.server.room.MAX_CONNECTIONS_PER_CLIENT` connections;
-  more are cut as soon as they are accepted, so one client's idle sockets cannot fill the server's
-  connection limit for everyone.
+  more are cut (reset) as soon as they are accepted, before uvicorn sets up anything for them and
+  without writing an answer, so one client's idle sockets cannot fill the server's connection limit
+  for everyone, and one reconnecting in a tight loop costs the server an accept and a close each time.
 - :class:`LabWebSocketProtocol`: uvicorn's WebSocket protocol with at most :data:`MAX_WS_BUFFER` bytes
-  waiting for a client (a client that pings without reading is cut off).
+  waiting for a client (a client that pings without reading is cut off) and at most :data:`PING_RATE`
+  pings a second (a burst of :data:`PING_BURST` seconds' worth; a ping flood is cut off too).
 """
 
 from __future__ import annotations
@@ -50,6 +52,13 @@ HEADER_TIMEOUT = 10.0
 MAX_WS_BUFFER = 1 << 20
 """Most bytes waiting to be sent to one WebSocket client before it is cut off (a client that sends
 pings without reading)."""
+
+PING_RATE = 2.0
+"""Most WebSocket pings per second one connection may send on average (a browser sends none; a client
+library one every 20 s or so); a connection that goes beyond :data:`PING_BURST` seconds' worth is cut."""
+
+PING_BURST = 10.0
+"""Seconds' worth of :data:`PING_RATE` pings a connection may send at once."""
 
 _HOST_RE = re.compile(r"^[A-Za-z0-9.\-]+(:\d{1,5})?$|^\[[0-9A-Fa-f:.]+\](:\d{1,5})?$")
 
@@ -183,8 +192,17 @@ class LabWebSocketProtocol(WebSocketsSansIOProtocol):
     for the socket to drain before it sends more)."""
 
     max_buffer = MAX_WS_BUFFER
+    ping_rate = PING_RATE
+    _pings = 0.0  # the pings counted so far, less PING_RATE per second since ``_ping_at``
+    _ping_at = 0.0
 
     def handle_ping(self) -> None:
+        now = self.loop.time()
+        self._pings = max(0.0, self._pings - (now - self._ping_at) * self.ping_rate) + 1.0
+        self._ping_at = now
+        if self._pings > PING_BURST * self.ping_rate:  # a ping flood: each costs a parse and a pong
+            self.transport.abort()
+            return
         super().handle_ping()
         if self.transport.get_write_buffer_size() > self.max_buffer:
             self.transport.abort()
@@ -202,13 +220,16 @@ class TimedH11Protocol(H11Protocol):
     header_timeout = HEADER_TIMEOUT
 
     max_per_client = MAX_CONNECTIONS_PER_CLIENT
+    refused = False
 
     def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
         self._header_timer: asyncio.TimerHandle | None = None
-        super().connection_made(transport)
-        if self.client and _open_from(self.connections, self.client[0]) > self.max_per_client:
-            transport.abort()  # one client holding the server's connections (idle-socket churn)
+        peer = transport.get_extra_info("peername")
+        if peer and _open_from(self.connections, str(peer[0])) >= self.max_per_client:
+            self.refused = True  # one client holding the server's connections (idle-socket churn):
+            transport.abort()  # cut before uvicorn sets anything up, nothing written (module doc)
             return
+        super().connection_made(transport)
         self._arm()
 
     def _waiting_for_headers(self) -> bool:
@@ -236,5 +257,11 @@ class TimedH11Protocol(H11Protocol):
             self._disarm()  # the headers are in (or the connection became a WebSocket)
 
     def connection_lost(self, exc: Exception | None) -> None:
+        if self.refused:
+            return  # never set up
         self._disarm()
         super().connection_lost(exc)
+
+    def eof_received(self) -> None:
+        if not self.refused:
+            super().eof_received()
