@@ -30,9 +30,11 @@ from .._progress import tqdm
 from ..model import FloatArray, Pendulum, State
 from ..variants.compound import CompoundPendulum
 from ..variants.spring import SwingingSpring
+from .blocks import check_blocks
 from .body import BodyFit, pendulum_of
 from .data import KINDS, Observations, observations, residual
 from .goodness import EXACT, Goodness, check_kind, findings
+from .goodness import misfit as misfit_found
 from .identify import Correlation, analyse, jacobian
 from .noise import columns_for_noise, floor_of, spread_of
 from .problem import PIVOT_NAMES, POSITIVE, Problem, bounds_of, scale_of
@@ -394,6 +396,13 @@ def _conclude(
 
         chi2_p = float(stats.chi2.sf(chi2, dof))
     said = findings(checks, chi2_p, chi2, dof, robust=search.loss != "linear")
+    # a misfit: the record's blocks fitted on their own, the error bars widened by their disagreement
+    blocks = (
+        None
+        if interrupted or not misfit_found(checks, chi2_p)
+        else check_blocks(search, final, ident, sigma_known)
+    )
+    said += blocks.findings() if blocks is not None else []
     g_fit = final["g"]
     if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
         said.append(
@@ -434,4 +443,5 @@ def _conclude(
         misfit=misfit,
         search_sigma=dict(sig),
         variance=variance,
+        blocks=blocks,
     )

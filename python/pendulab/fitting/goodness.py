@@ -272,6 +272,22 @@ def inflation(
     return out
 
 
+def misfit(checks: Mapping[str, KindCheck], chi2_p: float | None) -> bool:
+    """Whether the residual has structure that noise does not explain: correlated but not correlated
+    noise (whatever its size: a small systematic effect counts), far above the noise floor, or an
+    improbable χ² with σ given — the findings of :func:`findings` that name a misfit or a small
+    systematic effect. Noise-free data fitted to round-off never do."""
+    for c in checks.values():
+        if (c.spread > 0.0 and c.rms <= EXACT * c.spread) or c.explained < 0.5:
+            continue
+        ratio = c.rms / c.floor if c.floor > 0.0 else math.inf
+        if c.ar1_noise:  # correlated noise, not a misfit (as findings() says)
+            continue
+        if c.correlated or ratio > 2.0 * FLOOR_ALARM:  # structure that white noise does not have
+            return True
+    return chi2_p is not None and chi2_p < P_ALARM
+
+
 def findings(
     checks: Mapping[str, KindCheck], chi2_p: float | None, chi2: float, dof: int, robust: bool = False
 ) -> list[str]:

@@ -84,6 +84,9 @@ class FitResult:
     misfit: float = math.nan
     #: A compound pendulum's geometry, pivot torques and implied part position (body.py), or None.
     body: Any = None
+    #: The block check (blocks.py): the record's consecutive blocks fitted on their own and the
+    #: scale factors the error bars were widened by, when the fit missed the data; else None.
+    blocks: Any = None
     _problem: Any = field(default=None, repr=False)
     _search_sigma: dict[str, float] = field(default_factory=dict, repr=False)
     _variance: float = field(default=1.0, repr=False)
@@ -113,6 +116,7 @@ class FitResult:
         search_sigma: dict[str, float] | None = None,
         variance: float = 1.0,
         predictions: dict[str, FloatArray] | None = None,
+        blocks: Any = None,
     ) -> FitResult:
         names = list(problem.free)
         cov = ident.covariance
@@ -157,6 +161,7 @@ class FitResult:
             bounds=dict(bounds or {}),
             planar=planar,
             misfit=misfit,
+            blocks=blocks,
             _problem=problem,
             _search_sigma=dict(search_sigma or {}),
             _variance=variance,

@@ -1,0 +1,265 @@
+"""Does the fit hold along the whole record? The record cut into consecutive blocks, each fitted on its
+own, and the error bars widened by the blocks' disagreement (issue 24, item 3; docs/fit.md, "When
+the model is incomplete").
+
+A model that lacks something the data have (an amplitude-dependent friction or stiffness, a drifting
+sensor) fits each stretch of a record with slightly different physical parameters, and the fit of
+the whole record is a compromise that depends on which amplitudes and how much of each the recording
+happens to contain. Its error bars from (JᵀJ)⁻¹ (T-10.2), even widened for correlated residuals, only
+say how well the compromise is located, so two recordings of one pendulum can disagree by twenty of
+them. The blocks measure that dependence directly:
+
+- the record is cut into BLOCKS consecutive blocks of equal sample count (fewer, down to two, where
+  the record is too short for each to be at least MIN_PERIODS swings long); each block is fitted
+  with the same free physical parameters, starting from the whole record's values and the fitted
+  motion's state at the block's first sample (its own θ₀, θ̇₀, …);
+- for each physical parameter p the blocks' values pᵢ ± σᵢ (σᵢ from the block's own analysis,
+  identify.py, widened for correlation like the whole fit's) are averaged with weights 1/σᵢ², and
+  the scale factor of the Particle Data Group is formed,
+
+      S = √(χ²/(N − 1)),  χ² = Σᵢ (pᵢ − p̄)²/σᵢ²,
+
+  over the N blocks with σᵢ < 3√N σ̄ (σ̄ = (Σ 1/σᵢ²)^(−1/2)), as the PDG does for inconsistent
+  measurements (R. L. Workman et al. (Particle Data Group), "Review of Particle Physics",
+  Prog. Theor. Exp. Phys. 2022, 083C01, Introduction §5.2.2);
+- where S > 1 the parameter's error bar (and its rows of the covariance) are multiplied by S.
+
+It runs only when the goodness of fit (goodness.py) has found a misfit — for a right model the blocks
+agree within their errors by construction, and scaling by a chance S > 1 would make honest bars
+too wide — and only for models without explicit time dependence (no forcing, no moving pivot, no
+time offset), where a block's motion is fixed by its own start. Units: SI, as the parameters'.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from .._core import IntegrationError, InvalidInputError
+from ..model import FloatArray
+from .goodness import autocorrelations
+from .identify import Correlation, Identifiability, analyse, jacobian
+from .problem import POSITIVE, STATE_NAMES, Problem, unit_of
+from .settings import angles_of
+
+if TYPE_CHECKING:
+    from .search import Search
+
+#: The record is cut into this many consecutive blocks (fewer for a short record, at least 2).
+BLOCKS = 4
+#: Each block must span at least this many swing periods (otherwise no block check).
+MIN_PERIODS = 2.0
+#: Model runs a block's search may use.
+BLOCK_EVALUATIONS = 60
+#: Models whose motion depends on the absolute time (a block's start would not fix it).
+TIMED_MODELS = ("slewing", "vibrating", "hoisted", "sampled")
+
+
+@dataclass
+class BlockCheck:
+    """The blocks' fits: their first sample times ``starts`` [s], per physical parameter the blocks'
+    values and standard errors (``nan`` where a block does not determine it; units of the parameter),
+    and the scale factor S ≥ 1 its error bar was multiplied by (module doc)."""
+
+    starts: list[float]
+    values: dict[str, list[float]] = field(default_factory=dict)
+    stderr: dict[str, list[float]] = field(default_factory=dict)
+    scale: dict[str, float] = field(default_factory=dict)
+
+    units: dict[str, str] = field(default_factory=dict)
+
+    def findings(self) -> list[str]:
+        """The plain-language finding for the parameters whose blocks disagree (none if none do)."""
+        widened = [n for n, s in self.scale.items() if s > 1.0]
+        if not widened:
+            return []
+        worst = max(widened, key=lambda n: self.scale[n])
+        shown = ", ".join(f"{v:.6g}" if math.isfinite(v) else "-" for v in self.values[worst])
+        names = ", ".join(f"{n} ×{self.scale[n]:.3g}" for n in widened)
+        return [
+            f"the record's {len(self.starts)} consecutive blocks, fitted on their own, disagree: {worst} = "
+            f"{shown} {self.units.get(worst, '')} (the blocks in time order), {self.scale[worst]:.3g}x "
+            "their error bars apart. The model misses something that changes along the record "
+            "(friction or stiffness that depend on the amplitude, a drifting sensor, a hinge that is "
+            f"not ideal), so the error bars are widened by the blocks' scale factor: {names} "
+            "(the Particle Data Group's rule for inconsistent measurements; res.blocks)"
+        ]
+
+
+def applicable(problem: Problem, period: float) -> list[int] | None:
+    """The blocks' first sample indices (and the end), or None where no block check can be made."""
+    values = problem.values
+    if problem.model in TIMED_MODELS or problem.model == "spring" or "t_offset" in problem.free:
+        return None
+    if values.get("forcing_amplitude", 0.0) != 0.0:
+        return None
+    t = problem.obs.t
+    n = len(t)
+    if not (math.isfinite(period) and period > 0.0):
+        return None
+    count = min(BLOCKS, int((t[-1] - t[0]) / (MIN_PERIODS * period)))
+    if count < 2:
+        return None
+    edges = [round(i * n / count) for i in range(count + 1)]
+    long_enough = all(
+        edges[i + 1] - edges[i] >= 20 and t[edges[i + 1] - 1] - t[edges[i]] >= MIN_PERIODS * period
+        for i in range(count)
+    )
+    return edges if long_enough else None
+
+
+def block_start(problem: Problem, values: dict[str, float], x: FloatArray, v: FloatArray) -> dict[str, float]:
+    """The whole fit's values with the start replaced by the fitted motion's state (x [m], v [m/s]) at
+    a block's first sample; a hinge's (φ₀ held) θ₀ signed as the whole fit's."""
+    from ..model import State
+
+    angles = angles_of(State(x, v))
+    start = dict(values) | {k: angles[k] for k in STATE_NAMES}
+    if "phi0" not in problem.free and math.cos(angles["phi0"] - values["phi0"]) < 0.0:
+        start.update(
+            theta0=-angles["theta0"], phi0=values["phi0"], theta_dot0=-angles["theta_dot0"], phi_dot0=0.0
+        )
+    return start
+
+
+def _fit_block(
+    search: Search, block: Problem, start: dict[str, float], known: bool
+) -> tuple[FloatArray, FloatArray] | None:
+    """One block's values and standard errors (inf where not determined), or None if it fails."""
+    from .search import Search, TimeUp
+
+    free = search.free
+    inner = Search(
+        block,
+        start,
+        search.scales,
+        (search.lower, search.upper),
+        search.sigma,
+        loss="linear",
+        max_evaluations=BLOCK_EVALUATIONS,
+        time_limit=search.time_limit,
+        logged=search.logged,
+    )
+    inner.began = search.began
+    try:
+        u = inner.run(np.array([start[n] for n in free], dtype=np.float64)).x
+        r = block.residuals(block.with_free(u), search.sigma)
+        jac = inner.exact_jacobian(block, u)
+        if jac is None:
+            jac = jacobian(lambda uu: block.safe_residuals(uu, search.sigma), u, 1e-7 * search.scales)
+    except (TimeUp, InvalidInputError, IntegrationError, OverflowError, ValueError):
+        return None
+    if not (np.all(np.isfinite(r)) and np.all(np.isfinite(jac))):
+        return None
+    dof = max(r.size - len(free), 1)
+    variance = 1.0 if known else float(r @ r) / dof
+    positive = {n for i, n in enumerate(free) if n in POSITIVE and u[i] > 0.01 * search.scales[i]}
+    obs = block.obs
+    sample = np.concatenate([np.repeat(np.arange(len(obs)), obs.columns[k]) for k in obs.values])
+    lag1 = _lag1(r, obs.columns, list(obs.values))
+    ident = analyse(free, block.with_free(u), jac, variance, positive, Correlation(r, sample, len(obs), lag1))
+    cov = ident.covariance
+    err = np.array(
+        [
+            math.sqrt(cov[i, i]) if ident.determined[n] and math.isfinite(cov[i, i]) else math.inf
+            for i, n in enumerate(free)
+        ]
+    )
+    return u, err
+
+
+def _lag1(r: FloatArray, columns: dict[str, int], kinds: list[str]) -> float:
+    """The largest over kinds of the mean lag-1 autocorrelation of a kind's residual columns (``r``
+    holds each kind's (N, columns) residual, raveled, one kind after another)."""
+    out, at = 0.0, 0
+    n = r.size // max(sum(columns[k] for k in kinds), 1)
+    for k in kinds:
+        part = r[at : at + n * columns[k]].reshape(n, columns[k])
+        at += part.size
+        if n > 2:
+            out = max(out, float(np.mean([autocorrelations(part[:, j], 1)[0] for j in range(columns[k])])))
+    return out
+
+
+def scale_factor(values: FloatArray, errors: FloatArray) -> float:
+    """The Particle Data Group's S = √(χ²/(N − 1)) of the estimates ``values`` ± ``errors`` (module
+    doc; those with an error ≥ 3√N σ̄ left out, at least 1; 1 with fewer than two usable)."""
+    ok = np.isfinite(values) & np.isfinite(errors) & (errors > 0.0)
+    x, e = values[ok], errors[ok]
+    if x.size < 2:
+        return 1.0
+    mean_err = 1.0 / math.sqrt(float(np.sum(1.0 / e**2)))
+    keep = e < 3.0 * math.sqrt(x.size) * mean_err
+    x, e = x[keep], e[keep]
+    if x.size < 2:
+        return 1.0
+    w = 1.0 / e**2
+    mean = float(np.sum(w * x) / np.sum(w))
+    chi2 = float(np.sum(w * (x - mean) ** 2))
+    return max(1.0, math.sqrt(chi2 / (x.size - 1)))
+
+
+def check_blocks(
+    search: Search, values: dict[str, float], ident: Identifiability, known: bool
+) -> BlockCheck | None:
+    """The block check of the module doc for the whole fit's ``values``; ``ident`` (the whole fit's
+    analysis) has its covariance and inflation widened in place. ``known``: σ was given. None where
+    no check can be made (a robust loss, a timed model, blocks shorter than MIN_PERIODS swings)."""
+    problem = search.problem
+    if search.loss != "linear" or search.time_up():
+        return None
+    period = 2.0 * math.pi * math.sqrt(values["length"] / max(abs(values["g"]), 1e-9))
+    edges = applicable(problem, period)
+    physical = [n for n in search.free if n not in STATE_NAMES and ident.determined.get(n, False)]
+    if edges is None or not physical:
+        return None
+    _, x, v, _ = problem.motion(values)
+    obs = problem.obs
+    fits = []
+    for i in range(len(edges) - 1):
+        a, b = edges[i], edges[i + 1]
+        part = type(obs)(
+            t=obs.t[a:b],
+            values={k: val[a:b] for k, val in obs.values.items()},
+            sigma=obs.sigma,
+            dropped=0,
+            columns=obs.columns,
+        )
+        start = block_start(problem, values, x[a], v[a])
+        block = Problem(problem.model, start, search.free, part)
+        try:
+            fits.append(_fit_block(search, block, start, known))
+        finally:
+            problem.evaluations += block.evaluations
+    if any(f is None for f in fits):
+        return None
+    check = BlockCheck(
+        starts=[float(obs.t[a]) for a in edges[:-1]],
+        units={n: unit_of(problem.model, n) for n in physical},
+    )
+    for n in physical:
+        j = search.free.index(n)
+        vals = np.array([f[0][j] for f in fits if f is not None])
+        errs = np.array([f[1][j] for f in fits if f is not None])
+        check.values[n] = [
+            float(a) if math.isfinite(e) else math.nan for a, e in zip(vals, errs, strict=True)
+        ]
+        check.stderr[n] = [float(e) if math.isfinite(e) else math.nan for e in errs]
+        check.scale[n] = scale_factor(vals, errs)
+    widen(ident, search.free, check.scale)
+    return check
+
+
+def widen(ident: Identifiability, free: list[str], scale: dict[str, float]) -> None:
+    """Multiplies the rows and columns of ``ident``'s covariance by each parameter's scale factor and
+    records it in ``ident.inflation``."""
+    s = np.array([scale.get(n, 1.0) for n in free])
+    if np.all(s == 1.0):
+        return
+    ident.covariance = ident.covariance * np.outer(s, s)
+    for n, f in scale.items():
+        if f > 1.0:
+            ident.inflation[n] = ident.inflation.get(n, 1.0) * f
