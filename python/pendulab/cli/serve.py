@@ -110,6 +110,24 @@ def serve(
             min=1, max=10_000, help="Most pages one device (address) may hold open; one more is refused."
         ),
     ] = 8,
+    max_connections_per_client: Annotated[
+        int,
+        typer.Option(
+            min=1,
+            max=100_000,
+            help="Most TCP connections one device (address) may hold open (its pages' WebSockets and "
+            "requests); more are reset. Raise it for a class behind one NAT address.",
+        ),
+    ] = 24,
+    max_computations_per_client: Annotated[
+        int,
+        typer.Option(
+            min=1,
+            max=1_000,
+            help="Most computing requests (fits, exact solutions, reduced views, EM maps) one device may "
+            "have under way or waiting; one more is answered 429.",
+        ),
+    ] = 2,
     allow_host: Annotated[
         list[str] | None,
         typer.Option(
@@ -162,10 +180,14 @@ def serve(
             allowed_hosts=hosts,
             token=secret,
             max_sessions_per_client=max_sessions_per_client,
+            max_computations_per_client=max_computations_per_client,
         )
     _check_port(host, port)
     url = url_for(host, port) if secret is None else lab_url(host, port, secret)
-    server = uvicorn.Server(server_config(lab, host, port, max_sessions=max_sessions))
+    config = server_config(
+        lab, host, port, max_sessions=max_sessions, max_connections_per_client=max_connections_per_client
+    )
+    server = uvicorn.Server(config)
     _say(f"Pendulab lab: {url}   (Ctrl-C stops the server)")
     if secret is not None:
         _say(qr_text(url).rstrip("\n"))

@@ -75,7 +75,7 @@ from .rest import (
     exact_quantities,
     scenario_toml,
 )
-from .room import MAX_SESSIONS_PER_CLIENT, Room, client_key, too_many_requests_detail
+from .room import MAX_REQUESTS_PER_CLIENT, MAX_SESSIONS_PER_CLIENT, Room, client_key
 from .schema import TICK_HZ, schema
 from .session import TICK_BUDGET, Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
 from .tick import Message, first_messages
@@ -177,6 +177,7 @@ def create_app(
     allowed_hosts: Sequence[str] = LOOPBACK_HOSTS,
     token: str | None = None,
     max_sessions_per_client: int = MAX_SESSIONS_PER_CLIENT,
+    max_computations_per_client: int = MAX_REQUESTS_PER_CLIENT,
     work_seconds: float = WORK_SECONDS,
     fit_seconds: float = FIT_WALL_SECONDS,
 ) -> FastAPI:
@@ -185,8 +186,10 @@ def create_app(
     notice saying so and is closed (code 1013, try again later). Only requests whose ``Host`` is one of
     ``allowed_hosts`` are served (default: the loopback names; :func:`pendulab.server.access.allowed_hosts`
     for another address), only the lab's own page may open ``/ws`` or POST, and with ``token`` every
-    request must carry it (classroom mode, :mod:`.access`). Raises :class:`pendulab.ScenarioError` for a
-    bad scenario."""
+    request must carry it (classroom mode, :mod:`.access`). One client (address, :mod:`.room`) may
+    hold ``max_sessions_per_client`` WebSockets and have ``max_computations_per_client`` computing
+    requests under way or waiting (one more: 429, key ``device_busy``). Raises
+    :class:`pendulab.ScenarioError` for a bad scenario."""
     default = resolve_scenario(scenario)
     resolve = example_resolver(default)
     static = STATIC_DIR if static_dir is None else static_dir
@@ -196,7 +199,7 @@ def create_app(
     app.add_middleware(SecurityHeaders)
     rest_limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
     active = 0
-    room = Room(max_sessions_per_client)
+    room = Room(max_sessions_per_client, computations=max_computations_per_client)
     analyses = shared_pool("analysis", WORK_WORKERS, REST_QUEUE, work_seconds)
     fits = shared_pool("fit", FIT_WORKERS, FIT_QUEUE, fit_seconds)
     app.state.room, app.state.pools = room, (analyses, fits)
@@ -213,7 +216,7 @@ def create_app(
         """``fn(req)`` in the analysis worker process, as JSON; 422/429/503 as the module doc says."""
         async with room.request(client_key(request.scope)) as allowed:
             if not allowed:
-                return JSONResponse({"detail": too_many_requests_detail()}, status_code=429)
+                return room.too_many_requests()
             try:
                 return Response(await analyses.run(fn, req), media_type="application/json")
             except WorkTimeout as e:

@@ -44,7 +44,7 @@ from ..fitting.problem import ROD_MODELS
 from ..fitting.table import parse_table
 from ..model import FloatArray, Pendulum
 from .protocol import validation_problems
-from .room import Room, client_key, too_many_requests_detail
+from .room import Room, client_key
 from .scenarios import Setup
 from .session import describe
 from .worker import Busy, WorkerPool, WorkInvalid, WorkTimeout
@@ -233,7 +233,8 @@ def _problem(status: int, detail: str) -> JSONResponse:
 
 def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[Response]]:
     """The handler of ``POST /api/fit`` for one app: its fits run in ``pool``'s worker processes, at
-    most :data:`~pendulab.server.room.MAX_REQUESTS_PER_CLIENT` computations per client (``room``)."""
+    most ``room.computations`` (:data:`~pendulab.server.room.MAX_REQUESTS_PER_CLIENT`) computations per
+    client (``room``)."""
 
     async def post_fit(request: Request) -> Response:
         """``POST /api/fit`` (see the module doc): 200 with the fit; 422 a bad body or bad data (naming
@@ -252,7 +253,7 @@ def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[
             return _problem(422, validation_problems(e, skip=0))
         async with room.request(client_key(request.scope)) as allowed:
             if not allowed:
-                return _problem(429, too_many_requests_detail())
+                return room.too_many_requests()
             seconds = pool.seconds
             try:
                 out = await pool.run(fit_data, req, min(FIT_SECONDS, 0.5 * seconds))

@@ -29,6 +29,9 @@ import time
 from collections.abc import AsyncIterator
 from typing import Any
 
+from starlette.responses import JSONResponse
+
+from .protocol import message
 from .session import TICK_BUDGET
 
 MAX_SESSIONS_PER_CLIENT = 8
@@ -63,9 +66,15 @@ def client_key(scope: dict[str, Any]) -> str:
 class Room:
     """The sessions and requests of every client (module doc). Used from the event loop only."""
 
-    def __init__(self, per_client: int = MAX_SESSIONS_PER_CLIENT, room_budget: float = ROOM_BUDGET):
+    def __init__(
+        self,
+        per_client: int = MAX_SESSIONS_PER_CLIENT,
+        room_budget: float = ROOM_BUDGET,
+        computations: int = MAX_REQUESTS_PER_CLIENT,
+    ):
         self.per_client = per_client
         self.room_budget = room_budget
+        self.computations = computations  # most computing requests of one client at once
         self.sessions: dict[str, int] = {}
         self.requests: dict[str, int] = {}
 
@@ -96,11 +105,12 @@ class Room:
     @contextlib.asynccontextmanager
     async def request(self, key: str, wait: float = REQUEST_WAIT) -> AsyncIterator[bool]:
         """Counts a computing request of ``key`` while it runs. When the client already has
-        :data:`MAX_REQUESTS_PER_CLIENT` under way, the request waits up to ``wait`` seconds for one of
-        them to end (a client sending in a tight loop is slowed down, not answered at once), then
-        yields False (counting nothing): the caller answers 429."""
+        ``computations`` (:data:`MAX_REQUESTS_PER_CLIENT`) under way, the request waits up to ``wait``
+        seconds for one of them to end (a client sending in a tight loop is slowed down, not answered
+        at once), then yields False (counting nothing): the caller answers 429
+        (:meth:`too_many_requests`)."""
         deadline = time.monotonic() + wait
-        while self.requests.get(key, 0) >= MAX_REQUESTS_PER_CLIENT:
+        while self.requests.get(key, 0) >= self.computations:
             if time.monotonic() >= deadline:
                 yield False
                 return
@@ -115,9 +125,12 @@ class Room:
             else:
                 self.requests.pop(key, None)
 
-
-def too_many_requests_detail() -> str:
-    return (
-        f"too many requests at once from your device: at most {MAX_REQUESTS_PER_CLIENT} computations "
-        "may run or wait for one device; wait for the answers, then try again"
-    )
+    def too_many_requests(self) -> JSONResponse:
+        """The HTTP 429 answer to a computing request beyond the client's ``computations``: the English
+        ``detail`` and, for a page that translates it, ``key`` (``messages.json``) and ``values``."""
+        values = {"most": self.computations}
+        return JSONResponse(
+            {"detail": message("device_busy", **values), "key": "device_busy", "values": values},
+            status_code=429,
+            headers={"retry-after": "1"},
+        )

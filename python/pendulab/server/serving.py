@@ -16,6 +16,7 @@ from typing import Any
 import uvicorn
 
 from .hygiene import HEADER_TIMEOUT, LabWebSocketProtocol, TimedH11Protocol
+from .room import MAX_CONNECTIONS_PER_CLIENT
 
 SHUTDOWN_GRACE = 0.5
 """Seconds the open connections get to close after Ctrl-C or SIGTERM before they are cut."""
@@ -34,13 +35,19 @@ def server_config(
     port: int,
     *,
     max_sessions: int = 64,
+    max_connections_per_client: int = MAX_CONNECTIONS_PER_CLIENT,
     header_timeout: float = HEADER_TIMEOUT,
     log_level: str = "warning",
 ) -> uvicorn.Config:
     """The uvicorn configuration of the lab: ``app`` on ``host``:``port`` with the limits of the module
     doc; at most ``max_sessions`` + 64 connections at once (the pages' WebSockets and their requests;
-    beyond that uvicorn answers 503)."""
-    protocol = type("LabH11Protocol", (TimedH11Protocol,), {"header_timeout": float(header_timeout)})
+    beyond that uvicorn answers 503), at most ``max_connections_per_client`` of one client (address;
+    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`)."""
+    protocol = type(
+        "LabH11Protocol",
+        (TimedH11Protocol,),
+        {"header_timeout": float(header_timeout), "max_per_client": int(max_connections_per_client)},
+    )
     return uvicorn.Config(
         app,
         host=host,

@@ -373,6 +373,7 @@ export const DE: Words = {
   'server.throttled': 'zu viele Befehle: {lost} verworfen; höchstens {per_second} pro Sekunde senden',
   'server.server_full': 'der Server ist voll: {active} Laborsitzungen sind offen, mehr bedient er nicht gleichzeitig; einen anderen Tab schließen oder später versuchen',
   'server.device_full': 'zu viele Laborsitzungen von diesem Gerät: {have} sind offen, mehr darf ein Gerät nicht haben; einen anderen Tab schließen',
+  'server.device_busy': 'zu viele Berechnungen gleichzeitig von diesem Gerät: höchstens {most} dürfen für ein Gerät laufen oder warten; die Antworten abwarten, dann erneut versuchen',
   'server.internal_error': 'interner Fehler des Servers: {detail}',
   'scenario.conical': 'Kegelpendel bei 45°',
   'scenario.damped': 'Gedämpfte Rosette (c = 0.05 1/s)',

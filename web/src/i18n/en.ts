@@ -371,6 +371,7 @@ export const EN = {
   'server.throttled': 'throttled: {lost} command(s) dropped; send at most {per_second} per second',
   'server.server_full': 'the server is full: {active} lab sessions are open, the most it serves at once; close another tab or try again later',
   'server.device_full': 'too many lab sessions from your device: {have} are open, the most one device may have; close another tab',
+  'server.device_busy': 'too many computations at once from your device: at most {most} may run or wait for one device; wait for the answers, then try again',
   'server.internal_error': 'internal error of the server: {detail}',
   'scenario.conical': 'Conical pendulum at 45°',
   'scenario.damped': 'Damped rosette (c = 0.05 1/s)',

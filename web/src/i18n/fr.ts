@@ -373,6 +373,7 @@ export const FR: Words = {
   'server.throttled': 'trop de commandes : {lost} ignorées ; en envoyer au plus {per_second} par seconde',
   'server.server_full': 'le serveur est plein : {active} sessions du labo sont ouvertes, le maximum qu’il sert à la fois ; fermer un autre onglet ou réessayer plus tard',
   'server.device_full': 'trop de sessions du labo depuis votre appareil : {have} sont ouvertes, le maximum par appareil ; fermer un autre onglet',
+  'server.device_busy': 'trop de calculs à la fois depuis votre appareil : au plus {most} peuvent tourner ou attendre pour un appareil ; attendre les réponses, puis réessayer',
   'server.internal_error': 'erreur interne du serveur : {detail}',
   'scenario.conical': 'Pendule conique à 45°',
   'scenario.damped': 'Rosette amortie (c = 0.05 1/s)',
