@@ -27,7 +27,7 @@ them. The blocks measure that dependence directly:
 It runs only when the goodness of fit (goodness.py) has found a misfit — for a right model the blocks
 agree within their errors by construction, and scaling by a chance S > 1 would make honest bars
 too wide — and only for models without explicit time dependence (no forcing, no moving pivot, no
-time offset), where a block's motion is fixed by its own start. Units: SI, as the parameters'.
+time offset; AUTONOMOUS), where a block's motion is fixed by its own start. Units: SI, as the parameters'.
 """
 
 from __future__ import annotations
@@ -54,8 +54,9 @@ BLOCKS = 4
 MIN_PERIODS = 2.0
 #: Model runs a block's search may use.
 BLOCK_EVALUATIONS = 60
-#: Models whose motion depends on the absolute time (a block's start would not fix it).
-TIMED_MODELS = ("slewing", "vibrating", "hoisted", "sampled")
+#: The models whose motion a block's own start fixes (no pivot path, hoist or other clock; the
+#: damped model's forcing is checked separately).
+AUTONOMOUS = ("ideal", "damped", "rotating")
 
 
 @dataclass
@@ -92,9 +93,9 @@ class BlockCheck:
 def applicable(problem: Problem, period: float) -> list[int] | None:
     """The blocks' first sample indices (and the end), or None where no block check can be made."""
     values = problem.values
-    if problem.model in TIMED_MODELS or problem.model == "spring" or "t_offset" in problem.free:
+    if problem.model not in AUTONOMOUS or "t_offset" in problem.free or values.get("t_offset", 0.0) != 0.0:
         return None
-    if values.get("forcing_amplitude", 0.0) != 0.0:
+    if values.get("forcing_amplitude", 0.0) != 0.0 or "forcing_amplitude" in problem.free:
         return None
     t = problem.obs.t
     n = len(t)
@@ -113,14 +114,20 @@ def applicable(problem: Problem, period: float) -> list[int] | None:
 
 def block_start(problem: Problem, values: dict[str, float], x: FloatArray, v: FloatArray) -> dict[str, float]:
     """The whole fit's values with the start replaced by the fitted motion's state (x [m], v [m/s]) at
-    a block's first sample; a hinge's (φ₀ held) θ₀ signed as the whole fit's."""
+    a block's first sample (a held φ₀ takes the state's, so that the block starts where the motion
+    is); a hinge's (φ₀ and φ̇₀ held, φ̇₀ = 0) θ₀ signed in its plane, as the whole fit's."""
     from ..model import State
 
     angles = angles_of(State(x, v))
     start = dict(values) | {k: angles[k] for k in STATE_NAMES}
-    if "phi0" not in problem.free and math.cos(angles["phi0"] - values["phi0"]) < 0.0:
+    hinge = not {"phi0", "phi_dot0"} & set(problem.free) and values["phi_dot0"] == 0.0
+    if hinge:  # the swing stays in its plane φ₀: θ signed, as the whole fit's
+        sign = 1.0 if math.cos(angles["phi0"] - values["phi0"]) >= 0.0 else -1.0
         start.update(
-            theta0=-angles["theta0"], phi0=values["phi0"], theta_dot0=-angles["theta_dot0"], phi_dot0=0.0
+            theta0=sign * angles["theta0"],
+            phi0=values["phi0"],
+            theta_dot0=sign * angles["theta_dot0"],
+            phi_dot0=0.0,
         )
     return start
 
