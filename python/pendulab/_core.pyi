@@ -351,6 +351,13 @@ class ForceSolver:
 
 # --- python/rust/live.rs: the lab's live session (pendulab_core::live), the server's sessions ---
 
+class LiveLimit(TypedDict):
+    """One of the lab's command limits (``LiveSession.limits()``): the allowed range and its SI unit."""
+
+    min: float
+    max: float
+    unit: str
+
 class LiveSession:
     """One client's lab session of the core: commands in (the lab's JSON), frame records (bytes,
     frame.json's float64 values) and JSON notices (str) out; the interpreter lock is released while it
@@ -362,6 +369,11 @@ class LiveSession:
     MAX_ELAPSED: float
     MAX_EVENT_NOTICES: int
     MAX_PENDING_STEPS: int
+    MAX_MESSAGE_BYTES: int
+    @staticmethod
+    def command_types() -> tuple[str, ...]: ...
+    @staticmethod
+    def limits() -> dict[str, LiveLimit]: ...
     def __init__(self, setup_json: str, exact_error: bool = True) -> None: ...
     def first_messages(self) -> list[bytes | str]: ...
     def tick(

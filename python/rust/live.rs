@@ -11,11 +11,12 @@ use crate::convert::{arr3, to_py, InvalidInputError};
 use numpy::PyArray1;
 use pendulab_core::live::session::Command;
 use pendulab_core::live::wire::{
-    error_notice, event_notice, keyed_notice, parse_command, setup_from_json as setup, COMMAND_TYPES,
+    error_notice, event_notice, keyed_notice, parse_command, setup_from_json as setup, COMMAND_TYPES, LIMITS,
+    MAX_MESSAGE_BYTES,
 };
 use pendulab_core::live::{LiveSession, Out, Record};
 use pyo3::prelude::*;
-use pyo3::types::{PyBytes, PyString, PyTuple};
+use pyo3::types::{PyBytes, PyDict, PyString, PyTuple};
 use std::sync::OnceLock;
 use std::time::Instant;
 
@@ -136,6 +137,31 @@ impl PyLiveSession {
     /// Most steps of `step` commands waiting.
     #[classattr]
     const MAX_PENDING_STEPS: u64 = pendulab_core::live::session::MAX_PENDING_STEPS;
+    /// Longest command message read \[characters\] (`live::wire::MAX_MESSAGE_BYTES`).
+    #[classattr]
+    const MAX_MESSAGE_BYTES: usize = MAX_MESSAGE_BYTES;
+
+    /// The command types, in the lab's order (`live::wire::COMMAND_TYPES`).
+    #[staticmethod]
+    fn command_types(py: Python<'_>) -> PyResult<Bound<'_, PyTuple>> {
+        PyTuple::new(py, COMMAND_TYPES)
+    }
+
+    /// The lab's command limits (`live::wire::LIMITS`, the one table both engines and the server's
+    /// pydantic models check against): name → `{"min", "max", "unit"}`, SI units (`n`: steps of one
+    /// `step` command).
+    #[staticmethod]
+    fn limits(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
+        let out = PyDict::new(py);
+        for (name, lo, hi, unit) in LIMITS {
+            let d = PyDict::new(py);
+            d.set_item("min", lo)?;
+            d.set_item("max", hi)?;
+            d.set_item("unit", unit)?;
+            out.set_item(name, d)?;
+        }
+        Ok(out)
+    }
 
     /// A session from a scenario's JSON description (`GET /api/scenarios`' entry, with `rtol`, `atol`);
     /// `exact_error=False` estimates the ideal pendulum's error with a companion too.

@@ -29,13 +29,13 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 import numpy as np
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
-from .._core import models
+from .._core import LiveSession, models
 from ..model import Pendulum, State
 from ..simulation import method_names
 from .live_models import OWN_STEPPER_MODELS
 
 if TYPE_CHECKING:
-    from .._core import ModelInfo, ParamSpec
+    from .._core import LiveLimit, ModelInfo, ParamSpec
 
 _LAYOUT = json.loads((Path(__file__).with_name("frame.json")).read_text(encoding="utf-8"))
 #: the error notices a page translates: key -> English words with {placeholders} (``messages.json``)
@@ -55,18 +55,38 @@ RECORD_LEN = len(FRAME_FIELDS)
 RECORD_BYTES = 8 * RECORD_LEN
 _WIRE = np.dtype("<f8")
 
-MAX_MESSAGE_BYTES = 4096
-"""Longest command the server reads (a command is a few hundred bytes)."""
+MAX_MESSAGE_BYTES: int = LiveSession.MAX_MESSAGE_BYTES
+"""Longest command the server reads [characters] (a command is a few hundred bytes): the core's
+(``live::wire::MAX_MESSAGE_BYTES``)."""
 
-# Limits of the live controls (the core itself accepts any finite g and any positive l, m).
-LIMITS: dict[str, dict[str, float]] = {
-    "length": {"min": 1e-3, "max": 1e3, "ui_min": 0.1, "ui_max": 5.0, "step": 0.01},
-    "mass": {"min": 1e-3, "max": 1e3, "ui_min": 0.1, "ui_max": 10.0, "step": 0.01},
-    "g": {"min": -1e3, "max": 1e3, "ui_min": -30.0, "ui_max": 30.0, "step": 0.01},
-    "dt": {"min": 1e-6, "max": 0.1, "ui_min": 1e-4, "ui_max": 0.05, "step": 1e-4, "default": 1e-3},
-    "time_scale": {"min": 1e-3, "max": 1e3, "ui_min": 0.01, "ui_max": 100.0, "step": 0.01, "default": 1.0},
-    "step_n": {"min": 1, "max": 100_000},
+CORE_LIMITS: dict[str, LiveLimit] = LiveSession.limits()
+"""The lab's command limits as the core checks them (``crates/pendulab-core/src/live/wire.rs``,
+``LIMITS``; the page's engine checks the same table): name → min, max, unit. The one source of the
+bounds below and of the commands' pydantic fields (the core itself accepts any finite g and any
+positive l, m outside the lab)."""
+
+_CONTROLS: dict[str, tuple[str, dict[str, float]]] = {
+    "length": ("length", {"ui_min": 0.1, "ui_max": 5.0, "step": 0.01}),
+    "mass": ("mass", {"ui_min": 0.1, "ui_max": 10.0, "step": 0.01}),
+    "g": ("g", {"ui_min": -30.0, "ui_max": 30.0, "step": 0.01}),
+    "dt": ("dt", {"ui_min": 1e-4, "ui_max": 0.05, "step": 1e-4, "default": 1e-3}),
+    "time_scale": ("time_scale", {"ui_min": 0.01, "ui_max": 100.0, "step": 0.01, "default": 1.0}),
+    "step_n": ("n", {}),
 }
+"""The live controls: the core's limit each takes its bounds from, and how the page shows it (slider
+range, step, default; presentation only)."""
+
+
+def _bounds(core_name: str, integer: bool) -> dict[str, float]:
+    lim = CORE_LIMITS[core_name]
+    lo, hi = lim["min"], lim["max"]
+    return {"min": int(lo), "max": int(hi)} if integer else {"min": lo, "max": hi}
+
+
+LIMITS: dict[str, dict[str, float]] = {
+    name: _bounds(core, name == "step_n") | ui for name, (core, ui) in _CONTROLS.items()
+}
+"""Limits of the live controls: the core's bounds (:data:`CORE_LIMITS`) with the page's presentation."""
 
 
 def encode_records(records: np.ndarray) -> bytes:
@@ -273,18 +293,8 @@ Command = (
     SetParams | SetModel | SetState | SetMethod | SetTimeScale | Pause | Resume | Step | Reset | LoadScenario
 )
 COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])
-COMMAND_TYPES: tuple[str, ...] = (
-    "set_params",
-    "set_model",
-    "set_state",
-    "set_method",
-    "set_time_scale",
-    "pause",
-    "resume",
-    "step",
-    "reset",
-    "load_scenario",
-)
+COMMAND_TYPES: tuple[str, ...] = LiveSession.command_types()
+"""The command types in the lab's order (the core's ``live::wire::COMMAND_TYPES``)."""
 
 
 class CommandError(ValueError):

@@ -1,8 +1,9 @@
 //! The lab's wire format (docs/web.md, "Commands", "Notices"), for both engines — the page's
 //! (`crates/pendulab-wasm`) and the server's (`pendulab._core.LiveSession`): JSON command messages
 //! checked against the lab's limits into [`Command`]s (the server checks them first with the
-//! pydantic models of `pendulab.server.protocol`, which also give its API schema: the one twin left,
-//! the limits below are its `LIMITS`, a test compares them), scenarios as `GET /api/scenarios`
+//! pydantic models of `pendulab.server.protocol`, which also give its API schema: their bounds are
+//! [`LIMITS`] below, read through `pendulab._core.LiveSession.limits()`, so the two checks cannot
+//! drift; `python/tests/test_server_limits.py`), scenarios as `GET /api/scenarios`
 //! describes them into [`Setup`]s, and the `status` and `event` notices as JSON. SI units: l \[m\], m \[kg\], g [m/s²], t \[s\].
 
 use super::pendulum::LivePendulum;
@@ -26,7 +27,8 @@ pub const COMMAND_TYPES: [&str; 10] = [
     "reset",
     "load_scenario",
 ];
-/// The lab's limits (the server's `LIMITS`): name, min, max, unit.
+/// The lab's limits, the one table of them (the server's pydantic models take their bounds from it):
+/// name, min, max, unit.
 pub const LIMITS: [(&str, f64, f64, &str); 6] = [
     ("length", 1e-3, 1e3, "m"),
     ("mass", 1e-3, 1e3, "kg"),
