@@ -639,7 +639,8 @@ def ensemble_worker(n: int, steps: int, repeats: int, threads: int, with_c: int)
     dt = 1e-3
 
     def kernel() -> Any:
-        return _core.EnsembleRun(x, v, ell, g, dt, steps, None, False).result()
+        spec, options = _core.EnsembleSpec(ell, g), _core.RunOptions(dt=dt)
+        return _core.EnsembleRun(spec, x, v, options, steps, False).result()
 
     def api() -> Any:
         p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)

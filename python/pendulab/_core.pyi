@@ -57,33 +57,23 @@ def check_params(length: float, mass: float, g: float) -> None: ...
 def models() -> list[ModelInfo]: ...
 def limits() -> list[ParamSpec]: ...
 def sensitivities(
-    length: float,
-    mass: float,
-    g: float,
-    model: str,
-    params: list[tuple[str, float]],
-    angles: list[float],
-    times: FloatArray,
-    rtol: float = 1e-12,
-    atol: float = 1e-14,
+    spec: ModelSpec, angles: list[float], times: FloatArray, options: RunOptions
 ) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
-    """x (n, 3) [m], v (n, 3) [m/s] at ``times`` [s] (≥ 0, non-decreasing; the start (θ₀, φ₀ [rad],
-    θ̇₀, φ̇₀ [rad/s]) at t = 0) and dx, dv (n, 3, 9) by ``sensitivity_params()`` (T-10.7); the models
-    ideal, damped, rotating with their registry ``params``."""
+    """x (n, 3) [m], v (n, 3) [m/s] at ``times`` [s] (≥ 0, non-decreasing; the start ``angles`` (θ₀,
+    φ₀ [rad], θ̇₀, φ̇₀ [rad/s]) at t = 0) and dx, dv (n, 3, 9) by ``sensitivity_params()`` (T-10.7);
+    the spec's model ideal, damped or rotating; DOP853 at the options' rtol, atol [m, m/s]."""
 
 def sensitivity_params() -> list[str]:
     """theta0, phi0, theta_dot0, phi_dot0, length, g, damping, drag, friction: the last axis of
     ``sensitivities``."""
 
-def state_on_ts2(
-    length: float, mass: float, g: float, x: FloatArray, v: FloatArray
-) -> tuple[FloatArray, FloatArray]: ...
+def state_on_ts2(spec: ModelSpec, x: FloatArray, v: FloatArray) -> tuple[FloatArray, FloatArray]: ...
 def project_state(
-    length: float, mass: float, g: float, x: FloatArray, v: FloatArray
+    spec: ModelSpec, x: FloatArray, v: FloatArray
 ) -> tuple[tuple[FloatArray, FloatArray], float, float]: ...
-def state_from_angles(
-    length: float, mass: float, g: float, theta: float, phi: float, theta_dot: float, phi_dot: float
-) -> tuple[FloatArray, FloatArray]: ...
+def state_from_angles(spec: ModelSpec, angles: list[float]) -> tuple[FloatArray, FloatArray]:
+    """The state at (θ, φ [rad], θ̇, φ̇ [rad/s]): x [m], v [m/s]."""
+
 def diagnostics(
     spec: ModelSpec, x: FloatArray, v: FloatArray, t: FloatArray | None = None
 ) -> dict[str, FloatArray]: ...
@@ -120,7 +110,7 @@ class ModelSpec:
 class RunOptions:
     """How to run (keywords only; the method's dt [s], rtol, atol and projection default to the
     core's ``SolveOptions``): t0, t_end [s], conserve, the save rule, the saved-bytes cap, the spring's
-    order (2 or 4)."""
+    order (2 or 4), a cap on steps (the crane's runs)."""
 
     def __init__(
         self,
@@ -137,6 +127,7 @@ class RunOptions:
         save_times: FloatArray | None = None,
         max_saved_bytes: int | None = None,
         order: int = 2,
+        max_steps: int | None = None,
     ) -> None: ...
     @property
     def t0(self) -> float: ...
@@ -177,7 +168,7 @@ class Stepper:
 # --- python/rust/exact.rs: the exact solution, the reduction, the energy–momentum map ---
 
 class ExactSolution:
-    def __init__(self, length: float, mass: float, g: float, x0: FloatArray, v0: FloatArray) -> None: ...
+    def __init__(self, spec: ModelSpec, state: StateArrays) -> None: ...
     def states(self, t: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]: ...
     @property
     def kind(self) -> str: ...
@@ -199,7 +190,7 @@ class ExactSolution:
 def invariants(length: float, x: FloatArray, v: FloatArray) -> FloatArray: ...
 def relation_residuals(sigma: FloatArray) -> FloatArray: ...
 def reduced_flow(
-    length: float, mass: float, g: float, x0: FloatArray, v0: FloatArray, dt: float, n: int
+    spec: ModelSpec, state: StateArrays, options: RunOptions, n_steps: int
 ) -> tuple[FloatArray, FloatArray]: ...
 def rotation_numbers(eps: FloatArray, j: FloatArray) -> FloatArray: ...
 def conical_curve(u: FloatArray) -> tuple[FloatArray, FloatArray]: ...
@@ -207,18 +198,24 @@ def monodromy(r: float = 0.5, n: int = 720) -> float: ...
 
 # --- python/rust/ensemble.rs: many trajectories at once ---
 
+class EnsembleSpec:
+    """The ensemble's models: l [m], g [m/s²], damping c [1/s] (None: undamped), each one value or
+    one per trajectory."""
+
+    def __init__(self, length: FloatArray, g: FloatArray, damping: FloatArray | None = None) -> None: ...
+
 class EnsembleRun:
+    """``n_steps`` RATTLE steps of ``options.dt`` [s] from x [m], v [m/s] (N, 3), saving every
+    ``options``' ``save_every`` steps (None: the final state only)."""
+
     def __init__(
         self,
+        spec: EnsembleSpec,
         x: FloatArray,
         v: FloatArray,
-        length: FloatArray,
-        g: FloatArray,
-        dt: float,
+        options: RunOptions,
         n_steps: int,
-        save_every: int | None = None,
         summary: bool = True,
-        damping: FloatArray | None = None,
         settle_angle: float | None = None,
     ) -> None: ...
     @property
@@ -299,34 +296,45 @@ def slewing_linear(
 
 # --- python/rust/crane.rs: the crane dynamics (hoist, hook + payload, wind; T-11.4 – T-11.7) ---
 
-def crane_simulate(
-    pivot: tuple[FloatArray, FloatArray, FloatArray, FloatArray],
-    hoist: tuple[FloatArray, FloatArray, FloatArray, FloatArray],
-    body1: tuple[float, float],
-    body2: tuple[float, float, float] | None,
-    g: float,
-    damping: float,
-    wind: tuple[tuple[float, float, float], tuple[float, float, float], float, float, float],
-    turbulence: tuple[list[float], list[list[float]], list[list[float]]],
-    y0: list[float],
-    save: FloatArray,
-    rtol: float,
-    atol: float,
-    max_steps: int,
-) -> dict[str, Any]: ...
+Knots = tuple[FloatArray, FloatArray, FloatArray, FloatArray]
+"""Knot times [s] (n,), values, rates, second derivatives (n, 3)."""
+
+class CraneSpec:
+    """The crane: pivot and hoist knots, bodies ((mass [kg], c_W A [m²]), the payload under a hook
+    (mass, c_W A, rigging [m]) or None), g [m/s²], damping [1/s], wind (steady, gust peak [m/s],
+    gust start, duration [s], air density [kg/m³], turbulence (ω [rad/s], amplitudes [m/s], phases))."""
+
+    def __init__(
+        self,
+        pivot: Knots,
+        hoist: Knots,
+        bodies: tuple[tuple[float, float], tuple[float, float, float] | None],
+        g: float,
+        damping: float,
+        wind: tuple[
+            tuple[float, float, float],
+            tuple[float, float, float],
+            float,
+            float,
+            float,
+            tuple[list[float], list[list[float]], list[list[float]]],
+        ],
+    ) -> None: ...
+
+def crane_simulate(spec: CraneSpec, y0: list[float], options: RunOptions) -> dict[str, Any]:
+    """From y0 (16,) at the first of ``options.save_times`` [s] through all of them, at the options'
+    rtol, atol and max_steps: t, y (N, 16), tension (N, 2) [N], steps, rejected."""
+
 def crane_residual_grid(
-    moves: list[tuple[tuple[FloatArray, FloatArray, FloatArray, FloatArray], float]],
+    moves: list[tuple[Knots, float]],
     ropes: list[float],
     ratios: list[float],
-    hook_mass: float,
-    rigging: float,
-    g: float,
+    crane: tuple[float, float, float],
     settle: float,
-    dt: float,
-    rtol: float,
-    atol: float,
-    max_steps: int,
-) -> FloatArray: ...
+    options: RunOptions,
+) -> FloatArray:
+    """Residual sway [m] per (move, rope, ratio); ``crane`` = (hook mass [kg], rigging [m], g [m/s²]);
+    the options' dt [s], rtol, atol, max_steps."""
 
 # --- python/rust/force.rs: a user force given as a Python callable (the slow path) ---
 

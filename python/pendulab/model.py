@@ -369,9 +369,9 @@ class Pendulum:
                 raise invalid(
                     "x", xa.tolist(), f"a position at least 1e-9 l = {1e-9 * self._length:g} m from the pivot"
                 )
-            (xp, vp), dx, dv = project_state(self._length, self._mass, self._g, xa, va)
+            (xp, vp), dx, dv = project_state(self._spec, xa, va)
             return State(_frozen(xp), _frozen(vp), (dx, dv))
-        xs, vs = state_on_ts2(self._length, self._mass, self._g, xa, va)
+        xs, vs = state_on_ts2(self._spec, xa, va)
         return State(_frozen(xs), _frozen(vs))
 
     def state_from_angles(
@@ -439,7 +439,7 @@ class Pendulum:
                 UserWarning,
                 stacklevel=2,
             )
-        x, v = _state_from_angles(self._length, self._mass, self._g, *values)
+        x, v = _state_from_angles(self._spec, values)
         _check_speed(np.asarray(v), f"(theta_dot, phi_dot) = ({values[2]!r}, {values[3]!r}) rad/s")
         return State(_frozen(x), _frozen(v))
 

@@ -2,17 +2,30 @@
 //! and the energy–momentum map. Conversions only; SI units (m, kg, s, rad) except where a function
 //! says it works in Holm's unit-length variables (σ) or dimensionless (ε, j).
 
-use crate::convert::{model, to_py, vec3, InvalidInputError};
+use crate::convert::{model, to_py, InvalidInputError};
+use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2};
 use pendulab_core::exact::energy_momentum::{conical_boundary, monodromy_change, rotation_number};
 use pendulab_core::exact::phases::phases;
 use pendulab_core::exact::ExactSolution;
-use pendulab_core::{reduce, DVec3, Model, State};
+use pendulab_core::{reduce, DVec3, Params, State};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 type Xv<'py> = (Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<f64>>);
+
+/// The l [m], m [kg], g [m/s²] of the spec's model, which must be the ideal pendulum: the exact
+/// solution and the reduced flow are its own.
+fn ideal(spec: &ModelSpec) -> PyResult<Params> {
+    if spec.name() != "ideal" {
+        return Err(InvalidInputError::new_err(format!(
+            "the exact solution and the reduced flow are the ideal pendulum's, not the {:?} model's",
+            spec.name()
+        )));
+    }
+    spec.params()
+}
 
 fn states_from(x: &PyReadonlyArray2<'_, f64>, v: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<State>> {
     let (x, v) = (x.as_array(), v.as_array());
@@ -51,17 +64,12 @@ pub struct Exact {
 
 #[pymethods]
 impl Exact {
+    /// The exact solution of the spec's ideal pendulum through the start `state` = (x0 [m], v0 [m/s]).
     #[new]
-    fn new(
-        length: f64,
-        mass: f64,
-        g: f64,
-        x0: PyReadonlyArray1<'_, f64>,
-        v0: PyReadonlyArray1<'_, f64>,
-    ) -> PyResult<Self> {
-        let m = model(length, mass, g)?;
-        let s = State { x: vec3("x0", &x0)?, v: vec3("v0", &v0)? };
-        Ok(Self { inner: ExactSolution::new(m.params(), &s).map_err(to_py)? })
+    fn new(spec: &ModelSpec, state: StateArrays<'_>) -> PyResult<Self> {
+        let params = ideal(spec)?;
+        let (x, v) = start(&state)?;
+        Ok(Self { inner: ExactSolution::new(&params, &State { x, v }).map_err(to_py)? })
     }
 
     /// States at times `t` [s] (1-D): (x [m] (N, 3), v [m/s] (N, 3), φ [rad] (N,), continuous).
@@ -212,22 +220,22 @@ pub fn relation_residuals<'py>(
     Ok(out.into_pyarray(py))
 }
 
-/// The reduced flow T-3.4 with reconstruction T-3.6 by RK4: n steps of dt [s] → (x, v) (n + 1, 3).
+/// The reduced flow T-3.4 with reconstruction T-3.6 by RK4 for the spec's ideal pendulum from
+/// `state` = (x0 [m], v0 [m/s]): `n_steps` steps of the options' dt [s] → (x, v) (n + 1, 3).
 #[pyfunction]
-#[allow(clippy::too_many_arguments)]
 pub fn reduced_flow<'py>(
     py: Python<'py>,
-    length: f64,
-    mass: f64,
-    g: f64,
-    x0: PyReadonlyArray1<'py, f64>,
-    v0: PyReadonlyArray1<'py, f64>,
-    dt: f64,
-    n: usize,
+    spec: &ModelSpec,
+    state: StateArrays<'py>,
+    options: &RunOptions,
+    n_steps: usize,
 ) -> PyResult<Xv<'py>> {
-    let m = model(length, mass, g)?;
-    let s = State::on_tangent_bundle(m.params(), vec3("x0", &x0)?, vec3("v0", &v0)?).map_err(to_py)?;
-    let states = py.allow_threads(|| reduce::reduced_flow(length, g, &s, dt, n)).map_err(to_py)?;
+    let params = ideal(spec)?;
+    let (x, v) = start(&state)?;
+    let s = State::on_tangent_bundle(&params, x, v).map_err(to_py)?;
+    let dt = options.solve.dt;
+    let states =
+        py.allow_threads(|| reduce::reduced_flow(params.length, params.g, &s, dt, n_steps)).map_err(to_py)?;
     Ok(to_arrays(py, &states))
 }
 

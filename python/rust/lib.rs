@@ -12,6 +12,7 @@
 //!   `ensemble_adaptive.rs`, `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module;
 //!   `live.rs`: `LiveSession`, the lab's live session (the server's sessions).
 
+mod background;
 mod convert;
 mod getters;
 

@@ -2,7 +2,8 @@
 //! by the start angles and the parameters ([`pendulab_core::sensitivity`], docs/theory.md T-10.7) —
 //! the Jacobian of `pl.fit` without finite differences. SI units: times [s], x [m], v [m/s].
 
-use crate::convert::{any_model, to_py, InvalidInputError};
+use crate::convert::{to_py, InvalidInputError};
+use crate::spec::{ModelSpec, RunOptions};
 use numpy::{PyArray2, PyArray3, PyReadonlyArray1};
 use pendulab_core::model::registry::AnyModel;
 use pendulab_core::model::Extended;
@@ -18,31 +19,27 @@ type Out<'py> = (
 
 /// x (n, 3) [m], v (n, 3) [m/s] at `times` [s] (from the start at t = 0) and their derivatives
 /// dx, dv (n, 3, 9) by (θ₀, φ₀, θ̇₀, φ̇₀, l, g, damping, drag, friction) — `sensitivity_params()`.
-/// `model` is "ideal", "damped" or "rotating" with its registry parameters `params`.
+/// The spec's model is "ideal", "damped" or "rotating"; the start is `angles` = (θ₀, φ₀ [rad], θ̇₀,
+/// φ̇₀ [rad/s]); the options give the tolerances rtol, atol [m, m/s] of DOP853.
 #[pyfunction]
-#[pyo3(signature = (length, mass, g, model, params, angles, times, rtol=1e-12, atol=1e-14))]
-#[allow(clippy::too_many_arguments)]
 fn sensitivities<'py>(
     py: Python<'py>,
-    length: f64,
-    mass: f64,
-    g: f64,
-    model: &str,
-    params: Vec<(String, f64)>,
+    spec: &ModelSpec,
     angles: [f64; 4],
     times: PyReadonlyArray1<'py, f64>,
-    rtol: f64,
-    atol: f64,
+    options: &RunOptions,
 ) -> PyResult<Out<'py>> {
-    let m = match any_model(length, mass, g, Some(model), Some(params), None)? {
+    let m = match spec.registry()? {
         AnyModel::Ideal(p) => Extended::ideal(*pendulab_core::Model::params(&p)),
         AnyModel::Extended(e, _) => e,
         _ => {
             return Err(InvalidInputError::new_err(format!(
-                "sensitivities are for the rod models ideal, damped, rotating, not {model:?}"
+                "sensitivities are for the rod models ideal, damped, rotating, not {:?}",
+                spec.name()
             )))
         }
     };
+    let (rtol, atol) = (options.solve.rtol, options.solve.atol);
     let times: Vec<f64> = times.as_array().iter().copied().collect();
     let s = py.allow_threads(|| run(&m, angles, &times, rtol, atol)).map_err(to_py)?;
     let n = times.len();

@@ -1,7 +1,7 @@
 //! The run as one description crossing the border: `ModelSpec` (the model, built and checked once:
 //! a registry model by name with l [m], m [kg], g [m/s²], its extra parameters and pivot samples, or
 //! the swinging spring) and `RunOptions` (t0, t_end [s], the method, dt [s], rtol, atol [m and m/s],
-//! projection, conserve, the save rule, the saved-bytes cap, the spring's order). Every stepping
+//! projection, conserve, the save rule, the saved-bytes cap, the spring's order, a step cap). Every stepping
 //! class takes `(spec, state, options)` with the state a pair (x0 [m], v0 [m/s]). Conversions only.
 
 use crate::convert::{any_model, to_py, vec3, InvalidInputError, PivotArrays};
@@ -10,7 +10,7 @@ use pendulab_core::elastic::SwingingSpring;
 use pendulab_core::model::registry::AnyModel;
 use pendulab_core::model::StringPendulum;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
-use pendulab_core::{DVec3, Method, Model, SaveAt, SolveOptions};
+use pendulab_core::{DVec3, Method, Model, Params, SaveAt, SolveOptions};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
@@ -40,6 +40,16 @@ impl ModelSpec {
             Built::Registry(m) => Ok(m.clone()),
             Built::Spring(_) => Err(InvalidInputError::new_err(
                 "the swinging spring runs off the sphere: use its own classes (SpringStepper, spring_simulate)",
+            )),
+        }
+    }
+
+    /// The registry model's l [m], m [kg], g [m/s²] (what a state on TS² is checked against).
+    pub(crate) fn params(&self) -> PyResult<Params> {
+        match &self.built {
+            Built::Registry(m) => Ok(*m.params()),
+            Built::Spring(_) => Err(InvalidInputError::new_err(
+                "the swinging spring runs off the sphere: its states are not on TS²",
             )),
         }
     }
@@ -106,7 +116,7 @@ impl ModelSpec {
 
     /// The model's registry name (`spring` for the swinging spring).
     #[getter]
-    fn name(&self) -> &'static str {
+    pub(crate) fn name(&self) -> &'static str {
         match &self.built {
             Built::Registry(m) => m.name(),
             Built::Spring(_) => "spring",
@@ -164,7 +174,8 @@ impl ModelSpec {
 /// How to run: the start time t0 [s], the end t_end [s] (batch runs), the method and its dt [s],
 /// rtol, atol [m and m/s] and projection onto TS² (defaults: the core's `SolveOptions`), conserve
 /// (E and J₃ imposed after each step), the save rule (every `save_every`-th step, or exactly
-/// `save_times` [s]), the cap on saved bytes, and the spring's order (2 or 4).
+/// `save_times` [s]), the cap on saved bytes, the spring's order (2 or 4) and a cap on steps
+/// (`max_steps`, the crane's runs).
 #[pyclass(module = "pendulab._core", name = "RunOptions", frozen)]
 pub(crate) struct RunOptions {
     pub(crate) t0: f64,
@@ -172,8 +183,12 @@ pub(crate) struct RunOptions {
     pub(crate) solve: SolveOptions,
     pub(crate) conserve: bool,
     pub(crate) save: SaveAt,
+    /// `save_every` as given (the ensemble keeps only the final state without one).
+    pub(crate) save_every: Option<u64>,
     pub(crate) max_saved_bytes: u64,
     pub(crate) order: u32,
+    /// Cap on the steps of a run that takes one (the crane's).
+    pub(crate) max_steps: Option<u64>,
 }
 
 impl RunOptions {
@@ -186,7 +201,7 @@ impl RunOptions {
 #[pymethods]
 impl RunOptions {
     #[new]
-    #[pyo3(signature = (*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=false, save_every=None, save_times=None, max_saved_bytes=None, order=2))]
+    #[pyo3(signature = (*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=false, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None))]
     #[allow(clippy::too_many_arguments)] // keyword-only: the one place the run's options are listed
     fn new(
         t0: f64,
@@ -201,6 +216,7 @@ impl RunOptions {
         save_times: Option<PyReadonlyArray1<'_, f64>>,
         max_saved_bytes: Option<u64>,
         order: u32,
+        max_steps: Option<u64>,
     ) -> PyResult<Self> {
         let d = SolveOptions::default();
         let solve = SolveOptions {
@@ -221,7 +237,7 @@ impl RunOptions {
             (n, None) => SaveAt::Every(n.unwrap_or(1)),
         };
         let max_saved_bytes = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
-        Ok(Self { t0, t_end, solve, conserve, save, max_saved_bytes, order })
+        Ok(Self { t0, t_end, solve, conserve, save, save_every, max_saved_bytes, order, max_steps })
     }
 
     /// The method's name.

@@ -3,7 +3,7 @@
 //! TS², power, the acceleration of T-2.2, the pivot's path). SI units: x [m], v [m/s], t [s], angles
 //! [rad], arrays of 3-vectors (N, 3).
 
-use crate::convert::{arr3, model, to_py, vec3, InvalidInputError, StatePair};
+use crate::convert::{arr3, to_py, vec3, InvalidInputError, StatePair};
 use crate::spec::ModelSpec;
 use numpy::ndarray::Array2;
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
@@ -12,51 +12,37 @@ use pendulab_core::{DVec3, Model, State};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
-/// The state (x, v) checked to lie on TS² within the core tolerance.
+/// The state (x, v) checked to lie on TS² of the spec's model (|x| = l [m], x·v = 0) within the
+/// core tolerance.
 #[pyfunction]
 fn state_on_ts2<'py>(
     py: Python<'py>,
-    length: f64,
-    mass: f64,
-    g: f64,
+    spec: &ModelSpec,
     x: PyReadonlyArray1<'py, f64>,
     v: PyReadonlyArray1<'py, f64>,
 ) -> PyResult<StatePair<'py>> {
-    let m = model(length, mass, g)?;
-    let s = State::on_tangent_bundle(m.params(), vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
+    let s = State::on_tangent_bundle(&spec.params()?, vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
     Ok((arr3(py, s.x), arr3(py, s.v)))
 }
 
-/// (x, v) moved onto TS², with the distances moved |Δx| [m] and |Δv| [m/s].
+/// (x, v) moved onto TS² of the spec's model, with the distances moved |Δx| [m] and |Δv| [m/s].
 #[pyfunction]
 fn project_state<'py>(
     py: Python<'py>,
-    length: f64,
-    mass: f64,
-    g: f64,
+    spec: &ModelSpec,
     x: PyReadonlyArray1<'py, f64>,
     v: PyReadonlyArray1<'py, f64>,
 ) -> PyResult<(StatePair<'py>, f64, f64)> {
-    let m = model(length, mass, g)?;
-    let (s, p) = State::projected(m.params(), vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
+    let (s, p) = State::projected(&spec.params()?, vec3("x", &x)?, vec3("v", &v)?).map_err(to_py)?;
     Ok(((arr3(py, s.x), arr3(py, s.v)), p.dx, p.dv))
 }
 
-/// The state at polar angle θ [rad] from the downward vertical, azimuth φ [rad], rates [rad/s].
+/// The state of the spec's model at polar angle θ [rad] from the downward vertical, azimuth φ [rad]
+/// and their rates (θ̇, φ̇) [rad/s], given as `angles` = (θ, φ, θ̇, φ̇).
 #[pyfunction]
-#[allow(clippy::too_many_arguments)]
-fn state_from_angles(
-    py: Python<'_>,
-    length: f64,
-    mass: f64,
-    g: f64,
-    theta: f64,
-    phi: f64,
-    theta_dot: f64,
-    phi_dot: f64,
-) -> PyResult<StatePair<'_>> {
-    let m = model(length, mass, g)?;
-    let s = State::from_angles(m.params(), theta, phi, theta_dot, phi_dot).map_err(to_py)?;
+fn state_from_angles<'py>(py: Python<'py>, spec: &ModelSpec, angles: [f64; 4]) -> PyResult<StatePair<'py>> {
+    let [theta, phi, theta_dot, phi_dot] = angles;
+    let s = State::from_angles(&spec.params()?, theta, phi, theta_dot, phi_dot).map_err(to_py)?;
     Ok((arr3(py, s.x), arr3(py, s.v)))
 }
 

@@ -216,18 +216,19 @@ def test_arrays_to_xarray_netcdf_and_zarr(pendulum: pl.Pendulum, tmp_path: Path,
 def test_wait_returns_when_the_run_ends_not_at_a_poll(pendulum: pl.Pendulum) -> None:
     """EnsembleRun.wait(timeout) returns True the moment the run has finished (far sooner than a long
     timeout), False while it runs; a cancelled run is seen at once too; bad timeouts are named."""
-    from pendulab._core import EnsembleRun
+    from pendulab._core import EnsembleRun, EnsembleSpec, RunOptions
 
     states = pl.states_from_angles(pendulum, theta=np.linspace(0.2, 2.9, 64), phi_dot=1.0)
     x, v = np.ascontiguousarray(states[:, :3]), np.ascontiguousarray(states[:, 3:])
     one, g = np.array([1.0]), np.array([9.81])
-    small = EnsembleRun(x, v, one, g, 1e-3, 100)
+    spec, options = EnsembleSpec(one, g), RunOptions(dt=1e-3)
+    small = EnsembleRun(spec, x, v, options, 100)
     t0 = time.perf_counter()
     assert small.wait(60.0)
     assert time.perf_counter() - t0 < 30.0  # returned on completion, not after the 60 s timeout
     assert small.done and small.wait(0.0)
     assert small.result()["steps"] == 100
-    big = EnsembleRun(x, v, one, g, 1e-3, 10**9)  # would take minutes
+    big = EnsembleRun(spec, x, v, options, 10**9)  # would take minutes
     assert not big.wait(0.0) and not big.done
     big.cancel()
     t0 = time.perf_counter()

@@ -100,9 +100,12 @@ def test_models_without_sensitivities_say_none() -> None:
 
 
 def test_bad_input_to_the_core_is_named() -> None:
+    damped = _core.ModelSpec(1.0, 1.0, 9.81, "damped")
+    slewing = _core.ModelSpec(1.0, 1.0, 9.81, "slewing")
+    tight = _core.RunOptions(rtol=1e-12, atol=1e-14)
     with pytest.raises(pl.InvalidInputError, match="save times"):
-        _core.sensitivities(1.0, 1.0, 9.81, "damped", [], [0.5, 0.0, 0.0, 0.0], np.array([0.0, 2.0, 1.0]))
+        _core.sensitivities(damped, [0.5, 0.0, 0.0, 0.0], np.array([0.0, 2.0, 1.0]), tight)
     with pytest.raises(pl.InvalidInputError, match="rtol"):
-        _core.sensitivities(1.0, 1.0, 9.81, "damped", [], [0.5, 0.0, 0.0, 0.0], np.array([1.0]), rtol=0.0)
+        _core.sensitivities(damped, [0.5, 0.0, 0.0, 0.0], np.array([1.0]), _core.RunOptions(rtol=0.0))
     with pytest.raises(pl.InvalidInputError, match="rod models"):
-        _core.sensitivities(1.0, 1.0, 9.81, "slewing", [], [0.5, 0.0, 0.0, 0.0], np.array([1.0]))
+        _core.sensitivities(slewing, [0.5, 0.0, 0.0, 0.0], np.array([1.0]), tight)

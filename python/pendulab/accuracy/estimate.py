@@ -66,7 +66,7 @@ from ..trajectory import Trajectory
 
 #: The companion run of DOP853 is this much tighter in rtol and atol.
 COMPANION_FACTOR = 0.1
-#: The smallest rtol DOP853 accepts (crates/pendulab-core/src/integrate/dop853.rs, RTOL_MIN).
+#: The smallest rtol DOP853 accepts (crates/pendulab-core/src/integrate/dop853/mod.rs, RTOL_MIN).
 RTOL_MIN = 1e-15
 #: At most this share of the coarse (2·dt) run's steps, up to any sample, may be shortened ones.
 MAX_IRREGULAR = 1.0 / 8.0
@@ -252,13 +252,7 @@ def true_error(pendulum: Pendulum, state: State, tr: Trajectory) -> ErrorEstimat
     """|x − x_exact| [m] and |v − v_exact| [m/s] at the samples for the ideal pendulum (None otherwise)."""
     if not pendulum.is_ideal or pendulum.force is not None:
         return None
-    sol = _CoreExact(
-        pendulum.length,
-        pendulum.mass,
-        pendulum.g,
-        np.ascontiguousarray(state.x),
-        np.ascontiguousarray(state.v),
-    )
+    sol = _CoreExact(pendulum.spec, (np.ascontiguousarray(state.x), np.ascontiguousarray(state.v)))
     # the start state is at t0, which is not a sample when save_at leaves it out
     t0 = float(tr.options.get("t0", tr.t[0]))
     x, v, _ = sol.states(np.ascontiguousarray(tr.t - t0))

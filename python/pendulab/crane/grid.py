@@ -19,7 +19,7 @@ from typing import Any
 
 import numpy as np
 
-from .._core import InvalidInputError, crane_residual_grid
+from .._core import InvalidInputError, RunOptions, crane_residual_grid
 from .._progress import tqdm
 from ..sweeps.backends import Threads, drive
 from .paths import move
@@ -80,7 +80,10 @@ def residual_grid(
     if not (isinstance(workers, int) and 1 <= workers <= 64):
         raise InvalidInputError(f"workers = {workers!r}: an integer in [1, 64]")
     # every value checked once, up front, by the core (a bad rope or ratio fails before any work)
-    crane_residual_grid([], lr.tolist(), rr.tolist(), hook_mass, rigging, g, settle, dt, rtol, atol, 1)
+    crane = (hook_mass, rigging, g)
+    crane_residual_grid(
+        [], lr.tolist(), rr.tolist(), crane, settle, RunOptions(dt=dt, rtol=rtol, atol=atol, max_steps=1)
+    )
     moves: list[Any] = []
     labels = []
     for s in shapers:
@@ -96,9 +99,8 @@ def residual_grid(
         if cancel.is_set():
             return None
         ropes_block = lr[j : j + block].tolist()
-        return crane_residual_grid(
-            [moves[i]], ropes_block, rr.tolist(), hook_mass, rigging, g, settle, dt, rtol, atol, 10_000_000
-        )
+        options = RunOptions(dt=dt, rtol=rtol, atol=atol, max_steps=10_000_000)
+        return crane_residual_grid([moves[i]], ropes_block, rr.tolist(), crane, settle, options)
 
     def done(k: int, values: Any) -> None:
         i, j = chunks[k]

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 from scipy.interpolate import CubicSpline
 
-from .._core import InvalidInputError, crane_simulate
+from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
 from .paths import Gantry, Path
 from .shaper import FloatArray
 
@@ -280,30 +280,19 @@ class Crane:
             body2 = (self.payload_mass, cwa_payload, self.rigging)
         else:
             body1, body2 = (self.payload_mass, cwa_payload), None
+        om, amp, ph = w.modes()
         wind = (
             tuple(map(float, w.velocity)),
             tuple(map(float, w.gust)),
             w.gust_start,
             w.gust_duration,
             w.air_density,
+            (om.tolist(), amp.tolist(), ph.tolist()),
         )
-        om, amp, ph = w.modes()
-        turbulence = (om.tolist(), amp.tolist(), ph.tolist())
-        out = crane_simulate(
-            self.pivot.knots(t0 - 1.0, t1 + 1.0),
-            self.hoist.knots(t0 - 1.0, t1 + 1.0),
-            body1,
-            body2,
-            self.g,
-            self.damping,
-            wind,
-            turbulence,
-            y0.tolist(),
-            save,
-            rtol,
-            atol,
-            MAX_STEPS,
-        )
+        knots = (self.pivot.knots(t0 - 1.0, t1 + 1.0), self.hoist.knots(t0 - 1.0, t1 + 1.0))
+        spec = CraneSpec(*knots, (body1, body2), self.g, self.damping, wind)
+        options = RunOptions(save_times=save, rtol=rtol, atol=atol, max_steps=MAX_STEPS)
+        out = crane_simulate(spec, y0.tolist(), options)
         y, t = out["y"], out["t"]
         piv = self.pivot.position(t)
         x1, v1 = y[:, 0:3], y[:, 3:6]

@@ -15,12 +15,13 @@ from __future__ import annotations
 
 import math
 import warnings
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from .. import validate as limits
-from .._core import EnsembleRun, InvalidInputError
+from .._core import EnsembleRun, EnsembleSpec, InvalidInputError, RunOptions
 from .._progress import tqdm
 from ..memory import check_memory
 from ..model import FloatArray, Pendulum, State
@@ -167,7 +168,48 @@ def simulate_ensemble(
         if save_every is not None or summary is not None:
             raise InvalidInputError("give save=pl.Save... or save_every/summary, not both")
         save_every, summary = save.every_n, save.with_summary
-    summary = True if summary is None else bool(summary)
+    plan = _plan(pendulum, states, t_end, dt, save_every, summary, (length, g, damping), settle_angle)
+    out, interrupted = _run_kernel(plan, progress)
+    return _result(pendulum, plan, out, interrupted)
+
+
+@dataclass(frozen=True)
+class _Plan:
+    """A RATTLE ensemble run, checked: the starts x [m], v [m/s] (N, 3), per-trajectory l [m], g
+    [m/s²], c [1/s], which rows are finite, dt, t_end [s], the step count, what is saved."""
+
+    x: FloatArray
+    v: FloatArray
+    lengths: FloatArray
+    gs: FloatArray
+    cs: FloatArray
+    finite: Any
+    invalid: Any
+    dt: float
+    t_end: float
+    steps: int
+    save_every: int | None
+    summary: bool
+    settle: float | None
+
+    def good(self, a: FloatArray) -> FloatArray:
+        """The rows of ``a`` the kernel runs (the finite starts; a broadcast value as it is)."""
+        n = self.x.shape[0]
+        return np.ascontiguousarray(a if (a.shape[0] != n or not self.invalid.size) else a[self.finite])
+
+
+def _plan(
+    pendulum: Pendulum,
+    states: Any,
+    t_end: Any,
+    dt: Any,
+    save_every: Any,
+    summary: bool | None,
+    params: tuple[Any, Any, Any],
+    settle_angle: Any,
+) -> _Plan:
+    """The arguments of ``simulate_ensemble(method="rattle")`` checked, the work and memory bounded."""
+    length, g, damping = params
     c_model = model_damping(pendulum)
     x, v = _as_states(states)
     n = x.shape[0]
@@ -188,7 +230,22 @@ def simulate_ensemble(
         )
     if save_every is not None:
         save_every = limits.integer("save_every", save_every, 1, 2**63 - 1)
-    n_save = 2 if save_every is None else steps // int(save_every) + 2
+    _check_saved(n, 2 if save_every is None else steps // int(save_every) + 2)
+    settle = None if settle_angle is None else limits.number("settle_angle", settle_angle, _SETTLE)
+    if invalid.size:
+        rows = ", ".join(str(i) for i in invalid[:10]) + (", …" if invalid.size > 10 else "")
+        warnings.warn(
+            f"{invalid.size} of {n} start rows are not finite (rows {rows}): not integrated, their "
+            "results are NaN (EnsembleResult.invalid_rows)",
+            RuntimeWarning,
+            stacklevel=3,
+        )
+    summary = True if summary is None else bool(summary)
+    return _Plan(x, v, lengths, gs, cs, finite, invalid, dt, t_end, steps, save_every, summary, settle)
+
+
+def _check_saved(n: int, n_save: int) -> None:
+    """``n`` trajectories × ``n_save`` saved samples: at most 4 GiB, and memory available for them."""
     if n * n_save * 48 > 4 * 2**30:
         raise InvalidInputError(
             f"{n} trajectories × {n_save} samples need {n * n_save * 48 / 2**30:.1f} GiB (limit 4 GiB); "
@@ -199,32 +256,23 @@ def simulate_ensemble(
         n * (BYTES_PER_ROW + n_save * 96),
         "integrate fewer starts at once (in chunks), or save less often",
     )
-    settle = None if settle_angle is None else limits.number("settle_angle", settle_angle, _SETTLE)
-    if invalid.size:
-        rows = ", ".join(str(i) for i in invalid[:10]) + (", …" if invalid.size > 10 else "")
-        warnings.warn(
-            f"{invalid.size} of {n} start rows are not finite (rows {rows}): not integrated, their "
-            "results are NaN (EnsembleResult.invalid_rows)",
-            RuntimeWarning,
-            stacklevel=2,
-        )
 
-    def good(a: FloatArray) -> FloatArray:
-        return np.ascontiguousarray(a if (a.shape[0] != n or not invalid.size) else a[finite])
 
+def _run_kernel(plan: _Plan, progress: bool | None) -> tuple[dict[str, Any], bool]:
+    """The core's run on its thread with a progress bar (Ctrl-C cancels): the result's arrays, back
+    at the input's rows (NaN where the start was not finite), and whether it was interrupted."""
+    n = plan.x.shape[0]
+    good = plan.good
     run = EnsembleRun(
-        good(x),
-        good(v),
-        good(lengths),
-        good(gs),
-        float(dt),
-        int(steps),
-        save_every,
-        bool(summary),
-        good(cs),
-        settle,
+        EnsembleSpec(good(plan.lengths), good(plan.gs), good(plan.cs)),
+        good(plan.x),
+        good(plan.v),
+        RunOptions(dt=float(plan.dt), save_every=plan.save_every),
+        int(plan.steps),
+        plan.summary,
+        plan.settle,
     )
-    show = progress if progress is not None else n * steps > _PROGRESS_AFTER
+    show = progress if progress is not None else n * plan.steps > _PROGRESS_AFTER
     interrupted = False
     with tqdm(total=1000, disable=not show, unit="‰", desc=f"{n} trajectories", leave=False) as bar:
         try:
@@ -236,24 +284,31 @@ def simulate_ensemble(
             run.cancel()
             interrupted = True
     out = run.result()
-    if invalid.size:  # back to the input's rows, NaN where the start was not finite
+    if plan.invalid.size:  # back to the input's rows, NaN where the start was not finite
         for key, a in list(out.items()):
             if isinstance(a, np.ndarray) and a is not out["t"]:
                 full = np.full((n, *a.shape[1:]), np.nan)
-                full[finite] = a
+                full[plan.finite] = a
                 out[key] = full
+    return out, interrupted
+
+
+def _result(pendulum: Pendulum, plan: _Plan, out: dict[str, Any], interrupted: bool) -> EnsembleResult:
+    """The kernel's output as an ``EnsembleResult``: the summary with its drifts and sway, the run's
+    metadata."""
     if interrupted:
-        warnings.warn("interrupted: returning the states reached so far", RuntimeWarning, stacklevel=2)
+        warnings.warn("interrupted: returning the states reached so far", RuntimeWarning, stacklevel=3)
     summ = None
-    if summary:
+    if plan.summary:
         summ = {k: out[k] for k in ("z_min", "z_max", "e_min", "e_max", "j3_min", "j3_max", "crossings")}
-        scale = np.maximum(np.abs(gs) * lengths, 1e-300)
+        scale = np.maximum(np.abs(plan.gs) * plan.lengths, 1e-300)
         summ["energy_drift"] = (summ["e_max"] - summ["e_min"]) / scale
         summ["j3_drift"] = summ["j3_max"] - summ["j3_min"]
-        summ["max_sway"] = max_sway(summ["z_min"], summ["z_max"], gs, lengths)
-    meta = {"method": "rattle", "dt": dt, "t_end": t_end, "pendulum": pendulum.params(), "n": n}
-    if settle is not None:
-        meta["settle_angle"] = settle
+        summ["max_sway"] = max_sway(summ["z_min"], summ["z_max"], plan.gs, plan.lengths)
+    n = plan.x.shape[0]
+    meta = {"method": "rattle", "dt": plan.dt, "t_end": plan.t_end, "pendulum": pendulum.params(), "n": n}
+    if plan.settle is not None:
+        meta["settle_angle"] = plan.settle
     return EnsembleResult(
         out["t"],
         out["x"],
@@ -263,7 +318,7 @@ def simulate_ensemble(
         out["steps"],
         meta,
         out.get("settle_time"),
-        invalid.astype(np.int64),
+        plan.invalid.astype(np.int64),
     )
 
 

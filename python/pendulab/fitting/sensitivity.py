@@ -26,7 +26,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from .._core import sensitivities, sensitivity_params
+from .._core import RunOptions, sensitivities, sensitivity_params
 from ..model import FloatArray, Pendulum
 from .problem import ATOL, RTOL, STATE_NAMES, Motion, Problem, model_params
 
@@ -52,19 +52,8 @@ def exact_jacobian(
     if tau.size == 0 or float(tau.min()) < 0.0 or np.any(np.diff(tau) < 0.0):
         return None
     own = model_params(problem.model)
-    extra = [(k, float(values[k])) for k in own if k not in ("length", "g", "mass")]
     angles = [float(values[k]) for k in STATE_NAMES]
-    x, v, dx, dv = sensitivities(
-        values["length"],
-        values["mass"],
-        values["g"],
-        problem.model,
-        extra,
-        angles,
-        tau,
-        RTOL,
-        ATOL * p.length,
-    )
+    x, v, dx, dv = sensitivities(p.spec, angles, tau, RunOptions(rtol=RTOL, atol=ATOL * p.length))
     accel: FloatArray | None = None
 
     def at(vals: Mapping[str, float], xs: FloatArray, vs: FloatArray) -> FloatArray:

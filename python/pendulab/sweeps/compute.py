@@ -20,7 +20,16 @@ from typing import Any
 import numpy as np
 
 from .. import validate as limits
-from .._core import EnsembleRun, ExactSolution, InvalidInputError, rotation_numbers, state_from_angles
+from .._core import (
+    EnsembleRun,
+    EnsembleSpec,
+    ExactSolution,
+    InvalidInputError,
+    ModelSpec,
+    RunOptions,
+    rotation_numbers,
+    state_from_angles,
+)
 from ..ensemble.run import max_sway, model_damping
 from ..model import FloatArray, Pendulum
 from .design import AXES, AXIS_LIMITS, INITIAL_AXES, Design, check_axis_name
@@ -205,16 +214,14 @@ def _states(c: dict[str, FloatArray], mass: float) -> tuple[FloatArray, FloatArr
     m = len(c["theta0"])
     x, v = np.empty((m, 3)), np.empty((m, 3))
     for i in range(m):
-        x[i], v[i] = state_from_angles(
-            float(c["length"][i]),
-            mass,
-            float(c["g"][i]),
-            float(c["theta0"][i]),
-            float(c["phi0"][i]),
-            float(c["theta_dot0"][i]),
-            float(c["phi_dot0"][i]),
-        )
+        angles = [float(c[k][i]) for k in ("theta0", "phi0", "theta_dot0", "phi_dot0")]
+        x[i], v[i] = state_from_angles(_point(c, i, mass), angles)
     return x, v
+
+
+def _point(c: dict[str, FloatArray], i: int, mass: float) -> ModelSpec:
+    """The ideal pendulum of point ``i`` (its l [m] and g [m/s²], the sweep's m [kg])."""
+    return ModelSpec(float(c["length"][i]), mass, float(c["g"][i]))
 
 
 def _rotation_numbers(c: dict[str, FloatArray], mass: float) -> FloatArray:
@@ -233,7 +240,7 @@ def _rotation_numbers(c: dict[str, FloatArray], mass: float) -> FloatArray:
     for i in np.flatnonzero(ok & np.isnan(w) & (j != 0.0)):
         one = {k: a[i : i + 1] for k, a in c.items()}
         x, v = _states(one, mass)
-        adv = ExactSolution(float(length[i]), mass, float(g[i]), x[0], v[0]).azimuth_advance
+        adv = ExactSolution(_point(c, i, mass), (x[0], v[0])).azimuth_advance
         w[i] = np.nan if adv is None else adv / (2.0 * math.pi)
     return w
 
@@ -242,7 +249,7 @@ def _periods(c: dict[str, FloatArray], mass: float) -> FloatArray:
     x, v = _states(c, mass)
     out = np.empty(len(x))
     for i in range(len(x)):
-        tz = ExactSolution(float(c["length"][i]), mass, float(c["g"][i]), x[i], v[i]).period_z
+        tz = ExactSolution(_point(c, i, mass), (x[i], v[i])).period_z
         out[i] = np.nan if tz is None else tz
     return out
 
@@ -255,7 +262,8 @@ def _simulate(
     need_summary = "max_sway" in spec.quantities or "energy_drift" in spec.quantities
     damping = np.ascontiguousarray(c["damping"])
     dt, settle = float(spec.dt or 0.0), spec.settle_angle
-    run = EnsembleRun(x, v, length, g, dt, spec.steps, None, need_summary, damping, settle)
+    models = EnsembleSpec(length, g, damping)
+    run = EnsembleRun(models, x, v, RunOptions(dt=dt), spec.steps, need_summary, settle)
     # wait returns the moment the chunk is done; a cancel is seen within 20 ms
     while not run.wait(0.02):
         if cancel is not None and cancel.is_set():

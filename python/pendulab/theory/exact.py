@@ -125,7 +125,7 @@ class ExactSolution:
         self._pendulum = pendulum
         self._start = state
         try:
-            self._core = _ExactSolution(pendulum.length, pendulum.mass, pendulum.g, *state.pair)
+            self._core = _ExactSolution(pendulum.spec, state.pair)
         except InvalidInputError as e:
             raise self._refusal("", e) from None
 

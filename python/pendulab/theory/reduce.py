@@ -31,7 +31,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._core import InvalidInputError
+from .._core import InvalidInputError, RunOptions
 from .._core import invariants as _invariants
 from .._core import reduced_flow as _reduced_flow
 from .._core import relation_residuals as _relation_residuals
@@ -162,7 +162,49 @@ def reduced_flow(pendulum: Pendulum, state: State, t_end: float, dt: float = 1e-
         )
     n = max(n, 1)
     h = t_end / n
-    x, v = _reduced_flow(pendulum.length, pendulum.mass, pendulum.g, *state.pair, h, n)
+    x, v = _reduced_flow(pendulum.spec, state.pair, RunOptions(dt=h), n)
     t = h * np.arange(n + 1, dtype=np.float64)
     t[-1] = t_end
     return Trajectory(pendulum, t, x, v, "reduced_rk4", {"dt": h, "t0": 0.0, "t_end": t_end}, {"steps": n})
+
+
+@dataclass(frozen=True)
+class ReducedSurfaces:
+    """Holm's Figure 2 computed (T-3.3): on a grid of σ₁ [1] × σ₂ [1/s] (``sigma1``, ``sigma2``, each
+    (n, n)), the orbit manifold C = 0 as σ₃ = (σ₂² + J²)/(1 − σ₁²) [1/s²] (``surface``) and the energy
+    plane H = ½σ₃ + (g/l)σ₁ as σ₃ = 2(H − (g/l)σ₁) (``plane``), both NaN above ``cap`` = 1.4 times the
+    orbit's largest σ₃ [1/s²] (and the plane below 0); ``j`` = J₃/(m l²) [1/s] and ``h`` = E/(m l²)
+    [1/s²] of the orbit (means over its samples); ``reduced``: the orbit itself."""
+
+    reduced: Reduced
+    sigma1: FloatArray
+    sigma2: FloatArray
+    surface: FloatArray
+    plane: FloatArray
+    cap: float
+    j: float
+    h: float
+
+
+def reduced_surfaces(data: Trajectory | Reduced, resolution: int = 60) -> ReducedSurfaces:
+    """The surfaces of Holm's Figure 2 around the orbit of ``data`` (a trajectory, or its
+    :func:`reduce`) on a ``resolution`` × ``resolution`` grid: σ₁ over the orbit's range and 30 %
+    more on each side (within ±0.99; all of it for a pole at rest), σ₂ over ±1.3 times the orbit's
+    largest |σ₂| (at least a tenth of its speed scale √σ₃)."""
+    red = data if isinstance(data, Reduced) else reduce(data)
+    s = red.sigma
+    s1, s2, s3 = s[:, 0], s[:, 1], s[:, 2]
+    j, h, gamma = float(np.mean(red.j)), float(np.mean(red.hamiltonian)), red.gamma
+    span1 = max(float(np.ptp(s1)), 0.1)
+    lo1 = max(float(s1.min()) - 0.3 * span1, -0.99)
+    hi1 = min(float(s1.max()) + 0.3 * span1, 0.99)
+    if hi1 <= lo1:  # a pole at rest: show a little of the sphere around it
+        lo1, hi1 = -0.99, 0.99
+    span2 = max(float(np.max(np.abs(s2))), 0.1 * float(np.sqrt(max(np.max(s3), 1e-300))), 1e-3)
+    cap = 1.4 * max(float(np.max(s3)), 1e-12)
+    a, b = np.meshgrid(np.linspace(lo1, hi1, resolution), np.linspace(-1.3 * span2, 1.3 * span2, resolution))
+    surface = (b * b + j * j) / (1.0 - a * a)
+    surface[surface > cap] = np.nan  # cut off (matplotlib leaves those cells out)
+    plane = 2.0 * (h - gamma * a)
+    plane[(plane > cap) | (plane < 0.0)] = np.nan
+    return ReducedSurfaces(red, a, b, surface, plane, cap, j, h)
