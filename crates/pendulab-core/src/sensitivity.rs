@@ -181,9 +181,6 @@ const MAX_STEPS: usize = 100_000_000;
 /// Integrates the model from the start angles `angles` = (θ₀, φ₀ \[rad\], θ̇₀, φ̇₀ [rad/s]) at t = 0
 /// through the save times `times` \[s\] (finite, non-decreasing, ≥ 0) at relative tolerance `rtol` and
 /// absolute tolerance `atol` [m, m/s], returning the motion and its sensitivities (module doc).
-// One adaptive DOP853 loop over 60 coupled equations with its save-time stops: split, its state would
-// have to be passed between the pieces (the exception listed in Cargo.toml).
-#[allow(clippy::too_many_lines)]
 pub fn sensitivities(
     model: &Extended,
     angles: [f64; 4],
@@ -191,29 +188,7 @@ pub fn sensitivities(
     rtol: f64,
     atol: f64,
 ) -> Result<Sensitivities> {
-    for (name, value, ok) in
-        [("rtol", rtol, rtol.is_finite() && rtol > 0.0), ("atol", atol, atol.is_finite() && atol > 0.0)]
-    {
-        if !ok {
-            return Err(Error::InvalidParameter { name, value, allowed: "a finite tolerance > 0" });
-        }
-    }
-    for w in angles {
-        crate::error::require_finite("start angle or rate", w, "finite angles [rad] and rates [rad/s]")?;
-    }
-    if let Some((i, &t)) =
-        times.iter().enumerate().find(|&(i, &t)| !t.is_finite() || t < 0.0 || (i > 0 && t < times[i - 1]))
-    {
-        return Err(Error::InvalidParameter {
-            name: "save times",
-            value: t,
-            allowed: if i == 0 || !t.is_finite() || t < 0.0 {
-                "finite times >= 0 s"
-            } else {
-                "non-decreasing times in s"
-            },
-        });
-    }
+    check(angles, times, rtol, atol)?;
     let p = *model.params();
     let mut out = Sensitivities {
         x: Vec::with_capacity(times.len()),
@@ -227,7 +202,6 @@ pub fn sensitivities(
     let period_scale = (p.length / p.g.abs().max(1e-300)).sqrt().min(1.0);
     let mut h = 1e-3 * period_scale.max(1e-6);
     let mut k = [[0.0; N]; STAGES];
-    let mut y1 = [0.0; N];
     let mut tries = 0usize;
     for &target in times {
         while t < target {
@@ -237,42 +211,7 @@ pub fn sensitivities(
             }
             let clamped = target - t < h;
             let ht = if clamped { target - t } else { h };
-            rhs(model, t, &y, &mut k[0]);
-            for i in 1..STAGES {
-                // y + h Σ_j A[i][j] k_j, one stage at a time over all components (A has many zeros)
-                let mut yi = y;
-                for (j, kj) in k.iter().enumerate().take(i) {
-                    let c = ht * A[i][j];
-                    if c != 0.0 {
-                        for (z, kz) in yi.iter_mut().zip(kj) {
-                            *z += c * kz;
-                        }
-                    }
-                }
-                rhs(model, t + C[i] * ht, &yi, &mut k[i]);
-            }
-            let (mut incr, mut e5, mut e3) = ([0.0; N], [0.0; 6], [0.0; 6]);
-            for (i, ki) in k.iter().enumerate() {
-                if B[i] != 0.0 {
-                    for (z, kz) in incr.iter_mut().zip(ki) {
-                        *z += B[i] * kz;
-                    }
-                }
-                for n in 0..6 {
-                    e5[n] += E5[i] * ki[n];
-                    e3[n] += E3[i] * ki[n];
-                }
-            }
-            let (mut n5, mut n3) = (0.0, 0.0);
-            for n in 0..N {
-                y1[n] = y[n] + ht * incr[n];
-            }
-            for n in 0..6 {
-                let sk = atol + rtol * y[n].abs().max(y1[n].abs());
-                n5 += (e5[n] / sk) * (e5[n] / sk);
-                n3 += (e3[n] / sk) * (e3[n] / sk);
-            }
-            let err = if n5 == 0.0 && n3 == 0.0 { 0.0 } else { ht * n5 / (6.0 * (n5 + 0.01 * n3)).sqrt() };
+            let (y1, err) = attempt(model, t, &y, ht, &mut k, (rtol, atol));
             if !err.is_finite() || y1.iter().any(|z| !z.is_finite()) {
                 return Err(Error::Diverged { t, method: "dop853 (sensitivities)", dt: ht });
             }
@@ -302,4 +241,86 @@ pub fn sensitivities(
         out.dv.push(std::array::from_fn(|k| col(9 + 6 * k)));
     }
     Ok(out)
+}
+
+/// The arguments of [`sensitivities`] checked: tolerances finite and > 0, finite start angles and
+/// rates, save times finite, ≥ 0 and non-decreasing \[s\].
+fn check(angles: [f64; 4], times: &[f64], rtol: f64, atol: f64) -> Result<()> {
+    for (name, value, ok) in
+        [("rtol", rtol, rtol.is_finite() && rtol > 0.0), ("atol", atol, atol.is_finite() && atol > 0.0)]
+    {
+        if !ok {
+            return Err(Error::InvalidParameter { name, value, allowed: "a finite tolerance > 0" });
+        }
+    }
+    for w in angles {
+        crate::error::require_finite("start angle or rate", w, "finite angles [rad] and rates [rad/s]")?;
+    }
+    if let Some((i, &t)) =
+        times.iter().enumerate().find(|&(i, &t)| !t.is_finite() || t < 0.0 || (i > 0 && t < times[i - 1]))
+    {
+        return Err(Error::InvalidParameter {
+            name: "save times",
+            value: t,
+            allowed: if i == 0 || !t.is_finite() || t < 0.0 {
+                "finite times >= 0 s"
+            } else {
+                "non-decreasing times in s"
+            },
+        });
+    }
+    Ok(())
+}
+
+/// One DOP853 attempt of step `ht` \[s\] from (t, y) on all 60 equations: the 12 stages into `k`,
+/// y₁ = y + ht Σ bᵢ kᵢ and the blended error estimate of the motion's six components (T-8.5), with
+/// weights atol + rtol·max(|y|, |y₁|) from `tol` = (rtol, atol).
+#[inline(always)]
+fn attempt(
+    model: &Extended,
+    t: f64,
+    y: &[f64; N],
+    ht: f64,
+    k: &mut [[f64; N]; STAGES],
+    tol: (f64, f64),
+) -> ([f64; N], f64) {
+    let (rtol, atol) = tol;
+    rhs(model, t, y, &mut k[0]);
+    for i in 1..STAGES {
+        // y + h Σ_j A[i][j] k_j, one stage at a time over all components (A has many zeros)
+        let mut yi = *y;
+        for (j, kj) in k.iter().enumerate().take(i) {
+            let c = ht * A[i][j];
+            if c != 0.0 {
+                for (z, kz) in yi.iter_mut().zip(kj) {
+                    *z += c * kz;
+                }
+            }
+        }
+        rhs(model, t + C[i] * ht, &yi, &mut k[i]);
+    }
+    let (mut incr, mut e5, mut e3) = ([0.0; N], [0.0; 6], [0.0; 6]);
+    for (i, ki) in k.iter().enumerate() {
+        if B[i] != 0.0 {
+            for (z, kz) in incr.iter_mut().zip(ki) {
+                *z += B[i] * kz;
+            }
+        }
+        for n in 0..6 {
+            e5[n] += E5[i] * ki[n];
+            e3[n] += E3[i] * ki[n];
+        }
+    }
+    let (mut n5, mut n3) = (0.0, 0.0);
+    let mut y1 = [0.0; N];
+    for n in 0..N {
+        y1[n] = y[n] + ht * incr[n];
+    }
+    for n in 0..6 {
+        let sk = atol + rtol * y[n].abs().max(y1[n].abs());
+        n5 += (e5[n] / sk) * (e5[n] / sk);
+        n3 += (e3[n] / sk) * (e3[n] / sk);
+    }
+    let err = if n5 == 0.0 && n3 == 0.0 { 0.0 } else { ht * n5 / (6.0 * (n5 + 0.01 * n3)).sqrt() };
+    (y1, err)
 }

@@ -8,7 +8,8 @@ cancel), the value axis is symmetric-logarithmic, linear within ±2π.
 
 Right (one orbit): the reduced orbit in the (σ₁, p_z) plane — σ₁ = z/l [1], p_z = σ₂/(1 − σ₁²) [1/s]
 with σ₂ = ż/l — run clockwise, its enclosed area A = ∮ p_z dσ₁ [1/s] shaded. With J = J₃/(m l²)
-[1/s], the geometric phase is Δφ_geom = −A/J.
+[1/s], the geometric phase is Δφ_geom = −A/J. The orbit and its area are computed by
+:func:`pendulab.theory.phase_orbit.phase_orbit`; this module only draws.
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ import numpy as np
 from .._core import InvalidInputError
 from ..figure import new_figure, save_figure
 from ..theory.exact import ExactSolution, Phases
-from ..theory.reduce import reduce
+from ..theory.phase_orbit import PhaseOrbit, phase_orbit
 
 _COLORS = {"dynamic": "tab:blue", "geometric": "tab:orange", "sum": "tab:green"}
 _SYMLOG_RATIO = 20.0
@@ -118,16 +119,9 @@ def _bars(ax: Any, named: list[tuple[str, ExactSolution]], phases: list[Phases])
     ax.legend(loc="best", fontsize="small")
 
 
-def _orbit(ax: Any, sol: ExactSolution, phases: Phases, samples: int) -> None:
-    tz = sol.period_z
-    if tz is None or not math.isfinite(tz):  # pragma: no cover - generic and conical orbits have one
-        raise InvalidInputError(f"the z-period is {tz}; no closed reduced orbit to draw")
-    red = reduce(sol.trajectory(np.linspace(0.0, tz, samples)))
-    s1, s2 = red.sigma[:, 0], red.sigma[:, 1]
-    pz = s2 / ((1.0 - s1) * (1.0 + s1))
-    j = float(np.mean(red.j))
-    area = -j * phases.geometric  # ∮ p_z dσ₁ from the quadrature behind Phases.geometric
-    if sol.kind == "conical":  # constant height: the reduced orbit is a point and encloses nothing
+def _orbit(ax: Any, orbit: PhaseOrbit) -> None:
+    s1, pz, j, area, phases = orbit.sigma1, orbit.p_z, orbit.j, orbit.area, orbit.phases
+    if orbit.conical:  # constant height: the reduced orbit is a point and encloses nothing
         ax.plot(s1[0], 0.0, "o", color="black", ms=7, label=f"conical orbit: a point, A = {area:.3g} 1/s")
         ax.set_xlim(s1[0] - 0.1, s1[0] + 0.1)
         ax.set_ylim(-1.0, 1.0)
@@ -196,13 +190,14 @@ def plot_phases(
         )
     if samples < 16:
         raise InvalidInputError(f"samples = {samples} must be at least 16")
+    reduced = phase_orbit(named[0][1], samples, phases[0]) if orbit else None
     if figsize is None:
         figsize = (13.0, 5.5) if orbit else (2.6 * len(named) + 3.5, 5.5)
 
     fig = new_figure(figsize=figsize, layout="constrained")
-    if orbit:
+    if reduced is not None:
         ax_bars, ax_orbit = fig.subplots(1, 2, width_ratios=(1.0, 1.15))
-        _orbit(ax_orbit, named[0][1], phases[0], samples)
+        _orbit(ax_orbit, reduced)
     else:
         ax_bars = fig.add_subplot()
     _bars(ax_bars, named, phases)

@@ -4,6 +4,7 @@
 manifold C = σ₃(1 − σ₁²) − σ₂² − J² = 0 of the orbit's J = σ₆ = J₃/(m l²), a surface
 σ₃ = (σ₂² + J²)/(1 − σ₁²); the energy plane H = ½σ₃ + (g/l)σ₁ = E/(m l²); and the orbit, which runs
 along their intersection (drawn on top). Both surfaces are cut off at 1.4 times the orbit's largest σ₃.
+The surfaces are computed by :func:`pendulab.theory.reduce.reduced_surfaces`; this module only draws.
 """
 
 from __future__ import annotations
@@ -11,10 +12,8 @@ from __future__ import annotations
 import os
 from typing import Any
 
-import numpy as np
-
 from ..figure import new_figure, save_figure
-from ..theory.reduce import Reduced, reduce
+from ..theory.reduce import Reduced, reduced_surfaces
 from ..trajectory import Trajectory
 
 
@@ -28,29 +27,15 @@ def plot_reduced(
     """Draws the surface C = 0, the plane H = const and the orbit of ``data`` (a trajectory, or its
     :func:`pendulab.reduce`); saves atomically to ``path`` if given (.png, .svg, .pdf). Returns the Figure."""
 
-    red = data if isinstance(data, Reduced) else reduce(data)
-    s = red.sigma
-    s1, s2, s3 = s[:, 0], s[:, 1], s[:, 2]
-    j, h, gamma = float(np.mean(red.j)), float(np.mean(red.hamiltonian)), red.gamma
-
-    span1 = max(float(np.ptp(s1)), 0.1)
-    lo1 = max(float(s1.min()) - 0.3 * span1, -0.99)
-    hi1 = min(float(s1.max()) + 0.3 * span1, 0.99)
-    if hi1 <= lo1:  # a pole at rest: show a little of the sphere around it
-        lo1, hi1 = -0.99, 0.99
-    span2 = max(float(np.max(np.abs(s2))), 0.1 * float(np.sqrt(max(np.max(s3), 1e-300))), 1e-3)
-    cap = 1.4 * max(float(np.max(s3)), 1e-12)
-    a, b = np.meshgrid(np.linspace(lo1, hi1, resolution), np.linspace(-1.3 * span2, 1.3 * span2, resolution))
-    surface = (b * b + j * j) / (1.0 - a * a)
-    surface[surface > cap] = np.nan  # cut off (matplotlib leaves those cells out)
-    plane = 2.0 * (h - gamma * a)
-    plane[(plane > cap) | (plane < 0.0)] = np.nan
+    pic = reduced_surfaces(data, resolution)
+    red, a, b, cap, j, h = pic.reduced, pic.sigma1, pic.sigma2, pic.cap, pic.j, pic.h
+    s1, s2, s3 = red.sigma[:, 0], red.sigma[:, 1], red.sigma[:, 2]
 
     fig = new_figure(figsize=figsize, layout="constrained")
     # Draw in the order given (mplot3d's depth sorting of whole artists would hide the orbit).
     ax = fig.add_subplot(projection="3d", computed_zorder=False)
-    ax.plot_surface(a, b, surface, color="tab:blue", alpha=0.35, linewidth=0, antialiased=True)
-    ax.plot_surface(a, b, plane, color="tab:orange", alpha=0.35, linewidth=0, antialiased=True)
+    ax.plot_surface(a, b, pic.surface, color="tab:blue", alpha=0.35, linewidth=0, antialiased=True)
+    ax.plot_surface(a, b, pic.plane, color="tab:orange", alpha=0.35, linewidth=0, antialiased=True)
     ax.plot(s1, s2, s3, color="black", lw=2.5, label="orbit (intersection)", zorder=10)
     # proxies for the legend (surfaces have none)
     ax.plot([], [], color="tab:blue", lw=6, alpha=0.5, label=f"C = 0 for J₃/(m l²) = {j:.4g} 1/s")

@@ -6,17 +6,22 @@ SI units throughout."""
 from .advance import MeasuredAdvance, measured_azimuth_advance
 from .em_map import EMMap, em_map
 from .exact import ExactSolution, Phases, exact
-from .reduce import Reduced, reduce, reduced_flow
+from .phase_orbit import PhaseOrbit, phase_orbit
+from .reduce import Reduced, ReducedSurfaces, reduce, reduced_flow, reduced_surfaces
 
 __all__ = [
     "EMMap",
     "ExactSolution",
     "MeasuredAdvance",
+    "PhaseOrbit",
     "Phases",
     "Reduced",
+    "ReducedSurfaces",
     "em_map",
     "exact",
     "measured_azimuth_advance",
+    "phase_orbit",
     "reduce",
     "reduced_flow",
+    "reduced_surfaces",
 ]

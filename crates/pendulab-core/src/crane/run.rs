@@ -4,7 +4,7 @@
 //! (T-11.5) after every accepted step. The steps end exactly on every save time and on every jump of
 //! the prescribed motions (a trapezoidal move's acceleration steps), so no step straddles a jump and
 //! the stages of a step use the prescribed motion's piece of that step. Error estimate and step
-//! control as in `dop853.rs` (Hairer's blended 5th/3rd-order estimate, N = 16 components scaled by
+//! control as in `integrate/dop853/` (Hairer's blended 5th/3rd-order estimate, N = 16 components scaled by
 //! atol + rtol·max(|y₀|, |y₁|); the works enter with the same tolerances, scaled by 1/m₁ so they are
 //! of the order of a velocity squared times a length).
 //!

@@ -269,3 +269,42 @@ pub(crate) const D: [[f64; 16]; 4] = [
         -149.72683625798564,
     ],
 ];
+
+#[cfg(test)]
+mod tests {
+    //! The tableau against the order conditions it must satisfy, so a transcription error fails.
+    use super::*;
+
+    #[test]
+    fn rows_sum_to_the_nodes() {
+        for i in (1..STAGES).chain(STAGES + 1..STAGES_DENSE) {
+            let sum: f64 = A[i].iter().sum();
+            assert!((sum - C[i]).abs() < 1e-14, "row {i}: {sum} vs c = {}", C[i]);
+        }
+    }
+
+    #[test]
+    fn weights_satisfy_the_quadrature_conditions_to_order_8() {
+        for q in 0..8 {
+            let s: f64 = B.iter().zip(C).map(|(b, c)| b * c.powi(q)).sum();
+            assert!((s - 1.0 / f64::from(q + 1)).abs() < 1e-13, "sum b c^{q} = {s}");
+        }
+        // A condition beyond the bushy trees: sum b_i a_ij c_j^6 = 1/56.
+        let s: f64 =
+            (0..STAGES).map(|i| B[i] * A[i].iter().zip(C).map(|(a, c)| a * c.powi(6)).sum::<f64>()).sum();
+        assert!((s - 1.0 / 56.0).abs() < 1e-13, "{s}");
+    }
+
+    #[test]
+    fn error_estimators_vanish_on_low_degree_quadrature() {
+        // e5 is the difference of two formulas of order >= 5: it integrates c^q exactly (gives 0) for q < 5.
+        for q in 0..5 {
+            let s: f64 = E5.iter().zip(C).map(|(e, c)| e * c.powi(q)).sum();
+            assert!(s.abs() < 1e-12, "sum e5 c^{q} = {s}");
+        }
+        for q in 0..3 {
+            let s: f64 = E3.iter().zip(C).map(|(e, c)| e * c.powi(q)).sum();
+            assert!(s.abs() < 1e-12, "sum e3 c^{q} = {s}");
+        }
+    }
+}

@@ -17,20 +17,16 @@
 //! f at the new point (the first stage of the next step, "first same as last") is then evaluated at the
 //! projected state, so a step costs 12 evaluations with or without projection.
 //!
-//! **Dense output** of order 7 (Hairer's `contd8`): on first request after a step, three extra
-//! stages are computed and the interpolant
-//!
-//!   y(t₀ + θh) = y₀ + θ(F₀ + (1−θ)(F₁ + θ(F₂ + (1−θ)(F₃ + θ(F₄ + (1−θ)(F₅ + θF₆))))))
-//!
-//! is formed, with F₀ = Δy, F₁ = h f₀ − Δy, F₂ = 2Δy − h(f₁ + f₀), F₃‥₆ = h Σ dᵢⱼ kⱼ. It passes
-//! through y₀ and the (projected) y₁ with the right slopes; with projection on, interpolated states
-//! are projected onto TS² as well.
+//! The files: this one (the method: `Dop853`, its first step, a step with its error estimate and
+//! step-size control, the accepted step's projections), `system.rs` (the system T-2.4 as one point y
+//! of R⁶, its right-hand side and error weights), `dense.rs` (the dense output of order 7),
+//! `invariants.rs` (`conserve=True`: ½|v|² and J₃ imposed after the step, T-8.5).
 
 use super::dop853_control::StepControl;
-use super::dop853_tableau::{A, B, C, D, E3, E5, STAGES, STAGES_DENSE};
+use super::dop853_tableau::{A, B, C, E3, E5, STAGES, STAGES_DENSE};
 use super::Stats;
 use crate::error::{Error, Result};
-use crate::model::{acceleration, Model};
+use crate::model::Model;
 use crate::state::{project_onto_tangent_bundle, State};
 use glam::DVec3;
 
@@ -38,65 +34,12 @@ use glam::DVec3;
 pub const RTOL_MIN: f64 = 1e-15;
 const ERROR_EXPONENT: f64 = 1.0 / 8.0;
 
-/// A point of the first-order system: position and velocity, or their derivatives.
-#[derive(Debug, Clone, Copy, Default, PartialEq)]
-struct Y6 {
-    x: DVec3,
-    v: DVec3,
-}
+mod dense;
+mod invariants;
+mod system;
 
-impl Y6 {
-    #[inline(always)]
-    fn axpy(self, a: f64, k: Y6) -> Y6 {
-        Y6 { x: self.x + k.x * a, v: self.v + k.v * a }
-    }
-    #[inline(always)]
-    fn sub(self, o: Y6) -> Y6 {
-        Y6 { x: self.x - o.x, v: self.v - o.v }
-    }
-    #[inline(always)]
-    fn scale(self, a: f64) -> Y6 {
-        Y6 { x: self.x * a, v: self.v * a }
-    }
-    /// Σ (yᵢ/scaleᵢ)² over the six components.
-    #[inline(always)]
-    fn scaled_norm2(self, scale: Y6) -> f64 {
-        // A zero weight (atol = 0 and a component exactly 0) counts a zero as 0 and anything else as ∞.
-        let q = |d: f64, s: f64| {
-            if s > 0.0 {
-                d / s
-            } else if d == 0.0 {
-                0.0
-            } else {
-                f64::INFINITY
-            }
-        };
-        let (a, b) = (self.x, self.v);
-        let (sa, sb) = (scale.x, scale.v);
-        let c = [q(a.x, sa.x), q(a.y, sa.y), q(a.z, sa.z), q(b.x, sb.x), q(b.y, sb.y), q(b.z, sb.z)];
-        c.iter().map(|v| v * v).sum()
-    }
-}
-
-impl From<State> for Y6 {
-    #[inline(always)]
-    fn from(s: State) -> Self {
-        Y6 { x: s.x, v: s.v }
-    }
-}
-
-/// The right-hand side of T-2.4: (ẋ, v̇).
-#[inline(always)]
-fn rhs<M: Model>(model: &M, t: f64, y: Y6) -> Y6 {
-    Y6 { x: y.v, v: acceleration(model, t, y.x, y.v) }
-}
-
-/// Error weights atol + rtol·max(|a|, |b|), componentwise.
-#[inline(always)]
-fn error_scale(atol: f64, rtol: f64, a: Y6, b: Y6) -> Y6 {
-    let s = |p: DVec3, q: DVec3| DVec3::splat(atol) + p.abs().max(q.abs()) * rtol;
-    Y6 { x: s(a.x, b.x), v: s(a.v, b.v) }
-}
+pub use invariants::project_invariants;
+use system::{error_scale, rhs, Y6};
 
 /// DOP853 with its step-size controller and the data of its last accepted step.
 #[derive(Debug, Clone)]
@@ -367,144 +310,5 @@ impl Dop853 {
         self.y_new = y1;
         self.dense = None;
         Ok(())
-    }
-
-    /// The state at `t_out` ∈ [t₀, t₁] \[s\] of the last accepted step, from the order-7 interpolant
-    /// (projected onto TS² when projection is on). Costs three evaluations on the first call per step.
-    /// Inlined like [`Dop853::step`] ([`crate::Stepper::dense_output`] dispatches it).
-    #[inline(always)]
-    pub fn dense_output<M: Model>(&mut self, model: &M, t_out: f64) -> State {
-        let h = self.h_old;
-        // The ends exactly, not up to the interpolant's round-off.
-        if t_out == self.t_old + h {
-            return State { x: self.y_new.x, v: self.y_new.v };
-        } else if t_out == self.t_old {
-            return State { x: self.y_old.x, v: self.y_old.v };
-        }
-        let dense = match self.dense {
-            Some(d) => d,
-            None => {
-                let d = self.interpolant(model);
-                self.dense = Some(d);
-                d
-            }
-        };
-        let th = if h > 0.0 { (t_out - self.t_old) / h } else { 0.0 };
-        let th1 = 1.0 - th;
-        let mut acc = dense[6];
-        for (i, f) in dense[..6].iter().enumerate().rev() {
-            acc = f.axpy(if i % 2 == 0 { th1 } else { th }, acc);
-        }
-        let y = self.y_old.axpy(th, acc);
-        if self.project {
-            if let Some(p) = project_onto_tangent_bundle(self.length, y.x, y.v) {
-                return p;
-            }
-        }
-        State { x: y.x, v: y.v }
-    }
-
-    /// Extra stages 13‥15 and the coefficients F₀‥F₆ (Hairer's `contd8`).
-    #[inline(always)]
-    fn interpolant<M: Model>(&mut self, model: &M) -> [Y6; 7] {
-        let (h, t0, y0) = (self.h_old, self.t_old, self.y_old);
-        for i in STAGES + 1..STAGES_DENSE {
-            let mut yi = y0;
-            for (j, &a) in A[i].iter().enumerate() {
-                if a != 0.0 {
-                    yi = yi.axpy(h * a, self.k[j]);
-                }
-            }
-            self.k[i] = rhs(model, t0 + C[i] * h, yi);
-        }
-        let dy = self.y_new.sub(y0);
-        let (f0, f1) = (self.k[0], self.k[STAGES]);
-        let mut out = [Y6::default(); 7];
-        out[0] = dy;
-        out[1] = f0.scale(h).sub(dy);
-        out[2] = dy.scale(2.0).sub(f0.axpy(1.0, f1).scale(h));
-        for (r, drow) in D.iter().enumerate() {
-            let mut acc = Y6::default();
-            for (j, &d) in drow.iter().enumerate() {
-                if d != 0.0 {
-                    acc = acc.axpy(d, self.k[j]);
-                }
-            }
-            out[3 + r] = acc.scale(h);
-        }
-        out
-    }
-}
-
-/// Moves a tangent velocity v at x (along v and e₃ × x, both tangent) so that ½|v|² = `kinetic`
-/// [J/kg] and (x × v)·e₃ = `j3` [m²/s] (each only when given), by two Gauss–Newton steps of the
-/// minimal-norm correction. Where v ∥ e₃ × x (the turning points of z) the two conditions are
-/// dependent and only J₃ is imposed there.
-#[inline(always)]
-pub fn project_invariants(x: DVec3, v: DVec3, kinetic: Option<f64>, j3: Option<f64>) -> DVec3 {
-    let w = DVec3::new(-x.y, x.x, 0.0);
-    let mut v = v;
-    for _ in 0..2 {
-        let r1 = kinetic.map(|k| k - 0.5 * v.length_squared());
-        let r2 = j3.map(|j| j - w.dot(v));
-        let (vv, vw, ww) = (v.length_squared(), v.dot(w), w.length_squared());
-        let dv = match (r1, r2) {
-            (Some(r1), Some(r2)) => {
-                let det = vv * ww - vw * vw;
-                if det > 1e-8 * vv * ww {
-                    let a = (r1 * ww - r2 * vw) / det;
-                    let b = (r2 * vv - r1 * vw) / det;
-                    v * a + w * b
-                } else if ww > 0.0 {
-                    w * (r2 / ww)
-                } else {
-                    DVec3::ZERO
-                }
-            }
-            (Some(r1), None) if vv > 0.0 => v * (r1 / vv),
-            (None, Some(r2)) if ww > 0.0 => w * (r2 / ww),
-            _ => DVec3::ZERO,
-        };
-        v += dv;
-    }
-    v
-}
-
-#[cfg(test)]
-mod tests {
-    //! The tableau against the order conditions it must satisfy, so a transcription error fails.
-    use super::*;
-
-    #[test]
-    fn rows_sum_to_the_nodes() {
-        for i in (1..STAGES).chain(STAGES + 1..STAGES_DENSE) {
-            let sum: f64 = A[i].iter().sum();
-            assert!((sum - C[i]).abs() < 1e-14, "row {i}: {sum} vs c = {}", C[i]);
-        }
-    }
-
-    #[test]
-    fn weights_satisfy_the_quadrature_conditions_to_order_8() {
-        for q in 0..8 {
-            let s: f64 = B.iter().zip(C).map(|(b, c)| b * c.powi(q)).sum();
-            assert!((s - 1.0 / f64::from(q + 1)).abs() < 1e-13, "sum b c^{q} = {s}");
-        }
-        // A condition beyond the bushy trees: sum b_i a_ij c_j^6 = 1/56.
-        let s: f64 =
-            (0..STAGES).map(|i| B[i] * A[i].iter().zip(C).map(|(a, c)| a * c.powi(6)).sum::<f64>()).sum();
-        assert!((s - 1.0 / 56.0).abs() < 1e-13, "{s}");
-    }
-
-    #[test]
-    fn error_estimators_vanish_on_low_degree_quadrature() {
-        // e5 is the difference of two formulas of order >= 5: it integrates c^q exactly (gives 0) for q < 5.
-        for q in 0..5 {
-            let s: f64 = E5.iter().zip(C).map(|(e, c)| e * c.powi(q)).sum();
-            assert!(s.abs() < 1e-12, "sum e5 c^{q} = {s}");
-        }
-        for q in 0..3 {
-            let s: f64 = E3.iter().zip(C).map(|(e, c)| e * c.powi(q)).sum();
-            assert!(s.abs() < 1e-12, "sum e3 c^{q} = {s}");
-        }
     }
 }
