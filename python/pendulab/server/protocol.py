@@ -289,8 +289,31 @@ class LoadScenario(_Command):
     name: str = Field(min_length=1, max_length=100)
 
 
+class Crane(_Command):
+    """The crane mode (docs/cranes.md "The lab's crane mode"; the core checks the values): ``on``
+    switches to it, ``drive`` the trolley's commanded velocity (x, y) [m/s], ``move`` by (x, y) [m] and
+    stop, ``stop`` (drive 0), ``rope`` hoist to this rope length [m]."""
+
+    type: Literal["crane"]
+    on: bool | None = None
+    drive: list[float] | None = Field(None, min_length=2, max_length=2)
+    move: list[float] | None = Field(None, min_length=2, max_length=2)
+    stop: bool | None = None
+    rope: float | None = None
+
+
 Command = (
-    SetParams | SetModel | SetState | SetMethod | SetTimeScale | Pause | Resume | Step | Reset | LoadScenario
+    SetParams
+    | SetModel
+    | SetState
+    | SetMethod
+    | SetTimeScale
+    | Pause
+    | Resume
+    | Step
+    | Reset
+    | LoadScenario
+    | Crane
 )
 COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])
 COMMAND_TYPES: tuple[str, ...] = LiveSession.command_types()

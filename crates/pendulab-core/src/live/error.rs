@@ -113,6 +113,12 @@ impl LiveError {
             slicer: Slicer::new(),
             scale: 1.0,
         };
+        if p.model == super::crane::CRANE {
+            e.note = Some(
+                "no estimate: the crane mode runs the crane's DOP853 at the session's rtol, atol".into(),
+            );
+            return e;
+        }
         if exact && p.model == "ideal" {
             if let Ok(sol) = ExactSolution::new(&p.params, &start) {
                 e.exact = Some(sol);

@@ -68,6 +68,14 @@ impl Record {
         r
     }
 
+    /// The same record with the pivot's position \[m\] and the power \[W\] of the non-conservative forces
+    /// (the lab's crane: the trolley and the hoist).
+    pub fn with_pivot_power(mut self, pivot: DVec3, power: f64) -> Self {
+        self.put(PIVOT, pivot);
+        self.0[POWER] = power;
+        self
+    }
+
     /// Time \[s\].
     pub fn t(&self) -> f64 {
         self.0[T]

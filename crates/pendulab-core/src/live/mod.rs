@@ -11,14 +11,22 @@
 //! - [`pendulum`]: [`pendulum::LivePendulum`] (a lab model by registry name) and [`pendulum::LiveStepper`].
 //! - [`error`]: [`error::LiveError`], the `error_x` column.
 //! - [`session`]: [`session::LiveSession`]: commands, pacing, ticks.
+//! - [`crane_plan`], [`crane`]: the crane mode (the trolley's shaped, acceleration-limited command, the
+//!   hoist, wind; [`crane::LiveCrane`] steps the core's crane integrator).
 //! - [`wire`]: JSON commands, scenarios and notices (the page's and the server's wire format).
 
 pub mod budget;
+pub mod crane;
+pub mod crane_plan;
+pub mod crane_wire;
 pub mod error;
 pub mod frame;
 pub mod pendulum;
 pub mod session;
 pub mod wire;
+
+#[cfg(test)]
+mod crane_tests;
 
 pub use budget::{Budget, Clock, Slicer, TICK_BUDGET};
 pub use frame::{Record, FRAME_FIELDS, RECORD_LEN, UNKNOWN};

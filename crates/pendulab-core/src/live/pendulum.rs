@@ -3,6 +3,7 @@
 //! swinging spring (T-7.4) through [`SpringStepper`], the string through [`StringStepper`] — with the
 //! frame record of its current state ([`super::frame`]). SI units: l \[m\], m \[kg\], g [m/s²], t \[s\].
 
+use super::crane::{LiveCrane, CRANE, CRANE_PARAMS};
 use super::frame::{rod_record, Record};
 use crate::elastic::{SpringStepper, SwingingSpring};
 use crate::error::{Error, Result};
@@ -29,6 +30,7 @@ pub fn methods_for(model: &str) -> Option<Vec<&'static str>> {
     match model {
         "spring" => Some(SPRING_ORDERS.iter().map(|(m, _)| *m).collect()),
         "string" => Some(STRING_METHODS.to_vec()),
+        CRANE => Some(vec!["dop853"]),
         _ => None,
     }
 }
@@ -58,6 +60,9 @@ impl LivePendulum {
     /// Model `name` with l \[m\], m \[kg\], g [m/s²] and own parameters by name (defaults for the rest);
     /// errors name an unknown model, an unknown parameter or a value outside the registry's limits.
     pub fn new(name: &str, length: f64, mass: f64, g: f64, given: &[(String, f64)]) -> Result<Self> {
+        if name == CRANE {
+            return Self::crane(length, mass, g, given);
+        }
         let ms = spec(name)?;
         if !live_models().contains(&ms.name) {
             return Err(Error::Refused(format!(
@@ -88,8 +93,28 @@ impl LivePendulum {
         Ok(p)
     }
 
+    /// The lab crane's load (the crane mode, [`super::crane`]): rope l \[m\], m \[kg\], g [m/s²] and
+    /// the crane's own parameters ([`CRANE_PARAMS`]).
+    fn crane(length: f64, mass: f64, g: f64, given: &[(String, f64)]) -> Result<Self> {
+        let mut own: Vec<(&'static str, f64)> = CRANE_PARAMS.iter().map(|p| (p.name, p.default)).collect();
+        for (key, value) in given {
+            let Some(i) = CRANE_PARAMS.iter().position(|p| p.name == key) else {
+                let names: Vec<&str> = CRANE_PARAMS.iter().map(|p| p.name).collect();
+                return Err(Error::Refused(format!(
+                    "the crane has no parameter '{key}'; its parameters: {}",
+                    names.join(", ")
+                )));
+            };
+            own[i].1 = check_limits(&CRANE_PARAMS[i], *value)?;
+        }
+        let p = Self { model: CRANE, params: Params::new(length, mass, g)?, own };
+        p.check()?;
+        Ok(p)
+    }
+
     fn check(&self) -> Result<()> {
         match self.model {
+            CRANE => super::crane::check(&self.params),
             "spring" => self.spring().map(|_| ()),
             "string" => StringPendulum::new(self.params, self.get("restitution")).map(|_| ()),
             _ => self.rod_model().map(|_| ()),
@@ -185,6 +210,8 @@ pub enum LiveStepper {
     Spring(SpringStepper),
     /// The string: the grid t₀ + k·dt, its taut/slack mode inside.
     String(Box<StringStepper>),
+    /// The crane mode's load below the driven trolley ([`super::crane`]).
+    Crane(Box<LiveCrane>),
 }
 
 impl LiveStepper {
@@ -215,6 +242,7 @@ impl LiveStepper {
             }
         }
         Ok(match p.model {
+            CRANE => LiveStepper::Crane(Box::new(LiveCrane::new(p.params, &p.own, state, t0, rtol, atol)?)),
             "spring" => {
                 let order = SPRING_ORDERS.iter().find(|(m, _)| *m == name).map_or(2, |(_, o)| *o);
                 LiveStepper::Spring(SpringStepper::new(p.spring()?, state, t0, dt, order)?)
@@ -236,6 +264,7 @@ impl LiveStepper {
             LiveStepper::Rod(s) => s.t(),
             LiveStepper::Spring(s) => s.t(),
             LiveStepper::String(s) => s.t(),
+            LiveStepper::Crane(c) => c.t(),
         }
     }
 
@@ -245,6 +274,7 @@ impl LiveStepper {
             LiveStepper::Rod(s) => s.state(),
             LiveStepper::Spring(s) => s.state(),
             LiveStepper::String(s) => s.state(),
+            LiveStepper::Crane(c) => c.state(),
         }
     }
 
@@ -254,6 +284,7 @@ impl LiveStepper {
             LiveStepper::Rod(s) => s.step_n(n),
             LiveStepper::Spring(s) => s.step(n),
             LiveStepper::String(s) => s.step(n),
+            LiveStepper::Crane(c) => c.step_to(c.t() + n as f64 * super::crane::STEP_SECONDS),
         }
     }
 
@@ -261,6 +292,7 @@ impl LiveStepper {
     pub fn step_to_capped(&mut self, t: f64, cap: u64) -> Result<bool> {
         match self {
             LiveStepper::Rod(s) => s.step_to_capped(t, cap),
+            LiveStepper::Crane(c) => c.step_to(t).map(|()| true),
             _ => unreachable!("only the rod models run the adaptive method"),
         }
     }
@@ -289,6 +321,7 @@ impl LiveStepper {
                     true,
                 )
             }
+            LiveStepper::Crane(c) => c.record(),
             LiveStepper::String(s) => {
                 let (m, st) = (s.model(), s.state());
                 let (e, j) = (model_mod::energy(m, &st), model_mod::j3(m, &st));

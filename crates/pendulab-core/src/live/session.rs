@@ -9,6 +9,7 @@
 //! records spread over its simulated interval. Units: SI (s, m, m/s, kg, m/s²).
 
 use super::budget::{Budget, Clock, Slicer, TICK_BUDGET};
+use super::crane::{CraneCommand, CRANE};
 use super::error::{LiveError, Reference};
 use super::frame::{Record, FRAME_FIELDS};
 use super::pendulum::{methods_for, LivePendulum, LiveStepper, DEFAULT_METHOD};
@@ -109,6 +110,8 @@ pub enum Command {
     Reset,
     /// A scenario.
     Load(Box<Setup>),
+    /// The crane mode: switch to it, drive or move the trolley, hoist ([`super::crane`]).
+    Crane(CraneCommand),
 }
 
 impl Command {
@@ -125,6 +128,7 @@ impl Command {
             Command::Step(_) => "step",
             Command::Reset => "reset",
             Command::Load(_) => "load_scenario",
+            Command::Crane(_) => "crane",
         }
     }
 }
@@ -293,6 +297,10 @@ impl LiveSession {
             },
             "commands": self.commands,
             "frame_fields": FRAME_FIELDS,
+            "crane": match &self.stepper {
+                LiveStepper::Crane(c) => c.status(),
+                _ => Value::Null,
+            },
         })
     }
 
@@ -359,6 +367,11 @@ impl LiveSession {
         match cmd {
             Command::SetParams { length, mass, g, params } => {
                 let new = self.pendulum.rebuild(None, length, mass, g, &params)?;
+                if let LiveStepper::Crane(c) = &mut self.stepper {
+                    c.update(new.params, &new.own)?; // in place: a new length hoists, the rest applies at once
+                    self.pendulum = new;
+                    return Ok(None);
+                }
                 let (s, k) = (self.stepper.state(), new.params.length / self.pendulum.params.length);
                 let state = new.state(s.x * k, s.v * k, true)?;
                 self.new_stepper(state, self.stepper.t(), Some(new))?;
@@ -369,7 +382,8 @@ impl LiveSession {
                 let old = self.method;
                 if let Some(allowed) = methods_for(new.model) {
                     if !allowed.contains(&self.method.info().name) {
-                        self.method = DEFAULT_METHOD; // the spring and the string run the RATTLE family
+                        // the spring and the string run the RATTLE family, the crane its DOP853
+                        self.method = Method::from_name(allowed[0]).unwrap_or(DEFAULT_METHOD);
                     }
                 }
                 if let Err(e) = self.new_stepper(state, self.stepper.t(), Some(new)) {
@@ -425,9 +439,30 @@ impl LiveSession {
             }
             Command::Reset => self.new_stepper(self.start_state(), self.t0, None)?,
             Command::Load(setup) => self.load(*setup)?,
+            Command::Crane(c) => return self.crane(c),
         }
         self.epoch += 1;
         Ok(Some(self.record()))
+    }
+
+    /// The crane mode's command: `on` switches to the crane (a discontinuity: the current record is
+    /// returned), the motions go to the crane; refused outside the crane mode without `on`.
+    fn crane(&mut self, c: CraneCommand) -> Result<Option<Record>> {
+        let mut switched = None;
+        if c.on && self.pendulum.model != CRANE {
+            self.apply_inner(Command::SetModel { model: CRANE.into(), params: Vec::new() })?;
+            switched = Some(self.record());
+        }
+        let LiveStepper::Crane(crane) = &mut self.stepper else {
+            return Err(Error::Refused(
+                "not in the crane mode: send {\"type\": \"crane\", \"on\": true} first".into(),
+            ));
+        };
+        crane.apply(&c)?;
+        if let Some(rope) = c.rope {
+            self.pendulum.params.length = rope;
+        }
+        Ok(switched)
     }
 
     /// Takes the waiting steps of `step` commands within `budget`; the record reached (None when none

@@ -15,7 +15,7 @@ use serde_json::{json, Map, Value};
 /// Longest command message read (a command is a few hundred bytes).
 pub const MAX_MESSAGE_BYTES: usize = 4096;
 /// The command types, in the server's order.
-pub const COMMAND_TYPES: [&str; 10] = [
+pub const COMMAND_TYPES: [&str; 11] = [
     "set_params",
     "set_model",
     "set_state",
@@ -26,6 +26,7 @@ pub const COMMAND_TYPES: [&str; 10] = [
     "step",
     "reset",
     "load_scenario",
+    "crane",
 ];
 /// The lab's limits, the one table of them (the server's pydantic models take their bounds from it):
 /// name, min, max, unit.
@@ -138,6 +139,7 @@ pub fn parse_command(
         "set_time_scale" => &["time_scale"],
         "step" => &["n"],
         "load_scenario" => &["name"],
+        "crane" => &super::crane_wire::KEYS,
         _ => &[],
     };
     let mut problems: Vec<String> = o
@@ -258,6 +260,7 @@ pub fn parse_command(
                 Command::Pause
             }
         },
+        "crane" => Command::Crane(super::crane_wire::parse(&o, &mut problems)),
         "pause" => Command::Pause,
         "resume" => Command::Resume,
         _ => Command::Reset,
