@@ -15,7 +15,7 @@ STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
-	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm test-tour-wheel
+	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm bench-lab-html test-tour-wheel
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -117,14 +117,31 @@ test-rust:
 	cargo test --release -p pendulab-core
 
 # The lab's engine as WebAssembly (crates/pendulab-wasm, plain C ABI; docs/lab.md): needs the target,
-# `rustup target add wasm32-unknown-unknown` (.ci/run installs it).
-WASM := target/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm
+# `rustup target add wasm32-unknown-unknown` (.ci/run installs it). Two builds of the same code: with
+# SIMD128 (every browser since Chrome 91, Firefox 89, Safari 16.4; the page takes it when
+# WebAssembly.validate accepts a SIMD instruction) and without (the fallback), each in its own target
+# directory, then `wasm-opt -O3` (Debian's binaryen; without it the builds are kept unoptimised, with a
+# warning; run again only when cargo wrote a newer build). Both compute the native build's numbers bit
+# for bit (make test-wasm; docs/performance.md).
+WASM := target/wasm/pendulab-wasm.wasm
+WASM_SIMD := target/wasm/pendulab-wasm-simd128.wasm
+WASM_OPT ?= $(shell command -v wasm-opt)
 wasm:
 	@rustc --print target-libdir --target wasm32-unknown-unknown >/dev/null 2>&1 && \
 		test -d "$$(rustc --print target-libdir --target wasm32-unknown-unknown)" || { \
 		echo "error: the Rust target wasm32-unknown-unknown is not installed: run 'rustup target add wasm32-unknown-unknown'" >&2; exit 1; }
 	cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm
-	@ls -l $(WASM)
+	CARGO_TARGET_DIR=$(CURDIR)/target/wasm-simd128 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+simd128" \
+		cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm
+	@mkdir -p target/wasm
+	@set -e; for pair in target/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm:$(WASM) \
+		target/wasm-simd128/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm:$(WASM_SIMD); do \
+		src=$${pair%%:*}; dst=$${pair#*:}; \
+		if [ "$$dst" -nt "$$src" ]; then continue; fi; \
+		if [ -n "$(WASM_OPT)" ]; then echo "wasm-opt -O3 $$src -> $$dst"; $(WASM_OPT) -O3 $$src -o $$dst.tmp; \
+		else echo "warning: wasm-opt not found (apt-get install binaryen): $$dst is not optimised (slower)" >&2; cp $$src $$dst.tmp; fi; \
+		mv $$dst.tmp $$dst; done
+	@ls -l $(WASM) $(WASM_SIMD)
 
 # The lab with nothing to install (docs/lab.md): one HTML file with the engine (.wasm, base64), its Web
 # Worker (a Blob URL), the schema and example scenarios (tools/lab_snapshot.py: the server's answers),
@@ -133,7 +150,7 @@ LAB_HTML := dist/pendulab-lab.html
 lab-html: build wasm web/node_modules/.package-lock.json
 	mkdir -p target dist
 	$(PY) tools/lab_snapshot.py target/lab-snapshot.json
-	cd web && PENDULAB_WASM=../$(WASM) PENDULAB_LAB_SNAPSHOT=../target/lab-snapshot.json LAB_OUT_DIR=../target/lab-html \
+	cd web && PENDULAB_WASM=../$(WASM) PENDULAB_WASM_SIMD=../$(WASM_SIMD) PENDULAB_LAB_SNAPSHOT=../target/lab-snapshot.json LAB_OUT_DIR=../target/lab-html \
 		node_modules/.bin/vite build -c vite.lab.config.mjs --logLevel warn
 	cp target/lab-html/index.html $(LAB_HTML).tmp && mv $(LAB_HTML).tmp $(LAB_HTML)
 	@size=$$(stat -c %s $(LAB_HTML)); echo "$(LAB_HTML): $$size bytes"; \
@@ -145,16 +162,24 @@ test-lab-html: lab-html
 	cd web && CHROMIUM=$${CHROMIUM:-$$(command -v chromium || command -v chromium-browser)} \
 		node tests/e2e/lab_file.mjs $(CURDIR)/$(LAB_HTML)
 
-# RATTLE steps/s of the engine in node beside the native build (docs/performance.md; say the load).
+# The one-file lab's first frame and frame rate with the error estimate on, in headless chromium from
+# file:// (bench/lab_frames.mjs; docs/performance.md; say the load). About a minute.
+bench-lab-html: lab-html
+	CHROMIUM=$${CHROMIUM:-$$(command -v chromium || command -v chromium-browser)} node bench/lab_frames.mjs $(LAB_HTML)
+
+# RATTLE steps/s of the engine in node beside the native build (docs/performance.md; say the load):
+# both .wasm builds and the native one in BENCH_WASM_ROUNDS interleaved rounds, timed by CPU time.
+BENCH_WASM_ROUNDS ?= 9
 bench-wasm: wasm
 	cargo build --release -p pendulab-wasm --example trajectory
-	node bench/wasm_steps.mjs $(WASM) target/release/examples/trajectory
+	node bench/wasm_steps.mjs target/release/examples/trajectory $(WASM_SIMD) $(WASM) --rounds $(BENCH_WASM_ROUNDS)
 
 # The engine's tests: natively (cargo test), then the .wasm in node against the native build's
 # trajectories of every lab model and method (bit for bit, or 1e-12 l where libm differs).
 test-wasm: wasm
 	cargo test --release -p pendulab-wasm
 	cargo build --release -p pendulab-wasm --example trajectory
+	node crates/pendulab-wasm/tests/parity.mjs $(WASM_SIMD) target/release/examples/trajectory
 	node crates/pendulab-wasm/tests/parity.mjs $(WASM) target/release/examples/trajectory
 
 # PYTEST_ARGS: `make test` leaves out the tour's runs in .venv (test-tour-wheel runs them as a user would).

@@ -3,6 +3,8 @@
 //! float64 records and JSON notices — packed into one buffer for the Web Worker to unpack
 //! ([`pack`]: per message a kind byte, 0 frames or 1 JSON text, its length as u32 little-endian, the
 //! bytes). Time is passed in: the seconds elapsed since the last tick and a clock for the budget.
+//! A refused command's notice carries the server's message key and values where the server would give
+//! them ([`crate::refusal`]), so the page says it in its own language.
 
 use crate::wire::{error_notice, event_notice, keyed_notice, parse_command, setup_from};
 use pendulab_core::live::session::Setup;
@@ -58,14 +60,41 @@ impl Engine {
     /// clock since then, `budget` \[s\] the stepping time allowed; the messages to send, packed.
     pub fn tick(&mut self, messages: &[String], elapsed: f64, clock: &dyn Clock, budget: f64) -> Vec<u8> {
         let setups = &self.setups;
-        let commands = messages.iter().map(|m| parse_command(m, &|n| Self::resolve(setups, n))).collect();
+        let commands: Vec<_> =
+            messages.iter().map(|m| parse_command(m, &|n| Self::resolve(setups, n))).collect();
+        // the refusals' words and keys, in the order the session reports them
+        let keys: Vec<Keyed> = messages
+            .iter()
+            .zip(&commands)
+            .filter_map(|(text, c)| {
+                c.as_ref().err().map(|(words, _)| (words.clone(), refusal_key(text, words)))
+            })
+            .collect();
         let out = self.session.tick(commands, elapsed, clock, budget, 0);
-        pack(&out)
+        pack_keyed(&out, keys)
     }
+}
+
+/// A refusal's words and its message key and values (`None`: not keyed).
+type Keyed = (String, Option<(&'static str, Value)>);
+
+/// The message key of refused command `text` refused with `words` (one problem: no "; " in them).
+fn refusal_key(text: &str, words: &str) -> Option<(&'static str, Value)> {
+    if words.contains("; ") {
+        return None;
+    }
+    crate::refusal::key_of(text)
 }
 
 /// The messages `out` as one buffer (the module doc).
 pub fn pack(out: &[Out]) -> Vec<u8> {
+    pack_keyed(out, Vec::new())
+}
+
+/// [`pack`], with the tick's refusals and their keys: `out` has them as [`Out::Error`]s with the same
+/// words, in the commands' order, among the errors of the commands carried out.
+fn pack_keyed(out: &[Out], keys: Vec<Keyed>) -> Vec<u8> {
+    let mut keys = keys.into_iter().peekable();
     let mut buf = Vec::new();
     let mut put = |kind: u8, bytes: &[u8]| {
         buf.push(kind);
@@ -80,7 +109,12 @@ pub fn pack(out: &[Out]) -> Vec<u8> {
             }
             Out::Status(v) => put(KIND_JSON, v.to_string().as_bytes()),
             Out::Error(message, command) => {
-                put(KIND_JSON, error_notice(message, *command).to_string().as_bytes())
+                let key = keys.next_if(|(words, _)| words == message).and_then(|(_, k)| k);
+                let notice = match key {
+                    Some((key, values)) => keyed_notice(message, *command, key, &values),
+                    None => error_notice(message, *command),
+                };
+                put(KIND_JSON, notice.to_string().as_bytes())
             }
             Out::Keyed(message, command, key, values) => {
                 put(KIND_JSON, keyed_notice(message, *command, key, values).to_string().as_bytes())

@@ -11,6 +11,7 @@
 
 pub mod analyses;
 pub mod engine;
+pub mod refusal;
 pub mod run;
 /// The wire format, shared with the server (`pendulab_core::live::wire`).
 pub use pendulab_core::live::wire;

@@ -188,3 +188,92 @@ fn the_reduced_orbit_keeps_the_casimir_and_the_energy_plane() {
     // the orbit spans one z-period: σ₁ comes back to where it started
     assert!((s1[0] - s1[s1.len() - 1]).abs() < 1e-9);
 }
+
+/// The refusals carry the server's message keys and values (python/pendulab/server/messages.json; the
+/// server's pydantic check keys exactly one problem of these kinds), so the page translates them; two
+/// problems, or one of another kind, carry none (the page shows the English words), as on the server.
+#[test]
+fn refusals_carry_the_servers_message_keys() {
+    let messages_json: Value =
+        serde_json::from_str(include_str!("../../../python/pendulab/server/messages.json")).unwrap();
+    let mut e = Engine::new(CONFIG).unwrap();
+    let cases: [(&str, Option<(&str, Value)>); 15] = [
+        (
+            r#"{"type": "set_params", "length": 5000}"#,
+            Some(("too_large", serde_json::json!({"name": "length", "value": "5000", "limit": 1000.0}))),
+        ),
+        (
+            r#"{"type": "set_params", "length": 5000.0}"#,
+            Some(("too_large", serde_json::json!({"name": "length", "value": "5000.0", "limit": 1000.0}))),
+        ),
+        (
+            r#"{"type": "set_params", "mass": 0}"#,
+            Some(("too_small", serde_json::json!({"name": "mass", "value": "0", "limit": 0.001}))),
+        ),
+        (
+            r#"{"type": "set_params", "g": -1e4, "length": 1}"#,
+            Some(("too_small", serde_json::json!({"name": "g", "value": "-10000.0", "limit": -1000.0}))),
+        ),
+        (r#"{"type": "pause", "extra": 1}"#, Some(("unknown_key", serde_json::json!({"name": "extra"})))),
+        (
+            r#"{"type": "set_method", "dt": 1}"#,
+            Some(("too_large", serde_json::json!({"name": "dt", "value": "1", "limit": 0.1}))),
+        ),
+        (r#"{"type": "set_time_scale"}"#, Some(("missing", serde_json::json!({"name": "time_scale"})))),
+        (
+            r#"{"type": "set_time_scale", "time_scale": 1e6}"#,
+            Some((
+                "too_large",
+                serde_json::json!({"name": "time_scale", "value": "1000000.0", "limit": 1000.0}),
+            )),
+        ),
+        (
+            r#"{"type": "step", "n": 0}"#,
+            Some(("too_small", serde_json::json!({"name": "n", "value": "0", "limit": 1}))),
+        ),
+        (
+            r#"{"type": "step", "n": 200000}"#,
+            Some(("too_large", serde_json::json!({"name": "n", "value": "200000", "limit": 100000}))),
+        ),
+        (r#"{"type": "load_scenario"}"#, Some(("missing", serde_json::json!({"name": "name"})))),
+        // two problems, or a problem the server does not key: no key
+        (r#"{"type": "set_params", "length": 5000, "mass": 0}"#, None),
+        (r#"{"type": "set_params", "length": "a"}"#, None),
+        (r#"{"type": "set_method", "method": "euler"}"#, None),
+        (r#"{"type": "step", "n": 2.5}"#, None),
+    ];
+    let sent: Vec<String> = cases.iter().map(|(c, _)| c.to_string()).collect();
+    let (notices, _) = messages(&e.tick(&sent, 0.0, &clock, 1.0));
+    let errors: Vec<&Value> = notices.iter().filter(|n| n["type"] == "error").collect();
+    assert_eq!(errors.len(), cases.len(), "{errors:?}");
+    for ((text, want), got) in cases.iter().zip(errors) {
+        match want {
+            Some((key, values)) => {
+                assert_eq!(got["key"], *key, "{text}: {got}");
+                assert_eq!(got["values"], *values, "{text}: {got}");
+                assert!(messages_json[key].is_string(), "{key} is not in messages.json");
+                assert!(got["message"].is_string() && got["command"].is_string(), "{got}");
+            }
+            None => assert!(got.get("key").is_none(), "{text}: {got}"),
+        }
+    }
+}
+
+/// A command that is carried out but fails (an error of the core, unkeyed) between two refusals leaves
+/// each refusal its own key.
+#[test]
+fn a_failing_command_between_refusals_keeps_their_keys_apart() {
+    let mut e = Engine::new(CONFIG).unwrap();
+    let sent = [
+        r#"{"type": "step", "n": 0}"#,
+        r#"{"type": "set_model", "model": "damped", "params": {"damping": -1}}"#,
+        r#"{"type": "pause", "extra": 1}"#,
+    ]
+    .map(String::from);
+    let (notices, _) = messages(&e.tick(&sent, 0.0, &clock, 1.0));
+    let errors: Vec<&Value> = notices.iter().filter(|n| n["type"] == "error").collect();
+    assert_eq!(errors.len(), 3, "{errors:?}");
+    assert_eq!(errors[0]["key"], "too_small");
+    assert!(errors[1].get("key").is_none() && errors[1]["message"].as_str().unwrap().contains("damping"));
+    assert_eq!(errors[2]["key"], "unknown_key");
+}

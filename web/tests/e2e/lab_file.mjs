@@ -3,7 +3,7 @@
 // DNS mapped to nothing). Checks: the physics runs in the page (window.pendulab.engine() is "wasm"), the
 // first frame arrives (time printed), frames move paced by the wall clock, the true error against the exact
 // solution travels in them, commands work through the same protocol (the model picker's damped model with
-// its damping, a scenario loaded, a refused command explained), the page's URL reproduces the run in a
+// its damping, a scenario loaded, a refused command explained, and in German and French), the page's URL reproduces the run in a
 // second page, what needs Python says so, no request left the machine, no console errors.
 // Usage: node tests/e2e/lab_file.mjs /abs/path/pendulab-lab.html
 import { mkdirSync, mkdtempSync } from 'node:fs';
@@ -137,6 +137,22 @@ try {
   const s2 = await status(second);
   check(s2.params.g === 3.71 && s2.scenario === other, `the link reproduces the run: l = ${s2.params.length} m, g = ${s2.params.g} m/s², ${s2.scenario}`);
   await second.close();
+
+  // the engine's refusals carry the server's message keys, so a German or French page says them in its
+  // language (python/pendulab/server/messages.json, the tables' server.<key>)
+  for (const [lang, words] of [['de', /length = 5000: höchstens 1000 erlaubt/], ['fr', /length = 5000 : au plus 1000/]]) {
+    const p = await context.newPage();
+    watch(p);
+    await p.goto(`${file}?lang=${lang}`, { timeout: WAIT });
+    await p.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 0, null, { timeout: WAIT, polling: 20 });
+    await p.evaluate(() => window.pendulab.send({ type: 'set_params', length: 5000 }));
+    const text = await p.waitForFunction((re) => {
+      const t = document.getElementById('message')?.textContent ?? '';
+      return new RegExp(re).test(t) ? t : null;
+    }, words.source, { timeout: WAIT, polling: 20 });
+    check(true, `a refusal in the page's language (${lang}): ${await text.jsonValue()}`);
+    await p.close();
+  }
 
   check(refused.length === 0, `no network request (${refused.length} refused${refused.length ? ': ' + refused.slice(0, 3).join(', ') : ''})`);
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.slice(0, 3).join(' | ') : ''}`);

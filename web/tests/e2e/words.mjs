@@ -29,7 +29,7 @@ async function pageTexts(page, lang, WAIT) {
   return { p, texts };
 }
 
-export async function checkWords(page, { check, skip, transport, WAIT }) {
+export async function checkWords(page, { check, WAIT }) {
   const en = await pageTexts(page, 'en', WAIT);
   await en.p.close();
   const english = new Set(en.texts);
@@ -37,15 +37,8 @@ export async function checkWords(page, { check, skip, transport, WAIT }) {
     const { p, texts } = await pageTexts(page, lang, WAIT);
     const left = texts.filter((s) => english.has(s) && !SAME[lang].includes(s));
     check(left.length === 0 && texts.length > 200, `${lang}: none of the page's ${texts.length} texts is left in English${left.length ? ': ' + left.slice(0, 8).map((s) => JSON.stringify(s.slice(0, 60))).join(', ') : ''}`);
-    if (lang === 'de' && transport === 'file') {
-      // the in-page engine refuses it too, but its notices carry no message key (the keys and their
-      // German and French texts are the Python server's, python/pendulab/server/messages.json)
-      await p.evaluate(() => window.pendulab.send({ type: 'set_params', length: -1 }));
-      await p.waitForFunction(() => /length = -1/.test(document.getElementById('message').textContent), null, { timeout: WAIT });
-      const said = await p.evaluate(() => document.getElementById('message').textContent);
-      check(true, `a refused value is explained by the in-page engine: "${said}"`);
-      skip('a refused value in German', 'the in-page engine\'s refusals carry no message key yet (messages.json is the Python server\'s), so they stay in English');
-    } else if (lang === 'de') {
+    if (lang === 'de') {
+      // both engines key the refusal (the in-page one as the server: crates/pendulab-wasm/src/refusal.rs)
       await p.evaluate(() => window.pendulab.send({ type: 'set_params', length: -1 }));
       await p.waitForFunction(() => /mindestens/.test(document.getElementById('message').textContent), null, { timeout: WAIT });
       const said = await p.evaluate(() => document.getElementById('message').textContent);

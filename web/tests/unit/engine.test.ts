@@ -3,6 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import { KIND_FRAMES, KIND_JSON, unpack } from '../../src/engine/wasm';
 import { answer, needsServer } from '../../src/engine/api';
+import { chooseWasm, hasSimd128 } from '../../src/engine/index';
 import { decodeFrames, encodeFrames, parseNotice, RECORD_BYTES } from '../../src/protocol';
 import type { Frame } from '../../src/protocol';
 
@@ -66,5 +67,18 @@ describe('answer', () => {
   it('leaves other requests to the network', () => {
     expect(answer('https://example.org/api/schema', lab)).toBeNull();
     expect(answer('style.css', lab)).toBeNull();
+  });
+});
+
+describe('chooseWasm', () => {
+  const lab = { wasm: 'BASE', wasmSimd: 'SIMD', schema: {}, scenarios: [], scenario: null };
+  it('takes the SIMD128 build where the browser has SIMD128, the baseline build elsewhere', () => {
+    expect(chooseWasm(lab, true)).toEqual({ build: 'simd128', base64: 'SIMD' });
+    expect(chooseWasm(lab, false)).toEqual({ build: 'baseline', base64: 'BASE' });
+    const { wasmSimd: _, ...older } = lab; // a file built before the SIMD128 build
+    expect(chooseWasm(older, true)).toEqual({ build: 'baseline', base64: 'BASE' });
+  });
+  it('detects SIMD128 with a module that is valid exactly when SIMD128 is there (node 20 has it)', () => {
+    expect(hasSimd128()).toBe(true);
   });
 });
