@@ -20,12 +20,22 @@ export interface FitRequest {
   fit?: string[];
 }
 
-/** One fitted parameter: value and standard error (null: the data do not determine it) in `unit`. */
+/** A line of the fit's answer as a message key with values (python/pendulab/server/fit_words.py; the page
+ *  words it: i18n/fitwords.ts), with the server's English `text` where it has one. */
+export interface KeyedLine {
+  key: string | null;
+  values: Record<string, string>;
+  text?: string;
+}
+
+/** One fitted parameter: value and standard error (null: the data do not determine it) in `unit`; `reason`
+ *  why it is not determined (keyed). */
 export interface FittedParam {
   value: number;
   stderr: number | null;
   unit: string;
   determined: boolean;
+  reason?: KeyedLine;
 }
 
 /** The fitted scenario as GET /api/scenarios describes one. */
@@ -50,6 +60,10 @@ export interface MeasuredPath {
 export interface FitAnswer {
   report: string;
   warnings: string[];
+  /** The warnings keyed (one per warning, in order). */
+  notes: KeyedLine[];
+  /** The report's lines keyed (the parameters are `params`). */
+  items: KeyedLine[];
   params: Record<string, FittedParam>;
   converged: boolean;
   scenario_toml: string;
@@ -73,6 +87,23 @@ export function fitRequest(name: string, csv: string, size: number, model: strin
 const isNum = (v: unknown): v is number => typeof v === 'number' && Number.isFinite(v);
 const isVec3 = (v: unknown): v is Vec3 => Array.isArray(v) && v.length === 3 && v.every(isNum);
 
+/** A keyed line as the server sent it, or null when malformed (values other than strings are dropped). */
+export function readKeyed(raw: unknown): KeyedLine | null {
+  if (typeof raw !== 'object' || raw === null) return null;
+  const r = raw as Record<string, unknown>;
+  const key = r['key'];
+  if (key !== null && typeof key !== 'string') return null;
+  const values: Record<string, string> = {};
+  if (typeof r['values'] === 'object' && r['values'] !== null) {
+    for (const [k, v] of Object.entries(r['values'] as Record<string, unknown>)) if (typeof v === 'string') values[k] = v;
+  }
+  const line: KeyedLine = { key, values };
+  if (typeof r['text'] === 'string') line.text = r['text'];
+  return line;
+}
+
+const keyedList = (raw: unknown): KeyedLine[] => (Array.isArray(raw) ? raw.map(readKeyed).filter((l): l is KeyedLine => l !== null) : []);
+
 /** The server's answer checked (a malformed one is a sentence, never a half-drawn path). */
 export function readFitAnswer(raw: unknown): FitAnswer | string {
   if (typeof raw !== 'object' || raw === null) return 'the fit answer is not an object';
@@ -90,6 +121,8 @@ export function readFitAnswer(raw: unknown): FitAnswer | string {
   return {
     report: a['report'],
     warnings: Array.isArray(a['warnings']) ? a['warnings'].filter((w): w is string => typeof w === 'string') : [],
+    notes: keyedList(a['notes']),
+    items: keyedList(a['items']),
     params: (a['params'] ?? {}) as Record<string, FittedParam>,
     converged: a['converged'] === true,
     scenario_toml: a['scenario_toml'],
@@ -113,13 +146,4 @@ export function loadCommands(lab: FittedLab): Command[] {
     v: lab.start.v,
   };
   return commandsFor(u);
-}
-
-/** One line per fitted parameter, "name = value ± error unit" (or "not determined"), for the panel. */
-export function paramLines(params: Record<string, FittedParam>): string[] {
-  return Object.entries(params).map(([name, p]) => {
-    const err = p.determined && p.stderr !== null ? ` ± ${p.stderr.toPrecision(2)}` : ' (not determined by these data)';
-    const unit = p.unit && p.unit !== '1' ? ` ${p.unit}` : '';
-    return `${name} = ${p.value.toPrecision(6)}${err}${unit}`;
-  });
 }

@@ -74,18 +74,25 @@ interface NumberControllerLike {
 
 /** Makes every lil-gui slider under `gui` focusable and keyboard-driven, with role, label and value for
  *  screen readers. Safe to call again (folders are rebuilt when the model changes). */
+/** A number as an ARIA value: plain decimal notation ("0.000000001", not "1e-9", which axe-core reports as an
+ *  invalid aria-valuemin: a damped model's friction_speed slider starts at 1e-9). */
+export function ariaNumber(v: unknown): string {
+  const n = Number(v);
+  return Number.isFinite(n) ? n.toLocaleString('en-US', { useGrouping: false, maximumFractionDigits: 20 }) : String(v);
+}
+
 export function accessibleSliders(gui: GUI): void {
   for (const c of gui.controllersRecursive() as unknown as NumberControllerLike[]) {
     const s = c.$slider;
     if (s === undefined) continue;
-    s.setAttribute('aria-valuenow', String(c.getValue()));
+    s.setAttribute('aria-valuenow', ariaNumber(c.getValue()));
     if (s.dataset['keys'] === '1') continue;
     s.dataset['keys'] = '1';
     s.tabIndex = 0;
     s.setAttribute('role', 'slider');
     s.setAttribute('aria-label', c.$name.textContent ?? '');
-    if (c._min !== undefined) s.setAttribute('aria-valuemin', String(c._min));
-    if (c._max !== undefined) s.setAttribute('aria-valuemax', String(c._max));
+    if (c._min !== undefined) s.setAttribute('aria-valuemin', ariaNumber(c._min));
+    if (c._max !== undefined) s.setAttribute('aria-valuemax', ariaNumber(c._max));
     s.addEventListener('keydown', (e) => {
       const n = sliderSteps(e.key);
       if (n === null) return;
@@ -95,7 +102,7 @@ export function accessibleSliders(gui: GUI): void {
       const v = Number(c.getValue());
       const next = n === Infinity ? hi : n === -Infinity ? lo : Math.min(hi, Math.max(lo, v + n * step));
       if (Number.isFinite(next)) c.setValue(+next.toPrecision(12));
-      s.setAttribute('aria-valuenow', String(c.getValue()));
+      s.setAttribute('aria-valuenow', ariaNumber(c.getValue()));
     });
   }
 }

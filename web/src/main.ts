@@ -30,7 +30,7 @@ import { byId, MessageLine, setUpPage } from './wiring/page';
 import { SharedLink } from './wiring/link';
 import { Session } from './wiring/session';
 import type { LabCore } from './wiring/session';
-import { wireToolbar } from './wiring/toolbar';
+import { rememberedSimple, wireToolbar } from './wiring/toolbar';
 import { wireKeys } from './wiring/keys';
 import { wireTools } from './wiring/tools';
 import { wireControls } from './wiring/controls';
@@ -64,6 +64,8 @@ function handles(lab: LabCore, p: DrawnPanels, quality: RenderQuality, costs: Fr
     screenshot: () => scene.screenshot(),
     bobOnScreen: () => scene.bobOnScreen(),
     handleOnScreen: () => scene.handleOnScreen(),
+    lastPull: () => scene.lastPull(),
+    handleAt: () => scene.handleAt(),
     quality: () => quality,
     frameCosts: () => costs.take(),
     twinOnScreen: () => scene.twinOnScreen(),
@@ -100,7 +102,8 @@ async function main(): Promise<void> {
   const portraits = new Portraits(byId('portraits'));
   const reduced = new ReducedView(byId('reduced'), quality);
   const data = new DataPanel(byId('data'));
-  const view = { ...DEFAULT_VIEW };
+  // the simple view first (issue 28), unless this device chose the advanced one; a link may say either
+  const view = { ...DEFAULT_VIEW, simple: rememberedSimple(DEFAULT_VIEW.simple) };
   const link = new SharedLink(store, view, explain); // a shared link's view options, scenario and second pendulum
   const session = new Session(store, explain);
   session.conn = early.conn;

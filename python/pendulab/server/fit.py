@@ -6,6 +6,7 @@ model and the parameters to fit; :func:`fit_data` runs :func:`pendulab.fit` (T-1
 docs/theory.md) and answers with
 
 - ``report``: the text of :meth:`pendulab.FitResult.report`, and the ``warnings`` the fit gave;
+  ``notes`` and ``items``: the warnings and the report as message keys with values (:mod:`.fit_words`);
 - ``params``: name → value, standard error (null where the data do not determine it), unit, and
   ``determined``; ``combinations`` what the data determine instead; ``chi2``, ``dof``, ``converged``;
 - ``scenario_toml``: the fitted scenario (:meth:`pendulab.FitResult.to_scenario` as TOML) and
@@ -43,6 +44,7 @@ from ..fitting import FitResult, fit
 from ..fitting.problem import ROD_MODELS
 from ..fitting.table import parse_table
 from ..model import FloatArray, Pendulum
+from .fit_words import keyed, reasons, report_items
 from .protocol import validation_problems
 from .room import Room, client_key
 from .scenarios import Setup
@@ -175,9 +177,14 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
         lab: dict[str, Any] | None = describe(Setup.from_scenario(scenario, None))
     except ValueError:  # ScenarioError: a model the lab does not run
         lab = None
+    said = [" ".join(str(w.message).split()) for w in caught]
+    why = reasons(res)
     return {
         "report": res.report(),
-        "warnings": [" ".join(str(w.message).split()) for w in caught],
+        "warnings": said,
+        # the report and the warnings as message keys for a page that translates them (.fit_words)
+        "notes": [keyed(w) for w in said],
+        "items": report_items(res),
         "model": res.model,
         "fit": names,
         "params": {
@@ -186,6 +193,7 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
                 "stderr": _finite(res.stderr[n]) if res.determined[n] else None,
                 "unit": res.units.get(n, ""),
                 "determined": bool(res.determined[n]),
+                **({"reason": why[n]} if n in why else {}),
             }
             for n in res.names
         },

@@ -2,10 +2,10 @@
 // file to POST /api/fit with the model and the parameters to fit, shows the server's report, hands the
 // fitted scenario and the measured path to the page (which loads the one into the session and draws the
 // other in the scene), and a button that clears the path. The checking and the commands are fitdata.ts's.
-import { FIT_MODELS, MAX_FIT_BYTES, fitRequest, paramLines, readFitAnswer } from '../fitdata';
+import { FIT_MODELS, MAX_FIT_BYTES, fitRequest, readFitAnswer } from '../fitdata';
 import type { FitAnswer } from '../fitdata';
-import { language, modelWords, paramWords, t } from '../i18n';
-import type { FittedParam } from '../fitdata';
+import { modelWords, t } from '../i18n';
+import { fitLine, fitReportLines } from '../i18n/fitwords';
 
 export interface FitDataActions {
   /** A fit of file `name` arrived: load its scenario, draw its measured path. */
@@ -22,16 +22,6 @@ function el<K extends keyof HTMLElementTagNameMap>(tag: K, attrs: Record<string,
   return e;
 }
 
-/** The fitted parameters in the page's language: `label = value ± error unit` (registry labels translated). */
-function studentLines(params: Record<string, FittedParam>): string[] {
-  return Object.entries(params).map(([name, p]) => {
-    const [label] = paramWords(name, name, '');
-    const err = p.determined && p.stderr !== null ? ` ± ${p.stderr.toPrecision(2)}` : ` ${t('fit.notDetermined')}`;
-    const unit = p.unit && p.unit !== '1' ? ` ${p.unit}` : '';
-    return `${label} = ${p.value.toPrecision(6)}${err}${unit}`;
-  });
-}
-
 export class FitDataPanel {
   readonly input: HTMLInputElement;
   private readonly model: HTMLSelectElement;
@@ -39,7 +29,8 @@ export class FitDataPanel {
   private readonly clear: HTMLButtonElement;
   private readonly report: HTMLPreElement;
   private readonly warnings: HTMLUListElement;
-  /** In German and French: the server's full report (English) folded away under a translated summary. */
+  /** The server's full report as pendulab fit prints it (English, the code names), folded away below the
+   *  report in the page's language. */
   private readonly full = el('details', { class: 'fit-full', 'data-output': 'fit-full' });
   private readonly fullText = el('pre', { class: 'fit-report' });
   private busy = false;
@@ -121,19 +112,19 @@ export class FitDataPanel {
       }
       const answer = readFitAnswer(raw);
       if (typeof answer === 'string') throw new Error(answer);
-      // English: the server's report as it is; other languages: a translated summary and parameters, the
-      // English report folded away below (the warnings above stay the server's words)
-      const english = language() === 'en';
+      // the report and the warnings in the page's language (keyed by the server: i18n/fitwords.ts), in
+      // student words; the server's own text (English, code names) folded away below
       const state = t(answer.converged ? 'fit.converged' : 'fit.notConverged');
-      const head = english ? [answer.report, '', ...paramLines(answer.params)] : [t('fit.summary', { model: modelWords(this.model.value, this.model.value), state }), '', ...studentLines(answer.params)];
-      const lines = [...head, ...answer.warnings.map((w) => `⚠ ${w}`)];
+      const notes = answer.notes.length > 0 ? answer.notes.map(fitLine) : answer.warnings;
+      const lines = [...fitReportLines(answer.items, answer.params), ...notes.map((w) => `⚠ ${w}`)];
+      if (answer.items.length === 0) lines.unshift(t('fit.summary', { model: modelWords(this.model.value, this.model.value), state }));
       this.fullText.textContent = answer.report;
-      this.full.hidden = english;
+      this.full.hidden = false;
       if (answer.measured === null) lines.push(t('fit.noPath'));
       this.report.textContent = lines.join('\n');
-      // the warnings of the fit, and the report's own warning lines
-      const said = [...answer.warnings, ...answer.report.split('\n').filter((l) => /warning|does not fit|misfit/i.test(l))].map((l) => l.replace(/^\s*warning:\s*/i, '').trim());
-      this.warnings.replaceChildren(...[...new Set(said)].map((w) => el('li', {}, `⚠ ${w}`)));
+      // the fit's warnings above the report, where they cannot be missed
+      const said = [...new Set(notes)];
+      this.warnings.replaceChildren(...said.map((w) => el('li', {}, `⚠ ${w}`)));
       this.warnings.hidden = said.length === 0;
       this.clear.disabled = false;
       this.actions.loaded(answer, file.name);

@@ -95,8 +95,18 @@ export interface PullBasis {
  *  (velocity.ts `velocityFromRay`, in the plane through the bob perpendicular to x, x fixed at the start
  *  of the pull) is handed on; releasing ends it. `onPull(x, pulled, phase)`: pulled is null at the start
  *  and at an end without any move (a press alone changes nothing). */
+/** The last pull as released (for tests): the pointer and the pulled velocity's arrow tip on the page
+ *  [CSS px], both with the camera of that instant, and the velocity [m/s] handed on. */
+export interface ReleasedPull {
+  pointer: { x: number; y: number };
+  tip: { x: number; y: number };
+  v: Vec3;
+}
+
 export class VelocityDrag {
   private basis: PullBasis | null = null;
+  /** The last pull released with a move (null: none yet). */
+  last: ReleasedPull | null = null;
   private moved = false;
   private readonly raycaster = new THREE.Raycaster();
   private readonly tmp = new THREE.Vector3();
@@ -143,6 +153,15 @@ export class VelocityDrag {
     );
   }
 
+  /** The pointer and the tip of the arrow of `v` (pivot + x + v · arrowScale) on the page now. */
+  private released(e: PointerEvent, basis: PullBasis, v: Vec3): ReleasedPull {
+    const { pivot, x, arrowScale } = basis;
+    const p = this.tmp.set(pivot[0] + x[0] + v[0] * arrowScale, pivot[1] + x[1] + v[1] * arrowScale, pivot[2] + x[2] + v[2] * arrowScale).project(this.camera);
+    const r = this.canvas.getBoundingClientRect();
+    const tip = { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+    return { pointer: { x: e.clientX, y: e.clientY }, tip, v: [...v] };
+  }
+
   private down(e: PointerEvent): void {
     if (e.button !== 0 || !this.handle.visible) return;
     const ray = this.ray(e);
@@ -171,6 +190,7 @@ export class VelocityDrag {
     if (this.basis === null) return;
     const pulled = this.moved ? this.pulled(e) : null;
     const x = this.basis.x;
+    if (pulled !== null) this.last = this.released(e, this.basis, pulled.v);
     this.basis = null;
     this.controls.enabled = true;
     this.onPull(x, pulled, 'end');

@@ -27,7 +27,8 @@ export interface ViewOptions extends Record<VectorName, boolean> {
   protractorLift: number;
   /** Presentation mode: large type in the panel (the page's; kept here so that a link carries it). */
   present: boolean;
-  /** The simple view: the classroom tools only (docs/web.md, "Simple view"). */
+  /** The simple view: the classroom tools only (docs/web.md, "Simple view"); the default (issue 28: "a simple
+   *  view with PhET-level tools first"), the advanced layer one click away (wiring/toolbar.ts remembers it). */
   simple: boolean;
 }
 
@@ -57,7 +58,7 @@ export const DEFAULT_VIEW: ViewOptions = {
   protractorShift: 0,
   protractorLift: 0,
   present: false,
-  simple: false,
+  simple: true,
 };
 
 /** Arrow colours (the legend in docs/web.md). */

@@ -8,7 +8,7 @@ import * as THREE from 'three';
 import type { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { StereoEffect } from 'three/addons/effects/StereoEffect.js';
 import type { Frame, Vec3 } from '../protocol';
-import type { DragPhase, PullBasis } from './drag';
+import type { DragPhase, PullBasis, ReleasedPull } from './drag';
 import { BobDrag, VelocityDrag } from './drag';
 import { arrowScales } from './vectors';
 import type { PulledVelocity } from './velocity';
@@ -246,6 +246,18 @@ export class PendulumScene {
   /** The velocity arrow's grab handle on the page [CSS px], or null when it is not drawn (for tests). */
   handleOnScreen(): { x: number; y: number } | null {
     return this.onScreen(this.body.handle);
+  }
+
+  /** The last pull of the velocity arrow as released (drag.ts; for tests). */
+  lastPull(): ReleasedPull | null {
+    return this.pull?.last ?? null;
+  }
+
+  /** The velocity handle's position [m, world] as drawn and the velocity arrow's scale [m per m/s] it was
+   *  drawn with, or null when it is not drawn (for tests). */
+  handleAt(): { at: Vec3; scale: number } | null {
+    const h = this.body.handle;
+    return h.visible ? { at: [h.position.x, h.position.y, h.position.z], scale: this.velocityScale } : null;
   }
 
   /** The second pendulum of its own (two-pendulum mode `own`): rod length `length` [m], its pivot drawn at

@@ -3,6 +3,7 @@
 // times in simulated seconds, video sizes in bytes.
 import type { Command } from '../protocol';
 import type { RenderQuality } from '../scene/quality';
+import type { ReleasedPull } from '../scene/drag';
 import type { EngineKind } from '../engine';
 import type { EnergySplit } from '../measure';
 import type { LabStore } from '../state';
@@ -14,6 +15,11 @@ export interface LabHandles {
   screenshot: () => string;
   bobOnScreen: () => { x: number; y: number } | null;
   handleOnScreen: () => { x: number; y: number } | null;
+  /** The last pull of the velocity arrow as released: pointer and arrow tip on the page with the camera of
+   *  that instant, and the velocity [m/s] handed on (scene/drag.ts). */
+  lastPull: () => ReleasedPull | null;
+  /** The velocity handle's position [m, world] and the arrow scale [m per m/s] it was drawn with. */
+  handleAt: () => { at: [number, number, number]; scale: number } | null;
   quality: () => RenderQuality;
   frameCosts: () => Record<string, { ms: number; count: number }>;
   /** The second pendulum's store (two-pendulum mode) and where its bob is drawn on the page. */

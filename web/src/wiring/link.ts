@@ -74,12 +74,16 @@ export class SharedLink {
     if (this.store.status !== null) this.startup = commandsFor(fromStatus(this.store.status));
   }
 
-  /** The lab as a link: the server's status, the view options that differ from the defaults, the chosen
+  /** The lab as a link: the server's status, the view options that differ from the defaults (and the simple
+   *  view or not, always), the chosen
    *  plot, the second pendulum, the language. */
   lab(): UrlScenario {
     const s = this.store.status;
     const u: UrlScenario = s === null ? {} : fromStatus(s);
     u.view = encodeView(this.view as unknown as Record<string, boolean | number | string>, DEFAULT_VIEW as unknown as Record<string, boolean | number | string>);
+    // the simple or the advanced view always said, so that a prepared lab opens as it was prepared (a link
+    // that does not say it opens as the device last chose: wiring/toolbar.ts rememberedSimple)
+    u.view.simple = this.view.simple;
     const choice = this.chosen?.choice;
     if (choice !== undefined && (choice.x !== 't' || choice.y !== 'theta')) u.plot = [choice.x, choice.y];
     if (this.twin?.on && this.twin.options.mode !== 'off') u.twin = { ...this.twin.options };

@@ -29,6 +29,30 @@ function switchLanguage(lab: LabCore, l: string): void {
   });
 }
 
+/** Where the choice of the simple or the advanced view is remembered on this device (localStorage). */
+const SIMPLE_KEY = 'pendulab.simple';
+
+/** The view this device chose last: the simple one ('1'), the advanced one ('0'), or `fallback` (the
+ *  default: the simple view) when it never chose or storage is unavailable. A link that says `simple` or
+ *  `-simple` overrides it (wiring/link.ts). */
+export function rememberedSimple(fallback: boolean): boolean {
+  let v: string | null = null;
+  try {
+    v = window.localStorage?.getItem(SIMPLE_KEY) ?? null;
+  } catch {
+    v = null; // storage refused (a sandboxed file://): the default
+  }
+  return v === '1' ? true : v === '0' ? false : fallback;
+}
+
+function rememberSimple(on: boolean): void {
+  try {
+    window.localStorage?.setItem(SIMPLE_KEY, on ? '1' : '0');
+  } catch {
+    // storage refused: the choice lasts as long as the page (and its link)
+  }
+}
+
 export function wireToolbar(lab: LabCore): ToolbarParts {
   const { store, scene, view, session, explain } = lab;
   let lastVideo: { size: number; head: string } | null = null;
@@ -62,6 +86,7 @@ export function wireToolbar(lab: LabCore): ToolbarParts {
     },
     simple: (on) => {
       view.simple = on;
+      rememberSimple(on);
       document.body.classList.toggle('simple', on);
       toolbar.showSimple(on);
     },

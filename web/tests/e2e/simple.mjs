@@ -3,7 +3,8 @@
 // view, fitting, the integrator, view, vectors and export folders, the model picker) and keeps what PhET's
 // Pendulum Lab has — length and mass (lil-gui's Pendulum folder), gravity and friction, the start angle,
 // stopwatch, period timer, ruler and protractor, energy bars, two pendulums, slow motion —; the link
-// carries it; with presentation mode on top the type is large; pressing again brings everything back.
+// carries it; with presentation mode on top the type is large; pressing again brings everything back; a link
+// that does not say which view opens as the device chose last (localStorage), else in the simple view.
 const shown = (sel) => [...document.querySelectorAll(sel)].some((e) => e.getClientRects().length > 0 && e.getBoundingClientRect().height > 0);
 
 async function state(page) {
@@ -20,7 +21,7 @@ async function state(page) {
 export async function checkSimpleView(page, { check, WAIT, shot }) {
   const full = await state(page);
   await page.locator('[data-action="simple"]').click();
-  await page.waitForFunction(() => /simple/.test(location.search), null, { timeout: WAIT });
+  await page.waitForFunction(() => (new URLSearchParams(location.search).get('view') ?? '').split(',').includes('simple'), null, { timeout: WAIT });
   const simple = await state(page);
   await page.screenshot({ path: shot('simple-view') });
   check(simple.simple && simple.gone.length === 0 && simple.folders === 2, `simple view: the data panel, plots, portraits, reduced view, fitting, model picker and ${full.folders - 2} settings folders are folded away${simple.gone.length ? ' (still shown: ' + simple.gone.join(', ') + ')' : ''}`);
@@ -35,7 +36,23 @@ export async function checkSimpleView(page, { check, WAIT, shot }) {
   await p2.close();
   check(both.simple && both.data === 0 && both.size >= 18, `the link opens the simple view; with presentation mode on top ${both.size} px type`);
   await page.locator('[data-action="simple"]').click();
-  await page.waitForFunction(() => !/simple/.test(location.search), null, { timeout: WAIT });
+  await page.waitForFunction(() => (new URLSearchParams(location.search).get('view') ?? '').split(',').includes('-simple'), null, { timeout: WAIT });
   const back = await state(page);
   check(!back.simple && back.folders === full.folders && back.targets === full.targets, `pressing Simple again brings everything back (${back.targets} controls)`);
+  // a link that does not say which view (the documentation's links, a bare address) opens as this device
+  // chose last (the advanced view, just pressed), and on a device that never chose, the simple view
+  const p3 = await page.context().newPage();
+  const bare = page.url().split('?')[0];
+  await p3.goto(bare, { timeout: WAIT });
+  await p3.waitForFunction(() => window.pendulab?.store.status != null, null, { timeout: WAIT });
+  const chosen = await p3.evaluate(() => document.body.classList.contains('simple'));
+  await p3.evaluate(() => localStorage.removeItem('pendulab.simple'));
+  await p3.close(); // a new page, not reload(): the address bar of this one now says -simple
+  const p4 = await page.context().newPage();
+  await p4.goto(bare, { timeout: WAIT });
+  await p4.waitForFunction(() => window.pendulab?.store.status != null, null, { timeout: WAIT });
+  const never = await p4.evaluate(() => document.body.classList.contains('simple'));
+  await p4.evaluate(() => localStorage.setItem('pendulab.simple', '0')); // the checks after this one use the whole panel
+  await p4.close();
+  check(!chosen && never, `a link without a view opens as the device chose (advanced: ${!chosen}); a device that never chose gets the simple view (${never})`);
 }

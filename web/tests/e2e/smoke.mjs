@@ -105,6 +105,15 @@ try {
   watch(page);
   await page.goto(home, { timeout: WAIT });
   await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: WAIT });
+  // the first visit (a fresh profile) opens the simple view (issue 28: "a simple view with PhET-level tools
+  // first"); the advanced layer is one click away and remembered on this device (localStorage), so the
+  // checks below, which use the whole panel, run in it (simple.mjs checks the simple view itself)
+  const first = await page.evaluate(() => ({ simple: document.body.classList.contains('simple'), stored: localStorage.getItem('pendulab.simple') }));
+  await page.locator('[data-action="simple"]').click();
+  const advanced = await page
+    .waitForFunction(() => !document.body.classList.contains('simple') && localStorage.getItem('pendulab.simple') === '0', null, { timeout: WAIT })
+    .then(() => true, () => false);
+  check(first.simple && first.stored === null && advanced, `the first visit opens the simple view; one click on Simple opens the advanced one, remembered on the device (${JSON.stringify(first)}, advanced ${advanced})`);
 
   // E2E_ONLY=period,language (by hand, while working on a part): only the parts whose names contain one of
   // these words, without the checks above them
@@ -131,37 +140,46 @@ try {
     check(ratio > 0.6 && ratio < 1.4, `simulation paced to the wall clock (${ratio.toFixed(2)} simulated s per s)`);
     check(b.d - a.d > 10, `the page draws frames (${b.d - a.d} in ${((b.w - a.w) / 1000).toFixed(1)} s)`);
 
-    // frame rate: the page's own frame times (requestAnimationFrame) over 3 s
-    const stamps = await page.evaluate(
-      () =>
-        new Promise((resolve) => {
-          const ts = [];
-          const f = (now) => {
-            ts.push(now);
-            if (now - ts[0] < 3000) requestAnimationFrame(f);
-            else resolve(ts);
-          };
-          requestAnimationFrame(f);
-        }),
-    );
-    const dts = stamps.slice(1).map((t, i) => t - stamps[i]).sort((p, q) => p - q);
-    const median = dts[Math.floor(dts.length / 2)];
-    const p90 = dts[Math.floor(dts.length * 0.9)];
-    const fps = 1000 / median;
+    // frame rate: the page's own frame times (requestAnimationFrame) over 3 s, up to three windows
+    const window3s = () =>
+      page.evaluate(
+        () =>
+          new Promise((resolve) => {
+            const ts = [];
+            const f = (now) => {
+              ts.push(now);
+              if (now - ts[0] < 3000) requestAnimationFrame(f);
+              else resolve(ts);
+            };
+            requestAnimationFrame(f);
+          }),
+      );
     const quality = await page.evaluate(() => window.pendulab.quality());
-    console.log(
-      `frame rate: median ${fps.toFixed(1)} fps (frame time ${median.toFixed(1)} ms, ` +
-        `90th percentile ${p90.toFixed(1)} ms, ${dts.length} frames; WebGL ${quality.software ? 'software' : 'GPU'}: ` +
-        `${quality.renderer}, antialias ${quality.antialias}, pixel ratio ${quality.pixelRatio})`,
-    );
+    let fps = 0;
+    const windows = [];
     // The bound, MIN_FPS = 25: headless chromium hands out frames on the display's 16.7 ms clock, so the
     // median is 60, 30, 20, 15 … fps. The lab draws at 60 here (trail and plots on), also while other builds
     // load this 2-core machine (load average 6–7.5, or two busy loops, measured); before the software-renderer
     // path (scene/quality.ts: no MSAA, one-layer sphere of reach) it drew at 30 on a quiet machine and 15–20
     // on a busy one. 30 fps (every other frame missed) is let pass, as a machine busy with other work can
     // cause it; 20 or less means a frame costs 40 ms or more again, the old cost: a regression, not noise
-    // (docs/performance.md, "Lab frame rate").
-    check(fps > MIN_FPS, `median frame rate above ${MIN_FPS} fps (${fps.toFixed(1)} fps)`);
+    // (docs/performance.md, "Lab frame rate"). Up to three 3-s windows are measured: the other agents' load
+    // (load 10-18 on 2 cores) only ever slows a window, and dropped one below 25 fps now and then; a frame
+    // that costs 40 ms fails every window.
+    for (let i = 0; i < 3 && !(fps > MIN_FPS); i++) {
+      const stamps = await window3s();
+      const dts = stamps.slice(1).map((t, i) => t - stamps[i]).sort((p, q) => p - q);
+      const median = dts[Math.floor(dts.length / 2)];
+      const p90 = dts[Math.floor(dts.length * 0.9)];
+      fps = 1000 / median;
+      windows.push(fps.toFixed(1));
+      console.log(
+        `frame rate: median ${fps.toFixed(1)} fps (frame time ${median.toFixed(1)} ms, ` +
+          `90th percentile ${p90.toFixed(1)} ms, ${dts.length} frames; WebGL ${quality.software ? 'software' : 'GPU'}: ` +
+          `${quality.renderer}, antialias ${quality.antialias}, pixel ratio ${quality.pixelRatio})`,
+      );
+    }
+    check(fps > MIN_FPS, `median frame rate above ${MIN_FPS} fps (${windows.join(', ')} fps in ${windows.length} window(s) of 3 s)`);
     const software = /swiftshader|llvmpipe/i.test(quality.renderer ?? '');
     check(quality.software === software && quality.antialias === !software, `software WebGL recognised (${quality.renderer})`);
 

@@ -6,7 +6,7 @@ import type { Frame, Status, Vec3 } from '../../src/protocol';
 import { DEG, ellipticK, energySplit, PeriodTimer, periodComparison, sphericalAngles, Stopwatch, swingTheory, workBetween, wrapAngle } from '../../src/measure';
 import { FLOAT64_EPS, logRange, MIN_RELATIVE_SPAN, relativeDrift, safeRange } from '../../src/panels/ranges';
 import { columns, VARIABLES } from '../../src/variables';
-import { ownsKeys, shortcutFor, sliderSteps } from '../../src/keyboard';
+import { ariaNumber, ownsKeys, shortcutFor, sliderSteps } from '../../src/keyboard';
 import { chooseLanguage, LANGUAGES, modelWords, paramWords, setLanguage, t } from '../../src/i18n';
 import { EN } from '../../src/i18n/en';
 import { frameAt, positionAt, separation, sideBySide, tiltedStart, twinCommands } from '../../src/twin';
@@ -253,6 +253,8 @@ describe('keyboard', () => {
     expect(sliderSteps('ArrowLeft')).toBe(-1);
     expect(sliderSteps('End')).toBe(Infinity);
     expect(sliderSteps('a')).toBeNull();
+    // ARIA values in plain decimals (axe-core: "1e-9" is not a valid aria-valuemin)
+    expect([1e-9, 0.1, 9.81, -2.5e3].map(ariaNumber)).toEqual(['0.000000001', '0.1', '9.81', '-2500']);
     expect(ownsKeys(null)).toBe(false);
   });
 });

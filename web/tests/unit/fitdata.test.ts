@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { MAX_FIT_BYTES, fitRequest, loadCommands, paramLines, readFitAnswer } from '../../src/fitdata';
+import { MAX_FIT_BYTES, fitRequest, loadCommands, readFitAnswer } from '../../src/fitdata';
 import type { FittedLab } from '../../src/fitdata';
 import { MEASURED_MAX, dotPattern, pathPositions } from '../../src/scene/measured';
 
@@ -71,18 +71,6 @@ describe('loadCommands', () => {
     expect(cmds).toContainEqual({ type: 'set_method', method: 'dop853', dt: 0.001 });
     expect(cmds).toContainEqual({ type: 'set_state', x: [0.3, 0, -0.54], v: [0, 0, 0] });
     expect(cmds[cmds.length - 1]).toEqual({ type: 'reset' });
-  });
-});
-
-describe('paramLines', () => {
-  it('shows value ± error with the unit, or says the data do not determine it', () => {
-    expect(
-      paramLines({
-        length: { value: 0.6198, stderr: 0.0036, unit: 'm', determined: true },
-        mass: { value: 1, stderr: null, unit: 'kg', determined: false },
-        theta0: { value: 0.5, stderr: 0.001, unit: '1', determined: true },
-      }),
-    ).toEqual(['length = 0.619800 ± 0.0036 m', 'mass = 1.00000 (not determined by these data) kg', 'theta0 = 0.500000 ± 0.0010']);
   });
 });
 

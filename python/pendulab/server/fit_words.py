@@ -1,0 +1,173 @@
+"""The lab's fit report as message keys with values, so that a page translates it (docs/web.md,
+"Languages"; issue 28: the fit report and its warnings were English on German and French pages).
+
+``POST /api/fit`` (:mod:`.fit`) answers with the English text of :meth:`pendulab.FitResult.report`
+and the warnings of :func:`pendulab.fit`; beside them this module builds
+
+- ``notes``: each warning as ``{"key", "values", "text"}``: ``key`` one of :data:`NOTES` (``None`` when
+  a warning has no key yet: the page then shows ``text``, the English words), ``values`` the numbers
+  and names its words need, as the English text has them (strings, SI units as stated there);
+- ``items``: the report line by line in the same form (the header, what the data determine instead, the
+  plane held, the residuals per data kind against the data's noise floor, χ²/dof with what it means,
+  the noise, what was held fixed, convergence), and ``reason`` for every undetermined parameter.
+
+The warnings carry no codes of their own (they are plain sentences of :mod:`pendulab.fitting`), so a
+warning is recognised by the pattern of its English words (:data:`NOTES`); every sentence the fit can
+say is matched in python/tests/test_server_fit_words.py, so a changed wording fails a test instead of
+falling back to English unnoticed. The page's words for each key are ``fitw.<key>`` of
+web/src/i18n/{en,de,fr}.ts (checked by web/tests/unit/fitwords.test.ts against ``fit_words.json``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from pathlib import Path
+from typing import Any
+
+from ..fitting import FitResult
+
+_NUM = r"[-+0-9.eE]+|inf|nan"
+_KEYS = json.loads(Path(__file__).with_name("fit_words.json").read_text(encoding="utf-8"))
+KEYS: dict[str, str] = {k: v for k, v in _KEYS.items() if not k.startswith("_")}
+"""Every key of a note or a report item -> its English words with {placeholders} (``fit_words.json``)."""
+
+
+def _p(pattern: str) -> re.Pattern[str]:
+    """A note's pattern: ``{name}`` stands for a number (group ``name``), ``{name:w}`` for a word,
+    ``{name:l}`` for any text (a list of values)."""
+
+    def group(m: re.Match[str]) -> str:
+        name, kind = m.group(1), m.group(2)
+        return f"(?P<{name}>{r'[A-Za-z_]+' if kind == 'w' else r'.+?' if kind == 'l' else _NUM})"
+
+    return re.compile(re.sub(r"\\\{(\w+)(?::(\w))?\\\}", group, re.escape(pattern)))
+
+
+NOTES: list[tuple[str, re.Pattern[str]]] = [
+    # goodness.findings (pendulab/fitting/goodness.py)
+    (
+        "explainsLittle",
+        _p("{kind:w}: the fitted motion explains only {percent} % of the data's variance"),
+    ),
+    ("correlatedNoise", _p("{kind:w}: the residual is correlated noise (lag-1 autocorrelation {lag1},")),
+    (
+        "systematicDrift",
+        _p(
+            "{kind:w}: the fit misses the data systematically with a slow drift over the record: the "
+            "residual (rms {rms}, {ratio}x the data's noise floor {floor})"
+        ),
+    ),
+    (
+        "systematic",
+        _p(
+            "{kind:w}: the fit misses the data systematically: the residual (rms {rms}, {ratio}x the "
+            "data's noise floor {floor})"
+        ),
+    ),
+    ("correlatedSmall", _p("{kind:w}: the residual is correlated (lag-1 autocorrelation {lag1}, runs test")),
+    ("aboveFloor", _p("{kind:w}: the residual rms {rms} is {ratio}x the noise floor {floor} read off")),
+    ("outliers", _p("{kind:w}: {n} values lie more than {sigmas} robust standard deviations")),
+    ("chi2Large", _p("the fitted motion misses the data by {factor}x their given noise: chi2 = {chi2} ")),
+    ("chi2Small", _p("chi2/dof = {reduced} is improbably small for {dof} degrees of freedom")),
+    # pendulab/fitting/blocks.py
+    (
+        "blocksDisagree",
+        _p(
+            "the record's {n} consecutive blocks, fitted on their own, disagree: {param:w} = {values:l} "
+            "(the blocks in time order), {scale}x their error bars apart"
+        ),
+    ),
+    # pendulab/fitting/estimator.py
+    ("gFar", _p("the fitted g = {g} m/s² is far from any planet's")),
+    ("pivotFitted", _p("the positions do not hang from the origin: the pivot's position is fitted too")),
+    ("timeLimit", _p("fit interrupted (the time limit of {seconds} s): returning the best values")),
+    ("notConverged", _p("the fit did not converge (")),
+    # pendulab/fitting/data.py
+    ("dropped", _p("dropped {n} of {total} rows with NaN or inf")),
+    ("sorted", _p("the times were not in increasing order: the rows were sorted")),
+    # pendulab/fitting/start.py
+    (
+        "lengthHint",
+        _p("the positions lie {radius} m from the pivot, but the pendulum's length is {length} m"),
+    ),
+]
+"""Warning key -> the pattern of its English words (from the start of the sentence)."""
+
+REASONS: list[tuple[str, re.Pattern[str]]] = [
+    ("notFinite", _p("the model's response to it is not finite at the fit")),
+    ("flat", _p("the residuals do not change with it at the fit")),
+    ("combination", re.compile(r"the data determine only a combination of it with (?P<others>.+)$")),
+]
+"""Why a parameter is not determined (pendulab/fitting/identify.py) -> key."""
+
+
+def _values(m: re.Match[str]) -> dict[str, str]:
+    return {k: v.rstrip(".,;") for k, v in m.groupdict().items() if v is not None}
+
+
+def keyed(text: str, table: list[tuple[str, re.Pattern[str]]] = NOTES) -> dict[str, Any]:
+    """``text`` (one warning, whitespace collapsed) as ``{"key", "values", "text"}``; ``key`` None when
+    no pattern of ``table`` matches it."""
+    text = " ".join(text.split())
+    for key, pattern in table:
+        m = pattern.match(text)
+        if m is not None:
+            return {"key": key, "values": _values(m), "text": text}
+    return {"key": None, "values": {}, "text": text}
+
+
+def _g(v: float, digits: int = 3) -> str:
+    return f"{v:.{digits}g}" if math.isfinite(v) else str(v)
+
+
+def _item(key: str, **values: Any) -> dict[str, Any]:
+    assert key in KEYS, key
+    return {"key": key, "values": {k: str(v) for k, v in values.items()}}
+
+
+def report_items(res: FitResult) -> list[dict[str, Any]]:
+    """The report of ``res`` as keyed lines (the module doc), in the order of its text; the fitted
+    parameters themselves are the answer's ``params`` (the page words them)."""
+    from ..fitting.data import KINDS
+
+    kinds = list(res.residuals)
+    items = [_item("header", model=res.model, samples=len(res.t), kinds=",".join(kinds), t0=_g(res.t0, 6))]
+    if res.dropped:
+        items.append(_item("droppedRows", n=res.dropped))
+    for label, (value, err) in res.combinations.items():
+        items.append(_item("combinationValue", label=label, value=_g(value, 10), err=_g(err)))
+    if res.mirror_blind and {"phi0", "phi_dot0"} & set(res.names):
+        items.append(_item("mirror"))
+    if res.planar:
+        items.append(_item("planar"))
+    if res.goodness is not None:
+        for kind, c in res.goodness.kinds.items():
+            items.append(
+                _item(
+                    "residual",
+                    kind=kind,
+                    rms=_g(c.rms),
+                    floor=_g(c.floor),
+                    unit=KINDS[kind],
+                    lag1=f"{c.lag1:.3f}",
+                )
+            )
+    key = "chi2Estimated" if res.sigma_estimated else "chi2"
+    items.append(_item(key, chi2=_g(res.chi2, 6), dof=res.dof, reduced=_g(res.reduced_chi2, 4)))
+    for kind, s in res.sigma.items():
+        items.append(_item("noise", kind=kind, sigma=_g(s), unit=KINDS[kind]))
+    for name in ("length", "g", "mass"):
+        if name in res.fixed:
+            items.append(
+                _item("fixed", param=name, value=_g(res.fixed[name], 6), unit=res.units.get(name, ""))
+            )
+    done = "converged" if res.converged else "notConvergedItem"
+    items.append(_item(done, runs=res.evaluations, seconds=_g(res.seconds)))
+    return items
+
+
+def reasons(res: FitResult) -> dict[str, dict[str, Any]]:
+    """Why each undetermined parameter is not determined, keyed (:data:`REASONS`)."""
+    return {n: keyed(res.reasons.get(n, ""), REASONS) for n in res.names if not res.determined[n]}

@@ -1,0 +1,277 @@
+// The fit report's words in every language the page speaks (issue 28; docs/web.md, "Languages"): the server
+// sends the report and the fit's warnings as message keys with values beside their English text
+// (python/pendulab/server/fit_words.py, fit_words.json: `notes`, `items`, a parameter's `reason`); this
+// table words each key for a student, and names the fit's parameters (no `theta_dot0`), data kinds and
+// models in plain words. A key the table does not have is shown as the server's English text. Values are
+// the server's strings (numbers as its English text has them, SI units); `kind`, `kinds`, `param`, `model`,
+// `others` and `label` hold code names and are worded here. No DOM; unit-tested (tests/unit/fitwords.test.ts).
+import { language, modelWords, paramWords } from './index';
+import type { Lang } from './index';
+import type { FittedParam, KeyedLine } from '../fitdata';
+import { readKeyed } from '../fitdata';
+
+type Table = Record<string, string>;
+
+const EN: Table = {
+  explainsLittle: "{kind}: the fitted motion explains only {percent} % of how much the data vary: the data may not show a pendulum's swing above their noise, or the model or the starting values are far off",
+  correlatedNoise: '{kind}: the misses follow each other (lag-1 autocorrelation {lag1}) like the noise of video tracking or a filter, not like a wrong model: the error bars were widened for it',
+  systematicDrift: "{kind}: the fit misses the data systematically, with a slow drift: the misses (rms {rms}) are {ratio} times the data's own noise ({floor}). The model lacks something (another kind of friction, a moving pivot, a wrong scale), or the noise itself is correlated",
+  systematic: "{kind}: the fit misses the data systematically: the misses (rms {rms}) are {ratio} times the data's own noise ({floor}). The model lacks something (another kind of friction, a sensor offset, a moving pivot, a wrong scale), or the noise itself is correlated",
+  correlatedSmall: "{kind}: the misses follow each other (lag-1 autocorrelation {lag1}) though they are no larger than the data's noise: correlated noise, or a small effect the model lacks; the error bars were widened for it",
+  aboveFloor: '{kind}: the misses (rms {rms}) are {ratio} times the noise read off the data ({floor}): the model does not fit, or the noise is not random',
+  outliers: '{kind}: {n} values lie far from the fit (more than {sigmas} standard deviations): outliers?',
+  chi2Large: 'the fitted motion misses the data by {factor} times their given noise (chi2 = {chi2}): improbable for a right model. The model lacks something (friction, a moving pivot), the noise given is too small, or the fit is stuck (try other starting values)',
+  chi2Small: 'chi2/dof = {reduced} is improbably small for {dof} degrees of freedom: the noise given is too large, and so are the error bars',
+  blocksDisagree: "the record's {n} parts, each fitted on its own, disagree: {param} = {values} (the parts in time order), {scale} times their error bars apart. The model misses something that changes along the record (friction that depends on the amplitude, a drifting sensor, a hinge that is not ideal): the error bars were widened for it",
+  gFar: "the fitted g = {g} m/s² is far from any planet's (Earth: 9.81 m/s²): are the data in SI units (metres, not mm or pixels; seconds; radians)?",
+  pivotFitted: 'the positions do not hang from the origin: where the pivot is was fitted too',
+  timeLimit: 'the fit stopped at its time limit of {seconds} s: the values are the best reached',
+  notConverged: 'the fit did not converge: the values are the best reached',
+  dropped: '{n} of {total} rows had a missing or infinite value and were left out',
+  sorted: 'the times were not in increasing order: the rows were sorted',
+  lengthHint: "the positions lie {radius} m from the pivot, but the pendulum is {length} m long: are the positions in metres and is the pivot right? The fit starts from the data's distance",
+  notFinite: "the model's response to it is not finite at the fit",
+  flat: 'the data do not change with it (a symmetry of the data, or a rate of 0 seen from the side)',
+  combination: 'the data determine only a combination of it with {others}',
+  header: 'fit of the {model} to {samples} measurements ({kinds}), starting at t = {t0} s',
+  droppedRows: '({n} rows with missing values were left out)',
+  combinationValue: 'determined instead: {label} = {value} ± {err}',
+  mirror: 'the data cannot tell this motion from its mirror image (y → −y): the direction of the sideways motion is a choice',
+  planar: 'the swing was fitted in one plane (a hinge): no sideways start angle or speed',
+  residual: "{kind}: the fit misses the data by {rms} {unit} (rms); the data's own noise is about {floor} {unit}; lag-1 autocorrelation of the misses {lag1} (near 0: random misses, near 1: misses that follow a pattern)",
+  chi2: 'chi2/dof = {reduced} (chi2 = {chi2} for {dof} degrees of freedom): the misses measured in units of the noise given; about 1 means the fit is as close as the noise allows, much more means the model misses something',
+  chi2Estimated: 'chi2/dof = {reduced} (chi2 = {chi2} for {dof} degrees of freedom): the noise was estimated from the misses themselves, so chi2/dof is 1 by construction and says nothing here; see the lines above',
+  noise: 'noise of the {kind}: {sigma} {unit}',
+  fixed: 'held fixed: {param} = {value} {unit}',
+  converged: 'the fit converged ({runs} model runs, {seconds} s)',
+  notConvergedItem: 'the fit did NOT converge ({runs} model runs, {seconds} s): the values are the best reached',
+  'p.length': 'length l',
+  'p.g': 'gravity g',
+  'p.mass': 'mass m',
+  'p.damping': 'friction (damping)',
+  'p.drag': 'air drag',
+  'p.theta0': 'start angle from the vertical',
+  'p.phi0': 'start direction around the vertical',
+  'p.theta_dot0': 'start speed of the swing (angle per second)',
+  'p.phi_dot0': 'start speed around the vertical (angle per second)',
+  'p.pivot_x': 'pivot position x',
+  'p.pivot_y': 'pivot position y',
+  'p.pivot_z': 'pivot position z',
+  'p.t_offset': 'time offset of the data',
+  'p.scale': 'scale of the positions',
+  'p.angle_offset': 'zero of the angle sensor',
+  'p.force_bias': 'offset of the accelerometer',
+  'p.rate_bias': 'offset of the gyroscope',
+  'p.perspective': 'camera perspective (1/distance)',
+  'k.positions': 'positions',
+  'k.horizontal': 'horizontal positions',
+  'k.angles': 'angles',
+  'k.planar_angle': 'swing angle',
+  'k.specific_force': 'accelerometer readings',
+  'k.angular_speed': 'gyroscope readings',
+  'm.ideal': 'ideal pendulum',
+  'm.damped': 'pendulum with friction',
+  'm.rotating': 'pendulum on the turning Earth',
+  'm.slewing': 'pendulum on a slewing crane',
+  'm.vibrating': 'pendulum on a shaken pivot',
+  'm.spring': 'swinging spring',
+  notDetermined: 'not determined: {reason}',
+};
+
+const DE: Table = {
+  explainsLittle: '{kind}: die angepasste Bewegung erklärt nur {percent} % der Schwankung der Daten: die Daten zeigen vielleicht kein Pendelschwingen über ihrem Rauschen, oder Modell oder Startwerte liegen weit daneben',
+  correlatedNoise: '{kind}: die Abweichungen folgen aufeinander (Autokorrelation bei Abstand 1: {lag1}) wie das Rauschen einer Videoverfolgung oder eines Filters, nicht wie ein falsches Modell: die Fehlerbalken wurden dafür verbreitert',
+  systematicDrift: '{kind}: die Anpassung verfehlt die Daten systematisch, mit einer langsamen Drift: die Abweichungen (rms {rms}) sind {ratio}-mal so groß wie das eigene Rauschen der Daten ({floor}). Dem Modell fehlt etwas (eine andere Art Reibung, ein bewegter Aufhängepunkt, ein falscher Maßstab), oder das Rauschen selbst ist korreliert',
+  systematic: '{kind}: die Anpassung verfehlt die Daten systematisch: die Abweichungen (rms {rms}) sind {ratio}-mal so groß wie das eigene Rauschen der Daten ({floor}). Dem Modell fehlt etwas (eine andere Art Reibung, ein Sensor-Versatz, ein bewegter Aufhängepunkt, ein falscher Maßstab), oder das Rauschen selbst ist korreliert',
+  correlatedSmall: '{kind}: die Abweichungen folgen aufeinander (Autokorrelation bei Abstand 1: {lag1}), sind aber nicht größer als das Rauschen der Daten: korreliertes Rauschen oder ein kleiner Effekt, der dem Modell fehlt; die Fehlerbalken wurden dafür verbreitert',
+  aboveFloor: '{kind}: die Abweichungen (rms {rms}) sind {ratio}-mal so groß wie das aus den Daten abgelesene Rauschen ({floor}): das Modell passt nicht, oder das Rauschen ist nicht zufällig',
+  outliers: '{kind}: {n} Werte liegen weit neben der Anpassung (mehr als {sigmas} Standardabweichungen): Ausreißer?',
+  chi2Large: 'die angepasste Bewegung verfehlt die Daten um das {factor}-Fache ihres angegebenen Rauschens (chi2 = {chi2}): für ein richtiges Modell unwahrscheinlich. Dem Modell fehlt etwas (Reibung, ein bewegter Aufhängepunkt), das angegebene Rauschen ist zu klein, oder die Anpassung hängt fest (andere Startwerte versuchen)',
+  chi2Small: 'chi2/dof = {reduced} ist für {dof} Freiheitsgrade unwahrscheinlich klein: das angegebene Rauschen ist zu groß, und damit auch die Fehlerbalken',
+  blocksDisagree: 'die {n} Abschnitte der Aufnahme, jeder für sich angepasst, widersprechen sich: {param} = {values} (die Abschnitte zeitlich geordnet), um das {scale}-Fache ihrer Fehlerbalken auseinander. Dem Modell fehlt etwas, das sich entlang der Aufnahme ändert (Reibung, die von der Amplitude abhängt, ein driftender Sensor, ein nicht ideales Scharnier): die Fehlerbalken wurden dafür verbreitert',
+  gFar: 'das angepasste g = {g} m/s² passt zu keinem Planeten (Erde: 9,81 m/s²): sind die Daten in SI-Einheiten (Meter, nicht mm oder Pixel; Sekunden; Radiant)?',
+  pivotFitted: 'die Positionen hängen nicht am Ursprung: der Ort des Aufhängepunkts wurde mit angepasst',
+  timeLimit: 'die Anpassung hielt an ihrer Zeitgrenze von {seconds} s an: die Werte sind die besten erreichten',
+  notConverged: 'die Anpassung ist nicht konvergiert: die Werte sind die besten erreichten',
+  dropped: '{n} von {total} Zeilen hatten einen fehlenden oder unendlichen Wert und wurden weggelassen',
+  sorted: 'die Zeiten waren nicht aufsteigend: die Zeilen wurden sortiert',
+  lengthHint: 'die Positionen liegen {radius} m vom Aufhängepunkt, das Pendel ist aber {length} m lang: sind die Positionen in Metern und stimmt der Aufhängepunkt? Die Anpassung startet mit dem Abstand aus den Daten',
+  notFinite: 'die Antwort des Modells darauf ist bei der Anpassung nicht endlich',
+  flat: 'die Daten ändern sich damit nicht (eine Symmetrie der Daten, oder eine Rate 0 von der Seite gesehen)',
+  combination: 'die Daten bestimmen nur eine Kombination mit {others}',
+  header: 'Anpassung des Modells „{model}“ an {samples} Messwerte ({kinds}), Beginn bei t = {t0} s',
+  droppedRows: '({n} Zeilen mit fehlenden Werten wurden weggelassen)',
+  combinationValue: 'stattdessen bestimmt: {label} = {value} ± {err}',
+  mirror: 'die Daten können diese Bewegung nicht von ihrem Spiegelbild (y → −y) unterscheiden: die Richtung der Seitwärtsbewegung ist eine Wahl',
+  planar: 'die Schwingung wurde in einer Ebene angepasst (ein Scharnier): kein seitlicher Startwinkel und keine seitliche Startgeschwindigkeit',
+  residual: '{kind}: die Anpassung verfehlt die Daten um {rms} {unit} (rms); das eigene Rauschen der Daten ist etwa {floor} {unit}; Autokorrelation der Abweichungen bei Abstand 1: {lag1} (nahe 0: zufällige Abweichungen, nahe 1: Abweichungen mit Muster)',
+  chi2: 'chi2/dof = {reduced} (chi2 = {chi2} bei {dof} Freiheitsgraden): die Abweichungen in Einheiten des angegebenen Rauschens; etwa 1 heißt, die Anpassung ist so nah, wie das Rauschen erlaubt, viel mehr heißt, dem Modell fehlt etwas',
+  chi2Estimated: 'chi2/dof = {reduced} (chi2 = {chi2} bei {dof} Freiheitsgraden): das Rauschen wurde aus den Abweichungen selbst geschätzt, daher ist chi2/dof per Konstruktion 1 und sagt hier nichts; siehe die Zeilen darüber',
+  noise: 'Rauschen der {kind}: {sigma} {unit}',
+  fixed: 'festgehalten: {param} = {value} {unit}',
+  converged: 'die Anpassung ist konvergiert ({runs} Modellläufe, {seconds} s)',
+  notConvergedItem: 'die Anpassung ist NICHT konvergiert ({runs} Modellläufe, {seconds} s): die Werte sind die besten erreichten',
+  'p.length': 'Länge l',
+  'p.g': 'Schwerebeschleunigung g',
+  'p.mass': 'Masse m',
+  'p.damping': 'Reibung (Dämpfung)',
+  'p.drag': 'Luftwiderstand',
+  'p.theta0': 'Startwinkel zur Senkrechten',
+  'p.phi0': 'Startrichtung um die Senkrechte',
+  'p.theta_dot0': 'Startgeschwindigkeit der Schwingung (Winkel pro Sekunde)',
+  'p.phi_dot0': 'Startgeschwindigkeit um die Senkrechte (Winkel pro Sekunde)',
+  'p.pivot_x': 'Aufhängepunkt x',
+  'p.pivot_y': 'Aufhängepunkt y',
+  'p.pivot_z': 'Aufhängepunkt z',
+  'p.t_offset': 'Zeitversatz der Daten',
+  'p.scale': 'Maßstab der Positionen',
+  'p.angle_offset': 'Nullpunkt des Winkelsensors',
+  'p.force_bias': 'Versatz des Beschleunigungssensors',
+  'p.rate_bias': 'Versatz des Drehratensensors',
+  'p.perspective': 'Kameraperspektive (1/Abstand)',
+  'k.positions': 'Positionen',
+  'k.horizontal': 'waagrechten Positionen',
+  'k.angles': 'Winkel',
+  'k.planar_angle': 'Schwingwinkel',
+  'k.specific_force': 'Beschleunigungsmesswerte',
+  'k.angular_speed': 'Drehratenmesswerte',
+  'm.ideal': 'ideales Pendel',
+  'm.damped': 'Pendel mit Reibung',
+  'm.rotating': 'Pendel auf der drehenden Erde',
+  'm.slewing': 'Pendel am Drehkran',
+  'm.vibrating': 'Pendel an gerütteltem Aufhängepunkt',
+  'm.spring': 'Schwingfeder',
+  notDetermined: 'nicht bestimmt: {reason}',
+};
+
+const FR: Table = {
+  explainsLittle: '{kind} : le mouvement ajusté n’explique que {percent} % de la variation des données : les données ne montrent peut-être pas d’oscillation au-dessus de leur bruit, ou le modèle ou les valeurs de départ sont très loin',
+  correlatedNoise: '{kind} : les écarts se suivent (autocorrélation au pas 1 : {lag1}) comme le bruit d’un suivi vidéo ou d’un filtre, pas comme un mauvais modèle : les barres d’erreur ont été élargies en conséquence',
+  systematicDrift: '{kind} : l’ajustement manque les données systématiquement, avec une lente dérive : les écarts (rms {rms}) valent {ratio} fois le bruit propre des données ({floor}). Il manque quelque chose au modèle (un autre frottement, un pivot qui bouge, une mauvaise échelle), ou le bruit lui-même est corrélé',
+  systematic: '{kind} : l’ajustement manque les données systématiquement : les écarts (rms {rms}) valent {ratio} fois le bruit propre des données ({floor}). Il manque quelque chose au modèle (un autre frottement, un décalage du capteur, un pivot qui bouge, une mauvaise échelle), ou le bruit lui-même est corrélé',
+  correlatedSmall: '{kind} : les écarts se suivent (autocorrélation au pas 1 : {lag1}) sans dépasser le bruit des données : bruit corrélé, ou petit effet absent du modèle ; les barres d’erreur ont été élargies en conséquence',
+  aboveFloor: '{kind} : les écarts (rms {rms}) valent {ratio} fois le bruit lu dans les données ({floor}) : le modèle ne convient pas, ou le bruit n’est pas aléatoire',
+  outliers: '{kind} : {n} valeurs sont loin de l’ajustement (plus de {sigmas} écarts-types) : des valeurs aberrantes ?',
+  chi2Large: 'le mouvement ajusté manque les données de {factor} fois leur bruit donné (chi2 = {chi2}) : improbable pour un bon modèle. Il manque quelque chose au modèle (frottement, pivot qui bouge), le bruit donné est trop petit, ou l’ajustement est bloqué (essayer d’autres valeurs de départ)',
+  chi2Small: 'chi2/dof = {reduced} est improbablement petit pour {dof} degrés de liberté : le bruit donné est trop grand, et les barres d’erreur aussi',
+  blocksDisagree: 'les {n} parties de l’enregistrement, ajustées chacune seule, sont en désaccord : {param} = {values} (les parties dans l’ordre du temps), écartées de {scale} fois leurs barres d’erreur. Il manque au modèle quelque chose qui change le long de l’enregistrement (un frottement qui dépend de l’amplitude, un capteur qui dérive, une charnière imparfaite) : les barres d’erreur ont été élargies en conséquence',
+  gFar: 'le g ajusté = {g} m/s² ne correspond à aucune planète (Terre : 9,81 m/s²) : les données sont-elles en unités SI (mètres, pas mm ni pixels ; secondes ; radians) ?',
+  pivotFitted: 'les positions ne pendent pas de l’origine : la position du pivot a aussi été ajustée',
+  timeLimit: 'l’ajustement s’est arrêté à sa limite de {seconds} s : les valeurs sont les meilleures atteintes',
+  notConverged: 'l’ajustement n’a pas convergé : les valeurs sont les meilleures atteintes',
+  dropped: '{n} lignes sur {total} avaient une valeur manquante ou infinie et ont été écartées',
+  sorted: 'les temps n’étaient pas croissants : les lignes ont été triées',
+  lengthHint: 'les positions sont à {radius} m du pivot, mais le pendule mesure {length} m : les positions sont-elles en mètres et le pivot est-il juste ? L’ajustement part de la distance des données',
+  notFinite: 'la réponse du modèle n’est pas finie à l’ajustement',
+  flat: 'les données ne changent pas avec lui (une symétrie des données, ou une vitesse nulle vue de côté)',
+  combination: 'les données ne déterminent qu’une combinaison avec {others}',
+  header: 'ajustement du modèle « {model} » à {samples} mesures ({kinds}), début à t = {t0} s',
+  droppedRows: '({n} lignes avec des valeurs manquantes ont été écartées)',
+  combinationValue: 'déterminé à la place : {label} = {value} ± {err}',
+  mirror: 'les données ne distinguent pas ce mouvement de son image miroir (y → −y) : le sens du mouvement latéral est un choix',
+  planar: 'l’oscillation a été ajustée dans un plan (une charnière) : ni angle ni vitesse latérale au départ',
+  residual: '{kind} : l’ajustement manque les données de {rms} {unit} (rms) ; le bruit propre des données est d’environ {floor} {unit} ; autocorrélation des écarts au pas 1 : {lag1} (près de 0 : écarts aléatoires, près de 1 : écarts qui suivent un motif)',
+  chi2: 'chi2/dof = {reduced} (chi2 = {chi2} pour {dof} degrés de liberté) : les écarts mesurés en unités du bruit donné ; environ 1 signifie que l’ajustement est aussi proche que le bruit le permet, beaucoup plus qu’il manque quelque chose au modèle',
+  chi2Estimated: 'chi2/dof = {reduced} (chi2 = {chi2} pour {dof} degrés de liberté) : le bruit a été estimé à partir des écarts eux-mêmes, donc chi2/dof vaut 1 par construction et ne dit rien ici ; voir les lignes au-dessus',
+  noise: 'bruit des {kind} : {sigma} {unit}',
+  fixed: 'fixé : {param} = {value} {unit}',
+  converged: 'l’ajustement a convergé ({runs} calculs du modèle, {seconds} s)',
+  notConvergedItem: 'l’ajustement n’a PAS convergé ({runs} calculs du modèle, {seconds} s) : les valeurs sont les meilleures atteintes',
+  'p.length': 'longueur l',
+  'p.g': 'pesanteur g',
+  'p.mass': 'masse m',
+  'p.damping': 'frottement (amortissement)',
+  'p.drag': 'résistance de l’air',
+  'p.theta0': 'angle de départ par rapport à la verticale',
+  'p.phi0': 'direction de départ autour de la verticale',
+  'p.theta_dot0': 'vitesse de départ de l’oscillation (angle par seconde)',
+  'p.phi_dot0': 'vitesse de départ autour de la verticale (angle par seconde)',
+  'p.pivot_x': 'position du pivot x',
+  'p.pivot_y': 'position du pivot y',
+  'p.pivot_z': 'position du pivot z',
+  'p.t_offset': 'décalage temporel des données',
+  'p.scale': 'échelle des positions',
+  'p.angle_offset': 'zéro du capteur d’angle',
+  'p.force_bias': 'décalage de l’accéléromètre',
+  'p.rate_bias': 'décalage du gyroscope',
+  'p.perspective': 'perspective de la caméra (1/distance)',
+  'k.positions': 'positions',
+  'k.horizontal': 'positions horizontales',
+  'k.angles': 'angles',
+  'k.planar_angle': 'angle d’oscillation',
+  'k.specific_force': 'mesures de l’accéléromètre',
+  'k.angular_speed': 'mesures du gyroscope',
+  'm.ideal': 'pendule idéal',
+  'm.damped': 'pendule avec frottement',
+  'm.rotating': 'pendule sur la Terre qui tourne',
+  'm.slewing': 'pendule sur une grue pivotante',
+  'm.vibrating': 'pendule à pivot secoué',
+  'm.spring': 'ressort oscillant',
+  notDetermined: 'non déterminé : {reason}',
+};
+
+/** Every language's table (the keys of EN in each: tests/unit/fitwords.test.ts). */
+export const FIT_WORDS: Record<Lang, Table> = { en: EN, de: DE, fr: FR };
+
+type FitLine = KeyedLine;
+
+function look(key: string): string | undefined {
+  const own = FIT_WORDS[language()][key];
+  return own ?? EN[key];
+}
+
+/** A fitted parameter's name for a student: this table's, else the model registry's label, else the name. */
+export function fitParamName(name: string): string {
+  return look(`p.${name}`) ?? paramWords(name, name, '')[0];
+}
+
+/** A data kind (positions, angles, …) in words. */
+export function fitKindName(kind: string): string {
+  return look(`k.${kind}`) ?? kind;
+}
+
+/** A model in words. */
+export function fitModelName(model: string): string {
+  return look(`m.${model}`) ?? modelWords(model, model);
+}
+
+/** A value of a line in words: code names of kinds, parameters, models and combinations translated. */
+function worded(name: string, value: string): string {
+  const params = (s: string) => s.replace(/[A-Za-z_][A-Za-z_0-9]*/g, (n) => (look(`p.${n}`) !== undefined ? fitParamName(n) : n));
+  if (name === 'kind') return fitKindName(value);
+  if (name === 'kinds') return value.split(',').map(fitKindName).join(', ');
+  if (name === 'param') return fitParamName(value);
+  if (name === 'model') return fitModelName(value);
+  if (name === 'others') return value.split(/,\s*/).map(fitParamName).join(', ');
+  if (name === 'label') return params(value);
+  return value;
+}
+
+/** A keyed line in the page's language; a line without a known key as the server's English text. */
+export function fitLine(line: FitLine): string {
+  const words = line.key === null ? undefined : look(line.key);
+  if (words === undefined) return line.text ?? line.key ?? '';
+  return words.replace(/\{(\w+)\}/g, (m, name: string) => {
+    const v = line.values[name];
+    return v === undefined ? m : worded(name, v);
+  });
+}
+
+/** A fitted parameter as a line: `name = value ± error unit`, or why the data do not determine it. */
+export function fitParamLine(name: string, p: FittedParam): string {
+  const unit = p.unit && p.unit !== '1' ? ` ${p.unit}` : '';
+  const value = `${fitParamName(name)} = ${p.value.toPrecision(6)}`;
+  if (p.determined && p.stderr !== null) return `${value} ± ${p.stderr.toPrecision(2)}${unit}`;
+  const reason = readKeyed(p.reason);
+  const why = reason === null ? '' : fitLine(reason);
+  return `${value}${unit} (${fitLine({ key: 'notDetermined', values: { reason: why } })})`.replace(/\s*:\s*\)$/, ")");
+}
+
+/** The report in the page's language: its header, the fitted parameters, then its other lines. */
+export function fitReportLines(items: readonly KeyedLine[], params: Readonly<Record<string, FittedParam>>): string[] {
+  const [head, ...rest] = items;
+  const lines = head === undefined ? [] : [fitLine(head)];
+  lines.push(...Object.entries(params).map(([name, p]) => `  ${fitParamLine(name, p)}`));
+  lines.push(...rest.map((l) => `  ${fitLine(l)}`));
+  return lines;
+}

@@ -1,0 +1,60 @@
+// The fit report in every language (issue 28; python/pendulab/server/fit_words.py): the English table says what
+// fit_words.json says, every language words every key with the same placeholders, a keyed line is shown in
+// the page's language with its code names worded (no `theta_dot0`), and a line without a known key as the
+// server's English text.
+import { describe, expect, it } from 'vitest';
+import words from '../../../python/pendulab/server/fit_words.json';
+import { setLanguage } from '../../src/i18n';
+import { FIT_WORDS, fitLine, fitParamLine, fitReportLines } from '../../src/i18n/fitwords';
+
+const holes = (s: string) => [...s.matchAll(/\{(\w+)\}/g)].map((m) => m[1]).sort();
+const keys = Object.keys(words).filter((k) => !k.startsWith('_'));
+
+describe('fit words', () => {
+  it('the English table says what fit_words.json says; every language has every key and placeholder', () => {
+    expect(keys.length).toBeGreaterThan(25);
+    for (const k of keys) {
+      const en = (words as Record<string, string>)[k] as string;
+      expect(FIT_WORDS.en[k]).toBe(en);
+      for (const table of Object.values(FIT_WORDS)) expect(holes(table[k] ?? '')).toEqual(holes(en));
+    }
+    const own = Object.keys(FIT_WORDS.en).sort();
+    for (const table of Object.values(FIT_WORDS)) expect(Object.keys(table).sort()).toEqual(own);
+  });
+
+  it('a misfit warning is German on a German page, with the data kind worded', () => {
+    const note = { key: 'systematicDrift', values: { kind: 'positions', rms: '0.00342', ratio: '2.25', floor: '0.00152' }, text: 'positions: the fit misses…' };
+    setLanguage('de');
+    expect(fitLine(note)).toMatch(/^Positionen: die Anpassung verfehlt die Daten systematisch, mit einer langsamen Drift: die Abweichungen \(rms 0\.00342\) sind 2\.25-mal/);
+    setLanguage('fr');
+    expect(fitLine(note)).toMatch(/^positions : l’ajustement manque les données systématiquement/);
+    setLanguage('en');
+    expect(fitLine(note)).toMatch(/^positions: the fit misses the data systematically, with a slow drift/);
+    // unknown or missing key: the server's English words
+    expect(fitLine({ key: 'somethingNew', values: {}, text: 'a new warning' })).toBe('a new warning');
+    expect(fitLine({ key: null, values: {}, text: 'unkeyed' })).toBe('unkeyed');
+  });
+
+  it('names the parameters in student words and says why one is not determined', () => {
+    setLanguage('de');
+    const lines = fitReportLines(
+      [
+        { key: 'header', values: { model: 'ideal', samples: '600', kinds: 'positions', t0: '0' } },
+        { key: 'combinationValue', values: { label: 'g/length', value: '15.8', err: '0.1' } },
+        { key: 'chi2Estimated', values: { chi2: '1192', dof: '1192', reduced: '1' } },
+      ],
+      {
+        theta_dot0: { value: 0.0789, stderr: 1.24, unit: 'rad/s', determined: true },
+        phi0: { value: 0, stderr: null, unit: 'rad', determined: false, reason: { key: 'combination', values: { others: 'phi_dot0, g' } } },
+      },
+    );
+    expect(lines[0]).toBe('Anpassung des Modells „ideales Pendel“ an 600 Messwerte (Positionen), Beginn bei t = 0 s');
+    expect(lines[1]).toBe('  Startgeschwindigkeit der Schwingung (Winkel pro Sekunde) = 0.0789000 ± 1.2 rad/s');
+    expect(lines[2]).toMatch(/Startrichtung um die Senkrechte = 0\.00000 rad \(nicht bestimmt: die Daten bestimmen nur eine Kombination mit Startgeschwindigkeit um die Senkrechte .*, Schwerebeschleunigung g\)/);
+    expect(lines[3]).toBe('  stattdessen bestimmt: Schwerebeschleunigung g/Länge l = 15.8 ± 0.1');
+    expect(lines[4]).toMatch(/per Konstruktion 1/);
+    expect(lines.join('\n')).not.toMatch(/theta_dot0|phi0|phi_dot0/);
+    setLanguage('en');
+    expect(fitParamLine('mass', { value: 1, stderr: null, unit: 'kg', determined: false })).toBe('mass m = 1.00000 kg (not determined)');
+  });
+});
