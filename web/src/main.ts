@@ -40,6 +40,7 @@ import { startLoop } from './wiring/loop';
 import type { DrawnPanels } from './wiring/loop';
 import type { LabHandles } from './wiring/debug';
 import { mark } from './wiring/debug';
+import { CraneMode } from './crane';
 
 /** The 3-D view with the drawing quality this machine allows (a software rasteriser — headless
  *  chromium, no GPU — draws without MSAA at one pixel per CSS pixel, and the footer says so). */
@@ -120,6 +121,7 @@ async function main(): Promise<void> {
   twin.extras = new ExtraPendulums(byId('tools'), socketUrl(window.location), explain);
   link.attach(chosen, twin);
   new Glossary(byId('tools'));
+  new CraneMode(lab, byId('tools')); // the crane mode: panel, drawing, keys J L I K (crane/)
   accessibleSliders(controls.gui);
   mark('panels');
   connect(lab, early.held, { controls, tools, toolbar, portraits, energy }, messages, link, analyses, costs);

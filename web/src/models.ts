@@ -3,8 +3,9 @@
 // string (`string`: taut on the sphere, or slack in free flight inside it). No DOM; unit-tested.
 import { t } from './i18n';
 
-/** The models whose bob is not always on the sphere of radius l. */
-export const OFF_SPHERE_MODELS: readonly string[] = ['spring', 'string'];
+/** The models whose bob is not always on the sphere of radius l (the crane mode's load: the hoist changes
+ *  its rope, crane/). */
+export const OFF_SPHERE_MODELS: readonly string[] = ['spring', 'string', 'crane'];
 
 /** True when the model's bob always stays on the sphere |x| = l: the sphere's analyses (exact solution,
  *  V_eff, energy–momentum map, reduced view) apply. False for the swinging spring and the string. */

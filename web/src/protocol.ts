@@ -127,7 +127,8 @@ export type Command =
   | { type: 'resume' }
   | { type: 'step'; n?: number }
   | { type: 'reset' }
-  | { type: 'load_scenario'; name: string };
+  | { type: 'load_scenario'; name: string }
+  | { type: 'crane'; on?: boolean; drive?: [number, number]; move?: [number, number]; stop?: boolean; rope?: number };
 
 // --- notices (server → page), JSON text ---
 
@@ -160,6 +161,42 @@ export interface Status {
   /** How the frames' error_x is obtained (docs/web.md, "Error estimate"). */
   error_estimate?: ErrorEstimateInfo;
   frame_fields: string[];
+  /** The crane mode's state (null outside it; crane/status.ts, docs/web.md "Crane mode"). */
+  crane?: CraneStatus | null;
+}
+
+/** The status's `crane`: rope l [m] (and its rate [m/s], the hoist's target [m]), the trolley's position
+ *  [m] and velocity [m/s], the operator's commanded velocity, the shaper (`off`, `zv`, `zvd`; its impulse
+ *  times [s], amplitudes and design ω [rad/s]), the wind [m/s], c_W·A [m²], ρ [kg/m³], the limits, and the
+ *  last move with its linear residual sway unshaped and shaped [rad] and the time [s] it ends. */
+export interface CraneStatus {
+  rope: number;
+  rope_rate: number;
+  rope_target: number;
+  trolley: Vec3;
+  trolley_velocity: Vec3;
+  command_velocity: Vec3;
+  moving: boolean;
+  hoisting: boolean;
+  shaping: 'off' | 'zv' | 'zvd';
+  shaper: { times: number[]; amplitudes: number[]; omega: number };
+  wind: Vec3;
+  drag_area: number;
+  air_density: number;
+  v_max: number;
+  a_max: number;
+  hoist_speed: number;
+  hoist_accel: number;
+  last_move: {
+    t: number;
+    distance: [number, number];
+    omega: number;
+    shaping: string;
+    residual_unshaped: number;
+    residual_shaped: number;
+    rope: number;
+    end: number;
+  } | null;
 }
 
 /** The status's `error_estimate`: `how` the frames' error_x is obtained — `exact` (the ideal pendulum: the

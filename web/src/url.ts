@@ -267,7 +267,9 @@ export function fromStatus(s: Status): UrlScenario {
 export function commandsFor(u: UrlScenario): Command[] {
   const out: Command[] = [];
   if (u.scenario !== undefined) out.push({ type: 'load_scenario', name: u.scenario });
-  if (u.model !== undefined) out.push({ type: 'set_model', model: u.model, params: { ...u.modelParams } });
+  // the crane mode is entered by its own command (the server's set_model knows the registry's models only)
+  if (u.model === 'crane') out.push({ type: 'crane', on: true }, { type: 'set_params', params: { ...u.modelParams } });
+  else if (u.model !== undefined) out.push({ type: 'set_model', model: u.model, params: { ...u.modelParams } });
   const params: { type: 'set_params'; length?: number; mass?: number; g?: number } = { type: 'set_params' };
   if (u.length !== undefined) params.length = u.length;
   if (u.mass !== undefined) params.mass = u.mass;

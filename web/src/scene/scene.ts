@@ -70,6 +70,9 @@ export class PendulumScene {
   private pivotNow = new THREE.Vector3();
   /** Something drawn changed outside `update` (size, length, camera, stereo): `draw` must render. */
   private invalid = true;
+  /** The crane mode's hook (crane/index.ts): its own drawing placed after each update, and the
+   *  pendulum's body hidden while it draws the rope, hook and load instead. */
+  crane: { afterUpdate(f: Frame | null): void; hidesBody(): boolean } | null = null;
 
   /** `quality` (quality.ts): MSAA, pixel ratio and the sphere of reach's layers for the browser's renderer
    *  (in software: no MSAA, 1, one layer). */
@@ -206,6 +209,18 @@ export class PendulumScene {
   /** Draws the state `f` of a pendulum of mass `mass` [kg] under gravity g [m/s²] along the unit vector
    *  `gdir`, with the trail frames; the pivot at f.pivot, the bob at f.pivot + f.x. */
   update(f: Frame | null, trail: TrailSlice, view: ViewOptions, mass: number, g: number, gdir: Vec3): void {
+    this.updateBody(f, trail, view, mass, g, gdir);
+    this.crane?.afterUpdate(f);
+    if (this.crane?.hidesBody() === true) for (const o of this.body.objects()) o.visible = false;
+  }
+
+  /** Adds a drawing of the crane mode (crane/drawing.ts) to the scene. */
+  addDrawing(o: THREE.Object3D): void {
+    this.scene.add(o);
+    this.invalid = true;
+  }
+
+  private updateBody(f: Frame | null, trail: TrailSlice, view: ViewOptions, mass: number, g: number, gdir: Vec3): void {
     this.body.show(f, view, this.stereo === 'anaglyph', gdir);
     this.drawn = f;
     this.gNow = g;

@@ -30,6 +30,7 @@ import { checkSimpleView } from './simple.mjs';
 import { checkFourPendulums } from './four.mjs';
 import { checkEnergyAndTwin, checkKeyboard, checkLanguage, dataRows, checkLayout, checkPeriodTimer, checkPlots, checkRecordingAndStereo, checkScenarios, checkShare, checkTouch, checkAxe } from './classroom.mjs';
 import { checkDocLinks } from './doclinks.mjs';
+import { checkCrane } from './crane.mjs';
 
 const target = process.argv[2] ?? 'http://127.0.0.1:8765';
 /** "server" (`pendulab serve` at an http URL) or "file" (the one-file lab from file://, no network). */
@@ -271,6 +272,7 @@ try {
     ['words in every language', checkWords],
     ['axe accessibility', checkAxe],
     ['doc links', checkDocLinks],
+    ['crane mode', checkCrane],
   ]) {
     if (ONLY.length > 0 && !ONLY.some((w) => name.includes(w))) continue;
     const t0 = Date.now();
