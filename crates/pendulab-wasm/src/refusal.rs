@@ -21,6 +21,7 @@ fn fields(kind: &str) -> Option<(&'static [&'static str], Option<&'static str>)>
         "set_time_scale" => (&["time_scale"], Some("time_scale")),
         "step" => (&["n"], None),
         "load_scenario" => (&["name"], Some("name")),
+        "crane" => (&pendulab_core::live::crane_wire::KEYS, None),
         "pause" | "resume" | "reset" => (&[], None),
         _ => return None,
     })

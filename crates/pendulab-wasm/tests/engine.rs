@@ -197,7 +197,7 @@ fn refusals_carry_the_servers_message_keys() {
     let messages_json: Value =
         serde_json::from_str(include_str!("../../../python/pendulab/server/messages.json")).unwrap();
     let mut e = Engine::new(CONFIG).unwrap();
-    let cases: [(&str, Option<(&str, Value)>); 15] = [
+    let cases: [(&str, Option<(&str, Value)>); 16] = [
         (
             r#"{"type": "set_params", "length": 5000}"#,
             Some(("too_large", serde_json::json!({"name": "length", "value": "5000", "limit": 1000.0}))),
@@ -236,6 +236,10 @@ fn refusals_carry_the_servers_message_keys() {
             Some(("too_large", serde_json::json!({"name": "n", "value": "200000", "limit": 100000}))),
         ),
         (r#"{"type": "load_scenario"}"#, Some(("missing", serde_json::json!({"name": "name"})))),
+        (
+            r#"{"type": "crane", "on": true, "speed": 1}"#,
+            Some(("unknown_key", serde_json::json!({"name": "speed"}))),
+        ),
         // two problems, or a problem the server does not key: no key
         (r#"{"type": "set_params", "length": 5000, "mass": 0}"#, None),
         (r#"{"type": "set_params", "length": "a"}"#, None),
