@@ -12,7 +12,7 @@ import pytest
 from pydantic import BaseModel
 
 from pendulab._core import LiveSession
-from pendulab.server import protocol
+from pendulab.server import commands
 from pendulab.server.protocol import (
     COMMAND_TYPES,
     CORE_LIMITS,
@@ -65,11 +65,11 @@ def test_every_bounded_field_takes_the_cores_bounds(model: type[BaseModel], fiel
 def test_every_command_field_with_a_bound_is_in_the_table() -> None:
     """No bounded number of a command left out of the comparison above (a new field with its own
     literal bounds would be a second table again)."""
-    models = [m for m in vars(protocol).values() if isinstance(m, type) and issubclass(m, BaseModel)]
+    models = [m for m in vars(commands).values() if isinstance(m, type) and issubclass(m, BaseModel)]
     bounded = {
         (m, name)
         for m in models
-        if m.__module__ == protocol.__name__
+        if m.__module__ == commands.__name__
         for name in m.model_fields
         if _bounds(m, name) != (None, None)
     }

@@ -9,10 +9,12 @@ by ``pendulab serve`` and the tests, so the rest of the package works without it
 - :mod:`.scenarios`: the scenarios a session starts from (examples by name, a file, built in).
 - :mod:`.schema`: ``/api/schema`` (the registry's models and parameters, slider spans).
 - :mod:`.rest`: the computing endpoints (exact solution, V_eff, scenario as TOML).
-- :mod:`.app`: the FastAPI application (static front end, ``/ws``, ``/api/…``).
+- :mod:`.app`: the FastAPI application (static front end, ``/ws``, ``/api/…``); :mod:`.live_socket`
+  admits and serves the WebSocket of each client.
 """
 
-from .app import create_app, run_session, scenarios
+from .app import create_app, scenarios
+from .live_socket import run_session
 from .protocol import FRAME_FIELDS, FRAME_UNITS, RECORD_BYTES, decode_records, encode_records, parse_command
 from .rest import effective_potential, exact_quantities, scenario_toml
 from .schema import schema

@@ -5,13 +5,7 @@
 - ``GET /`` and ``/assets/…``: the front end built from ``web/`` (``make web`` copies it into
   ``static/`` beside this file; it is committed, so a user with only the Python package needs no Node).
 - ``WS /ws``: one :class:`~pendulab.server.session.Session` per client, seated in the room's ticker
-  (:mod:`.ticker`). The handler runs two tasks: one reads and validates commands into the seat's
-  bounded inbox (a client that floods is throttled: beyond :data:`.ticker.MAX_PENDING` waiting
-  commands the rest are dropped with an error notice), the other sends what the seat's outbox
-  receives. The ticker ticks every seat at :data:`TICK_HZ` in worker threads (:mod:`.tick`), which
-  apply the commands and advance the stepper to wall clock × time scale within the session's share
-  of the room's budget. Only the handler writes to its socket, only the ticker's worker touches the
-  session. A client vanishing mid-stream ends its own tasks only.
+  (:mod:`.ticker`), admitted and served by :mod:`.live_socket`.
 - ``GET /api/schema``: every model's parameters (units, limits, defaults), controls, methods, frames.
 - ``GET /api/scenarios``: the example scenarios (model, pendulum, start, method, dt).
 - ``POST /api/exact``: the exact-solution quantities of a state (kind, turning heights, periods, phases).
@@ -38,11 +32,8 @@ no CDN).
 
 from __future__ import annotations
 
-import asyncio
-import contextlib
 import functools
 import logging
-import time
 import weakref
 from collections.abc import Callable, Sequence
 from pathlib import Path
@@ -50,7 +41,7 @@ from typing import Any, TypeVar
 
 import anyio
 import orjson
-from fastapi import FastAPI, Request, WebSocket, WebSocketDisconnect
+from fastapi import FastAPI, Request, WebSocket
 from fastapi.responses import HTMLResponse, JSONResponse, Response
 from fastapi.staticfiles import StaticFiles
 from pydantic import BaseModel, ValidationError
@@ -61,11 +52,9 @@ from .access import LOOPBACK_HOSTS, guard
 from .api_docs import api_docs_page
 from .fit import FIT_OPENAPI, FIT_QUEUE, FIT_WALL_SECONDS, FIT_WORKERS, MAX_FIT_BODY, fit_endpoint
 from .hygiene import RequestBodies, SecurityHeaders
+from .live_socket import admit, loop_limiter, run_session
 from .protocol import (
-    CommandError,
     ExactRequest,
-    error_notice,
-    parse_command,
     validation_problems,
 )
 from .rest import (
@@ -76,20 +65,14 @@ from .rest import (
     scenario_toml,
 )
 from .room import MAX_REQUESTS_PER_CLIENT, MAX_SESSIONS_PER_CLIENT, Room, client_key
-from .schema import TICK_HZ, schema
-from .session import TICK_BUDGET, Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
-from .tick import Message, first_messages
-from .ticker import Seat, room_ticker
+from .schema import schema
+from .session import Session, Setup, describe, example_resolver, resolve_scenario, scenario_files
 from .views import EMRequest, ReducedRequest, em_view, reduced_view
-from .worker import Busy, WorkFailed, WorkInvalid, WorkTimeout, shared_pool
+from .worker import Busy, WorkerPool, WorkFailed, WorkInvalid, WorkTimeout, shared_pool
 
 MAX_SESSIONS = 64
 """Default for the most lab sessions (WebSockets) at once (a class of 30 with a second tab each); more
 are refused with an error notice."""
-
-STEP_THREADS = 4
-"""Worker threads computing a new session's first messages (its status and first frame); the ticks
-themselves run in the room's ticker (:mod:`.ticker`)."""
 
 REST_THREADS = 1
 """Worker threads of the quick POST endpoints (V_eff, TOML: bounded work); at most this many run at
@@ -163,7 +146,7 @@ async def _compute(
     limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter], fn: Callable[..., Any], *args: Any
 ) -> Any:
     """``fn(*args)`` in one of the REST worker threads; :class:`_Busy` when too many already wait."""
-    limiter = _loop_limiter(limiters, REST_THREADS)
+    limiter = loop_limiter(limiters, REST_THREADS)
     if limiter.available_tokens == 0 and limiter.statistics().tasks_waiting >= REST_QUEUE:
         raise _Busy
     return await anyio.to_thread.run_sync(functools.partial(fn, *args), limiter=limiter)
@@ -191,38 +174,26 @@ def create_app(
     requests under way or waiting (one more: 429, key ``device_busy``). Raises
     :class:`pendulab.ScenarioError` for a bad scenario."""
     default = resolve_scenario(scenario)
-    resolve = example_resolver(default)
-    static = STATIC_DIR if static_dir is None else static_dir
     app = FastAPI(title="Pendulab lab", version=__version__, docs_url=None, redoc_url=None)
     app.add_middleware(RequestBodies, larger={"/api/fit": MAX_FIT_BODY})
     app.add_middleware(guard_middleware, hosts=list(allowed_hosts), token=token)
     app.add_middleware(SecurityHeaders)
-    rest_limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
-    active = 0
     room = Room(max_sessions_per_client, computations=max_computations_per_client)
     analyses = shared_pool("analysis", WORK_WORKERS, REST_QUEUE, work_seconds)
     fits = shared_pool("fit", FIT_WORKERS, FIT_QUEUE, fit_seconds)
     app.state.room, app.state.pools = room, (analyses, fits)
-    cached: dict[str, bytes] = {}
+    _add_error_handlers(app)
+    _add_gets(app, default)
+    _add_posts(app, room, analyses)
+    app.add_api_route("/api/fit", fit_endpoint(fits, room), methods=["POST"], openapi_extra=FIT_OPENAPI)
+    _add_websocket(app, default, max_sessions, room)
+    _add_front_end(app, STATIC_DIR if static_dir is None else static_dir)
+    return app
 
-    def once(name: str, make: Callable[[], Any]) -> Response:
-        """A GET answer computed once per app (the schema and the examples do not change while the
-        server runs): a flood of GETs costs no computing."""
-        if name not in cached:
-            cached[name] = orjson.dumps(make())
-        return Response(cached[name], media_type="application/json")
 
-    async def analysis(request: Request, fn: Callable[..., Any], req: BaseModel) -> Response:
-        """``fn(req)`` in the analysis worker process, as JSON; 422/429/503 as the module doc says."""
-        async with room.request(client_key(request.scope)) as allowed:
-            if not allowed:
-                return room.too_many_requests()
-            try:
-                return Response(await analyses.run(fn, req), media_type="application/json")
-            except WorkTimeout as e:
-                return JSONResponse({"detail": str(e)}, status_code=503)
-            except WorkInvalid as e:
-                return _unprocessable(e)
+def _add_error_handlers(app: FastAPI) -> None:
+    """The answers to a full worker queue (503), a failed computation (500, logged) and a full thread
+    queue (503)."""
 
     @app.exception_handler(Busy)
     async def busy_pool(request: Request, exc: Busy) -> JSONResponse:
@@ -241,6 +212,18 @@ def create_app(
             headers={"retry-after": "1"},
         )
 
+
+def _add_gets(app: FastAPI, default: Setup) -> None:
+    """``GET /api/docs``, ``/api/schema`` and ``/api/scenarios``: the last two computed once per app
+    (the schema and the examples do not change while the server runs: a flood of GETs costs no
+    computing)."""
+    cached: dict[str, bytes] = {}
+
+    def once(name: str, make: Callable[[], Any]) -> Response:
+        if name not in cached:
+            cached[name] = orjson.dumps(make())
+        return Response(cached[name], media_type="application/json")
+
     @app.get("/api/docs", response_class=HTMLResponse, include_in_schema=False)
     def api_docs() -> HTMLResponse:
         return HTMLResponse(api_docs_page(app.openapi()))
@@ -258,6 +241,23 @@ def create_app(
     @app.get("/api/scenarios")
     def get_scenarios() -> Response:
         return once("scenarios", listed_scenarios)
+
+
+def _add_posts(app: FastAPI, room: Room, analyses: WorkerPool) -> None:
+    """The POST analyses (exact, V_eff, reduced view, EM map) and ``POST /api/scenario.toml``."""
+    rest_limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
+
+    async def analysis(request: Request, fn: Callable[..., Any], req: BaseModel) -> Response:
+        """``fn(req)`` in the analysis worker process, as JSON; 422/429/503 as the module doc says."""
+        async with room.request(client_key(request.scope)) as allowed:
+            if not allowed:
+                return JSONResponse(room.too_many_requests(), status_code=429, headers={"retry-after": "1"})
+            try:
+                return Response(await analyses.run(fn, req), media_type="application/json")
+            except WorkTimeout as e:
+                return JSONResponse({"detail": str(e)}, status_code=503)
+            except WorkInvalid as e:
+                return _unprocessable(e)
 
     def post_route(
         path: str, name: str, kind: type[M], fn: Callable[[M], Any], *, worker: bool = True
@@ -298,29 +298,17 @@ def create_app(
             headers={"content-disposition": 'attachment; filename="pendulab-scenario.toml"'},
         )
 
-    app.add_api_route("/api/fit", fit_endpoint(fits, room), methods=["POST"], openapi_extra=FIT_OPENAPI)
+
+def _add_websocket(app: FastAPI, default: Setup, max_sessions: int, room: Room) -> None:
+    """``WS /ws``: each client's session from ``default``, admitted and served by :mod:`.live_socket`."""
+    resolve = example_resolver(default)
+    active = 0
 
     @app.websocket("/ws")
     async def websocket(ws: WebSocket) -> None:
         nonlocal active
-        await ws.accept()
-        if active >= max_sessions:
-            message = (
-                f"the server is full: {active} lab sessions are open, the most it serves at once "
-                f"(pendulab serve --max-sessions {max_sessions}); close another tab or try again later"
-            )
-            with contextlib.suppress(WebSocketDisconnect, OSError, RuntimeError):
-                await ws.send_json(error_notice(message, None, "server_full", {"active": active}))
-                await ws.close(code=1013, reason="server full")
-            return
-        key = client_key(ws.scope)
-        refused = room.open_session(key)
-        if refused is not None:
-            with contextlib.suppress(WebSocketDisconnect, OSError, RuntimeError):
-                await ws.send_json(
-                    error_notice(refused, None, "device_full", {"have": room.sessions.get(key, 0)})
-                )
-                await ws.close(code=1013, reason="too many sessions from this device")
+        key = await admit(ws, active, max_sessions, room)
+        if key is None:
             return
         active += 1
         try:
@@ -329,105 +317,18 @@ def create_app(
             active -= 1
             room.close_session(key)
 
+
+def _add_front_end(app: FastAPI, static: Path) -> None:
+    """The built front end at ``/``, or a page saying how to build it."""
     if (static / "index.html").is_file():
         app.mount("/", StaticFiles(directory=static, html=True), name="static")
-    else:
+        return
 
-        @app.get("/", response_class=HTMLResponse)
-        def not_built() -> HTMLResponse:
-            return HTMLResponse(_NOT_BUILT, status_code=503)
-
-    return app
+    @app.get("/", response_class=HTMLResponse)
+    def not_built() -> HTMLResponse:
+        return HTMLResponse(_NOT_BUILT, status_code=503)
 
 
 def guard_middleware(app: Any, hosts: list[str], token: str | None) -> Any:
     """The access checks of :mod:`.access` as one middleware (for ``app.add_middleware``)."""
     return guard(app, hosts, token)
-
-
-def _loop_limiter(store: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter], tokens: int) -> Any:
-    """A capacity limiter of ``tokens`` for the running event loop (one per loop: the tests run apps in
-    several)."""
-    loop = asyncio.get_running_loop()
-    limiter = store.get(loop)
-    if limiter is None:
-        limiter = store[loop] = anyio.CapacityLimiter(tokens)
-    return limiter
-
-
-_STEP_LIMITERS: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter] = weakref.WeakKeyDictionary()
-
-
-async def run_session(
-    ws: WebSocket, session: Session, tick_hz: float = TICK_HZ, share: Callable[[], float] | None = None
-) -> None:
-    """Serves one client until it goes away (see the module doc): its commands go to its
-    :class:`~.ticker.Seat` in the room's :class:`~.ticker.Ticker`, which ticks every session in worker
-    threads (:func:`.tick.tick_messages`, round robin) within ``share()`` seconds each (the session's
-    share of the room, :meth:`.room.Room.share`; default one tick's budget); this handler sends what
-    the seat's outbox receives. The event loop only moves messages."""
-    seat = Seat(session, share or (lambda: TICK_BUDGET))
-    limiter = _loop_limiter(_STEP_LIMITERS, STEP_THREADS)
-
-    async def receive() -> None:
-        while True:
-            msg = await ws.receive()
-            if msg["type"] == "websocket.disconnect":
-                return
-            text, data = msg.get("text"), msg.get("bytes")
-            item: Any
-            try:
-                item = parse_command(text if text is not None else (data or b""))
-            except CommandError as e:
-                item = e
-            seat.put(item)
-
-    async def send_all(messages: list[Message]) -> None:
-        for m in messages:
-            if isinstance(m, bytes):
-                await ws.send_bytes(m)
-            else:
-                await ws.send_json(m)
-
-    async def send() -> None:
-        await send_all(await anyio.to_thread.run_sync(first_messages, session, limiter=limiter))
-        ticker = room_ticker(tick_hz)
-        seat.last = time.monotonic()
-        ticker.join(seat)
-        try:
-            while True:
-                await seat.ready.wait()
-                seat.ready.clear()
-                if seat.failed is not None:
-                    raise seat.failed
-                while seat.outbox:
-                    await send_all(seat.outbox.popleft())
-        finally:
-            ticker.leave(seat)
-
-    async with anyio.create_task_group() as tg:
-
-        async def reader() -> None:
-            with contextlib.suppress(WebSocketDisconnect, OSError):
-                await receive()
-            tg.cancel_scope.cancel()  # the client is gone: stop ticking
-
-        async def ticker() -> None:
-            try:
-                await send()
-            except (WebSocketDisconnect, OSError):
-                pass  # sending to a client that went away
-            except RuntimeError as e:  # starlette: sending after the socket closed
-                if "close" not in str(e).lower() and "disconnect" not in str(e).lower():
-                    raise
-            except Exception as e:
-                log.error("lab session failed", exc_info=e)
-                with contextlib.suppress(Exception):
-                    await ws.send_json(
-                        error_notice(f"internal error: {e}", None, "internal_error", {"detail": str(e)})
-                    )
-                    await ws.close(code=1011)
-            tg.cancel_scope.cancel()
-
-        tg.start_soon(reader)
-        tg.start_soon(ticker)

@@ -261,7 +261,7 @@ def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[
             return _problem(422, validation_problems(e, skip=0))
         async with room.request(client_key(request.scope)) as allowed:
             if not allowed:
-                return room.too_many_requests()
+                return JSONResponse(room.too_many_requests(), status_code=429, headers={"retry-after": "1"})
             seconds = pool.seconds
             try:
                 out = await pool.run(fit_data, req, min(FIT_SECONDS, 0.5 * seconds))

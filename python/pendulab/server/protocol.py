@@ -9,7 +9,8 @@ estimate"). The layout is read from ``frame.json`` beside this file, which the p
 
 **Commands** (page → server): one JSON object per text message, told apart by ``"type"``
 (a pydantic discriminated union, :data:`COMMAND`): ``set_params``, ``set_model``, ``set_state``,
-``set_method``, ``set_time_scale``, ``pause``, ``resume``, ``step``, ``reset``, ``load_scenario``.
+``set_method``, ``set_time_scale``, ``pause``, ``resume``, ``step``, ``reset``, ``load_scenario``,
+``crane``.
 Unknown keys, wrong types, NaN/inf and out-of-range values are refused with an ``error`` notice naming
 the problem.
 
@@ -17,34 +18,101 @@ the problem.
 :meth:`pendulab.server.session.Session.status`), ``{"type": "error", "message": …, "command": …}`` and,
 for the string, ``{"type": "event", "kind": "slack" | "taut", "t": …, "energy_lost": …, "x": […],
 "epoch": …, "skipped": …}`` for each leave and snap (:func:`event_notice`).
+
+The frames are here; the commands are :mod:`.commands`, the notices and message keys :mod:`.notices`.
+This module names them all, so ``from pendulab.server.protocol import …`` reaches the whole protocol.
 """
 
 from __future__ import annotations
 
 import json
-import math
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
-from .._core import LiveSession, models
-from ..model import Pendulum, State
-from ..simulation import method_names
-from .live_models import OWN_STEPPER_MODELS
+from .commands import (
+    COMMAND,
+    COMMAND_TYPES,
+    COMMON_PARAMS,
+    CORE_LIMITS,
+    LIMITS,
+    MAX_MESSAGE_BYTES,
+    MODEL_SPECS,
+    OFFLINE_MODELS,
+    Command,
+    Crane,
+    ExactRequest,
+    LoadScenario,
+    Pause,
+    Reset,
+    Resume,
+    SetMethod,
+    SetModel,
+    SetParams,
+    SetState,
+    SetTimeScale,
+    StateSpec,
+    Step,
+    own_params,
+    parse_command,
+)
+from .notices import (
+    MESSAGES,
+    CommandError,
+    error_notice,
+    error_notice_of,
+    event_notice,
+    finite_or_none,
+    keyed_notice,
+    message,
+    validation_key,
+    validation_problems,
+)
 
-if TYPE_CHECKING:
-    from .._core import LiveLimit, ModelInfo, ParamSpec
+__all__ = [
+    "COMMAND",
+    "COMMAND_TYPES",
+    "COMMON_PARAMS",
+    "CORE_LIMITS",
+    "FRAME_FIELDS",
+    "FRAME_UNITS",
+    "LIMITS",
+    "MAX_MESSAGE_BYTES",
+    "MESSAGES",
+    "MODEL_SPECS",
+    "OFFLINE_MODELS",
+    "RECORD_BYTES",
+    "RECORD_LEN",
+    "Command",
+    "CommandError",
+    "Crane",
+    "ExactRequest",
+    "LoadScenario",
+    "Pause",
+    "Reset",
+    "Resume",
+    "SetMethod",
+    "SetModel",
+    "SetParams",
+    "SetState",
+    "SetTimeScale",
+    "StateSpec",
+    "Step",
+    "decode_records",
+    "encode_records",
+    "error_notice",
+    "error_notice_of",
+    "event_notice",
+    "finite_or_none",
+    "keyed_notice",
+    "message",
+    "own_params",
+    "parse_command",
+    "validation_key",
+    "validation_problems",
+]
 
 _LAYOUT = json.loads((Path(__file__).with_name("frame.json")).read_text(encoding="utf-8"))
-#: the error notices a page translates: key -> English words with {placeholders} (``messages.json``)
-MESSAGES: dict[str, str] = {
-    k: v
-    for k, v in json.loads(Path(__file__).with_name("messages.json").read_text(encoding="utf-8")).items()
-    if not k.startswith("_")
-}
-
 FRAME_FIELDS: tuple[str, ...] = tuple(_LAYOUT["fields"])
 """Names of the float64 values of one frame record, in wire order."""
 
@@ -54,39 +122,6 @@ FRAME_UNITS: tuple[str, ...] = tuple(_LAYOUT["units"])
 RECORD_LEN = len(FRAME_FIELDS)
 RECORD_BYTES = 8 * RECORD_LEN
 _WIRE = np.dtype("<f8")
-
-MAX_MESSAGE_BYTES: int = LiveSession.MAX_MESSAGE_BYTES
-"""Longest command the server reads [characters] (a command is a few hundred bytes): the core's
-(``live::wire::MAX_MESSAGE_BYTES``)."""
-
-CORE_LIMITS: dict[str, LiveLimit] = LiveSession.limits()
-"""The lab's command limits as the core checks them (``crates/pendulab-core/src/live/wire.rs``,
-``LIMITS``; the page's engine checks the same table): name → min, max, unit. The one source of the
-bounds below and of the commands' pydantic fields (the core itself accepts any finite g and any
-positive l, m outside the lab)."""
-
-_CONTROLS: dict[str, tuple[str, dict[str, float]]] = {
-    "length": ("length", {"ui_min": 0.1, "ui_max": 5.0, "step": 0.01}),
-    "mass": ("mass", {"ui_min": 0.1, "ui_max": 10.0, "step": 0.01}),
-    "g": ("g", {"ui_min": -30.0, "ui_max": 30.0, "step": 0.01}),
-    "dt": ("dt", {"ui_min": 1e-4, "ui_max": 0.05, "step": 1e-4, "default": 1e-3}),
-    "time_scale": ("time_scale", {"ui_min": 0.01, "ui_max": 100.0, "step": 0.01, "default": 1.0}),
-    "step_n": ("n", {}),
-}
-"""The live controls: the core's limit each takes its bounds from, and how the page shows it (slider
-range, step, default; presentation only)."""
-
-
-def _bounds(core_name: str, integer: bool) -> dict[str, float]:
-    lim = CORE_LIMITS[core_name]
-    lo, hi = lim["min"], lim["max"]
-    return {"min": int(lo), "max": int(hi)} if integer else {"min": lo, "max": hi}
-
-
-LIMITS: dict[str, dict[str, float]] = {
-    name: _bounds(core, name == "step_n") | ui for name, (core, ui) in _CONTROLS.items()
-}
-"""Limits of the live controls: the core's bounds (:data:`CORE_LIMITS`) with the page's presentation."""
 
 
 def encode_records(records: np.ndarray) -> bytes:
@@ -100,363 +135,3 @@ def decode_records(data: bytes) -> np.ndarray:
     if len(data) == 0 or len(data) % RECORD_BYTES:
         raise ValueError(f"a frame message has a multiple of {RECORD_BYTES} bytes, got {len(data)}")
     return np.frombuffer(data, dtype=_WIRE).astype(np.float64).reshape(-1, RECORD_LEN)
-
-
-COMMON_PARAMS = ("length", "mass", "g")
-"""The parameters every model shares (l [m], m [kg], g [m/s²]); the rest are a model's own."""
-
-MODEL_SPECS: dict[str, ModelInfo] = {
-    m["name"]: m for m in models() if m["interactive"] or m["name"] in OWN_STEPPER_MODELS
-}
-"""The core's models that run in the lab, by name: parameters with units, defaults, limits. Those of
-``pendulab.models()`` marked ``interactive`` (the incremental ``pendulab.Stepper``), and the swinging
-spring and the string with their own core steppers (:mod:`pendulab.server.live_models`)."""
-
-OFFLINE_MODELS = tuple(m["name"] for m in models() if m["name"] not in MODEL_SPECS)
-"""Models of the registry that only run with ``pendulab run`` / ``pl.simulate`` (a sampled pivot path:
-it needs arrays), not in the lab."""
-
-
-def own_params(model: str) -> list[ParamSpec]:
-    """The parameters of ``model`` beyond length, mass and g, in the registry's order."""
-    return [p for p in MODEL_SPECS[model]["params"] if p["name"] not in COMMON_PARAMS]
-
-
-def _check_param_names(model: str, names: Any) -> None:
-    allowed = [p["name"] for p in own_params(model)]
-    unknown = [n for n in names if n not in allowed]
-    if unknown:
-        has = f"its parameters: {', '.join(allowed)}" if allowed else "it has none besides length, mass, g"
-        raise ValueError(f"the {model!r} model has no parameter {', '.join(map(repr, unknown))}; {has}")
-
-
-# --- commands -----------------------------------------------------------------------------------------
-
-
-class _Command(BaseModel):
-    model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
-
-
-def _lim(name: str) -> dict[str, float]:
-    return {"ge": LIMITS[name]["min"], "le": LIMITS[name]["max"]}
-
-
-class SetParams(_Command):
-    """Change the pendulum's parameters, keeping its model; omitted values stay. A new length rescales
-    the state (same angles and rates). ``params``: the current model's own parameters by name, SI units
-    (``GET /api/schema`` → ``models``); the session checks the names, the core the values."""
-
-    type: Literal["set_params"]
-    length: float | None = Field(None, description="rod length l in m", **_lim("length"))
-    mass: float | None = Field(None, description="bob mass m in kg", **_lim("mass"))
-    g: float | None = Field(None, description="gravity g in m/s² (g > 0 pulls along -z)", **_lim("g"))
-    params: dict[str, float] | None = Field(None, description="the model's own parameters (SI units)")
-
-    @model_validator(mode="after")
-    def _something(self) -> SetParams:
-        if self.length is None and self.mass is None and self.g is None and not self.params:
-            raise ValueError("give at least one of length (m), mass (kg), g (m/s²), params {name: value}")
-        return self
-
-
-class SetModel(_Command):
-    """Switch to another model of the core's registry (``pendulab.models()``), keeping length, mass, g,
-    the state and t; its own parameters are the registry's defaults overridden by ``params`` (SI units)."""
-
-    type: Literal["set_model"]
-    model: str = Field(min_length=1, max_length=40)
-    params: dict[str, float] = Field(default_factory=dict, description="the model's own parameters (SI)")
-
-    @model_validator(mode="after")
-    def _known(self) -> SetModel:
-        if self.model in OFFLINE_MODELS:
-            raise ValueError(
-                f"model {self.model!r} does not run in the lab (use pendulab run); "
-                f"the lab's models: {', '.join(MODEL_SPECS)}"
-            )
-        if self.model not in MODEL_SPECS:
-            raise ValueError(f"unknown model {self.model!r}; available: {', '.join(MODEL_SPECS)}")
-        _check_param_names(self.model, self.params)
-        return self
-
-
-Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
-
-
-class StateSpec(_Command):
-    """A state on TS² (for the swinging spring any (x, v) with x ≠ 0; for the string also a slack one,
-    strictly inside the sphere): either Cartesian ``x`` [m] and ``v`` [m/s] (on TS², or moved there with
-    ``project: true``) or angles ``theta`` (from the downward vertical), ``phi`` [rad] and rates
-    ``theta_dot``, ``phi_dot`` [rad/s] (omitted ones are 0)."""
-
-    x: Vec3 | None = None
-    v: Vec3 | None = None
-    project: bool = False
-    theta: float | None = None
-    phi: float | None = None
-    theta_dot: float | None = None
-    phi_dot: float | None = None
-
-    @model_validator(mode="after")
-    def _one_form(self) -> StateSpec:
-        cartesian = [k for k in ("x", "v") if getattr(self, k) is not None]
-        angles = [k for k in ("theta", "phi", "theta_dot", "phi_dot") if getattr(self, k) is not None]
-        if cartesian and angles:
-            raise ValueError(
-                f"give either x and v or angles (theta, phi, theta_dot, phi_dot), not both: "
-                f"got {', '.join(cartesian + angles)}"
-            )
-        if cartesian and len(cartesian) != 2:
-            raise ValueError("a Cartesian state needs both x (3 numbers, m) and v (3 numbers, m/s)")
-        if not cartesian and self.theta is None:
-            raise ValueError("give x and v (m, m/s), or at least theta (rad) with phi, theta_dot, phi_dot")
-        return self
-
-    def to_state(self, pendulum: Pendulum) -> State:
-        """The state for ``pendulum``; ``InvalidInputError`` when it is off TS² (and not projected)."""
-        if self.x is not None and self.v is not None:
-            return pendulum.state(self.x, self.v, project=self.project)
-        return pendulum.state_from_angles(
-            float(self.theta or 0.0),
-            float(self.phi or 0.0),
-            float(self.theta_dot or 0.0),
-            float(self.phi_dot or 0.0),
-        )
-
-
-class SetState(StateSpec):
-    """Replace the state and the start that ``reset`` returns to; t is kept. Fields: :class:`StateSpec`."""
-
-    type: Literal["set_state"]
-
-
-class ExactRequest(StateSpec):
-    """Body of ``POST /api/exact``: the pendulum (defaults l = 1 m, m = 1 kg, g = 9.81 m/s²) and a state."""
-
-    length: float = Field(1.0, description="rod length l in m", **_lim("length"))
-    mass: float = Field(1.0, description="bob mass m in kg", **_lim("mass"))
-    g: float = Field(9.81, description="gravity g in m/s²", **_lim("g"))
-
-
-class SetMethod(_Command):
-    """Change the integrator (a name of ``pendulab.method_names()``) and/or its step dt [s]."""
-
-    type: Literal["set_method"]
-    method: str | None = None
-    dt: float | None = Field(None, description="step size in s", **_lim("dt"))
-
-    @model_validator(mode="after")
-    def _known(self) -> SetMethod:
-        if self.method is None and self.dt is None:
-            raise ValueError("give method, dt (s) or both")
-        if self.method is not None and self.method not in method_names():
-            raise ValueError(f"unknown method {self.method!r}; available: {', '.join(method_names())}")
-        return self
-
-
-class SetTimeScale(_Command):
-    """Simulated seconds per wall-clock second."""
-
-    type: Literal["set_time_scale"]
-    time_scale: float = Field(**_lim("time_scale"))
-
-
-class Pause(_Command):
-    type: Literal["pause"]
-
-
-class Resume(_Command):
-    type: Literal["resume"]
-
-
-class Step(_Command):
-    """Take n integrator steps at once (``dop853``: n accepted steps) and send the frame; pauses first."""
-
-    type: Literal["step"]
-    n: int = Field(1, ge=int(LIMITS["step_n"]["min"]), le=int(LIMITS["step_n"]["max"]))
-
-
-class Reset(_Command):
-    """Back to the start (the scenario's or the last ``set_state``), t = t0, with the current parameters."""
-
-    type: Literal["reset"]
-
-
-class LoadScenario(_Command):
-    """Load an example scenario by name (``GET /api/scenarios``): pendulum, start, method, dt."""
-
-    type: Literal["load_scenario"]
-    name: str = Field(min_length=1, max_length=100)
-
-
-class Crane(_Command):
-    """The crane mode (docs/cranes.md "The lab's crane mode"; the core checks the values): ``on``
-    switches to it, ``drive`` the trolley's commanded velocity (x, y) [m/s], ``move`` by (x, y) [m] and
-    stop, ``stop`` (drive 0), ``rope`` hoist to this rope length [m]."""
-
-    type: Literal["crane"]
-    on: bool | None = None
-    drive: list[float] | None = Field(None, min_length=2, max_length=2)
-    move: list[float] | None = Field(None, min_length=2, max_length=2)
-    stop: bool | None = None
-    rope: float | None = None
-
-
-Command = (
-    SetParams
-    | SetModel
-    | SetState
-    | SetMethod
-    | SetTimeScale
-    | Pause
-    | Resume
-    | Step
-    | Reset
-    | LoadScenario
-    | Crane
-)
-COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])
-COMMAND_TYPES: tuple[str, ...] = LiveSession.command_types()
-"""The command types in the lab's order (the core's ``live::wire::COMMAND_TYPES``)."""
-
-
-class CommandError(ValueError):
-    """A message that is not a valid command; ``command`` is its type when that could be read; ``key``
-    and ``values`` name the message for a page that translates it (``messages.json``; None: not keyed)."""
-
-    def __init__(
-        self,
-        message: str,
-        command: str | None = None,
-        key: str | None = None,
-        values: dict[str, Any] | None = None,
-    ) -> None:
-        super().__init__(message)
-        self.command = command
-        self.key = key
-        self.values = values or {}
-
-
-def _show(value: Any) -> str:
-    text = json.dumps(value, allow_nan=True) if not isinstance(value, str) else repr(value)
-    return text if len(text) <= 80 else text[:77] + "..."
-
-
-def parse_command(text: str | bytes) -> Command:
-    """A validated command from one message; :class:`CommandError` naming every problem otherwise."""
-    if isinstance(text, bytes | bytearray):
-        raise CommandError("commands are JSON text messages; binary messages are not accepted")
-    if len(text) > MAX_MESSAGE_BYTES:
-        raise CommandError(f"message of {len(text)} characters is too long (at most {MAX_MESSAGE_BYTES})")
-    try:
-        raw = json.loads(text)
-    except (json.JSONDecodeError, RecursionError) as e:
-        raise CommandError(f"not JSON: {e}") from None
-    if not isinstance(raw, dict):
-        raise CommandError(f"a command is a JSON object with a 'type', got {type(raw).__name__}")
-    kind = raw.get("type")
-    if kind not in COMMAND_TYPES:
-        what = "missing 'type'" if kind is None else f"unknown command type {_show(kind)}"
-        raise CommandError(f"{what}; expected one of: {', '.join(COMMAND_TYPES)}")
-    try:
-        return COMMAND.validate_python(raw)
-    except ValidationError as e:
-        key, values = validation_key(e, skip=1)
-        raise CommandError(validation_problems(e, skip=1), command=kind, key=key, values=values) from None
-
-
-def validation_problems(e: ValidationError, skip: int = 0) -> str:
-    """One line naming every problem of a pydantic error (``skip`` leading location parts, e.g. the
-    union tag)."""
-    return "; ".join(_problem(err, skip) for err in e.errors())
-
-
-def _problem(err: Any, skip: int) -> str:
-    loc = [str(p) for p in err["loc"][skip:]]
-    key = ".".join(loc)
-    msg = str(err["msg"])
-    if err["type"] == "value_error":
-        msg = str(err.get("ctx", {}).get("error", msg))
-        return f"{key}: {msg}" if key else msg
-    if err["type"] == "extra_forbidden":
-        return f"unknown key {key!r}"
-    if err["type"] == "missing":
-        return f"{key} is missing"
-    shown = _show(err.get("input"))
-    return f"{key} = {shown}: {msg[:1].lower()}{msg[1:]}"
-
-
-#: pydantic's error types the page translates: type -> (message key, the limit's name in ``ctx``)
-_KEYED = {
-    "greater_than_equal": ("too_small", "ge"),
-    "greater_than": ("too_small_strict", "gt"),
-    "less_than_equal": ("too_large", "le"),
-    "less_than": ("too_large_strict", "lt"),
-    "missing": ("missing", None),
-    "extra_forbidden": ("unknown_key", None),
-}
-
-
-def validation_key(e: ValidationError, skip: int = 0) -> tuple[str | None, dict[str, Any]]:
-    """The message key and values (``messages.json``) of a pydantic error with one problem of a kind the
-    page translates; ``(None, {})`` otherwise (the page shows the English message)."""
-    errors = e.errors()
-    if len(errors) != 1 or errors[0]["type"] not in _KEYED:
-        return None, {}
-    err = errors[0]
-    key, limit = _KEYED[err["type"]]
-    values: dict[str, Any] = {"name": ".".join(str(p) for p in err["loc"][skip:])}
-    if limit is not None:
-        values |= {"value": _show(err.get("input")), "limit": err.get("ctx", {}).get(limit)}
-    return key, values
-
-
-def message(key: str, **values: Any) -> str:
-    """The English words of message ``key`` (``messages.json``) with ``values`` filled in."""
-    return MESSAGES[key].format(**values)
-
-
-def keyed_notice(key: str, command: str | None = None, **values: Any) -> dict[str, Any]:
-    """An ``error`` notice of message ``key``: its English words, the key and the values."""
-    return error_notice(message(key, **values), command, key, values)
-
-
-def error_notice_of(e: CommandError) -> dict[str, Any]:
-    """The ``error`` notice of a refused command (keyed when the error is)."""
-    return error_notice(str(e), e.command, e.key, e.values)
-
-
-def error_notice(
-    message: str, command: str | None = None, key: str | None = None, values: dict[str, Any] | None = None
-) -> dict[str, Any]:
-    """The JSON ``error`` notice; with ``key`` (``messages.json``) and its ``values`` for a page that
-    translates the message."""
-    notice: dict[str, Any] = {"type": "error", "message": message, "command": command}
-    if key is not None:
-        notice |= {"key": key, "values": values or {}}
-    return notice
-
-
-def event_notice(event: dict[str, Any], epoch: int, skipped: int = 0) -> dict[str, Any]:
-    """The JSON ``event`` notice of one of the string's events as the core reports it
-    (``StringStepper.take_events()``): ``kind`` "slack" (the tension reached 0, the bob leaves the
-    sphere) or "taut" (the string snaps taut again), the time ``t`` [s], ``energy_lost`` [J] (0 for a
-    leave, ½m(1 − e²)u² for a snap), the bob's position ``x`` just after [m], the ``epoch`` it belongs
-    to, and ``skipped``: how many earlier events of the same tick were not sent (see
-    :data:`pendulab.server.session.MAX_EVENT_NOTICES`)."""
-    return {
-        "type": "event",
-        "kind": str(event["kind"]),
-        "t": float(event["t"]),
-        "energy_lost": float(event["energy_lost"]),
-        "x": [float(c) for c in event["x"]],
-        "epoch": int(epoch),
-        "skipped": int(skipped),
-    }
-
-
-def finite_or_none(value: float | None) -> float | None:
-    """JSON has no inf/NaN: such values (and None) become null."""
-    if value is None or not math.isfinite(value):
-        return None
-    return float(value)

@@ -17,7 +17,8 @@ from .._core import InvalidInputError
 from ..model import Pendulum
 from ..scenario import Scenario
 from ..simulation import method_names
-from .protocol import ExactRequest, Vec3, _lim, finite_or_none
+from .commands import ExactRequest, Vec3, limit_bounds
+from .notices import finite_or_none
 
 
 def exact_quantities(req: ExactRequest) -> dict[str, Any]:
@@ -60,9 +61,9 @@ class _Request(BaseModel):
 class PotentialRequest(_Request):
     """Body of ``POST /api/effective_potential``: l [m], m [kg], g [m/s²], J₃ [kg m²/s], n points."""
 
-    length: float = Field(1.0, description="rod length l in m", **_lim("length"))
-    mass: float = Field(1.0, description="bob mass m in kg", **_lim("mass"))
-    g: float = Field(9.81, description="gravity g in m/s²", **_lim("g"))
+    length: float = Field(1.0, description="rod length l in m", **limit_bounds("length"))
+    mass: float = Field(1.0, description="bob mass m in kg", **limit_bounds("mass"))
+    g: float = Field(9.81, description="gravity g in m/s²", **limit_bounds("g"))
     j3: float = Field(0.0, description="vertical angular momentum J₃ in kg m²/s", ge=-1e9, le=1e9)
     n: int = Field(400, description="number of angles θ", ge=16, le=4000)
 
@@ -87,14 +88,14 @@ class ScenarioRequest(_Request):
 
     title: str | None = Field(None, max_length=200)
     model: str = Field("ideal", max_length=40)
-    length: float = Field(1.0, description="rod length l in m", **_lim("length"))
-    mass: float = Field(1.0, description="bob mass m in kg", **_lim("mass"))
-    g: float = Field(9.81, description="gravity g in m/s²", **_lim("g"))
+    length: float = Field(1.0, description="rod length l in m", **limit_bounds("length"))
+    mass: float = Field(1.0, description="bob mass m in kg", **limit_bounds("mass"))
+    g: float = Field(9.81, description="gravity g in m/s²", **limit_bounds("g"))
     params: dict[str, float] = Field(default_factory=dict, description="the model's own parameters (SI)")
     x: Vec3 = Field(description="start position in m")
     v: Vec3 = Field(description="start velocity in m/s")
     method: str = Field("rattle", max_length=40)
-    dt: float = Field(1e-3, description="step size in s", **_lim("dt"))
+    dt: float = Field(1e-3, description="step size in s", **limit_bounds("dt"))
     t0: float = Field(0.0, description="start time in s", ge=-1e12, le=1e12)
     t_end: float = Field(100.0, description="end time in s", ge=-1e12, le=1e12)
 

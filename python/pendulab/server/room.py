@@ -29,8 +29,6 @@ import time
 from collections.abc import AsyncIterator
 from typing import Any
 
-from starlette.responses import JSONResponse
-
 from .protocol import message
 from .session import TICK_BUDGET
 
@@ -125,12 +123,9 @@ class Room:
             else:
                 self.requests.pop(key, None)
 
-    def too_many_requests(self) -> JSONResponse:
-        """The HTTP 429 answer to a computing request beyond the client's ``computations``: the English
-        ``detail`` and, for a page that translates it, ``key`` (``messages.json``) and ``values``."""
+    def too_many_requests(self) -> dict[str, Any]:
+        """The body of the HTTP 429 answer (with ``retry-after: 1``) to a computing request beyond the
+        client's ``computations``: the English ``detail`` and, for a page that translates it, ``key``
+        (``messages.json``) and ``values``."""
         values = {"most": self.computations}
-        return JSONResponse(
-            {"detail": message("device_busy", **values), "key": "device_busy", "values": values},
-            status_code=429,
-            headers={"retry-after": "1"},
-        )
+        return {"detail": message("device_busy", **values), "key": "device_busy", "values": values}

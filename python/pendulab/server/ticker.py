@@ -1,7 +1,7 @@
 """One ticker for the whole room: every lab session's tick, round robin, in one worker-thread call per
 tick (docs/web.md, "Pacing" and "A pupil in the room").
 
-Each WebSocket handler (:func:`pendulab.server.app.run_session`) takes a :class:`Seat` — the session,
+Each WebSocket handler (:func:`pendulab.server.live_socket.run_session`) takes a :class:`Seat` — the session,
 its inbox of parsed commands, its :class:`~.tick.Carry`, its share of the room's budget — and sends what
 the seat's outbox receives. The :class:`Ticker` of the event loop is a thread of its own that wakes
 :data:`~.schema.TICK_HZ` times a second, ticks all the seats (:func:`.tick.tick_messages`; in a full room
