@@ -1,14 +1,11 @@
 """What a misbehaving pupil's refused or excess traffic costs the lab server (docs/web.md, "A pupil in
 the room"; issue 30): counted as work per refusal, not timed. A connection beyond its client's limit is
 cut before uvicorn sets anything up for it; a ping flood is cut; the WebSocket frames are not
-compressed (deflate took about a tenth of the event loop for float64 frames); the worker processes of
-the analyses and fits run at a lower priority than the live sessions. Clients are told apart by their
-address: a client binds 127.0.0.N (all of 127/8 is this machine)."""
+compressed (deflate took about a tenth of the event loop for float64 frames). Clients are told apart
+by their address: a client binds 127.0.0.N (all of 127/8 is this machine)."""
 
 from __future__ import annotations
 
-import asyncio
-import os
 import socket
 import time
 from collections.abc import Iterator
@@ -22,7 +19,6 @@ from ws_session import live_lab
 from pendulab.server import create_app
 from pendulab.server.hygiene import PING_BURST, PING_RATE
 from pendulab.server.room import MAX_CONNECTIONS_PER_CLIENT
-from pendulab.server.worker import WORKER_NICE, WorkerPool
 
 
 @pytest.fixture(scope="module")
@@ -97,15 +93,3 @@ def test_frames_are_not_compressed(port: int) -> None:
         assert ws.protocol.extensions == []
         assert ws.response is not None
         assert "permessage-deflate" not in ws.response.headers.get("Sec-WebSocket-Extensions", "")
-
-
-def test_worker_processes_run_at_a_lower_priority() -> None:
-    """A pupil's stream of analyses keeps the analysis worker busy; the live sessions' frames must win
-    the processor over it on a busy machine."""
-    pool = WorkerPool("niceness", size=1)
-    try:
-        inside = asyncio.run(pool.run(os.getpriority, os.PRIO_PROCESS, 0))  # a job in the worker
-        mine = os.getpriority(os.PRIO_PROCESS, 0)
-        assert int(inside) >= min(19, mine + WORKER_NICE), (inside, mine)
-    finally:
-        pool.close()

@@ -1,8 +1,9 @@
 """The lab's commands (docs/web.md, "Commands"): one JSON object per text message, told apart by
 ``"type"`` — a pydantic discriminated union (:data:`COMMAND`) of ``set_params``, ``set_model``,
 ``set_state``, ``set_method``, ``set_time_scale``, ``pause``, ``resume``, ``step``, ``reset``,
-``load_scenario`` and ``crane``; :func:`parse_command` validates one message. Unknown keys, wrong types, NaN/inf and
-out-of-range values are refused with a :class:`~.notices.CommandError` naming the problem.
+``load_scenario`` and ``crane``; :func:`parse_command` validates one message. Unknown keys, wrong
+types, NaN/inf and out-of-range values are refused with a :class:`~.notices.CommandError` naming the
+problem.
 
 The bounds are the core's (:data:`CORE_LIMITS`: ``crates/pendulab-core/src/live/wire.rs``, which the
 page's engine and the server's sessions check too), the models those of the registry that run in the

@@ -19,8 +19,9 @@ for bad input (the core's :class:`~pendulab.InvalidInputError` and ``Integration
 ValueError, ArithmeticError: HTTP 422), :class:`WorkFailed` for anything else (HTTP 500, logged).
 Workers ignore SIGINT (a Ctrl-C in the terminal reaches the whole process group; the server ends
 them itself) and end when the server's end of their pipe closes (the server killed by SIGKILL).
-They run at a lower scheduling priority (:data:`WORKER_NICE`): on a busy machine the live sessions'
-frames come first and a pupil's stream of analyses takes what the room leaves.
+They run at the server's own priority: niced, a worker on a busy machine got so little of the
+processor that the wall-time limits stopped short jobs (a 0.5 s limit at load 18), and the pupil's
+analyses used 1-7 % of a core (its two computations at once bound it).
 The apps of one process share their pools (:func:`shared_pool`). Times in seconds.
 """
 
@@ -30,7 +31,6 @@ import asyncio
 import contextlib
 import logging
 import multiprocessing
-import os
 import signal
 import sys
 import threading
@@ -40,10 +40,6 @@ from multiprocessing.connection import Connection
 from typing import Any
 
 log = logging.getLogger("pendulab.server")
-
-WORKER_NICE = 10
-"""Niceness added to the worker processes (``os.nice``; Unix): the analyses and fits yield the processor
-to the server's event loop and ticker when both want it."""
 
 PRELOAD = ["pendulab", "pendulab.server.fit", "pendulab.server.views", "pendulab.server.rest"]
 """Modules the fork server imports once, so that every worker starts with them loaded."""
@@ -79,8 +75,6 @@ def _serve(conn: Connection) -> None:  # pragma: no cover - runs in the worker p
     import orjson
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
-    with contextlib.suppress(OSError, AttributeError):  # AttributeError: no os.nice (Windows)
-        os.nice(WORKER_NICE)
     with contextlib.suppress(Exception):
         from threadpoolctl import threadpool_limits
 
