@@ -534,6 +534,7 @@ async function checkOwnTwin(page, { check, WAIT }) {
   await page.waitForFunction(() => window.pendulab.twin.status?.params.length === 0.25 && window.pendulab.twin.status.params.mass === 2, null, { timeout: WAIT });
   await page.evaluate(() => window.pendulab.send({ type: 'resume' }));
   await page.waitForFunction(() => window.pendulab.store.periodTimer.reading().intervals >= 2 && window.pendulab.twin.periodTimer.reading().intervals >= 2, null, { timeout: WAIT, polling: 100 });
+  await page.waitForTimeout(300);
   await page.waitForFunction(() => window.pendulab.twinOnScreen() !== null && window.pendulab.bobOnScreen() !== null, null, { timeout: WAIT, polling: 100 }).catch(() => {});
   const r = await page.evaluate(() => {
     const c = document.getElementById('scene-canvas').getBoundingClientRect();
