@@ -15,7 +15,7 @@ STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
-	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm bench-lab-html test-tour-wheel
+	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm bench-lab-html test-lab-firefox test-tour-wheel
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -166,6 +166,16 @@ test-lab-html: lab-html
 # file:// (bench/lab_frames.mjs; docs/performance.md; say the load). About a minute.
 bench-lab-html: lab-html
 	CHROMIUM=$${CHROMIUM:-$$(command -v chromium || command -v chromium-browser)} node bench/lab_frames.mjs $(LAB_HTML)
+
+# The one-file lab in Firefox (optional, not in CI: docs/web.md, "Firefox"): Debian's firefox-esr
+# (apt-get install firefox-esr) driven by geckodriver (cargo install geckodriver: a few minutes of
+# compiling) over W3C WebDriver, from file:// with no network, on a virtual display (apt-get install
+# xvfb; headless Firefox gets no WebGL here): first frame, frames, a refusal, a share link.
+test-lab-firefox: lab-html
+	@command -v $${FIREFOX:-firefox-esr} >/dev/null || { echo "error: firefox-esr not found: apt-get install firefox-esr (or FIREFOX=/path)" >&2; exit 1; }
+	@command -v $${GECKODRIVER:-geckodriver} >/dev/null || { echo "error: geckodriver not found: cargo install geckodriver (or GECKODRIVER=/path)" >&2; exit 1; }
+	@test -n "$$DISPLAY" || command -v xvfb-run >/dev/null || { echo "error: no DISPLAY and no xvfb-run: apt-get install xvfb" >&2; exit 1; }
+	cd web && $(if $(DISPLAY),,xvfb-run -a -s "-screen 0 1280x800x24") node tests/e2e/lab_firefox.mjs $(CURDIR)/$(LAB_HTML)
 
 # RATTLE steps/s of the engine in node beside the native build (docs/performance.md; say the load):
 # both .wasm builds and the native one in BENCH_WASM_ROUNDS interleaved rounds, timed by CPU time.
