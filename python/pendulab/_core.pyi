@@ -284,15 +284,9 @@ class StringStepper:
 
 # --- python/rust/slewing.rs: the linearised slewing crane (T-7.2) ---
 
-def slewing_linear(
-    length: float,
-    g: float,
-    radius: float,
-    rate: float,
-    damping: float,
-    start: list[float],
-    t: FloatArray,
-) -> dict[str, Any]: ...
+def slewing_linear(spec: ModelSpec, start: list[float], t: FloatArray) -> dict[str, Any]:
+    """The small sway of the spec's ``slewing`` model from the boom-frame start (x₀, y₀ [m], ẋ₀,
+    ẏ₀ [m/s]) at times t [s]."""
 
 # --- python/rust/crane.rs: the crane dynamics (hoist, hook + payload, wind; T-11.4 – T-11.7) ---
 

@@ -47,3 +47,24 @@ def test_a_spec_of_the_wrong_kind_or_options_missing_are_named() -> None:
 def test_options_default_to_the_cores_solve_options() -> None:
     o = _core.RunOptions()
     assert (o.t0, o.t_end, o.method, o.dt) == (0.0, None, "rattle", 1e-3)
+
+
+def test_the_theory_bindings_take_the_spec_of_their_own_model() -> None:
+    """The states, the exact solution, the reduced flow and the linear crane read l, m, g (and the
+    crane's radius, rate, damping) from the spec, and refuse a spec of another model by name."""
+    p = pl.Pendulum(length=2.0, g=9.81, mass=0.5)
+    s0 = p.state_from_angles(theta=0.7, phi_dot=1.0)
+    x, v = _core.state_from_angles(p.spec, [0.7, 0.0, 0.0, 1.0])
+    assert np.array_equal(x, s0.x) and np.array_equal(v, s0.v)
+    assert abs(float(np.linalg.norm(x)) - 2.0) < 1e-15  # the spec's l, not a default
+    sol = _core.ExactSolution(p.spec, s0.pair)
+    assert sol.period_z == pl.exact(p, s0).period_z
+    damped = pl.Pendulum(length=2.0, damping=0.1)
+    with pytest.raises(_core.InvalidInputError, match='not the "damped" model'):
+        _core.ExactSolution(damped.spec, s0.pair)
+    with pytest.raises(_core.InvalidInputError, match="ideal pendulum's"):
+        _core.reduced_flow(damped.spec, s0.pair, _core.RunOptions(dt=1e-3), 10)
+    with pytest.raises(_core.InvalidInputError, match='not the "ideal" model'):
+        _core.slewing_linear(p.spec, [0.0, 0.0, 0.0, 0.0], np.array([0.0, 1.0]))
+    with pytest.raises(_core.InvalidInputError, match="off the sphere"):
+        _core.state_on_ts2(pl.SwingingSpring.resonant().spec, s0.x, s0.v)

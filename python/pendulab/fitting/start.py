@@ -246,13 +246,29 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
     """Values for the free parameters read off the data (the given ones stay where they are); the
     result has the same keys as ``values``."""
     out = dict(values)
-    t = obs.t
     if "horizontal" in obs.values and "length" in free:
         out["length"] = _length_from_above(obs, values, free)
         values = out
     rel = _relative_positions(obs, values, free)
     if rel is None:
         return _frame_free_start(obs, out, free)
+    _pivot_start(obs, rel, free, out)
+    radius = float(np.median(np.linalg.norm(rel, axis=1)))
+    if "positions" in obs.values:
+        check_upright(rel, values["g"])
+        check_length_hint(radius, values["length"], "length" in free)
+        if "length" in free:
+            out["length"] = radius
+    rel = np.column_stack([despiked(rel[:, j]) for j in range(3)])  # a tracked video's spikes
+    period = _swing_start(obs.t, rel, free, out)
+    span = _angles_start(obs.t, rel, free, out, period)
+    if "stiffness" in values:  # the swinging spring: r₀, ṙ₀, k, l₀ (spring_model.py)
+        _spring_rest(obs, rel, free, out, (period, span))
+    return out
+
+
+def _pivot_start(obs: Observations, rel: FloatArray, free: set[str], out: dict[str, Any]) -> None:
+    """The free pivot coordinates [m]: the first sample's position less its pivot-relative one."""
     if free & {"pivot_x", "pivot_y"} and "horizontal" in obs.values:
         centre = obs.values["horizontal"] - rel[:, :2]
         for k, name in enumerate(("pivot_x", "pivot_y")):
@@ -265,13 +281,11 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
         for k, name in enumerate(PIVOT_NAMES if p.shape[1] == 3 else ("pivot_x", "pivot_z")):
             if name in free:
                 out[name] = float(pivot[k])
-    radius = float(np.median(np.linalg.norm(rel, axis=1)))
-    if "positions" in obs.values:
-        check_upright(rel, values["g"])
-        check_length_hint(radius, values["length"], "length" in free)
-        if "length" in free:
-            out["length"] = radius
-    rel = np.column_stack([despiked(rel[:, j]) for j in range(3)])  # a tracked video's spikes
+
+
+def _swing_start(t: FloatArray, rel: FloatArray, free: set[str], out: dict[str, Any]) -> float | None:
+    """g [m/s²] or l [m] from the swing's period (amplitude-corrected), the damping [1/s] from its
+    decay; returns the period [s] (None without two crossings)."""
     horizontal = rel[:, :2] - rel[:, :2].mean(axis=0)
     axis = np.linalg.svd(horizontal, full_matrices=False)[2][0]
     swing = horizontal @ axis
@@ -286,9 +300,18 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
             out["length"] = out["g"] / omega0**2
     if "damping" in free:
         out["damping"] = decay_rate(t, swing)
+    return period
+
+
+def _angles_start(
+    t: FloatArray, rel: FloatArray, free: set[str], out: dict[str, Any], period: float | None
+) -> float:
+    """θ₀, φ₀ [rad], θ̇₀, φ̇₀ [rad/s] from the first samples (a quadratic over a twentieth of the
+    period); returns that span [s]."""
     ell = out["length"]
     unit = rel / np.linalg.norm(rel, axis=1)[:, None]
     x = ell * unit
+    theta = np.arctan2(np.hypot(rel[:, 0], rel[:, 1]), -rel[:, 2])
     phi = np.unwrap(np.arctan2(x[:, 1], x[:, 0]))
     period_guess = period or 2.0 * math.pi * math.sqrt(ell / max(abs(out["g"]), 1e-9))
     span = period_guess / 20.0
@@ -299,15 +322,26 @@ def starting_values(obs: Observations, values: Mapping[str, float], free: set[st
             out[name] = value
     if "theta0" in free:
         out["theta0"] = min(max(out["theta0"], 0.0), math.pi)
-    if "stiffness" in values:  # the swinging spring: r₀, ṙ₀, k, l₀ (spring_model.py)
-        if "length" in free:  # the rest length l₀ = l − m g/k below the hanging length
-            sag = out["g"] * out["mass"] / out["stiffness"]
-            out["length"] = max(out["length"] - sag, 0.1 * out["length"])
-        if "positions" in obs.values and obs.values["positions"].shape[1] == 3:
-            r0, rd0 = _rates(t, np.linalg.norm(rel, axis=1), span)
-            out |= {k: v for k, v in (("r0", r0), ("r_dot0", rd0)) if k in free}
-            spring_start(t, rel, out, free, period)
-    return out
+    return span
+
+
+def _spring_rest(
+    obs: Observations,
+    rel: FloatArray,
+    free: set[str],
+    out: dict[str, Any],
+    times: tuple[float | None, float],
+) -> None:
+    """The swinging spring: the rest length l₀ = l − m g/k [m] below the hanging length, r₀ [m], ṙ₀
+    [m/s] over ``times`` = (period, span) [s], then the spring's own start (spring_model.py)."""
+    period, span = times
+    if "length" in free:  # the rest length l₀ = l − m g/k below the hanging length
+        sag = out["g"] * out["mass"] / out["stiffness"]
+        out["length"] = max(out["length"] - sag, 0.1 * out["length"])
+    if "positions" in obs.values and obs.values["positions"].shape[1] == 3:
+        r0, rd0 = _rates(obs.t, np.linalg.norm(rel, axis=1), span)
+        out |= {k: v for k, v in (("r0", r0), ("r_dot0", rd0)) if k in free}
+        spring_start(obs.t, rel, out, free, period)
 
 
 def signed_start(obs: Observations, start: Mapping[str, float], free: set[str]) -> dict[str, float]:

@@ -81,7 +81,7 @@ def slewing_sway(pendulum: Pendulum, t: Any, state: State | None = None) -> Slew
     w = par["rate"]
     # boom frame at t = 0 is the inertial one; rates in the rotating frame: ż = (vx + i vy) − iω z
     start = [float(x0[0]), float(x0[1]), float(v0[0] + w * x0[1]), float(v0[1] - w * x0[0])]
-    out = slewing_linear(pendulum.length, pendulum.g, par["radius"], w, par["damping"], start, ts)
+    out = slewing_linear(pendulum.spec, start, ts)
     return SlewingSway(
         ts,
         out["x"],
