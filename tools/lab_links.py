@@ -34,15 +34,9 @@ LAB_LINE = re.compile(r"^Lab:\s*(\S+)\s*$", re.M)
 
 
 def lab_scenarios() -> list[Path]:
-    """The example scenario files the lab runs: all but the crane files (a ``[crane]`` table), which
-    run with ``pendulab run`` (the lab has no crane mode yet, docs/cranes.md)."""
-    import tomllib
-
-    return [
-        p
-        for p in sorted(SCENARIO_DIR.glob("*.toml"))
-        if "crane" not in tomllib.loads(p.read_text(encoding="utf-8"))
-    ]
+    """The example scenario files the lab runs: all of them (a crane file, ``[crane]``, opens the lab's
+    crane mode with its crane, docs/cranes.md "The lab's crane mode")."""
+    return sorted(SCENARIO_DIR.glob("*.toml"))
 
 
 def scenario_query(name: str) -> str:

@@ -128,9 +128,9 @@ def _commands(query: str) -> tuple[list[dict], dict[str, str]]:
 
 def test_every_scenario_gallery_figure_and_notebook_has_a_link():
     where = {w for w, _ in LINKS}
-    lab_files = lab_links.lab_scenarios()  # every example but the crane files (pendulab run only)
+    lab_files = lab_links.lab_scenarios()  # every example, the crane files too (the crane mode)
     every = {p.name for p in (REPO / "examples" / "scenarios").glob("*.toml")}
-    assert every - {p.name for p in lab_files} <= {"crane_hoist.toml"}
+    assert every == {p.name for p in lab_files}
     assert {f"examples/scenarios/{p.name}" for p in lab_files} <= where
     assert {f"docs/gallery/{p.name}" for p in (REPO / "docs" / "gallery").glob("[0-9]*.py")} <= where
     assert {f"docs/tour/{p.name}" for p in (REPO / "docs" / "tour").glob("*.ipynb")} <= where

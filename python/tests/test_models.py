@@ -394,7 +394,8 @@ def test_forcing_direction_defaults_only_when_no_component_is_given() -> None:
 
 def test_the_registry_says_which_models_the_stepper_can_run(pendulum: pl.Pendulum) -> None:
     """``interactive`` is True exactly for the models the incremental Stepper (the lab) runs, but
-    ``hoisted``: the Stepper runs it (every method, T-11.10) while the lab has no crane mode yet."""
+    ``hoisted``: the Stepper runs it (every method, T-11.10) while the lab's crane mode runs the crane
+    model's own integrator (docs/cranes.md "The lab's crane mode"), not this law l(t)."""
     s0 = pendulum.state_from_angles(*ROSETTE)
     for m in pl.models():
         own = {p["name"]: p["default"] for p in m["params"] if p["name"] not in COMMON}

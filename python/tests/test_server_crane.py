@@ -96,3 +96,20 @@ def test_crane_commands_are_checked() -> None:
         s.apply(parse_command('{"type": "crane", "drive": [1.0, 0.0]}'))
     with pytest.raises(CommandError, match=r"0\.5 to 200 m"):
         s.apply(parse_command('{"type": "crane", "rope": 500.0}'))
+
+
+def test_a_crane_file_opens_the_crane_mode_with_its_crane() -> None:
+    """``crane_hoist.toml`` (12 m rope, 2 t, ZV, v_max 0.8 m/s, a_max 0.4 m/s², 8 m/s cross wind on
+    2 m² × 1.2) loads as the crane mode's crane, hanging at rest; its wind blows the load out along y."""
+    s = Session(resolve_scenario("rosette"))
+    s.apply(parse_command('{"type": "load_scenario", "name": "crane_hoist"}'))
+    st = s.status()
+    c = st["crane"]
+    assert st["model"] == "crane" and st["method"] == "dop853" and st["params"]["mass"] == 2000.0
+    assert c["rope"] == 12.0 and c["shaping"] == "zv" and c["wind"] == [0.0, 8.0, 0.0]
+    assert (c["v_max"], c["a_max"], c["drag_area"]) == (0.8, 0.4, pytest.approx(2.4))
+    records = _run(s, 3.0)
+    assert records[-1, 2] > 0.0  # downwind
+    force = 0.5 * 1.225 * 2.4 * 8.0**2
+    peak = _sway(records).max()
+    assert peak > 1.5 * math.atan(force / (2000.0 * G))  # the first swing overshoots the static angle

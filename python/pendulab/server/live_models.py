@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from .._core import InvalidInputError
 from ..model import Pendulum
 from ..scenario import Scenario
+from .crane_setup import CranePendulum
 
 OWN_STEPPER_MODELS = ("spring", "string")
 """Models of the registry that the lab runs with their own core steppers instead of ``pendulab.Stepper``."""
@@ -46,8 +47,9 @@ class SpringPendulum:
         return {"stiffness": self.stiffness}
 
 
-LabPendulum = Pendulum | SpringPendulum
-"""What a scenario gives the lab: a pendulum of a registry model or the swinging spring."""
+LabPendulum = Pendulum | SpringPendulum | CranePendulum
+"""What a scenario gives the lab: a pendulum of a registry model, the swinging spring, or the crane mode's
+load (a crane file, :mod:`.crane_setup`)."""
 
 
 def scenario_pendulum(sc: Scenario) -> LabPendulum:

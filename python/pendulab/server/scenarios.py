@@ -13,6 +13,7 @@ from ..model import State
 from ..scenario import Scenario, ScenarioError, load_scenario
 from ..scenario.examples import scenario_files as shipped_scenarios
 from ..simulation import DEFAULTS
+from .crane_setup import crane_pendulum, crane_start
 from .live_models import LabPendulum, scenario_pendulum
 from .protocol import MODEL_SPECS
 
@@ -50,10 +51,13 @@ class Setup:
     @classmethod
     def from_scenario(cls, sc: Scenario, name: str | None) -> Setup:
         """The setup of ``sc``; :class:`ScenarioError` if its model does not run in the lab (sampled
-        pivot paths run with ``pendulab run`` only; a crane's file, ``[crane]``, too)."""
+        pivot paths run with ``pendulab run`` only). A crane's file, ``[crane]``, starts the crane mode
+        with its crane (:mod:`.crane_setup`)."""
         if sc.is_crane:
-            raise ScenarioError(
-                sc.source, "a crane scenario ([crane]) runs with pendulab run, not in the lab"
+            crane = crane_pendulum(sc.spec)
+            sim_c = sc.spec.simulation
+            return cls(
+                name, sc.title, crane, crane_start(crane), "dop853", sim_c.dt, sim_c.rtol, sim_c.atol, 0.0
             )
         model = sc._pendulum_spec().pendulum.model
         if model not in MODEL_SPECS:

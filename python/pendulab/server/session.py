@@ -32,6 +32,7 @@ from .._core import IntegrationError, InvalidInputError
 from .._core import LiveSession as _LiveSession
 from ..model import Pendulum, State
 from ..scenario import ScenarioError
+from .crane_setup import CRANE_MODEL
 from .live_models import LabPendulum, SpringPendulum
 from .protocol import Command, CommandError, LoadScenario, decode_records, error_notice_of, own_params
 from .scenarios import Setup, example_resolver, resolve_scenario, scenario_files
@@ -62,6 +63,8 @@ _LOAD_ERRORS = (InvalidInputError, ScenarioError, tomllib.TOMLDecodeError, OSErr
 def model_params(pendulum: LabPendulum) -> dict[str, float]:
     """Every own parameter of the pendulum's model (SI units): the given ones, else the registry's default."""
     given = pendulum.extra
+    if pendulum.model == CRANE_MODEL:  # the crane mode's parameters (the core fills in the rest)
+        return dict(given)
     return {p["name"]: given.get(p["name"], float(p["default"])) for p in own_params(pendulum.model)}
 
 

@@ -383,6 +383,7 @@ export const DE: Words = {
   'scenario.over_the_top': 'Über Kopf: ebene Überschläge',
   'scenario.planar_large': 'Ebene Schwingung mit 150° Amplitude',
   'scenario.rosette': 'Rosette: bei 60° mit seitlichem Schwung losgelassen',
+  'scenario.crane_hoist': 'Portalkran: ZV-geformte 8-m-Fahrt beim Heben von 12 m auf 6 m, bei Seitenwind',
   'scenario.slewing_crane': 'Drehkran: R = 5 m, ω = 0.3 rad/s, l = 10 m',
   'scenario.small_ellipse': 'Kleine Ellipse mit Airy-Präzession',
   'scenario.string_slack': 'Pendel an einer Schnur: schlaff bei z = l/2, unelastischer Ruck',

@@ -381,6 +381,7 @@ export const EN = {
   'scenario.over_the_top': 'Over the top: planar revolutions',
   'scenario.planar_large': 'Planar swing of amplitude 150°',
   'scenario.rosette': 'Rosette: 60° release with sideways spin',
+  'scenario.crane_hoist': 'Gantry crane: ZV-shaped 8 m move while hoisting 12 m -> 6 m, in a cross wind',
   'scenario.slewing_crane': 'Slewing crane: R = 5 m, ω = 0.3 rad/s, l = 10 m',
   'scenario.small_ellipse': 'Small ellipse with Airy precession',
   'scenario.string_slack': 'String pendulum: slack at z = l/2, inelastic snap',

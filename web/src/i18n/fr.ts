@@ -383,6 +383,7 @@ export const FR: Words = {
   'scenario.over_the_top': 'Par-dessus le sommet : tours dans un plan',
   'scenario.planar_large': 'Oscillation plane d’amplitude 150°',
   'scenario.rosette': 'Rosette : lâché à 60° avec un élan latéral',
+  'scenario.crane_hoist': 'Pont roulant : déplacement de 8 m mis en forme ZV en levant de 12 m à 6 m, par vent de travers',
   'scenario.slewing_crane': 'Grue pivotante : R = 5 m, ω = 0.3 rad/s, l = 10 m',
   'scenario.small_ellipse': 'Petite ellipse avec précession d’Airy',
   'scenario.string_slack': 'Pendule à fil : fil détendu à z = l/2, choc inélastique',
