@@ -161,7 +161,7 @@ export interface Status {
   /** How the frames' error_x is obtained (docs/web.md, "Error estimate"). */
   error_estimate?: ErrorEstimateInfo;
   frame_fields: string[];
-  /** The crane mode's state (null outside it; crane/status.ts, docs/web.md "Crane mode"). */
+  /** The crane mode's state (null outside it; crane/index.ts, docs/web.md "Crane mode"). */
   crane?: CraneStatus | null;
 }
 

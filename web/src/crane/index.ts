@@ -19,7 +19,7 @@ export class CraneMode {
     parent: HTMLElement,
   ) {
     const { scene, session, store } = lab;
-    this.panel = new CranePanel(parent, session.send, () => store.status?.crane?.v_max ?? 0.5);
+    this.panel = new CranePanel(parent, session.send, () => store.status?.crane?.v_max ?? 0.5, () => store.status?.params.g ?? 9.81);
     scene.addDrawing(this.drawing.group);
     scene.crane = {
       afterUpdate: (f) => this.drawing.update(this.active() ? f : null, store.status?.crane?.wind ?? null),

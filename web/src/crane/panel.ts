@@ -50,6 +50,7 @@ export class CranePanel {
     parent: HTMLElement,
     private readonly send: (cmd: Command) => void,
     private readonly vMax: () => number,
+    private readonly gNow: () => number,
   ) {
     this.root = el('section', { class: 'tools crane', 'data-tool': 'crane' });
     this.root.appendChild(el('h3', {}, cw('title')));
@@ -68,8 +69,10 @@ export class CranePanel {
       this.send({ type: 'set_model', model: 'ideal' });
       return;
     }
-    // a crane-sized start: a 10 m rope and a 1 t load hanging at rest, then the crane mode from there
-    this.send({ type: 'set_params', length: 10, mass: 1000 });
+    // a crane-sized start: a 10 m rope and a 1 t load hanging at rest (gravity down: 9.81 m/s² unless it
+    // already pulls down), then the crane mode from there
+    const g = this.gNow();
+    this.send({ type: 'set_params', length: 10, mass: 1000, g: g > 0 ? g : 9.81 });
     this.send({ type: 'set_state', theta: 0, phi: 0, theta_dot: 0, phi_dot: 0 });
     this.send({ type: 'crane', on: true });
     this.send({ type: 'resume' });

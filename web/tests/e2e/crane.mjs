@@ -57,6 +57,8 @@ export async function checkCrane(page, { check, WAIT, shot }) {
   await page.locator('[data-crane="toggle"]').scrollIntoViewIfNeeded();
   await page.locator('[data-crane="toggle"]').click();
   await craneIs(page, { rope: 10 }, WAIT);
+  // the panel follows the status at 10 Hz
+  await page.waitForFunction(() => !document.querySelector('.crane-controls').hidden, null, { timeout: 5000 }).catch(() => {});
   const opened = await page.evaluate(() => ({
     model: window.pendulab.store.status.model,
     method: window.pendulab.store.status.method,
