@@ -6,8 +6,8 @@
 // description, a region's label or a server message left in English fails here. Then a value the server
 // refuses (a length of −1 m) is explained in German from the server's message key (messages.json).
 const SAME = {
-  de: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Integrator', 'Pause', 'rad'],
-  fr: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Pause', 'rad', 'Simple', 'angle θ [°]', 'distance |x| [m]', 'tension T [N]', 'amplitude', 'axes', 'exact', 'tension', 'tension max', 'tension min'],
+  de: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Integrator', 'Pause', 'rad', 'ZVD'],
+  fr: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Pause', 'rad', 'Simple', 'angle θ [°]', 'distance |x| [m]', 'tension T [N]', 'amplitude', 'axes', 'exact', 'tension', 'tension max', 'tension min', 'ZVD'],
 };
 
 /** Every text of the page in language `lang` (a new page; closed after). */
