@@ -226,10 +226,18 @@ class EnsembleRun:
     def cancel(self) -> None: ...
     def result(self) -> dict[str, Any]: ...
 
-# --- python/rust/ensemble_adaptive.rs: any rod model, one adaptive solver per trajectory ---
+# --- python/rust/ensemble_adaptive.rs: any rod model (one or one per trajectory), DOP853 ---
 
 class AdaptiveEnsembleRun:
-    def __init__(self, spec: ModelSpec, x: FloatArray, v: FloatArray, options: RunOptions) -> None: ...
+    def __init__(
+        self,
+        spec: ModelSpec,
+        x: FloatArray,
+        v: FloatArray,
+        options: RunOptions,
+        models: list[ModelSpec] | None = None,
+        index: npt.NDArray[np.int64] | None = None,
+    ) -> None: ...
     @property
     def progress(self) -> float: ...
     def wait(self, timeout: float) -> bool: ...

@@ -1,19 +1,22 @@
 //! Binding of the adaptive ensemble (`pendulab_core::ensemble::adaptive`): any rod model of the
-//! registry, one `Solver` per trajectory (DOP853 by default), run on a background thread like
-//! `EnsembleRun` so that Python can show progress and cancel. Conversions only; SI units.
+//! registry, one model for all trajectories or one per trajectory (a list of specs and an index),
+//! DOP853 with each trajectory's own step size (vectorised across trajectories when only t0 and t_end
+//! are saved), run on a background thread like `EnsembleRun` so that Python can show progress and
+//! cancel. Conversions only; SI units.
 
 use crate::background::Background;
 use crate::convert::{to_py, InvalidInputError};
 use crate::ensemble::starts;
 use crate::spec::{ModelSpec, RunOptions};
 use numpy::ndarray::Array3;
-use numpy::{IntoPyArray, PyReadonlyArray2};
-use pendulab_core::ensemble::adaptive::{run_adaptive, AdaptiveResult, AdaptiveSettings};
+use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
+use pendulab_core::ensemble::adaptive::{
+    check_adaptive, run_adaptive_any, AdaptiveResult, AdaptiveSettings, Models,
+};
 use pendulab_core::solve::BYTES_PER_SAMPLE;
 use pendulab_core::SaveAt;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use std::sync::atomic::{AtomicBool, AtomicU64};
 
 /// An adaptive ensemble run in progress.
 #[pyclass(module = "pendulab._core", name = "AdaptiveEnsembleRun")]
@@ -27,12 +30,17 @@ pub struct AdaptiveEnsembleRun {
 impl AdaptiveEnsembleRun {
     /// Starts every row of x, v (N, 3) [m, m/s] with the model `spec` and `options` (t0, t_end [s],
     /// method, rtol, atol, project, conserve; `save_times` [s]: the times every trajectory is saved at).
+    /// Per-trajectory models: `models` (a list of specs, used instead of `spec`) and `index` (N,), the
+    /// entry of `models` each trajectory runs.
     #[new]
+    #[pyo3(signature = (spec, x, v, options, models=None, index=None))]
     fn new(
         spec: &ModelSpec,
         x: PyReadonlyArray2<'_, f64>,
         v: PyReadonlyArray2<'_, f64>,
         options: &RunOptions,
+        models: Option<Vec<PyRef<'_, ModelSpec>>>,
+        index: Option<PyReadonlyArray1<'_, i64>>,
     ) -> PyResult<Self> {
         let starts = starts(&x, &v)?;
         let SaveAt::Times(times) = options.save.clone() else {
@@ -52,7 +60,12 @@ impl AdaptiveEnsembleRun {
                 options.max_saved_bytes
             )));
         }
-        let model = spec.registry()?;
+        let models: Vec<_> = match &models {
+            Some(ms) if !ms.is_empty() => ms.iter().map(|m| m.registry()).collect::<PyResult<_>>()?,
+            Some(_) => return Err(InvalidInputError::new_err("models must name at least one ModelSpec")),
+            None => vec![spec.registry()?],
+        };
+        let index = model_index(index, starts.len(), models.len())?;
         let settings = AdaptiveSettings {
             options: options.solve,
             t0: options.t0,
@@ -61,11 +74,10 @@ impl AdaptiveEnsembleRun {
             conserve: options.conserve,
         };
         // validate before starting the thread (settings and every start), so bad input raises here
-        let stop = AtomicBool::new(true);
-        run_adaptive(&model, &starts, &settings, &AtomicU64::new(0), &stop).map_err(to_py)?;
+        check_adaptive(&Models { models: &models, index: &index }, &starts, &settings).map_err(to_py)?;
         let (total, n_times) = (starts.len() as u64, settings.times.len());
         let run = Background::spawn(move |progress, cancel| {
-            run_adaptive(&model, &starts, &settings, progress, cancel)
+            run_adaptive_any(&Models { models: &models, index: &index }, &starts, &settings, progress, cancel)
         });
         Ok(Self { total, n_times, run })
     }
@@ -102,6 +114,25 @@ impl AdaptiveEnsembleRun {
         d.set_item("cancelled", res.cancelled)?;
         Ok(d)
     }
+}
+
+/// The checked per-trajectory index into `n_models` models (empty: the first model for all).
+fn model_index(index: Option<PyReadonlyArray1<'_, i64>>, n: usize, n_models: usize) -> PyResult<Vec<u32>> {
+    let Some(ix) = index else { return Ok(Vec::new()) };
+    let ix = ix.as_array();
+    if ix.len() != n {
+        return Err(InvalidInputError::new_err(format!(
+            "index must give one model per trajectory ({n}), got {}",
+            ix.len()
+        )));
+    }
+    if let Some(bad) = ix.iter().find(|&&i| i < 0 || i as usize >= n_models) {
+        return Err(InvalidInputError::new_err(format!(
+            "index = {bad}: must be an entry of models, 0 … {}",
+            n_models - 1
+        )));
+    }
+    Ok(ix.iter().map(|&i| i as u32).collect())
 }
 
 /// Registers the class.

@@ -64,3 +64,60 @@ def test_bad_input_is_named() -> None:
     forced = pl.Pendulum(force=lambda t, x, v: -0.1 * v)
     with pytest.raises(pl.InvalidInputError, match="callable"):
         pl.simulate_ensemble(forced, pl.states_from_angles(forced, theta=[0.3]), t_end=1.0, method="dop853")
+
+
+def test_per_trajectory_length_g_damping_bit_for_bit() -> None:
+    # lengths, g and damping per trajectory: each trajectory is simulate() of its own pendulum
+    p = pl.Pendulum(length=1.0, g=9.81, damping=0.05, drag=0.2, forcing_amplitude=0.4, forcing_omega=2.0)
+    n = 19
+    lengths = np.where(np.arange(n) % 3 == 0, 0.6, 1.4)
+    gs = np.linspace(3.7, 24.8, n)
+    cs = np.where(np.arange(n) % 2 == 0, 0.0, 0.3)
+    starts = np.vstack(
+        [
+            pl.states_from_angles(pl.Pendulum(length=lengths[k]), theta=0.2 + 0.14 * k, phi_dot=1.0 - 0.1 * k)
+            for k in range(n)
+        ]
+    )
+    res = pl.simulate_ensemble(
+        p, starts, t_end=3.0, method="dop853", length=lengths, g=gs, damping=cs, progress=False
+    )
+    assert res.metadata["distinct_models"] == len(
+        {(a, b, c) for a, b, c in zip(lengths, gs, cs, strict=True)}
+    )
+    for k in range(n):
+        q = pl.Pendulum(
+            length=lengths[k], g=gs[k], damping=cs[k], drag=0.2, forcing_amplitude=0.4, forcing_omega=2.0
+        )
+        tr = pl.simulate(
+            q, q.state(starts[k, :3], starts[k, 3:]), t_end=3.0, method="dop853", save_at=[0.0, 3.0]
+        )
+        assert np.array_equal(tr.x, res.x[k]) and np.array_equal(tr.v, res.v[k]), k
+    # one value broadcasts; the pendulum's own damping where none is given
+    one = pl.simulate_ensemble(p, starts[:4], t_end=1.0, method="dop853", length=lengths[:4], progress=False)
+    for k in range(4):
+        q = pl.Pendulum(
+            length=lengths[k], g=9.81, damping=0.05, drag=0.2, forcing_amplitude=0.4, forcing_omega=2.0
+        )
+        tr = pl.simulate(
+            q, q.state(starts[k, :3], starts[k, 3:]), t_end=1.0, method="dop853", save_at=[0.0, 1.0]
+        )
+        assert np.array_equal(tr.v, one.v[k]), k
+
+
+def test_per_trajectory_bad_values_are_named() -> None:
+    p = pl.Pendulum()
+    starts = pl.states_from_angles(p, theta=[0.3, 1.0, 1.5])
+    for kw, word in [
+        ({"length": [1.0, 1.0]}, "length"),
+        ({"length": [1.0, -1.0, 1.0]}, "length"),
+        ({"g": [9.81, float("nan"), 1.0]}, "g"),
+        ({"damping": [0.1, -0.2, 0.0]}, "damping"),
+        ({"damping": np.zeros((3, 2))}, "damping"),
+        ({"length": [1.0, 2.0, 1.0]}, "length|sphere|TS"),  # start 1 is not on the sphere of l = 2 m
+    ]:
+        with pytest.raises(pl.InvalidInputError, match=word):
+            pl.simulate_ensemble(p, starts, t_end=1.0, method="dop853", **kw)
+    # a model without damping (the ideal pendulum) refuses it by name
+    with pytest.raises(pl.InvalidInputError, match="damping"):
+        pl.simulate_ensemble(p, starts, t_end=1.0, method="dop853", damping=[0.1, 0.2, 0.3])

@@ -2,7 +2,9 @@
 //! pendulum is, bit for bit, the single-trajectory DOP853 run with the same settings; cancellation
 //! and bad input. SI units.
 
-use pendulab_core::ensemble::adaptive::{run_adaptive, AdaptiveSettings};
+use pendulab_core::ensemble::adaptive::{
+    run_adaptive, run_adaptive_models, run_adaptive_serial, AdaptiveSettings, Models,
+};
 use pendulab_core::model::AnyModel;
 use pendulab_core::{Method, Model, Params, SaveAt, SolveOptions, Solver, State};
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -66,4 +68,89 @@ fn cancelled_runs_stop_and_bad_input_is_named() {
     let off = [State { x: s[0].x * 1.1, v: s[0].v }];
     let err = run_adaptive(&m, &off, &settings(false), &p, &c).unwrap_err().to_string();
     assert!(err.contains("length") || err.contains("sphere") || err.contains("|x|"), "{err}");
+}
+
+/// The single run of `start` with `m`, saved at `times` (as `simulate(..., save_at=times)`).
+fn single(m: &AnyModel, start: &State, set: &AdaptiveSettings) -> (Vec<State>, u64, u64) {
+    let save = SaveAt::Times(set.times.clone());
+    let mut one = Solver::new(m.clone(), set.t0, *start, set.t_end, &set.options, save, 1 << 20).unwrap();
+    one.stepper_mut().set_invariant_projection(set.conserve);
+    while !one.advance(1000).unwrap() {}
+    (one.take_samples().states, one.stats().steps, one.stats().rejected)
+}
+
+fn final_only(conserve: bool) -> AdaptiveSettings {
+    let mut set = settings(conserve);
+    set.times = vec![0.0, 5.0];
+    set
+}
+
+#[test]
+fn vectorised_lanes_are_the_single_runs_bit_for_bit() {
+    // 37 starts: lanes refilled as trajectories finish and masked at the end of the chunk
+    let m = model();
+    let s = starts(&m, 37);
+    for set in
+        [final_only(false), final_only(true), AdaptiveSettings { times: vec![5.0], ..final_only(false) }]
+    {
+        let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+        let res = run_adaptive(&m, &s, &set, &p, &c).unwrap();
+        assert!(!res.cancelled && p.load(Ordering::Relaxed) == 37);
+        let ns = set.times.len();
+        let mut rejected = 0;
+        for (k, start) in s.iter().enumerate() {
+            let (states, steps, rej) = single(&m, start, &set);
+            assert_eq!(&res.states[k * ns..(k + 1) * ns], &states[..], "trajectory {k}");
+            assert_eq!(res.steps[k], steps, "trajectory {k}");
+            rejected += rej;
+        }
+        // the lanes had different step counts and rejections to handle
+        assert!(res.steps.iter().min() != res.steps.iter().max() && rejected > 0, "{rejected}");
+        // the serial path (one Solver per trajectory) agrees
+        let serial = run_adaptive_serial(&Models::one(&m), &s, &set, &p, &c).unwrap();
+        assert_eq!(serial.states, res.states);
+    }
+}
+
+#[test]
+fn per_trajectory_models_and_a_moving_pivot() {
+    // three parameter sets (l, g, damping) and the index naming each trajectory's
+    let build = |l: f64, g: f64, c: f64| {
+        let p = Params::new(l, 1.0, g).unwrap();
+        AnyModel::build("damped", p, &[("damping", c), ("drag", 0.2), ("forcing_amplitude", 0.5)]).unwrap()
+    };
+    let models = [build(0.8, 9.81, 0.05), build(1.7, 3.7, 0.0), build(0.5, 24.8, 0.4)];
+    let index: Vec<u32> = (0..21).map(|k| (k * 7 % 3) as u32).collect();
+    let s: Vec<State> = (0..21)
+        .map(|k| {
+            let m = &models[index[k] as usize];
+            State::from_angles(m.params(), 0.1 + 0.13 * k as f64, 0.0, 0.4, 1.0 - 0.1 * k as f64).unwrap()
+        })
+        .collect();
+    let set = final_only(false);
+    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+    let res = run_adaptive_models(&Models { models: &models, index: &index }, &s, &set, &p, &c).unwrap();
+    for k in 0..21 {
+        let (states, _, _) = single(&models[index[k] as usize], &s[k], &set);
+        assert_eq!(&res.states[2 * k..2 * k + 2], &states[..], "trajectory {k}");
+    }
+    // a start on the wrong model's sphere and a bad index are refused before any work
+    let mut wrong = index.clone();
+    wrong[0] = 1;
+    let err = run_adaptive_models(&Models { models: &models, index: &wrong }, &s, &set, &p, &c).unwrap_err();
+    assert!(err.to_string().contains("length") || err.to_string().contains("|x|"), "{err}");
+    wrong[0] = 3;
+    let err = run_adaptive_models(&Models { models: &models, index: &wrong }, &s, &set, &p, &c).unwrap_err();
+    assert!(err.to_string().contains("model index"), "{err}");
+    let err =
+        run_adaptive_models(&Models { models: &models, index: &index[1..] }, &s, &set, &p, &c).unwrap_err();
+    assert!(err.to_string().contains("model index"), "{err}");
+    // a moving pivot (time-dependent force, physical states differ from the integrator's)
+    let pv = Params::new(1.0, 1.0, 9.81).unwrap();
+    let vib = AnyModel::build("vibrating", pv, &[("amplitude", 0.02), ("frequency", 30.0)]).unwrap();
+    let s = starts(&vib, 11);
+    let res = run_adaptive(&vib, &s, &final_only(true), &p, &c).unwrap();
+    for (k, start) in s.iter().enumerate() {
+        assert_eq!(&res.states[2 * k..2 * k + 2], &single(&vib, start, &final_only(true)).0[..], "{k}");
+    }
 }

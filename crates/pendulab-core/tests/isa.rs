@@ -1,10 +1,12 @@
 //! The instruction-set levels of `pendulab_core::isa` give the same numbers bit for bit: every
-//! method through the stepper (loop and single steps, DOP853's dense output), the ensemble kernel
-//! (with damping and a summary), the string stepper, and the exact solution of every kind (single
-//! states and batches, the parallel path included), once at the best level of this CPU and once
-//! restricted to the baseline (the plain fallback an older CPU runs). One test in its own binary, because the
-//! restriction is process-wide. SI units; rosette-like starts.
+//! method through the stepper (loop and single steps, DOP853's dense output), the ensemble kernels
+//! (RATTLE with damping and a summary; DOP853 vectorised across trajectories), the string stepper,
+//! and the exact solution of every kind (single states and batches, the parallel path included),
+//! once at the best level of this CPU and once restricted to the baseline (the plain fallback an
+//! older CPU runs). One test in its own binary, because the restriction is process-wide. SI units;
+//! rosette-like starts.
 
+use pendulab_core::ensemble::adaptive::{run_adaptive, AdaptiveSettings};
 use pendulab_core::ensemble::{run_with, EnsembleSave, Extras, LANES};
 use pendulab_core::exact::ExactSolution;
 use pendulab_core::isa;
@@ -57,6 +59,12 @@ fn everything() -> Vec<u64> {
         out.extend([s.z.0, s.z.1, s.energy_per_mass.0, s.energy_per_mass.1].map(f64::to_bits));
     }
     out.extend(res.settle_time.unwrap().into_iter().map(f64::to_bits));
+    // the DOP853 ensemble, vectorised across trajectories (ensemble/adaptive_lanes.rs)
+    let damped = AnyModel::build("damped", params, &[("damping", 0.2), ("drag", 0.1)]).unwrap();
+    let options = SolveOptions { method: Method::Dop853, dt: 0.0, rtol: 1e-9, atol: 1e-11, project: true };
+    let set = AdaptiveSettings { options, t0: 0.0, t_end: 2.0, times: vec![0.0, 2.0], conserve: false };
+    let res = run_adaptive(&damped, &starts, &set, &p, &c).unwrap();
+    res.states.iter().for_each(|s| push(&mut out, s));
     let string = StringPendulum::new(params, 0.0).unwrap();
     let mut st = StringStepper::new(string, 0.0, start(&params, 6), Method::Rattle, 1e-3).unwrap();
     st.step(3000).unwrap();

@@ -137,8 +137,10 @@ def simulate_ensemble(
     ``method="dop853"``: any rod model of the registry (drag, forcing, friction, a moving pivot, …),
     each trajectory adaptive with tolerances ``rtol``, ``atol`` [m, m/s] (and ``conserve``, as in
     :func:`~pendulab.simulate`), exactly ``simulate(pendulum, start, t_end, method="dop853",
-    save_at=[0, t_end])``; trajectories in parallel on all cores; final states only (t = 0 and
-    t_end), no summary, the pendulum's own parameters for all (``dt`` is not used).
+    save_at=[0, t_end])`` with trajectory k's ``length[k]``, ``g[k]`` and ``damping[k]`` (each one
+    value or N; ``damping`` only for models that have it); vectorised across trajectories (each its
+    own step size) on all cores; final states only (t = 0 and t_end), no summary (``dt`` is not
+    used).
 
     Examples
     --------
@@ -322,7 +324,7 @@ def _result(pendulum: Pendulum, plan: _Plan, out: dict[str, Any], interrupted: b
     )
 
 
-_RATTLE_ONLY = ("save", "save_every", "summary", "length", "g", "damping", "settle_angle")
+_RATTLE_ONLY = ("save", "save_every", "summary", "settle_angle")
 
 
 def _adaptive(pendulum: Pendulum, states: Any, t_end: Any, kw: dict[str, Any]) -> EnsembleResult:
@@ -330,13 +332,21 @@ def _adaptive(pendulum: Pendulum, states: Any, t_end: Any, kw: dict[str, Any]) -
     given = [k for k in _RATTLE_ONLY if kw[k] is not None]
     if given:
         raise InvalidInputError(
-            f"simulate_ensemble(method='dop853') keeps the final states of the pendulum's own model: "
+            f"simulate_ensemble(method='dop853') keeps the final states only: "
             f"{', '.join(given)} apply to method='rattle' only"
         )
     x, v = _as_states(states)
     if not (np.isfinite(x).all() and np.isfinite(v).all()):
         raise InvalidInputError("method='dop853' needs every start row finite (no NaN or inf)")
     t_end = limits.number("t_end", t_end, "time", positive=True)
+    n = x.shape[0]
+    per: dict[str, FloatArray] = {}
+    if any(kw[k] is not None for k in ("length", "g", "damping")):  # one model per distinct triple
+        per["length"] = _per_trajectory("length", kw["length"], pendulum.length, n, limits.COMMON["length"])
+        per["g"] = _per_trajectory("g", kw["g"], pendulum.g, n, limits.COMMON["g"])
+        if kw["damping"] is not None:
+            c_model = float(pendulum.extra.get("damping", 0.0))
+            per["damping"] = _per_trajectory("damping", kw["damping"], c_model, n, _DAMPING)
     return simulate_adaptive(
         pendulum,
         x,
@@ -347,6 +357,7 @@ def _adaptive(pendulum: Pendulum, states: Any, t_end: Any, kw: dict[str, Any]) -
         atol=kw["atol"],
         conserve=kw["conserve"],
         progress=kw["progress"],
+        per_trajectory=per,
     )
 
 

@@ -30,6 +30,8 @@ pub const LANES: usize = 64;
 pub const CHECK_EVERY: u64 = 1024;
 
 pub mod adaptive;
+pub mod adaptive_lanes;
+mod adaptive_settings;
 mod block;
 mod output;
 pub use block::TILE;

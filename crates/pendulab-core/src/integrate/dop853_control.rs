@@ -18,10 +18,10 @@ const FAC_MAX: f64 = 6.0;
 /// The controller's limits: the largest step `h_max` [s], and the tolerances (named when the step
 /// underflows).
 #[derive(Debug, Clone, Copy)]
-pub(super) struct StepControl {
-    pub(super) h_max: f64,
-    pub(super) rtol: f64,
-    pub(super) atol: f64,
+pub(crate) struct StepControl {
+    pub(crate) h_max: f64,
+    pub(crate) rtol: f64,
+    pub(crate) atol: f64,
 }
 
 impl StepControl {
@@ -30,7 +30,7 @@ impl StepControl {
     /// sliver). [`Error::StepSizeUnderflow`] when it is NaN or below ten ulp of t, [`Error::Diverged`] when
     /// it or t + h is infinite.
     #[inline(always)]
-    pub(super) fn trial(&self, h: f64, t0: f64, t_stop: f64) -> Result<(f64, bool)> {
+    pub(crate) fn trial(&self, h: f64, t0: f64, t_stop: f64) -> Result<(f64, bool)> {
         let span = t_stop - t0;
         let mut h = h.min(self.h_max);
         let last = t0 + 1.01 * h >= t_stop;
@@ -52,13 +52,13 @@ impl StepControl {
 
     /// err^{1/8} by three square roots: several times cheaper than powf, same to ~1 ulp.
     #[inline(always)]
-    pub(super) fn error_root(err: f64) -> f64 {
+    pub(crate) fn error_root(err: f64) -> f64 {
         err.sqrt().sqrt().sqrt()
     }
 
     /// The next step after accepting `h` with error root `root` (no growth after a rejection).
     #[inline(always)]
-    pub(super) fn after_accept(h: f64, root: f64, rejected_last: bool) -> f64 {
+    pub(crate) fn after_accept(h: f64, root: f64, rejected_last: bool) -> f64 {
         let fac = (root / SAFETY).clamp(1.0 / FAC_MAX, 1.0 / FAC_MIN);
         let h_new = h / fac;
         if rejected_last {
@@ -71,7 +71,7 @@ impl StepControl {
     /// The retry after rejecting `h` (err > 1, or NaN: f64::min ignores the NaN and the step shrinks
     /// by 1/FAC_MIN).
     #[inline(always)]
-    pub(super) fn after_reject(h: f64, root: f64) -> f64 {
+    pub(crate) fn after_reject(h: f64, root: f64) -> f64 {
         h / (1.0 / FAC_MIN).min(root / SAFETY)
     }
 }

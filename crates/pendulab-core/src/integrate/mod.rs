@@ -12,7 +12,7 @@
 
 pub mod composition;
 pub mod dop853;
-mod dop853_control;
+pub(crate) mod dop853_control;
 pub(crate) mod dop853_tableau;
 pub mod rattle;
 pub mod rattle_kernel;

@@ -39,7 +39,69 @@ mod invariants;
 mod system;
 
 pub use invariants::project_invariants;
-use system::{error_scale, rhs, Y6};
+pub(crate) use system::{error_scale, rhs, Y6};
+
+/// Hairer's `hinit`: a first step [s] from (t, y) with f0 = f(t, y), from the sizes of y, f and an
+/// estimate of f', capped by `h_max` and `span` [s] (shared with the vectorised ensemble,
+/// `ensemble/adaptive_lanes.rs`, so that both take the same first step).
+#[inline(always)]
+pub(crate) fn initial_step<M: Model>(
+    atol: f64,
+    rtol: f64,
+    h_max: f64,
+    model: &M,
+    (t, y, f0): (f64, Y6, Y6),
+    span: f64,
+    stats: &mut Stats,
+) -> f64 {
+    let sk = error_scale(atol, rtol, y, y);
+    let (dnf, dny) = (f0.scaled_norm2(sk), y.scaled_norm2(sk));
+    let usable = dnf.is_finite() && dny.is_finite() && dnf > 1e-10 && dny > 1e-10;
+    let mut h = if usable { (dny / dnf).sqrt() * 0.01 } else { 1e-6 };
+    h = h.min(h_max).min(span);
+    let f1 = rhs(model, t + h, y.axpy(h, f0));
+    stats.rhs_evals += 1;
+    let der2 = f1.sub(f0).scaled_norm2(sk).sqrt() / h;
+    let der12 = der2.max(dnf.sqrt());
+    let h1 = if !der12.is_finite() {
+        h
+    } else if der12 <= 1e-15 {
+        (h * 1e-3).max(1e-6)
+    } else {
+        (0.01 / der12).powf(ERROR_EXPONENT)
+    };
+    (100.0 * h).min(h1).min(h_max).min(span)
+}
+
+/// The accepted y₁ at `t1` [s] after a step of `h` [s], projected onto TS² of length `length` [m]
+/// when `project` is on, and then onto the start's energy and J₃ (`targets`, where the model keeps
+/// them) when `invariants` is on; shared with the vectorised ensemble.
+#[inline(always)]
+pub(crate) fn project_accepted<M: Model>(
+    model: &M,
+    (project, invariants, length): (bool, bool, f64),
+    targets: Option<(DVec3, f64, f64)>,
+    (t1, y1): (f64, Y6),
+    h: f64,
+) -> Result<Y6> {
+    if !project {
+        return Ok(y1);
+    }
+    let mut p = project_onto_tangent_bundle(length, y1.x, y1.v).ok_or(Error::Diverged {
+        t: t1,
+        method: "dop853",
+        dt: h,
+    })?;
+    if let (true, Some((x0, k0, j0))) = (invariants, targets) {
+        let e = model.is_conservative().then(|| k0 - model.potential_change_per_mass(x0, p.x));
+        // J₃ is an invariant only without damping, drag, forcing or a frame: axisymmetry
+        // alone is not enough (damping makes J₃ decay like e^{−ct}).
+        let kept = model.is_axisymmetric() && model.is_conservative() && !model.has_velocity_forces();
+        let j = kept.then_some(j0);
+        p.v = project_invariants(p.x, p.v, e, j);
+    }
+    Ok(Y6::from(p))
+}
 
 /// DOP853 with its step-size controller and the data of its last accepted step.
 #[derive(Debug, Clone)]
@@ -146,25 +208,9 @@ impl Dop853 {
         (self.t_old, self.t_old + self.h_old)
     }
 
-    /// Hairer's `hinit`: a first step from the sizes of y, f and an estimate of f'.
+    /// Hairer's `hinit` ([`initial_step`]) with this integrator's tolerances and h_max.
     fn initial_step<M: Model>(&self, model: &M, t: f64, y: Y6, f0: Y6, span: f64, stats: &mut Stats) -> f64 {
-        let sk = error_scale(self.atol, self.rtol, y, y);
-        let (dnf, dny) = (f0.scaled_norm2(sk), y.scaled_norm2(sk));
-        let usable = dnf.is_finite() && dny.is_finite() && dnf > 1e-10 && dny > 1e-10;
-        let mut h = if usable { (dny / dnf).sqrt() * 0.01 } else { 1e-6 };
-        h = h.min(self.h_max).min(span);
-        let f1 = rhs(model, t + h, y.axpy(h, f0));
-        stats.rhs_evals += 1;
-        let der2 = f1.sub(f0).scaled_norm2(sk).sqrt() / h;
-        let der12 = der2.max(dnf.sqrt());
-        let h1 = if !der12.is_finite() {
-            h
-        } else if der12 <= 1e-15 {
-            (h * 1e-3).max(1e-6)
-        } else {
-            (0.01 / der12).powf(ERROR_EXPONENT)
-        };
-        (100.0 * h).min(h1).min(self.h_max).min(span)
+        initial_step(self.atol, self.rtol, self.h_max, model, (t, y, f0), span, stats)
     }
 
     /// One accepted step from (`t`, `s`), never past `t_stop` \[s\] (which may be +∞); rejected
@@ -282,24 +328,8 @@ impl Dop853 {
         h: f64,
         stats: &mut Stats,
     ) -> Result<()> {
-        let y1 = if self.project {
-            let mut p = project_onto_tangent_bundle(self.length, y1.x, y1.v).ok_or(Error::Diverged {
-                t: t1,
-                method: "dop853",
-                dt: h,
-            })?;
-            if let (true, Some((x0, k0, j0))) = (self.invariants, self.targets) {
-                let e = model.is_conservative().then(|| k0 - model.potential_change_per_mass(x0, p.x));
-                // J₃ is an invariant only without damping, drag, forcing or a frame: axisymmetry
-                // alone is not enough (damping makes J₃ decay like e^{−ct}).
-                let kept = model.is_axisymmetric() && model.is_conservative() && !model.has_velocity_forces();
-                let j = kept.then_some(j0);
-                p.v = project_invariants(p.x, p.v, e, j);
-            }
-            Y6::from(p)
-        } else {
-            y1
-        };
+        let flags = (self.project, self.invariants, self.length);
+        let y1 = project_accepted(model, flags, self.targets, (t1, y1), h)?;
         let f1 = rhs(model, t1, y1);
         stats.rhs_evals += 1;
         self.k[STAGES] = f1;

@@ -12,27 +12,27 @@ use glam::DVec3;
 
 /// A point of the first-order system: position and velocity, or their derivatives.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
-pub(super) struct Y6 {
-    pub(super) x: DVec3,
-    pub(super) v: DVec3,
+pub(crate) struct Y6 {
+    pub(crate) x: DVec3,
+    pub(crate) v: DVec3,
 }
 
 impl Y6 {
     #[inline(always)]
-    pub(super) fn axpy(self, a: f64, k: Y6) -> Y6 {
+    pub(crate) fn axpy(self, a: f64, k: Y6) -> Y6 {
         Y6 { x: self.x + k.x * a, v: self.v + k.v * a }
     }
     #[inline(always)]
-    pub(super) fn sub(self, o: Y6) -> Y6 {
+    pub(crate) fn sub(self, o: Y6) -> Y6 {
         Y6 { x: self.x - o.x, v: self.v - o.v }
     }
     #[inline(always)]
-    pub(super) fn scale(self, a: f64) -> Y6 {
+    pub(crate) fn scale(self, a: f64) -> Y6 {
         Y6 { x: self.x * a, v: self.v * a }
     }
     /// Σ (yᵢ/scaleᵢ)² over the six components.
     #[inline(always)]
-    pub(super) fn scaled_norm2(self, scale: Y6) -> f64 {
+    pub(crate) fn scaled_norm2(self, scale: Y6) -> f64 {
         // A zero weight (atol = 0 and a component exactly 0) counts a zero as 0 and anything else as ∞.
         let q = |d: f64, s: f64| {
             if s > 0.0 {
@@ -59,13 +59,13 @@ impl From<State> for Y6 {
 
 /// The right-hand side of T-2.4: (ẋ, v̇).
 #[inline(always)]
-pub(super) fn rhs<M: Model>(model: &M, t: f64, y: Y6) -> Y6 {
+pub(crate) fn rhs<M: Model>(model: &M, t: f64, y: Y6) -> Y6 {
     Y6 { x: y.v, v: acceleration(model, t, y.x, y.v) }
 }
 
 /// Error weights atol + rtol·max(|a|, |b|), componentwise.
 #[inline(always)]
-pub(super) fn error_scale(atol: f64, rtol: f64, a: Y6, b: Y6) -> Y6 {
+pub(crate) fn error_scale(atol: f64, rtol: f64, a: Y6, b: Y6) -> Y6 {
     let s = |p: DVec3, q: DVec3| DVec3::splat(atol) + p.abs().max(q.abs()) * rtol;
     Y6 { x: s(a.x, b.x), v: s(a.v, b.v) }
 }
