@@ -75,3 +75,28 @@ def test_every_key_is_in_every_page_table(lang: str) -> None:
         line = re.search(rf"'server\.{k}': (['`\"])(.*)\1,", table)
         assert line is not None, k
         assert set(re.findall(r"\{(\w+)\}", line.group(2))) == set(re.findall(r"\{(\w+)\}", words)), (lang, k)
+
+
+def test_a_fit_past_the_servers_time_limit_is_a_keyed_503() -> None:
+    """The time-limit and busy answers of the REST API carry ``key`` and ``values`` (``work_timeout``,
+    ``busy``), so that the page words them in its language (web/src/i18n/index.ts ``httpProblem``)."""
+    import json
+
+    from ws_session import LabClient
+
+    from pendulab.server import create_app
+    from pendulab.server.notices import keyed_body
+
+    filmed = Path(__file__).resolve().parents[2] / "examples" / "data" / "filmed_swing.csv"
+    # a limit far below any fit's time (0.5 of the pool's 0.02 s): the worker is stopped
+    client = LabClient(create_app("rosette", fit_seconds=0.02))
+    body = json.dumps({"csv": filmed.read_text(), "name": "filmed_swing.csv"})
+    r = client.post("/api/fit", content=body, headers={"content-type": "application/json"})
+    answer = r.json()
+    assert r.status_code == 503 and answer["key"] == "work_timeout", answer
+    assert answer["detail"] == message("work_timeout", **answer["values"])
+    assert keyed_body("busy", waiting=8) == {
+        "detail": message("busy", waiting=8),
+        "key": "busy",
+        "values": {"waiting": 8},
+    }

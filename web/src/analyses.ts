@@ -6,16 +6,14 @@ import type { EMView, EffectivePotential, ExactQuantities, Frame, ReducedCurves,
 import type { ReducedView } from './scene/reduced';
 import type { LabStore } from './state';
 import { offSphereNote, staysOnSphere } from './models';
-import { t } from './i18n';
+import { httpProblem, t } from './i18n';
 
-/** GET or POST JSON; an HTTP error becomes an Error with the server's `detail`. */
+/** GET or POST JSON; an HTTP error becomes an Error with the server's words (`httpProblem`: keyed ones in
+ *  the page's language). */
 export async function getJSON<T>(path: string, init?: RequestInit): Promise<T> {
   const r = await fetch(path, init);
   const body: unknown = await r.json();
-  if (!r.ok) {
-    const detail = (body as { detail?: unknown }).detail;
-    throw new Error(typeof detail === 'string' ? detail : `${path}: HTTP ${r.status}`);
-  }
+  if (!r.ok) throw new Error(httpProblem(body, `${path}: HTTP ${r.status}`));
   return body as T;
 }
 

@@ -53,6 +53,7 @@ from .api_docs import api_docs_page
 from .fit import FIT_OPENAPI, FIT_QUEUE, FIT_WALL_SECONDS, FIT_WORKERS, MAX_FIT_BODY, fit_endpoint
 from .hygiene import RequestBodies, SecurityHeaders
 from .live_socket import admit, loop_limiter, run_session
+from .notices import keyed_body
 from .protocol import (
     ExactRequest,
     validation_problems,
@@ -195,19 +196,19 @@ def _add_error_handlers(app: FastAPI) -> None:
 
     @app.exception_handler(Busy)
     async def busy_pool(request: Request, exc: Busy) -> JSONResponse:
-        return JSONResponse({"detail": str(exc)}, status_code=503, headers={"retry-after": "1"})
+        return JSONResponse(
+            keyed_body("busy", waiting=exc.waiting), status_code=503, headers={"retry-after": "1"}
+        )
 
     @app.exception_handler(WorkFailed)
     async def failed(request: Request, exc: WorkFailed) -> JSONResponse:
         log.error("a computation failed: %s", exc)
-        return JSONResponse({"detail": f"internal error: {exc}"}, status_code=500)
+        return JSONResponse(keyed_body("internal_error", detail=str(exc)), status_code=500)
 
     @app.exception_handler(_Busy)
     async def busy(request: Request, exc: _Busy) -> JSONResponse:
         return JSONResponse(
-            {"detail": f"busy: {REST_QUEUE} computations are waiting; try again in a moment"},
-            status_code=503,
-            headers={"retry-after": "1"},
+            keyed_body("busy", waiting=REST_QUEUE), status_code=503, headers={"retry-after": "1"}
         )
 
 
@@ -253,7 +254,7 @@ def _add_posts(app: FastAPI, room: Room, analyses: WorkerPool) -> None:
             try:
                 return Response(await analyses.run(fn, req), media_type="application/json")
             except WorkTimeout as e:
-                return JSONResponse({"detail": str(e)}, status_code=503)
+                return JSONResponse(keyed_body("work_timeout", seconds=f"{e.seconds:g}"), status_code=503)
             except WorkInvalid as e:
                 return _unprocessable(e)
 

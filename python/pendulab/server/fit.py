@@ -45,6 +45,7 @@ from ..fitting.problem import ROD_MODELS
 from ..fitting.table import parse_table
 from ..model import FloatArray, Pendulum
 from .fit_words import keyed, reasons, report_items
+from .notices import keyed_body
 from .protocol import validation_problems
 from .room import Room, client_key
 from .scenarios import Setup
@@ -267,12 +268,10 @@ def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[
                 out = await pool.run(fit_data, req, min(FIT_SECONDS, 0.5 * seconds))
             except Busy:
                 return JSONResponse(
-                    {"detail": f"busy: {FIT_QUEUE} fits are waiting; try again in a moment"},
-                    status_code=503,
-                    headers={"retry-after": "5"},
+                    keyed_body("busy", waiting=FIT_QUEUE), status_code=503, headers={"retry-after": "5"}
                 )
             except WorkTimeout as e:
-                return _problem(503, str(e))
+                return JSONResponse(keyed_body("work_timeout", seconds=f"{e.seconds:g}"), status_code=503)
             except WorkInvalid as e:
                 return _problem(422, str(e))
         return Response(out, media_type="application/json")

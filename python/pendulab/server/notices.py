@@ -95,6 +95,12 @@ def message(key: str, **values: Any) -> str:
     return MESSAGES[key].format(**values)
 
 
+def keyed_body(key: str, **values: Any) -> dict[str, Any]:
+    """The JSON body of an HTTP error answer of message ``key``: the English ``detail``, and for a page
+    that translates it, ``key`` and ``values``."""
+    return {"detail": message(key, **values), "key": key, "values": values}
+
+
 def keyed_notice(key: str, command: str | None = None, **values: Any) -> dict[str, Any]:
     """An ``error`` notice of message ``key``: its English words, the key and the values."""
     return error_notice(message(key, **values), command, key, values)

@@ -46,11 +46,20 @@ PRELOAD = ["pendulab", "pendulab.server.fit", "pendulab.server.views", "pendulab
 
 
 class Busy(Exception):
-    """Too many requests already wait for this pool's workers (HTTP 503, try again)."""
+    """Too many requests already wait for this pool's workers (HTTP 503, try again); ``waiting``: how
+    many."""
+
+    def __init__(self, message: str, waiting: int = 0) -> None:
+        super().__init__(message)
+        self.waiting = waiting
 
 
 class WorkTimeout(Exception):
-    """The job ran past its wall-time limit; its worker was killed (HTTP 503)."""
+    """The job ran past its wall-time limit of ``seconds`` [s]; its worker was killed (HTTP 503)."""
+
+    def __init__(self, message: str, seconds: float = 0.0) -> None:
+        super().__init__(message)
+        self.seconds = seconds
 
 
 class WorkInvalid(Exception):
@@ -190,7 +199,10 @@ class WorkerPool:
         :class:`WorkInvalid` or :class:`WorkFailed` (module doc)."""
         gate = self._gate()
         if gate.locked() and self._waiting >= self.queue:
-            raise Busy(f"busy: {self._waiting} {self.name} requests are waiting; try again in a moment")
+            raise Busy(
+                f"busy: {self._waiting} {self.name} requests are waiting; try again in a moment",
+                self._waiting,
+            )
         self._waiting += 1
         try:
             await gate.acquire()
@@ -232,7 +244,8 @@ class WorkerPool:
             self.killed += 1
             raise WorkTimeout(
                 f"the {self.name} took longer than {seconds:g} s and was stopped; "
-                "try fewer data, fewer parameters or a simpler model"
+                "try fewer data, fewer parameters or a simpler model",
+                seconds,
             ) from None
         finally:
             if done:

@@ -375,6 +375,8 @@ export const DE: Words = {
   'server.device_full': 'zu viele Laborsitzungen von diesem Gerät: {have} sind offen, mehr darf ein Gerät nicht haben; einen anderen Tab schließen',
   'server.device_busy': 'zu viele Berechnungen gleichzeitig von diesem Gerät: höchstens {most} dürfen für ein Gerät laufen oder warten; die Antworten abwarten, dann erneut versuchen',
   'server.internal_error': 'interner Fehler des Servers: {detail}',
+  'server.busy': 'beschäftigt: {waiting} Berechnungen warten schon; gleich noch einmal versuchen',
+  'server.work_timeout': 'die Berechnung dauerte länger als {seconds} s und wurde abgebrochen; weniger Daten, weniger Parameter oder ein einfacheres Modell versuchen',
   'scenario.conical': 'Kegelpendel bei 45°',
   'scenario.damped': 'Gedämpfte Rosette (c = 0.05 1/s)',
   'scenario.foucault': 'Foucault-Pendel bei 49° N, Erddrehung übertrieben (Ω = 0.02 rad/s)',

@@ -373,6 +373,8 @@ export const EN = {
   'server.device_full': 'too many lab sessions from your device: {have} are open, the most one device may have; close another tab',
   'server.device_busy': 'too many computations at once from your device: at most {most} may run or wait for one device; wait for the answers, then try again',
   'server.internal_error': 'internal error of the server: {detail}',
+  'server.busy': 'busy: {waiting} computations are waiting; try again in a moment',
+  'server.work_timeout': 'the computation took longer than {seconds} s and was stopped; try fewer data, fewer parameters or a simpler model',
   'scenario.conical': 'Conical pendulum at 45°',
   'scenario.damped': 'Damped rosette (c = 0.05 1/s)',
   'scenario.foucault': 'Foucault pendulum at 49° N, Earth’s rotation exaggerated (Ω = 0.02 rad/s)',

@@ -375,6 +375,8 @@ export const FR: Words = {
   'server.device_full': 'trop de sessions du labo depuis votre appareil : {have} sont ouvertes, le maximum par appareil ; fermer un autre onglet',
   'server.device_busy': 'trop de calculs à la fois depuis votre appareil : au plus {most} peuvent tourner ou attendre pour un appareil ; attendre les réponses, puis réessayer',
   'server.internal_error': 'erreur interne du serveur : {detail}',
+  'server.busy': 'occupé : {waiting} calculs attendent déjà ; réessayer dans un instant',
+  'server.work_timeout': 'le calcul a duré plus de {seconds} s et a été arrêté ; essayer moins de données, moins de paramètres ou un modèle plus simple',
   'scenario.conical': 'Pendule conique à 45°',
   'scenario.damped': 'Rosette amortie (c = 0.05 1/s)',
   'scenario.foucault': 'Pendule de Foucault à 49° N, rotation de la Terre exagérée (Ω = 0.02 rad/s)',

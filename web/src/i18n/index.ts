@@ -87,6 +87,17 @@ export function modelHelp(name: string, summary: string): string {
   return Object.hasOwn(EN, key) ? t(key as Key) : summary;
 }
 
+/** The words of an HTTP error answer of the server (its JSON body) in the page's language: keyed answers
+ *  (`key`, `values`: python/pendulab/server/messages.json) through the table, else the English `detail`,
+ *  else `fallback` (e.g. "HTTP 503"). */
+export function httpProblem(body: unknown, fallback: string): string {
+  const b = (typeof body === 'object' && body !== null ? body : {}) as { detail?: unknown; key?: unknown; values?: unknown };
+  const detail = typeof b.detail === 'string' ? b.detail : fallback;
+  if (typeof b.key !== 'string') return detail;
+  const values = (typeof b.values === 'object' && b.values !== null ? b.values : {}) as Record<string, string | number>;
+  return serverWords({ message: detail, key: b.key, values });
+}
+
 /** An error notice of the server in the page's language: `server.<key>` of the table filled with the
  *  notice's values when the server keyed it (python/pendulab/server/messages.json), else its English text. */
 export function serverWords(n: { message: string; key?: string; values?: Record<string, string | number> }): string {

@@ -4,7 +4,7 @@
 // other in the scene), and a button that clears the path. The checking and the commands are fitdata.ts's.
 import { FIT_MODELS, MAX_FIT_BYTES, fitRequest, readFitAnswer } from '../fitdata';
 import type { FitAnswer } from '../fitdata';
-import { modelWords, t } from '../i18n';
+import { httpProblem, modelWords, t } from '../i18n';
 import { fitLine, fitReportLines } from '../i18n/fitwords';
 
 export interface FitDataActions {
@@ -106,10 +106,7 @@ export class FitDataPanel {
         body: JSON.stringify(req),
       });
       const raw: unknown = await r.json().catch(() => ({ detail: `HTTP ${r.status}` }));
-      if (!r.ok) {
-        const detail = (raw as { detail?: unknown }).detail;
-        throw new Error(typeof detail === 'string' ? detail : `HTTP ${r.status}`);
-      }
+      if (!r.ok) throw new Error(httpProblem(raw, `HTTP ${r.status}`));
       const answer = readFitAnswer(raw);
       if (typeof answer === 'string') throw new Error(answer);
       // the report and the warnings in the page's language (keyed by the server: i18n/fitwords.ts), in

@@ -5,7 +5,7 @@ import { Controls } from '../panels/controls';
 import type { ScenarioInfo, Schema } from '../protocol';
 import { scenarioRequest } from '../export';
 import { linkContents } from '../url';
-import { t } from '../i18n';
+import { httpProblem, t } from '../i18n';
 import { byId, download, downloadBlob } from './page';
 import type { SharedLink } from './link';
 import type { LabCore } from './session';
@@ -20,7 +20,7 @@ function downloadTOML(lab: LabCore): void {
     body: JSON.stringify(scenarioRequest(s)),
   })
     .then(async (r) => {
-      if (!r.ok) throw new Error(((await r.json()) as { detail?: string }).detail ?? `HTTP ${r.status}`);
+      if (!r.ok) throw new Error(httpProblem(await r.json().catch(() => ({})), `HTTP ${r.status}`));
       downloadBlob(`pendulab-${s.scenario ?? 'lab'}.toml`, await r.blob());
     })
     .catch((e: unknown) => lab.explain(`scenario download: ${e instanceof Error ? e.message : String(e)}`));

@@ -4,7 +4,7 @@
 // file of python/pendulab/examples/scenarios has a title in every table.
 import { describe, expect, it } from 'vitest';
 import messages from '../../../python/pendulab/server/messages.json';
-import { LANGUAGES, scenarioWords, serverWords, setLanguage } from '../../src/i18n';
+import { LANGUAGES, httpProblem, scenarioWords, serverWords, setLanguage } from '../../src/i18n';
 import { EN } from '../../src/i18n/en';
 import { parseNotice } from '../../src/protocol';
 
@@ -35,6 +35,23 @@ describe('server messages', () => {
     const odd = parseNotice(JSON.stringify({ type: 'error', message: 'm', command: null, key: 'missing', values: { name: { x: 1 } } }));
     expect(odd.type === 'error' && odd.key).toBe(undefined);
     setLanguage('en');
+  });
+});
+
+describe('HTTP error answers', () => {
+  it('a keyed answer (busy, time limit, device busy) in the page language; an unkeyed one as the server wrote it', () => {
+    const busy = { detail: 'busy: 8 computations are waiting; try again in a moment', key: 'busy', values: { waiting: 8 } };
+    const timeout = { detail: 'the computation took longer than 60 s …', key: 'work_timeout', values: { seconds: '60' } };
+    setLanguage('de');
+    expect(httpProblem(busy, 'HTTP 503')).toBe('beschäftigt: 8 Berechnungen warten schon; gleich noch einmal versuchen');
+    expect(httpProblem(timeout, 'HTTP 503')).toContain('länger als 60 s');
+    setLanguage('fr');
+    expect(httpProblem({ detail: 'x', key: 'device_busy', values: { most: 2 } }, 'HTTP 429')).toContain('au plus 2');
+    expect(httpProblem({ detail: 'row 3: not a number' }, 'HTTP 422')).toBe('row 3: not a number');
+    expect(httpProblem({}, 'HTTP 500')).toBe('HTTP 500');
+    expect(httpProblem(null, 'HTTP 502')).toBe('HTTP 502');
+    setLanguage('en');
+    expect(httpProblem(busy, 'HTTP 503')).toBe(busy.detail);
   });
 });
 
