@@ -108,10 +108,16 @@ def test_the_pendulum_accessors_refuse_a_crane_and_the_crane_accessor_a_pendulum
         pl.load_scenario(SCENARIOS / "rosette.toml").crane()
 
 
-def test_the_labs_scenario_list_leaves_the_crane_out() -> None:
+def test_the_labs_scenario_list_opens_the_crane_in_its_crane_mode() -> None:
+    """The lab lists crane files too (its crane mode runs them, server/crane_setup.py): as the crane
+    model with DOP853, the file's rope, load and shaper, and no entry with an error."""
     pytest.importorskip("fastapi")
     from pendulab.server.app import scenarios
 
     listed = {s["name"]: s for s in scenarios()}
-    assert "crane_hoist" not in listed and "rosette" in listed
+    assert "rosette" in listed
+    crane = listed["crane_hoist"]
+    assert crane["model"] == "crane" and crane["method"] == "dop853", crane
+    assert crane["params"]["length"] == 12.0 and crane["params"]["mass"] == 2000.0, crane
+    assert crane["model_params"]["shaping"] == 1.0  # the file's ZV shaper
     assert not [s for s in listed.values() if "error" in s]
