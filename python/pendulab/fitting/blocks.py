@@ -152,8 +152,8 @@ def _fit_block(
     )
     inner.began = search.began
     try:
-        u = inner.run(np.array([start[n] for n in free], dtype=np.float64)).x
-        r = block.residuals(block.with_free(u), search.sigma)
+        res = inner.run(np.array([start[n] for n in free], dtype=np.float64))
+        u, r = res.x, res.fun[: res.fun.size - len(free)]  # the data's residuals at u (no anchor)
         jac = inner.exact_jacobian(block, u)
         if jac is None:
             jac = jacobian(lambda uu: block.safe_residuals(uu, search.sigma), u, 1e-7 * search.scales)
