@@ -121,8 +121,10 @@ test-rust:
 # SIMD128 (every browser since Chrome 91, Firefox 89, Safari 16.4; the page takes it when
 # WebAssembly.validate accepts a SIMD instruction) and without (the fallback), each in its own target
 # directory, then `wasm-opt -O3` (Debian's binaryen; without it the builds are kept unoptimised, with a
-# warning; run again only when cargo wrote a newer build). Both compute the native build's numbers bit
-# for bit (make test-wasm; docs/performance.md).
+# warning; run again when cargo wrote a newer build or the optimiser changed: each .wasm has a
+# `.wasm.opt` beside it naming how it was made, so a build copied unoptimised before binaryen was
+# installed is optimised on the next `make wasm`). Both compute the native build's numbers bit for bit
+# (make test-wasm; docs/performance.md).
 WASM := target/wasm/pendulab-wasm.wasm
 WASM_SIMD := target/wasm/pendulab-wasm-simd128.wasm
 WASM_OPT ?= $(shell command -v wasm-opt)
@@ -134,13 +136,14 @@ wasm:
 	CARGO_TARGET_DIR=$(CURDIR)/target/wasm-simd128 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+simd128" \
 		cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm
 	@mkdir -p target/wasm
-	@set -e; for pair in target/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm:$(WASM) \
+	@set -e; if [ -n "$(WASM_OPT)" ]; then how="$$($(WASM_OPT) --version) -O3"; else how=unoptimised; fi; \
+		for pair in target/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm:$(WASM) \
 		target/wasm-simd128/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm:$(WASM_SIMD); do \
 		src=$${pair%%:*}; dst=$${pair#*:}; \
-		if [ "$$dst" -nt "$$src" ]; then continue; fi; \
+		if [ "$$dst" -nt "$$src" ] && [ "$$(cat $$dst.opt 2>/dev/null)" = "$$how" ]; then continue; fi; \
 		if [ -n "$(WASM_OPT)" ]; then echo "wasm-opt -O3 $$src -> $$dst"; $(WASM_OPT) -O3 $$src -o $$dst.tmp; \
 		else echo "warning: wasm-opt not found (apt-get install binaryen): $$dst is not optimised (slower)" >&2; cp $$src $$dst.tmp; fi; \
-		mv $$dst.tmp $$dst; done
+		rm -f $$dst.opt; mv $$dst.tmp $$dst; echo "$$how" > $$dst.opt; done
 	@ls -l $(WASM) $(WASM_SIMD)
 
 # The lab with nothing to install (docs/lab.md): one HTML file with the engine (.wasm, base64), its Web
