@@ -3,9 +3,13 @@
 // server's core computed — nothing here integrates the motion.
 //
 // Period timer: the z-period T_z is the time between two successive lowest points of the bob (z minimal,
-// where ż = v₃ changes sign from − to +; the crossing time interpolated linearly in ż between the two frames
-// around it), the azimuthal advance Δφ the change of the unwrapped azimuth φ = atan2(x₂, x₁) between them
-// (T-5.1 defines both for the exact solution; the data panel shows those beside the measured ones).
+// where ż = v₃ changes sign from − to +), the azimuthal advance Δφ the change of the unwrapped azimuth
+// φ = atan2(x₂, x₁) between them (T-5.1 defines both for the exact solution; the data panel shows those
+// beside the measured ones). The crossing time between the two frames around it is the root of ż of the
+// quintic Hermite interpolant of z through both frames' z, ż = v₃ and z̈ = a₃ (the core's acceleration the
+// records carry): its error is O(h⁶) in z and O(h⁵) in ż for frames h [s] apart, so the timer keeps the
+// engine's precision when frames arrive far apart (a high time scale, a loaded machine, dropped frames);
+// without a finite acceleration the cubic Hermite interpolant of z and ż.
 import type { Frame, Vec3 } from './protocol';
 
 export const DEG = 180 / Math.PI;
@@ -94,7 +98,7 @@ export interface PeriodReading {
 }
 
 interface Low {
-  /** Time of the lowest point [s], interpolated linearly in ż. */
+  /** Time of the lowest point [s], the root of the Hermite interpolant's ż (`lowestPoint`). */
   t: number;
   /** Unwrapped azimuth there [rad]. */
   phi: number;
@@ -121,6 +125,53 @@ const EMPTY: PeriodReading = {
   from: null,
   to: null,
 };
+
+type Sextic = [number, number, number, number, number, number];
+
+/** The coefficients c₀…c₅ in s ∈ [0, 1] (t = p.t + s h, h = f.t − p.t) of the quintic Hermite interpolant of
+ *  coordinate `i` of the position through frames p and f: its value, velocity and acceleration at both ends
+ *  (c₀ = x, c₁ = h v, c₂ = h² a / 2 at p; c₃…c₅ from the three conditions at f). Without a finite
+ *  acceleration at either end the cubic Hermite interpolant of position and velocity (c₂ from the ends'
+ *  positions and velocities, c₄ = c₅ = 0). */
+export function hermiteCoefficients(p: Frame, f: Frame, i: 0 | 1 | 2): Sextic {
+  const h = f.t - p.t;
+  const [x0, x1, v0, v1, a0, a1] = [p.x[i], f.x[i], h * p.v[i], h * f.v[i], h * h * p.a[i], h * h * f.a[i]];
+  if (!Number.isFinite(a0) || !Number.isFinite(a1)) {
+    const d = x1 - x0;
+    return [x0, v0, 3 * d - 2 * v0 - v1, -2 * d + v0 + v1, 0, 0];
+  }
+  const c2 = a0 / 2;
+  const A = x1 - x0 - v0 - c2;
+  const B = v1 - v0 - 2 * c2;
+  const C = a1 - 2 * c2;
+  return [x0, v0, c2, 10 * A - 4 * B + C / 2, -15 * A + 7 * B - C, 6 * A - 3 * B + C / 2];
+}
+
+/** Position coordinate `i` [m] and its velocity [m/s] at s ∈ [0, 1] between frames p and f, from the Hermite
+ *  interpolant (`hermiteCoefficients`). */
+export function hermite(p: Frame, f: Frame, i: 0 | 1 | 2, s: number): [number, number] {
+  const c = hermiteCoefficients(p, f, i);
+  const x = c[0] + s * (c[1] + s * (c[2] + s * (c[3] + s * (c[4] + s * c[5]))));
+  const dx = c[1] + s * (2 * c[2] + s * (3 * c[3] + s * (4 * c[4] + s * 5 * c[5])));
+  return [x, dx / (f.t - p.t)];
+}
+
+/** Where between frames p and f (ż < 0 at p, ż ≥ 0 at f) the bob is lowest, as s ∈ [0, 1] (t = p.t + s h):
+ *  the root of the Hermite interpolant's ż, bracketed by the frames' signs and found by bisection to the last
+ *  bit of s (a chord of ż, the timer's first way, errs by O(h²) of the time for frames h apart). */
+export function lowestPoint(p: Frame, f: Frame): number {
+  const c = hermiteCoefficients(p, f, 2);
+  const slope = (s: number) => c[1] + s * (2 * c[2] + s * (3 * c[3] + s * (4 * c[4] + s * 5 * c[5])));
+  let [lo, hi] = [0, 1];
+  if (!(slope(lo) < 0 && slope(hi) >= 0)) return -p.v[2] / (f.v[2] - p.v[2]); // no bracket: the chord
+  while (hi - lo > 1e-16) {
+    const mid = 0.5 * (lo + hi);
+    if (mid <= lo || mid >= hi) break;
+    if (slope(mid) < 0) lo = mid;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
 
 /** The period timer: fed every received frame of one trajectory, in time order. It finds the lowest points
  *  of the bob (ż = v₃ changes sign from − to +) — a measurement of the streamed states, for every model,
@@ -179,16 +230,13 @@ export class PeriodTimer {
     this.zHigh = Math.max(this.zHigh, f.x[2]);
     const [a, b] = [p.v[2], f.v[2]];
     if (a < 0 && b >= 0) {
-      const s = a === b ? 0 : -a / (b - a);
+      const s = lowestPoint(p, f);
       const t = p.t + s * (f.t - p.t);
-      const phi = phiPrev + s * (this.phi - phiPrev);
+      // the horizontal position and velocity at the lowest point, from the same interpolant
+      const [rx, vx] = hermite(p, f, 0, s);
+      const [ry, vy] = hermite(p, f, 1, s);
+      const phi = phiPrev + wrapAngle(Math.atan2(ry, rx) - Math.atan2(p.x[1], p.x[0]));
       if (this.lows.length === 0 || this.zHigh - this.zLow > this.minRise) {
-        // the horizontal position and velocity at the lowest point, interpolated like t
-        const lerp = (u: number, w: number) => u + s * (w - u);
-        const rx = lerp(p.x[0], f.x[0]);
-        const ry = lerp(p.x[1], f.x[1]);
-        const vx = lerp(p.v[0], f.v[0]);
-        const vy = lerp(p.v[1], f.v[1]);
         const vh = Math.hypot(vx, vy) || 1;
         const rLow = Math.hypot(rx, ry);
         const rTop = Math.max(this.rMax, rLow);

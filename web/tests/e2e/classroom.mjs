@@ -13,6 +13,13 @@ const boxes = (page) =>
     const r = (el) => el.getBoundingClientRect().toJSON();
     return { canvas: r(document.getElementById('scene-canvas')), panel: r(document.getElementById('panel')), sphere: window.pendulab.sphereOnScreen() };
   });
+/** The exact period [s] of a planar swing of amplitude a [rad] of the ideal pendulum (T-4.6: 4K(k²)/ω₀,
+ *  k = sin(a/2), ω₀ = √(g/l); K by the arithmetic–geometric mean). */
+const swingPeriod = (l, g, a) => {
+  let [p, q] = [1, Math.sqrt(1 - Math.sin(a / 2) ** 2)];
+  for (let i = 0; i < 40 && Math.abs(p - q) > 1e-16 * p; i++) [p, q] = [(p + q) / 2, Math.sqrt(p * q)];
+  return (4 * (Math.PI / (2 * p))) / Math.sqrt(g / l);
+};
 const inside = (s, c) => s.left >= c.left - 1 && s.right <= c.right + 1 && s.top >= c.top - 1 && s.bottom <= c.bottom + 1;
 
 /** Median requestAnimationFrame rate [fps] over `ms`. */
@@ -548,7 +555,12 @@ async function checkOwnTwin(page, { check, WAIT }) {
     };
   });
   const ratio = r.t1 / r.t2;
-  check(Math.abs(ratio - 2) < 1e-3 && /0\.250/.test(r.table), `own pendulum beside the first: T₁ = ${r.t1.toFixed(4)} s (1 m, 1 kg), T₂ = ${r.t2.toFixed(4)} s (0.25 m, 2 kg), T₁/T₂ = ${ratio.toFixed(5)} (√(l₁/l₂) = 2)`);
+  check(Math.abs(ratio - 2) < 1e-5 && /0\.250/.test(r.table), `own pendulum beside the first: T₁ = ${r.t1.toFixed(4)} s (1 m, 1 kg), T₂ = ${r.t2.toFixed(4)} s (0.25 m, 2 kg), T₁/T₂ = ${ratio.toFixed(6)} (√(l₁/l₂) = 2)`);
+  // each timer against the exact period at time scale 4 (frames 1/15 s apart or more on a loaded machine):
+  // to 1e-5, the engine's own accuracy (rattle, dt = 1 ms: (ω₀ dt)²/24 ≈ 2e-6 for 0.25 m)
+  const [e1, e2] = [swingPeriod(1, 9.81, (10 * Math.PI) / 180), swingPeriod(0.25, 9.81, (10 * Math.PI) / 180)];
+  const [d1, d2] = [Math.abs(r.t1 - e1) / e1, Math.abs(r.t2 - e2) / e2];
+  check(d1 < 1e-5 && d2 < 1e-5, `both period timers at time scale 4 against the exact 4K(k²)/ω₀: T₁ ${r.t1.toFixed(6)} s vs ${e1.toFixed(6)} s (${d1.toExponential(1)}), T₂ ${r.t2.toFixed(6)} s vs ${e2.toFixed(6)} s (${d2.toExponential(1)})`);
   const inCanvas = (p) => p !== null && p.x > r.canvas.left && p.x < r.canvas.right && p.y > r.canvas.top && p.y < r.canvas.bottom;
   check(inCanvas(r.bob) && inCanvas(r.twin) && Math.hypot(r.twin.x - r.bob.x, r.twin.y - r.bob.y) > 60, `both bobs in view, side by side (${Math.round(Math.hypot(r.twin.x - r.bob.x, r.twin.y - r.bob.y))} px apart)`);
   await page.screenshot({ path: 'test-results/two-own-pendulums.png' });

@@ -21,7 +21,7 @@ import { tick } from '../../src/panels/curves';
 import { webmType } from '../../src/record';
 
 function frame(t: number, x: Vec3, v: Vec3, extra: Partial<Frame> = {}): Frame {
-  return { t, x, v, energy: 0, j3: 0, tension: 0, power: 0, a: [0, 0, 0], pivot: [0, 0, 0], taut: true, errorX: 0, ...extra };
+  return { t, x, v, energy: 0, j3: 0, tension: 0, power: 0, a: [NaN, NaN, NaN], pivot: [0, 0, 0], taut: true, errorX: 0, ...extra };
 }
 
 describe('angles', () => {
