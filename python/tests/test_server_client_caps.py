@@ -63,6 +63,49 @@ def test_websockets_beyond_the_client_cap_are_refused_with_a_key(port: int) -> N
             assert _first_notice(other)["type"] == "status"
 
 
+def _ws_forwarded(port: int, forwarded: str) -> object:
+    headers = {"X-Forwarded-For": forwarded, "X-Forwarded-Proto": "https"}
+    return connect(
+        f"ws://127.0.0.1:{port}/ws", additional_headers=headers, proxy=None, open_timeout=10, max_queue=None
+    )
+
+
+def test_a_forged_x_forwarded_for_does_not_change_the_client(port: int) -> None:
+    """A local program (127.0.0.1, which uvicorn trusts as a proxy by default) naming another address
+    in ``X-Forwarded-For`` is still the client it connects from: its third session is refused."""
+    with _ws_forwarded(port, "10.9.8.1") as a, _ws_forwarded(port, "10.9.8.2") as b:  # type: ignore[attr-defined]
+        assert _first_notice(a)["type"] == "status" and _first_notice(b)["type"] == "status"
+        with _ws_forwarded(port, "10.9.8.3, 10.9.8.4") as c:  # type: ignore[attr-defined]
+            notice = _first_notice(c)
+            assert notice["type"] == "error" and notice["key"] == "device_full"
+
+
+def test_the_client_key_is_the_peer_unless_a_proxy_is_trusted() -> None:
+    """What the application sees as the client (its key, :func:`pendulab.server.room.client_key`) with
+    a forged ``X-Forwarded-For``: the connecting address by default; the named one only from a proxy
+    given to ``server_config(trusted_proxies=...)`` (``pendulab serve --trust-proxy``)."""
+    import asyncio
+
+    from pendulab.server.room import client_key
+
+    seen: list[tuple[str, str]] = []
+
+    async def app(scope: dict, receive: object, send: object) -> None:
+        seen.append((client_key(scope), scope["scheme"]))
+
+    async def call(trusted: str | None, peer: str) -> tuple[str, str]:
+        config = server_config(app, "127.0.0.1", 8000, trusted_proxies=trusted)
+        config.load()
+        headers = [(b"x-forwarded-for", b"10.9.8.7"), (b"x-forwarded-proto", b"https")]
+        scope = {"type": "http", "scheme": "http", "client": (peer, 5000), "headers": headers}
+        await config.loaded_app(scope, None, None)
+        return seen.pop()
+
+    assert asyncio.run(call(None, "127.0.0.1")) == ("127.0.0.1", "http")
+    assert asyncio.run(call("10.0.0.2", "127.0.0.1")) == ("127.0.0.1", "http")
+    assert asyncio.run(call("10.0.0.2", "10.0.0.2")) == ("10.9.8.7", "https")
+
+
 def _reset(s: socket.socket) -> bool:
     s.settimeout(5)
     try:
@@ -148,6 +191,28 @@ def test_pendulab_serve_takes_the_caps_per_client(monkeypatch: pytest.MonkeyPatc
     assert (room.per_client, room.computations) == (5, 3)
     bad = CliRunner().invoke(cli, ["serve", "--max-connections-per-client", "0"])
     assert bad.exit_code != 0 and "--max-connections-per-client" in bad.output
+
+
+def test_pendulab_serve_trusts_proxy_headers_only_when_told(monkeypatch: pytest.MonkeyPatch) -> None:
+    import uvicorn
+
+    ran: list[uvicorn.Config] = []
+
+    def run(self: uvicorn.Server) -> None:  # instead of serving: what it would serve with
+        ran.append(self.config)
+        self.started = True
+
+    monkeypatch.setattr(uvicorn.Server, "run", run)
+    monkeypatch.setenv("PENDULAB_NO_BROWSER", "1")
+    monkeypatch.setattr(os, "_exit", lambda code: sys.exit(code))
+    base = ["serve", "--no-browser", "--port", str(_free_port())]
+    assert CliRunner().invoke(cli, base).exit_code == 0
+    assert CliRunner().invoke(cli, [*base, "--trust-proxy", "10.0.0.2, fd00::/8"]).exit_code == 0
+    off, on = ran
+    assert off.proxy_headers is False
+    assert on.proxy_headers is True and on.forwarded_allow_ips == "10.0.0.2, fd00::/8"
+    bad = CliRunner().invoke(cli, [*base, "--trust-proxy", "proxy.example"])
+    assert bad.exit_code == 2 and "--trust-proxy: 'proxy.example' is not an IP address" in bad.output
 
 
 def _free_port() -> int:

@@ -76,6 +76,18 @@ def _check_port(host: str, port: int) -> None:
             _fail(f"cannot listen on {host}:{port}: {e.strerror or e}; choose another --port or --host")
 
 
+def _check_proxies(value: str) -> None:
+    """Fails with one line unless ``value`` is ``*`` or comma-separated IP addresses or networks."""
+    for item in value.split(","):
+        item = item.strip()
+        if item == "*":
+            continue
+        try:
+            ipaddress.ip_network(item, strict=False)
+        except ValueError:
+            _fail(f"--trust-proxy: {item!r} is not an IP address or network (e.g. 127.0.0.1, 10.0.0.0/8, *)")
+
+
 def _open_when_up(server: object, url: str) -> None:
     for _ in range(200):  # up to 10 s
         if getattr(server, "started", False):
@@ -148,6 +160,15 @@ def serve(
         bool,
         typer.Option("--no-token", help="No access token, even on the network (anyone there may use it)."),
     ] = False,
+    trust_proxy: Annotated[
+        str | None,
+        typer.Option(
+            help="Behind a reverse proxy: its addresses or networks (comma-separated, '*' any), whose "
+            "X-Forwarded-For / X-Forwarded-Proto name the client. Off by default: the client is the "
+            "connecting address, whatever such headers say.",
+            show_default=False,
+        ),
+    ] = None,
 ) -> None:
     """Start the lab: a web server with the 3-D pendulum, controls, live plots and the exact solution.
 
@@ -168,6 +189,8 @@ def serve(
             f"pendulab serve needs FastAPI, uvicorn and websockets ({e}); "
             "install them with: pip install 'pendulab[lab]'"
         )
+    if trust_proxy is not None:
+        _check_proxies(trust_proxy)
     try:
         secret = access_token(host, token, no_token)
     except ValueError as e:
@@ -185,7 +208,12 @@ def serve(
     _check_port(host, port)
     url = url_for(host, port) if secret is None else lab_url(host, port, secret)
     config = server_config(
-        lab, host, port, max_sessions=max_sessions, max_connections_per_client=max_connections_per_client
+        lab,
+        host,
+        port,
+        max_sessions=max_sessions,
+        max_connections_per_client=max_connections_per_client,
+        trusted_proxies=trust_proxy,
     )
     server = uvicorn.Server(config)
     _say(f"Pendulab lab: {url}   (Ctrl-C stops the server)")

@@ -38,11 +38,18 @@ def server_config(
     max_connections_per_client: int = MAX_CONNECTIONS_PER_CLIENT,
     header_timeout: float = HEADER_TIMEOUT,
     log_level: str = "warning",
+    trusted_proxies: str | None = None,
 ) -> uvicorn.Config:
     """The uvicorn configuration of the lab: ``app`` on ``host``:``port`` with the limits of the module
     doc; at most ``max_sessions`` + 64 connections at once (the pages' WebSockets and their requests;
     beyond that uvicorn answers 503), at most ``max_connections_per_client`` of one client (address;
-    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`)."""
+    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`).
+
+    The client is the address a connection comes from. uvicorn would by default believe the
+    ``X-Forwarded-For`` and ``X-Forwarded-Proto`` headers of connections from 127.0.0.1, so any program
+    on the machine could name its own client key and escape the caps per client: that is off. Behind a
+    reverse proxy, ``trusted_proxies`` names it (uvicorn's ``forwarded_allow_ips``: comma-separated
+    addresses or networks, ``*`` any); only connections from there may name the client."""
     protocol = type(
         "LabH11Protocol",
         (TimedH11Protocol,),
@@ -61,4 +68,6 @@ def server_config(
         timeout_graceful_shutdown=SHUTDOWN_GRACE,  # type: ignore[arg-type]  # uvicorn waits a float
         limit_concurrency=max_sessions + 64,
         server_header=False,
+        proxy_headers=trusted_proxies is not None,  # forged X-Forwarded-For would choose the client key
+        forwarded_allow_ips=trusted_proxies if trusted_proxies is not None else "",
     )
