@@ -166,7 +166,8 @@ test-lab-html: lab-html
 		node tests/e2e/lab_file.mjs $(CURDIR)/$(LAB_HTML)
 
 # The one-file lab's first frame and frame rate with the error estimate on, in headless chromium from
-# file:// (bench/lab_frames.mjs; docs/performance.md; say the load). About a minute.
+# file:// (bench/lab_frames.mjs; docs/performance.md; say the load), beside baselines (a blank page, a bare
+# three.js scene) in the same run, with CPU time per frame by thread. About 1.5 minutes.
 bench-lab-html: lab-html
 	CHROMIUM=$${CHROMIUM:-$$(command -v chromium || command -v chromium-browser)} node bench/lab_frames.mjs $(LAB_HTML)
 

@@ -9,13 +9,21 @@
 //     by the Richardson companion, a second run at dt/2): requestAnimationFrame intervals (median, 90th
 //     percentile, the share within 20 ms), frames drawn per second, and the frames the engine sent
 //     per second;
+//   - baselines in the same run, counted the same way, each page alone in the browser: a blank page
+//     (before the lab and again after it), three.js drawing only its background on a canvas of the lab's
+//     scene size, and a bare three.js scene like the lab's (bob, rod, trail, translucent sphere of reach)
+//     on it; the lab's frame rate as a ratio to the blank page's and the bare scene's;
+//   - per frame of each phase: the page's main thread busy (CDP Performance.getMetrics: TaskDuration, of
+//     it script and style + layout; wall time, so it grows under load), the CPU time of every chromium
+//     thread by process (/proc: robust under load; SwiftShader's raster threads are the GPU process's
+//     Thread<00>, Thread<01>) and the lab's own parts (window.pendulab.frameCosts());
 //   - the machine's 1-minute load average before and after each part (say it next to any number).
-// Not a test: it prints. Usage: node bench/lab_frames.mjs [dist/pendulab-lab.html] [--opens 5] [--seconds 10]
+// Not a test: it prints. About 1.5 min. Usage: node bench/lab_frames.mjs [dist/pendulab-lab.html] [--opens 5] [--seconds 10]
 // Environment: CHROMIUM (default /usr/bin/chromium). playwright-core is the web/ package's.
-import { mkdtempSync } from 'node:fs';
+import { mkdtempSync, readdirSync, readFileSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import { loadavg, tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
+import { dirname, join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 
 const require = createRequire(new URL('../web/package.json', import.meta.url));
@@ -41,7 +49,8 @@ const median = (xs) => {
   return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
 };
 
-const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'pendulab-frames-')), {
+const userDataDir = mkdtempSync(join(tmpdir(), 'pendulab-frames-'));
+const context = await chromium.launchPersistentContext(userDataDir, {
   executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
   headless: true,
   viewport: { width: 1280, height: 800 },
@@ -50,6 +59,111 @@ const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir()
     '--host-resolver-rules=MAP * ~NOTFOUND'],
 });
 await context.route('**/*', (route) => (/^(file|blob|data):/.test(route.request().url()) ? route.continue() : route.abort()));
+// The baselines' pages, served by the page's own route (never the network).
+const BENCH = 'http://bench.invalid';
+// A bare three.js scene like the lab's (its background, two lights, a bob, a rod, a fading 2000-point
+// trail, a translucent sphere of reach drawn by its front face) on a canvas of the lab's scene size, as
+// the lab draws in software WebGL (no MSAA, pixel ratio 1), moving every frame.
+const threeHtml = ({ w, h }, empty) => `<!doctype html><title>three</title><style>body{margin:0}</style><canvas id="c"></canvas>
+<script type="module">
+import * as THREE from './three.module.js';
+const renderer = new THREE.WebGLRenderer({ canvas: document.getElementById('c'), antialias: false });
+renderer.setPixelRatio(1);
+renderer.setSize(${w}, ${h});
+const scene = new THREE.Scene();
+scene.background = new THREE.Color(0x11141b);
+const camera = new THREE.PerspectiveCamera(45, ${w} / ${h}, 0.01, 100);
+camera.up.set(0, 0, 1);
+camera.position.set(2.2, -2.6, 1.4);
+camera.lookAt(0, 0, -0.3);
+scene.add(new THREE.AmbientLight(0xffffff, 0.6));
+const sun = new THREE.DirectionalLight(0xffffff, 1.6);
+sun.position.set(2, -3, 4);
+scene.add(sun);
+if (${empty}) scene.visible = false;
+scene.add(new THREE.Mesh(new THREE.SphereGeometry(1, 48, 32),
+  new THREE.MeshBasicMaterial({ color: 0x6688aa, transparent: true, opacity: 1 - 0.94 * 0.94, depthWrite: false })));
+const bob = new THREE.Mesh(new THREE.SphereGeometry(0.06, 32, 16), new THREE.MeshStandardMaterial({ color: 0xe0a040 }));
+scene.add(bob);
+const rodPos = new Float32Array(6);
+const rod = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xcccccc }));
+rod.geometry.setAttribute('position', new THREE.BufferAttribute(rodPos, 3));
+scene.add(rod);
+const N = 2000;
+const trailPos = new Float32Array(3 * N);
+const trailCol = new Float32Array(3 * N);
+for (let i = 0; i < N; i++) trailCol.set([i / N, 0.6 * i / N, 0.2], 3 * i);
+const trail = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ vertexColors: true }));
+trail.geometry.setAttribute('position', new THREE.BufferAttribute(trailPos, 3));
+trail.geometry.setAttribute('color', new THREE.BufferAttribute(trailCol, 3));
+scene.add(trail);
+const at = (t, out, k) => {
+  const th = 2.2 + 0.3 * Math.sin(1.3 * t), ph = 2.1 * t;
+  out[k] = Math.sin(th) * Math.cos(ph); out[k + 1] = Math.sin(th) * Math.sin(ph); out[k + 2] = Math.cos(th);
+};
+let drawn = 0;
+window.benchDrawn = () => drawn;
+const frame = (now) => {
+  const t = now / 1000;
+  for (let i = 0; i < N; i++) at(t - (N - 1 - i) * 0.002, trailPos, 3 * i);
+  trail.geometry.attributes.position.needsUpdate = true;
+  at(t, rodPos, 3);
+  rod.geometry.attributes.position.needsUpdate = true;
+  bob.position.set(rodPos[3], rodPos[4], rodPos[5]);
+  renderer.render(scene, camera);
+  drawn++;
+  requestAnimationFrame(frame);
+};
+requestAnimationFrame(frame);
+</script>`;
+
+// CPU seconds of the browser's threads by process kind (browser, gpu-process, renderer, utility) and thread
+// name, from /proc (Linux; utime + stime of each thread): the processes started with this run's profile
+// directory on their command line and their descendants.
+const TICK = 100; // USER_HZ
+const stat = (pid) => {
+  const s = readFileSync(`/proc/${pid}/stat`, 'utf8');
+  const f = s.slice(s.lastIndexOf(')') + 2).split(' ');
+  return { ppid: Number(f[1]), cpu: (Number(f[11]) + Number(f[12])) / TICK };
+};
+function cpuByKind() {
+  const out = {};
+  const procs = new Map();
+  for (const d of readdirSync('/proc')) {
+    if (!/^\d+$/.test(d)) continue;
+    try {
+      procs.set(Number(d), { ...stat(d), cmd: readFileSync(`/proc/${d}/cmdline`, 'utf8').split(/[\0 ]/) });
+    } catch {
+      /* gone */
+    }
+  }
+  const ours = new Set([...procs].filter(([, p]) => p.cmd.some((a) => a.includes(userDataDir))).map(([pid]) => pid));
+  for (let grew = true; grew; ) {
+    grew = false;
+    for (const [pid, p] of procs) if (!ours.has(pid) && ours.has(p.ppid)) (ours.add(pid), (grew = true));
+  }
+  for (const pid of ours) {
+    const p = procs.get(pid);
+    if (!p) continue;
+    const kind = p.cmd.find((a) => a.startsWith('--type='))?.slice(7) ?? 'browser';
+    let tids = [];
+    try {
+      tids = readdirSync(`/proc/${pid}/task`);
+    } catch {
+      continue;
+    }
+    for (const tid of tids) {
+      try {
+        const key = `${kind}: ${readFileSync(`/proc/${pid}/task/${tid}/comm`, 'utf8').trim().replace(/\d+$/, '')}`;
+        out[key] = (out[key] ?? 0) + stat(`${pid}/task/${tid}`).cpu;
+      } catch {
+        /* gone */
+      }
+    }
+  }
+  return out;
+}
+
 const firstFrame = () =>
   performance.getEntriesByName('pendulab:first frame drawn')[0]?.startTime ?? null;
 
@@ -57,6 +171,7 @@ try {
   console.log(`${file}\nheadless chromium ${context.browser()?.version() ?? ''}, load average ${load()} before`);
   // 1. the first frame, OPENS fresh pages (the first one also compiles what the browser caches)
   const marks = [];
+  let canvas = { w: 883, h: 778 }; // the lab's scene canvas at 1280 × 800, read in the first open
   const seen = [];
   for (let i = 0; i < OPENS; i++) {
     const page = await context.newPage();
@@ -66,43 +181,104 @@ try {
     seen.push((Date.now() - t0) / 1000);
     await page.waitForFunction(firstFrame, null, { timeout: WAIT, polling: 10 });
     const build = await page.evaluate(() => document.documentElement.dataset['wasmBuild'] ?? '?');
+    if (i === 0) canvas = await page.evaluate(() => { const c = document.getElementById('scene-canvas'); return { w: c.width, h: c.height }; });
     marks.push((await page.evaluate(firstFrame)) / 1000);
     console.log(`  open ${i + 1}: first frame drawn ${marks.at(-1).toFixed(3)} s after navigation, in the store ${seen.at(-1).toFixed(3)} s after page.goto (engine build ${build}, load ${load()})`);
     await page.close();
   }
   console.log(`first frame drawn: median ${median(marks).toFixed(3)} s (${Math.min(...marks).toFixed(3)}–${Math.max(...marks).toFixed(3)}); as the test sees it: median ${median(seen).toFixed(3)} s`);
 
-  // 2. the frame rate with the error estimate on
+  // 2. the frame rate, each phase alone in the browser (one page open), in this order: the baselines
+  // (a blank page; a bare three.js scene on a canvas of the lab's size), the lab (rosette, damped), the
+  // blank page again; the lab's rates are also given as a ratio to the blank page's in the same run.
+  const rows = [];
+  const measureOn = async (page, name, store) => {
+    await page.waitForTimeout(1500); // past the start-up work of the phase (plots, the exact solution)
+    const before = load();
+    const cdp = await context.newCDPSession(page);
+    await cdp.send('Performance.enable');
+    const metrics = async () => Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
+    if (store) await page.evaluate(() => window.pendulab.frameCosts());
+    const [m0, c0] = [await metrics(), cpuByKind()];
+    const r = await page.evaluate(([ms, lab]) => new Promise((done) => {
+      const ts = [];
+      const s = lab ? window.pendulab.store : null;
+      const [d0, t0] = lab ? [window.pendulab.drawn(), s.latest()?.t ?? 0] : [window.benchDrawn?.() ?? 0, 0];
+      const f = (now) => {
+        ts.push(now);
+        if (now - ts[0] < ms) requestAnimationFrame(f);
+        else done(lab
+          ? { ts, drawn: window.pendulab.drawn() - d0, simulated: (s.latest()?.t ?? 0) - t0, how: s.status?.error_estimate?.how ?? null, err: s.latest()?.errorX ?? null }
+          : { ts, drawn: window.benchDrawn ? window.benchDrawn() - d0 : null });
+      };
+      requestAnimationFrame(f);
+    }), [SECONDS * 1000, store]);
+    const [m1, c1] = [await metrics(), cpuByKind()];
+    const costs = store ? await page.evaluate(() => window.pendulab.frameCosts()) : null;
+    await cdp.detach();
+    const dts = r.ts.slice(1).map((t, i) => t - r.ts[i]);
+    const wall = (r.ts.at(-1) - r.ts[0]) / 1000;
+    const sorted = [...dts].sort((a, b) => a - b);
+    const n = dts.length;
+    const row = { name, fps: n / wall, median: median(dts), p90: sorted[Math.floor(0.9 * n)], within: dts.filter((d) => d <= 20).length / n,
+      late: dts.filter((d) => d > 20).length, n, wall };
+    // per frame: the page's main thread busy (CDP TaskDuration) and of it script, style + layout; CPU of
+    // every chromium process by kind (/proc: robust under load, unlike the rate)
+    const per = (k) => (1000 * (m1[k] - m0[k])) / n;
+    row.main = per('TaskDuration');
+    row.script = per('ScriptDuration');
+    row.layout = per('LayoutDuration') + per('RecalcStyleDuration');
+    row.cpu = Object.fromEntries(Object.keys(c1).map((k) => [k, (1000 * (c1[k] - (c0[k] ?? 0))) / n]));
+    row.cpuAll = Object.values(row.cpu).reduce((a, b) => a + b, 0);
+    row.byKind = {};
+    for (const [k, v] of Object.entries(row.cpu)) row.byKind[k.split(':')[0]] = (row.byKind[k.split(':')[0]] ?? 0) + v;
+    rows.push(row);
+    const extra = store
+      ? `error estimate ${r.how} (last ${r.err} m); scene drawn ${(r.drawn / wall).toFixed(1)}/s, ${(r.simulated / wall).toFixed(2)} simulated s per s; `
+      : r.drawn !== null ? `scene drawn ${(r.drawn / wall).toFixed(1)}/s; ` : '';
+    console.log(`${name}: ${extra}${row.fps.toFixed(1)} frames/s (median interval ${row.median.toFixed(1)} ms, ` +
+      `90th percentile ${row.p90.toFixed(1)} ms, ${(100 * row.within).toFixed(1)} % within 20 ms, ${row.late} of ${n} later), over ${wall.toFixed(1)} s; load ${before} → ${load()}`);
+    console.log(`    per frame: main thread busy ${row.main.toFixed(2)} ms (script ${row.script.toFixed(2)}, style + layout ${row.layout.toFixed(2)}); ` +
+      `CPU ${row.cpuAll.toFixed(1)} ms: ${Object.entries(row.byKind).filter(([, v]) => v > 0.05).map(([k, v]) => `${k} ${v.toFixed(1)}`).join(', ')}`);
+    console.log(`    CPU per frame by thread (ms, ≥ 0.2): ${Object.entries(row.cpu).filter(([, v]) => v >= 0.2).sort((a, b) => b[1] - a[1]).map(([k, v]) => `${k} ${v.toFixed(1)}`).join('; ')}`);
+    if (costs) console.log(`    the lab's own parts (mean ms per run, runs): ${Object.entries(costs).map(([k, v]) => `${k} ${v.ms.toFixed(2)} (${v.count})`).join('; ')}`);
+    return row;
+  };
+  const baseline = async (name, path) => {
+    const page = await context.newPage();
+    await page.route(`${BENCH}/**`, (route) => {
+      const f = route.request().url().slice(BENCH.length + 1);
+      if (f === 'blank.html') return route.fulfill({ contentType: 'text/html', body: '<!doctype html><title>blank</title><body></body>' });
+      if (f === 'three.html' || f === 'canvas.html') return route.fulfill({ contentType: 'text/html', body: threeHtml(canvas, f === 'canvas.html') });
+      if (/^three\.(module|core)\.js$/.test(f)) return route.fulfill({ contentType: 'text/javascript', path: join(dirname(require.resolve('three')), f) });
+      return route.abort();
+    });
+    await page.goto(`${BENCH}/${path}`, { timeout: WAIT });
+    if (path !== 'blank.html') await page.waitForFunction(() => window.benchDrawn?.() > 10, null, { timeout: WAIT });
+    const row = await measureOn(page, name, false);
+    await page.close();
+    return row;
+  };
+  const blank1 = await baseline('baseline: blank page', 'blank.html');
+  const empty = await baseline(`baseline: three.js drawing only its background, ${canvas.w} × ${canvas.h} px`, 'canvas.html');
+  const bare = await baseline(`baseline: bare three.js scene, ${canvas.w} × ${canvas.h} px`, 'three.html');
   const page = await context.newPage();
   await page.goto(file, { timeout: WAIT });
   await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: WAIT });
   const phases = [['rosette (exact error)', null], ['damped (Richardson companion)', { type: 'set_model', model: 'damped', params: { damping: 0.3 } }]];
+  const lab = [];
   for (const [name, cmd] of phases) {
     if (cmd) {
       await page.evaluate((c) => window.pendulab.send(c), cmd);
       await page.waitForFunction(() => window.pendulab.store.status?.model === 'damped', null, { timeout: WAIT });
     }
-    await page.waitForTimeout(1500); // past the start-up work of the phase (plots, the exact solution)
-    const before = load();
-    const r = await page.evaluate((ms) => new Promise((done) => {
-      const ts = [];
-      const s = window.pendulab.store;
-      const [d0, t0] = [window.pendulab.drawn(), s.latest()?.t ?? 0];
-      const f = (now) => {
-        ts.push(now);
-        if (now - ts[0] < ms) requestAnimationFrame(f);
-        else done({ ts, drawn: window.pendulab.drawn() - d0, simulated: (s.latest()?.t ?? 0) - t0, how: s.status?.error_estimate?.how ?? null, err: s.latest()?.errorX ?? null });
-      };
-      requestAnimationFrame(f);
-    }), SECONDS * 1000);
-    const dts = r.ts.slice(1).map((t, i) => t - r.ts[i]);
-    const wall = (r.ts.at(-1) - r.ts[0]) / 1000;
-    const sorted = [...dts].sort((a, b) => a - b);
-    const within = dts.filter((d) => d <= 20).length / dts.length;
-    console.log(`${name}: error estimate ${r.how} (last ${r.err} m); ${(dts.length / wall).toFixed(1)} frames/s (median interval ${median(dts).toFixed(1)} ms, ` +
-      `90th percentile ${sorted[Math.floor(0.9 * sorted.length)].toFixed(1)} ms, ${(100 * within).toFixed(0)} % within 20 ms), ` +
-      `scene drawn ${(r.drawn / wall).toFixed(1)}/s, ${(r.simulated / wall).toFixed(2)} simulated s per s, over ${wall.toFixed(1)} s; load ${before} → ${load()}`);
+    lab.push(await measureOn(page, name, true));
   }
+  await page.close();
+  const blank2 = await baseline('baseline: blank page again', 'blank.html');
+  const base = (blank1.fps + blank2.fps) / 2;
+  console.log(`the lab as a share of the blank page's rate (${base.toFixed(1)} frames/s, mean of both) and of the bare three.js scene's (${bare.fps.toFixed(1)}):`);
+  for (const r of lab) console.log(`  ${r.name}: ${(r.fps / base).toFixed(3)} and ${(r.fps / bare.fps).toFixed(3)}; late intervals (> 20 ms) ${(100 * (1 - r.within)).toFixed(1)} % against the blank page's ${(100 * (1 - (blank1.within + blank2.within) / 2)).toFixed(1)} %`);
 } finally {
   await context.close();
 }
