@@ -56,6 +56,26 @@ def test_a_fitted_length_gives_the_position_of_a_part(swing: tuple) -> None:
     assert "standard errors from the geometry's l_eq" in res.report()
 
 
+def test_the_lab_words_the_body_and_the_information_criteria(swing: tuple) -> None:
+    """The lab's keyed report (pendulab.server.fit_words, issue 28): the compound pendulum's lines and
+    AIC/BIC with the report's numbers, for a page that words them in its language."""
+    from pendulab.server.fit_words import report_items
+
+    for fit, held in ((["g", "damping"], True), (["length", "damping"], False)):
+        res = fitted(*swing, fit, g=G)
+        items = {i["key"]: i["values"] for i in report_items(res)}
+        assert items["aicBic"] == {"aic": f"{res.aic:.6g}", "bic": f"{res.bic:.6g}"}
+        assert items["compound"]["leq"] == f"{BODY.equivalent_length:.6g}"
+        assert ("compoundLengthHeld" in items) is held and ("compoundLength" in items) is not held
+        value, err = res.body.torques["damping_torque"]
+        assert items["compoundTorque"] == {
+            "param": "damping_torque",
+            "value": f"{value:.6g}",
+            "err": f"{err:.2g}",
+            "unit": "N m s",
+        }
+
+
 def test_bad_bodies_are_refused(swing: tuple) -> None:
     t, theta = swing
     with pytest.raises(pl.InvalidInputError, match=r"body must be a pendulab\.CompoundPendulum"):

@@ -20,6 +20,7 @@ import pendulab as pl
 from pendulab.fitting.table import parse_table, read_table
 from pendulab.server import create_app
 from pendulab.server.fit import MAX_FIT_BODY, PATH_POINTS, FitRequest, default_fit, fit_data
+from pendulab.server.notices import message
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples" / "data"
 JSON = {"content-type": "application/json"}
@@ -84,14 +85,39 @@ def test_a_bad_file_is_a_422_naming_row_and_column(client: TestClient) -> None:
     r = client.post("/api/fit", content=json.dumps({"csv": bad, "name": "bad.csv"}), headers=JSON)
     assert r.status_code == 422
     assert r.json()["detail"] == "bad.csv: row 2 (line 3), column 'x': 'oops' is not a number"
+    # keyed for a page that words it in its language (messages.json; issue 28)
+    row = {"file": "bad.csv", "row": 2, "line": 3, "column": "'x'", "cell": "'oops'"}
+    assert (r.json()["key"], r.json()["values"]) == ("data_not_number", row)
+    assert message("data_not_number", **row) == r.json()["detail"]
     r = client.post("/api/fit", content=json.dumps({"csv": "a,b\n1,2\n"}), headers=JSON)
     assert r.status_code == 422 and "no time column 't'" in r.json()["detail"]
+    assert r.json()["key"] == "data_no_time" and r.json()["values"]["columns"] == "['a', 'b']"
     r = client.post("/api/fit", content=json.dumps({"csv": "t,x,z\n", "model": "spring"}), headers=JSON)
     assert r.status_code == 422 and "model 'spring'" in r.json()["detail"]
+    assert r.json()["key"] == "fit_unknown_model" and r.json()["values"]["model"] == "spring"
     r = client.post("/api/fit", content=b"{not json", headers=JSON)
-    assert r.status_code == 422 and "JSON" in r.json()["detail"]
+    assert r.status_code == 422 and "JSON" in r.json()["detail"] and r.json()["key"] == "not_json"
     r = client.post("/api/fit", content=json.dumps({"csv": "t\n", "extra": 1}), headers=JSON)
     assert r.status_code == 422 and "extra" in r.json()["detail"]
+    assert (r.json()["key"], r.json()["values"]) == ("unknown_key", {"name": "extra"})
+
+
+def test_a_bad_setting_or_value_is_keyed_with_what_it_names(client: TestClient) -> None:
+    """A parameter the model cannot fit, a cell beyond the bounds, a short row: each 422 names itself by
+    a key of messages.json with the values its words need."""
+    rows = "t,x,z\n" + "".join(f"{0.05 * i:.2f},{0.1 * np.sin(i / 3):.4f},-0.5\n" for i in range(100))
+    cases = [
+        ({"csv": rows, "fit": ["colour"]}, "fit_cannot_fit", {"param": "colour", "model": "damped"}),
+        ({"csv": "t,x,z\n0,1e300,-0.5\n0.1,0.2,-0.5\n"}, "data_cell_beyond", {"row": 1, "limit": "1e+09"}),
+        ({"csv": "t,x,z\n0,0.1,-0.5\n0.1,0.2\n"}, "data_row_short", {"row": 2, "have": 2, "need": 3}),
+        ({"csv": "t,x,z\n0,0.1,-0.5\n0.1,0.2,-0.5\n"}, "data_too_few", {"have": 2}),
+    ]
+    for body, key, some in cases:
+        r = client.post("/api/fit", content=json.dumps(body), headers=JSON)
+        answer = r.json()
+        assert r.status_code == 422 and answer["key"] == key, answer
+        assert some.items() <= answer["values"].items(), answer
+        assert "{" not in message(key, **answer["values"])  # every placeholder filled
 
 
 def test_a_too_large_body_is_a_413_before_it_is_read(client: TestClient) -> None:

@@ -160,7 +160,8 @@ def test_every_reason_for_an_undetermined_parameter_is_keyed() -> None:
 def test_the_keys_are_those_the_server_uses() -> None:
     used = {k for k, _ in NOTES} | {k for k, _ in REASONS}
     items = {"header", "droppedRows", "combinationValue", "mirror", "planar", "residual", "chi2"}
-    items |= {"chi2Estimated", "noise", "fixed", "converged", "notConvergedItem"}
+    items |= {"chi2Estimated", "noise", "fixed", "converged", "notConvergedItem", "aicBic"}
+    items |= {"compound", "compoundLengthHeld", "compoundLength", "compoundTorque"}
     assert used | items == set(KEYS)
     text = SOURCE.read_text(encoding="utf-8")
     assert all(f'"{k}"' in text for k in items)

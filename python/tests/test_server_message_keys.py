@@ -100,3 +100,15 @@ def test_a_fit_past_the_servers_time_limit_is_a_keyed_503() -> None:
         "key": "busy",
         "values": {"waiting": 8},
     }
+
+
+def test_every_key_the_data_readers_and_the_fit_raise_is_worded() -> None:
+    """Every key a ``KeyedInputError`` of pendulab/fitting and the fit endpoint raises is a key of
+    messages.json (so that the page's tables word it), found in the sources."""
+    root = Path(__file__).resolve().parents[1] / "pendulab"
+    sources = [*(root / "fitting").glob("*.py"), root / "server" / "fit.py"]
+    used = set()
+    for path in sources:  # the keys are the only quoted strings of this form there
+        used |= set(re.findall(r"\"((?:data|fit)_[a-z_]+)\"", path.read_text(encoding="utf-8")))
+    assert len(used) >= 30, used
+    assert used <= set(MESSAGES), used - set(MESSAGES)

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import io
 import re
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -26,6 +27,7 @@ from .._core import InvalidInputError
 from ..model import FloatArray
 from ..validate import LIMITS
 from .data import MAX_SAMPLES
+from .keyed import KeyedInputError
 from .layout import Layout, clip, split_line
 
 BOUNDS: dict[str, float] = {
@@ -72,7 +74,13 @@ def read_cells(
     body = text[layout.body_start :]
     rows = body.count("\n") + 1
     if rows > MAX_SAMPLES:
-        raise InvalidInputError(f"{where}: {rows} lines of data; at most {MAX_SAMPLES} samples are fitted")
+        raise KeyedInputError(
+            f"{where}: {rows} lines of data; at most {MAX_SAMPLES} samples are fitted",
+            "data_too_many_rows",
+            file=where,
+            rows=rows,
+            most=MAX_SAMPLES,
+        )
     if "\r" in body:
         body = body.replace("\r\n", "\n").replace("\r", "\n")
     if layout.decimal_comma:
@@ -104,12 +112,7 @@ def read_cells(
         _raise_bad_cell(text, layout, names, use, where)
         raise InvalidInputError(f"{where}: cannot read the data rows")  # not reached
 
-    def fail(row: int, k: int, what: str) -> None:
-        line, cells = _row(text, layout, row)
-        cell = cells[use[k]] if use[k] < len(cells) else ""
-        raise InvalidInputError(
-            f"{where}: row {row + 1} (line {line}), column {clip(names[use[k]])}: {clip(cell.strip())} {what}"
-        )
+    fail = partial(_fail, text, layout, [clip(names[j]) for j in use], use, where)
 
     with np.errstate(invalid="ignore"):
         magnitude = np.abs(data)
@@ -117,8 +120,10 @@ def read_cells(
     if bad.any():
         row, k = (int(i) for i in np.argwhere(bad)[0])
         if np.isinf(data[row, k]):
-            fail(row, k, "is infinite or beyond the largest float (1.8e308)")
-        fail(row, k, "is subnormal (0 < |value| < 2.2e-308), not a measurement: write 0")
+            fail(row, k, "is infinite or beyond the largest float (1.8e308)", "data_cell_infinite")
+        fail(
+            row, k, "is subnormal (0 < |value| < 2.2e-308), not a measurement: write 0", "data_cell_subnormal"
+        )
     for k in range(len(use)):
         if factors is not None:
             data[:, k] *= factors[k]
@@ -129,10 +134,44 @@ def read_cells(
             beyond = np.abs(data[:, k]) > BOUNDS[quantity]
         if beyond.any():
             unit = {"time": "s", "length": "m", "angle": "rad", "angular rate": "rad/s"}.get(quantity, "m/s²")
-            fail(int(np.argmax(beyond)), k, f"is beyond ±{BOUNDS[quantity]:g} {unit} (a {quantity} in SI)")
+            fail(
+                int(np.argmax(beyond)),
+                k,
+                f"is beyond ±{BOUNDS[quantity]:g} {unit} (a {quantity} in SI)",
+                "data_cell_beyond",
+                limit=f"{BOUNDS[quantity]:g}",
+                unit=unit,
+            )
         if quantity == "time":
             _check_spacing(data[:, k], fail, k)
     return data
+
+
+def _fail(
+    text: str,
+    layout: Layout,
+    columns: list[str],
+    use: list[int],
+    where: str,
+    row: int,
+    k: int,
+    what: str,
+    key: str,
+    **values: Any,
+) -> None:
+    """Raises the keyed refusal of cell (row, k) of the used columns: ``what`` is wrong with it."""
+    line, cells = _row(text, layout, row)
+    cell = clip(cells[use[k]].strip() if use[k] < len(cells) else "")
+    raise KeyedInputError(
+        f"{where}: row {row + 1} (line {line}), column {columns[k]}: {cell} {what}",
+        key,
+        file=where,
+        row=row + 1,
+        line=line,
+        column=columns[k],
+        cell=cell,
+        **values,
+    )
 
 
 def _check_spacing(t: FloatArray, fail: Any, k: int) -> None:
@@ -150,6 +189,9 @@ def _check_spacing(t: FloatArray, fail: Any, k: int) -> None:
             k,
             f"is {step[i]:.3g} s from another time; samples closer than {MIN_STEP:g} s (the shortest "
             "time step) cannot be told apart",
+            "data_times_too_close",
+            step=f"{step[i]:.3g}",
+            most=f"{MIN_STEP:g}",
         )
 
 
@@ -189,9 +231,15 @@ def _raise_bad_cell(text: str, layout: Layout, names: list[str], use: list[int],
             row += 1
             cells = split_line(line, layout.delimiter)
             if len(cells) < width:
-                raise InvalidInputError(
+                raise KeyedInputError(
                     f"{where}: row {row} (line {number}) has {len(cells)} values; the columns used "
-                    f"need {width}: {[clip(c) for c in names[:width]]}"
+                    f"need {width}: {[clip(c) for c in names[:width]]}",
+                    "data_row_short",
+                    file=where,
+                    row=row,
+                    line=number,
+                    have=len(cells),
+                    need=width,
                 )
             for j in use:
                 cell = cells[j].strip()
@@ -201,9 +249,15 @@ def _raise_bad_cell(text: str, layout: Layout, names: list[str], use: list[int],
                 try:
                     float(c)
                 except ValueError:
-                    raise InvalidInputError(
+                    raise KeyedInputError(
                         f"{where}: row {row} (line {number}), column {names[j]!r}: {clip(cell)} "
-                        "is not a number"
+                        "is not a number",
+                        "data_not_number",
+                        file=where,
+                        row=row,
+                        line=number,
+                        column=clip(names[j]),
+                        cell=clip(cell),
                     ) from None
         pos, number = end + 1, number + 1
     raise InvalidInputError(f"{where}: the data rows cannot be read as numbers")

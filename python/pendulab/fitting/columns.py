@@ -22,7 +22,7 @@ from __future__ import annotations
 import math
 import re
 
-from .._core import InvalidInputError
+from .keyed import KeyedInputError
 
 #: The physical quantity of each column name.
 QUANTITY = {
@@ -134,9 +134,12 @@ def column_name(raw: str, where: str) -> str:
     caller to ignore or refuse)."""
     text = " ".join(raw.strip().lower().replace("_", " ").split())
     if "linear acceleration" in text or "linear acc" in text:
-        raise InvalidInputError(
+        raise KeyedInputError(
             f"{where}: column {raw!r} is a linear acceleration (the phone removed gravity); the fit needs "
-            "the accelerometer with gravity, |a - g| (e.g. phyphox 'Acceleration with g')"
+            "the accelerometer with gravity, |a - g| (e.g. phyphox 'Acceleration with g')",
+            "data_linear_acceleration",
+            file=where,
+            column=raw,
         )
     compact = text.replace(" ", "_")
     if compact in QUANTITY:
@@ -161,14 +164,22 @@ def to_si(name: str, unit: str | None, where: str) -> float:
         return 1.0
     u = unit.strip().lower().replace(" ", "")
     if u in ("px", "pixel", "pixels", "pix"):
-        raise InvalidInputError(
+        raise KeyedInputError(
             f"{where}: column {name!r} is in pixels; scale it to metres first (a ruler of known length "
-            "in the video gives metres per pixel)"
+            "in the video gives metres per pixel)",
+            "data_pixels",
+            file=where,
+            column=name,
         )
     quantity = QUANTITY[name]
     table = UNITS[quantity]
     if u in table:
         return table[u]
-    raise InvalidInputError(
-        f"{where}: column {name!r} has the unit {unit!r}; a {quantity} is given in one of {', '.join(table)}"
+    raise KeyedInputError(
+        f"{where}: column {name!r} has the unit {unit!r}; a {quantity} is given in one of {', '.join(table)}",
+        "data_bad_unit",
+        file=where,
+        column=name,
+        unit=unit,
+        allowed=", ".join(table),
     )

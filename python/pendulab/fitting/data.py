@@ -38,6 +38,7 @@ import numpy as np
 
 from .._core import InvalidInputError
 from ..model import FloatArray
+from .keyed import KeyedInputError
 
 KINDS: dict[str, str] = {
     "positions": "m",
@@ -169,7 +170,12 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
     times = times[good]
     arrays = {k: a[good] for k, a in arrays.items()}
     if len(times) < MIN_SAMPLES:
-        raise InvalidInputError(f"only {len(times)} usable samples: a fit needs at least {MIN_SAMPLES}")
+        raise KeyedInputError(
+            f"only {len(times)} usable samples: a fit needs at least {MIN_SAMPLES}",
+            "data_too_few",
+            have=len(times),
+            need=MIN_SAMPLES,
+        )
     order = np.argsort(times, kind="stable")
     if np.any(order != np.arange(len(times))):
         warnings.warn(
@@ -179,17 +185,22 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
         arrays = {k: a[order] for k, a in arrays.items()}
     same = np.flatnonzero(np.diff(times) == 0.0)
     if same.size:
-        raise InvalidInputError(
+        raise KeyedInputError(
             f"the time t = {times[same[0]]!r} s appears twice (rows {same.size} times repeated): "
-            "every sample needs its own time"
+            "every sample needs its own time",
+            "data_time_twice",
+            t=repr(float(times[same[0]])),
         )
     if "angles" in arrays:
         theta = arrays["angles"][:, 0]
         # noise may push θ a little below 0 near the bottom; values far outside [0, π] are degrees
         if np.any(theta < -0.5) or np.any(theta > math.pi + 0.5):
-            raise InvalidInputError(
+            raise KeyedInputError(
                 "angles: θ must lie in [0, π] rad (the polar angle from the downward vertical); "
-                f"got values from {theta.min():.6g} to {theta.max():.6g} — degrees? use np.radians"
+                f"got values from {theta.min():.6g} to {theta.max():.6g} — degrees? use np.radians",
+                "data_theta_range",
+                lo=f"{theta.min():.6g}",
+                hi=f"{theta.max():.6g}",
             )
     _check_ranges(times, arrays)
     sig = {k: _sigma(k, sigma) for k in arrays}
@@ -203,22 +214,35 @@ def _check_ranges(times: FloatArray, arrays: Mapping[str, FloatArray]) -> None:
         big = np.flatnonzero(np.any(np.abs(a) > MAX_VALUE, axis=1))
         if big.size:
             i = int(big[0])
-            raise InvalidInputError(
+            raise KeyedInputError(
                 f"{kind} in sorted row {i}: {_show(a[i].tolist())} is beyond ±{MAX_VALUE:g} (SI units); "
-                "a measurement of a pendulum never is — check the file's units and columns"
+                "a measurement of a pendulum never is — check the file's units and columns",
+                "data_value_beyond",
+                kind=kind,
+                row=i,
+                value=_show(a[i].tolist()),
+                limit=f"{MAX_VALUE:g}",
             )
     span = float(times[-1] - times[0])
     if not SPAN[0] <= span <= SPAN[1]:
-        raise InvalidInputError(
-            f"the record spans {span:.6g} s; a fit needs {SPAN[0]:g} s to {SPAN[1]:g} s (times in s?)"
+        raise KeyedInputError(
+            f"the record spans {span:.6g} s; a fit needs {SPAN[0]:g} s to {SPAN[1]:g} s (times in s?)",
+            "data_span",
+            span=f"{span:.6g}",
+            least=f"{SPAN[0]:g}",
+            most=f"{SPAN[1]:g}",
         )
     gap = np.diff(times)
     close = np.flatnonzero(gap < MIN_SPACING * span)
     if close.size:
         i = int(close[0])
-        raise InvalidInputError(
+        raise KeyedInputError(
             f"the times {times[i]!r} s and {times[i + 1]!r} s are {gap[i]:.3g} s apart, less than "
-            f"{MIN_SPACING:g} of the record's span {span:.6g} s: round-off, not a measurement"
+            f"{MIN_SPACING:g} of the record's span {span:.6g} s: round-off, not a measurement",
+            "data_spacing",
+            t1=repr(float(times[i])),
+            t2=repr(float(times[i + 1])),
+            gap=f"{gap[i]:.3g}",
         )
 
 

@@ -21,7 +21,7 @@ from __future__ import annotations
 import csv
 from dataclasses import dataclass
 
-from .._core import InvalidInputError
+from .keyed import KeyedInputError
 
 MAX_PREAMBLE = 50
 """The most non-blank, non-comment lines looked at before the first data row."""
@@ -111,18 +111,26 @@ def find_layout(text: str, where: str) -> Layout:
             if is_number(first) or is_number(first, decimal_comma=True):
                 return _layout(text, lines, (number, pos, head), where)
             if end - pos > MAX_HEADER_CHARS:
-                raise InvalidInputError(
+                raise KeyedInputError(
                     f"{where}: line {number} is {end - pos} characters long and not a data row; a "
-                    f"header row may have at most {MAX_HEADER_CHARS}"
+                    f"header row may have at most {MAX_HEADER_CHARS}",
+                    "data_long_line",
+                    file=where,
+                    line=number,
+                    chars=end - pos,
+                    most=MAX_HEADER_CHARS,
                 )
             lines.append((number, pos, head))
         pos = end + 1
     if len(lines) > MAX_PREAMBLE:
-        raise InvalidInputError(
+        raise KeyedInputError(
             f"{where}: no data row (a line starting with a number) in the first {MAX_PREAMBLE} lines "
-            "that are not comments"
+            "that are not comments",
+            "data_no_rows_in_first",
+            file=where,
+            lines=MAX_PREAMBLE,
         )
-    raise InvalidInputError(f"{where}: no data rows (lines of numbers)")
+    raise KeyedInputError(f"{where}: no data rows (lines of numbers)", "data_no_rows", file=where)
 
 
 def _layout(text: str, above: list[tuple[int, int, str]], first: tuple[int, int, str], where: str) -> Layout:

@@ -16,6 +16,7 @@ from .._core import InvalidInputError
 from ..model import Pendulum, State
 from ..variants.spring import SwingingSpring
 from .data import KINDS, Observations
+from .keyed import KeyedInputError
 from .problem import (
     OFFSET_NAMES,
     PIVOT_NAMES,
@@ -76,23 +77,31 @@ def free_names(
         own + state + list(PIVOT_NAMES) + list(OFFSET_NAMES) + list(SYSTEMATIC_NAMES) + ["state", "pivot"]
     )
     if planar and {"phi0", "phi_dot0"} & set(fit):
-        raise InvalidInputError(
-            "planar=True holds phi0 = phi_dot0 = 0 (a hinge): do not fit them, or pass planar=False"
+        raise KeyedInputError(
+            "planar=True holds phi0 = phi_dot0 = 0 (a hinge): do not fit them, or pass planar=False",
+            "fit_planar_phi",
         )
     for name in fit:
         if not isinstance(name, str) or name not in allowed:
-            raise InvalidInputError(
-                f"cannot fit {name!r} for the {model!r} model; choose from {', '.join(allowed)}"
+            raise KeyedInputError(
+                f"cannot fit {name!r} for the {model!r} model; choose from {', '.join(allowed)}",
+                "fit_cannot_fit",
+                param=str(name)[:80],
+                model=model,
+                allowed=", ".join(allowed),
             )
         expanded = state if name == "state" else pivot if name == "pivot" else [name]
         names += [n for n in expanded if n not in names]
     if not state_given:
         names += [n for n in state if n not in names]
     if set(PIVOT_NAMES) & set(names) and not {"positions", "horizontal"} & set(columns):
-        raise InvalidInputError("the pivot position is fitted from positions only; give positions=")
+        raise KeyedInputError(
+            "the pivot position is fitted from positions only; give positions=", "fit_pivot_needs_positions"
+        )
     if "t_offset" in names and model != "ideal":
-        raise InvalidInputError(
-            "t_offset is fitted for the ideal pendulum only (the exact solution runs backward)"
+        raise KeyedInputError(
+            "t_offset is fitted for the ideal pendulum only (the exact solution runs backward)",
+            "fit_t_offset_ideal",
         )
     if not names:
         raise InvalidInputError("nothing to fit: give fit=[...] or leave state0 unset")

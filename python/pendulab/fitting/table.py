@@ -27,6 +27,7 @@ import numpy as np
 from .._core import InvalidInputError
 from .cells import read_cells
 from .columns import QUANTITY, column, is_unit
+from .keyed import KeyedInputError
 from .layout import Layout, clip, find_layout, split_line
 
 MAX_BYTES = 256 * 2**20
@@ -42,14 +43,21 @@ def _columns(names: list[str], where: str) -> tuple[list[str], list[float]]:
     pairs = [column(raw, where) for raw in names]
     out = [n for n, _ in pairs]
     if "t" not in out:
-        raise InvalidInputError(
-            f"{where}: no time column 't' among {_names(names)}; name the columns with --columns"
+        raise KeyedInputError(
+            f"{where}: no time column 't' among {_names(names)}; name the columns with --columns",
+            "data_no_time",
+            file=where,
+            columns=_names(names),
         )
     repeated = sorted({n for n in out if n != "-" and n in KNOWN and out.count(n) > 1})
     if repeated:
-        raise InvalidInputError(
+        raise KeyedInputError(
             f"{where}: column(s) {repeated} appear more than once among {_names(names)} (an export of "
-            "several tracks or runs: keep one, or name the columns with --columns and '-' to skip)"
+            "several tracks or runs: keep one, or name the columns with --columns and '-' to skip)",
+            "data_repeated_columns",
+            file=where,
+            repeated=", ".join(repeated),
+            columns=_names(names),
         )
     return out, [f for _, f in pairs]
 
@@ -128,14 +136,20 @@ def parse_table_notes(
     layout = find_layout(text, where)
     names = columns if columns is not None else _vernier_names(layout) or layout.header
     if names is None:
-        raise InvalidInputError(
-            f"{where}: the file has no header row: name its columns (e.g. --columns t,x,y,z)"
+        raise KeyedInputError(
+            f"{where}: the file has no header row: name its columns (e.g. --columns t,x,y,z)",
+            "data_no_header",
+            file=where,
         )
     kinds, factors = _columns(list(names), where)
     unknown = [n for n in kinds if n not in KNOWN]
     if unknown and columns is not None:
-        raise InvalidInputError(
-            f"{where}: unknown column name(s) {_names(unknown)}; use {', '.join(sorted(KNOWN))}"
+        raise KeyedInputError(
+            f"{where}: unknown column name(s) {_names(unknown)}; use {', '.join(sorted(KNOWN))}",
+            "data_unknown_columns",
+            file=where,
+            unknown=_names(unknown),
+            allowed=", ".join(sorted(KNOWN)),
         )
     use = [j for j, n in enumerate(kinds) if n in KNOWN and n != "-"]
     data = read_cells(
@@ -202,7 +216,14 @@ def _kinds(
                 col.pop(c)
             continue
         if have and len(have) < 3:
-            raise InvalidInputError(f"{where}: {kind} needs all three components {parts}; found {have}")
+            raise KeyedInputError(
+                f"{where}: {kind} needs all three components {parts}; found {have}",
+                "data_components",
+                file=where,
+                kind=kind,
+                parts=", ".join(parts),
+                found=", ".join(have),
+            )
         if have:
             col[kind] = np.sqrt(sum(col.pop(c) ** 2 for c in parts))
     out: dict[str, Any] = {"t": col["t"]}
@@ -227,9 +248,12 @@ def _kinds(
             )
     elif ("x" in col) != ("z" in col) or "y" in col:
         have = sorted(k for k in ("x", "y", "z") if k in col)
-        raise InvalidInputError(
+        raise KeyedInputError(
             f"{where}: position column(s) {have} alone; positions are x, y, z, or x, z (a camera's side "
-            "view), or x, y (horizontal, seen from above)"
+            "view), or x, y (horizontal, seen from above)",
+            "data_positions_alone",
+            file=where,
+            have=", ".join(have),
         )
     if {"theta", "phi"} <= col.keys():
         out["angles"] = np.column_stack([col["theta"], col["phi"]])
@@ -239,7 +263,10 @@ def _kinds(
         if kind in col:
             out[kind] = col[kind]
     if len(out) == 1:
-        raise InvalidInputError(
-            f"{where}: no data columns among {_names(names)}; see docs/fit.md for the names"
+        raise KeyedInputError(
+            f"{where}: no data columns among {_names(names)}; see docs/fit.md for the names",
+            "data_no_columns",
+            file=where,
+            columns=_names(names),
         )
     return out

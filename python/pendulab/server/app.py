@@ -56,6 +56,7 @@ from .live_socket import admit, loop_limiter, run_session
 from .notices import keyed_body
 from .protocol import (
     ExactRequest,
+    validation_key,
     validation_problems,
 )
 from .rest import (
@@ -119,15 +120,25 @@ async def _body(request: Request, kind: type[M]) -> M | JSONResponse:
     try:
         body = await request.json()
     except (ValueError, RecursionError) as e:  # RecursionError: nested too deeply
-        return JSONResponse({"detail": f"the body is not JSON: {str(e)[:200]}"}, status_code=422)
+        return JSONResponse(
+            {"detail": f"the body is not JSON: {str(e)[:200]}", "key": "not_json", "values": {}},
+            status_code=422,
+        )
     try:
         return kind.model_validate(body)
     except ValidationError as e:
-        return JSONResponse({"detail": validation_problems(e, skip=0)}, status_code=422)
+        key, values = validation_key(e)
+        keyed = {"key": key, "values": values} if key is not None else {}
+        return JSONResponse({"detail": validation_problems(e, skip=0), **keyed}, status_code=422)
 
 
 def _unprocessable(e: Exception) -> JSONResponse:
-    return JSONResponse({"detail": " ".join(str(e).split())}, status_code=422)
+    """HTTP 422 with the refusal's English words; keyed (``messages.json``) when the refusal is."""
+    body: dict[str, Any] = {"detail": " ".join(str(e).split())}
+    key, values = getattr(e, "key", None), getattr(e, "values", None)
+    if isinstance(key, str) and isinstance(values, dict):
+        body |= {"key": key, "values": values}
+    return JSONResponse(body, status_code=422)
 
 
 class _Busy(Exception):
@@ -203,6 +214,8 @@ def _add_error_handlers(app: FastAPI) -> None:
     @app.exception_handler(WorkFailed)
     async def failed(request: Request, exc: WorkFailed) -> JSONResponse:
         log.error("a computation failed: %s", exc)
+        if exc.key is not None:  # the worker died: said in the page's language
+            return JSONResponse({"detail": str(exc), "key": exc.key, "values": exc.values}, status_code=500)
         return JSONResponse(keyed_body("internal_error", detail=str(exc)), status_code=500)
 
     @app.exception_handler(_Busy)

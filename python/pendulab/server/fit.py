@@ -41,12 +41,13 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from .._core import InvalidInputError
 from ..fitting import FitResult, fit
+from ..fitting.keyed import KeyedInputError
 from ..fitting.problem import ROD_MODELS
 from ..fitting.table import parse_table
 from ..model import FloatArray, Pendulum
 from .fit_words import keyed, reasons, report_items
 from .notices import keyed_body
-from .protocol import validation_problems
+from .protocol import validation_key, validation_problems
 from .room import Room, client_key
 from .scenarios import Setup
 from .session import describe
@@ -145,12 +146,17 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
     """Parses and fits the data of ``req`` (see the module doc); JSON-ready. Raises
     :class:`pendulab.InvalidInputError` naming what is wrong with the data or the settings."""
     if req.model not in ROD_MODELS:
-        raise InvalidInputError(f"model {req.model!r}: use one of {', '.join(ROD_MODELS)}")
+        raise KeyedInputError(
+            f"model {req.model!r}: use one of {', '.join(ROD_MODELS)}",
+            "fit_unknown_model",
+            model=req.model,
+            allowed=", ".join(ROD_MODELS),
+        )
     name = req.name[:80]
     try:
         data = parse_table(req.csv, req.columns, req.name)
     except csv.Error as e:  # e.g. a field over the csv module's limit (a 200 kB cell)
-        raise InvalidInputError(f"{name}: not a readable CSV file: {e}") from None
+        raise KeyedInputError(f"{name}: not a readable CSV file: {e}", "data_not_csv", file=name) from None
     kinds = {k for k in data if k != "t"}
     names = req.fit if req.fit is not None else default_fit(req.model, kinds)
     with warnings.catch_warnings(record=True) as caught:
@@ -167,10 +173,12 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
         except InvalidInputError:
             raise
         except (ValueError, ArithmeticError) as e:  # numpy/SciPy on extreme data: said as the data's
-            raise InvalidInputError(
+            raise KeyedInputError(
                 f"the fit of {name} failed: {' '.join(str(e).split())[:300]}; the data hold values "
                 "the fit cannot follow in floating point (times or positions extremely far apart or "
-                "close together, or a noise sigma far from the data's scale)"
+                "close together, or a noise sigma far from the data's scale)",
+                "fit_failed",
+                file=name,
             ) from None
     shown = "".join(c for c in name if c.isprintable())  # a title has no control characters
     scenario = res.to_scenario(title=f"fitted to {shown}")
@@ -236,8 +244,15 @@ FIT_OPENAPI = {
 """The body's schema for the API page (``/api/docs``): the endpoint reads the body itself."""
 
 
-def _problem(status: int, detail: str) -> JSONResponse:
-    return JSONResponse({"detail": " ".join(detail.split())}, status_code=status)
+def _problem(
+    status: int, detail: str, key: str | None = None, values: dict[str, Any] | None = None
+) -> JSONResponse:
+    """An error answer: the English ``detail``; with ``key`` and ``values`` for a page that words it
+    (``messages.json``; the data file's and the settings' refusals, :mod:`pendulab.fitting.keyed`)."""
+    body: dict[str, Any] = {"detail": " ".join(detail.split())}
+    if key is not None:
+        body |= {"key": key, "values": values or {}}
+    return JSONResponse(body, status_code=status)
 
 
 def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[Response]]:
@@ -255,11 +270,11 @@ def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[
         try:
             raw = json.loads(body)
         except (ValueError, RecursionError) as e:  # RecursionError: nested too deeply
-            return _problem(422, f"the body is not JSON: {str(e)[:200]}")
+            return _problem(422, f"the body is not JSON: {str(e)[:200]}", "not_json", {})
         try:
             req = FitRequest.model_validate(raw)
         except ValidationError as e:
-            return _problem(422, validation_problems(e, skip=0))
+            return _problem(422, validation_problems(e, skip=0), *validation_key(e))
         async with room.request(client_key(request.scope)) as allowed:
             if not allowed:
                 return JSONResponse(room.too_many_requests(), status_code=429, headers={"retry-after": "1"})
@@ -273,7 +288,7 @@ def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[
             except WorkTimeout as e:
                 return JSONResponse(keyed_body("work_timeout", seconds=f"{e.seconds:g}"), status_code=503)
             except WorkInvalid as e:
-                return _problem(422, str(e))
+                return _problem(422, str(e), e.key, e.values)
         return Response(out, media_type="application/json")
 
     return post_fit

@@ -140,6 +140,9 @@ def report_items(res: FitResult) -> list[dict[str, Any]]:
         items.append(_item("combinationValue", label=label, value=_g(value, 10), err=_g(err)))
     if res.mirror_blind and {"phi0", "phi_dot0"} & set(res.names):
         items.append(_item("mirror"))
+    items.append(_item("aicBic", aic=_g(res.aic, 6), bic=_g(res.bic, 6)))
+    if res.body is not None:
+        items += _body_items(res)
     if res.planar:
         items.append(_item("planar"))
     if res.goodness is not None:
@@ -165,6 +168,37 @@ def report_items(res: FitResult) -> list[dict[str, Any]]:
             )
     done = "converged" if res.converged else "notConvergedItem"
     items.append(_item(done, runs=res.evaluations, seconds=_g(res.seconds)))
+    return items
+
+
+def _body_items(res: FitResult) -> list[dict[str, Any]]:
+    """The compound pendulum's lines (:meth:`pendulab.fitting.body.BodyFit.report_lines`): the body's
+    l_eq = I_O/(M h) (T-8.x of docs/theory.md) [m], the fitted length against it, the torques [N m (s)]."""
+    from ..fitting.body import TORQUES
+
+    fit = res.body
+    assert fit is not None
+    b = fit.body
+    items = [
+        _item(
+            "compound",
+            inertia=_g(b.inertia, 6),
+            mass=_g(b.mass, 6),
+            centre=_g(b.centre, 6),
+            leq=_g(b.equivalent_length, 6),
+        )
+    ]
+    if fit.length is None:
+        items.append(_item("compoundLengthHeld"))
+    else:
+        value, err = fit.length
+        off = (value - b.equivalent_length) / err if err > 0.0 and math.isfinite(err) else math.inf
+        items.append(_item("compoundLength", value=_g(value, 6), err=_g(err, 2), off=f"{off:+.2g}"))
+    units = dict(TORQUES.values())
+    for name, (value, err) in fit.torques.items():
+        items.append(
+            _item("compoundTorque", param=name, value=_g(value, 6), err=_g(err, 2), unit=units[name])
+        )
     return items
 
 

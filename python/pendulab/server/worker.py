@@ -62,11 +62,21 @@ class WorkTimeout(Exception):
         self.seconds = seconds
 
 
-class WorkInvalid(Exception):
+class _KeyedWork(Exception):
+    """A job's error with ``key`` and ``values`` naming it for a page that words it in its language
+    (``messages.json``; ``key`` None: not keyed, the page shows the English message)."""
+
+    def __init__(self, message: str, key: str | None = None, values: dict[str, Any] | None = None) -> None:
+        super().__init__(message)
+        self.key = key
+        self.values = values or {}
+
+
+class WorkInvalid(_KeyedWork):
     """The job refused its input (HTTP 422); the message names the problem."""
 
 
-class WorkFailed(Exception):
+class WorkFailed(_KeyedWork):
     """The job failed in an unexpected way or its worker died (HTTP 500); the message says how."""
 
 
@@ -77,6 +87,15 @@ def _invalid(e: BaseException) -> bool:
     """True for an error that means "bad input" (HTTP 422) rather than a fault of the server."""
     kinds = {k.__name__ for k in type(e).__mro__}
     return bool(kinds & _INVALID_NAMES) or isinstance(e, (ValueError, ArithmeticError, TypeError))
+
+
+def _keyed(e: BaseException) -> tuple[str | None, dict[str, Any]]:
+    """The message key and values of a keyed refusal (:class:`pendulab.fitting.keyed.KeyedInputError`,
+    or anything with ``key`` and ``values`` of those types), else ``(None, {})``."""
+    key, values = getattr(e, "key", None), getattr(e, "values", None)
+    if not isinstance(key, str) or not isinstance(values, dict):
+        return None, {}
+    return key, {str(k): v for k, v in values.items() if isinstance(v, str | int | float)}
 
 
 def _serve(conn: Connection) -> None:  # pragma: no cover - runs in the worker process
@@ -96,10 +115,16 @@ def _serve(conn: Connection) -> None:  # pragma: no cover - runs in the worker p
         try:
             reply: tuple[str, Any] = ("ok", orjson.dumps(fn(*args)))
         except MemoryError:
-            reply = ("invalid", "the request needs more memory than the server has for it")
+            reply = (
+                "invalid",
+                ("the request needs more memory than the server has for it", "out_of_memory", {}),
+            )
         except Exception as e:
             text = " ".join(str(e).split())[:2000] or type(e).__name__
-            reply = ("invalid", text) if _invalid(e) else ("failed", f"{type(e).__name__}: {text}")
+            key, values = _keyed(e)
+            reply = (
+                ("invalid", (text, key, values)) if _invalid(e) else ("failed", f"{type(e).__name__}: {text}")
+            )
         try:
             conn.send(reply)
         except (OSError, ValueError):
@@ -237,7 +262,9 @@ class WorkerPool:
                 code = w.proc.exitcode
                 raise WorkFailed(
                     f"the {self.name} worker died (exit code {code}); the request may need more "
-                    "memory than the server has"
+                    "memory than the server has",
+                    "worker_died",
+                    {"code": str(code)},
                 ) from None
             done = True
         except TimeoutError:
@@ -255,7 +282,8 @@ class WorkerPool:
         if kind == "ok":
             return bytes(value)
         if kind == "invalid":
-            raise WorkInvalid(str(value))
+            text, key, values = value
+            raise WorkInvalid(str(text), key, values)
         raise WorkFailed(str(value))
 
 

@@ -99,8 +99,12 @@ export function httpProblem(body: unknown, fallback: string): string {
 }
 
 /** An error notice of the server in the page's language: `server.<key>` of the table filled with the
- *  notice's values when the server keyed it (python/pendulab/server/messages.json), else its English text. */
+ *  notice's values when the server keyed it (python/pendulab/server/messages.json), else its English text.
+ *  A `model` value (a model's code name) is shown in the page's words for it. */
 export function serverWords(n: { message: string; key?: string; values?: Record<string, string | number> }): string {
   const key = `server.${n.key ?? ''}`;
-  return n.key !== undefined && Object.hasOwn(EN, key) ? t(key as Key, n.values ?? {}) : n.message;
+  if (n.key === undefined || !Object.hasOwn(EN, key)) return n.message;
+  const values = { ...(n.values ?? {}) };
+  if (typeof values.model === 'string') values.model = modelWords(values.model, values.model);
+  return t(key as Key, values);
 }

@@ -116,5 +116,13 @@ export async function checkFitData(page, { check, skip, transport, WAIT }) {
     `German page: the wrong model (ideal for a damped swing) is flagged above the report in German: ${wrong.text.slice(0, 100)}…`,
   );
   check(/ideales Pendel/.test(wrong.report) && /Freiheitsgraden/.test(wrong.report) && !/theta_dot0|residual rms|noise floor/.test(wrong.report), `German page: the report is German (“${wrong.report.split('\n')[0].slice(0, 80)}…”)`);
+  check(/Informationskriterien: AIC = \S+, BIC = \S+/.test(wrong.report) && !/pl\.compare_fits/.test(wrong.report), `German page: AIC and BIC said in German (“${(/^.*AIC.*$/m.exec(wrong.report)?.[0] ?? '').trim().slice(0, 90)}…”)`);
+  // a file with a bad cell: the server's 422 names file, row, line, column and text by a key (pendulab.fitting.keyed),
+  // the page words it in German
+  await de.locator('[data-input="fit-file"]').setInputFiles({ name: 'schlecht.csv', mimeType: 'text/csv', buffer: Buffer.from('t,x,z\n0,0.1,-0.5\n0.1,oops,-0.5\n') });
+  const bad = await de
+    .waitForFunction(() => /keine Zahl/.test(document.getElementById('message').textContent), null, { timeout: WAIT })
+    .then(() => de.evaluate(() => document.getElementById('message').textContent), () => de.evaluate(() => document.getElementById('message').textContent));
+  check(/schlecht\.csv: Zeile 2 \(Zeile 3 der Datei\), Spalte 'x': 'oops' ist keine Zahl/.test(bad) && !/is not a number/.test(bad), `German page: a bad cell of a data file is said in German: “${bad.slice(0, 110)}”`);
   await de.close();
 }

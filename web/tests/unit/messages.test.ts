@@ -48,6 +48,16 @@ describe('HTTP error answers', () => {
     setLanguage('fr');
     expect(httpProblem({ detail: 'x', key: 'device_busy', values: { most: 2 } }, 'HTTP 429')).toContain('au plus 2');
     expect(httpProblem({ detail: 'row 3: not a number' }, 'HTTP 422')).toBe('row 3: not a number');
+    // a data file's bad cell and a fit setting, keyed by the server (pendulab.fitting.keyed)
+    const cell = { detail: "bad.csv: row 2 (line 3), column 'x': 'oops' is not a number", key: 'data_not_number', values: { file: 'bad.csv', row: 2, line: 3, column: "'x'", cell: "'oops'" } };
+    expect(httpProblem(cell, 'HTTP 422')).toBe("bad.csv : ligne 2 (ligne 3 du fichier), colonne 'x' : 'oops' n’est pas un nombre");
+    setLanguage('de');
+    expect(httpProblem(cell, 'HTTP 422')).toBe("bad.csv: Zeile 2 (Zeile 3 der Datei), Spalte 'x': 'oops' ist keine Zahl");
+    expect(httpProblem({ detail: 'x', key: 'fit_cannot_fit', values: { param: 'colour', model: 'damped', allowed: 'length, g' } }, 'HTTP 422')).toBe(
+      'colour lässt sich mit dem Modell Gedämpft und angetrieben nicht anpassen; wählbar sind length, g',
+    );
+    expect(httpProblem({ detail: 'x', key: 'worker_died', values: { code: '-9' } }, 'HTTP 500')).toContain('Exit-Code -9');
+    setLanguage('fr');
     expect(httpProblem({}, 'HTTP 500')).toBe('HTTP 500');
     expect(httpProblem(null, 'HTTP 502')).toBe('HTTP 502');
     setLanguage('en');
