@@ -32,7 +32,7 @@ pub const COMMAND_TYPES: [&str; 11] = [
 /// name, min, max, unit.
 pub const LIMITS: [(&str, f64, f64, &str); 6] = [
     ("length", 1e-3, 1e3, "m"),
-    ("mass", 1e-3, 1e3, "kg"),
+    ("mass", 1e-3, 1e5, "kg"),
     ("g", -1e3, 1e3, "m/s²"),
     ("dt", 1e-6, 0.1, "s"),
     ("time_scale", 1e-3, 1e3, ""),
