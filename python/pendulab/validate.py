@@ -19,6 +19,8 @@ import math
 import numbers
 import os
 import re
+import sys
+import tomllib
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
@@ -323,6 +325,28 @@ def check_nesting(text: str) -> None:
                 )
         else:
             depth = max(depth - 1, 0)
+
+
+def parse_toml(text: str) -> dict[str, Any]:
+    """TOML text from outside, parsed with the checks every reader needs: a UTF-8 byte order mark
+    dropped, the nesting checked before parsing (:func:`check_nesting`) and after
+    (:func:`check_depth`), and an integer too long for Python to convert (more than
+    ``sys.get_int_max_str_digits()``, 4300 digits: tomllib raised a bare ``ValueError``) refused as
+    :class:`InvalidInputError`. Bad syntax raises ``tomllib.TOMLDecodeError`` (the caller names the
+    file, line and column)."""
+    text = text.removeprefix("\ufeff")
+    check_nesting(text)
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError:
+        raise
+    except ValueError:
+        raise InvalidInputError(
+            f"a number with more than {sys.get_int_max_str_digits()} digits; numbers in a file are "
+            "SI values of at most a few dozen digits"
+        ) from None
+    check_depth(data)
+    return data
 
 
 def check_depth(data: Any) -> None:

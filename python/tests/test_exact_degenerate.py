@@ -271,3 +271,20 @@ def test_starts_near_the_separatrix(unit: Any, lg: Any) -> None:
 @given(random_starts(), PENDULUMS)
 def test_random_starts(unit: Any, lg: Any) -> None:
     check(unit, lg)
+
+
+@pytest.mark.parametrize("g", [1e-300, -1e-300, 1e-200, 5e-324])
+def test_negligible_gravity_moves_on_the_great_circle(g: float) -> None:
+    """Issue 30 audit: with |g| = 1e-200 … 5e-324 m/s² beside |v| = 0.84 m/s the elliptic form
+    overflowed ("conical", a z-period of 0 s, no state; /api/exact answered that with 200)."""
+    free = pl.Pendulum(g=0.0)
+    p = pl.Pendulum(g=g)
+    sol, ref = (
+        pl.exact(p, p.state_from_angles(1.0, 0.0, 0.0, 1.0)),
+        pl.exact(free, free.state_from_angles(1.0, 0.0, 0.0, 1.0)),
+    )
+    assert sol.kind == "great_circle"
+    assert sol.period_z == pytest.approx(2 * math.pi / math.sin(1.0), rel=1e-14)
+    t = np.array([0.3, 7.0, 1e4])
+    for a, b in zip(sol.state(t), ref.state(t), strict=True):
+        np.testing.assert_allclose(a, b, rtol=0, atol=1e-12)

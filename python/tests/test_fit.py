@@ -178,6 +178,9 @@ def test_bad_data_get_clear_errors(swing: tuple) -> None:
         pl.fit(t)
     with pytest.raises(pl.InvalidInputError, match=r"sigma = -1\.0"):
         pl.fit(t, positions=x, sigma=-1.0)
+    for tiny in (1e-300, 5e-324, {"positions": 1e-300}):  # a ValueError from the solver before
+        with pytest.raises(pl.InvalidInputError, match=r"sigma = .* for positions is below 1e-15 m"):
+            pl.fit(t, positions=x, sigma=tiny)
     with pytest.raises(pl.InvalidInputError, match="degrees"):
         pl.fit(t, angles=(np.degrees(_angles(x)[0]), _angles(x)[1]))
     with pytest.raises(

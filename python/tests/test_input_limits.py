@@ -197,6 +197,44 @@ def test_deep_nesting_is_refused_in_one_line(tmp_path: Path, line: str) -> None:
         pl.Scenario.from_toml_str(line)
 
 
+def _toml_readers() -> dict[str, tuple[Path, object]]:
+    from pendulab.crane.scenario import load as load_crane
+    from pendulab.sweeps.file import load_sweep_file
+
+    return {
+        "scenario": (SCENARIOS / "rosette.toml", pl.load_scenario),
+        "sweep": (REPO / "examples" / "sweeps" / "sway.toml", load_sweep_file),
+        "crane": (REPO / "examples" / "cranes" / "gantry_zvd.toml", load_crane),
+    }
+
+
+@pytest.mark.parametrize("reader", ["scenario", "sweep", "crane"])
+def test_every_toml_reader_takes_a_bom_and_refuses_hostile_text_clearly(tmp_path: Path, reader: str) -> None:
+    """The audit of issue 30: a 5001-digit integer was a bare ValueError (a traceback from
+    ``pendulab validate``) in every TOML reader; the crane reader refused a UTF-8 BOM and recursed on
+    deep nesting (RecursionError)."""
+    path, load = _toml_readers()[reader]
+    base = path.read_bytes()
+    f = tmp_path / f"{reader}.toml"
+    f.write_bytes(b"\xef\xbb\xbf" + base)
+    load(f)  # type: ignore[operator]
+    for tail, words in [
+        (b"\nzz = 1" + b"0" * 5000 + b"\n", "more than 4300 digits"),
+        (b"\nzz = " + b"[" * 50_000 + b"]" * 50_000 + b"\n", "nest more than 16 levels"),
+    ]:
+        f.write_bytes(base + tail)
+        with pytest.raises((pl.InvalidInputError, pl.ScenarioError), match=words) as refused:
+            load(f)  # type: ignore[operator]
+        assert str(f) in str(refused.value)
+
+
+def test_validate_refuses_an_over_long_integer_in_one_line(tmp_path: Path) -> None:
+    f = tmp_path / "long.toml"
+    f.write_text((SCENARIOS / "rosette.toml").read_text() + "\n[extra]\nk = 1" + "0" * 5000 + "\n")
+    code, _, err = _cli("validate", str(f))  # a traceback and exit code 1 before
+    assert code == 2 and "more than 4300 digits" in _one_error(err) and "long.toml" in err
+
+
 def test_missing_files_and_directories_are_named(tmp_path: Path) -> None:
     code, _, err = _cli("run", str(tmp_path / "nope.toml"))
     assert code == 2 and "nope.toml" in _one_error(err)

@@ -422,7 +422,19 @@ def test_extreme_fit_uploads_get_a_clear_4xx(client: LabClient, case: str) -> No
 
 def test_a_sigma_of_1e_300_gets_a_clear_4xx(client: LabClient) -> None:
     r = client.post("/api/fit", json={"csv": _csv(_rows()), "sigma": 1e-300})
-    assert r.status_code in (200, 422), (r.status_code, r.text[:300])
+    assert r.status_code == 422, (r.status_code, r.text[:300])
+    assert "sigma = 1e-300 m for positions is below 1e-15 m" in r.json()["detail"], r.text[:300]
+
+
+@pytest.mark.parametrize("g", [1e-300, -1e-200, 5e-324])
+def test_a_negligible_gravity_gets_the_great_circle_not_a_zero_period(client: LabClient, g: float) -> None:
+    """The audit of issue 30: /api/exact with g = 1e-300 answered 200 with a "conical" orbit of
+    z-period 0 s (the elliptic form overflowed); it is the great circle of g = 0, period 2π l/|v|."""
+    body = {"theta": 1.0, "phi": 0.0, "theta_dot": 0.0, "phi_dot": 1.0, "g": g}
+    r = client.post("/api/exact", json=body)
+    assert r.status_code == 200, r.text[:300]
+    assert r.json()["kind"] == "great_circle"
+    assert r.json()["period_z"] == pytest.approx(2 * math.pi / math.sin(1.0), rel=1e-14)
 
 
 LIMITED = """

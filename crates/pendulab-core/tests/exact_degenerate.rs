@@ -111,6 +111,31 @@ fn kinds_at_the_limits() {
 }
 
 #[test]
+fn negligible_gravity_is_the_great_circle() {
+    // |g| of 1e-200 m/s² beside |v| = 0.84 m/s (κ = |v|²/(2|g|l) ≈ 1e199) overflowed the elliptic
+    // form: "conical" with a z-period of 0 s and no state (issue 30, /api/exact with g = 1e-300).
+    // Beyond GRAVITY_NEGLIGIBLE the motion is the great circle of g = 0; below it the elliptic form
+    // gives the same period and states (κ = 1e89 here): the two meet at the threshold.
+    let x = DVec3::new(1f64.sin(), 0.0, -1f64.cos());
+    let start = State { x, v: DVec3::new(0.0, 1f64.sin(), 0.0) };
+    let free = ExactSolution::new(IdealPendulum::new(1.0, 1.0, 0.0).unwrap().params(), &start).unwrap();
+    let period = 2.0 * PI / 1f64.sin();
+    assert!((free.period_z().unwrap() - period).abs() < 1e-14 * period);
+    for g in [1e-300, -1e-300, 1e-200, 5e-324, -5e-324, 1e-90, -1e-90] {
+        let m = IdealPendulum::new(1.0, 1.0, g).unwrap();
+        let sol = ExactSolution::new(m.params(), &start).unwrap();
+        let want = if g.abs() < 1e-99 { Kind::GreatCircle } else { Kind::Generic };
+        assert_eq!(sol.kind(), want, "g = {g}");
+        let p = sol.period_z().unwrap();
+        assert!((p - period).abs() < 1e-12 * period, "g = {g}: T_z = {p} s, want {period} s");
+        for t in [0.3, 7.0, 1e4] {
+            let (a, b) = (sol.state(t).unwrap(), free.state(t).unwrap());
+            assert!((a.x - b.x).length() < 1e-9 && (a.v - b.v).length() < 1e-9, "g = {g}, t = {t}");
+        }
+    }
+}
+
+#[test]
 fn phase_split_of_orbits_skimming_a_pole() {
     // Nearly planar orbits pass the bottom at 1 + u ≈ j²/4(1 + ε): the area integrand of Δφ_geom
     // steps up over ψ ≈ j there, and a quadrature blind to that step lost π of Δφ_geom at j ≈ 1e-8.

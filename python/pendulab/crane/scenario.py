@@ -22,6 +22,7 @@ from pydantic import ValidationError
 
 from .._core import InvalidInputError
 from ..scenario.crane_schema import CraneSpec
+from ..validate import parse_toml
 from .paths import Gantry, move
 from .paths import Path as CranePath
 from .shaper import Shaper, shaper
@@ -146,8 +147,10 @@ def load(path: str | Path) -> CraneScenario:
     size = p.stat().st_size
     if size > MAX_BYTES:
         raise InvalidInputError(f"{p}: {size} bytes; crane files are at most {MAX_BYTES} bytes")
-    try:
-        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    try:  # a BOM dropped, nesting checked (deep nesting was a RecursionError), long integers refused
+        data = parse_toml(p.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
         raise InvalidInputError(f"{p}: not valid TOML: {e}") from None
+    except InvalidInputError as e:
+        raise InvalidInputError(f"{p}: {e}") from None
     return parse(data, str(p))

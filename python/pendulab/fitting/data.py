@@ -58,6 +58,10 @@ SPAN = (1e-6, 1e9)
 """Shortest and longest record [s]."""
 MIN_SPACING = 1e-12
 """Smallest spacing of two samples, as a fraction of the record's span."""
+MIN_SIGMA = 1e-15
+"""Smallest noise ``sigma`` of one value (its kind's SI unit): below the float64 resolution of a
+metre-sized value, and a residual of up to :data:`MAX_VALUE` over a smaller one would overflow χ²
+(``sigma = 1e-300`` ended in a ValueError from the solver, "array must not contain infs or NaNs")."""
 
 
 def _show(value: Any) -> str:
@@ -130,6 +134,11 @@ def _sigma(kind: str, sigma: Any) -> float | None:
         raise InvalidInputError(
             f"sigma = {s!r} for {kind} must be a positive finite number [{KINDS[kind]}] "
             "(the noise of one value)"
+        )
+    if s < MIN_SIGMA:
+        raise InvalidInputError(
+            f"sigma = {s!r} {KINDS[kind]} for {kind} is below {MIN_SIGMA:g} {KINDS[kind]}, finer than "
+            "any measurement and than float64 resolves: give the noise of one value in SI units"
         )
     return s
 

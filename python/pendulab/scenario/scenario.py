@@ -58,7 +58,7 @@ from ..io import atomic_path
 from ..model import Pendulum, State
 from ..simulation import simulate
 from ..trajectory import Trajectory
-from ..validate import check_depth, check_nesting, read_file_capped
+from ..validate import check_depth, parse_toml, read_file_capped
 from ..variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
 from .crane_schema import CRANE_SECTIONS, CraneSpec, is_crane
@@ -197,9 +197,7 @@ class Scenario:
         """A scenario from TOML text; ``source`` names it in error messages."""
         text = text.removeprefix("\ufeff")  # a UTF-8 byte order mark (Windows editors write one)
         try:
-            check_nesting(text)
-            data = tomllib.loads(text)
-            check_depth(data)
+            data = parse_toml(text)  # nesting checked before and after, over-long integers refused
         except tomllib.TOMLDecodeError as e:
             raise _syntax_error(source, text, e) from None
         except InvalidInputError as e:

@@ -51,7 +51,7 @@ from ..scenario.schema import (
     _show,  # a value as it looks in TOML, as scenario errors show it
     printable,
 )
-from ..validate import check_depth, read_file_capped
+from ..validate import parse_toml, read_file_capped
 from . import design as sweep_design
 from .compute import QUANTITIES, make_spec
 from .design import Design
@@ -278,8 +278,7 @@ def load_sweep_file(path: str | os.PathLike[str]) -> SweepFile:
     source = str(path)
     try:
         text = read_file_capped(path)  # at most 1 MiB, 16 levels of nesting (docs/limits.md)
-        data = tomllib.loads(text)
-        check_depth(data)
+        data = parse_toml(text)  # over-long integers refused too
     except tomllib.TOMLDecodeError as e:
         raise SweepFileError(source, f"invalid TOML: {e}") from None
     except InvalidInputError as e:

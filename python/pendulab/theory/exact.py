@@ -14,7 +14,7 @@ t [s], x [m], v [m/s], heights [m], periods [s], angles [rad]. The motion is cla
 ``planar_rotating`` J₃ = 0, going over the top
 ``separatrix``      J₃ = 0 at exactly the energy of the top: creeps towards it forever
 ``rest``            at rest at an equilibrium (or anywhere when g = 0)
-``great_circle``    g = 0: uniform motion along a great circle
+``great_circle``    g = 0 (or |g| negligible: |v₀|²/(2|g|l) > 1e100): uniform motion along a great circle
 =================== ==========================================================================
 
 For g < 0 the solution is the mirror image z → −z of the one with gravity |g| (J₃ and φ unchanged).

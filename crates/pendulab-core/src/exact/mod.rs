@@ -3,7 +3,8 @@
 //! turning heights, the parameter m, the z-period and the azimuthal advance per z-period.
 //!
 //! Cases (T-4.6), chosen from the start:
-//! - `GreatCircle`, g = 0: x = x₀ cos ωt + (v₀/ω) sin ωt, ω = |v₀|/l.
+//! - `GreatCircle`, g = 0 (or gravity negligible, [`GRAVITY_NEGLIGIBLE`]): x = x₀ cos ωt + (v₀/ω) sin ωt,
+//!   ω = |v₀|/l.
 //! - `Rest`: v₀ = 0 at a pole (or anywhere when g = 0); the bottom is stable, the top unstable but
 //!   an equilibrium all the same.
 //! - `Planar` (J₃ = 0), `PlanarRotating` (over the top), `Separatrix` (ε = 1): see [`planar`].
@@ -96,6 +97,14 @@ const CONICAL_WIDTH: f64 = 1e-12;
 /// j = 1e-160, j² underflows to 0 and 1 + u₁ with it).
 pub const PLANAR_J: f64 = 1e-140;
 
+/// κ = |v₀|²/(2|g|l) above this solves the motion as a great circle (g taken as 0): gravity then
+/// changes the period by a relative O(1/κ) ≤ 1e-100, so the phase after the most revolutions a time
+/// within the limits allows (t ≤ 1e12 s at |v₀|/l ≤ 1e9 1/s) is off by less than 1e-70 rad, while the
+/// elliptic form's dimensionless velocity √(2κ) ≥ 1e50 would square its cubic's coefficients towards
+/// the end of the float range (at |g| = 1e-200 m/s² and |v₀| = 1 m/s they overflowed: a "conical" orbit
+/// with a z-period of 0 s).
+pub const GRAVITY_NEGLIGIBLE: f64 = 1e100;
+
 /// A start at rest whose distance from the vertical axis is at most this × |x| is at the pole
 /// (the equilibrium): a few ulps, e.g. l·sin(fl(π)) = 1.2e-16 l for θ = fl(π).
 pub const AXIS_ROUNDING: f64 = 4.0 * f64::EPSILON;
@@ -148,7 +157,8 @@ impl ExactSolution {
         if speed2 == 0.0 && (at_pole || g == 0.0) {
             return Ok(base);
         }
-        if g == 0.0 {
+        // κ = speed2/(2|g|l) > GRAVITY_NEGLIGIBLE, written without dividing by a |g|l that may underflow
+        if g == 0.0 || speed2 > 2.0 * GRAVITY_NEGLIGIBLE * (g.abs() * l) {
             let omega = speed2.sqrt() / l;
             return Ok(Self { kind: Kind::GreatCircle, flow: Flow::GreatCircle { omega }, ..base });
         }
