@@ -112,3 +112,29 @@ def test_every_key_the_data_readers_and_the_fit_raise_is_worded() -> None:
         used |= set(re.findall(r"\"((?:data|fit)_[a-z_]+)\"", path.read_text(encoding="utf-8")))
     assert len(used) >= 30, used
     assert used <= set(MESSAGES), used - set(MESSAGES)
+
+
+@pytest.mark.parametrize("lang", ["de", "fr"])
+def test_every_model_parameter_has_words_in_every_page_table(lang: str) -> None:
+    """A parameter the lab's schema offers (``GET /api/schema``) is named and explained in the page's
+    table of that language (``DE_PARAMS``, ``FR_PARAMS``), not left with the registry's English label."""
+    from pendulab.server.schema import schema
+
+    names: set[str] = set()
+
+    def walk(o: object) -> None:
+        if isinstance(o, dict):
+            if isinstance(o.get("params"), list):
+                names.update(p["name"] for p in o["params"] if isinstance(p, dict) and "name" in p)
+            for v in o.values():
+                walk(v)
+        elif isinstance(o, list):
+            for v in o:
+                walk(v)
+
+    walk(schema())
+    text = (I18N / f"{lang}.ts").read_text(encoding="utf-8")
+    table = text[text.index(f"export const {lang.upper()}_PARAMS") :]
+    table = table[: table.index("};")]
+    assert len(names) > 20
+    assert not [n for n in sorted(names) if not re.search(rf"^\s+{n}: \[", table, re.M)]

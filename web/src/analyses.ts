@@ -6,7 +6,7 @@ import type { EMView, EffectivePotential, ExactQuantities, Frame, ReducedCurves,
 import type { ReducedView } from './scene/reduced';
 import type { LabStore } from './state';
 import { offSphereNote, staysOnSphere } from './models';
-import { httpProblem, t } from './i18n';
+import { httpProblem, modelWords, t } from './i18n';
 
 /** GET or POST JSON; an HTTP error becomes an Error with the server's words (`httpProblem`: keyed ones in
  *  the page's language). */
@@ -131,7 +131,7 @@ export class Analyses {
     this.reducedEpoch = status.epoch;
     if (status.model !== 'ideal') {
       this.reduced.setNote(
-        offSphereNote(status.model) ?? t('note.reducedIdeal', { model: status.model }),
+        offSphereNote(status.model) ?? t('note.reducedIdeal', { model: modelWords(status.model, status.model) }),
       );
       return;
     }

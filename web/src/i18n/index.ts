@@ -12,7 +12,7 @@ import { FR, FR_MODELS, FR_PARAMS } from './fr';
 export type Key = keyof Words;
 
 export const LANGUAGES = {
-  en: { name: 'English', words: EN, params: {} as Record<string, [string, string]>, models: {} as Record<string, string> },
+  en: { name: 'English', words: EN, params: {} as Record<string, [string, string]>, models: { crane: 'Gantry crane (crane mode)' } as Record<string, string> },
   de: { name: 'Deutsch', words: DE, params: DE_PARAMS, models: DE_MODELS },
   fr: { name: 'Français', words: FR, params: FR_PARAMS, models: FR_MODELS },
 } as const;
@@ -100,11 +100,13 @@ export function httpProblem(body: unknown, fallback: string): string {
 
 /** An error notice of the server in the page's language: `server.<key>` of the table filled with the
  *  notice's values when the server keyed it (python/pendulab/server/messages.json), else its English text.
- *  A `model` value (a model's code name) is shown in the page's words for it. */
+ *  A `model` value (a model's code name) and a `name` that is a parameter's are shown in the page's words for
+ *  them (a German page: "Länge l = -1: mindestens 0.001 erlaubt"). */
 export function serverWords(n: { message: string; key?: string; values?: Record<string, string | number> }): string {
   const key = `server.${n.key ?? ''}`;
   if (n.key === undefined || !Object.hasOwn(EN, key)) return n.message;
   const values = { ...(n.values ?? {}) };
   if (typeof values.model === 'string') values.model = modelWords(values.model, values.model);
+  if (typeof values.name === 'string') values.name = paramWords(values.name, values.name, '')[0];
   return t(key as Key, values);
 }

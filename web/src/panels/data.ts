@@ -71,7 +71,7 @@ export function liveRows(f: Frame | null, store: LabStore): Row[] {
 export function errorRows(f: Frame | null, s: Status | null): Row[] {
   const info = s?.error_estimate;
   if (!s || !info) return [];
-  if (info.how === null) return [[t('data.errorHow'), info.note ?? t('data.errorNone'), '']];
+  if (info.how === null) return [[t('data.errorHow'), s.model === 'crane' ? t('data.errorCrane') : (info.note ?? t('data.errorNone')), '']];
   const since = fmt(info.since, 6);
   const how =
     info.how === 'exact'
@@ -94,9 +94,17 @@ export function exactNote(store: LabStore): string {
   const off = offSphereNote(s?.model);
   if (off !== null) return off;
   if (s && s.model !== 'ideal') {
-    return t('note.exactIdeal', { model: s.model });
+    return t('note.exactIdeal', { model: modelWords(s.model, s.model) });
   }
-  return store.exactError ?? store.exact?.phases_note ?? '';
+  return store.exactError ?? phasesNote(store.exact);
+}
+
+/** Why the exact solution has no phases (T-5.x: they need an oscillation of z about a potential minimum,
+ *  J₃ ≠ 0 and g ≠ 0), in the page's words from the orbit's kind; '' when it has them. The server's note
+ *  (`phases_note`, English) says the same with the numbers. */
+export function phasesNote(exact: ExactQuantities | null): string {
+  if (exact === null || exact.phases !== null || exact.phases_note === null) return '';
+  return exact.kind === 'great_circle' ? t('note.phasesNoGravity') : t('note.phasesPlanar', { kind: kindWords(exact.kind) });
 }
 
 /** The rows of the exact-solution section. */

@@ -84,6 +84,10 @@ export class ModelControls {
     const name = s.model ?? 'ideal';
     this.state.model = name;
     this.picker.updateDisplay();
+    // a model the picker does not offer (the crane mode, entered by its own button): its name in words, not
+    // lil-gui's fallback of the raw code name
+    const display = (this.picker as Controller & { $display?: HTMLElement }).$display;
+    if (display && !this.spec(name)) display.textContent = modelWords(name, name);
     if (this.shown !== name) this.rebuild(name);
     for (const [k, v] of Object.entries(s.model_params ?? {})) this.values[k] = v;
     for (const c of this.paramControls) {

@@ -22,13 +22,24 @@ export interface ToolbarActions {
   simple(on: boolean): void;
 }
 
+/** A button's accessible name: its tooltip, led by its visible words when the tooltip does not contain them
+ *  (WCAG 2.5.3 "label in name", axe's label-content-name-mismatch: "● Aufnahme" beside "Video aufnehmen"
+ *  becomes "Aufnahme: Video aufnehmen (WebM)"; "A⁺" becomes "A⁺: mode présentation …"). */
+export function accessibleName(text: string, title: string): string {
+  const shown = text.replace(/^[^\p{L}\p{N}]+/u, '').trim();
+  const words = (s: string) => s.toLocaleLowerCase().split(/[^\p{L}\p{N}]+/u).filter(Boolean);
+  const have = words(title);
+  const inside = (w: string[]) => w.length > 0 && have.some((_, i) => w.every((x, k) => have[i + k] === x));
+  return shown === '' || inside(words(shown)) ? title : `${shown}: ${title}`;
+}
+
 function button(action: string, text: string, title: string, open = false): HTMLButtonElement {
   const b = document.createElement('button');
   b.type = 'button';
   b.dataset['action'] = action;
   b.textContent = text;
   b.title = title;
-  b.setAttribute('aria-label', title);
+  b.setAttribute('aria-label', accessibleName(text, title));
   if (open) b.classList.add('when-open');
   return b;
 }
@@ -113,7 +124,7 @@ export class Toolbar {
     if (this.runButton.textContent !== text) {
       this.runButton.textContent = text;
       this.runButton.title = paused ? t('toolbar.start') : t('toolbar.pause');
-      this.runButton.setAttribute('aria-label', this.runButton.title);
+      this.runButton.setAttribute('aria-label', accessibleName(text, this.runButton.title));
     }
   }
 
@@ -121,5 +132,6 @@ export class Toolbar {
     this.recordButton.setAttribute('aria-pressed', String(on));
     this.recordButton.textContent = on ? t('toolbar.recordStopShort') : t('toolbar.recordShort');
     this.recordButton.title = on ? t('toolbar.recordStop') : t('toolbar.record');
+    this.recordButton.setAttribute('aria-label', accessibleName(this.recordButton.textContent, this.recordButton.title));
   }
 }

@@ -6,7 +6,7 @@ import type { Command, Status } from '../protocol';
 import type { LabStore } from '../state';
 import { DEG, periodComparison, sphericalAngles, Stopwatch, swingTheory } from '../measure';
 import { fmt } from '../format';
-import { t } from '../i18n';
+import { modelWords, t } from '../i18n';
 import type { Key } from '../i18n';
 
 /** Gravity presets [m/s²] (surface gravity; NASA planetary fact sheets, rounded). */
@@ -220,7 +220,7 @@ export class Tools {
     this.friction.addEventListener('change', () => {
       const cmd = frictionCommand(store.status, Number(this.friction.value));
       if (cmd !== null) actions.send(cmd);
-      else if (Number(this.friction.value) > 0) actions.explain(t('tools.noFriction', { model: store.status?.model ?? '?' }));
+      else if (Number(this.friction.value) > 0) actions.explain(t('tools.noFriction', { model: modelWords(store.status?.model ?? '?', store.status?.model ?? '?') }));
     });
     fl.append(this.friction, ' ', this.frictionValue);
     world.append(gl, fl);

@@ -71,7 +71,8 @@ function onNotice(lab: LabCore, panels: StatusPanels, messages: MessageLine, lin
   if (n.type === 'error') {
     lab.store.onError(n);
     const words = serverWords(n); // the page's language when the server keyed the message
-    lab.explain(n.command ? `${n.command}: ${words}` : words);
+    // a keyed message says what was refused in words; an unkeyed one is prefixed with the command's name
+    lab.explain(n.command && n.key === undefined ? `${n.command}: ${words}` : words);
     return;
   }
   if (n.type === 'event') {

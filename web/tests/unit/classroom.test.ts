@@ -19,6 +19,7 @@ import { framingDistance } from '../../src/scene/scene';
 import { rulerStep } from '../../src/scene/instruments';
 import { tick } from '../../src/panels/curves';
 import { webmType } from '../../src/record';
+import { accessibleName } from '../../src/panels/toolbar';
 
 function frame(t: number, x: Vec3, v: Vec3, extra: Partial<Frame> = {}): Frame {
   return { t, x, v, energy: 0, j3: 0, tension: 0, power: 0, a: [NaN, NaN, NaN], pivot: [0, 0, 0], taut: true, errorX: 0, ...extra };
@@ -387,6 +388,21 @@ describe('classroom controls', () => {
 });
 
 describe('inclusion (issue 28)', () => {
+  it('a button’s accessible name contains its visible words (axe label-content-name-mismatch) in every language', () => {
+    expect(accessibleName('● Record', 'record a video (WebM)')).toBe('record a video (WebM)');
+    expect(accessibleName('● Aufnahme', 'Video aufnehmen (WebM)')).toBe('Aufnahme: Video aufnehmen (WebM)');
+    expect(accessibleName('A⁺', 'mode présentation : gros caractères pour un vidéoprojecteur')).toBe('A⁺: mode présentation : gros caractères pour un vidéoprojecteur');
+    expect(accessibleName('■ Arrêter', 'arrêter de filmer et télécharger la vidéo')).toBe('arrêter de filmer et télécharger la vidéo');
+    expect(accessibleName('▾', 'collapse the panel')).toBe('collapse the panel');
+    for (const lang of Object.keys(LANGUAGES) as (keyof typeof LANGUAGES)[]) {
+      setLanguage(lang);
+      for (const [short, long] of [['toolbar.recordShort', 'toolbar.record'], ['toolbar.recordStopShort', 'toolbar.recordStop'], ['toolbar.startShort', 'toolbar.start'], ['toolbar.pauseShort', 'toolbar.pause']] as const) {
+        const name = accessibleName(t(short), t(long)).toLocaleLowerCase();
+        expect(name).toContain(t(short).replace(/^[^\p{L}]+/u, '').toLocaleLowerCase());
+      }
+    }
+    setLanguage('en');
+  });
   it('describes the motion: angle, rising or falling, speed, the energy split', () => {
     setLanguage('en');
     const x: Vec3 = [Math.sin(0.2), 0, -Math.cos(0.2)];

@@ -2,8 +2,8 @@
 // unit, relative to l, how it was obtained (the status's error_estimate), "estimate paused" for −1, in
 // every language of the lab; the interpolation keeps an unknown error unknown.
 import { afterEach, describe, expect, it } from 'vitest';
-import { errorRows, liveRows } from '../../src/panels/data';
-import type { ErrorEstimateInfo, Frame, Status } from '../../src/protocol';
+import { errorRows, exactNote, liveRows, phasesNote } from '../../src/panels/data';
+import type { ErrorEstimateInfo, ExactQuantities, Frame, Status } from '../../src/protocol';
 import { LANGUAGES, setLanguage, t } from '../../src/i18n';
 import type { Lang } from '../../src/i18n';
 import { LabStore, interpolateFrames } from '../../src/state';
@@ -79,6 +79,24 @@ describe('the error estimate in the data panel', () => {
     expect(errorRows(frame(3, -1), status(none))).toEqual([['error obtained by', 'no estimate: the companion run cannot start (x)', '']]);
     expect(errorRows(frame(3, 1e-3), null)).toEqual([]);
     expect(errorRows(frame(3, 1e-3), status(undefined))).toEqual([]);
+  });
+
+  it('the crane mode, the models and the phases in the page language, not the server’s English (issue 28)', () => {
+    const crane = { ...status({ how: null, order: null, reference: {}, since: 0, note: "no estimate: the crane mode runs the crane's DOP853 at the session's rtol, atol" }), model: 'crane' };
+    setLanguage('de');
+    expect(errorRows(frame(3, -1), crane)[0]?.[1]).toMatch(/^keine Schätzung: der Kranmodus rechnet/);
+    const store = new LabStore();
+    store.onStatus(crane);
+    expect(exactNote(store)).toBe('die exakte Lösung gibt es nur für das ideale Pendel; dies ist das Modell „Portalkran (Kranmodus)“');
+    store.onStatus(status(EXACT));
+    expect(exactNote(store)).toContain('„Gedämpft und angetrieben“');
+    const planar = { kind: 'planar', phases: null, phases_note: "phases are defined for orbits with J3 != 0 (kinds generic, conical); this orbit is 'planar'" } as unknown as ExactQuantities;
+    expect(phasesNote(planar)).toBe('keine Phasen: sie teilen die Drehung einer Bahn, die um die Senkrechte kreist; diese Bahn ' + t('kind.planar'));
+    setLanguage('fr');
+    expect(phasesNote({ ...planar, kind: 'great_circle' })).toMatch(/^pas de phases : sans pesanteur/);
+    expect(phasesNote({ ...planar, phases: { total: 1, dynamic: 0.5, geometric: 0.5 }, phases_note: null })).toBe('');
+    expect(phasesNote(null)).toBe('');
+    setLanguage('en');
   });
 
   it('is part of the live rows', () => {

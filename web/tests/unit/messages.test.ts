@@ -26,9 +26,9 @@ describe('server messages', () => {
     expect(n.type === 'error' && n.key).toBe('too_small');
     if (n.type !== 'error') return;
     setLanguage('de');
-    expect(serverWords(n)).toBe('length = -1: mindestens 0.001 erlaubt');
+    expect(serverWords(n)).toBe('Länge l = -1: mindestens 0.001 erlaubt');
     setLanguage('fr');
-    expect(serverWords(n)).toBe('length = -1 : au moins 0.001');
+    expect(serverWords(n)).toBe('longueur l = -1 : au moins 0.001');
     expect(serverWords({ message: 'something new', key: 'no_such_key', values: {} })).toBe('something new');
     expect(serverWords({ message: 'plain' })).toBe('plain');
     // values that are not strings or numbers: the key is dropped, the English message kept
