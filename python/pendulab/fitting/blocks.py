@@ -40,7 +40,7 @@ import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
 from ..model import FloatArray
-from .goodness import autocorrelations
+from .goodness import mean_lag1
 from .identify import Correlation, Identifiability, analyse, jacobian
 from .problem import POSITIVE, STATE_NAMES, Problem, unit_of
 from .settings import angles_of
@@ -179,15 +179,15 @@ def _fit_block(
 
 
 def _lag1(r: FloatArray, columns: dict[str, int], kinds: list[str]) -> float:
-    """The largest over kinds of the mean lag-1 autocorrelation of a kind's residual columns (``r``
-    holds each kind's (N, columns) residual, raveled, one kind after another)."""
+    """The largest over kinds of :func:`goodness.mean_lag1` of a kind's residual (``r`` holds each
+    kind's (N, columns) residual, raveled, one kind after another), as the whole fit's check reads it."""
     out, at = 0.0, 0
     n = r.size // max(sum(columns[k] for k in kinds), 1)
     for k in kinds:
         part = r[at : at + n * columns[k]].reshape(n, columns[k])
         at += part.size
         if n > 2:
-            out = max(out, float(np.mean([autocorrelations(part[:, j], 1)[0] for j in range(columns[k])])))
+            out = max(out, mean_lag1(part))
     return out
 
 

@@ -70,6 +70,10 @@ MAX_LAG_WORK = 2e8
 """At most this many multiply-adds (lags × samples × unknowns²) for the Newey–West sum."""
 
 
+#: The verdicts (KindCheck.verdict) that are structure white noise does not have: a misfit.
+MISFIT_VERDICTS = frozenset({"systematic", "correlated", "above_floor"})
+
+
 @dataclass
 class KindCheck:
     """One data kind's residual statistics (unit: the kind's)."""
@@ -107,6 +111,30 @@ class KindCheck:
     def explained(self) -> float:
         """The share of the data's variance the fitted motion explains, 1 − rms²/spread²."""
         return 1.0 - (self.rms / self.spread) ** 2 if self.spread > 0.0 else 0.0
+
+    def verdict(self, robust: bool = False) -> str:
+        """What the residual says, one word that both :func:`findings` (its wording) and :func:`misfit`
+        (the block check's trigger) read, so the two cannot disagree: ``"exact"`` (noise-free data fitted
+        to round-off: nothing to test), ``"unexplained"`` (the fit explains under half the variance),
+        ``"ar1_noise"`` (correlated noise, white once its AR(1) part is removed), ``"systematic"``
+        (correlated and above the floor), ``"correlated"`` (correlated, at the floor), ``"above_floor"``
+        (white but over 2 × FLOOR_ALARM times the floor) or ``"ok"``. With ``robust`` the residual's
+        size is its robust spread."""
+        if self.spread > 0.0 and self.rms <= EXACT * self.spread:
+            return "exact"
+        if self.explained < 0.5:
+            return "unexplained"
+        if self.ar1_noise:
+            return "ar1_noise"
+        ratio = self.size_ratio(robust)
+        if self.correlated:
+            return "systematic" if ratio > FLOOR_ALARM else "correlated"
+        return "above_floor" if ratio > 2.0 * FLOOR_ALARM else "ok"
+
+    def size_ratio(self, robust: bool = False) -> float:
+        """The residual's rms (robust spread with ``robust``) in units of the noise floor."""
+        size = self.robust_rms if robust else self.rms
+        return size / self.floor if self.floor > 0.0 else math.inf
 
 
 @dataclass
@@ -158,12 +186,22 @@ def runs_z(x: FloatArray) -> float:
     return (runs - mu) / math.sqrt(var) if var > 0.0 else 0.0
 
 
+def carrying_columns(a: FloatArray) -> list[int]:
+    """The columns of a kind's residual (N, columns) that carry it: those with an rms of at least
+    COLUMN_SHARE of the largest (a column 3x smaller adds < 10 % to χ²)."""
+    col_rms = np.sqrt(np.mean(a**2, axis=0))
+    return [j for j in range(a.shape[1]) if col_rms[j] >= COLUMN_SHARE * float(col_rms.max())]
+
+
+def mean_lag1(a: FloatArray) -> float:
+    """The mean lag-1 autocorrelation ρ₁ of the carrying columns of a kind's residual (N, columns)."""
+    return float(np.mean([autocorrelations(a[:, j], 1)[0] for j in carrying_columns(a)]))
+
+
 def check_kind(t: FloatArray, r: FloatArray, floor: float, spread: float) -> KindCheck:
     """The statistics of one kind's residual (N, columns), as :class:`KindCheck`."""
     a = r if r.ndim == 2 else r[:, None]
-    # the columns that carry the residual (a column 3x smaller than the largest adds < 10 % to χ²)
-    col_rms = np.sqrt(np.mean(a**2, axis=0))
-    cols = [j for j in range(a.shape[1]) if col_rms[j] >= COLUMN_SHARE * float(col_rms.max())]
+    cols = carrying_columns(a)
     rho1 = [float(autocorrelations(a[:, j], 1)[0]) for j in cols]
     lag1 = float(np.mean(rho1))
     p_lb = min(ljung_box(a[:, j])[1] for j in cols)
@@ -275,16 +313,10 @@ def inflation(
 def misfit(checks: Mapping[str, KindCheck], chi2_p: float | None) -> bool:
     """Whether the residual has structure that noise does not explain: correlated but not correlated
     noise (whatever its size: a small systematic effect counts), far above the noise floor, or an
-    improbable χ² with σ given — the findings of :func:`findings` that name a misfit or a small
-    systematic effect. Noise-free data fitted to round-off never do."""
-    for c in checks.values():
-        if (c.spread > 0.0 and c.rms <= EXACT * c.spread) or c.explained < 0.5:
-            continue
-        ratio = c.rms / c.floor if c.floor > 0.0 else math.inf
-        if c.ar1_noise:  # correlated noise, not a misfit (as findings() says)
-            continue
-        if c.correlated or ratio > 2.0 * FLOOR_ALARM:  # structure that white noise does not have
-            return True
+    improbable χ² with σ given — the verdicts (:meth:`KindCheck.verdict`) whose findings name a misfit
+    or a small systematic effect. Noise-free data fitted to round-off never do."""
+    if any(c.verdict() in MISFIT_VERDICTS for c in checks.values()):
+        return True
     return chi2_p is not None and chi2_p < P_ALARM
 
 
@@ -298,18 +330,19 @@ def findings(
 
     out: list[str] = []
     for kind, c in checks.items():
-        if c.spread > 0.0 and c.rms <= EXACT * c.spread:
+        verdict = c.verdict(robust)
+        if verdict == "exact":
             continue  # noise-free data fitted to round-off: nothing to test
         size = c.robust_rms if robust else c.rms
-        ratio = size / c.floor if c.floor > 0.0 else math.inf
-        if c.explained < 0.5:
+        ratio = c.size_ratio(robust)
+        if verdict == "unexplained":
             out.append(
                 f"{kind}: the fitted motion explains only {100 * max(c.explained, 0.0):.0f} % of the data's "
                 f"variance (residual rms {c.rms:.3g} against a spread of {c.spread:.3g}): the data may not "
                 "show a pendulum's swing above their noise, or the model or the starting values are far off"
             )
             continue
-        if c.ar1_noise:
+        if verdict == "ar1_noise":
             tau = -c.dt / math.log(c.lag1) if 0.0 < c.lag1 < 1.0 and c.dt > 0.0 else math.inf
             out.append(
                 f"{kind}: the residual is correlated noise (lag-1 autocorrelation {c.lag1:.3f}, correlation "
@@ -318,7 +351,7 @@ def findings(
                 "as video tracking or a filter makes, not a misfit: the error bars are widened for it "
                 "(res.inflation), and the noise floor read off the data underestimates it"
             )
-        elif c.correlated and ratio > FLOOR_ALARM:
+        elif verdict == "systematic":
             drift = " with a slow drift over the record" if c.trend > 0.2 else ""
             out.append(
                 f"{kind}: the fit misses the data systematically{drift}: the residual (rms {size:.3g}, "
@@ -329,7 +362,7 @@ def findings(
                 "The error bars are widened for the correlation, but values may be biased by what is "
                 "missing; see res.plot()"
             )
-        elif c.correlated:
+        elif verdict == "correlated":
             out.append(
                 f"{kind}: the residual is correlated (lag-1 autocorrelation {c.lag1:.3f}, runs test "
                 f"z = {c.runs_z:.1f}) though no larger than the data's noise floor ({c.floor:.3g}): "
@@ -337,7 +370,7 @@ def findings(
                 "lacks (a sensor bias: fit force_bias, rate_bias or angle_offset; a damping law); the "
                 "error bars are widened for the correlation"
             )
-        elif ratio > 2.0 * FLOOR_ALARM:
+        elif verdict == "above_floor":
             out.append(
                 f"{kind}: the residual rms {size:.3g} is {ratio:.3g}x the noise floor {c.floor:.3g} "
                 "read off the data: a misfit, or noise that is not white"
