@@ -106,7 +106,7 @@ export class Analyses {
       (q) => {
         if (this.veffKey === key) this.veff = q;
       },
-      unlessStale((e) => this.explain(`V_eff: ${message(e)}`)),
+      unlessStale((e) => this.explain(t('msg.veffFailed', { why: message(e) }))),
     );
   }
 
@@ -122,7 +122,7 @@ export class Analyses {
       (q) => {
         if (this.emKey === key) this.em = q;
       },
-      unlessStale((e) => this.explain(`energy–momentum map: ${message(e)}`)),
+      unlessStale((e) => this.explain(t('msg.emFailed', { why: message(e) }))),
     );
   }
 

@@ -13,7 +13,7 @@
 import type { Command, ModelParams, Status, Vec3 } from './protocol';
 import type { ExtraOptions, TwinOptions } from './twin';
 import { MAX_EXTRAS } from './twin';
-import { t } from './i18n';
+import { t, t as tr } from './i18n'; // tr: where a local t (a URL value's text) hides t
 
 /** A view option's value (scene.ts ViewOptions): a toggle, a number or a word (the stereo mode). */
 export type ViewValue = boolean | number | string;
@@ -110,12 +110,12 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   const value: UrlScenario = {};
   const problems: string[] = [];
   const known = new Set(['s', 'model', 'mp', 'l', 'm', 'g', 'method', 'dt', 'ts', 'x', 'v', 'paused', 'lang', 'at', 'view', 'plot', 'twin']);
-  for (const key of q.keys()) if (!known.has(key)) problems.push(`unknown URL key ${key}`);
+  for (const key of q.keys()) if (!known.has(key)) problems.push(tr('url.unknownKey', { key }));
   const name = (key: string): string | undefined => {
     const t = q.get(key);
     if (t === null) return undefined;
     if (!NAME.test(t)) {
-      problems.push(`${key} = ${JSON.stringify(t)} is not a name`);
+      problems.push(tr('url.notName', { key, value: JSON.stringify(t) }));
       return undefined;
     }
     return t;
@@ -124,7 +124,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
     const t = q.get(key);
     if (t === null) return undefined;
     const n = parseNumber(t);
-    if (n === null) problems.push(`${key} = ${JSON.stringify(t)} is not a finite number`);
+    if (n === null) problems.push(tr('url.notNumber', { key, value: JSON.stringify(t) }));
     return n ?? undefined;
   };
   const vec = (key: string): Vec3 | undefined => {
@@ -132,7 +132,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
     if (t === null) return undefined;
     const parts = t.split(',').map(parseNumber);
     if (parts.length !== 3 || parts.some((p) => p === null)) {
-      problems.push(`${key} = ${JSON.stringify(t)} is not three finite numbers`);
+      problems.push(tr('url.notThree', { key, value: JSON.stringify(t) }));
       return undefined;
     }
     return parts as Vec3;
@@ -148,7 +148,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
       const [k, v, ...rest] = pair.split(':');
       const n = v === undefined ? null : parseNumber(v);
       if (k === undefined || !/^[A-Za-z_][A-Za-z0-9_]{0,40}$/.test(k) || n === null || rest.length > 0) {
-        problems.push(`mp: ${JSON.stringify(pair)} is not name:number`);
+        problems.push(tr('url.notPair', { value: JSON.stringify(pair) }));
         continue;
       }
       params[k] = n;
@@ -170,7 +170,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   const x = vec('x');
   const v = vec('v');
   if ((x === undefined) !== (v === undefined) && problems.length === 0) {
-    problems.push('the start needs both x and v');
+    problems.push(tr('url.startXv'));
   } else if (x !== undefined && v !== undefined) {
     value.x = x;
     value.v = v;
@@ -182,7 +182,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   const at = number('at');
   if (at !== undefined) {
     if (at >= 0 && at <= 1e6) value.at = at;
-    else problems.push(`at = ${at} is not a time 0 … 1e6 s`);
+    else problems.push(tr('url.notTime', { value: at }));
   }
   const view = q.get('view');
   if (view !== null) {
@@ -190,7 +190,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
     for (const item of view.split(',').filter(Boolean)) {
       const m = /^(-?)([A-Za-z]{1,30})(?::([A-Za-z0-9 .+-]{1,30}))?$/.exec(item);
       if (m === null) {
-        problems.push(`view: ${JSON.stringify(item)} is not a view option`);
+        problems.push(tr('url.notView', { value: JSON.stringify(item) }));
         continue;
       }
       const [, neg, key, val] = m as unknown as [string, string, string, string | undefined];
@@ -203,12 +203,12 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   if (plot !== null) {
     const p = plot.split(',');
     if (p.length === 2 && p.every((n) => /^[a-z0-9_]{1,20}$/i.test(n))) value.plot = [p[0] as string, p[1] as string];
-    else problems.push(`plot = ${JSON.stringify(plot)} is not two variable names`);
+    else problems.push(tr('url.notPlot', { value: JSON.stringify(plot) }));
   }
   const twin = q.get('twin');
   if (twin !== null) {
     const o = decodeTwin(twin);
-    if (o === null) problems.push(`twin = ${JSON.stringify(twin)} is not own:l:m:θ₀, eps:ε, method:name or damped:c`);
+    if (o === null) problems.push(tr('url.notTwin', { value: JSON.stringify(twin) }));
     else value.twin = o;
   }
   return { value, problems };

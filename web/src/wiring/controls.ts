@@ -23,7 +23,7 @@ function downloadTOML(lab: LabCore): void {
       if (!r.ok) throw new Error(httpProblem(await r.json().catch(() => ({})), `HTTP ${r.status}`));
       downloadBlob(`pendulab-${s.scenario ?? 'lab'}.toml`, await r.blob());
     })
-    .catch((e: unknown) => lab.explain(`scenario download: ${e instanceof Error ? e.message : String(e)}`));
+    .catch((e: unknown) => lab.explain(t('msg.downloadFailed', { why: e instanceof Error ? e.message : String(e) })));
 }
 
 /** Writes the link into the address bar and copies it, saying what it carries. */

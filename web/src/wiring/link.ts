@@ -10,7 +10,7 @@ import type { ChosenPlot } from '../panels/chosen';
 import type { TwinPanel } from '../panels/twin';
 import { commandsFor, decodeUrl, encodeUrl, encodeView, fromStatus } from '../url';
 import type { UrlScenario } from '../url';
-import { language } from '../i18n';
+import { language, t } from '../i18n';
 import type { Explain } from './page';
 
 /** Copies a link's view options into `view`: only known ones, of the default's type (the stereo mode
@@ -46,7 +46,7 @@ export class SharedLink {
     const fromUrl = decodeUrl(window.location.search);
     this.value = fromUrl.value;
     fromUrl.problems.push(...applyLinkView(view, fromUrl.value.view ?? {}));
-    if (fromUrl.problems.length > 0) explain(`link: ${fromUrl.problems.join('; ')}`);
+    if (fromUrl.problems.length > 0) explain(t('msg.linkProblems', { what: fromUrl.problems.join('; ') }));
     this.startup = commandsFor(fromUrl.value);
     if (fromUrl.value.twin !== undefined) {
       this.replay = this.startup.filter((c) => c.type === 'step');

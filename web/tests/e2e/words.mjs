@@ -44,6 +44,14 @@ export async function checkWords(page, { check, WAIT }) {
       const said = await p.evaluate(() => document.getElementById('message').textContent);
       // the parameter named in German, no command code name (set_params) before it
       check(/^Länge l = -1: mindestens 0.001 erlaubt$/.test(said.trim()), `a refused value in German, from the server's message key: "${said}"`);
+      // a link with a value the page cannot read: said in German (the value itself as the link has it)
+      const odd = await page.context().newPage();
+      await odd.goto(`${page.url().split('?')[0]}?lang=de&at=gestern`, { timeout: WAIT });
+      const link = await odd
+        .waitForFunction(() => /aus dem Link weggelassen/.test(document.getElementById('message').textContent) && document.getElementById('message').textContent, null, { timeout: WAIT })
+        .then((h) => h.jsonValue(), () => odd.evaluate(() => document.getElementById('message').textContent));
+      check(/^aus dem Link weggelassen: at = "gestern" ist keine endliche Zahl$/.test(link.trim()), `a link's unreadable value is reported in German: "${link}"`);
+      await odd.close();
     }
     await p.close();
   }
