@@ -88,3 +88,27 @@ def check_memory(what: str, need: float, hint: str) -> None:
         f"{what} needs about {need / 2**30:.3g} GiB of memory, more than this process can get "
         f"({have / 2**30:.3g} GiB available; at most {USABLE_FRACTION:.0%} of it is used); {hint}"
     )
+
+
+SAMPLE_BYTES = 7 * 8
+"""Bytes of one saved sample of a run (t, x, v as float64; the core's ``BYTES_PER_SAMPLE``)."""
+SAMPLE_COPIES = 3
+"""Copies of a run's samples alive at the peak: the chunks taken from the core, their concatenation,
+and the core's own buffer growing by doubling."""
+DEFAULT_SAVED_BYTES = 4 * 2**30
+"""The core's default cap on the memory of saved samples [bytes] (``max_saved_bytes``)."""
+
+
+def saved_bytes_cap(given: int | None) -> int | None:
+    """The cap on a run's saved samples [bytes] to hand to the core: ``given`` (``max_saved_bytes``)
+    when the caller set one, else the smaller of the core's default (4 GiB) and what this process can
+    still get (:data:`USABLE_FRACTION` of :func:`available_bytes`, over :data:`SAMPLE_COPIES`), so
+    that a run keeping more samples than fit (an adaptive run with ``save_every=1`` over a long time,
+    10⁷ ``save_at`` times under a memory limit) is refused by the core with its error naming the
+    limit instead of aborting the process when an allocation fails. None: the core's default."""
+    if given is not None:
+        return given
+    have = available_bytes()
+    if have is None:
+        return None
+    return max(SAMPLE_BYTES, min(DEFAULT_SAVED_BYTES, int(USABLE_FRACTION * have / SAMPLE_COPIES)))

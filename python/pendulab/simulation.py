@@ -22,6 +22,7 @@ from ._core import methods as _methods
 from .accuracy import estimate, run_to_accuracy, true_error
 from .display import Row, html_table
 from .display import number as shown
+from .memory import SAMPLE_BYTES, SAMPLE_COPIES, check_memory, saved_bytes_cap
 from .model import Pendulum, State, check_pendulum_state
 from .trajectory import Trajectory
 from .validate import (
@@ -169,7 +170,8 @@ def simulate(
         land on each time exactly).
     t0 : the start time [s] of ``state`` (default 0.0).
     progress : show a progress bar (default: only for runs of more than 5·10⁶ steps).
-    max_saved_bytes : memory limit for saved samples (default 4 GiB); exceeding it is an error
+    max_saved_bytes : memory limit for saved samples [bytes] (default 4 GiB, or less: a third of 80 % of
+        the memory this process can still get); exceeding it is an error
         raised before the run starts (fixed-step methods) or when reached (``dop853``).
     error_estimate : also estimate the global error at every sample, ``tr.error_estimate`` (position
         [m], velocity [m/s]): Richardson against a run at 2·dt (fixed-step methods; at dt/2 when the
@@ -384,6 +386,12 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
         raise InvalidInputError("give either save_every or save_at, not both")
     _check_conserve(pendulum, run.conserve)
     times = None if save_at is None else np.ascontiguousarray(np.asarray(save_at, dtype=np.float64).ravel())
+    if times is not None:  # the core copies the times, then keeps a sample at each (issue 30)
+        check_memory(
+            f"a run saving {times.size} times",
+            times.size * (8.0 + SAMPLE_BYTES * SAMPLE_COPIES),
+            "ask for fewer save_at times (or run in pieces)",
+        )
     options = RunOptions(
         t0=float(t0),
         t_end=float(t_end),
@@ -395,7 +403,7 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
         conserve=bool(run.conserve),
         save_every=None if save_every is None else int(save_every),
         save_times=times,
-        max_saved_bytes=run.max_saved_bytes,
+        max_saved_bytes=saved_bytes_cap(run.max_saved_bytes),  # within the memory left (issue 30)
     )
     solver: Solver | ForceSolver
     if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)

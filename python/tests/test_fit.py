@@ -168,8 +168,9 @@ def test_bad_data_get_clear_errors(swing: tuple) -> None:
     _, _s, t, x = swing
     with pytest.raises(pl.InvalidInputError, match=r"positions has 5 rows but t has 600"):
         pl.fit(t, positions=x[:5])
-    with pytest.raises(pl.InvalidInputError, match="appears twice"):
+    with pytest.raises(pl.InvalidInputError, match="appears twice") as twice:
         pl.fit(np.r_[t[:10], t[9:]], positions=np.r_[x[:10], x[9:]])
+    assert f"t = {float(t[9])!r} s appears twice (1 repeated" in str(twice.value)  # not np.float64(...)
     with pytest.raises(pl.InvalidInputError, match="at least 8"):
         pl.fit(t[:5], positions=x[:5])
     with pytest.raises(pl.InvalidInputError, match="cannot fit 'colour'"):

@@ -468,6 +468,41 @@ def test_a_call_beyond_the_memory_left_is_refused_not_aborted(call: str) -> None
     assert out.stdout.startswith("refused:") and "GiB" in out.stdout and "chunks" in out.stdout, out.stdout
 
 
+SAVING = """
+import resource, sys, numpy as np, pendulab as pl
+from pathlib import Path
+vm = next(int(l.split()[1]) * 1024 for l in Path("/proc/self/status").read_text().splitlines()
+          if l.startswith("VmSize:"))
+resource.setrlimit(resource.RLIMIT_AS, (vm + 2**28, resource.RLIM_INFINITY))  # 256 MiB more
+p = pl.Pendulum()
+s = p.state_from_angles(1.0, 0.0, 0.0, 1.0)
+try:
+    if sys.argv[1] == "save_at":
+        pl.simulate(p, s, 1.0, save_at=np.linspace(0.0, 1.0, 10**7))
+    else:
+        pl.simulate(p, s, 1e6, method="dop853", save_every=1)
+    print("computed")
+except pl.InvalidInputError as e:
+    print("refused:", e)
+"""
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc: Linux")
+@pytest.mark.parametrize("call", ["save_at", "adaptive"])
+def test_a_run_saving_more_than_the_memory_left_is_refused_not_aborted(call: str) -> None:
+    """The audit of issue 30: ``simulate`` with 10⁷ ``save_at`` times, or ``dop853`` saving every
+    step over 10⁶ s, aborted the process under a memory limit (the core's allocation failed: the
+    default cap on saved samples is 4 GiB whatever the machine has); now the save times are checked
+    first and the cap is what the process can still get."""
+    out = subprocess.run(
+        [sys.executable, "-c", SAVING, call], capture_output=True, text=True, timeout=120, check=False
+    )
+    assert out.returncode == 0, out.stderr[-500:]
+    assert out.stdout.startswith("refused:"), out.stdout
+    words = "GiB of memory" if call == "save_at" else "above the limit of"
+    assert words in out.stdout, out.stdout
+
+
 def test_small_calls_are_not_refused() -> None:
     p = pl.Pendulum()
     x, v = pl.exact(p, p.state_from_angles(1.0, 0.0, 0.0, 1.0)).state(np.linspace(0, 1, 1000))

@@ -195,7 +195,7 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
     same = np.flatnonzero(np.diff(times) == 0.0)
     if same.size:
         raise KeyedInputError(
-            f"the time t = {times[same[0]]!r} s appears twice (rows {same.size} times repeated): "
+            f"the time t = {float(times[same[0]])!r} s appears twice ({same.size} repeated time(s) in all): "
             "every sample needs its own time",
             "data_time_twice",
             t=repr(float(times[same[0]])),
