@@ -497,3 +497,12 @@ def check_pendulum_state(pendulum: Any, state: Any) -> None:
         raise invalid("pendulum", pendulum, "a pendulab.Pendulum")
     if not isinstance(state, State):
         raise invalid("state", state, "a pendulab.State (from Pendulum.state or Pendulum.state_from_angles)")
+    for name, value, unit in (("state.x", state.x, "m"), ("state.v", state.v, "m/s")):
+        # a State built by hand may hold complex numbers or strings: refused by name, not cast or
+        # handed to the core (a TypeError about 'PyArray<T, D>' before)
+        try:
+            a = np.asarray(value)
+        except (TypeError, ValueError):  # ragged
+            a = np.asarray(None)
+        if a.dtype.kind not in "fiu" or a.shape != (3,):
+            raise invalid(name, value, f"3 real numbers [{unit}] (a float64 array of shape (3,))")

@@ -390,3 +390,20 @@ def test_diagnostics(p: pl.Pendulum, x: Any, v: Any, t: Any) -> None:
 def test_counts_reach_the_target() -> None:
     """Runs last (file order): every entry point got its examples."""
     assert set(COUNTS) >= {"Pendulum", "simulate", "exact", "Stepper"}
+
+
+def test_complex_or_text_states_are_refused_by_name_not_cast() -> None:
+    """The audit of issue 30: a State built by hand from complex numbers reached the core (a TypeError
+    about 'PyArray<T, D>' from simulate and exact), and simulate_ensemble cast complex starts to real
+    with only NumPy's ComplexWarning (text starts were parsed as numbers)."""
+    p = pl.Pendulum()
+    bad = pl.State(np.array([0.5, 0.0, -(0.75**0.5) + 1j]), np.array([0.0, 0.3, 0.0]))
+    for call in (lambda: pl.simulate(p, bad, 0.1), lambda: pl.exact(p, bad)):
+        with pytest.raises(pl.InvalidInputError, match=r"state\.x = .*3 real numbers \[m\]"):
+            call()
+    rows = np.tile([0.5, 0.0, -(0.75**0.5), 0.0, 0.3, 0.0], (4, 1))
+    for starts in (rows + 0j, rows + 1j, rows.astype(str)):
+        with pytest.raises(pl.InvalidInputError, match=r"(?s)invalid states = .*\(N, 6\) array"):
+            pl.simulate_ensemble(p, starts, 0.1, progress=False)
+    ok = pl.State([0.5, 0.0, -(0.75**0.5)], [0.0, 0.3, 0.0])  # lists of real numbers stay fine
+    assert pl.simulate(p, ok, 0.01).x.shape[1] == 3

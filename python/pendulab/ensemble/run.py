@@ -45,6 +45,8 @@ def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:
         arr = np.array([s.as_array() for s in states])
     else:
         try:
+            if np.asarray(states).dtype.kind in "cUSV":  # complex or text: refused, not cast
+                raise TypeError
             arr = np.asarray(states, dtype=np.float64)
         except (TypeError, ValueError, OverflowError, RecursionError):
             raise limits.invalid(

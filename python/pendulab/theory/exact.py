@@ -34,7 +34,7 @@ from .._core import ExactSolution as _ExactSolution
 from .._core import InvalidInputError
 from ..display import Row, html_table, number
 from ..memory import check_memory
-from ..model import FloatArray, Pendulum, State, _frozen
+from ..model import FloatArray, Pendulum, State, _frozen, check_pendulum_state
 from ..overview import plot_overview
 from ..trajectory import Trajectory
 from ..validate import array, show
@@ -117,6 +117,7 @@ class ExactSolution:
                 f"state must be a pendulab.State (from Pendulum.state or state_from_angles), "
                 f"got {type(state).__name__}"
             )
+        check_pendulum_state(pendulum, state)  # a hand-made State of complex numbers: named, not cast
         if not pendulum.is_ideal:
             raise InvalidInputError(
                 f"the exact solution exists only for the ideal pendulum, not the {pendulum.model!r} model "
