@@ -12,6 +12,10 @@ export class EnergyBars {
   readonly canvas: HTMLCanvasElement;
   private readonly ctx: CanvasRenderingContext2D | null;
   private scale = 1;
+  /** The container's width [CSS px], kept by a ResizeObserver (null until first read): `draw` runs in the
+   *  panels' 10 Hz tick right after other panels wrote to the page, where reading clientWidth forced a
+   *  layout every tick (docs/performance.md, "The one-file lab in the browser"). */
+  private width: number | null = null;
   /** The numbers drawn last (for tests: window.pendulab.energy()). */
   shown: EnergySplit | null = null;
 
@@ -24,6 +28,7 @@ export class EnergyBars {
     this.canvas.setAttribute('aria-label', t('energy.title'));
     container.appendChild(this.canvas);
     this.ctx = this.canvas.getContext('2d');
+    new ResizeObserver(() => (this.width = container.clientWidth)).observe(container);
   }
 
   /** A new trajectory: the bars' scale starts again from its total. */
@@ -36,7 +41,8 @@ export class EnergyBars {
     const ctx = this.ctx;
     if (ctx === null) return;
     const ratio = Math.min(window.devicePixelRatio || 1, 2);
-    const w = Math.max(200, (this.canvas.parentElement?.clientWidth ?? 300) - 4);
+    this.width ??= this.canvas.parentElement?.clientWidth ?? 300;
+    const w = Math.max(200, this.width - 4);
     const h = 130;
     if (this.canvas.width !== Math.round(w * ratio)) {
       this.canvas.width = Math.round(w * ratio);

@@ -1,5 +1,5 @@
 // The first pendulum's body in the scene: the pivot (where the model moves it), the faint sphere of reach
-// (its equator, and its lines in the anaglyph: framing.ts), the rod, the bob, the axes, the link the model
+// (its equator, and its lines in the anaglyph and with a software renderer: framing.ts, quality.ts), the rod, the bob, the axes, the link the model
 // draws instead of a rod (the spring's coil, the slack string: tether.ts), the slewing crane's boom from the
 // slewing axis to the pivot, and the velocity arrow's grab handle (velocity.ts, drag.ts). Coordinates are the
 // physics' own (z up, metres); sizes are in units of the rod length l [m]. Only drawing.
@@ -33,6 +33,8 @@ export class PendulumBody {
   private readonly equator: THREE.LineLoop;
   /** The sphere of reach as lines, drawn instead of its fill in the anaglyph (framing.ts). */
   private readonly reachLines = reachLines(0x8fb3ff, 0.18);
+  /** Whether the sphere of reach is drawn filled (false: as lines always; a software renderer, quality.ts). */
+  private readonly fill: boolean;
   private readonly rod: THREE.Mesh;
   readonly bob: THREE.Mesh;
   private readonly pivot: THREE.Mesh;
@@ -53,13 +55,14 @@ export class PendulumBody {
 
   /** `quality` (quality.ts): the sphere of reach's layers for the browser's renderer. */
   constructor(quality: RenderQuality) {
+    this.fill = quality.reachLayers > 0;
     this.sphere = new THREE.Mesh(
       new THREE.SphereGeometry(1, 48, 32),
       new THREE.MeshBasicMaterial({
         color: 0x8fb3ff,
         transparent: true,
         // one face with the opacity of both, or each face with its own
-        opacity: quality.reachLayers === 1 ? layeredOpacity(REACH_OPACITY, 2) : REACH_OPACITY,
+        opacity: quality.reachLayers === 2 ? REACH_OPACITY : layeredOpacity(REACH_OPACITY, 2),
         depthWrite: false,
         side: quality.reachLayers === 2 ? THREE.DoubleSide : THREE.FrontSide,
       }),
@@ -130,8 +133,9 @@ export class PendulumBody {
   }
 
   /** Shows or hides the parts for state `f` (null: no state yet) and the view; `lines`: the sphere of
-   *  reach as lines (the anaglyph). */
-  show(f: Frame | null, view: BodyView, lines: boolean, gdir: Vec3): void {
+   *  reach as lines (the anaglyph; always with a software renderer). */
+  show(f: Frame | null, view: BodyView, anaglyph: boolean, gdir: Vec3): void {
+    const lines = anaglyph || !this.fill;
     this.sphere.visible = view.sphere && !lines;
     this.reachLines.visible = view.sphere && lines;
     this.equator.visible = view.sphere;

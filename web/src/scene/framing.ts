@@ -1,6 +1,6 @@
 // Framing the scene for the canvas it has (docs/web.md, "Layout"): the camera distance at which a sphere
-// fills the narrower side of the view, the sphere of reach as lines (the anaglyph's cheap stand-in for its
-// translucent fill), and where a sphere's outline lands on the page (for the layout's tests). Pure where it
+// fills the narrower side of the view, the sphere of reach as lines (the anaglyph's and a software
+// renderer's cheap stand-in for its translucent fill), and where a sphere's outline lands on the page (for the layout's tests). Pure where it
 // can be: framingDistance is unit-tested.
 import * as THREE from 'three';
 
@@ -14,9 +14,9 @@ export function framingDistance(r: number, fovDeg: number, aspect: number, fill 
 }
 
 /** The unit sphere as lines: 6 meridians and the parallels at z = ±0.25, ±0.5, ±0.75 (the equator is drawn
- *  on its own). Drawn instead of the translucent fill in the anaglyph, which renders the scene twice: the
- *  fill's blending over a fifth of the canvas is what a software renderer pays most for (30 fps with it,
- *  60 without; docs/performance.md). */
+ *  on its own). Drawn instead of the translucent fill in the anaglyph, which renders the scene twice, and
+ *  always with a software renderer (quality.ts): the fill's blending over a fifth of the canvas is what a
+ *  software renderer pays most for (30 fps with it, 60 without; docs/performance.md). */
 export function reachLines(color: number, opacity: number): THREE.LineSegments {
   const grid: THREE.Vector3[] = [];
   const N = 96;

@@ -4,9 +4,12 @@
 // scales with the samples shaded: 4× multisampling (MSAA) made the 3-D view cost ~40 ms of CPU per frame
 // instead of ~16 ms on the reference machine, and of those ~16 ms the faint sphere of reach, drawn as two
 // translucent layers (its back and front faces) over a fifth of the canvas, took ~4 more than one layer
-// does. There the scene is drawn without MSAA at one pixel per CSS pixel and the sphere as one layer of
-// the same total opacity; with a GPU it keeps MSAA, up to two pixels per CSS pixel and both layers. The
-// decisions are pure functions (unit-tested); `probeRenderer` asks the browser.
+// does. Even one layer was most of what was left: SwiftShader's raster threads spent ~15 of ~19 ms per
+// frame on it (bench/lab_frames.mjs, docs/performance.md, "The one-file lab in the browser"). There the
+// scene is drawn without MSAA at one pixel per CSS pixel and the sphere of reach as lines (meridians and
+// parallels, as in the anaglyph: framing.ts) instead of its fill; with a GPU it keeps MSAA, up to two
+// pixels per CSS pixel and both layers. The decisions are pure functions (unit-tested); `probeRenderer`
+// asks the browser.
 
 /** Names of software rasterisers as WebGL reports them (WEBGL_debug_renderer_info, or RENDERER). */
 const SOFTWARE = /swiftshader|llvmpipe|softpipe|software|basic render driver|lavapipe/i;
@@ -23,9 +26,10 @@ export interface RenderQuality {
   antialias: boolean;
   /** Canvas pixels per CSS pixel. */
   pixelRatio: number;
-  /** Translucent layers of the sphere of reach: 2 (back and front faces) or 1 (the front face, with the
-   *  opacity of both: `layeredOpacity`; the same colour wherever nothing lies inside the sphere). */
-  reachLayers: 1 | 2;
+  /** Translucent layers of the sphere of reach: 2 (back and front faces), 1 (the front face, with the
+   *  opacity of both: `layeredOpacity`; the same colour wherever nothing lies inside the sphere) or 0 (no
+   *  fill: the sphere drawn as lines, framing.ts `reachLines`). */
+  reachLayers: 0 | 1 | 2;
 }
 
 /** The opacity of `layers` layers of opacity `alpha` of one colour, one over the other (blending one colour
@@ -43,7 +47,7 @@ export function renderQuality(renderer: string | null, devicePixelRatio: number)
     software,
     antialias: !software,
     pixelRatio: Math.min(dpr, software ? 1 : 2),
-    reachLayers: software ? 1 : 2,
+    reachLayers: software ? 0 : 2,
   };
 }
 

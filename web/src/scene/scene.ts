@@ -75,7 +75,7 @@ export class PendulumScene {
   crane: { afterUpdate(f: Frame | null): void; hidesBody(): boolean } | null = null;
 
   /** `quality` (quality.ts): MSAA, pixel ratio and the sphere of reach's layers for the browser's renderer
-   *  (in software: no MSAA, 1, one layer). */
+   *  (in software: no MSAA, 1, lines). */
   constructor(
     private readonly container: HTMLElement,
     quality: RenderQuality,

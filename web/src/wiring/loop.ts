@@ -66,7 +66,10 @@ function drawScene(lab: LabCore, gate: ChangeGate, costs: FrameCosts): boolean {
   return drew;
 }
 
-/** The 10 Hz part: plots, tools, energy bars, description, portraits, reduced view, data panel, URL. */
+/** The 10 Hz part: plots, portraits, reduced view, energy bars, then the text (tools, description, data
+ *  panel) and the URL. What reads the layout (the panels' widths) runs before what writes text into the
+ *  page: a read after a write forces a layout in the middle of the frame, which it did every tick
+ *  (docs/performance.md, "The one-file lab in the browser"). */
 function drawPanels(lab: LabCore, panels: DrawnPanels, link: SharedLink, costs: FrameCosts, now: number): void {
   const { store, session } = lab;
   const f = store.displayed();
@@ -77,12 +80,6 @@ function drawPanels(lab: LabCore, panels: DrawnPanels, link: SharedLink, costs: 
   panels.plots.update(store.history, store.events, driftScales(ref?.energy ?? 0, ref?.j3 ?? 0, mass, g, length));
   panels.chosen.update(store.history.frames, { mass, g, length }, twin?.on ? twin.store.history.frames : null);
   twin?.update(byId('plots').clientWidth - 8);
-  panels.tools.update(f?.x ?? null, f?.t ?? null, f ? Math.hypot(...f.v) : 0);
-  link.write();
-  const latest = store.latest();
-  const split = latest ? energySplit(latest, mass, g, length, store.work) : null;
-  panels.energy.draw(split, store.status?.model !== 'ideal');
-  panels.tools.describe(describeMotion(f, split), now);
   let t1 = performance.now();
   costs.add('plots setData', t1 - t0);
   panels.portraits.update(store.history, f, panels.analyses.veff, mass, g, length);
@@ -92,6 +89,16 @@ function drawPanels(lab: LabCore, panels: DrawnPanels, link: SharedLink, costs: 
   panels.reduced.update(f, length);
   t1 = performance.now();
   costs.add('reduced view', t1 - t0);
+  const latest = store.latest();
+  const split = latest ? energySplit(latest, mass, g, length, store.work) : null;
+  panels.energy.draw(split, store.status?.model !== 'ideal');
+  t0 = performance.now();
+  costs.add('energy bars', t0 - t1);
+  panels.tools.update(f?.x ?? null, f?.t ?? null, f ? Math.hypot(...f.v) : 0);
+  panels.tools.describe(describeMotion(f, split), now);
+  link.write();
+  t1 = performance.now();
+  costs.add('tools and link', t1 - t0);
   panels.data.update(f, store);
   costs.add('data panel', performance.now() - t1);
 }

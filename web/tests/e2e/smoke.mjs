@@ -253,7 +253,7 @@ try {
     const engine = await page.evaluate(() => window.pendulab.engine());
     check(engine === (transport === 'file' ? 'wasm' : 'server'), `window.pendulab.engine() is "${engine}" in the ${transport} transport`);
   }
-  const ctx = { check, skip, transport, WAIT, simulated, errors, MIN_FPS, shot };
+  const ctx = { check, skip, transport, WAIT, simulated, errors, MIN_FPS, shot, userDataDir };
   for (const [name, part] of [
     ['first frame', checkFirstFrame],
     ['layout', checkLayout],

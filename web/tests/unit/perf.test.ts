@@ -22,13 +22,13 @@ describe('render quality', () => {
     expect(isSoftwareRenderer(null)).toBe(false);
   });
 
-  it('drops MSAA, draws one pixel per CSS pixel and one layer of the sphere in software', () => {
+  it('drops MSAA, draws one pixel per CSS pixel and the sphere as lines (no fill) in software', () => {
     expect(renderQuality(swiftshader, 2)).toEqual({
       renderer: swiftshader,
       software: true,
       antialias: false,
       pixelRatio: 1,
-      reachLayers: 1,
+      reachLayers: 0,
     });
     expect(renderQuality(swiftshader, 0.75).pixelRatio).toBe(0.75);
   });
