@@ -602,7 +602,8 @@ export async function checkRecordingAndStereo(page, { check, WAIT, MIN_FPS, user
   // 0.9–1.5× measured at load 15–20). With software WebGL the plain view draws the sphere of reach as lines
   // as the anaglyph does (quality.ts), so the anaglyph's two renders no longer match its rate; three.js's
   // AnaglyphEffect, which this guards against, adds two offscreen targets and a full-screen mixing pass
-  // (SwiftShader: ~15 ms per full-canvas pass, over 2× the plain view). Without /proc: the rate, ≥ 0.9×.
+  // (SwiftShader: ~15 ms per full-canvas translucent pass: with the two renders over 2× the plain view).
+  // Without /proc: the rate, ≥ 0.9×.
   const window3s = async () => {
     const [c0, d0] = [browserCpu(userDataDir), await page.evaluate(() => window.pendulab.drawn())];
     const fps = await frameRate(page);
