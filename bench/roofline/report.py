@@ -132,6 +132,14 @@ def tables(res: dict[str, Any], pts: list[dict[str, Any]], note: str) -> list[st
         f"| {e2['per_cpu_s'] * ens['flop'] / 1e9:.1f} | {e2['per_cpu_s'] * ens['flop'] / peak1:.0%} "
         f"| {sci(e2['per_wall_s'])} |"
     )
+    for key, label in (("ensemble_1_thread_fused", "1 thread"), ("ensemble_2_threads_fused", "2 threads")):
+        if key in kr:  # the opt-in fused arithmetic (arithmetic="fused")
+            e = kr[key]
+            lines.append(
+                f"| RATTLE ensemble, fused arithmetic, {label} | {ens['flop']:.0f} / trajectory-step | "
+                f"| {sci(e['per_cpu_s'])} | {e['per_cpu_s'] * ens['flop'] / 1e9:.1f} "
+                f"| {e['per_cpu_s'] * ens['flop'] / peak1:.0%} | {sci(e['per_wall_s'])} |"
+            )
     ex = kr["exact_states"]
     lines.append(
         f"| exact solution, `states_at` | not counted | | {sci(ex['per_cpu_s'])} | | "
@@ -150,6 +158,11 @@ def tables(res: dict[str, Any], pts: list[dict[str, Any]], note: str) -> list[st
         lines.append(
             f"| API / C RK4 at {int(steps):,} steps | {r['ratio_wall']:.2f} | {r['ratio_cpu']:.2f} | ≥ 2 |"
         )
+        if "ratio_fused_wall" in r:
+            lines.append(
+                f'| API / C RK4 at {int(steps):,} steps, `arithmetic="fused"` | {r["ratio_fused_wall"]:.2f} '
+                f"| {r['ratio_fused_cpu']:.2f} | ≥ 2 |"
+            )
     return lines
 
 

@@ -8,7 +8,8 @@ Measures, in one run:
   solution's states (``crates/pendulab-core/examples/roofline_kernels.rs``, no Python in the way), and
   the C RK4 ensemble of the peers benchmark (``bench/peers/rk4.c``);
 - the issue's target: ``pl.simulate_ensemble`` against the C RK4 ensemble through Python, 4096 starts,
-  2 threads, 10³ and 10⁴ steps, interleaved.
+  2 threads, 10³ and 10⁴ steps, interleaved, with the default (unfused) and the opt-in fused arithmetic
+  (``arithmetic="fused"``).
 
 Flops and bytes per unit of work are counted by hand from the source (``counts.py`` says how). Every
 figure is the best of repeated short runs, in wall time and in CPU time (``CLOCK_PROCESS_CPUTIME_ID``):
@@ -136,7 +137,8 @@ def c_ensemble_fn(n: int, steps: int, threads: int) -> Any:
 
 
 def api_vs_c(quick: bool) -> dict[str, Any]:
-    """``pl.simulate_ensemble`` and the C RK4 ensemble, 4096 starts, 2 threads, interleaved."""
+    """``pl.simulate_ensemble`` (unfused and fused arithmetic) and the C RK4 ensemble, 4096 starts, 2
+    threads, interleaved."""
     import pendulab as pl
 
     n, out = 4096, {}
@@ -144,14 +146,19 @@ def api_vs_c(quick: bool) -> dict[str, Any]:
     for steps in (1000, 10_000):
         c_run, starts = c_ensemble_fn(n, steps, 2)
 
-        def api(s: int = steps, st: np.ndarray = starts) -> None:
-            pl.simulate_ensemble(p, st, s * 1e-3, dt=1e-3, summary=False, progress=False)
+        def api(s: int = steps, st: np.ndarray = starts, arithmetic: str = "unfused") -> None:
+            pl.simulate_ensemble(
+                p, st, s * 1e-3, dt=1e-3, summary=False, progress=False, arithmetic=arithmetic
+            )
 
-        api(), c_run()
+        def api_fused(s: int = steps, st: np.ndarray = starts) -> None:
+            api(s, st, "fused")
+
+        api(), api_fused(), c_run()
         reps = (3 if quick else 9) if steps == 1000 else (1 if quick else 3)
-        rows = {"api": [float("inf")] * 2, "c": [float("inf")] * 2}
+        rows = {"api": [float("inf")] * 2, "api_fused": [float("inf")] * 2, "c": [float("inf")] * 2}
         for _ in range(reps):
-            for name, f in (("api", api), ("c", c_run)):
+            for name, f in (("api", api), ("c", c_run), ("api_fused", api_fused)):
                 w, c = best(f, 1)
                 rows[name] = [min(rows[name][0], w), min(rows[name][1], c)]
         work = n * steps
@@ -162,10 +169,15 @@ def api_vs_c(quick: bool) -> dict[str, Any]:
             "c_rate_cpu": work / rows["c"][1],
             "ratio_wall": rows["c"][0] / rows["api"][0],
             "ratio_cpu": rows["c"][1] / rows["api"][1],
+            "api_fused_rate_wall": work / rows["api_fused"][0],
+            "api_fused_rate_cpu": work / rows["api_fused"][1],
+            "ratio_fused_wall": rows["c"][0] / rows["api_fused"][0],
+            "ratio_fused_cpu": rows["c"][1] / rows["api_fused"][1],
         }
+        r = out[str(steps)]
         print(
-            f"  {steps} steps: API / C RK4 = {out[str(steps)]['ratio_wall']:.2f} (wall), "
-            f"{out[str(steps)]['ratio_cpu']:.2f} (CPU)",
+            f"  {steps} steps: API / C RK4 = {r['ratio_wall']:.2f} (wall), {r['ratio_cpu']:.2f} (CPU); "
+            f"fused {r['ratio_fused_wall']:.2f} (wall), {r['ratio_fused_cpu']:.2f} (CPU)",
             flush=True,
         )
     return out
@@ -186,7 +198,15 @@ if __name__ == "__main__":
     ap.add_argument(
         "--replot", action="store_true", help="only redraw the plot and tables from results/roofline.json"
     )
+    ap.add_argument(
+        "--api-only", action="store_true", help="only the API / C RK4 ratios (printed, nothing written)"
+    )
     args = ap.parse_args()
+    if args.api_only:
+        print(f"load average {os.getloadavg()}", flush=True)
+        api_vs_c(args.quick)
+        print(f"load average {os.getloadavg()}", flush=True)
+        sys.exit(0)
     if args.replot:
         write_report(
             json.loads((RESULTS / "roofline.json").read_text()), counts.KERNELS, PLOT, DOCS, BEGIN, END

@@ -110,7 +110,8 @@ class ModelSpec:
 class RunOptions:
     """How to run (keywords only; the method's dt [s], rtol, atol and projection default to the
     core's ``SolveOptions``): t0, t_end [s], conserve, the save rule, the saved-bytes cap, the spring's
-    order (2 or 4), a cap on steps (the crane's runs)."""
+    order (2 or 4), a cap on steps (the crane's runs), and the RATTLE family's ``arithmetic``
+    (``"unfused"``, the default, or ``"fused"``; ``Solver``, ``Stepper`` and ``EnsembleRun``)."""
 
     def __init__(
         self,
@@ -128,7 +129,10 @@ class RunOptions:
         max_saved_bytes: int | None = None,
         order: int = 2,
         max_steps: int | None = None,
+        arithmetic: str = "unfused",
     ) -> None: ...
+    @property
+    def arithmetic(self) -> str: ...
     @property
     def t0(self) -> float: ...
     @property
@@ -206,7 +210,7 @@ class EnsembleSpec:
 
 class EnsembleRun:
     """``n_steps`` RATTLE steps of ``options.dt`` [s] from x [m], v [m/s] (N, 3), saving every
-    ``options``' ``save_every`` steps (None: the final state only)."""
+    ``options``' ``save_every`` steps (None: the final state only), with ``options.arithmetic``."""
 
     def __init__(
         self,

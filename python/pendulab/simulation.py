@@ -38,6 +38,11 @@ from .validate import (
     planned_steps,
 )
 
+_ARITHMETICS = ("unfused", "fused")
+"""The RATTLE family's arithmetic of a·b + c: two roundings (default) or one (``f64::mul_add``)."""
+_FUSED_METHODS = ("rattle", "rattle4", "rattle6", "rattle8")
+"""The methods that have ``arithmetic="fused"``."""
+
 if TYPE_CHECKING:
     from ._core import MethodInfo
 
@@ -148,6 +153,7 @@ def simulate(
     error_estimate: bool = False,
     accuracy: float | None = None,
     drift: str = "raise",
+    arithmetic: str = "unfused",
 ) -> Trajectory:
     """Integrates from ``state`` at time ``t0`` [s] to ``t_end`` [s].
 
@@ -187,6 +193,12 @@ def simulate(
         constraint error |(|x| − l)/l| passes :data:`DRIFT_TOLERANCE` (1e-2): ``"raise"`` (default) an
         :class:`pendulab.IntegrationError` saying what to do, ``"warn"`` a ``RuntimeWarning`` and the
         trajectory as computed.
+    arithmetic : the RATTLE family's multiply-adds a·b + c: ``"unfused"`` (default; two roundings,
+        the same bits on every CPU and in the page's WebAssembly engine) or ``"fused"``
+        (``f64::mul_add``, one rounding: the same bits on every CPU too, but other bits than
+        ``"unfused"``; faster on CPUs with FMA, 3–25× slower on CPUs without and in WebAssembly;
+        docs/performance.md). ``simulate_ensemble(..., arithmetic="fused")`` gives each trajectory
+        these numbers bit for bit.
 
     Every argument is checked against :mod:`pendulab.validate` before any work starts (docs/limits.md).
 
@@ -224,6 +236,7 @@ def simulate(
             "progress": progress,
             "max_saved_bytes": max_saved_bytes,
             "drift": drift,
+            "arithmetic": arithmetic,
         }
         return _with_error_estimate(pendulum, state, t_end, accuracy, plain)
     run = check_run(
@@ -241,6 +254,7 @@ def simulate(
         progress=progress,
         max_saved_bytes=max_saved_bytes,
         drift=drift,
+        arithmetic=arithmetic,
     )
     if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
         return _run_string(pendulum, state, run)
@@ -280,6 +294,7 @@ class RunSettings:
     progress: bool | None
     max_saved_bytes: int | None
     drift: str
+    arithmetic: str = "unfused"
 
 
 def check_run(
@@ -298,6 +313,7 @@ def check_run(
     progress: Any,
     max_saved_bytes: Any,
     drift: str,
+    arithmetic: Any = "unfused",
 ) -> RunSettings:
     """Every argument of :func:`simulate` checked against :mod:`pendulab.validate` before any work
     starts (docs/limits.md), as one :class:`RunSettings`."""
@@ -326,6 +342,11 @@ def check_run(
         raise InvalidInputError(
             "conserve=True would hold E and J₃ fixed, but the user force does work (dE/dt = F·v)"
         )
+    arithmetic = check_arithmetic(arithmetic, method)
+    if arithmetic == "fused" and pendulum.model == "string":
+        raise InvalidInputError(
+            "arithmetic='fused' is not available for the 'string' model (its stepper is unfused)"
+        )
     return RunSettings(
         method,
         dt,
@@ -340,7 +361,19 @@ def check_run(
         progress,
         max_saved_bytes,
         drift,
+        arithmetic,
     )
+
+
+def check_arithmetic(arithmetic: Any, method: str) -> str:
+    """``arithmetic`` checked: ``"unfused"`` (every method) or ``"fused"`` (the RATTLE family)."""
+    arithmetic = choice("arithmetic", arithmetic, _ARITHMETICS)
+    if arithmetic == "fused" and method not in _FUSED_METHODS:
+        raise InvalidInputError(
+            f"arithmetic='fused' applies to the RATTLE family ({', '.join(_FUSED_METHODS)}), "
+            f"not to method {method!r}"
+        )
+    return arithmetic
 
 
 def _run_string(pendulum: Pendulum, state: State, run: RunSettings) -> Trajectory:
@@ -404,6 +437,7 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
         save_every=None if save_every is None else int(save_every),
         save_times=times,
         max_saved_bytes=saved_bytes_cap(run.max_saved_bytes),  # within the memory left (issue 30)
+        arithmetic=run.arithmetic,
     )
     solver: Solver | ForceSolver
     if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)
@@ -417,6 +451,8 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
     x = np.concatenate([p[1] for p in parts])
     v = np.concatenate([p[2] for p in parts])
     meta = {"dt": dt, "t0": t0, "t_end": t_end}
+    if run.arithmetic != "unfused":
+        meta["arithmetic"] = run.arithmetic
     if info["adaptive"]:
         meta |= {"rtol": run.rtol, "atol": run.atol, "project": run.project}
     if save_every is not None:

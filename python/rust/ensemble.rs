@@ -53,7 +53,7 @@ impl EnsembleRun {
     /// Starts `n_steps` steps of the options' `dt` [s] of the `spec`'s models from x, v (N, 3) [m,
     /// m/s]; saves every `save_every` steps of the options (None: the final state only); `summary`:
     /// extremes of z, E/m and J₃/m per trajectory; `settle_angle` [rad]: track each trajectory's
-    /// settle time.
+    /// settle time; the options' `arithmetic` ("unfused" or "fused") as the single-trajectory RATTLE.
     #[new]
     #[pyo3(signature = (spec, x, v, options, n_steps, summary=true, settle_angle=None))]
     fn new(
@@ -71,10 +71,11 @@ impl EnsembleRun {
             (options.solve.dt, options.save_every.map_or(EnsembleSave::Final, EnsembleSave::Every));
         let total = n_steps.saturating_mul(starts.len() as u64);
         // Validate before starting the thread, so bad input raises here and not later.
-        let extras = Extras { damping: &damping, settle_angle };
+        let arithmetic = options.arithmetic;
+        let extras = Extras { damping: &damping, settle_angle, arithmetic };
         check(&starts, &length, &g, &extras, dt, n_steps, save).map_err(to_py)?;
         let run = Background::spawn(move |progress, cancel| {
-            let extras = Extras { damping: &damping, settle_angle };
+            let extras = Extras { damping: &damping, settle_angle, arithmetic };
             run_with(&starts, &length, &g, &extras, dt, n_steps, save, summary, progress, cancel)
         });
         Ok(Self { total, run })

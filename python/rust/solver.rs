@@ -28,6 +28,7 @@ pymethods_with_getters! {
             let mut inner = Solver::new(m, o.t0, s, o.t_end()?, &o.solve, o.save.clone(), o.max_saved_bytes)
                 .map_err(to_py)?;
             inner.stepper_mut().set_invariant_projection(o.conserve);
+            inner.stepper_mut().set_arithmetic(o.arithmetic).map_err(to_py)?;
             Ok(Self { inner })
         }
 
@@ -65,6 +66,7 @@ pymethods_with_getters! {
             let s = State::on_tangent_bundle(m.params(), x0, v0).map_err(to_py)?;
             let mut inner = Stepper::new(m, options.t0, s, &options.solve).map_err(to_py)?;
             inner.set_invariant_projection(options.conserve);
+            inner.set_arithmetic(options.arithmetic).map_err(to_py)?;
             Ok(Self { inner })
         }
 

@@ -7,6 +7,7 @@
 use crate::convert::{any_model, to_py, vec3, InvalidInputError, PivotArrays};
 use numpy::PyReadonlyArray1;
 use pendulab_core::elastic::SwingingSpring;
+use pendulab_core::integrate::rattle_kernel::Arithmetic;
 use pendulab_core::model::registry::AnyModel;
 use pendulab_core::model::StringPendulum;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
@@ -189,6 +190,8 @@ pub(crate) struct RunOptions {
     pub(crate) order: u32,
     /// Cap on the steps of a run that takes one (the crane's).
     pub(crate) max_steps: Option<u64>,
+    /// The RATTLE family's multiply-adds: unfused (default) or fused (`Solver`, `Stepper`).
+    pub(crate) arithmetic: Arithmetic,
 }
 
 impl RunOptions {
@@ -201,7 +204,7 @@ impl RunOptions {
 #[pymethods]
 impl RunOptions {
     #[new]
-    #[pyo3(signature = (*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=false, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None))]
+    #[pyo3(signature = (*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=false, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None, arithmetic="unfused"))]
     #[allow(clippy::too_many_arguments)] // keyword-only: the one place the run's options are listed
     fn new(
         t0: f64,
@@ -217,6 +220,7 @@ impl RunOptions {
         max_saved_bytes: Option<u64>,
         order: u32,
         max_steps: Option<u64>,
+        arithmetic: &str,
     ) -> PyResult<Self> {
         let d = SolveOptions::default();
         let solve = SolveOptions {
@@ -237,7 +241,25 @@ impl RunOptions {
             (n, None) => SaveAt::Every(n.unwrap_or(1)),
         };
         let max_saved_bytes = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
-        Ok(Self { t0, t_end, solve, conserve, save, save_every, max_saved_bytes, order, max_steps })
+        let arithmetic = Arithmetic::from_name(arithmetic).map_err(to_py)?;
+        Ok(Self {
+            t0,
+            t_end,
+            solve,
+            conserve,
+            save,
+            save_every,
+            max_saved_bytes,
+            order,
+            max_steps,
+            arithmetic,
+        })
+    }
+
+    /// The RATTLE family's arithmetic: "unfused" (default) or "fused".
+    #[getter]
+    fn arithmetic(&self) -> &'static str {
+        self.arithmetic.name()
     }
 
     /// The method's name.

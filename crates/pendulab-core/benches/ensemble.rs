@@ -20,7 +20,7 @@ fn bench(c: &mut Criterion) {
     g.throughput(Throughput::Elements(n as u64 * steps));
     g.sample_size(10);
     let all = rayon::current_num_threads();
-    let damped = Extras { damping: &[0.1], settle_angle: Some(0.05) };
+    let damped = Extras { damping: &[0.1], settle_angle: Some(0.05), ..Extras::default() };
     let cases = [
         ("1_threads".to_string(), 1, Extras::default(), false),
         (format!("{all}_threads"), all, Extras::default(), false),

@@ -7,15 +7,18 @@
 //! - `dop853_steps_per_s`, `dop853_evals_per_step`: the same start with DOP853 at rtol = 10⁻¹⁰,
 //!   atol = 10⁻¹² (accepted steps; rejected ones are in the evaluations per step);
 //! - `ensemble_1_thread`, `ensemble_2_threads`: trajectory-steps/s of `ensemble::run`, 4096 starts
-//!   (θ₀ from 0.1 to 2.9 rad, φ̇₀ = 1 rad/s) × `steps` steps of 1 ms, final states only;
+//!   (θ₀ from 0.1 to 2.9 rad, φ̇₀ = 1 rad/s) × `steps` steps of 1 ms, final states only; the same
+//!   with the opt-in fused arithmetic (`Extras::arithmetic`): `ensemble_1_thread_fused`,
+//!   `ensemble_2_threads_fused` (the two arithmetics timed alternately);
 //! - `exact_states_per_s`: `ExactSolution::states_at` on one thread, 10⁵ times over 100 s;
 //! - `isa`: the instruction-set level the hot loops ran at (`isa::selected`).
 //!
 //! Run: `cargo run --release -p pendulab-core --example roofline_kernels -- [reps] [steps]`.
 //! SI units throughout.
 
-use pendulab_core::ensemble::{run, EnsembleSave};
+use pendulab_core::ensemble::{run_with, EnsembleSave, Extras};
 use pendulab_core::exact::ExactSolution;
+use pendulab_core::integrate::rattle_kernel::Arithmetic;
 use pendulab_core::{isa, IdealPendulum, Method, Model, SolveOptions, State, Stepper};
 use std::hint::black_box;
 use std::sync::atomic::{AtomicBool, AtomicU64};
@@ -95,14 +98,30 @@ fn main() {
         .collect();
     for (threads, name) in [(1usize, "ensemble_1_thread"), (2, "ensemble_2_threads")] {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
-        let w = best(reps, || {
+        let once = |arithmetic: Arithmetic| {
             pool.install(|| {
                 let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-                let r = run(&starts, &[1.0], &[9.81], 1e-3, steps, EnsembleSave::Final, false, &p, &c);
+                let extras = Extras { arithmetic, ..Extras::default() };
+                let save = EnsembleSave::Final;
+                let r = run_with(&starts, &[1.0], &[9.81], &extras, 1e-3, steps, save, false, &p, &c);
                 black_box(r.unwrap());
             })
-        });
-        out.push((name, (n as u64 * steps) as f64, w));
+        };
+        // alternately, so that both arithmetics see the same load
+        let (mut plain, mut fused) = ((f64::INFINITY, f64::INFINITY), (f64::INFINITY, f64::INFINITY));
+        for _ in 0..reps {
+            let a = best(1, || once(Arithmetic::Unfused));
+            let b = best(1, || once(Arithmetic::Fused));
+            plain = (plain.0.min(a.0), plain.1.min(a.1));
+            fused = (fused.0.min(b.0), fused.1.min(b.1));
+        }
+        let work = (n as u64 * steps) as f64;
+        out.push((name, work, plain));
+        out.push((
+            if threads == 1 { "ensemble_1_thread_fused" } else { "ensemble_2_threads_fused" },
+            work,
+            fused,
+        ));
     }
 
     let exact = ExactSolution::new(model.params(), &s0).unwrap();

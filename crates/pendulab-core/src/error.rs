@@ -132,6 +132,18 @@ pub enum Error {
         /// The model's own parameters.
         available: String,
     },
+    /// An unknown arithmetic name (`integrate::rattle_kernel::Arithmetic`).
+    #[error("unknown arithmetic {name:?}; available: unfused (default: the same bits on every CPU and in WebAssembly), fused (f64::mul_add: faster on CPUs with FMA)")]
+    UnknownArithmetic {
+        /// The name that was asked for.
+        name: String,
+    },
+    /// Fused arithmetic asked of a method that does not have it.
+    #[error("arithmetic 'fused' applies to the RATTLE family (rattle, rattle4, rattle6, rattle8) and the RATTLE ensemble, not to method '{method}'")]
+    UnsupportedArithmetic {
+        /// Method name.
+        method: &'static str,
+    },
     /// A method that cannot integrate this model.
     #[error("method '{method}' cannot integrate the '{model}' model (it supports only the ideal pendulum and the hoisted rope below a fixed pivot); use 'rattle' or 'dop853'")]
     UnsupportedModel {

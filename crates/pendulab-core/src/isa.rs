@@ -20,7 +20,8 @@
 //! (`integrate::rattle_kernel::fmadd`, shared with the ensemble) are plain a·b + c with two roundings
 //! (decided with measurements in docs/performance.md, "No CPU left behind": a fused operation is one
 //! instruction only where the CPU has FMA, and an exact software routine, about 13 ns a call,
-//! on older x86-64 CPUs and in WebAssembly, which made those 3–20× slower). + − × ÷ and √ are
+//! on older x86-64 CPUs and in WebAssembly, which made those 3–20× slower; the opt-in
+//! `rattle_kernel::Arithmetic::Fused` uses it, with the same bits at every level too). + − × ÷ and √ are
 //! correctly rounded on every CPU, so every level computes the same bits; wider vectors only change
 //! how many lanes one instruction handles, never an operation's rounding. `f64::round` (a C library
 //! call at the SSE2 baseline) is written as [`round`], the same function in a few additions and

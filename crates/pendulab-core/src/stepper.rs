@@ -10,6 +10,7 @@ use crate::error::{require_positive, Error, Result};
 use crate::integrate::composition::Composition;
 use crate::integrate::dop853::Dop853;
 use crate::integrate::rattle::Rattle;
+use crate::integrate::rattle_kernel::Arithmetic;
 use crate::integrate::rk4::Rk4;
 use crate::integrate::rk4_angles::Rk4Angles;
 use crate::integrate::rkmk4::Rkmk4;
@@ -297,6 +298,19 @@ impl<M: Model> Stepper<M> {
             }
             _ => None,
         }
+    }
+
+    /// The RATTLE family only (rattle, rattle4/6/8): how the step rounds its multiply-adds, from the
+    /// next step on ([`Arithmetic`]; default unfused). `Fused` on another method is an error
+    /// ([`Error::UnsupportedArithmetic`]); `Unfused` is accepted by every method (their arithmetic).
+    pub fn set_arithmetic(&mut self, arithmetic: Arithmetic) -> Result<()> {
+        match &mut self.scheme {
+            Scheme::Rattle(r) => r.set_arithmetic(arithmetic),
+            Scheme::Composition(c) => c.set_arithmetic(arithmetic),
+            _ if arithmetic == Arithmetic::Unfused => {}
+            _ => return Err(Error::UnsupportedArithmetic { method: self.method.info().name }),
+        }
+        Ok(())
     }
 
     /// `dop853` only: also keep E (conservative models) and J₃ (axisymmetric ones) at their values at

@@ -3,7 +3,7 @@
 //! and bad input. SI units; ideal pendulum.
 
 use pendulab_core::ensemble::{run, EnsembleSave, LANES, TILE};
-use pendulab_core::integrate::rattle_kernel::PositionQuadratic;
+use pendulab_core::integrate::rattle_kernel::{PositionQuadratic, Unfused};
 use pendulab_core::model::energy;
 use pendulab_core::DVec3;
 use pendulab_core::{IdealPendulum, Method, Model, SolveOptions, State, Stepper};
@@ -59,7 +59,7 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
     let dt = 0.02;
     let in_series = |st: &State| {
         let w = st.v + DVec3::new(0.0, 0.0, -9.81) * (0.5 * dt);
-        PositionQuadratic::new(st.x, w, dt, 1.0).multiplier_series(dt).1
+        PositionQuadratic::new::<Unfused>(st.x, w, dt, 1.0).multiplier_series::<Unfused>(dt).1
     };
     assert!(in_series(&s[0]) && !in_series(&s[LANES - 1]), "the first block must mix both cases");
     // and some tile of lanes stepped together in registers too (ensemble/block.rs)
@@ -162,7 +162,7 @@ fn damped_trajectories_match_the_damped_model_bit_for_bit() {
     let damping: Vec<f64> =
         (0..n).map(|k| if k % 3 == 0 { 0.0 } else { 0.05 * k as f64 / n as f64 }).collect();
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let extras = Extras { damping: &damping, settle_angle: None };
+    let extras = Extras { damping: &damping, settle_angle: None, ..Extras::default() };
     let res =
         run_with(&s, &[1.0], &[9.81], &extras, 1e-3, 2000, EnsembleSave::Every(500), true, &p, &c).unwrap();
     for k in 0..n {
@@ -196,7 +196,7 @@ fn settle_time_of_a_small_damped_swing_matches_linear_theory() {
     let s: Vec<State> =
         thetas.iter().map(|&th| State::from_angles(p0.params(), th, 0.4, 0.0, 0.0).unwrap()).collect();
     let (p, cn) = (AtomicU64::new(0), AtomicBool::new(false));
-    let extras = Extras { damping: &[c], settle_angle: Some(theta_s) };
+    let extras = Extras { damping: &[c], settle_angle: Some(theta_s), ..Extras::default() };
     let res = run_with(&s, &[l], &[g], &extras, dt, 40_000, EnsembleSave::Final, false, &p, &cn).unwrap();
     let settle = res.settle_time.unwrap();
     for (k, &th0) in thetas.iter().enumerate() {
@@ -219,7 +219,7 @@ fn settle_time_of_a_small_damped_swing_matches_linear_theory() {
     }
     assert!(settle[0] > 10.0, "the damped swing must take a while to settle: {}", settle[0]);
     // undamped: a swing outside the band never settles; one inside is settled from the start
-    let extras = Extras { damping: &[], settle_angle: Some(theta_s) };
+    let extras = Extras { damping: &[], settle_angle: Some(theta_s), ..Extras::default() };
     let res = run_with(&s, &[l], &[g], &extras, dt, 5000, EnsembleSave::Final, false, &p, &cn).unwrap();
     let settle = res.settle_time.unwrap();
     assert!(settle[0].is_infinite() && settle[2] == 0.0, "{settle:?}");
@@ -239,9 +239,13 @@ fn bad_damping_and_settle_angle_are_named() {
             .unwrap_err()
             .to_string()
     };
-    assert!(go(Extras { damping: &[-0.1], settle_angle: None }).contains("damping"));
-    assert!(go(Extras { damping: &[f64::NAN], settle_angle: None }).contains("damping"));
-    assert!(go(Extras { damping: &[0.1, 0.2], settle_angle: None }).contains("damping"));
-    assert!(go(Extras { damping: &[], settle_angle: Some(0.0) }).contains("settle_angle"));
-    assert!(go(Extras { damping: &[], settle_angle: Some(4.0) }).contains("settle_angle"));
+    assert!(go(Extras { damping: &[-0.1], settle_angle: None, ..Extras::default() }).contains("damping"));
+    assert!(go(Extras { damping: &[f64::NAN], settle_angle: None, ..Extras::default() }).contains("damping"));
+    assert!(go(Extras { damping: &[0.1, 0.2], settle_angle: None, ..Extras::default() }).contains("damping"));
+    assert!(
+        go(Extras { damping: &[], settle_angle: Some(0.0), ..Extras::default() }).contains("settle_angle")
+    );
+    assert!(
+        go(Extras { damping: &[], settle_angle: Some(4.0), ..Extras::default() }).contains("settle_angle")
+    );
 }

@@ -50,7 +50,7 @@ fn everything() -> Vec<u64> {
     }
     let starts: Vec<State> = (0..LANES + 3).map(|k| start(&params, k % 7)).collect();
     let damping: Vec<f64> = (0..starts.len()).map(|k| 0.01 * (k % 4) as f64).collect();
-    let extras = Extras { damping: &damping, settle_angle: Some(0.3) };
+    let extras = Extras { damping: &damping, settle_angle: Some(0.3), ..Extras::default() };
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
     let res = run_with(&starts, &[1.3], &[9.81], &extras, 1e-3, 1500, EnsembleSave::Every(500), true, &p, &c)
         .unwrap();

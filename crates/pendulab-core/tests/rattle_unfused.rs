@@ -4,11 +4,15 @@
 //! unfused `*` and `+` in the kernel's order of operations (T-2.1, T-2.2; the module doc of
 //! `integrate::rattle_kernel`). Because + − × ÷ are correctly rounded on every CPU and in
 //! WebAssembly, these are then the numbers of every x86-64 level, of aarch64 and of the page's engine
-//! (docs/performance.md, "No CPU left behind"). The test has teeth: the same reference with fused
-//! multiply-adds (the kernel before 2026-11-26) gives other bits. SI units: \[m\], [m/s], \[s\].
+//! (docs/performance.md, "No CPU left behind"). The opt-in fused arithmetic (`Arithmetic::Fused`:
+//! `f64::mul_add` and its own shorter forms of the series and the projection polynomial) is checked
+//! the same way against the reference written with it. The test has teeth: each arithmetic's
+//! reference gives other bits than the other's. SI units: \[m\], [m/s], \[s\].
 
 use pendulab_core::ensemble::{run_with, EnsembleSave, Extras};
+use pendulab_core::integrate::rattle_kernel::Arithmetic;
 use pendulab_core::isa;
+use pendulab_core::Model;
 use pendulab_core::{IdealPendulum, Method, Params, SolveOptions, State, Stepper};
 use std::sync::atomic::{AtomicBool, AtomicU64};
 
@@ -38,7 +42,8 @@ fn dot(a: V, b: V, fused: bool) -> f64 {
 }
 
 /// The ideal pendulum's RATTLE steps from (x, v), compensations carried, uniform-field path with the
-/// Catalan series for μ (asserted to apply); every multiply-add fused when `fused`.
+/// Catalan series for μ (asserted to apply); with `fused`, every multiply-add fused and the fused
+/// arithmetic's own forms of the series and the projection polynomial (`rattle_kernel` module doc).
 fn reference(x: V, v: V, l: f64, g: f64, h: f64, steps: usize, fused: bool) -> (V, V) {
     let f = fused;
     let (mut x, mut v) = (x, v);
@@ -55,21 +60,38 @@ fn reference(x: V, v: V, l: f64, g: f64, h: f64, steps: usize, fused: bool) -> (
         let b = fm(h, xw, q, f);
         let c = fm(h, fm(h, ww, xw + xw, f), q - l2, f);
         let ib = 1.0 / b;
-        let z = 0.25 * q * c * (ib * ib);
-        assert!(z.abs() <= 1e-3 && b > 0.0, "the series must apply (z = {z:e})");
-        let z2 = z * z;
-        let low = fm(z2, fm(5.0, z, 2.0, f), 1.0 + z, f);
-        let high = fm(z2, 132.0, fm(42.0, z, 14.0, f), f);
-        let series = fm(z2 * z2, high, low, f);
-        let mu = c * (ib * (-0.5 / h)) * series;
+        let mu = if f {
+            // the fused arithmetic's forms: y = 4z = (q/b)(c/b), Horner in y with Catₙ/4ⁿ
+            let t = c * ib;
+            let y = (q * ib) * t;
+            assert!(y.abs() <= 4e-3 && b > 0.0, "the series must apply (y = {y:e})");
+            let coef = [33.0 / 1024.0, 21.0 / 512.0, 7.0 / 128.0, 5.0 / 64.0, 0.125, 0.25, 1.0];
+            let series = coef[1..].iter().fold(coef[0], |acc, &k| fm(acc, y, k, f));
+            t * (-0.5 / h) * series
+        } else {
+            let z = 0.25 * q * c * (ib * ib);
+            assert!(z.abs() <= 1e-3 && b > 0.0, "the series must apply (z = {z:e})");
+            let z2 = z * z;
+            let low = fm(z2, fm(5.0, z, 2.0, f), 1.0 + z, f);
+            let high = fm(z2, 132.0, fm(42.0, z, 14.0, f), f);
+            let series = fm(z2 * z2, high, low, f);
+            c * (ib * (-0.5 / h)) * series
+        };
         let v_half = fm3(x, mu, w, f);
         let y = fm3(v_half, h, [-cx[0], -cx[1], -cx[2]], f);
         let x1 = add(x, y);
         cx = sub(sub(x1, x), y);
         let e = add(w, kick);
         let xe = dot(x, e, f);
-        let (pa, pb, pc) = (fm(h, dot(w, e, f), xe, f) * inv_l2, fm(h, xe, b, f) * inv_l2, h * q * inv_l2);
-        let p = fm(mu, fm(mu, pc, pb, f), pa, f);
+        let p = if f {
+            // fused: the coefficients unscaled, one product by 1/l²
+            let (pa, pb, pc) = (fm(h, dot(w, e, f), xe, f), fm(h, xe, b, f), h * q);
+            fm(mu, fm(mu, pc, pb, f), pa, f) * inv_l2
+        } else {
+            let (pa, pb, pc) =
+                (fm(h, dot(w, e, f), xe, f) * inv_l2, fm(h, xe, b, f) * inv_l2, h * q * inv_l2);
+            fm(mu, fm(mu, pc, pb, f), pa, f)
+        };
         let yv = fm3(x1, -p, fm3(x, mu, sub(add(kick, kick), cv), f), f);
         let v1 = add(v, yv);
         cv = sub(sub(v1, v), yv);
@@ -86,8 +108,11 @@ fn state_bits(s: &State) -> Vec<u64> {
     bits(s.x.to_array(), s.v.to_array())
 }
 
+/// Each arithmetic (the default unfused one, and the opt-in fused one) against its reference: the
+/// stepper at the best level and at the baseline (where `f64::mul_add` is the C library's exact fma),
+/// a RATTLE4 stepper's reset keeping the choice, and the ensemble.
 #[test]
-fn rattle_is_the_unfused_reference_bit_for_bit_at_every_level_and_in_the_ensemble() {
+fn rattle_is_the_reference_of_its_arithmetic_bit_for_bit_at_every_level_and_in_the_ensemble() {
     let (l, g, h, steps) = (1.3, 9.81, 1e-3, 2000);
     let params = Params::new(l, 0.7, g).unwrap();
     let starts: Vec<State> = [(1.1, 0.2, 0.3, 1.4), (0.4, 0.0, 0.0, 2.5), (2.7, 1.0, -0.5, 0.3)]
@@ -96,38 +121,91 @@ fn rattle_is_the_unfused_reference_bit_for_bit_at_every_level_and_in_the_ensembl
         .collect();
     let opts = SolveOptions { method: Method::Rattle, dt: h, ..SolveOptions::default() };
     let ideal = IdealPendulum::new(l, 0.7, g).unwrap();
-    let mut expected = Vec::new();
-    for s0 in &starts {
-        let (x0, v0) = (s0.x.to_array(), s0.v.to_array());
-        let (x, v) = reference(x0, v0, l, g, h, steps, false);
-        let want = bits(x, v);
-        let (xf, vf) = reference(x0, v0, l, g, h, steps, true);
-        assert_ne!(bits(xf, vf), want, "fused multiply-adds give other bits (the test's teeth)");
-        for baseline in [false, true] {
-            isa::set_baseline_only(baseline);
-            let mut st = Stepper::new(ideal, 0.0, *s0, &opts).unwrap();
-            st.step_n(steps as u64).unwrap();
-            isa::set_baseline_only(false);
-            assert_eq!(state_bits(&st.state()), want, "stepper ({}) from {s0:?}", isa::selected());
+    for arithmetic in Arithmetic::ALL {
+        let fused = arithmetic == Arithmetic::Fused;
+        let mut expected = Vec::new();
+        for s0 in &starts {
+            let (x0, v0) = (s0.x.to_array(), s0.v.to_array());
+            let (x, v) = reference(x0, v0, l, g, h, steps, fused);
+            let want = bits(x, v);
+            let (xo, vo) = reference(x0, v0, l, g, h, steps, !fused);
+            assert_ne!(bits(xo, vo), want, "the other arithmetic gives other bits (the test's teeth)");
+            for baseline in [false, true] {
+                isa::set_baseline_only(baseline);
+                let mut st = Stepper::new(ideal, 0.0, *s0, &opts).unwrap();
+                st.set_arithmetic(arithmetic).unwrap();
+                st.step_n(steps as u64).unwrap();
+                isa::set_baseline_only(false);
+                assert_eq!(
+                    state_bits(&st.state()),
+                    want,
+                    "{arithmetic:?} stepper ({}) from {s0:?}",
+                    isa::selected()
+                );
+            }
+            expected.push(want);
         }
-        expected.push(want);
+        let (progress, cancel) = (AtomicU64::new(0), AtomicBool::new(false));
+        let extras = Extras { arithmetic, ..Extras::default() };
+        let ens = run_with(
+            &starts,
+            &[l],
+            &[g],
+            &extras,
+            h,
+            steps as u64,
+            EnsembleSave::Final,
+            false,
+            &progress,
+            &cancel,
+        )
+        .unwrap();
+        for (k, want) in expected.iter().enumerate() {
+            assert_eq!(
+                &state_bits(ens.trajectory(k).last().unwrap()),
+                want,
+                "{arithmetic:?} ensemble, trajectory {k}"
+            );
+        }
+        // RATTLE4 keeps the choice through a reset (set_state), and it changes its numbers
+        let opts4 = SolveOptions { method: Method::Rattle4, dt: h, ..SolveOptions::default() };
+        let run4 = |a: Arithmetic| {
+            let mut st = Stepper::new(ideal, 0.0, starts[0], &opts4).unwrap();
+            st.set_arithmetic(a).unwrap();
+            st.step_n(10).unwrap();
+            st.set_state(starts[0]);
+            st.step_n(100).unwrap();
+            state_bits(&st.state())
+        };
+        let mut fresh = Stepper::new(ideal, 0.0, starts[0], &opts4).unwrap();
+        fresh.set_arithmetic(arithmetic).unwrap();
+        fresh.step_n(100).unwrap();
+        assert_eq!(
+            run4(arithmetic),
+            state_bits(&fresh.state()),
+            "{arithmetic:?}: reset keeps the arithmetic"
+        );
+        assert_ne!(run4(Arithmetic::Unfused), run4(Arithmetic::Fused));
     }
-    let (progress, cancel) = (AtomicU64::new(0), AtomicBool::new(false));
-    let extras = Extras { damping: &[], settle_angle: None };
-    let ens = run_with(
-        &starts,
-        &[l],
-        &[g],
-        &extras,
-        h,
-        steps as u64,
-        EnsembleSave::Final,
-        false,
-        &progress,
-        &cancel,
-    )
-    .unwrap();
-    for (k, want) in expected.iter().enumerate() {
-        assert_eq!(&state_bits(ens.trajectory(k).last().unwrap()), want, "ensemble, trajectory {k}");
+}
+
+/// Fused arithmetic is for the RATTLE family only; unfused is every method's.
+#[test]
+fn fused_arithmetic_is_refused_outside_the_rattle_family() {
+    let ideal = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
+    let s0 = State::from_angles(ideal.params(), 1.0, 0.0, 0.0, 1.0).unwrap();
+    for method in Method::ALL {
+        let opts = SolveOptions { method, dt: 1e-3, ..SolveOptions::default() };
+        let mut st = Stepper::new(ideal, 0.0, s0, &opts).unwrap();
+        assert!(st.set_arithmetic(Arithmetic::Unfused).is_ok());
+        let fused = st.set_arithmetic(Arithmetic::Fused);
+        if method.info().name.starts_with("rattle") {
+            assert!(fused.is_ok(), "{method:?}");
+        } else {
+            let msg = fused.unwrap_err().to_string();
+            assert!(msg.contains("fused") && msg.contains(method.info().name), "{msg}");
+        }
     }
+    assert_eq!(Arithmetic::from_name("fused").unwrap(), Arithmetic::Fused);
+    assert!(Arithmetic::from_name("fma").unwrap_err().to_string().contains("unfused"));
 }

@@ -19,7 +19,7 @@
 //! multiply-add chains) overlaps the other chain's work. SI units: \[m\], [m/s], [1/s], [m/s²].
 
 use crate::integrate::rattle_kernel::{
-    advance_position, advance_velocity, fmadd3, PositionQuadratic, ProjectionPolynomial,
+    advance_position, advance_velocity, fmadd3, MulAdd, PositionQuadratic, ProjectionPolynomial,
 };
 use crate::state::State;
 use glam::DVec3;
@@ -70,13 +70,14 @@ pub(super) struct Track {
 
 impl Block {
     /// `chunk` steps of `h` [s] of every lane, the first being step number `first` + 1 of the run
-    /// (for the settle tracking), tile by tile (module doc).
+    /// (for the settle tracking), tile by tile (module doc), with the multiply-adds rounded as `A`
+    /// (`rattle_kernel::Unfused` or `Fused`, as the single-trajectory path it is compared with).
     #[inline(always)]
-    pub fn steps(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
+    pub fn steps<A: MulAdd>(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
         for o in (0..LANES).step_by(TILE) {
             let mut tile = Tile::load(self, o);
             for j in 1..=chunk {
-                tile.step(h, self.damped);
+                tile.step::<A>(h, self.damped);
                 if track.summary {
                     tile.update_summary(&mut self.summary, &mut self.crossings, &mut self.above, o);
                 }
@@ -159,13 +160,13 @@ impl Tile {
     /// One step of every lane (identical arithmetic to `Rattle::advance` for f = −g e₃, with the
     /// damping flow on either side when the block has a damped lane).
     #[inline(always)]
-    fn step(&mut self, h: f64, damped: bool) {
+    fn step<A: MulAdd>(&mut self, h: f64, damped: bool) {
         if damped {
             self.decay();
         }
-        if !self.rattle(h, false) {
+        if !self.rattle::<A>(h, false) {
             // some lane is outside the series' range: the whole tile again, from the same state
-            self.rattle(h, true);
+            self.rattle::<A>(h, true);
         }
         if damped {
             self.decay();
@@ -189,7 +190,7 @@ impl Tile {
     /// range (returns whether it was); with `closed` true, μ is `PositionQuadratic::multiplier`.
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
-    fn rattle(&mut self, h: f64, closed: bool) -> bool {
+    fn rattle<A: MulAdd>(&mut self, h: f64, closed: bool) -> bool {
         let half = 0.5 * h;
         let mut next = [[[0.0; TILE]; 3]; 4];
         let mut ok = true;
@@ -200,19 +201,19 @@ impl Tile {
             // the run checked, so the lane gets the single path's bits without two multiplications
             let kick = DVec3::new(0.0, 0.0, -self.g[i] * half);
             let w = v0 + kick;
-            let quad = PositionQuadratic::new(x0, w, h, self.l2[i]);
+            let quad = PositionQuadratic::new::<A>(x0, w, h, self.l2[i]);
             let mu = if closed {
-                quad.multiplier(h)
+                quad.multiplier::<A>(h)
             } else {
-                let (mu, in_range) = quad.multiplier_series(h);
+                let (mu, in_range) = quad.multiplier_series::<A>(h);
                 ok &= in_range;
                 mu
             };
-            let p = ProjectionPolynomial::new(x0, w, kick, &quad, h, self.inv_l2[i]).at(mu);
+            let p = ProjectionPolynomial::new::<A>(x0, w, kick, &quad, h, self.inv_l2[i]).at::<A>(mu);
             let mut cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
             let mut cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
-            let x1 = advance_position(x0, fmadd3(x0, mu, w), h, &mut cx);
-            let v1 = advance_velocity(v0, kick + kick, x0, mu, x1, p, &mut cv);
+            let x1 = advance_position::<A>(x0, fmadd3::<A>(x0, mu, w), h, &mut cx);
+            let v1 = advance_velocity::<A>(v0, kick + kick, x0, mu, x1, p, &mut cv);
             for c in 0..3 {
                 next[0][c][i] = x1[c];
                 next[1][c][i] = v1[c];

@@ -4,9 +4,11 @@
 //!
 //!   v½ = v₀ − (h/2) g e₃ + μ x₀ (|x₁| = l),  x₁ = x₀ + h v½,  v₁ = v½ − (h/2) g e₃ − x₁ (x₁·u)/l²,
 //!
-//! with Kahan-compensated updates. Optional linear damping c [1/s] (force −m c v, T-7.1) enters as in
-//! the single-trajectory path of the `damped` model: the exact damping flow v ↦ e^{−c h/2} v before
-//! and after each step (Strang splitting, conformal symplectic). Optional settle tracking records, per
+//! with Kahan-compensated updates, the multiply-adds unfused by default or fused on request
+//! ([`Extras::arithmetic`], as the single-trajectory path with the same choice). Optional linear
+//! damping c [1/s] (force −m c v, T-7.1) enters as in the single-trajectory path of the `damped`
+//! model: the exact damping flow v ↦ e^{−c h/2} v before and after each step (Strang splitting,
+//! conformal symplectic). Optional settle tracking records, per
 //! trajectory, the time after which the sway angle from the stable equilibrium −sign(g) e₃ stays at
 //! or below a threshold (cos sway = −sign(g) z/l; resolution one step).
 //!
@@ -20,6 +22,7 @@
 //! checked every [`CHECK_EVERY`] steps. SI units throughout.
 
 use crate::error::{Error, Result};
+use crate::integrate::rattle_kernel::{Arithmetic, Fused, Unfused};
 use crate::state::State;
 use glam::DVec3;
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
@@ -110,6 +113,9 @@ pub struct Extras<'a> {
     /// Sway angle \[rad\] in (0, π) from the stable equilibrium at or below which a trajectory counts as
     /// settled; when given, the result holds each trajectory's settle time.
     pub settle_angle: Option<f64>,
+    /// How the steps round their multiply-adds (default unfused): each trajectory gets the numbers of
+    /// the single-trajectory RATTLE with the same [`Arithmetic`] (`Stepper::set_arithmetic`).
+    pub arithmetic: Arithmetic,
 }
 
 /// Integrates `starts` (with per-trajectory `length` \[m\] and `g` [m/s²], each of length 1 — broadcast
@@ -147,7 +153,16 @@ pub fn run_with(
     let plan = Plan::checked(starts, length, g, extras, dt, n_steps, save)?;
     let (n, ns) = (starts.len(), sample_count(n_steps, plan.every));
     let mut states = vec![State { x: DVec3::NAN, v: DVec3::NAN }; n * ns];
-    let run = BlockRun { dt, n_steps, every: plan.every, with_summary, track: plan.track, progress, cancel };
+    let run = BlockRun {
+        dt,
+        n_steps,
+        every: plan.every,
+        with_summary,
+        track: plan.track,
+        arithmetic: extras.arithmetic,
+        progress,
+        cancel,
+    };
     // each worker builds its blocks from the starts and writes their samples into its part of
     // `states`: both cores work from the first block on, and nothing is copied afterwards
     let work = |(b, out): (usize, &mut [State])| {
@@ -319,6 +334,7 @@ struct BlockRun<'a> {
     every: u64,
     with_summary: bool,
     track: bool,
+    arithmetic: Arithmetic,
     progress: &'a AtomicU64,
     cancel: &'a AtomicBool,
 }
@@ -342,10 +358,16 @@ impl BlockRun<'_> {
         while done < n_steps {
             let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
             // the lane loops compiled for the CPU's widest vectors (AVX-512, AVX2 + FMA; crate::isa)
-            crate::isa::fastest(
-                #[inline(always)]
-                || blk.steps(chunk, self.dt, done, track),
-            );
+            match self.arithmetic {
+                Arithmetic::Unfused => crate::isa::fastest(
+                    #[inline(always)]
+                    || blk.steps::<Unfused>(chunk, self.dt, done, track),
+                ),
+                Arithmetic::Fused => crate::isa::fastest(
+                    #[inline(always)]
+                    || blk.steps::<Fused>(chunk, self.dt, done, track),
+                ),
+            }
             done += chunk;
             self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
             if done % every == 0 || done == n_steps {

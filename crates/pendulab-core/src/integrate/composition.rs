@@ -63,6 +63,11 @@ impl Composition {
         Self { weights: palindrome(outer), order, rattle: Rattle::default() }
     }
 
+    /// Chooses the rounding of the RATTLE substeps' multiply-adds ([`Rattle::set_arithmetic`]).
+    pub fn set_arithmetic(&mut self, arithmetic: super::rattle_kernel::Arithmetic) {
+        self.rattle.set_arithmetic(arithmetic);
+    }
+
     /// The weights w₁ … w_s (sum 1, palindromic).
     pub fn weights(&self) -> &[f64] {
         &self.weights

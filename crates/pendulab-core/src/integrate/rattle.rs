@@ -28,7 +28,8 @@
 //! keeps the step symmetric.
 
 use super::rattle_kernel::{
-    advance_position, advance_velocity, dot, fmadd3, PositionQuadratic, ProjectionPolynomial,
+    advance_position, advance_velocity, dot, fmadd3, Arithmetic, Fused, MulAdd, PositionQuadratic,
+    ProjectionPolynomial, Unfused,
 };
 use super::FixedStep;
 use crate::error::{Error, Result};
@@ -42,17 +43,44 @@ use glam::DVec3;
 /// bits that rounding drops from each small increment are carried into the next step, so that
 /// round-off in x, v (and with it J₃ and E) grows like ε·|Δx|·√N rather than ε·|x|·√N over N steps.
 /// This matters for long runs near the separatrix, where round-off is amplified.
+///
+/// The multiply-adds are unfused by default ([`Arithmetic`]; [`Rattle::set_arithmetic`] chooses).
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Rattle {
     comp_x: DVec3,
     comp_v: DVec3,
+    arithmetic: Arithmetic,
 }
 
 impl Rattle {
+    /// RATTLE with the given rounding of its multiply-adds.
+    pub fn with_arithmetic(arithmetic: Arithmetic) -> Self {
+        Self { arithmetic, ..Self::default() }
+    }
+
+    /// Chooses the rounding of the multiply-adds for the steps that follow.
+    pub fn set_arithmetic(&mut self, arithmetic: Arithmetic) {
+        self.arithmetic = arithmetic;
+    }
+
+    /// The rounding of the multiply-adds.
+    pub fn arithmetic(&self) -> Arithmetic {
+        self.arithmetic
+    }
+
     /// One RATTLE step of size `h` \[s\]; returns `false` when the position quadratic has no real
     /// root (h far too large for the motion). The arithmetic is in [`super::rattle_kernel`].
     #[inline(always)]
     pub fn advance<M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> bool {
+        match self.arithmetic {
+            Arithmetic::Unfused => self.advance_with::<Unfused, M>(model, t, s, h),
+            Arithmetic::Fused => self.advance_with::<Fused, M>(model, t, s, h),
+        }
+    }
+
+    /// [`Rattle::advance`] with the rounding `A`.
+    #[inline(always)]
+    fn advance_with<A: MulAdd, M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> bool {
         let l = model.params().length;
         let l2 = l * l;
         // 1/l² is a loop invariant the compiler hoists out of a stepping loop.
@@ -65,28 +93,28 @@ impl Rattle {
         let (x0, v0) = (s.x, s.v);
         let kick0 = model.kick_acceleration(t, x0) * half;
         let w = v0 + kick0;
-        let quad = PositionQuadratic::new(x0, w, h, l2);
-        let mu = quad.multiplier(h);
+        let quad = PositionQuadratic::new::<A>(x0, w, h, l2);
+        let mu = quad.multiplier::<A>(h);
         if mu.is_nan() {
             return false;
         }
         // x₁ = x₀ + h v½ exactly as RATTLE writes it, so that x₁ and v½ are consistent by
         // construction (J₃ is kept without bias even for step sizes whose reciprocal is inexact, as
         // in the compositions).
-        let v_half = fmadd3(x0, mu, w);
-        let x1 = advance_position(x0, v_half, h, &mut self.comp_x);
+        let v_half = fmadd3::<A>(x0, mu, w);
+        let x1 = advance_position::<A>(x0, v_half, h, &mut self.comp_x);
         let (kick1, p) = if model.kick_is_uniform() {
             // known before x₁: the projection's numerator is a quadratic in μ (module doc of
             // rattle_kernel), its coefficients computed alongside μ
             let kick1 = model.kick_acceleration(t + h, x0) * half;
-            (kick1, ProjectionPolynomial::new(x0, w, kick1, &quad, h, inv_l2).at(mu))
+            (kick1, ProjectionPolynomial::new::<A>(x0, w, kick1, &quad, h, inv_l2).at::<A>(mu))
         } else {
             let kick1 = model.kick_acceleration(t + h, x1) * half;
-            (kick1, dot(x1, v_half + kick1) * inv_l2)
+            (kick1, dot::<A>(x1, v_half + kick1) * inv_l2)
         };
         // v₁ = u − x₁ (x₁·u)/l², written as the increment Δv = v₁ − v₀ (|x₁|² = l² to round-off, so
         // x₁·v₁ = (x₁·u)(1 − |x₁|²/l²) is round-off of an O(h) quantity).
-        s.v = advance_velocity(v0, kick0 + kick1, x0, mu, x1, p, &mut self.comp_v);
+        s.v = advance_velocity::<A>(v0, kick0 + kick1, x0, mu, x1, p, &mut self.comp_v);
         s.x = x1;
         if model.has_velocity_forces() {
             s.v = model.velocity_flow_at(t + h, s.x, s.v, half);
@@ -110,6 +138,6 @@ impl FixedStep for Rattle {
     }
 
     fn reset(&mut self) {
-        *self = Self::default();
+        *self = Self::with_arithmetic(self.arithmetic);
     }
 }
