@@ -113,6 +113,24 @@ export async function checkTouch(page, { check, skip, transport, WAIT }) {
   await page.screenshot({ path: 'test-results/presentation.png' });
   check(big.watch >= 30 && big.body >= 18 && !overlaps(pb.canvas, pb.panel) && inside(pb.sphere, pb.canvas), `presentation mode: ${big.body} px type, ${big.watch} px readouts, the view free with the whole sphere in it`);
   await page.locator('[data-action="present"]').click();
+  // a teacher's presentation link opened on a student's phone, in German and French (long words, large type):
+  // every picker, table and row of the panel stays inside it (the gravity picker and the period table
+  // reached 110 px past its edge)
+  for (const lang of ['de', 'fr']) {
+    const phone = await page.context().newPage();
+    await phone.setViewportSize({ width: 390, height: 844 });
+    await phone.goto(`${page.url().split('?')[0]}?lang=${lang}&view=present`, { timeout: WAIT });
+    await phone.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: WAIT });
+    const beyond = await phone.evaluate(() => {
+      for (const c of document.querySelectorAll('#gui .lil-gui.lil-closed > .lil-title, #panel details:not([open]) > summary')) c.click();
+      const edge = document.getElementById('panel').getBoundingClientRect().right;
+      return [...document.querySelectorAll('#panel *')]
+        .filter((el) => el.getBoundingClientRect().width > 0 && el.getBoundingClientRect().right > edge + 1)
+        .map((el) => `${el.tagName} "${el.textContent.trim().slice(0, 24)}" ${Math.round(el.getBoundingClientRect().right - edge)} px`);
+    });
+    check(beyond.length === 0, `presentation mode on a phone in ${lang}: nothing reaches past the panel's edge${beyond.length ? ': ' + beyond.slice(0, 5).join(', ') : ''}`);
+    await phone.close();
+  }
   if (transport === 'file') {
     skip('the server gone', 'there is no server: the physics runs in the page (its banner is for a lost WebSocket)');
     return;
