@@ -140,7 +140,7 @@ def simulate_ensemble(
     ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. The number of steps
     is round(t_end/dt); t_end must be a multiple of dt to 1e-9. ``arithmetic``: ``"unfused"``
     (default: the same bits on every CPU and in WebAssembly) or ``"fused"`` (multiply-adds with one
-    rounding: about 1.9× the trajectory-steps per CPU second on CPUs with FMA, much slower on CPUs
+    rounding: 1.3–1.6× the trajectory-steps per CPU second on CPUs with FMA, much slower on CPUs
     without; other bits), as ``simulate(..., arithmetic=...)``, whose numbers every trajectory gets
     bit for bit either way (docs/performance.md, "How fast, and why").
 
