@@ -61,10 +61,12 @@ def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:
     if arr.shape[0] > limits.MAX_SAMPLES:
         raise limits.invalid("states", f"<{arr.shape[0]} rows>", f"at most {limits.MAX_SAMPLES} rows")
     x, v = np.ascontiguousarray(arr[:, :3]), np.ascontiguousarray(arr[:, 3:])
-    rows = np.isfinite(arr).all(axis=1)  # non-finite rows are skipped with a warning (below)
-    every = bool(rows.all())  # the usual case: checked in place, without copying the good rows
-    limits.array("states x", x if every else x[rows], "position")
-    limits.array("states v", v if every else v[rows], "velocity")
+    # non-finite rows are skipped with a warning (below); the usual case, every row finite, is told by
+    # one reduction over the whole array and checked in place, without copying the good rows
+    every = bool(np.isfinite(arr).all())
+    rows = slice(None) if every else np.isfinite(arr).all(axis=1)
+    limits.array("states x", x[rows], "position")
+    limits.array("states v", v[rows], "velocity")
     return x, v
 
 
@@ -229,7 +231,10 @@ def _plan(
     lengths = _per_trajectory("length", length, pendulum.length, n, limits.COMMON["length"])
     gs = _per_trajectory("g", g, pendulum.g, n, limits.COMMON["g"])
     cs = _per_trajectory("damping", damping, c_model, n, _DAMPING)
-    finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
+    if np.isfinite(x).all() and np.isfinite(v).all():  # one reduction each in the usual case
+        finite = np.ones(n, dtype=bool)
+    else:
+        finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
     invalid = np.flatnonzero(~finite)
     if invalid.size == n:
         raise InvalidInputError(f"every start row is non-finite (NaN or inf): {n} rows")
