@@ -26,14 +26,58 @@ create_exception!(
 
 /// A core error as a Python exception: `IntegrationError` when the integration could not go on,
 /// `InvalidInputError` for bad input.
+///
+/// The common kinds also carry `key` and `values` (attributes of the exception): the message key of
+/// `pendulab/server/messages.json` and its values, so that the lab server's REST analyses answer in
+/// the page's language (docs/web.md, "Languages"); times in s, step sizes in s, residuals
+/// dimensionless, as strings of a few digits.
 pub(crate) fn to_py(err: Error) -> PyErr {
-    match err {
+    let e = match err {
         Error::PoleSingularity { .. }
         | Error::ReducedFlowPole { .. }
         | Error::Diverged { .. }
         | Error::StepSizeUnderflow { .. } => IntegrationError::new_err(err.to_string()),
         _ => InvalidInputError::new_err(err.to_string()),
+    };
+    if let Some((key, values)) = error_key(&err) {
+        Python::with_gil(|py| {
+            let v = e.value(py);
+            let d = PyDict::new(py);
+            let keyed = values.iter().try_for_each(|(k, x)| d.set_item(k, x)).is_ok()
+                && v.setattr("key", key).is_ok()
+                && v.setattr("values", d).is_ok();
+            debug_assert!(keyed);
+        });
     }
+    e
+}
+
+/// The message key and values of a core error of a common kind (None: the English words alone).
+fn error_key(err: &Error) -> Option<(&'static str, Vec<(&'static str, String)>)> {
+    let t = |t: f64| format!("{}", (t * 1e4).round() / 1e4);
+    let e = |x: f64| format!("{x:.3e}");
+    Some(match err {
+        Error::StepSizeUnderflow { t: at, h, .. } => ("step_too_small", vec![("t", t(*at)), ("h", e(*h))]),
+        Error::Diverged { t: at, method, dt } => {
+            ("diverged", vec![("t", t(*at)), ("method", method.to_string()), ("dt", e(*dt))])
+        }
+        Error::PoleSingularity { t: at, .. } | Error::ReducedFlowPole { t: at, .. } => {
+            ("near_pole", vec![("t", t(*at))])
+        }
+        Error::NonFinite { name, index, value } => (
+            "not_finite",
+            vec![("name", name.to_string()), ("index", index.to_string()), ("value", value.to_string())],
+        ),
+        Error::NotOnTangentBundle { what, value, tolerance } => (
+            "off_sphere",
+            vec![("what", what.to_string()), ("value", e(*value)), ("tolerance", e(*tolerance))],
+        ),
+        Error::InvalidParameter { name, value, allowed } => (
+            "invalid_parameter",
+            vec![("name", name.to_string()), ("value", format!("{value}")), ("allowed", allowed.to_string())],
+        ),
+        _ => return None,
+    })
 }
 
 /// A 3-vector from a numpy array of 3 components (m or m/s); `name` names it in the error.

@@ -63,6 +63,22 @@ describe('HTTP error answers', () => {
     setLanguage('en');
     expect(httpProblem(busy, 'HTTP 503')).toBe(busy.detail);
   });
+
+  it("the core's common refusals (diverged, pole, off the sphere, a bad parameter) in the page language", () => {
+    const diverged = { detail: 'the solution became non-finite …', key: 'diverged', values: { t: '20', method: 'rk4', dt: '1.000e1' } };
+    const pole = { detail: 'x', key: 'near_pole', values: { t: '0.5' } };
+    const length = { detail: 'x', key: 'invalid_parameter', values: { name: 'length', value: '-1', allowed: 'a number in [1e-6, 1e4] m' } };
+    setLanguage('de');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('die Lösung wurde bei t = 20 s mit dem Verfahren rk4 unendlich (dt = 1.000e1 s): dt verkleinern');
+    expect(httpProblem(pole, 'HTTP 422')).toContain('bei t = 0.5 s einen Pol');
+    expect(httpProblem(length, 'HTTP 422')).toMatch(/^Länge.* = -1 ist nicht erlaubt/);
+    setLanguage('fr');
+    expect(httpProblem(diverged, 'HTTP 422')).toContain('à t = 20 s avec la méthode rk4');
+    expect(httpProblem({ detail: 'x', key: 'off_sphere', values: { what: '(|x| - l)/l', value: '-2.929e-1', tolerance: '1.000e-9' } }, 'HTTP 422')).toContain('pas sur la sphère');
+    expect(httpProblem({ detail: 'x', key: 'step_too_small', values: { t: '3', h: '1e-15' } }, 'HTTP 422')).toContain('trop petit à t = 3 s');
+    setLanguage('en');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('the solution became non-finite at t = 20 s with method rk4 (dt = 1.000e1 s): reduce dt');
+  });
 });
 
 describe('scenario titles', () => {

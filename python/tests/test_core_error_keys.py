@@ -1,0 +1,74 @@
+"""The core's common refusals carry a message key (docs/web.md, "Languages"): an ``IntegrationError`` or
+``InvalidInputError`` of a diverged solution, a pole, a state off the sphere or a bad parameter has
+``key`` and ``values`` (``pendulab/server/messages.json``) beside its English words, and the lab server's
+422 answer of such a refusal in an analysis worker is keyed (the page words it in en/de/fr). Times in s,
+step sizes in s, residuals dimensionless."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+import pendulab as pl
+from pendulab.server.app import _unprocessable
+from pendulab.server.notices import MESSAGES, message
+from pendulab.server.worker import WorkInvalid, _keyed
+
+
+def _refusal(run: object) -> BaseException:
+    with pytest.raises((pl.IntegrationError, pl.InvalidInputError)) as e:
+        run()  # type: ignore[operator]
+    return e.value
+
+
+def test_a_diverged_solution_is_keyed_with_time_method_and_step() -> None:
+    p = pl.Pendulum()
+    e = _refusal(
+        lambda: pl.simulate(p, p.state_from_angles(1.0, 0, 0, 0), t_end=100.0, dt=10.0, method="rk4")
+    )
+    assert isinstance(e, pl.IntegrationError)
+    assert (e.key, e.values) == ("diverged", {"t": "20", "method": "rk4", "dt": "1.000e1"})  # type: ignore[attr-defined]
+    assert "t = 20 s" in str(e)  # the English words are unchanged
+
+
+def test_a_pole_of_the_angle_equations_is_keyed_with_its_time() -> None:
+    p = pl.Pendulum()
+    e = _refusal(lambda: pl.simulate(p, p.state_from_angles(1e-9, 0, 0, 5.0), t_end=1.0, method="rk4_angles"))
+    assert (e.key, e.values) == ("near_pole", {"t": "0"})  # type: ignore[attr-defined]
+
+
+def test_a_start_off_the_sphere_is_keyed_with_its_residual() -> None:
+    p = pl.Pendulum()
+    e = _refusal(lambda: pl.simulate(p, pl.State(np.array([0.5, 0, -0.5]), np.zeros(3)), t_end=1.0))
+    assert e.key == "off_sphere"  # type: ignore[attr-defined]
+    assert e.values == {"what": "(|x| - l)/l", "value": "-2.929e-1", "tolerance": "1.000e-9"}  # type: ignore[attr-defined]
+
+
+def test_a_parameter_out_of_range_is_keyed_with_name_value_and_range() -> None:
+    p = pl.Pendulum()
+    e = _refusal(
+        lambda: pl.simulate(p, p.state_from_angles(1.0, 0, 0, 0), t_end=1.0, method="dop853", rtol=-1.0)
+    )
+    assert e.key == "invalid_parameter"  # type: ignore[attr-defined]
+    assert e.values["name"] == "rtol" and e.values["value"] == "-1"  # type: ignore[attr-defined]
+    assert "[1e-15, 1]" in e.values["allowed"]  # type: ignore[attr-defined]
+
+
+def test_a_keyed_core_refusal_answers_422_with_key_and_values() -> None:
+    p = pl.Pendulum()
+    e = _refusal(
+        lambda: pl.simulate(p, p.state_from_angles(1.0, 0, 0, 0), t_end=100.0, dt=10.0, method="rk4")
+    )
+    key, values = _keyed(e)  # as the analysis worker passes it on
+    answer = _unprocessable(WorkInvalid(str(e), key, values))
+    body = json.loads(bytes(answer.body))
+    assert answer.status_code == 422
+    assert body == {"detail": " ".join(str(e).split()), "key": "diverged", "values": values}
+    assert "{" not in message(body["key"], **body["values"])  # every placeholder filled
+
+
+def test_every_core_key_has_english_words() -> None:
+    for key in ("step_too_small", "diverged", "near_pole", "not_finite", "off_sphere", "invalid_parameter"):
+        assert key in MESSAGES
