@@ -397,7 +397,7 @@ export const DE: Words = {
   'server.not_finite': '{name}[{index}] = {value} ist keine endliche Zahl',
   'server.off_sphere': 'der Start liegt nicht auf der Kugel: {what} = {value} überschreitet die Toleranz {tolerance}',
   'server.invalid_parameter': '{name} = {value} ist nicht erlaubt: {allowed}',
-  'server.internal_error': 'interner Fehler des Servers: {detail}',
+  'server.internal_error': 'interner Fehler des Servers (ein Fehler der Software: bitte melden); Details (englisch): {detail}',
   'server.busy': 'beschäftigt: {waiting} Berechnungen warten schon; gleich noch einmal versuchen',
   'server.work_timeout': 'die Berechnung dauerte länger als {seconds} s und wurde abgebrochen; weniger Daten, weniger Parameter oder ein einfacheres Modell versuchen',
   'server.not_json': 'die Anfrage ist kein JSON',

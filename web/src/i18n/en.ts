@@ -395,7 +395,7 @@ export const EN = {
   'server.not_finite': '{name}[{index}] = {value} is not a finite number',
   'server.off_sphere': 'the start is not on the sphere: {what} = {value} exceeds the tolerance {tolerance}',
   'server.invalid_parameter': '{name} = {value} is not allowed: {allowed}',
-  'server.internal_error': 'internal error of the server: {detail}',
+  'server.internal_error': 'internal error of the server (a fault of the software: please report it); details: {detail}',
   'server.busy': 'busy: {waiting} computations are waiting; try again in a moment',
   'server.work_timeout': 'the computation took longer than {seconds} s and was stopped; try fewer data, fewer parameters or a simpler model',
   'server.not_json': 'the request is not JSON',

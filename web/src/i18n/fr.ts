@@ -397,7 +397,7 @@ export const FR: Words = {
   'server.not_finite': '{name}[{index}] = {value} n’est pas un nombre fini',
   'server.off_sphere': 'le départ n’est pas sur la sphère : {what} = {value} dépasse la tolérance {tolerance}',
   'server.invalid_parameter': '{name} = {value} n’est pas permis : {allowed}',
-  'server.internal_error': 'erreur interne du serveur : {detail}',
+  'server.internal_error': 'erreur interne du serveur (un défaut du logiciel : merci de le signaler) ; détails (en anglais) : {detail}',
   'server.busy': 'occupé : {waiting} calculs attendent déjà ; réessayer dans un instant',
   'server.work_timeout': 'le calcul a duré plus de {seconds} s et a été arrêté ; essayer moins de données, moins de paramètres ou un modèle plus simple',
   'server.not_json': 'la requête n’est pas du JSON',

@@ -76,6 +76,10 @@ describe('HTTP error answers', () => {
     expect(httpProblem(diverged, 'HTTP 422')).toContain('à t = 20 s avec la méthode rk4');
     expect(httpProblem({ detail: 'x', key: 'off_sphere', values: { what: '(|x| - l)/l', value: '-2.929e-1', tolerance: '1.000e-9' } }, 'HTTP 422')).toContain('pas sur la sphère');
     expect(httpProblem({ detail: 'x', key: 'step_too_small', values: { t: '3', h: '1e-15' } }, 'HTTP 422')).toContain('trop petit à t = 3 s');
+    const fault = { detail: 'x', key: 'internal_error', values: { detail: "KeyError: 'q'" } };
+    expect(httpProblem(fault, 'HTTP 500')).toBe("erreur interne du serveur (un défaut du logiciel : merci de le signaler) ; détails (en anglais) : KeyError: 'q'");
+    setLanguage('de');
+    expect(httpProblem(fault, 'HTTP 500')).toMatch(/^interner Fehler des Servers .*bitte melden\); Details \(englisch\): KeyError: 'q'$/);
     setLanguage('en');
     expect(httpProblem(diverged, 'HTTP 422')).toBe('the solution became non-finite at t = 20 s with method rk4 (dt = 1.000e1 s): reduce dt');
   });
