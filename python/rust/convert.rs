@@ -39,7 +39,7 @@ pub(crate) fn to_py(err: Error) -> PyErr {
         | Error::StepSizeUnderflow { .. } => IntegrationError::new_err(err.to_string()),
         _ => InvalidInputError::new_err(err.to_string()),
     };
-    if let Some((key, values)) = error_key(&err) {
+    if let Some((key, values)) = err.key() {
         Python::with_gil(|py| {
             let v = e.value(py);
             let d = PyDict::new(py);
@@ -50,34 +50,6 @@ pub(crate) fn to_py(err: Error) -> PyErr {
         });
     }
     e
-}
-
-/// The message key and values of a core error of a common kind (None: the English words alone).
-fn error_key(err: &Error) -> Option<(&'static str, Vec<(&'static str, String)>)> {
-    let t = |t: f64| format!("{}", (t * 1e4).round() / 1e4);
-    let e = |x: f64| format!("{x:.3e}");
-    Some(match err {
-        Error::StepSizeUnderflow { t: at, h, .. } => ("step_too_small", vec![("t", t(*at)), ("h", e(*h))]),
-        Error::Diverged { t: at, method, dt } => {
-            ("diverged", vec![("t", t(*at)), ("method", method.to_string()), ("dt", e(*dt))])
-        }
-        Error::PoleSingularity { t: at, .. } | Error::ReducedFlowPole { t: at, .. } => {
-            ("near_pole", vec![("t", t(*at))])
-        }
-        Error::NonFinite { name, index, value } => (
-            "not_finite",
-            vec![("name", name.to_string()), ("index", index.to_string()), ("value", value.to_string())],
-        ),
-        Error::NotOnTangentBundle { what, value, tolerance } => (
-            "off_sphere",
-            vec![("what", what.to_string()), ("value", e(*value)), ("tolerance", e(*tolerance))],
-        ),
-        Error::InvalidParameter { name, value, allowed } => (
-            "invalid_parameter",
-            vec![("name", name.to_string()), ("value", format!("{value}")), ("allowed", allowed.to_string())],
-        ),
-        _ => return None,
-    })
 }
 
 /// A 3-vector from a numpy array of 3 components (m or m/s); `name` names it in the error.

@@ -196,6 +196,44 @@ pub enum Error {
     Refused(String),
 }
 
+impl Error {
+    /// The message key and values of an error of a common kind, for a page that words it in its
+    /// language (the lab server's `messages.json`; docs/web.md, "Languages"), or None (the English
+    /// words alone). Times \[s\] to 4 decimals, step sizes \[s\] and residuals in 4 digits, as strings.
+    pub fn key(&self) -> Option<(&'static str, Vec<(&'static str, String)>)> {
+        let t = |t: f64| format!("{}", (t * 1e4).round() / 1e4);
+        let e = |x: f64| format!("{x:.3e}");
+        Some(match self {
+            Error::StepSizeUnderflow { t: at, h, .. } => {
+                ("step_too_small", vec![("t", t(*at)), ("h", e(*h))])
+            }
+            Error::Diverged { t: at, method, dt } => {
+                ("diverged", vec![("t", t(*at)), ("method", method.to_string()), ("dt", e(*dt))])
+            }
+            Error::PoleSingularity { t: at, .. } | Error::ReducedFlowPole { t: at, .. } => {
+                ("near_pole", vec![("t", t(*at))])
+            }
+            Error::NonFinite { name, index, value } => (
+                "not_finite",
+                vec![("name", name.to_string()), ("index", index.to_string()), ("value", value.to_string())],
+            ),
+            Error::NotOnTangentBundle { what, value, tolerance } => (
+                "off_sphere",
+                vec![("what", what.to_string()), ("value", e(*value)), ("tolerance", e(*tolerance))],
+            ),
+            Error::InvalidParameter { name, value, allowed } => (
+                "invalid_parameter",
+                vec![
+                    ("name", name.to_string()),
+                    ("value", format!("{value}")),
+                    ("allowed", allowed.to_string()),
+                ],
+            ),
+            _ => return None,
+        })
+    }
+}
+
 /// What to do after a divergence: a smaller step, and a structure-preserving method unless one is in use.
 fn diverged_advice(method: &str) -> &'static str {
     if method.starts_with("rattle") {

@@ -108,5 +108,8 @@ export function serverWords(n: { message: string; key?: string; values?: Record<
   const values = { ...(n.values ?? {}) };
   if (typeof values.model === 'string') values.model = modelWords(values.model, values.model);
   if (typeof values.name === 'string') values.name = paramWords(values.name, values.name, '')[0];
+  // a stopped integration whose cause the engine keyed (`why`: diverged, step_too_small, …): the cause in words too
+  const why = `server.${String(values.why)}`;
+  if (n.key === 'integration_stopped' && typeof values.why === 'string' && Object.hasOwn(EN, why)) values.detail = t(why as Key, values);
   return t(key as Key, values);
 }

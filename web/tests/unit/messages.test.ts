@@ -80,6 +80,11 @@ describe('HTTP error answers', () => {
     expect(httpProblem(fault, 'HTTP 500')).toBe("erreur interne du serveur (un défaut du logiciel : merci de le signaler) ; détails (en anglais) : KeyError: 'q'");
     setLanguage('de');
     expect(httpProblem(fault, 'HTTP 500')).toMatch(/^interner Fehler des Servers .*bitte melden\); Details \(englisch\): KeyError: 'q'$/);
+    const stopped = { type: 'error' as const, message: 'x', key: 'integration_stopped', values: { detail: 'the solution became…', why: 'diverged', t: '2.5', method: 'rk4', dt: '5.000e-2' } };
+    expect(serverWords(stopped)).toBe('die Rechnung ist stehen geblieben (die Lösung wurde bei t = 2.5 s mit dem Verfahren rk4 unendlich (dt = 5.000e-2 s): dt verkleinern); angehalten');
+    setLanguage('fr');
+    expect(serverWords({ ...stopped, values: { detail: 'step size underflow…', why: 'step_too_small', t: '3', h: '1.000e-15' } })).toContain('(le pas est devenu trop petit à t = 3 s');
+    expect(serverWords({ ...stopped, values: { detail: 'English words', why: 'unknown_kind' } })).toBe('le calcul s’est arrêté (English words) ; en pause');
     setLanguage('en');
     expect(httpProblem(diverged, 'HTTP 422')).toBe('the solution became non-finite at t = 20 s with method rk4 (dt = 1.000e1 s): reduce dt');
   });

@@ -187,7 +187,7 @@ pub struct LiveSession {
     /// Estimate the ideal pendulum's error from the exact solution.
     pub exact_error: bool,
     clock: f64,
-    stop: Option<String>,
+    stop: Option<Error>,
     start: State,
     start_length: f64,
     slicer: Slicer,
@@ -356,7 +356,7 @@ impl LiveSession {
         self.apply_inner(cmd).map_err(|e| match e {
             Error::Diverged { .. } | Error::StepSizeUnderflow { .. } | Error::PoleSingularity { .. } => {
                 self.paused = true;
-                self.stop = Some(e.to_string());
+                self.stop = Some(e.clone());
                 Error::Refused(format!("integration stopped: {e}; paused"))
             }
             other => other,
@@ -477,7 +477,7 @@ impl LiveSession {
             Err(e) => {
                 self.pending_steps = 0;
                 self.paused = true;
-                self.stop = Some(e.to_string());
+                self.stop = Some(e.clone());
                 return Err(Error::Refused(format!(
                     "integration stopped at t = {} s: {e}; paused",
                     self.stepper.t()
@@ -535,7 +535,7 @@ impl LiveSession {
         })();
         if let Err(e) = result {
             self.paused = true;
-            self.stop = Some(e.to_string());
+            self.stop = Some(e.clone());
             return Err(Error::Refused(format!(
                 "integration stopped at t = {} s: {e}; paused",
                 self.stepper.t()
@@ -676,11 +676,20 @@ impl LiveSession {
     }
 
     /// The notice of an error of a command, a step or the advance: keyed `integration_stopped` (with
-    /// the integrator's words as `detail`) when the integration stopped, else plain.
+    /// the integrator's words as `detail`) when the integration stopped, else plain. When the
+    /// integrator's error is of a common kind ([`Error::key`]), `why` names its key and its values
+    /// are beside `detail` (flat: a page words the detail in its language too).
     fn error_out(&mut self, e: Error, command: Option<&'static str>) -> Out {
         match self.stop.take() {
-            Some(detail) => {
-                Out::Keyed(e.to_string(), command, "integration_stopped", json!({ "detail": detail }))
+            Some(stop) => {
+                let mut values = json!({ "detail": stop.to_string() });
+                if let Some((why, more)) = stop.key() {
+                    values["why"] = json!(why);
+                    for (name, value) in more {
+                        values[name] = json!(value);
+                    }
+                }
+                Out::Keyed(e.to_string(), command, "integration_stopped", values)
             }
             None => Out::Error(e.to_string(), command),
         }
@@ -787,5 +796,34 @@ mod tests {
         assert!(matches!(&out[2], Out::Status(v) if v["paused"] == true) && s.paused && out.len() == 3);
         let mut good = Vec::new();
         assert!(s.finite(vec![s.record()], &mut good) && matches!(&good[..], [Out::Frames(_)]));
+    }
+
+    /// A stopped integration's notice carries the integrator's error kind and values beside its words.
+    #[test]
+    fn a_stopped_integration_names_why_with_its_values() {
+        let p = LivePendulum::new("ideal", 1.0, 1.0, 9.81, &[]).unwrap();
+        let state = p.state_from_angles(1.0, 0.0, 0.0, 2.0).unwrap();
+        let setup = Setup {
+            name: None,
+            title: None,
+            pendulum: p,
+            state,
+            method: Method::Rattle,
+            dt: 1e-3,
+            rtol: 1e-10,
+            atol: 1e-12,
+            t0: 0.0,
+        };
+        let mut s = LiveSession::new(setup).unwrap();
+        let diverged = Error::Diverged { t: 2.5, method: "rk4", dt: 0.05 };
+        s.stop = Some(diverged.clone());
+        let Out::Keyed(_, None, "integration_stopped", values) =
+            s.error_out(Error::Refused("x".into()), None)
+        else {
+            panic!("not keyed")
+        };
+        let expected = json!({ "detail": diverged.to_string(), "why": "diverged", "t": "2.5", "method": "rk4", "dt": "5.000e-2" });
+        assert_eq!(values, expected);
+        assert!(matches!(s.error_out(Error::Refused("x".into()), None), Out::Error(..)), "once");
     }
 }
