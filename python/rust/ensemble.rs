@@ -8,7 +8,7 @@ use crate::convert::{to_py, InvalidInputError};
 use crate::spec::RunOptions;
 use numpy::ndarray::{Array1, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
-use pendulab_core::ensemble::{check, run_with, EnsembleResult, EnsembleSave, Extras};
+use pendulab_core::ensemble::{check, run, EnsembleResult, EnsembleSave, RattleSettings};
 use pendulab_core::{DVec3, State};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -71,12 +71,19 @@ impl EnsembleRun {
             (options.solve.dt, options.save_every.map_or(EnsembleSave::Final, EnsembleSave::Every));
         let total = n_steps.saturating_mul(starts.len() as u64);
         // Validate before starting the thread, so bad input raises here and not later.
-        let arithmetic = options.arithmetic;
-        let extras = Extras { damping: &damping, settle_angle, arithmetic };
-        check(&starts, &length, &g, &extras, dt, n_steps, save).map_err(to_py)?;
+        // the run's settings but the per-trajectory arrays (owned by the thread below)
+        let rest = RattleSettings {
+            settle_angle,
+            save,
+            with_summary: summary,
+            arithmetic: options.arithmetic,
+            ..RattleSettings::new(&[], &[], dt, n_steps)
+        };
+        check(&starts, &RattleSettings { length: &length, g: &g, damping: &damping, ..rest })
+            .map_err(to_py)?;
         let run = Background::spawn(move |progress, cancel| {
-            let extras = Extras { damping: &damping, settle_angle, arithmetic };
-            run_with(&starts, &length, &g, &extras, dt, n_steps, save, summary, progress, cancel)
+            let settings = RattleSettings { length: &length, g: &g, damping: &damping, ..rest };
+            run(&starts, &settings, progress, cancel)
         });
         Ok(Self { total, run })
     }

@@ -12,8 +12,9 @@ use pendulab_core::model::registry::AnyModel;
 use pendulab_core::model::StringPendulum;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
 use pendulab_core::{DVec3, Method, Model, Params, SaveAt, SolveOptions};
+use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::PyTuple;
+use pyo3::types::{PyDict, PyTuple};
 
 /// The model a spec holds.
 #[derive(Clone)]
@@ -201,57 +202,141 @@ impl RunOptions {
     }
 }
 
+/// The keywords `RunOptions` takes, in the order of its signature (`_core.pyi`).
+const KEYWORDS: [&str; 14] = [
+    "t0",
+    "t_end",
+    "method",
+    "dt",
+    "rtol",
+    "atol",
+    "project",
+    "conserve",
+    "save_every",
+    "save_times",
+    "max_saved_bytes",
+    "order",
+    "max_steps",
+    "arithmetic",
+];
+
+/// `RunOptions`' keywords as given (None: not given or None), read once from the call's keywords.
+#[derive(Default)]
+struct Keywords<'py> {
+    t0: Option<f64>,
+    t_end: Option<f64>,
+    method: Option<String>,
+    dt: Option<f64>,
+    rtol: Option<f64>,
+    atol: Option<f64>,
+    project: Option<bool>,
+    conserve: Option<bool>,
+    save_every: Option<u64>,
+    save_times: Option<PyReadonlyArray1<'py, f64>>,
+    max_saved_bytes: Option<u64>,
+    order: Option<u32>,
+    max_steps: Option<u64>,
+    arithmetic: Option<String>,
+}
+
+impl<'py> Keywords<'py> {
+    /// Reads `given`; an unknown keyword or a value of the wrong type is a TypeError naming it (as
+    /// for a Python function; t0, conserve, order and arithmetic take no None).
+    fn read(given: Option<&Bound<'py, PyDict>>) -> PyResult<Self> {
+        let mut k = Self::default();
+        for (key, value) in given.map(|d| d.iter()).into_iter().flatten() {
+            let name: String = key.extract()?;
+            let v = &value;
+            match name.as_str() {
+                "t0" => k.t0 = Some(keyword(v, "t0")?),
+                "t_end" => k.t_end = optional(v, "t_end")?,
+                "method" => k.method = optional(v, "method")?,
+                "dt" => k.dt = optional(v, "dt")?,
+                "rtol" => k.rtol = optional(v, "rtol")?,
+                "atol" => k.atol = optional(v, "atol")?,
+                "project" => k.project = optional(v, "project")?,
+                "conserve" => k.conserve = Some(keyword(v, "conserve")?),
+                "save_every" => k.save_every = optional(v, "save_every")?,
+                "save_times" => k.save_times = optional(v, "save_times")?,
+                "max_saved_bytes" => k.max_saved_bytes = optional(v, "max_saved_bytes")?,
+                "order" => k.order = Some(keyword(v, "order")?),
+                "max_steps" => k.max_steps = optional(v, "max_steps")?,
+                "arithmetic" => k.arithmetic = Some(keyword(v, "arithmetic")?),
+                _ => {
+                    return Err(PyTypeError::new_err(format!(
+                        "RunOptions() got an unexpected keyword argument '{name}' (it takes {})",
+                        KEYWORDS.join(", ")
+                    )))
+                }
+            }
+        }
+        Ok(k)
+    }
+}
+
+/// The value of keyword `name`; a TypeError names the keyword (other errors, e.g. OverflowError for
+/// a negative count, pass as they are).
+fn keyword<'py, T: FromPyObject<'py>>(v: &Bound<'py, PyAny>, name: &str) -> PyResult<T> {
+    v.extract().map_err(|e| {
+        if e.is_instance_of::<PyTypeError>(v.py()) {
+            PyTypeError::new_err(format!("argument '{name}': {}", e.value(v.py())))
+        } else {
+            e
+        }
+    })
+}
+
+/// [`keyword`], None for None.
+fn optional<'py, T: FromPyObject<'py>>(v: &Bound<'py, PyAny>, name: &str) -> PyResult<Option<T>> {
+    if v.is_none() {
+        Ok(None)
+    } else {
+        keyword(v, name).map(Some)
+    }
+}
+
 #[pymethods]
 impl RunOptions {
+    /// Keywords only (see [`KEYWORDS`]); the method's dt, rtol, atol and projection default to the
+    /// core's `SolveOptions`, save_every to 1, max_saved_bytes to the core's cap, arithmetic to
+    /// "unfused".
     #[new]
-    #[pyo3(signature = (*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=false, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None, arithmetic="unfused"))]
-    #[allow(clippy::too_many_arguments)] // keyword-only: the one place the run's options are listed
-    fn new(
-        t0: f64,
-        t_end: Option<f64>,
-        method: Option<&str>,
-        dt: Option<f64>,
-        rtol: Option<f64>,
-        atol: Option<f64>,
-        project: Option<bool>,
-        conserve: bool,
-        save_every: Option<u64>,
-        save_times: Option<PyReadonlyArray1<'_, f64>>,
-        max_saved_bytes: Option<u64>,
-        order: u32,
-        max_steps: Option<u64>,
-        arithmetic: &str,
-    ) -> PyResult<Self> {
+    #[pyo3(signature = (**keywords))]
+    #[pyo3(
+        text_signature = "(*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=False, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None, arithmetic='unfused')"
+    )]
+    fn new(keywords: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
+        let k = Keywords::read(keywords)?;
         let d = SolveOptions::default();
         let solve = SolveOptions {
-            method: match method {
+            method: match &k.method {
                 Some(name) => Method::from_name(name).map_err(to_py)?,
                 None => d.method,
             },
-            dt: dt.unwrap_or(d.dt),
-            rtol: rtol.unwrap_or(d.rtol),
-            atol: atol.unwrap_or(d.atol),
-            project: project.unwrap_or(d.project),
+            dt: k.dt.unwrap_or(d.dt),
+            rtol: k.rtol.unwrap_or(d.rtol),
+            atol: k.atol.unwrap_or(d.atol),
+            project: k.project.unwrap_or(d.project),
         };
-        let save = match (save_every, save_times) {
+        let save = match (k.save_every, k.save_times) {
             (Some(_), Some(_)) => {
                 return Err(InvalidInputError::new_err("give either save_every or save_times, not both"))
             }
             (_, Some(ts)) => SaveAt::Times(ts.as_array().to_vec()),
             (n, None) => SaveAt::Every(n.unwrap_or(1)),
         };
-        let max_saved_bytes = max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES);
-        let arithmetic = Arithmetic::from_name(arithmetic).map_err(to_py)?;
+        let arithmetic =
+            Arithmetic::from_name(k.arithmetic.as_deref().unwrap_or("unfused")).map_err(to_py)?;
         Ok(Self {
-            t0,
-            t_end,
+            t0: k.t0.unwrap_or(0.0),
+            t_end: k.t_end,
             solve,
-            conserve,
+            conserve: k.conserve.unwrap_or(false),
             save,
-            save_every,
-            max_saved_bytes,
-            order,
-            max_steps,
+            save_every: k.save_every,
+            max_saved_bytes: k.max_saved_bytes.unwrap_or(DEFAULT_MAX_SAVED_BYTES),
+            order: k.order.unwrap_or(2),
+            max_steps: k.max_steps,
             arithmetic,
         })
     }

@@ -7,7 +7,9 @@ use crate::getters::pymethods_with_getters;
 use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
 use numpy::ndarray::{Array1, Array2};
 use numpy::{IntoPyArray, PyArray1};
-use pendulab_core::string_run::{EventKind, StringEvent, StringRun, StringRunner, StringStepper};
+use pendulab_core::string_run::{
+    EventKind, StringEvent, StringRun, StringRunner, StringSettings, StringStepper,
+};
 use pendulab_core::{SaveAt, State};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -41,10 +43,13 @@ pub fn string_simulate<'py>(
             "string_simulate saves every n-th step: give save_every, not save_times",
         ));
     };
-    let (method, dt, limit, t_end) = (o.solve.method, o.solve.dt, o.max_saved_bytes, o.t_end()?);
-    let run = py
-        .allow_threads(|| sp.simulate(o.t0, State { x, v }, t_end, method, dt, save_every, limit))
-        .map_err(to_py)?;
+    let settings = StringSettings {
+        save_every,
+        max_saved_bytes: o.max_saved_bytes,
+        ..StringSettings::new(o.solve.method, o.solve.dt)
+    };
+    let t_end = o.t_end()?;
+    let run = py.allow_threads(|| sp.simulate(o.t0, State { x, v }, t_end, &settings)).map_err(to_py)?;
     run_dict(py, run)
 }
 

@@ -5,7 +5,7 @@
 //! restricted to the baseline instruction set (`isa::set_baseline_only`: what a CPU without AVX2/FMA runs).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
-use pendulab_core::ensemble::{run_with, EnsembleSave, Extras};
+use pendulab_core::ensemble::{run, RattleSettings};
 use pendulab_core::{isa, IdealPendulum, Model, State};
 use std::sync::atomic::{AtomicBool, AtomicU64};
 
@@ -20,33 +20,22 @@ fn bench(c: &mut Criterion) {
     g.throughput(Throughput::Elements(n as u64 * steps));
     g.sample_size(10);
     let all = rayon::current_num_threads();
-    let damped = Extras { damping: &[0.1], settle_angle: Some(0.05), ..Extras::default() };
+    let plain = RattleSettings::new(&[1.0], &[9.81], 1e-3, steps);
+    let damped = RattleSettings { damping: &[0.1], settle_angle: Some(0.05), ..plain };
     let cases = [
-        ("1_threads".to_string(), 1, Extras::default(), false),
-        (format!("{all}_threads"), all, Extras::default(), false),
+        ("1_threads".to_string(), 1, plain, false),
+        (format!("{all}_threads"), all, plain, false),
         (format!("{all}_threads_damped_settle"), all, damped, false),
-        ("1_threads_baseline_level".to_string(), 1, Extras::default(), true),
+        ("1_threads_baseline_level".to_string(), 1, plain, true),
     ];
-    for (name, threads, extras, baseline) in cases {
+    for (name, threads, settings, baseline) in cases {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
         isa::set_baseline_only(baseline);
         g.bench_function(name, |b| {
             b.iter(|| {
                 pool.install(|| {
                     let (p, cancel) = (AtomicU64::new(0), AtomicBool::new(false));
-                    run_with(
-                        black_box(&starts),
-                        &[1.0],
-                        &[9.81],
-                        &extras,
-                        1e-3,
-                        steps,
-                        EnsembleSave::Final,
-                        false,
-                        &p,
-                        &cancel,
-                    )
-                    .unwrap()
+                    run(black_box(&starts), &settings, &p, &cancel).unwrap()
                 })
             })
         });

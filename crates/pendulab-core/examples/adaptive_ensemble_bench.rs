@@ -18,32 +18,9 @@ use pendulab_core::model::AnyModel;
 use pendulab_core::{Method, Model, Params, SolveOptions, State};
 use std::sync::atomic::{AtomicBool, AtomicU64};
 use std::time::Instant;
+use timing::cpu_seconds;
 
-/// CPU time [s] used by this process so far, all its threads (Linux; 0 elsewhere).
-#[cfg(target_os = "linux")]
-fn cpu_seconds() -> f64 {
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: i64,
-        tv_nsec: i64,
-    }
-    extern "C" {
-        fn clock_gettime(clock: i32, tp: *mut Timespec) -> i32;
-    }
-    let mut ts = Timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes one timespec (two 64-bit fields on 64-bit Linux) into `ts`.
-    let rc = unsafe { clock_gettime(2, &mut ts) };
-    if rc == 0 {
-        ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-    } else {
-        0.0
-    }
-}
-
-#[cfg(not(target_os = "linux"))]
-fn cpu_seconds() -> f64 {
-    0.0
-}
+mod timing;
 
 fn median(mut a: Vec<f64>) -> f64 {
     a.sort_by(f64::total_cmp);

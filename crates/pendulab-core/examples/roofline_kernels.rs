@@ -8,7 +8,7 @@
 //!   atol = 10⁻¹² (accepted steps; rejected ones are in the evaluations per step);
 //! - `ensemble_1_thread`, `ensemble_2_threads`: trajectory-steps/s of `ensemble::run`, 4096 starts
 //!   (θ₀ from 0.1 to 2.9 rad, φ̇₀ = 1 rad/s) × `steps` steps of 1 ms, final states only; the same
-//!   with the opt-in fused arithmetic (`Extras::arithmetic`): `ensemble_1_thread_fused`,
+//!   with the opt-in fused arithmetic (`RattleSettings::arithmetic`): `ensemble_1_thread_fused`,
 //!   `ensemble_2_threads_fused` (the two arithmetics timed alternately);
 //! - `exact_states_per_s`: `ExactSolution::states_at` on one thread, 10⁵ times over 100 s;
 //! - `isa`: the instruction-set level the hot loops ran at (`isa::selected`).
@@ -16,41 +16,16 @@
 //! Run: `cargo run --release -p pendulab-core --example roofline_kernels -- [reps] [steps]`.
 //! SI units throughout.
 
-use pendulab_core::ensemble::{run_with, EnsembleSave, Extras};
+use pendulab_core::ensemble::{run, RattleSettings};
 use pendulab_core::exact::ExactSolution;
 use pendulab_core::integrate::rattle_kernel::Arithmetic;
 use pendulab_core::{isa, IdealPendulum, Method, Model, SolveOptions, State, Stepper};
 use std::hint::black_box;
 use std::sync::atomic::{AtomicBool, AtomicU64};
 use std::time::Instant;
+use timing::cpu_seconds;
 
-/// CPU time [s] used by this process so far, all its threads (`CLOCK_PROCESS_CPUTIME_ID`; Linux
-/// only, 0 elsewhere).
-#[cfg(target_os = "linux")]
-fn cpu_seconds() -> f64 {
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: i64,
-        tv_nsec: i64,
-    }
-    extern "C" {
-        fn clock_gettime(clock: i32, tp: *mut Timespec) -> i32;
-    }
-    const CLOCK_PROCESS_CPUTIME_ID: i32 = 2;
-    let mut ts = Timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: clock_gettime writes one timespec (two 64-bit fields on 64-bit Linux) into `ts`.
-    let rc = unsafe { clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &mut ts) };
-    if rc == 0 {
-        ts.tv_sec as f64 + ts.tv_nsec as f64 * 1e-9
-    } else {
-        0.0
-    }
-}
-
-#[cfg(not(target_os = "linux"))]
-fn cpu_seconds() -> f64 {
-    0.0
-}
+mod timing;
 
 /// The least wall time [s] of `reps` calls of `f`, and the least CPU time [s] (all threads; on a
 /// loaded machine the CPU time is what the work costs, the wall time includes waiting for a core).
@@ -101,9 +76,8 @@ fn main() {
         let once = |arithmetic: Arithmetic| {
             pool.install(|| {
                 let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-                let extras = Extras { arithmetic, ..Extras::default() };
-                let save = EnsembleSave::Final;
-                let r = run_with(&starts, &[1.0], &[9.81], &extras, 1e-3, steps, save, false, &p, &c);
+                let set = RattleSettings { arithmetic, ..RattleSettings::new(&[1.0], &[9.81], 1e-3, steps) };
+                let r = run(&starts, &set, &p, &c);
                 black_box(r.unwrap());
             })
         };

@@ -2,7 +2,7 @@
 //! (same operations, so bit-for-bit), per-trajectory l and g, saving rules, summaries, cancellation
 //! and bad input. SI units; ideal pendulum.
 
-use pendulab_core::ensemble::{run, EnsembleSave, LANES, TILE};
+use pendulab_core::ensemble::{run, EnsembleSave, RattleSettings, LANES, TILE};
 use pendulab_core::integrate::rattle_kernel::{PositionQuadratic, Unfused};
 use pendulab_core::model::energy;
 use pendulab_core::DVec3;
@@ -28,7 +28,17 @@ fn every_trajectory_matches_the_single_path_bit_for_bit() {
     // rescale starts onto each length
     let s: Vec<State> = s.iter().zip(&lengths).map(|(st, &l)| State { x: st.x * l, v: st.v * l }).collect();
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let res = run(&s, &lengths, &gs, 1e-3, 3000, EnsembleSave::Every(1000), true, &p, &c).unwrap();
+    let res = run(
+        &s,
+        &RattleSettings {
+            save: EnsembleSave::Every(1000),
+            with_summary: true,
+            ..RattleSettings::new(&lengths, &gs, 1e-3, 3000)
+        },
+        &p,
+        &c,
+    )
+    .unwrap();
     assert_eq!(res.t, vec![0.0, 1.0, 2.0, 3.0]);
     assert_eq!(p.load(Ordering::Relaxed), 3000 * n as u64);
     for k in 0..n {
@@ -66,7 +76,7 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
     let mixed = s.chunks(TILE).any(|t| t.iter().any(in_series) && !t.iter().all(in_series));
     assert!(mixed, "no tile of {TILE} lanes mixes the series and the closed form");
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let res = run(&s, &[1.0], &[9.81], dt, 50, EnsembleSave::Final, false, &p, &c).unwrap();
+    let res = run(&s, &RattleSettings::new(&[1.0], &[9.81], dt, 50), &p, &c).unwrap();
     let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };
     for (k, start) in s.iter().enumerate() {
         let mut st = Stepper::new(m, 0.0, *start, &opts).unwrap();
@@ -85,7 +95,13 @@ fn crossings_count_passages_through_the_pivot_plane() {
         speeds.iter().map(|&w| State::from_angles(m.params(), 0.0, 0.0, w, 0.0).unwrap()).collect();
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
     let steps = 10_000;
-    let res = run(&s, &[1.0], &[9.81], 1e-3, steps, EnsembleSave::Final, true, &p, &c).unwrap();
+    let res = run(
+        &s,
+        &RattleSettings { with_summary: true, ..RattleSettings::new(&[1.0], &[9.81], 1e-3, steps) },
+        &p,
+        &c,
+    )
+    .unwrap();
     let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..SolveOptions::default() };
     for (k, summary) in res.summary.unwrap().iter().enumerate() {
         // the same count along the single path (same numbers, bit for bit)
@@ -116,15 +132,24 @@ fn crossings_count_passages_through_the_pivot_plane() {
 fn final_only_and_cancellation() {
     let s = starts(100, 1.0);
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let res = run(&s, &[1.0], &[9.81], 1e-3, 2500, EnsembleSave::Final, false, &p, &c).unwrap();
+    let res = run(&s, &RattleSettings::new(&[1.0], &[9.81], 1e-3, 2500), &p, &c).unwrap();
     assert_eq!(res.t, vec![0.0, 2.5]);
     assert!(res.len() == 100 && res.states.len() == 200 && res.summary.is_none() && !res.cancelled);
     c.store(true, Ordering::Relaxed);
-    let res = run(&s, &[1.0], &[9.81], 1e-3, 1_000_000, EnsembleSave::Final, false, &p, &c).unwrap();
+    let res = run(&s, &RattleSettings::new(&[1.0], &[9.81], 1e-3, 1_000_000), &p, &c).unwrap();
     assert!(res.cancelled && res.steps < 1_000_000);
     // cancelled while saving every 100 steps: each block stops after its first sample, and every
     // trajectory keeps the samples all reached (the flat result compacted), with the single path's bits
-    let res = run(&s, &[1.0], &[9.81], 1e-3, 1_000_000, EnsembleSave::Every(100), false, &p, &c).unwrap();
+    let res = run(
+        &s,
+        &RattleSettings {
+            save: EnsembleSave::Every(100),
+            ..RattleSettings::new(&[1.0], &[9.81], 1e-3, 1_000_000)
+        },
+        &p,
+        &c,
+    )
+    .unwrap();
     assert!(res.cancelled && res.t == vec![0.0, 0.1] && res.len() == 100 && res.states.len() == 200);
     let m = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
     let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..SolveOptions::default() };
@@ -142,18 +167,21 @@ fn bad_input_is_named() {
     let e = |r: Result<_, pendulab_core::Error>| {
         r.map(|_: pendulab_core::ensemble::EnsembleResult| ()).unwrap_err().to_string()
     };
-    assert!(e(run(&s, &[1.0, 2.0], &[9.81], 1e-3, 10, EnsembleSave::Final, false, &p, &c)).contains("length"));
-    assert!(e(run(&s, &[1.0], &[9.81], -1.0, 10, EnsembleSave::Final, false, &p, &c)).contains("dt"));
-    assert!(
-        e(run(&s, &[1.0], &[9.81], 1e-3, 10, EnsembleSave::Every(0), false, &p, &c)).contains("save_every")
-    );
-    assert!(e(run(&s, &[2.0], &[9.81], 1e-3, 10, EnsembleSave::Final, false, &p, &c)).contains("TS"));
-    assert!(e(run(&s, &[1.0], &[9.81], 50.0, 10, EnsembleSave::Final, false, &p, &c)).contains("non-finite"));
+    assert!(e(run(&s, &RattleSettings::new(&[1.0, 2.0], &[9.81], 1e-3, 10), &p, &c)).contains("length"));
+    assert!(e(run(&s, &RattleSettings::new(&[1.0], &[9.81], -1.0, 10), &p, &c)).contains("dt"));
+    assert!(e(run(
+        &s,
+        &RattleSettings { save: EnsembleSave::Every(0), ..RattleSettings::new(&[1.0], &[9.81], 1e-3, 10) },
+        &p,
+        &c
+    ))
+    .contains("save_every"));
+    assert!(e(run(&s, &RattleSettings::new(&[2.0], &[9.81], 1e-3, 10), &p, &c)).contains("TS"));
+    assert!(e(run(&s, &RattleSettings::new(&[1.0], &[9.81], 50.0, 10), &p, &c)).contains("non-finite"));
 }
 
 #[test]
 fn damped_trajectories_match_the_damped_model_bit_for_bit() {
-    use pendulab_core::ensemble::{run_with, Extras};
     use pendulab_core::model::AnyModel;
     use pendulab_core::Params;
     let n = LANES + 5;
@@ -162,9 +190,13 @@ fn damped_trajectories_match_the_damped_model_bit_for_bit() {
     let damping: Vec<f64> =
         (0..n).map(|k| if k % 3 == 0 { 0.0 } else { 0.05 * k as f64 / n as f64 }).collect();
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let extras = Extras { damping: &damping, settle_angle: None, ..Extras::default() };
-    let res =
-        run_with(&s, &[1.0], &[9.81], &extras, 1e-3, 2000, EnsembleSave::Every(500), true, &p, &c).unwrap();
+    let set = RattleSettings {
+        damping: &damping,
+        save: EnsembleSave::Every(500),
+        with_summary: true,
+        ..RattleSettings::new(&[1.0], &[9.81], 1e-3, 2000)
+    };
+    let res = run(&s, &set, &p, &c).unwrap();
     for k in 0..n {
         let params = Params::new(1.0, 1.0, 9.81).unwrap();
         let m = AnyModel::build("damped", params, &[("damping", damping[k])]).unwrap();
@@ -189,15 +221,19 @@ fn linear_sway(theta0: f64, c: f64, omega0: f64, t: f64) -> f64 {
 
 #[test]
 fn settle_time_of_a_small_damped_swing_matches_linear_theory() {
-    use pendulab_core::ensemble::{run_with, Extras};
     let (g, l, c, theta_s, dt) = (9.81, 1.0, 0.2, 0.003, 1e-3);
     let thetas = [0.01, 0.007, 0.002];
     let p0 = IdealPendulum::new(l, 1.0, g).unwrap();
     let s: Vec<State> =
         thetas.iter().map(|&th| State::from_angles(p0.params(), th, 0.4, 0.0, 0.0).unwrap()).collect();
     let (p, cn) = (AtomicU64::new(0), AtomicBool::new(false));
-    let extras = Extras { damping: &[c], settle_angle: Some(theta_s), ..Extras::default() };
-    let res = run_with(&s, &[l], &[g], &extras, dt, 40_000, EnsembleSave::Final, false, &p, &cn).unwrap();
+    let (ls, gs, cs) = ([l], [g], [c]);
+    let set = RattleSettings {
+        damping: &cs,
+        settle_angle: Some(theta_s),
+        ..RattleSettings::new(&ls, &gs, dt, 40_000)
+    };
+    let res = run(&s, &set, &p, &cn).unwrap();
     let settle = res.settle_time.unwrap();
     for (k, &th0) in thetas.iter().enumerate() {
         let omega0 = (g / l).sqrt();
@@ -219,33 +255,29 @@ fn settle_time_of_a_small_damped_swing_matches_linear_theory() {
     }
     assert!(settle[0] > 10.0, "the damped swing must take a while to settle: {}", settle[0]);
     // undamped: a swing outside the band never settles; one inside is settled from the start
-    let extras = Extras { damping: &[], settle_angle: Some(theta_s), ..Extras::default() };
-    let res = run_with(&s, &[l], &[g], &extras, dt, 5000, EnsembleSave::Final, false, &p, &cn).unwrap();
+    let set = RattleSettings { settle_angle: Some(theta_s), ..RattleSettings::new(&ls, &gs, dt, 5000) };
+    let res = run(&s, &set, &p, &cn).unwrap();
     let settle = res.settle_time.unwrap();
     assert!(settle[0].is_infinite() && settle[2] == 0.0, "{settle:?}");
     // negative g: the stable equilibrium is on top, the sway is measured from there
     let up: Vec<State> = s.iter().map(|st| State { x: -st.x, v: -st.v }).collect();
-    let res = run_with(&up, &[l], &[-g], &extras, dt, 100, EnsembleSave::Final, false, &p, &cn).unwrap();
+    let minus_g = [-g];
+    let set = RattleSettings { settle_angle: Some(theta_s), ..RattleSettings::new(&ls, &minus_g, dt, 100) };
+    let res = run(&up, &set, &p, &cn).unwrap();
     assert_eq!(res.settle_time.unwrap()[2], 0.0);
 }
 
 #[test]
 fn bad_damping_and_settle_angle_are_named() {
-    use pendulab_core::ensemble::{run_with, Extras};
     let s = starts(3, 1.0);
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let go = |extras: Extras<'_>| {
-        run_with(&s, &[1.0], &[9.81], &extras, 1e-3, 10, EnsembleSave::Final, false, &p, &c)
-            .unwrap_err()
-            .to_string()
+    let go = |damping: &[f64], settle_angle: Option<f64>| {
+        let set = RattleSettings { damping, settle_angle, ..RattleSettings::new(&[1.0], &[9.81], 1e-3, 10) };
+        run(&s, &set, &p, &c).unwrap_err().to_string()
     };
-    assert!(go(Extras { damping: &[-0.1], settle_angle: None, ..Extras::default() }).contains("damping"));
-    assert!(go(Extras { damping: &[f64::NAN], settle_angle: None, ..Extras::default() }).contains("damping"));
-    assert!(go(Extras { damping: &[0.1, 0.2], settle_angle: None, ..Extras::default() }).contains("damping"));
-    assert!(
-        go(Extras { damping: &[], settle_angle: Some(0.0), ..Extras::default() }).contains("settle_angle")
-    );
-    assert!(
-        go(Extras { damping: &[], settle_angle: Some(4.0), ..Extras::default() }).contains("settle_angle")
-    );
+    assert!(go(&[-0.1], None).contains("damping"));
+    assert!(go(&[f64::NAN], None).contains("damping"));
+    assert!(go(&[0.1, 0.2], None).contains("damping"));
+    assert!(go(&[], Some(0.0)).contains("settle_angle"));
+    assert!(go(&[], Some(4.0)).contains("settle_angle"));
 }

@@ -7,7 +7,7 @@
 //! rosette-like starts.
 
 use pendulab_core::ensemble::adaptive::{run_adaptive, AdaptiveSettings};
-use pendulab_core::ensemble::{run_with, EnsembleSave, Extras, LANES};
+use pendulab_core::ensemble::{run, EnsembleSave, RattleSettings, LANES};
 use pendulab_core::exact::ExactSolution;
 use pendulab_core::isa;
 use pendulab_core::model::{AnyModel, StringPendulum};
@@ -50,10 +50,15 @@ fn everything() -> Vec<u64> {
     }
     let starts: Vec<State> = (0..LANES + 3).map(|k| start(&params, k % 7)).collect();
     let damping: Vec<f64> = (0..starts.len()).map(|k| 0.01 * (k % 4) as f64).collect();
-    let extras = Extras { damping: &damping, settle_angle: Some(0.3), ..Extras::default() };
+    let set = RattleSettings {
+        damping: &damping,
+        settle_angle: Some(0.3),
+        save: EnsembleSave::Every(500),
+        with_summary: true,
+        ..RattleSettings::new(&[1.3], &[9.81], 1e-3, 1500)
+    };
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let res = run_with(&starts, &[1.3], &[9.81], &extras, 1e-3, 1500, EnsembleSave::Every(500), true, &p, &c)
-        .unwrap();
+    let res = run(&starts, &set, &p, &c).unwrap();
     res.states.iter().for_each(|s| push(&mut out, s));
     for s in res.summary.unwrap() {
         out.extend([s.z.0, s.z.1, s.energy_per_mass.0, s.energy_per_mass.1].map(f64::to_bits));

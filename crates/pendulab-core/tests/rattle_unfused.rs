@@ -9,7 +9,7 @@
 //! the same way against the reference written with it. The test has teeth: each arithmetic's
 //! reference gives other bits than the other's. SI units: \[m\], [m/s], \[s\].
 
-use pendulab_core::ensemble::{run_with, EnsembleSave, Extras};
+use pendulab_core::ensemble::{run, RattleSettings};
 use pendulab_core::integrate::rattle_kernel::Arithmetic;
 use pendulab_core::isa;
 use pendulab_core::Model;
@@ -146,20 +146,9 @@ fn rattle_is_the_reference_of_its_arithmetic_bit_for_bit_at_every_level_and_in_t
             expected.push(want);
         }
         let (progress, cancel) = (AtomicU64::new(0), AtomicBool::new(false));
-        let extras = Extras { arithmetic, ..Extras::default() };
-        let ens = run_with(
-            &starts,
-            &[l],
-            &[g],
-            &extras,
-            h,
-            steps as u64,
-            EnsembleSave::Final,
-            false,
-            &progress,
-            &cancel,
-        )
-        .unwrap();
+        let (ls, gs) = ([l], [g]);
+        let set = RattleSettings { arithmetic, ..RattleSettings::new(&ls, &gs, h, steps as u64) };
+        let ens = run(&starts, &set, &progress, &cancel).unwrap();
         for (k, want) in expected.iter().enumerate() {
             assert_eq!(
                 &state_bits(ens.trajectory(k).last().unwrap()),

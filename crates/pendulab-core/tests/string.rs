@@ -8,7 +8,7 @@ mod common;
 
 use common::rosette;
 use pendulab_core::model::{energy, j3, AnyModel, StringPendulum};
-use pendulab_core::string_run::EventKind;
+use pendulab_core::string_run::{EventKind, StringSettings};
 use pendulab_core::{
     DVec3, Error, IdealPendulum, Method, Model, Params, SaveAt, SolveOptions, State, Stepper,
 };
@@ -29,7 +29,7 @@ fn never_slack_is_the_rod_pendulum_bit_for_bit() {
     let (_, s0) = rosette();
     let sp = string(0.0);
     for method in [Method::Rattle, Method::Rattle4, Method::Rkmk4] {
-        let run = sp.simulate(0.0, s0, 3.0, method, 1e-3, 1, u64::MAX).unwrap();
+        let run = sp.simulate(0.0, s0, 3.0, &StringSettings::new(method, 1e-3)).unwrap();
         assert!(run.events.is_empty() && run.taut.iter().all(|&t| t));
         let rod = IdealPendulum::from_params(*sp.params());
         let opts = SolveOptions { method, dt: 1e-3, ..SolveOptions::default() };
@@ -50,7 +50,7 @@ fn leaves_where_the_tension_vanishes_then_flies_a_parabola_back_to_the_sphere() 
     let sp = string(0.0);
     let s0 = launch((3.5 * G).sqrt());
     let e0 = energy(&sp, &s0);
-    let run = sp.simulate(0.0, s0, 3.0, Method::Rattle8, 1e-3, 1, u64::MAX).unwrap();
+    let run = sp.simulate(0.0, s0, 3.0, &StringSettings::new(Method::Rattle8, 1e-3)).unwrap();
     let leave = run.events[0];
     assert_eq!(leave.kind, EventKind::Slack);
     let z_star = sp.slack_height(e0);
@@ -91,7 +91,7 @@ fn elastic_snaps_keep_the_energy_and_every_event_keeps_j3() {
     let sp = string(1.0);
     let s0 = State::from_angles(sp.params(), 0.2, 0.0, 5.5, 3.0).unwrap();
     let (e0, j0) = (energy(&sp, &s0), j3(&sp, &s0));
-    let run = sp.simulate(0.0, s0, 4.0, Method::Rattle8, 1e-3, 1, u64::MAX).unwrap();
+    let run = sp.simulate(0.0, s0, 4.0, &StringSettings::new(Method::Rattle8, 1e-3)).unwrap();
     let snaps: Vec<_> = run.events.iter().filter(|e| e.kind == EventKind::Taut).collect();
     assert!(snaps.len() >= 3, "{} snaps", snaps.len());
     for ev in &run.events {
@@ -108,7 +108,7 @@ fn elastic_snaps_keep_the_energy_and_every_event_keeps_j3() {
     assert!(worst_e < 1e-11 * e0.abs() && worst_j < 1e-12 * j0.abs());
     // inelastic from the same start: E drops by exactly the sum of the snaps' losses
     let sp0 = string(0.0);
-    let run = sp0.simulate(0.0, s0, 4.0, Method::Rattle8, 1e-3, 1, u64::MAX).unwrap();
+    let run = sp0.simulate(0.0, s0, 4.0, &StringSettings::new(Method::Rattle8, 1e-3)).unwrap();
     let lost: f64 = run.events.iter().map(|e| e.energy_lost).sum();
     let e_end = energy(&sp0, run.states.last().unwrap());
     assert!(lost > 1.0, "lost {lost} J");
@@ -128,15 +128,22 @@ fn bad_input_is_refused() {
     let err = Stepper::new(m, 0.0, s0, &SolveOptions::default()).unwrap_err();
     assert!(matches!(err, Error::HybridModel { .. }) && err.to_string().contains("string"), "{err}");
     let sp = string(0.0);
-    let dop = sp.simulate(0.0, s0, 1.0, Method::Dop853, 1e-3, 1, u64::MAX).unwrap_err();
+    let dop = sp.simulate(0.0, s0, 1.0, &StringSettings::new(Method::Dop853, 1e-3)).unwrap_err();
     assert!(dop.to_string().contains("dop853"), "{dop}");
     let outside = State { x: DVec3::new(0.0, 0.0, -1.1), v: DVec3::ZERO };
-    assert!(sp.simulate(0.0, outside, 1.0, Method::Rattle, 1e-3, 1, u64::MAX).is_err());
-    assert!(sp.simulate(0.0, s0, 1.0, Method::Rattle, 0.0, 1, u64::MAX).is_err());
-    assert!(sp.simulate(0.0, s0, 1.0, Method::Rattle, 1e-3, 0, u64::MAX).is_err());
+    assert!(sp.simulate(0.0, outside, 1.0, &StringSettings::new(Method::Rattle, 1e-3)).is_err());
+    assert!(sp.simulate(0.0, s0, 1.0, &StringSettings::new(Method::Rattle, 0.0)).is_err());
+    assert!(sp
+        .simulate(
+            0.0,
+            s0,
+            1.0,
+            &StringSettings { save_every: 0, ..StringSettings::new(Method::Rattle, 1e-3) }
+        )
+        .is_err());
     // a start inside the sphere, at rest: it falls straight down and snaps at the bottom
     let inside = State { x: DVec3::new(0.0, 0.0, -0.5), v: DVec3::ZERO };
-    let run = sp.simulate(0.0, inside, 1.0, Method::Rattle, 1e-3, 1, u64::MAX).unwrap();
+    let run = sp.simulate(0.0, inside, 1.0, &StringSettings::new(Method::Rattle, 1e-3)).unwrap();
     let snap = run.events[0];
     assert_eq!(snap.kind, EventKind::Taut);
     assert!((snap.t - (2.0 * 0.5 / G).sqrt()).abs() < 1e-15, "{}", snap.t);
@@ -152,7 +159,7 @@ fn partial_restitution_loses_one_minus_e_squared_and_settles_taut() {
     let sp = string(e);
     let s0 = launch((3.5 * G).sqrt());
     let e0 = energy(&sp, &s0);
-    let run = sp.simulate(0.0, s0, 6.0, Method::Rattle8, 1e-3, 1, u64::MAX).unwrap();
+    let run = sp.simulate(0.0, s0, 6.0, &StringSettings::new(Method::Rattle8, 1e-3)).unwrap();
     let snaps: Vec<_> = run.events.iter().filter(|ev| ev.kind == EventKind::Taut).collect();
     assert!(snaps.len() >= 3, "{} snaps", snaps.len());
     for ev in &snaps {
@@ -190,7 +197,7 @@ fn the_incremental_stepper_cut_into_pieces_is_the_one_run_bit_for_bit() {
     let sp = string(1.0);
     let s0 = launch((3.5 * G).sqrt());
     let dt = 1e-3;
-    let run = sp.simulate(0.0, s0, 3.0, Method::Rattle, dt, 1, u64::MAX).unwrap();
+    let run = sp.simulate(0.0, s0, 3.0, &StringSettings::new(Method::Rattle, dt)).unwrap();
     assert!(run.events.len() >= 4, "{} events", run.events.len());
     let mut st = StringStepper::new(sp, 0.0, s0, Method::Rattle, dt).unwrap();
     let (mut k, mut slack_ends, mut events) = (0u64, 0, Vec::new());
@@ -259,7 +266,14 @@ fn a_run_in_chunks_is_the_one_shot_run_bit_for_bit() {
     ] {
         let sp = string(e);
         for save_every in [1u64, 3] {
-            let one = sp.simulate(0.0, s0, 3.0, Method::Rattle, dt, save_every, u64::MAX).unwrap();
+            let one = sp
+                .simulate(
+                    0.0,
+                    s0,
+                    3.0,
+                    &StringSettings { save_every, ..StringSettings::new(Method::Rattle, dt) },
+                )
+                .unwrap();
             assert!(!one.events.is_empty());
             let (t, states, taut) = reference_run(sp, s0, 3.0, Method::Rattle, dt, save_every);
             assert_eq!((&one.t, &one.states, &one.taut), (&t, &states, &taut), "simulate changed");
@@ -302,7 +316,7 @@ fn save_times_are_hit_exactly_on_the_parabola_in_flight_and_as_a_fine_run_when_t
     let sp = string(0.0);
     let s0 = launch((3.5 * G).sqrt());
     let dt = 1e-3;
-    let dense = sp.simulate(0.0, s0, 3.0, Method::Rattle8, dt, 1, u64::MAX).unwrap();
+    let dense = sp.simulate(0.0, s0, 3.0, &StringSettings::new(Method::Rattle8, dt)).unwrap();
     let (leave, snap) = (dense.events[0], dense.events[1]);
     // off-grid times: before the leave (taut), in the flight, after the snap (taut), t_end
     let mid = 0.5 * (leave.t + snap.t);
@@ -343,7 +357,7 @@ fn save_times_are_hit_exactly_on_the_parabola_in_flight_and_as_a_fine_run_when_t
                 assert_eq!(s, s0);
             } else {
                 // taut: as a run 10× finer that lands on t (rattle8: the difference is round-off)
-                let fine = sp.simulate(0.0, s0, t, Method::Rattle8, dt / 10.0, 1, u64::MAX).unwrap();
+                let fine = sp.simulate(0.0, s0, t, &StringSettings::new(Method::Rattle8, dt / 10.0)).unwrap();
                 let f = fine.states.last().unwrap();
                 let (dx, dv) = ((s.x - f.x).length(), (s.v - f.v).length());
                 assert!(dx < 1e-14 && dv < 1e-13, "taut at {t}: |dx| = {dx:e}, |dv| = {dv:e}");

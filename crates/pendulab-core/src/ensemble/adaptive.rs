@@ -97,9 +97,8 @@ pub fn run_adaptive_models<M: Model + Clone + Send + Sync>(
     check_adaptive(models, starts, settings)?;
     let ns = t.len();
     let mut states = vec![State { x: glam::DVec3::NAN, v: glam::DVec3::NAN }; starts.len() * ns];
-    let work = |(c, out): (usize, &mut [State])| {
-        adaptive_lanes::run_chunk(models, starts, c * CHUNK, settings, ns, out, progress, cancel)
-    };
+    let job = adaptive_lanes::Job { models, starts, settings, ns, progress, cancel };
+    let work = |(c, out): (usize, &mut [State])| adaptive_lanes::run_chunk(&job, c * CHUNK, out);
     #[cfg(feature = "parallel")]
     let outputs: Vec<_> = {
         use rayon::prelude::*;

@@ -82,19 +82,21 @@ struct Control {
     steps: u64,
 }
 
-/// Runs trajectories `first..first + out.len() / ns` (their samples `out`, `ns` = 1 or 2 per
-/// trajectory: t_end, or t0 and t_end) with [`LANES`] lanes, refilling lanes as trajectories finish.
-#[allow(clippy::too_many_arguments)]
-pub(super) fn run_chunk<M: Model>(
-    models: &Models<'_, M>,
-    starts: &[State],
-    first: usize,
-    settings: &AdaptiveSettings,
-    ns: usize,
-    out: &mut [State],
-    progress: &AtomicU64,
-    cancel: &AtomicBool,
-) -> ChunkOut {
+/// What every chunk of a lanes run shares: the models, the starts, the settings, the samples per
+/// trajectory `ns` (1 or 2: t_end, or t0 and t_end), the progress counter and the cancel flag.
+pub(super) struct Job<'a, M: Model> {
+    pub models: &'a Models<'a, M>,
+    pub starts: &'a [State],
+    pub settings: &'a AdaptiveSettings,
+    pub ns: usize,
+    pub progress: &'a AtomicU64,
+    pub cancel: &'a AtomicBool,
+}
+
+/// Runs trajectories `first..first + out.len() / ns` of `job` (their samples `out`) with [`LANES`]
+/// lanes, refilling lanes as trajectories finish.
+pub(super) fn run_chunk<M: Model>(job: &Job<'_, M>, first: usize, out: &mut [State]) -> ChunkOut {
+    let &Job { models, starts, settings, ns, progress, cancel } = job;
     let n = out.len() / ns;
     let mut res = ChunkOut { steps: vec![0; n], errors: (0..n).map(|_| None).collect(), cancelled: false };
     let mut run = Lanes::new(settings, ns);

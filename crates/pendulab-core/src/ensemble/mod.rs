@@ -5,7 +5,7 @@
 //!   v½ = v₀ − (h/2) g e₃ + μ x₀ (|x₁| = l),  x₁ = x₀ + h v½,  v₁ = v½ − (h/2) g e₃ − x₁ (x₁·u)/l²,
 //!
 //! with Kahan-compensated updates, the multiply-adds unfused by default or fused on request
-//! ([`Extras::arithmetic`], as the single-trajectory path with the same choice). Optional linear
+//! ([`RattleSettings::arithmetic`], as the single-trajectory path with the same choice). Optional linear
 //! damping c [1/s] (force −m c v, T-7.1) enters as in the single-trajectory path of the `damped`
 //! model: the exact damping flow v ↦ e^{−c h/2} v before and after each step (Strang splitting,
 //! conformal symplectic). Optional settle tracking records, per
@@ -76,7 +76,7 @@ pub struct EnsembleResult {
     pub states: Vec<State>,
     /// Per-trajectory extremes (when requested).
     pub summary: Option<Vec<Summary>>,
-    /// Per trajectory (with [`Extras::settle_angle`]): the time \[s\] after which the sway stayed at or
+    /// Per trajectory (with [`RattleSettings::settle_angle`]): the time \[s\] after which the sway stayed at or
     /// below the threshold until the end of the run (0: never above; +∞: above at the last step; to
     /// within one step dt).
     pub settle_time: Option<Vec<f64>>,
@@ -104,53 +104,63 @@ impl EnsembleResult {
     }
 }
 
-/// Optional per-trajectory extras of an ensemble run ([`run_with`]).
-#[derive(Debug, Clone, Copy, Default)]
-pub struct Extras<'a> {
+/// The settings of an ensemble run ([`run`]): everything but the starts, the progress counter and
+/// the cancel flag. [`RattleSettings::new`] gives the plain run (final states, no damping, no summary);
+/// set the other fields with struct update syntax.
+#[derive(Debug, Clone, Copy)]
+pub struct RattleSettings<'a> {
+    /// Pendulum length l \[m\] per trajectory: one value for all or one per trajectory.
+    pub length: &'a [f64],
+    /// Gravity g [m/s²] per trajectory: one value for all or one per trajectory.
+    pub g: &'a [f64],
     /// Linear damping c [1/s] (force −m c v, T-7.1): empty (undamped), one value for all
     /// trajectories, or one per trajectory; each ≥ 0 and finite.
     pub damping: &'a [f64],
     /// Sway angle \[rad\] in (0, π) from the stable equilibrium at or below which a trajectory counts as
     /// settled; when given, the result holds each trajectory's settle time.
     pub settle_angle: Option<f64>,
+    /// The step \[s\] (> 0).
+    pub dt: f64,
+    /// The number of steps.
+    pub n_steps: u64,
+    /// What is kept.
+    pub save: EnsembleSave,
+    /// Per-trajectory extremes ([`Summary`]) in the result.
+    pub with_summary: bool,
     /// How the steps round their multiply-adds (default unfused): each trajectory gets the numbers of
     /// the single-trajectory RATTLE with the same [`Arithmetic`] (`Stepper::set_arithmetic`).
     pub arithmetic: Arithmetic,
 }
 
-/// Integrates `starts` (with per-trajectory `length` \[m\] and `g` [m/s²], each of length 1 — broadcast
-/// — or of the ensemble's length) by `n_steps` RATTLE steps of `dt` \[s\]. `progress` counts
-/// trajectory-steps done; setting `cancel` stops every block at its next check.
-#[allow(clippy::too_many_arguments)]
-pub fn run(
-    starts: &[State],
-    length: &[f64],
-    g: &[f64],
-    dt: f64,
-    n_steps: u64,
-    save: EnsembleSave,
-    with_summary: bool,
-    progress: &AtomicU64,
-    cancel: &AtomicBool,
-) -> Result<EnsembleResult> {
-    run_with(starts, length, g, &Extras::default(), dt, n_steps, save, with_summary, progress, cancel)
+impl<'a> RattleSettings<'a> {
+    /// `n_steps` steps of `dt` \[s\] with per-trajectory `length` \[m\] and `g` [m/s²]: final states
+    /// only, undamped, no summary, no settle tracking, unfused arithmetic.
+    pub fn new(length: &'a [f64], g: &'a [f64], dt: f64, n_steps: u64) -> Self {
+        Self {
+            length,
+            g,
+            damping: &[],
+            settle_angle: None,
+            dt,
+            n_steps,
+            save: EnsembleSave::Final,
+            with_summary: false,
+            arithmetic: Arithmetic::Unfused,
+        }
+    }
 }
 
-/// [`run`] with damping and settle tracking ([`Extras`]).
-#[allow(clippy::too_many_arguments)]
-pub fn run_with(
+/// Integrates `starts` by RATTLE as `settings` say (per-trajectory `length` \[m\], `g` [m/s²] and
+/// damping, each of length 1 — broadcast — or of the ensemble's length; `n_steps` steps of `dt` \[s\]).
+/// `progress` counts trajectory-steps done; setting `cancel` stops every block at its next check.
+pub fn run(
     starts: &[State],
-    length: &[f64],
-    g: &[f64],
-    extras: &Extras<'_>,
-    dt: f64,
-    n_steps: u64,
-    save: EnsembleSave,
-    with_summary: bool,
+    settings: &RattleSettings<'_>,
     progress: &AtomicU64,
     cancel: &AtomicBool,
 ) -> Result<EnsembleResult> {
-    let plan = Plan::checked(starts, length, g, extras, dt, n_steps, save)?;
+    let &RattleSettings { length, g, dt, n_steps, with_summary, .. } = settings;
+    let plan = Plan::checked(starts, settings)?;
     let (n, ns) = (starts.len(), sample_count(n_steps, plan.every));
     let mut states = vec![State { x: DVec3::NAN, v: DVec3::NAN }; n * ns];
     let run = BlockRun {
@@ -159,7 +169,7 @@ pub fn run_with(
         every: plan.every,
         with_summary,
         track: plan.track,
-        arithmetic: extras.arithmetic,
+        arithmetic: settings.arithmetic,
         progress,
         cancel,
     };
@@ -197,19 +207,10 @@ pub fn run_with(
     Ok(EnsembleResult { t, states, summary, settle_time, cancelled, steps })
 }
 
-/// Checks the input of [`run_with`] as the run would (and fails with the same error), without
-/// running or allocating anything: for callers that start the run elsewhere (a background thread).
-#[allow(clippy::too_many_arguments)]
-pub fn check(
-    starts: &[State],
-    length: &[f64],
-    g: &[f64],
-    extras: &Extras<'_>,
-    dt: f64,
-    n_steps: u64,
-    save: EnsembleSave,
-) -> Result<()> {
-    Plan::checked(starts, length, g, extras, dt, n_steps, save).map(|_| ())
+/// Checks the input of [`run`] as the run would (and fails with the same error), without running or
+/// allocating anything: for callers that start the run elsewhere (a background thread).
+pub fn check(starts: &[State], settings: &RattleSettings<'_>) -> Result<()> {
+    Plan::checked(starts, settings).map(|_| ())
 }
 
 /// A parameter given once for all trajectories (length 1) or per trajectory: its value for trajectory k.
@@ -234,18 +235,11 @@ struct Plan<'a> {
 impl<'a> Plan<'a> {
     /// Checks everything before any work: dt > 0, parameter arrays of length 1 or N, every start on
     /// TS² of its (l, g), damping ≥ 0, the settle angle in (0, π), save_every ≥ 1.
-    fn checked(
-        starts: &[State],
-        length: &[f64],
-        g: &[f64],
-        extras: &Extras<'a>,
-        dt: f64,
-        n_steps: u64,
-        save: EnsembleSave,
-    ) -> Result<Self> {
+    fn checked(starts: &[State], settings: &RattleSettings<'a>) -> Result<Self> {
+        let &RattleSettings { length, g, dt, n_steps, save, .. } = settings;
         let n = starts.len();
         crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
-        let damping: &[f64] = if extras.damping.is_empty() { &[0.0] } else { extras.damping };
+        let damping: &[f64] = if settings.damping.is_empty() { &[0.0] } else { settings.damping };
         for (name, a) in [("length", length), ("g", g), ("damping", damping)] {
             if a.len() != 1 && a.len() != n {
                 return Err(Error::InvalidParameter {
@@ -264,7 +258,7 @@ impl<'a> Plan<'a> {
                 "a finite damping rate c >= 0 [1/s]",
             )?;
         }
-        let cos_settle = match extras.settle_angle {
+        let cos_settle = match settings.settle_angle {
             None => f64::NEG_INFINITY,
             Some(a) if a.is_finite() && a > 0.0 && a < std::f64::consts::PI => a.cos(),
             Some(a) => {
@@ -286,7 +280,7 @@ impl<'a> Plan<'a> {
             }
             EnsembleSave::Every(e) => e,
         };
-        Ok(Self { damping, cos_settle, track: extras.settle_angle.is_some(), every })
+        Ok(Self { damping, cos_settle, track: settings.settle_angle.is_some(), every })
     }
 
     /// Block `b`: trajectories b·LANES … (the lanes past the last trajectory repeat it and are

@@ -16,8 +16,8 @@ use super::frame::{Record, ERROR_X, UNKNOWN};
 use super::pendulum::{LivePendulum, LiveStepper};
 use crate::error::Result;
 use crate::exact::ExactSolution;
-use crate::integrate::Method;
 use crate::state::State;
+use crate::stepper::SolveOptions;
 
 /// The companion's tolerance factor for `dop853` (`pendulab.accuracy.estimate.COMPANION_FACTOR`).
 pub const COMPANION_FACTOR: f64 = 0.1;
@@ -86,19 +86,11 @@ pub struct LiveError {
 }
 
 impl LiveError {
-    /// The estimate for a run of `p` from `start` at `t0` \[s\] with `method`, `dt` \[s\], `rtol`, `atol`;
-    /// `exact = false` estimates the ideal pendulum's error with a companion too.
-    #[allow(clippy::too_many_arguments)]
-    pub fn new(
-        p: &LivePendulum,
-        start: State,
-        t0: f64,
-        method: Method,
-        dt: f64,
-        rtol: f64,
-        atol: f64,
-        exact: bool,
-    ) -> Self {
+    /// The estimate for a run of `p` from `start` at `t0` \[s\] with the run's `options` (method, dt
+    /// \[s\], rtol, atol; the live steppers always project); `exact = false` estimates the ideal
+    /// pendulum's error with a companion too.
+    pub fn new(p: &LivePendulum, start: State, t0: f64, options: &SolveOptions, exact: bool) -> Self {
+        let &SolveOptions { method, dt, rtol, atol, .. } = options;
         let mut e = LiveError {
             t0,
             start,

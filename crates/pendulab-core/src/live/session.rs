@@ -16,6 +16,7 @@ use super::pendulum::{methods_for, LivePendulum, LiveStepper, DEFAULT_METHOD};
 use crate::error::{Error, Result};
 use crate::integrate::Method;
 use crate::state::State;
+use crate::stepper::SolveOptions;
 use crate::string_run::StringEvent;
 use crate::DVec3;
 use serde_json::{json, Value};
@@ -194,21 +195,18 @@ pub struct LiveSession {
     events: Vec<(StringEvent, u64)>,
 }
 
+/// A live run's integrator settings (the live steppers always project onto TS²).
+fn solve_options(method: Method, dt: f64, rtol: f64, atol: f64) -> SolveOptions {
+    SolveOptions { method, dt, rtol, atol, project: true }
+}
+
 impl LiveSession {
     /// A session from `setup`.
     pub fn new(setup: Setup) -> Result<Self> {
         let stepper =
             make(&setup.pendulum, setup.state, setup.t0, setup.method, setup.dt, setup.rtol, setup.atol)?;
-        let error = LiveError::new(
-            &setup.pendulum,
-            setup.state,
-            setup.t0,
-            setup.method,
-            setup.dt,
-            setup.rtol,
-            setup.atol,
-            true,
-        );
+        let options = solve_options(setup.method, setup.dt, setup.rtol, setup.atol);
+        let error = LiveError::new(&setup.pendulum, setup.state, setup.t0, &options, true);
         Ok(Self {
             scenario: setup.name,
             title: setup.title,
@@ -320,8 +318,8 @@ impl LiveSession {
         self.collect_events();
         let p = pendulum.unwrap_or_else(|| self.pendulum.clone());
         let stepper = make(&p, state, t, self.method, self.dt, self.rtol, self.atol)?;
-        self.error =
-            LiveError::new(&p, state, t, self.method, self.dt, self.rtol, self.atol, self.exact_error);
+        let options = solve_options(self.method, self.dt, self.rtol, self.atol);
+        self.error = LiveError::new(&p, state, t, &options, self.exact_error);
         self.stepper = stepper;
         self.pendulum = p;
         self.clock = t;
@@ -336,8 +334,8 @@ impl LiveSession {
         (self.scenario, self.title) = (s.name, s.title);
         (self.method, self.dt, self.rtol, self.atol, self.t0) = (s.method, s.dt, s.rtol, s.atol, s.t0);
         (self.start, self.start_length) = (s.state, s.pendulum.params.length);
-        self.error =
-            LiveError::new(&s.pendulum, s.state, s.t0, s.method, s.dt, s.rtol, s.atol, self.exact_error);
+        let options = solve_options(s.method, s.dt, s.rtol, s.atol);
+        self.error = LiveError::new(&s.pendulum, s.state, s.t0, &options, self.exact_error);
         (self.stepper, self.pendulum) = (stepper, s.pendulum);
         self.clock = s.t0;
         self.pending_steps = 0;

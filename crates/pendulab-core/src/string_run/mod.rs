@@ -18,7 +18,7 @@
 mod runner;
 mod stepper;
 
-pub use runner::StringRunner;
+pub use runner::{StringRunner, StringSettings};
 pub use stepper::StringStepper;
 
 use crate::integrate::Stats;

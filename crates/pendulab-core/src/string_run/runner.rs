@@ -185,23 +185,40 @@ impl StringRunner {
     }
 }
 
+/// How [`StringPendulum::simulate`] steps and what it keeps: `method` (rattle, rattle4, rattle6,
+/// rattle8 or rkmk4) with step `dt` \[s\] in the taut phases, every `save_every`-th grid point kept
+/// (with every event and t_end), the samples' memory bounded by `max_saved_bytes`.
+#[derive(Debug, Clone, Copy)]
+pub struct StringSettings {
+    /// The integrator of the taut phases.
+    pub method: Method,
+    /// Its step \[s\] (> 0).
+    pub dt: f64,
+    /// Grid points between kept samples (≥ 1).
+    pub save_every: u64,
+    /// Most memory of the samples [bytes].
+    pub max_saved_bytes: u64,
+}
+
+impl StringSettings {
+    /// `method` with step `dt` \[s\], every grid point kept, no memory bound.
+    pub fn new(method: Method, dt: f64) -> Self {
+        Self { method, dt, save_every: 1, max_saved_bytes: u64::MAX }
+    }
+}
+
 impl StringPendulum {
-    /// Simulates from `state` at `t0` \[s\] to `t_end` \[s\] with `method` (rattle, rattle4, rattle6,
-    /// rattle8 or rkmk4) and step `dt` \[s\] in the taut phases, keeping every `save_every`-th grid
-    /// point, every event and t_end. The start may be on the sphere (|x| = l within 1e-9 relative) or
-    /// inside it (slack); outside it is an error. `max_saved_bytes` bounds the memory of the samples.
-    /// One [`StringStepper`] run to `t_end`.
-    #[allow(clippy::too_many_arguments)]
+    /// Simulates from `state` at `t0` \[s\] to `t_end` \[s\] as `settings` say. The start may be on the
+    /// sphere (|x| = l within 1e-9 relative) or inside it (slack); outside it is an error. One
+    /// [`StringStepper`] run to `t_end`.
     pub fn simulate(
         &self,
         t0: f64,
         state: State,
         t_end: f64,
-        method: Method,
-        dt: f64,
-        save_every: u64,
-        max_saved_bytes: u64,
+        settings: &StringSettings,
     ) -> Result<StringRun> {
+        let &StringSettings { method, dt, save_every, max_saved_bytes } = settings;
         crate::error::require_finite("t0", t0, "the start time must be finite (s)")?;
         if !(t_end.is_finite() && t_end > t0) {
             return Err(Error::InvalidParameter {
