@@ -19,9 +19,11 @@ from .ensemble.run import EnsembleResult, simulate_ensemble, states_from_angles
 from .ensemble.save import Save
 from .error_estimate import ErrorEstimate
 from .fitting import Comparison, FitResult, compare_fits, fit
+from .integrators import method_names, methods
 from .model import Pendulum, State, models
 from .scenario import Scenario, ScenarioError, load_scenario
-from .simulation import Stepper, method_names, methods, simulate
+from .simulation import simulate
+from .stepper import Stepper
 from .sweeps import design as sweep_design
 from .sweeps.results import SweepResult, read_sweep
 from .sweeps.run import sweep

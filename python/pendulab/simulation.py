@@ -1,4 +1,5 @@
-"""Batch simulation and the incremental stepper, on top of the core's chunked solver.
+"""Batch simulation on top of the core's chunked solver (the incremental stepper: ``stepper.py``; the
+integrators and the settings both check: ``integrators.py``).
 
 ``simulate`` advances the core solver in chunks of about 0.1 s of work with the GIL released,
 updating a tqdm progress bar between chunks; Ctrl-C stops cleanly after the current chunk and
@@ -9,7 +10,6 @@ Saving is separate from stepping: 10⁸ steps with ``save_every=10_000`` keep on
 from __future__ import annotations
 
 import dataclasses
-import functools
 import warnings
 from typing import TYPE_CHECKING, Any
 
@@ -17,11 +17,16 @@ import numpy as np
 
 from ._chunks import _PROGRESS_AFTER_STEPS, run_in_chunks
 from ._core import ForceSolver, IntegrationError, InvalidInputError, RunOptions, Solver
-from ._core import Stepper as _Stepper
-from ._core import methods as _methods
 from .accuracy import estimate, run_to_accuracy, true_error
-from .display import Row, html_table
-from .display import number as shown
+from .integrators import (
+    _U64,
+    DEFAULTS,
+    _check_conserve,
+    _method_table,
+    check_arithmetic,
+    check_settings,
+    method_names,
+)
 from .memory import SAMPLE_BYTES, SAMPLE_COPIES, check_memory, saved_bytes_cap
 from .model import Pendulum, State, check_pendulum_state
 from .trajectory import Trajectory
@@ -30,7 +35,6 @@ from .validate import (
     MAX_SAMPLES,
     array,
     choice,
-    finite,
     flag,
     integer,
     invalid,
@@ -38,100 +42,13 @@ from .validate import (
     planned_steps,
 )
 
-_ARITHMETICS = ("unfused", "fused")
-"""The RATTLE family's arithmetic of a·b + c: two roundings (default) or one (``f64::mul_add``)."""
-_FUSED_METHODS = ("rattle", "rattle4", "rattle6", "rattle8")
-"""The methods that have ``arithmetic="fused"``."""
-
 if TYPE_CHECKING:
-    from ._core import MethodInfo
+    pass
 
 DRIFT_TOLERANCE = 1e-2
 """The largest relative constraint error |(|x| − l)/l| an unprojected run (``rk4``, ``dop853`` with
 ``project=False``) may reach before :func:`simulate` stops it with :class:`pendulab.IntegrationError`
 (``drift="warn"``: a warning instead). 1 % of the rod: beyond it the run no longer describes a rod."""
-
-DEFAULTS: dict[str, Any] = {"method": "rattle", "dt": 1e-3, "rtol": 1e-10, "atol": 1e-12, "project": True}
-
-
-def _check_conserve(pendulum: Pendulum, conserve: bool) -> None:
-    """``conserve`` holds E (conservative models) and J₃ (axisymmetric ones) at their initial values;
-    damping or drag make both decay (J₃(t) = J₃(0) e^{−ct} for linear damping, T-7.1), so holding them
-    would be wrong physics: refused with the reason."""
-    lossy = {k: v for k, v in pendulum.extra.items() if k in ("damping", "drag") and v != 0.0}
-    if conserve and lossy:
-        given = ", ".join(f"{k} = {v!r}" for k, v in lossy.items())
-        raise InvalidInputError(
-            f"conserve=True would hold E and J₃ at their initial values, but they decay with {given} "
-            "(J₃(t) = J₃(0)·e^(−c t)); run without conserve (DOP853 then follows the decay to its "
-            "tolerance) or with a RATTLE method, whose exact damping flow keeps the decay of J₃ exactly"
-        )
-
-
-_U64 = 2**63 - 1
-
-
-def check_settings(
-    *,
-    method: Any,
-    dt: Any,
-    rtol: Any,
-    atol: Any,
-    project: Any,
-    conserve: Any,
-    t0: Any,
-) -> tuple[str, float | None, float, float, bool, bool, float]:
-    """The shared settings of :func:`simulate` and :class:`Stepper` checked against :mod:`pendulab.validate`:
-    method (a registered name), dt [s] (None or the dt limit), rtol, atol (finite; the core checks their
-    ranges), project and conserve (bools), t0 [s] (the time limit)."""
-    method = choice("method", method, method_names())
-    automatic = _method_table()[method]["adaptive"] and type(dt) in (int, float) and dt == 0.0
-    dt = None if dt is None else 0.0 if automatic else number("dt", dt, "dt")  # dop853: 0 = automatic
-    rtol = finite("rtol", rtol, "a finite relative tolerance (dop853)")
-    atol = finite("atol", atol, "a finite absolute tolerance in m and m/s (dop853)")
-    return (
-        method,
-        dt,
-        rtol,
-        atol,
-        flag("project", project),
-        flag("conserve", conserve),
-        number("t0", t0, "time"),
-    )
-
-
-@functools.cache
-def _method_table() -> dict[str, MethodInfo]:
-    """The core's integrators by name (fixed for the life of the process)."""
-    return {m["name"]: m for m in _methods()}
-
-
-def methods() -> list[MethodInfo]:
-    """The registered integrators: name, order, symplectic, preserves_ts2, preserves_j3, adaptive, …
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> import pendulab as pl
-    >>> [m['name'] for m in pl.methods()][:3]
-    ['rattle', 'rattle4', 'rattle6']
-    >>> pl.methods()[0]['order']
-    2
-    """
-    return _methods()
-
-
-def method_names() -> list[str]:
-    """Names of the registered integrators.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> import pendulab as pl
-    >>> pl.method_names()
-    ['rattle', 'rattle4', 'rattle6', 'rattle8', 'dop853', 'rkmk4', 'rk4', 'rk4_angles']
-    """
-    return [m["name"] for m in _methods()]
 
 
 def simulate(
@@ -365,17 +282,6 @@ def check_run(
     )
 
 
-def check_arithmetic(arithmetic: Any, method: str) -> str:
-    """``arithmetic`` checked: ``"unfused"`` (every method) or ``"fused"`` (the RATTLE family)."""
-    arithmetic = choice("arithmetic", arithmetic, _ARITHMETICS)
-    if arithmetic == "fused" and method not in _FUSED_METHODS:
-        raise InvalidInputError(
-            f"arithmetic='fused' applies to the RATTLE family ({', '.join(_FUSED_METHODS)}), "
-            f"not to method {method!r}"
-        )
-    return arithmetic
-
-
 def _run_string(pendulum: Pendulum, state: State, run: RunSettings) -> Trajectory:
     """The string pendulum's hybrid run (variants/string_pendulum.py)."""
     from .variants.string_pendulum import check_string_settings, simulate_string
@@ -487,127 +393,3 @@ def _check_drift(pendulum: Pendulum, t: Any, x: Any, v: Any, method: str, projec
         warnings.warn(msg, RuntimeWarning, stacklevel=4)
         return
     raise IntegrationError(msg)
-
-
-class Stepper:
-    """Incremental integration for live viewing: ``step(n)``, ``step_to(t)``, ``state``, ``t``.
-
-    Same methods and options as :func:`simulate`; ``set_state`` replaces the state (e.g. after the
-    user drags the bob).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> import pendulab as pl
-    >>> p = pl.Pendulum()
-    >>> st = pl.Stepper(p, p.state_from_angles(theta=0.5), method='rattle', dt=1e-3)
-    >>> st.step(1000)
-    State(x=[-0.478686, 0, -0.877986] m, v=[-0.0781417, 0, 0.0426035] m/s; θ=28.5996°, φ=180°)
-    >>> round(st.t, 12)
-    1.0
-    """
-
-    def __init__(
-        self,
-        pendulum: Pendulum,
-        state: State,
-        *,
-        method: str = "rattle",
-        dt: float = 1e-3,
-        rtol: float = 1e-10,
-        atol: float = 1e-12,
-        project: bool = True,
-        t0: float = 0.0,
-        conserve: bool = False,
-    ) -> None:
-        check_pendulum_state(pendulum, state)
-        method, dt_checked, rtol, atol, project, conserve, t0 = check_settings(
-            method=method, dt=dt, rtol=rtol, atol=atol, project=project, conserve=conserve, t0=t0
-        )
-        if dt_checked is None:
-            raise invalid("dt", dt, LIMITS["dt"]["allowed"])
-        dt = dt_checked
-        _check_conserve(pendulum, conserve)
-        if pendulum.force is not None:
-            raise InvalidInputError(
-                "the incremental Stepper does not take a user force callable; use pendulab.simulate"
-            )
-        self._dt = dt
-        self._method = method
-        self._adaptive = bool(_method_table()[method]["adaptive"])
-        self.pendulum = pendulum
-        run = RunOptions(
-            t0=float(t0),
-            method=method,
-            dt=float(dt),
-            rtol=float(rtol),
-            atol=float(atol),
-            project=bool(project),
-            conserve=bool(conserve),
-        )
-        self._core = _Stepper(pendulum.spec, state.pair, run)
-
-    def __repr__(self) -> str:
-        theta, phi = self.state.angles_deg()
-        step = "adaptive" if self._adaptive else f"dt={shown(self._dt)} s"
-        return (
-            f"Stepper({self._method}, {step}, t={shown(self.t)} s, θ={shown(theta)}°, "
-            f"φ={shown(phi)}°, steps={self._core.stats['steps']}; {self.pendulum!r})"
-        )
-
-    def _repr_html_(self) -> str:
-        theta, phi = self.state.angles_deg()
-        stats = self.stats
-        rows: list[Row] = [
-            ("method", self._method, ""),
-            ("step dt", "adaptive" if self._adaptive else self._dt, "" if self._adaptive else "s"),
-            ("time t", self.t, "s"),
-            ("polar angle θ", theta, "°"),
-            ("azimuth φ", phi, "°"),
-            ("steps taken (rejected)", f"{stats['steps']} ({stats.get('rejected', 0)})", ""),
-            ("model", self.pendulum.model, ""),
-            ("length l", self.pendulum.length, "m"),
-        ]
-        return html_table("Stepper", rows)
-
-    @property
-    def t(self) -> float:
-        """Current time [s]."""
-        return self._core.t
-
-    @property
-    def state(self) -> State:
-        """Current state."""
-        return State(self._core.x, self._core.v)
-
-    @property
-    def stats(self) -> dict[str, int]:
-        """Work counters: steps, rejected, rhs_evals."""
-        return dict(self._core.stats)
-
-    def step(self, n: int = 1) -> State:
-        """Takes n steps and returns the new state."""
-        n = integer(
-            "n", n, 0, int(LIMITS["steps"]["max"]), f"an integer in [0, {LIMITS['steps']['max']:.0e}]"
-        )
-        self._core.step(n)
-        return self.state
-
-    def step_to(self, t: float, *, max_steps: int | None = None) -> State:
-        """Advances to exactly time t [s] and returns the state there. With ``max_steps``, takes at most
-        that many steps (``dop853``: accepted steps) and may stop before t (then ``self.t < t``; call
-        again to go on — the same steps as one uncapped call): a bound on the work of one call.
-        Without it, a fixed-step advance of more than 1e10 steps is refused (docs/limits.md)."""
-        t = number("t", t, "time")
-        if max_steps is not None:
-            max_steps = integer("max_steps", max_steps, 0, _U64)
-        elif not self._adaptive:
-            planned_steps(self.t, t, self._dt, name="t")
-        self._core.step_to(t, max_steps)
-        return self.state
-
-    def set_state(self, state: State) -> None:
-        """Replaces the current state (must lie on TS²)."""
-        if not isinstance(state, State):
-            raise invalid("state", state, "a pendulab.State")
-        self._core.set_state(np.ascontiguousarray(state.x), np.ascontiguousarray(state.v))

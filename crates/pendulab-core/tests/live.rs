@@ -10,17 +10,7 @@ use std::cell::Cell;
 fn setup(model: &str, method: Method, dt: f64) -> Setup {
     let pendulum = LivePendulum::new(model, 1.0, 1.0, 9.81, &[]).unwrap();
     let state = pendulum.state_from_angles(1.0, 0.0, 0.0, 1.5).unwrap();
-    Setup {
-        name: Some("test".into()),
-        title: None,
-        pendulum,
-        state,
-        method,
-        dt,
-        rtol: 1e-10,
-        atol: 1e-12,
-        t0: 0.0,
-    }
+    Setup { name: Some("test".into()), ..Setup::new(pendulum, state, method, dt) }
 }
 
 fn frames(out: &[Out]) -> Vec<Record> {

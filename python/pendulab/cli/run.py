@@ -19,10 +19,10 @@ from typing import Annotated
 import typer
 
 from .._core import InvalidInputError
+from ..integrators import methods as method_table
 from ..model import models as model_table
 from ..scenario import RunOverrides, Scenario, ScenarioError, load_scenario
 from ..scenario.examples import scenario_files, sweep_files
-from ..simulation import methods as method_table
 from .common import (
     EXIT_INTERRUPTED,
     EXIT_USER_ERROR,

@@ -23,9 +23,9 @@ import numpy as np
 from .. import validate as limits
 from .._core import EnsembleRun, EnsembleSpec, InvalidInputError, RunOptions
 from .._progress import tqdm
+from ..integrators import check_arithmetic
 from ..memory import check_memory
 from ..model import FloatArray, Pendulum, State
-from ..simulation import check_arithmetic
 from .adaptive import simulate_adaptive
 from .result import EnsembleResult
 from .save import Save

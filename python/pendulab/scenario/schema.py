@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING, Annotated, Any
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from .._core import methods, models
-from ..simulation import DEFAULTS, method_names
+from ..integrators import DEFAULTS, method_names
 from ..validate import COMMON, LIMITS, MAX_SAMPLES, MAX_STEPS, abbreviate
 
 if TYPE_CHECKING:

@@ -18,8 +18,8 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
 from .._core import LiveSession, models
+from ..integrators import method_names
 from ..model import Pendulum, State
-from ..simulation import method_names
 from .live_models import OWN_STEPPER_MODELS
 from .notices import CommandError, show_value, validation_key, validation_problems
 

@@ -14,9 +14,9 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
 from .._core import InvalidInputError
+from ..integrators import method_names
 from ..model import Pendulum
 from ..scenario import Scenario
-from ..simulation import method_names
 from .commands import ExactRequest, Vec3, limit_bounds
 from .notices import finite_or_none
 

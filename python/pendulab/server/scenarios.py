@@ -9,10 +9,10 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..integrators import DEFAULTS
 from ..model import State
 from ..scenario import Scenario, ScenarioError, load_scenario
 from ..scenario.examples import scenario_files as shipped_scenarios
-from ..simulation import DEFAULTS
 from .crane_setup import crane_pendulum, crane_start
 from .live_models import LabPendulum, scenario_pendulum
 from .protocol import MODEL_SPECS

@@ -13,7 +13,7 @@ import math
 from typing import TYPE_CHECKING, Any
 
 from .._core import __version__
-from ..simulation import methods
+from ..integrators import methods
 from .protocol import COMMAND_TYPES, FRAME_FIELDS, FRAME_UNITS, LIMITS, MODEL_SPECS, RECORD_BYTES, own_params
 
 if TYPE_CHECKING:

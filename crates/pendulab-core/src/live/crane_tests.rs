@@ -11,18 +11,7 @@ use crate::integrate::Method;
 fn session(length: f64) -> LiveSession {
     let p = LivePendulum::new("ideal", length, 100.0, 9.81, &[]).unwrap();
     let state = p.state_from_angles(0.0, 0.0, 0.0, 0.0).unwrap();
-    let setup = Setup {
-        name: None,
-        title: None,
-        pendulum: p,
-        state,
-        method: Method::Rattle,
-        dt: 1e-3,
-        rtol: 1e-10,
-        atol: 1e-12,
-        t0: 0.0,
-    };
-    LiveSession::new(setup).unwrap()
+    LiveSession::new(Setup::new(p, state, Method::Rattle, 1e-3)).unwrap()
 }
 
 fn send(s: &mut LiveSession, text: &str) {

@@ -38,10 +38,8 @@ pub const LIMITS: [(&str, f64, f64, &str); 6] = [
     ("time_scale", 1e-3, 1e3, ""),
     ("n", 1.0, 1e5, "steps"),
 ];
-/// dop853's default tolerances (scenario files' defaults).
-pub const DEFAULT_RTOL: f64 = 1e-10;
-/// Absolute tolerance [m, m/s].
-pub const DEFAULT_ATOL: f64 = 1e-12;
+/// dop853's default tolerances (scenario files' defaults; [`Setup::new`]'s).
+pub use super::session::{DEFAULT_ATOL, DEFAULT_RTOL};
 
 /// A refused message: its text and the command type when it could be read.
 pub type Refusal = (String, Option<&'static str>);

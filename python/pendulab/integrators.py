@@ -1,0 +1,114 @@
+"""The core's integrators by name (``methods``, ``method_names``) and the run settings that
+:func:`pendulab.simulate` and :class:`pendulab.Stepper` share, checked once (``check_settings``: method,
+dt [s], rtol, atol [m and m/s], project, conserve, t0 [s]; ``DEFAULTS``)."""
+
+from __future__ import annotations
+
+import functools
+from typing import TYPE_CHECKING, Any
+
+from ._core import InvalidInputError
+from ._core import methods as _methods
+from .model import Pendulum
+from .validate import choice, finite, flag, number
+
+if TYPE_CHECKING:
+    from ._core import MethodInfo
+
+_U64 = 2**63 - 1
+"""The largest count the core's unsigned 64-bit step counters take from Python (signed range)."""
+
+_ARITHMETICS = ("unfused", "fused")
+"""The RATTLE family's arithmetic of a·b + c: two roundings (default) or one (``f64::mul_add``)."""
+_FUSED_METHODS = ("rattle", "rattle4", "rattle6", "rattle8")
+"""The methods that have ``arithmetic="fused"``."""
+
+DEFAULTS: dict[str, Any] = {"method": "rattle", "dt": 1e-3, "rtol": 1e-10, "atol": 1e-12, "project": True}
+
+
+def _check_conserve(pendulum: Pendulum, conserve: bool) -> None:
+    """``conserve`` holds E (conservative models) and J₃ (axisymmetric ones) at their initial values;
+    damping or drag make both decay (J₃(t) = J₃(0) e^{−ct} for linear damping, T-7.1), so holding them
+    would be wrong physics: refused with the reason."""
+    lossy = {k: v for k, v in pendulum.extra.items() if k in ("damping", "drag") and v != 0.0}
+    if conserve and lossy:
+        given = ", ".join(f"{k} = {v!r}" for k, v in lossy.items())
+        raise InvalidInputError(
+            f"conserve=True would hold E and J₃ at their initial values, but they decay with {given} "
+            "(J₃(t) = J₃(0)·e^(−c t)); run without conserve (DOP853 then follows the decay to its "
+            "tolerance) or with a RATTLE method, whose exact damping flow keeps the decay of J₃ exactly"
+        )
+
+
+def check_settings(
+    *,
+    method: Any,
+    dt: Any,
+    rtol: Any,
+    atol: Any,
+    project: Any,
+    conserve: Any,
+    t0: Any,
+) -> tuple[str, float | None, float, float, bool, bool, float]:
+    """The shared settings of :func:`simulate` and :class:`Stepper` checked against :mod:`pendulab.validate`:
+    method (a registered name), dt [s] (None or the dt limit), rtol, atol (finite; the core checks their
+    ranges), project and conserve (bools), t0 [s] (the time limit)."""
+    method = choice("method", method, method_names())
+    automatic = _method_table()[method]["adaptive"] and type(dt) in (int, float) and dt == 0.0
+    dt = None if dt is None else 0.0 if automatic else number("dt", dt, "dt")  # dop853: 0 = automatic
+    rtol = finite("rtol", rtol, "a finite relative tolerance (dop853)")
+    atol = finite("atol", atol, "a finite absolute tolerance in m and m/s (dop853)")
+    return (
+        method,
+        dt,
+        rtol,
+        atol,
+        flag("project", project),
+        flag("conserve", conserve),
+        number("t0", t0, "time"),
+    )
+
+
+@functools.cache
+def _method_table() -> dict[str, MethodInfo]:
+    """The core's integrators by name (fixed for the life of the process)."""
+    return {m["name"]: m for m in _methods()}
+
+
+def methods() -> list[MethodInfo]:
+    """The registered integrators: name, order, symplectic, preserves_ts2, preserves_j3, adaptive, …
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> [m['name'] for m in pl.methods()][:3]
+    ['rattle', 'rattle4', 'rattle6']
+    >>> pl.methods()[0]['order']
+    2
+    """
+    return _methods()
+
+
+def method_names() -> list[str]:
+    """Names of the registered integrators.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> pl.method_names()
+    ['rattle', 'rattle4', 'rattle6', 'rattle8', 'dop853', 'rkmk4', 'rk4', 'rk4_angles']
+    """
+    return [m["name"] for m in _methods()]
+
+
+def check_arithmetic(arithmetic: Any, method: str) -> str:
+    """``arithmetic`` checked: ``"unfused"`` (every method) or ``"fused"`` (the RATTLE family)."""
+    arithmetic = choice("arithmetic", arithmetic, _ARITHMETICS)
+    if arithmetic == "fused" and method not in _FUSED_METHODS:
+        raise InvalidInputError(
+            f"arithmetic='fused' applies to the RATTLE family ({', '.join(_FUSED_METHODS)}), "
+            f"not to method {method!r}"
+        )
+    return arithmetic
