@@ -4,8 +4,8 @@
 // sway. It sends commands and shows the status and frames; the core computes everything. SI units (m, m/s;
 // angles shown in degrees).
 import type { Command, CraneStatus, Frame } from '../protocol';
-import { cw } from './words';
-import type { CraneWord } from './words';
+import { cw } from '../i18n/cranewords';
+import type { CraneWord } from '../i18n/cranewords';
 import { recentMaxSway, ropeLength, swayAngle, windPolar, windVector } from './sway';
 
 const DEG = 180 / Math.PI;

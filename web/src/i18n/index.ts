@@ -47,7 +47,11 @@ export function language(): Lang {
 /** The string `key` in the current language with each {name} replaced by vars[name]. */
 export function t(key: Key, vars: Record<string, string | number> = {}): string {
   const table: Words = LANGUAGES[current].words;
-  const text = table[key] ?? EN[key];
+  return fill(table[key] ?? EN[key], vars);
+}
+
+/** `text` with each {name} replaced by vars[name] (a name vars lacks stays as it is). */
+export function fill(text: string, vars: Record<string, string | number> = {}): string {
   return text.replace(/\{(\w+)\}/g, (m, name: string) => (name in vars ? String(vars[name]) : m));
 }
 

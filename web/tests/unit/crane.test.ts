@@ -3,7 +3,7 @@
 // mode entering it by the `crane` command.
 import { describe, expect, it } from 'vitest';
 import { recentMaxSway, ropeLength, swayAngle, windPolar, windVector } from '../../src/crane/sway';
-import { CRANE_WORDS, cw } from '../../src/crane/words';
+import { CRANE_WORDS, cw } from '../../src/i18n/cranewords';
 import { setLanguage } from '../../src/i18n';
 import type { Frame, Vec3 } from '../../src/protocol';
 import { commandsFor } from '../../src/url';

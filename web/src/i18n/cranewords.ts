@@ -1,7 +1,9 @@
 // The crane mode's words in the page's languages (docs/web.md, "Crane mode"; the language is the page's,
-// i18n/index.ts). Every table has the English table's keys (the type says so). Units: SI (m, m/s, degrees
-// shown for angles, which travel in rad).
-import { language } from '../i18n';
+// index.ts), beside the page's and the fit report's tables. Every table has the English table's keys and
+// every language of LANGUAGES has a table (the types say so). Units: SI (m, m/s, degrees shown for angles,
+// which travel in rad).
+import { fill, language } from './index';
+import type { Lang } from './index';
 
 const EN = {
   title: 'Crane',
@@ -87,10 +89,9 @@ const FR: Table = {
   notCrane: 'pas en mode grue',
 };
 
-export const CRANE_WORDS = { en: EN, de: DE, fr: FR } as const;
+export const CRANE_WORDS: Record<Lang, Table> = { en: EN, de: DE, fr: FR };
 
 /** The crane word `key` in the page's language with each {name} replaced by vars[name]. */
 export function cw(key: CraneWord, vars: Record<string, string | number> = {}): string {
-  const table: Table = CRANE_WORDS[language()];
-  return table[key].replace(/\{(\w+)\}/g, (m, name: string) => (name in vars ? String(vars[name]) : m));
+  return fill(CRANE_WORDS[language()][key], vars);
 }
