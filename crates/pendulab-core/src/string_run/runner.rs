@@ -196,7 +196,7 @@ pub struct StringSettings {
     pub dt: f64,
     /// Grid points between kept samples (≥ 1).
     pub save_every: u64,
-    /// Most memory of the samples [bytes].
+    /// Most memory of the samples \[bytes\].
     pub max_saved_bytes: u64,
 }
 

@@ -115,7 +115,7 @@ pub enum Command {
     Reset,
     /// A scenario.
     Load(Box<Setup>),
-    /// The crane mode: switch to it, drive or move the trolley, hoist ([`super::crane`]).
+    /// The crane mode: switch to it, drive or move the trolley, hoist ([`crate::live::crane`]).
     Crane(CraneCommand),
 }
 
@@ -143,7 +143,7 @@ impl Command {
 pub enum Out {
     /// Frame records (one binary message).
     Frames(Vec<Record>),
-    /// A status notice ([`LiveSession::status`] when it was made).
+    /// A status notice ([`LiveSession::status`](crate::live::LiveSession::status) when it was made).
     Status(Value),
     /// An error notice: message and the command it was about.
     Error(String, Option<&'static str>),

@@ -2,7 +2,7 @@
 //! pacing by the wall clock × time scale, the commands, and one tick's work within a wall-time budget —
 //! the Python server's `pendulab.server.session` and `tick`, once in Rust, so that the page's own
 //! engine (WebAssembly in a Web Worker) runs the same session as the server. Time is passed in: the
-//! wall-clock seconds elapsed since the last tick, and a [`Clock`] for the budget.
+//! wall-clock seconds elapsed since the last tick, and a [`Clock`](crate::live::budget::Clock) for the budget.
 //!
 //! Fixed-step methods take whole steps of exactly dt, so a live run is the same sequence of steps as a
 //! batch run with that dt; `dop853` lands on the target times. A tick sends up to [`MAX_SUBSAMPLES`]
