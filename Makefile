@@ -15,7 +15,8 @@ STATIC := python/pendulab/server/static
 
 .PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
-	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm bench-lab-html test-lab-firefox test-tour-wheel
+	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm bench-lab-html test-lab-firefox test-tour-wheel \
+	bench-instructions
 
 $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
@@ -271,6 +272,14 @@ check-aarch64:
 # bench/roofline/results/roofline.json, docs/img/roofline.png, docs/performance.md "How fast, and why".
 bench-roofline: build
 	$(PY) bench/roofline/run.py $(ROOFLINE_ARGS)
+
+# Instructions (and simulated cache misses) of the hot paths at the commit before issue 25's work and
+# at HEAD, counted by valgrind's cachegrind: a check that the machine's load cannot disturb
+# (docs/performance.md, "Instruction counts"; BENCH_INSTRUCTIONS_ARGS="--base REV --new REV --baseline").
+# Builds both commits below target/instructions the first time (about 15 min), then about 3 min.
+bench-instructions: venv
+	@command -v valgrind >/dev/null || { echo "bench-instructions needs valgrind (apt-get install valgrind)"; exit 1; }
+	$(PY) bench/instructions.py $(BENCH_INSTRUCTIONS_ARGS)
 
 bench-compare: build
 	$(PY) bench/compare.py
