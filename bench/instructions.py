@@ -15,14 +15,15 @@ and last-level misses (LL mr + mw, simulated, instruction and data).
 Paths (rosette: l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s): RATTLE ``Stepper::step`` and
 ``step_n`` (dt = 1 ms), DOP853 ``Stepper::step`` (rtol 1e-10, atol 1e-12), one ensemble block (64
 starts, RATTLE, one thread), ``ExactSolution::new`` / ``state`` / ``states_at`` (one thread), and
-``pl.simulate`` from Python for 10 steps (``py_simulate_10``: the Python and border overhead) and
-1000 steps (``py_simulate_1000``), default saving. ``--baseline`` repeats the Rust paths at the
+with ``--python`` ``pl.simulate`` for 10 and 1000 steps (``py_simulate_10``, ``py_simulate_1000``):
+rough only, since ``simulate`` sizes its chunks by wall time and reads the memory left on each
+call. ``--baseline`` repeats the Rust paths at the
 baseline instruction set (``isa::set_baseline_only``). Under valgrind the CPU offers at most AVX2, so
 the AVX-512 loops of a host that has them are not what is counted.
 
-Usage: python3 bench/instructions.py [--base REV] [--new REV] [--paths a,b] [--no-python]
-[--baseline] [--limit 1.02] [--markdown FILE] (``make bench-instructions``; the first run builds both
-commits, about 15 min on the 2-core reference machine, then about 3 min per commit).
+Usage: python3 bench/instructions.py [--base REV] [--new REV] [--paths a,b]
+[--baseline] [--python] [--limit 1.02] [--markdown FILE] (``make bench-instructions``; the first run
+builds both commits, about 15 min on the 2-core reference machine, then about 3 min per commit).
 Exit status 1 when a path's instruction ratio new / base exceeds ``--limit``.
 """
 
@@ -186,14 +187,18 @@ def main() -> None:
     ap.add_argument("--new", default="HEAD", help="the commit after (default HEAD)")
     ap.add_argument("--work", type=Path, default=REPO / "target" / "instructions")
     ap.add_argument("--paths", default="", help="comma-separated subset of the paths")
-    ap.add_argument("--no-python", action="store_true", help="the Rust paths only")
+    ap.add_argument(
+        "--python",
+        action="store_true",
+        help="also pl.simulate (rough: its chunks are sized by wall time, so its counts vary)",
+    )
     ap.add_argument("--baseline", action="store_true", help="also the baseline instruction set")
     ap.add_argument("--limit", type=float, default=1.02, help="largest allowed ratio new/base")
     ap.add_argument("--markdown", type=Path, help="also write the table to this file")
     args = ap.parse_args()
     if shutil.which("valgrind") is None:
         sys.exit("valgrind is not installed (Debian: apt-get install valgrind)")
-    paths = list(RUST_PATHS) + ([] if args.no_python else list(PY_PATHS))
+    paths = list(RUST_PATHS) + (list(PY_PATHS) if args.python else [])
     if args.paths:
         paths = [p for p in args.paths.split(",") if p]
         unknown = set(paths) - set(RUST_PATHS) - set(PY_PATHS)
