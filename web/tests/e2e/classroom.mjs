@@ -496,19 +496,25 @@ export async function checkEnergyAndTwin(page, { check, WAIT, simulated }) {
   await page.locator('[data-input="twin-epsilon"]').fill('0.5');
   await page.locator('[data-action="twin-start"]').click();
   await page.waitForFunction(() => window.pendulab.twin.trajectory.length > 60 && window.pendulab.separation().t.length > 30, null, { timeout: WAIT, polling: 100 });
-  // the second bob is drawn once its session's states cover the first's time (a loaded machine lags): wait
-  // for that rather than a fixed time, then read both bobs in the same frame
-  await page.waitForFunction(() => window.pendulab.twinOnScreen() !== null, null, { timeout: WAIT, polling: 100 }).catch(() => {});
+  // the second bob is drawn at the first's time once its own session's states cover it; on a loaded machine
+  // that session lags and its bob is drawn at its last state, a moment behind. Wait (every animation frame)
+  // until the two bobs drawn are states at most 0.04 s apart, then read both as drawn in that frame
+  await page.waitForFunction(() => {
+    const a = window.pendulab.store.displayed();
+    const b = window.pendulab.twin.displayed();
+    return window.pendulab.twinOnScreen() !== null && a !== null && b !== null && Math.abs(a.t - b.t) <= 0.04;
+  }, null, { timeout: WAIT, polling: 'raf' }).catch(() => {});
   const two = await page.evaluate(() => {
     const sep = window.pendulab.separation();
     const a = window.pendulab.store.status;
     const b = window.pendulab.twin.status;
     const theta = (x) => Math.atan2(Math.hypot(x[0], x[1]), -x[2]);
-    return { d0: sep.d[0], t0: sep.t[0], tA: a.t0, n: sep.t.length, dTheta: theta(b.start.x) - theta(a.start.x), twin: window.pendulab.twinOnScreen(), bob: window.pendulab.bobOnScreen(), l: a.params.length };
+    const drawnT = [window.pendulab.store.displayed()?.t, window.pendulab.twin.displayed()?.t];
+    return { d0: sep.d[0], t0: sep.t[0], tA: a.t0, n: sep.t.length, dTheta: theta(b.start.x) - theta(a.start.x), twin: window.pendulab.twinOnScreen(), bob: window.pendulab.bobOnScreen(), l: a.params.length, drawnT };
   });
   const expected = 2 * two.l * Math.sin(((0.5 * Math.PI) / 180) / 2);
   check(Math.abs(two.dTheta - (0.5 * Math.PI) / 180) < 1e-9 && two.t0 === two.tA && Math.abs(two.d0 - expected) < 1e-6, `two pendulums: starts ${(two.dTheta * 180 / Math.PI).toFixed(4)}° apart, separation at t0 ${two.d0.toExponential(4)} m (2 l sin(ε/2) = ${expected.toExponential(4)} m), ${two.n} points`);
-  check(two.twin !== null && Math.hypot(two.twin.x - two.bob.x, two.twin.y - two.bob.y) < 200, `two pendulums: the second bob is drawn in the same scene (${JSON.stringify(two.twin)} beside ${JSON.stringify(two.bob)})`);
+  check(two.twin !== null && Math.hypot(two.twin.x - two.bob.x, two.twin.y - two.bob.y) < 200, `two pendulums: the second bob is drawn in the same scene (${JSON.stringify(two.twin)} beside ${JSON.stringify(two.bob)}, drawn at t = ${JSON.stringify(two.drawnT)} s)`);
   await page.locator('[data-action="twin-start"]').scrollIntoViewIfNeeded();
   await page.screenshot({ path: 'test-results/two-pendulums.png' });
   // another integrator: the same start, and the two stay within the methods' error of each other
