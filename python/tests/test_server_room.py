@@ -36,7 +36,7 @@ from pendulab.server.hygiene import MAX_WS_BUFFER
 from pendulab.server.protocol import parse_command
 from pendulab.server.room import MAX_CONNECTIONS_PER_CLIENT, MAX_REQUESTS_PER_CLIENT, Room
 from pendulab.server.session import Session, resolve_scenario
-from pendulab.server.worker import WorkerPool, WorkInvalid, WorkTimeout
+from pendulab.server.worker import WorkerPool, WorkFailed, WorkInvalid, WorkTimeout
 
 ROOT = Path(__file__).resolve().parents[2]
 FILMED = ROOT / "examples" / "data" / "filmed_swing.csv"
@@ -131,6 +131,30 @@ def test_a_fit_that_never_returns_cannot_hold_the_server_nor_its_signals() -> No
         proc.send_signal(signal.SIGINT)
         proc.wait(timeout=15)
         assert time.monotonic() - t0 < 3.0
+
+
+def _close_pipe_then_exit(code: int) -> None:  # runs in a worker: its pipe closes 0.3 s before it exits
+    os.closerange(3, 4096)
+    time.sleep(0.3)
+    os._exit(code)
+
+
+def test_a_worker_that_dies_is_named_with_its_exit_code() -> None:
+    """A worker that exits mid-job (the kernel's OOM killer, a crash) is a keyed ``worker_died`` with its
+    exit code (it said "exit code None": the pipe closes before the code is known), and the next job gets
+    a new worker."""
+    pool = WorkerPool("test", seconds=10.0)
+
+    async def go() -> None:
+        with pytest.raises(WorkFailed, match=r"worker died \(exit code 3\)") as died:
+            await pool.run(_close_pipe_then_exit, 3)
+        assert died.value.key == "worker_died" and died.value.values == {"code": "3"}
+        assert await pool.run(math.hypot, 3.0, 4.0) == b"5.0"
+
+    try:
+        asyncio.run(go())
+    finally:
+        pool.close()
 
 
 def test_a_worker_past_its_time_is_killed_and_replaced() -> None:

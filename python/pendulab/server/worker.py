@@ -259,6 +259,8 @@ class WorkerPool:
             try:
                 kind, value = w.conn.recv()
             except (EOFError, OSError):
+                # the pipe closes a moment before the process's exit code is known: wait for it (≤ 1 s)
+                await asyncio.to_thread(w.proc.join, 1.0)
                 code = w.proc.exitcode
                 raise WorkFailed(
                     f"the {self.name} worker died (exit code {code}); the request may need more "
