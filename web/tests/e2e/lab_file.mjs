@@ -139,8 +139,9 @@ try {
   await second.close();
 
   // the engine's refusals carry the server's message keys, so a German or French page says them in its
-  // language (python/pendulab/server/messages.json, the tables' server.<key>)
-  for (const [lang, words] of [['de', /length = 5000: höchstens 1000 erlaubt/], ['fr', /length = 5000 : au plus 1000/]]) {
+  // language (python/pendulab/server/messages.json, the tables' server.<key>), the parameter by its name
+  // in that language (the tables' parameter words)
+  for (const [lang, words] of [['de', /Länge l = 5000: höchstens 1000 erlaubt/], ['fr', /longueur l = 5000 : au plus 1000/]]) {
     const p = await context.newPage();
     watch(p);
     await p.goto(`${file}?lang=${lang}`, { timeout: WAIT });
