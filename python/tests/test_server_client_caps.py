@@ -14,6 +14,7 @@ import socket
 import sys
 import time
 from collections.abc import Iterator
+from typing import Any
 
 import httpx
 import pytest
@@ -169,7 +170,9 @@ def test_a_computation_beyond_the_client_cap_gets_429_with_a_key() -> None:
     assert client.post("/api/exact", json={"theta": 1.0}).status_code == 200
 
 
-def test_pendulab_serve_takes_the_caps_per_client(monkeypatch: pytest.MonkeyPatch) -> None:
+def _serve_configs(monkeypatch: pytest.MonkeyPatch) -> list[Any]:
+    """``pendulab serve`` made to record the uvicorn configs it would serve with instead of serving
+    (and to leave with sys.exit where it calls os._exit): the list it fills."""
     import uvicorn
 
     ran: list[uvicorn.Config] = []
@@ -181,6 +184,11 @@ def test_pendulab_serve_takes_the_caps_per_client(monkeypatch: pytest.MonkeyPatc
     monkeypatch.setattr(uvicorn.Server, "run", run)
     monkeypatch.setenv("PENDULAB_NO_BROWSER", "1")
     monkeypatch.setattr(os, "_exit", lambda code: sys.exit(code))  # serve leaves with os._exit
+    return ran
+
+
+def test_pendulab_serve_takes_the_caps_per_client(monkeypatch: pytest.MonkeyPatch) -> None:
+    ran = _serve_configs(monkeypatch)
     args = ["serve", "--no-browser", "--port", str(_free_port()), "--max-sessions-per-client", "5"]
     args += ["--max-connections-per-client", "7", "--max-computations-per-client", "3"]
     result = CliRunner().invoke(cli, args)
@@ -194,17 +202,7 @@ def test_pendulab_serve_takes_the_caps_per_client(monkeypatch: pytest.MonkeyPatc
 
 
 def test_pendulab_serve_trusts_proxy_headers_only_when_told(monkeypatch: pytest.MonkeyPatch) -> None:
-    import uvicorn
-
-    ran: list[uvicorn.Config] = []
-
-    def run(self: uvicorn.Server) -> None:  # instead of serving: what it would serve with
-        ran.append(self.config)
-        self.started = True
-
-    monkeypatch.setattr(uvicorn.Server, "run", run)
-    monkeypatch.setenv("PENDULAB_NO_BROWSER", "1")
-    monkeypatch.setattr(os, "_exit", lambda code: sys.exit(code))
+    ran = _serve_configs(monkeypatch)
     base = ["serve", "--no-browser", "--port", str(_free_port())]
     assert CliRunner().invoke(cli, base).exit_code == 0
     assert CliRunner().invoke(cli, [*base, "--trust-proxy", "10.0.0.2, fd00::/8"]).exit_code == 0
