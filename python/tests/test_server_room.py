@@ -461,14 +461,31 @@ def test_a_negligible_gravity_gets_the_great_circle_not_a_zero_period(client: La
     assert r.json()["period_z"] == pytest.approx(2 * math.pi / math.sin(1.0), rel=1e-14)
 
 
-LIMITED = """
+def _memory_limited(extra_bytes: int, body: str) -> str:
+    """A script run with ``python -c`` whose address space may grow by only ``extra_bytes`` beyond what
+    it has after importing pendulab (RLIMIT_AS), then runs ``body`` (``p``: the default pendulum)."""
+    return f"""
 import resource, sys, numpy as np, pendulab as pl
 from pathlib import Path
 vm = next(int(l.split()[1]) * 1024 for l in Path("/proc/self/status").read_text().splitlines()
           if l.startswith("VmSize:"))
-resource.setrlimit(resource.RLIMIT_AS, (vm + 2**30, resource.RLIM_INFINITY))  # 1 GiB more
+resource.setrlimit(resource.RLIMIT_AS, (vm + {extra_bytes}, resource.RLIM_INFINITY))
 p = pl.Pendulum()
-try:
+{body}"""
+
+
+def _run_limited(script: str, call: str) -> subprocess.CompletedProcess[str]:
+    """``script`` in a fresh Python with ``call`` as its argument; it must exit normally."""
+    out = subprocess.run(
+        [sys.executable, "-c", script, call], capture_output=True, text=True, timeout=120, check=False
+    )
+    assert out.returncode == 0, out.stderr[-500:]
+    return out
+
+
+LIMITED = _memory_limited(
+    2**30,  # 1 GiB more
+    """try:
     if sys.argv[1] == "exact":
         pl.exact(p, p.state_from_angles(1.0, 0.0, 0.0, 1.0)).state(np.zeros(int(2.5e7)))
     else:
@@ -477,7 +494,8 @@ try:
     print("computed")
 except pl.InvalidInputError as e:
     print("refused:", e)
-"""
+""",
+)
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc: Linux")
@@ -485,21 +503,13 @@ except pl.InvalidInputError as e:
 def test_a_call_beyond_the_memory_left_is_refused_not_aborted(call: str) -> None:
     """Issue 30: ``exact(p, s).state(np.zeros(2e8))`` and a 1e7-row ensemble aborted the process under
     a memory limit (the core's allocation failed); now the need is estimated first."""
-    out = subprocess.run(
-        [sys.executable, "-c", LIMITED, call], capture_output=True, text=True, timeout=120, check=False
-    )
-    assert out.returncode == 0, out.stderr[-500:]
+    out = _run_limited(LIMITED, call)
     assert out.stdout.startswith("refused:") and "GiB" in out.stdout and "chunks" in out.stdout, out.stdout
 
 
-SAVING = """
-import resource, sys, numpy as np, pendulab as pl
-from pathlib import Path
-vm = next(int(l.split()[1]) * 1024 for l in Path("/proc/self/status").read_text().splitlines()
-          if l.startswith("VmSize:"))
-resource.setrlimit(resource.RLIMIT_AS, (vm + 2**28, resource.RLIM_INFINITY))  # 256 MiB more
-p = pl.Pendulum()
-s = p.state_from_angles(1.0, 0.0, 0.0, 1.0)
+SAVING = _memory_limited(
+    2**28,  # 256 MiB more
+    """s = p.state_from_angles(1.0, 0.0, 0.0, 1.0)
 try:
     if sys.argv[1] == "save_at":
         pl.simulate(p, s, 1.0, save_at=np.linspace(0.0, 1.0, 10**7))
@@ -508,7 +518,8 @@ try:
     print("computed")
 except pl.InvalidInputError as e:
     print("refused:", e)
-"""
+""",
+)
 
 
 @pytest.mark.skipif(not sys.platform.startswith("linux"), reason="RLIMIT_AS and /proc: Linux")
@@ -518,10 +529,7 @@ def test_a_run_saving_more_than_the_memory_left_is_refused_not_aborted(call: str
     step over 10⁶ s, aborted the process under a memory limit (the core's allocation failed: the
     default cap on saved samples is 4 GiB whatever the machine has); now the save times are checked
     first and the cap is what the process can still get."""
-    out = subprocess.run(
-        [sys.executable, "-c", SAVING, call], capture_output=True, text=True, timeout=120, check=False
-    )
-    assert out.returncode == 0, out.stderr[-500:]
+    out = _run_limited(SAVING, call)
     assert out.stdout.startswith("refused:"), out.stdout
     words = "GiB of memory" if call == "save_at" else "above the limit of"
     assert words in out.stdout, out.stdout
