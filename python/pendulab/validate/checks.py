@@ -1,0 +1,165 @@
+"""The checks of single values and arrays every public entry point calls: real numbers within a
+limit of the table (:mod:`pendulab.validate.table`; SI units: positions [m], velocities [m/s], times
+[s], …), finite numbers, integers in a range, flags, choices, float64 arrays within a limit and of a
+shape, the planned steps (t_end − t₀)/dt of a fixed-step run, and results that must be finite.
+
+Every check raises :class:`pendulab.InvalidInputError` (a ``ValueError``) naming the value and what
+is allowed (:func:`pendulab.validate.table.invalid`); a non-finite result is an
+:class:`pendulab.IntegrationError`.
+"""
+
+from __future__ import annotations
+
+import math
+import numbers
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from .._core import IntegrationError, InvalidInputError
+from .table import LIMITS, MAX_SAMPLES, MAX_STEPS, _spec, invalid, show
+
+if TYPE_CHECKING:
+    from .._core import ParamSpec
+
+FloatArray = npt.NDArray[np.float64]
+
+
+def _real(name: str, value: Any, allowed: str) -> float:
+    """``value`` as a float when it is a real number (not a bool, a string or None)."""
+    scalar_array = isinstance(value, np.ndarray) and value.ndim == 0 and value.dtype.kind in "iuf"
+    if isinstance(value, bool | np.bool_) or not (isinstance(value, numbers.Real) or scalar_array):
+        raise invalid(name, value, allowed)
+    try:
+        x = float(value)
+    except (OverflowError, TypeError, ValueError):
+        raise invalid(name, value, allowed) from None
+    if not math.isfinite(x):
+        raise invalid(name, value, allowed)
+    return x
+
+
+def number(name: str, value: Any, limit: str | ParamSpec, *, positive: bool = False) -> float:
+    """A real number within ``limit`` (a name of :data:`LIMITS` or :data:`COMMON`, or a parameter
+    spec); ``positive`` also refuses 0."""
+    spec = _spec(limit)
+    x = _real(name, value, spec["allowed"])
+    if not (spec["min"] <= x <= spec["max"]) or (positive and x <= 0.0):
+        raise invalid(name, value, spec["allowed"])
+    return x
+
+
+def finite(name: str, value: Any, allowed: str = "a finite number") -> float:
+    """A finite real number (for settings whose range the core checks)."""
+    return _real(name, value, allowed)
+
+
+def integer(name: str, value: Any, lo: int, hi: int, allowed: str | None = None) -> int:
+    """An integer in [lo, hi] (a float with an integer value is accepted; a bool is not)."""
+    allowed = allowed or f"an integer in [{lo}, {hi}]"
+    if isinstance(value, bool | np.bool_):
+        raise invalid(name, value, allowed)
+    if isinstance(value, numbers.Integral):
+        n = int(value)
+    elif isinstance(value, numbers.Real):
+        x = float(value)
+        if not (math.isfinite(x) and x == int(x)):
+            raise invalid(name, value, allowed)
+        n = int(x)
+    else:
+        raise invalid(name, value, allowed)
+    if not lo <= n <= hi:
+        raise invalid(name, value, allowed)
+    return n
+
+
+def flag(name: str, value: Any) -> bool:
+    """A bool (True/False, or a numpy bool)."""
+    if not isinstance(value, bool | np.bool_):
+        raise invalid(name, value, "True or False")
+    return bool(value)
+
+
+def choice(name: str, value: Any, options: Iterable[str]) -> str:
+    """One of ``options`` (strings)."""
+    opts = list(options)
+    if not isinstance(value, str) or value not in opts:
+        raise invalid(name, value, f"one of {', '.join(map(repr, opts))}")
+    return value
+
+
+def array(
+    name: str,
+    value: Any,
+    limit: str | ParamSpec,
+    *,
+    shape: tuple[int, ...] | None = None,
+    max_size: int | None = None,
+) -> FloatArray:
+    """A float64 array of real numbers within ``limit`` (contiguous); ``shape`` (None: any) and at
+    most ``max_size`` (default :data:`MAX_SAMPLES`) entries."""
+    spec = _spec(limit)
+    max_size = MAX_SAMPLES if max_size is None else max_size
+    span = f"numbers in [{spec['min']:g}, {spec['max']:g}] {spec['unit']}".rstrip()
+    what = (
+        f"an array of {span}"
+        if shape is None
+        else f"{math.prod(shape)} {span}"
+        if len(shape) == 1
+        else f"an array of shape {shape} of {span}"
+    )
+    if isinstance(value, str | bytes | dict) or value is None:
+        raise invalid(name, value, what)
+    try:
+        size = np.size(value) if isinstance(value, np.ndarray) else None
+        if size is not None and size > max_size:
+            raise invalid(name, f"<array of {size} values>", f"at most {max_size} values")
+        arr = np.asarray(value)
+    except InvalidInputError:
+        raise
+    except (TypeError, ValueError, OverflowError, RecursionError, MemoryError):
+        raise invalid(name, value, what) from None
+    if arr.dtype.kind not in "iuf" and not (arr.dtype == object and _all_real(arr)):
+        raise invalid(name, value, what)
+    if arr.size > max_size:
+        raise invalid(name, f"<array of {arr.size} values>", f"at most {max_size} values")
+    try:
+        out = np.asarray(arr, dtype=np.float64)
+        out = np.ascontiguousarray(out) if out.ndim else out.copy()
+    except (TypeError, ValueError, OverflowError):
+        raise invalid(name, value, what) from None
+    if shape is not None and out.shape != shape:
+        raise invalid(name, value, f"{what} (got shape {out.shape})")
+    bad = ~(np.isfinite(out) & (out >= spec["min"]) & (out <= spec["max"]))
+    if bad.any():
+        i = np.unravel_index(int(np.argmax(bad)), out.shape) if out.ndim else ()
+        where = "".join(f"[{k}]" for k in i)
+        raise invalid(f"{name}{where}", arr[i] if out.ndim else arr.item(), spec["allowed"])
+    return out
+
+
+def _all_real(arr: np.ndarray) -> bool:
+    return all(isinstance(v, numbers.Real) and not isinstance(v, bool | np.bool_) for v in arr.flat)
+
+
+def planned_steps(t0: float, t_end: float, dt: float, name: str = "t_end") -> float:
+    """Refuses a fixed-step run of more than :data:`MAX_STEPS` steps (t_end − t₀)/dt before it starts."""
+    steps = (t_end - t0) / dt
+    if not steps <= MAX_STEPS:
+        raise InvalidInputError(
+            f"invalid {name} = {show(t_end)} with dt = {show(dt)} (t0 = {show(t0)}): (t_end - t0)/dt = "
+            f"{steps:.3g} steps; {LIMITS['steps']['allowed']}"
+        )
+    return steps
+
+
+def require_finite_result(what: str, inputs: str, *arrays: Any) -> None:
+    """Raises :class:`pendulab.IntegrationError` naming ``inputs`` when any of ``arrays`` holds a
+    NaN or an infinity (so that no non-finite number leaves a call silently)."""
+    for a in arrays:
+        if a is not None and not np.all(np.isfinite(np.asarray(a, dtype=np.float64))):
+            raise IntegrationError(
+                f"{what} is not finite for {inputs}; this input is beyond what can be computed"
+            )
