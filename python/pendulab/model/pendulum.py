@@ -1,9 +1,12 @@
-"""The spherical pendulum and its states on TS² (docs/theory.md §1–2), with the real-pendulum models of
-the core's registry (§7: damping, drag, forcing, any gravity direction, rotating frame, moving pivot).
+"""The spherical pendulum: a mass m [kg] on a rigid massless rod of length l [m] under gravity g
+[m/s²] (docs/theory.md §1–2: the constrained equations T-2.2, tension T-2.3, energy and J₃ T-2.6) and,
+optionally, the forces of the real-pendulum models of the core's registry (§7, T-7.1: damping, drag,
+forcing, any gravity direction, rotating frame, moving pivot) or a user force [N] (the slow path).
 
-Units: length l [m], mass m [kg], gravity g [m/s²] (any sign; g > 0 pulls along −z), position x [m],
-velocity v [m/s], time t [s], angles [rad], energy [J], J₃ [kg m²/s], tension [N], power [W]; the
-models' own parameters in the units :func:`models` lists.
+:class:`Pendulum` is built once and checked once in the core (its ``ModelSpec``, what every run
+hands over); it makes states (:mod:`pendulab.model.state`) and computes diagnostics along arrays.
+Units: l [m], m [kg], g [m/s²], x [m], v [m/s], t [s], energy [J], J₃ [kg m²/s], tension [N],
+power [W].
 """
 
 from __future__ import annotations
@@ -11,134 +14,25 @@ from __future__ import annotations
 import math
 import warnings
 from collections.abc import Callable
-from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
-import numpy.typing as npt
 
-from ._core import InvalidInputError, ModelSpec, project_state, state_on_ts2
-from ._core import diagnostics as _diagnostics
-from ._core import models as _models
-from ._core import state_from_angles as _state_from_angles
-from .display import Row, html_table, number, vector
-from .validate import COMMON, LIMITS, array, choice, finite, flag, invalid, spec
-from .validate import number as checked
-
-if TYPE_CHECKING:
-    from ._core import ModelInfo
-
-FloatArray = npt.NDArray[np.float64]
-
-
-_SPEED = {**LIMITS["velocity"], "allowed": f"{LIMITS['velocity']['allowed']} (the speed bound of a start)"}
-
-
-def _vec3(name: str, a: Any, limit: str = "position") -> FloatArray:
-    """3 real numbers within the ``limit`` of :mod:`pendulab.validate` (position [m] or velocity [m/s])."""
-    return array(name, a, limit, shape=(3,))
-
-
-def _check_speed(v: FloatArray, given: str) -> None:
-    """A velocity built from angle rates must respect the velocity limit too (|v_i| ≤ 10⁸ m/s)."""
-    lim = LIMITS["velocity"]
-    if not np.all(np.isfinite(v) & (np.abs(v) <= lim["max"])):
-        raise invalid(
-            given, f"a velocity {v.tolist()!r} m/s", f"the velocity it gives must be {lim['allowed']}"
-        )
-
-
-def models() -> list[ModelInfo]:
-    """The model registry (docs/theory.md §7): one dict per model with ``name``, ``summary``,
-    ``interactive`` (runs with the incremental :class:`pendulab.Stepper`; False for ``string``,
-    ``spring`` and ``sampled_pivot``, which run with ``pl.simulate`` / ``pendulab run`` — the web lab
-    runs the string and the spring too, with their own core steppers) and
-    ``params``,
-    a list of dicts ``name``, ``unit`` (SI), ``default``, ``min``, ``max`` (±inf for none),
-    ``description`` and ``allowed`` (in words). Length [m], mass [kg] and g [m/s²] come first in every
-    model; the rest are the model's own keywords of :class:`Pendulum` and keys of scenario files.
-    ``pendulab models`` prints the same table.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> import pendulab as pl
-    >>> [m['name'] for m in pl.models()][:3]
-    ['ideal', 'damped', 'rotating']
-    >>> damped = next(m for m in pl.models() if m['name'] == 'damped')
-    >>> [(q['name'], q['unit']) for q in damped['params']][3:5]
-    [('damping', '1/s'), ('drag', '1/m')]
-    """
-    return _models()
-
-
-def _infer_model(keys: set[str]) -> str:
-    """The first registered model whose parameters include all of ``keys`` (``"ideal"`` for none);
-    ``"damped"`` when none has them all (the core then names the parameter it does not know)."""
-    if not keys:
-        return "ideal"
-    for m in _models():
-        if keys <= {p["name"] for p in m["params"]}:
-            return m["name"]
-    return "damped"
-
-
-def _frozen(a: FloatArray) -> FloatArray:
-    a = np.array(a, dtype=np.float64)
-    a.flags.writeable = False
-    return a
-
-
-@dataclass(frozen=True)
-class State:
-    """A point (x, v) of TS²: position x [m] relative to the pivot, velocity v [m/s].
-
-    ``projection`` is ``(|Δx| [m], |Δv| [m/s])`` when the state was moved onto TS² with
-    ``project=True``, else ``None``.
-    """
-
-    x: FloatArray
-    v: FloatArray
-    projection: tuple[float, float] | None = field(default=None, compare=False)
-
-    def angles(self) -> tuple[float, float]:
-        """Polar angle θ from the downward vertical and azimuth φ = atan2(y, x) [rad]."""
-        rho = float(np.hypot(self.x[0], self.x[1]))
-        return float(np.arctan2(rho, -self.x[2])), float(np.arctan2(self.x[1], self.x[0]))
-
-    @property
-    def pair(self) -> tuple[FloatArray, FloatArray]:
-        """(x [m], v [m/s]) as contiguous arrays: the state a core class takes with a spec and options."""
-        return np.ascontiguousarray(self.x), np.ascontiguousarray(self.v)
-
-    def as_array(self) -> FloatArray:
-        """The state as one array (x₁, x₂, x₃, v₁, v₂, v₃) [m, m/s]."""
-        return np.concatenate([self.x, self.v])
-
-    def angles_deg(self) -> tuple[float, float]:
-        """θ and φ of :meth:`angles` in degrees."""
-        theta, phi = self.angles()
-        return math.degrees(theta), math.degrees(phi)
-
-    def __repr__(self) -> str:
-        theta, phi = self.angles_deg()
-        moved = "" if self.projection is None else f", projected by {number(self.projection[0], 3)} m"
-        return (
-            f"State(x={vector(self.x)} m, v={vector(self.v)} m/s; "
-            f"θ={number(theta, 6)}°, φ={number(phi, 6)}°{moved})"
-        )
-
-    def _repr_html_(self) -> str:
-        theta, phi = self.angles_deg()
-        rows: list[Row] = [
-            ("position x", vector(self.x), "m"),
-            ("velocity v", vector(self.v), "m/s"),
-            ("polar angle θ (from the downward vertical)", theta, "°"),
-            ("azimuth φ", phi, "°"),
-        ]
-        if self.projection is not None:
-            rows.append(("moved onto TS² by |Δx|, |Δv|", vector(self.projection, 3), "m, m/s"))
-        return html_table("State on TS²", rows)
+from .._core import InvalidInputError, ModelSpec
+from .._core import diagnostics as _diagnostics
+from .._core import models as _models
+from ..display import Row, html_table
+from ..validate import COMMON, array, invalid
+from ..validate import number as checked
+from .registry import _infer_model, check_model_keywords
+from .state import (
+    FloatArray,
+    State,
+    _frozen,
+    angles_in_radians,
+    state_from_angle_values,
+    state_from_cartesian,
+)
 
 
 class Pendulum:
@@ -198,17 +92,7 @@ class Pendulum:
         length = checked("length", length, COMMON["length"])
         g = checked("g", g, COMMON["g"])
         mass = checked("mass", mass, COMMON["mass"])
-        if model is not None:
-            choice("model", model, [m["name"] for m in _models()])
-        for key, value in extra.items():
-            if len(key) > 64:
-                raise invalid("parameter name", key, "a parameter of the model (pendulab.models())")
-            own = {p["name"]: p for m in _models() if m["name"] == model for p in m["params"]}
-            finite(
-                str(key),
-                value,
-                own[key]["allowed"] if key in own else f"a finite number (pendulab.models() lists {key!r})",
-            )
+        check_model_keywords(model, extra)
         if force is not None and not callable(force):
             raise InvalidInputError(
                 f"force = {force!r} is not callable: give a function force(t, x, v) -> 3 numbers in N"
@@ -363,16 +247,7 @@ class Pendulum:
         >>> p.state([0.0, 0.0, -2.1], [1.0, 0.0, 0.0], project=True).projection
         (0.10000000000000009, 0.0)
         """
-        xa, va = _vec3("x", x), array("v", v, _SPEED, shape=(3,))
-        if flag("project", project):
-            if 0.0 < np.linalg.norm(xa) < 1e-9 * self._length:  # its direction is lost to rounding
-                raise invalid(
-                    "x", xa.tolist(), f"a position at least 1e-9 l = {1e-9 * self._length:g} m from the pivot"
-                )
-            (xp, vp), dx, dv = project_state(self._spec, xa, va)
-            return State(_frozen(xp), _frozen(vp), (dx, dv))
-        xs, vs = state_on_ts2(self._spec, xa, va)
-        return State(_frozen(xs), _frozen(vs))
+        return state_from_cartesian(self._spec, self._length, x, v, project)
 
     def state_from_angles(
         self,
@@ -406,32 +281,14 @@ class Pendulum:
         >>> p.state_from_angles(theta_deg=90).x
         array([ 1.000000e+00,  0.000000e+00, -6.123234e-17])
         """
-        values = []
-        for name, rad, deg in (
-            ("theta", theta, theta_deg),
-            ("phi", phi, phi_deg),
-            ("theta_dot", theta_dot, theta_dot_deg),
-            ("phi_dot", phi_dot, phi_dot_deg),
-        ):
-            limit = "angle_rate" if name.endswith("_dot") else "angle"
-            if rad is not None and deg is not None:
-                raise InvalidInputError(
-                    f"give {name} either in radians ({name}={rad!r}) or in degrees "
-                    f"({name}_deg={deg!r}), not both"
-                )
-            if deg is not None:
-                lim = LIMITS[limit]
-                unit = "degrees/s" if name.endswith("_dot") else "degrees"
-                in_degrees = spec(
-                    f"{name}_deg", unit, lim["min"], lim["max"], f"{lim['allowed'].rsplit(' ', 1)[0]} {unit}"
-                )
-                values.append(math.radians(checked(f"{name}_deg", deg, in_degrees)))
-            elif rad is not None:
-                values.append(checked(name, rad, limit))
-            elif name == "theta":
-                raise InvalidInputError("give the polar angle: theta [rad] or theta_deg [°]")
-            else:
-                values.append(0.0)
+        values = angles_in_radians(
+            (
+                ("theta", theta, theta_deg),
+                ("phi", phi, phi_deg),
+                ("theta_dot", theta_dot, theta_dot_deg),
+                ("phi_dot", phi_dot, phi_dot_deg),
+            )
+        )
         if theta is not None and abs(values[0]) > 2.0 * math.pi:
             warnings.warn(
                 f"theta = {theta!r} rad is more than 2π; angles are in radians (use theta_deg={theta!r} "
@@ -439,9 +296,7 @@ class Pendulum:
                 UserWarning,
                 stacklevel=2,
             )
-        x, v = _state_from_angles(self._spec, values)
-        _check_speed(np.asarray(v), f"(theta_dot, phi_dot) = ({values[2]!r}, {values[3]!r}) rad/s")
-        return State(_frozen(x), _frozen(v))
+        return state_from_angle_values(self._spec, values)
 
     def diagnostics(self, x: Any, v: Any, t: Any = None) -> dict[str, FloatArray]:
         """Diagnostics along arrays x [m], v [m/s] of shape (N, 3) or (3,), at times t [s] (N values or
