@@ -18,6 +18,8 @@ t [s], x [m], v [m/s], heights [m], periods [s], angles [rad]. The motion is cla
 =================== ==========================================================================
 
 For g < 0 the solution is the mirror image z → −z of the one with gravity |g| (J₃ and φ unchanged).
+Its states as a Trajectory, summary, notebook table, overview figure and movie:
+:mod:`pendulab.theory.exact_output`.
 """
 
 from __future__ import annotations
@@ -35,9 +37,9 @@ from .._core import InvalidInputError
 from ..display import Row, html_table, number
 from ..memory import check_memory
 from ..model import FloatArray, Pendulum, State, _frozen, check_pendulum_state
-from ..overview import plot_overview
 from ..trajectory import Trajectory
 from ..validate import array, show
+from . import exact_output as output
 
 if TYPE_CHECKING:
     import os
@@ -329,19 +331,7 @@ class ExactSolution:
     def trajectory(self, t: Any) -> Trajectory:
         """The exact states at the times t [s] (1-D, any order) as a :class:`Trajectory` with method
         ``"exact"``, so its diagnostics, summary and file writers apply."""
-        times = array("t", t, "time")
-        if times.ndim != 1 or times.size == 0:
-            raise InvalidInputError(f"t must be a non-empty 1-D array of times (s), got shape {times.shape}")
-        x, v = self.state(times)
-        return Trajectory(
-            self._pendulum,
-            times.copy(),
-            x,
-            v,
-            "exact",
-            {"kind": self.kind},
-            {"steps": 0, "samples": len(times)},
-        )
+        return output.trajectory(self, t)
 
     def animate(
         self,
@@ -357,81 +347,23 @@ class ExactSolution:
         (0, 10 s) without a duration. The other arguments are those of
         :meth:`pendulab.Trajectory.animate` (a :class:`pendulab.animate.MovieSettings` and/or its
         fields as keywords); returns a :class:`pendulab.animate.Movie`."""
-        from ..animate import from_function, render
-        from ..animate.movie import movie_settings
-
-        s = movie_settings(settings, options)
-        if t is None:
-            t = (0.0, s.speed * s.duration if s.duration is not None else 10.0)
-        try:
-            span = (float(t[0]), float(t[1]))
-        except (TypeError, ValueError, IndexError):
-            raise InvalidInputError(f"t = {t!r} must be a pair (t_start, t_end) of times in s") from None
-
-        def states(times: FloatArray) -> tuple[FloatArray, FloatArray]:
-            x, v = self.state(np.asarray(times, dtype=np.float64))
-            return x[:, None, :], v[:, None, :]
-
-        p = self._pendulum
-        motion = from_function(
-            states,
-            length=p.length,
-            g=p.g,
-            mass=p.mass,
-            span=span,
-            label=f"exact solution ({self.kind} motion)",
-        )
-        return render(motion, path, s)
+        return output.animate(self, path, settings, t, **options)
 
     def summary(self) -> str:
         """A few lines: kind, turning heights, z-period, Δφ and W (SI units)."""
-        p = self._pendulum
-        heights = ", ".join(f"{z:.9g}" for z in self.turning_heights)
-        lines = [
-            f"pendulum: l = {p.length} m, m = {p.mass} kg, g = {p.g} m/s^2",
-            f"kind:     {self.kind}",
-            f"heights:  z1, z2{', z3' if len(self.turning_heights) == 3 else ''} = {heights} m",
-        ]
-        if self.modulus is not None:
-            lines.append(f"modulus:  m = k^2 = {self.modulus:.15g}")
-        if self.period_z is not None:
-            lines.append(f"period:   T_z = {self.period_z:.15g} s")
-        if self.azimuth_advance is not None:
-            dphi, w = self.azimuth_advance, self.rotation_number
-            lines.append(f"advance:  dphi = {dphi:.15g} rad per z-period, W = {w:.15g}")
-        return "\n".join(lines)
+        return output.summary(self)
 
     def __repr__(self) -> str:
         tz = "" if self.period_z is None else f", T_z = {number(self.period_z, 9)} s"
         return f"ExactSolution(kind={self.kind!r}{tz}, pendulum={self._pendulum!r})"
 
     def _repr_html_(self) -> str:
-        p = self._pendulum
-        rows: list[Row] = [
-            ("pendulum", f"l = {number(p.length)} m, g = {number(p.g)} m/s², m = {number(p.mass)} kg", ""),
-            ("kind (T-4.6)", self.kind, ""),
-            (
-                "turning heights z₁, z₂" + (", z₃" if len(self.turning_heights) == 3 else ""),
-                ", ".join(number(z, 9) for z in self.turning_heights),
-                "m",
-            ),
-            ("modulus m = k²", self.modulus, ""),
-            ("z-period T_z", number(self.period_z, 12), "s"),
-            ("azimuthal advance Δφ per T_z", number(self.azimuth_advance, 12), "rad"),
-            ("rotation number W = Δφ/2π", number(self.rotation_number, 12), ""),
-        ]
-        return html_table("Exact solution", rows, note="sol.state(t), sol.phases(), sol.plot()")
+        return output.html(self)
 
     def default_times(self, points: int = 2000) -> FloatArray:
         """``points`` times [s] covering three z-periods (or 10/ω₀ when there is no period, 10 s when
         g = 0): what :meth:`plot` draws by default."""
-        if self.period_z is not None and math.isfinite(self.period_z) and self.period_z > 0.0:
-            span = 3.0 * self.period_z
-        elif self.omega0 > 0.0:
-            span = 10.0 / self.omega0
-        else:
-            span = 10.0
-        return np.linspace(0.0, span, points)
+        return output.default_times(self, points)
 
     def plot(self, path: str | os.PathLike[str] | None = None, *, t: Any = None, **kwargs: Any) -> Any:
         """The overview figure of the exact motion at the times ``t`` [s] (keyword; default
@@ -439,15 +371,7 @@ class ExactSolution:
         (dashed), and the drift of E and J₃ — which for the exact solution stays at rounding level.
         Saved atomically to ``path`` if given (first argument or keyword, as for every ``plot``
         method: ``sol.plot("x.png")``). Needs matplotlib. Returns the Figure."""
-        if path is not None and not isinstance(path, str | os.PathLike):
-            raise InvalidInputError(
-                f"plot(path={show(path)}): path must be a file name (.png, .svg, .pdf); "
-                "give the times as t=... [s]"
-            )
-        times = self.default_times() if t is None else t
-        kwargs.setdefault("turning_heights", self.turning_heights[:2])
-        kwargs.setdefault("title", f"exact solution ({self.kind})")
-        return plot_overview(self.trajectory(times), path, **kwargs)
+        return output.plot(self, path, t, **kwargs)
 
 
 def exact(pendulum: Pendulum, state: State) -> ExactSolution:
