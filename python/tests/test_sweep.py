@@ -22,8 +22,8 @@ from test_cli import assert_user_error, invoke
 
 import pendulab as pl
 from pendulab.sweeps import backends as sweep_backends
-from pendulab.sweeps import results as sweep_io
 from pendulab.sweeps import run as sweep_mod
+from pendulab.sweeps import sinks as sweep_io
 from pendulab.sweeps.file import SweepFileError, load_sweep_file, sweep_file_from_dict
 
 EXAMPLES = REPO / "examples" / "sweeps"
