@@ -122,7 +122,7 @@ def _commands(query: str) -> tuple[list[dict], dict[str, str]]:
             r"own:[\d.eE+-]+:[\d.eE+-]+:[\d.eE+-]+|eps:[\d.eE+-]+|method:[\w.-]+|damped:[\d.eE+-]+", q["twin"]
         ), f"twin = {q['twin']!r} is not own:l:m:θ₀, eps:ε, method:name or damped:c"
     if "lang" in q:
-        assert re.fullmatch(r"[a-z]{2}", q["lang"]) and (WEB / "i18n" / f"{q['lang']}.ts").is_file()
+        assert re.fullmatch(r"[a-z]{2}", q["lang"]) and (WEB / "i18n" / q["lang"] / "index.ts").is_file()
     return out, q
 
 
