@@ -19,15 +19,15 @@
 //     Thread<00>, Thread<01>) and the lab's own parts (window.pendulab.frameCosts());
 //   - the machine's 1-minute load average before and after each part (say it next to any number).
 // Not a test: it prints. About 1.5 min. Usage: node bench/lab_frames.mjs [dist/pendulab-lab.html] [--opens 5] [--seconds 10]
-// Environment: CHROMIUM (default /usr/bin/chromium). playwright-core is the web/ package's.
-import { mkdtempSync, readdirSync, readFileSync } from 'node:fs';
+// Environment: CHROMIUM (default /usr/bin/chromium). playwright-core is the web/ package's; the browser is
+// opened as the tests open it (web/tests/e2e/file_lab.mjs), its CPU read as they read it (cpu.mjs).
 import { createRequire } from 'node:module';
-import { loadavg, tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
-import { pathToFileURL } from 'node:url';
+import { loadavg } from 'node:os';
+import { dirname, join } from 'node:path';
+import { cpuByThread } from '../web/tests/e2e/cpu.mjs';
+import { cdpMetrics, labFileUrl, launchChromium, waitFrames, WAIT } from '../web/tests/e2e/file_lab.mjs';
 
 const require = createRequire(new URL('../web/package.json', import.meta.url));
-const { chromium } = require('playwright-core');
 
 const args = process.argv.slice(2);
 const opt = (name, fallback) => {
@@ -40,8 +40,7 @@ const opt = (name, fallback) => {
 };
 const OPENS = opt('--opens', 5);
 const SECONDS = opt('--seconds', 10);
-const file = pathToFileURL(resolve(args[0] ?? 'dist/pendulab-lab.html')).href;
-const WAIT = 60_000;
+const file = labFileUrl(args[0], 'dist/pendulab-lab.html');
 const load = () => loadavg()[0].toFixed(2);
 const median = (xs) => {
   const s = [...xs].sort((a, b) => a - b);
@@ -49,16 +48,7 @@ const median = (xs) => {
   return s.length % 2 ? s[m] : (s[m - 1] + s[m]) / 2;
 };
 
-const userDataDir = mkdtempSync(join(tmpdir(), 'pendulab-frames-'));
-const context = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  headless: true,
-  viewport: { width: 1280, height: 800 },
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-    '--disable-background-networking', '--disable-component-update', '--disable-sync',
-    '--host-resolver-rules=MAP * ~NOTFOUND'],
-});
-await context.route('**/*', (route) => (/^(file|blob|data):/.test(route.request().url()) ? route.continue() : route.abort()));
+const { context, userDataDir } = await launchChromium('frames', { offline: true });
 // The baselines' pages, served by the page's own route (never the network).
 const BENCH = 'http://bench.invalid';
 // A bare three.js scene like the lab's (its background, two lights, a bob, a rod, a fading 2000-point
@@ -118,51 +108,9 @@ requestAnimationFrame(frame);
 </script>`;
 
 // CPU seconds of the browser's threads by process kind (browser, gpu-process, renderer, utility) and thread
-// name, from /proc (Linux; utime + stime of each thread): the processes started with this run's profile
-// directory on their command line and their descendants.
-const TICK = 100; // USER_HZ
-const stat = (pid) => {
-  const s = readFileSync(`/proc/${pid}/stat`, 'utf8');
-  const f = s.slice(s.lastIndexOf(')') + 2).split(' ');
-  return { ppid: Number(f[1]), cpu: (Number(f[11]) + Number(f[12])) / TICK };
-};
-function cpuByKind() {
-  const out = {};
-  const procs = new Map();
-  for (const d of readdirSync('/proc')) {
-    if (!/^\d+$/.test(d)) continue;
-    try {
-      procs.set(Number(d), { ...stat(d), cmd: readFileSync(`/proc/${d}/cmdline`, 'utf8').split(/[\0 ]/) });
-    } catch {
-      /* gone */
-    }
-  }
-  const ours = new Set([...procs].filter(([, p]) => p.cmd.some((a) => a.includes(userDataDir))).map(([pid]) => pid));
-  for (let grew = true; grew; ) {
-    grew = false;
-    for (const [pid, p] of procs) if (!ours.has(pid) && ours.has(p.ppid)) (ours.add(pid), (grew = true));
-  }
-  for (const pid of ours) {
-    const p = procs.get(pid);
-    if (!p) continue;
-    const kind = p.cmd.find((a) => a.startsWith('--type='))?.slice(7) ?? 'browser';
-    let tids = [];
-    try {
-      tids = readdirSync(`/proc/${pid}/task`);
-    } catch {
-      continue;
-    }
-    for (const tid of tids) {
-      try {
-        const key = `${kind}: ${readFileSync(`/proc/${pid}/task/${tid}/comm`, 'utf8').trim().replace(/\d+$/, '')}`;
-        out[key] = (out[key] ?? 0) + stat(`${pid}/task/${tid}`).cpu;
-      } catch {
-        /* gone */
-      }
-    }
-  }
-  return out;
-}
+// name, from /proc (web/tests/e2e/cpu.mjs): the processes started with this run's profile directory on
+// their command line and their descendants.
+const cpuByKind = () => cpuByThread(userDataDir, (args) => args.find((a) => a.startsWith('--type='))?.slice(7) ?? 'browser');
 
 const firstFrame = () =>
   performance.getEntriesByName('pendulab:first frame drawn')[0]?.startTime ?? null;
@@ -177,7 +125,7 @@ try {
     const page = await context.newPage();
     const t0 = Date.now();
     await page.goto(file, { timeout: WAIT });
-    await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 0, null, { timeout: WAIT, polling: 10 });
+    await waitFrames(page, 0, 10);
     seen.push((Date.now() - t0) / 1000);
     await page.waitForFunction(firstFrame, null, { timeout: WAIT, polling: 10 });
     const build = await page.evaluate(() => document.documentElement.dataset['wasmBuild'] ?? '?');
@@ -195,9 +143,8 @@ try {
   const measureOn = async (page, name, store) => {
     await page.waitForTimeout(1500); // past the start-up work of the phase (plots, the exact solution)
     const before = load();
-    const cdp = await context.newCDPSession(page);
-    await cdp.send('Performance.enable');
-    const metrics = async () => Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
+    const cdp = await cdpMetrics(context, page);
+    const metrics = cdp.metrics;
     if (store) await page.evaluate(() => window.pendulab.frameCosts());
     const [m0, c0] = [await metrics(), cpuByKind()];
     const r = await page.evaluate(([ms, lab]) => new Promise((done) => {
@@ -264,7 +211,7 @@ try {
   const bare = await baseline(`baseline: bare three.js scene, ${canvas.w} × ${canvas.h} px`, 'three.html');
   const page = await context.newPage();
   await page.goto(file, { timeout: WAIT });
-  await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: WAIT });
+  await waitFrames(page, 5);
   const phases = [['rosette (exact error)', null], ['damped (Richardson companion)', { type: 'set_model', model: 'damped', params: { damping: 0.3 } }]];
   const lab = [];
   for (const [name, cmd] of phases) {

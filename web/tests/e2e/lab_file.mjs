@@ -6,41 +6,13 @@
 // its damping, a scenario loaded, a refused command explained, and in German and French), the page's URL reproduces the run in a
 // second page, what needs Python says so, no request left the machine, no console errors.
 // Usage: node tests/e2e/lab_file.mjs /abs/path/pendulab-lab.html
-import { mkdirSync, mkdtempSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { mkdirSync } from 'node:fs';
+import { checker, errorWatcher, labFileUrl, launchChromium, waitFrames, WAIT } from './file_lab.mjs';
 
-const file = pathToFileURL(process.argv[2] ?? '../dist/pendulab-lab.html').href;
-const WAIT = 60_000;
-const context = await chromium.launchPersistentContext(mkdtempSync(join(tmpdir(), 'pendulab-lab-')), {
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  headless: true,
-  viewport: { width: 1280, height: 800 },
-  args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-    '--disable-background-networking', '--disable-component-update', '--disable-sync',
-    '--host-resolver-rules=MAP * ~NOTFOUND'],
-});
-const failures = [];
-let checks = 0;
-const check = (ok, what) => {
-  checks++;
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
-const refused = [];
-await context.route('**/*', (route) => {
-  const url = route.request().url();
-  if (/^(file|blob|data):/.test(url)) return route.continue();
-  refused.push(url);
-  return route.abort();
-});
-const errors = [];
-const watch = (page) => {
-  page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
-  page.on('pageerror', (e) => errors.push(String(e)));
-};
+const file = labFileUrl(process.argv[2]);
+const { context, refused } = await launchChromium('lab', { offline: true });
+const { check, finish } = checker('lab file');
+const { errors, watch } = errorWatcher();
 const status = (page) => page.evaluate(() => window.pendulab.store.status);
 
 try {
@@ -49,7 +21,7 @@ try {
   watch(page);
   const opened = Date.now();
   await page.goto(file, { timeout: WAIT });
-  await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 0, null, { timeout: WAIT, polling: 20 });
+  await waitFrames(page, 0, 20);
   const first = (Date.now() - opened) / 1000;
   console.log(`first frame ${first.toFixed(2)} s after opening the file`);
   check(first < 15, `the first frame arrives (${first.toFixed(2)} s; the goal is 1.5 s on an idle machine)`);
@@ -145,7 +117,7 @@ try {
     const p = await context.newPage();
     watch(p);
     await p.goto(`${file}?lang=${lang}`, { timeout: WAIT });
-    await p.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 0, null, { timeout: WAIT, polling: 20 });
+    await waitFrames(p, 0, 20);
     await p.evaluate(() => window.pendulab.send({ type: 'set_params', length: 5000 }));
     const text = await p.waitForFunction((re) => {
       const t = document.getElementById('message')?.textContent ?? '';
@@ -162,5 +134,4 @@ try {
 } finally {
   await context.close();
 }
-console.log(`lab file: ${checks - failures.length} passed, ${failures.length} failed`);
-process.exit(failures.length > 0 ? 1 : 0);
+finish();

@@ -13,21 +13,14 @@
 // Usage: node tests/e2e/lab_firefox.mjs /abs/path/pendulab-lab.html
 // Environment: FIREFOX (default: firefox-esr on PATH), GECKODRIVER (default: geckodriver on PATH).
 import { spawn, execFileSync } from 'node:child_process';
-import { createServer } from 'node:net';
-import { pathToFileURL } from 'node:url';
+import { checker, freePort, labFileUrl, WAIT } from './file_lab.mjs';
 
-const file = pathToFileURL(process.argv[2] ?? '../dist/pendulab-lab.html').href;
+const file = labFileUrl(process.argv[2]);
 const which = (name) => execFileSync('sh', ['-c', `command -v ${name}`]).toString().trim();
 const firefox = process.env.FIREFOX ?? which('firefox-esr');
 const geckodriver = process.env.GECKODRIVER ?? which('geckodriver');
-const WAIT = 60_000;
 
-const port = await new Promise((resolve) => {
-  const s = createServer().listen(0, '127.0.0.1', () => {
-    const p = s.address().port;
-    s.close(() => resolve(p));
-  });
-});
+const port = await freePort();
 const driver = spawn(geckodriver, ['--port', String(port), '--log', 'warn'], { stdio: 'ignore' });
 const base = `http://127.0.0.1:${port}`;
 
@@ -48,13 +41,7 @@ for (let i = 0; ; i++) {
   }
 }
 
-const failures = [];
-let checks = 0;
-const check = (ok, what) => {
-  checks++;
-  console.log(`${ok ? 'ok  ' : 'FAIL'} ${what}`);
-  if (!ok) failures.push(what);
-};
+const { check, finish } = checker('lab file in Firefox');
 
 let session = null;
 try {
@@ -132,5 +119,4 @@ try {
   if (session !== null) await wd('DELETE', `/session/${session}`).catch(() => {});
   driver.kill();
 }
-console.log(`lab file in Firefox: ${checks - failures.length} passed, ${failures.length} failed`);
-process.exit(failures.length > 0 ? 1 : 0);
+finish();

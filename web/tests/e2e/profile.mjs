@@ -9,26 +9,20 @@
 //     the compositor draws), the page's renderer, and the server, from /proc (Linux).
 // Not a test: it prints. Usage (from web/, after `make build`):
 //   node tests/e2e/profile.mjs [seconds=4] [query, e.g. "s=rosette"]     (PAUSE=1: the lab paused)
+// The browser is opened as the tests open it (file_lab.mjs), its CPU read as they read it (cpu.mjs).
 // Environment: PENDULAB (default ../.venv/bin/pendulab), CHROMIUM (default /usr/bin/chromium); STATIC=dir
 // serves that build of the page instead of the package's (e.g. `git archive` of an older commit's
 // python/pendulab/server/static, to compare before and after on the same machine state).
 import { spawn } from 'node:child_process';
-import { mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
-import { createServer } from 'node:net';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { chromium } from 'playwright-core';
+import { rmSync } from 'node:fs';
+import { cpuByThread } from './cpu.mjs';
+import { cdpMetrics, freePort, launchChromium, waitFrames } from './file_lab.mjs';
 
 const seconds = Number(process.argv[2] ?? 4);
 const query = process.argv[3] ?? '';
 const pendulab = process.env.PENDULAB ?? '../.venv/bin/pendulab';
 
-const port = await new Promise((resolve) => {
-  const s = createServer().listen(0, '127.0.0.1', () => {
-    const p = s.address().port;
-    s.close(() => resolve(p));
-  });
-});
+const port = await freePort();
 // STATIC=dir serves another build of the page (e.g. an older one, to compare) with the same server
 const server = process.env.STATIC
   ? spawn(
@@ -57,85 +51,26 @@ for (let i = 0; ; i++) {
   await new Promise((r) => setTimeout(r, 300));
 }
 
-const TICK = 100; // /proc/<pid>/stat counts CPU time in clock ticks (USER_HZ, 100 on Linux)
-const readStat = (path) => {
-  const stat = readFileSync(path, 'utf8');
-  const f = stat.slice(stat.lastIndexOf(')') + 2).split(' ');
-  return { ppid: Number(f[1]), cpu: (Number(f[11]) + Number(f[12])) / TICK }; // utime + stime
-};
 /** CPU seconds by process kind and thread name of the browser launched with `marker` on its command line
- *  (and its descendants) and of the server. */
-function cpuByKind(marker, serverPid) {
-  const procs = new Map();
-  for (const pid of readdirSync('/proc').filter((d) => /^\d+$/.test(d))) {
-    try {
-      // chromium rewrites its children's command lines into one space-separated string
-      const cmd = readFileSync(`/proc/${pid}/cmdline`, 'utf8').split(/[\0 ]/);
-      procs.set(Number(pid), { cmd, ppid: readStat(`/proc/${pid}/stat`).ppid });
-    } catch {
-      /* gone */
-    }
-  }
-  const ours = new Map();
-  for (const [pid, p] of procs) if (p.cmd.some((a) => a.includes(marker))) ours.set(pid, p);
-  for (let grew = true; grew; ) {
-    grew = false;
-    for (const [pid, p] of procs) {
-      if (!ours.has(pid) && ours.has(p.ppid)) {
-        ours.set(pid, p);
-        grew = true;
-      }
-    }
-  }
-  const out = {};
-  const add = (pid, kind) => {
-    let tids = [];
-    try {
-      tids = readdirSync(`/proc/${pid}/task`);
-    } catch {
-      return;
-    }
-    for (const tid of tids) {
-      try {
-        const name = readFileSync(`/proc/${pid}/task/${tid}/comm`, 'utf8').trim().replace(/\d+$/, '');
-        const key = `${kind}: ${name}`;
-        out[key] = (out[key] ?? 0) + readStat(`/proc/${pid}/task/${tid}/stat`).cpu;
-      } catch {
-        /* gone */
-      }
-    }
-  };
-  for (const [pid, p] of ours) {
-    const type = p.cmd.find((a) => a.startsWith('--type='))?.slice(7);
-    const sub = p.cmd.find((a) => a.startsWith('--utility-sub-type='))?.slice(19);
-    const webui = p.cmd.includes('--top-chrome-webui') ? ' (browser UI)' : '';
-    add(pid, `chromium ${type ? (sub ? `${type} (${sub})` : type + webui) : 'browser'}`);
-  }
-  add(serverPid, 'server');
-  return out;
-}
+ *  (and its descendants) and of the server (cpu.mjs). */
+const cpuByKind = (marker, serverPid) =>
+  cpuByThread(
+    marker,
+    (args) => {
+      const type = args.find((a) => a.startsWith('--type='))?.slice(7);
+      const sub = args.find((a) => a.startsWith('--utility-sub-type='))?.slice(19);
+      const webui = args.includes('--top-chrome-webui') ? ' (browser UI)' : '';
+      return `chromium ${type ? (sub ? `${type} (${sub})` : type + webui) : 'browser'}`;
+    },
+    [[serverPid, 'server']],
+  );
 
-const userDataDir = mkdtempSync(join(tmpdir(), 'pendulab-profile-'));
-const context = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  headless: true,
-  viewport: { width: 1280, height: 800 },
-  args: [
-    '--headless',
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-quic',
-    '--no-first-run',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-  ],
-});
+const { context, userDataDir } = await launchChromium('profile');
 try {
   const page = context.pages()[0] ?? (await context.newPage());
   if (process.env.EXP) await page.addInitScript((e) => localStorage.setItem('pendulab-exp', e), process.env.EXP);
   await page.goto(`${base}/${query ? '?' + query : ''}`);
-  await page.waitForFunction(() => (window.pendulab?.store.frames.length ?? 0) > 5, null, { timeout: 60_000 });
+  await waitFrames(page, 5);
   await page.waitForTimeout(1500); // past the start-up work (first plots, exact solution, V_eff)
   if (process.env.PAUSE) {
     // PAUSE=1: the lab paused (nothing moves: what does an idle page cost?)
@@ -157,10 +92,7 @@ try {
   console.log(`WebGL: ${info.renderer}; scene canvas ${info.canvas} px; devicePixelRatio ${info.dpr}`);
   if (info.quality) console.log(`quality: ${JSON.stringify(info.quality)}`);
 
-  const cdp = await context.newCDPSession(page);
-  await cdp.send('Performance.enable');
-  const metrics = async () =>
-    Object.fromEntries((await cdp.send('Performance.getMetrics')).metrics.map((m) => [m.name, m.value]));
+  const { metrics } = await cdpMetrics(context, page);
   await page.evaluate(() => window.pendulab?.frameCosts?.());
   const drawn0 = await page.evaluate(() => window.pendulab?.drawn() ?? 0);
   const m0 = await metrics();

@@ -17,11 +17,8 @@
 // documentation site's "open in the lab" links (tools/lab_links.py) opens in its set-up. Writes
 // test-results/lab.png and test-results/lab-negative-g.png (…-file.png for the file transport). Waits are generous (a loaded
 // 2-core machine), but every check compares against a bound and can fail.
-import { mkdirSync, mkdtempSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join, resolve } from 'node:path';
-import { pathToFileURL } from 'node:url';
-import { chromium } from 'playwright-core';
+import { mkdirSync, rmSync } from 'node:fs';
+import { errorWatcher, labFileUrl, launchChromium, WAIT } from './file_lab.mjs';
 import { checkModels, checkOffSphere, checkViews } from './models.mjs';
 import { checkFitData } from './fitdata.mjs';
 import { checkFirstFrame } from './startup.mjs';
@@ -35,40 +32,13 @@ import { checkCrane } from './crane.mjs';
 const target = process.argv[2] ?? 'http://127.0.0.1:8765';
 /** "server" (`pendulab serve` at an http URL) or "file" (the one-file lab from file://, no network). */
 const transport = /^https?:/.test(target) ? 'server' : 'file';
-const home = transport === 'server' ? target.replace(/\/$/, '') + '/' : target.startsWith('file:') ? target : pathToFileURL(resolve(target)).href;
+const home = transport === 'server' ? target.replace(/\/$/, '') + '/' : labFileUrl(target);
 const shot = (name) => `test-results/${name}${transport === 'file' ? '-file' : ''}.png`;
 const ONLY = (process.env.E2E_ONLY ?? '').split(',').filter(Boolean);
-const WAIT = 60_000;
-const MIN_FPS = 25; // see the frame-rate check below // ms: the longest any condition is waited for
-const userDataDir = mkdtempSync(join(tmpdir(), 'pendulab-e2e-'));
-const context = await chromium.launchPersistentContext(userDataDir, {
-  executablePath: process.env.CHROMIUM ?? '/usr/bin/chromium',
-  headless: true,
-  viewport: { width: 1280, height: 800 },
-  args: [
-    '--headless',
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-quic',
-    '--no-first-run',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    // the file transport: no name resolves, so nothing could reach a network even past the route below
-    ...(transport === 'file' ? ['--host-resolver-rules=MAP * ~NOTFOUND'] : []),
-  ],
-});
-// the file transport: every request that is not the file itself (or a blob:/data: URL it makes) is
-// refused and counted; the count must stay 0
-const refused = [];
-if (transport === 'file') {
-  await context.route('**/*', (route) => {
-    const url = route.request().url();
-    if (/^(file|blob|data):/.test(url)) return route.continue();
-    refused.push(url);
-    return route.abort();
-  });
-}
+const MIN_FPS = 25; // see the frame-rate check below
+// the file transport: no name resolves and every request that is not the file itself (or a blob:/data:
+// URL it makes) is refused and counted; the count must stay 0
+const { context, userDataDir, refused } = await launchChromium('e2e', { offline: transport === 'file' });
 console.log(`== e2e transport: ${transport} (${home})`);
 const failures = [];
 let checks = 0;
@@ -83,11 +53,7 @@ const skip = (what, reason) => {
   skipped.push(what);
   console.log(`skip ${what} (${transport} transport): ${reason}`);
 };
-const errors = [];
-const watch = (page) => {
-  page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
-  page.on('pageerror', (e) => errors.push(String(e)));
-};
+const { errors, watch } = errorWatcher();
 /** Waits until the current epoch's received trajectory spans `seconds` of simulated time. */
 const simulated = (page, seconds) =>
   page.waitForFunction(
