@@ -14,7 +14,7 @@ export default defineConfig({
     chunkSizeWarningLimit: 1000,
   },
   server: {
-    fs: { allow: ['..'] }, // protocol.ts imports ../python/pendulab/server/frame.json
+    fs: { allow: ['..'] }, // protocol/frames.ts imports ../python/pendulab/server/frame.json
     proxy: {
       '/api': 'http://127.0.0.1:8000',
       '/ws': { target: 'ws://127.0.0.1:8000', ws: true },
