@@ -21,168 +21,19 @@ Three sorts of case (docs/fit.md, "Validation"):
   or (when a truth exists) the truth within 3 stderr — within the time limit; never another
   exception, a hang, or a confident wrong value.
 
-Units: SI (m, s, rad, m/s²); the ``units`` case fits the same swing in m and in mm.
+Units: SI (m, s, rad, m/s²); the ``units`` case fits the same swing in m and in mm. The data makers
+(video, encoder, phone, ...) are in ``bench/fit_validate_data.py``.
 """
 
 from __future__ import annotations
 
-import functools
 import sys
-from collections.abc import Callable
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import numpy as np
-
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "testdata" / "generate"))
 import independent_pendulum as ip
-
-
-@dataclass(frozen=True)
-class Data:
-    """One trial's data: keyword arguments of ``pl.fit`` without the pendulum (``kw``), the true
-    values of the fitted parameters (``truth``), and the noise σ of the main data kind."""
-
-    kw: dict[str, Any]
-    truth: dict[str, float]
-    sigma: float
-    sigma_kw: Any = None  # the true noise as pl.fit's sigma= (a dict for several kinds); None: ``sigma``
-
-
-@dataclass(frozen=True)
-class Case:
-    """name, sort (right / wrong / degenerate / units), the fitted names, the starting pendulum as
-    ``pl.Pendulum`` keyword arguments, ``make(rng, noise_scale)`` → Data, a note, and the fit's loss."""
-
-    name: str
-    sort: str
-    fit: list[str]
-    pendulum: dict[str, Any]
-    make: Callable[[np.random.Generator, float], Data]
-    note: str
-    loss: str = "linear"
-    key: list[str] = field(default_factory=list)  # degenerate: parameters whose determination matters
-
-
-@functools.cache
-def _traj(
-    truth: ip.Truth, start: tuple[float, float, float, float], t_from: float, duration: float, dt: float
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """t [s] and x, v, ẍ (N, 3) of the true motion released at ``start`` = (θ, φ, θ̇, φ̇) at t = 0,
-    sampled every ``dt`` from ``t_from`` for ``duration`` s (computed once per process)."""
-    t = t_from + np.arange(0.0, duration, dt)
-    x, v, a, _ = ip.simulate(truth, ip.start_state(truth, *start), t)
-    return t, x, v, a
-
-
-def _video(
-    truth: ip.Truth,
-    *,
-    start: tuple[float, float, float, float] = (0.5, 0.0, 0.0, 0.8),
-    t_from: float = 1.3,
-    duration: float = 15.0,
-    fps: float = 30.0,
-    pivot: tuple[float, float, float] = (0.31, 0.0, 1.25),
-    sigma: float = 1.5e-3,
-    rho: float = 0.0,
-    outliers: float = 0.0,
-    scale: float = 1.0,
-    columns: tuple[int, ...] = (0, 2),
-) -> Callable[[np.random.Generator, float], Data]:
-    """A bob released at rest-or-moving ``start`` = (θ, φ, θ̇, φ̇) at t = 0 and filmed from ``t_from``
-    (mid-swing) for ``duration`` s: positions (x, z) by default, the pivot at ``pivot`` in the camera's
-    frame."""
-    names = {0: "pivot_x", 1: "pivot_y", 2: "pivot_z"}
-    true = {
-        "length": truth.length,
-        "g": truth.g,
-        "damping": truth.damping,
-        "drag": truth.drag,
-        **{names[c]: pivot[c] * scale for c in columns},  # measured = pivot' + scale·x, pivot' = scale·pivot
-    }
-
-    def make(rng: np.random.Generator, s: float) -> Data:
-        t, x, _, _ = _traj(truth, start, t_from, duration, 1.0 / fps)
-        pos = ip.measure_positions(x, rng, s * sigma, pivot, columns, scale, rho, outliers if s else 0.0)
-        return Data({"t": t, "positions": pos}, true, sigma)
-
-    return make
-
-
-def _encoder(
-    truth: ip.Truth,
-    *,
-    amplitude: float,
-    t_from: float,
-    duration: float,
-    rate: float,
-    sigma: float,
-    steps: int = 2400,
-    offset: float = 0.0,
-) -> Callable[[np.random.Generator, float], Data]:
-    """A rotary encoder on a planar swing released from rest at ``amplitude`` [rad]; sampled from
-    ``t_from`` at ``rate`` [Hz], white noise σ, quantised to 2π/``steps``, a zero ``offset``."""
-    true = {"length": truth.length, "g": truth.g, "damping": truth.damping, "drag": truth.drag}
-
-    def make(rng: np.random.Generator, s: float) -> Data:
-        t, x, _, _ = _traj(truth, (amplitude, 0.0, 0.0, 0.0), t_from, duration, 1.0 / rate)
-        a = ip.measure_encoder(x, rng, s * sigma, offset, steps if s else 0)
-        return Data({"t": t, "planar_angle": a}, true, float(np.hypot(sigma, 2 * np.pi / steps / 12**0.5)))
-
-    return make
-
-
-def _phone(truth: ip.Truth, *, bias: float = 0.0) -> Callable[[np.random.Generator, float], Data]:
-    """A phone as the bob of an elliptical swing, 100 Hz for 15 s from mid-swing: |a − g⃗| (σ 0.03
-    m/s², + ``bias``) and |ω| (σ 0.005 rad/s)."""
-    true = {"length": truth.length, "g": truth.g, "damping": truth.damping}
-
-    def make(rng: np.random.Generator, s: float) -> Data:
-        t, x, v, a = _traj(truth, (0.45, 0.0, 0.0, 0.6), 0.7, 15.0, 0.01)
-        f, w = ip.measure_phone(truth, x, v, a, rng, s * 0.03, s * 0.005, bias)
-        both = {"specific_force": 0.03, "angular_speed": 0.005}
-        return Data({"t": t, "specific_force": f, "angular_speed": w}, true, 0.03, both)
-
-    return make
-
-
-def _angles(truth: ip.Truth) -> Callable[[np.random.Generator, float], Data]:
-    def make(rng: np.random.Generator, s: float) -> Data:
-        t, x, _, _ = _traj(truth, (0.6, 0.2, 0.1, 0.9), 0.0, 20.0, 0.05)
-        return Data({"t": t, "angles": ip.measure_angles(x, rng, s * 2e-3)}, {"g": truth.g}, 2e-3)
-
-    return make
-
-
-def _constant(value: tuple[float, ...], sigma: float, n: int = 400) -> Callable[..., Data]:
-    t = np.arange(n) / 30.0
-
-    def make(rng: np.random.Generator, s: float) -> Data:
-        pos = np.tile(np.asarray(value, dtype=float), (n, 1)) + sigma * rng.standard_normal((n, len(value)))
-        return Data({"t": t, "positions": pos}, {}, max(sigma, 1e-12))
-
-    return make
-
-
-def _pure_noise(rng_sigma: float = 0.01) -> Callable[..., Data]:
-    t = np.arange(0.0, 20.0, 0.02)
-
-    def make(rng: np.random.Generator, s: float) -> Data:
-        return Data({"t": t, "planar_angle": rng_sigma * rng.standard_normal(len(t))}, {}, rng_sigma)
-
-    return make
-
-
-def _also(make: Callable[[np.random.Generator, float], Data], **truth: float) -> Callable[..., Data]:
-    """``make`` with more true values: the systematic terms a case fits (scale, angle_offset, …)."""
-
-    def more(rng: np.random.Generator, s: float) -> Data:
-        d = make(rng, s)
-        return Data(d.kw, {**d.truth, **truth}, d.sigma, d.sigma_kw)
-
-    return more
-
+from fit_validate_data import Case, also, angles, constant, encoder, phone, pure_noise, video
 
 VIDEO = ip.Truth(length=0.6, g=9.81, damping=0.010)
 VIDEO_FIT = ["length", "g", "damping", "pivot"]
@@ -201,7 +52,7 @@ def cases() -> list[Case]:
             "right",
             VIDEO_FIT,
             DAMPED,
-            _video(VIDEO),
+            video(VIDEO),
             "issue 23: l 0.6 m, c 0.010 1/s, φ̇ 0.8 rad/s at release, filmed from 1.3 s, 30 fps, σ 1.5 mm",
         ),
         Case(
@@ -209,7 +60,7 @@ def cases() -> list[Case]:
             "right",
             VIDEO_FIT,
             DAMPED,
-            _video(
+            video(
                 ip.Truth(length=0.8, damping=0.02),
                 start=(0.4, 0.3, 0.2, 1.0),
                 t_from=0.9,
@@ -226,7 +77,7 @@ def cases() -> list[Case]:
             "right",
             ["g", "damping", "drag"],
             {"model": "damped", "length": 0.5},
-            _encoder(enc_truth, amplitude=1.2, t_from=0.37, duration=15.0, rate=50.0, sigma=2e-3),
+            encoder(enc_truth, amplitude=1.2, t_from=0.37, duration=15.0, rate=50.0, sigma=2e-3),
             "planar, 50 Hz, 15 s, white σ 2 mrad then 2400 steps/turn",
         ),
         Case(
@@ -234,7 +85,7 @@ def cases() -> list[Case]:
             "right",
             ["length", "g", "damping"],
             DAMPED,
-            _phone(phone_truth),
+            phone(phone_truth),
             "100 Hz, 15 s, σ 0.03 m/s² and 0.005 rad/s",
         ),
         Case(
@@ -242,7 +93,7 @@ def cases() -> list[Case]:
             "right",
             ["g"],
             {"length": 1.0},
-            _angles(ip.Truth(length=1.0)),
+            angles(ip.Truth(length=1.0)),
             "20 Hz, 20 s, σ 2 mrad",
         ),
         Case(
@@ -250,7 +101,7 @@ def cases() -> list[Case]:
             "right",
             [*VIDEO_FIT, "drag"],
             DAMPED,
-            _video(ip.Truth(length=0.6, damping=0.01, drag=0.08), start=(0.8, 0.0, 0.0, 0.5)),
+            video(ip.Truth(length=0.6, damping=0.01, drag=0.08), start=(0.8, 0.0, 0.0, 0.5)),
             "issue 23: damping + drag on drag data gave LinAlgError",
         ),
         Case(
@@ -258,7 +109,7 @@ def cases() -> list[Case]:
             "right",
             VIDEO_FIT,
             DAMPED,
-            _video(VIDEO, outliers=0.1),
+            video(VIDEO, outliers=0.1),
             "outliers ±(10…30) σ in 10 % of frames; robust loss, σ left out",
             loss="soft_l1",
         ),
@@ -267,7 +118,7 @@ def cases() -> list[Case]:
             "right",
             VIDEO_FIT,
             DAMPED,
-            _video(VIDEO, rho=0.8),
+            video(VIDEO, rho=0.8),
             "correlated noise: error bars must account for it (or a warning)",
         ),
         # --- the model is wrong ---------------------------------------------------------------
@@ -276,7 +127,7 @@ def cases() -> list[Case]:
             "wrong",
             VIDEO_FIT,
             DAMPED,
-            _video(ip.Truth(length=0.6, damping=0.01, wind=(0.4, 0.0, 0.0))),
+            video(ip.Truth(length=0.6, damping=0.01, wind=(0.4, 0.0, 0.0))),
             "a tilted equilibrium (2.3°)",
         ),
         Case(
@@ -284,7 +135,7 @@ def cases() -> list[Case]:
             "wrong",
             VIDEO_FIT,
             DAMPED,
-            _video(ip.Truth(length=0.6, drag=0.3), start=(0.9, 0.0, 0.0, 0.3)),
+            video(ip.Truth(length=0.6, drag=0.3), start=(0.9, 0.0, 0.0, 0.3)),
             "the wrong damping law",
         ),
         Case(
@@ -292,7 +143,7 @@ def cases() -> list[Case]:
             "wrong",
             ["length", "damping", "drag"],
             {"model": "damped", "g": 9.80, "damping": 0.01},
-            _encoder(coulomb, amplitude=1.5, t_from=0.4, duration=30.0, rate=50.0, sigma=3e-4),
+            encoder(coulomb, amplitude=1.5, t_from=0.4, duration=30.0, rate=50.0, sigma=3e-4),
             "issue 24: Coulomb μ 0.012 m/s² + c 0.004 1/s, 2400 steps/turn",
         ),
         Case(
@@ -300,7 +151,7 @@ def cases() -> list[Case]:
             "wrong",
             ["g", "damping"],
             {"model": "damped", "length": 0.5},
-            _encoder(enc_truth, amplitude=0.6, t_from=0.2, duration=20.0, rate=50.0, sigma=2e-3, offset=0.03),
+            encoder(enc_truth, amplitude=0.6, t_from=0.2, duration=20.0, rate=50.0, sigma=2e-3, offset=0.03),
             "the encoder's zero is not the vertical",
         ),
         Case(
@@ -308,7 +159,7 @@ def cases() -> list[Case]:
             "wrong",
             ["length", "g", "damping"],
             DAMPED,
-            _phone(phone_truth, bias=0.05),
+            phone(phone_truth, bias=0.05),
             "issue 23: g 150 stderr off, no word",
         ),
         Case(
@@ -316,7 +167,7 @@ def cases() -> list[Case]:
             "wrong",
             ["length", "damping", "pivot"],
             {"model": "damped", "g": 9.81},
-            _video(VIDEO, scale=1.05),
+            video(VIDEO, scale=1.05),
             "a wrong ruler in the video",
         ),
         Case(
@@ -324,7 +175,7 @@ def cases() -> list[Case]:
             "wrong",
             VIDEO_FIT,
             DAMPED,
-            _video(VIDEO, outliers=0.1),
+            video(VIDEO, outliers=0.1),
             "outliers with the default loss: must say so",
         ),
         # --- degenerate data --------------------------------------------------------------------
@@ -333,7 +184,7 @@ def cases() -> list[Case]:
             "degenerate",
             ["length", "g"],
             {},
-            _constant((0.0, 0.0, -1.0), 1e-3),
+            constant((0.0, 0.0, -1.0), 1e-3),
             "issue 23: LinAlgError after 91 s",
             key=["length", "g"],
         ),
@@ -342,7 +193,7 @@ def cases() -> list[Case]:
             "degenerate",
             ["length", "g"],
             {},
-            _constant((0.0, 0.0, -1.0), 0.0),
+            constant((0.0, 0.0, -1.0), 0.0),
             "issue 23: l = start ± 2.6e-17 'determined'",
             key=["length", "g"],
         ),
@@ -351,7 +202,7 @@ def cases() -> list[Case]:
             "degenerate",
             VIDEO_FIT,
             DAMPED,
-            _constant((0.31, 1.25 - 0.6), 1.5e-3),
+            constant((0.31, 1.25 - 0.6), 1.5e-3),
             "issue 23: g = 467 ± 8.5",
             key=["length", "g"],
         ),
@@ -360,7 +211,7 @@ def cases() -> list[Case]:
             "degenerate",
             ["g", "damping"],
             {"model": "damped", "length": 0.5},
-            _pure_noise(),
+            pure_noise(),
             "issue 23: g = 369 ± 3.5",
             key=["g"],
         ),
@@ -369,7 +220,7 @@ def cases() -> list[Case]:
             "degenerate",
             VIDEO_FIT,
             DAMPED,
-            _video(VIDEO, t_from=0.0, duration=0.5),
+            video(VIDEO, t_from=0.0, duration=0.5),
             "too few swings: honest bars or not determined",
             key=["length", "g"],
         ),
@@ -379,7 +230,7 @@ def cases() -> list[Case]:
             "units",
             VIDEO_FIT,
             DAMPED,
-            _video(VIDEO),
+            video(VIDEO),
             "the fit must not depend on the unit of the numbers",
         ),
         # --- the systematic terms fitted (the model is right again) -----------------------------
@@ -388,8 +239,8 @@ def cases() -> list[Case]:
             "right",
             ["g", "damping", "drag", "angle_offset"],
             {"model": "damped", "length": 0.5},
-            _also(
-                _encoder(
+            also(
+                encoder(
                     enc_truth, amplitude=0.6, t_from=0.2, duration=20.0, rate=50.0, sigma=2e-3, offset=0.03
                 ),
                 angle_offset=0.03,
@@ -401,7 +252,7 @@ def cases() -> list[Case]:
             "right",
             ["length", "g", "damping", "force_bias"],
             DAMPED,
-            _also(_phone(phone_truth, bias=0.05), force_bias=0.05),
+            also(phone(phone_truth, bias=0.05), force_bias=0.05),
             "case 13 with the bias fitted",
         ),
         Case(
@@ -409,7 +260,7 @@ def cases() -> list[Case]:
             "right",
             ["length", "damping", "pivot", "scale"],
             {"model": "damped", "g": 9.81},
-            _also(_video(VIDEO, scale=1.05), scale=1.05),
+            also(video(VIDEO, scale=1.05), scale=1.05),
             "case 14 with the scale bar fitted (g known)",
         ),
         Case(
@@ -422,8 +273,8 @@ def cases() -> list[Case]:
                 "damping": 0.01,
                 "friction_speed": coulomb.coulomb_speed / coulomb.length,  # ω_ε = v_ε/l (T-7.6)
             },
-            _also(
-                _encoder(coulomb, amplitude=1.5, t_from=0.4, duration=30.0, rate=50.0, sigma=3e-4),
+            also(
+                encoder(coulomb, amplitude=1.5, t_from=0.4, duration=30.0, rate=50.0, sigma=3e-4),
                 friction=coulomb.coulomb / coulomb.length,  # ε_f = μ/l [rad/s²]
             ),
             "case 11 with the damped model's dry friction fitted",
@@ -433,7 +284,7 @@ def cases() -> list[Case]:
             "right",
             ["g", "damping", "drag"],
             {"model": "damped", "length": 0.5},
-            _encoder(enc_truth, amplitude=-1.2, t_from=0.1, duration=15.0, rate=50.0, sigma=2e-3),
+            encoder(enc_truth, amplitude=-1.2, t_from=0.1, duration=15.0, rate=50.0, sigma=2e-3),
             "case 3 mirrored: the first sample at a negative angle",
         ),
     ]
