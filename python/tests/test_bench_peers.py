@@ -1,7 +1,7 @@
 """The pure-Python parts of the peer benchmark bench/peers/ (issue 5, parts 3–4): error against the
 reference, the cheapest setting that reaches a tolerance, when a scan stops, the targets as PASS/MISS
 ratios and the Markdown written between markers. Needs none of the peers (SciPy's solve_ivp, numba,
-MuJoCo, JAX, Diffrax): run.py imports them only inside functions."""
+MuJoCo, JAX, Diffrax): bench/peers/ imports them only inside functions."""
 
 from __future__ import annotations
 
@@ -29,7 +29,11 @@ def _load(name: str) -> ModuleType:
 
 
 hz = _load("harness")
-run = _load("run")
+run = _load("run")  # the entry point; loading it imports its parts below
+pcases = _load("peers_cases")
+pengines = _load("peers_engines")
+ptargets = _load("peers_targets")
+preport = _load("peers_report")
 
 
 def R(method: str, wall: float, error: float, case: str = "rosette", failed: str | None = None) -> object:
@@ -95,8 +99,8 @@ def test_verdicts_and_formatting() -> None:
     assert hz.fmt_sci(3.19e7) == "3.19 × 10⁷"
     assert hz.fmt_sci(9.999e-5) == "1.00 × 10⁻⁴"
     assert hz.fmt_time(2.5e-6) == "2.5 µs" and hz.fmt_time(0.0123) == "12.3 ms" and hz.fmt_time(None) == "—"
-    assert run.fixed_settings(False) == sorted(run.fixed_settings(False))
-    rt = run.adaptive_settings(False)
+    assert pcases.fixed_settings(False) == sorted(pcases.fixed_settings(False))
+    rt = pcases.adaptive_settings(False)
     assert rt[0] == pytest.approx(1e-3) and rt[-1] == pytest.approx(1e-14)
 
 
@@ -126,7 +130,7 @@ def test_quaternion_for_mujoco_start() -> None:
     down = np.array([0.0, 0.0, -1.0])
     for target in ([0.866, 0.0, -0.5], [0.0174524, 0.0, 0.9998477], [0.0, 0.0, 1.0], [0.0, 0.0, -1.0]):
         b = np.array(target) / np.linalg.norm(target)
-        w, *xyz = run._quat_rotating(down, b)
+        w, *xyz = pengines._quat_rotating(down, b)
         u = np.array(xyz)
         rotated = down + 2 * w * np.cross(u, down) + 2 * np.cross(u, np.cross(u, down))
         assert np.allclose(rotated, b, atol=1e-12)
@@ -134,7 +138,7 @@ def test_quaternion_for_mujoco_start() -> None:
 
 def _case(name: str) -> object:
     z = np.zeros(3)
-    return run.Case(name, 1.0, 1.0, 9.81, z, z, z, z, 0.0, 1e-14)
+    return pcases.Case(name, 1.0, 1.0, 9.81, z, z, z, z, 0.0, 1e-14)
 
 
 def test_targets_and_report_from_synthetic_runs() -> None:
@@ -161,7 +165,7 @@ def test_targets_and_report_from_synthetic_runs() -> None:
         "C rk4": {2: {"rate": 2e8}},
     }
     rmap = {"points": 10**6, "wall": 1.5, "repeats": 3}
-    tg = {t["target"]: t for t in run.targets(runs, rates, ens, rmap, cases)}
+    tg = {t["target"]: t for t in ptargets.targets(runs, rates, ens, rmap, cases)}
     assert tg["RATTLE steps/s ≥ 1.2 × C RK4 loop"]["value"] == pytest.approx(1.5)
     assert tg["RATTLE steps/s ≥ 1.2 × C RK4 loop"]["verdict"] == "PASS"
     assert tg["RATTLE steps/s ≥ 50 × MuJoCo (RK4)"]["verdict"] == "MISS"  # 30×
@@ -186,11 +190,11 @@ def test_targets_and_report_from_synthetic_runs() -> None:
         "skipped": {"mujoco": "mujoco is not installed", "C": None},
         "cap": 5.0,
     }
-    body = run.markdown(runs, cases, rates, ens, rmap, list(tg.values()), meta)
+    body = preport.markdown(runs, cases, rates, ens, rmap, list(tg.values()), meta)
     assert "**MISS**" in body and "**PASS**" in body
     assert "mujoco: skipped, mujoco is not installed" in body
     assert "while other work was running on it" in body  # load average 3: the report says so
-    quiet = run.markdown(
+    quiet = preport.markdown(
         runs, cases, rates, ens, rmap, list(tg.values()), {**meta, "load_start": 1.2, "load_end": 1.0}
     )
     assert "with nothing else running on it" in quiet and "pessimistic" not in quiet

@@ -1,0 +1,109 @@
+"""The peers benchmark's throughput runs (bench/peers/run.py): Pendulab's ensemble kernel
+(``_core.EnsembleRun``, the kernel of ``pl.simulate_ensemble``), the same through the API and the C
+RK4 ensemble on 1 and 2 threads, each in a fresh child process (``run.py --ensemble-worker``), in
+trajectory-steps per second at dt = 1 ms; and the rotation-number map (``pl.em_map`` on a grid of
+points) in seconds. Starts: rosette-like, θ₀ ∈ [20°, 100°], φ̇₀ ∈ [0.5, 3] rad/s, l = 1 m,
+g = 9.81 m/s².
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from typing import Any
+
+import harness as hz
+import numpy as np
+from peers_cases import HERE
+from peers_methods import c_ensemble
+
+# the script whose --ensemble-worker option runs ensemble_worker in a child process
+RUN = HERE / "run.py"
+
+
+def ensemble_starts(n: int, seed: int = 5) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """n rosette-like starts (θ₀ ∈ [20°, 100°], φ̇₀ ∈ [0.5, 3] rad/s, l = 1 m, g = 9.81 m/s²)."""
+    rng = np.random.default_rng(seed)
+    th = np.radians(rng.uniform(20.0, 100.0, n))
+    ph = rng.uniform(0.0, 2 * np.pi, n)
+    phd = rng.uniform(0.5, 3.0, n)
+    x = np.stack([np.sin(th) * np.cos(ph), np.sin(th) * np.sin(ph), -np.cos(th)], axis=1)
+    v = np.stack([-np.sin(th) * np.sin(ph) * phd, np.sin(th) * np.cos(ph) * phd, np.zeros(n)], axis=1)
+    return x, v, np.ones(n)
+
+
+def ensemble_worker(n: int, steps: int, repeats: int, threads: int, with_c: int) -> dict[str, Any]:
+    """Run in a fresh child process (RAYON_NUM_THREADS = threads): Pendulab's ensemble kernel, the same
+    through ``pl.simulate_ensemble``, and the C RK4 ensemble on ``threads`` OpenMP threads, timed."""
+    import pendulab as pl
+    from pendulab import _core
+
+    x, v, ell = ensemble_starts(n)
+    g = np.full(n, 9.81)
+    dt = 1e-3
+
+    def kernel() -> Any:
+        spec, options = _core.EnsembleSpec(ell, g), _core.RunOptions(dt=dt)
+        return _core.EnsembleRun(spec, x, v, options, steps, False).result()
+
+    def api() -> Any:
+        p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)
+        return pl.simulate_ensemble(p, np.hstack([x, v]), steps * dt, dt=dt, summary=False, progress=False)
+
+    kernel()
+    wk, _, rk = hz.median_time(kernel, repeats=repeats)
+    wa, _, _ = hz.median_time(api, repeats=repeats)
+    res: dict[str, Any] = {
+        "threads": threads,
+        "kernel_wall": wk,
+        "api_wall": wa,
+        "repeats": rk,
+        "rate": n * steps / wk,
+        "api_rate": n * steps / wa,
+    }
+    if with_c:
+        y = np.ascontiguousarray(np.hstack([x, v]).T)
+
+        def c_run() -> None:
+            c_ensemble(y.copy(), ell, g, dt, steps, threads)
+
+        c_run()
+        wc, _, _ = hz.median_time(c_run, repeats=repeats)
+        res |= {"c_wall": wc, "c_rate": n * steps / wc}
+    return res
+
+
+def ensembles(quick: bool, c_ok: bool) -> dict[str, Any]:
+    """Both ensembles in fresh child processes, 1 and 2 threads, alternating (to spread the load of
+    the other users of the machine evenly); each figure is the median of ``reps`` runs."""
+    n, steps = (1024, 1000) if quick else (4096, 2000)
+    reps = 3 if quick else 7
+    out: dict[str, Any] = {"n": n, "steps": steps, "dt": 1e-3, "pendulab": {}, "C rk4": {}}
+    samples: dict[int, list[dict[str, Any]]] = {1: [], 2: []}
+    for _ in range(1 if quick else 3):
+        for threads in (1, 2):
+            env = dict(os.environ, RAYON_NUM_THREADS=str(threads), OMP_NUM_THREADS=str(threads))
+            cmd = [sys.executable, str(RUN), "--ensemble-worker", str(n), str(steps), str(reps), str(threads)]
+            res = subprocess.run([*cmd, str(int(c_ok))], env=env, check=True, capture_output=True, text=True)
+            samples[threads].append(json.loads(res.stdout.strip().splitlines()[-1]))
+    for threads, ws in samples.items():
+        med = {k: float(np.median([w[k] for w in ws])) for k in ws[0] if k != "threads"}
+        out["pendulab"][threads] = {k: med[k] for k in ("kernel_wall", "api_wall", "rate", "api_rate")}
+        print(f"  ensemble pendulab {threads} thread(s): {med['rate']:.3e} trajectory-steps/s", flush=True)
+        if c_ok:
+            out["C rk4"][threads] = {"wall": med["c_wall"], "rate": med["c_rate"]}
+            print(f"  ensemble C rk4 {threads} thread(s): {med['c_rate']:.3e} trajectory-steps/s", flush=True)
+    return out
+
+
+def rotation_map(quick: bool) -> dict[str, Any]:
+    import pendulab as pl
+
+    p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)
+    side = 300 if quick else 1000
+    wall, em, reps = hz.median_time(lambda: pl.em_map(p, grid=(side, side)), repeats=3)
+    finite = int(np.isfinite(em.W).sum())
+    print(f"  em_map {side}x{side}: {hz.fmt_time(wall)} ({finite} finite values)", flush=True)
+    return {"points": side * side, "wall": wall, "finite": finite, "repeats": reps}
