@@ -31,8 +31,9 @@ the bad value and what is allowed.
 The file's parts: the tables and their validators in :mod:`pendulab.scenario.schema`, the error
 messages (:class:`ScenarioError`) in :mod:`pendulab.scenario.errors`, building the pendulum or
 spring and its start with the core's checks in :mod:`pendulab.scenario.build`; this module holds
-:class:`Scenario` (construction, overrides, running, TOML writing) and :func:`load_scenario`, and
-re-exports the public names of the others.
+:class:`Scenario` (construction, overrides, running, writing) and :func:`load_scenario`, and
+re-exports the public names of the others; its TOML text, ``repr`` and HTML rows are written by
+:mod:`pendulab.scenario.scenario_text`.
 
 A file with a ``[crane]`` table describes a crane instead (docs/scenarios.md "Cranes"; the tables in
 :mod:`pendulab.scenario.crane_schema`): it is validated here like any scenario, and the crane is
@@ -42,7 +43,6 @@ built and run by :mod:`pendulab.crane` (imported only for such a file: it needs 
 from __future__ import annotations
 
 import dataclasses
-import json
 import math
 import os
 import tomllib
@@ -52,8 +52,8 @@ from typing import Any
 
 from pydantic import ValidationError
 
-from .._core import IntegrationError, InvalidInputError, __version__
-from ..display import Row, html_table, number, with_unit
+from .._core import IntegrationError, InvalidInputError
+from ..display import Row, html_table
 from ..io import atomic_path
 from ..model import Pendulum, State
 from ..simulation import simulate
@@ -64,6 +64,8 @@ from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settin
 from .crane_schema import CRANE_SECTIONS, CraneSpec, is_crane
 from .errors import ScenarioError, _problem, _syntax_error
 from .overrides import RunOverrides, run_overrides
+from .scenario_text import _toml_value as _toml_value
+from .scenario_text import scenario_repr, summary_rows, toml_text
 from .schema import (
     MODELS,
     SECTIONS,
@@ -72,8 +74,6 @@ from .schema import (
     PendulumSection,
     ScenarioSpec,
     SimulationSection,
-    _degree_keys,
-    _own_params,
     _show,
 )
 
@@ -90,20 +90,6 @@ __all__ = [
     "SimulationSection",
     "load_scenario",
 ]
-
-
-def _toml_value(value: Any) -> str:
-    if isinstance(value, bool):
-        return "true" if value else "false"
-    if isinstance(value, int):
-        return str(value)
-    if isinstance(value, float):
-        return repr(value)  # shortest repr: reads back to the same float
-    if isinstance(value, str):
-        return json.dumps(value, ensure_ascii=False).replace("\x7f", "\\u007f")
-    if isinstance(value, list):
-        return "[" + ", ".join(_toml_value(v) for v in value) + "]"
-    raise TypeError(f"cannot write {value!r} to TOML")
 
 
 @dataclass(frozen=True)
@@ -312,55 +298,11 @@ class Scenario:
 
     # --- showing itself ---
 
-    def _crane_summary(self) -> list[Row]:
-        c, sim = self._crane, self.spec.simulation
-        return [
-            ("crane: rope", self.spec.crane.rope, "m"),  # type: ignore[union-attr]
-            ("payload mass", self.spec.crane.payload_mass, "kg"),  # type: ignore[union-attr]
-            ("sway modes", ", ".join(number(float(w)) for w in c.crane.modes()), "rad/s"),
-            ("shaper", c.shaper.kind if c.shaper is not None else "none", ""),
-            ("hoist", "yes" if self.spec.hoist is not None else "no", ""),  # type: ignore[union-attr]
-            ("time span 0 … t_end", f"0 … {number(sim.t_end)}", "s"),
-        ]
-
     def _summary(self) -> list[Row]:
-        if self.is_crane:
-            return self._crane_summary()
-        p, sim = self.spec.pendulum, self.spec.simulation
-        theta, phi = self._state.angles_deg()
-        step = "adaptive" if sim.is_adaptive() else with_unit(sim.resolved_dt(), "s")
-        rows: list[Row] = [
-            ("model", p.model, ""),
-            *((k, v if isinstance(v, int | float) else repr(v), "") for k, v in p.params.items()),
-            ("length l", p.length, "m"),
-            ("mass m", p.mass, "kg"),
-            ("gravity g", p.g, "m/s²"),
-            ("start θ, φ", f"{number(theta)}, {number(phi)}", "°"),
-            ("method", sim.method, ""),
-            ("step dt", step, ""),
-            ("time span t0 … t_end", f"{number(sim.t0)} … {number(sim.t_end)}", "s"),
-        ]
-        return rows
+        return summary_rows(self.spec, None if self.is_crane else self._state, self._crane)
 
     def __repr__(self) -> str:
-        name = Path(self.source).name if self.source and not self.source.startswith("<") else self.source
-        if isinstance(self.spec, CraneSpec):
-            c = self.spec.crane
-            return (
-                f"Scenario({name!r}: crane, rope={number(c.rope)} m, payload={number(c.payload_mass)} kg"
-                f"{', hoisted' if self.spec.hoist else ''}"
-                f"{', shaper ' + self.spec.shaper.kind if self.spec.shaper else ''}; "
-                f"t=0…{number(self.spec.simulation.t_end)} s)"
-            )
-        p, sim = self.spec.pendulum, self.spec.simulation
-        theta, phi = self._state.angles_deg()
-        step = "adaptive" if sim.is_adaptive() else f"dt={number(sim.resolved_dt())} s"
-        params = "".join(f", {k}={number(v)}" for k, v in p.params.items() if isinstance(v, int | float))
-        return (
-            f"Scenario({name!r}: {p.model}{params}, l={number(p.length)} m, m={number(p.mass)} kg, "
-            f"g={number(p.g)} m/s², θ₀={number(theta)}°, φ₀={number(phi)}°; {sim.method}, {step}, "
-            f"t={number(sim.t0)}…{number(sim.t_end)} s)"
-        )
+        return scenario_repr(self.spec, None if self.is_crane else self._state, self.source)
 
     def _repr_html_(self) -> str:
         title = f"Scenario {self.title}" if self.title else "Scenario"
@@ -377,30 +319,7 @@ class Scenario:
 
     def to_toml(self) -> str:
         """The scenario as TOML text (units as comments); loading it gives an equal scenario."""
-        data = self.to_dict()
-        if isinstance(self.spec, CraneSpec):
-            lines = [
-                f"# Pendulab crane scenario (pendulab {__version__}); SI units (docs/scenarios.md, Cranes)"
-            ]
-            lines += [f"{k} = {_toml_value(data[k])}" for k in ("title", "description") if k in data]
-            for section in CRANE_SECTIONS:
-                if section in data:
-                    lines += ["", f"[{section}]"]
-                    lines += [f"{key} = {_toml_value(value)}" for key, value in data[section].items()]
-            return "\n".join(lines) + "\n"
-        model = self.spec.pendulum.model
-        units = {section: dict(table) for section, table in UNITS.items()}
-        units["pendulum"] |= {k: p["unit"] for k, p in _own_params(model).items() if p["unit"] != "1"}
-        units["pendulum"] |= dict.fromkeys(_degree_keys(model), "degrees")
-        lines = [f"# Pendulab scenario (pendulab {__version__}); SI units, angles *_deg in degrees"]
-        lines += [f"{k} = {_toml_value(data[k])}" for k in ("title", "description") if k in data]
-        for section in SECTIONS:
-            lines += ["", f"[{section}]"]
-            for key, value in data[section].items():
-                unit = units[section].get(key)
-                entry = f"{key} = {_toml_value(value)}"
-                lines.append(f"{entry:<24}  # {unit}" if unit else entry)
-        return "\n".join(lines) + "\n"
+        return toml_text(self.spec, self.to_dict())
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Writes :meth:`to_toml` to ``path`` atomically (temporary file + rename); returns the path."""
