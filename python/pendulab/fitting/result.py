@@ -1,7 +1,8 @@
 """The result of :func:`pendulab.fit`: best values with standard errors (SI units), covariance and
 correlation, residuals per data kind, the fitted pendulum, start and trajectory, what the data could
 not determine, a text report, a figure, and the fitted scenario as a file ``pendulab run`` and the lab
-accept."""
+accept. The statistics of the result are here (AIC, BIC, linearised and profile intervals: T-10.2);
+the text report, the HTML rows and the figure are written by :mod:`pendulab.fitting.report`."""
 
 from __future__ import annotations
 
@@ -13,26 +14,18 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..display import Row, html_table, number
 from ..model import FloatArray, Pendulum, State
 from ..trajectory import Trajectory
 from ..variants.spring import SpringTrajectory, SwingingSpring
-from .data import KINDS, residual
+from .data import residual
 from .goodness import Goodness
 from .identify import Identifiability
-from .problem import STATE_NAMES, SYSTEMATIC_NAMES, unit_of
+from .problem import STATE_NAMES, unit_of
+from .report import _COLUMN_NAMES as _COLUMN_NAMES
+from .report import fit_figure, report_html, report_text
 
 if TYPE_CHECKING:
     from .problem import Problem
-
-
-#: Legend names of the data columns per (kind, number of columns).
-_COLUMN_NAMES = {
-    ("positions", 3): ("x", "y", "z"),
-    ("positions", 2): ("x", "z"),
-    ("horizontal", 2): ("x", "y"),
-    ("angles", 2): ("θ", "φ"),
-}
 
 
 @dataclass
@@ -249,80 +242,10 @@ class FitResult:
 
         return profile_interval(self, name, level, max_refits)
 
-    def _at_bound(self, name: str) -> str:
-        lo, hi = self.bounds.get(name, (-math.inf, math.inf))
-        value, err = self.params[name], self.stderr[name]
-        for side, b in (("lower", lo), ("upper", hi)):
-            if math.isfinite(b) and abs(value - b) <= max(2.0 * err, 1e-12 * max(abs(b), 1.0)):
-                a, c = self.interval(name)
-                return f" (near its {side} bound {b:g}: 95 % interval [{a:.4g}, {c:.4g}])"
-        return ""
-
-    def _rows(self) -> list[tuple[str, str, str, str]]:
-        rows = []
-        for n in self.names:
-            value, err = self.params[n], self.stderr[n]
-            if self.determined[n]:
-                shown = f"± {number(err, 3)}" + self._at_bound(n)
-                if self.inflation.get(n, 1.0) > 1.05:
-                    shown += f" (x{self.inflation[n]:.3g} for correlated residuals)"
-            else:
-                shown = "not determined: " + self.reasons.get(n, "by these data")
-            rows.append((n, f"{value:.10g}", shown, self.units.get(n, "")))
-        return rows
-
     def report(self) -> str:
         """A table of the fitted parameters ± standard errors (SI units), the combinations the data
         determine where single parameters are not, χ², the noise, what was held fixed, convergence."""
-        lines = [
-            f"fit of the {self.model} pendulum to {len(self.t)} samples "
-            f"({', '.join(f'{k} [{KINDS[k]}]' for k in self.residuals)}), t0 = {self.t0:g} s"
-        ]
-        if self.dropped:
-            lines.append(f"  ({self.dropped} rows with NaN were dropped)")
-        width = max(len(n) for n in self.names)
-        for name, value, err, unit in self._rows():
-            lines.append(f"  {name.ljust(width)} = {value:>18} {err:<28} {unit}")
-        for label, (value, err) in self.combinations.items():
-            lines.append(f"  determined instead: {label} = {value:.10g} ± {number(err, 3)}")
-        if self.mirror_blind and {"phi0", "phi_dot0"} & set(self.names):
-            lines.append(
-                "  the data cannot tell this motion from its mirror image y -> -y "
-                "(phi0, phi_dot0 -> -phi0, -phi_dot0): the sign of the sideways motion is a choice"
-            )
-        noise = ", ".join(f"{k}: {number(s, 3)} {KINDS[k]}" for k, s in self.sigma.items())
-        if self.sigma_estimated:
-            noise += " (estimated from the residual, so chi2/dof = 1 by construction)"
-        lines.append(
-            f"  AIC {self.aic:.6g}, BIC {self.bic:.6g} (pl.compare_fits ranks fits of the same data)"
-        )
-        if self.body is not None:
-            lines += self.body.report_lines()
-        if self.planar:
-            lines.append(
-                "  planar pendulum (a hinge): phi0 = phi_dot0 = 0 held; planar=False fits the spherical one"
-            )
-        if self.goodness is not None:
-            for kind, c in self.goodness.kinds.items():
-                lines.append(
-                    f"  {kind}: residual rms {number(c.rms, 3)} {KINDS[kind]}, noise floor of the data "
-                    f"{number(c.floor, 3)}, lag-1 autocorrelation {c.lag1:.3f}, runs z {c.runs_z:.2g}"
-                )
-            lines += [f"  WARNING: {text}" for text in self.goodness.findings]
-        lines += [
-            f"  chi2 = {self.chi2:.6g} for {self.dof} degrees of freedom "
-            f"(chi2/dof = {self.reduced_chi2:.4g}); noise {noise}",
-            "  fixed: "
-            + ", ".join(
-                f"{k} = {number(v)}"
-                + (f" {self.units[k]}" if self.units.get(k, "1") not in ("1", "") else "")
-                for k, v in self.fixed.items()
-                if k in ("length", "g", "mass") or v != {**SYSTEMATIC_NAMES, **self._defaults}.get(k, 0.0)
-            ),
-            f"  {'converged' if self.converged else 'NOT converged'}: {self.message} "
-            f"({self.evaluations} model runs, {self.starts} start(s), {self.seconds:.3g} s)",
-        ]
-        return "\n".join(lines)
+        return report_text(self)
 
     def __repr__(self) -> str:
         shown = ", ".join(
@@ -335,13 +258,7 @@ class FitResult:
         return f"FitResult({shown}; chi2/dof={self.reduced_chi2:.3g}, {state})"
 
     def _repr_html_(self) -> str:
-        rows: list[Row] = [(n, f"{v} {e}", u) for n, v, e, u in self._rows()]
-        rows += [
-            (f"{label} (determined)", f"{value:.10g} ± {number(err, 3)}", "")
-            for label, (value, err) in self.combinations.items()
-        ]
-        rows.append(("χ²/dof", self.reduced_chi2, ""))
-        return html_table("Fit", rows, note="res.report(), res.plot(), res.save('fitted.toml')")
+        return report_html(self)
 
     def to_scenario(self, t_end: float | None = None, title: str | None = None) -> Any:
         """The fitted pendulum and start as a :class:`pendulab.Scenario` (t_end [s] default: the data's
@@ -399,35 +316,4 @@ class FitResult:
     def plot(self, path: str | os.PathLike[str] | None = None) -> Any:
         """Data and fit, the residuals, and the parameter correlations; saved atomically to ``path``
         if given. Needs matplotlib. Returns the Figure."""
-        from ..figure import new_figure, save_figure
-
-        kinds = list(self.residuals)
-        fig = new_figure(figsize=(12.0, 3.2 * len(kinds) + 1.0), layout="constrained")
-        grid = fig.add_gridspec(len(kinds), 3, width_ratios=(2.2, 1.6, 1.0))
-        pred = self._problem.predictions({**self.fixed, **self.params})
-        for row, kind in enumerate(kinds):
-            measured = self._problem.obs.values[kind]
-            ax = fig.add_subplot(grid[row, 0])
-            axr = fig.add_subplot(grid[row, 1], sharex=ax)
-            for c in range(measured.shape[1]):
-                name = _COLUMN_NAMES.get((kind, measured.shape[1]), (kind,) * 3)[c]
-                ax.plot(self.t, measured[:, c], ".", ms=2, alpha=0.5, label=f"{name} measured")
-                ax.plot(self.t, pred[kind][:, c], "-", lw=0.9, label=f"{name} fit")
-                axr.plot(self.t, self.residuals[kind][:, c], ".", ms=2)
-            ax.set_ylabel(f"{kind} [{KINDS[kind]}]")
-            axr.set_ylabel(f"residual [{KINDS[kind]}]")
-            axr.axhline(0.0, color="0.4", lw=0.8)
-            ax.legend(fontsize="x-small", ncols=2)
-            if row == len(kinds) - 1:
-                ax.set_xlabel("time t [s]")
-                axr.set_xlabel("time t [s]")
-        axc = fig.add_subplot(grid[:, 2])
-        image = axc.imshow(np.nan_to_num(self.correlation, nan=0.0), vmin=-1.0, vmax=1.0, cmap="RdBu_r")
-        axc.set_xticks(range(len(self.names)), self.names, rotation=90, fontsize="small")
-        axc.set_yticks(range(len(self.names)), self.names, fontsize="small")
-        axc.set_title("correlation")
-        fig.colorbar(image, ax=axc, shrink=0.6)
-        fig.suptitle(f"fit: chi2/dof = {self.reduced_chi2:.3g}")
-        if path is not None:
-            save_figure(fig, path)
-        return fig
+        return fit_figure(self, path)
