@@ -104,7 +104,7 @@ SECANT = 0.1
 class Search:
     """SciPy's trust-region reflective ``least_squares`` on a :class:`Problem`, with the anchor, the
     clock, the record of the best values seen (what Ctrl-C or the time limit returns) and the window
-    continuation (estimator.py's module doc). ``sigma``: kind → the scale of its residuals [its unit]
+    continuation (this module's doc). ``sigma``: kind → the scale of its residuals [its unit]
     (the given σ, or the noise floor read off the data: noise.py), so that the search and its anchor do
     not depend on the units of the data."""
 

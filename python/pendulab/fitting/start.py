@@ -103,7 +103,7 @@ def check_length_hint(radius: float, length: float, free: bool) -> None:
     )
     if not free:
         raise InvalidInputError(said)
-    warnings.warn(said + " The fit starts from the data's distance instead.", UserWarning, stacklevel=4)
+    warnings.warn(said + " The fit starts from the data's distance instead.", UserWarning, stacklevel=5)
 
 
 def check_upright(rel: FloatArray, g: float) -> None:

@@ -79,7 +79,8 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
             "(the blocks in time order), {scale}x their error bars apart"
         ),
     ),
-    # pendulab/fitting/estimator.py
+    # pendulab/fitting/: inference.py (gFar, notConverged), estimator.py (pivotFitted),
+    # multistart.py (timeLimit)
     ("gFar", _p("the fitted g = {g} m/s² is far from any planet's")),
     ("pivotFitted", _p("the positions do not hang from the origin: the pivot's position is fitted too")),
     ("timeLimit", _p("fit interrupted (the time limit of {seconds} s): returning the best values")),

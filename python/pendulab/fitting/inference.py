@@ -1,0 +1,188 @@
+"""The statistics at the fit's optimum, from the search's best values to the :class:`FitResult`:
+
+- the Gauss–Newton polish (search.py) and the Jacobian J of the weighted residual r = (measured −
+  predicted)/σ [1] (exact forward sensitivities, T-10.7, or difference quotients, logarithmic for
+  positive parameters);
+- with a robust loss, the weights ρ'(r²) of iteratively reweighted least squares (:func:`robust_weights`),
+  so that outliers leave the error analysis;
+- the linearised covariance (JᵀJ)⁻¹ × s² (s² = χ²/dof when σ is not given; T-10.2) and what the data
+  determine (identify.py), widened for correlated residuals (Newey–West, goodness.py);
+- the goodness of fit per data kind against its noise floor, the χ² probability with σ given, the
+  block check of a misfit (blocks.py) and a g far from any planet's (T-10.5), each warned.
+Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
+"""
+
+from __future__ import annotations
+
+import math
+import time
+import warnings
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from ..model import FloatArray
+from .blocks import check_blocks
+from .data import KINDS, residual
+from .goodness import EXACT, Goodness, check_kind, findings
+from .goodness import misfit as misfit_found
+from .identify import Correlation, Identifiability, analyse, jacobian
+from .problem import POSITIVE
+from .result import FitResult
+from .search import Search, polish
+
+
+def robust_weights(loss: str, z: FloatArray) -> FloatArray:
+    """ρ'(z) of SciPy's robust losses at z = r² (scale 1): the weight each residual has at the
+    optimum of ½Σρ(r²), as in iteratively reweighted least squares (1 for the linear loss)."""
+    if loss == "soft_l1":
+        return 1.0 / np.sqrt(1.0 + z)
+    if loss == "huber":
+        return np.where(z <= 1.0, 1.0, 1.0 / np.sqrt(np.maximum(z, 1.0)))
+    if loss == "cauchy":
+        return 1.0 / (1.0 + z)
+    if loss == "arctan":
+        return 1.0 / (1.0 + z * z)
+    return np.ones_like(z)
+
+
+def conclude(
+    search: Search,
+    u: FloatArray,
+    floors: Mapping[str, float],
+    spreads: Mapping[str, float],
+    *,
+    converged: bool,
+    interrupted: bool,
+    message: str,
+    mirror_blind: bool,
+    planar: bool,
+    n_starts: int,
+) -> FitResult:
+    """The polish, the error analysis (identify.py) with the goodness of fit (goodness.py), the
+    warnings, and the :class:`FitResult`."""
+    problem, free, sig = search.problem, search.free, search.sigma
+    u, r, jac, positive = _polished(search, u, interrupted)
+    final = problem.with_free(u)
+    n_res, k = r.size, len(free)
+    dof = max(n_res - k, 1)
+    if search.loss != "linear":  # the robust loss's weights (IRLS): outliers leave the error analysis
+        w = np.sqrt(robust_weights(search.loss, r * r))
+        r, jac = r * w, jac * w[:, None]
+    chi2 = float(r @ r)
+    obs = problem.obs
+    sigma_known = all(s is not None for s in obs.sigma.values())
+    variance = 1.0 if sigma_known else chi2 / dof
+    pred = problem.predictions(final)
+    checks = {
+        kind: check_kind(obs.t, residual(kind, obs.values[kind], pred[kind]), floors[kind], spreads[kind])
+        for kind in obs.values
+    }
+    logged = {n for i, n in enumerate(free) if positive[i]}
+    ident = _identified(search, final, (r, jac), variance, logged, checks)
+    misfit = chi2  # Σ r² in units of the search's σ (the data's own floor when σ is not given)
+    chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
+    chi2_p = None
+    if sigma_known:
+        from scipy import stats
+
+        chi2_p = float(stats.chi2.sf(chi2, dof))
+    said = findings(checks, chi2_p, chi2, dof, robust=search.loss != "linear")
+    # a misfit: the record's blocks fitted on their own, the error bars widened by their disagreement
+    blocks = (
+        None
+        if interrupted or not misfit_found(checks, chi2_p)
+        else check_blocks(search, final, ident, sigma_known)
+    )
+    said += blocks.findings() if blocks is not None else []
+    g_fit = final["g"]
+    if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
+        said.append(
+            f"the fitted g = {g_fit:.4g} m/s² is far from any planet's (Earth 9.81): are the data in SI "
+            "units (positions in m, not mm or pixels; times in s; angles in rad)?"
+        )
+    for text in said:
+        warnings.warn(text, UserWarning, stacklevel=3)
+    if not converged and not interrupted:
+        warnings.warn(
+            f"the fit did not converge ({message}); the values are the best reached",
+            RuntimeWarning,
+            stacklevel=3,
+        )
+    goodness = Goodness(checks, chi2_p, {n: ident.inflation.get(n, 1.0) for n in free}, said)
+    return FitResult.build(
+        problem=problem,
+        values=final,
+        predictions=pred,
+        sigma={
+            k: (obs.sigma[k] if obs.sigma[k] is not None else sig[k] * math.sqrt(variance))
+            for k in obs.values
+        },
+        sigma_estimated=not sigma_known,
+        chi2=chi2,
+        dof=dof,
+        ident=ident,
+        converged=converged,
+        message=message if message else "interrupted",
+        seconds=time.perf_counter() - search.began,
+        starts=n_starts,
+        interrupted=interrupted,
+        kinds=KINDS,
+        mirror_blind=mirror_blind,
+        goodness=goodness,
+        bounds={n: (float(search.lower[i]), float(search.upper[i])) for i, n in enumerate(free)},
+        planar=planar,
+        misfit=misfit,
+        search_sigma=dict(sig),
+        variance=variance,
+        blocks=blocks,
+    )
+
+
+def _polished(
+    search: Search, u: FloatArray, interrupted: bool
+) -> tuple[FloatArray, FloatArray, FloatArray, Any]:
+    """The optimum ``u`` after the Gauss–Newton polish (search.py; not after an interruption nor with a
+    robust loss), its weighted residual r [1], the Jacobian of r (exact forward sensitivities where
+    the core has them, else difference quotients), and which unknowns took logarithmic steps."""
+    problem, free, sig = search.problem, search.free, search.sigma
+
+    def weighted(uu: FloatArray) -> FloatArray:
+        return problem.residuals(problem.with_free(uu), sig)
+
+    r = weighted(u)
+    # logarithmic steps for positive parameters well away from 0 (a damping at its bound 0 gets
+    # additive ones, one-sided there: jacobian())
+    positive = np.array([n in POSITIVE and u[i] > 0.01 * search.scales[i] for i, n in enumerate(free)])
+    steps = np.where(positive, 1e-5, search.scales * 1e-5)
+
+    def jac_of(uu: FloatArray) -> FloatArray | None:
+        return search.exact_jacobian(problem, uu)  # forward sensitivities (sensitivity.py) or None
+
+    exact = jac_of(u)
+    jac = exact if exact is not None else jacobian(weighted, u, steps, positive)
+    if search.loss == "linear" and not interrupted:
+        bounds = (search.lower, search.upper)
+        u, r, jac = polish(weighted, u, r, jac, steps, positive, *bounds, search.time_up, jac_of)
+    return u, r, jac, positive
+
+
+def _identified(
+    search: Search,
+    final: Mapping[str, float],
+    fitted: tuple[FloatArray, FloatArray],
+    variance: float,
+    logged: set[str],
+    checks: Mapping[str, Any],
+) -> Identifiability:
+    """The covariance and what the data determine (identify.py) from the weighted residual and its
+    Jacobian ``fitted`` = (r, J), widened for correlated residuals (Newey–West, goodness.py) unless the
+    fit is exact to round-off, which has no statistics."""
+    r, jac = fitted
+    obs = search.problem.obs
+    lag1 = max((c.lag1 for c in checks.values()), default=0.0)
+    sample = np.concatenate([np.repeat(np.arange(len(obs)), obs.columns[kind]) for kind in obs.values])
+    exact = all(c.spread > 0.0 and c.rms <= EXACT * c.spread for c in checks.values())
+    correlation = None if exact else Correlation(r, sample, len(obs), lag1)  # round-off has no statistics
+    return analyse(search.free, final, jac, variance, logged, correlation)
