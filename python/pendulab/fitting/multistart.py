@@ -2,7 +2,7 @@
 which order, and when to stop.
 
 - The starts (start.py): several phases for frame-free data, whose phase at t₀ is unknown; g (or l)
-  from energy conservation beside the period's (T-2.3); starts with a sideways rate for data blind to
+  from energy conservation beside the period's (T-2.6, T-10.4); starts with a sideways rate for data blind to
   the mirror y → −y (:func:`search_starts`).
 - With more than two starts, the two that already fit best on the first window go on.
 - Several dissipation laws free (T-7.1 …): the optimum of the nested models — the first law alone,

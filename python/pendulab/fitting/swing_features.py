@@ -1,4 +1,5 @@
-"""Features of a sampled swing that the fit's starting values are read from (start.py):
+"""Features of a sampled swing that the fit's starting values are read from (start.py; docs/theory.md
+T-10.4):
 
 - the sphere (circle) through the positions by the algebraic fit |p|² = 2 c·p + k (:func:`sphere_fit`:
   the pivot c [m] and the length √(k + |c|²) [m]);
@@ -6,7 +7,7 @@
   monotone run at the record's ends (:func:`running_median`, :func:`despiked`);
 - the period T [s] from the crossings of the signal's mean, with hysteresis against noise
   (:func:`crossings_period`);
-- g [m/s²] from energy conservation ½|v|² + g z = E₀ + E₁t (T-2.3; :func:`energy_gravity`), which
+- g [m/s²] from energy conservation ½|v|² + g z = E₀ + E₁t (T-2.6; :func:`energy_gravity`), which
   holds for whirls over the top where the period's formula does not;
 - the linear damping c [1/s] from the decay of the peaks, A(t) ∝ e^{−ct/2} (T-7.1; :func:`decay_rate`);
 - value and rate at the first sample from a quadratic through the first samples (:func:`value_and_rate`).
@@ -110,7 +111,7 @@ def crossings_period(t: FloatArray, s: FloatArray) -> float | None:
 
 
 def energy_gravity(t: FloatArray, rel: FloatArray) -> float | None:
-    """g [m/s²] from energy conservation, ½|v|² + g z = E(t) ≈ E₀ + E₁t (T-2.3; the slow trend takes
+    """g [m/s²] from energy conservation, ½|v|² + g z = E(t) ≈ E₀ + E₁t (T-2.6; the slow trend takes
     up a weak damping): the least-squares slope of ½|v|² against −z with velocities by central
     differences (not across gaps). It holds for any motion — swings, whirls over the top, conical
     ones excepted (z constant) — where the period's formula holds for swings only. None when z does

@@ -1,7 +1,7 @@
 """The ``[initial]`` table of a scenario file: the start either as angles — θ (polar angle from the
 downward vertical) and φ (azimuth atan2(y, x)) in rad, or as ``theta_deg``/``phi_deg`` in degrees,
 with rates θ̇, φ̇ [rad/s] — or as a Cartesian position x [m] and velocity v [m/s] of the bob, which
-``project = true`` moves onto TS² (the constraint |x| = l, x·v = 0 of docs/theory.md §1; the core
+``project = true`` moves onto TS² (the constraint |x| = l, x·v = 0 of docs/theory.md §1, T-1.1; the core
 checks it when the scenario is built, :mod:`pendulab.scenario.build`). The validator refuses a mix of
 the two forms, a key given in rad and in degrees, and a missing polar angle.
 """
