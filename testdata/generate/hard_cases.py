@@ -28,6 +28,8 @@ import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+import golden_case
+import golden_checks
 import golden_states as gs  # the generator beside this file
 
 OUTPUT = gs.REPO / "testdata" / "hard_cases.json"
@@ -114,10 +116,11 @@ def main(argv: list[str] | None = None) -> int:
     ap.add_argument("--merge", nargs="+", type=Path, help="merge shard outputs into --out, in case order")
     args = ap.parse_args(argv)
     gs.mp.dps = gs.DPS
-    gs.floor_patterns = lambda: list(FLOOR_PATTERNS)
+    # set where run_case and the checks look them up (golden_case.py, golden_checks.py)
+    golden_checks.floor_patterns = lambda: list(FLOOR_PATTERNS)
     # check 6 (the phase split, quadratures over u(τ)) is the golden file's business, not this one's
-    gs.generic_part = lambda sol: None
-    gs.ODE_T_END = 0.5  # check 4: mpmath's Taylor integrator to 0.5 s (2 s in golden_states.py)
+    golden_case.generic_part = lambda sol: None
+    golden_checks.ODE_T_END = 0.5  # check 4: mpmath's Taylor integrator to 0.5 s (2 s in golden_states.py)
     t0 = time.perf_counter()
     chosen = cases()
     if args.merge:
