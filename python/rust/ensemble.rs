@@ -8,8 +8,9 @@ use crate::convert::{to_py, InvalidInputError};
 use crate::spec::RunOptions;
 use numpy::ndarray::{Array1, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
-use pendulab_core::ensemble::{check, run, EnsembleResult, EnsembleSave, RattleSettings};
+use pendulab_core::ensemble::{check, run_checked, EnsembleResult, EnsembleSave, RattleSettings};
 use pendulab_core::{DVec3, State};
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -79,11 +80,11 @@ impl EnsembleRun {
             arithmetic: options.arithmetic,
             ..RattleSettings::new(&[], &[], dt, n_steps)
         };
-        check(&starts, &RattleSettings { length: &length, g: &g, damping: &damping, ..rest })
+        let checked = check(&starts, &RattleSettings { length: &length, g: &g, damping: &damping, ..rest })
             .map_err(to_py)?;
         let run = Background::spawn(move |progress, cancel| {
             let settings = RattleSettings { length: &length, g: &g, damping: &damping, ..rest };
-            run(&starts, &settings, progress, cancel)
+            run_checked(&starts, &settings, checked, progress, cancel)
         });
         Ok(Self { total, run })
     }
@@ -124,10 +125,17 @@ impl EnsembleRun {
         let res = self.run.join(py)?;
         let (n, ns) = (res.len(), res.t.len());
         let (x, v) = py.allow_threads(|| {
-            let x = Array3::from_shape_fn((n, ns, 3), |(i, j, k)| res.states[i * ns + j].x[k]);
-            let v = Array3::from_shape_fn((n, ns, 3), |(i, j, k)| res.states[i * ns + j].v[k]);
-            (x, v)
+            // trajectory k's sample j is states[k * ns + j]: the rows of (n, ns, 3) in order
+            let (mut x, mut v) = (Vec::with_capacity(3 * n * ns), Vec::with_capacity(3 * n * ns));
+            for s in &res.states {
+                x.extend_from_slice(&s.x.to_array());
+                v.extend_from_slice(&s.v.to_array());
+            }
+            let shape = (n, ns, 3);
+            (Array3::from_shape_vec(shape, x), Array3::from_shape_vec(shape, v))
         });
+        let bad_shape = |e: numpy::ndarray::ShapeError| PyRuntimeError::new_err(e.to_string());
+        let (x, v) = (x.map_err(bad_shape)?, v.map_err(bad_shape)?);
         let d = PyDict::new(py);
         d.set_item("t", Array1::from(res.t).into_pyarray(py))?;
         let (xs, vs): (Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>) =
@@ -164,6 +172,14 @@ pub(crate) fn starts(x: &PyReadonlyArray2<'_, f64>, v: &PyReadonlyArray2<'_, f64
             xa.dim(),
             va.dim()
         )));
+    }
+    if let (Some(xs), Some(vs)) = (xa.as_slice(), va.as_slice()) {
+        // contiguous rows (what pendulab passes): read straight through
+        return Ok(xs
+            .chunks_exact(3)
+            .zip(vs.chunks_exact(3))
+            .map(|(x, v)| State { x: DVec3::from_slice(x), v: DVec3::from_slice(v) })
+            .collect());
     }
     Ok((0..xa.nrows())
         .map(|i| State {

@@ -43,7 +43,8 @@ fn dot(a: V, b: V, fused: bool) -> f64 {
 
 /// The ideal pendulum's RATTLE steps from (x, v), compensations carried, uniform-field path with the
 /// Catalan series for μ (asserted to apply); with `fused`, every multiply-add fused and the fused
-/// arithmetic's own forms of the series and the projection polynomial (`rattle_kernel` module doc).
+/// arithmetic's own forms of the series and the projection polynomial (`rattle_kernel` module doc)
+/// in a vertical field (`rattle_vertical` module doc).
 fn reference(x: V, v: V, l: f64, g: f64, h: f64, steps: usize, fused: bool) -> (V, V) {
     let f = fused;
     let (mut x, mut v) = (x, v);
@@ -53,7 +54,9 @@ fn reference(x: V, v: V, l: f64, g: f64, h: f64, steps: usize, fused: bool) -> (
     let inv_l2 = 1.0 / l2;
     let kick = [0.0 * half, 0.0 * half, -g * half];
     for _ in 0..steps {
-        let w = add(v, kick);
+        // the fused arithmetic takes the vertical-field form (integrate/rattle_vertical.rs): the
+        // kicks' zero components not added, x₀·e and w·e from x₀·w and |w|²
+        let w = if f { [v[0], v[1], v[2] + kick[2]] } else { add(v, kick) };
         let q = dot(x, x, f);
         let xw = dot(x, w, f);
         let ww = dot(w, w, f);
@@ -61,12 +64,16 @@ fn reference(x: V, v: V, l: f64, g: f64, h: f64, steps: usize, fused: bool) -> (
         let c = fm(h, fm(h, ww, xw + xw, f), q - l2, f);
         let ib = 1.0 / b;
         let mu = if f {
-            // the fused arithmetic's forms: y = 4z = (q/b)(c/b), Horner in y with Catₙ/4ⁿ
+            // the fused arithmetic's forms: y = 4z = (q/b)(c/b), C(y) with Catₙ/4ⁿ by Estrin's
+            // scheme (pairs in y, then y², then y⁴)
             let t = c * ib;
             let y = (q * ib) * t;
             assert!(y.abs() <= 4e-3 && b > 0.0, "the series must apply (y = {y:e})");
-            let coef = [33.0 / 1024.0, 21.0 / 512.0, 7.0 / 128.0, 5.0 / 64.0, 0.125, 0.25, 1.0];
-            let series = coef[1..].iter().fold(coef[0], |acc, &k| fm(acc, y, k, f));
+            let y2 = y * y;
+            let (p01, p23) = (fm(0.25, y, 1.0, f), fm(5.0 / 64.0, y, 0.125, f));
+            let p45 = fm(21.0 / 512.0, y, 7.0 / 128.0, f);
+            let (p03, p46) = (fm(p23, y2, p01, f), fm(33.0 / 1024.0, y2, p45, f));
+            let series = fm(p46, y2 * y2, p03, f);
             t * (-0.5 / h) * series
         } else {
             let z = 0.25 * q * c * (ib * ib);
@@ -81,18 +88,25 @@ fn reference(x: V, v: V, l: f64, g: f64, h: f64, steps: usize, fused: bool) -> (
         let y = fm3(v_half, h, [-cx[0], -cx[1], -cx[2]], f);
         let x1 = add(x, y);
         cx = sub(sub(x1, x), y);
-        let e = add(w, kick);
-        let xe = dot(x, e, f);
-        let p = if f {
-            // fused: the coefficients unscaled, one product by 1/l²
-            let (pa, pb, pc) = (fm(h, dot(w, e, f), xe, f), fm(h, xe, b, f), h * q);
-            fm(mu, fm(mu, pc, pb, f), pa, f) * inv_l2
+        let (p, inner) = if f {
+            // fused: x₀·e = x₀·w + x₀_z κ, w·e = |w|² + w_z κ, the coefficients unscaled, one
+            // product by 1/l²; the kicks' zero components not subtracted from
+            let (xe, we) = (fm(x[2], kick[2], xw, f), fm(w[2], kick[2], ww, f));
+            let (pa, pb, pc) = (fm(h, we, xe, f), fm(h, xe, b, f), h * q);
+            let inner = [
+                fm(x[0], mu, -cv[0], f),
+                fm(x[1], mu, -cv[1], f),
+                fm(x[2], mu, (kick[2] + kick[2]) - cv[2], f),
+            ];
+            (fm(mu, fm(mu, pc, pb, f), pa, f) * inv_l2, inner)
         } else {
+            let e = add(w, kick);
+            let xe = dot(x, e, f);
             let (pa, pb, pc) =
                 (fm(h, dot(w, e, f), xe, f) * inv_l2, fm(h, xe, b, f) * inv_l2, h * q * inv_l2);
-            fm(mu, fm(mu, pc, pb, f), pa, f)
+            (fm(mu, fm(mu, pc, pb, f), pa, f), fm3(x, mu, sub(add(kick, kick), cv), f))
         };
-        let yv = fm3(x1, -p, fm3(x, mu, sub(add(kick, kick), cv), f), f);
+        let yv = fm3(x1, -p, inner, f);
         let v1 = add(v, yv);
         cv = sub(sub(v1, v), yv);
         (x, v) = (x1, v1);

@@ -25,10 +25,13 @@ from .._core import EnsembleRun, EnsembleSpec, InvalidInputError, RunOptions
 from .._progress import tqdm
 from ..integrators import check_arithmetic
 from ..memory import check_memory
-from ..model import FloatArray, Pendulum, State
+from ..model import FloatArray, Pendulum
 from .adaptive import simulate_adaptive
 from .result import EnsembleResult
 from .save import Save
+from .starts import as_states, per_trajectory, states_from_angles
+
+__all__ = ["max_sway", "model_damping", "simulate_ensemble", "states_from_angles"]
 
 _POLL_SECONDS = 0.05
 BYTES_PER_ROW = 512
@@ -37,44 +40,6 @@ both sides of the core, the summary, the masks); a saved sample of x, v takes 48
 handed back. Checked against the available memory before the run (:mod:`pendulab.memory`)."""
 
 _PROGRESS_AFTER = 5e7  # trajectory-steps
-
-
-def _as_states(states: Any) -> tuple[FloatArray, FloatArray]:
-    if isinstance(states, State):
-        states = [states]
-    if isinstance(states, (list, tuple)) and states and all(isinstance(s, State) for s in states):
-        arr = np.array([s.as_array() for s in states])
-    else:
-        try:
-            if np.asarray(states).dtype.kind in "cUSV":  # complex or text: refused, not cast
-                raise TypeError
-            arr = np.asarray(states, dtype=np.float64)
-        except (TypeError, ValueError, OverflowError, RecursionError):
-            raise limits.invalid(
-                "states", states, "an (N, 6) array of (x, v) rows [m, m/s] or a list of State"
-            ) from None
-    if arr.ndim != 2 or arr.shape[1] != 6 or arr.shape[0] == 0:
-        raise InvalidInputError(
-            f"states must be an (N, 6) array of (x, v) rows [m, m/s] or a list of State, "
-            f"got shape {arr.shape}"
-        )
-    if arr.shape[0] > limits.MAX_SAMPLES:
-        raise limits.invalid("states", f"<{arr.shape[0]} rows>", f"at most {limits.MAX_SAMPLES} rows")
-    x, v = np.ascontiguousarray(arr[:, :3]), np.ascontiguousarray(arr[:, 3:])
-    # non-finite rows are skipped with a warning (below); the usual case, every row finite, is told by
-    # one reduction over the whole array and checked in place, without copying the good rows
-    every = bool(np.isfinite(arr).all())
-    rows = slice(None) if every else np.isfinite(arr).all(axis=1)
-    limits.array("states x", x[rows], "position")
-    limits.array("states v", v[rows], "velocity")
-    return x, v
-
-
-def _per_trajectory(name: str, value: Any, default: float, n: int, limit: Any) -> FloatArray:
-    a = np.atleast_1d(limits.array(name, default if value is None else value, limit)).ravel()
-    if a.size not in (1, n):
-        raise InvalidInputError(f"{name} must be one value or one per trajectory ({n}), got {a.size}")
-    return np.ascontiguousarray(a)
 
 
 _DAMPING = limits.param_spec("damped", "damping")
@@ -226,11 +191,11 @@ def _plan(
     """The arguments of ``simulate_ensemble(method="rattle")`` checked, the work and memory bounded."""
     length, g, damping = params
     c_model = model_damping(pendulum)
-    x, v = _as_states(states)
+    x, v = as_states(states)
     n = x.shape[0]
-    lengths = _per_trajectory("length", length, pendulum.length, n, limits.COMMON["length"])
-    gs = _per_trajectory("g", g, pendulum.g, n, limits.COMMON["g"])
-    cs = _per_trajectory("damping", damping, c_model, n, _DAMPING)
+    lengths = per_trajectory("length", length, pendulum.length, n, limits.COMMON["length"])
+    gs = per_trajectory("g", g, pendulum.g, n, limits.COMMON["g"])
+    cs = per_trajectory("damping", damping, c_model, n, _DAMPING)
     if np.isfinite(x).all() and np.isfinite(v).all():  # one reduction each in the usual case
         finite = np.ones(n, dtype=bool)
     else:
@@ -359,18 +324,18 @@ def _adaptive(pendulum: Pendulum, states: Any, t_end: Any, kw: dict[str, Any]) -
             f"simulate_ensemble(method='dop853') keeps the final states only: "
             f"{', '.join(given)} apply to method='rattle' only"
         )
-    x, v = _as_states(states)
+    x, v = as_states(states)
     if not (np.isfinite(x).all() and np.isfinite(v).all()):
         raise InvalidInputError("method='dop853' needs every start row finite (no NaN or inf)")
     t_end = limits.number("t_end", t_end, "time", positive=True)
     n = x.shape[0]
     per: dict[str, FloatArray] = {}
     if any(kw[k] is not None for k in ("length", "g", "damping")):  # one model per distinct triple
-        per["length"] = _per_trajectory("length", kw["length"], pendulum.length, n, limits.COMMON["length"])
-        per["g"] = _per_trajectory("g", kw["g"], pendulum.g, n, limits.COMMON["g"])
+        per["length"] = per_trajectory("length", kw["length"], pendulum.length, n, limits.COMMON["length"])
+        per["g"] = per_trajectory("g", kw["g"], pendulum.g, n, limits.COMMON["g"])
         if kw["damping"] is not None:
             c_model = float(pendulum.extra.get("damping", 0.0))
-            per["damping"] = _per_trajectory("damping", kw["damping"], c_model, n, _DAMPING)
+            per["damping"] = per_trajectory("damping", kw["damping"], c_model, n, _DAMPING)
     return simulate_adaptive(
         pendulum,
         x,
@@ -383,27 +348,3 @@ def _adaptive(pendulum: Pendulum, states: Any, t_end: Any, kw: dict[str, Any]) -
         progress=kw["progress"],
         per_trajectory=per,
     )
-
-
-def states_from_angles(
-    pendulum: Pendulum, theta: Any, phi: Any = 0.0, theta_dot: Any = 0.0, phi_dot: Any = 0.0
-) -> FloatArray:
-    """(N, 6) array of (x, v) from arrays of θ [rad] (from the downward vertical), φ [rad], θ̇, φ̇
-    [rad/s], broadcast together (the same formulas as ``Pendulum.state_from_angles``).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> import pendulab as pl
-    >>> p = pl.Pendulum()
-    >>> pl.states_from_angles(p, theta=[0.1, 0.2], phi_dot=1.0).shape
-    (2, 6)
-    """
-    th, ph, thd, phd = np.broadcast_arrays(
-        *(np.asarray(a, dtype=np.float64) for a in (theta, phi, theta_dot, phi_dot))
-    )
-    rows = [
-        pendulum.state_from_angles(float(a), float(b), float(c), float(d)).as_array()
-        for a, b, c, d in zip(th.ravel(), ph.ravel(), thd.ravel(), phd.ravel(), strict=True)
-    ]
-    return np.array(rows).reshape(-1, 6)

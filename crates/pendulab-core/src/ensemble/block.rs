@@ -19,8 +19,9 @@
 //! multiply-add chains) overlaps the other chain's work. SI units: \[m\], [m/s], [1/s], [m/s²].
 
 use crate::integrate::rattle_kernel::{
-    advance_position, advance_velocity, fmadd3, MulAdd, PositionQuadratic, ProjectionPolynomial,
+    advance_position, advance_velocity, fmadd3, Fused, MulAdd, PositionQuadratic, ProjectionPolynomial,
 };
+use crate::integrate::rattle_vertical::VerticalField;
 use crate::state::State;
 use glam::DVec3;
 
@@ -191,6 +192,9 @@ impl Tile {
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
     fn rattle<A: MulAdd>(&mut self, h: f64, closed: bool) -> bool {
+        if A::FUSED {
+            return self.rattle_vertical(h, closed);
+        }
         let half = 0.5 * h;
         let mut next = [[[0.0; TILE]; 3]; 4];
         let mut ok = true;
@@ -219,6 +223,43 @@ impl Tile {
                 next[1][c][i] = v1[c];
                 next[2][c][i] = cx[c];
                 next[3][c][i] = cv[c];
+            }
+        }
+        if ok {
+            [self.x, self.v, self.cx, self.cv] = next;
+        }
+        ok
+    }
+
+    /// [`Tile::rattle`] with the fused arithmetic, in its vertical-field form
+    /// (`integrate/rattle_vertical.rs`, as the single path takes it for a vertical field).
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
+    fn rattle_vertical(&mut self, h: f64, closed: bool) -> bool {
+        let half = 0.5 * h;
+        let mut next = [[[0.0; TILE]; 3]; 4];
+        let mut ok = true;
+        for i in 0..TILE {
+            let x0 = DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]);
+            let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
+            let kick = -self.g[i] * half;
+            let field = VerticalField { h, kick0: kick, kick1: kick, l2: self.l2[i], inv_l2: self.inv_l2[i] };
+            let (w, quad) = field.quadratic(x0, v0);
+            let mu = if closed {
+                quad.multiplier::<Fused>(h)
+            } else {
+                let (mu, in_range) = quad.multiplier_series::<Fused>(h);
+                ok &= in_range;
+                mu
+            };
+            let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
+            let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
+            let end = field.finish((x0, v0), (w, &quad), mu, (cx, cv));
+            for c in 0..3 {
+                next[0][c][i] = end.x[c];
+                next[1][c][i] = end.v[c];
+                next[2][c][i] = end.comp_x[c];
+                next[3][c][i] = end.comp_v[c];
             }
         }
         if ok {

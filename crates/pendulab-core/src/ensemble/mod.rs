@@ -22,10 +22,10 @@
 //! checked every [`CHECK_EVERY`] steps. SI units throughout.
 
 use crate::error::{Error, Result};
-use crate::integrate::rattle_kernel::{Arithmetic, Fused, Unfused};
+use crate::integrate::rattle_kernel::Arithmetic;
 use crate::state::State;
 use glam::DVec3;
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU64};
 
 /// Trajectories per block (the unit of parallel work; a multiple of [`TILE`]).
 pub const LANES: usize = 64;
@@ -37,9 +37,10 @@ pub mod adaptive_lanes;
 mod adaptive_settings;
 mod block;
 mod output;
+mod plan;
 pub use block::TILE;
-use block::{Block, Lanes, Track};
 use output::{sample_count, sample_times, settle_times, summaries};
+use plan::{BlockRun, Plan};
 
 /// What an ensemble run keeps.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -159,8 +160,22 @@ pub fn run(
     progress: &AtomicU64,
     cancel: &AtomicBool,
 ) -> Result<EnsembleResult> {
+    let checked = check(starts, settings)?;
+    run_checked(starts, settings, checked, progress, cancel)
+}
+
+/// [`run`] with its input already checked by [`check`] (of the same starts and settings; for
+/// callers that check before handing the run to another thread, so that the starts are not checked
+/// twice). The sizes are checked again (O(1)): a token of other starts or settings is refused.
+pub fn run_checked(
+    starts: &[State],
+    settings: &RattleSettings<'_>,
+    checked: Checked,
+    progress: &AtomicU64,
+    cancel: &AtomicBool,
+) -> Result<EnsembleResult> {
     let &RattleSettings { length, g, dt, n_steps, with_summary, .. } = settings;
-    let plan = Plan::checked(starts, settings)?;
+    let plan = Plan::from_checked(starts, settings, checked)?;
     let (n, ns) = (starts.len(), sample_count(n_steps, plan.every));
     let mut states = vec![State { x: DVec3::NAN, v: DVec3::NAN }; n * ns];
     let run = BlockRun {
@@ -174,21 +189,24 @@ pub fn run(
         cancel,
     };
     // each worker builds its blocks from the starts and writes their samples into its part of
-    // `states`: both cores work from the first block on, and nothing is copied afterwards
+    // `states`: both cores work from the first block on, and nothing is copied afterwards; a block
+    // hands back only what the result needs of it (its summaries, its settle records)
     let work = |(b, out): (usize, &mut [State])| {
-        let mut blk = plan.block(b, starts, length, g, dt);
+        let mut blk = plan.block(b, starts, (length, g), dt, with_summary);
         let (steps, cancelled) = run.block(&mut blk, out, ns);
-        (blk, steps, cancelled)
+        let summary = if with_summary { summaries(&blk) } else { Vec::new() };
+        let last_out = if plan.track { blk.last_out[..blk.len].to_vec() } else { Vec::new() };
+        BlockEnd { summary, last_out, steps, cancelled }
     };
     #[cfg(feature = "parallel")]
-    let outputs: Vec<_> = {
+    let outputs: Vec<BlockEnd> = {
         use rayon::prelude::*;
         states.par_chunks_mut(LANES * ns).enumerate().map(work).collect()
     };
     #[cfg(not(feature = "parallel"))]
-    let outputs: Vec<_> = states.chunks_mut(LANES * ns).enumerate().map(work).collect();
-    let cancelled = outputs.iter().any(|o| o.2);
-    let steps = outputs.iter().map(|o| o.1).min().unwrap_or(0);
+    let outputs: Vec<BlockEnd> = states.chunks_mut(LANES * ns).enumerate().map(work).collect();
+    let cancelled = outputs.iter().any(|o| o.cancelled);
+    let steps = outputs.iter().map(|o| o.steps).min().unwrap_or(0);
     let t = sample_times(steps, plan.every, n_steps, dt);
     let nt = t.len();
     if nt < ns {
@@ -201,176 +219,39 @@ pub fn run(
     if (0..n).any(|k| !states[k * nt + nt - 1].is_finite()) {
         return Err(Error::Diverged { t: steps as f64 * dt, method: "rattle (ensemble)", dt });
     }
-    let blocks: Vec<Block> = outputs.into_iter().map(|o| o.0).collect();
-    let summary = with_summary.then(|| summaries(&blocks));
-    let settle_time = plan.track.then(|| settle_times(&blocks, steps, dt));
+    let summary = with_summary.then(|| outputs.iter().flat_map(|o| o.summary.iter().copied()).collect());
+    let settle_time = plan.track.then(|| {
+        let last_out: Vec<f64> = outputs.iter().flat_map(|o| o.last_out.iter().copied()).collect();
+        settle_times(&last_out, steps, dt)
+    });
     Ok(EnsembleResult { t, states, summary, settle_time, cancelled, steps })
+}
+
+/// What a worker keeps of a block after running it: its trajectories' summaries and settle records
+/// (`Block::last_out`; each empty when not asked for), the steps it took and whether it was cancelled.
+struct BlockEnd {
+    summary: Vec<Summary>,
+    last_out: Vec<f64>,
+    steps: u64,
+    cancelled: bool,
 }
 
 /// Checks the input of [`run`] as the run would (and fails with the same error), without running or
 /// allocating anything: for callers that start the run elsewhere (a background thread).
-pub fn check(starts: &[State], settings: &RattleSettings<'_>) -> Result<()> {
-    Plan::checked(starts, settings).map(|_| ())
+pub fn check(starts: &[State], settings: &RattleSettings<'_>) -> Result<Checked> {
+    Plan::checked(starts, settings).map(|p| Checked {
+        n: starts.len(),
+        cos_settle: p.cos_settle,
+        every: p.every,
+    })
 }
 
-/// A parameter given once for all trajectories (length 1) or per trajectory: its value for trajectory k.
-#[inline]
-fn pick(a: &[f64], k: usize) -> f64 {
-    if a.len() == 1 {
-        a[0]
-    } else {
-        a[k]
-    }
-}
-
-/// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the settle
-/// threshold (cos of the angle; −∞ without tracking) and the save interval in steps.
-struct Plan<'a> {
-    damping: &'a [f64],
-    cos_settle: f64,
-    track: bool,
-    every: u64,
-}
-
-impl<'a> Plan<'a> {
-    /// Checks everything before any work: dt > 0, parameter arrays of length 1 or N, every start on
-    /// TS² of its (l, g), damping ≥ 0, the settle angle in (0, π), save_every ≥ 1.
-    fn checked(starts: &[State], settings: &RattleSettings<'a>) -> Result<Self> {
-        let &RattleSettings { length, g, dt, n_steps, save, .. } = settings;
-        let n = starts.len();
-        crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
-        let damping: &[f64] = if settings.damping.is_empty() { &[0.0] } else { settings.damping };
-        for (name, a) in [("length", length), ("g", g), ("damping", damping)] {
-            if a.len() != 1 && a.len() != n {
-                return Err(Error::InvalidParameter {
-                    name,
-                    value: a.len() as f64,
-                    allowed: "one value for all trajectories or one per trajectory",
-                });
-            }
-        }
-        for (k, s) in starts.iter().enumerate() {
-            let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
-            State::on_tangent_bundle(&p, s.x, s.v)?;
-            crate::error::require_non_negative(
-                "damping",
-                pick(damping, k),
-                "a finite damping rate c >= 0 [1/s]",
-            )?;
-        }
-        let cos_settle = match settings.settle_angle {
-            None => f64::NEG_INFINITY,
-            Some(a) if a.is_finite() && a > 0.0 && a < std::f64::consts::PI => a.cos(),
-            Some(a) => {
-                return Err(Error::InvalidParameter {
-                    name: "settle_angle",
-                    value: a,
-                    allowed: "a sway angle in (0, π) rad",
-                })
-            }
-        };
-        let every = match save {
-            EnsembleSave::Final => n_steps.max(1),
-            EnsembleSave::Every(0) => {
-                return Err(Error::InvalidParameter {
-                    name: "save_every",
-                    value: 0.0,
-                    allowed: "an integer >= 1",
-                })
-            }
-            EnsembleSave::Every(e) => e,
-        };
-        Ok(Self { damping, cos_settle, track: settings.settle_angle.is_some(), every })
-    }
-
-    /// Block `b`: trajectories b·LANES … (the lanes past the last trajectory repeat it and are
-    /// ignored), with its parameters, its summary and settle state at the start.
-    fn block(&self, b: usize, starts: &[State], length: &[f64], g: &[f64], dt: f64) -> Block {
-        let n = starts.len();
-        let damping = self.damping;
-        let idx = |i: usize| (b * LANES + i).min(n - 1);
-        let len = (n - b * LANES).min(LANES);
-        let lanes = |f: &dyn Fn(usize) -> f64| -> Lanes { std::array::from_fn(|i| f(idx(i))) };
-        let mut blk = Block {
-            x: [0, 1, 2].map(|c| lanes(&|k| starts[k].x[c])),
-            v: [0, 1, 2].map(|c| lanes(&|k| starts[k].v[c])),
-            cx: [[0.0; LANES]; 3],
-            cv: [[0.0; LANES]; 3],
-            l2: lanes(&|k| pick(length, k) * pick(length, k)),
-            inv_l2: lanes(&|k| 1.0 / (pick(length, k) * pick(length, k))),
-            g: lanes(&|k| pick(g, k)),
-            decay_half: lanes(&|k| (-pick(damping, k) * (0.5 * dt)).exp()),
-            damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
-            down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
-            cos_settle: self.cos_settle,
-            last_out: [-1.0; LANES],
-            len,
-            summary: std::array::from_fn(|r| {
-                [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
-            }),
-            crossings: [0.0; LANES],
-            above: lanes(&|k| if starts[k].x.z > 0.0 { 1.0 } else { 0.0 }),
-        };
-        blk.update_summary();
-        if self.track {
-            blk.track_settle(0.0);
-        }
-        blk
-    }
-}
-
-/// How every block is run: `n_steps` steps of `dt` [s], saving every `every`-th, with the summary
-/// and settle tracking when asked; progress counted and the cancel flag read every [`CHECK_EVERY`]
+/// Proof that [`check`] accepted a run's starts and settings ([`run_checked`]): the number of
+/// starts, the settle threshold (cos of the angle; −∞ without tracking) and the save interval in
 /// steps.
-struct BlockRun<'a> {
-    dt: f64,
-    n_steps: u64,
+#[derive(Debug, Clone, Copy)]
+pub struct Checked {
+    n: usize,
+    cos_settle: f64,
     every: u64,
-    with_summary: bool,
-    track: bool,
-    arithmetic: Arithmetic,
-    progress: &'a AtomicU64,
-    cancel: &'a AtomicBool,
-}
-
-impl BlockRun<'_> {
-    /// Runs one block, writing lane i's sample j to `out[i * ns + j]`: the steps taken and whether it
-    /// was cancelled.
-    #[inline]
-    fn block(&self, blk: &mut Block, out: &mut [State], ns: usize) -> (u64, bool) {
-        let (n_steps, every) = (self.n_steps, self.every);
-        let mut sample = 0;
-        let mut save = |blk: &Block| {
-            for i in 0..blk.len {
-                out[i * ns + sample] = blk.state(i);
-            }
-            sample += 1;
-        };
-        save(blk);
-        let track = Track { summary: self.with_summary, settle: self.track };
-        let mut done = 0u64;
-        while done < n_steps {
-            let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
-            // the lane loops compiled for the CPU's widest vectors (AVX-512, AVX2 + FMA; crate::isa)
-            match self.arithmetic {
-                Arithmetic::Unfused => crate::isa::fastest(
-                    #[inline(always)]
-                    || blk.steps::<Unfused>(chunk, self.dt, done, track),
-                ),
-                Arithmetic::Fused => crate::isa::fastest(
-                    #[inline(always)]
-                    || blk.steps::<Fused>(chunk, self.dt, done, track),
-                ),
-            }
-            done += chunk;
-            self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
-            if done % every == 0 || done == n_steps {
-                save(blk);
-            }
-            if self.cancel.load(Ordering::Relaxed) {
-                return (done, true);
-            }
-        }
-        (done, false)
-    }
 }

@@ -26,35 +26,30 @@ pub(super) fn sample_times(steps: u64, every: u64, n_steps: u64, dt: f64) -> Vec
     t
 }
 
-/// Every trajectory's extremes and plane crossings, in order.
-pub(super) fn summaries(blocks: &[Block]) -> Vec<Summary> {
-    blocks
-        .iter()
-        .flat_map(|b| {
-            (0..b.len).map(|i| Summary {
-                z: (b.summary[0][i], b.summary[1][i]),
-                energy_per_mass: (b.summary[2][i], b.summary[3][i]),
-                j3_per_mass: (b.summary[4][i], b.summary[5][i]),
-                crossings: b.crossings[i] as u64,
-            })
+/// The extremes and plane crossings of a block's real lanes, in order.
+pub(super) fn summaries(b: &Block) -> Vec<Summary> {
+    (0..b.len)
+        .map(|i| Summary {
+            z: (b.summary[0][i], b.summary[1][i]),
+            energy_per_mass: (b.summary[2][i], b.summary[3][i]),
+            j3_per_mass: (b.summary[4][i], b.summary[5][i]),
+            crossings: b.crossings[i] as u64,
         })
         .collect()
 }
 
-/// Every trajectory's settle time [s] after `steps` steps of `dt` (+∞: outside at the last sample).
-pub(super) fn settle_times(blocks: &[Block], steps: u64, dt: f64) -> Vec<f64> {
-    blocks
+/// Every trajectory's settle time [s] after `steps` steps of `dt` (+∞: outside at the last sample),
+/// from the index of the last sample outside the band of each (−1: never outside; `Block::last_out`).
+pub(super) fn settle_times(last_out: &[f64], steps: u64, dt: f64) -> Vec<f64> {
+    last_out
         .iter()
-        .flat_map(|b| {
-            (0..b.len).map(|i| {
-                let k = b.last_out[i];
-                // outside at the last sample: not settled within the run
-                if k >= steps as f64 {
-                    f64::INFINITY
-                } else {
-                    (k + 1.0) * dt
-                }
-            })
+        .map(|&k| {
+            // outside at the last sample: not settled within the run
+            if k >= steps as f64 {
+                f64::INFINITY
+            } else {
+                (k + 1.0) * dt
+            }
         })
         .collect()
 }

@@ -16,6 +16,7 @@ pub(crate) mod dop853_control;
 pub(crate) mod dop853_tableau;
 pub mod rattle;
 pub mod rattle_kernel;
+pub mod rattle_vertical;
 pub mod rk4;
 pub mod rk4_angles;
 pub mod rkmk4;

@@ -31,6 +31,7 @@ use super::rattle_kernel::{
     advance_position, advance_velocity, dot, fmadd3, Arithmetic, Fused, MulAdd, PositionQuadratic,
     ProjectionPolynomial, Unfused,
 };
+use super::rattle_vertical::VerticalField;
 use super::FixedStep;
 use crate::error::{Error, Result};
 use crate::model::Model;
@@ -78,18 +79,58 @@ impl Rattle {
         }
     }
 
-    /// [`Rattle::advance`] with the rounding `A`.
+    /// [`Rattle::advance`] with the rounding `A`: the velocity flow (if any) for h/2 on either side
+    /// of the kicks and the constrained drift.
     #[inline(always)]
     fn advance_with<A: MulAdd, M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> bool {
-        let l = model.params().length;
-        let l2 = l * l;
-        // 1/l² is a loop invariant the compiler hoists out of a stepping loop.
-        let inv_l2 = 1.0 / l2;
         let half = 0.5 * h;
         if model.has_velocity_forces() {
             // Strang splitting: the exact velocity flow for h/2 on either side (see model::extended).
             s.v = model.velocity_flow_at(t, s.x, s.v, half);
         }
+        let kicked = if A::FUSED { self.vertical(model, t, s, h) } else { None };
+        if !kicked.unwrap_or_else(|| self.kick_drift::<A, M>(model, t, s, h)) {
+            return false;
+        }
+        if model.has_velocity_forces() {
+            s.v = model.velocity_flow_at(t + h, s.x, s.v, half);
+        }
+        true
+    }
+
+    /// The fused step in a vertical uniform field (`rattle_vertical.rs`, the ensemble kernel's form),
+    /// when the model's kicks at t and t + h are vertical; `None` otherwise (the general form runs).
+    #[inline(always)]
+    fn vertical<M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> Option<bool> {
+        if !model.kick_is_uniform() {
+            return None;
+        }
+        let half = 0.5 * h;
+        let (k0, k1) = (model.kick_acceleration(t, s.x) * half, model.kick_acceleration(t + h, s.x) * half);
+        if k0.x != 0.0 || k0.y != 0.0 || k1.x != 0.0 || k1.y != 0.0 {
+            return None;
+        }
+        let l2 = model.params().length * model.params().length;
+        let field = VerticalField { h, kick0: k0.z, kick1: k1.z, l2, inv_l2: 1.0 / l2 };
+        let (w, quad) = field.quadratic(s.x, s.v);
+        let mu = quad.multiplier::<Fused>(h);
+        if mu.is_nan() {
+            return Some(false);
+        }
+        let end = field.finish((s.x, s.v), (w, &quad), mu, (self.comp_x, self.comp_v));
+        (s.x, s.v, self.comp_x, self.comp_v) = (end.x, end.v, end.comp_x, end.comp_v);
+        Some(true)
+    }
+
+    /// The kicks and the constrained drift in the general form of [`super::rattle_kernel`]; false when
+    /// the position quadratic has no root.
+    #[inline(always)]
+    fn kick_drift<A: MulAdd, M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> bool {
+        let l = model.params().length;
+        let l2 = l * l;
+        // 1/l² is a loop invariant the compiler hoists out of a stepping loop.
+        let inv_l2 = 1.0 / l2;
+        let half = 0.5 * h;
         let (x0, v0) = (s.x, s.v);
         let kick0 = model.kick_acceleration(t, x0) * half;
         let w = v0 + kick0;
@@ -116,9 +157,6 @@ impl Rattle {
         // x₁·v₁ = (x₁·u)(1 − |x₁|²/l²) is round-off of an O(h) quantity).
         s.v = advance_velocity::<A>(v0, kick0 + kick1, x0, mu, x1, p, &mut self.comp_v);
         s.x = x1;
-        if model.has_velocity_forces() {
-            s.v = model.velocity_flow_at(t + h, s.x, s.v, half);
-        }
         true
     }
 }

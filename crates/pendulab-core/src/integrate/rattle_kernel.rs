@@ -37,11 +37,12 @@
 //! single trajectory equals the fused ensemble), but other bits than the default, and fast only where
 //! the CPU has FMA (one instruction at x86-64-v3/v4 and on aarch64; an exact software routine at the
 //! x86-64 baseline and in WebAssembly, 3–25× slower: docs/performance.md, "No CPU left behind").
-//! The fused arithmetic also takes two shorter forms that the default cannot without changing its
+//! The fused arithmetic also takes shorter forms that the default cannot without changing its
 //! bits: the series as a polynomial in y = 4z = (q/b)(c/b), C = Σ (Catₙ/4ⁿ) yⁿ (coefficients 1, 1/4,
-//! 1/8, 5/64, 7/128, 21/512, 33/1024, exact in binary) by Horner, |y| ≤ 4·[`SERIES_LIMIT`]; and the
-//! projection polynomial scaled by 1/l² once, p = (a' + μ (b' + μ c'))/l². Together 4 fewer
-//! products or multiply-adds per step (docs/performance.md, "How fast, and why"). `tests/rattle_unfused.rs` checks the stepper and the ensemble against both
+//! 1/8, 5/64, 7/128, 21/512, 33/1024, exact in binary) by Estrin's scheme (pairs in y, then y², then
+//! y⁴: 3 multiply-adds deep instead of Horner's 6), |y| ≤ 4·[`SERIES_LIMIT`]; the projection
+//! polynomial scaled by 1/l² once, p = (a' + μ (b' + μ c'))/l²; and, in a vertical field, the step of
+//! `rattle_vertical.rs` (docs/performance.md, "How fast, and why"). `tests/rattle_unfused.rs` checks the stepper and the ensemble against both
 //! arithmetics written out by hand. SI units: lengths \[m\], velocities [m/s], h \[s\].
 
 use glam::DVec3;
@@ -148,6 +149,11 @@ pub struct PositionQuadratic {
     pub b: f64,
     /// |x₀ + h w|² − l² \[m²\], expanded so that l² cancels exactly.
     pub c: f64,
+    /// x₀·w \[m²/s\], of which b and c are made (the vertical-field step, `rattle_vertical.rs`,
+    /// reuses it).
+    pub xw: f64,
+    /// |w|² \[m²/s²\], of which c is made (reused like `xw`).
+    pub ww: f64,
 }
 
 impl PositionQuadratic {
@@ -159,7 +165,7 @@ impl PositionQuadratic {
         let ww = dot::<A>(w, w);
         let b = fmadd::<A>(h, xw, q);
         let c = fmadd::<A>(h, fmadd::<A>(h, ww, xw + xw), q - l2);
-        Self { q, b, c }
+        Self { q, b, c, xw, ww }
     }
 
     /// μ = m/h [1/s] from the Catalan series, and whether the series applies (|z| ≤
@@ -169,13 +175,15 @@ impl PositionQuadratic {
         let ib = 1.0 / self.b;
         if A::FUSED {
             // y = 4z = (q/b)(c/b) and C as a polynomial in y with the exact binary coefficients
-            // Catₙ/4ⁿ, by Horner: 5 products and 6 multiply-adds instead of 7 and 7 (module doc)
+            // Catₙ/4ⁿ, by Estrin's scheme: 7 products and 6 multiply-adds, 3 multiply-adds deep
+            // (Horner: 6 deep) on the step's dependency chain (module doc)
             let t = self.c * ib;
             let y = (self.q * ib) * t;
             let f = A::fmadd;
-            let c56 = f(33.0 / 1024.0, y, 21.0 / 512.0);
-            let c36 = f(f(c56, y, 7.0 / 128.0), y, 5.0 / 64.0);
-            let series = f(f(f(c36, y, 0.125), y, 0.25), y, 1.0);
+            let (y2, p01, p23) = (y * y, f(0.25, y, 1.0), f(5.0 / 64.0, y, 0.125));
+            let p45 = f(21.0 / 512.0, y, 7.0 / 128.0);
+            let (p03, p46) = (f(p23, y2, p01), f(33.0 / 1024.0, y2, p45));
+            let series = f(p46, y2 * y2, p03);
             let mu = t * (-0.5 / h) * series;
             return (mu, y.abs() <= 4.0 * SERIES_LIMIT && self.b > 0.0);
         }
@@ -282,114 +290,5 @@ pub fn advance_velocity<A: MulAdd>(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::integrate::rattle::Rattle;
-    use crate::model::{IdealPendulum, Model};
-    use crate::state::{Params, State};
-
-    /// Positions on the sphere and velocities over a range of speeds and step sizes, both signs of h
-    /// (the compositions take negative substeps): the series and the closed form give the same μ.
-    #[test]
-    fn series_multiplier_agrees_with_the_closed_form() {
-        let (l, g) = (1.3, 9.81);
-        let mut checked = 0;
-        let mut max_rel: f64 = 0.0;
-        for i in 0..40 {
-            let th = 0.05 + 3.0 * i as f64 / 40.0;
-            let x0 = DVec3::new(th.sin() * 0.6f64.cos(), th.sin() * 0.6f64.sin(), -th.cos()) * l;
-            let tangent = DVec3::Z.cross(x0).normalize();
-            let along = x0.cross(tangent).normalize();
-            for speed in [0.0, 0.3, 2.0, 7.0, 20.0] {
-                let v0 = (tangent * 0.8 + along * 0.6) * speed;
-                for h in [1e-6, -3e-5, 1e-4, 1e-3, -2e-3, 5e-3, 2e-2] {
-                    let w = v0 + DVec3::new(0.0, 0.0, -g) * (0.5 * h);
-                    let quad = PositionQuadratic::new::<Unfused>(x0, w, h, l * l);
-                    let (series, ok) = quad.multiplier_series::<Unfused>(h);
-                    let exact = quad.multiplier_exact::<Unfused>(h);
-                    if ok {
-                        let rel = (series - exact).abs() / exact.abs().max(1e-300);
-                        max_rel = max_rel.max(rel);
-                        assert!(
-                            rel <= 8.0 * f64::EPSILON,
-                            "th {th} speed {speed} h {h}: {series} vs {exact}"
-                        );
-                        checked += 1;
-                    }
-                    assert_eq!(
-                        quad.multiplier::<Unfused>(h).to_bits(),
-                        if ok { series } else { exact }.to_bits()
-                    );
-                }
-            }
-        }
-        assert!(checked > 1000, "the series applied to only {checked} cases");
-        eprintln!("series vs closed form: max relative difference {max_rel:.2e} over {checked} cases");
-    }
-
-    #[test]
-    fn the_series_covers_the_usual_steps_and_leaves_large_ones_to_the_closed_form() {
-        let p = Params::new(1.0, 1.0, 9.81).unwrap();
-        let s = State::from_angles(&p, 1.0, 0.0, 0.0, 2.0).unwrap();
-        let at = |h: f64| {
-            let w = s.v + DVec3::new(0.0, 0.0, -9.81) * (0.5 * h);
-            PositionQuadratic::new::<Unfused>(s.x, w, h, 1.0).multiplier_series::<Unfused>(h).1
-        };
-        assert!(at(1e-3) && at(1e-2), "rosette at dt ≤ 10 ms should use the series");
-        assert!(!at(0.2), "dt = 0.2 s is outside the series' range");
-        // no real root: NaN, also through `multiplier`
-        let w = s.v * 1e3;
-        let quad = PositionQuadratic::new::<Unfused>(s.x, w, 1.0, 1.0);
-        assert!(quad.multiplier::<Unfused>(1.0).is_nan());
-    }
-
-    /// The ideal pendulum, but declaring its kick non-uniform: RATTLE takes the general path.
-    #[derive(Clone, Copy)]
-    struct General(IdealPendulum);
-    impl Model for General {
-        fn name(&self) -> &'static str {
-            "general"
-        }
-        fn params(&self) -> &Params {
-            self.0.params()
-        }
-        fn applied_acceleration(&self, t: f64, x: DVec3, v: DVec3) -> DVec3 {
-            self.0.applied_acceleration(t, x, v)
-        }
-        fn potential_per_mass(&self, x: DVec3) -> f64 {
-            self.0.potential_per_mass(x)
-        }
-        fn is_conservative(&self) -> bool {
-            true
-        }
-        fn is_axisymmetric(&self) -> bool {
-            true
-        }
-    }
-
-    #[test]
-    fn the_uniform_field_path_agrees_with_the_general_path_to_round_off() {
-        let ideal = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
-        assert!(ideal.kick_is_uniform() && !General(ideal).kick_is_uniform());
-        let s0 = State::from_angles(ideal.params(), 60f64.to_radians(), 0.0, 0.0, 2.0).unwrap();
-        for h in [1e-3, -1e-3, 1e-2] {
-            // one step: the two paths differ only by rounding
-            let (mut a, mut b) = (s0, s0);
-            assert!(Rattle::default().advance(&ideal, 0.0, &mut a, h));
-            assert!(Rattle::default().advance(&General(ideal), 0.0, &mut b, h));
-            let scale = s0.v.length();
-            assert!((a.x - b.x).length() <= 4.0 * f64::EPSILON, "h {h}: {:?} vs {:?}", a.x, b.x);
-            assert!((a.v - b.v).length() <= 8.0 * f64::EPSILON * scale, "h {h}: {:?} vs {:?}", a.v, b.v);
-            // and the constraint x·v = 0 holds as well on the uniform path
-            assert!(a.x.dot(a.v).abs() <= 4.0 * f64::EPSILON * scale, "{}", a.x.dot(a.v));
-        }
-        // 10⁵ steps: round-off of both paths accumulates only in the phase, to ≪ the step error
-        let (mut a, mut b) = (s0, s0);
-        let (mut ra, mut rb) = (Rattle::default(), Rattle::default());
-        for k in 0..100_000 {
-            let t = k as f64 * 1e-3;
-            assert!(ra.advance(&ideal, t, &mut a, 1e-3) && rb.advance(&General(ideal), t, &mut b, 1e-3));
-        }
-        assert!((a.x - b.x).length() < 1e-10, "{:?} vs {:?}", a.x, b.x);
-    }
-}
+#[path = "rattle_kernel_tests.rs"]
+mod tests;

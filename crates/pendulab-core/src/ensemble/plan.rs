@@ -1,0 +1,221 @@
+//! The plan of an ensemble run (`super::run`): its settings checked once (dt, the per-trajectory
+//! arrays' sizes, every start on TS² of its (l, g), damping c ≥ 0 [1/s], the settle angle, the save
+//! interval), each block built from the starts, and the block's step loop with its samples, progress
+//! counter and cancel checks (the steps themselves: `block.rs`). SI units: \[m\], [m/s], \[s\], [1/s].
+
+use super::block::{Block, Lanes, Track};
+use super::{Checked, EnsembleSave, RattleSettings, CHECK_EVERY, LANES};
+use crate::error::{Error, Result};
+use crate::integrate::rattle_kernel::{Arithmetic, Fused, Unfused};
+use crate::state::State;
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+
+/// A parameter given once for all trajectories (length 1) or per trajectory: its value for trajectory k.
+#[inline]
+fn pick(a: &[f64], k: usize) -> f64 {
+    if a.len() == 1 {
+        a[0]
+    } else {
+        a[k]
+    }
+}
+
+/// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the settle
+/// threshold (cos of the angle; −∞ without tracking) and the save interval in steps.
+pub(super) struct Plan<'a> {
+    pub(super) damping: &'a [f64],
+    pub(super) cos_settle: f64,
+    pub(super) track: bool,
+    pub(super) every: u64,
+}
+
+impl<'a> Plan<'a> {
+    /// The plan of a run [`check`] accepted; refused when the sizes of the starts or the
+    /// per-trajectory arrays are not those it checked.
+    pub(super) fn from_checked(
+        starts: &[State],
+        settings: &RattleSettings<'a>,
+        checked: Checked,
+    ) -> Result<Self> {
+        let n = starts.len();
+        let damping: &[f64] = if settings.damping.is_empty() { &[0.0] } else { settings.damping };
+        let sized = |a: &[f64]| a.len() == 1 || a.len() == n;
+        if checked.n != n || !sized(settings.length) || !sized(settings.g) || !sized(damping) {
+            return Err(Error::InvalidParameter {
+                name: "checked",
+                value: checked.n as f64,
+                allowed: "the token `check` gave for these starts and settings",
+            });
+        }
+        let track = settings.settle_angle.is_some();
+        Ok(Self { damping, cos_settle: checked.cos_settle, track, every: checked.every })
+    }
+
+    /// Checks everything before any work: dt > 0, parameter arrays of length 1 or N, every start on
+    /// TS² of its (l, g), damping ≥ 0, the settle angle in (0, π), save_every ≥ 1.
+    pub(super) fn checked(starts: &[State], settings: &RattleSettings<'a>) -> Result<Self> {
+        let &RattleSettings { length, g, dt, n_steps, save, .. } = settings;
+        let n = starts.len();
+        crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
+        let damping: &[f64] = if settings.damping.is_empty() { &[0.0] } else { settings.damping };
+        for (name, a) in [("length", length), ("g", g), ("damping", damping)] {
+            if a.len() != 1 && a.len() != n {
+                return Err(Error::InvalidParameter {
+                    name,
+                    value: a.len() as f64,
+                    allowed: "one value for all trajectories or one per trajectory",
+                });
+            }
+        }
+        for (k, s) in starts.iter().enumerate() {
+            let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
+            State::on_tangent_bundle(&p, s.x, s.v)?;
+            crate::error::require_non_negative(
+                "damping",
+                pick(damping, k),
+                "a finite damping rate c >= 0 [1/s]",
+            )?;
+        }
+        let cos_settle = match settings.settle_angle {
+            None => f64::NEG_INFINITY,
+            Some(a) if a.is_finite() && a > 0.0 && a < std::f64::consts::PI => a.cos(),
+            Some(a) => {
+                return Err(Error::InvalidParameter {
+                    name: "settle_angle",
+                    value: a,
+                    allowed: "a sway angle in (0, π) rad",
+                })
+            }
+        };
+        let every = match save {
+            EnsembleSave::Final => n_steps.max(1),
+            EnsembleSave::Every(0) => {
+                return Err(Error::InvalidParameter {
+                    name: "save_every",
+                    value: 0.0,
+                    allowed: "an integer >= 1",
+                })
+            }
+            EnsembleSave::Every(e) => e,
+        };
+        Ok(Self { damping, cos_settle, track: settings.settle_angle.is_some(), every })
+    }
+
+    /// Block `b`: trajectories b·LANES … (the lanes past the last trajectory repeat it and are
+    /// ignored), with its parameters, its summary and settle state at the start.
+    pub(super) fn block(
+        &self,
+        b: usize,
+        starts: &[State],
+        (length, g): (&[f64], &[f64]),
+        dt: f64,
+        summary: bool,
+    ) -> Block {
+        let n = starts.len();
+        let damping = self.damping;
+        let idx = |i: usize| (b * LANES + i).min(n - 1);
+        let len = (n - b * LANES).min(LANES);
+        let lanes = |f: &dyn Fn(usize) -> f64| -> Lanes { std::array::from_fn(|i| f(idx(i))) };
+        let coordinate = |pick_x: bool, c: usize| -> Lanes {
+            std::array::from_fn(|i| {
+                let s = &starts[idx(i)];
+                if pick_x {
+                    s.x[c]
+                } else {
+                    s.v[c]
+                }
+            })
+        };
+        let mut blk = Block {
+            x: [0, 1, 2].map(|c| coordinate(true, c)),
+            v: [0, 1, 2].map(|c| coordinate(false, c)),
+            cx: [[0.0; LANES]; 3],
+            cv: [[0.0; LANES]; 3],
+            l2: lanes(&|k| pick(length, k) * pick(length, k)),
+            inv_l2: lanes(&|k| 1.0 / (pick(length, k) * pick(length, k))),
+            g: lanes(&|k| pick(g, k)),
+            // e^{−c dt/2}; exactly 1 (e^{−0}) without damping, no exp called
+            decay_half: lanes(&|k| {
+                let c = pick(damping, k);
+                if c == 0.0 {
+                    1.0
+                } else {
+                    (-c * (0.5 * dt)).exp()
+                }
+            }),
+            damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
+            down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
+            cos_settle: self.cos_settle,
+            last_out: [-1.0; LANES],
+            len,
+            summary: std::array::from_fn(|r| {
+                [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
+            }),
+            crossings: [0.0; LANES],
+            above: lanes(&|k| if starts[k].x.z > 0.0 { 1.0 } else { 0.0 }),
+        };
+        if summary {
+            blk.update_summary();
+        }
+        if self.track {
+            blk.track_settle(0.0);
+        }
+        blk
+    }
+}
+
+/// How every block is run: `n_steps` steps of `dt` [s], saving every `every`-th, with the summary
+/// and settle tracking when asked; progress counted and the cancel flag read every [`CHECK_EVERY`]
+/// steps.
+pub(super) struct BlockRun<'a> {
+    pub(super) dt: f64,
+    pub(super) n_steps: u64,
+    pub(super) every: u64,
+    pub(super) with_summary: bool,
+    pub(super) track: bool,
+    pub(super) arithmetic: Arithmetic,
+    pub(super) progress: &'a AtomicU64,
+    pub(super) cancel: &'a AtomicBool,
+}
+
+impl BlockRun<'_> {
+    /// Runs one block, writing lane i's sample j to `out[i * ns + j]`: the steps taken and whether it
+    /// was cancelled.
+    #[inline]
+    pub(super) fn block(&self, blk: &mut Block, out: &mut [State], ns: usize) -> (u64, bool) {
+        let (n_steps, every) = (self.n_steps, self.every);
+        let mut sample = 0;
+        let mut save = |blk: &Block| {
+            for i in 0..blk.len {
+                out[i * ns + sample] = blk.state(i);
+            }
+            sample += 1;
+        };
+        save(blk);
+        let track = Track { summary: self.with_summary, settle: self.track };
+        let mut done = 0u64;
+        while done < n_steps {
+            let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
+            // the lane loops compiled for the CPU's widest vectors (AVX-512, AVX2 + FMA; crate::isa)
+            match self.arithmetic {
+                Arithmetic::Unfused => crate::isa::fastest(
+                    #[inline(always)]
+                    || blk.steps::<Unfused>(chunk, self.dt, done, track),
+                ),
+                Arithmetic::Fused => crate::isa::fastest(
+                    #[inline(always)]
+                    || blk.steps::<Fused>(chunk, self.dt, done, track),
+                ),
+            }
+            done += chunk;
+            self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
+            if done % every == 0 || done == n_steps {
+                save(blk);
+            }
+            if self.cancel.load(Ordering::Relaxed) {
+                return (done, true);
+            }
+        }
+        (done, false)
+    }
+}

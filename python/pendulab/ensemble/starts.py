@@ -1,0 +1,85 @@
+"""The starts of an ensemble: an (N, 6) array of (x, v) rows [m, m/s] or a list of ``State`` checked
+(shape, at most ``MAX_SAMPLES`` rows, components within the position and velocity limits; rows with NaN
+or inf are left to the caller, which skips them), per-trajectory parameters (one value or N), and
+``states_from_angles``: rows from arrays of the angles of T-1.1. SI units."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from .. import validate as limits
+from .._core import InvalidInputError
+from ..model import FloatArray, Pendulum, State
+
+
+def as_states(states: Any) -> tuple[FloatArray, FloatArray]:
+    if isinstance(states, State):
+        states = [states]
+    if isinstance(states, (list, tuple)) and states and all(isinstance(s, State) for s in states):
+        arr = np.array([s.as_array() for s in states])
+    else:
+        try:
+            if np.asarray(states).dtype.kind in "cUSV":  # complex or text: refused, not cast
+                raise TypeError
+            arr = np.asarray(states, dtype=np.float64)
+        except (TypeError, ValueError, OverflowError, RecursionError):
+            raise limits.invalid(
+                "states", states, "an (N, 6) array of (x, v) rows [m, m/s] or a list of State"
+            ) from None
+    if arr.ndim != 2 or arr.shape[1] != 6 or arr.shape[0] == 0:
+        raise InvalidInputError(
+            f"states must be an (N, 6) array of (x, v) rows [m, m/s] or a list of State, "
+            f"got shape {arr.shape}"
+        )
+    if arr.shape[0] > limits.MAX_SAMPLES:
+        raise limits.invalid("states", f"<{arr.shape[0]} rows>", f"at most {limits.MAX_SAMPLES} rows")
+    x, v = np.ascontiguousarray(arr[:, :3]), np.ascontiguousarray(arr[:, 3:])
+    # non-finite rows are skipped with a warning (below); the usual case, every row finite and within
+    # the (symmetric) limits, is told by one reduction per half, without copying the good rows
+    if within_limits(x, "position") and within_limits(v, "velocity"):
+        return x, v
+    every = bool(np.isfinite(arr).all())
+    rows = slice(None) if every else np.isfinite(arr).all(axis=1)
+    limits.array("states x", x[rows], "position")
+    limits.array("states v", v[rows], "velocity")
+    return x, v
+
+
+def within_limits(a: FloatArray, limit: str) -> bool:
+    """Every entry of ``a`` finite and within the limit (symmetric, ±max): the largest |entry|, one
+    reduction (NaN makes it false)."""
+    spec = limits.LIMITS[limit]
+    return spec["min"] == -spec["max"] and bool(np.abs(a).max() <= spec["max"])
+
+
+def per_trajectory(name: str, value: Any, default: float, n: int, limit: Any) -> FloatArray:
+    a = np.atleast_1d(limits.array(name, default if value is None else value, limit)).ravel()
+    if a.size not in (1, n):
+        raise InvalidInputError(f"{name} must be one value or one per trajectory ({n}), got {a.size}")
+    return np.ascontiguousarray(a)
+
+
+def states_from_angles(
+    pendulum: Pendulum, theta: Any, phi: Any = 0.0, theta_dot: Any = 0.0, phi_dot: Any = 0.0
+) -> FloatArray:
+    """(N, 6) array of (x, v) from arrays of θ [rad] (from the downward vertical), φ [rad], θ̇, φ̇
+    [rad/s], broadcast together (the same formulas as ``Pendulum.state_from_angles``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> p = pl.Pendulum()
+    >>> pl.states_from_angles(p, theta=[0.1, 0.2], phi_dot=1.0).shape
+    (2, 6)
+    """
+    th, ph, thd, phd = np.broadcast_arrays(
+        *(np.asarray(a, dtype=np.float64) for a in (theta, phi, theta_dot, phi_dot))
+    )
+    rows = [
+        pendulum.state_from_angles(float(a), float(b), float(c), float(d)).as_array()
+        for a, b, c, d in zip(th.ravel(), ph.ravel(), thd.ravel(), phd.ravel(), strict=True)
+    ]
+    return np.array(rows).reshape(-1, 6)
