@@ -1,5 +1,5 @@
-"""Shared fixtures: the repository paths and the rosette start (l = 1 m, g = 9.81 m/s², θ₀ = 60°,
-φ̇₀ = 2 rad/s)."""
+"""Shared fixtures: the repository paths, the rosette start (l = 1 m, g = 9.81 m/s², θ₀ = 60°,
+φ̇₀ = 2 rad/s) and its exact solution."""
 
 from __future__ import annotations
 
@@ -30,3 +30,9 @@ def pendulum() -> pl.Pendulum:
 @pytest.fixture
 def rosette(pendulum: pl.Pendulum) -> pl.State:
     return pendulum.state_from_angles(theta=np.radians(60), phi=0.0, theta_dot=0.0, phi_dot=2.0)
+
+
+@pytest.fixture
+def sol(pendulum: pl.Pendulum, rosette: pl.State) -> pl.ExactSolution:
+    """The exact solution of the rosette start (the movie tests, test_animate*.py)."""
+    return pl.exact(pendulum, rosette)
