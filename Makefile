@@ -240,7 +240,7 @@ FUZZ_CASES ?= 10000
 FUZZ_FILES ?= 2500
 fuzz: build
 	PROPTEST_CASES=$(FUZZ_CASES) cargo test --release -p pendulab-core --test fuzz_props -- --nocapture
-	FUZZ_EXAMPLES=$(FUZZ_CASES) $(VENV)/bin/pytest python/tests/test_fuzz_api.py -q -s
+	FUZZ_EXAMPLES=$(FUZZ_CASES) $(VENV)/bin/pytest python/tests/test_fuzz_api.py python/tests/test_fuzz_api_derived.py -q -s
 	$(PY) tools/fuzz_scenarios.py --files $(FUZZ_FILES) --seed 13
 	PROPTEST_CASES=$(FUZZ_CASES) cargo test --release -p pendulab-core --test exact_degenerate
 	PENDULAB_LONG=1 $(VENV)/bin/pytest python/tests/test_exact_degenerate.py -q
