@@ -1,7 +1,7 @@
 """A refusal of a data file or a fit setting that names itself by a message key (issue 28): the lab's
 page words it in its own language (``pendulab/server/messages.json`` has the key's English words with
-``{placeholders}``; web/src/i18n/{en,de,fr}.ts ``server.<key>``), while the message stays the English
-sentence the command line prints. Values are the numbers and names the words need, as strings or
+``{placeholders}``; ``server.<key>`` of web/src/i18n/<lang>/refusals.ts), while the message stays the
+English sentence the command line prints. Values are the numbers and names the words need, as strings or
 numbers (SI units as the message states them: times in s, lengths in m)."""
 
 from __future__ import annotations

@@ -14,8 +14,8 @@ and the warnings of :func:`pendulab.fit`; beside them this module builds
 The warnings carry no codes of their own (they are plain sentences of :mod:`pendulab.fitting`), so a
 warning is recognised by the pattern of its English words (:data:`NOTES`); every sentence the fit can
 say is matched in python/tests/test_server_fit_words.py, so a changed wording fails a test instead of
-falling back to English unnoticed. The page's words for each key are ``fitw.<key>`` of
-web/src/i18n/{en,de,fr}.ts (checked by web/tests/unit/fitwords.test.ts against ``fit_words.json``).
+falling back to English unnoticed. The page's words for each key are in web/src/i18n/fitwords.ts,
+one table per language (checked by web/tests/unit/fitwords.test.ts against ``fit_words.json``).
 """
 
 from __future__ import annotations

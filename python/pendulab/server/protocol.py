@@ -5,7 +5,7 @@
 power, a1, a2, a3, pivot1, pivot2, pivot3, taut, error_x]`` in s, m, m/s, J, kg m²/s, N, W, m/s², m, 1,
 m (152 bytes each; ``error_x``: the global position error, −1 while unknown, docs/web.md "Error
 estimate"). The layout is read from ``frame.json`` beside this file, which the page's
-``web/src/protocol.ts`` imports too, so the two cannot disagree.
+``web/src/protocol/frames.ts`` imports too, so the two cannot disagree.
 
 **Commands** (page → server): one JSON object per text message, told apart by ``"type"``
 (a pydantic discriminated union, :data:`COMMAND`): ``set_params``, ``set_model``, ``set_state``,

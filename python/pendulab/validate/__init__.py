@@ -1,13 +1,15 @@
 """The one validation layer: the table of limits and the checks every public entry point calls.
 
-The table comes from the core's registry (``crates/pendulab-core/src/model/registry.rs``): the
-shared model parameters length l [m], mass m [kg], gravity g [m/s²] and each model's own parameters
-(:func:`pendulab.models`), and the bounds of everything else a run is made of (:func:`limits`):
-positions [m], velocities [m/s], angles [rad], angle rates [rad/s], times [s], step sizes [s], the
-planned number of steps (t_end − t₀)/dt, saved samples, bytes of saved samples, and the size [B]
-and nesting of scenario and sweep files. The bounds are chosen so that every derived quantity
-(energy m(½|v|² + g z) [J], tension m(|v|² + x·f)/l [N], J₃ [kg m²/s]) is finite and every amount
-of work and memory is bounded before it starts; ``docs/limits.md`` gives the reason for each.
+The table comes from the core's table of limits (``crates/pendulab-core/src/limits.rs``): the
+shared model parameters length l [m], mass m [kg], gravity g [m/s²] and the bounds of everything else
+a run is made of (:func:`limits`): positions [m], velocities [m/s], angles [rad], angle rates
+[rad/s], times [s], step sizes [s], the planned number of steps (t_end − t₀)/dt, saved samples, bytes
+of saved samples, and the size [B] and nesting of scenario and sweep files. Each model's own
+parameters (:func:`pendulab.models`) come from the model registry
+(``crates/pendulab-core/src/model/registry.rs``, which re-exports the shared table). The bounds are
+chosen so that every derived quantity (energy m(½|v|² + g z) [J], tension m(|v|² + x·f)/l [N], J₃
+[kg m²/s]) is finite and every amount of work and memory is bounded before it starts;
+``docs/limits.md`` gives the reason for each.
 
 Every check raises :class:`pendulab.InvalidInputError` (a ``ValueError``) as
 ``invalid <name> = <value>: <allowed>`` with the value abbreviated to at most 80 characters.
