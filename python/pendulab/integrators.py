@@ -7,7 +7,7 @@ from __future__ import annotations
 import functools
 from typing import TYPE_CHECKING, Any
 
-from ._core import InvalidInputError
+from ._core import InvalidInputError, fused_is_fast
 from ._core import methods as _methods
 from .model import Pendulum
 from .validate import choice, finite, flag, number
@@ -18,8 +18,9 @@ if TYPE_CHECKING:
 _U64 = 2**63 - 1
 """The largest count the core's unsigned 64-bit step counters take from Python (signed range)."""
 
-_ARITHMETICS = ("unfused", "fused")
-"""The RATTLE family's arithmetic of a·b + c: two roundings (default) or one (``f64::mul_add``)."""
+_ARITHMETICS = ("auto", "unfused", "fused")
+"""The RATTLE family's arithmetic of a·b + c: two roundings (``"unfused"``), one (``"fused"``,
+``f64::mul_add``), or ``"auto"`` (the default): fused where the CPU does it in one instruction."""
 _FUSED_METHODS = ("rattle", "rattle4", "rattle6", "rattle8")
 """The methods that have ``arithmetic="fused"``."""
 
@@ -103,9 +104,15 @@ def method_names() -> list[str]:
     return [m["name"] for m in _methods()]
 
 
-def check_arithmetic(arithmetic: Any, method: str) -> str:
-    """``arithmetic`` checked: ``"unfused"`` (every method) or ``"fused"`` (the RATTLE family)."""
+def check_arithmetic(arithmetic: Any, method: str, model: str | None = None) -> str:
+    """``arithmetic`` checked and resolved: ``"unfused"`` (every method), ``"fused"`` (the RATTLE family)
+    or ``"auto"``, which is ``"fused"`` for the RATTLE family (but the ``"string"`` model, whose stepper
+    is unfused) where the CPU does a fused multiply-add in one instruction (x86-64-v3/v4, aarch64:
+    ``_core.fused_is_fast()``) and ``"unfused"`` otherwise (docs/performance.md, "No CPU left behind")."""
     arithmetic = choice("arithmetic", arithmetic, _ARITHMETICS)
+    if arithmetic == "auto":
+        fused = method in _FUSED_METHODS and model != "string" and fused_is_fast()
+        return "fused" if fused else "unfused"
     if arithmetic == "fused" and method not in _FUSED_METHODS:
         raise InvalidInputError(
             f"arithmetic='fused' applies to the RATTLE family ({', '.join(_FUSED_METHODS)}), "

@@ -70,7 +70,7 @@ def simulate(
     error_estimate: bool = False,
     accuracy: float | None = None,
     drift: str = "raise",
-    arithmetic: str = "unfused",
+    arithmetic: str = "auto",
 ) -> Trajectory:
     """Integrates from ``state`` at time ``t0`` [s] to ``t_end`` [s].
 
@@ -110,12 +110,14 @@ def simulate(
         constraint error |(|x| − l)/l| passes :data:`DRIFT_TOLERANCE` (1e-2): ``"raise"`` (default) an
         :class:`pendulab.IntegrationError` saying what to do, ``"warn"`` a ``RuntimeWarning`` and the
         trajectory as computed.
-    arithmetic : the RATTLE family's multiply-adds a·b + c: ``"unfused"`` (default; two roundings,
-        the same bits on every CPU and in the page's WebAssembly engine) or ``"fused"``
-        (``f64::mul_add``, one rounding: the same bits on every CPU too, but other bits than
-        ``"unfused"``; faster on CPUs with FMA, 3–25× slower on CPUs without and in WebAssembly;
-        docs/performance.md). ``simulate_ensemble(..., arithmetic="fused")`` gives each trajectory
-        these numbers bit for bit.
+    arithmetic : the RATTLE family's multiply-adds a·b + c: ``"auto"`` (default) is ``"fused"`` where
+        the CPU does a fused multiply-add in one instruction (x86-64 with AVX2+FMA or AVX-512, every
+        aarch64) and ``"unfused"`` elsewhere; ``"unfused"`` (two roundings) and
+        ``"fused"`` (``f64::mul_add``, one rounding; 3–25× slower on CPUs without FMA) each give the
+        same bits on every CPU, the unfused ones also those of the lab page's WebAssembly engine. Give
+        one of them by name for results that are bit-identical across machines; a fused run says so in
+        ``metadata["arithmetic"]`` (docs/performance.md, "No CPU left behind").
+        ``simulate_ensemble`` gives each trajectory these numbers bit for bit.
 
     Every argument is checked against :mod:`pendulab.validate` before any work starts (docs/limits.md).
 
@@ -230,7 +232,7 @@ def check_run(
     progress: Any,
     max_saved_bytes: Any,
     drift: str,
-    arithmetic: Any = "unfused",
+    arithmetic: Any = "auto",
 ) -> RunSettings:
     """Every argument of :func:`simulate` checked against :mod:`pendulab.validate` before any work
     starts (docs/limits.md), as one :class:`RunSettings`."""
@@ -259,7 +261,7 @@ def check_run(
         raise InvalidInputError(
             "conserve=True would hold E and J₃ fixed, but the user force does work (dE/dt = F·v)"
         )
-    arithmetic = check_arithmetic(arithmetic, method)
+    arithmetic = check_arithmetic(arithmetic, method, pendulum.model)
     if arithmetic == "fused" and pendulum.model == "string":
         raise InvalidInputError(
             "arithmetic='fused' is not available for the 'string' model (its stepper is unfused)"

@@ -9,7 +9,7 @@ from ._core import InvalidInputError, RunOptions
 from ._core import Stepper as _Stepper
 from .display import Row, html_table
 from .display import number as shown
-from .integrators import _U64, _check_conserve, _method_table, check_settings
+from .integrators import _U64, _check_conserve, _method_table, check_arithmetic, check_settings
 from .model import Pendulum, State, check_pendulum_state
 from .validate import LIMITS, integer, invalid, number, planned_steps
 
@@ -44,6 +44,7 @@ class Stepper:
         project: bool = True,
         t0: float = 0.0,
         conserve: bool = False,
+        arithmetic: str = "auto",
     ) -> None:
         check_pendulum_state(pendulum, state)
         method, dt_checked, rtol, atol, project, conserve, t0 = check_settings(
@@ -53,6 +54,7 @@ class Stepper:
             raise invalid("dt", dt, LIMITS["dt"]["allowed"])
         dt = dt_checked
         _check_conserve(pendulum, conserve)
+        arithmetic = check_arithmetic(arithmetic, method, pendulum.model)
         if pendulum.force is not None:
             raise InvalidInputError(
                 "the incremental Stepper does not take a user force callable; use pendulab.simulate"
@@ -69,6 +71,7 @@ class Stepper:
             atol=float(atol),
             project=bool(project),
             conserve=bool(conserve),
+            arithmetic=arithmetic,
         )
         self._core = _Stepper(pendulum.spec, state.pair, run)
 

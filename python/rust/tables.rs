@@ -70,7 +70,15 @@ fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
 }
 
 /// Registers the tables and checks.
+/// Whether a fused multiply-add is one instruction at the level the core's hot loops run at on this
+/// CPU (x86-64-v3/v4, aarch64): what `arithmetic="auto"` resolves by (`isa::fused_is_fast`).
+#[pyfunction]
+fn fused_is_fast() -> bool {
+    pendulab_core::isa::fused_is_fast()
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(fused_is_fast, m)?)?;
     m.add_function(wrap_pyfunction!(methods, m)?)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;
     m.add_function(wrap_pyfunction!(check_params, m)?)

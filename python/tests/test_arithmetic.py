@@ -1,9 +1,9 @@
-"""The opt-in fused arithmetic of the RATTLE family (``arithmetic="fused"``; issue 29, docs/performance.md
+"""The fused arithmetic of the RATTLE family (``arithmetic="fused"``, and ``"auto"``, the default, which
+is fused where the CPU has FMA; issue 29, docs/performance.md
 "How fast, and why"): ``simulate_ensemble`` gives every trajectory the numbers of ``simulate`` with the
-same arithmetic bit for bit, the fused numbers are other bits than the default's (so the option does
-something), the default is unchanged by the option's existence (the ensemble still equals the
-single-trajectory RATTLE, and the golden files are untouched: test_golden.py), and bad values are
-refused before any work with a message naming them. SI units: m, m/s, s."""
+same arithmetic bit for bit, the fused numbers are other bits than the unfused ones (so the option does
+something), "auto" is exactly the named arithmetic the CPU calls for, and bad values are refused before
+any work with a message naming them. SI units: m, m/s, s."""
 
 from __future__ import annotations
 
@@ -70,3 +70,54 @@ def test_bad_arithmetic_is_refused_before_any_work(setup: tuple[pl.Pendulum, np.
             pl.simulate(p, s0, 1.0, method=method, arithmetic="fused")
     with pytest.raises(pl.InvalidInputError, match="arithmetic"):
         pl.simulate(p, s0, 1.0, arithmetic=None)  # type: ignore[arg-type]
+
+
+@pytest.mark.parametrize("fast", [True, False])
+def test_auto_is_fused_where_the_cpu_has_fma_and_unfused_elsewhere(
+    setup: tuple[pl.Pendulum, np.ndarray], fast: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The default ``arithmetic="auto"`` of simulate, Stepper and simulate_ensemble resolves by
+    ``_core.fused_is_fast()`` (FMA in one instruction at the level the hot loops run at): the numbers
+    are then exactly those of the named arithmetic, for the RATTLE family only (DOP853 and the
+    string's stepper stay unfused); the run records a fused arithmetic in its metadata."""
+    import pendulab.integrators as integrators
+
+    monkeypatch.setattr(integrators, "fused_is_fast", lambda: fast)
+    p, starts = setup
+    want = "fused" if fast else "unfused"
+    s0 = p.state(starts[5, :3], starts[5, 3:])
+    auto = pl.simulate(p, s0, 0.5, dt=1e-3, save_every=100)
+    named = pl.simulate(p, s0, 0.5, dt=1e-3, save_every=100, arithmetic=want)
+    other = pl.simulate(p, s0, 0.5, dt=1e-3, save_every=100, arithmetic="unfused" if fast else "fused")
+    assert np.array_equal(auto.x, named.x) and np.array_equal(auto.v, named.v)
+    assert not np.array_equal(auto.x, other.x)
+    assert auto.options.get("arithmetic", "unfused") == want
+    st = pl.Stepper(p, s0, method="rattle4", dt=1e-3)
+    st.step(300)
+    ref = pl.simulate(p, s0, 0.3, method="rattle4", dt=1e-3, arithmetic=want)
+    assert np.array_equal(st.state.x, ref.x[-1]) and np.array_equal(st.state.v, ref.v[-1])
+    ens = pl.simulate_ensemble(p, starts[:9], 0.5, dt=1e-3, progress=False)
+    ens_named = pl.simulate_ensemble(p, starts[:9], 0.5, dt=1e-3, progress=False, arithmetic=want)
+    assert np.array_equal(ens.x, ens_named.x) and np.array_equal(ens.v, ens_named.v)
+    assert ens.metadata.get("arithmetic", "unfused") == want
+    # DOP853 has no fused form, nor the string's stepper: auto is unfused there whatever the CPU
+    assert integrators.check_arithmetic("auto", "dop853") == "unfused"
+    assert integrators.check_arithmetic("auto", "rattle", "string") == "unfused"
+    assert integrators.check_arithmetic("auto", "rattle8") == want
+
+
+def test_this_cpu_resolves_auto_by_its_instruction_set() -> None:
+    """``fused_is_fast`` is the core's: true at the x86-64-v3/v4 levels (and on aarch64), false at the
+    x86-64 baseline; the hot loops' level is reported by the core's benchmarks (bench/roofline)."""
+    import platform
+
+    from pendulab import _core
+
+    flags = ""
+    if platform.machine() == "x86_64":
+        with open("/proc/cpuinfo", encoding="utf-8") as f:
+            flags = next((line for line in f if line.startswith("flags")), "")
+        expected = all(f" {x}" in flags for x in ("avx2", "fma", "bmi2", "movbe"))
+        assert _core.fused_is_fast() is expected
+    elif platform.machine() in ("aarch64", "arm64"):
+        assert _core.fused_is_fast() is True

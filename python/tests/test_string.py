@@ -32,7 +32,8 @@ def launch(p: pl.Pendulum, v0_squared: float) -> pl.State:
 def test_never_slack_equals_the_rod(pendulum: pl.Pendulum, rosette: pl.State) -> None:
     string = pl.Pendulum(model="string")
     for method in ("rattle", "rattle4"):
-        a = pl.simulate(pendulum, rosette, 2.0, method=method, dt=1e-3)
+        # the string's stepper is unfused: the rod with the same arithmetic
+        a = pl.simulate(pendulum, rosette, 2.0, method=method, dt=1e-3, arithmetic="unfused")
         b = pl.simulate(string, rosette, 2.0, method=method, dt=1e-3)
         assert b.taut is not None and b.taut.all() and len(b.events["t"]) == 0
         np.testing.assert_array_equal(a.t, b.t)

@@ -118,6 +118,14 @@ pub fn selected() -> &'static str {
     "baseline"
 }
 
+/// Whether a fused multiply-add is one instruction where [`fastest`] runs: at x86-64-v3 and v4 (FMA)
+/// and on every aarch64 CPU; not at the x86-64 baseline (SSE2: `f64::mul_add` is an exact software
+/// routine there, 3–25× slower) nor in WebAssembly. The Python API's `arithmetic="auto"` (its
+/// default) runs the RATTLE family fused where this is true and unfused elsewhere.
+pub fn fused_is_fast() -> bool {
+    cfg!(target_arch = "aarch64") || selected() != "baseline"
+}
+
 /// Restricts (`true`) or frees (`false`) [`fastest`] to the baseline level, process-wide, for the
 /// calls that start after it.
 pub fn set_baseline_only(on: bool) {

@@ -96,7 +96,7 @@ def simulate_ensemble(
     rtol: float = 1e-10,
     atol: float = 1e-12,
     conserve: bool = False,
-    arithmetic: str = "unfused",
+    arithmetic: str = "auto",
 ) -> EnsembleResult:
     """Integrates N starts (an (N, 6) array of (x, v) or a list of ``State``) to ``t_end`` [s] with
     RATTLE at step ``dt`` [s]. ``length`` [m], ``g`` [m/s²] and ``damping`` c [1/s] default to the
@@ -105,11 +105,12 @@ def simulate_ensemble(
     pl.Save.summary()`` (see :class:`~pendulab.save.Save`); or the older keywords ``save_every`` (keep
     every n-th step; default the final state only) and ``summary`` (default True).
     ``settle_angle`` [rad] in (0, π): also return each trajectory's settle time. The number of steps
-    is round(t_end/dt); t_end must be a multiple of dt to 1e-9. ``arithmetic``: ``"unfused"``
-    (default: the same bits on every CPU and in WebAssembly) or ``"fused"`` (multiply-adds with one
-    rounding: 1.3–1.6× the trajectory-steps per CPU second on CPUs with FMA, much slower on CPUs
-    without; other bits), as ``simulate(..., arithmetic=...)``, whose numbers every trajectory gets
-    bit for bit either way (docs/performance.md, "How fast, and why").
+    is round(t_end/dt); t_end must be a multiple of dt to 1e-9. ``arithmetic``: ``"auto"`` (default:
+    ``"fused"`` where the CPU does a fused multiply-add in one instruction, else ``"unfused"``),
+    ``"unfused"`` (the same bits on every CPU and in WebAssembly) or ``"fused"`` (one rounding: about
+    1.4× the trajectory-steps per CPU second of unfused on CPUs with FMA, much slower without; the same
+    bits on every CPU too, other bits than unfused), as ``simulate(..., arithmetic=...)``, whose numbers
+    every trajectory gets bit for bit (docs/performance.md, "How fast, and why").
 
     ``method="dop853"``: any rod model of the registry (drag, forcing, friction, a moving pivot, …),
     each trajectory adaptive with tolerances ``rtol``, ``atol`` [m, m/s] (and ``conserve``, as in

@@ -14,7 +14,8 @@ and the ``status`` notice. This module converts what crosses the border: a scena
 
 Pacing (docs/web.md, "Pacing"): while running, the simulated time advances by (wall-clock seconds
 elapsed) × ``time_scale``; fixed-step methods take whole steps of exactly ``dt``, so a live run is the
-same sequence of steps as ``pl.simulate`` with that ``dt``; ``dop853`` lands on the target times. A
+same sequence of steps as ``pl.simulate`` with that ``dt`` and ``arithmetic="unfused"`` (the lab's
+arithmetic, in the server as in the page's engine); ``dop853`` lands on the target times. A
 tick sends up to :data:`MAX_SUBSAMPLES` records; out of budget the simulation runs slower than asked
 and ``status.lagging`` says so. Times in seconds, SI units throughout.
 """
