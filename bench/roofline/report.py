@@ -156,13 +156,15 @@ def tables(res: dict[str, Any], pts: list[dict[str, Any]], note: str) -> list[st
     share = ens["gflops"] * 1e9 / peak1
     lines.append(f"| ensemble kernel, share of the one-core FMA peak | | {share:.0%} | ≥ 30 % |")
     for steps, r in res["api_vs_c"].items():
+        default = r.get("default_arithmetic", "unfused")
         lines.append(
-            f"| API / C RK4 at {int(steps):,} steps | {r['ratio_wall']:.2f} | {r['ratio_cpu']:.2f} | ≥ 2 |"
+            f"| API / C RK4 at {int(steps):,} steps (default arithmetic, here {default}) "
+            f"| {r['ratio_wall']:.2f} | {r['ratio_cpu']:.2f} | ≥ 2 |"
         )
-        if "ratio_fused_wall" in r:
+        if "ratio_unfused_wall" in r:
             lines.append(
-                f'| API / C RK4 at {int(steps):,} steps, `arithmetic="fused"` | {r["ratio_fused_wall"]:.2f} '
-                f"| {r['ratio_fused_cpu']:.2f} | ≥ 2 |"
+                f'| API / C RK4 at {int(steps):,} steps, `arithmetic="unfused"` '
+                f"| {r['ratio_unfused_wall']:.2f} | {r['ratio_unfused_cpu']:.2f} | |"
             )
     return lines
 
