@@ -30,38 +30,148 @@
 //! everywhere, a few calls per exact state. The C library's `sin`, `atan2`, … are called at every
 //! level alike. So a trajectory or an exact state gets the same bits at every level, the ensemble and
 //! the single-trajectory path agree bit for bit whichever level each ran at, `tests/isa.rs` checks
-//! all of them against [`set_baseline_only`], and `tests/rattle_unfused.rs` checks RATTLE and the
-//! ensemble against a step written out with explicit unfused arithmetic.
+//! all of them against [`set_baseline_only`] (and, on an AVX-512 CPU, at x86-64-v3 through
+//! [`set_max_level`]), and `tests/rattle_unfused.rs` checks RATTLE and the ensemble against a step
+//! written out with explicit unfused arithmetic.
+//!
+//! The clones are `#[target_feature]` copies of the work, one per level, chosen by a feature test
+//! cached on first use — what the `multiversion` crate generates, written out here so that
+//! [`set_max_level`] can choose a lower level than the CPU's best at run time (to measure, on this
+//! AVX-512 machine, what an AVX2-only CPU runs), and so that code inside the work can ask which level
+//! it runs at ([`current`]: the ensemble picks its tile width by it).
 //!
 //! On other architectures (aarch64: FMA is part of the baseline) the targets above do not apply and
 //! [`fastest`] runs its work as compiled; nothing here is x86-specific outside
 //! `cfg(target_arch = "x86_64")` (`make check-aarch64` type-checks the crate for aarch64).
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicU8, Ordering};
 
-/// When set, [`fastest`] runs the baseline code (for tests comparing the levels, and for users who
-/// want to rule the wider instructions out).
-static BASELINE_ONLY: AtomicBool = AtomicBool::new(false);
+/// An instruction-set level of the hot loops (module doc), ordered from the narrowest to the widest.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub enum Level {
+    /// What the build targets (SSE2 on x86-64; every level on other architectures).
+    Baseline = 0,
+    /// `x86-64-v3`: AVX2, FMA, BMI1/2, F16C, LZCNT, MOVBE.
+    V3 = 1,
+    /// `x86-64-v4`: AVX-512 F/BW/CD/DQ/VL on top of v3.
+    V4 = 2,
+}
 
-/// Runs `work` compiled for the best instruction-set level of this CPU (module doc).
+impl Level {
+    /// The level's name as [`selected`] gives it: `"baseline"`, `"x86-64-v3"` or `"x86-64-v4"`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Level::Baseline => "baseline",
+            Level::V3 => "x86-64-v3",
+            Level::V4 => "x86-64-v4",
+        }
+    }
+
+    fn from_u8(k: u8) -> Self {
+        match k {
+            0 => Level::Baseline,
+            1 => Level::V3,
+            _ => Level::V4,
+        }
+    }
+}
+
+/// The highest level [`fastest`] may use (set by [`set_max_level`] / [`set_baseline_only`], for
+/// tests comparing the levels, benchmarks of the narrower levels on a wider CPU, and users who want
+/// to rule the wider instructions out).
+static MAX_LEVEL: AtomicU8 = AtomicU8::new(Level::V4 as u8);
+
+/// The best level of this CPU, detected once (`u8::MAX`: not yet).
+static DETECTED: AtomicU8 = AtomicU8::new(u8::MAX);
+
+/// The best level of this CPU (the features of each level's clone below, as the `multiversion`
+/// crate would test them), detected on the first call and cached.
+#[inline(always)]
+pub fn detected() -> Level {
+    let k = DETECTED.load(Ordering::Relaxed);
+    if k != u8::MAX {
+        return Level::from_u8(k);
+    }
+    let level = detect();
+    DETECTED.store(level as u8, Ordering::Relaxed);
+    level
+}
+
+#[cold]
+fn detect() -> Level {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::is_x86_feature_detected as has;
+        let v3 = has!("avx2")
+            && has!("avx")
+            && has!("fma")
+            && has!("bmi1")
+            && has!("bmi2")
+            && has!("f16c")
+            && has!("lzcnt")
+            && has!("movbe")
+            && has!("popcnt")
+            && has!("sse4.2");
+        let v4 =
+            has!("avx512f") && has!("avx512bw") && has!("avx512cd") && has!("avx512dq") && has!("avx512vl");
+        if v3 && v4 {
+            return Level::V4;
+        }
+        if v3 {
+            return Level::V3;
+        }
+    }
+    Level::Baseline
+}
+
+/// The level [`fastest`] runs at now: the CPU's best, capped by [`set_max_level`].
+#[inline(always)]
+pub fn current() -> Level {
+    detected().min(Level::from_u8(MAX_LEVEL.load(Ordering::Relaxed)))
+}
+
+/// Runs `work` compiled for the best instruction-set level of this CPU (module doc), at most the
+/// level set by [`set_max_level`].
 ///
 /// `work` must be an `#[inline(always)]` closure, and what it calls on the hot path
 /// `#[inline(always)]` too: only code inlined into the chosen clone is compiled for its level
 /// (a function the compiler keeps out of line runs at the baseline, correct but slower).
+/// The clones are what the `multiversion` crate generates (a `#[target_feature]` copy per level,
+/// chosen by a cached feature test), written out so that a lower level can be chosen at run time.
 #[inline(always)]
 pub fn fastest<R>(work: impl FnOnce() -> R) -> R {
-    if BASELINE_ONLY.load(Ordering::Relaxed) {
-        work()
-    } else {
-        on_best_level(work)
+    #[cfg(target_arch = "x86_64")]
+    {
+        match current() {
+            // SAFETY: `current` is at most `detected`: the CPU has every feature of the clone.
+            Level::V4 => return unsafe { on_v4(work) },
+            // SAFETY: as above.
+            Level::V3 => return unsafe { on_v3(work) },
+            Level::Baseline => {}
+        }
     }
+    work()
 }
 
-#[multiversion::multiversion(targets(
-    "x86_64+avx512f+avx512bw+avx512cd+avx512dq+avx512vl+avx2+avx+fma+bmi1+bmi2+f16c+lzcnt+movbe+popcnt+sse4.2",
-    "x86_64+avx2+avx+fma+bmi1+bmi2+f16c+lzcnt+movbe+popcnt+sse4.2",
-))]
-fn on_best_level<R, F: FnOnce() -> R>(work: F) -> R {
+/// `work` compiled for x86-64-v4 (as `multiversion`'s clone for the same target string).
+///
+/// # Safety
+/// The CPU must have every enabled feature.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(
+    enable = "avx512f,avx512bw,avx512cd,avx512dq,avx512vl,avx2,avx,fma,bmi1,bmi2,f16c,lzcnt,movbe,popcnt,sse4.2"
+)]
+unsafe fn on_v4<R, F: FnOnce() -> R>(work: F) -> R {
+    work()
+}
+
+/// `work` compiled for x86-64-v3.
+///
+/// # Safety
+/// The CPU must have every enabled feature.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2,avx,fma,bmi1,bmi2,f16c,lzcnt,movbe,popcnt,sse4.2")]
+unsafe fn on_v3<R, F: FnOnce() -> R>(work: F) -> R {
     work()
 }
 
@@ -87,35 +197,9 @@ pub fn round(x: f64) -> f64 {
     up.copysign(x)
 }
 
-/// The level [`fastest`] runs at on this CPU: `"x86-64-v4"`, `"x86-64-v3"` or `"baseline"`.
+/// The level [`fastest`] runs at now: `"x86-64-v4"`, `"x86-64-v3"` or `"baseline"`.
 pub fn selected() -> &'static str {
-    if BASELINE_ONLY.load(Ordering::Relaxed) {
-        return "baseline";
-    }
-    #[cfg(target_arch = "x86_64")]
-    {
-        use std::arch::is_x86_feature_detected as has;
-        let v3 = has!("avx2")
-            && has!("avx")
-            && has!("fma")
-            && has!("bmi1")
-            && has!("bmi2")
-            && has!("f16c")
-            && has!("lzcnt")
-            && has!("movbe")
-            && has!("popcnt")
-            && has!("sse4.2");
-        // the features of the AVX-512 clone of `on_best_level` (multiversion 0.8 adds none of its own)
-        let v4 =
-            has!("avx512f") && has!("avx512bw") && has!("avx512cd") && has!("avx512dq") && has!("avx512vl");
-        if v3 && v4 {
-            return "x86-64-v4";
-        }
-        if v3 {
-            return "x86-64-v3";
-        }
-    }
-    "baseline"
+    current().name()
 }
 
 /// Whether a fused multiply-add is one instruction where [`fastest`] runs: at x86-64-v3 and v4 (FMA)
@@ -126,10 +210,17 @@ pub fn fused_is_fast() -> bool {
     cfg!(target_arch = "aarch64") || selected() != "baseline"
 }
 
-/// Restricts (`true`) or frees (`false`) [`fastest`] to the baseline level, process-wide, for the
-/// calls that start after it.
+/// Caps [`fastest`] at `level` (or the CPU's best, when lower), process-wide, for the calls that
+/// start after it: `set_max_level(Level::V3)` runs the AVX2 loops on an AVX-512 CPU (to measure what
+/// an AVX2-only CPU runs), `Level::V4` lifts the cap.
+pub fn set_max_level(level: Level) {
+    MAX_LEVEL.store(level as u8, Ordering::Relaxed);
+}
+
+/// Restricts (`true`) [`fastest`] to the baseline level, or lifts every cap (`false`), process-wide,
+/// for the calls that start after it (`set_max_level(Level::Baseline)` / `(Level::V4)`).
 pub fn set_baseline_only(on: bool) {
-    BASELINE_ONLY.store(on, Ordering::Relaxed);
+    set_max_level(if on { Level::Baseline } else { Level::V4 });
 }
 
 #[cfg(test)]

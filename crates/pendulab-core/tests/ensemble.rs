@@ -2,8 +2,9 @@
 //! (same operations, so bit-for-bit), per-trajectory l and g, saving rules, summaries, cancellation
 //! and bad input. SI units; ideal pendulum.
 
-use pendulab_core::ensemble::{run, EnsembleSave, RattleSettings, LANES, TILE};
-use pendulab_core::integrate::rattle_kernel::{PositionQuadratic, Unfused};
+use pendulab_core::ensemble::{run, tile_lanes, EnsembleSave, RattleSettings, LANES, TILE};
+use pendulab_core::integrate::rattle_kernel::{Arithmetic, PositionQuadratic, Unfused};
+use pendulab_core::isa::Level;
 use pendulab_core::model::energy;
 use pendulab_core::DVec3;
 use pendulab_core::{IdealPendulum, Method, Model, SolveOptions, State, Stepper};
@@ -72,9 +73,16 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
         PositionQuadratic::new::<Unfused>(st.x, w, dt, 1.0).multiplier_series::<Unfused>(dt).1
     };
     assert!(in_series(&s[0]) && !in_series(&s[LANES - 1]), "the first block must mix both cases");
-    // and some tile of lanes stepped together in registers too (ensemble/block.rs)
-    let mixed = s.chunks(TILE).any(|t| t.iter().any(in_series) && !t.iter().all(in_series));
-    assert!(mixed, "no tile of {TILE} lanes mixes the series and the closed form");
+    // and some tile of lanes stepped together in registers too, at every level's tile size
+    // (ensemble/block.rs; this run's is tile_lanes(isa::current(), Unfused))
+    let levels = [Level::Baseline, Level::V3, Level::V4];
+    let tiles =
+        levels.iter().flat_map(|&l| [Arithmetic::Unfused, Arithmetic::Fused].map(|a| tile_lanes(l, a)));
+    for tile in tiles {
+        assert!(LANES % tile == 0 && tile <= TILE);
+        let mixed = s.chunks(tile).any(|t| t.iter().any(in_series) && !t.iter().all(in_series));
+        assert!(mixed, "no tile of {tile} lanes mixes the series and the closed form");
+    }
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
     let res = run(&s, &RattleSettings::new(&[1.0], &[9.81], dt, 50), &p, &c).unwrap();
     let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };

@@ -1,15 +1,17 @@
 //! The instruction-set levels of `pendulab_core::isa` give the same numbers bit for bit: every
 //! method through the stepper (loop and single steps, DOP853's dense output), the ensemble kernels
-//! (RATTLE with damping and a summary; DOP853 vectorised across trajectories), the string stepper,
+//! (RATTLE with damping and a summary, both arithmetics; DOP853 vectorised across trajectories), the string stepper,
 //! and the exact solution of every kind (single states and batches, the parallel path included),
-//! once at the best level of this CPU and once restricted to the baseline (the plain fallback an
-//! older CPU runs). One test in its own binary, because the restriction is process-wide. SI units;
+//! once at the best level of this CPU, once restricted to the baseline (the plain fallback an
+//! older CPU runs) and, on a CPU with AVX-512, once capped at x86-64-v3 (`isa::set_max_level`: what
+//! an AVX2-only CPU runs; the ensemble's tiles differ per level and arithmetic). One test in its own binary, because the restriction is process-wide. SI units;
 //! rosette-like starts.
 
 use pendulab_core::ensemble::adaptive::{run_adaptive, AdaptiveSettings};
 use pendulab_core::ensemble::{run, EnsembleSave, RattleSettings, LANES};
 use pendulab_core::exact::ExactSolution;
-use pendulab_core::isa;
+use pendulab_core::integrate::rattle_kernel::Arithmetic;
+use pendulab_core::isa::{self, Level};
 use pendulab_core::model::{AnyModel, StringPendulum};
 use pendulab_core::string_run::StringStepper;
 use pendulab_core::{DVec3, IdealPendulum, Method, Params, SolveOptions, State, Stepper};
@@ -58,12 +60,15 @@ fn everything() -> Vec<u64> {
         ..RattleSettings::new(&[1.3], &[9.81], 1e-3, 1500)
     };
     let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let res = run(&starts, &set, &p, &c).unwrap();
-    res.states.iter().for_each(|s| push(&mut out, s));
-    for s in res.summary.unwrap() {
-        out.extend([s.z.0, s.z.1, s.energy_per_mass.0, s.energy_per_mass.1].map(f64::to_bits));
+    // both arithmetics: their tiles differ per level (ensemble::tile_lanes)
+    for arithmetic in [Arithmetic::Unfused, Arithmetic::Fused] {
+        let res = run(&starts, &RattleSettings { arithmetic, ..set }, &p, &c).unwrap();
+        res.states.iter().for_each(|s| push(&mut out, s));
+        for s in res.summary.unwrap() {
+            out.extend([s.z.0, s.z.1, s.energy_per_mass.0, s.energy_per_mass.1].map(f64::to_bits));
+        }
+        out.extend(res.settle_time.unwrap().into_iter().map(f64::to_bits));
     }
-    out.extend(res.settle_time.unwrap().into_iter().map(f64::to_bits));
     // the DOP853 ensemble, vectorised across trajectories (ensemble/adaptive_lanes.rs)
     let damped = AnyModel::build("damped", params, &[("damping", 0.2), ("drag", 0.1)]).unwrap();
     let options = SolveOptions { method: Method::Dop853, dt: 0.0, rtol: 1e-9, atol: 1e-11, project: true };
@@ -111,15 +116,26 @@ fn exact_states(out: &mut Vec<u64>) {
 
 #[test]
 fn every_instruction_set_level_gives_the_same_bits() {
-    let best_level = isa::selected();
+    let best_level = isa::detected();
+    assert_eq!(isa::selected(), best_level.name());
     let best = everything();
     isa::set_baseline_only(true);
-    assert_eq!(isa::selected(), "baseline");
+    assert_eq!((isa::current(), isa::selected()), (Level::Baseline, "baseline"));
     let baseline = everything();
+    // x86-64-v3 on a CPU with AVX-512 too (set_max_level): the AVX2 loops an AVX2-only CPU runs
+    let mut capped = vec![];
+    if best_level > Level::V3 {
+        isa::set_max_level(Level::V3);
+        assert_eq!((isa::current(), isa::selected()), (Level::V3, "x86-64-v3"));
+        capped.push((Level::V3, everything()));
+    }
     isa::set_baseline_only(false);
-    assert_eq!(isa::selected(), best_level);
-    assert_eq!(best.len(), baseline.len());
-    let differ = best.iter().zip(&baseline).filter(|(a, b)| a != b).count();
-    assert_eq!(differ, 0, "{differ} of {} numbers differ between {best_level} and the baseline", best.len());
-    eprintln!("{best_level} and baseline agree on {} numbers", best.len());
+    assert_eq!(isa::current(), best_level);
+    for (level, bits) in [(best_level, &best)].into_iter().chain(capped.iter().map(|(l, b)| (*l, b))) {
+        assert_eq!(bits.len(), baseline.len());
+        let differ = bits.iter().zip(&baseline).filter(|(a, b)| a != b).count();
+        let name = level.name();
+        assert_eq!(differ, 0, "{differ} of {} numbers differ between {name} and the baseline", bits.len());
+        eprintln!("{name} and baseline agree on {} numbers", bits.len());
+    }
 }

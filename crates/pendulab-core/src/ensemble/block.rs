@@ -7,31 +7,57 @@
 //! with Kahan-compensated updates and, when a lane is damped (c [1/s], T-7.1), the exact damping
 //! flow v ↦ e^{−c h/2} v on either side of the step.
 //!
-//! The block is stored as 64 lanes, but stepped as [`TILE`] lanes at a time: a tile's state (x, v,
+//! The block is stored as 64 lanes, but stepped as [`tile_lanes`] lanes at a time: a tile's state (x, v,
 //! their compensations, l², 1/l², g) is loaded once, advanced by a whole chunk of steps in vector
 //! registers, and stored once (register blocking: no loads or stores per step, and w, the position
 //! quadratic and μ are computed once per step and kept, not recomputed in a second pass over memory).
 //! The multiplier μ comes from the Catalan series for every lane of the tile; in the rare step where
 //! one lane is outside the series' range (large h|v|), the whole tile's step is recomputed with
 //! `PositionQuadratic::multiplier` (the series where it applies, else the closed form), which gives
-//! the other lanes the same bits again. A tile of 16 lanes is two AVX-512 (four AVX2) registers per
-//! quantity: two independent dependency chains, so that the step's latency (the division 1/b and the
-//! multiply-add chains) overlaps the other chain's work. SI units: \[m\], [m/s], [1/s], [m/s²].
+//! the other lanes the same bits again. The tile's width is chosen per instruction-set level (and
+//! arithmetic), because what fits in the registers differs (docs/performance.md, "No CPU left behind",
+//! *The tile per level*; 4096 starts × 2000 steps, one thread, CPU time, ns per trajectory-step):
+//!
+//! | level (registers) | unfused: tile 4 / 8 / 16 | fused: tile 4 / 8 / 16 | tile chosen |
+//! |---|---|---|---|
+//! | x86-64-v4 (32 zmm, 8 lanes) | 6.8 / 3.65 / **3.0** | 5.9 / 2.9 / **2.1–2.3** | 16 |
+//! | x86-64-v3 (16 ymm, 4 lanes) | **5.9** / 6.6–6.8 / 7.3–7.4 | 4.9 / **3.45** / 6.1 | 4 unfused, 8 fused |
+//! | baseline SSE2 (16 xmm, 2 lanes) | **7.5** / 13.3 / 13.5 | 80 / 81 / 81 (software fma) | 4 |
+//!
+//! 16 lanes are two AVX-512 registers per quantity: two independent dependency chains, so that the
+//! step's latency (the division 1/b and the multiply-add chains) overlaps the other chain's work;
+//! at AVX2 and SSE2 the same 16 lanes (four and eight registers per quantity) spill to the stack.
+//! Lanes are independent, so the width changes no bit (`tests/isa.rs` runs every level's tiles).
+//! SI units: \[m\], [m/s], [1/s], [m/s²].
 
 use crate::integrate::rattle_kernel::{
-    advance_position, advance_velocity, fmadd3, Fused, MulAdd, PositionQuadratic, ProjectionPolynomial,
+    advance_position, advance_velocity, fmadd3, Arithmetic, Fused, MulAdd, PositionQuadratic,
+    ProjectionPolynomial,
 };
 use crate::integrate::rattle_vertical::VerticalField;
+use crate::isa::{self, Level};
 use crate::state::State;
 use glam::DVec3;
 
 use super::LANES;
 
-/// Lanes stepped together in registers (module doc).
+/// The widest tile: lanes stepped together in registers at x86-64-v4 (module doc; [`LANES`] is a
+/// multiple of it).
 pub const TILE: usize = 16;
 
+/// Lanes stepped together in registers at instruction-set level `level` with `arithmetic` (module
+/// doc: 16 at x86-64-v4, 8 (fused) or 4 (unfused) at x86-64-v3, 4 at the baseline), each a divisor of
+/// [`LANES`]. Only the speed depends on it, never a bit of the results.
+pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
+    match (level, arithmetic) {
+        (Level::V4, _) => 16,
+        (Level::V3, Arithmetic::Fused) => 8,
+        _ => 4,
+    }
+}
+
 pub(super) type Lanes = [f64; LANES];
-type Row = [f64; TILE];
+type Row<const T: usize> = [f64; T];
 
 /// One block: positions, velocities, Kahan compensations and parameters of LANES trajectories.
 #[derive(Clone)]
@@ -75,8 +101,21 @@ impl Block {
     /// (`rattle_kernel::Unfused` or `Fused`, as the single-trajectory path it is compared with).
     #[inline(always)]
     pub fn steps<A: MulAdd>(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
-        for o in (0..LANES).step_by(TILE) {
-            let mut tile = Tile::load(self, o);
+        // the tile for the level this runs at (module doc); the arms of the other levels are
+        // compiled into each level's clone too, but never taken there
+        let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
+        match tile_lanes(isa::current(), arithmetic) {
+            16 => self.steps_tiled::<A, 16>(chunk, h, first, track),
+            8 => self.steps_tiled::<A, 8>(chunk, h, first, track),
+            _ => self.steps_tiled::<A, 4>(chunk, h, first, track),
+        }
+    }
+
+    /// [`Block::steps`] with tiles of `T` lanes.
+    #[inline(always)]
+    fn steps_tiled<A: MulAdd, const T: usize>(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
+        for o in (0..LANES).step_by(T) {
+            let mut tile = Tile::<T>::load(self, o);
             for j in 1..=chunk {
                 tile.step::<A>(h, self.damped);
                 if track.summary {
@@ -101,7 +140,12 @@ impl Block {
     /// Folds the current states into the summary (extremes, plane crossings).
     pub fn update_summary(&mut self) {
         for o in (0..LANES).step_by(TILE) {
-            Tile::load(self, o).update_summary(&mut self.summary, &mut self.crossings, &mut self.above, o);
+            Tile::<TILE>::load(self, o).update_summary(
+                &mut self.summary,
+                &mut self.crossings,
+                &mut self.above,
+                o,
+            );
         }
     }
 
@@ -115,24 +159,24 @@ impl Block {
 }
 
 /// TILE lanes of a block, held in local arrays (registers) while they are stepped.
-struct Tile {
-    x: [Row; 3],
-    v: [Row; 3],
-    cx: [Row; 3],
-    cv: [Row; 3],
-    l2: Row,
-    inv_l2: Row,
-    g: Row,
-    decay_half: Row,
+struct Tile<const T: usize> {
+    x: [Row<T>; 3],
+    v: [Row<T>; 3],
+    cx: [Row<T>; 3],
+    cv: [Row<T>; 3],
+    l2: Row<T>,
+    inv_l2: Row<T>,
+    g: Row<T>,
+    decay_half: Row<T>,
 }
 
 /// `a[o..o + TILE]` as a row.
 #[inline(always)]
-fn row(a: &Lanes, o: usize) -> Row {
+fn row<const T: usize>(a: &Lanes, o: usize) -> Row<T> {
     std::array::from_fn(|i| a[o + i])
 }
 
-impl Tile {
+impl<const T: usize> Tile<T> {
     #[inline(always)]
     fn load(b: &Block, o: usize) -> Self {
         let rows = |a: &[Lanes; 3]| [row(&a[0], o), row(&a[1], o), row(&a[2], o)];
@@ -151,10 +195,10 @@ impl Tile {
     #[inline(always)]
     fn store(&self, b: &mut Block, o: usize) {
         for c in 0..3 {
-            b.x[c][o..o + TILE].copy_from_slice(&self.x[c]);
-            b.v[c][o..o + TILE].copy_from_slice(&self.v[c]);
-            b.cx[c][o..o + TILE].copy_from_slice(&self.cx[c]);
-            b.cv[c][o..o + TILE].copy_from_slice(&self.cv[c]);
+            b.x[c][o..o + T].copy_from_slice(&self.x[c]);
+            b.v[c][o..o + T].copy_from_slice(&self.v[c]);
+            b.cx[c][o..o + T].copy_from_slice(&self.cx[c]);
+            b.cv[c][o..o + T].copy_from_slice(&self.cv[c]);
         }
     }
 
@@ -179,7 +223,7 @@ impl Tile {
     #[inline(always)]
     fn decay(&mut self) {
         for c in 0..3 {
-            for i in 0..TILE {
+            for i in 0..T {
                 self.v[c][i] *= self.decay_half[i];
             }
         }
@@ -196,9 +240,9 @@ impl Tile {
             return self.rattle_vertical(h, closed);
         }
         let half = 0.5 * h;
-        let mut next = [[[0.0; TILE]; 3]; 4];
+        let mut next = [[[0.0; T]; 3]; 4];
         let mut ok = true;
-        for i in 0..TILE {
+        for i in 0..T {
             let x0 = DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]);
             let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
             // (0, 0, −g)·(h/2) with the zeros written as such: 0·(h/2) = +0 exactly for the dt > 0
@@ -237,9 +281,9 @@ impl Tile {
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
     fn rattle_vertical(&mut self, h: f64, closed: bool) -> bool {
         let half = 0.5 * h;
-        let mut next = [[[0.0; TILE]; 3]; 4];
+        let mut next = [[[0.0; T]; 3]; 4];
         let mut ok = true;
-        for i in 0..TILE {
+        for i in 0..T {
             let x0 = DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]);
             let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
             let kick = -self.g[i] * half;
@@ -268,10 +312,10 @@ impl Tile {
         ok
     }
 
-    /// Folds the tile's states into the block's summary at lanes o…o + TILE.
+    /// Folds the tile's states into the block's summary at lanes o…o + T.
     #[inline(always)]
     fn update_summary(&self, s: &mut [Lanes; 6], crossings: &mut Lanes, above: &mut Lanes, o: usize) {
-        for i in 0..TILE {
+        for i in 0..T {
             let (x, y, z) = (self.x[0][i], self.x[1][i], self.x[2][i]);
             let (vx, vy, vz) = (self.v[0][i], self.v[1][i], self.v[2][i]);
             let e = 0.5 * (vx * vx + vy * vy + vz * vz) + self.g[i] * z;
@@ -289,10 +333,10 @@ impl Tile {
         }
     }
 
-    /// Records sample `k` for the lanes o…o + TILE whose sway exceeds the threshold.
+    /// Records sample `k` for the lanes o…o + T whose sway exceeds the threshold.
     #[inline(always)]
     fn track_settle(&self, down: &Lanes, cos_settle: f64, last_out: &mut Lanes, o: usize, k: f64) {
-        for i in 0..TILE {
+        for i in 0..T {
             let out = self.x[2][i] * down[o + i] < cos_settle;
             last_out[o + i] = if out { k } else { last_out[o + i] };
         }

@@ -12,9 +12,9 @@
 //! trajectory, the time after which the sway angle from the stable equilibrium −sign(g) e₃ stays at
 //! or below a threshold (cos sway = −sign(g) z/l; resolution one step).
 //!
-//! Layout (`block.rs`): blocks of [`LANES`] trajectories in structure-of-arrays form, stepped [`TILE`]
-//! lanes at a time with the tile's state in vector registers for a whole chunk of steps, branch-free
-//! over the lanes, compiled for the widest vectors the CPU has ([`crate::isa`]). Each rayon worker
+//! Layout (`block.rs`): blocks of [`LANES`] trajectories in structure-of-arrays form, stepped
+//! [`tile_lanes`] lanes at a time (4 to [`TILE`], chosen per instruction-set level) with the tile's
+//! state in vector registers for a whole chunk of steps, branch-free over the lanes, compiled for the widest vectors the CPU has ([`crate::isa`]). Each rayon worker
 //! (feature `parallel`) builds its blocks from the starts and writes their samples straight into the
 //! one result array (`output.rs`: times, summaries, settle times). Per-trajectory length l \[m\]
 //! and gravity g [m/s²]. Memory is bounded by what is saved (final state, every n-th step, or a
@@ -38,7 +38,7 @@ mod adaptive_settings;
 mod block;
 mod output;
 mod plan;
-pub use block::TILE;
+pub use block::{tile_lanes, TILE};
 use output::{sample_count, sample_times, settle_times, summaries};
 use plan::{BlockRun, Plan};
 
