@@ -1,7 +1,8 @@
 """The peers benchmark's report (bench/peers/run.py): the work-precision plot (wall time [s] against
 the final position error |x − x_ref|/l, one panel per case; docs/img/peers_work_precision.png) and
 the Markdown of the "Against peers" section of docs/performance.md (targets, step rates [steps/s],
-ensembles [trajectory-steps/s], the best setting per error level).
+ensembles [trajectory-steps/s], ``pl.simulate_ensemble`` against the C RK4 ensemble [s], the best
+setting per error level).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from typing import Any
 import harness as hz
 from peers_cases import FLOOR, T_END, TOL_HI, TOL_LO, Case
 from peers_methods import C_FLAGS
-from peers_targets import best_of
+from peers_targets import STEPS_SHOWN, best_of
 
 
 def plot(runs: list[hz.Run], cases: list[Case], path: Path) -> None:
@@ -51,6 +52,33 @@ def plot(runs: list[hz.Run], cases: list[Case], path: Path) -> None:
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+def api_vs_c_table(avc: dict[str, Any]) -> list[str]:
+    """Issue 29's ratio: the C RK4 ensemble's wall time over ``pl.simulate_ensemble``'s, per step count."""
+    head = "#### `pl.simulate_ensemble` against the C RK4 ensemble (issue 29)"
+    if not avc.get("steps"):
+        return [head, "", f"Not measured: {avc.get('skipped', 'not run')}.", ""]
+    rows = [
+        [
+            STEPS_SHOWN.get(k, k), r["repeats"], hz.fmt_time(r["api_wall"]), hz.fmt_time(r["c_wall"]),
+            f"{r['ratio']:.3g}", f"{r['ratio_cpu']:.3g}",
+        ]
+        for k, r in avc["steps"].items()
+    ]  # fmt: skip
+    cols = ["steps", "best of", "`pl.simulate_ensemble`", "C RK4 ensemble", "C / API (wall; goal ≥ 2)"]
+    return [
+        head,
+        "",
+        hz.markdown_table([*cols, "C / API (CPU)"], rows),
+        "",
+        f"{avc['n']} starts, dt = {avc['dt'] * 1e3:g} ms, {avc['threads']} threads (RAYON_NUM_THREADS = "
+        "OMP_NUM_THREADS), final states only, in one child process: `pl.simulate_ensemble` as a user "
+        f"calls it (its defaults: arithmetic {avc['arithmetic']}, from the result's metadata) and the C "
+        "RK4 ensemble, one warm-up call each, then interleaved (API, C, API, C, …); least wall time [s] "
+        f"per side. Load average {avc['load_start']:.1f} at the start, {avc['load_end']:.1f} at the end.",
+        "",
+    ]
 
 
 def markdown(
@@ -94,7 +122,7 @@ def markdown(
         f"drops below {FLOOR:.0e}, or one run exceeds {meta['cap']:g} s; a tolerance is reached by the "
         "cheapest setting that reaches it.",
         "",
-        "### Targets of issue 5",
+        "### Targets of issues 5 and 29",
         "",
     ]
     rows = []
@@ -169,9 +197,12 @@ def markdown(
         "",
         "Trajectory-steps/s. Pendulab's thread count is set with RAYON_NUM_THREADS in a child process. "
         "`pl.simulate_ensemble` polls the background run every 50 ms, so on runs this short its wall time "
-        "includes up to 50 ms of waiting; the kernel column times the same run without the poll.",
+        "includes up to 50 ms of waiting; the kernel column times the same run without the poll, with "
+        f'the arithmetic `pl.simulate_ensemble` uses by default on this CPU (`arithmetic="auto"` → '
+        f"{ens.get('arithmetic', '—')}).",
         "",
     ]
+    lines += api_vs_c_table(ens.get("api_vs_c", {}))
 
     for case in cases:
         lines += [f"### {case.name}: cheapest settings reaching 1e-6 and 1e-10 at t = 100 s", ""]

@@ -31,7 +31,9 @@ solution.
 Run: ``make bench-peers`` (installs the peers into bench/peers/.venv, builds Pendulab there, runs
 this script, writes bench/peers/results/, docs/img/peers_work_precision.png and the "Against peers"
 section of docs/performance.md). ``--quick`` is a short smoke run that writes
-results/peers_quick.json only.
+results/peers_quick.json only. ``--ensembles-only`` runs the ensembles alone (the throughput table and
+issue 29's ratio C RK4 / ``pl.simulate_ensemble`` at 10³ and 10⁴ steps) and writes
+results/peers_ensembles.json (quick: peers_ensembles_quick.json) only.
 
 The parts, one concept each: peers_cases.py (cases, reference, what a method is), peers_methods.py
 (Pendulab, SciPy, numba, C), peers_engines.py (MuJoCo, JAX + Diffrax), peers_measure.py (scans,
@@ -48,6 +50,7 @@ import json
 import math
 import os
 import platform
+import shutil
 import subprocess
 import sys
 import time
@@ -58,7 +61,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import harness as hz
 from peers_cases import CASES, DOCS, PLOT, RESULTS, Method, load_cases
 from peers_engines import diffrax_methods, mujoco_methods
-from peers_ensembles import ensemble_worker, ensembles, rotation_map
+from peers_ensembles import api_vs_c_worker, ensemble_worker, ensembles, rotation_map
 from peers_measure import exact_run, scan, step_rates
 from peers_methods import c_methods, numba_methods, pendulab_methods, scipy_methods
 from peers_report import markdown, plot
@@ -112,6 +115,25 @@ def all_methods(
     return methods, skipped
 
 
+def ensembles_only(quick: bool, out: Path | None) -> None:
+    """``--ensembles-only``: the ensembles section alone, its results JSON with the load average (1 min)
+    at the start and the end; no report."""
+    load_start = os.getloadavg()[0]
+    c_ok = shutil.which("gcc") is not None
+    print("ensembles" + ("" if c_ok else " (gcc not found: no C RK4 ensemble)"), flush=True)
+    ens = ensembles(quick, c_ok)
+    meta = {
+        "date": dt_mod.datetime.now(dt_mod.UTC).strftime("%Y-%m-%d %H:%M UTC"),
+        "quick": quick,
+        "load_start": load_start,
+        "load_end": os.getloadavg()[0],
+    }
+    RESULTS.mkdir(exist_ok=True)
+    out = out or RESULTS / ("peers_ensembles_quick.json" if quick else "peers_ensembles.json")
+    out.write_text(json.dumps({"meta": meta, "ensembles": ens}, indent=1, default=str) + "\n")
+    print(f"wrote {out} (load average {load_start:.1f} at the start, {meta['load_end']:.1f} at the end)")
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--quick", action="store_true", help="short smoke run (rosette only, coarse scans)")
@@ -124,10 +146,21 @@ def main() -> None:
     ap.add_argument(
         "--no-report", action="store_true", help="write the results JSON only (no CSV, plot or docs)"
     )
+    ap.add_argument(
+        "--ensembles-only", action="store_true",
+        help="only the ensembles (with issue 29's ratio); writes results/peers_ensembles[_quick].json",
+    )  # fmt: skip
     ap.add_argument("--ensemble-worker", nargs=5, type=int, help=argparse.SUPPRESS)
+    ap.add_argument("--api-vs-c-worker", type=int, help=argparse.SUPPRESS)
     args = ap.parse_args()
     if args.ensemble_worker:
         print(json.dumps(ensemble_worker(*args.ensemble_worker)))
+        return
+    if args.api_vs_c_worker is not None:
+        print(json.dumps(api_vs_c_worker(args.api_vs_c_worker)))
+        return
+    if args.ensembles_only:
+        ensembles_only(args.quick, args.out)
         return
 
     t_start = time.perf_counter()

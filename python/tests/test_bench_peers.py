@@ -1,7 +1,8 @@
-"""The pure-Python parts of the peer benchmark bench/peers/ (issue 5, parts 3–4): error against the
-reference, the cheapest setting that reaches a tolerance, when a scan stops, the targets as PASS/MISS
-ratios and the Markdown written between markers. Needs none of the peers (SciPy's solve_ivp, numba,
-MuJoCo, JAX, Diffrax): bench/peers/ imports them only inside functions."""
+"""The pure-Python parts of the peer benchmark bench/peers/ (issue 5, parts 3–4; issue 29, item 2):
+error against the reference, the cheapest setting that reaches a tolerance, when a scan stops, the
+targets as PASS/MISS ratios (with ``pl.simulate_ensemble`` against the C RK4 ensemble at 10³ and 10⁴
+steps, from fake results) and the Markdown written between markers. Needs none of the peers (SciPy's
+solve_ivp, numba, MuJoCo, JAX, Diffrax): bench/peers/ imports them only inside functions."""
 
 from __future__ import annotations
 
@@ -32,6 +33,7 @@ hz = _load("harness")
 run = _load("run")  # the entry point; loading it imports its parts below
 pcases = _load("peers_cases")
 pengines = _load("peers_engines")
+pens = _load("peers_ensembles")
 ptargets = _load("peers_targets")
 preport = _load("peers_report")
 
@@ -161,8 +163,10 @@ def test_targets_and_report_from_synthetic_runs() -> None:
     ens = {
         "n": 8,
         "steps": 10,
+        "arithmetic": "fused",
         "pendulab": {1: {"rate": 1e8}, 2: {"rate": 1.9e8}},
         "C rk4": {2: {"rate": 2e8}},
+        "api_vs_c": _api_vs_c(2.5, 1.5),
     }
     rmap = {"points": 10**6, "wall": 1.5, "repeats": 3}
     tg = {t["target"]: t for t in ptargets.targets(runs, rates, ens, rmap, cases)}
@@ -171,6 +175,9 @@ def test_targets_and_report_from_synthetic_runs() -> None:
     assert tg["RATTLE steps/s ≥ 50 × MuJoCo (RK4)"]["verdict"] == "MISS"  # 30×
     assert tg["ensemble ≥ 0.8 × C RK4 ensemble (2 threads)"]["verdict"] == "PASS"
     assert tg["ensemble speed-up 1 → 2 threads ≥ 1.8"]["value"] == pytest.approx(1.9)
+    avc = tg[ptargets.API_VS_C_TARGET]
+    assert avc["value"] == pytest.approx(1.5) and avc["verdict"] == "MISS"  # the smaller ratio counts
+    assert "10³ steps: C / API wall 2.5" in avc["detail"] and "arithmetic fused" in avc["detail"]
     c_time = tg["time to ≤1e-10 (rosette) ≤ 0.2 × C rk4"]
     assert c_time["value"] == pytest.approx(0.1) and c_time["verdict"] == "PASS"
     mj = tg["time to ≤1e-10 (rosette) ≤ 0.01 × mujoco rk4"]
@@ -194,9 +201,52 @@ def test_targets_and_report_from_synthetic_runs() -> None:
     assert "**MISS**" in body and "**PASS**" in body
     assert "mujoco: skipped, mujoco is not installed" in body
     assert "while other work was running on it" in body  # load average 3: the report says so
+    assert "#### `pl.simulate_ensemble` against the C RK4 ensemble (issue 29)" in body
+    assert "| 10⁴ | 3 | 200 ms | 300 ms | 1.5 | 1.8 |" in body
+    assert "Load average 3.2 at the start, 3.9 at the end" in body
+    assert "arithmetic fused, from the result's metadata" in body
+    assert '`arithmetic="auto"` → fused' in body  # the kernel column's arithmetic
     quiet = preport.markdown(
         runs, cases, rates, ens, rmap, list(tg.values()), {**meta, "load_start": 1.2, "load_end": 1.0}
     )
     assert "with nothing else running on it" in quiet and "pessimistic" not in quiet
     doc = hz.replace_between_markers(f"# P\n{hz.BEGIN}\n{hz.END}\n", body)
     assert doc.count("| target | measured (ratio) | goal | verdict | detail |") == 1
+
+
+def _api_vs_c(ratio_1e3: float, ratio_1e4: float) -> dict:
+    """Fake results of ``peers_ensembles.api_vs_c``: the API at 20 ms (10³ steps) and 200 ms (10⁴)."""
+    steps = {}
+    for k, wall, ratio, reps in (("1000", 0.02, ratio_1e3, 9), ("10000", 0.2, ratio_1e4, 3)):
+        steps[k] = {
+            "repeats": reps, "api_wall": wall, "c_wall": wall * ratio, "ratio": ratio,
+            "ratio_cpu": ratio * 1.2, "api_cpu": wall, "c_cpu": wall * ratio * 1.2,
+        }  # fmt: skip
+    return {"n": 4096, "threads": 2, "dt": 1e-3, "arithmetic": "fused", "steps": steps,
+            "load_start": 3.2, "load_end": 3.9}  # fmt: skip
+
+
+def test_simulate_ensemble_against_c_target() -> None:
+    """Issue 29: PASS only when both step counts reach 2; n/a when a count or the C side is missing."""
+
+    def verdict(avc: dict) -> dict:
+        ens = {"pendulab": {}, "api_vs_c": avc}
+        rmap = {"points": 10**6, "wall": 1.5, "repeats": 3}
+        tg = ptargets.targets([], {}, ens, rmap, [_case("rosette")])
+        return next(t for t in tg if t["target"] == ptargets.API_VS_C_TARGET)
+
+    ok = verdict(_api_vs_c(2.4, 2.1))
+    assert ok["verdict"] == "PASS" and ok["value"] == pytest.approx(2.1) and ok["goal"] == 2.0
+    assert verdict(_api_vs_c(1.9, 3.0))["verdict"] == "MISS"
+    partial = _api_vs_c(2.4, 2.1)
+    del partial["steps"]["10000"]
+    assert verdict(partial)["verdict"] == "n/a"
+    skipped = verdict({"skipped": "the C family is not run"})
+    assert skipped["verdict"] == "n/a" and skipped["detail"] == "the C family is not run"
+    assert preport.api_vs_c_table({"skipped": "the C family is not run"})[2] == (
+        "Not measured: the C family is not run."
+    )
+    # best of 9 and 3 interleaved rounds (quick: 3 and 1)
+    assert [pens.api_vs_c_reps(s, False) for s in (1000, 10_000)] == [9, 3]
+    assert [pens.api_vs_c_reps(s, True) for s in (1000, 10_000)] == [3, 1]
+    assert pens.API_VS_C["n"] == 4096 and pens.API_VS_C["threads"] == 2 and pens.API_VS_C["dt"] == 1e-3
