@@ -7,10 +7,11 @@
 //! with Kahan-compensated updates and, when a lane is damped (c [1/s], T-7.1), the exact damping
 //! flow v ↦ e^{−c h/2} v on either side of the step.
 //!
-//! The block is stored as 64 lanes, but stepped as [`tile_lanes`] lanes at a time: a tile's state (x, v,
-//! their compensations, l², 1/l², g) is loaded once, advanced by a whole chunk of steps in vector
-//! registers, and stored once (register blocking: no loads or stores per step, and w, the position
-//! quadratic and μ are computed once per step and kept, not recomputed in a second pass over memory).
+//! The block is stored as 64 lanes, but stepped as [`tile_lanes`] lanes at a time: a tile's state
+//! (x, v, their compensations, l², 1/l², g) is loaded once, advanced by a whole chunk of steps in
+//! vector registers, and stored once (register blocking: no loads or stores per step, and w, the
+//! position quadratic and μ are computed once per step and kept, not recomputed in a second pass over
+//! memory).
 //! The multiplier μ comes from the Catalan series for every lane of the tile; in the rare step where
 //! one lane is outside the series' range (large h|v|), the whole tile's step is recomputed with
 //! `PositionQuadratic::multiplier` (the series where it applies, else the closed form), which gives
@@ -158,7 +159,7 @@ impl Block {
     }
 }
 
-/// TILE lanes of a block, held in local arrays (registers) while they are stepped.
+/// `T` lanes of a block, held in local arrays (registers) while they are stepped.
 struct Tile<const T: usize> {
     x: [Row<T>; 3],
     v: [Row<T>; 3],
@@ -170,7 +171,7 @@ struct Tile<const T: usize> {
     decay_half: Row<T>,
 }
 
-/// `a[o..o + TILE]` as a row.
+/// `a[o..o + T]` as a row.
 #[inline(always)]
 fn row<const T: usize>(a: &Lanes, o: usize) -> Row<T> {
     std::array::from_fn(|i| a[o + i])
