@@ -2,11 +2,14 @@
 //! g = 9.81 m/s², dt = 1e-3 s), on 1 thread and on all threads: the ratio is the parallel speed-up.
 //! Also, on all threads, the cost of linear damping c = 0.1 1/s (the exact flow e^{−c dt/2} on either
 //! side of each step) with settle tracking, against the undamped run of the same group; and one thread
-//! restricted to the baseline instruction set (`isa::set_baseline_only`: what a CPU without AVX2/FMA runs).
+//! restricted to the baseline instruction set (`isa::set_max_level`: what a CPU without AVX2/FMA runs)
+//! and capped at x86-64-v3 (`isa::set_max_level`: what an AVX2-only CPU runs; on a CPU without
+//! AVX-512 the same as `1_threads`).
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use pendulab_core::ensemble::{run, RattleSettings};
-use pendulab_core::{isa, IdealPendulum, Model, State};
+use pendulab_core::isa::{self, Level};
+use pendulab_core::{IdealPendulum, Model, State};
 use std::sync::atomic::{AtomicBool, AtomicU64};
 
 fn bench(c: &mut Criterion) {
@@ -23,14 +26,15 @@ fn bench(c: &mut Criterion) {
     let plain = RattleSettings::new(&[1.0], &[9.81], 1e-3, steps);
     let damped = RattleSettings { damping: &[0.1], settle_angle: Some(0.05), ..plain };
     let cases = [
-        ("1_threads".to_string(), 1, plain, false),
-        (format!("{all}_threads"), all, plain, false),
-        (format!("{all}_threads_damped_settle"), all, damped, false),
-        ("1_threads_baseline_level".to_string(), 1, plain, true),
+        ("1_threads".to_string(), 1, plain, Level::V4),
+        (format!("{all}_threads"), all, plain, Level::V4),
+        (format!("{all}_threads_damped_settle"), all, damped, Level::V4),
+        ("1_threads_baseline_level".to_string(), 1, plain, Level::Baseline),
+        ("1_threads_x86-64-v3_level".to_string(), 1, plain, Level::V3),
     ];
-    for (name, threads, settings, baseline) in cases {
+    for (name, threads, settings, level) in cases {
         let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
-        isa::set_baseline_only(baseline);
+        isa::set_max_level(level);
         g.bench_function(name, |b| {
             b.iter(|| {
                 pool.install(|| {
