@@ -10,8 +10,9 @@ in ``dist/`` beside it; then, from another folder, runs
 4. the package's data: examples (scenarios, sweeps, measured data), the built lab page, ``py.typed``,
    the ``_core.pyi`` stubs and the LICENSE,
 5. when ``qemu-x86_64`` is installed (Debian's ``qemu-user``) on an x86-64 machine: the import and a
-   RATTLE run and an ensemble under an emulated CPU without AVX, AVX2, FMA or AVX-512 (``--qemu-cpu``,
-   default Nehalem, x86-64-v2), whose numbers must equal the native run's bit for bit.
+   RATTLE run and an ensemble, each with the unfused and the fused arithmetic named, under an emulated CPU
+   without AVX, AVX2, FMA or AVX-512 (``--qemu-cpu``, default Nehalem, x86-64-v2), whose numbers must equal
+   the native run's bit for bit; and the default ``arithmetic="auto"`` fused only where the CPU has FMA.
 
 Nothing here reads the checkout except README.md and the wheel. Every step has a time limit.
 Usage: python3 tools/check_wheel.py [DIST_DIR] [--qemu-cpu MODEL] (``make test-wheel`` after ``make wheel``).
@@ -36,15 +37,22 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 STEP_TIMEOUT = 300.0  # s, any one command
 
-# A run whose numbers are compared between the native CPU and the emulated old one (printed as hex).
+# Runs whose numbers are compared between the native CPU and the emulated old one (printed as hex), with
+# each arithmetic named (a named arithmetic gives the same bits on every CPU); then, on its own last line,
+# what the default arithmetic ("auto") resolved to there: fused only where FMA is one instruction.
 SAME_BITS = """
 import numpy as np, pendulab as pl
 p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)
 s0 = p.state_from_angles(theta=np.radians(60), phi=0.0, theta_dot=0.0, phi_dot=2.0)
-tr = pl.simulate(p, s0, t_end=2.0, method="rattle", dt=1e-3, progress=False)
 starts = pl.states_from_angles(p, theta=np.linspace(0.1, 3.0, 70), phi_dot=1.0)
-res = pl.simulate_ensemble(p, starts, t_end=0.5, dt=1e-3, progress=False)
-print(" ".join(float(v).hex() for v in [*tr.x[-1], *tr.v[-1], *res.x[:, -1].ravel()]))
+out = []
+for ar in ("unfused", "fused"):
+    tr = pl.simulate(p, s0, t_end=2.0, method="rattle", dt=1e-3, progress=False, arithmetic=ar)
+    res = pl.simulate_ensemble(p, starts, t_end=0.5, dt=1e-3, progress=False, arithmetic=ar)
+    out += [*tr.x[-1], *tr.v[-1], *res.x[:, -1].ravel()]
+print(" ".join(float(v).hex() for v in out))
+auto = pl.simulate(p, s0, t_end=0.01, method="rattle", dt=1e-3, progress=False)
+print(pl._core.fused_is_fast(), auto.options.get("arithmetic", "unfused"))
 """
 
 
@@ -242,13 +250,21 @@ def main() -> None:
         elif qemu is None:
             say("skipped: the old-CPU run (no qemu-x86_64: apt-get install qemu-user)")
         else:
-            native = run([py, "-c", SAME_BITS], work, env)
-            emulated = run([qemu, "-cpu", args.qemu_cpu, py, "-c", SAME_BITS], work, env, timeout=600)
+            native, native_auto = run([py, "-c", SAME_BITS], work, env).strip().splitlines()
+            out = run([qemu, "-cpu", args.qemu_cpu, py, "-c", SAME_BITS], work, env, timeout=600)
+            emulated, emulated_auto = out.strip().splitlines()
+            cpu = args.qemu_cpu
             if native.split() != emulated.split():
                 n_diff = sum(a != b for a, b in zip(native.split(), emulated.split(), strict=False))
-                cpu = args.qemu_cpu
                 sys.exit(f"check_wheel: FAILED: {n_diff} numbers differ between this CPU and qemu -cpu {cpu}")
-            say(f"ok: under qemu -cpu {args.qemu_cpu} the same {len(native.split())} numbers, bit for bit")
+            for where, line in (("this CPU", native_auto), (f"qemu -cpu {cpu}", emulated_auto)):
+                fast, resolved = line.split()
+                if resolved != ("fused" if fast == "True" else "unfused"):
+                    sys.exit(f"check_wheel: FAILED: on {where} 'auto' ran {resolved} (FMA: {fast})")
+            say(
+                f"ok: under qemu -cpu {cpu} the same {len(native.split())} numbers, bit for bit, unfused and "
+                f"fused; the default ran {native_auto.split()[1]} here, {emulated_auto.split()[1]} there"
+            )
     say(json.dumps({"wheel": wheel.name, "seconds": round(time.perf_counter() - t_start, 1)}))
 
 
