@@ -148,6 +148,12 @@ def api_vs_c_worker(quick: int) -> dict[str, Any]:
         reps = api_vs_c_reps(steps, bool(quick))
         for _ in range(reps):
             for side, f in (("api", api), ("c", c_run)):
+                # each timed call right after an untimed one of the same side: OpenMP's idle threads
+                # spin-wait for milliseconds after a C run and would take the cores from an API call timed
+                # right after it (measured: its 10³-step wall time 9.4 ms instead of 4.8), and after a
+                # pause both sides start cold (threads asleep); so every call is timed warm, as the best
+                # of N is meant to find the least disturbed run of each
+                f()
                 t0, c0 = time.perf_counter(), time.process_time()
                 f()
                 w, c = time.perf_counter() - t0, time.process_time() - c0
