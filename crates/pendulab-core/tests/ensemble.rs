@@ -2,7 +2,9 @@
 //! (same operations, so bit-for-bit), per-trajectory l and g, saving rules, summaries, cancellation
 //! and bad input. SI units; ideal pendulum.
 
-use pendulab_core::ensemble::{run, tile_lanes, EnsembleSave, RattleSettings, LANES, TILE};
+use pendulab_core::ensemble::{
+    check, run, run_checked, tile_lanes, EnsembleSave, RattleSettings, LANES, TILE,
+};
 use pendulab_core::integrate::rattle_kernel::{Arithmetic, PositionQuadratic, Unfused};
 use pendulab_core::isa::Level;
 use pendulab_core::model::energy;
@@ -186,6 +188,13 @@ fn bad_input_is_named() {
     .contains("save_every"));
     assert!(e(run(&s, &RattleSettings::new(&[2.0], &[9.81], 1e-3, 10), &p, &c)).contains("TS"));
     assert!(e(run(&s, &RattleSettings::new(&[1.0], &[9.81], 50.0, 10), &p, &c)).contains("non-finite"));
+    // a token of `check` for other starts or settings is refused by its sizes, not run
+    let set = RattleSettings::new(&[1.0], &[9.81], 1e-3, 10);
+    let token = check(&s, &set).unwrap();
+    assert!(e(run_checked(&s[..2], &set, token, &p, &c)).contains("checked"));
+    let per = RattleSettings::new(&[1.0, 1.0, 1.0], &[9.81], 1e-3, 10);
+    assert!(e(run_checked(&s[..2], &per, check(&s, &per).unwrap(), &p, &c)).contains("checked"));
+    assert!(run_checked(&s, &set, token, &p, &c).is_ok());
 }
 
 #[test]
