@@ -11,6 +11,7 @@
 //! - `solver.rs`: `Solver`, `Stepper`; `force.rs`: `ForceSolver` (a Python force); `ensemble.rs`,
 //!   `ensemble_adaptive.rs`, `exact.rs`, `spring.rs`, `string.rs`, `slewing.rs`, `crane.rs`: one binding per core module;
 //!   `live.rs`: `LiveSession`, the lab's live session (the server's sessions).
+//! - `threads.rs`: the ensembles' worker threads (rayon's pool), each bound to a CPU of its own.
 
 mod background;
 mod convert;
@@ -31,9 +32,18 @@ mod spring;
 mod states;
 mod string;
 mod tables;
+mod threads;
 
 use convert::{IntegrationError, InvalidInputError};
 use pyo3::prelude::*;
+
+/// The ensembles' worker threads (rust/threads.rs): `(threads, bound)`, the pool's size and whether
+/// each worker is bound to a CPU of its own.
+#[pyfunction]
+fn thread_pool() -> (usize, bool) {
+    let info = threads::start_pool();
+    (info.threads, info.bound)
+}
 
 /// The compiled core of Pendulab (private; use the `pendulab` package).
 #[pymodule]
@@ -56,5 +66,7 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     sensitivity::register(m)?;
     live::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_function(wrap_pyfunction!(thread_pool, m)?)?;
+    threads::start_pool();
     Ok(())
 }

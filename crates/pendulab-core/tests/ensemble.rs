@@ -24,6 +24,13 @@ fn starts(n: usize, length: f64) -> Vec<State> {
 
 #[test]
 fn every_trajectory_matches_the_single_path_bit_for_bit() {
+    for arithmetic in Arithmetic::ALL {
+        per_lane_parameters_match_the_single_path(arithmetic);
+    }
+}
+
+/// Per-trajectory l and g (each tile holds them as rows, ensemble/block.rs), with `arithmetic`.
+fn per_lane_parameters_match_the_single_path(arithmetic: Arithmetic) {
     let n = 2 * LANES + 7; // a partial last block too
     let s = starts(n, 1.0);
     let lengths: Vec<f64> = (0..n).map(|k| 0.5 + k as f64 / n as f64).collect();
@@ -36,6 +43,7 @@ fn every_trajectory_matches_the_single_path_bit_for_bit() {
         &RattleSettings {
             save: EnsembleSave::Every(1000),
             with_summary: true,
+            arithmetic,
             ..RattleSettings::new(&lengths, &gs, 1e-3, 3000)
         },
         &p,
@@ -48,9 +56,10 @@ fn every_trajectory_matches_the_single_path_bit_for_bit() {
         let m = IdealPendulum::new(lengths[k], 1.0, gs[k]).unwrap();
         let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..SolveOptions::default() };
         let mut st = Stepper::new(m, 0.0, s[k], &opts).unwrap();
+        st.set_arithmetic(arithmetic).unwrap();
         for (j, &t) in res.t.iter().enumerate() {
             st.step_to(t).unwrap();
-            assert_eq!(res.trajectory(k)[j], st.state(), "trajectory {k} at t = {t}");
+            assert_eq!(res.trajectory(k)[j], st.state(), "{arithmetic:?}: trajectory {k} at t = {t}");
         }
         let sum = res.summary.as_ref().unwrap()[k];
         let e = energy(&m, &st.state());
@@ -85,13 +94,19 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
         let mixed = s.chunks(tile).any(|t| t.iter().any(in_series) && !t.iter().all(in_series));
         assert!(mixed, "no tile of {tile} lanes mixes the series and the closed form");
     }
-    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let res = run(&s, &RattleSettings::new(&[1.0], &[9.81], dt, 50), &p, &c).unwrap();
-    let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };
-    for (k, start) in s.iter().enumerate() {
-        let mut st = Stepper::new(m, 0.0, *start, &opts).unwrap();
-        st.step_n(50).unwrap();
-        assert_eq!(res.trajectory(k)[1], st.state(), "trajectory {k}");
+    // both arithmetics: every lane of a tile where one is outside the range gets the closed form's or
+    // the series' bits as its single path does (Tile::multipliers)
+    for arithmetic in Arithmetic::ALL {
+        let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+        let settings = RattleSettings { arithmetic, ..RattleSettings::new(&[1.0], &[9.81], dt, 50) };
+        let res = run(&s, &settings, &p, &c).unwrap();
+        let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };
+        for (k, start) in s.iter().enumerate() {
+            let mut st = Stepper::new(m, 0.0, *start, &opts).unwrap();
+            st.set_arithmetic(arithmetic).unwrap();
+            st.step_n(50).unwrap();
+            assert_eq!(res.trajectory(k)[1], st.state(), "{arithmetic:?}: trajectory {k}");
+        }
     }
 }
 

@@ -29,7 +29,7 @@ from ..model import FloatArray, Pendulum
 from .adaptive import simulate_adaptive
 from .result import EnsembleResult
 from .save import Save
-from .starts import as_states, per_trajectory, states_from_angles
+from .starts import as_states, per_trajectory, start_rows, states_from_angles
 
 __all__ = ["max_sway", "model_damping", "simulate_ensemble", "states_from_angles"]
 
@@ -174,9 +174,10 @@ class _Plan:
     settle: float | None
 
     def good(self, a: FloatArray) -> FloatArray:
-        """The rows of ``a`` the kernel runs (the finite starts; a broadcast value as it is)."""
+        """The rows of ``a`` the kernel runs (the finite starts; a broadcast value as it is; the core
+        reads strided arrays too, so nothing is copied when every row runs)."""
         n = self.x.shape[0]
-        return np.ascontiguousarray(a if (a.shape[0] != n or not self.invalid.size) else a[self.finite])
+        return a if (a.shape[0] != n or not self.invalid.size) else a[self.finite]
 
 
 def _plan(
@@ -192,15 +193,13 @@ def _plan(
     """The arguments of ``simulate_ensemble(method="rattle")`` checked, the work and memory bounded."""
     length, g, damping = params
     c_model = model_damping(pendulum)
-    x, v = as_states(states)
+    x, v, clean = start_rows(states)  # views: the core reads them without a copy
     n = x.shape[0]
     lengths = per_trajectory("length", length, pendulum.length, n, limits.COMMON["length"])
     gs = per_trajectory("g", g, pendulum.g, n, limits.COMMON["g"])
     cs = per_trajectory("damping", damping, c_model, n, _DAMPING)
-    if np.isfinite(x).all() and np.isfinite(v).all():  # one reduction each in the usual case
-        finite = np.ones(n, dtype=bool)
-    else:
-        finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
+    # every entry finite when clean (start_rows's one reduction); else row by row
+    finite = np.ones(n, dtype=bool) if clean else np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
     invalid = np.flatnonzero(~finite)
     if invalid.size == n:
         raise InvalidInputError(f"every start row is non-finite (NaN or inf): {n} rows")

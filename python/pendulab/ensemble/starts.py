@@ -15,6 +15,15 @@ from ..model import FloatArray, Pendulum, State
 
 
 def as_states(states: Any) -> tuple[FloatArray, FloatArray]:
+    """x [m], v [m/s] of the starts as two contiguous (N, 3) arrays (:func:`start_rows`, copied)."""
+    x, v, _ = start_rows(states)
+    return np.ascontiguousarray(x), np.ascontiguousarray(v)
+
+
+def start_rows(states: Any) -> tuple[FloatArray, FloatArray, bool]:
+    """x [m], v [m/s] of the starts as (N, 3) views of one (N, 6) float64 array (not copied), checked,
+    and whether every entry is finite and within its limit (then no row needs a second look; else the
+    caller skips the rows with NaN or inf)."""
     if isinstance(states, State):
         states = [states]
     if isinstance(states, (list, tuple)) and states and all(isinstance(s, State) for s in states):
@@ -35,23 +44,27 @@ def as_states(states: Any) -> tuple[FloatArray, FloatArray]:
         )
     if arr.shape[0] > limits.MAX_SAMPLES:
         raise limits.invalid("states", f"<{arr.shape[0]} rows>", f"at most {limits.MAX_SAMPLES} rows")
-    x, v = np.ascontiguousarray(arr[:, :3]), np.ascontiguousarray(arr[:, 3:])
-    # non-finite rows are skipped with a warning (below); the usual case, every row finite and within
-    # the (symmetric) limits, is told by one reduction per half, without copying the good rows
-    if within_limits(x, "position") and within_limits(v, "velocity"):
-        return x, v
+    x, v = arr[:, :3], arr[:, 3:]
+    # the usual case, every entry finite and within the (symmetric) limits, is told by one reduction
+    # over the whole array (both halves within the smaller limit), else by one per half
+    if within_limits(arr, "position", "velocity") or (
+        within_limits(x, "position") and within_limits(v, "velocity")
+    ):
+        return x, v, True
     every = bool(np.isfinite(arr).all())
     rows = slice(None) if every else np.isfinite(arr).all(axis=1)
     limits.array("states x", x[rows], "position")
     limits.array("states v", v[rows], "velocity")
-    return x, v
+    return x, v, False
 
 
-def within_limits(a: FloatArray, limit: str) -> bool:
-    """Every entry of ``a`` finite and within the limit (symmetric, ±max): the largest |entry|, one
-    reduction (NaN makes it false)."""
-    spec = limits.LIMITS[limit]
-    return spec["min"] == -spec["max"] and bool(np.abs(a).max() <= spec["max"])
+def within_limits(a: FloatArray, *names: str) -> bool:
+    """Every entry of ``a`` finite and within each of the limits ``names`` (symmetric, ±max): the
+    largest |entry|, one reduction (NaN makes it false)."""
+    specs = [limits.LIMITS[name] for name in names]
+    if any(spec["min"] != -spec["max"] for spec in specs):
+        return False
+    return bool(np.abs(a).max() <= min(spec["max"] for spec in specs))
 
 
 def per_trajectory(name: str, value: Any, default: float, n: int, limit: Any) -> FloatArray:

@@ -7,16 +7,9 @@
 //! with Kahan-compensated updates and, when a lane is damped (c [1/s], T-7.1), the exact damping
 //! flow v ↦ e^{−c h/2} v on either side of the step.
 //!
-//! The block is stored as 64 lanes, but stepped as [`tile_lanes`] lanes at a time: a tile's state
-//! (x, v, their compensations, l², 1/l², g) is loaded once, advanced by a whole chunk of steps in
-//! vector registers, and stored once (register blocking: no loads or stores per step, and w, the
-//! position quadratic and μ are computed once per step and kept, not recomputed in a second pass over
-//! memory).
-//! The multiplier μ comes from the Catalan series for every lane of the tile; in the rare step where
-//! one lane is outside the series' range (large h|v|), the whole tile's step is recomputed with
-//! `PositionQuadratic::multiplier` (the series where it applies, else the closed form), which gives
-//! the other lanes the same bits again. The tile's width is chosen per instruction-set level (and
-//! arithmetic), because what fits in the registers differs (docs/performance.md, "No CPU left behind",
+//! The block is stored as 64 lanes, but stepped as [`tile_lanes`] lanes at a time (`tile.rs`: the
+//! step itself, register blocking, the multiplier's two halves, parameters shared by all lanes held
+//! as one number each). The tile's width is chosen per instruction-set level (and arithmetic), because what fits in the registers differs (docs/performance.md, "No CPU left behind",
 //! *The tile per level*; 4096 starts × 2000 steps, one thread, CPU time, ns per trajectory-step):
 //!
 //! | level (registers) | unfused: tile 4 / 8 / 16 | fused: tile 4 / 8 / 16 | tile chosen |
@@ -31,16 +24,14 @@
 //! Lanes are independent, so the width changes no bit (`tests/isa.rs` runs every level's tiles).
 //! SI units: \[m\], [m/s], [1/s], [m/s²].
 
-use crate::integrate::rattle_kernel::{
-    advance_position, advance_velocity, fmadd3, Arithmetic, Fused, MulAdd, PositionQuadratic,
-    ProjectionPolynomial,
-};
-use crate::integrate::rattle_vertical::VerticalField;
+use crate::integrate::rattle_kernel::{Arithmetic, MulAdd};
 use crate::isa::{self, Level};
 use crate::state::State;
 use glam::DVec3;
 
-use super::LANES;
+use super::block_state::{Block, Track};
+use super::tile::{PerLane, Shared, Tile, TileParams};
+use super::{Lanes, LANES};
 
 /// The widest tile: lanes stepped together in registers at x86-64-v4 (module doc; [`LANES`] is a
 /// multiple of it).
@@ -57,45 +48,6 @@ pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
     }
 }
 
-pub(super) type Lanes = [f64; LANES];
-type Row<const T: usize> = [f64; T];
-
-/// One block: positions, velocities, Kahan compensations and parameters of LANES trajectories.
-#[derive(Clone)]
-pub(super) struct Block {
-    pub x: [Lanes; 3],
-    pub v: [Lanes; 3],
-    pub cx: [Lanes; 3],
-    pub cv: [Lanes; 3],
-    /// l² and 1/l² per lane (as the single path computes them).
-    pub l2: Lanes,
-    pub inv_l2: Lanes,
-    pub g: Lanes,
-    /// e^{−c dt/2} per lane (1 without damping) and whether any lane is damped.
-    pub decay_half: Lanes,
-    pub damped: bool,
-    /// −sign(g)/l per lane (cos sway = z · down) and cos of the settle threshold (all lanes).
-    pub down: Lanes,
-    pub cos_settle: f64,
-    /// Index of the last sample whose sway exceeded the threshold (−1: none).
-    pub last_out: Lanes,
-    /// Number of real lanes (the rest repeat the last trajectory and are ignored).
-    pub len: usize,
-    /// Per-lane summary: min z, max z, min E/m, max E/m, min J₃/m, max J₃/m.
-    pub summary: [Lanes; 6],
-    /// Per lane: crossings of the pivot's horizontal plane so far, and the side (1: z > 0) at the
-    /// last sample.
-    pub crossings: Lanes,
-    pub above: Lanes,
-}
-
-/// What is tracked besides the state while stepping.
-#[derive(Clone, Copy)]
-pub(super) struct Track {
-    pub summary: bool,
-    pub settle: bool,
-}
-
 impl Block {
     /// `chunk` steps of `h` [s] of every lane, the first being step number `first` + 1 of the run
     /// (for the settle tracking), tile by tile (module doc), with the multiply-adds rounded as `A`
@@ -105,18 +57,36 @@ impl Block {
         // the tile for the level this runs at (module doc); the arms of the other levels are
         // compiled into each level's clone too, but never taken there
         let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
-        match tile_lanes(isa::current(), arithmetic) {
-            16 => self.steps_tiled::<A, 16>(chunk, h, first, track),
-            8 => self.steps_tiled::<A, 8>(chunk, h, first, track),
-            _ => self.steps_tiled::<A, 4>(chunk, h, first, track),
+        let shared = self.params_shared();
+        match (tile_lanes(isa::current(), arithmetic), shared) {
+            (16, true) => self.steps_tiled::<A, 16, Shared>(chunk, h, first, track),
+            (16, false) => self.steps_tiled::<A, 16, PerLane<16>>(chunk, h, first, track),
+            (8, true) => self.steps_tiled::<A, 8, Shared>(chunk, h, first, track),
+            (8, false) => self.steps_tiled::<A, 8, PerLane<8>>(chunk, h, first, track),
+            (_, true) => self.steps_tiled::<A, 4, Shared>(chunk, h, first, track),
+            (_, false) => self.steps_tiled::<A, 4, PerLane<4>>(chunk, h, first, track),
         }
     }
 
-    /// [`Block::steps`] with tiles of `T` lanes.
+    /// Whether every lane has the same l², 1/l², g and damping factor (the usual ensemble: one
+    /// pendulum, many starts): the tiles then keep them as one number each instead of a row (module
+    /// doc, *Shared parameters*).
+    fn params_shared(&self) -> bool {
+        let same = |a: &Lanes| a.iter().all(|&y| y.to_bits() == a[0].to_bits());
+        same(&self.l2) && same(&self.inv_l2) && same(&self.g) && same(&self.decay_half)
+    }
+
+    /// [`Block::steps`] with tiles of `T` lanes and the parameters held as `P`.
     #[inline(always)]
-    fn steps_tiled<A: MulAdd, const T: usize>(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
+    fn steps_tiled<A: MulAdd, const T: usize, P: TileParams>(
+        &mut self,
+        chunk: u64,
+        h: f64,
+        first: u64,
+        track: Track,
+    ) {
         for o in (0..LANES).step_by(T) {
-            let mut tile = Tile::<T>::load(self, o);
+            let mut tile = Tile::<T, P>::load(self, o);
             for j in 1..=chunk {
                 tile.step::<A>(h, self.damped);
                 if track.summary {
@@ -141,7 +111,7 @@ impl Block {
     /// Folds the current states into the summary (extremes, plane crossings).
     pub fn update_summary(&mut self) {
         for o in (0..LANES).step_by(TILE) {
-            Tile::<TILE>::load(self, o).update_summary(
+            Tile::<TILE, PerLane<TILE>>::load(self, o).update_summary(
                 &mut self.summary,
                 &mut self.crossings,
                 &mut self.above,
@@ -155,191 +125,6 @@ impl Block {
         State {
             x: DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]),
             v: DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]),
-        }
-    }
-}
-
-/// `T` lanes of a block, held in local arrays (registers) while they are stepped.
-struct Tile<const T: usize> {
-    x: [Row<T>; 3],
-    v: [Row<T>; 3],
-    cx: [Row<T>; 3],
-    cv: [Row<T>; 3],
-    l2: Row<T>,
-    inv_l2: Row<T>,
-    g: Row<T>,
-    decay_half: Row<T>,
-}
-
-/// `a[o..o + T]` as a row.
-#[inline(always)]
-fn row<const T: usize>(a: &Lanes, o: usize) -> Row<T> {
-    std::array::from_fn(|i| a[o + i])
-}
-
-impl<const T: usize> Tile<T> {
-    #[inline(always)]
-    fn load(b: &Block, o: usize) -> Self {
-        let rows = |a: &[Lanes; 3]| [row(&a[0], o), row(&a[1], o), row(&a[2], o)];
-        Self {
-            x: rows(&b.x),
-            v: rows(&b.v),
-            cx: rows(&b.cx),
-            cv: rows(&b.cv),
-            l2: row(&b.l2, o),
-            inv_l2: row(&b.inv_l2, o),
-            g: row(&b.g, o),
-            decay_half: row(&b.decay_half, o),
-        }
-    }
-
-    #[inline(always)]
-    fn store(&self, b: &mut Block, o: usize) {
-        for c in 0..3 {
-            b.x[c][o..o + T].copy_from_slice(&self.x[c]);
-            b.v[c][o..o + T].copy_from_slice(&self.v[c]);
-            b.cx[c][o..o + T].copy_from_slice(&self.cx[c]);
-            b.cv[c][o..o + T].copy_from_slice(&self.cv[c]);
-        }
-    }
-
-    /// One step of every lane (identical arithmetic to `Rattle::advance` for f = −g e₃, with the
-    /// damping flow on either side when the block has a damped lane).
-    #[inline(always)]
-    fn step<A: MulAdd>(&mut self, h: f64, damped: bool) {
-        if damped {
-            self.decay();
-        }
-        if !self.rattle::<A>(h, false) {
-            // some lane is outside the series' range: the whole tile again, from the same state
-            self.rattle::<A>(h, true);
-        }
-        if damped {
-            self.decay();
-        }
-    }
-
-    /// The exact flow of linear damping for dt/2: v ↦ e^{−c dt/2} v (the `damped` model's
-    /// `velocity_flow` without drag or frame rotation, same arithmetic).
-    #[inline(always)]
-    fn decay(&mut self) {
-        for c in 0..3 {
-            for i in 0..T {
-                self.v[c][i] *= self.decay_half[i];
-            }
-        }
-    }
-
-    /// One undamped RATTLE step of every lane with the single-trajectory path's arithmetic
-    /// (`integrate::rattle_kernel`, uniform field k = −(h/2) g e₃). With `closed` false, μ is the
-    /// Catalan series for every lane and the step is kept only if every lane is within the series'
-    /// range (returns whether it was); with `closed` true, μ is `PositionQuadratic::multiplier`.
-    #[inline(always)]
-    #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
-    fn rattle<A: MulAdd>(&mut self, h: f64, closed: bool) -> bool {
-        if A::FUSED {
-            return self.rattle_vertical(h, closed);
-        }
-        let half = 0.5 * h;
-        let mut next = [[[0.0; T]; 3]; 4];
-        let mut ok = true;
-        for i in 0..T {
-            let x0 = DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]);
-            let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
-            // (0, 0, −g)·(h/2) with the zeros written as such: 0·(h/2) = +0 exactly for the dt > 0
-            // the run checked, so the lane gets the single path's bits without two multiplications
-            let kick = DVec3::new(0.0, 0.0, -self.g[i] * half);
-            let w = v0 + kick;
-            let quad = PositionQuadratic::new::<A>(x0, w, h, self.l2[i]);
-            let mu = if closed {
-                quad.multiplier::<A>(h)
-            } else {
-                let (mu, in_range) = quad.multiplier_series::<A>(h);
-                ok &= in_range;
-                mu
-            };
-            let p = ProjectionPolynomial::new::<A>(x0, w, kick, &quad, h, self.inv_l2[i]).at::<A>(mu);
-            let mut cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
-            let mut cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
-            let x1 = advance_position::<A>(x0, fmadd3::<A>(x0, mu, w), h, &mut cx);
-            let v1 = advance_velocity::<A>(v0, kick + kick, x0, mu, x1, p, &mut cv);
-            for c in 0..3 {
-                next[0][c][i] = x1[c];
-                next[1][c][i] = v1[c];
-                next[2][c][i] = cx[c];
-                next[3][c][i] = cv[c];
-            }
-        }
-        if ok {
-            [self.x, self.v, self.cx, self.cv] = next;
-        }
-        ok
-    }
-
-    /// [`Tile::rattle`] with the fused arithmetic, in its vertical-field form
-    /// (`integrate/rattle_vertical.rs`, as the single path takes it for a vertical field).
-    #[inline(always)]
-    #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
-    fn rattle_vertical(&mut self, h: f64, closed: bool) -> bool {
-        let half = 0.5 * h;
-        let mut next = [[[0.0; T]; 3]; 4];
-        let mut ok = true;
-        for i in 0..T {
-            let x0 = DVec3::new(self.x[0][i], self.x[1][i], self.x[2][i]);
-            let v0 = DVec3::new(self.v[0][i], self.v[1][i], self.v[2][i]);
-            let kick = -self.g[i] * half;
-            let field = VerticalField { h, kick0: kick, kick1: kick, l2: self.l2[i], inv_l2: self.inv_l2[i] };
-            let (w, quad) = field.quadratic(x0, v0);
-            let mu = if closed {
-                quad.multiplier::<Fused>(h)
-            } else {
-                let (mu, in_range) = quad.multiplier_series::<Fused>(h);
-                ok &= in_range;
-                mu
-            };
-            let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
-            let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
-            let end = field.finish((x0, v0), (w, &quad), mu, (cx, cv));
-            for c in 0..3 {
-                next[0][c][i] = end.x[c];
-                next[1][c][i] = end.v[c];
-                next[2][c][i] = end.comp_x[c];
-                next[3][c][i] = end.comp_v[c];
-            }
-        }
-        if ok {
-            [self.x, self.v, self.cx, self.cv] = next;
-        }
-        ok
-    }
-
-    /// Folds the tile's states into the block's summary at lanes o…o + T.
-    #[inline(always)]
-    fn update_summary(&self, s: &mut [Lanes; 6], crossings: &mut Lanes, above: &mut Lanes, o: usize) {
-        for i in 0..T {
-            let (x, y, z) = (self.x[0][i], self.x[1][i], self.x[2][i]);
-            let (vx, vy, vz) = (self.v[0][i], self.v[1][i], self.v[2][i]);
-            let e = 0.5 * (vx * vx + vy * vy + vz * vz) + self.g[i] * z;
-            let j = x * vy - y * vx;
-            let k = o + i;
-            s[0][k] = s[0][k].min(z);
-            s[1][k] = s[1][k].max(z);
-            s[2][k] = s[2][k].min(e);
-            s[3][k] = s[3][k].max(e);
-            s[4][k] = s[4][k].min(j);
-            s[5][k] = s[5][k].max(j);
-            let up = if z > 0.0 { 1.0 } else { 0.0 };
-            crossings[k] += (up - above[k]).abs();
-            above[k] = up;
-        }
-    }
-
-    /// Records sample `k` for the lanes o…o + T whose sway exceeds the threshold.
-    #[inline(always)]
-    fn track_settle(&self, down: &Lanes, cos_settle: f64, last_out: &mut Lanes, o: usize, k: f64) {
-        for i in 0..T {
-            let out = self.x[2][i] * down[o + i] < cos_settle;
-            last_out[o + i] = if out { k } else { last_out[o + i] };
         }
     }
 }

@@ -12,9 +12,11 @@
 //! trajectory, the time after which the sway angle from the stable equilibrium −sign(g) e₃ stays at
 //! or below a threshold (cos sway = −sign(g) z/l; resolution one step).
 //!
-//! Layout (`block.rs`): blocks of [`LANES`] trajectories in structure-of-arrays form, stepped
-//! [`tile_lanes`] lanes at a time (4 to [`TILE`], chosen per instruction-set level) with the tile's
-//! state in vector registers for a whole chunk of steps, branch-free over the lanes, compiled for the widest vectors the CPU has ([`crate::isa`]). Each rayon worker
+//! Layout: blocks of [`LANES`] trajectories in structure-of-arrays form (`block_state.rs`), stepped
+//! [`tile_lanes`] lanes at a time (4 to [`TILE`], chosen per instruction-set level; `block.rs`) with
+//! the tile's state in vector registers for a whole chunk of steps (`tile.rs`: the step, in two
+//! halves over the lanes; shared parameters held as one number each), branch-free over the lanes,
+//! compiled for the widest vectors the CPU has ([`crate::isa`]). Each rayon worker
 //! (feature `parallel`) builds its blocks from the starts and writes their samples straight into the
 //! one result array (`output.rs`: times, summaries, settle times). Per-trajectory length l \[m\]
 //! and gravity g [m/s²]. Memory is bounded by what is saved (final state, every n-th step, or a
@@ -29,6 +31,8 @@ use std::sync::atomic::{AtomicBool, AtomicU64};
 
 /// Trajectories per block (the unit of parallel work; a multiple of [`TILE`]).
 pub const LANES: usize = 64;
+/// One f64 per lane of a block.
+type Lanes = [f64; LANES];
 /// Steps between progress updates and cancel checks in each block.
 pub const CHECK_EVERY: u64 = 1024;
 
@@ -36,8 +40,10 @@ pub mod adaptive;
 pub mod adaptive_lanes;
 mod adaptive_settings;
 mod block;
+mod block_state;
 mod output;
 mod plan;
+mod tile;
 pub use block::{tile_lanes, TILE};
 use output::{sample_count, sample_times, settle_times, summaries};
 use plan::{BlockRun, Plan};

@@ -2,7 +2,7 @@
 //! n-th step (and the last), and per trajectory the summary (extremes of z \[m\], E/m [J/kg], J₃/m
 //! [m²/s], crossings of the pivot's plane) and the settle time \[s\], read off the blocks.
 
-use super::block::Block;
+use super::block_state::Block;
 use super::Summary;
 
 /// The number of samples of a full run of `n_steps` saving every `every`-th step and the last: the

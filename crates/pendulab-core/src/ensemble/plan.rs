@@ -3,7 +3,8 @@
 //! interval), each block built from the starts, and the block's step loop with its samples, progress
 //! counter and cancel checks (the steps themselves: `block.rs`). SI units: \[m\], [m/s], \[s\], [1/s].
 
-use super::block::{Block, Lanes, Track};
+use super::block_state::{Block, Track};
+use super::Lanes;
 use super::{Checked, EnsembleSave, RattleSettings, CHECK_EVERY, LANES};
 use crate::error::{Error, Result};
 use crate::integrate::rattle_kernel::{Arithmetic, Fused, Unfused};
