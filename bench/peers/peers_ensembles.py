@@ -24,6 +24,10 @@ import numpy as np
 from peers_cases import HERE
 from peers_methods import c_ensemble
 
+# The C ensemble's OpenMP threads bound one per core, as pl.simulate_ensemble binds its workers
+# (python/rust/threads.rs): both sides get a CPU per thread from the start (docs/performance.md).
+BIND = {"OMP_PROC_BIND": "close", "OMP_PLACES": "cores"}
+
 # the script whose --ensemble-worker option runs ensemble_worker in a child process
 RUN = HERE / "run.py"
 
@@ -95,7 +99,7 @@ def ensembles(quick: bool, c_ok: bool) -> dict[str, Any]:
     samples: dict[int, list[dict[str, Any]]] = {1: [], 2: []}
     for _ in range(1 if quick else 3):
         for threads in (1, 2):
-            env = dict(os.environ, RAYON_NUM_THREADS=str(threads), OMP_NUM_THREADS=str(threads))
+            env = dict(os.environ, RAYON_NUM_THREADS=str(threads), OMP_NUM_THREADS=str(threads), **BIND)
             cmd = [sys.executable, str(RUN), "--ensemble-worker", str(n), str(steps), str(reps), str(threads)]
             res = subprocess.run([*cmd, str(int(c_ok))], env=env, check=True, capture_output=True, text=True)
             samples[threads].append(json.loads(res.stdout.strip().splitlines()[-1]))
@@ -171,7 +175,7 @@ def api_vs_c(quick: bool) -> dict[str, Any]:
     """Issue 29's ratio C RK4 ensemble / ``pl.simulate_ensemble`` (wall time, best of N, interleaved) in
     one child process on 2 threads, with the load average (1 min) at its start and end."""
     threads = str(API_VS_C["threads"])
-    env = dict(os.environ, RAYON_NUM_THREADS=threads, OMP_NUM_THREADS=threads)
+    env = dict(os.environ, RAYON_NUM_THREADS=threads, OMP_NUM_THREADS=threads, **BIND)
     load_start = os.getloadavg()[0]
     cmd = [sys.executable, str(RUN), "--api-vs-c-worker", str(int(quick))]
     res = subprocess.run(cmd, env=env, check=True, capture_output=True, text=True)

@@ -36,6 +36,11 @@ from pathlib import Path
 from typing import Any
 
 os.environ.setdefault("OMP_WAIT_POLICY", "passive")  # idle OpenMP threads sleep (fair CPU times)
+# OpenMP threads (the roof probe, the C RK4 ensemble) bound one per core, as pl.simulate_ensemble binds
+# its workers: unbound, a 2-thread run after a pause often had both threads on one vCPU (the roof's
+# 2-core column then equalled the 1-core one)
+os.environ.setdefault("OMP_PROC_BIND", "close")
+os.environ.setdefault("OMP_PLACES", "cores")
 
 import numpy as np
 
@@ -208,6 +213,10 @@ if __name__ == "__main__":
         "--api-only", action="store_true", help="only the API / C RK4 ratios (printed, nothing written)"
     )
     args = ap.parse_args()
+    # pendulab's worker pool starts at import with the CPUs the process may use: before the first
+    # OpenMP region binds this (the initial) thread to one core (OMP_PROC_BIND above)
+    import pendulab  # noqa: F401
+
     if args.api_only:
         print(f"load average {os.getloadavg()}", flush=True)
         api_vs_c(args.quick)

@@ -261,15 +261,20 @@ def _run_kernel(plan: _Plan, progress: bool | None, arithmetic: str) -> tuple[di
     )
     show = progress if progress is not None else n * plan.steps > _PROGRESS_AFTER
     interrupted = False
-    with tqdm(total=1000, disable=not show, unit="‰", desc=f"{n} trajectories", leave=False) as bar:
-        try:
-            # wait returns the moment the run ends; the bar (and Ctrl-C) are served every _POLL_SECONDS
-            while not run.wait(_POLL_SECONDS):
+    # no bar object at all when none is shown (a short run's call is ~5 ms: every 10 µs counts)
+    bar = tqdm(total=1000, unit="‰", desc=f"{n} trajectories", leave=False) if show else None
+    try:
+        # wait returns the moment the run ends; the bar (and Ctrl-C) are served every _POLL_SECONDS
+        while not run.wait(_POLL_SECONDS):
+            if bar is not None:
                 bar.update(int(run.progress * 1000) - bar.n)
+    except KeyboardInterrupt:
+        run.cancel()
+        interrupted = True
+    finally:
+        if bar is not None:
             bar.update(int(run.progress * 1000) - bar.n)
-        except KeyboardInterrupt:
-            run.cancel()
-            interrupted = True
+            bar.close()
     out = run.result()
     if plan.invalid.size:  # back to the input's rows, NaN where the start was not finite
         for key, a in list(out.items()):

@@ -59,15 +59,20 @@ def start_rows(states: Any) -> tuple[FloatArray, FloatArray, bool]:
 
 
 def within_limits(a: FloatArray, *names: str) -> bool:
-    """Every entry of ``a`` finite and within each of the limits ``names`` (symmetric, ±max): the
-    largest |entry|, one reduction (NaN makes it false)."""
+    """Every entry of ``a`` finite and within each of the limits ``names`` (symmetric, ±max): its
+    least and largest entry, no temporary array (NaN makes it false)."""
     specs = [limits.LIMITS[name] for name in names]
     if any(spec["min"] != -spec["max"] for spec in specs):
         return False
-    return bool(np.abs(a).max() <= min(spec["max"] for spec in specs))
+    bound = min(spec["max"] for spec in specs)
+    return bool(-bound <= a.min() and a.max() <= bound)
 
 
 def per_trajectory(name: str, value: Any, default: float, n: int, limit: Any) -> FloatArray:
+    """``value`` as one number or N (checked against ``limit``), or, when None, the pendulum's own
+    ``default`` (checked when the pendulum was made) as one number."""
+    if value is None:
+        return np.full(1, float(default))
     a = np.atleast_1d(limits.array(name, default if value is None else value, limit)).ravel()
     if a.size not in (1, n):
         raise InvalidInputError(f"{name} must be one value or one per trajectory ({n}), got {a.size}")
