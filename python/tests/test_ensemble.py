@@ -92,6 +92,29 @@ def test_bad_input(pendulum: pl.Pendulum) -> None:
         pl.simulate_ensemble(pendulum, start, t_end=1.0, settle_angle=-0.1)
 
 
+def test_start_rows_in_any_memory_layout_and_at_the_limits(pendulum: pl.Pendulum) -> None:
+    """The start rows are read as views, not copied: a Fortran-ordered array, a strided slice and a list
+    of State give the bits of a C-ordered array. The limits are told by one min/max over both halves,
+    else per half: a position beyond the velocities' bound (1e7) but within its own (1e9) is no limit
+    error (the core then names it off the sphere), a velocity beyond 1e7 m/s is named."""
+    states = pl.states_from_angles(pendulum, theta=np.linspace(0.2, 1.2, 5), phi_dot=1.0)
+    ref = pl.simulate_ensemble(pendulum, states, t_end=0.2, progress=False)
+    wide = np.zeros((5, 12))
+    wide[:, ::2] = states
+    rows = [pl.State(r[:3], r[3:]) for r in states]
+    for layout in (np.asfortranarray(states), wide[:, ::2], rows):
+        res = pl.simulate_ensemble(pendulum, layout, t_end=0.2, progress=False)
+        assert np.array_equal(res.x, ref.x) and np.array_equal(res.v, ref.v)
+    far = states.copy()
+    far[2, 0] = 5e7
+    with pytest.raises(pl.InvalidInputError, match="TS"):
+        pl.simulate_ensemble(pendulum, far, t_end=0.2)
+    fast = states.copy()
+    fast[2, 4] = -2e7
+    with pytest.raises(pl.InvalidInputError, match="states v"):
+        pl.simulate_ensemble(pendulum, fast, t_end=0.2)
+
+
 def test_damped_ensemble_matches_the_damped_model() -> None:
     """Per-trajectory damping c [1/s]: each trajectory equals simulate() of the ``damped`` model."""
     p = pl.Pendulum(length=1.0, g=9.81, damping=0.3)
