@@ -2,8 +2,9 @@
 that are not points (``SweepSpec``), the fingerprint that makes resuming safe, and ``compute_chunk`` —
 a pure function of a ``ChunkTask`` that the thread pool and the Dask workers run. The exact
 quantities (rotation number T-4.5, z-period) come from the exact solution; the simulated ones from
-one RATTLE ensemble run per chunk (``simulate_ensemble``'s kernel), so every point is computed
-independently of the chunking and of the backend, bit for bit.
+one RATTLE ensemble run per chunk (``simulate_ensemble``'s kernel, with the sweep's arithmetic,
+``"fused"`` or ``"unfused"``, resolved once), so every point is computed independently of the
+chunking, the backend and the CPU, bit for bit.
 """
 
 from __future__ import annotations
@@ -65,7 +66,9 @@ class SweepSpec:
     """Everything but the points: the quantities, the pendulum (l [m], g [m/s²], m [kg]) used where
     the design does not vary length or g, the fixed initial conditions (``fixed``: axis → value; 0
     for those not given), for simulated quantities ``t_end`` [s] and ``dt`` [s], the linear damping
-    c [1/s] where the design does not vary it, and for ``settle_time`` the ``settle_angle`` [rad]."""
+    c [1/s] where the design does not vary it, for ``settle_time`` the ``settle_angle`` [rad], and for
+    simulated quantities the RATTLE ``arithmetic`` (``"fused"`` or ``"unfused"``, resolved once when
+    the sweep is set up, so that every chunk, on any worker, uses the same; None for exact ones)."""
 
     quantities: tuple[str, ...]
     length: float
@@ -76,6 +79,7 @@ class SweepSpec:
     dt: float | None = None
     damping: float = 0.0
     settle_angle: float | None = None
+    arithmetic: str | None = None
 
     @property
     def simulated(self) -> bool:
@@ -92,7 +96,7 @@ class SweepSpec:
     def describe(self) -> dict[str, Any]:
         d = asdict(self) | {"quantities": list(self.quantities)}
         # settings at their defaults are left out, so that sweeps written before they existed resume
-        for key, default in (("damping", 0.0), ("settle_angle", None)):
+        for key, default in (("damping", 0.0), ("settle_angle", None), ("arithmetic", None)):
             if d[key] == default:
                 del d[key]
         return d
@@ -118,9 +122,12 @@ def make_spec(
     t_end: float | None = None,
     dt: float | None = None,
     settle_angle: float | None = None,
+    arithmetic: Any = "auto",
 ) -> SweepSpec:
-    """Checks and collects the settings of a sweep over ``design`` (see :func:`sweep`)."""
+    """Checks and collects the settings of a sweep over ``design`` (see :func:`sweep`); ``arithmetic``
+    (``"auto"``, ``"unfused"``, ``"fused"``) is resolved here, as ``simulate_ensemble`` resolves it."""
     quantities = _quantities(quantity)
+    resolved = check_arithmetic(arithmetic, "rattle")  # checked even where nothing integrates
     p = Pendulum() if pendulum is None else pendulum
     if not isinstance(p, Pendulum):
         raise _bad(f"pendulum must be a pendulab.Pendulum, got {type(p).__name__}")
@@ -178,10 +185,11 @@ def make_spec(
                 f"t_end = {limits.show(t_end)} s must be > 0 and a multiple of dt = {limits.show(dt)} s"
             )
         t_end, dt = float(t_end), float(dt)
+        arith: str | None = resolved
     else:
-        t_end = dt = None  # not used: not part of what the results depend on
+        t_end = dt = arith = None  # not used: not part of what the results depend on
     fixed_sorted = dict(sorted(fixed_values.items()))
-    return SweepSpec(quantities, p.length, p.g, p.mass, fixed_sorted, t_end, dt, damping, settle_angle)
+    return SweepSpec(quantities, p.length, p.g, p.mass, fixed_sorted, t_end, dt, damping, settle_angle, arith)
 
 
 def fingerprint(design: Design, spec: SweepSpec) -> str:
@@ -264,9 +272,11 @@ def _simulate(
     damping = np.ascontiguousarray(c["damping"])
     dt, settle = float(spec.dt or 0.0), spec.settle_angle
     models = EnsembleSpec(length, g, damping)
-    # simulate_ensemble's default arithmetic ("auto": fused where the CPU has FMA), so that every point
-    # is that call's trajectory bit for bit
-    options = RunOptions(dt=dt, arithmetic=check_arithmetic("auto", "rattle"))
+    # the sweep's arithmetic, resolved once (make_spec), so that every point is simulate_ensemble's
+    # trajectory with that arithmetic bit for bit, whichever CPU runs the chunk; "auto" here only for
+    # a SweepSpec made without one
+    arithmetic = spec.arithmetic or check_arithmetic("auto", "rattle")
+    options = RunOptions(dt=dt, arithmetic=arithmetic)
     run = EnsembleRun(models, x, v, options, spec.steps, need_summary, settle)
     # wait returns the moment the chunk is done; a cancel is seen within 20 ms
     while not run.wait(0.02):

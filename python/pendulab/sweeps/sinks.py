@@ -126,13 +126,11 @@ class OutputDir:
         finds the chunks already done. Refuses up front: an output that holds another or an unfinished
         sweep (without ``resume``), a different sweep (with it), and results larger than the free disk."""
         _require_pyarrow()
-        target = Path(out)
-        is_file = target.suffix.lower() == ".parquet"
+        target, is_file, directory = _paths(out)
         if not is_file and target.suffix and not target.is_dir():
             raise _bad(f"out {str(target)!r}: give a directory or a file ending in .parquet")
         if is_file and target.is_dir():
             raise _bad(f"out {str(target)!r} is a directory; a file ending in .parquet was expected")
-        directory = target.parent / f".{target.name}.chunks" if is_file else target
         has_manifest = (directory / MANIFEST).is_file()
         if not resume and has_manifest:
             m = _read_manifest(directory)
@@ -290,3 +288,31 @@ class OutputDir:
 
 def _require_pyarrow() -> None:
     io._require("pyarrow")
+
+
+def _paths(out: str | os.PathLike[str]) -> tuple[Path, bool, Path]:
+    """``out``, whether it is a .parquet file, and the directory of its chunks (``out`` itself, or the
+    staging directory beside the file)."""
+    target = Path(out)
+    is_file = target.suffix.lower() == ".parquet"
+    return target, is_file, target.parent / f".{target.name}.chunks" if is_file else target
+
+
+def recorded_sweep(out: str | os.PathLike[str]) -> tuple[Path, dict[str, Any]] | None:
+    """The sweep already in ``out`` — where (the directory or the finished file) and its manifest
+    (``spec``, ``fingerprint``, …) — or None if there is none (:meth:`OutputDir.open` then refuses
+    whatever else is there). Read before a resume to carry over what the file records."""
+    target, is_file, directory = _paths(out)
+    if (directory / MANIFEST).is_file():
+        return directory, _read_manifest(directory)
+    if not (is_file and target.is_file()):
+        return None
+    _require_pyarrow()
+    import pyarrow.parquet as pq
+
+    try:
+        raw = (pq.read_schema(target).metadata or {}).get(META_KEY)
+        m = json.loads(raw) if raw else None
+    except (OSError, ValueError):
+        return None
+    return (target, m) if isinstance(m, dict) and isinstance(m.get("spec"), dict) else None

@@ -45,7 +45,8 @@ class SweepResult:
     ``columns``: ``point`` (int64, the point's number in the design), the design's axes (``theta0``,
     ``phi0`` [rad], ``theta_dot0``, ``phi_dot0`` [rad/s], ``length`` [m], ``g`` [m/s²] — those it
     varies) and the quantity columns (float64); ``units`` per column. ``design`` the points,
-    ``quantities`` what was computed, ``metadata`` the settings (pendulum, t_end, dt, fingerprint),
+    ``quantities`` what was computed, ``metadata`` the settings (``spec``: the pendulum, t_end, dt and
+    the RATTLE ``arithmetic``, "fused" or "unfused", of simulated quantities; ``fingerprint``),
     ``stats`` how it ran (chunks, computed, skipped, backend, seconds), ``path`` where it is on disk
     (columns are read from there on first use).
     """
@@ -79,6 +80,8 @@ class SweepResult:
             ("design", self.design.kind, ""),
             ("quantities", ", ".join(self.quantities), ""),
         ]
+        if "arithmetic" in self.metadata.get("spec", {}):
+            rows.append(("arithmetic", str(self.metadata["spec"]["arithmetic"]), ""))
         rows += [(f"column {name}", "", unit) for name, unit in self.units.items()]
         if self.path is not None:
             rows.append(("on disk", str(self.path), ""))

@@ -1,0 +1,179 @@
+"""The RATTLE arithmetic of sweeps (``pl.sweep(..., arithmetic=...)``, docs/sweeps.md "Arithmetic"):
+resolved once and recorded (metadata, manifest, chunk files, merged file), the same numbers bit for bit
+as ``pl.simulate_ensemble`` with that arithmetic, and honoured on resume — "auto" adopts the recorded
+arithmetic even where this CPU's "auto" resolves otherwise (``fused_is_fast`` monkeypatched, as in
+test_arithmetic.py), a named one that differs is refused, a file that records none warns. Times in
+seconds, angles in radians, lengths in metres."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pyarrow.parquet as pq
+import pytest
+
+import pendulab as pl
+import pendulab.integrators as integrators
+from pendulab.sweeps import compute as sweep_compute
+from pendulab.sweeps.design import as_design
+
+GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0])}
+QS = ["final_state", "energy_drift"]
+KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-3, "progress": False}
+
+
+def _cpu(monkeypatch: pytest.MonkeyPatch, fma: bool) -> None:
+    """This process's "auto" as on a CPU with (True) or without (False) a fast fused multiply-add."""
+    monkeypatch.setattr(integrators, "fused_is_fast", lambda: fma)
+
+
+def _same(a: pl.SweepResult, b: pl.SweepResult) -> bool:
+    return list(a.units) == list(b.units) and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.units)
+
+
+def _manifest(out: Path) -> dict[str, Any]:
+    return json.loads((out / "_manifest.json").read_text())
+
+
+def _drop_chunk(out: Path, index: int) -> None:
+    """As if the run had been interrupted before chunk ``index`` was written."""
+    (out / f"chunk-{index:06d}.parquet").unlink()
+    m = _manifest(out)
+    m["chunks_done"] = [i for i in m["chunks_done"] if i != index]
+    m["complete"] = False
+    (out / "_manifest.json").write_text(json.dumps(m))
+
+
+def _counting(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    calls = [0]
+    real = sweep_compute._simulate
+
+    def counted(*args: Any) -> Any:
+        calls[0] += 1
+        return real(*args)
+
+    monkeypatch.setattr(sweep_compute, "_simulate", counted)
+    return calls
+
+
+@pytest.mark.parametrize("arithmetic", ["unfused", "fused"])
+def test_a_sweep_is_simulate_ensemble_of_its_arithmetic_bit_for_bit(arithmetic: str) -> None:
+    """final_state of a sweep with a named arithmetic (in chunks of 4) equals one simulate_ensemble
+    call with that arithmetic over all points, bit for bit, and records it; the two arithmetics give
+    other bits (so the keyword does something)."""
+    sw = pl.sweep(GRID, QS, arithmetic=arithmetic, chunk_size=4, **KW)
+    other = pl.sweep(GRID, QS, arithmetic="fused" if arithmetic == "unfused" else "unfused", **KW)
+    th, pd = np.meshgrid(GRID["theta0"], GRID["phi_dot0"], indexing="ij")
+    p = pl.Pendulum()
+    starts = np.array(
+        [p.state_from_angles(a, 0.0, 0.0, b).as_array() for a, b in zip(th.ravel(), pd.ravel(), strict=True)]
+    )
+    ens = pl.simulate_ensemble(p, starts, 0.2, dt=1e-3, arithmetic=arithmetic, progress=False)
+    for k, name in enumerate("xyz"):
+        assert np.array_equal(sw[name], ens.final_x[:, k]), name
+        assert np.array_equal(sw["v" + name], ens.final_v[:, k]), name
+    assert not _same(sw, other)
+    assert sw.metadata["spec"]["arithmetic"] == arithmetic
+
+
+@pytest.mark.parametrize("fma", [True, False])
+def test_auto_is_resolved_once_and_recorded(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, fma: bool
+) -> None:
+    """ "auto" is the CPU's arithmetic (fused with FMA): the same numbers as naming it, recorded in the
+    metadata, the manifest, every chunk file and the merged .parquet file; exact quantities (nothing
+    integrates) record none; a bad name is refused with simulate_ensemble's message."""
+    _cpu(monkeypatch, fma)
+    want = "fused" if fma else "unfused"
+    sw = pl.sweep(GRID, QS, out=tmp_path / "d", chunk_size=4, **KW)
+    assert _same(sw, pl.sweep(GRID, QS, arithmetic=want, **KW))
+    assert sw.metadata["spec"]["arithmetic"] == want
+    assert _manifest(tmp_path / "d")["spec"]["arithmetic"] == want
+    for path in sorted((tmp_path / "d").glob("chunk-*.parquet")):
+        info = json.loads(pq.read_schema(path).metadata[b"pendulab_sweep"])
+        assert info["spec"]["arithmetic"] == want, path
+    assert pl.read_sweep(tmp_path / "d").metadata["spec"]["arithmetic"] == want
+    assert f">arithmetic</th><td style='text-align:right'>{want}</td>" in sw._repr_html_()
+    merged = pl.sweep(GRID, QS, out=tmp_path / "m.parquet", **KW)
+    assert pl.read_sweep(merged.path).metadata["spec"]["arithmetic"] == want  # type: ignore[arg-type]
+    exact = pl.sweep({"theta0": [0.5, 1.0], "phi_dot0": [1.0]}, "period", arithmetic="fused", progress=False)
+    assert "arithmetic" not in exact.metadata["spec"]
+    with pytest.raises(pl.InvalidInputError, match=r"arithmetic.*'fma'.*'unfused', 'fused'"):
+        pl.sweep(GRID, QS, arithmetic="fma", **KW)
+
+
+@pytest.mark.parametrize("fma_first", [True, False])
+def test_resume_with_auto_adopts_the_recorded_arithmetic(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, fma_first: bool
+) -> None:
+    """Written where "auto" is one arithmetic, interrupted, resumed where it is the other: the missing
+    chunk is computed with the recorded arithmetic, so the result is the first machine's bit for bit
+    (and not the second's); resuming with the recorded arithmetic named works too."""
+    out = tmp_path / "sw"
+    _cpu(monkeypatch, fma_first)
+    pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
+    recorded = "fused" if fma_first else "unfused"
+    first = pl.sweep(GRID, QS, arithmetic=recorded, **KW)  # in memory (out's columns are read lazily)
+    _drop_chunk(out, 2)
+    _cpu(monkeypatch, not fma_first)
+    calls = _counting(monkeypatch)
+    again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
+    assert calls == [1] and again.stats["computed"] == 1
+    assert (
+        again.metadata["spec"]["arithmetic"] == recorded and _manifest(out)["spec"]["arithmetic"] == recorded
+    )
+    assert _same(first, again) and _same(first, pl.read_sweep(out))
+    assert not _same(first, pl.sweep(GRID, QS, **KW))  # this machine's own "auto" gives other bits
+    _drop_chunk(out, 0)
+    assert _same(first, pl.sweep(GRID, QS, out=out, resume=True, arithmetic=recorded, **KW))
+
+
+def test_resume_refuses_a_conflicting_named_arithmetic(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A named arithmetic other than the recorded one is refused before any work, naming both and what
+    to do, for an unfinished directory and a finished .parquet file; another setting that differs as
+    well is reported as a different sweep, with the arithmetic among the differences."""
+    out = tmp_path / "sw"
+    pl.sweep(GRID, QS, out=out, chunk_size=4, arithmetic="fused", **KW)
+    _drop_chunk(out, 1)
+    calls = _counting(monkeypatch)
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.sweep(GRID, QS, out=out, resume=True, arithmetic="unfused", **KW)
+    for needle in ("arithmetic = 'unfused' differs from 'fused'", str(out), "arithmetic='fused'", "'auto'"):
+        assert needle in str(e.value), (needle, str(e.value))
+    assert calls == [0] and not (out / "chunk-000001.parquet").exists()
+    with pytest.raises(
+        pl.InvalidInputError, match=r"different sweep: arithmetic \('fused' there, 'unfused' here\), dt"
+    ):
+        pl.sweep(GRID, QS, out=out, resume=True, arithmetic="unfused", t_end=0.2, dt=2e-3, progress=False)
+    pl.sweep(GRID, QS, out=tmp_path / "m.parquet", arithmetic="unfused", **KW)
+    with pytest.raises(pl.InvalidInputError, match=r"'fused' differs from 'unfused'.*m\.parquet"):
+        pl.sweep(GRID, QS, out=tmp_path / "m.parquet", resume=True, arithmetic="fused", **KW)
+
+
+def test_a_sweep_that_records_no_arithmetic_resumes_with_a_warning(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A directory written before the arithmetic was recorded (its spec and fingerprint without it, as
+    that pendulab wrote them) resumes with this run's arithmetic and a RuntimeWarning saying the file
+    does not record its arithmetic; its record stays without one; finished, it resumes silently."""
+    out = tmp_path / "old"
+    pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
+    first = pl.sweep(GRID, QS, **KW)  # in memory (out's columns are read lazily)
+    m = _manifest(out)
+    del m["spec"]["arithmetic"]
+    text = json.dumps({"design": as_design(GRID).fingerprint(), "spec": m["spec"]}, sort_keys=True)
+    m["fingerprint"] = hashlib.sha256(text.encode()).hexdigest()  # the fingerprint of the old format
+    (out / "_manifest.json").write_text(json.dumps(m))
+    _drop_chunk(out, 3)
+    calls = _counting(monkeypatch)
+    with pytest.warns(RuntimeWarning, match=r"does not record the arithmetic .* the remaining chunks use"):
+        again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
+    assert calls == [1] and _same(first, again)  # written and resumed with this machine's "auto"
+    assert "arithmetic" not in again.metadata["spec"] and "arithmetic" not in _manifest(out)["spec"]
+    assert pl.sweep(GRID, QS, out=out, resume=True, **KW).stats["computed"] == 0  # no warning: nothing to do
