@@ -88,8 +88,15 @@ impl Rattle {
             // Strang splitting: the exact velocity flow for h/2 on either side (see model::extended).
             s.v = model.velocity_flow_at(t, s.x, s.v, half);
         }
-        let kicked = if A::FUSED { self.vertical(model, t, s, h) } else { None };
-        if !kicked.unwrap_or_else(|| self.kick_drift::<A, M>(model, t, s, h)) {
+        // a uniform field's kicks (h/2) f at t and t + h, computed once for whichever form runs
+        let uniform = model
+            .kick_is_uniform()
+            .then(|| (model.kick_acceleration(t, s.x) * half, model.kick_acceleration(t + h, s.x) * half));
+        let ok = match uniform {
+            Some((k0, k1)) if A::FUSED && is_vertical(k0, k1) => self.vertical(model, s, h, (k0.z, k1.z)),
+            _ => self.kick_drift::<A, M>(model, t, s, h, uniform),
+        };
+        if !ok {
             return false;
         }
         if model.has_velocity_forces() {
@@ -99,40 +106,40 @@ impl Rattle {
     }
 
     /// The fused step in a vertical uniform field (`rattle_vertical.rs`, the ensemble kernel's form),
-    /// when the model's kicks at t and t + h are vertical; `None` otherwise (the general form runs).
+    /// given the kicks' vertical components κ₀, κ₁ [m/s] at t and t + h.
     #[inline(always)]
-    fn vertical<M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> Option<bool> {
-        if !model.kick_is_uniform() {
-            return None;
-        }
-        let half = 0.5 * h;
-        let (k0, k1) = (model.kick_acceleration(t, s.x) * half, model.kick_acceleration(t + h, s.x) * half);
-        if k0.x != 0.0 || k0.y != 0.0 || k1.x != 0.0 || k1.y != 0.0 {
-            return None;
-        }
+    fn vertical<M: Model>(&mut self, model: &M, s: &mut State, h: f64, (kick0, kick1): (f64, f64)) -> bool {
         let l2 = model.params().length * model.params().length;
-        let field = VerticalField { h, kick0: k0.z, kick1: k1.z, l2, inv_l2: 1.0 / l2 };
+        let field = VerticalField { h, kick0, kick1, l2, inv_l2: 1.0 / l2 };
         let (w, quad) = field.quadratic(s.x, s.v);
         let mu = quad.multiplier::<Fused>(h);
         if mu.is_nan() {
-            return Some(false);
+            return false;
         }
         let end = field.finish((s.x, s.v), (w, &quad), mu, (self.comp_x, self.comp_v));
         (s.x, s.v, self.comp_x, self.comp_v) = (end.x, end.v, end.comp_x, end.comp_v);
-        Some(true)
+        true
     }
 
-    /// The kicks and the constrained drift in the general form of [`super::rattle_kernel`]; false when
-    /// the position quadratic has no root.
+    /// The kicks and the constrained drift in the general form of [`super::rattle_kernel`], with a
+    /// uniform field's kicks (h/2) f(t), (h/2) f(t + h) [m/s] when the model has one (`uniform`); false
+    /// when the position quadratic has no root.
     #[inline(always)]
-    fn kick_drift<A: MulAdd, M: Model>(&mut self, model: &M, t: f64, s: &mut State, h: f64) -> bool {
+    fn kick_drift<A: MulAdd, M: Model>(
+        &mut self,
+        model: &M,
+        t: f64,
+        s: &mut State,
+        h: f64,
+        uniform: Option<(DVec3, DVec3)>,
+    ) -> bool {
         let l = model.params().length;
         let l2 = l * l;
         // 1/l² is a loop invariant the compiler hoists out of a stepping loop.
         let inv_l2 = 1.0 / l2;
         let half = 0.5 * h;
         let (x0, v0) = (s.x, s.v);
-        let kick0 = model.kick_acceleration(t, x0) * half;
+        let kick0 = uniform.map_or_else(|| model.kick_acceleration(t, x0) * half, |(k0, _)| k0);
         let w = v0 + kick0;
         let quad = PositionQuadratic::new::<A>(x0, w, h, l2);
         let mu = quad.multiplier::<A>(h);
@@ -144,10 +151,9 @@ impl Rattle {
         // in the compositions).
         let v_half = fmadd3::<A>(x0, mu, w);
         let x1 = advance_position::<A>(x0, v_half, h, &mut self.comp_x);
-        let (kick1, p) = if model.kick_is_uniform() {
+        let (kick1, p) = if let Some((_, kick1)) = uniform {
             // known before x₁: the projection's numerator is a quadratic in μ (module doc of
             // rattle_kernel), its coefficients computed alongside μ
-            let kick1 = model.kick_acceleration(t + h, x0) * half;
             (kick1, ProjectionPolynomial::new::<A>(x0, w, kick1, &quad, h, inv_l2).at::<A>(mu))
         } else {
             let kick1 = model.kick_acceleration(t + h, x1) * half;
@@ -159,6 +165,13 @@ impl Rattle {
         s.x = x1;
         true
     }
+}
+
+/// Whether both kicks [m/s] are vertical (their horizontal components exactly zero): the fused
+/// arithmetic then takes the vertical-field form.
+#[inline(always)]
+fn is_vertical(k0: DVec3, k1: DVec3) -> bool {
+    k0.x == 0.0 && k0.y == 0.0 && k1.x == 0.0 && k1.y == 0.0
 }
 
 impl FixedStep for Rattle {
