@@ -21,6 +21,23 @@ fn pick(a: &[f64], k: usize) -> f64 {
     }
 }
 
+/// The run's damping rates c [1/s]: the settings' own, or one 0 (undamped) when none are given.
+fn damping_of<'a>(settings: &RattleSettings<'a>) -> &'a [f64] {
+    if settings.damping.is_empty() {
+        &[0.0]
+    } else {
+        settings.damping
+    }
+}
+
+/// The first of length, g and `damping` whose size is neither 1 nor `n` (the starts), with its size.
+fn missized(settings: &RattleSettings<'_>, damping: &[f64], n: usize) -> Option<(&'static str, usize)> {
+    [("length", settings.length), ("g", settings.g), ("damping", damping)]
+        .into_iter()
+        .find(|(_, a)| a.len() != 1 && a.len() != n)
+        .map(|(name, a)| (name, a.len()))
+}
+
 /// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the settle
 /// threshold (cos of the angle; −∞ without tracking) and the save interval in steps.
 pub(super) struct Plan<'a> {
@@ -39,9 +56,8 @@ impl<'a> Plan<'a> {
         checked: Checked,
     ) -> Result<Self> {
         let n = starts.len();
-        let damping: &[f64] = if settings.damping.is_empty() { &[0.0] } else { settings.damping };
-        let sized = |a: &[f64]| a.len() == 1 || a.len() == n;
-        if checked.n != n || !sized(settings.length) || !sized(settings.g) || !sized(damping) {
+        let damping = damping_of(settings);
+        if checked.n != n || missized(settings, damping, n).is_some() {
             return Err(Error::InvalidParameter {
                 name: "checked",
                 value: checked.n as f64,
@@ -58,15 +74,13 @@ impl<'a> Plan<'a> {
         let &RattleSettings { length, g, dt, n_steps, save, .. } = settings;
         let n = starts.len();
         crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
-        let damping: &[f64] = if settings.damping.is_empty() { &[0.0] } else { settings.damping };
-        for (name, a) in [("length", length), ("g", g), ("damping", damping)] {
-            if a.len() != 1 && a.len() != n {
-                return Err(Error::InvalidParameter {
-                    name,
-                    value: a.len() as f64,
-                    allowed: "one value for all trajectories or one per trajectory",
-                });
-            }
+        let damping = damping_of(settings);
+        if let Some((name, size)) = missized(settings, damping, n) {
+            return Err(Error::InvalidParameter {
+                name,
+                value: size as f64,
+                allowed: "one value for all trajectories or one per trajectory",
+            });
         }
         for (k, s) in starts.iter().enumerate() {
             let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
