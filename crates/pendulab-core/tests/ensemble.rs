@@ -94,18 +94,37 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
         let mixed = s.chunks(tile).any(|t| t.iter().any(in_series) && !t.iter().all(in_series));
         assert!(mixed, "no tile of {tile} lanes mixes the series and the closed form");
     }
-    // both arithmetics: every lane of a tile where one is outside the range gets the closed form's or
-    // the series' bits as its single path does (Tile::multipliers)
-    for arithmetic in Arithmetic::ALL {
-        let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-        let settings = RattleSettings { arithmetic, ..RattleSettings::new(&[1.0], &[9.81], dt, 50) };
-        let res = run(&s, &settings, &p, &c).unwrap();
-        let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };
-        for (k, start) in s.iter().enumerate() {
-            let mut st = Stepper::new(m, 0.0, *start, &opts).unwrap();
-            st.set_arithmetic(arithmetic).unwrap();
-            st.step_n(50).unwrap();
-            assert_eq!(res.trajectory(k)[1], st.state(), "{arithmetic:?}: trajectory {k}");
+    // both arithmetics, and the parameters shared (one length) or per lane (lengths 1 m and 1.02 m
+    // alternating, each start scaled onto its sphere): every lane of a tile where one is outside the
+    // range gets the closed form's or the series' bits as its single path does (ensemble/tile.rs:
+    // two halves with shared parameters, one pass kept aside with rows of fused parameters)
+    let per_lane: Vec<f64> = (0..n).map(|k| 1.0 + 0.02 * (k % 2) as f64).collect();
+    let scaled: Vec<State> =
+        s.iter().zip(&per_lane).map(|(st, &l)| State { x: st.x * l, v: st.v * l }).collect();
+    let in_range = |st: &State, l: f64| {
+        let w = st.v + DVec3::new(0.0, 0.0, -9.81) * (0.5 * dt);
+        PositionQuadratic::new::<Unfused>(st.x, w, dt, l * l).multiplier_series::<Unfused>(dt).1
+    };
+    let flags: Vec<bool> = scaled.iter().zip(&per_lane).map(|(st, &l)| in_range(st, l)).collect();
+    for tile in [8, 16] {
+        let mixed = flags.chunks(tile).any(|t| t.iter().any(|&f| f) && !t.iter().all(|&f| f));
+        assert!(mixed, "per-lane lengths: no tile of {tile} lanes mixes the series and the closed form");
+    }
+    for (lengths, starts) in [(&[1.0][..], &s), (&per_lane[..], &scaled)] {
+        for arithmetic in Arithmetic::ALL {
+            let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+            let settings = RattleSettings { arithmetic, ..RattleSettings::new(lengths, &[9.81], dt, 50) };
+            let res = run(starts, &settings, &p, &c).unwrap();
+            let opts = SolveOptions { method: Method::Rattle, dt, ..SolveOptions::default() };
+            for (k, start) in starts.iter().enumerate() {
+                let l = lengths[k.min(lengths.len() - 1)];
+                let mk = IdealPendulum::new(l, 1.0, 9.81).unwrap();
+                let mut st = Stepper::new(mk, 0.0, *start, &opts).unwrap();
+                st.set_arithmetic(arithmetic).unwrap();
+                st.step_n(50).unwrap();
+                let what = format!("{arithmetic:?}, {} lengths: trajectory {k}", lengths.len());
+                assert_eq!(res.trajectory(k)[1], st.state(), "{what}");
+            }
         }
     }
 }

@@ -17,6 +17,12 @@
 //! was in range (4096 starts × 2000 steps, one thread, x86-64-v4, CPU time, best and median of 5
 //! interleaved): unfused 3.97 → 3.13 ns per trajectory-step, fused 2.31 → 2.18 (docs/performance.md).
 //!
+//! With the fused arithmetic and parameters as rows ([`PerLane`]: lengths, g or damping per
+//! trajectory) the two halves' temporaries and the rows no longer fit in the registers, and the step
+//! goes in one pass instead, its result kept aside and committed when every lane was in range
+//! (`Tile::rattle_vertical_one_pass`): per-lane lengths, one thread, 2.14–2.35 ns per trajectory-step
+//! against 2.5–2.9 in two halves (the same as before the two halves came, 2.18–2.3).
+//!
 //! The parameters l², 1/l², g and e^{−c dt/2} are rows of `T` values ([`PerLane`]), or, when every
 //! lane of the block has the same ones (one pendulum, many starts: the usual ensemble), one number
 //! each ([`Shared`]): the same values, so the same bits, and six AVX-512 registers fewer for the
@@ -46,6 +52,8 @@ pub(super) struct Tile<const T: usize, P> {
 
 /// A tile's parameters: l² \[m²\], 1/l² [1/m²], g [m/s²] and e^{−c dt/2} of lane `i`.
 pub(super) trait TileParams: Copy {
+    /// True for [`Shared`] (one number per parameter).
+    const SHARED: bool;
     /// Lanes o…o + T of the block's parameters.
     fn load(b: &Block, o: usize) -> Self;
     fn l2(&self, i: usize) -> f64;
@@ -64,6 +72,7 @@ pub(super) struct PerLane<const T: usize> {
 }
 
 impl<const T: usize> TileParams for PerLane<T> {
+    const SHARED: bool = false;
     #[inline(always)]
     fn load(b: &Block, o: usize) -> Self {
         Self {
@@ -102,6 +111,7 @@ pub(super) struct Shared {
 }
 
 impl TileParams for Shared {
+    const SHARED: bool = true;
     #[inline(always)]
     fn load(b: &Block, o: usize) -> Self {
         Self { l2: b.l2[o], inv_l2: b.inv_l2[o], g: b.g[o], decay_half: b.decay_half[o] }
@@ -177,7 +187,13 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         if damped {
             self.decay();
         }
-        if A::FUSED {
+        if A::FUSED && !P::SHARED {
+            // rows of parameters and the fused step's temporaries do not all fit in the registers
+            // at once: one pass, its result kept aside (module doc)
+            if !self.rattle_vertical_one_pass(h, false) {
+                self.rattle_vertical_one_pass(h, true);
+            }
+        } else if A::FUSED {
             self.rattle_vertical(h);
         } else {
             self.rattle::<A>(h);
@@ -289,6 +305,45 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
             let end = f.finish((x0, v0), (w, &quads.get(i)), mu[i], (cx, cv));
             self.set(i, [end.x, end.v, end.comp_x, end.comp_v]);
         }
+    }
+
+    /// [`Tile::rattle_vertical`] in one pass over the lanes, the new state kept aside and committed
+    /// only if every lane was within the series' range (with `closed` false; with `closed` true, μ is
+    /// `PositionQuadratic::multiplier` for every lane): the same bits, faster than two halves when
+    /// the parameters are rows (module doc).
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
+    fn rattle_vertical_one_pass(&mut self, h: f64, closed: bool) -> bool {
+        let half = 0.5 * h;
+        let mut next = [[[0.0; T]; 3]; 4];
+        let mut ok = true;
+        for i in 0..T {
+            let (x0, v0) = self.lane(i);
+            let kick = -self.params.g(i) * half;
+            let (l2, inv_l2) = (self.params.l2(i), self.params.inv_l2(i));
+            let field = VerticalField { h, kick0: kick, kick1: kick, l2, inv_l2 };
+            let (w, quad) = field.quadratic(x0, v0);
+            let mu = if closed {
+                quad.multiplier::<Fused>(h)
+            } else {
+                let (mu, in_range) = quad.multiplier_series::<Fused>(h);
+                ok &= in_range;
+                mu
+            };
+            let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
+            let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
+            let end = field.finish((x0, v0), (w, &quad), mu, (cx, cv));
+            for c in 0..3 {
+                next[0][c][i] = end.x[c];
+                next[1][c][i] = end.v[c];
+                next[2][c][i] = end.comp_x[c];
+                next[3][c][i] = end.comp_v[c];
+            }
+        }
+        if ok {
+            [self.x, self.v, self.cx, self.cv] = next;
+        }
+        ok
     }
 
     /// Lane `i`'s new x₁ [m], v₁ [m/s] and their compensations.
