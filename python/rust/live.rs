@@ -71,7 +71,7 @@ fn record_bytes(records: &[Record]) -> Vec<u8> {
 
 fn records_from(bytes: &[u8]) -> PyResult<Vec<Record>> {
     let n = pendulab_core::live::RECORD_LEN * 8;
-    if bytes.len() % n != 0 {
+    if !bytes.len().is_multiple_of(n) {
         return Err(InvalidInputError::new_err(format!(
             "frame records are a multiple of {n} bytes, got {}",
             bytes.len()

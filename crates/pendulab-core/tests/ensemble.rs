@@ -90,7 +90,7 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
     let tiles =
         levels.iter().flat_map(|&l| [Arithmetic::Unfused, Arithmetic::Fused].map(|a| tile_lanes(l, a)));
     for tile in tiles {
-        assert!(LANES % tile == 0 && tile <= TILE);
+        assert!(LANES.is_multiple_of(tile) && tile <= TILE);
         let mixed = s.chunks(tile).any(|t| t.iter().any(in_series) && !t.iter().all(in_series));
         assert!(mixed, "no tile of {tile} lanes mixes the series and the closed form");
     }

@@ -30,12 +30,20 @@ use crate::state::State;
 use glam::DVec3;
 
 use super::block_state::{Block, Track};
-use super::tile::{PerLane, Shared, Tile, TileParams};
+use super::tile::Tile;
+use super::tile_params::{Lengths, PerLane, Shared, TileParams};
 use super::{Lanes, LANES};
 
 /// The widest tile: lanes stepped together in registers at x86-64-v4 (module doc; [`LANES`] is a
 /// multiple of it).
 pub const TILE: usize = 16;
+
+/// Which of a block's parameters all its lanes share ([`Block::steps`] picks the tile's form by it).
+enum Sharing {
+    All,
+    AllButLengths,
+    Some,
+}
 
 /// Lanes stepped together in registers at instruction-set level `level` with `arithmetic` (module
 /// doc: 16 at x86-64-v4, 8 (fused) or 4 (unfused) at x86-64-v3, 4 at the baseline), each a divisor of
@@ -57,23 +65,27 @@ impl Block {
         // the tile for the level this runs at (module doc); the arms of the other levels are
         // compiled into each level's clone too, but never taken there
         let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
-        let shared = self.params_shared();
-        match (tile_lanes(isa::current(), arithmetic), shared) {
-            (16, true) => self.steps_tiled::<A, 16, Shared>(chunk, h, first, track),
-            (16, false) => self.steps_tiled::<A, 16, PerLane<16>>(chunk, h, first, track),
-            (8, true) => self.steps_tiled::<A, 8, Shared>(chunk, h, first, track),
-            (8, false) => self.steps_tiled::<A, 8, PerLane<8>>(chunk, h, first, track),
-            (_, true) => self.steps_tiled::<A, 4, Shared>(chunk, h, first, track),
-            (_, false) => self.steps_tiled::<A, 4, PerLane<4>>(chunk, h, first, track),
+        match (tile_lanes(isa::current(), arithmetic), self.sharing()) {
+            (16, Sharing::All) => self.steps_tiled::<A, 16, Shared>(chunk, h, first, track),
+            (16, Sharing::AllButLengths) => self.steps_tiled::<A, 16, Lengths<16>>(chunk, h, first, track),
+            (16, _) => self.steps_tiled::<A, 16, PerLane<16>>(chunk, h, first, track),
+            (8, Sharing::All) => self.steps_tiled::<A, 8, Shared>(chunk, h, first, track),
+            (8, _) => self.steps_tiled::<A, 8, PerLane<8>>(chunk, h, first, track),
+            (_, Sharing::All) => self.steps_tiled::<A, 4, Shared>(chunk, h, first, track),
+            (_, _) => self.steps_tiled::<A, 4, PerLane<4>>(chunk, h, first, track),
         }
     }
 
-    /// Whether every lane has the same l², 1/l², g and damping factor (the usual ensemble: one
-    /// pendulum, many starts): the tiles then keep them as one number each instead of a row (module
-    /// doc, *Shared parameters*).
-    fn params_shared(&self) -> bool {
+    /// Which parameters every lane shares (bit for bit): all of l², 1/l², g and the damping factor
+    /// (the usual ensemble: one pendulum, many starts), all but the length, or fewer. The tiles keep
+    /// shared parameters as one number each instead of a row (`tile.rs`).
+    fn sharing(&self) -> Sharing {
         let same = |a: &Lanes| a.iter().all(|&y| y.to_bits() == a[0].to_bits());
-        same(&self.l2) && same(&self.inv_l2) && same(&self.g) && same(&self.decay_half)
+        match (same(&self.l2) && same(&self.inv_l2), same(&self.g) && same(&self.decay_half)) {
+            (true, true) => Sharing::All,
+            (false, true) => Sharing::AllButLengths,
+            _ => Sharing::Some,
+        }
     }
 
     /// [`Block::steps`] with tiles of `T` lanes and the parameters held as `P`.

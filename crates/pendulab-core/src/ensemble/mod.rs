@@ -44,6 +44,7 @@ mod block_state;
 mod output;
 mod plan;
 mod tile;
+mod tile_params;
 pub use block::{tile_lanes, TILE};
 use output::{sample_count, sample_times, settle_times, summaries};
 use plan::{BlockRun, Plan};

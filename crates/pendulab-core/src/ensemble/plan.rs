@@ -224,7 +224,7 @@ impl BlockRun<'_> {
             }
             done += chunk;
             self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);
-            if done % every == 0 || done == n_steps {
+            if done.is_multiple_of(every) || done == n_steps {
                 save(blk);
             }
             if self.cancel.load(Ordering::Relaxed) {

@@ -23,6 +23,11 @@
 //! (`Tile::rattle_vertical_one_pass`): per-lane lengths, one thread, 2.14–2.35 ns per trajectory-step
 //! against 2.5–2.9 in two halves (the same as before the two halves came, 2.18–2.3).
 //!
+//! When only the lengths differ from lane to lane (g and damping shared), the 16-lane tile holds l²
+//! and 1/l² as rows and g, e^{−c dt/2} as one number each ([`Lengths`]), and the fused step fits in
+//! two halves again: per-lane lengths 2.6–2.7 → 2.2–2.4 ns per trajectory-step (one thread, three
+//! interleaved rounds).
+//!
 //! The parameters l², 1/l², g and e^{−c dt/2} are rows of `T` values ([`PerLane`]), or, when every
 //! lane of the block has the same ones (one pendulum, many starts: the usual ensemble), one number
 //! each ([`Shared`]): the same values, so the same bits, and six AVX-512 registers fewer for the
@@ -36,9 +41,10 @@ use crate::integrate::rattle_vertical::VerticalField;
 use glam::DVec3;
 
 use super::block_state::Block;
+use super::tile_params::{row, TileParams};
 use super::Lanes;
 
-type Row<const T: usize> = [f64; T];
+use super::tile_params::Row;
 
 /// `T` lanes of a block, held in local arrays (registers) while they are stepped, with their
 /// parameters as `P` (a row per parameter, or one number each when the lanes share them).
@@ -48,96 +54,6 @@ pub(super) struct Tile<const T: usize, P> {
     cx: [Row<T>; 3],
     cv: [Row<T>; 3],
     params: P,
-}
-
-/// A tile's parameters: l² \[m²\], 1/l² [1/m²], g [m/s²] and e^{−c dt/2} of lane `i`.
-pub(super) trait TileParams: Copy {
-    /// True for [`Shared`] (one number per parameter).
-    const SHARED: bool;
-    /// Lanes o…o + T of the block's parameters.
-    fn load(b: &Block, o: usize) -> Self;
-    fn l2(&self, i: usize) -> f64;
-    fn inv_l2(&self, i: usize) -> f64;
-    fn g(&self, i: usize) -> f64;
-    fn decay_half(&self, i: usize) -> f64;
-}
-
-/// One row per parameter (lanes with their own lengths, g or damping).
-#[derive(Clone, Copy)]
-pub(super) struct PerLane<const T: usize> {
-    l2: Row<T>,
-    inv_l2: Row<T>,
-    g: Row<T>,
-    decay_half: Row<T>,
-}
-
-impl<const T: usize> TileParams for PerLane<T> {
-    const SHARED: bool = false;
-    #[inline(always)]
-    fn load(b: &Block, o: usize) -> Self {
-        Self {
-            l2: row(&b.l2, o),
-            inv_l2: row(&b.inv_l2, o),
-            g: row(&b.g, o),
-            decay_half: row(&b.decay_half, o),
-        }
-    }
-    #[inline(always)]
-    fn l2(&self, i: usize) -> f64 {
-        self.l2[i]
-    }
-    #[inline(always)]
-    fn inv_l2(&self, i: usize) -> f64 {
-        self.inv_l2[i]
-    }
-    #[inline(always)]
-    fn g(&self, i: usize) -> f64 {
-        self.g[i]
-    }
-    #[inline(always)]
-    fn decay_half(&self, i: usize) -> f64 {
-        self.decay_half[i]
-    }
-}
-
-/// One number per parameter, shared by every lane (`Block::params_shared`): the same values as
-/// the rows would hold, so the same bits, in fewer registers.
-#[derive(Clone, Copy)]
-pub(super) struct Shared {
-    l2: f64,
-    inv_l2: f64,
-    g: f64,
-    decay_half: f64,
-}
-
-impl TileParams for Shared {
-    const SHARED: bool = true;
-    #[inline(always)]
-    fn load(b: &Block, o: usize) -> Self {
-        Self { l2: b.l2[o], inv_l2: b.inv_l2[o], g: b.g[o], decay_half: b.decay_half[o] }
-    }
-    #[inline(always)]
-    fn l2(&self, _: usize) -> f64 {
-        self.l2
-    }
-    #[inline(always)]
-    fn inv_l2(&self, _: usize) -> f64 {
-        self.inv_l2
-    }
-    #[inline(always)]
-    fn g(&self, _: usize) -> f64 {
-        self.g
-    }
-    #[inline(always)]
-    fn decay_half(&self, _: usize) -> f64 {
-        self.decay_half
-    }
-}
-
-/// `a[o..o + T]` as a row.
-#[inline(always)]
-fn row<const T: usize>(a: &Lanes, o: usize) -> Row<T> {
-    std::array::from_fn(|i| a[o + i])
 }
 
 /// The position quadratics of a tile's lanes, one row per coefficient (the first half of a step
@@ -187,7 +103,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         if damped {
             self.decay();
         }
-        if A::FUSED && !P::SHARED {
+        if A::FUSED && !P::TWO_HALVES {
             // rows of parameters and the fused step's temporaries do not all fit in the registers
             // at once: one pass, its result kept aside (module doc)
             if !self.rattle_vertical_one_pass(h, false) {

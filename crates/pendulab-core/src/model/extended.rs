@@ -275,7 +275,7 @@ impl Model for Extended {
     fn is_axisymmetric(&self) -> bool {
         let vertical = |d: DVec3| d.x == 0.0 && d.y == 0.0;
         (self.params.g == 0.0 || vertical(self.gravity_direction))
-            && self.forcing.as_ref().map_or(true, |f| vertical(f.direction))
+            && self.forcing.as_ref().is_none_or(|f| vertical(f.direction))
             && vertical(self.frame)
     }
     #[inline(always)]

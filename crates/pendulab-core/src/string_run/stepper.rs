@@ -290,7 +290,7 @@ impl StringStepper {
         self.stats.rhs_evals += trial.evals();
         if self.model.tension(&s1) >= 0.0 {
             (self.scheme, self.s, self.t, self.k, self.on_grid) = (trial, s1, t_next, k_next, on_grid_next);
-            if (on_grid_next && self.k % stop.save_every == 0) || (stop.end && self.t >= stop.t) {
+            if (on_grid_next && self.k.is_multiple_of(stop.save_every)) || (stop.end && self.t >= stop.t) {
                 push(self.t, self.s, true)?;
             }
             return Ok(());
@@ -334,7 +334,7 @@ impl StringStepper {
         let t_end = stop.t;
         while self.grid(self.k + 1) < arrival.min(t_end) {
             self.k += 1;
-            if self.k % stop.save_every == 0 {
+            if self.k.is_multiple_of(stop.save_every) {
                 let gk = self.grid(self.k);
                 push(gk, self.model.flight(&from, gk - te), false)?;
             }
@@ -346,7 +346,7 @@ impl StringStepper {
             }
             self.s = self.model.flight(&from, t_end - te);
             self.t = t_end;
-            if stop.end || (on_grid && self.k % stop.save_every == 0) {
+            if stop.end || (on_grid && self.k.is_multiple_of(stop.save_every)) {
                 push(self.t, self.s, false)?;
             }
             return Ok(());
