@@ -203,7 +203,13 @@ def _run_gallery_script(script: Path) -> list[Path]:
             partial.mkdir(parents=True)
             for p in made:
                 shutil.copy2(p, partial / p.name.lower())
-            partial.rename(cached)
+            try:
+                partial.rename(cached)
+            except OSError:
+                if not cached.is_dir():
+                    raise
+                # another docs build filled the cache meanwhile (the same script and version): keep it
+                shutil.rmtree(partial, ignore_errors=True)
     return sorted(cached.iterdir())
 
 
