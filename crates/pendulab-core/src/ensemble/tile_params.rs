@@ -101,7 +101,7 @@ impl<const T: usize> TileParams for Lengths<T> {
     }
 }
 
-/// One number per parameter, shared by every lane (`Block::params_shared`): the same values as
+/// One number per parameter, shared by every lane (`Block::sharing`): the same values as
 /// the rows would hold, so the same bits, in fewer registers.
 #[derive(Clone, Copy)]
 pub(super) struct Shared {
