@@ -162,6 +162,7 @@ pub fn fastest<R>(work: impl FnOnce() -> R) -> R {
     enable = "avx512f,avx512bw,avx512cd,avx512dq,avx512vl,avx2,avx,fma,bmi1,bmi2,f16c,lzcnt,movbe,popcnt,sse4.2"
 )]
 unsafe fn on_v4<R, F: FnOnce() -> R>(work: F) -> R {
+    align_frame();
     work()
 }
 
@@ -172,7 +173,25 @@ unsafe fn on_v4<R, F: FnOnce() -> R>(work: F) -> R {
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,avx,fma,bmi1,bmi2,f16c,lzcnt,movbe,popcnt,sse4.2")]
 unsafe fn on_v3<R, F: FnOnce() -> R>(work: F) -> R {
+    align_frame();
     work()
+}
+
+/// Makes the calling clone align its stack frame to a cache line (64 bytes), so that the vector
+/// registers it spills (AVX-512: 64 bytes, AVX2: 32) never straddle two lines. Without it the
+/// frame is only 16-byte aligned and the spill slots' alignment follows the callers' stack depth:
+/// the ensemble's 16-lane tiles (which spill, `ensemble/tile.rs`) ran 20–35 % slower in some frames
+/// than in others — one worker of the same run slower than the other, and a change anywhere in the
+/// callers moving the speed by 5–15 % (docs/performance.md, "The frame's alignment"). A 64-byte
+/// aligned local that escapes makes LLVM realign the frame (one `and` of the stack pointer per call
+/// of the clone) and give the spill slots their natural alignment.
+#[cfg(target_arch = "x86_64")]
+#[inline(always)]
+fn align_frame() {
+    #[repr(align(64))]
+    struct CacheLine(#[allow(dead_code)] [u8; 64]);
+    let mut line = CacheLine([0; 64]);
+    std::hint::black_box(&mut line);
 }
 
 /// x rounded to the nearest integer, halfway cases away from zero: the same number as

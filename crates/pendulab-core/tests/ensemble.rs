@@ -237,30 +237,43 @@ fn damped_trajectories_match_the_damped_model_bit_for_bit() {
     use pendulab_core::Params;
     let n = LANES + 5;
     let s = starts(n, 1.0);
-    // per-trajectory damping, including undamped lanes inside a damped block
+    // per-trajectory damping, including undamped lanes inside a damped block; with one length
+    // (the tiles' `Damping` form: ensemble/tile_params.rs) and with lengths per trajectory too
+    // (`PerLane`), both arithmetics
     let damping: Vec<f64> =
         (0..n).map(|k| if k % 3 == 0 { 0.0 } else { 0.05 * k as f64 / n as f64 }).collect();
-    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
-    let set = RattleSettings {
-        damping: &damping,
-        save: EnsembleSave::Every(500),
-        with_summary: true,
-        ..RattleSettings::new(&[1.0], &[9.81], 1e-3, 2000)
-    };
-    let res = run(&s, &set, &p, &c).unwrap();
-    for k in 0..n {
-        let params = Params::new(1.0, 1.0, 9.81).unwrap();
-        let m = AnyModel::build("damped", params, &[("damping", damping[k])]).unwrap();
-        let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..SolveOptions::default() };
-        let mut st = Stepper::new(m, 0.0, s[k], &opts).unwrap();
-        for (j, &t) in res.t.iter().enumerate() {
-            st.step_to(t).unwrap();
-            assert_eq!(res.trajectory(k)[j], st.state(), "trajectory {k} (c = {}) at t = {t}", damping[k]);
+    let per_lane: Vec<f64> = (0..n).map(|k| 1.0 + 0.02 * (k % 2) as f64).collect();
+    let scaled: Vec<State> =
+        s.iter().zip(&per_lane).map(|(st, &l)| State { x: st.x * l, v: st.v * l }).collect();
+    for (lengths, starts) in [(&[1.0][..], &s), (&per_lane[..], &scaled)] {
+        for arithmetic in Arithmetic::ALL {
+            let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+            let set = RattleSettings {
+                damping: &damping,
+                save: EnsembleSave::Every(500),
+                with_summary: true,
+                arithmetic,
+                ..RattleSettings::new(lengths, &[9.81], 1e-3, 2000)
+            };
+            let res = run(starts, &set, &p, &c).unwrap();
+            for k in 0..n {
+                let l = lengths[k.min(lengths.len() - 1)];
+                let params = Params::new(l, 1.0, 9.81).unwrap();
+                let m = AnyModel::build("damped", params, &[("damping", damping[k])]).unwrap();
+                let opts = SolveOptions { method: Method::Rattle, dt: 1e-3, ..SolveOptions::default() };
+                let mut st = Stepper::new(m, 0.0, starts[k], &opts).unwrap();
+                st.set_arithmetic(arithmetic).unwrap();
+                for (j, &t) in res.t.iter().enumerate() {
+                    st.step_to(t).unwrap();
+                    let what = format!("{arithmetic:?}, {} lengths: trajectory {k}", lengths.len());
+                    assert_eq!(res.trajectory(k)[j], st.state(), "{what} (c = {}) at t = {t}", damping[k]);
+                }
+            }
+            // energy decays where c > 0 (E/m max is the start, min is far below it)
+            let sum = res.summary.unwrap();
+            assert!(sum[1].energy_per_mass.1 - sum[1].energy_per_mass.0 > 1e-4);
         }
     }
-    // energy decays where c > 0 (E/m max is the start, min is far below it)
-    let sum = res.summary.unwrap();
-    assert!(sum[1].energy_per_mass.1 - sum[1].energy_per_mass.0 > 1e-4);
 }
 
 /// θ(t) of the linearised damped pendulum θ'' + c θ' + ω₀² θ = 0 from θ₀ at rest.

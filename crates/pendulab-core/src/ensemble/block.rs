@@ -31,7 +31,7 @@ use glam::DVec3;
 
 use super::block_state::{Block, Track};
 use super::tile::Tile;
-use super::tile_params::{Lengths, PerLane, Shared, TileParams};
+use super::tile_params::{Damping, Lengths, PerLane, Shared, TileParams};
 use super::{Lanes, LANES};
 
 /// The widest tile: lanes stepped together in registers at x86-64-v4 (module doc; [`LANES`] is a
@@ -42,6 +42,7 @@ pub const TILE: usize = 16;
 enum Sharing {
     All,
     AllButLengths,
+    AllButDamping,
     Some,
 }
 
@@ -59,21 +60,41 @@ pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
 impl Block {
     /// `chunk` steps of `h` [s] of every lane, the first being step number `first` + 1 of the run
     /// (for the settle tracking), tile by tile (module doc), with the multiply-adds rounded as `A`
-    /// (`rattle_kernel::Unfused` or `Fused`, as the single-trajectory path it is compared with).
+    /// (`rattle_kernel::Unfused` or `Fused`, as the single-trajectory path it is compared with), the
+    /// loops compiled for the CPU's widest vectors (`crate::isa`).
+    ///
+    /// The tile's width and parameter form are chosen here, and each choice runs in its own clone
+    /// of `isa::fastest` (one function per width, form and level): the loops of one form are
+    /// compiled and register-allocated alone, not as one arm of a function holding all of them.
     #[inline(always)]
     pub fn steps<A: MulAdd>(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
-        // the tile for the level this runs at (module doc); the arms of the other levels are
-        // compiled into each level's clone too, but never taken there
         let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
         match (tile_lanes(isa::current(), arithmetic), self.sharing()) {
-            (16, Sharing::All) => self.steps_tiled::<A, 16, Shared>(chunk, h, first, track),
-            (16, Sharing::AllButLengths) => self.steps_tiled::<A, 16, Lengths<16>>(chunk, h, first, track),
-            (16, _) => self.steps_tiled::<A, 16, PerLane<16>>(chunk, h, first, track),
-            (8, Sharing::All) => self.steps_tiled::<A, 8, Shared>(chunk, h, first, track),
-            (8, _) => self.steps_tiled::<A, 8, PerLane<8>>(chunk, h, first, track),
-            (_, Sharing::All) => self.steps_tiled::<A, 4, Shared>(chunk, h, first, track),
-            (_, _) => self.steps_tiled::<A, 4, PerLane<4>>(chunk, h, first, track),
+            (16, Sharing::All) => self.steps_at::<A, 16, Shared<16>>(chunk, h, first, track),
+            (16, Sharing::AllButLengths) => self.steps_at::<A, 16, Lengths<16>>(chunk, h, first, track),
+            (16, Sharing::AllButDamping) => self.steps_at::<A, 16, Damping<16>>(chunk, h, first, track),
+            (16, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, h, first, track),
+            (8, Sharing::All) => self.steps_at::<A, 8, Shared<8>>(chunk, h, first, track),
+            (8, _) => self.steps_at::<A, 8, PerLane<8>>(chunk, h, first, track),
+            (_, Sharing::All) => self.steps_at::<A, 4, Shared<4>>(chunk, h, first, track),
+            (_, _) => self.steps_at::<A, 4, PerLane<4>>(chunk, h, first, track),
         }
+    }
+
+    /// [`Block::steps_tiled`] in its own clone of `isa::fastest` (the closure's type is distinct
+    /// for each `A`, `T`, `P`).
+    #[inline(always)]
+    fn steps_at<A: MulAdd, const T: usize, P: TileParams>(
+        &mut self,
+        chunk: u64,
+        h: f64,
+        first: u64,
+        track: Track,
+    ) {
+        isa::fastest(
+            #[inline(always)]
+            || self.steps_tiled::<A, T, P>(chunk, h, first, track),
+        )
     }
 
     /// Which parameters every lane shares (bit for bit): all of l², 1/l², g and the damping factor
@@ -81,9 +102,11 @@ impl Block {
     /// shared parameters as one number each instead of a row (`tile.rs`).
     fn sharing(&self) -> Sharing {
         let same = |a: &Lanes| a.iter().all(|&y| y.to_bits() == a[0].to_bits());
-        match (same(&self.l2) && same(&self.inv_l2), same(&self.g) && same(&self.decay_half)) {
-            (true, true) => Sharing::All,
-            (false, true) => Sharing::AllButLengths,
+        let lengths = same(&self.l2) && same(&self.inv_l2);
+        match (lengths, same(&self.g), same(&self.decay_half)) {
+            (true, true, true) => Sharing::All,
+            (false, true, true) => Sharing::AllButLengths,
+            (true, true, false) => Sharing::AllButDamping,
             _ => Sharing::Some,
         }
     }

@@ -213,14 +213,8 @@ impl BlockRun<'_> {
             let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
             // the lane loops compiled for the CPU's widest vectors (AVX-512, AVX2 + FMA; crate::isa)
             match self.arithmetic {
-                Arithmetic::Unfused => crate::isa::fastest(
-                    #[inline(always)]
-                    || blk.steps::<Unfused>(chunk, self.dt, done, track),
-                ),
-                Arithmetic::Fused => crate::isa::fastest(
-                    #[inline(always)]
-                    || blk.steps::<Fused>(chunk, self.dt, done, track),
-                ),
+                Arithmetic::Unfused => blk.steps::<Unfused>(chunk, self.dt, done, track),
+                Arithmetic::Fused => blk.steps::<Fused>(chunk, self.dt, done, track),
             }
             done += chunk;
             self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);

@@ -36,6 +36,7 @@
 
 use crate::integrate::rattle_kernel::{
     advance_position, advance_velocity, fmadd3, Fused, MulAdd, PositionQuadratic, ProjectionPolynomial,
+    SeriesTerms,
 };
 use crate::integrate::rattle_vertical::VerticalField;
 use glam::DVec3;
@@ -54,6 +55,17 @@ pub(super) struct Tile<const T: usize, P> {
     cx: [Row<T>; 3],
     cv: [Row<T>; 3],
     params: P,
+    /// Whether a lane needed more than the short series (`SeriesTerms::Short`) at an earlier step
+    /// of this chunk: then the tile takes the full series first.
+    long: bool,
+}
+
+/// How a pass over the lanes finds μ: the series with the terms given, or
+/// `PositionQuadratic::multiplier` (the series where it applies, the closed form elsewhere).
+#[derive(Clone, Copy)]
+enum Multiplier {
+    Series(SeriesTerms),
+    Closed,
 }
 
 /// The position quadratics of a tile's lanes, one row per coefficient (the first half of a step
@@ -82,7 +94,8 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     #[inline(always)]
     pub(super) fn load(b: &Block, o: usize) -> Self {
         let rows = |a: &[Lanes; 3]| [row(&a[0], o), row(&a[1], o), row(&a[2], o)];
-        Self { x: rows(&b.x), v: rows(&b.v), cx: rows(&b.cx), cv: rows(&b.cv), params: P::load(b, o) }
+        let params = P::load(b, o);
+        Self { x: rows(&b.x), v: rows(&b.v), cx: rows(&b.cx), cv: rows(&b.cv), params, long: false }
     }
 
     /// Writes the tile's state back to lanes o…o + T of the block.
@@ -106,8 +119,13 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         if A::FUSED && !P::TWO_HALVES {
             // rows of parameters and the fused step's temporaries do not all fit in the registers
             // at once: one pass, its result kept aside (module doc)
-            if !self.rattle_vertical_one_pass(h, false) {
-                self.rattle_vertical_one_pass(h, true);
+            let short =
+                !self.long && self.rattle_vertical_one_pass(h, Multiplier::Series(SeriesTerms::Short));
+            if !short {
+                self.long = true;
+                if !self.rattle_vertical_one_pass(h, Multiplier::Series(SeriesTerms::Full)) {
+                    self.rattle_vertical_one_pass(h, Multiplier::Closed);
+                }
             }
         } else if A::FUSED {
             self.rattle_vertical(h);
@@ -138,33 +156,52 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     }
 
     /// The first half of a step: every lane's position quadratic (its rows kept in `quads`) and
-    /// multiplier μ [1/s] (returned): the Catalan series, or, in the rare step where some lane is
-    /// outside its range, `PositionQuadratic::multiplier` for every lane (the series where it
-    /// applies, so the other lanes keep the same bits; the closed form elsewhere). `quadratic` is
-    /// lane i's (w, quadratic) as the step computes them.
+    /// multiplier μ [1/s] (returned): the Catalan series, short (`SeriesTerms::Short`, up to y³)
+    /// unless an earlier step of the chunk needed more, full where some lane needs it, or, in the
+    /// rare step where some lane is outside the full series' range (large h|v|),
+    /// `PositionQuadratic::multiplier` for every lane. Each lane gets the bits of the
+    /// single-trajectory path's `multiplier`, whichever pass gave them (`rattle_kernel` module doc).
+    /// `quadratic` is lane i's (w, quadratic) as the step computes them.
     #[inline(always)]
-    #[allow(clippy::needless_range_loop)] // lane i of several arrays at once: the loop the compiler vectorises
     fn multipliers<A: MulAdd>(
-        &self,
+        &mut self,
         h: f64,
         quads: &mut Quads<T>,
         quadratic: impl Fn(&Self, usize) -> (DVec3, PositionQuadratic),
     ) -> Row<T> {
+        if A::FUSED && !self.long {
+            if let Some(mu) = self.series_pass::<A>(h, quads, &quadratic, SeriesTerms::Short) {
+                return mu;
+            }
+            self.long = true;
+        }
+        if let Some(mu) = self.series_pass::<A>(h, quads, &quadratic, SeriesTerms::Full) {
+            return mu;
+        }
+        std::array::from_fn(|i| quadratic(self, i).1.multiplier::<A>(h))
+    }
+
+    /// μ [1/s] of every lane from the series with `terms`, the quadratics kept in `quads`; `None`
+    /// when it does not apply to some lane.
+    #[inline(always)]
+    #[allow(clippy::needless_range_loop)] // lane i of several arrays at once: the loop the compiler vectorises
+    fn series_pass<A: MulAdd>(
+        &self,
+        h: f64,
+        quads: &mut Quads<T>,
+        quadratic: &impl Fn(&Self, usize) -> (DVec3, PositionQuadratic),
+        terms: SeriesTerms,
+    ) -> Option<Row<T>> {
         let mut mu = [0.0; T];
         let mut ok = true;
         for i in 0..T {
             let (_, quad) = quadratic(self, i);
-            let (m, in_range) = quad.multiplier_series::<A>(h);
+            let (m, in_range) = quad.multiplier_series_with::<A>(h, terms);
             ok &= in_range;
             mu[i] = m;
             quads.set(i, &quad);
         }
-        if !ok {
-            for i in 0..T {
-                mu[i] = quadratic(self, i).1.multiplier::<A>(h);
-            }
-        }
-        mu
+        ok.then_some(mu)
     }
 
     /// One undamped RATTLE step of every lane with the single-trajectory path's arithmetic
@@ -223,13 +260,13 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         }
     }
 
-    /// [`Tile::rattle_vertical`] in one pass over the lanes, the new state kept aside and committed
-    /// only if every lane was within the series' range (with `closed` false; with `closed` true, μ is
-    /// `PositionQuadratic::multiplier` for every lane): the same bits, faster than two halves when
-    /// the parameters are rows (module doc).
+    /// [`Tile::rattle_vertical`] in one pass over the lanes with μ as `how` gives it, the new state
+    /// kept aside and committed only if every lane was within the series' range (always with
+    /// `Multiplier::Closed`): the same bits, faster than two halves when the parameters are rows
+    /// (module doc).
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
-    fn rattle_vertical_one_pass(&mut self, h: f64, closed: bool) -> bool {
+    fn rattle_vertical_one_pass(&mut self, h: f64, how: Multiplier) -> bool {
         let half = 0.5 * h;
         let mut next = [[[0.0; T]; 3]; 4];
         let mut ok = true;
@@ -239,12 +276,13 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
             let (l2, inv_l2) = (self.params.l2(i), self.params.inv_l2(i));
             let field = VerticalField { h, kick0: kick, kick1: kick, l2, inv_l2 };
             let (w, quad) = field.quadratic(x0, v0);
-            let mu = if closed {
-                quad.multiplier::<Fused>(h)
-            } else {
-                let (mu, in_range) = quad.multiplier_series::<Fused>(h);
-                ok &= in_range;
-                mu
+            let mu = match how {
+                Multiplier::Closed => quad.multiplier::<Fused>(h),
+                Multiplier::Series(terms) => {
+                    let (mu, in_range) = quad.multiplier_series_with::<Fused>(h, terms);
+                    ok &= in_range;
+                    mu
+                }
             };
             let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
             let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);

@@ -1,9 +1,11 @@
-//! A tile's parameters l² \[m²\], 1/l² [1/m²], g [m/s²] and e^{−c dt/2} (`tile.rs`): a row of `T`
-//! values each ([`PerLane`]: lengths, g or damping per trajectory), rows of the lengths only
-//! ([`Lengths`]: g and damping shared), or one number each ([`Shared`]: one pendulum, many starts).
-//! The same values in every form, so the same bits; the forms differ in how many vector registers
-//! they take, which decides how the fused step is taken (`TileParams::TWO_HALVES`, module doc of
-//! `tile.rs`). SI units.
+//! A tile's parameters l² \[m²\], 1/l² [1/m²], g [m/s²] and e^{−c dt/2} (`tile.rs`), each held as a
+//! row of `T` values (it differs from lane to lane) or as one number (every lane of the block has
+//! the same one, bit for bit): [`Params`] over a [`Lane`] per parameter. The forms the tiles take
+//! are [`Shared`] (one pendulum, many starts: the usual ensemble), [`Lengths`] (lengths per
+//! trajectory), [`Damping`] (damping per trajectory) and [`PerLane`] (everything else). The same
+//! values in every form, so the same bits; the forms differ in how many vector registers they take,
+//! which decides how the fused step is taken ([`TileParams::TWO_HALVES`], module doc of `tile.rs`).
+//! SI units.
 
 use super::block_state::Block;
 use super::Lanes;
@@ -17,10 +19,48 @@ pub(super) fn row<const T: usize>(a: &Lanes, o: usize) -> Row<T> {
     std::array::from_fn(|i| a[o + i])
 }
 
+/// One parameter of the `T` lanes of a tile: a row, or one number shared by every lane.
+pub(super) trait Lane<const T: usize>: Copy {
+    /// How many rows (vector registers per `T` lanes) it takes: 1 for a row, 0 for one number.
+    const ROWS: usize;
+    /// Lanes o…o + T of the block's values `a`.
+    fn load(a: &Lanes, o: usize) -> Self;
+    /// Lane `i`'s value.
+    fn at(&self, i: usize) -> f64;
+}
+
+impl<const T: usize> Lane<T> for Row<T> {
+    const ROWS: usize = 1;
+    #[inline(always)]
+    fn load(a: &Lanes, o: usize) -> Self {
+        row(a, o)
+    }
+    #[inline(always)]
+    fn at(&self, i: usize) -> f64 {
+        self[i]
+    }
+}
+
+/// One number for every lane (the block's lanes share it bit for bit, `Block::sharing`).
+#[derive(Clone, Copy)]
+pub(super) struct One(f64);
+
+impl<const T: usize> Lane<T> for One {
+    const ROWS: usize = 0;
+    #[inline(always)]
+    fn load(a: &Lanes, o: usize) -> Self {
+        One(a[o])
+    }
+    #[inline(always)]
+    fn at(&self, _: usize) -> f64 {
+        self.0
+    }
+}
+
 /// A tile's parameters: l² \[m²\], 1/l² [1/m²], g [m/s²] and e^{−c dt/2} of lane `i`.
 pub(super) trait TileParams: Copy {
-    /// Whether the fused step goes in two halves (module doc): true when the parameters take few
-    /// registers.
+    /// Whether the fused step goes in two halves (module doc of `tile.rs`): true when the parameters
+    /// take few registers (at most two rows).
     const TWO_HALVES: bool;
     /// Lanes o…o + T of the block's parameters.
     fn load(b: &Block, o: usize) -> Self;
@@ -30,107 +70,49 @@ pub(super) trait TileParams: Copy {
     fn decay_half(&self, i: usize) -> f64;
 }
 
-/// One row per parameter (lanes with their own lengths, g or damping).
+/// The parameters of `T` lanes: the lengths (l² and 1/l²) as `L`, g as `G`, e^{−c dt/2} as `D`.
 #[derive(Clone, Copy)]
-pub(super) struct PerLane<const T: usize> {
-    l2: Row<T>,
-    inv_l2: Row<T>,
-    g: Row<T>,
-    decay_half: Row<T>,
+pub(super) struct Params<const T: usize, L, G, D> {
+    l2: L,
+    inv_l2: L,
+    g: G,
+    decay_half: D,
 }
 
-impl<const T: usize> TileParams for PerLane<T> {
-    const TWO_HALVES: bool = false;
+impl<const T: usize, L: Lane<T>, G: Lane<T>, D: Lane<T>> TileParams for Params<T, L, G, D> {
+    const TWO_HALVES: bool = 2 * L::ROWS + G::ROWS + D::ROWS <= 2;
     #[inline(always)]
     fn load(b: &Block, o: usize) -> Self {
         Self {
-            l2: row(&b.l2, o),
-            inv_l2: row(&b.inv_l2, o),
-            g: row(&b.g, o),
-            decay_half: row(&b.decay_half, o),
+            l2: L::load(&b.l2, o),
+            inv_l2: L::load(&b.inv_l2, o),
+            g: G::load(&b.g, o),
+            decay_half: D::load(&b.decay_half, o),
         }
     }
     #[inline(always)]
     fn l2(&self, i: usize) -> f64 {
-        self.l2[i]
+        self.l2.at(i)
     }
     #[inline(always)]
     fn inv_l2(&self, i: usize) -> f64 {
-        self.inv_l2[i]
+        self.inv_l2.at(i)
     }
     #[inline(always)]
     fn g(&self, i: usize) -> f64 {
-        self.g[i]
+        self.g.at(i)
     }
     #[inline(always)]
     fn decay_half(&self, i: usize) -> f64 {
-        self.decay_half[i]
+        self.decay_half.at(i)
     }
 }
 
-/// Rows of l² and 1/l² (lengths per trajectory), one number for g and e^{−c dt/2} shared by every lane.
-#[derive(Clone, Copy)]
-pub(super) struct Lengths<const T: usize> {
-    l2: Row<T>,
-    inv_l2: Row<T>,
-    g: f64,
-    decay_half: f64,
-}
-
-impl<const T: usize> TileParams for Lengths<T> {
-    const TWO_HALVES: bool = true;
-    #[inline(always)]
-    fn load(b: &Block, o: usize) -> Self {
-        Self { l2: row(&b.l2, o), inv_l2: row(&b.inv_l2, o), g: b.g[o], decay_half: b.decay_half[o] }
-    }
-    #[inline(always)]
-    fn l2(&self, i: usize) -> f64 {
-        self.l2[i]
-    }
-    #[inline(always)]
-    fn inv_l2(&self, i: usize) -> f64 {
-        self.inv_l2[i]
-    }
-    #[inline(always)]
-    fn g(&self, _: usize) -> f64 {
-        self.g
-    }
-    #[inline(always)]
-    fn decay_half(&self, _: usize) -> f64 {
-        self.decay_half
-    }
-}
-
-/// One number per parameter, shared by every lane (`Block::sharing`): the same values as
-/// the rows would hold, so the same bits, in fewer registers.
-#[derive(Clone, Copy)]
-pub(super) struct Shared {
-    l2: f64,
-    inv_l2: f64,
-    g: f64,
-    decay_half: f64,
-}
-
-impl TileParams for Shared {
-    const TWO_HALVES: bool = true;
-    #[inline(always)]
-    fn load(b: &Block, o: usize) -> Self {
-        Self { l2: b.l2[o], inv_l2: b.inv_l2[o], g: b.g[o], decay_half: b.decay_half[o] }
-    }
-    #[inline(always)]
-    fn l2(&self, _: usize) -> f64 {
-        self.l2
-    }
-    #[inline(always)]
-    fn inv_l2(&self, _: usize) -> f64 {
-        self.inv_l2
-    }
-    #[inline(always)]
-    fn g(&self, _: usize) -> f64 {
-        self.g
-    }
-    #[inline(always)]
-    fn decay_half(&self, _: usize) -> f64 {
-        self.decay_half
-    }
-}
+/// Every parameter shared by all lanes (one pendulum, many starts).
+pub(super) type Shared<const T: usize> = Params<T, One, One, One>;
+/// Lengths per lane; g and damping shared.
+pub(super) type Lengths<const T: usize> = Params<T, Row<T>, One, One>;
+/// Damping per lane; lengths and g shared.
+pub(super) type Damping<const T: usize> = Params<T, One, One, Row<T>>;
+/// Every parameter a row (lengths, g or damping per lane in another combination).
+pub(super) type PerLane<const T: usize> = Params<T, Row<T>, Row<T>, Row<T>>;

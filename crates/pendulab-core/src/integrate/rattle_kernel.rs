@@ -40,7 +40,9 @@
 //! The fused arithmetic also takes shorter forms that the default cannot without changing its
 //! bits: the series as a polynomial in y = 4z = (q/b)(c/b), C = Σ (Catₙ/4ⁿ) yⁿ (coefficients 1, 1/4,
 //! 1/8, 5/64, 7/128, 21/512, 33/1024, exact in binary) by Estrin's scheme (pairs in y, then y², then
-//! y⁴: 3 multiply-adds deep instead of Horner's 6), |y| ≤ 4·[`SERIES_LIMIT`]; the projection
+//! y⁴: 3 multiply-adds deep instead of Horner's 6), |y| ≤ 4·[`SERIES_LIMIT`], stopped after y³ where
+//! |y| ≤ [`SHORT_SERIES_LIMIT`] (truncation < 5.5·10⁻¹⁸ relative there: four fewer operations on
+//! the step of almost every trajectory, the ensemble's throughput being bound by their count); the projection
 //! polynomial scaled by 1/l² once, p = (a' + μ (b' + μ c'))/l²; and, in a vertical field, the step of
 //! `rattle_vertical.rs` (docs/performance.md, "How fast, and why"). `tests/rattle_unfused.rs` checks the stepper and the ensemble against both
 //! arithmetics written out by hand. SI units: lengths \[m\], velocities [m/s], h \[s\].
@@ -50,6 +52,23 @@ use glam::DVec3;
 /// Largest |z| for which the truncated Catalan series is used (relative truncation error
 /// < 429 |z|⁷ / (1 − 4|z|) < 4.3·10⁻¹⁹).
 pub const SERIES_LIMIT: f64 = 1e-3;
+
+/// Largest |y| = 4|z| for which the fused arithmetic stops the series after y³ (relative truncation
+/// error < (Cat₄/4⁴) |y|⁴ / (1 − |y|) < 5.5·10⁻¹⁸, a twentieth of the rounding of μ itself; module
+/// doc). |y| ≈ (h |v| / l)²: every step with h |v| ≤ l / 100.
+pub const SHORT_SERIES_LIMIT: f64 = 1e-4;
+
+/// How many terms of the series [`PositionQuadratic::multiplier_series_with`] computes (fused
+/// arithmetic; the unfused one has one form): the ensemble's tiles try the short form first, for
+/// every lane at once, and take the full one only when some lane needs it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum SeriesTerms {
+    /// Up to y³, applying where |y| ≤ [`SHORT_SERIES_LIMIT`].
+    Short,
+    /// Up to y³ where |y| ≤ [`SHORT_SERIES_LIMIT`], up to y⁶ elsewhere, applying where
+    /// |y| ≤ 4·[`SERIES_LIMIT`].
+    Full,
+}
 
 /// How the RATTLE kernel rounds its multiply-adds a·b + c (module doc): `Unfused` (the default; two
 /// roundings, the same bits on every CPU and in WebAssembly, fast everywhere) or `Fused` (opt-in; one
@@ -172,20 +191,37 @@ impl PositionQuadratic {
     /// [`SERIES_LIMIT`] and b > 0). When it does not, the returned μ is meaningless.
     #[inline(always)]
     pub fn multiplier_series<A: MulAdd>(&self, h: f64) -> (f64, bool) {
+        self.multiplier_series_with::<A>(h, SeriesTerms::Full)
+    }
+
+    /// [`PositionQuadratic::multiplier_series`] computed with the `terms` given: with the fused
+    /// arithmetic, `Short` computes the series only up to y³ and says it applies only where
+    /// |y| ≤ [`SHORT_SERIES_LIMIT`] (and b > 0); where it applies, μ has the same bits as with `Full`
+    /// (which takes the same short polynomial there). The unfused arithmetic has one form.
+    #[inline(always)]
+    pub fn multiplier_series_with<A: MulAdd>(&self, h: f64, terms: SeriesTerms) -> (f64, bool) {
         let ib = 1.0 / self.b;
         if A::FUSED {
             // y = 4z = (q/b)(c/b) and C as a polynomial in y with the exact binary coefficients
-            // Catₙ/4ⁿ, by Estrin's scheme: 7 products and 6 multiply-adds, 3 multiply-adds deep
-            // (Horner: 6 deep) on the step's dependency chain (module doc)
+            // Catₙ/4ⁿ by Estrin's scheme, 3 multiply-adds deep (Horner: 6); up to y³ (4 products and
+            // multiply-adds) where |y| ≤ SHORT_SERIES_LIMIT, up to y⁶ (4 more) elsewhere (module doc)
             let t = self.c * ib;
             let y = (self.q * ib) * t;
             let f = A::fmadd;
             let (y2, p01, p23) = (y * y, f(0.25, y, 1.0), f(5.0 / 64.0, y, 0.125));
-            let p45 = f(21.0 / 512.0, y, 7.0 / 128.0);
-            let (p03, p46) = (f(p23, y2, p01), f(33.0 / 1024.0, y2, p45));
-            let series = f(p46, y2 * y2, p03);
+            let p03 = f(p23, y2, p01);
+            let short = y.abs() <= SHORT_SERIES_LIMIT;
+            let (series, in_range) = match terms {
+                SeriesTerms::Short => (p03, short),
+                SeriesTerms::Full => {
+                    let p45 = f(21.0 / 512.0, y, 7.0 / 128.0);
+                    let p46 = f(33.0 / 1024.0, y2, p45);
+                    let full = f(p46, y2 * y2, p03);
+                    (if short { p03 } else { full }, y.abs() <= 4.0 * SERIES_LIMIT)
+                }
+            };
             let mu = t * (-0.5 / h) * series;
-            return (mu, y.abs() <= 4.0 * SERIES_LIMIT && self.b > 0.0);
+            return (mu, in_range && self.b > 0.0);
         }
         let z = 0.25 * self.q * self.c * (ib * ib);
         let z2 = z * z;
