@@ -124,50 +124,76 @@ def api_vs_c_reps(steps: int, quick: bool) -> int:
     return (3 if quick else 9) if steps <= 1000 else (1 if quick else 3)
 
 
+def api_vs_c_variants(n: int) -> dict[str, tuple[dict[str, Any], np.ndarray, np.ndarray]]:
+    """Issue 29, item 3: the API's forms with per-trajectory parameters and damping, each as
+    (``pl.simulate_ensemble`` keywords, lengths [m] and g [m/s²] for the C ensemble, which runs the
+    same lengths and g but has no damping). "shared" is item 2's call (one pendulum, many starts)."""
+    ell = np.linspace(0.8, 1.2, n)
+    g = np.linspace(9.0, 10.0, n)
+    c = np.linspace(0.05, 0.5, n)
+    one, g0 = np.ones(n), np.full(n, 9.81)
+    return {
+        "shared": ({}, one, g0),
+        "lengths per trajectory": ({"length": ell}, ell, g0),
+        "damped (one c = 0.1/s)": ({"damping": np.full(n, 0.1)}, one, g0),
+        "damping per trajectory": ({"damping": c}, one, g0),
+        "lengths, g and damping per trajectory": ({"length": ell, "g": g, "damping": c}, ell, g),
+    }
+
+
 def api_vs_c_worker(quick: int) -> dict[str, Any]:
     """Run in a fresh child process (RAYON_NUM_THREADS = OMP_NUM_THREADS = 2): ``pl.simulate_ensemble``
     with its defaults and the C RK4 ensemble on the same 4096 starts, one warm-up call each, then
-    API, C, API, C, … ; the least wall time [s] and CPU time [s] of each side per step count."""
+    API, C, API, C, … ; the least wall time [s] and CPU time [s] of each side per step count; for
+    the one-pendulum call (``"steps"``) and for every form of :func:`api_vs_c_variants` (``"variants"``;
+    starts scaled onto each trajectory's sphere)."""
     import pendulab as pl
 
     n, threads, dt = API_VS_C["n"], API_VS_C["threads"], API_VS_C["dt"]
-    x, v, ell = ensemble_starts(n)
-    g = np.full(n, 9.81)
-    starts = np.hstack([x, v])
-    y0 = np.ascontiguousarray(starts.T)
-    p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)
-    out: dict[str, Any] = {"n": n, "threads": threads, "dt": dt, "steps": {}}
-    for steps in API_VS_C["steps"]:
-        meta: dict[str, Any] = {}
+    x, v, _ = ensemble_starts(n)
+    out: dict[str, Any] = {"n": n, "threads": threads, "dt": dt, "steps": {}, "variants": {}}
+    for name, (kw, ell, g) in api_vs_c_variants(n).items():
+        starts = np.hstack([x * ell[:, None], v * ell[:, None]])
+        y0 = np.ascontiguousarray(starts.T)
+        model = {"model": "damped", "damping": 0.1} if "damping" in kw else {}
+        p = pl.Pendulum(length=1.0, g=9.81, mass=1.0, **model)
+        by_steps: dict[str, Any] = {}
+        for steps in API_VS_C["steps"]:
+            meta: dict[str, Any] = {}
+            call = (p, starts, kw, y0, ell, g)
 
-        def api(s: int = steps, m: dict[str, Any] = meta) -> None:
-            res = pl.simulate_ensemble(p, starts, s * dt, dt=dt, summary=False, progress=False)
-            m["arithmetic"] = res.metadata.get("arithmetic", "unfused")
+            def api(s: int = steps, m: dict[str, Any] = meta, c: tuple[Any, ...] = call) -> None:
+                res = pl.simulate_ensemble(c[0], c[1], s * dt, dt=dt, summary=False, progress=False, **c[2])
+                m["arithmetic"] = res.metadata.get("arithmetic", "unfused")
 
-        def c_run(s: int = steps) -> None:
-            c_ensemble(y0.copy(), ell, g, dt, s, threads)
+            def c_run(s: int = steps, c: tuple[Any, ...] = call) -> None:
+                c_ensemble(c[3].copy(), c[4], c[5], dt, s, threads)
 
-        api(), c_run()
-        best = {"api": [math.inf, math.inf], "c": [math.inf, math.inf]}
-        reps = api_vs_c_reps(steps, bool(quick))
-        for _ in range(reps):
-            for side, f in (("api", api), ("c", c_run)):
-                # each timed call right after an untimed one of the same side: OpenMP's idle threads
-                # spin-wait for milliseconds after a C run and would take the cores from an API call timed
-                # right after it (measured: its 10³-step wall time 9.4 ms instead of 4.8), and after a
-                # pause both sides start cold (threads asleep); so every call is timed warm, as the best
-                # of N is meant to find the least disturbed run of each
-                f()
-                t0, c0 = time.perf_counter(), time.process_time()
-                f()
-                w, c = time.perf_counter() - t0, time.process_time() - c0
-                best[side] = [min(best[side][0], w), min(best[side][1], c)]
-        (wa, ca), (wc, cc) = best["api"], best["c"]
-        out["steps"][str(steps)] = {
-            "repeats": reps, "api_wall": wa, "api_cpu": ca, "c_wall": wc, "c_cpu": cc,
-            "ratio": wc / wa, "ratio_cpu": cc / ca, "api_rate": n * steps / wa, "c_rate": n * steps / wc,
-        }  # fmt: skip
-        out["arithmetic"] = meta["arithmetic"]
+            api(), c_run()
+            best = {"api": [math.inf, math.inf], "c": [math.inf, math.inf]}
+            reps = api_vs_c_reps(steps, bool(quick))
+            for _ in range(reps):
+                for side, f in (("api", api), ("c", c_run)):
+                    # each timed call right after an untimed one of the same side: OpenMP's idle threads
+                    # spin-wait for milliseconds after a C run and would take the cores from an API call
+                    # timed right after it (measured: its 10³-step wall time 9.4 ms instead of 4.8), and
+                    # after a pause both sides start cold (threads asleep); so every call is timed warm,
+                    # as the best of N is meant to find the least disturbed run of each
+                    f()
+                    t0, c0 = time.perf_counter(), time.process_time()
+                    f()
+                    w, c = time.perf_counter() - t0, time.process_time() - c0
+                    best[side] = [min(best[side][0], w), min(best[side][1], c)]
+            (wa, ca), (wc, cc) = best["api"], best["c"]
+            by_steps[str(steps)] = {
+                "repeats": reps, "api_wall": wa, "api_cpu": ca, "c_wall": wc, "c_cpu": cc,
+                "ratio": wc / wa, "ratio_cpu": cc / ca, "api_rate": n * steps / wa, "c_rate": n * steps / wc,
+            }  # fmt: skip
+            out["arithmetic"] = meta["arithmetic"]
+        if name == "shared":
+            out["steps"] = by_steps
+        else:
+            out["variants"][name] = by_steps
     return out
 
 
@@ -187,6 +213,9 @@ def api_vs_c(quick: bool) -> dict[str, Any]:
             f"C / API wall = {r['ratio']:.2f} (best of {r['repeats']})",
             flush=True,
         )
+    for name, by_steps in out.get("variants", {}).items():
+        ratios = ", ".join(f"{steps} steps {r['ratio']:.2f}" for steps, r in by_steps.items())
+        print(f"    {name}: C / API wall = {ratios}", flush=True)
     return out
 
 

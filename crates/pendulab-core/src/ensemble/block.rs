@@ -9,14 +9,21 @@
 //!
 //! The block is stored as 64 lanes, but stepped as [`tile_lanes`] lanes at a time (`tile.rs`: the
 //! step itself, register blocking, the multiplier's two halves, parameters shared by all lanes held
-//! as one number each). The tile's width is chosen per instruction-set level (and arithmetic), because what fits in the registers differs (docs/performance.md, "No CPU left behind",
-//! *The tile per level*; 4096 starts × 2000 steps, one thread, CPU time, ns per trajectory-step):
+//! as one number each). The tile's width is chosen per instruction-set level, because what fits in
+//! the registers differs (docs/performance.md, "No CPU left behind", *The tile per level*; 4096
+//! starts × 2000 steps, one thread, ns per trajectory-step, one pendulum for all starts; measured
+//! 2026-11-27 with the frames aligned, `isa::align_frame`, except the baseline row, 2026-11-26):
 //!
 //! | level (registers) | unfused: tile 4 / 8 / 16 | fused: tile 4 / 8 / 16 | tile chosen |
 //! |---|---|---|---|
-//! | x86-64-v4 (32 zmm, 8 lanes) | 6.8 / 3.65 / **3.0** | 5.9 / 2.9 / **2.1–2.3** | 16 |
-//! | x86-64-v3 (16 ymm, 4 lanes) | **5.9** / 6.6–6.8 / 7.3–7.4 | 4.9 / **3.45** / 6.1 | 4 unfused, 8 fused |
+//! | x86-64-v4 (32 zmm, 8 lanes) | – / – / **2.8–3.4** | – / – / **1.9** | 16 |
+//! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / **3.6** / 2.7 or 4.1 | 8 |
 //! | baseline SSE2 (16 xmm, 2 lanes) | **7.5** / 13.3 / 13.5 | 80 / 81 / 81 (software fma) | 4 |
+//!
+//! At x86-64-v3 the fused 16-lane tile ran at 2.7 ns in some processes and 4.1 in others (the same
+//! binary; not the stack's address: also with address randomisation off), the 8-lane one at 3.6 in
+//! all: 8 is taken. Before the frames were aligned the unfused 8-lane tile measured 6.6–6.8 there
+//! (its spills straddling cache lines), and 4 lanes were taken.
 //!
 //! 16 lanes are two AVX-512 registers per quantity: two independent dependency chains, so that the
 //! step's latency (the division 1/b and the multiply-add chains) overlaps the other chain's work;
@@ -47,13 +54,13 @@ enum Sharing {
 }
 
 /// Lanes stepped together in registers at instruction-set level `level` with `arithmetic` (module
-/// doc: 16 at x86-64-v4, 8 (fused) or 4 (unfused) at x86-64-v3, 4 at the baseline), each a divisor of
+/// doc: 16 at x86-64-v4, 8 at x86-64-v3, 4 at the baseline), each a divisor of
 /// [`LANES`]. Only the speed depends on it, never a bit of the results.
 pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
     match (level, arithmetic) {
         (Level::V4, _) => 16,
-        (Level::V3, Arithmetic::Fused) => 8,
-        _ => 4,
+        (Level::V3, _) => 8,
+        (Level::Baseline, _) => 4,
     }
 }
 
@@ -75,6 +82,7 @@ impl Block {
             (16, Sharing::AllButDamping) => self.steps_at::<A, 16, Damping<16>>(chunk, h, first, track),
             (16, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, h, first, track),
             (8, Sharing::All) => self.steps_at::<A, 8, Shared<8>>(chunk, h, first, track),
+            (8, Sharing::AllButLengths) => self.steps_at::<A, 8, Lengths<8>>(chunk, h, first, track),
             (8, _) => self.steps_at::<A, 8, PerLane<8>>(chunk, h, first, track),
             (_, Sharing::All) => self.steps_at::<A, 4, Shared<4>>(chunk, h, first, track),
             (_, _) => self.steps_at::<A, 4, PerLane<4>>(chunk, h, first, track),

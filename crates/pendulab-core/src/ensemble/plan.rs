@@ -21,6 +21,15 @@ fn pick(a: &[f64], k: usize) -> f64 {
     }
 }
 
+/// e^{−c dt/2} for damping c [1/s] and step dt [s]: exactly 1 (e^{−0}) for c = 0, no exp called.
+fn decay_half(c: f64, dt: f64) -> f64 {
+    if c == 0.0 {
+        1.0
+    } else {
+        (-c * (0.5 * dt)).exp()
+    }
+}
+
 /// The run's damping rates c [1/s]: the settings' own, or one 0 (undamped) when none are given.
 fn damping_of<'a>(settings: &RattleSettings<'a>) -> &'a [f64] {
     if settings.damping.is_empty() {
@@ -82,14 +91,18 @@ impl<'a> Plan<'a> {
                 allowed: "one value for all trajectories or one per trajectory",
             });
         }
+        let params = |k: usize| crate::state::Params::new(pick(length, k), 1.0, pick(g, k));
+        // one pendulum for all (the usual ensemble): its parameters checked once, not per start
+        let shared = if length.len() == 1 && g.len() == 1 { Some(params(0)?) } else { None };
         for (k, s) in starts.iter().enumerate() {
-            let p = crate::state::Params::new(pick(length, k), 1.0, pick(g, k))?;
+            let p = match shared {
+                Some(p) => p,
+                None => params(k)?,
+            };
             State::on_tangent_bundle(&p, s.x, s.v)?;
-            crate::error::require_non_negative(
-                "damping",
-                pick(damping, k),
-                "a finite damping rate c >= 0 [1/s]",
-            )?;
+        }
+        for &c in damping {
+            crate::error::require_non_negative("damping", c, "a finite damping rate c >= 0 [1/s]")?;
         }
         let cos_settle = match settings.settle_angle {
             None => f64::NEG_INFINITY,
@@ -149,15 +162,12 @@ impl<'a> Plan<'a> {
             l2: lanes(&|k| pick(length, k) * pick(length, k)),
             inv_l2: lanes(&|k| 1.0 / (pick(length, k) * pick(length, k))),
             g: lanes(&|k| pick(g, k)),
-            // e^{−c dt/2}; exactly 1 (e^{−0}) without damping, no exp called
-            decay_half: lanes(&|k| {
-                let c = pick(damping, k);
-                if c == 0.0 {
-                    1.0
-                } else {
-                    (-c * (0.5 * dt)).exp()
-                }
-            }),
+            // e^{−c dt/2}; exactly 1 (e^{−0}) without damping, no exp called; one exp for all lanes
+            // when they share c
+            decay_half: match damping {
+                &[c] => [decay_half(c, dt); LANES],
+                _ => lanes(&|k| decay_half(damping[k], dt)),
+            },
             damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
             down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
             cos_settle: self.cos_settle,

@@ -10,28 +10,26 @@
 //! side when a lane is damped.
 //!
 //! A step goes in two halves over the lanes: first every lane's position quadratic and multiplier μ
-//! by the Catalan series (`Tile::multipliers`; in the rare step where one lane is outside the series'
-//! range, large h|v|, μ of every lane again by `PositionQuadratic::multiplier`, which gives the
-//! lanes within range the same bits), then the rest of the step, written over the tile's state in
-//! place. Measured against one pass that kept the new state aside and committed it when every lane
-//! was in range (4096 starts × 2000 steps, one thread, x86-64-v4, CPU time, best and median of 5
-//! interleaved): unfused 3.97 → 3.13 ns per trajectory-step, fused 2.31 → 2.18 (docs/performance.md).
+//! (`Tile::multipliers`: with the fused arithmetic the Catalan series up to y³ for every lane, which
+//! applies where |y| ≤ `SHORT_SERIES_LIMIT`, almost every step; in a step where some lane is beyond
+//! it, and for the rest of the chunk, the full series, which takes the same short polynomial in the
+//! lanes within it; in the rare step where some lane is outside the full series' range, large h|v|,
+//! `PositionQuadratic::multiplier` for every lane — each lane gets its single path's bits whichever
+//! pass gave them), then the rest of the step, written over the tile's state in place. Measured
+//! against one pass that kept the new state aside and committed it when every lane was in range (4096
+//! starts × 2000 steps, one thread, x86-64-v4, CPU time, best and median of 5 interleaved): unfused
+//! 3.97 → 3.13 ns per trajectory-step, fused 2.31 → 2.18 (docs/performance.md).
 //!
-//! With the fused arithmetic and parameters as rows ([`PerLane`]: lengths, g or damping per
-//! trajectory) the two halves' temporaries and the rows no longer fit in the registers, and the step
-//! goes in one pass instead, its result kept aside and committed when every lane was in range
-//! (`Tile::rattle_vertical_one_pass`): per-lane lengths, one thread, 2.14–2.35 ns per trajectory-step
-//! against 2.5–2.9 in two halves (the same as before the two halves came, 2.18–2.3).
-//!
-//! When only the lengths differ from lane to lane (g and damping shared), the 16-lane tile holds l²
-//! and 1/l² as rows and g, e^{−c dt/2} as one number each ([`Lengths`]), and the fused step fits in
-//! two halves again: per-lane lengths 2.6–2.7 → 2.2–2.4 ns per trajectory-step (one thread, three
-//! interleaved rounds).
-//!
-//! The parameters l², 1/l², g and e^{−c dt/2} are rows of `T` values ([`PerLane`]), or, when every
-//! lane of the block has the same ones (one pendulum, many starts: the usual ensemble), one number
-//! each ([`Shared`]): the same values, so the same bits, and six AVX-512 registers fewer for the
-//! 16-lane tile (fused 2.49 → 2.31 ns, unfused 4.2 → 4.0, median of 6 interleaved).
+//! The parameters l², 1/l², g and e^{−c dt/2} are held per form (`tile_params.rs`): one number each
+//! when every lane of the block has the same (`Shared`: one pendulum, many starts, the usual
+//! ensemble), rows of the lengths or of the damping factor only (`Lengths`, `Damping`), or every one a
+//! row (`PerLane`): the same values, so the same bits, in fewer registers. With the fused arithmetic
+//! and every parameter a row the two halves' temporaries and the rows do not fit in the registers,
+//! and that form takes the step in one pass instead, its result kept aside and committed when every
+//! lane was in range (`Tile::rattle_vertical_one_pass`; 2.3–2.5 ns per trajectory-step against
+//! 2.1–2.8 in two halves, depending on the process). Measured with aligned frames (`isa::align_frame`),
+//! fused, one thread, 4096 starts × 2000 steps: one pendulum 1.9 ns, lengths per trajectory 1.95,
+//! damping per trajectory 2.05, one damping rate 2.07.
 //! SI units: \[m\], [m/s], [1/s], [m/s²].
 
 use crate::integrate::rattle_kernel::{
