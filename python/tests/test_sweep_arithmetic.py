@@ -2,8 +2,9 @@
 resolved once and recorded (metadata, manifest, chunk files, merged file), the same numbers bit for bit
 as ``pl.simulate_ensemble`` with that arithmetic, and honoured on resume — "auto" adopts the recorded
 arithmetic even where this CPU's "auto" resolves otherwise (``fused_is_fast`` monkeypatched, as in
-test_arithmetic.py), a named one that differs is refused, a file that records none warns. Times in
-seconds, angles in radians, lengths in metres."""
+test_arithmetic.py), a named one that differs is refused, a file that records none warns; the sweep
+file's ``[simulation] arithmetic`` and ``pendulab sweep --arithmetic`` (which overrides it) the same,
+bad values refused naming them. Times in seconds, angles in radians, lengths in metres."""
 
 from __future__ import annotations
 
@@ -15,11 +16,13 @@ from typing import Any
 import numpy as np
 import pyarrow.parquet as pq
 import pytest
+from test_cli import assert_user_error, invoke
 
 import pendulab as pl
 import pendulab.integrators as integrators
 from pendulab.sweeps import compute as sweep_compute
 from pendulab.sweeps.design import as_design
+from pendulab.sweeps.file import SweepFileError, load_sweep_file
 
 GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0])}
 QS = ["final_state", "energy_drift"]
@@ -177,3 +180,96 @@ def test_a_sweep_that_records_no_arithmetic_resumes_with_a_warning(
     assert calls == [1] and _same(first, again)  # written and resumed with this machine's "auto"
     assert "arithmetic" not in again.metadata["spec"] and "arithmetic" not in _manifest(out)["spec"]
     assert pl.sweep(GRID, QS, out=out, resume=True, **KW).stats["computed"] == 0  # no warning: nothing to do
+
+
+def _sweep_file(tmp_path: Path, arithmetic: str | None) -> Path:
+    """GRID, QS and KW as a sweep file, with ``[simulation] arithmetic`` if given (chunks of 4)."""
+    key = "" if arithmetic is None else f"arithmetic = {arithmetic}\n"
+    path = tmp_path / f"sw-{len(list(tmp_path.glob('sw-*.toml')))}.toml"
+    path.write_text(
+        'quantity = ["final_state", "energy_drift"]\n'
+        "[grid]\ntheta0 = { start = 0.3, stop = 2.5, num = 5 }\nphi_dot0 = [0.0, 1.5, -2.0]\n"
+        f"[simulation]\nt_end = 0.2\ndt = 1e-3\n{key}[run]\nchunk_size = 4\n"
+    )
+    return path
+
+
+@pytest.mark.parametrize("fma", [True, False])
+def test_sweep_file_key_and_cli_option(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, fma: bool) -> None:
+    """``[simulation] arithmetic`` reaches pl.sweep (the same numbers as naming it there, recorded in
+    the result and the manifest); without it the file's arithmetic is "auto" (this CPU's);
+    ``pendulab sweep --arithmetic`` overrides the file's key, as the other options its [run] table."""
+    _cpu(monkeypatch, fma)
+    auto = "fused" if fma else "unfused"
+    other = "unfused" if fma else "fused"
+    named = _sweep_file(tmp_path, f'"{other}"')
+    assert load_sweep_file(named).sweep_kwargs()["arithmetic"] == other
+    assert load_sweep_file(named).sweep_kwargs(arithmetic="auto")["arithmetic"] == "auto"
+    assert load_sweep_file(_sweep_file(tmp_path, None)).sweep_kwargs()["arithmetic"] == "auto"
+    for toml, option, want in (
+        (named, [], other),
+        (named, ["--arithmetic", auto], auto),
+        (named, ["--arithmetic", "auto"], auto),
+        (_sweep_file(tmp_path, None), [], auto),
+        (_sweep_file(tmp_path, '"auto"'), ["--arithmetic", other], other),
+    ):
+        out = tmp_path / f"out-{len(list(tmp_path.glob('out-*')))}"
+        code, stdout, stderr = invoke("sweep", str(toml), "--out", str(out), "--no-progress", *option)
+        assert code == 0, stderr
+        assert f"; arithmetic {want}\n" in stdout, (option, stdout)
+        res = pl.read_sweep(out)
+        assert res.metadata["spec"]["arithmetic"] == want and _manifest(out)["spec"]["arithmetic"] == want
+        assert _same(res, pl.sweep(GRID, QS, arithmetic=want, **KW)), (toml.read_text(), option)
+
+
+@pytest.mark.parametrize("value", ['"fma"', '"FUSED"', "3", "true"])
+def test_bad_arithmetic_in_a_sweep_file_or_on_the_command_line(tmp_path: Path, value: str) -> None:
+    """A bad ``[simulation] arithmetic`` is refused when the file is read, and a bad ``--arithmetic``
+    before it is, by pl.sweep's check: the key or option, the value and the allowed ones; exit code 2."""
+    allowed = "one of 'auto', 'unfused', 'fused'"
+    shown = value.replace('"', "'") if value.startswith('"') else value.capitalize()  # TOML true: True
+    path = _sweep_file(tmp_path, value)
+    with pytest.raises(SweepFileError) as e:
+        load_sweep_file(path)
+    assert f"{path}: [simulation] invalid arithmetic = {shown}: {allowed}" in str(e.value), str(e.value)
+    code, out, err = invoke("sweep", str(path), "--out", str(tmp_path / "o"), "--no-progress")
+    assert_user_error(code, out, err, "[simulation] invalid arithmetic", shown, allowed)
+    if value.startswith('"'):
+        good = _sweep_file(tmp_path, None)
+        code, out, err = invoke("sweep", str(good), "--out", str(tmp_path / "o"), "--arithmetic", value[1:-1])
+        assert_user_error(code, out, err, "--arithmetic", f"invalid arithmetic = {shown}", allowed)
+    assert not (tmp_path / "o").exists()
+
+
+def test_cli_resume_refuses_a_conflicting_arithmetic(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``pendulab sweep --resume`` keeps pl.sweep's rule: an arithmetic named by --arithmetic or by the
+    file's key that differs from the recorded one is refused before any work (exit code 2, naming
+    both); --arithmetic auto (and a file without the key) takes the recorded one and finishes the
+    sweep bit for bit as it was begun."""
+    _cpu(monkeypatch, False)  # this CPU's "auto" is unfused: resuming with it must not mix in unfused chunks
+    out = tmp_path / "sw"
+    code, _, stderr = invoke(
+        "sweep", str(_sweep_file(tmp_path, '"fused"')), "--out", str(out), "--no-progress"
+    )
+    assert code == 0, stderr
+    first = pl.sweep(GRID, QS, arithmetic="fused", **KW)
+    _drop_chunk(out, 2)
+    calls = _counting(monkeypatch)
+    unnamed = _sweep_file(tmp_path, None)
+    for toml, option in (
+        (unnamed, ["--arithmetic", "unfused"]),
+        (_sweep_file(tmp_path, '"unfused"'), []),
+        (_sweep_file(tmp_path, '"fused"'), ["--arithmetic", "unfused"]),
+    ):
+        code, stdout, stderr = invoke("sweep", str(toml), "--out", str(out), "--resume", *option)
+        assert_user_error(code, stdout, stderr, "arithmetic = 'unfused' differs from 'fused'", str(out))
+    assert calls == [0] and not (out / "chunk-000002.parquet").exists()
+    for option in (["--arithmetic", "auto"], []):
+        code, stdout, stderr = invoke(
+            "sweep", str(unnamed), "--out", str(out), "--resume", "--no-progress", *option
+        )
+        assert code == 0, stderr
+        assert "computed 1, skipped 3" in stdout and "; arithmetic fused\n" in stdout, stdout
+        assert _same(first, pl.read_sweep(out)) and _manifest(out)["spec"]["arithmetic"] == "fused"
+        _drop_chunk(out, 2)
+    assert calls == [2]

@@ -13,6 +13,8 @@ from typing import Annotated, Any
 import numpy as np
 import typer
 
+from .._core import InvalidInputError
+from ..integrators import check_arithmetic
 from ..sweeps.file import SweepFile, load_sweep_file
 from ..sweeps.results import MANIFEST
 from ..sweeps.run import BACKENDS, sweep
@@ -82,6 +84,15 @@ def sweep_cmd(
         int | None,
         typer.Option("--chunk-size", min=1, help="Points per chunk (default: the file's or auto)."),
     ] = None,
+    arithmetic: Annotated[
+        str | None,
+        typer.Option(
+            metavar="auto|unfused|fused",
+            help="RATTLE's multiply-adds (default: the file's [simulation] arithmetic, else auto; "
+            "with --resume, auto takes the recorded one).",
+            show_default=False,
+        ),
+    ] = None,
     resume: Annotated[
         bool, typer.Option("--resume", help="Continue the sweep in --out: skip the chunks already written.")
     ] = False,
@@ -96,14 +107,26 @@ def sweep_cmd(
     """Computes the sweep file's quantity at every point of its [grid] or [random] design, in chunks on
     a thread pool (default) or Dask (--backend dask: a LocalCluster of --workers processes; --scheduler:
     a running cluster), writing each chunk to --out as it finishes. Prints the plan, then per result
-    column its range and NaN count. Ctrl-C keeps the finished chunks; --resume does the rest."""
+    column its range and NaN count. Ctrl-C keeps the finished chunks; --resume does the rest.
+    --arithmetic overrides the file's [simulation] arithmetic, as the other options its [run] table."""
     with _user_errors():
         if workers is not None and scheduler is not None:
             _fail("--workers and --scheduler exclude each other (the scheduler's cluster has its workers)")
         if backend is not None and backend not in BACKENDS:
             _fail(f"--backend {backend!r}: use one of {', '.join(BACKENDS)}")
+        if arithmetic is not None:
+            try:
+                check_arithmetic(arithmetic, "rattle")  # pl.sweep's check, here before the file is read
+            except InvalidInputError as e:
+                _fail(f"--arithmetic: {e}")
         sf = load_sweep_file(_sweep_file(sweep_file))
-        kwargs = sf.sweep_kwargs(workers=workers, scheduler=scheduler, backend=backend, chunk_size=chunk_size)
+        kwargs = sf.sweep_kwargs(
+            workers=workers,
+            scheduler=scheduler,
+            backend=backend,
+            chunk_size=chunk_size,
+            arithmetic=arithmetic,
+        )
         if not quiet:
             _say(f"sweep {sweep_file}" + (f": {sf.title}" if sf.title else ""), err=True)
             _say(_plan(sf, kwargs), err=True)
@@ -119,9 +142,11 @@ def sweep_cmd(
         if quiet:
             return
         st = res.stats
+        used = res.metadata["spec"].get("arithmetic")  # resolved; none for exact quantities only
         _say(
             f"{st['chunks']} chunks of {st['chunk_size']} points: computed {st['computed']}, "
             f"skipped {st['skipped']} (already in --out); {st['backend']}, {st['seconds']:.3g} s"
+            + (f"; arithmetic {used}" if used else "")
         )
         for name, unit in res.units.items():
             if name == "point" or name in sf.design.names:

@@ -21,6 +21,7 @@
     t_end = 20.0                           # s
     dt = 1e-3                              # s
     settle_angle = 0.01                    # rad, needed by settle_time
+    arithmetic = "auto"                    # RATTLE's multiply-adds: "auto", "unfused" or "fused"
 
     [run]                                  # optional; the command line overrides these
     chunk_size = 2000
@@ -88,6 +89,8 @@ class SimulationTable(_Strict):
     settle_angle: float | None = Field(
         None, gt=0, lt=3.141592653589793, allow_inf_nan=False, description="sway angle in rad, in (0, pi)"
     )
+    # any value here: make_spec checks it (check_arithmetic, as pl.sweep does) and names what is allowed
+    arithmetic: Any = Field("auto", description='RATTLE multiply-adds: "auto", "unfused" or "fused"')
 
 
 class RunTable(_Strict):
@@ -122,7 +125,8 @@ class SweepSpecFile(_Strict):
 @dataclass(frozen=True)
 class SweepFile:
     """A validated sweep file: ``design``, ``quantities``, ``pendulum``, ``fixed``, the simulation's
-    ``t_end`` and ``dt`` [s] (None for exact quantities), the ``[run]`` settings and the ``title``."""
+    ``t_end`` and ``dt`` [s] (None for exact quantities), its ``arithmetic`` (default "auto"), the
+    ``[run]`` settings and the ``title``."""
 
     spec: SweepSpecFile
     design: Design
@@ -140,12 +144,15 @@ class SweepFile:
         scheduler: str | None = None,
         backend: str | None = None,
         chunk_size: int | None = None,
+        arithmetic: str | None = None,
     ) -> dict[str, Any]:
         """The keywords of :func:`pendulab.sweep` this file sets (not out, resume, progress), with the
-        ``[run]`` settings overridden where given (``pendulab sweep``'s options): a scheduler implies
-        the dask backend and replaces the file's workers; workers given alone replace its scheduler."""
+        ``[run]`` settings and ``[simulation] arithmetic`` overridden where given (``pendulab sweep``'s
+        options; ``arithmetic`` is checked by :func:`pendulab.sweep`): a scheduler implies the dask
+        backend and replaces the file's workers; workers given alone replace its scheduler."""
         kwargs = self._file_kwargs()
         for key, value in (
+            ("arithmetic", arithmetic),
             ("workers", workers),
             ("scheduler", scheduler),
             ("backend", backend),
@@ -170,6 +177,7 @@ class SweepFile:
             "t_end": None if sim is None else sim.t_end,
             "dt": None if sim is None else sim.dt,
             "settle_angle": None if sim is None else sim.settle_angle,
+            "arithmetic": "auto" if sim is None else sim.arithmetic,
             "chunk_size": run.chunk_size,
             "backend": run.backend,
             "workers": run.workers,
@@ -264,10 +272,11 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
             None if sim is None else sim.t_end,
             None if sim is None else sim.dt,
             None if sim is None else sim.settle_angle,
+            "auto" if sim is None else sim.arithmetic,
         )
     except InvalidInputError as e:
         text = str(e).replace("give t_end [s] (and dt [s])", "add [simulation] t_end (in s) and dt (in s)")
-        if text.startswith(("t_end", "dt")):
+        if text.startswith(("t_end", "dt", "invalid arithmetic")):
             text = f"[simulation] {text}"
         raise SweepFileError(source, text) from None
     return SweepFile(spec, design, pendulum, source)
