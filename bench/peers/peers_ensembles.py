@@ -160,14 +160,15 @@ def api_vs_c_worker(quick: int) -> dict[str, Any]:
         by_steps: dict[str, Any] = {}
         for steps in API_VS_C["steps"]:
             meta: dict[str, Any] = {}
-            call = (p, starts, kw, y0, ell, g)
 
-            def api(s: int = steps, m: dict[str, Any] = meta, c: tuple[Any, ...] = call) -> None:
-                res = pl.simulate_ensemble(c[0], c[1], s * dt, dt=dt, summary=False, progress=False, **c[2])
+            def api(
+                s: int = steps, m: dict[str, Any] = meta, p: Any = p, x0: Any = starts, kw: Any = kw
+            ) -> None:
+                res = pl.simulate_ensemble(p, x0, s * dt, dt=dt, summary=False, progress=False, **kw)
                 m["arithmetic"] = res.metadata.get("arithmetic", "unfused")
 
-            def c_run(s: int = steps, c: tuple[Any, ...] = call) -> None:
-                c_ensemble(c[3].copy(), c[4], c[5], dt, s, threads)
+            def c_run(s: int = steps, y0: Any = y0, ell: Any = ell, g: Any = g) -> None:
+                c_ensemble(y0.copy(), ell, g, dt, s, threads)
 
             api(), c_run()
             best = {"api": [math.inf, math.inf], "c": [math.inf, math.inf]}

@@ -6,13 +6,11 @@ use crate::integrate::rattle::Rattle;
 use crate::model::{IdealPendulum, Model};
 use crate::state::{Params, State};
 
-/// Positions on the sphere and velocities over a range of speeds and step sizes, both signs of h
-/// (the compositions take negative substeps): the series and the closed form give the same μ.
-#[test]
-fn series_multiplier_agrees_with_the_closed_form() {
+/// The position quadratics (with arithmetic `A`) of positions on a sphere of l = 1.3 m, velocities
+/// over a range of speeds and step sizes of both signs (the compositions take negative substeps),
+/// g = 9.81 m/s²: `check(quad, h, what)` for each, `what` naming the case.
+fn quadratic_cases<A: MulAdd>(mut check: impl FnMut(&PositionQuadratic, f64, &str)) {
     let (l, g) = (1.3, 9.81);
-    let mut checked = 0;
-    let mut max_rel: f64 = 0.0;
     for i in 0..40 {
         let th = 0.05 + 3.0 * i as f64 / 40.0;
         let x0 = DVec3::new(th.sin() * 0.6f64.cos(), th.sin() * 0.6f64.sin(), -th.cos()) * l;
@@ -22,61 +20,56 @@ fn series_multiplier_agrees_with_the_closed_form() {
             let v0 = (tangent * 0.8 + along * 0.6) * speed;
             for h in [1e-6, -3e-5, 1e-4, 1e-3, -2e-3, 5e-3, 2e-2] {
                 let w = v0 + DVec3::new(0.0, 0.0, -g) * (0.5 * h);
-                let quad = PositionQuadratic::new::<Unfused>(x0, w, h, l * l);
-                let (series, ok) = quad.multiplier_series::<Unfused>(h);
-                let exact = quad.multiplier_exact::<Unfused>(h);
-                if ok {
-                    let rel = (series - exact).abs() / exact.abs().max(1e-300);
-                    max_rel = max_rel.max(rel);
-                    assert!(rel <= 8.0 * f64::EPSILON, "th {th} speed {speed} h {h}: {series} vs {exact}");
-                    checked += 1;
-                }
-                assert_eq!(
-                    quad.multiplier::<Unfused>(h).to_bits(),
-                    if ok { series } else { exact }.to_bits()
-                );
+                let quad = PositionQuadratic::new::<A>(x0, w, h, l * l);
+                check(&quad, h, &format!("th {th} speed {speed} h {h}"));
             }
         }
     }
+}
+
+/// Over [`quadratic_cases`]: the series and the closed form give the same μ.
+#[test]
+fn series_multiplier_agrees_with_the_closed_form() {
+    let mut checked = 0;
+    let mut max_rel: f64 = 0.0;
+    quadratic_cases::<Unfused>(|quad, h, what| {
+        let (series, ok) = quad.multiplier_series::<Unfused>(h);
+        let exact = quad.multiplier_exact::<Unfused>(h);
+        if ok {
+            let rel = (series - exact).abs() / exact.abs().max(1e-300);
+            max_rel = max_rel.max(rel);
+            assert!(rel <= 8.0 * f64::EPSILON, "{what}: {series} vs {exact}");
+            checked += 1;
+        }
+        assert_eq!(quad.multiplier::<Unfused>(h).to_bits(), if ok { series } else { exact }.to_bits());
+    });
     assert!(checked > 1000, "the series applied to only {checked} cases");
     eprintln!("series vs closed form: max relative difference {max_rel:.2e} over {checked} cases");
 }
 
 /// The fused arithmetic's series, short (up to y³, |y| ≤ SHORT_SERIES_LIMIT) and full, against the
-/// closed form over the same range of positions, speeds and steps as above: within a few ulp where each
-/// applies, the short form applying in a part of the cases only (the test's teeth), and where it
-/// applies the full form gives the same bits (it takes the short polynomial there).
+/// closed form over [`quadratic_cases`]: within a few ulp where each applies, the short form applying
+/// in a part of the cases only (the test's teeth), and where it applies the full form gives the same
+/// bits (it takes the short polynomial there).
 #[test]
 fn fused_series_short_and_full_agree_with_the_closed_form() {
-    let (l, g) = (1.3, 9.81);
     let (mut short_cases, mut full_cases) = (0, 0);
-    for i in 0..40 {
-        let th = 0.05 + 3.0 * i as f64 / 40.0;
-        let x0 = DVec3::new(th.sin() * 0.6f64.cos(), th.sin() * 0.6f64.sin(), -th.cos()) * l;
-        let tangent = DVec3::Z.cross(x0).normalize();
-        let along = x0.cross(tangent).normalize();
-        for speed in [0.0, 0.3, 2.0, 7.0, 20.0] {
-            let v0 = (tangent * 0.8 + along * 0.6) * speed;
-            for h in [1e-6, -3e-5, 1e-4, 1e-3, -2e-3, 5e-3, 2e-2] {
-                let w = v0 + DVec3::new(0.0, 0.0, -g) * (0.5 * h);
-                let quad = PositionQuadratic::new::<Fused>(x0, w, h, l * l);
-                let exact = quad.multiplier_exact::<Fused>(h);
-                let (short, short_ok) = quad.multiplier_series_with::<Fused>(h, SeriesTerms::Short);
-                let (full, full_ok) = quad.multiplier_series_with::<Fused>(h, SeriesTerms::Full);
-                let close = |mu: f64| (mu - exact).abs() <= 8.0 * f64::EPSILON * exact.abs().max(1e-300);
-                if short_ok {
-                    assert!(full_ok && short.to_bits() == full.to_bits(), "th {th} speed {speed} h {h}");
-                    assert!(close(short), "short: th {th} speed {speed} h {h}: {short} vs {exact}");
-                    short_cases += 1;
-                } else if full_ok {
-                    assert!(close(full), "full: th {th} speed {speed} h {h}: {full} vs {exact}");
-                    full_cases += 1;
-                }
-                let want = if full_ok { full } else { exact };
-                assert_eq!(quad.multiplier::<Fused>(h).to_bits(), want.to_bits());
-            }
+    quadratic_cases::<Fused>(|quad, h, what| {
+        let exact = quad.multiplier_exact::<Fused>(h);
+        let (short, short_ok) = quad.multiplier_series_with::<Fused>(h, SeriesTerms::Short);
+        let (full, full_ok) = quad.multiplier_series_with::<Fused>(h, SeriesTerms::Full);
+        let close = |mu: f64| (mu - exact).abs() <= 8.0 * f64::EPSILON * exact.abs().max(1e-300);
+        if short_ok {
+            assert!(full_ok && short.to_bits() == full.to_bits(), "{what}");
+            assert!(close(short), "short: {what}: {short} vs {exact}");
+            short_cases += 1;
+        } else if full_ok {
+            assert!(close(full), "full: {what}: {full} vs {exact}");
+            full_cases += 1;
         }
-    }
+        let want = if full_ok { full } else { exact };
+        assert_eq!(quad.multiplier::<Fused>(h).to_bits(), want.to_bits());
+    });
     assert!(short_cases > 500 && full_cases > 50, "short {short_cases}, full only {full_cases}");
 }
 
