@@ -1,8 +1,10 @@
 //! The registries as Python tables: the integrators (`methods`: declared order and properties) and
 //! the models (`models`: names, parameters with units, defaults and limits), and the checks of a
-//! model against them (`check_params`; a model is checked by building its `ModelSpec`). SI units as the registries list them.
+//! model against them (`check_params`; a model is checked by building its `ModelSpec`), and the RATTLE
+//! arithmetics' facts (`fused_is_fast`, `arithmetic_version`). SI units as the registries list them.
 
-use crate::convert::model;
+use crate::convert::{model, to_py};
+use pendulab_core::integrate::rattle_kernel::Arithmetic;
 use pendulab_core::model::registry::{ParamSpec, COMMON, MODELS};
 use pendulab_core::Method;
 use pyo3::prelude::*;
@@ -77,7 +79,16 @@ fn fused_is_fast() -> bool {
     pendulab_core::isa::fused_is_fast()
 }
 
+/// The version of the bits of the RATTLE arithmetic `arithmetic` ("unfused" or "fused"; the core's
+/// `Arithmetic::version`): the same arithmetic and version, the same numbers; bumped whenever any
+/// bit of that arithmetic's results changes (sweeps record it and refuse to mix versions).
+#[pyfunction]
+fn arithmetic_version(arithmetic: &str) -> PyResult<u32> {
+    Ok(Arithmetic::from_name(arithmetic).map_err(to_py)?.version())
+}
+
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_function(wrap_pyfunction!(arithmetic_version, m)?)?;
     m.add_function(wrap_pyfunction!(fused_is_fast, m)?)?;
     m.add_function(wrap_pyfunction!(methods, m)?)?;
     m.add_function(wrap_pyfunction!(models, m)?)?;

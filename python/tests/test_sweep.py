@@ -194,7 +194,8 @@ def test_cli_sweep_end_to_end(tmp_path: Path) -> None:
     code, stdout, stderr = invoke("sweep", str(toml), "--out", str(out), "--workers", "2", "--no-progress")
     assert code == 0, stderr
     assert "10 points: grid 5 x 2 (theta0, phi_dot0) -> max_sway, rotation_number" in stderr
-    assert "3 chunks of 4 points: computed 3, skipped 0" in stdout and f"wrote {out} (10 rows)" in stdout
+    assert "3 chunks of 4 points (the last of 2): computed 3, skipped 0" in stdout, stdout
+    assert f"wrote {out} (10 rows)" in stdout
     assert "max_sway [rad]: " in stdout and "rotation_number [1]: " in stdout
     direct = pl.sweep(
         {"theta0": np.linspace(0.2, 1.2, 5), "phi_dot0": [1.0, 2.0]},
@@ -210,3 +211,24 @@ def test_cli_sweep_end_to_end(tmp_path: Path) -> None:
         "sweep", str(toml), "--out", str(tmp_path / "d"), "--workers", "2", "--scheduler", "tcp://x:1"
     )
     assert_user_error(code, out_, err, "--workers and --scheduler")
+
+
+@pytest.mark.parametrize(
+    ("theta0", "chunk", "want"),
+    [
+        ("[0.5, 1.0]", "", "1 chunk of 2 points: computed 1,"),  # the default chunk size, 50 000
+        ("[0.5]", "", "1 chunk of 1 point: computed 1,"),
+        ("[0.5, 1.0, 1.5, 2.0]", "chunk_size = 2\n", "2 chunks of 2 points: computed 2,"),
+        ("[0.5, 1.0, 1.5]", "chunk_size = 2\n", "2 chunks of 2 points (the last of 1): computed 2,"),
+    ],
+)
+def test_cli_summary_counts_the_chunks_as_they_are(
+    tmp_path: Path, theta0: str, chunk: str, want: str
+) -> None:
+    """The summary line gives the chunks' real number and size (not the default chunk size for a sweep
+    of fewer points), the last one's where it is smaller, singular or plural as they are."""
+    toml = tmp_path / "few.toml"
+    toml.write_text(f'quantity = "period"\n[grid]\ntheta0 = {theta0}\nphi_dot0 = [1.0]\n[run]\n{chunk}')
+    code, stdout, stderr = invoke("sweep", str(toml), "--out", str(tmp_path / "o"), "--no-progress")
+    assert code == 0, stderr
+    assert want in stdout, stdout

@@ -17,6 +17,7 @@ from .._core import InvalidInputError
 from ..integrators import check_arithmetic
 from ..sweeps.file import SweepFile, load_sweep_file
 from ..sweeps.results import MANIFEST
+from ..sweeps.resume import ResumeConflict
 from ..sweeps.run import BACKENDS, sweep
 from .common import EXIT_INTERRUPTED, _fail, _say, _sweep_file, _user_errors, app
 
@@ -39,6 +40,15 @@ def _plan(sf: SweepFile, kwargs: dict[str, Any]) -> str:
     what = q if isinstance(q, str) else ", ".join(str(x) for x in q)
     sim = f"; RATTLE to t = {kwargs['t_end']:g} s, dt = {kwargs['dt']:g} s" if kwargs["t_end"] else ""
     return f"  {d.n} points: {points} -> {what}{sim}"
+
+
+def _chunks(n: int, chunks: int, size: int) -> str:
+    """'1 chunk of 2 points', '3 chunks of 4 points (the last of 2)': the chunks as they are, not the
+    chunk size asked for (the default, 100 000 points, for a sweep of 2)."""
+    full = min(size, n)
+    last = n - (chunks - 1) * size
+    text = f"{chunks} chunk{'s' if chunks != 1 else ''} of {full} point{'s' if full != 1 else ''}"
+    return text + (f" (the last of {last})" if chunks > 1 and last != full else "")
 
 
 def _done_so_far(out: Path) -> str:
@@ -133,6 +143,8 @@ def sweep_cmd(
         try:
             show = False if quiet else progress
             res = sweep(sf.design, out=out, resume=resume, progress=show, **kwargs)  # type: ignore[arg-type]
+        except ResumeConflict as e:  # the fix spelled as this command's options
+            _fail(e.for_cli())
         except KeyboardInterrupt:
             where = _done_so_far(out)
             _fail(
@@ -144,7 +156,7 @@ def sweep_cmd(
         st = res.stats
         used = res.metadata["spec"].get("arithmetic")  # resolved; none for exact quantities only
         _say(
-            f"{st['chunks']} chunks of {st['chunk_size']} points: computed {st['computed']}, "
+            f"{_chunks(len(res), st['chunks'], st['chunk_size'])}: computed {st['computed']}, "
             f"skipped {st['skipped']} (already in --out); {st['backend']}, {st['seconds']:.3g} s"
             + (f"; arithmetic {used}" if used else "")
         )

@@ -3,8 +3,9 @@ that are not points (``SweepSpec``), the fingerprint that makes resuming safe, a
 a pure function of a ``ChunkTask`` that the thread pool and the Dask workers run. The exact
 quantities (rotation number T-4.5, z-period) come from the exact solution; the simulated ones from
 one RATTLE ensemble run per chunk (``simulate_ensemble``'s kernel, with the sweep's arithmetic,
-``"fused"`` or ``"unfused"``, resolved once), so every point is computed independently of the
-chunking, the backend and the CPU, bit for bit.
+``"fused"`` or ``"unfused"``, resolved once, and checked to be of the version of its bits the sweep
+records), so every point is computed independently of the chunking, the backend and the CPU, bit for
+bit.
 """
 
 from __future__ import annotations
@@ -28,6 +29,7 @@ from .._core import (
     InvalidInputError,
     ModelSpec,
     RunOptions,
+    arithmetic_version,
     rotation_numbers,
     state_from_angles,
 )
@@ -68,7 +70,9 @@ class SweepSpec:
     for those not given), for simulated quantities ``t_end`` [s] and ``dt`` [s], the linear damping
     c [1/s] where the design does not vary it, for ``settle_time`` the ``settle_angle`` [rad], and for
     simulated quantities the RATTLE ``arithmetic`` (``"fused"`` or ``"unfused"``, resolved once when
-    the sweep is set up, so that every chunk, on any worker, uses the same; None for exact ones)."""
+    the sweep is set up, so that every chunk, on any worker, uses the same; None for exact ones) and
+    ``arithmetic_version``, the version of that arithmetic's bits (``_core.arithmetic_version``; None
+    in the record of a sweep written before versions were recorded, ``sweeps/resume.py``)."""
 
     quantities: tuple[str, ...]
     length: float
@@ -80,6 +84,7 @@ class SweepSpec:
     damping: float = 0.0
     settle_angle: float | None = None
     arithmetic: str | None = None
+    arithmetic_version: int | None = None
 
     @property
     def simulated(self) -> bool:
@@ -96,7 +101,12 @@ class SweepSpec:
     def describe(self) -> dict[str, Any]:
         d = asdict(self) | {"quantities": list(self.quantities)}
         # settings at their defaults are left out, so that sweeps written before they existed resume
-        for key, default in (("damping", 0.0), ("settle_angle", None), ("arithmetic", None)):
+        for key, default in (
+            ("damping", 0.0),
+            ("settle_angle", None),
+            ("arithmetic", None),
+            ("arithmetic_version", None),
+        ):
             if d[key] == default:
                 del d[key]
         return d
@@ -189,7 +199,10 @@ def make_spec(
     else:
         t_end = dt = arith = None  # not used: not part of what the results depend on
     fixed_sorted = dict(sorted(fixed_values.items()))
-    return SweepSpec(quantities, p.length, p.g, p.mass, fixed_sorted, t_end, dt, damping, settle_angle, arith)
+    version = None if arith is None else arithmetic_version(arith)
+    return SweepSpec(
+        quantities, p.length, p.g, p.mass, fixed_sorted, t_end, dt, damping, settle_angle, arith, version
+    )
 
 
 def fingerprint(design: Design, spec: SweepSpec) -> str:
@@ -276,6 +289,12 @@ def _simulate(
     # trajectory with that arithmetic bit for bit, whichever CPU runs the chunk; "auto" here only for
     # a SweepSpec made without one
     arithmetic = spec.arithmetic or check_arithmetic("auto", "rattle")
+    here = arithmetic_version(arithmetic)
+    if spec.arithmetic_version is not None and spec.arithmetic_version != here:
+        raise _bad(  # a Dask worker with another pendulab build would compute other bits
+            f"this pendulab's {arithmetic} arithmetic is of version {here}, the sweep's of version "
+            f"{spec.arithmetic_version}: run every worker with the pendulab that set the sweep up"
+        )
     options = RunOptions(dt=dt, arithmetic=arithmetic)
     run = EnsembleRun(models, x, v, options, spec.steps, need_summary, settle)
     # wait returns the moment the chunk is done; a cancel is seen within 20 ms

@@ -34,7 +34,6 @@ import os
 import time
 import warnings
 from collections.abc import Mapping, Sequence
-from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -53,9 +52,9 @@ from .compute import (
     fingerprint,
     make_spec,
 )
-from .design import AXES, Design, as_design
+from .design import AXES, as_design
 from .results import MemorySink, OutputDir, SweepResult
-from .sinks import recorded_sweep
+from .resume import resume_arithmetic
 
 BACKENDS = ("threads", "dask")
 
@@ -117,49 +116,6 @@ def _open_target(
     return target, target.chunk_size
 
 
-def _resume_arithmetic(
-    d: Design, spec: SweepSpec, asked: Any, out: Any, resume: bool
-) -> tuple[SweepSpec, SweepSpec, str | None]:
-    """The spec the chunks run with, the spec the output records (and its fingerprint hashes), and a
-    warning to give if chunks are computed. A resume takes the arithmetic that the sweep in ``out``
-    records: ``"auto"`` adopts it (the new chunks then match the old ones bit for bit, whatever this
-    CPU's "auto"), a named arithmetic that differs is refused; a sweep written before the arithmetic
-    was recorded (computed with "auto" on the machine that wrote it) continues with this run's, with
-    a warning, and its record (and fingerprint) stays without one."""
-    if not resume or out is None or spec.arithmetic is None:
-        return spec, spec, None
-    found = recorded_sweep(out)
-    if found is None:
-        return spec, spec, None
-    where, old = found
-    old_spec = old.get("spec")
-    recorded = old_spec.get("arithmetic") if isinstance(old_spec, dict) else None
-    if recorded is None:
-        warning = (
-            f"{where} does not record the arithmetic its chunks were computed with (written before "
-            "pendulab recorded it, with arithmetic='auto' on the machine that wrote it: 'fused' where "
-            f"that CPU has FMA, 'unfused' elsewhere); the remaining chunks use {spec.arithmetic!r}, and "
-            "if that differs the chunks differ in the last bits. To be sure of one arithmetic, run the "
-            "sweep again into a new out"
-        )
-        return spec, replace(spec, arithmetic=None), warning
-    if recorded not in ("fused", "unfused"):
-        raise _bad(
-            f"{where} records arithmetic {limits.show(recorded)}, not 'fused' or 'unfused': not a sweep "
-            "this pendulab can continue; run it again into a new out"
-        )
-    theirs = replace(spec, arithmetic=recorded)
-    if asked == "auto":
-        return theirs, theirs, None
-    if recorded != spec.arithmetic and old.get("fingerprint") == fingerprint(d, theirs):
-        raise _bad(
-            f"arithmetic = {asked!r} differs from {recorded!r}, the arithmetic the sweep in {where} was "
-            f"computed with: resume with arithmetic={recorded!r} (or 'auto', which takes the recorded "
-            "one) so that the new chunks match those there bit for bit, or give another out"
-        )
-    return spec, spec, None  # a different sweep otherwise: OutputDir.open names what differs
-
-
 def sweep(
     design: Any,
     quantity: str | Sequence[str],
@@ -192,7 +148,8 @@ def sweep(
     ``arithmetic``: RATTLE's multiply-adds, as in :func:`pendulab.simulate_ensemble`: ``"auto"``
     (default; ``"fused"`` where the CPU has FMA, else ``"unfused"``), ``"unfused"`` or ``"fused"``;
     resolved once when the sweep is set up and recorded in ``metadata["spec"]["arithmetic"]`` and in
-    ``out`` (simulated quantities only).
+    ``out``, with the version of that arithmetic's bits in ``["arithmetic_version"]`` (simulated
+    quantities only).
 
     The points are split into chunks of ``chunk_size`` (default :func:`default_chunk_size`), each one
     ensemble run or one vectorised exact evaluation, run by ``backend``: ``"threads"`` (default; a
@@ -204,9 +161,11 @@ def sweep(
     (chunks staged beside it, merged at the end); each chunk is written atomically as it finishes.
     ``resume=True`` continues a sweep of the same settings in ``out``, skipping the chunks already
     there; with ``arithmetic="auto"`` it takes the arithmetic recorded there (a named one that differs
-    is refused; a sweep written before the arithmetic was recorded continues with this run's and
-    warns, ``RuntimeWarning``). Ctrl-C writes the chunks that have finished, then raises
-    ``KeyboardInterrupt``.
+    is refused, and so is a sweep of another version of the arithmetic's bits, or of none recorded
+    where this pendulab's version is not 1: start a new sweep then; a sweep written before the
+    arithmetic was recorded continues with this run's and warns, ``RuntimeWarning``; refusals are
+    ``ResumeConflict``, an ``InvalidInputError``). Ctrl-C writes the chunks that have finished, then
+    raises ``KeyboardInterrupt``.
     ``progress``: a bar over chunks on stderr (default: for sweeps of more than a few seconds).
 
     Returns a :class:`~pendulab.sweeps.results.SweepResult` (columns as NumPy arrays, ``to_xarray()``).
@@ -230,7 +189,7 @@ def sweep(
     if spec.t_end is not None and spec.dt is not None:  # trajectory-steps: the work of the whole sweep
         limits.planned_steps(0.0, spec.t_end * d.n, spec.dt)
     backend, workers, chunk_size = _check_backend(backend, scheduler, workers, chunk_size)
-    spec, recorded, unrecorded = _resume_arithmetic(d, spec, arithmetic, out, resume)
+    spec, recorded, unrecorded = resume_arithmetic(d, spec, arithmetic, out, resume)
     fp = fingerprint(d, recorded)
     units = {"point": "1", **{k: AXES[k] for k in d.names}, **spec.output_units()}
     meta = {"design": d.describe(), "spec": recorded.describe(), "fingerprint": fp, "columns": units}

@@ -46,7 +46,8 @@ class SweepResult:
     ``phi0`` [rad], ``theta_dot0``, ``phi_dot0`` [rad/s], ``length`` [m], ``g`` [m/s²] — those it
     varies) and the quantity columns (float64); ``units`` per column. ``design`` the points,
     ``quantities`` what was computed, ``metadata`` the settings (``spec``: the pendulum, t_end, dt and
-    the RATTLE ``arithmetic``, "fused" or "unfused", of simulated quantities; ``fingerprint``),
+    the RATTLE ``arithmetic``, "fused" or "unfused", of simulated quantities and the version of its
+    bits, ``arithmetic_version``; ``fingerprint``),
     ``stats`` how it ran (chunks, computed, skipped, backend, seconds), ``path`` where it is on disk
     (columns are read from there on first use).
     """
@@ -82,6 +83,8 @@ class SweepResult:
         ]
         if "arithmetic" in self.metadata.get("spec", {}):
             rows.append(("arithmetic", str(self.metadata["spec"]["arithmetic"]), ""))
+        if "arithmetic_version" in self.metadata.get("spec", {}):
+            rows.append(("arithmetic version", str(self.metadata["spec"]["arithmetic_version"]), ""))
         rows += [(f"column {name}", "", unit) for name, unit in self.units.items()]
         if self.path is not None:
             rows.append(("on disk", str(self.path), ""))

@@ -95,6 +95,23 @@ impl Arithmetic {
         }
     }
 
+    /// The version of this arithmetic's numbers: two runs with the same arithmetic and version give
+    /// the same bits (on every CPU), so a record of results that are to be continued later (a sweep's
+    /// manifest, `python/pendulab/sweeps/resume.py`) keeps the name and this version, and refuses to
+    /// add results of another version. Bump it whenever any bit of this arithmetic's results changes
+    /// (another order or form of its operations, series, compensations; a change that leaves every bit
+    /// as it was needs none), and update `tests/arithmetic_version.rs`, which pins the bits of each
+    /// version. History: unfused 1; fused 1. (Stopping the fused series after y³ where
+    /// |y| ≤ [`SHORT_SERIES_LIMIT`], 2026-11-27, changed no bit: the terms dropped, < 5.5·10⁻¹⁸ of
+    /// the series' value, are below half its ulp, so the full series' last multiply-add had rounded
+    /// them away; the same results as the first builds that recorded the arithmetic in sweeps.)
+    pub const fn version(self) -> u32 {
+        match self {
+            Arithmetic::Unfused => 1,
+            Arithmetic::Fused => 1,
+        }
+    }
+
     /// Looks an arithmetic up by its name (`"unfused"`, `"fused"`).
     pub fn from_name(name: &str) -> crate::error::Result<Self> {
         Self::ALL
