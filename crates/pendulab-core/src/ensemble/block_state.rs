@@ -34,6 +34,31 @@ pub(super) struct Block {
     pub above: Lanes,
 }
 
+impl Block {
+    /// A block of zeros on the heap, for [`super::plan::Plan::fill`] to fill (one per worker).
+    pub fn boxed() -> Box<Self> {
+        let z = [0.0; super::LANES];
+        Box::new(Self {
+            x: [z; 3],
+            v: [z; 3],
+            cx: [z; 3],
+            cv: [z; 3],
+            l2: z,
+            inv_l2: z,
+            g: z,
+            decay_half: z,
+            damped: false,
+            down: z,
+            cos_settle: 0.0,
+            last_out: z,
+            len: 0,
+            summary: [z; 6],
+            crossings: z,
+            above: z,
+        })
+    }
+}
+
 /// What is tracked besides the state while stepping.
 #[derive(Clone, Copy)]
 pub(super) struct Track {

@@ -46,6 +46,7 @@ mod plan;
 mod tile;
 mod tile_params;
 pub use block::{tile_lanes, TILE};
+use block_state::Block;
 use output::{sample_count, sample_times, settle_times, summaries};
 use plan::{BlockRun, Plan};
 
@@ -198,20 +199,24 @@ pub fn run_checked(
     // each worker builds its blocks from the starts and writes their samples into its part of
     // `states`: both cores work from the first block on, and nothing is copied afterwards; a block
     // hands back only what the result needs of it (its summaries, its settle records)
-    let work = |(b, out): (usize, &mut [State])| {
-        let mut blk = plan.block(b, starts, (length, g), dt, with_summary);
-        let (steps, cancelled) = run.block(&mut blk, out, ns);
-        let summary = if with_summary { summaries(&blk) } else { Vec::new() };
+    let work = |blk: &mut Box<Block>, (b, out): (usize, &mut [State])| {
+        plan.fill(blk, b, starts, (length, g), dt, with_summary);
+        let (steps, cancelled) = run.block(blk, out, ns);
+        let summary = if with_summary { summaries(blk) } else { Vec::new() };
         let last_out = if plan.track { blk.last_out[..blk.len].to_vec() } else { Vec::new() };
         BlockEnd { summary, last_out, steps, cancelled }
     };
     #[cfg(feature = "parallel")]
     let outputs: Vec<BlockEnd> = {
         use rayon::prelude::*;
-        states.par_chunks_mut(LANES * ns).enumerate().map(work).collect()
+        // one block per worker (rayon's split), filled anew for each of its blocks
+        states.par_chunks_mut(LANES * ns).enumerate().map_init(Block::boxed, work).collect()
     };
     #[cfg(not(feature = "parallel"))]
-    let outputs: Vec<BlockEnd> = states.chunks_mut(LANES * ns).enumerate().map(work).collect();
+    let outputs: Vec<BlockEnd> = {
+        let mut blk = Block::boxed();
+        states.chunks_mut(LANES * ns).enumerate().map(|item| work(&mut blk, item)).collect()
+    };
     let cancelled = outputs.iter().any(|o| o.cancelled);
     let steps = outputs.iter().map(|o| o.steps).min().unwrap_or(0);
     let t = sample_times(steps, plan.every, n_steps, dt);

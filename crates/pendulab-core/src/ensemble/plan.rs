@@ -4,7 +4,6 @@
 //! counter and cancel checks (the steps themselves: `block.rs`). SI units: \[m\], [m/s], \[s\], [1/s].
 
 use super::block_state::{Block, Track};
-use super::Lanes;
 use super::{Checked, EnsembleSave, RattleSettings, CHECK_EVERY, LANES};
 use crate::error::{Error, Result};
 use crate::integrate::rattle_kernel::{Arithmetic, Fused, Unfused};
@@ -46,6 +45,26 @@ fn missized(settings: &RattleSettings<'_>, damping: &[f64], n: usize) -> Option<
         .find(|(_, a)| a.len() != 1 && a.len() != n)
         .map(|(name, a)| (name, a.len()))
 }
+
+/// Starts checked per part of [`CHECK_PART`] by `check_from(first index, part)`, on both cores for a
+/// large ensemble (each start's check is independent); the error is the first failing start's, as in
+/// one pass.
+fn check_starts(starts: &[State], check_from: impl Fn(usize, &[State]) -> Result<()> + Sync) -> Result<()> {
+    #[cfg(feature = "parallel")]
+    if starts.len() > CHECK_PART {
+        use rayon::prelude::*;
+        let parts: Vec<Result<()>> = starts
+            .par_chunks(CHECK_PART)
+            .enumerate()
+            .map(|(j, part)| check_from(j * CHECK_PART, part))
+            .collect();
+        return parts.into_iter().collect();
+    }
+    check_from(0, starts)
+}
+
+/// Starts per part of the check (about 10 µs of work each).
+const CHECK_PART: usize = 512;
 
 /// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the settle
 /// threshold (cos of the angle; −∞ without tracking) and the save interval in steps.
@@ -94,13 +113,17 @@ impl<'a> Plan<'a> {
         let params = |k: usize| crate::state::Params::new(pick(length, k), 1.0, pick(g, k));
         // one pendulum for all (the usual ensemble): its parameters checked once, not per start
         let shared = if length.len() == 1 && g.len() == 1 { Some(params(0)?) } else { None };
-        for (k, s) in starts.iter().enumerate() {
-            let p = match shared {
-                Some(p) => p,
-                None => params(k)?,
-            };
-            State::on_tangent_bundle(&p, s.x, s.v)?;
-        }
+        let check_from = |first: usize, part: &[State]| -> Result<()> {
+            for (k, s) in (first..).zip(part) {
+                let p = match shared {
+                    Some(p) => p,
+                    None => params(k)?,
+                };
+                State::on_tangent_bundle(&p, s.x, s.v)?;
+            }
+            Ok(())
+        };
+        check_starts(starts, check_from)?;
         for &c in damping {
             crate::error::require_non_negative("damping", c, "a finite damping rate c >= 0 [1/s]")?;
         }
@@ -129,63 +152,56 @@ impl<'a> Plan<'a> {
         Ok(Self { damping, cos_settle, track: settings.settle_angle.is_some(), every })
     }
 
-    /// Block `b`: trajectories b·LANES … (the lanes past the last trajectory repeat it and are
-    /// ignored), with its parameters, its summary and settle state at the start.
-    pub(super) fn block(
+    /// Fills `blk` with block `b`: trajectories b·LANES … (the lanes past the last trajectory
+    /// repeat it and are ignored), with its parameters, its summary and settle state at the start.
+    /// Every field is written, so one block serves a worker for all its blocks (no block is built
+    /// and moved per call: `super::run_checked`).
+    pub(super) fn fill(
         &self,
+        blk: &mut Block,
         b: usize,
         starts: &[State],
         (length, g): (&[f64], &[f64]),
         dt: f64,
         summary: bool,
-    ) -> Block {
+    ) {
         let n = starts.len();
         let damping = self.damping;
-        let idx = |i: usize| (b * LANES + i).min(n - 1);
         let len = (n - b * LANES).min(LANES);
-        let lanes = |f: &dyn Fn(usize) -> f64| -> Lanes { std::array::from_fn(|i| f(idx(i))) };
-        let coordinate = |pick_x: bool, c: usize| -> Lanes {
-            std::array::from_fn(|i| {
-                let s = &starts[idx(i)];
-                if pick_x {
-                    s.x[c]
-                } else {
-                    s.v[c]
-                }
-            })
-        };
-        let mut blk = Block {
-            x: [0, 1, 2].map(|c| coordinate(true, c)),
-            v: [0, 1, 2].map(|c| coordinate(false, c)),
-            cx: [[0.0; LANES]; 3],
-            cv: [[0.0; LANES]; 3],
-            l2: lanes(&|k| pick(length, k) * pick(length, k)),
-            inv_l2: lanes(&|k| 1.0 / (pick(length, k) * pick(length, k))),
-            g: lanes(&|k| pick(g, k)),
-            // e^{−c dt/2}; exactly 1 (e^{−0}) without damping, no exp called; one exp for all lanes
-            // when they share c
-            decay_half: match damping {
-                &[c] => [decay_half(c, dt); LANES],
-                _ => lanes(&|k| decay_half(damping[k], dt)),
-            },
-            damped: (0..len).any(|i| pick(damping, idx(i)) != 0.0),
-            down: lanes(&|k| -pick(g, k).signum() / pick(length, k)),
-            cos_settle: self.cos_settle,
-            last_out: [-1.0; LANES],
-            len,
-            summary: std::array::from_fn(|r| {
-                [if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY }; LANES]
-            }),
-            crossings: [0.0; LANES],
-            above: lanes(&|k| if starts[k].x.z > 0.0 { 1.0 } else { 0.0 }),
-        };
+        // one exp for all lanes when they share c
+        let shared_decay = (damping.len() == 1).then(|| decay_half(damping[0], dt));
+        for i in 0..LANES {
+            let k = (b * LANES + i).min(n - 1);
+            let s = &starts[k];
+            let (l, gk) = (pick(length, k), pick(g, k));
+            for c in 0..3 {
+                blk.x[c][i] = s.x[c];
+                blk.v[c][i] = s.v[c];
+                blk.cx[c][i] = 0.0;
+                blk.cv[c][i] = 0.0;
+            }
+            blk.l2[i] = l * l;
+            blk.inv_l2[i] = 1.0 / (l * l);
+            blk.g[i] = gk;
+            // e^{−c dt/2}; exactly 1 (e^{−0}) without damping, no exp called
+            blk.decay_half[i] = shared_decay.unwrap_or_else(|| decay_half(damping[k], dt));
+            blk.down[i] = -gk.signum() / l;
+            blk.last_out[i] = -1.0;
+            for (r, row) in blk.summary.iter_mut().enumerate() {
+                row[i] = if r % 2 == 0 { f64::INFINITY } else { f64::NEG_INFINITY };
+            }
+            blk.crossings[i] = 0.0;
+            blk.above[i] = if s.x.z > 0.0 { 1.0 } else { 0.0 };
+        }
+        blk.damped = (0..len).any(|i| pick(damping, b * LANES + i) != 0.0);
+        blk.cos_settle = self.cos_settle;
+        blk.len = len;
         if summary {
             blk.update_summary();
         }
         if self.track {
             blk.track_settle(0.0);
         }
-        blk
     }
 }
 
