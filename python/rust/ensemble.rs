@@ -1,27 +1,40 @@
 //! Binding of the ensemble kernel (`pendulab_core::ensemble`): `EnsembleSpec` (the models: l [m],
 //! g [m/s²], damping c [1/s] per trajectory), and `EnsembleRun(spec, x, v, options, n_steps)` on a
 //! background thread (`background.rs`) so that Python can show progress and cancel (Ctrl-C) while it
-//! works. Conversions only; SI units.
+//! works (rayon's pool: no thread is started per run). Each array crosses the border once: the
+//! models' arrays are copied when the spec is made (shared by its runs, not copied again), the starts
+//! into the core's states, the saved states into the result's arrays in one pass (handed to numpy
+//! as they are); the starts are checked with the GIL released. Conversions only; SI units.
 
 use crate::background::Background;
 use crate::convert::{to_py, InvalidInputError};
 use crate::spec::RunOptions;
 use numpy::ndarray::{Array1, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray3, PyReadonlyArray1, PyReadonlyArray2};
-use pendulab_core::ensemble::{check, run_checked, EnsembleResult, EnsembleSave, RattleSettings};
+use pendulab_core::ensemble::{check, run_checked, EnsembleResult, EnsembleSave, RattleSettings, Summary};
 use pendulab_core::{DVec3, State};
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::sync::Arc;
 
 /// The ensemble's models: the ideal pendulum with optional linear damping (T-7.1), its length l
 /// [m], gravity g [m/s²] and damping c [1/s] each one value for all trajectories or one per
 /// trajectory (damping may also be empty: undamped). Checked with the starts when a run begins.
+/// Copied once from numpy; its runs share the copies.
 #[pyclass(module = "pendulab._core", name = "EnsembleSpec", frozen)]
 pub struct EnsembleSpec {
-    length: Vec<f64>,
-    g: Vec<f64>,
-    damping: Vec<f64>,
+    length: Arc<[f64]>,
+    g: Arc<[f64]>,
+    damping: Arc<[f64]>,
+}
+
+/// A numpy vector's values, copied once.
+fn shared(a: &PyReadonlyArray1<'_, f64>) -> Arc<[f64]> {
+    match a.as_slice() {
+        Ok(s) => Arc::from(s),
+        Err(_) => a.as_array().iter().copied().collect(),
+    }
 }
 
 #[pymethods]
@@ -34,9 +47,9 @@ impl EnsembleSpec {
         damping: Option<PyReadonlyArray1<'_, f64>>,
     ) -> Self {
         Self {
-            length: length.as_array().to_vec(),
-            g: g.as_array().to_vec(),
-            damping: damping.map_or_else(Vec::new, |d| d.as_array().to_vec()),
+            length: shared(&length),
+            g: shared(&g),
+            damping: damping.map_or_else(|| Arc::from([]), |d| shared(&d)),
         }
     }
 }
@@ -46,7 +59,40 @@ impl EnsembleSpec {
 #[pyclass(module = "pendulab._core", name = "EnsembleRun")]
 pub struct EnsembleRun {
     total: u64,
-    run: Background<EnsembleResult>,
+    run: Background<Arrays>,
+}
+
+/// A run's result laid out as `EnsembleRun.result` hands it to numpy (x, v rows (N, n_save, 3), the
+/// summary's columns), made on the worker that ran it, whose cache still holds the states and
+/// summaries; the core's result is freed there too, after this was handed over.
+struct Arrays {
+    t: Vec<f64>,
+    /// (N, n_save, 3), C order, and their shape.
+    x: Vec<f64>,
+    v: Vec<f64>,
+    shape: (usize, usize, usize),
+    columns: Option<[Vec<f64>; 7]>,
+    settle_time: Option<Vec<f64>>,
+    cancelled: bool,
+    steps: u64,
+}
+
+impl Arrays {
+    /// `res` in numpy's layout: one pass over the states, one per summary column.
+    fn of(res: EnsembleResult) -> Self {
+        let (n, ns) = (res.len(), res.t.len());
+        // trajectory k's sample j is states[k * ns + j]: the rows of (n, ns, 3) in order
+        let (mut x, mut v) = (vec![0.0; 3 * n * ns], vec![0.0; 3 * n * ns]);
+        for ((xr, vr), s) in x.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).zip(&res.states) {
+            xr.copy_from_slice(&s.x.to_array());
+            vr.copy_from_slice(&s.v.to_array());
+        }
+        let columns = res.summary.as_deref().map(summary_columns);
+        let EnsembleResult { t, settle_time, cancelled, steps, states, summary } = res;
+        // the big buffers freed by the pool once this run's outcome is out (off the caller's path)
+        rayon::spawn(move || drop((states, summary)));
+        Self { t, x, v, shape: (n, ns, 3), columns, settle_time, cancelled, steps }
+    }
 }
 
 #[pymethods]
@@ -57,7 +103,9 @@ impl EnsembleRun {
     /// settle time; the options' `arithmetic` ("unfused" or "fused") as the single-trajectory RATTLE.
     #[new]
     #[pyo3(signature = (spec, x, v, options, n_steps, summary=true, settle_angle=None))]
+    #[allow(clippy::too_many_arguments)]
     fn new(
+        py: Python<'_>,
         spec: &EnsembleSpec,
         x: PyReadonlyArray2<'_, f64>,
         v: PyReadonlyArray2<'_, f64>,
@@ -67,6 +115,7 @@ impl EnsembleRun {
         settle_angle: Option<f64>,
     ) -> PyResult<Self> {
         let starts = starts(&x, &v)?;
+        // the spec's arrays, shared (not copied) with the run
         let (length, g, damping) = (spec.length.clone(), spec.g.clone(), spec.damping.clone());
         let (dt, save) =
             (options.solve.dt, options.save_every.map_or(EnsembleSave::Final, EnsembleSave::Every));
@@ -80,11 +129,11 @@ impl EnsembleRun {
             arithmetic: options.arithmetic,
             ..RattleSettings::new(&[], &[], dt, n_steps)
         };
-        let checked = check(&starts, &RattleSettings { length: &length, g: &g, damping: &damping, ..rest })
-            .map_err(to_py)?;
+        let settings = RattleSettings { length: &length, g: &g, damping: &damping, ..rest };
+        let checked = py.allow_threads(|| check(&starts, &settings)).map_err(to_py)?;
         let run = Background::spawn(move |progress, cancel| {
             let settings = RattleSettings { length: &length, g: &g, damping: &damping, ..rest };
-            run_checked(&starts, &settings, checked, progress, cancel)
+            run_checked(&starts, &settings, checked, progress, cancel).map(Arrays::of)
         });
         Ok(Self { total, run })
     }
@@ -123,19 +172,10 @@ impl EnsembleRun {
     /// settle angle, settle_time [s] (0: never outside, inf: outside at the end).
     fn result<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let res = self.run.join(py)?;
-        let (n, ns) = (res.len(), res.t.len());
-        let (x, v) = py.allow_threads(|| {
-            // trajectory k's sample j is states[k * ns + j]: the rows of (n, ns, 3) in order
-            let (mut x, mut v) = (Vec::with_capacity(3 * n * ns), Vec::with_capacity(3 * n * ns));
-            for s in &res.states {
-                x.extend_from_slice(&s.x.to_array());
-                v.extend_from_slice(&s.v.to_array());
-            }
-            let shape = (n, ns, 3);
-            (Array3::from_shape_vec(shape, x), Array3::from_shape_vec(shape, v))
-        });
+        // numpy takes the arrays as they are (no copy)
         let bad_shape = |e: numpy::ndarray::ShapeError| PyRuntimeError::new_err(e.to_string());
-        let (x, v) = (x.map_err(bad_shape)?, v.map_err(bad_shape)?);
+        let x = Array3::from_shape_vec(res.shape, res.x).map_err(bad_shape)?;
+        let v = Array3::from_shape_vec(res.shape, res.v).map_err(bad_shape)?;
         let d = PyDict::new(py);
         d.set_item("t", Array1::from(res.t).into_pyarray(py))?;
         let (xs, vs): (Bound<'py, PyArray3<f64>>, Bound<'py, PyArray3<f64>>) =
@@ -147,20 +187,32 @@ impl EnsembleRun {
         if let Some(ts) = res.settle_time {
             d.set_item("settle_time", Array1::from(ts).into_pyarray(py))?;
         }
-        if let Some(s) = res.summary {
-            let col = |f: &dyn Fn(&pendulab_core::ensemble::Summary) -> f64| -> Bound<'py, PyArray1<f64>> {
-                Array1::from(s.iter().map(f).collect::<Vec<_>>()).into_pyarray(py)
-            };
-            d.set_item("z_min", col(&|q| q.z.0))?;
-            d.set_item("z_max", col(&|q| q.z.1))?;
-            d.set_item("e_min", col(&|q| q.energy_per_mass.0))?;
-            d.set_item("e_max", col(&|q| q.energy_per_mass.1))?;
-            d.set_item("j3_min", col(&|q| q.j3_per_mass.0))?;
-            d.set_item("j3_max", col(&|q| q.j3_per_mass.1))?;
-            d.set_item("crossings", col(&|q| q.crossings as f64))?;
+        for (key, column) in SUMMARY_KEYS.iter().zip(res.columns.into_iter().flatten()) {
+            let column: Bound<'py, PyArray1<f64>> = column.into_pyarray(py);
+            d.set_item(key, column)?;
         }
         Ok(d)
     }
+}
+
+/// The keys of the summary's columns in `EnsembleRun.result` (per unit mass: z [m], E/m [J/kg], J₃/m
+/// [m²/s], crossings a count), in the order of [`summary_columns`].
+const SUMMARY_KEYS: [&str; 7] = ["z_min", "z_max", "e_min", "e_max", "j3_min", "j3_max", "crossings"];
+
+/// The per-trajectory summaries as the columns of [`SUMMARY_KEYS`] (each read in one pass).
+fn summary_columns(s: &[Summary]) -> [Vec<f64>; 7] {
+    fn column(s: &[Summary], f: impl Fn(&Summary) -> f64) -> Vec<f64> {
+        s.iter().map(f).collect()
+    }
+    [
+        column(s, |q| q.z.0),
+        column(s, |q| q.z.1),
+        column(s, |q| q.energy_per_mass.0),
+        column(s, |q| q.energy_per_mass.1),
+        column(s, |q| q.j3_per_mass.0),
+        column(s, |q| q.j3_per_mass.1),
+        column(s, |q| q.crossings as f64),
+    ]
 }
 
 /// The start states of rows x, v (N, 3) [m, m/s], N ≥ 1.

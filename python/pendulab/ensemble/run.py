@@ -51,7 +51,11 @@ _DAMPED_ONLY = {"damping", "forcing_x", "forcing_y", "forcing_z", "forcing_omega
 def max_sway(z_min: FloatArray, z_max: FloatArray, g: FloatArray, length: FloatArray) -> FloatArray:
     """The largest angle [rad] from the stable equilibrium −sign(g) e₃ (the bottom for g ≥ 0, the top
     for g < 0) reached by trajectories whose heights ranged over [z_min, z_max] [m]."""
-    cos_sway = np.where(g < 0.0, z_min, -z_max) / length
+    g = np.asarray(g)
+    if g.size == 1:  # one gravity for all (the usual ensemble): one side, no mask
+        cos_sway = (z_min if g.item() < 0.0 else -z_max) / length
+    else:
+        cos_sway = np.where(g < 0.0, z_min, -z_max) / length
     return np.arccos(np.clip(cos_sway, -1.0, 1.0))
 
 
@@ -157,7 +161,8 @@ def simulate_ensemble(
 @dataclass(frozen=True)
 class _Plan:
     """A RATTLE ensemble run, checked: the starts x [m], v [m/s] (N, 3), per-trajectory l [m], g
-    [m/s²], c [1/s], which rows are finite, dt, t_end [s], the step count, what is saved."""
+    [m/s²], c [1/s], which rows are finite (a mask; ``slice(None)`` when all are) and which are not,
+    dt, t_end [s], the step count, what is saved."""
 
     x: FloatArray
     v: FloatArray
@@ -198,16 +203,19 @@ def _plan(
     lengths = per_trajectory("length", length, pendulum.length, n, limits.COMMON["length"])
     gs = per_trajectory("g", g, pendulum.g, n, limits.COMMON["g"])
     cs = per_trajectory("damping", damping, c_model, n, _DAMPING)
-    # every entry finite when clean (start_rows's one reduction); else row by row
-    finite = np.ones(n, dtype=bool) if clean else np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
-    invalid = np.flatnonzero(~finite)
+    # every row finite when clean (start_rows's one reduction: no mask needed); else row by row
+    finite: Any = slice(None)
+    invalid = np.empty(0, dtype=np.intp)
+    if not clean:
+        finite = np.isfinite(x).all(axis=1) & np.isfinite(v).all(axis=1)
+        invalid = np.flatnonzero(~finite)
     if invalid.size == n:
         raise InvalidInputError(f"every start row is non-finite (NaN or inf): {n} rows")
     dt = limits.number("dt", dt, "dt")
     t_end = limits.number("t_end", t_end, "time", positive=True)
     limits.planned_steps(0.0, t_end * n, dt)  # trajectory-steps: the work of the whole ensemble
     steps = round(t_end / dt)
-    if not (np.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
+    if not (math.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
         raise InvalidInputError(
             f"t_end = {limits.show(t_end)} s must be > 0 and a multiple of dt = {limits.show(dt)} s"
         )

@@ -102,16 +102,8 @@ def array(
     most ``max_size`` (default :data:`MAX_SAMPLES`) entries."""
     spec = _spec(limit)
     max_size = MAX_SAMPLES if max_size is None else max_size
-    span = f"numbers in [{spec['min']:g}, {spec['max']:g}] {spec['unit']}".rstrip()
-    what = (
-        f"an array of {span}"
-        if shape is None
-        else f"{math.prod(shape)} {span}"
-        if len(shape) == 1
-        else f"an array of shape {shape} of {span}"
-    )
     if isinstance(value, str | bytes | dict) or value is None:
-        raise invalid(name, value, what)
+        raise invalid(name, value, _what(spec, shape))
     try:
         size = np.size(value) if isinstance(value, np.ndarray) else None
         if size is not None and size > max_size:
@@ -120,24 +112,41 @@ def array(
     except InvalidInputError:
         raise
     except (TypeError, ValueError, OverflowError, RecursionError, MemoryError):
-        raise invalid(name, value, what) from None
+        raise invalid(name, value, _what(spec, shape)) from None
     if arr.dtype.kind not in "iuf" and not (arr.dtype == object and _all_real(arr)):
-        raise invalid(name, value, what)
+        raise invalid(name, value, _what(spec, shape))
     if arr.size > max_size:
         raise invalid(name, f"<array of {arr.size} values>", f"at most {max_size} values")
     try:
         out = np.asarray(arr, dtype=np.float64)
         out = np.ascontiguousarray(out) if out.ndim else out.copy()
     except (TypeError, ValueError, OverflowError):
-        raise invalid(name, value, what) from None
+        raise invalid(name, value, _what(spec, shape)) from None
     if shape is not None and out.shape != shape:
-        raise invalid(name, value, f"{what} (got shape {out.shape})")
+        raise invalid(name, value, f"{_what(spec, shape)} (got shape {out.shape})")
+    if out.size and _within(out, spec["min"], spec["max"]):
+        return out  # the usual case, told by two reductions; else the entry to name is looked for
     bad = ~(np.isfinite(out) & (out >= spec["min"]) & (out <= spec["max"]))
     if bad.any():
         i = np.unravel_index(int(np.argmax(bad)), out.shape) if out.ndim else ()
         where = "".join(f"[{k}]" for k in i)
         raise invalid(f"{name}{where}", arr[i] if out.ndim else arr.item(), spec["allowed"])
     return out
+
+
+def _what(spec: ParamSpec, shape: tuple[int, ...] | None) -> str:
+    """What :func:`array` allows, for its error messages: the numbers and units, and the shape."""
+    span = f"numbers in [{spec['min']:g}, {spec['max']:g}] {spec['unit']}".rstrip()
+    if shape is None:
+        return f"an array of {span}"
+    return f"{math.prod(shape)} {span}" if len(shape) == 1 else f"an array of shape {shape} of {span}"
+
+
+def _within(a: FloatArray, lo: float, hi: float) -> bool:
+    """Every entry of the non-empty float64 array ``a`` finite and in [lo, hi]: its least and largest
+    entry (a NaN makes both NaN, so false), no temporary array."""
+    least, largest = float(a.min()), float(a.max())
+    return math.isfinite(least) and math.isfinite(largest) and lo <= least and largest <= hi
 
 
 def _all_real(arr: np.ndarray) -> bool:

@@ -1,0 +1,126 @@
+"""The ensemble's border between Python and the core, made cheaper per call (docs/performance.md,
+"The fixed cost of a call"): the models' arrays copied once by ``EnsembleSpec`` and shared by its runs
+(later changes to the numpy arrays reach no run; a strided array gives the bits of a contiguous one),
+the saved states handed back in one pass (every trajectory equals ``simulate``), the array check told
+by two reductions when every entry is good (the same acceptance and the same error, naming the first
+bad entry, as the entry-by-entry check), and Ctrl-C of a long run still returning the samples reached
+within 1024 steps. Units SI: l [m], g [m/s²], c [1/s], t [s].
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import re
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import pendulab as pl
+from pendulab import validate as limits
+from pendulab._core import EnsembleRun, EnsembleSpec, RunOptions
+
+
+def _rows(n: int, lengths: np.ndarray) -> np.ndarray:
+    """n starts (x, v) on the spheres of radius ``lengths`` (v ⟂ x)."""
+    unit = pl.states_from_angles(pl.Pendulum(), theta=np.linspace(0.2, 2.6, n), phi_dot=0.8)
+    return unit * lengths[:, None]
+
+
+def test_spec_copies_its_arrays_once_and_every_run_shares_them() -> None:
+    """Two runs of one spec, made from a strided length array, give simulate_ensemble's bits after the
+    arrays it was made from were overwritten; trajectory k equals simulate() of its own pendulum."""
+    n, dt, steps = 70, 1e-3, 400
+    lengths = np.linspace(0.5, 2.0, n)
+    g = np.linspace(3.7, 24.8, n)
+    c = np.linspace(0.0, 0.6, n)
+    rows = _rows(n, lengths)
+    kw = {"dt": dt, "save_every": 100, "settle_angle": 0.3, "arithmetic": "unfused", "progress": False}
+    ref = pl.simulate_ensemble(pl.Pendulum(), rows, steps * dt, length=lengths, g=g, damping=c, **kw)
+    wide = np.zeros(2 * n)
+    wide[::2] = lengths
+    spec = EnsembleSpec(wide[::2], g.copy(), c.copy())
+    wide[:] = 7.0  # after the spec was made: no run sees it
+    x, v = np.ascontiguousarray(rows[:, :3]), np.ascontiguousarray(rows[:, 3:])
+    options = RunOptions(dt=dt, save_every=100, arithmetic="unfused")
+    for _ in range(2):
+        out = EnsembleRun(spec, x, v, options, steps, True, 0.3).result()
+        assert out["x"].shape == (n, 5, 3) and out["x"].flags.c_contiguous
+        assert np.array_equal(out["x"], ref.x) and np.array_equal(out["v"], ref.v)
+        assert np.array_equal(out["t"], ref.t) and np.array_equal(out["settle_time"], ref.settle_time)
+        assert ref.summary is not None
+        for key in ("z_min", "z_max", "e_min", "e_max", "j3_min", "j3_max", "crossings"):
+            assert np.array_equal(out[key], ref.summary[key]), key
+    for k in (0, 41, n - 1):
+        p = pl.Pendulum(length=lengths[k], g=g[k], damping=c[k])
+        s0 = p.state(rows[k, :3], rows[k, 3:])
+        tr = pl.simulate(p, s0, steps * dt, method="rattle", dt=dt, save_every=100, arithmetic="unfused")
+        assert np.array_equal(tr.x, ref.x[k]) and np.array_equal(tr.v, ref.v[k])
+
+
+def _first_bad(a: np.ndarray, lo: float, hi: float) -> tuple[int, ...] | None:
+    """The first entry of ``a`` (C order) that is not a finite number in [lo, hi], by definition."""
+    bad = ~(np.isfinite(a) & (a >= lo) & (a <= hi))
+    return tuple(int(i) for i in np.unravel_index(int(np.argmax(bad)), a.shape)) if bad.any() else None
+
+
+@pytest.mark.parametrize("limit", ["length", "g", "unbounded"])
+def test_array_check_accepts_and_names_exactly_as_entry_by_entry(limit: str) -> None:
+    """Random arrays (1-d, 2-d, 0-d) with NaN, ±inf, values one ulp outside the range and values on
+    its ends: ``validate.array`` accepts exactly the arrays whose every entry is a finite number in
+    the range, returns them unchanged, and names the first bad entry with its index."""
+    spec = (
+        limits.spec("unbounded", "", -math.inf, math.inf, "any finite number")
+        if limit == "unbounded"
+        else limits.COMMON[limit]
+    )
+    lo, hi = spec["min"], spec["max"]
+    span_lo, span_hi = max(lo, -1e6), min(hi, 1e6)
+    rng = np.random.default_rng(29)
+    edges = [np.nan, np.inf, -np.inf, np.nextafter(hi, np.inf), np.nextafter(lo, -np.inf), lo, hi]
+    accepted = refused = 0
+    for trial in range(300):
+        rows, cols = (int(k) for k in rng.integers(1, 6, size=2))
+        shape = [(int(rng.integers(1, 40)),), (rows, cols), ()][trial % 3]
+        a = rng.uniform(span_lo, span_hi, size=shape)
+        for _ in range(int(rng.integers(0, 3))):
+            a[tuple(int(rng.integers(0, s)) for s in a.shape)] = edges[int(rng.integers(0, len(edges)))]
+        first = _first_bad(a, lo, hi)
+        if first is None:
+            out = limits.array("w", a, spec)
+            assert np.array_equal(out, a) and out.dtype == np.float64
+            accepted += 1
+        else:
+            where = "".join(f"[{i}]" for i in first)
+            with pytest.raises(pl.InvalidInputError, match=re.escape(f"invalid w{where} = ")):
+                limits.array("w", a, spec)
+            refused += 1
+    assert accepted > 50 and refused > 50  # both outcomes exercised
+
+
+def test_ctrl_c_stops_a_long_run_with_the_samples_reached(pendulum: pl.Pendulum) -> None:
+    """SIGINT during a long run (on the pool, polled by Python): it stops within 1024 steps, warns,
+    is flagged interrupted, and keeps the samples every trajectory reached, each equal to simulate()."""
+    states = pl.states_from_angles(pendulum, theta=np.linspace(0.2, 2.9, 1024), phi_dot=1.0)
+    dt, every, total = 1e-3, 10_000, 2_000_000
+    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    t0 = time.perf_counter()
+    try:
+        with pytest.warns(RuntimeWarning, match="interrupted"):
+            res = pl.simulate_ensemble(pendulum, states, total * dt, dt=dt, save_every=every, progress=False)
+    finally:
+        timer.cancel()
+    assert time.perf_counter() - t0 < 60.0  # 2·10⁹ trajectory-steps would take far longer
+    assert res.interrupted and res.steps < total
+    assert len(res.t) == 1 + res.steps // every and np.all(np.isfinite(res.x))
+    k = 777
+    s0 = pendulum.state(states[k, :3], states[k, 3:])
+    if len(res.t) > 1:
+        tr = pl.simulate(pendulum, s0, res.t[-1], method="rattle", dt=dt, save_every=every)
+        assert np.array_equal(tr.x, res.x[k]) and np.array_equal(tr.v, res.v[k])
+    else:  # stopped before the first sample: the start is kept
+        assert np.array_equal(res.x[k, 0], states[k, :3])
