@@ -146,6 +146,15 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         }
     }
 
+    /// Lane `i`'s step of h \[s\] in its vertical field: both kicks −g h/2 [m/s] (gravity is
+    /// constant over the step), its l² \[m²\] and 1/l² [1/m²] (`integrate/rattle_vertical.rs`).
+    #[inline(always)]
+    fn vertical_field(&self, i: usize, h: f64) -> VerticalField {
+        let kick = -self.params.g(i) * (0.5 * h);
+        let (l2, inv_l2) = (self.params.l2(i), self.params.inv_l2(i));
+        VerticalField { h, kick0: kick, kick1: kick, l2, inv_l2 }
+    }
+
     /// x₀ [m], v₀ [m/s] of lane `i`.
     #[inline(always)]
     fn lane(&self, i: usize) -> (DVec3, DVec3) {
@@ -237,19 +246,14 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of several arrays at once: the loop the compiler vectorises
     fn rattle_vertical(&mut self, h: f64) {
-        let half = 0.5 * h;
-        let field = |t: &Self, i: usize| {
-            let kick = -t.params.g(i) * half;
-            VerticalField { h, kick0: kick, kick1: kick, l2: t.params.l2(i), inv_l2: t.params.inv_l2(i) }
-        };
         let mut quads = Quads::new();
         let mu = self.multipliers::<Fused>(h, &mut quads, |t, i| {
             let (x0, v0) = t.lane(i);
-            field(t, i).quadratic(x0, v0)
+            t.vertical_field(i, h).quadratic(x0, v0)
         });
         for i in 0..T {
             let (x0, v0) = self.lane(i);
-            let f = field(self, i);
+            let f = self.vertical_field(i, h);
             let w = DVec3::new(v0.x, v0.y, v0.z + f.kick0); // as VerticalField::quadratic
             let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
             let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
@@ -265,14 +269,11 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
     fn rattle_vertical_one_pass(&mut self, h: f64, how: Multiplier) -> bool {
-        let half = 0.5 * h;
         let mut next = [[[0.0; T]; 3]; 4];
         let mut ok = true;
         for i in 0..T {
             let (x0, v0) = self.lane(i);
-            let kick = -self.params.g(i) * half;
-            let (l2, inv_l2) = (self.params.l2(i), self.params.inv_l2(i));
-            let field = VerticalField { h, kick0: kick, kick1: kick, l2, inv_l2 };
+            let field = self.vertical_field(i, h);
             let (w, quad) = field.quadratic(x0, v0);
             let mu = match how {
                 Multiplier::Closed => quad.multiplier::<Fused>(h),
