@@ -71,7 +71,6 @@ fn methods(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
         .collect()
 }
 
-/// Registers the tables and checks.
 /// Whether a fused multiply-add is one instruction at the level the core's hot loops run at on this
 /// CPU (x86-64-v3/v4, aarch64): what `arithmetic="auto"` resolves by (`isa::fused_is_fast`).
 #[pyfunction]
@@ -87,6 +86,7 @@ fn arithmetic_version(arithmetic: &str) -> PyResult<u32> {
     Ok(Arithmetic::from_name(arithmetic).map_err(to_py)?.version())
 }
 
+/// Registers the tables and checks.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(arithmetic_version, m)?)?;
     m.add_function(wrap_pyfunction!(fused_is_fast, m)?)?;
