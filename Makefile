@@ -26,7 +26,8 @@ $(VENV)/.deps: python/pyproject.toml
 		"fastapi>=0.115" "uvicorn>=0.30" "websockets>=13" "orjson>=3.10" "qrcode>=8" "httpx>=0.27" "httpx2>=2" "dask[distributed]>=2024.1" \
 		"imageio-ffmpeg>=0.5" "pillow>=10.1" "nbclient>=0.10" "nbformat>=5.10" "ipykernel>=6.29" \
 		"ziglang>=0.13" "auditwheel>=6" \
-		"hypothesis>=6.100"
+		"hypothesis>=6.100" \
+		"mypy>=1.20,<2" "scipy-stubs>=1.15" "types-tqdm>=4.66" "types-qrcode>=8"
 	touch $@
 
 venv: $(VENV)/.deps
@@ -103,6 +104,7 @@ lint: venv
 	cargo clippy --workspace --all-targets -- -D warnings
 	$(VENV)/bin/ruff check python bench testdata/generate tools docs/gallery
 	$(VENV)/bin/ruff format --check python bench testdata/generate tools docs/gallery
+	$(VENV)/bin/mypy --config-file python/pyproject.toml   # the package's hints and _core.pyi ([tool.mypy])
 	$(PY) tools/check_imports.py
 	$(PY) tools/check_rust_modules.py crates/pendulab-core/src
 	$(PY) tools/check_rust_modules.py python/rust

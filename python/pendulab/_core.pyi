@@ -47,10 +47,8 @@ class ModelInfo(TypedDict):
     interactive: bool
     params: list[ParamSpec]
 
-class StatsDict(TypedDict):
-    steps: int
-    rejected: int
-    rhs_evals: int
+# Work counters (``stats``): a dict with the keys steps, rejected and rhs_evals (python/rust/convert.rs,
+# stats_dict).
 
 def methods() -> list[MethodInfo]: ...
 def fused_is_fast() -> bool: ...
@@ -159,7 +157,7 @@ class Solver:
     @property
     def done(self) -> bool: ...
     @property
-    def stats(self) -> StatsDict: ...
+    def stats(self) -> dict[str, int]: ...
 
 class Stepper:
     def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
@@ -173,7 +171,7 @@ class Stepper:
     @property
     def v(self) -> FloatArray: ...
     @property
-    def stats(self) -> StatsDict: ...
+    def stats(self) -> dict[str, int]: ...
 
 # --- python/rust/exact.rs: the exact solution, the reduction, the energy–momentum map ---
 
@@ -367,7 +365,7 @@ class ForceSolver:
     @property
     def done(self) -> bool: ...
     @property
-    def stats(self) -> StatsDict: ...
+    def stats(self) -> dict[str, int]: ...
 
 # --- python/rust/live.rs: the lab's live session (pendulab_core::live), the server's sessions ---
 

@@ -5,10 +5,14 @@ without ipywidgets, on every run)."""
 from __future__ import annotations
 
 import importlib.util
+from typing import Any
 
+from tqdm.std import tqdm as _text_bar
+
+tqdm: type[_text_bar[Any]]
 if importlib.util.find_spec("ipywidgets") is not None:  # pragma: no cover - depends on the environment
     from tqdm.auto import tqdm
 else:
-    from tqdm.std import tqdm
+    tqdm = _text_bar
 
 __all__ = ["tqdm"]

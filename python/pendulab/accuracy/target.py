@@ -91,7 +91,7 @@ def run_to_accuracy(
                 )
             )
         tr = run(pendulum, state, t_end, method="rattle8", dt=dt, error_estimate=True, **base)
-        err = tr.error_estimate.max_position
+        err = _max_position(tr)
         history.append((f"dt {dt:.2e} s", err))
         if err <= goal:
             return _tagged(tr, a, history)
@@ -130,7 +130,7 @@ def _dop853_search(
         tr = run(
             pendulum, state, t_end, method="dop853", rtol=rtol, atol=rtol * 1e-2, error_estimate=True, **kw
         )
-        err = tr.error_estimate.max_position
+        err = _max_position(tr)
         history.append((f"dop853{' conserve' if conserve else ''} rtol {rtol:.0e}", err))
         if err <= goal:
             return _tagged(tr, a, history)
@@ -139,6 +139,13 @@ def _dop853_search(
         last = err
         tol = rtol * min(0.1, 0.5 * goal / err)
     return None
+
+
+def _max_position(tr: Trajectory) -> float:
+    """The estimated largest position error [m] of a run made with ``error_estimate=True``."""
+    estimate = tr.error_estimate
+    assert estimate is not None, "a run with error_estimate=True carries its estimate"
+    return estimate.max_position
 
 
 def _tagged(tr: Trajectory, a: float, history: list[tuple[str, float]]) -> Trajectory:

@@ -68,12 +68,12 @@ class Clock:
 
     def frame_times(self) -> FloatArray:
         """t_k [s] for every frame k."""
-        return self.t0 + self.frame_dt * np.arange(self.frames)
+        return self.t0 + self.frame_dt * np.arange(self.frames, dtype=np.float64)
 
     def dense_times(self) -> FloatArray:
         """The dense grid [s]: ``substeps`` samples per frame interval; frame k is sample k·substeps."""
         n = (self.frames - 1) * self.substeps + 1
-        return self.t0 + (self.frame_dt / self.substeps) * np.arange(n)
+        return self.t0 + (self.frame_dt / self.substeps) * np.arange(n, dtype=np.float64)
 
 
 def _positive(name: str, value: object, unit: str, upper: float | None = None) -> float:

@@ -113,7 +113,7 @@ def animate(
         fmt = _check_movie_path(out)
         given_size = parse_size(size) if size is not None else None
         sc = load_scenario(_scenario_file(scenario)).with_overrides(t_end=t_end)
-        sim = sc.spec.simulation
+        sim = sc._pendulum_spec().simulation
         if fmt == "gif":  # what is not given is chosen to fit a GIF's pixel cap (the speed too)
             chosen = size is None or fps is None
             if duration is None:
@@ -128,7 +128,7 @@ def animate(
         check_size(fmt, frame_size)
         names = panel_names(panels, 1)
         boxes(names, *frame_size)
-        is_spring = sc.spec.pendulum.model == "spring"
+        is_spring = sc._pendulum_spec().pendulum.model == "spring"
         if is_spring and exact_:
             raise ScenarioError(
                 str(scenario),

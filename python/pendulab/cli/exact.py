@@ -22,6 +22,7 @@ from ..simulation import simulate
 from ..theory.advance import measured_azimuth_advance
 from ..theory.em_map import em_map
 from ..theory.exact import ExactSolution, exact
+from ..trajectory import Trajectory
 from ..validate import show
 from .common import _check_output, _fail, _say, _scenario_file, _user_errors, app
 
@@ -112,7 +113,7 @@ def exact_cmd(
             _check_output(out)
         sc = load_scenario(_scenario_file(scenario))
         if t is None:
-            sim = sc.spec.simulation
+            sim = sc._pendulum_spec().simulation
             times = np.linspace(sim.t0, sim.t_end, 1001)
         else:
             times = parse_times(t)
@@ -309,7 +310,7 @@ def reduced(
         span = (
             periods * tz
             if tz is not None and math.isfinite(tz)
-            else sc.spec.simulation.t_end - sc.spec.simulation.t0
+            else sc._pendulum_spec().simulation.t_end - sc._pendulum_spec().simulation.t0
         )
         tr = sol.trajectory(np.linspace(0.0, span, 2001))
         from ..plot import plot_reduced
@@ -366,19 +367,21 @@ def plot_cmd(
             _say(f"phase split of {scenario} ({sol.kind}): dphi = {sol.phases().total:.15g} rad per z-period")
             _say(f"wrote {out}")
             return
-        sol = _solution(sc) if use_exact or sc.pendulum().is_ideal else None
-        sim = sc.spec.simulation
+        exact_sol = _solution(sc) if use_exact or sc.pendulum().is_ideal else None
+        sim = sc._pendulum_spec().simulation
         if use_exact:
-            assert sol is not None
-            tz = sol.period_z
+            assert exact_sol is not None
+            tz = exact_sol.period_z
             per = tz if tz is not None and math.isfinite(tz) and tz > 0 else sim.t_end - sim.t0
             n = int(min(max(PLOT_SAMPLES_PER_PERIOD * (sim.t_end - sim.t0) / per, 2001), 200_001))
             times = np.linspace(sim.t0, sim.t_end, n)
             # the scenario's start is the state at t0, as for a simulation
-            tr = dataclasses.replace(sol.trajectory(times - sim.t0), t=times)
+            tr = dataclasses.replace(exact_sol.trajectory(times - sim.t0), t=times)
         else:
-            tr = sc.run()
-        plotting.plot_trajectory(tr, out, exact=sol, kind=kind)
+            run = sc.run()
+            assert isinstance(run, Trajectory), "sc.pendulum() above refused a spring and a crane"
+            tr = run
+        plotting.plot_trajectory(tr, out, exact=exact_sol, kind=kind)
         _say(
             f"{kind} plot of {scenario}"
             + (f": {sc.title}" if sc.title else "")

@@ -162,7 +162,8 @@ def fit_cmd(
             k_over_m = full["stiffness"] / full["mass"]
             pendulum = SwingingSpring(k_over_m, full["length"], full["g"], full["mass"])
         else:
-            pendulum = Pendulum(**base, model=model, **values)
+            # **base (l, g, m) and **values (own parameters): floats by name, no model/force/pivot_samples
+            pendulum = Pendulum(**base, model=model, **values)  # type: ignore[arg-type]
         names = [c.strip() for c in columns.split(",")] if columns else None
         kwargs, notes = read_table_notes(find_example(data, "data"), names)
         for note in notes:

@@ -38,7 +38,7 @@ from .crane import report
 
 
 def _settings(sc: Scenario) -> str:
-    sim = sc.spec.simulation
+    sim = sc._pendulum_spec().simulation
     step = f"dt = {sim.dt:g} s" if sim.dt is not None else "dt = default"
     if sim.is_adaptive():
         rtol, atol = sim.resolved_tolerances()

@@ -142,7 +142,7 @@ def sweep_cmd(
             _say(_plan(sf, kwargs), err=True)
         try:
             show = False if quiet else progress
-            res = sweep(sf.design, out=out, resume=resume, progress=show, **kwargs)  # type: ignore[arg-type]
+            res = sweep(sf.design, out=out, resume=resume, progress=show, **kwargs)
         except ResumeConflict as e:  # the fix spelled as this command's options
             _fail(e.for_cli())
         except KeyboardInterrupt:

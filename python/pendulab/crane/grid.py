@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from .._core import InvalidInputError, RunOptions, crane_residual_grid
 from .._progress import tqdm
@@ -44,8 +45,8 @@ class GridResult:
 
 
 def residual_grid(
-    ropes: Sequence[float],
-    ratios: Sequence[float],
+    ropes: ArrayLike,
+    ratios: ArrayLike,
     shapers: Sequence[Shaper | None],
     distance: float = 5.0,
     v_max: float = 0.5,

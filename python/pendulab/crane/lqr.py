@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_are
 
@@ -42,7 +43,7 @@ class LQR:
     clipped to ±a_max; inf for none)."""
 
     K: FloatArray
-    poles: FloatArray
+    poles: npt.NDArray[np.inexact[Any]]  # eigenvalues of A − B K: complex in general
     rope: float
     g: float
     a_max: float

@@ -92,8 +92,8 @@ def _build(f: CraneSpec, source: str) -> CraneScenario:
         sh = f.shaper
         if sh.omega is not None and sh.rope is not None:
             raise InvalidInputError(f"{source}: [shaper] give omega [rad/s] or rope [m], not both")
-        w = sh.omega if sh.omega is not None else float(probe.modes(rope=sh.rope)[0])
-        s = shaper(sh.kind, omega=w, damping=sh.damping, tolerance=sh.tolerance)
+        omega = sh.omega if sh.omega is not None else float(probe.modes(rope=sh.rope)[0])
+        s = shaper(sh.kind, omega=omega, damping=sh.damping, tolerance=sh.tolerance)
         if f.move is None:
             raise InvalidInputError(f"{source}: [shaper] needs a [move] to shape")
     path: CranePath = Gantry()

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from scipy.interpolate import CubicSpline
@@ -169,6 +169,12 @@ def _angles(d: FloatArray) -> FloatArray:
     return np.stack([theta, np.arctan2(d[:, 1], d[:, 0])], axis=1)
 
 
+def _triple(v: tuple[float, float, float]) -> tuple[float, float, float]:
+    """``v`` (a :class:`Wind` vector [m/s], declared as 3 numbers) as Python floats; a vector of another
+    length is passed on unchanged in length for the core to refuse."""
+    return cast("tuple[float, float, float]", tuple(map(float, v)))
+
+
 def _direction(name: str, angles: tuple[float, float]) -> FloatArray:
     th, ph = (float(a) for a in angles)
     if not (math.isfinite(th) and math.isfinite(ph) and 0 <= th < math.pi):
@@ -270,20 +276,23 @@ class Crane:
         lq, ldq, _ = (a[0, 0] for a in self.hoist._pva(np.array([t0])))
         y0 = np.zeros(16)
         y0[0:3], y0[3:6] = p + lq * u, dp + ldq * u
-        hooked = self.hook_mass is not None and self.rigging is not None
-        if hooked:
-            y0[6:9], y0[9:12] = y0[0:3] + self.rigging * u2, y0[3:6]
+        # (hook mass [kg], rigging [m]) when the payload hangs under a hook
+        hook = None if self.hook_mass is None or self.rigging is None else (self.hook_mass, self.rigging)
+        hooked = hook is not None
+        if hook is not None:
+            y0[6:9], y0[9:12] = y0[0:3] + hook[1] * u2, y0[3:6]
         w = self.wind
         cwa_payload = w.drag_coefficient * w.area
-        if hooked:
-            body1 = (self.hook_mass, w.hook_drag_coefficient * w.hook_area)
-            body2 = (self.payload_mass, cwa_payload, self.rigging)
+        body2: tuple[float, float, float] | None
+        if hook is not None:
+            body1 = (hook[0], w.hook_drag_coefficient * w.hook_area)
+            body2 = (self.payload_mass, cwa_payload, hook[1])
         else:
             body1, body2 = (self.payload_mass, cwa_payload), None
         om, amp, ph = w.modes()
         wind = (
-            tuple(map(float, w.velocity)),
-            tuple(map(float, w.gust)),
+            _triple(w.velocity),
+            _triple(w.gust),
             w.gust_start,
             w.gust_duration,
             w.air_density,
@@ -298,8 +307,8 @@ class Crane:
         x1, v1 = y[:, 0:3], y[:, 3:6]
         x2, v2 = (y[:, 6:9], y[:, 9:12]) if hooked else (x1, v1)
         energy = 0.5 * self.payload_mass * np.sum(v2 * v2, axis=1) + self.payload_mass * self.g * x2[:, 2]
-        if hooked:
-            energy += 0.5 * self.hook_mass * np.sum(v1 * v1, axis=1) + self.hook_mass * self.g * x1[:, 2]
+        if hook is not None:
+            energy += 0.5 * hook[0] * np.sum(v1 * v1, axis=1) + hook[0] * self.g * x1[:, 2]
         work = {k: y[:, 12 + i] for i, k in enumerate(("hoist", "pivot", "wind", "damping"))}
         rope = self.hoist.length(t)
         t1 = out["tension"][:, 0]

@@ -134,13 +134,14 @@ def _models(
         extra = dict(pendulum.extra)
         if "damping" in values:
             extra["damping"] = values["damping"]
+        # **extra holds only the model's own float parameters by name (never model/force/pivot_samples)
         q = Pendulum(
             length=values["length"],
             g=values["g"],
             mass=pendulum.mass,
             model=pendulum.model,
             pivot_samples=pendulum.pivot_samples,
-            **extra,
+            **extra,  # type: ignore[arg-type]
         )
         models.append(q.spec)
     return models, np.ascontiguousarray(index.ravel(), dtype=np.int64)

@@ -28,7 +28,7 @@ from ..variants.compound import CompoundPendulum
 TORQUES = {"damping": ("damping_torque", "N m s"), "friction": ("friction_torque", "N m")}
 
 
-def pendulum_of(body: object, pendulum: Pendulum | None) -> Pendulum:
+def pendulum_of(body: object, pendulum: object) -> Pendulum:
     """The point pendulum the fit runs: ``pendulum``'s model, g and laws with the body's l_eq and M."""
     if not isinstance(body, CompoundPendulum):
         raise InvalidInputError(f"body must be a pendulab.CompoundPendulum, got {type(body).__name__}")
@@ -39,7 +39,8 @@ def pendulum_of(body: object, pendulum: Pendulum | None) -> Pendulum:
         )
     if base.force is not None or base.pivot_samples is not None:
         raise InvalidInputError("body= takes a pendulum on a fixed axis: no force= and no pivot_samples=")
-    return Pendulum(body.equivalent_length, base.g, body.mass, model=base.model, **base.extra)
+    # **base.extra holds only the model's own float parameters by name (never model/force/pivot_samples)
+    return Pendulum(body.equivalent_length, base.g, body.mass, model=base.model, **base.extra)  # type: ignore[arg-type]
 
 
 @dataclass(frozen=True)

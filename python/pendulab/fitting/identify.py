@@ -26,6 +26,7 @@ from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 
 import numpy as np
+import numpy.typing as npt
 
 from .._core import IntegrationError, InvalidInputError
 from ..model import FloatArray
@@ -120,7 +121,7 @@ def analyse(
     cov = np.full((k, k), math.nan)
     if not np.all(np.isfinite(jac)):  # a model run that overflowed: no linear algebra on it
         bad = np.flatnonzero(~np.all(np.isfinite(jac), axis=0))
-        for i in bad:
+        for i in bad.tolist():
             reasons[names[i]] = "the model's response to it is not finite at the fit"
         jac = np.where(np.isfinite(jac), jac, 0.0)
     # z: per unit of ln p (positive parameters) or of a typical size; y: z times the column norms
@@ -131,7 +132,7 @@ def analyse(
     # frame-free data, or a stationary point such as φ̇₀ = 0 seen from the side): out of the analysis
     # before the others are normalised, so that its noise cannot stand in for a real weak direction
     flat = raw <= SINGULAR * max(float(raw.max()) if raw.size else 0.0, 1e-300)
-    for i in np.flatnonzero(flat):
+    for i in np.flatnonzero(flat).tolist():
         reasons.setdefault(
             names[i],
             "the residuals do not change with it at the fit (a symmetry of the data, or a stationary "
@@ -157,7 +158,7 @@ def analyse(
             combo = _combination(names, p, log, live, n_y / norms, vt[keep], s[keep], norms, variance)
             if combo is not None:
                 combos[combo[0]] = combo[1]
-        good = np.array([names[i] not in reasons for i in live])
+        good = np.array([names[i] not in reasons for i in live.tolist()])
         sub = live[good]
         if sub.size:
             js = jz[:, sub]
@@ -192,8 +193,8 @@ def analyse(
 def _combination(
     names: Sequence[str],
     p: FloatArray,
-    log: FloatArray,
-    live: FloatArray,
+    log: npt.NDArray[np.bool_],
+    live: npt.NDArray[np.intp],
     n_z_live: FloatArray,
     vt_keep: FloatArray,
     s_keep: FloatArray,

@@ -116,7 +116,7 @@ def conclude(
         values=final,
         predictions=pred,
         sigma={
-            k: (obs.sigma[k] if obs.sigma[k] is not None else sig[k] * math.sqrt(variance))
+            k: (given if (given := obs.sigma[k]) is not None else sig[k] * math.sqrt(variance))
             for k in obs.values
         },
         sigma_estimated=not sigma_known,

@@ -31,7 +31,7 @@ any measurement noise and noise-free data are recovered to about 1e-8; the sprin
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, replace
 from typing import Any
 
@@ -114,7 +114,7 @@ class Problem:
         part = replace(obs, t=obs.t[:n], values={k: v[:n] for k, v in obs.values.items()})
         return Problem(self.model, self.values, self.free, part)
 
-    def with_free(self, u: Sequence[float]) -> dict[str, float]:
+    def with_free(self, u: Iterable[float]) -> dict[str, float]:
         """All values, the free ones taken from ``u`` (same order as ``free``)."""
         out = dict(self.values)
         out.update({name: float(x) for name, x in zip(self.free, u, strict=True)})
@@ -131,7 +131,8 @@ class Problem:
             for k, spec in own.items()
             if k not in ("length", "g", "mass") and values[k] != spec["default"]
         }
-        return Pendulum(values["length"], values["g"], values["mass"], model=self.model, **extra)
+        # **extra holds only the model's own float parameters by name (never model/force/pivot_samples)
+        return Pendulum(values["length"], values["g"], values["mass"], model=self.model, **extra)  # type: ignore[arg-type]
 
     def state0(self, pendulum: Pendulum | SwingingSpring, values: Mapping[str, float]) -> State:
         if isinstance(pendulum, SwingingSpring):
@@ -213,7 +214,7 @@ class Problem:
             1e6, *(1e3 * float(np.max(np.abs(v))) / sigma[k] for k, v in self.obs.values.items() if v.size)
         )
 
-    def safe_residuals(self, u: Sequence[float], sigma: Mapping[str, float]) -> FloatArray:
+    def safe_residuals(self, u: Iterable[float], sigma: Mapping[str, float]) -> FloatArray:
         """:meth:`residuals` for the optimizer: a model that cannot be evaluated there (a start off the
         registry's limits, a run that diverged) gives a large finite residual (:meth:`penalty`) instead
         of an exception."""

@@ -272,7 +272,7 @@ class FitResult:
         pend: dict[str, Any] = {"model": p.model, "length": p.length, "mass": p.mass, "g": p.g, **p.extra}
         theta, phi = self.state0.angles()
         vals = {**self.fixed, **self.params}
-        data = {
+        data: dict[str, Any] = {
             "title": title or f"fitted to {len(self.t)} samples (pendulab fit)",
             "pendulum": pend,
             "initial": {

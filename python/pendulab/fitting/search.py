@@ -262,13 +262,13 @@ class Search:
                 jac=jac if exact else "2-point",
                 bounds=(self.lower, self.upper),
                 x_scale=self.scales,
-                loss=self.loss,
+                loss=self.loss,  # type: ignore[arg-type]  # one of SciPy's names (settings.check_settings)
                 f_scale=1.0,
                 max_nfev=self.max_evaluations if evaluations is None else evaluations,
                 xtol=tol,
                 ftol=tol,
                 gtol=tol,
-                diff_step=1e-8,
+                diff_step=1e-8,  # type: ignore[arg-type]  # SciPy takes a scalar; its stubs want an array
                 method="trf",
             )
 

@@ -25,12 +25,15 @@ from ..validate import LIMITS, array, flag, invalid, spec
 from ..validate import number as checked
 
 if TYPE_CHECKING:
-    from .._core import ModelSpec
+    from .._core import ModelSpec, ParamSpec
 
 FloatArray = npt.NDArray[np.float64]
 
 
-_SPEED = {**LIMITS["velocity"], "allowed": f"{LIMITS['velocity']['allowed']} (the speed bound of a start)"}
+_SPEED: ParamSpec = {
+    **LIMITS["velocity"],
+    "allowed": f"{LIMITS['velocity']['allowed']} (the speed bound of a start)",
+}
 
 
 def _vec3(name: str, a: Any, limit: str = "position") -> FloatArray:

@@ -32,13 +32,14 @@ def build_pendulum(spec: ScenarioSpec, source: str) -> Pendulum:
     """The pendulum of ``[pendulum]`` (every model but the spring), its samples checked against the run."""
     p, sim = spec.pendulum, spec.simulation
     try:
+        # **p.extras() holds only the model's own float parameters by name (never model/force/pivot_samples)
         pendulum = Pendulum(
             length=p.length,
             g=p.g,
             mass=p.mass,
             model=p.model,
             pivot_samples=p.pivot_samples(),
-            **p.extras(),
+            **p.extras(),  # type: ignore[arg-type]
         )
     except InvalidInputError as e:
         given = "".join(

@@ -262,7 +262,7 @@ class Scenario:
         sc = self.with_overrides(overrides, **fields)
         if sc._crane is not None:
             try:
-                return sc._crane.run()  # type: ignore[no-any-return]
+                return sc._crane.run()
             except (IntegrationError, InvalidInputError) as e:
                 raise type(e)(f"{sc.source}: {e}") from None
         spec = sc._pendulum_spec()
@@ -277,7 +277,7 @@ class Scenario:
                 save_every=sim.save_every or 1,
                 order=SPRING_ORDERS[sim.method],
             )
-            return dataclasses.replace(run, t=run.t + sim.t0)  # type: ignore[return-value]
+            return dataclasses.replace(run, t=run.t + sim.t0)
         rtol, atol = sim.resolved_tolerances()
         try:
             return simulate(

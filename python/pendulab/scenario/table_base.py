@@ -10,7 +10,7 @@ Units: SI (m, m/s, s; angles in rad, or in degrees where a key ends in ``_deg``:
 from __future__ import annotations
 
 import math
-from typing import Annotated, Any
+from typing import Annotated, Any, TypedDict
 
 from pydantic import BaseModel, ConfigDict, Field
 
@@ -26,10 +26,24 @@ class _Section(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
 
 
-_VEC3 = {"min_length": 3, "max_length": 3}
+class _Length(TypedDict):
+    """pydantic's bounds of a list's length (``Field(**_VEC3)``)."""
+
+    min_length: int
+    max_length: int
 
 
-def _lim(name: str) -> dict[str, float]:
+class _Bounds(TypedDict):
+    """pydantic's bounds of a number (``Field(**_lim(name))``)."""
+
+    ge: float
+    le: float
+
+
+_VEC3: _Length = {"min_length": 3, "max_length": 3}
+
+
+def _lim(name: str) -> _Bounds:
     """pydantic bounds of entry ``name`` of the table of limits (:mod:`pendulab.validate`)."""
     spec = COMMON[name] if name in COMMON else LIMITS[name]
     return {"ge": spec["min"], "le": spec["max"]}

@@ -13,7 +13,7 @@ lab (:data:`MODEL_SPECS`). SI units: l [m], m [kg], g [m/s²], dt [s], states in
 from __future__ import annotations
 
 import json
-from typing import TYPE_CHECKING, Annotated, Any, Literal
+from typing import TYPE_CHECKING, Annotated, Any, Literal, TypedDict
 
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
@@ -95,7 +95,14 @@ class _Command(BaseModel):
     model_config = ConfigDict(extra="forbid", strict=True, allow_inf_nan=False, frozen=True)
 
 
-def limit_bounds(name: str) -> dict[str, float]:
+class Bounds(TypedDict):
+    """pydantic's bounds of a number (``Field(**limit_bounds(name))``)."""
+
+    ge: float
+    le: float
+
+
+def limit_bounds(name: str) -> Bounds:
     """The pydantic ``ge``/``le`` of the live control ``name`` (:data:`LIMITS`, the core's bounds)."""
     return {"ge": LIMITS[name]["min"], "le": LIMITS[name]["max"]}
 
@@ -274,7 +281,8 @@ Command = (
     | LoadScenario
     | Crane
 )
-COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])
+# mypy types an Annotated[...] expression as a special form, not as the type form TypeAdapter takes
+COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])  # type: ignore[arg-type]
 COMMAND_TYPES: tuple[str, ...] = LiveSession.command_types()
 """The command types in the lab's order (the core's ``live::wire::COMMAND_TYPES``)."""
 

@@ -102,6 +102,7 @@ def measured_path(res: FitResult, data: dict[str, Any]) -> dict[str, Any] | None
     left out, the rest sorted by time like the fit's."""
     t = np.asarray(data["t"], dtype=np.float64)
     values = {**res.fixed, **res.params}
+    assert isinstance(res.pendulum, Pendulum), "the lab fits a Pendulum (run_fit), never a spring"
     ell = res.pendulum.length
     along_y = False
     if "positions" in data:

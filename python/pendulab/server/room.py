@@ -26,7 +26,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import time
-from collections.abc import AsyncIterator
+from collections.abc import AsyncIterator, Mapping
 from typing import Any
 
 from .protocol import message
@@ -54,7 +54,7 @@ quarter of two cores' time, the rest left for the sessions' frames, sending them
 requests (one tick of the whole room must fit in 16.7 ms, :mod:`.ticker`)."""
 
 
-def client_key(scope: dict[str, Any]) -> str:
+def client_key(scope: Mapping[str, Any]) -> str:
     """The client a request or WebSocket comes from: its address (``"?"`` when the server does not
     know it)."""
     client = scope.get("client")

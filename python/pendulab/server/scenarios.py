@@ -12,6 +12,7 @@ from pathlib import Path
 from ..integrators import DEFAULTS
 from ..model import State
 from ..scenario import Scenario, ScenarioError, load_scenario
+from ..scenario.crane_schema import CraneSpec as CraneFileSpec
 from ..scenario.examples import scenario_files as shipped_scenarios
 from .crane_setup import crane_pendulum, crane_start
 from .live_models import LabPendulum, scenario_pendulum
@@ -53,7 +54,7 @@ class Setup:
         """The setup of ``sc``; :class:`ScenarioError` if its model does not run in the lab (sampled
         pivot paths run with ``pendulab run`` only). A crane's file, ``[crane]``, starts the crane mode
         with its crane (:mod:`.crane_setup`)."""
-        if sc.is_crane:
+        if isinstance(sc.spec, CraneFileSpec):  # sc.is_crane
             crane = crane_pendulum(sc.spec)
             sim_c = sc.spec.simulation
             return cls(
@@ -66,7 +67,7 @@ class Setup:
                 f"[pendulum] model = {model!r} does not run in the lab (use pendulab run); "
                 f"the lab's models: {', '.join(MODEL_SPECS)}",
             )
-        sim = sc.spec.simulation
+        sim = sc._pendulum_spec().simulation
         rtol, atol = sim.resolved_tolerances()
         dt = sim.dt if sim.dt is not None else float(DEFAULTS["dt"])
         return cls(

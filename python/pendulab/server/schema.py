@@ -68,6 +68,8 @@ def param_schema(p: ParamSpec) -> dict[str, Any]:
     """One parameter for the page: name, label (the words a student reads), unit (SI), description (one
     line of help), allowed (in words), default, the hard
     limits min/max (null: none) and the slider's ui_min, ui_max, step."""
+    lo: float | None
+    hi: float | None
     if p["name"] in LIMITS:
         lim = LIMITS[p["name"]]
         lo, hi, ui = lim["min"], lim["max"], (lim["ui_min"], lim["ui_max"], lim["step"])

@@ -76,7 +76,8 @@ class Dask:
         else:
             self.client = connect(str(scheduler))
         nthreads = sum(self.client.nthreads().values()) or 1
-        where = "LocalCluster" if self.cluster is not None else self.client.scheduler.address
+        scheduler = self.client.scheduler  # None only for a client that never connected
+        where = "LocalCluster" if self.cluster is not None or scheduler is None else scheduler.address
         self.name = f"dask ({where}, {nthreads} worker thread{'s' if nthreads > 1 else ''})"
         self.slots = 2 * nthreads
         self.run = uuid.uuid4().hex[:8]

@@ -237,7 +237,7 @@ def _states(c: dict[str, FloatArray], mass: float) -> tuple[FloatArray, FloatArr
     x, v = np.empty((m, 3)), np.empty((m, 3))
     for i in range(m):
         angles = [float(c[k][i]) for k in ("theta0", "phi0", "theta_dot0", "phi_dot0")]
-        x[i], v[i] = state_from_angles(_point(c, i, mass), angles)
+        x[i], v[i] = state_from_angles(_point(c, int(i), mass), angles)
     return x, v
 
 
@@ -262,7 +262,7 @@ def _rotation_numbers(c: dict[str, FloatArray], mass: float) -> FloatArray:
     for i in np.flatnonzero(ok & np.isnan(w) & (j != 0.0)):
         one = {k: a[i : i + 1] for k, a in c.items()}
         x, v = _states(one, mass)
-        adv = ExactSolution(_point(c, i, mass), (x[0], v[0])).azimuth_advance
+        adv = ExactSolution(_point(c, int(i), mass), (x[0], v[0])).azimuth_advance
         w[i] = np.nan if adv is None else adv / (2.0 * math.pi)
     return w
 
@@ -271,7 +271,7 @@ def _periods(c: dict[str, FloatArray], mass: float) -> FloatArray:
     x, v = _states(c, mass)
     out = np.empty(len(x))
     for i in range(len(x)):
-        tz = ExactSolution(_point(c, i, mass), (x[i], v[i])).period_z
+        tz = ExactSolution(_point(c, int(i), mass), (x[i], v[i])).period_z
         out[i] = np.nan if tz is None else tz
     return out
 

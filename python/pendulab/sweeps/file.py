@@ -259,7 +259,8 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
     p = spec.pendulum
     try:
         extra = {"damping": p.damping} if p.damping != 0.0 else {}
-        pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, **extra)
+        # **extra holds only the model's own float parameters by name (never model/force/pivot_samples)
+        pendulum = Pendulum(length=p.length, g=p.g, mass=p.mass, **extra)  # type: ignore[arg-type]
     except InvalidInputError as e:
         raise SweepFileError(source, f"[pendulum] {e}") from None
     sim = spec.simulation

@@ -125,7 +125,8 @@ class CompoundPendulum:
             extra["friction"] = friction_torque / self.inertia
         if damping_torque:
             extra["damping"] = damping_torque / self.inertia
-        return Pendulum(self.equivalent_length, g, self.mass, **extra)
+        # **extra holds only the model's own float parameters by name (never model/force/pivot_samples)
+        return Pendulum(self.equivalent_length, g, self.mass, **extra)  # type: ignore[arg-type]
 
     def solve_distance(self, index: int, equivalent_length: float) -> CompoundPendulum:
         """The same body with part ``index`` moved along the radius so that its equivalent length is

@@ -134,7 +134,7 @@ class SpringTrajectory:
 
     def save(self, path: str | os.PathLike[str]) -> Path:
         """Writes the run atomically; the format from the suffix (.csv, .parquet, .nc)."""
-        return io.save(self, path)  # type: ignore[arg-type]
+        return io.save(self, path)
 
     def animate(self, path: str | os.PathLike[str], settings: Any = None, **options: Any) -> Any:
         """Writes a movie of the swinging spring to ``path`` (.mp4, .webm or .gif): a coil from the
