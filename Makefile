@@ -13,7 +13,7 @@ STATIC := python/pendulab/server/static
 # `make` alone builds the package into .venv (see build below).
 .DEFAULT_GOAL := build
 
-.PHONY: run simulate serve web test build venv lint fmt test-rust test-python test-tour test-web test-e2e bench \
+.PHONY: run simulate serve web test build venv lint lint-stubs fmt test-rust test-python test-tour test-web test-e2e bench \
 	bench-compare bench-peers bench-fit validate-fit golden clean fuzz docs docs-serve bench-portable wheel test-wheel \
 	bench-peers-portable bench-roofline check-aarch64 wasm test-wasm lab-html test-lab-html bench-wasm bench-lab-html test-lab-firefox test-tour-wheel \
 	bench-instructions
@@ -110,6 +110,14 @@ lint: venv
 	$(PY) tools/check_rust_modules.py python/rust
 	$(PY) tools/check_rust_modules.py crates/pendulab-wasm/src
 	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
+
+# The hand-written stub of the compiled core, python/pendulab/_core.pyi, against the core itself (mypy's
+# stubtest on the built module: every binding of python/rust/*.rs in the stub with the same parameter
+# names, kinds and defaults, nothing in the stub that the core lacks; the exceptions, stub-only types,
+# in python/stubtest-allowlist.txt). Needs the build, so it is apart from lint; `make test` runs both.
+lint-stubs: build
+	$(PY) -m mypy.stubtest pendulab._core --mypy-config-file python/pyproject.toml --ignore-disjoint-bases \
+		--allowlist python/stubtest-allowlist.txt
 
 fmt: venv
 	cargo fmt --all
@@ -231,7 +239,7 @@ docs-serve: build $(VENV)/.docs-deps lab-html
 
 test: DOCS_EXECUTE := false
 test: PYTEST_ARGS := --deselect python/tests/test_tour.py::test_notebook_runs
-test: lint test-rust test-wasm test-python test-web test-e2e test-lab-html docs test-wheel test-tour-wheel
+test: lint lint-stubs test-rust test-wasm test-python test-web test-e2e test-lab-html docs test-wheel test-tour-wheel
 
 # Hostile input, long (docs/limits.md, "Fuzzing"): FUZZ_CASES generated inputs per entry point of the
 # Python API (hypothesis) and of the Rust core (proptest), and the whole corpus of FUZZ_FILES mutated

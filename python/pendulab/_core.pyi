@@ -1,10 +1,13 @@
 """Type stubs of the compiled core ``pendulab._core`` (hand-written; keep in sync with python/rust/lib.rs).
+``make lint`` type-checks the package against them (mypy) and ``make lint-stubs`` checks them against the
+built core (mypy's stubtest: names, parameters and defaults; the core's classes are final and built by
+``__new__``, PyO3's ``#[new]``).
 
 Units are SI: m, kg, s, rad. Vectors are float64 arrays of shape (3,), sequences (N, 3).
 """
 
 from collections.abc import Callable
-from typing import Any, TypedDict
+from typing import Any, Self, TypedDict, final
 
 import numpy as np
 import numpy.typing as npt
@@ -87,19 +90,20 @@ def diagnostics(
 StateArrays = tuple[FloatArray, FloatArray]
 """A start state: x0 [m], v0 [m/s], 3 components each."""
 
+@final
 class ModelSpec:
     """A model built and checked once: a registry model (l [m], m [kg], g [m/s²], its extra
     parameters, pivot samples (times [s], positions [m])) or, by ``spring_model``, the swinging spring."""
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         length: float,
         mass: float,
         g: float,
         model_name: str | None = None,
         extra: list[tuple[str, float]] | None = None,
         pivot: tuple[FloatArray, FloatArray] | None = None,
-    ) -> None: ...
+    ) -> Self: ...
     @staticmethod
     def spring_model(k_over_m: float, rest_length: float, g: float, mass: float) -> ModelSpec: ...
     @property
@@ -111,14 +115,15 @@ class ModelSpec:
     @property
     def g(self) -> float: ...
 
+@final
 class RunOptions:
     """How to run (keywords only; the method's dt [s], rtol, atol and projection default to the
     core's ``SolveOptions``): t0, t_end [s], conserve, the save rule, the saved-bytes cap, the spring's
     order (2 or 4), a cap on steps (the crane's runs), and the RATTLE family's ``arithmetic``
     (``"unfused"``, the default, or ``"fused"``; ``Solver``, ``Stepper`` and ``EnsembleRun``)."""
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         *,
         t0: float = 0.0,
         t_end: float | None = None,
@@ -134,7 +139,7 @@ class RunOptions:
         order: int = 2,
         max_steps: int | None = None,
         arithmetic: str = "unfused",
-    ) -> None: ...
+    ) -> Self: ...
     @property
     def arithmetic(self) -> str: ...
     @property
@@ -146,8 +151,9 @@ class RunOptions:
     @property
     def dt(self) -> float: ...
 
+@final
 class Solver:
-    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
+    def __new__(cls, spec: ModelSpec, state: StateArrays, options: RunOptions) -> Self: ...
     def advance(self, budget: int) -> bool: ...
     def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
     @property
@@ -159,8 +165,9 @@ class Solver:
     @property
     def stats(self) -> dict[str, int]: ...
 
+@final
 class Stepper:
-    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
+    def __new__(cls, spec: ModelSpec, state: StateArrays, options: RunOptions) -> Self: ...
     def step(self, n: int = 1) -> None: ...
     def step_to(self, t: float, max_steps: int | None = None) -> bool: ...
     def set_state(self, x: FloatArray, v: FloatArray) -> None: ...
@@ -175,8 +182,9 @@ class Stepper:
 
 # --- python/rust/exact.rs: the exact solution, the reduction, the energy–momentum map ---
 
+@final
 class ExactSolution:
-    def __init__(self, spec: ModelSpec, state: StateArrays) -> None: ...
+    def __new__(cls, spec: ModelSpec, state: StateArrays) -> Self: ...
     def states(self, t: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]: ...
     @property
     def kind(self) -> str: ...
@@ -206,18 +214,20 @@ def monodromy(r: float = 0.5, n: int = 720) -> float: ...
 
 # --- python/rust/ensemble.rs: many trajectories at once ---
 
+@final
 class EnsembleSpec:
     """The ensemble's models: l [m], g [m/s²], damping c [1/s] (None: undamped), each one value or
     one per trajectory."""
 
-    def __init__(self, length: FloatArray, g: FloatArray, damping: FloatArray | None = None) -> None: ...
+    def __new__(cls, length: FloatArray, g: FloatArray, damping: FloatArray | None = None) -> Self: ...
 
+@final
 class EnsembleRun:
     """``n_steps`` RATTLE steps of ``options.dt`` [s] from x [m], v [m/s] (N, 3), saving every
     ``options``' ``save_every`` steps (None: the final state only), with ``options.arithmetic``."""
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         spec: EnsembleSpec,
         x: FloatArray,
         v: FloatArray,
@@ -225,7 +235,7 @@ class EnsembleRun:
         n_steps: int,
         summary: bool = True,
         settle_angle: float | None = None,
-    ) -> None: ...
+    ) -> Self: ...
     @property
     def progress(self) -> float: ...
     @property
@@ -236,16 +246,17 @@ class EnsembleRun:
 
 # --- python/rust/ensemble_adaptive.rs: any rod model (one or one per trajectory), DOP853 ---
 
+@final
 class AdaptiveEnsembleRun:
-    def __init__(
-        self,
+    def __new__(
+        cls,
         spec: ModelSpec,
         x: FloatArray,
         v: FloatArray,
         options: RunOptions,
         models: list[ModelSpec] | None = None,
         index: npt.NDArray[np.int64] | None = None,
-    ) -> None: ...
+    ) -> Self: ...
     @property
     def progress(self) -> float: ...
     def wait(self, timeout: float) -> bool: ...
@@ -258,8 +269,9 @@ def spring_simulate(
     spec: ModelSpec, state: StateArrays, options: RunOptions, n_steps: int
 ) -> dict[str, Any]: ...
 
+@final
 class SpringStepper:
-    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
+    def __new__(cls, spec: ModelSpec, state: StateArrays, options: RunOptions) -> Self: ...
     def step(self, n: int = 1) -> None: ...
     def diagnostics(self) -> dict[str, Any]: ...
     @property
@@ -273,8 +285,9 @@ class SpringStepper:
 
 def string_simulate(spec: ModelSpec, state: StateArrays, options: RunOptions) -> dict[str, Any]: ...
 
+@final
 class StringRunner:
-    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
+    def __new__(cls, spec: ModelSpec, state: StateArrays, options: RunOptions) -> Self: ...
     def advance(self, max_steps: int) -> bool: ...
     def take_samples(self, all: bool = False) -> dict[str, Any]: ...
     @property
@@ -284,8 +297,9 @@ class StringRunner:
     @property
     def stats(self) -> dict[str, int]: ...
 
+@final
 class StringStepper:
-    def __init__(self, spec: ModelSpec, state: StateArrays, options: RunOptions) -> None: ...
+    def __new__(cls, spec: ModelSpec, state: StateArrays, options: RunOptions) -> Self: ...
     def step(self, n: int = 1) -> None: ...
     def diagnostics(self) -> dict[str, Any]: ...
     def take_events(self) -> list[dict[str, Any]]: ...
@@ -309,13 +323,14 @@ def slewing_linear(spec: ModelSpec, start: list[float], t: FloatArray) -> dict[s
 Knots = tuple[FloatArray, FloatArray, FloatArray, FloatArray]
 """Knot times [s] (n,), values, rates, second derivatives (n, 3)."""
 
+@final
 class CraneSpec:
     """The crane: pivot and hoist knots, bodies ((mass [kg], c_W A [m²]), the payload under a hook
     (mass, c_W A, rigging [m]) or None), g [m/s²], damping [1/s], wind (steady, gust peak [m/s],
     gust start, duration [s], air density [kg/m³], turbulence (ω [rad/s], amplitudes [m/s], phases))."""
 
-    def __init__(
-        self,
+    def __new__(
+        cls,
         pivot: Knots,
         hoist: Knots,
         bodies: tuple[tuple[float, float], tuple[float, float, float] | None],
@@ -329,7 +344,7 @@ class CraneSpec:
             float,
             tuple[list[float], list[list[float]], list[list[float]]],
         ],
-    ) -> None: ...
+    ) -> Self: ...
 
 def crane_simulate(spec: CraneSpec, y0: list[float], options: RunOptions) -> dict[str, Any]:
     """From y0 (16,) at the first of ``options.save_times`` [s] through all of them, at the options'
@@ -348,14 +363,15 @@ def crane_residual_grid(
 
 # --- python/rust/force.rs: a user force given as a Python callable (the slow path) ---
 
+@final
 class ForceSolver:
-    def __init__(
-        self,
+    def __new__(
+        cls,
         spec: ModelSpec,
         state: StateArrays,
         options: RunOptions,
         force: Callable[[float, list[float], list[float]], Any],
-    ) -> None: ...
+    ) -> Self: ...
     def advance(self, budget: int) -> bool: ...
     def take_samples(self) -> tuple[FloatArray, FloatArray, FloatArray]: ...
     @property
@@ -376,6 +392,7 @@ class LiveLimit(TypedDict):
     max: float
     unit: str
 
+@final
 class LiveSession:
     """One client's lab session of the core: commands in (the lab's JSON), frame records (bytes,
     frame.json's float64 values) and JSON notices (str) out; the interpreter lock is released while it
@@ -392,7 +409,7 @@ class LiveSession:
     def command_types() -> tuple[str, ...]: ...
     @staticmethod
     def limits() -> dict[str, LiveLimit]: ...
-    def __init__(self, setup_json: str, exact_error: bool = True) -> None: ...
+    def __new__(cls, setup_json: str, exact_error: bool = True) -> Self: ...
     def first_messages(self) -> list[bytes | str]: ...
     def tick(
         self,
