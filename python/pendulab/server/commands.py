@@ -281,8 +281,10 @@ Command = (
     | LoadScenario
     | Crane
 )
-# mypy types an Annotated[...] expression as a special form, not as the type form TypeAdapter takes
-COMMAND: TypeAdapter[Command] = TypeAdapter(Annotated[Command, Field(discriminator="type")])  # type: ignore[arg-type]
+# a named alias: mypy takes it as the type form TypeAdapter wants (an Annotated[...] written inline is a
+# "special form" to it)
+_TaggedCommand = Annotated[Command, Field(discriminator="type")]
+COMMAND: TypeAdapter[Command] = TypeAdapter(_TaggedCommand)
 COMMAND_TYPES: tuple[str, ...] = LiveSession.command_types()
 """The command types in the lab's order (the core's ``live::wire::COMMAND_TYPES``)."""
 
