@@ -77,6 +77,12 @@ struct Arrays {
     steps: u64,
 }
 
+/// The core's buffers of a run up to this size [B] are freed after its result is handed over (a free
+/// on the caller's thread trims the worker's heap, and the next run faults its pages back in); larger
+/// ones before, so that a next run's memory never overlaps them by more than this (the size below
+/// which `pendulab.ensemble` asks the system for no memory check either).
+const FREE_LATER_BYTES: usize = 1 << 26;
+
 impl Arrays {
     /// `res` in numpy's layout: one pass over the states, one per summary column.
     fn of(res: EnsembleResult) -> Self {
@@ -89,8 +95,14 @@ impl Arrays {
         }
         let columns = res.summary.as_deref().map(summary_columns);
         let EnsembleResult { t, settle_time, cancelled, steps, states, summary } = res;
-        // the big buffers freed by the pool once this run's outcome is out (off the caller's path)
-        rayon::spawn(move || drop((states, summary)));
+        let bytes =
+            std::mem::size_of_val(states.as_slice()) + summary.as_deref().map_or(0, std::mem::size_of_val);
+        if bytes <= FREE_LATER_BYTES {
+            // freed by the pool once this run's outcome is out (off the caller's path)
+            rayon::spawn(move || drop((states, summary)));
+        } else {
+            drop((states, summary)); // before the hand-over
+        }
         Self { t, x, v, shape: (n, ns, 3), columns, settle_time, cancelled, steps }
     }
 }
