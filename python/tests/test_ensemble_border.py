@@ -9,12 +9,14 @@ within 1024 steps. Units SI: l [m], g [m/s²], c [1/s], t [s].
 
 from __future__ import annotations
 
+import importlib
 import math
 import os
 import re
 import signal
 import threading
 import time
+from typing import Any
 
 import numpy as np
 import pytest
@@ -119,19 +121,44 @@ def test_array_check_accepts_and_names_exactly_as_entry_by_entry(limit: str) -> 
     assert accepted > 50 and refused > 50  # both outcomes exercised
 
 
-def test_ctrl_c_stops_a_long_run_with_the_samples_reached(pendulum: pl.Pendulum) -> None:
+class _InterruptedWhileWaiting:
+    """An ``EnsembleRun`` that sends this process SIGINT 0.2 s after Python first waits on it, so that
+    the signal lands in the progress loop (where Ctrl-C is handled) however loaded the machine is."""
+
+    def __init__(self, *args: Any) -> None:
+        self.run = EnsembleRun(*args)
+        self.timer: threading.Timer | None = None
+
+    @property
+    def progress(self) -> float:
+        return float(self.run.progress)
+
+    def wait(self, timeout: float) -> bool:
+        if self.timer is None:
+            self.timer = threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT))
+            self.timer.start()
+        return bool(self.run.wait(timeout))
+
+    def cancel(self) -> None:
+        self.run.cancel()
+
+    def result(self) -> dict[str, Any]:
+        return dict(self.run.result())
+
+
+def test_ctrl_c_stops_a_long_run_with_the_samples_reached(
+    pendulum: pl.Pendulum, monkeypatch: pytest.MonkeyPatch
+) -> None:
     """SIGINT during a long run (on the pool, polled by Python): it stops within 1024 steps, warns,
     is flagged interrupted, and keeps the samples every trajectory reached, each equal to simulate()."""
     states = pl.states_from_angles(pendulum, theta=np.linspace(0.2, 2.9, 1024), phi_dot=1.0)
     dt, every, total = 1e-3, 10_000, 2_000_000
-    timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
-    timer.start()
+    monkeypatch.setattr(
+        importlib.import_module("pendulab.ensemble.run"), "EnsembleRun", _InterruptedWhileWaiting
+    )
     t0 = time.perf_counter()
-    try:
-        with pytest.warns(RuntimeWarning, match="interrupted"):
-            res = pl.simulate_ensemble(pendulum, states, total * dt, dt=dt, save_every=every, progress=False)
-    finally:
-        timer.cancel()
+    with pytest.warns(RuntimeWarning, match="interrupted"):
+        res = pl.simulate_ensemble(pendulum, states, total * dt, dt=dt, save_every=every, progress=False)
     assert time.perf_counter() - t0 < 60.0  # 2·10⁹ trajectory-steps would take far longer
     assert res.interrupted and res.steps < total
     assert len(res.t) == 1 + res.steps // every and np.all(np.isfinite(res.x))
