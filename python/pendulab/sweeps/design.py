@@ -174,7 +174,7 @@ def _check_names(names: list[str]) -> None:
         check_axis_name(name)
 
 
-def grid(axes: Mapping[str, Any]) -> Design:
+def grid(axes: Mapping[str, Any] | Design) -> Design:
     """The full factorial design over ``axes`` (axis name → 1-D array of values in the axis's unit),
     in C order: point k has the indices ``np.unravel_index(k, shape)``."""
     if isinstance(axes, Design):
