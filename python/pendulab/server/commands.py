@@ -281,10 +281,11 @@ Command = (
     | LoadScenario
     | Crane
 )
-# a named alias: mypy takes it as the type form TypeAdapter wants (an Annotated[...] written inline is a
-# "special form" to it)
-_TaggedCommand = Annotated[Command, Field(discriminator="type")]
-COMMAND: TypeAdapter[Command] = TypeAdapter(_TaggedCommand)
+# Any: mypy 1.20 takes this Annotated[...] type form for TypeAdapter's argument in one run and not in
+# another (inline: a "special form", as an alias: a UnionType, depending on its cache); the annotation of
+# COMMAND states the adapter's type.
+_TAGGED_COMMAND: Any = Annotated[Command, Field(discriminator="type")]
+COMMAND: TypeAdapter[Command] = TypeAdapter(_TAGGED_COMMAND)
 COMMAND_TYPES: tuple[str, ...] = LiveSession.command_types()
 """The command types in the lab's order (the core's ``live::wire::COMMAND_TYPES``)."""
 
