@@ -14,7 +14,8 @@
 //!
 //! Run: `cargo run --release -p pendulab-core --example ensemble_forms -- [steps] [name]` (only the
 //! case `name`). Environment: `THREADS` (default 1), `ARITH=unfused` (default fused), `LEVEL=v3`
-//! (the AVX2 loops on an AVX-512 CPU). SI units throughout.
+//! (the AVX2 loops on an AVX-512 CPU), `SUMMARY=1` (each trajectory's extremes and crossings tracked
+//! at every step, as `pl.simulate_ensemble` does by default). SI units throughout.
 
 use pendulab_core::ensemble::{run, RattleSettings};
 use pendulab_core::integrate::rattle_kernel::Arithmetic;
@@ -33,6 +34,7 @@ fn main() {
         set_max_level(Level::V3);
     }
     let arithmetic = if env("ARITH") == "unfused" { Arithmetic::Unfused } else { Arithmetic::Fused };
+    let with_summary = env("SUMMARY") == "1";
     let threads: usize = env("THREADS").parse().unwrap_or(1);
     let pool = rayon::ThreadPoolBuilder::new().num_threads(threads).build().unwrap();
     let model = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
@@ -60,8 +62,12 @@ fn main() {
                 State { x: s.x * scale[k], v: s.v * scale[k] }
             })
             .collect();
-        let settings =
-            RattleSettings { arithmetic, damping: damp, ..RattleSettings::new(ls, &[9.81], 1e-3, steps) };
+        let settings = RattleSettings {
+            arithmetic,
+            damping: damp,
+            with_summary,
+            ..RattleSettings::new(ls, &[9.81], 1e-3, steps)
+        };
         let mut best = f64::INFINITY;
         for _ in 0..5 {
             let t = Instant::now();
