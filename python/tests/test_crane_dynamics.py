@@ -135,6 +135,9 @@ def test_residual_vibration_after_a_shaped_move_in_the_nonlinear_model() -> None
         (lambda: crane.Crane(rope=2.0, hoist=crane.Hoist(t=[0, 0.3], length=[2, 12])).simulate(1.0), "slack"),
         (lambda: crane.move(distance=0.0, v_max=1.0, a_max=1.0), "distance"),
         (lambda: crane.move(distance=1.0, v_max=1.0, a_max=-1.0), "a_max"),
+        (lambda: crane.Crane(rope=5.0, wind=crane.Wind(velocity=(1.0, 2.0))).simulate(1.0), "wind.velocity"),
+        (lambda: crane.Crane(rope=5.0, wind=crane.Wind(gust=(0, math.nan, 0))).simulate(1.0), "wind.gust"),
+        (lambda: crane.Crane(rope=5.0, wind=crane.Wind(velocity="east")).simulate(1.0), "wind.velocity"),
     ],
 )
 def test_bad_crane_input(make, word: str) -> None:  # type: ignore[no-untyped-def]

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, cast
+from typing import Any
 
 import numpy as np
 from scipy.interpolate import CubicSpline
@@ -169,10 +169,17 @@ def _angles(d: FloatArray) -> FloatArray:
     return np.stack([theta, np.arctan2(d[:, 1], d[:, 0])], axis=1)
 
 
-def _triple(v: tuple[float, float, float]) -> tuple[float, float, float]:
-    """``v`` (a :class:`Wind` vector [m/s], declared as 3 numbers) as Python floats; a vector of another
-    length is passed on unchanged in length for the core to refuse."""
-    return cast("tuple[float, float, float]", tuple(map(float, v)))
+def _triple(name: str, v: Any) -> tuple[float, float, float]:
+    """``v`` (the :class:`Wind` vector ``name`` [m/s]) as three Python floats; anything else is refused
+    with an error naming it."""
+    bad = InvalidInputError(f"{name} = {v!r} is not allowed: three finite numbers (x, y, z) [m/s]")
+    try:
+        x, y, z = (float(c) for c in v)
+    except (TypeError, ValueError):
+        raise bad from None
+    if not all(math.isfinite(c) for c in (x, y, z)):
+        raise bad
+    return x, y, z
 
 
 def _direction(name: str, angles: tuple[float, float]) -> FloatArray:
@@ -291,8 +298,8 @@ class Crane:
             body1, body2 = (self.payload_mass, cwa_payload), None
         om, amp, ph = w.modes()
         wind = (
-            _triple(w.velocity),
-            _triple(w.gust),
+            _triple("wind.velocity", w.velocity),
+            _triple("wind.gust", w.gust),
             w.gust_start,
             w.gust_duration,
             w.air_density,

@@ -8,7 +8,9 @@ stays within the angle (to one step dt; 0 if never outside, +inf if still outsid
 Memory is bounded by what is saved (final states, every n-th step, a summary), never by
 trajectories × steps. Start rows with NaN or inf are reported (``invalid_rows``, a warning) and get
 NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C stops cleanly within
-1024 steps and returns the states reached (``EnsembleResult.interrupted``).
+1024 steps and returns the samples that every trajectory reached (``EnsembleResult.interrupted``): with
+``save_every`` the saved samples up to the stop, with the final states only just the starts (t = 0),
+since the blocks of trajectories stop at different steps and the result keeps one time axis.
 """
 
 from __future__ import annotations
