@@ -6,10 +6,7 @@
 use super::Lanes;
 
 /// One block: positions, velocities, Kahan compensations and parameters of LANES trajectories.
-/// Every row starts on a 64-byte boundary (the struct is aligned to 64 and its rows, 512 bytes each,
-/// come first, in order), so a tile's vector loads and stores of a row never straddle two cache lines.
 #[derive(Clone)]
-#[repr(C, align(64))]
 pub(super) struct Block {
     pub x: [Lanes; 3],
     pub v: [Lanes; 3],
@@ -19,51 +16,23 @@ pub(super) struct Block {
     pub l2: Lanes,
     pub inv_l2: Lanes,
     pub g: Lanes,
-    /// e^{−c dt/2} per lane (1 without damping).
+    /// e^{−c dt/2} per lane (1 without damping) and whether any lane is damped.
     pub decay_half: Lanes,
-    /// −sign(g)/l per lane (cos sway = z · down).
+    pub damped: bool,
+    /// −sign(g)/l per lane (cos sway = z · down) and cos of the settle threshold (all lanes).
     pub down: Lanes,
+    pub cos_settle: f64,
     /// Index of the last sample whose sway exceeded the threshold (−1: none).
     pub last_out: Lanes,
+    /// Number of real lanes (the rest repeat the last trajectory and are ignored).
+    pub len: usize,
     /// Per-lane summary: min z, max z, min E/m, max E/m, min J₃/m, max J₃/m.
     pub summary: [Lanes; 6],
     /// Per lane: crossings of the pivot's horizontal plane so far, and the side (1: z > 0) at the
     /// last sample.
     pub crossings: Lanes,
     pub above: Lanes,
-    /// Whether any lane is damped.
-    pub damped: bool,
-    /// cos of the settle threshold (all lanes).
-    pub cos_settle: f64,
-    /// Number of real lanes (the rest repeat the last trajectory and are ignored).
-    pub len: usize,
 }
-
-// the rows' 64-byte alignment (the struct doc), checked when the crate compiles
-const _: () = {
-    use std::mem::{align_of, offset_of};
-    let rows = [
-        offset_of!(Block, x),
-        offset_of!(Block, v),
-        offset_of!(Block, cx),
-        offset_of!(Block, cv),
-        offset_of!(Block, l2),
-        offset_of!(Block, inv_l2),
-        offset_of!(Block, g),
-        offset_of!(Block, decay_half),
-        offset_of!(Block, down),
-        offset_of!(Block, last_out),
-        offset_of!(Block, summary),
-        offset_of!(Block, crossings),
-        offset_of!(Block, above),
-    ];
-    let mut i = 0;
-    while i < rows.len() {
-        assert!(rows[i] % 64 == 0, "a row of Block is not 64-byte aligned");
-        i += 1;
-    }
-    assert!(align_of::<Block>() == 64);
-};
 
 impl Block {
     /// A block of zeros on the heap, for [`super::plan::Plan::fill`] to fill (one per worker).
