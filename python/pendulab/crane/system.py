@@ -17,6 +17,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
+from ..validate import array
 from .paths import Gantry, Path
 from .shaper import FloatArray
 
@@ -170,15 +171,9 @@ def _angles(d: FloatArray) -> FloatArray:
 
 
 def _triple(name: str, v: Any) -> tuple[float, float, float]:
-    """``v`` (the :class:`Wind` vector ``name`` [m/s]) as three Python floats; anything else is refused
-    with an error naming it."""
-    bad = InvalidInputError(f"{name} = {v!r} is not allowed: three finite numbers (x, y, z) [m/s]")
-    try:
-        x, y, z = (float(c) for c in v)
-    except (TypeError, ValueError):
-        raise bad from None
-    if not all(math.isfinite(c) for c in (x, y, z)):
-        raise bad
+    """``v`` (the :class:`Wind` vector ``name`` [m/s]) as three Python floats, checked as every velocity
+    is (:func:`pendulab.validate.array` with the velocity limit): anything else is refused naming it."""
+    x, y, z = array(name, v, "velocity", shape=(3,)).tolist()
     return x, y, z
 
 
