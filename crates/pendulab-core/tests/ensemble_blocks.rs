@@ -38,15 +38,16 @@ fn a_reused_block_carries_nothing_into_the_next() {
     }
     // damping in the first block only; lengths 1 m; a settle angle the damped swings reach
     let damping: Vec<f64> = (0..n).map(|k| if k < LANES { 2.0 + 0.01 * k as f64 } else { 0.0 }).collect();
-    let settings = |damping: &'static [f64]| RattleSettings {
-        damping,
-        with_summary: true,
-        settle_angle: Some(0.3),
-        ..RattleSettings::new(&[1.0], &[9.81], 2e-3, 3000)
-    };
-    let damping: &'static [f64] = damping.leak();
+    fn settings(damping: &[f64]) -> RattleSettings<'_> {
+        RattleSettings {
+            damping,
+            with_summary: true,
+            settle_angle: Some(0.3),
+            ..RattleSettings::new(&[1.0], &[9.81], 2e-3, 3000)
+        }
+    }
     for arithmetic in Arithmetic::ALL {
-        let whole = run_in(1, &all, &RattleSettings { arithmetic, ..settings(damping) });
+        let whole = run_in(1, &all, &RattleSettings { arithmetic, ..settings(&damping) });
         for b in 0..n.div_ceil(LANES) {
             let (lo, hi) = (b * LANES, ((b + 1) * LANES).min(n));
             let alone = run_in(1, &all[lo..hi], &RattleSettings { arithmetic, ..settings(&damping[lo..hi]) });
