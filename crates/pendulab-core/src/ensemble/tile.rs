@@ -325,12 +325,14 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
             let e = 0.5 * (vx * vx + vy * vy + vz * vz) + self.params.g(i) * z;
             let j = x * vy - y * vx;
             let k = o + i;
-            s[0][k] = s[0][k].min(z);
-            s[1][k] = s[1][k].max(z);
-            s[2][k] = s[2][k].min(e);
-            s[3][k] = s[3][k].max(e);
-            s[4][k] = s[4][k].min(j);
-            s[5][k] = s[5][k].max(j);
+            // one comparison each (vminpd/vmaxpd): the rows start at ±∞ and never hold NaN, and a
+            // NaN z, E or J₃ leaves them as `f64::min`/`max` would
+            s[0][k] = if z < s[0][k] { z } else { s[0][k] };
+            s[1][k] = if z > s[1][k] { z } else { s[1][k] };
+            s[2][k] = if e < s[2][k] { e } else { s[2][k] };
+            s[3][k] = if e > s[3][k] { e } else { s[3][k] };
+            s[4][k] = if j < s[4][k] { j } else { s[4][k] };
+            s[5][k] = if j > s[5][k] { j } else { s[5][k] };
             let up = if z > 0.0 { 1.0 } else { 0.0 };
             crossings[k] += (up - above[k]).abs();
             above[k] = up;
