@@ -82,6 +82,36 @@ def drifts(x: np.ndarray, v: np.ndarray, x0: np.ndarray, v0: np.ndarray, length:
     return de, abs(float(np.linalg.norm(x)) - length)
 
 
+# Intel server cores by (family, model), for virtual machines whose model name is only "Intel(R) Xeon(R)
+# Processor" (Intel's "Intel Processors and Processor Cores based on Intel Microarchitectures" list)
+INTEL_CORES = {
+    (6, 85): "Skylake-SP / Cascade Lake",
+    (6, 106): "Ice Lake-SP",
+    (6, 143): "Sapphire Rapids",
+    (6, 207): "Emerald Rapids",
+    (6, 173): "Granite Rapids",
+}
+
+
+def cpu_description(cpuinfo: str = "/proc/cpuinfo") -> str:
+    """The CPU a benchmark ran on, for its results: ``/proc/cpuinfo``'s model name with its family and
+    model numbers (and the core's name for the Intel server cores of :data:`INTEL_CORES`), else what
+    ``platform`` knows. Ratios against a baseline change from one CPU to the next (a second 512-bit FMA
+    unit doubles a throughput-bound C ensemble, not a latency-bound kernel: docs/performance.md), so
+    every recorded figure names its CPU."""
+    import platform
+
+    try:
+        with open(cpuinfo) as f:
+            head = f.read().split("\n")[:40]
+        info = {k.strip(): v.strip() for k, _, v in (line.partition(":") for line in head)}
+        family, model = int(info["cpu family"]), int(info["model"])
+        core = INTEL_CORES.get((family, model)) if "Intel" in info["model name"] else None
+        return f"{info['model name']} (family {family}, model {model}{', ' + core if core else ''})"
+    except (OSError, KeyError, ValueError):
+        return platform.processor() or platform.machine()
+
+
 def repeats_for(first: float, budget: float = 1.0, most: int = 5, least: int = 3) -> int:
     """How many runs in all (the first included) to time a call that took ``first`` seconds: ``most``
     for quick calls, down to ``least`` for calls whose repeats would exceed ``budget`` seconds, and 1

@@ -117,7 +117,9 @@ def markdown(
     caveat = "absolute figures are pessimistic and noisy, and only the ratios" if busy else "the ratios"
     lines = [
         f"Measured {meta['date']} by `make bench-peers` (`bench/peers/run.py`, "
-        f"{meta['wall_total']:.0f} s) on the 2-core machine {setting} (load average "
+        f"{meta['wall_total']:.0f} s) on the 2-core machine "
+        f"({meta.get('machine', {}).get('cpu', 'CPU not recorded')}) "
+        f"{setting} (load average "
         f"{meta['load_start']:.1f} at the start, {meta['load_end']:.1f} at the end; the benchmark itself "
         f"accounts for about 1): {caveat}, all taken within this one run, are what carries over to other "
         "machines. Every time is a median of repeated runs (5 for fast runs, at least 3, a "

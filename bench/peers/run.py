@@ -125,6 +125,7 @@ def ensembles_only(quick: bool, out: Path | None) -> None:
     meta = {
         "date": dt_mod.datetime.now(dt_mod.UTC).strftime("%Y-%m-%d %H:%M UTC"),
         "quick": quick,
+        "cpu": hz.cpu_description(),
         "load_start": load_start,
         "load_end": os.getloadavg()[0],
     }
@@ -206,6 +207,7 @@ def main() -> None:
             "cpus": os.cpu_count(),
             "platform": platform.platform(),
             "processor": platform.processor(),
+            "cpu": hz.cpu_description(),
         },
         "load_start": load_start,
         "load_end": os.getloadavg()[0],

@@ -174,7 +174,8 @@ def write_report(
 ) -> None:
     m = res["meta"]
     note = (
-        f"Measured {m['date']} by `bench/roofline/run.py` ({m['seconds']:.0f} s) on {m['cores']} cores; "
+        f"Measured {m['date']} by `bench/roofline/run.py` ({m['seconds']:.0f} s) on {m['cores']} cores "
+        f"of {m['cpu']}; "
         f"load average {m['load_start'][0]:.1f} at the start, {m['load_end'][0]:.1f} at the end"
     )
     pts = per_core_points(res, kernels)

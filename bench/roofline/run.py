@@ -28,7 +28,6 @@ import ctypes
 import datetime as dt_mod
 import json
 import os
-import platform
 import subprocess
 import sys
 import time
@@ -49,6 +48,7 @@ REPO = HERE.parents[1]
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(REPO / "bench" / "peers"))
 import counts  # noqa: E402
+import harness as hz  # noqa: E402
 
 BUILD = HERE / "build"
 RESULTS = HERE / "results"
@@ -243,7 +243,7 @@ if __name__ == "__main__":
         "seconds": round(time.time() - t0, 1),
         "load_start": [round(x, 2) for x in load0],
         "load_end": [round(x, 2) for x in os.getloadavg()],
-        "cpu": platform.processor() or platform.machine(),
+        "cpu": hz.cpu_description(),
         "cores": os.cpu_count(),
     }
     RESULTS.mkdir(exist_ok=True)

@@ -250,3 +250,18 @@ def test_simulate_ensemble_against_c_target() -> None:
     assert [pens.api_vs_c_reps(s, False) for s in (1000, 10_000)] == [9, 3]
     assert [pens.api_vs_c_reps(s, True) for s in (1000, 10_000)] == [3, 1]
     assert pens.API_VS_C["n"] == 4096 and pens.API_VS_C["threads"] == 2 and pens.API_VS_C["dt"] == 1e-3
+
+
+def test_the_recorded_cpu_names_the_core_behind_a_generic_model_name(tmp_path: Path) -> None:
+    # a virtual machine's cpuinfo says only "Intel(R) Xeon(R) Processor": the family and model tell
+    # the core, whose FMA units decide the C baseline's speed (docs/performance.md)
+    info = tmp_path / "cpuinfo"
+    info.write_text(
+        "processor\t: 0\nvendor_id\t: GenuineIntel\ncpu family\t: 6\nmodel\t\t: 207\n"
+        "model name\t: Intel(R) Xeon(R) Processor\n"
+    )
+    assert hz.cpu_description(str(info)) == "Intel(R) Xeon(R) Processor (family 6, model 207, Emerald Rapids)"
+    info.write_text("cpu family\t: 25\nmodel\t\t: 17\nmodel name\t: AMD EPYC 9354 32-Core Processor\n")
+    assert hz.cpu_description(str(info)) == "AMD EPYC 9354 32-Core Processor (family 25, model 17)"
+    # no cpuinfo (macOS, Windows): what platform knows, never an exception
+    assert hz.cpu_description(str(tmp_path / "missing")) != ""
