@@ -15,6 +15,7 @@ use pendulab_core::ensemble::adaptive::{
 };
 use pendulab_core::solve::BYTES_PER_SAMPLE;
 use pendulab_core::SaveAt;
+use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
@@ -22,8 +23,32 @@ use pyo3::types::PyDict;
 #[pyclass(module = "pendulab._core", name = "AdaptiveEnsembleRun")]
 pub struct AdaptiveEnsembleRun {
     total: u64,
-    n_times: usize,
-    run: Background<AdaptiveResult>,
+    run: Background<AdaptiveArrays>,
+}
+
+/// A run's result laid out as `AdaptiveEnsembleRun.result` hands it to numpy: x, v (N, n_times, 3) in
+/// C order, made on the worker that ran it (as `EnsembleRun`'s, `ensemble.rs`), so that the caller
+/// holds the GIL only to wrap them.
+struct AdaptiveArrays {
+    x: Vec<f64>,
+    v: Vec<f64>,
+    shape: (usize, usize, usize),
+    steps: Vec<u64>,
+    cancelled: bool,
+}
+
+impl AdaptiveArrays {
+    /// `res` in numpy's layout: trajectory i's sample j is `states[i * n_times + j]`, the rows of
+    /// (N, n_times, 3) in order.
+    fn of(res: AdaptiveResult, n_times: usize) -> Self {
+        let n = res.states.len() / n_times.max(1);
+        let (mut x, mut v) = (vec![0.0; 3 * res.states.len()], vec![0.0; 3 * res.states.len()]);
+        for ((xr, vr), s) in x.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).zip(&res.states) {
+            xr.copy_from_slice(&s.x.to_array());
+            vr.copy_from_slice(&s.v.to_array());
+        }
+        Self { x, v, shape: (n, n_times, 3), steps: res.steps, cancelled: res.cancelled }
+    }
 }
 
 #[pymethods]
@@ -35,6 +60,7 @@ impl AdaptiveEnsembleRun {
     #[new]
     #[pyo3(signature = (spec, x, v, options, models=None, index=None))]
     fn new(
+        py: Python<'_>,
         spec: &ModelSpec,
         x: PyReadonlyArray2<'_, f64>,
         v: PyReadonlyArray2<'_, f64>,
@@ -73,13 +99,17 @@ impl AdaptiveEnsembleRun {
             times,
             conserve: options.conserve,
         };
-        // validate before starting the thread (settings and every start), so bad input raises here
-        check_adaptive(&Models { models: &models, index: &index }, &starts, &settings).map_err(to_py)?;
+        // validate before starting the thread (settings and every start), so bad input raises here;
+        // the GIL released while every start is checked
+        py.allow_threads(|| check_adaptive(&Models { models: &models, index: &index }, &starts, &settings))
+            .map_err(to_py)?;
         let (total, n_times) = (starts.len() as u64, settings.times.len());
         let run = Background::spawn(move |progress, cancel| {
-            run_adaptive_any(&Models { models: &models, index: &index }, &starts, &settings, progress, cancel)
+            let models = Models { models: &models, index: &index };
+            run_adaptive_any(&models, &starts, &settings, progress, cancel)
+                .map(|r| AdaptiveArrays::of(r, n_times))
         });
-        Ok(Self { total, n_times, run })
+        Ok(Self { total, run })
     }
 
     /// Fraction of trajectories finished.
@@ -103,10 +133,10 @@ impl AdaptiveEnsembleRun {
     /// trajectory did not get to), steps (N,) accepted steps, cancelled.
     fn result<'py>(&mut self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let res = self.run.join(py)?;
-        let ns = self.n_times;
-        let n = res.states.len() / ns.max(1);
-        let x = Array3::from_shape_fn((n, ns, 3), |(i, j, k)| res.states[i * ns + j].x[k]);
-        let v = Array3::from_shape_fn((n, ns, 3), |(i, j, k)| res.states[i * ns + j].v[k]);
+        // numpy takes the arrays as they are (no copy)
+        let bad_shape = |e: numpy::ndarray::ShapeError| PyRuntimeError::new_err(e.to_string());
+        let x = Array3::from_shape_vec(res.shape, res.x).map_err(bad_shape)?;
+        let v = Array3::from_shape_vec(res.shape, res.v).map_err(bad_shape)?;
         let d = PyDict::new(py);
         d.set_item("x", x.into_pyarray(py))?;
         d.set_item("v", v.into_pyarray(py))?;
