@@ -109,13 +109,13 @@ def check_arithmetic(arithmetic: Any, method: str, model: str | None = None) -> 
     or ``"auto"``, which is ``"fused"`` for the RATTLE family (but the ``"string"`` model, whose stepper
     is unfused) where the CPU does a fused multiply-add in one instruction (x86-64-v3/v4, aarch64:
     ``_core.fused_is_fast()``) and ``"unfused"`` otherwise (docs/performance.md, "No CPU left behind")."""
-    arithmetic = choice("arithmetic", arithmetic, _ARITHMETICS)
-    if arithmetic == "auto":
+    resolved = choice("arithmetic", arithmetic, _ARITHMETICS)
+    if resolved == "auto":
         fused = method in _FUSED_METHODS and model != "string" and fused_is_fast()
         return "fused" if fused else "unfused"
-    if arithmetic == "fused" and method not in _FUSED_METHODS:
+    if resolved == "fused" and method not in _FUSED_METHODS:
         raise InvalidInputError(
             f"arithmetic='fused' applies to the RATTLE family ({', '.join(_FUSED_METHODS)}), "
             f"not to method {method!r}"
         )
-    return arithmetic
+    return resolved

@@ -120,7 +120,9 @@ def _require(module: str, extra: str = "io") -> Any:
 
 def _metadata(tr: Any) -> dict[str, Any]:
     """What a file's header carries: ``Trajectory.metadata()`` (``SpringTrajectory.file_metadata()``)."""
-    return tr.file_metadata() if hasattr(tr, "file_metadata") else tr.metadata()
+    # Tabular names neither method (SpringTrajectory's `metadata` is a field): both return the header
+    header: Callable[[], dict[str, Any]] = tr.file_metadata if hasattr(tr, "file_metadata") else tr.metadata
+    return header()
 
 
 def write_csv(tr: Tabular, path: str | os.PathLike[str]) -> None:

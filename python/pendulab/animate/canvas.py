@@ -130,9 +130,13 @@ class Camera:
         self, box: Box, radius: float, azimuth_deg: float = 35.0, elevation_deg: float = 18.0
     ) -> None:
         a, b = math.radians(azimuth_deg), math.radians(elevation_deg)
-        self.right = np.array([-math.sin(a), math.cos(a), 0.0])
-        self.up = np.array([-math.sin(b) * math.cos(a), -math.sin(b) * math.sin(a), math.cos(b)])
-        self.toward = np.array([math.cos(b) * math.cos(a), math.cos(b) * math.sin(a), math.sin(b)])
+        self.right = np.array([-math.sin(a), math.cos(a), 0.0], dtype=np.float64)
+        self.up = np.array(
+            [-math.sin(b) * math.cos(a), -math.sin(b) * math.sin(a), math.cos(b)], dtype=np.float64
+        )
+        self.toward = np.array(
+            [math.cos(b) * math.cos(a), math.cos(b) * math.sin(a), math.sin(b)], dtype=np.float64
+        )
         self.distance = 4.0 * radius
         # the nearest point of the sphere is magnified by D/(D − R) = 4/3: leave room for it
         self.scale = 0.46 * min(box.width, box.height) / (radius * 4.0 / 3.0)

@@ -60,7 +60,8 @@ class Scene:
     def energy(self) -> FloatArray:
         """E [J] (n_dense, bobs)."""
         m, g = self.motion.mass, self.motion.g
-        return m * (0.5 * np.einsum("...i,...i->...", self.v, self.v) + g * self.x[..., 2])
+        v2: FloatArray = np.einsum("...i,...i->...", self.v, self.v)  # |v|², Any in numpy's stubs
+        return m * (0.5 * v2 + g * self.x[..., 2])
 
     def j3(self) -> FloatArray:
         """J₃ [kg m²/s] (n_dense, bobs)."""

@@ -23,6 +23,8 @@ from ..integrators import methods as method_table
 from ..model import models as model_table
 from ..scenario import RunOverrides, Scenario, ScenarioError, load_scenario
 from ..scenario.examples import scenario_files, sweep_files
+from ..trajectory import Trajectory
+from ..variants.spring import SpringTrajectory
 from .common import (
     EXIT_INTERRUPTED,
     EXIT_USER_ERROR,
@@ -140,6 +142,7 @@ def run(
             # The interruption is reported below, from Trajectory.interrupted.
             warnings.filterwarnings("ignore", message="simulation interrupted", category=RuntimeWarning)
             tr = sc.run(progress=progress)
+        assert isinstance(tr, Trajectory | SpringTrajectory), "a crane's file was reported above"
         if not quiet:
             _say(tr.summary())
         if out is not None:

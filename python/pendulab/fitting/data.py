@@ -283,10 +283,13 @@ def predict(
         return np.arctan2(x[:, 0], -x[:, 2])[:, None]
     if kind == "specific_force":
         assert acceleration is not None
-        return np.linalg.norm(acceleration - gravity, axis=1)[:, None]
+        # (N,): numpy's stubs type a norm along an axis as Any (a scalar or an array, by the shape)
+        force: FloatArray = np.linalg.norm(acceleration - gravity, axis=1)
+        return force[:, None]
     if kind == "angular_speed":
-        ell2 = np.einsum("ij,ij->i", x, x)
-        return (np.linalg.norm(np.cross(x, v), axis=1) / ell2)[:, None]
+        ell2: FloatArray = np.einsum("ij,ij->i", x, x)  # |x|² (N,), Any in numpy's stubs
+        h: FloatArray = np.linalg.norm(np.cross(x, v), axis=1)  # |x × v| (N,), Any in numpy's stubs
+        return (h / ell2)[:, None]
     raise AssertionError(kind)
 
 

@@ -25,6 +25,7 @@ from .report import _COLUMN_NAMES as _COLUMN_NAMES
 from .report import fit_figure, report_html, report_text
 
 if TYPE_CHECKING:
+    from ..scenario import Scenario
     from .problem import Problem
 
 
@@ -260,7 +261,7 @@ class FitResult:
     def _repr_html_(self) -> str:
         return report_html(self)
 
-    def to_scenario(self, t_end: float | None = None, title: str | None = None) -> Any:
+    def to_scenario(self, t_end: float | None = None, title: str | None = None) -> Scenario:
         """The fitted pendulum and start as a :class:`pendulab.Scenario` (t_end [s] default: the data's
         span; the method the model's usual one)."""
         from ..scenario import Scenario
@@ -287,7 +288,7 @@ class FitResult:
             data["simulation"]["save_every"] = 10
         return Scenario.from_dict(data, "<fit>")
 
-    def _spring_scenario(self, p: SwingingSpring, span: float, title: str | None) -> Any:
+    def _spring_scenario(self, p: SwingingSpring, span: float, title: str | None) -> Scenario:
         """The fitted spring as a scenario: the Cartesian start, the triple jump (``rattle4``) at a step
         of 1e-2 of the fastest time scale."""
         from ..scenario import Scenario

@@ -49,7 +49,7 @@ def start_vectors(values: Mapping[str, float]) -> tuple[FloatArray, FloatArray]:
 
 def acceleration(x: FloatArray, k_over_m: float, rest: float, g: float) -> FloatArray:
     """ẍ [m/s²] = −(k/m)(|x| − l₀) x̂ − g ẑ for positions x (N, 3)."""
-    r = np.linalg.norm(x, axis=1)
+    r: FloatArray = np.linalg.norm(x, axis=1)  # (N,): a norm along an axis is Any in numpy's stubs
     a = -(k_over_m * (r - rest) / np.where(r > 0.0, r, 1.0))[:, None] * x
     a[:, 2] -= g
     return a
@@ -88,7 +88,7 @@ def motion(values: Mapping[str, float], tau: FloatArray) -> tuple[FloatArray, Fl
 
 def specific_force(x: FloatArray, values: Mapping[str, float]) -> FloatArray:
     """|a − g⃗| [m/s²] = (k/m) | |x| − l₀ |, what an accelerometer on the bob reads."""
-    r = np.linalg.norm(x, axis=1)
+    r: FloatArray = np.linalg.norm(x, axis=1)  # (N,): a norm along an axis is Any in numpy's stubs
     return (values["stiffness"] / values["mass"]) * np.abs(r - values["length"])
 
 

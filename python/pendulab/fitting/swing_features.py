@@ -60,7 +60,8 @@ def running_median(s: FloatArray, width: int = 5) -> FloatArray:
     k = np.arange(1, half + 1, dtype=np.float64)
     a, b = _robust_line(s[: 2 * width])
     c, d = _robust_line(s[n - 2 * width :][::-1])
-    padded = np.concatenate([(a - b * k)[::-1], s, c - d * k])
+    # typed: numpy's stubs leave a concatenation's dtype Any, and so the median's result
+    padded: FloatArray = np.concatenate([(a - b * k)[::-1], s, c - d * k])
     return np.median(np.lib.stride_tricks.sliding_window_view(padded, width), axis=1)
 
 

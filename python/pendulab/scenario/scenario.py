@@ -48,7 +48,7 @@ import os
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from pydantic import ValidationError
 
@@ -76,6 +76,10 @@ from .schema import (
     SimulationSection,
     _show,
 )
+
+if TYPE_CHECKING:
+    from ..crane.scenario import CraneScenario
+    from ..crane.system import CraneRun
 
 __all__ = [
     "MODELS",
@@ -107,7 +111,7 @@ class Scenario:
     _pendulum: Pendulum = field(init=False, repr=False, compare=False)
     _spring: SwingingSpring | None = field(init=False, repr=False, compare=False)
     _state: State = field(init=False, repr=False, compare=False)
-    _crane: Any = field(init=False, repr=False, compare=False)
+    _crane: CraneScenario | None = field(init=False, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "_spring", None)
@@ -131,7 +135,7 @@ class Scenario:
         """True for a file with ``[crane]`` (a crane, :meth:`crane`), not a pendulum."""
         return isinstance(self.spec, CraneSpec)
 
-    def crane(self) -> Any:
+    def crane(self) -> CraneScenario:
         """The ``pendulab.crane.scenario.CraneScenario`` of a file with ``[crane]`` (its ``crane``,
         ``shaper``, ``t_end``, ``dt`` [s], ``move_end`` [s], ``run()``); :class:`ScenarioError` for a
         pendulum's file."""
@@ -251,7 +255,7 @@ class Scenario:
 
     def run(
         self, progress: bool | None = None, overrides: RunOverrides | None = None, **fields: Any
-    ) -> Trajectory | SpringTrajectory:
+    ) -> Trajectory | SpringTrajectory | CraneRun:
         """Simulates the scenario; a :class:`RunOverrides` and/or its fields as keywords override
         ``[simulation]`` (see :meth:`with_overrides`).
 
@@ -329,7 +333,7 @@ class Scenario:
         return Path(path)
 
 
-def _build_crane(spec: CraneSpec, source: str) -> Any:
+def _build_crane(spec: CraneSpec, source: str) -> CraneScenario:
     """The crane of a validated ``[crane]`` file, built by :mod:`pendulab.crane` (imported here only:
     it needs SciPy); what it refuses is a :class:`ScenarioError` naming the file."""
     try:

@@ -95,6 +95,7 @@ STATIC_DIR = Path(__file__).with_name("static")
 log = logging.getLogger("pendulab.server")
 
 M = TypeVar("M", bound=BaseModel)
+R = TypeVar("R")
 
 _NOT_BUILT = """<!doctype html><meta charset="utf-8"><title>Pendulab lab</title>
 <p>The lab's front end is not built into this package (no <code>static/index.html</code>).
@@ -153,8 +154,8 @@ def _json(fn: Callable[..., Any], *args: Any) -> Response:
 
 
 async def _compute(
-    limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter], fn: Callable[..., Any], *args: Any
-) -> Any:
+    limiters: weakref.WeakKeyDictionary[Any, anyio.CapacityLimiter], fn: Callable[..., R], *args: Any
+) -> R:
     """``fn(*args)`` in one of the REST worker threads; :class:`_Busy` when too many already wait."""
     limiter = loop_limiter(limiters, REST_THREADS)
     if limiter.available_tokens == 0 and limiter.statistics().tasks_waiting >= REST_QUEUE:

@@ -162,7 +162,9 @@ class Session:
 
     def status(self) -> dict[str, Any]:
         """The JSON ``status`` notice: everything the page needs to show and to encode in its URL."""
-        return json.loads(self.core.status())
+        status = json.loads(self.core.status())
+        assert isinstance(status, dict), f"the core's status is not a JSON object: {status!r}"
+        return status
 
     # --- one part of a tick at a time (tests, tools) ---
 

@@ -122,8 +122,9 @@ class Trajectory:
         Δt the sample spacing: save densely (``save_every=1``) to check the balance tightly. For a
         conservative model it is E(t) − E(0), the energy error."""
         e, p = self.energy, self.power
-        work = np.concatenate([[0.0], np.cumsum(0.5 * np.diff(self.t) * (p[1:] + p[:-1]))])
-        return e - e[0] - work
+        # typed: numpy's stubs make both the concatenation of a list with an array and an element Any
+        work: FloatArray = np.concatenate([[0.0], np.cumsum(0.5 * np.diff(self.t) * (p[1:] + p[:-1]))])
+        return e - float(e[0]) - work
 
     @property
     def is_conservative(self) -> bool:

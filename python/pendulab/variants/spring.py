@@ -71,12 +71,14 @@ class SpringTrajectory:
     @property
     def r(self) -> FloatArray:
         """The spring's length |r| [m] at each sample."""
-        return np.linalg.norm(self.x, axis=1)
+        r: FloatArray = np.linalg.norm(self.x, axis=1)  # (N,): a norm along an axis is Any in numpy's stubs
+        return r
 
     @property
     def bouncing_energy(self) -> FloatArray:
-        r = np.linalg.norm(self.x, axis=1)
-        rdot = np.einsum("ij,ij->i", self.x, self.v) / r
+        r: FloatArray = np.linalg.norm(self.x, axis=1)
+        xv: FloatArray = np.einsum("ij,ij->i", self.x, self.v)  # x·v (N,), Any in numpy's stubs
+        rdot = xv / r
         dl = r - self.spring.equilibrium_length
         return self.spring.mass * (0.5 * rdot**2 + 0.5 * self.spring.k_over_m * dl**2)
 
