@@ -13,8 +13,9 @@ and set-up cancelled: instructions (I refs), first-level data-cache misses (D1 m
 and last-level misses (LL mr + mw, simulated, instruction and data).
 
 Paths (rosette: l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s): RATTLE ``Stepper::step`` and
-``step_n`` (dt = 1 ms), DOP853 ``Stepper::step`` (rtol 1e-10, atol 1e-12), one ensemble block (64
-starts, RATTLE, one thread), ``ExactSolution::new`` / ``state`` / ``states_at`` (one thread), and
+``step_n`` (dt = 1 ms), DOP853 ``Stepper::step`` (rtol 1e-10, atol 1e-12), an ensemble step of 192
+starts (whole blocks of 64 lanes before 2026-11-27 and of 48 since; RATTLE, one thread),
+``ExactSolution::new`` / ``state`` / ``states_at`` (one thread), and
 with ``--python`` ``pl.simulate`` for 10 and 1000 steps (``py_simulate_10``, ``py_simulate_1000``):
 rough only, since ``simulate`` sizes its chunks by wall time and reads the memory left on each
 call. ``--baseline`` repeats the Rust paths at the
@@ -48,7 +49,7 @@ RUST_PATHS: dict[str, tuple[str, int, int]] = {
     "rattle_step": ("step", 20_000, 60_000),
     "rattle_step_n": ("step", 20_000, 60_000),
     "dop853_step": ("accepted step", 2_000, 6_000),
-    "ensemble_block": ("block step (64 lanes)", 1_000, 3_000),
+    "ensemble_block": ("ensemble step (192 trajectories)", 1_000, 3_000),
     "exact_setup": ("call", 200, 600),
     "exact_state": ("call", 2_000, 6_000),
     "exact_states_at": ("time", 2_000, 6_000),

@@ -6,9 +6,9 @@
 //!
 //! Paths (rosette start: l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s; unit of COUNT in brackets):
 //! `rattle_step` (`Stepper::step`, dt = 1 ms) [step], `rattle_step_n` (`Stepper::step_n`) [step],
-//! `dop853_step` (`Stepper::step`, rtol 1e-10, atol 1e-12) [accepted step], `ensemble_block` (one
-//! block of 64 starts, θ₀ from 0.1 to 2.9 rad, φ̇₀ = 1 rad/s, RATTLE dt = 1 ms, final states, one
-//! thread) [step of the block], `exact_setup` (`ExactSolution::new`) [call], `exact_state`
+//! `dop853_step` (`Stepper::step`, rtol 1e-10, atol 1e-12) [accepted step], `ensemble_block` (192
+//! starts: whole blocks both of 64 lanes, before 2026-11-27, and of 48, since; θ₀ from 0.1 to 2.9
+//! rad, φ̇₀ = 1 rad/s, RATTLE dt = 1 ms, final states, one thread) [step of the 192], `exact_setup` (`ExactSolution::new`) [call], `exact_state`
 //! (`ExactSolution::state`) [call], `exact_states_at` (`states_at`, one thread) [time].
 //! A trailing `baseline` runs at the baseline instruction set (`isa::set_baseline_only`).
 //! Usage: `instr_probe PATH COUNT [baseline]`. SI units throughout.
@@ -50,7 +50,7 @@ fn main() {
             black_box(st.state().x);
         }
         "ensemble_block" => {
-            let n = 64;
+            let n = 192;
             let starts: Vec<State> = (0..n)
                 .map(|k| State::from_angles(model.params(), 0.1 + 2.8 * k as f64 / n as f64, 0.0, 0.0, 1.0).unwrap())
                 .collect();

@@ -13,6 +13,8 @@ import numpy as np
 import numpy.typing as npt
 
 __version__: str
+ENSEMBLE_LANES: int
+"""Trajectories per block of the RATTLE ensemble (48): the unit of its parallel work."""
 
 FloatArray = npt.NDArray[np.float64]
 

@@ -66,6 +66,8 @@ fn _core(m: &Bound<'_, PyModule>) -> PyResult<()> {
     sensitivity::register(m)?;
     live::register(m)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    // trajectories per block of the RATTLE ensemble (the sweeps' chunks are a multiple of it)
+    m.add("ENSEMBLE_LANES", pendulab_core::ensemble::LANES)?;
     m.add_function(wrap_pyfunction!(thread_pool, m)?)?;
     threads::start_pool();
     Ok(())

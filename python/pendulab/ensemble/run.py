@@ -1,5 +1,5 @@
 """Many trajectories at once: ``simulate_ensemble`` on the core's ensemble kernel (RATTLE on blocks
-of 64 trajectories, vectorised, all cores). Every trajectory gets exactly the numbers of
+of 48 trajectories, vectorised, all cores). Every trajectory gets exactly the numbers of
 ``simulate(..., method="rattle")`` with the same dt. Ideal pendulum, optionally with linear damping
 c [1/s] (force −m c v; the ``damped`` model without drag or forcing, T-7.1); length l [m], gravity
 g [m/s²] and damping may differ per trajectory. With ``settle_angle`` [rad] each trajectory's

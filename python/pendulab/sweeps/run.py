@@ -38,6 +38,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import _core
 from .. import validate as limits
 from .._progress import tqdm
 from ..model import FloatArray, Pendulum
@@ -72,11 +73,14 @@ MAX_CHUNK = 10_000_000
 
 def default_chunk_size(spec: SweepSpec) -> int:
     """Points per chunk: :data:`EXACT_CHUNK` for exact quantities; for simulated ones about
-    :data:`TARGET_CHUNK_WORK` trajectory-steps, a multiple of 64 (the kernel's block), 64 … 100 000."""
+    :data:`TARGET_CHUNK_WORK` trajectory-steps, a multiple of the kernel's block
+    (``_core.ENSEMBLE_LANES``, 48 trajectories), from one block to 100 000 points. A resumed sweep
+    keeps the chunk size its output records."""
     if not spec.simulated:
         return EXACT_CHUNK
     per = TARGET_CHUNK_WORK / max(spec.steps, 1)
-    return int(min(max(64 * round(per / 64), 64), 100_000))
+    block = _core.ENSEMBLE_LANES
+    return int(min(max(block * round(per / block), block), 100_000 // block * block))
 
 
 def _positive_int(name: str, value: Any, most: int) -> int:

@@ -7,7 +7,7 @@
 //! with Kahan-compensated updates and, when a lane is damped (c [1/s], T-7.1), the exact damping
 //! flow v ↦ e^{−c h/2} v on either side of the step.
 //!
-//! The block is stored as 64 lanes, but stepped as [`tile_lanes`] lanes at a time (`tile.rs`: the
+//! The block is stored as 48 lanes, but stepped as [`tile_lanes`] lanes at a time (`tile.rs`: the
 //! step itself, register blocking, the multiplier's two halves, parameters shared by all lanes held
 //! as one number each). The tile's width is chosen per instruction-set level, because what fits in
 //! the registers differs (docs/performance.md, "No CPU left behind", *The tile per level*; 4096
@@ -16,7 +16,7 @@
 //!
 //! | level (registers) | unfused: tile 4 / 8 / 16 | fused: tile 4 / 8 / 16 | tile chosen |
 //! |---|---|---|---|
-//! | x86-64-v4 (32 zmm, 8 lanes) | – / – / **2.8–3.4** | – / – / **1.9** | 16 |
+//! | x86-64-v4 (32 zmm, 8 lanes) | – / – / **2.8–3.4** | – / – / **1.9** | 16 (fused: 24) |
 //! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / **3.6** / 2.7 or 4.1 | 8 |
 //! | baseline SSE2 (16 xmm, 2 lanes) | **7.5** / 13.3 / 13.5 | 80 / 81 / 81 (software fma) | 4 |
 //!
@@ -28,6 +28,12 @@
 //! 16 lanes are two AVX-512 registers per quantity: two independent dependency chains, so that the
 //! step's latency (the division 1/b and the multiply-add chains) overlaps the other chain's work;
 //! at AVX2 and SSE2 the same 16 lanes (four and eight registers per quantity) spill to the stack.
+//! With the fused arithmetic at x86-64-v4, 24 lanes (three chains) except when every parameter is a
+//! row, which then spills: on an Intel Xeon (Emerald Rapids, two 512-bit FMA units; one thread, ns
+//! per trajectory-step, 16 → 24 lanes) one pendulum 2.10–2.21 → 1.90–2.01, lengths per trajectory
+//! 2.13–2.20 → 1.92–2.02, damping per trajectory 2.33–2.43 → 2.11–2.16, every parameter a row 2.46 →
+//! 4.0 (so 16 stays for it), unfused 2.8 → 3.0 (16 stays). Not measured at 24 lanes on the AMD Zen 4
+//! of the table above.
 //! Lanes are independent, so the width changes no bit (`tests/isa.rs` runs every level's tiles).
 //! SI units: \[m\], [m/s], [1/s], [m/s²].
 
@@ -41,11 +47,11 @@ use super::tile::Tile;
 use super::tile_params::{Damping, Lengths, PerLane, Shared, TileParams};
 use super::{Lanes, LANES};
 
-/// The widest tile: lanes stepped together in registers at x86-64-v4 (module doc; [`LANES`] is a
-/// multiple of it).
-pub const TILE: usize = 16;
+/// The widest tile: lanes stepped together in registers at x86-64-v4 with the fused arithmetic
+/// (module doc; [`LANES`] is a multiple of it).
+pub const TILE: usize = 24;
 
-/// Which of a block's parameters all its lanes share ([`Block::steps`] picks the tile's form by it).
+/// Which of a block's parameters all its lanes share (`Block::steps` picks the tile's form by it).
 enum Sharing {
     All,
     AllButLengths,
@@ -54,11 +60,13 @@ enum Sharing {
 }
 
 /// Lanes stepped together in registers at instruction-set level `level` with `arithmetic` (module
-/// doc: 16 at x86-64-v4, 8 at x86-64-v3, 4 at the baseline), each a divisor of
-/// [`LANES`]. Only the speed depends on it, never a bit of the results.
+/// doc: 24 fused and 16 unfused at x86-64-v4, 8 at x86-64-v3, 4 at the baseline), each a divisor of
+/// [`LANES`]. Every parameter per lane takes 16 where this says 24 (`Block::steps`). Only the
+/// speed depends on it, never a bit of the results.
 pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
     match (level, arithmetic) {
-        (Level::V4, _) => 16,
+        (Level::V4, Arithmetic::Fused) => 24,
+        (Level::V4, Arithmetic::Unfused) => 16,
         (Level::V3, _) => 8,
         (Level::Baseline, _) => 4,
     }
@@ -77,6 +85,11 @@ impl Block {
     pub fn steps<A: MulAdd>(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
         let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
         match (tile_lanes(isa::current(), arithmetic), self.sharing()) {
+            (24, Sharing::All) => self.steps_at::<A, 24, Shared<24>>(chunk, h, first, track),
+            (24, Sharing::AllButLengths) => self.steps_at::<A, 24, Lengths<24>>(chunk, h, first, track),
+            (24, Sharing::AllButDamping) => self.steps_at::<A, 24, Damping<24>>(chunk, h, first, track),
+            // every parameter a row: its 16 rows of state and parameters spill at 24 lanes (module doc)
+            (24, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, h, first, track),
             (16, Sharing::All) => self.steps_at::<A, 16, Shared<16>>(chunk, h, first, track),
             (16, Sharing::AllButLengths) => self.steps_at::<A, 16, Lengths<16>>(chunk, h, first, track),
             (16, Sharing::AllButDamping) => self.steps_at::<A, 16, Damping<16>>(chunk, h, first, track),
@@ -119,7 +132,7 @@ impl Block {
         }
     }
 
-    /// [`Block::steps`] with tiles of `T` lanes and the parameters held as `P`.
+    /// `Block::steps` with tiles of `T` lanes and the parameters held as `P`.
     #[inline(always)]
     fn steps_tiled<A: MulAdd, const T: usize, P: TileParams>(
         &mut self,

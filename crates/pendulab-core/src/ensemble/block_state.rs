@@ -1,5 +1,5 @@
 //! The data of one block of [`LANES`](super::LANES) trajectories in structure-of-arrays form: state,
-//! Kahan compensations, parameters, summaries and settle records, one array of 64 lanes each (the
+//! Kahan compensations, parameters, summaries and settle records, one array of 48 lanes each (the
 //! step loop that advances it is `block.rs`, the tile that holds a part of it in registers
 //! `tile.rs`). SI units: \[m\], [m/s], [1/s], [m/s²].
 
