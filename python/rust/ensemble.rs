@@ -88,11 +88,7 @@ impl Arrays {
     fn of(res: EnsembleResult) -> Self {
         let (n, ns) = (res.len(), res.t.len());
         // trajectory k's sample j is states[k * ns + j]: the rows of (n, ns, 3) in order
-        let (mut x, mut v) = (vec![0.0; 3 * n * ns], vec![0.0; 3 * n * ns]);
-        for ((xr, vr), s) in x.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).zip(&res.states) {
-            xr.copy_from_slice(&s.x.to_array());
-            vr.copy_from_slice(&s.v.to_array());
-        }
+        let (x, v) = position_velocity_rows(&res.states);
         let columns = res.summary.as_deref().map(summary_columns);
         let EnsembleResult { t, settle_time, cancelled, steps, states, summary } = res;
         let bytes =
@@ -210,6 +206,17 @@ impl EnsembleRun {
 /// The keys of the summary's columns in `EnsembleRun.result` (per unit mass: z [m], E/m [J/kg], J₃/m
 /// [m²/s], crossings a count), in the order of [`summary_columns`].
 const SUMMARY_KEYS: [&str; 7] = ["z_min", "z_max", "e_min", "e_max", "j3_min", "j3_max", "crossings"];
+
+/// The x and v [m, m/s] of `states` as rows of three, in their order (numpy's C order of an
+/// (N, n_times, 3) array when trajectory k's sample j is `states[k * n_times + j]`).
+pub(crate) fn position_velocity_rows(states: &[State]) -> (Vec<f64>, Vec<f64>) {
+    let (mut x, mut v) = (vec![0.0; 3 * states.len()], vec![0.0; 3 * states.len()]);
+    for ((xr, vr), s) in x.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).zip(states) {
+        xr.copy_from_slice(&s.x.to_array());
+        vr.copy_from_slice(&s.v.to_array());
+    }
+    (x, v)
+}
 
 /// The per-trajectory summaries as the columns of [`SUMMARY_KEYS`] (each read in one pass).
 fn summary_columns(s: &[Summary]) -> [Vec<f64>; 7] {

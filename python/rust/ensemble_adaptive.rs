@@ -6,7 +6,7 @@
 
 use crate::background::Background;
 use crate::convert::{to_py, InvalidInputError};
-use crate::ensemble::starts;
+use crate::ensemble::{position_velocity_rows, starts};
 use crate::spec::{ModelSpec, RunOptions};
 use numpy::ndarray::Array3;
 use numpy::{IntoPyArray, PyReadonlyArray1, PyReadonlyArray2};
@@ -42,11 +42,7 @@ impl AdaptiveArrays {
     /// (N, n_times, 3) in order.
     fn of(res: AdaptiveResult, n_times: usize) -> Self {
         let n = res.states.len() / n_times.max(1);
-        let (mut x, mut v) = (vec![0.0; 3 * res.states.len()], vec![0.0; 3 * res.states.len()]);
-        for ((xr, vr), s) in x.chunks_exact_mut(3).zip(v.chunks_exact_mut(3)).zip(&res.states) {
-            xr.copy_from_slice(&s.x.to_array());
-            vr.copy_from_slice(&s.v.to_array());
-        }
+        let (x, v) = position_velocity_rows(&res.states);
         Self { x, v, shape: (n, n_times, 3), steps: res.steps, cancelled: res.cancelled }
     }
 }
