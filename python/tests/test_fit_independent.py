@@ -87,6 +87,29 @@ def test_the_wrong_damping_law_is_said() -> None:
     assert said
 
 
+def test_a_wrong_damping_law_is_a_misfit_not_outliers() -> None:
+    """An encoder's swing with quadratic drag fitted with viscous damping: the fit misses the first
+    swings most, a smooth run of residuals 5-8 robust standard deviations out. That is a misfit to be
+    said as one; it was also called outliers with the advice loss='soft_l1', which fits worse and
+    leaves the misfit."""
+    truth = ip.Truth(length=0.8, drag=0.5)
+    t = np.arange(0.0, 30.0, 0.02)
+    x, _, _, _ = ip.simulate(truth, ip.start_state(truth, 0.9, 0.0, -0.5), t)
+    angle = ip.measure_encoder(x, np.random.default_rng(0), sigma=0.003)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = pl.fit(
+            t,
+            planar_angle=angle,
+            pendulum=pl.Pendulum(model="damped", g=9.81),
+            fit=["length", "damping"],
+            time_limit=LIMIT,
+        )
+    said = _said(caught, res)
+    assert any("misses the data systematically" in m for m in said), said
+    assert not any("outliers" in m or "soft_l1" in m for m in said), said
+
+
 def test_outliers_with_the_plain_loss_are_said() -> None:
     t, pos = _video(VIDEO, 5, outlier_fraction=0.1)
     _, said = _fit(t, pos, ["length", "g", "damping", "pivot"])

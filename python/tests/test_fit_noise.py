@@ -1,6 +1,7 @@
 """The noise floor and the start read off the data before a fit (fitting/noise.py, fitting/start.py;
 docs/fit.md "Noise and goodness of fit"): an encoder's step from values stored with few decimals, a
-record that stops dead, and a running median that keeps a record's first samples. SI units (rad, s)."""
+record that stops dead, a running median that keeps a record's first samples, and outliers told from
+a misfit's smooth run (fitting/goodness.py). SI units (rad, s)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from pendulab.fitting.goodness import check_kind
 from pendulab.fitting.noise import floor_of, quantum
 from pendulab.fitting.start import despiked, running_median
 
@@ -77,3 +79,17 @@ def test_further_starts_are_skipped_only_at_the_noise_floor() -> None:
     assert not at_noise_floor(search(0.5 * dof, success=False))
     assert not at_noise_floor(search(0.5 * dof, loss="soft_l1"))
     assert not at_noise_floor(SimpleNamespace(result=None, free=["a"], loss="linear"))
+
+
+def test_outliers_are_isolated_values_not_a_smooth_run_of_a_misfit() -> None:
+    """goodness.check_kind: spikes of 20 σ (one at each end, a burst of 3) are outliers; a smooth
+    decaying run of 5-8 σ at the record's start (the first swings a wrong damping law misses) is not."""
+    rng = np.random.default_rng(7)
+    t = np.arange(1500) * 0.02
+    r = 1e-3 * rng.standard_normal(t.size)
+    run = r.copy()
+    run[:10] += 1e-3 * np.linspace(8.0, 5.0, 10)
+    assert check_kind(t, run, 1e-3, 0.5).outliers == 0
+    spiked = r.copy()
+    spiked[[0, 400, 401, 402, 900, 1499]] += 0.02
+    assert check_kind(t, spiked, 1e-3, 0.5).outliers == 6

@@ -10,7 +10,8 @@ Per data kind, from the residual r (measured − fitted, the kind's unit, N × c
   runs test of the residual's signs, z = (R − μ)/s with μ = 2n₊n₋/n + 1, s² = (μ−1)(μ−2)/(n−1);
 - with σ given, the χ² of the whole fit against the χ² distribution of its degrees of freedom (a fixed
   threshold on χ²/dof is too lax for large N: its spread is √(2/dof));
-- outliers: values more than 5 robust standard deviations (1.4826 · median |r|) from the fit;
+- outliers: values more than 5 robust standard deviations (1.4826 · median |r|) both from the fit and
+  from the running median of their OUTLIER_WINDOW neighbours (isolated, not a smooth misfit's run);
 - correlated noise or a misfit? The residual prewhitened by its own AR(1) fit, e_t = r_t − ρ₁ r_{t−1},
   is tested again (Ljung–Box, runs): AR(1) measurement noise (video tracking, a filter) leaves white
   e_t, while a misfit — a coherent oscillation at the swing's frequency ω, ρ₁ ≈ cos ωΔt — leaves a
@@ -27,10 +28,9 @@ residuals. For strongly correlated residuals (ρ₁ ≥ PREWHITEN) the Bartlett 
 prewhitening the scores by their AR(1) fit, Ω_kl = Ω*_kl/((1 − a_k)(1 − a_l)) with Ω* the
 Newey–West Ω of e_i = g_i − a ∘ g_{i−1}, a_k = Σ g_ik g_{i−1,k}/Σ g_{i−1,k}² clipped to [0, 0.95]
 (Andrews & Monahan 1992, Econometrica 60:953, with a diagonal AR(1) so that no matrix inverse can
-blow up), and the larger of the two variances is used.
-Each parameter's error bar is the larger of the classical and the sandwich one
-(the classical covariance scaled by D = diag(max(1, √(C_sandwich,ii / C_ii))), so it stays positive
-definite); for white residuals the two agree.
+blow up), and the larger of the two variances is used. Each parameter's error bar is the larger of
+the classical and the sandwich one (the classical covariance scaled by D = diag(max(1, √(C_sandwich,ii
+/ C_ii))), so it stays positive definite); for white residuals the two agree.
 Units: SI, those of each data kind.
 """
 
@@ -43,6 +43,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from ..model import FloatArray
+from .swing_features import running_median
 
 LJUNG_BOX_LAGS = 20
 #: p-values below this (Ljung–Box, χ²) are reported: about one false alarm in 10⁴ fits of a right model.
@@ -55,6 +56,9 @@ FLOOR_ALARM = 1.5
 COLUMN_SHARE = 0.3
 #: Values farther than this many robust standard deviations from the fit are outliers.
 OUTLIER_SIGMAS = 5.0
+#: ... and as far from the running median of this many samples around them: a smooth run of large
+#: residuals is a misfit, not outliers (loss="soft_l1" does not cure it); bursts of ≤ 3 still count.
+OUTLIER_WINDOW = 7
 #: A relative residual below this (rms / the data's spread) is noise-free data fitted to the model's
 #: own precision (a sideways rate resolved to √ε, round-off): no statistics. Real measurements are
 #: noisier by orders of magnitude (a 2400-step encoder: 1e-3 of a swing).
@@ -212,8 +216,10 @@ def check_kind(t: FloatArray, r: FloatArray, floor: float, spread: float) -> Kin
     outliers = 0
     for j in cols:
         dev = np.abs(a[:, j] - np.median(a[:, j]))
-        robust = 1.4826 * float(np.median(dev))
-        outliers += int(np.count_nonzero(dev > OUTLIER_SIGMAS * robust)) if robust > 0.0 else 0
+        far = OUTLIER_SIGMAS * 1.4826 * float(np.median(dev))
+        short = len(a) < 2 * OUTLIER_WINDOW  # running_median keeps a short record as it is
+        local = dev if short else np.abs(a[:, j] - running_median(a[:, j], OUTLIER_WINDOW))
+        outliers += int(np.count_nonzero((dev > far) & (local > far))) if far > 0.0 else 0
     # a slow drift: the share of the residual's variance a straight line in time explains
     tt = (t - t.mean()) / max(float(np.ptp(t)), 1e-300)
     trend = 0.0
