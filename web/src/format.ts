@@ -8,3 +8,11 @@ export function fmt(v: number | null | undefined, digits = 6): string {
   const a = Math.abs(v);
   return a >= 1e-3 && a < 1e6 ? v.toPrecision(digits) : v.toExponential(digits - 1);
 }
+
+/** The number typed into an `<input type="number">`: NaN when the box is empty or holds what the browser
+ *  cannot read as a number ("abc", "1e"; the browser then reports `value` as '' and `validity.badInput`).
+ *  `Number('')` is 0, so an emptied or mistyped box read with `Number(input.value)` was taken as 0 (a start
+ *  angle of 0°, two pendulums ε = 0 apart) without a word. */
+export function typedNumber(input: { readonly value: string; readonly validity: { readonly badInput: boolean } }): number {
+  return input.validity.badInput || input.value.trim() === '' ? NaN : Number(input.value);
+}

@@ -56,6 +56,17 @@ export function tiltedStart(x: Readonly<Vec3>, epsilon: number): Vec3 {
   return [r * Math.sin(theta) * Math.cos(phi), r * Math.sin(theta) * Math.sin(phi), -r * Math.cos(theta)];
 }
 
+/** What is wrong with the inputs of `o`'s mode, or null: `'own'` (mode own, and pendulums 3 and 4: a finite
+ *  length > 0 m, mass > 0 kg and θ₀ in [0, π]), `'bad'` (mode epsilon: a finite ε; mode damped: a finite
+ *  damping ≥ 0). NaN (an emptied or mistyped box, format.ts `typedNumber`) fails every test. */
+export function twinProblem(o: TwinOptions): 'own' | 'bad' | null {
+  const finite = Number.isFinite;
+  if (o.mode === 'own') return finite(o.length) && o.length > 0 && finite(o.mass) && o.mass > 0 && o.theta >= 0 && o.theta <= Math.PI ? null : 'own';
+  if (o.mode === 'epsilon') return finite(o.epsilon) ? null : 'bad';
+  if (o.mode === 'damped') return finite(o.damping) && o.damping >= 0 ? null : 'bad';
+  return null;
+}
+
 /** The commands that make the second session a copy of the first (`s`) that differs as `o` says, ending
  *  with a reset (and pause if the first is paused). */
 export function twinCommands(s: Status, o: TwinOptions): Command[] {

@@ -35,6 +35,8 @@ export class Controls {
   private runButton!: Controller;
   private readonly modelControls: ModelControls;
   private topView = false;
+  /** The last status shown (a refused value's control shows its value again). */
+  private status: Status | null = null;
 
   constructor(
     container: HTMLElement,
@@ -54,7 +56,8 @@ export class Controls {
     }, 50);
     for (const p of schema.model.params) {
       const send = (v: number) => sendParams(p.name, v);
-      this.synced.push(addParam(pend, m as Record<string, unknown>, p, send, actions.explain));
+      const current = () => (this.status?.params as Record<string, number> | undefined)?.[p.name];
+      this.synced.push(addParam(pend, m as Record<string, unknown>, p, send, actions.explain, current));
     }
     this.modelControls = new ModelControls(pend, schema, actions);
 
@@ -78,11 +81,8 @@ export class Controls {
       .name('dt [s]')
       .decimals(6)
       .onFinishChange((v: number) => {
-        if (!(v >= dtLim.min && v <= dtLim.max)) {
-          actions.explain(t('gui.dtRange', { min: dtLim.min, max: dtLim.max }));
-          return;
-        }
-        actions.send({ type: 'set_method', dt: v });
+        if (v >= dtLim.min && v <= dtLim.max) actions.send({ type: 'set_method', dt: v });
+        else this.refuse(actions, dt, 'dt', t('gui.dtRange', { min: dtLim.min, max: dtLim.max }));
       });
     dt.domElement.title = t('gui.dtHelp', { min: dtLim.min, max: dtLim.max });
     this.synced.push(dt);
@@ -96,11 +96,8 @@ export class Controls {
       .name(t('gui.timeScale'))
       .decimals(3)
       .onFinishChange((v: number) => {
-        if (!(v >= tsLim.min && v <= tsLim.max)) {
-          actions.explain(t('gui.tsRange', { min: tsLim.min, max: tsLim.max }));
-          return;
-        }
-        actions.send({ type: 'set_time_scale', time_scale: v });
+        if (v >= tsLim.min && v <= tsLim.max) actions.send({ type: 'set_time_scale', time_scale: v });
+        else this.refuse(actions, ts, 'time_scale', t('gui.tsRange', { min: tsLim.min, max: tsLim.max }));
       });
     ts.domElement.title = t('gui.tsHelp', { min: tsLim.min, max: tsLim.max });
     this.synced.push(ts);
@@ -147,8 +144,18 @@ export class Controls {
     ex.add(m, 'link').name(t('gui.link'));
   }
 
+  /** A typed dt or time scale refused: `message` explained, and the control `c` of `key` shows the value
+   *  in effect again (the last status's; before one, the control's own), not the refused one. */
+  private refuse(actions: ControlActions, c: Controller, key: 'dt' | 'time_scale', message: string): void {
+    actions.explain(message);
+    const value = this.status?.[key];
+    if (value !== undefined) this.model[key] = value;
+    c.updateDisplay();
+  }
+
   /** Shows the server's status (without sending anything back). Fields being edited are left alone. */
   sync(s: Status): void {
+    this.status = s;
     const m = this.model;
     m['length'] = s.params.length;
     m['mass'] = s.params.mass;

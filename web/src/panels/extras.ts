@@ -7,10 +7,11 @@
 import { Connection } from '../connection';
 import type { Command, Status } from '../protocol';
 import { LabStore } from '../state';
-import { twinCommands } from '../twin';
+import { twinCommands, twinProblem } from '../twin';
 import { MAX_EXTRAS } from '../twin';
 import type { ExtraOptions, TwinOptions } from '../twin';
 import { DEG } from '../measure';
+import { typedNumber } from '../format';
 import { t } from '../i18n';
 
 
@@ -134,8 +135,8 @@ export class ExtraPendulums {
   start(s: Status): boolean {
     const opts: TwinOptions[] = [];
     for (const e of this.extras) {
-      const o: TwinOptions = { mode: 'own', epsilon: 0, method: s.method, damping: 0, length: Number(e.inputs.length.value), mass: Number(e.inputs.mass.value), theta: Number(e.inputs.theta.value) / DEG };
-      if (!(o.length > 0 && o.mass > 0 && o.theta >= 0 && o.theta <= Math.PI)) {
+      const o: TwinOptions = { mode: 'own', epsilon: 0, method: s.method, damping: 0, length: typedNumber(e.inputs.length), mass: typedNumber(e.inputs.mass), theta: typedNumber(e.inputs.theta) / DEG };
+      if (twinProblem(o) !== null) {
         this.explain(t('twin.badOwn'));
         return false;
       }

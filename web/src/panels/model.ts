@@ -38,6 +38,8 @@ export class ModelControls {
   private paramsFolder: GUI | null = null;
   private paramControls: Controller[] = [];
   private values: Record<string, number> = {};
+  /** The model parameters of the last status (a refused value's control shows its value again). */
+  private inEffect: Record<string, number> | null = null;
   private shown: string | null = null;
   private readonly sendParam: (name: string, value: number) => void;
 
@@ -73,7 +75,7 @@ export class ModelControls {
     const folder = this.parent.addFolder(t('gui.modelParams', { model: modelWords(name, spec.label ?? name) }));
     for (const p of spec.params) {
       this.values[p.name] = p.default;
-      const c = addParam(folder, this.values, p, (v) => this.sendParam(p.name, v), this.actions.explain);
+      const c = addParam(folder, this.values, p, (v) => this.sendParam(p.name, v), this.actions.explain, () => this.inEffect?.[p.name]);
       this.paramControls.push(c);
     }
     this.paramsFolder = folder;
@@ -89,7 +91,8 @@ export class ModelControls {
     const display = (this.picker as Controller & { $display?: HTMLElement }).$display;
     if (display && !this.spec(name)) display.textContent = modelWords(name, name);
     if (this.shown !== name) this.rebuild(name);
-    for (const [k, v] of Object.entries(s.model_params ?? {})) this.values[k] = v;
+    this.inEffect = s.model_params ?? {};
+    for (const [k, v] of Object.entries(this.inEffect)) this.values[k] = v;
     for (const c of this.paramControls) {
       if (!c.domElement.contains(document.activeElement)) c.updateDisplay();
     }

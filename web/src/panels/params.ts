@@ -41,24 +41,70 @@ export function checkParam(p: ParamSchema, v: number): string | null {
   return t('msg.notAllowed', { name: p.name, value: v, allowed: p.allowed ?? allowedRange(p), range: allowedRange(p) });
 }
 
+/** One parameter control's edits (`addParam`). A slider drag, or the slider's arrow keys, is sent as it
+ *  comes (the caller throttles); a number typed into the box is sent when it is complete — Enter, or
+ *  leaving the box — never the keystrokes on the way: lil-gui reports every keystroke, and typing 0.5 for
+ *  the length sent 0 (refused, a red message for a value that was fine), typing −1e9 for g sent −1 (taken:
+ *  the pendulum turned upside down) before the whole was refused. A refused value is explained and the
+ *  control shows the value in effect again (`restore`), not the refused one. */
+export class ParamEdit {
+  private typed: number | null = null;
+
+  constructor(
+    private readonly p: ParamSchema,
+    private readonly send: (v: number) => void,
+    private readonly explain: (message: string) => void,
+    private readonly restore: () => void,
+  ) {}
+
+  /** lil-gui's onChange with the new value; `typing`: the number box has the focus. */
+  changed(v: number, typing: boolean): void {
+    if (typing) {
+      this.typed = v;
+      return;
+    }
+    this.typed = null;
+    this.commit(v);
+  }
+
+  /** lil-gui's onFinishChange (Enter, leaving the box, the end of a drag): a typed value is sent now. */
+  finished(): void {
+    const v = this.typed;
+    this.typed = null;
+    if (v !== null) this.commit(v);
+  }
+
+  private commit(v: number): void {
+    const problem = checkParam(this.p, v);
+    if (problem === null) {
+      this.send(v);
+      return;
+    }
+    this.explain(problem);
+    this.restore();
+  }
+}
+
 /** Adds the control of `p` (bound to obj[p.name]) to `folder`; calls `send(v)` for allowed values and
- *  `explain(message)` otherwise. */
+ *  `explain(message)` otherwise (`ParamEdit`), then shows `current()` again (the value in effect, from the
+ *  last status; the schema's default before one). */
 export function addParam(
   folder: GUI,
   obj: Record<string, unknown>,
   p: ParamSchema,
   send: (v: number) => void,
   explain: (message: string) => void,
+  current: () => number | undefined,
 ): Controller {
   if (typeof obj[p.name] !== 'number') obj[p.name] = p.default;
-  const c = folder
-    .add(obj, p.name, p.ui_min, p.ui_max)
-    .name(paramLabel(p))
-    .onChange((v: number) => {
-      const problem = checkParam(p, v);
-      if (problem !== null) explain(problem);
-      else send(v);
-    });
+  const c = folder.add(obj, p.name, p.ui_min, p.ui_max).name(paramLabel(p));
+  const box = c.domElement.querySelector('input');
+  const edit = new ParamEdit(p, send, explain, () => {
+    obj[p.name] = current() ?? p.default;
+    c.updateDisplay();
+  });
+  c.onChange((v: number) => edit.changed(v, box !== null && document.activeElement === box));
+  c.onFinishChange(() => edit.finished());
   const [, help] = paramWordsOf(p);
   c.domElement.title = t('gui.paramHelp', { help, name: p.name, unit: p.unit, range: allowedRange(p), default: p.default });
   c.domElement.dataset['param'] = p.name;

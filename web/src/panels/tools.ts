@@ -5,7 +5,7 @@
 import type { Command, Status } from '../protocol';
 import type { LabStore } from '../state';
 import { DEG, periodComparison, sphericalAngles, Stopwatch, swingTheory } from '../measure';
-import { fmt } from '../format';
+import { fmt, typedNumber } from '../format';
 import { modelWords, t } from '../i18n';
 import type { Key } from '../i18n';
 
@@ -176,7 +176,7 @@ export class Tools {
     rate.title = t('tools.phiDotHelp');
     const set = el('button', { type: 'button', 'data-action': 'set-start' }, t('tools.setStart'));
     const apply = () => {
-      const cmd = startCommand(Number(theta.value), Number(phi.value), Number(rate.value));
+      const cmd = startCommand(typedNumber(theta), typedNumber(phi), typedNumber(rate));
       if (typeof cmd === 'string') actions.explain(cmd);
       else actions.send(cmd);
     };

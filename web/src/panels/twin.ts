@@ -7,12 +7,13 @@ import { LabStore } from '../state';
 import type { TrailSlice } from '../scene/trail';
 import { CurvePlot, dataRange } from './curves';
 import { Visibility } from './visible';
-import { rowOffsets, separation, sideBySide, twinCommands } from '../twin';
+import { rowOffsets, separation, sideBySide, twinCommands, twinProblem } from '../twin';
 import type { ExtraPendulums } from './extras';
 import { numberInput } from './extras';
 import type { Frame, Vec3 } from '../protocol';
 import type { TwinMode, TwinOptions } from '../twin';
 import { DEG } from '../measure';
+import { typedNumber } from '../format';
 import { methodWords, t } from '../i18n';
 
 export interface TwinActions {
@@ -126,22 +127,24 @@ export class TwinPanel {
       if (mode.value === 'off') this.stop();
     });
     start.addEventListener('click', () => {
-      this.options.mode = mode.value as TwinMode;
-      this.options.epsilon = Number(eps.value) / DEG;
-      this.options.method = method.value;
-      this.options.damping = Number(damp.value);
-      this.options.length = Number(len2.value);
-      this.options.mass = Number(mass2.value);
-      this.options.theta = Number(theta2.value) / DEG;
-      if (!Number.isFinite(this.options.epsilon) || !(this.options.damping >= 0)) {
-        actions.explain(t('twin.bad'));
+      const o: TwinOptions = {
+        ...this.options,
+        mode: mode.value as TwinMode,
+        epsilon: typedNumber(eps) / DEG,
+        method: method.value,
+        damping: typedNumber(damp),
+        length: typedNumber(len2),
+        mass: typedNumber(mass2),
+        theta: typedNumber(theta2) / DEG,
+      };
+      // the chosen mode's inputs only (an emptied box of another mode is no reason to refuse), and the
+      // options kept as they were when refused (the share link writes them)
+      const problem = twinProblem(o);
+      if (problem !== null) {
+        actions.explain(t(problem === 'own' ? 'twin.badOwn' : 'twin.bad'));
         return;
       }
-      const o = this.options;
-      if (o.mode === 'own' && !(o.length > 0 && o.mass > 0 && o.theta >= 0 && o.theta <= Math.PI)) {
-        actions.explain(t('twin.badOwn'));
-        return;
-      }
+      Object.assign(this.options, o);
       this.start();
     });
     showFor();
@@ -209,14 +212,14 @@ export class TwinPanel {
   start(): void {
     const s = this.first.status;
     if (s === null) return this.actions.explain(t('msg.notConnected'));
-    this.pending = twinCommands(s, this.options);
     if (this.options.mode === 'own' && this.extras !== null) {
-      this.extras.start(s);
+      if (!this.extras.start(s)) return; // an input of pendulum 3 or 4 refused (its message is shown)
       this.options.extras = this.extras.values(); // the share link carries them
     } else {
       this.extras?.stop();
       delete this.options.extras;
     }
+    this.pending = twinCommands(s, this.options);
     if (this.conn === null) {
       this.conn = new Connection(this.socket, {
         onOpen: () => this.flush(),
