@@ -143,10 +143,12 @@ async function checkOwnTwin(page, { check, WAIT }) {
   await page.evaluate(() => window.pendulab.send({ type: 'set_params', length: 2.5 }));
   await page.waitForFunction(() => window.pendulab.store.status?.params.length === 2.5, null, { timeout: WAIT });
   // measured once the scene has drawn the longer pendulum (its bob 2.5 m from the pivot in the frame drawn
-  // after the change: the camera refits on that frame), not after a fixed wait
+  // after the change: the camera refits on that frame), not after a fixed wait; no frame yet just after the
+  // change (the new epoch's first is on its way): latest() is null then, and a predicate that threw on it
+  // ended the wait at once (the check then ran too early, and the throw counted as a page error)
   const drawnBefore = await page.evaluate(() => window.pendulab.drawn());
   await page
-    .waitForFunction((n) => Math.abs(Math.hypot(...window.pendulab.store.latest().x) - 2.5) < 1e-6 && window.pendulab.drawn() > n + 2 && window.pendulab.twinOnScreen() !== null, drawnBefore, { timeout: WAIT, polling: 100 })
+    .waitForFunction((n) => Math.abs(Math.hypot(...(window.pendulab.store.latest()?.x ?? [0, 0, 0])) - 2.5) < 1e-6 && window.pendulab.drawn() > n + 2 && window.pendulab.twinOnScreen() !== null, drawnBefore, { timeout: WAIT, polling: 100 })
     .catch(() => {});
   const after = await page.evaluate(() => ({ twin: window.pendulab.twinOnScreen(), bob: window.pendulab.bobOnScreen() }));
   check(inCanvas(after.twin) && inCanvas(after.bob), 'a longer first pendulum keeps both in view');
