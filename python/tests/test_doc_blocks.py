@@ -10,7 +10,10 @@ to the letter). Blocks are taken from the text, nothing is added to them:
   each command runs in bash there, with ``pendulab`` and ``python`` of this environment first on PATH.
   In a transcript (lines ``$ command`` followed by its output) a command whose shown output has
   lines starting with ``error:`` must fail with exit code 2 and print ``error:``; every other command
-  must succeed.
+  must succeed. The output shown for a ``pendulab`` command must be what it prints: every shown line
+  (an annotation ``(stderr)`` at its end dropped) equals a line of its stdout or stderr, where ``…``
+  stands for any text, a round-off figure (``4.441e-16``: an exponent of -13 or below) for any number
+  and ``'fused'`` for ``'unfused'`` too (both depend on the CPU's arithmetic: docs/cli.md).
   Commands that cannot finish are checked, not run: a synopsis line (placeholders in capitals such as
   ``FILE.toml``, ``[optional parts]``, ``…``) and ``pendulab serve`` (a server runs until stopped) must
   name a real command and only options its ``--help`` lists; a ``make TARGET`` line must name a
@@ -169,6 +172,7 @@ def _check(cmd: list[str], cwd: Path, where: str) -> subprocess.CompletedProcess
 class Command:
     text: str
     expect_error: bool
+    shown: tuple[str, ...] = ()  # the output lines a transcript shows for it
 
 
 def commands(b: Block) -> list[Command]:
@@ -182,7 +186,9 @@ def commands(b: Block) -> list[Command]:
                     if x.startswith("$ "):
                         break
                     shown.append(x)
-                out.append(Command(ln[2:].strip(), any(x.startswith("error:") for x in shown)))
+                shown = [x for x in shown if x.strip()]
+                error = any(x.startswith("error:") for x in shown)
+                out.append(Command(ln[2:].strip(), error, tuple(shown)))
         return out
     for ln in lines:
         if not ln.strip():
@@ -249,7 +255,9 @@ def test_shell_blocks_run_as_written(block: Block, work: Path) -> None:
         if is_synopsis(c.text):
             check_synopsis(c.text, block.where)
             continue
-        code, stderr = _run(c.text, work)
+        code, stderr, stdout = _run(c.text, work)
+        if words[0] == "pendulab":
+            check_shown(c, stdout + stderr, block.where)
         if c.expect_error:
             assert code == 2 and "error:" in stderr, (
                 f"{block.where}: `{c.text}` should fail (exit 2), got {code}:\n{stderr}"
@@ -261,10 +269,42 @@ def test_shell_blocks_run_as_written(block: Block, work: Path) -> None:
 _SHELL_SYNTAX = re.compile(r"[|&;<>*?$`~(){}]")
 
 
-def _run(text: str, work: Path) -> tuple[int, str]:
-    """Exit code and stderr of one command run in ``work``: a plain ``pendulab …`` line in this process
-    (typer's CliRunner: the same app as the ``pendulab`` script, without a second of start-up per line),
-    anything with shell syntax (pipes, globs, variables) in bash."""
+_ROUND_OFF = re.compile(r"\d\.\d+e-(?:1[3-9]|[2-9]\d|\d{3})")
+
+
+def shown_pattern(line: str) -> re.Pattern[str]:
+    """The regular expression a shown output line stands for (see the module doc)."""
+    line = re.sub(r"\s+\(stderr\)$", "", line.rstrip())
+    parts = re.split(r"(…|'fused'|" + _ROUND_OFF.pattern + ")", line)
+    wild = {"…": ".*", "'fused'": "'(?:un)?fused'"}
+    return re.compile(
+        "".join(wild.get(x, r"[-+0-9.e]+" if _ROUND_OFF.fullmatch(x) else re.escape(x)) for x in parts)
+    )
+
+
+def check_shown(c: Command, printed: str, where: str) -> None:
+    lines = [ln.rstrip() for ln in printed.splitlines()]
+    for shown in c.shown:
+        pattern = shown_pattern(shown)
+        assert any(pattern.fullmatch(ln) for ln in lines), (
+            f"{where}: `{c.text}` does not print the line the page shows:\n{shown}\n"
+            f"it printed:\n{printed[-3000:]}"
+        )
+
+
+def test_shown_lines_match_what_is_meant() -> None:
+    assert shown_pattern("error: x.toml: bad (…)").fullmatch("error: x.toml: bad (and why)")
+    assert shown_pattern("  rattle, dt = 0.001 s      (stderr)").fullmatch("  rattle, dt = 0.001 s")
+    assert shown_pattern("max |J3 - J3_0| = 4.441e-16").fullmatch("max |J3 - J3_0| = 2.220e-16")
+    assert not shown_pattern("max |E - E0| = 1.319e-06").fullmatch("max |E - E0| = 1.320e-06")
+    assert shown_pattern("{'arithmetic': 'fused'}").fullmatch("{'arithmetic': 'unfused'}")
+    assert not shown_pattern("error: missing.toml: No such file").fullmatch("error: missing.toml: other")
+
+
+def _run(text: str, work: Path) -> tuple[int, str, str]:
+    """Exit code, stderr and stdout of one command run in ``work``: a plain ``pendulab …`` line in this
+    process (typer's CliRunner: the same app as the ``pendulab`` script, without a second of start-up per
+    line), anything with shell syntax (pipes, globs, variables) in bash."""
     words = shlex.split(text, comments=True)
     if words[0] == "pendulab" and not _SHELL_SYNTAX.search(text):
         from typer.testing import CliRunner
@@ -281,8 +321,8 @@ def _run(text: str, work: Path) -> tuple[int, str]:
             os.chdir(cwd)
         if result.exception is not None and not isinstance(result.exception, SystemExit):
             raise result.exception
-        return result.exit_code, result.stderr
+        return result.exit_code, result.stderr, result.stdout
     p = subprocess.run(
         ["bash", "-c", text], cwd=work, env=_env(), capture_output=True, text=True, timeout=TIMEOUT
     )
-    return p.returncode, p.stderr
+    return p.returncode, p.stderr, p.stdout
