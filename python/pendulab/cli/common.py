@@ -112,3 +112,18 @@ def _check_output(out: Path) -> None:
         _fail(f"--out {str(out)!r}: the directory {str(parent)!r} does not exist; create it first")
     if not os.access(parent, os.W_OK | os.X_OK):
         _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")
+
+
+IMAGE_SUFFIXES = (".png", ".svg", ".pdf")
+
+
+def _check_image(option: str, path: Path) -> None:
+    """An image path (--plot, --out of a figure) checked before any work: a suffix matplotlib writes,
+    not a directory, in a directory that exists (it is not created, docs/limits.md)."""
+    if path.suffix.lower() not in IMAGE_SUFFIXES:
+        _fail(f"{option}: unknown image suffix {path.suffix!r} in {str(path)!r}; use .png, .svg or .pdf")
+    if path.is_dir():
+        _fail(f"{option} {str(path)!r} is a directory; give a file name ending in .png, .svg or .pdf")
+    parent = path.resolve().parent
+    if not parent.is_dir():
+        _fail(f"{option} {str(path)!r}: the directory {str(parent)!r} does not exist; create it first")

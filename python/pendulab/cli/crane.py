@@ -16,13 +16,15 @@ import numpy as np
 import typer
 
 from .._core import InvalidInputError
-from .common import _check_output, _fail, _say, _user_errors, app
+from .common import _check_image, _check_output, _fail, _say, _user_errors, app
 
 crane_app = typer.Typer(
     help="Cranes: command shapers, their sensitivity, a move's residual sway (docs/cranes.md).",
     no_args_is_help=True,
 )
-app.add_typer(crane_app, name="crane")
+app.add_typer(
+    crane_app, name="crane", short_help="Cranes: shapers, sensitivity, residual sway, grids, crane files."
+)
 
 _KIND_HELP = "Shaper kind: zv, zvd, zvdd, ei, 2hump_ei."
 _G = 9.81
@@ -37,13 +39,6 @@ def _omega(omega: float | None, rope: float | None, g: float) -> float:
         return math.sqrt(g / rope)
     assert omega is not None
     return omega
-
-
-def _check_image(path: Path) -> None:
-    if path.suffix.lower() not in (".png", ".svg", ".pdf"):
-        _fail(f"--plot: unknown image suffix {path.suffix!r} in {str(path)!r}; use .png, .svg or .pdf")
-    if not path.resolve().parent.is_dir():
-        _fail(f"--plot {str(path)!r}: the directory {str(path.resolve().parent)!r} does not exist")
 
 
 @crane_app.command("shaper", short_help="A shaper's impulses (t_i [s], A_i) and its insensitivity.")
@@ -89,7 +84,7 @@ def sensitivity_cmd(
         if not (0 < lo < hi and math.isfinite(hi)):
             raise InvalidInputError(f"--lo {lo!r} and --hi {hi!r}: need 0 < lo < hi")
         if plot is not None:
-            _check_image(plot)
+            _check_image("--plot", plot)
         shapers = [crane.shaper(k, omega=1.0, damping=damping, tolerance=tolerance) for k in kinds]
         x = np.linspace(lo, hi, points)
         _say("ω/ω₀   " + "".join(f"{s.kind.upper():>10}" for s in shapers) + "   (V [%])")
@@ -133,7 +128,7 @@ def residual_cmd(
         from .. import crane
 
         if plot is not None:
-            _check_image(plot)
+            _check_image("--plot", plot)
         settle = float(settle)
         if not (math.isfinite(settle) and 0 < settle <= 3600):
             raise InvalidInputError(f"--settle {settle!r}: a time in (0, 3600] s")
@@ -186,7 +181,7 @@ def run_cmd(
                 _fail(f"--out {str(out)!r}: crane runs are written as .csv")
             _check_output(out)
         if plot is not None:
-            _check_image(plot)
+            _check_image("--plot", plot)
         report(load(file), str(file), out, plot)
 
 
@@ -283,7 +278,7 @@ def grid_cmd(
                 _fail(f"--out {str(out)!r}: the grid is written as .csv")
             _check_output(out)
         if plot is not None:
-            _check_image(plot)
+            _check_image("--plot", plot)
         lr, rr = _span("--ropes", ropes, False), _span("--ratios", ratios, True)
         design = design_rope if design_rope is not None else 0.5 * (lr[0] + lr[-1])
         probe = crane.Crane(

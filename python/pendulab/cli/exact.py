@@ -15,7 +15,6 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from .. import io
 from .._core import InvalidInputError
 from ..scenario import Scenario, load_scenario
 from ..simulation import simulate
@@ -24,12 +23,19 @@ from ..theory.em_map import em_map
 from ..theory.exact import ExactSolution, exact
 from ..trajectory import Trajectory
 from ..validate import show
-from .common import _check_output, _fail, _say, _scenario_file, _user_errors, app
+from .common import (
+    IMAGE_SUFFIXES,
+    _check_image,
+    _check_output,
+    _fail,
+    _say,
+    _scenario_file,
+    _user_errors,
+    app,
+)
 
 MAX_TIMES = 20_000_000
 """Most times ``pendulab exact --t`` accepts (~1 GB of states)."""
-
-IMAGE_SUFFIXES = (".png", ".svg", ".pdf")
 
 PLOT_KINDS = ("both", "sphere", "top", "phases")
 """What ``pendulab plot --kind`` draws."""
@@ -73,14 +79,6 @@ def parse_times(spec: str) -> np.ndarray:
 
 def _solution(sc: Scenario) -> ExactSolution:
     return exact(sc.pendulum(), sc.initial_state())
-
-
-def _check_image(option: str, path: Path) -> None:
-    """An image path's suffix must be one matplotlib writes (checked before any work)."""
-    if path.suffix.lower() not in IMAGE_SUFFIXES:
-        _fail(f"{option}: unknown image suffix {path.suffix!r} in {str(path)!r}; use .png, .svg or .pdf")
-    if path.is_dir():
-        _fail(f"{option} {str(path)!r} is a directory; give a file name ending in .png, .svg or .pdf")
 
 
 @app.command(
@@ -158,6 +156,8 @@ def phases(
     with _user_errors():
         if plot is not None:
             _check_image("--plot", plot)
+        if dt is not None and not (math.isfinite(dt) and dt > 0.0):
+            _fail(f"--dt {dt!r} must be a finite step > 0 s")
         sc = load_scenario(_scenario_file(scenario))
         sol = _solution(sc)
         ph = sol.phases()
@@ -263,9 +263,10 @@ def em_map_cmd(
                 f"unknown output suffix {suffix!r} in {str(out)!r}; "
                 "use .png, .svg, .pdf (image) or .nc, .csv (data)"
             )
-        if suffix == ".nc":
-            io._require("xarray")
-            io._require("scipy")
+        if suffix in IMAGE_SUFFIXES:
+            _check_image("--out", out)
+        else:
+            _check_output(out)
         p = Pendulum(length=length, g=g, mass=mass)
         emm = em_map(p, _range("--j-range", j_range), _range("--e-range", e_range), _grid(grid))
         inside = emm.W[np.isfinite(emm.W)]
@@ -302,8 +303,7 @@ def reduced(
     """The reduced space (docs/theory.md T-3.3, Holm's Figure 2): in (σ1, σ2, σ3) = (z/l, ż/l, |v|²/l²)
     the surface C = 0 of the orbit's J3, the plane H = const and the exact orbit on their intersection."""
     with _user_errors():
-        if out.suffix.lower() not in IMAGE_SUFFIXES:
-            _fail(f"unknown image suffix {out.suffix!r} in {str(out)!r}; use .png, .svg or .pdf")
+        _check_image("--out", out)
         sc = load_scenario(_scenario_file(scenario))
         sol = _solution(sc)
         tz = sol.period_z

@@ -26,7 +26,7 @@ from ..fitting.table import read_table_notes
 from ..model import Pendulum
 from ..scenario.examples import find as find_example
 from ..variants.spring import SwingingSpring
-from .common import _fail, _say, _user_errors, app
+from .common import _check_image, _fail, _say, _user_errors, app
 
 SIGMA_KINDS = {
     "positions": "positions",
@@ -146,6 +146,11 @@ def fit_cmd(
     with _user_errors():
         if out is not None and out.suffix.lower() != ".toml":
             _fail(f"--out {str(out)!r}: the fitted scenario is written as TOML; give a name ending in .toml")
+        if out is not None and not out.resolve().parent.is_dir():  # checked before the fit, as --plot
+            folder = str(out.resolve().parent)
+            _fail(f"--out {str(out)!r}: the directory {folder!r} does not exist; create it first")
+        if plot is not None:
+            _check_image("--plot", plot)
         if model not in FITTABLE_MODELS:
             raise InvalidInputError(f"--model {model!r}: use one of {', '.join(FITTABLE_MODELS)}")
         own = model_params(model)

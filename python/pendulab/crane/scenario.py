@@ -58,9 +58,12 @@ def _describe(e: ValidationError) -> str:
     parts = []
     for err in e.errors()[:5]:
         where = ".".join(str(p) for p in err["loc"])
-        parts.append(
-            f"[{where}]: {err['msg']}" if err["type"] != "extra_forbidden" else f"unknown key {where}"
-        )
+        if err["type"] == "extra_forbidden":
+            parts.append(f"unknown key {where}")
+        elif err["type"] == "missing":  # pydantic's "Field required" says neither table nor key
+            parts.append(f"the table [{where}] is missing" if len(err["loc"]) == 1 else f"{where} is missing")
+        else:
+            parts.append(f"[{where}]: {err['msg']}")
     return "; ".join(parts)
 
 

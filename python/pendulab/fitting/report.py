@@ -65,7 +65,10 @@ def report_text(res: Any) -> str:
         lines.append(f"  ({res.dropped} rows with NaN were dropped)")
     width = max(len(n) for n in res.names)
     for name, value, err, unit in fit_rows(res):
-        lines.append(f"  {name.ljust(width)} = {value:>18} {err:<28} {unit}")
+        if res.determined[name]:
+            lines.append(f"  {name.ljust(width)} = {value:>18} {err:<28} {unit}")
+        else:  # the unit beside the value, not after the reason's sentence
+            lines.append(f"  {name.ljust(width)} = {value:>18} {unit:<28} {err}")
     for label, (value, err) in res.combinations.items():
         lines.append(f"  determined instead: {label} = {value:.10g} ± {number(err, 3)}")
     if res.mirror_blind and {"phi0", "phi_dot0"} & set(res.names):

@@ -127,6 +127,9 @@ class OutputDir:
         sweep (without ``resume``), a different sweep (with it), and results larger than the free disk."""
         _require_pyarrow()
         target, is_file, directory = _paths(out)
+        parent = target.resolve().parent
+        if not parent.is_dir():  # a typo in a path is an error, not new folders (docs/limits.md)
+            raise _bad(f"out {str(target)!r}: the directory {str(parent)!r} does not exist; create it first")
         if not is_file and target.suffix and not target.is_dir():
             raise _bad(f"out {str(target)!r}: give a directory or a file ending in .parquet")
         if is_file and target.is_dir():
@@ -179,7 +182,7 @@ class OutputDir:
                 f"x 8 bytes{', twice while merging' if is_file else ''}), more than the {_gib(free)} free "
                 f"in {probe}"
             )
-        directory.mkdir(parents=True, exist_ok=True)
+        directory.mkdir(exist_ok=True)
         self = cls(target, directory, manifest, set())
         self._write_manifest()
         return self
