@@ -15,9 +15,10 @@ to the letter). Blocks are taken from the text, nothing is added to them:
   stands for any text, a round-off figure (``4.441e-16``: an exponent of -13 or below) for any number
   and ``'fused'`` for ``'unfused'`` too (both depend on the CPU's arithmetic: docs/cli.md).
   Commands that cannot finish are checked, not run: a synopsis line (placeholders in capitals such as
-  ``FILE.toml``, ``[optional parts]``, ``…``) and ``pendulab serve`` (a server runs until stopped) must
-  name a real command and only options its ``--help`` lists; a ``make TARGET`` line must name a
-  target of the Makefile (``make -n``; building takes minutes and is what CI does anyway).
+  ``FILE.toml`` or ``tcp://HOST:8786``, ``[optional parts]``, ``…``) and ``pendulab serve`` (a server
+  runs until stopped) must name a real command and only options its ``--help`` lists (an address to
+  fill in is never contacted); a ``make TARGET`` line must name a target of the Makefile (``make -n``;
+  building takes minutes and is what CI does anyway).
 - other blocks (output, TOML, file trees) are text.
 
 A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; :data:`ALLOWED_SKIPS` keeps that
@@ -205,7 +206,10 @@ def is_synopsis(cmd: str) -> bool:
     if words[:2] == ["pendulab", "serve"]:
         return True
     return any(
-        w.startswith("[") or w in ("...", "…") or re.fullmatch(r"[A-Z][A-Z_]*(\.\w+)?(:[A-Z_:]+)?", w)
+        w.startswith("[")
+        or w in ("...", "…")
+        or re.fullmatch(r"[A-Z][A-Z_]*(\.\w+)?(:[A-Z_:]+)?", w)
+        or re.search(r"://[A-Z][A-Z_]*(:|/|$)", w)  # an address to fill in, tcp://HOST:8786: never run
         for w in words
     )
 
@@ -299,6 +303,8 @@ def test_shown_lines_match_what_is_meant() -> None:
     assert not shown_pattern("max |E - E0| = 1.319e-06").fullmatch("max |E - E0| = 1.320e-06")
     assert shown_pattern("{'arithmetic': 'fused'}").fullmatch("{'arithmetic': 'unfused'}")
     assert not shown_pattern("error: missing.toml: No such file").fullmatch("error: missing.toml: other")
+    assert is_synopsis("pendulab sweep s.toml --out s/ --scheduler tcp://HOST:8786 --resume")
+    assert not is_synopsis("pendulab sweep s.toml --out s/ --workers 2")
 
 
 def _run(text: str, work: Path) -> tuple[int, str, str]:
