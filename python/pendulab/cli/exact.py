@@ -150,7 +150,7 @@ def phases(
 ) -> None:
     """Δφ per z-period from T-4.5, its dynamic and geometric parts (T-5.1), their sum and the difference,
     and Δφ measured from a RATTLE8 simulation of a few z-periods (between upward crossings of the mid
-    height, located by interpolation; see pendulab.advance). --plot draws the split as bars and the
+    height, located by interpolation; see pendulab.theory.advance). --plot draws the split as bars and the
     reduced orbit in the (z, p_z) plane with its area shaded.
     Needs an orbit with J3 != 0 (kind generic or conical)."""
     with _user_errors():

@@ -21,7 +21,7 @@ E/(m l²). The motion lies on the intersection of the surface C = 0 with the pla
 - :func:`reduced_flow` integrates the reduced flow T-3.4 with the reconstruction T-3.6 — a path to
   x(t) independent of the Cartesian integrators and of the elliptic solution.
 
-Measuring Δφ per z-period from a trajectory: :mod:`pendulab.advance`.
+Measuring Δφ per z-period from a trajectory: :mod:`pendulab.theory.advance`.
 """
 
 from __future__ import annotations
