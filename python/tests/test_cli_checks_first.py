@@ -98,3 +98,9 @@ def test_a_parameter_not_determined_has_its_unit_beside_its_value() -> None:
     for row, unit in zip(rows, ("m", "m/s^2"), strict=True):
         head, found, _ = row.partition("not determined")
         assert found and head.split()[-1] == unit, row
+
+
+def test_animate_states_its_gif_choices_only_once_they_are_checked(tmp_path: Path) -> None:
+    code, out, err = invoke("animate", "rosette", "--out", str(tmp_path / "a.gif"), "--fps", "-1")
+    assert_user_error(code, out, err, "fps = -1.0")
+    assert "GIF:" not in err, err  # was "GIF: 640x360 at -1 frames/s" before the refusal

@@ -110,6 +110,7 @@ def animate(
     """Make a movie of a scenario. Everything is checked before the run (format, size, panels, the
     number of frames); Ctrl-C stops, leaves no file and exits with code 130."""
     with _user_errors():
+        note = ""
         fmt = _check_movie_path(out)
         given_size = parse_size(size) if size is not None else None
         sc = load_scenario(_scenario_file(scenario)).with_overrides(t_end=t_end)
@@ -120,8 +121,8 @@ def animate(
                 frame_size, fps, speed = fit_gif(sim.t_end - sim.t0, given_size, fps, speed)
             else:
                 frame_size, fps, _ = fit_gif(duration * speed, given_size, fps, speed)
-            if chosen and not quiet:
-                _say(f"GIF: {frame_size[0]}x{frame_size[1]} at {fps:.3g} frames/s, speed {speed:g}", err=True)
+            if chosen and not quiet:  # said once everything is checked (not "at -1 frames/s")
+                note = f"GIF: {frame_size[0]}x{frame_size[1]} at {fps:.3g} frames/s, speed {speed:g}"
         else:
             frame_size = given_size or (1280, 720)
             fps = 30.0 if fps is None else fps
@@ -146,6 +147,8 @@ def animate(
             span, fps=gif_fps(check_fps(fps)) if fmt == "gif" else fps, speed=speed, duration=duration
         )
         check_work(fmt, frame_size, clock.frames)
+        if note:
+            _say(note, err=True)
         settings = MovieSettings(
             fps=fps,
             speed=speed,
