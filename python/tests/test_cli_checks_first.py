@@ -104,3 +104,30 @@ def test_animate_states_its_gif_choices_only_once_they_are_checked(tmp_path: Pat
     code, out, err = invoke("animate", "rosette", "--out", str(tmp_path / "a.gif"), "--fps", "-1")
     assert_user_error(code, out, err, "fps = -1.0")
     assert "GIF:" not in err, err  # was "GIF: 640x360 at -1 frames/s" before the refusal
+
+
+def test_a_folder_given_as_a_scenario_is_called_a_folder(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    (tmp_path / "runs").mkdir()
+    monkeypatch.chdir(tmp_path)
+    assert_user_error(*invoke("validate", "runs"), "runs: a directory, not a scenario file", "rosette")
+    assert_user_error(*invoke("fit", "runs"), "runs: a directory, not a data file")
+
+
+def test_the_lab_finds_a_scenario_as_every_command_does(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from pendulab.server.scenarios import resolve_scenario
+
+    monkeypatch.chdir(tmp_path)  # no rosette.toml here: the example, as `pendulab run rosette.toml` takes it
+    assert resolve_scenario("rosette.toml").name == resolve_scenario("example:rosette").name == "rosette"
+    (tmp_path / "rosette").write_text(  # a file wins over an example of the same name (docs/cli.md)
+        "title = 'mine'\n[pendulum]\nlength = 2.0\nmass = 1.0\n"
+        "[initial]\ntheta = 0.5\n[simulation]\nt_end = 1.0\n",
+        encoding="utf-8",
+    )
+    assert resolve_scenario("rosette").title == "mine"
+    (tmp_path / "runs").mkdir()
+    with pytest.raises(pl.ScenarioError, match="runs: a directory, not a scenario file"):
+        resolve_scenario("runs")

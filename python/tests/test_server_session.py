@@ -138,7 +138,7 @@ def test_serve_help_and_user_errors() -> None:
         and "--max-sessions" in r.stdout
     )
     r = CliRunner().invoke(cli.app, ["serve", "no_such_scenario", "--no-browser"])
-    assert r.exit_code == 2 and "no such scenario" in r.stderr and "rosette" in r.stderr
+    assert r.exit_code == 2 and "no example scenario of that name" in r.stderr and "rosette" in r.stderr
     r = CliRunner().invoke(cli.app, ["serve", "--max-sessions", "0", "--no-browser"])
     assert r.exit_code == 2 and "max-sessions" in r.stderr
 

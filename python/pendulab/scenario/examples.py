@@ -45,7 +45,8 @@ def find(text: str | Path, kind: str = "scenario") -> Path:
     (``"scenario"``, ``"sweep"`` or ``"data"``) of that name, with or without its suffix
     (``.toml``; ``.csv`` for data) and with or without the prefix ``example:``.
 
-    Raises :class:`FileNotFoundError` naming the argument and listing the examples of that kind.
+    Raises :class:`FileNotFoundError` (:class:`IsADirectoryError` for a folder) naming the argument and
+    listing the examples of that kind.
 
     Examples
     --------
@@ -68,6 +69,11 @@ def find(text: str | Path, kind: str = "scenario") -> Path:
         return examples[name]
     known = ", ".join(examples) or "none shipped"
     listing = "`pendulab scenarios` lists them" if kind != "data" else "docs/fit.md describes them"
+    if path.is_dir():  # not "No such file": it exists, as a folder
+        raise IsADirectoryError(
+            f"{text}: a directory, not a {kind} file, and no example {kind} of that name (examples: {known}; "
+            f"{listing})"
+        )
     raise FileNotFoundError(
         f"{text}: No such file, and no example {kind} of that name (examples: {known}; {listing})"
     )

@@ -13,6 +13,7 @@ from ..integrators import DEFAULTS
 from ..model import State
 from ..scenario import Scenario, ScenarioError, load_scenario
 from ..scenario.crane_schema import CraneSpec as CraneFileSpec
+from ..scenario.examples import find as find_example
 from ..scenario.examples import scenario_files as shipped_scenarios
 from .crane_setup import crane_pendulum, crane_start
 from .live_models import LabPendulum, scenario_pendulum
@@ -95,13 +96,14 @@ def resolve_scenario(spec: str | Path | None) -> Setup:
             else (builtin_setup())
         )
     text = str(spec)
-    if text in files:
-        return Setup.from_scenario(load_scenario(files[text]), text)
     path = Path(text)
-    if path.is_file():
+    if path.is_file():  # a file wins over an example of the same name, as for every command (docs/cli.md)
         return Setup.from_scenario(load_scenario(path), path.stem)
-    known = ", ".join(files) or "none found"
-    raise ScenarioError(text, f"no such scenario file or example name (examples: {known})")
+    try:  # an example by name, with or without .toml or example: (``pendulab run`` takes the same)
+        found = find_example(text, "scenario")
+    except OSError as e:
+        raise ScenarioError(text, str(e).removeprefix(f"{text}: ")) from None
+    return Setup.from_scenario(load_scenario(found), found.stem)
 
 
 def example_resolver(default: Setup) -> Callable[[str], Setup]:
