@@ -6,6 +6,7 @@ the crane commands; ``pendulab sweep --out`` in a folder that does not exist is 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -131,3 +132,28 @@ def test_the_lab_finds_a_scenario_as_every_command_does(
     (tmp_path / "runs").mkdir()
     with pytest.raises(pl.ScenarioError, match="runs: a directory, not a scenario file"):
         resolve_scenario("runs")
+
+
+def _command_paths() -> list[tuple[str, ...]]:
+    from typer.main import get_command
+
+    from pendulab import cli
+
+    paths: list[tuple[str, ...]] = [()]
+    root: Any = get_command(cli.app)  # a group: .commands by name (typer's own click classes)
+    for name, cmd in root.commands.items():
+        paths.append((name,))
+        paths += [(name, sub) for sub in getattr(cmd, "commands", {})]
+    return paths
+
+
+def test_every_help_reads_cleanly() -> None:
+    """No doubled brackets in a usage line (``[[MODEL]]``), no reST quotes, no cut-off summaries."""
+    paths = _command_paths()
+    assert len(paths) > 20
+    for path in paths:
+        code, out, _ = invoke(*path, "--help")
+        assert code == 0, path
+        assert "[[" not in out and "``" not in out, (path, out)
+        summaries = [line for line in out.splitlines() if not line.startswith("Usage:")]  # [ARGS]... is fine
+        assert not any(line.rstrip().endswith("...") for line in summaries), (path, out)

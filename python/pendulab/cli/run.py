@@ -200,14 +200,14 @@ def _json_number(value: float) -> float | None:
 def models(
     name: Annotated[
         str | None,
-        typer.Argument(metavar="[MODEL]", help="Show only this model.", show_default=False),
+        typer.Argument(metavar="MODEL", help="Show only this model.", show_default=False),
     ] = None,
     as_json: Annotated[
         bool, typer.Option("--json", help="Print the registry as JSON (a list of objects; no limit: null).")
     ] = False,
 ) -> None:
     """List the pendulum models (docs/theory.md §7) and their parameters: SI unit, default, allowed values
-    and meaning, as scenario files (keys of [pendulum]) and ``pendulab.Pendulum(model=..., **params)``
+    and meaning, as scenario files (keys of [pendulum]) and pendulab.Pendulum(model=..., **params)
     take them. Every model has length [m], mass [kg] and g [m/s^2]."""
     with _user_errors():
         table = model_table()
