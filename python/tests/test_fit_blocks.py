@@ -15,7 +15,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 import pendulab as pl
-from pendulab.fitting.blocks import scale_factor
+from pendulab.fitting.blocks import BlockCheck, scale_factor
 
 REAL = Path(__file__).resolve().parents[2] / "testdata" / "real"
 G = 9.81
@@ -60,6 +60,29 @@ def test_the_pdg_scale_factor() -> None:
     s = scale_factor(np.array([0.0, 10.0, 100.0, 5.0]), np.array([1.0, 1.0, 100.0, math.inf]))
     assert s == pytest.approx(math.sqrt(50.0))
     assert scale_factor(np.array([1.0]), np.array([1.0])) == 1.0
+
+
+def test_blocks_are_said_to_disagree_only_when_their_scatter_is_improbable() -> None:
+    """Four blocks 1.06x their error bars apart (χ² = 3.4 for 3 degrees of freedom, p = 0.34) agree:
+    the widening by S applies, but no finding blames something that changes along the record (a
+    wrong fixed length and a chance residual alarm both gave 'disagree' at S = 1.01-1.1). Blocks
+    5x apart are said."""
+    starts, units = [0.0, 5.0, 10.0, 15.0], {"damping": "1/s"}
+    err = [1e-4] * 4
+    close = BlockCheck(starts, {"damping": [0.030092, 0.029908, 0.030092, 0.029908]}, {"damping": err})
+    close.scale, close.units = (
+        {"damping": scale_factor(np.array(close.values["damping"]), np.array(err))},
+        units,
+    )
+    assert 1.0 < close.scale["damping"] < 1.2
+    assert close.findings() == []
+    apart = BlockCheck(starts, {"damping": [0.0305, 0.0300, 0.0295, 0.0290]}, {"damping": err})
+    apart.scale, apart.units = (
+        {"damping": scale_factor(np.array(apart.values["damping"]), np.array(err))},
+        units,
+    )
+    assert apart.scale["damping"] > 4.0
+    assert "disagree: damping = 0.0305, 0.03, 0.0295, 0.029 1/s" in apart.findings()[0]
 
 
 def test_recordings_of_one_pendulum_agree_when_the_model_lacks_a_spring() -> None:

@@ -22,7 +22,10 @@ them. The blocks measure that dependence directly:
   over the N blocks with σᵢ < 3√N σ̄ (σ̄ = (Σ 1/σᵢ²)^(−1/2)), as the PDG does for inconsistent
   measurements (R. L. Workman et al. (Particle Data Group), "Review of Particle Physics",
   Prog. Theor. Exp. Phys. 2022, 083C01, Introduction §5.2.2);
-- where S > 1 the parameter's error bar (and its rows of the covariance) are multiplied by S.
+- where S > 1 the parameter's error bar (and its rows of the covariance) are multiplied by S; the
+  finding that the blocks disagree is said only where their χ² is improbable for blocks that agree
+  (p < BLOCKS_ALARM), so that a misfit the blocks share (a wrong fixed length) is not blamed on
+  something that changes along the record.
 
 It runs only when the goodness of fit (goodness.py) has found a misfit — for a right model the blocks
 agree within their errors by construction, and scaling by a chance S > 1 would make honest bars
@@ -54,6 +57,9 @@ BLOCKS = 4
 MIN_PERIODS = 2.0
 #: Model runs a block's search may use.
 BLOCK_EVALUATIONS = 60
+#: The blocks are said to disagree only when their scatter is this improbable for blocks that agree
+#: (χ² of N − 1 degrees of freedom): 1.06x apart over 4 blocks (p = 0.3) is agreement.
+BLOCKS_ALARM = 0.05
 #: The models whose motion a block's own start fixes (no pivot path, hoist or other clock; the
 #: damped model's forcing is checked separately).
 AUTONOMOUS = ("ideal", "damped", "rotating")
@@ -73,11 +79,17 @@ class BlockCheck:
     units: dict[str, str] = field(default_factory=dict)
 
     def findings(self) -> list[str]:
-        """The plain-language finding for the parameters whose blocks disagree (none if none do)."""
+        """The plain-language finding for the parameters whose blocks disagree: a scatter improbable
+        for blocks that agree (p < BLOCKS_ALARM; none if none do). A chance S > 1 still widens."""
         widened = [n for n, s in self.scale.items() if s > 1.0]
-        if not widened:
+        apart = [
+            n
+            for n in widened
+            if disagreement_p(np.array(self.values[n]), np.array(self.stderr[n])) < BLOCKS_ALARM
+        ]
+        if not apart:
             return []
-        worst = max(widened, key=lambda n: self.scale[n])
+        worst = max(apart, key=lambda n: self.scale[n])
         shown = ", ".join(f"{v:.6g}" if math.isfinite(v) else "-" for v in self.values[worst])
         names = ", ".join(f"{n} ×{self.scale[n]:.3g}" for n in widened)
         return [
@@ -191,22 +203,37 @@ def _lag1(r: FloatArray, columns: dict[str, int], kinds: list[str]) -> float:
     return out
 
 
-def scale_factor(values: FloatArray, errors: FloatArray) -> float:
-    """The Particle Data Group's S = √(χ²/(N − 1)) of the estimates ``values`` ± ``errors`` (module
-    doc; those with an error ≥ 3√N σ̄ left out, at least 1; 1 with fewer than two usable)."""
+def _chi2(values: FloatArray, errors: FloatArray) -> tuple[float, int]:
+    """χ² of the estimates ``values`` ± ``errors`` about their weighted mean and their number N, over
+    those with an error < 3√N σ̄ (module doc; a value that determines nothing is left out too)."""
     ok = np.isfinite(values) & np.isfinite(errors) & (errors > 0.0)
     x, e = values[ok], errors[ok]
     if x.size < 2:
-        return 1.0
+        return 0.0, int(x.size)
     mean_err = 1.0 / math.sqrt(float(np.sum(1.0 / e**2)))
     keep = e < 3.0 * math.sqrt(x.size) * mean_err
     x, e = x[keep], e[keep]
     if x.size < 2:
-        return 1.0
+        return 0.0, int(x.size)
     w = 1.0 / e**2
     mean = float(np.sum(w * x) / np.sum(w))
-    chi2 = float(np.sum(w * (x - mean) ** 2))
-    return max(1.0, math.sqrt(chi2 / (x.size - 1)))
+    return float(np.sum(w * (x - mean) ** 2)), int(x.size)
+
+
+def scale_factor(values: FloatArray, errors: FloatArray) -> float:
+    """The Particle Data Group's S = √(χ²/(N − 1)) of the estimates ``values`` ± ``errors`` (module
+    doc; those with an error ≥ 3√N σ̄ left out, at least 1; 1 with fewer than two usable)."""
+    chi2, n = _chi2(values, errors)
+    return max(1.0, math.sqrt(chi2 / (n - 1))) if n >= 2 else 1.0
+
+
+def disagreement_p(values: FloatArray, errors: FloatArray) -> float:
+    """The probability of a scatter at least as large among estimates that agree: the χ²(N − 1) tail
+    of :func:`scale_factor`'s χ² (1 with fewer than two usable)."""
+    chi2, n = _chi2(values, errors)
+    from scipy import stats
+
+    return float(stats.chi2.sf(chi2, n - 1)) if n >= 2 else 1.0
 
 
 def check_blocks(
