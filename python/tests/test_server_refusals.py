@@ -1,11 +1,13 @@
 """What a misbehaving pupil's refused or excess traffic costs the lab server (docs/web.md, "A pupil in
 the room"; issue 30): counted as work per refusal, not timed. A connection beyond its client's limit is
-cut before uvicorn sets anything up for it; a ping flood is cut; the WebSocket frames are not
-compressed (deflate took about a tenth of the event loop for float64 frames). Clients are told apart
-by their address: a client binds 127.0.0.N (all of 127/8 is this machine)."""
+cut before uvicorn sets anything up for it; a ping flood is cut; a command flood is read no faster
+than the ticks take it; the WebSocket frames are not compressed (deflate took about a tenth of the
+event loop for float64 frames). Clients are told apart by their address: a client binds 127.0.0.N
+(all of 127/8 is this machine)."""
 
 from __future__ import annotations
 
+import asyncio
 import socket
 import time
 from collections.abc import Iterator
@@ -16,9 +18,12 @@ from uvicorn.protocols.http.h11_impl import H11Protocol
 from websockets.sync.client import connect
 from ws_session import live_lab
 
-from pendulab.server import create_app
+from pendulab.server import create_app, live_socket
 from pendulab.server.hygiene import PING_BURST, PING_RATE
 from pendulab.server.room import MAX_CONNECTIONS_PER_CLIENT
+from pendulab.server.schema import TICK_HZ
+from pendulab.server.session import Session, resolve_scenario
+from pendulab.server.ticker import MAX_PENDING, Seat
 
 
 @pytest.fixture(scope="module")
@@ -93,3 +98,71 @@ def test_frames_are_not_compressed(port: int) -> None:
         assert ws.protocol.extensions == []
         assert ws.response is not None
         assert "permessage-deflate" not in ws.response.headers.get("Sec-WebSocket-Extensions", "")
+
+
+class _Flood:
+    """A WebSocket whose client sends ``pause`` without end; counts the messages the handler read."""
+
+    def __init__(self) -> None:
+        self.read = 0
+
+    async def receive(self) -> dict[str, Any]:
+        self.read += 1
+        if self.read > 50 * MAX_PENDING:  # read on and on (as before): stop the test's loop
+            raise RuntimeError("read past a full inbox")
+        return {"type": "websocket.receive", "text": '{"type": "pause"}'}
+
+
+def test_a_command_flood_is_not_read_past_a_full_inbox_until_the_next_tick() -> None:
+    """A client sending commands as fast as it can had every message read, parsed and dropped by the
+    event loop (one client's flood of ``pause`` took the other pages' answers from 10 ms to 0.5-2.5 s
+    and their frames to 0.4-0.6 s gaps). Now, once one is dropped, the handler reads nothing more
+    until the seat's next tick (no ticker here: the ticks are made by hand)."""
+
+    async def run() -> None:
+        seat, ws = Seat(Session(resolve_scenario("rosette"))), _Flood()
+        reader = asyncio.create_task(live_socket._receive(ws, seat))  # type: ignore[arg-type]
+        for _ in range(20):
+            await asyncio.sleep(0)
+        assert (ws.read, len(seat.inbox), seat.dropped) == (MAX_PENDING + 1, MAX_PENDING, 1)
+        for _ in range(3):  # a tick takes some commands and counts the dropped one: read on to the next
+            taken = len(seat.inbox) - MAX_PENDING // 2
+            with seat.lock:
+                for _ in range(taken):
+                    seat.inbox.popleft()
+                seat.dropped = 0
+            seat._deliver([])
+            before = ws.read
+            for _ in range(20):
+                await asyncio.sleep(0)
+            assert ws.read - before == taken + 1 and seat.dropped == 1
+        reader.cancel()
+
+    asyncio.run(run())
+
+
+def test_a_flooding_client_has_its_commands_read_no_faster_than_the_ticks(
+    port: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """End to end, counted: of 2000 commands sent at once at most MAX_PENDING + 1 are read per tick
+    (the rest wait in the client's socket); before, all were read within a few tens of ms (4000 in 6
+    ticks)."""
+    parsed: list[int] = []
+    parse = live_socket.parse_command
+
+    def counted(text: str | bytes) -> Any:
+        parsed.append(1)
+        return parse(text)
+
+    monkeypatch.setattr(live_socket, "parse_command", counted)
+    n = 2000
+    with connect(f"ws://127.0.0.1:{port}/ws", open_timeout=10, max_queue=None) as ws:
+        ws.recv(10)  # the status: the session is seated
+        start = time.monotonic()
+        for _ in range(n):
+            ws.send('{"type": "pause"}')
+        deadline = start + 0.3
+        while len(parsed) < n and time.monotonic() < deadline:
+            time.sleep(0.01)
+        ticks = TICK_HZ * (time.monotonic() - start) + 2  # ticks since the first send, at most
+        assert len(parsed) <= (MAX_PENDING + 1) * (ticks + 1), f"{len(parsed)} read in {ticks:.0f} ticks"

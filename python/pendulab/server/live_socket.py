@@ -5,7 +5,8 @@ session, then one :class:`~.session.Session` served until the client goes away.
 its client's ``max_sessions_per_client`` (key ``device_full``): an ``error`` notice, then close code
 1013 (try again later). :func:`run_session` serves an admitted session with two tasks: one reads and
 validates commands into the seat's bounded inbox (a client that floods is throttled: beyond
-:data:`.ticker.MAX_PENDING` waiting commands the rest are dropped with an error notice), the other
+:data:`.ticker.MAX_PENDING` waiting commands the next is dropped with an error notice and nothing more
+is read from the client until the seat's next tick, :meth:`.ticker.Seat.throttle`), the other
 sends what the seat's outbox receives. The room's ticker (:mod:`.ticker`) ticks every seat at
 :data:`~.schema.TICK_HZ` in worker threads (:mod:`.tick`), which apply the commands and advance the
 stepper to wall clock × time scale within the session's share of the room's budget [s]. Only the
@@ -92,6 +93,7 @@ async def _receive(ws: WebSocket, seat: Seat) -> None:
         except CommandError as e:
             item = e
         seat.put(item)
+        await seat.throttle()  # a flood: nothing more is read from this client until its next tick
 
 
 async def _send_all(ws: WebSocket, messages: list[Message]) -> None:

@@ -38,7 +38,8 @@ from .tick import Carry, Message, tick_messages
 log = logging.getLogger("pendulab.server")
 
 MAX_PENDING = 64
-"""Most commands waiting for the next tick; more are dropped (throttling)."""
+"""Most commands waiting for the next tick; more are dropped (throttling), and after a dropped one
+nothing more is read from the client until its next tick (:meth:`Seat.throttle`)."""
 
 MAX_PER_TICK = 32
 """Most commands applied per tick."""
@@ -58,7 +59,7 @@ GROUP_SIZE = 8
 class Seat:
     """One session in the room: its inbox (parsed commands or errors), the commands dropped since the
     last tick, its :class:`~.tick.Carry`, its share [s] of the room's budget per tick, and the outbox
-    its handler sends from."""
+    its handler sends from; ``ticked`` is set in the event loop after each of its ticks."""
 
     session: Session
     share: Callable[[], float] = lambda: TICK_BUDGET
@@ -67,18 +68,30 @@ class Seat:
     carry: Carry = field(default_factory=Carry)
     outbox: deque[list[Message]] = field(default_factory=deque)
     ready: asyncio.Event = field(default_factory=asyncio.Event)
+    ticked: asyncio.Event = field(default_factory=asyncio.Event)
     last: float = field(default_factory=time.monotonic)
     failed: BaseException | None = None
     lock: threading.Lock = field(default_factory=threading.Lock)
 
     def put(self, item: Any) -> None:
         """A command (or a :class:`~.protocol.CommandError`) from the client; dropped beyond
-        :data:`MAX_PENDING` waiting."""
+        :data:`MAX_PENDING` waiting (then the handler waits in :meth:`throttle`)."""
         with self.lock:
             if len(self.inbox) >= MAX_PENDING:
                 self.dropped += 1
             else:
                 self.inbox.append(item)
+
+    async def throttle(self) -> None:
+        """In the event loop, after :meth:`put`: while messages have been dropped since the last tick,
+        waits for the seat's next tick. The handler reads nothing meanwhile, so a client that floods
+        has at most :data:`MAX_PENDING` + 1 of its messages parsed per tick; the rest wait in its
+        socket (uvicorn stops reading from a socket whose messages the handler does not take; one
+        read's worth at most waits in its queue) instead of being read, parsed and dropped as fast
+        as it sends them."""
+        while self.dropped:
+            self.ticked.clear()
+            await self.ticked.wait()
 
     def _work(self, now: float, tick_hz: float) -> Callable[[], list[Message]] | None:
         """This tick's work (run in a worker thread), or None when the client is not reading."""
@@ -116,6 +129,7 @@ class Seat:
         elif messages:
             self.outbox.append(messages)
         self.ready.set()
+        self.ticked.set()
 
 
 def _run_group(works: list[tuple[Seat, Callable[[], list[Message]]]]) -> list[Any]:
