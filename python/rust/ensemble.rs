@@ -108,7 +108,8 @@ impl EnsembleRun {
     /// Starts `n_steps` steps of the options' `dt` [s] of the `spec`'s models from x, v (N, 3) [m,
     /// m/s]; saves every `save_every` steps of the options (None: the final state only); `summary`:
     /// extremes of z, E/m and J₃/m per trajectory; `settle_angle` [rad]: track each trajectory's
-    /// settle time; the options' `arithmetic` ("unfused" or "fused") as the single-trajectory RATTLE.
+    /// settle time; the options' `method` ("rattle", or its compositions "rattle4", "rattle6",
+    /// "rattle8") and `arithmetic` ("unfused" or "fused") as the single-trajectory method.
     #[new]
     #[pyo3(signature = (spec, x, v, options, n_steps, summary=true, settle_angle=None))]
     #[allow(clippy::too_many_arguments)]
@@ -135,6 +136,7 @@ impl EnsembleRun {
             save,
             with_summary: summary,
             arithmetic: options.arithmetic,
+            method: options.solve.method,
             ..RattleSettings::new(&[], &[], dt, n_steps)
         };
         let settings = RattleSettings { length: &length, g: &g, damping: &damping, ..rest };

@@ -144,6 +144,12 @@ pub enum Error {
         /// Method name.
         method: &'static str,
     },
+    /// A method the RATTLE ensemble does not run.
+    #[error("the RATTLE ensemble runs method 'rattle' or its compositions 'rattle4', 'rattle6', 'rattle8', not '{method}' (the adaptive ensemble runs 'dop853')")]
+    UnsupportedEnsembleMethod {
+        /// Method name.
+        method: &'static str,
+    },
     /// A method that cannot integrate this model.
     #[error("method '{method}' cannot integrate the '{model}' model (it supports only the ideal pendulum and the hoisted rope below a fixed pivot); use 'rattle' or 'dop853'")]
     UnsupportedModel {

@@ -43,6 +43,7 @@ use crate::state::State;
 use glam::DVec3;
 
 use super::block_state::{Block, Track};
+use super::stages::Stages;
 use super::tile::Tile;
 use super::tile_params::{Damping, Lengths, PerLane, Shared, TileParams};
 use super::{Lanes, LANES};
@@ -82,23 +83,23 @@ impl Block {
     /// of `isa::fastest` (one function per width, form and level): the loops of one form are
     /// compiled and register-allocated alone, not as one arm of a function holding all of them.
     #[inline(always)]
-    pub fn steps<A: MulAdd>(&mut self, chunk: u64, h: f64, first: u64, track: Track) {
+    pub fn steps<A: MulAdd>(&mut self, chunk: u64, stages: &Stages, first: u64, track: Track) {
         let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
         match (tile_lanes(isa::current(), arithmetic), self.sharing()) {
-            (24, Sharing::All) => self.steps_at::<A, 24, Shared<24>>(chunk, h, first, track),
-            (24, Sharing::AllButLengths) => self.steps_at::<A, 24, Lengths<24>>(chunk, h, first, track),
-            (24, Sharing::AllButDamping) => self.steps_at::<A, 24, Damping<24>>(chunk, h, first, track),
+            (24, Sharing::All) => self.steps_at::<A, 24, Shared<24>>(chunk, stages, first, track),
+            (24, Sharing::AllButLengths) => self.steps_at::<A, 24, Lengths<24>>(chunk, stages, first, track),
+            (24, Sharing::AllButDamping) => self.steps_at::<A, 24, Damping<24>>(chunk, stages, first, track),
             // every parameter a row: its 16 rows of state and parameters spill at 24 lanes (module doc)
-            (24, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, h, first, track),
-            (16, Sharing::All) => self.steps_at::<A, 16, Shared<16>>(chunk, h, first, track),
-            (16, Sharing::AllButLengths) => self.steps_at::<A, 16, Lengths<16>>(chunk, h, first, track),
-            (16, Sharing::AllButDamping) => self.steps_at::<A, 16, Damping<16>>(chunk, h, first, track),
-            (16, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, h, first, track),
-            (8, Sharing::All) => self.steps_at::<A, 8, Shared<8>>(chunk, h, first, track),
-            (8, Sharing::AllButLengths) => self.steps_at::<A, 8, Lengths<8>>(chunk, h, first, track),
-            (8, _) => self.steps_at::<A, 8, PerLane<8>>(chunk, h, first, track),
-            (_, Sharing::All) => self.steps_at::<A, 4, Shared<4>>(chunk, h, first, track),
-            (_, _) => self.steps_at::<A, 4, PerLane<4>>(chunk, h, first, track),
+            (24, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, stages, first, track),
+            (16, Sharing::All) => self.steps_at::<A, 16, Shared<16>>(chunk, stages, first, track),
+            (16, Sharing::AllButLengths) => self.steps_at::<A, 16, Lengths<16>>(chunk, stages, first, track),
+            (16, Sharing::AllButDamping) => self.steps_at::<A, 16, Damping<16>>(chunk, stages, first, track),
+            (16, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, stages, first, track),
+            (8, Sharing::All) => self.steps_at::<A, 8, Shared<8>>(chunk, stages, first, track),
+            (8, Sharing::AllButLengths) => self.steps_at::<A, 8, Lengths<8>>(chunk, stages, first, track),
+            (8, _) => self.steps_at::<A, 8, PerLane<8>>(chunk, stages, first, track),
+            (_, Sharing::All) => self.steps_at::<A, 4, Shared<4>>(chunk, stages, first, track),
+            (_, _) => self.steps_at::<A, 4, PerLane<4>>(chunk, stages, first, track),
         }
     }
 
@@ -108,13 +109,13 @@ impl Block {
     fn steps_at<A: MulAdd, const T: usize, P: TileParams>(
         &mut self,
         chunk: u64,
-        h: f64,
+        stages: &Stages,
         first: u64,
         track: Track,
     ) {
         isa::fastest(
             #[inline(always)]
-            || self.steps_tiled::<A, T, P>(chunk, h, first, track),
+            || self.steps_tiled::<A, T, P>(chunk, stages, first, track),
         )
     }
 
@@ -124,7 +125,7 @@ impl Block {
     fn sharing(&self) -> Sharing {
         let same = |a: &Lanes| a.iter().all(|&y| y.to_bits() == a[0].to_bits());
         let lengths = same(&self.l2) && same(&self.inv_l2);
-        match (lengths, same(&self.g), same(&self.decay_half)) {
+        match (lengths, same(&self.g), self.decay_half.iter().all(same)) {
             (true, true, true) => Sharing::All,
             (false, true, true) => Sharing::AllButLengths,
             (true, true, false) => Sharing::AllButDamping,
@@ -132,27 +133,52 @@ impl Block {
         }
     }
 
-    /// `Block::steps` with tiles of `T` lanes and the parameters held as `P`.
+    /// `Block::steps` with tiles of `T` lanes and the parameters held as `P`: each step one RATTLE
+    /// step of dt, or the composition's sub-steps h_k with their damping factors (`stages.rs`).
     #[inline(always)]
     fn steps_tiled<A: MulAdd, const T: usize, P: TileParams>(
         &mut self,
         chunk: u64,
-        h: f64,
+        stages: &Stages,
         first: u64,
         track: Track,
     ) {
         for o in (0..LANES).step_by(T) {
             let mut tile = Tile::<T, P>::load(self, o);
-            for j in 1..=chunk {
-                tile.step::<A>(h, self.damped);
-                if track.summary {
-                    tile.update_summary(&mut self.summary, &mut self.crossings, &mut self.above, o);
+            if stages.len() == 1 {
+                let h = stages.h(0);
+                for j in 1..=chunk {
+                    tile.step::<A>(h, self.damped);
+                    self.track_tile(&tile, track, o, first + j);
                 }
-                if track.settle {
-                    tile.track_settle(&self.down, self.cos_settle, &mut self.last_out, o, (first + j) as f64);
+            } else {
+                for j in 1..=chunk {
+                    for k in 0..stages.len() {
+                        tile.set_stage(self, o, stages.distinct(k));
+                        tile.step::<A>(stages.h(k), self.damped);
+                    }
+                    self.track_tile(&tile, track, o, first + j);
                 }
             }
             tile.store(self, o);
+        }
+    }
+
+    /// After step number `step` of the run: the tile's lanes folded into the summary and the settle
+    /// records, as `track` asks.
+    #[inline(always)]
+    fn track_tile<const T: usize, P: TileParams>(
+        &mut self,
+        tile: &Tile<T, P>,
+        track: Track,
+        o: usize,
+        step: u64,
+    ) {
+        if track.summary {
+            tile.update_summary(&mut self.summary, &mut self.crossings, &mut self.above, o);
+        }
+        if track.settle {
+            tile.track_settle(&self.down, self.cos_settle, &mut self.last_out, o, step as f64);
         }
     }
 

@@ -3,6 +3,7 @@
 //! step loop that advances it is `block.rs`, the tile that holds a part of it in registers
 //! `tile.rs`). SI units: \[m\], [m/s], [1/s], [m/s²].
 
+use super::stages::DISTINCT;
 use super::Lanes;
 
 /// One block: positions, velocities, Kahan compensations and parameters of LANES trajectories.
@@ -16,8 +17,9 @@ pub(super) struct Block {
     pub l2: Lanes,
     pub inv_l2: Lanes,
     pub g: Lanes,
-    /// e^{−c dt/2} per lane (1 without damping) and whether any lane is damped.
-    pub decay_half: Lanes,
+    /// e^{−c h_k/2} per lane (1 without damping), one row per distinct sub-step size h_k of a step
+    /// (`stages.rs`; row 0 alone for RATTLE, h = dt), and whether any lane is damped.
+    pub decay_half: [Lanes; DISTINCT],
     pub damped: bool,
     /// −sign(g)/l per lane (cos sway = z · down) and cos of the settle threshold (all lanes).
     pub down: Lanes,
@@ -46,7 +48,7 @@ impl Block {
             l2: z,
             inv_l2: z,
             g: z,
-            decay_half: z,
+            decay_half: [z; DISTINCT],
             damped: false,
             down: z,
             cos_settle: 0.0,

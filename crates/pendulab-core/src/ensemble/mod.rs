@@ -25,6 +25,7 @@
 
 use crate::error::{Error, Result};
 use crate::integrate::rattle_kernel::Arithmetic;
+use crate::integrate::Method;
 use crate::state::State;
 use glam::DVec3;
 use std::sync::atomic::{AtomicBool, AtomicU64};
@@ -46,6 +47,7 @@ mod block;
 mod block_state;
 mod output;
 mod plan;
+mod stages;
 mod tile;
 mod tile_params;
 pub use block::{tile_lanes, TILE};
@@ -142,6 +144,9 @@ pub struct RattleSettings<'a> {
     /// How the steps round their multiply-adds (default unfused): each trajectory gets the numbers of
     /// the single-trajectory RATTLE with the same [`Arithmetic`] (`Stepper::set_arithmetic`).
     pub arithmetic: Arithmetic,
+    /// [`Method::Rattle`] (default) or its symmetric compositions [`Method::Rattle4`], `Rattle6`,
+    /// `Rattle8` (`stages.rs`): each trajectory gets the numbers of the single-trajectory method.
+    pub method: Method,
 }
 
 impl<'a> RattleSettings<'a> {
@@ -158,6 +163,7 @@ impl<'a> RattleSettings<'a> {
             save: EnsembleSave::Final,
             with_summary: false,
             arithmetic: Arithmetic::Unfused,
+            method: Method::Rattle,
         }
     }
 }
@@ -190,7 +196,7 @@ pub fn run_checked(
     let (n, ns) = (starts.len(), sample_count(n_steps, plan.every));
     let mut states = vec![State { x: DVec3::NAN, v: DVec3::NAN }; n * ns];
     let run = BlockRun {
-        dt,
+        stages: plan.stages,
         n_steps,
         every: plan.every,
         with_summary,
@@ -203,7 +209,7 @@ pub fn run_checked(
     // `states`: both cores work from the first block on, and nothing is copied afterwards; a block
     // hands back only what the result needs of it (its summaries, its settle records)
     let work = |blk: &mut Box<Block>, (b, out): (usize, &mut [State])| {
-        plan.fill(blk, b, starts, (length, g), dt, with_summary);
+        plan.fill(blk, b, starts, (length, g), with_summary);
         let (steps, cancelled) = run.block(blk, out, ns);
         let summary = if with_summary { summaries(blk) } else { Vec::new() };
         let last_out = if plan.track { blk.last_out[..blk.len].to_vec() } else { Vec::new() };
@@ -232,7 +238,13 @@ pub fn run_checked(
         states.truncate(n * nt);
     }
     if (0..n).any(|k| !states[k * nt + nt - 1].is_finite()) {
-        return Err(Error::Diverged { t: steps as f64 * dt, method: "rattle (ensemble)", dt });
+        let method = match settings.method {
+            Method::Rattle4 => "rattle4 (ensemble)",
+            Method::Rattle6 => "rattle6 (ensemble)",
+            Method::Rattle8 => "rattle8 (ensemble)",
+            _ => "rattle (ensemble)",
+        };
+        return Err(Error::Diverged { t: steps as f64 * dt, method, dt });
     }
     let summary = with_summary.then(|| outputs.iter().flat_map(|o| o.summary.iter().copied()).collect());
     let settle_time = plan.track.then(|| {

@@ -4,6 +4,7 @@
 //! counter and cancel checks (the steps themselves: `block.rs`). SI units: \[m\], [m/s], \[s\], [1/s].
 
 use super::block_state::{Block, Track};
+use super::stages::{Stages, DISTINCT};
 use super::{Checked, EnsembleSave, RattleSettings, CHECK_EVERY, LANES};
 use crate::error::{Error, Result};
 use crate::integrate::rattle_kernel::{Arithmetic, Fused, Unfused};
@@ -20,12 +21,13 @@ fn pick(a: &[f64], k: usize) -> f64 {
     }
 }
 
-/// e^{−c dt/2} for damping c [1/s] and step dt [s]: exactly 1 (e^{−0}) for c = 0, no exp called.
-fn decay_half(c: f64, dt: f64) -> f64 {
+/// e^{−c h/2} for damping c [1/s] and a (sub-)step h \[s\] (< 0 for a composition's backward
+/// sub-step), as the `damped` model's flow for h/2: exactly 1 (e^{−0}) for c = 0, no exp called.
+fn decay_half(c: f64, h: f64) -> f64 {
     if c == 0.0 {
         1.0
     } else {
-        (-c * (0.5 * dt)).exp()
+        (-c * (0.5 * h)).exp()
     }
 }
 
@@ -66,10 +68,12 @@ fn check_starts(starts: &[State], check_from: impl Fn(usize, &[State]) -> Result
 /// Starts per part of the check (about 10 µs of work each).
 const CHECK_PART: usize = 512;
 
-/// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the settle
-/// threshold (cos of the angle; −∞ without tracking) and the save interval in steps.
+/// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the sub-steps
+/// of a step, the settle threshold (cos of the angle; −∞ without tracking) and the save interval in
+/// steps.
 pub(super) struct Plan<'a> {
     pub(super) damping: &'a [f64],
+    pub(super) stages: Stages,
     pub(super) cos_settle: f64,
     pub(super) track: bool,
     pub(super) every: u64,
@@ -93,7 +97,8 @@ impl<'a> Plan<'a> {
             });
         }
         let track = settings.settle_angle.is_some();
-        Ok(Self { damping, cos_settle: checked.cos_settle, track, every: checked.every })
+        let stages = Stages::of(settings.method, settings.dt)?;
+        Ok(Self { damping, stages, cos_settle: checked.cos_settle, track, every: checked.every })
     }
 
     /// Checks everything before any work: dt > 0, parameter arrays of length 1 or N, every start on
@@ -102,6 +107,7 @@ impl<'a> Plan<'a> {
         let &RattleSettings { length, g, dt, n_steps, save, .. } = settings;
         let n = starts.len();
         crate::error::require_positive("dt", dt, "the step dt must be a finite number > 0 s")?;
+        let stages = Stages::of(settings.method, dt)?;
         let damping = damping_of(settings);
         if let Some((name, size)) = missized(settings, damping, n) {
             return Err(Error::InvalidParameter {
@@ -149,7 +155,7 @@ impl<'a> Plan<'a> {
             }
             EnsembleSave::Every(e) => e,
         };
-        Ok(Self { damping, cos_settle, track: settings.settle_angle.is_some(), every })
+        Ok(Self { damping, stages, cos_settle, track: settings.settle_angle.is_some(), every })
     }
 
     /// Fills `blk` with block `b`: trajectories b·LANES … (the lanes past the last trajectory
@@ -162,14 +168,17 @@ impl<'a> Plan<'a> {
         b: usize,
         starts: &[State],
         (length, g): (&[f64], &[f64]),
-        dt: f64,
         summary: bool,
     ) {
         let n = starts.len();
         let damping = self.damping;
         let len = (n - b * LANES).min(LANES);
-        // one exp for all lanes when they share c
-        let shared_decay = (damping.len() == 1).then(|| decay_half(damping[0], dt));
+        // per distinct sub-step h_d: e^{−c h_d/2}, one exp for all lanes when they share c; the rows
+        // no sub-step uses hold 1
+        let distinct = self.stages.distinct_len();
+        let shared_decay: [Option<f64>; DISTINCT] = std::array::from_fn(|d| {
+            (damping.len() == 1 && d < distinct).then(|| decay_half(damping[0], self.stages.h(d)))
+        });
         for i in 0..LANES {
             let k = (b * LANES + i).min(n - 1);
             let s = &starts[k];
@@ -183,8 +192,14 @@ impl<'a> Plan<'a> {
             blk.l2[i] = l * l;
             blk.inv_l2[i] = 1.0 / (l * l);
             blk.g[i] = gk;
-            // e^{−c dt/2}; exactly 1 (e^{−0}) without damping, no exp called
-            blk.decay_half[i] = shared_decay.unwrap_or_else(|| decay_half(damping[k], dt));
+            // e^{−c h_d/2}; exactly 1 (e^{−0}) without damping, no exp called
+            for (d, row) in blk.decay_half.iter_mut().enumerate() {
+                row[i] = match shared_decay[d] {
+                    Some(f) => f,
+                    None if d < distinct => decay_half(damping[k], self.stages.h(d)),
+                    None => 1.0,
+                };
+            }
             blk.down[i] = -gk.signum() / l;
             blk.last_out[i] = -1.0;
             for (r, row) in blk.summary.iter_mut().enumerate() {
@@ -205,11 +220,12 @@ impl<'a> Plan<'a> {
     }
 }
 
-/// How every block is run: `n_steps` steps of `dt` [s], saving every `every`-th, with the summary
+/// How every block is run: `n_steps` steps (each of the sub-steps `stages`, of dt \[s\] in all),
+/// saving every `every`-th, with the summary
 /// and settle tracking when asked; progress counted and the cancel flag read every [`CHECK_EVERY`]
 /// steps.
 pub(super) struct BlockRun<'a> {
-    pub(super) dt: f64,
+    pub(super) stages: Stages,
     pub(super) n_steps: u64,
     pub(super) every: u64,
     pub(super) with_summary: bool,
@@ -239,8 +255,8 @@ impl BlockRun<'_> {
             let chunk = CHECK_EVERY.min(n_steps - done).min(every - done % every);
             // the lane loops compiled for the CPU's widest vectors (AVX-512, AVX2 + FMA; crate::isa)
             match self.arithmetic {
-                Arithmetic::Unfused => blk.steps::<Unfused>(chunk, self.dt, done, track),
-                Arithmetic::Fused => blk.steps::<Fused>(chunk, self.dt, done, track),
+                Arithmetic::Unfused => blk.steps::<Unfused>(chunk, &self.stages, done, track),
+                Arithmetic::Fused => blk.steps::<Fused>(chunk, &self.stages, done, track),
             }
             done += chunk;
             self.progress.fetch_add(chunk * blk.len as u64, Ordering::Relaxed);

@@ -107,6 +107,12 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         }
     }
 
+    /// The damping factors of the block's row `d` for the sub-steps that follow (`stages.rs`).
+    #[inline(always)]
+    pub(super) fn set_stage(&mut self, b: &Block, o: usize, d: usize) {
+        self.params.set_decay_row(b, o, d);
+    }
+
     /// One step of every lane (identical arithmetic to `Rattle::advance` for f = −g e₃, with the
     /// damping flow on either side when the block has a damped lane).
     #[inline(always)]
@@ -218,9 +224,10 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
     fn rattle<A: MulAdd>(&mut self, h: f64) {
         let half = 0.5 * h;
-        // (0, 0, −g)·(h/2) with the zeros written as such: 0·(h/2) = +0 exactly for the dt > 0
-        // the run checked, so the lane gets the single path's bits without two multiplications
-        let kick = |t: &Self, i: usize| DVec3::new(0.0, 0.0, -t.params.g(i) * half);
+        // (0, 0, −g)·(h/2) as the single path computes it: 0·(h/2) is +0 for h > 0 and −0 for a
+        // composition's backward sub-step (once per step, not per lane)
+        let zero = 0.0 * half;
+        let kick = |t: &Self, i: usize| DVec3::new(zero, zero, -t.params.g(i) * half);
         let mut quads = Quads::new();
         let mu = self.multipliers::<A>(h, &mut quads, |t, i| {
             let (x0, v0) = t.lane(i);

@@ -1,4 +1,5 @@
-//! A tile's parameters l² \[m²\], 1/l² [1/m²], g [m/s²] and e^{−c dt/2} (`tile.rs`), each held as a
+//! A tile's parameters l² \[m²\], 1/l² [1/m²], g [m/s²] and e^{−c h/2} (`tile.rs`; h = dt, or the
+//! sub-step of a composition: `stages.rs`), each held as a
 //! row of `T` values (it differs from lane to lane) or as one number (every lane of the block has
 //! the same one, bit for bit): [`Params`] over a [`Lane`] per parameter. The forms the tiles take
 //! are [`Shared`] (one pendulum, many starts: the usual ensemble), [`Lengths`] (lengths per
@@ -62,8 +63,10 @@ pub(super) trait TileParams: Copy {
     /// Whether the fused step goes in two halves (module doc of `tile.rs`): true when the parameters
     /// take few registers (at most two rows).
     const TWO_HALVES: bool;
-    /// Lanes o…o + T of the block's parameters.
+    /// Lanes o…o + T of the block's parameters (the damping factors of the first sub-step size).
     fn load(b: &Block, o: usize) -> Self;
+    /// Takes the damping factors of the block's row `d` (sub-step sizes: `stages.rs`).
+    fn set_decay_row(&mut self, b: &Block, o: usize, d: usize);
     fn l2(&self, i: usize) -> f64;
     fn inv_l2(&self, i: usize) -> f64;
     fn g(&self, i: usize) -> f64;
@@ -87,8 +90,12 @@ impl<const T: usize, L: Lane<T>, G: Lane<T>, D: Lane<T>> TileParams for Params<T
             l2: L::load(&b.l2, o),
             inv_l2: L::load(&b.inv_l2, o),
             g: G::load(&b.g, o),
-            decay_half: D::load(&b.decay_half, o),
+            decay_half: D::load(&b.decay_half[0], o),
         }
+    }
+    #[inline(always)]
+    fn set_decay_row(&mut self, b: &Block, o: usize, d: usize) {
+        self.decay_half = D::load(&b.decay_half[d], o);
     }
     #[inline(always)]
     fn l2(&self, i: usize) -> f64 {
