@@ -1,6 +1,7 @@
 //! The instruction-set levels of `pendulab_core::isa` give the same numbers bit for bit: every
 //! method through the stepper (loop and single steps, DOP853's dense output), the ensemble kernels
-//! (RATTLE with damping and a summary, both arithmetics; DOP853 vectorised across trajectories), the string stepper,
+//! (RATTLE and its order-4 composition with damping and a summary, both arithmetics; DOP853 vectorised
+//! across trajectories), the string stepper,
 //! and the exact solution of every kind (single states and batches, the parallel path included),
 //! once at the best level of this CPU, once restricted to the baseline (the plain fallback an
 //! older CPU runs) and, on a CPU with AVX-512, once capped at x86-64-v3 (`isa::set_max_level`: what
@@ -68,6 +69,9 @@ fn everything() -> Vec<u64> {
             out.extend([s.z.0, s.z.1, s.energy_per_mass.0, s.energy_per_mass.1].map(f64::to_bits));
         }
         out.extend(res.settle_time.unwrap().into_iter().map(f64::to_bits));
+        // a composition's sub-steps (forward and backward, their own damping factors) in the same tiles
+        let set4 = RattleSettings { arithmetic, method: Method::Rattle4, n_steps: 300, ..set };
+        run(&starts, &set4, &p, &c).unwrap().states.iter().for_each(|s| push(&mut out, s));
     }
     // the DOP853 ensemble, vectorised across trajectories (ensemble/adaptive_lanes.rs)
     let damped = AnyModel::build("damped", params, &[("damping", 0.2), ("drag", 0.1)]).unwrap();

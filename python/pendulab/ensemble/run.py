@@ -1,17 +1,17 @@
-"""Many trajectories at once: ``simulate_ensemble`` on the core's ensemble kernel (RATTLE on blocks
-of 48 trajectories, vectorised, all cores, or its symmetric compositions of order 4, 6 and 8,
+"""Many trajectories at once: ``simulate_ensemble`` on the core's ensemble kernel (RATTLE on blocks of
+48 trajectories, vectorised, all cores, or its symmetric compositions of order 4, 6 and 8,
 docs/theory.md T-8.2). Every trajectory gets exactly the numbers of ``simulate(..., method=...)``
-with the same method ("rattle", "rattle4", "rattle6", "rattle8") and dt. Ideal pendulum, optionally with linear damping
-c [1/s] (force −m c v; the ``damped`` model without drag or forcing, T-7.1); length l [m], gravity
-g [m/s²] and damping may differ per trajectory. With ``settle_angle`` [rad] each trajectory's
-settle time is tracked: the time after which its sway from the stable equilibrium (−sign(g) e₃)
-stays within the angle (to one step dt; 0 if never outside, +inf if still outside at the end).
-Memory is bounded by what is saved (final states, every n-th step, a summary), never by
+with the same method ("rattle", "rattle4", "rattle6", "rattle8") and dt. Ideal pendulum, optionally
+with linear damping c [1/s] (force −m c v; the ``damped`` model without drag or forcing, T-7.1);
+length l [m], gravity g [m/s²] and damping may differ per trajectory. With ``settle_angle`` [rad]
+each trajectory's settle time is tracked: the time after which its sway from the stable equilibrium
+(−sign(g) e₃) stays within the angle (to one step dt; 0 if never outside, +inf if still outside at
+the end). Memory is bounded by what is saved (final states, every n-th step, a summary), never by
 trajectories × steps. Start rows with NaN or inf are reported (``invalid_rows``, a warning) and get
 NaN results; the others run. A tqdm bar shows progress for long runs; Ctrl-C stops cleanly within
-1024 steps and returns the samples that every trajectory reached (``EnsembleResult.interrupted``): with
-``save_every`` the saved samples up to the stop, with the final states only just the starts (t = 0),
-since the blocks of trajectories stop at different steps and the result keeps one time axis.
+1024 steps and returns the samples that every trajectory reached (``EnsembleResult.interrupted``):
+with ``save_every`` the saved samples up to the stop, with the final states only just the starts (t
+= 0), since the blocks of trajectories stop at different steps and the result keeps one time axis.
 """
 
 from __future__ import annotations
@@ -167,7 +167,8 @@ def simulate_ensemble(
         if save_every is not None or summary is not None:
             raise InvalidInputError("give save=pl.Save... or save_every/summary, not both")
         save_every, summary = save.every_n, save.with_summary
-    plan = _plan(pendulum, states, (t_end, dt, method), save_every, summary, (length, g, damping), settle_angle)
+    run = (t_end, dt, method)
+    plan = _plan(pendulum, states, run, save_every, summary, (length, g, damping), settle_angle)
     out, interrupted = _run_kernel(plan, progress, arithmetic)
     return _result(pendulum, plan, out, interrupted, arithmetic)
 
@@ -248,7 +249,9 @@ def _plan(
             stacklevel=3,
         )
     summary = True if summary is None else bool(summary)
-    return _Plan(x, v, lengths, gs, cs, finite, invalid, method, dt, t_end, steps, save_every, summary, settle)
+    return _Plan(
+        x, v, lengths, gs, cs, finite, invalid, method, dt, t_end, steps, save_every, summary, settle
+    )
 
 
 def _check_saved(n: int, n_save: int) -> None:

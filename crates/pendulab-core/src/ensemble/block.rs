@@ -84,29 +84,56 @@ impl Block {
     /// compiled and register-allocated alone, not as one arm of a function holding all of them.
     #[inline(always)]
     pub fn steps<A: MulAdd>(&mut self, chunk: u64, stages: &Stages, first: u64, track: Track) {
+        // RATTLE's loop and a composition's are compiled apart, so that the former stays as it was
+        if stages.len() == 1 {
+            self.steps_as::<A, false>(chunk, stages, first, track);
+        } else {
+            self.steps_as::<A, true>(chunk, stages, first, track);
+        }
+    }
+
+    /// [`Block::steps`] for one step of dt (`COMPOSED` false) or a composition's sub-steps (true).
+    #[inline(always)]
+    fn steps_as<A: MulAdd, const COMPOSED: bool>(
+        &mut self,
+        chunk: u64,
+        stages: &Stages,
+        first: u64,
+        track: Track,
+    ) {
         let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
         match (tile_lanes(isa::current(), arithmetic), self.sharing()) {
-            (24, Sharing::All) => self.steps_at::<A, 24, Shared<24>>(chunk, stages, first, track),
-            (24, Sharing::AllButLengths) => self.steps_at::<A, 24, Lengths<24>>(chunk, stages, first, track),
-            (24, Sharing::AllButDamping) => self.steps_at::<A, 24, Damping<24>>(chunk, stages, first, track),
+            (24, Sharing::All) => self.steps_at::<A, 24, Shared<24>, COMPOSED>(chunk, stages, first, track),
+            (24, Sharing::AllButLengths) => {
+                self.steps_at::<A, 24, Lengths<24>, COMPOSED>(chunk, stages, first, track)
+            }
+            (24, Sharing::AllButDamping) => {
+                self.steps_at::<A, 24, Damping<24>, COMPOSED>(chunk, stages, first, track)
+            }
             // every parameter a row: its 16 rows of state and parameters spill at 24 lanes (module doc)
-            (24, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, stages, first, track),
-            (16, Sharing::All) => self.steps_at::<A, 16, Shared<16>>(chunk, stages, first, track),
-            (16, Sharing::AllButLengths) => self.steps_at::<A, 16, Lengths<16>>(chunk, stages, first, track),
-            (16, Sharing::AllButDamping) => self.steps_at::<A, 16, Damping<16>>(chunk, stages, first, track),
-            (16, _) => self.steps_at::<A, 16, PerLane<16>>(chunk, stages, first, track),
-            (8, Sharing::All) => self.steps_at::<A, 8, Shared<8>>(chunk, stages, first, track),
-            (8, Sharing::AllButLengths) => self.steps_at::<A, 8, Lengths<8>>(chunk, stages, first, track),
-            (8, _) => self.steps_at::<A, 8, PerLane<8>>(chunk, stages, first, track),
-            (_, Sharing::All) => self.steps_at::<A, 4, Shared<4>>(chunk, stages, first, track),
-            (_, _) => self.steps_at::<A, 4, PerLane<4>>(chunk, stages, first, track),
+            (24, _) => self.steps_at::<A, 16, PerLane<16>, COMPOSED>(chunk, stages, first, track),
+            (16, Sharing::All) => self.steps_at::<A, 16, Shared<16>, COMPOSED>(chunk, stages, first, track),
+            (16, Sharing::AllButLengths) => {
+                self.steps_at::<A, 16, Lengths<16>, COMPOSED>(chunk, stages, first, track)
+            }
+            (16, Sharing::AllButDamping) => {
+                self.steps_at::<A, 16, Damping<16>, COMPOSED>(chunk, stages, first, track)
+            }
+            (16, _) => self.steps_at::<A, 16, PerLane<16>, COMPOSED>(chunk, stages, first, track),
+            (8, Sharing::All) => self.steps_at::<A, 8, Shared<8>, COMPOSED>(chunk, stages, first, track),
+            (8, Sharing::AllButLengths) => {
+                self.steps_at::<A, 8, Lengths<8>, COMPOSED>(chunk, stages, first, track)
+            }
+            (8, _) => self.steps_at::<A, 8, PerLane<8>, COMPOSED>(chunk, stages, first, track),
+            (_, Sharing::All) => self.steps_at::<A, 4, Shared<4>, COMPOSED>(chunk, stages, first, track),
+            (_, _) => self.steps_at::<A, 4, PerLane<4>, COMPOSED>(chunk, stages, first, track),
         }
     }
 
     /// [`Block::steps_tiled`] in its own clone of `isa::fastest` (the closure's type is distinct
-    /// for each `A`, `T`, `P`).
+    /// for each `A`, `T`, `P`, `COMPOSED`).
     #[inline(always)]
-    fn steps_at<A: MulAdd, const T: usize, P: TileParams>(
+    fn steps_at<A: MulAdd, const T: usize, P: TileParams, const COMPOSED: bool>(
         &mut self,
         chunk: u64,
         stages: &Stages,
@@ -115,7 +142,7 @@ impl Block {
     ) {
         isa::fastest(
             #[inline(always)]
-            || self.steps_tiled::<A, T, P>(chunk, stages, first, track),
+            || self.steps_tiled::<A, T, P, COMPOSED>(chunk, stages, first, track),
         )
     }
 
@@ -136,7 +163,7 @@ impl Block {
     /// `Block::steps` with tiles of `T` lanes and the parameters held as `P`: each step one RATTLE
     /// step of dt, or the composition's sub-steps h_k with their damping factors (`stages.rs`).
     #[inline(always)]
-    fn steps_tiled<A: MulAdd, const T: usize, P: TileParams>(
+    fn steps_tiled<A: MulAdd, const T: usize, P: TileParams, const COMPOSED: bool>(
         &mut self,
         chunk: u64,
         stages: &Stages,
@@ -145,11 +172,22 @@ impl Block {
     ) {
         for o in (0..LANES).step_by(T) {
             let mut tile = Tile::<T, P>::load(self, o);
-            if stages.len() == 1 {
+            if !COMPOSED {
                 let h = stages.h(0);
                 for j in 1..=chunk {
                     tile.step::<A>(h, self.damped);
-                    self.track_tile(&tile, track, o, first + j);
+                    if track.summary {
+                        tile.update_summary(&mut self.summary, &mut self.crossings, &mut self.above, o);
+                    }
+                    if track.settle {
+                        tile.track_settle(
+                            &self.down,
+                            self.cos_settle,
+                            &mut self.last_out,
+                            o,
+                            (first + j) as f64,
+                        );
+                    }
                 }
             } else {
                 for j in 1..=chunk {

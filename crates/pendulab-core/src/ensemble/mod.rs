@@ -4,7 +4,9 @@
 //!
 //!   v½ = v₀ − (h/2) g e₃ + μ x₀ (|x₁| = l),  x₁ = x₀ + h v½,  v₁ = v½ − (h/2) g e₃ − x₁ (x₁·u)/l²,
 //!
-//! with Kahan-compensated updates, the multiply-adds unfused by default or fused on request
+//! with Kahan-compensated updates, or its symmetric compositions of order 4, 6 and 8 (T-8.2;
+//! [`RattleSettings::method`], `stages.rs`: each step the RATTLE sub-steps w_k·dt, as
+//! `integrate/composition.rs` takes them), the multiply-adds unfused by default or fused on request
 //! ([`RattleSettings::arithmetic`], as the single-trajectory path with the same choice). Optional linear
 //! damping c [1/s] (force −m c v, T-7.1) enters as in the single-trajectory path of the `damped`
 //! model: the exact damping flow v ↦ e^{−c h/2} v before and after each step (Strang splitting,
