@@ -97,21 +97,33 @@ def measure() -> dict[str, Any]:
 
                 def call(rtol: float = s) -> np.ndarray:
                     kw = {"rtol": rtol, "atol": rtol / 100}
-                    return pl.simulate_ensemble(p, starts, T_END, method="dop853", progress=False, **kw).final_x
+                    return pl.simulate_ensemble(
+                        p, starts, T_END, method="dop853", progress=False, **kw
+                    ).final_x
 
             else:
 
                 def call(dt: float = s, m: str = method) -> np.ndarray:
-                    res = pl.simulate_ensemble(p, starts, T_END, dt=dt, method=m, summary=False, progress=False)
+                    res = pl.simulate_ensemble(
+                        p, starts, T_END, dt=dt, method=m, summary=False, progress=False
+                    )
                     nonlocal arithmetic
                     arithmetic = res.metadata.get("arithmetic", "unfused")
                     return res.final_x
 
             wall, xs = least_time(call)
             err = np.linalg.norm(xs - exact, axis=1)
-            row = {"setting": s, "wall": wall, "max_error": float(err.max()), "median_error": float(np.median(err))}
+            row = {
+                "setting": s,
+                "wall": wall,
+                "max_error": float(err.max()),
+                "median_error": float(np.median(err)),
+            }
             runs[method].append(row)
-            print(f"  {method:8s} {s:8.1e}: {hz.fmt_time(wall):>9s}  max error {row['max_error']:.2e}", flush=True)
+            print(
+                f"  {method:8s} {s:8.1e}: {hz.fmt_time(wall):>9s}  max error {row['max_error']:.2e}",
+                flush=True,
+            )
     return {"n": N, "t_end": T_END, "threads": THREADS, "arithmetic": arithmetic, "runs": runs}
 
 
@@ -133,19 +145,16 @@ def markdown(res: dict[str, Any]) -> str:
         c = times["C rk4"]
         ratio = f"{c / best[0]:.1f} (`{best[1]}`)" if best and c else "—"
         rows.append([f"{level:.0e}", *[hz.fmt_time(times[m]) for m in methods], ratio])
-    return "\n".join([
-        "",
-        f"Measured {meta['date']} on {meta['cpu']} (load {meta['load_start']:.1f} → {meta['load_end']:.1f});",
-        f"{res['n']} starts to t = {res['t_end']:g} s, {res['threads']} threads, `pl.simulate_ensemble` with",
-        f"arithmetic {res['arithmetic']} and no summary. Least wall time of the settings scanned",
-        "(bench/peers/ensemble_work_precision.py) whose largest final-position error over the starts is at",
-        "or below the level; — where no setting scanned reached it.",
-        "",
-        hz.markdown_table(head, rows),
-        "",
-        "![ensembles: error against wall time](img/ensemble_work_precision.png)",
-        "",
-    ])
+    load = f"load {meta['load_start']:.1f} → {meta['load_end']:.1f}"
+    intro = (
+        f"Measured {meta['date']} on {meta['cpu']} ({load}); {res['n']} starts to t = {res['t_end']:g} s, "
+        f"{res['threads']} threads, `pl.simulate_ensemble` with arithmetic {res['arithmetic']} and no "
+        "summary. Least wall time of the settings scanned (bench/peers/ensemble_work_precision.py) whose "
+        "largest final-position error over the starts is at or below the level; — where no setting "
+        "scanned reached it."
+    )
+    table = hz.markdown_table(head, rows)
+    return f"\n{intro}\n\n{table}\n\n![ensembles: error against wall time](img/ensemble_work_precision.png)\n"
 
 
 def plot(res: dict[str, Any]) -> None:

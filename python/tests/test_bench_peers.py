@@ -265,3 +265,25 @@ def test_the_recorded_cpu_names_the_core_behind_a_generic_model_name(tmp_path: P
     assert hz.cpu_description(str(info)) == "AMD EPYC 9354 32-Core Processor (family 25, model 17)"
     # no cpuinfo (macOS, Windows): what platform knows, never an exception
     assert hz.cpu_description(str(tmp_path / "missing")) != ""
+
+
+def test_ensemble_work_precision_table_from_synthetic_runs() -> None:
+    """bench/peers/ensemble_work_precision.py: per error level the least wall time of each method whose
+    largest error reaches it, and the C RK4 ensemble's time over the best Pendulab method's."""
+    wp = _load("ensemble_work_precision")
+    rows = [
+        {"setting": 1e-3, "wall": 0.4, "max_error": 2e-7},
+        {"setting": 1e-2, "wall": 0.1, "max_error": 2e-3},
+    ]
+    assert (
+        wp.cheapest(rows, 1e-6) == 0.4 and wp.cheapest(rows, 1e-2) == 0.1 and wp.cheapest(rows, 1e-9) is None
+    )
+    res = {
+        "n": 8, "t_end": 10.0, "threads": 2, "arithmetic": "fused",
+        "meta": {"date": "today", "cpu": "a CPU", "load_start": 0.1, "load_end": 0.2},
+        "runs": {"rattle6": [{"setting": 0.01, "wall": 0.05, "max_error": 1e-8}], "C rk4": rows},
+    }  # fmt: skip
+    text = wp.markdown(res)
+    line = next(x for x in text.splitlines() if x.startswith("| 1e-05 |"))
+    assert line == "| 1e-05 | 50 ms | 400 ms | 8.0 (`rattle6`) |"
+    assert "| 1e-09 | — | — | — |" in text and "a CPU" in text

@@ -60,6 +60,28 @@ def test_observed_order_against_the_exact_solution() -> None:
         assert abs(observed - order) < 0.35, f"{method}: errors {e1:.3e}, {e2:.3e}, order {observed:.2f}"
 
 
+def test_observed_order_with_damping_against_an_independent_integrator() -> None:
+    """Linear damping c = 0.3/s (the damping flow on either side of each sub-step keeps every
+    sub-step symmetric, so the compositions keep their order): errors after 5 s against the DOP853
+    ensemble at rtol 1e-13 (measured: 2.00, 4.03, 6.10, 8.09)."""
+    p = pl.Pendulum(length=1.0, g=9.81, damping=0.3)
+    states = pl.states_from_angles(p, theta=np.linspace(0.4, 1.6, 8), phi_dot=np.linspace(0.5, 2.5, 8))
+    ref = pl.simulate_ensemble(p, states, 5.0, method="dop853", rtol=1e-13, atol=1e-15, progress=False)
+
+    def error(method: str, dt: float) -> float:
+        r = pl.simulate_ensemble(p, states, 5.0, dt=dt, method=method, summary=False, progress=False)
+        return float(np.max(np.linalg.norm(r.final_x - ref.final_x, axis=1)))
+
+    for method, order, dt in [
+        ("rattle", 2, 0.01),
+        ("rattle4", 4, 0.025),
+        ("rattle6", 6, 0.05),
+        ("rattle8", 8, 0.025),
+    ]:
+        observed = np.log2(error(method, dt) / error(method, dt / 2))
+        assert abs(observed - order) < 0.35, f"{method}: order {observed:.2f}"
+
+
 def test_structure_kept_and_no_energy_drift() -> None:
     """rattle4 and rattle6 at 20 ms over 20 s and over 200 s (~100 periods): J₃ to round-off, |x| = l,
     x·v = 0, and the energy error bounded: its range over 200 s is that over the first 20 s (a
