@@ -225,8 +225,10 @@ class EnsembleSpec:
 
 @final
 class EnsembleRun:
-    """``n_steps`` RATTLE steps of ``options.dt`` [s] from x [m], v [m/s] (N, 3), saving every
-    ``options``' ``save_every`` steps (None: the final state only), with ``options.arithmetic``."""
+    """``n_steps`` steps of ``options.dt`` [s] of ``options.method`` ("rattle", or its compositions
+    "rattle4", "rattle6", "rattle8"; others raise InvalidInputError) from x [m], v [m/s] (N, 3),
+    saving every ``options``' ``save_every`` steps (None: the final state only), with
+    ``options.arithmetic``."""
 
     def __new__(
         cls,
