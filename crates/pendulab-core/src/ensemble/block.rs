@@ -175,7 +175,7 @@ impl Block {
             if !COMPOSED {
                 let h = stages.h(0);
                 for j in 1..=chunk {
-                    tile.step::<A>(h, self.damped);
+                    tile.step::<A, false>(h, self.damped);
                     if track.summary {
                         tile.update_summary(&mut self.summary, &mut self.crossings, &mut self.above, o);
                     }
@@ -193,7 +193,7 @@ impl Block {
                 for j in 1..=chunk {
                     for k in 0..stages.len() {
                         tile.set_stage(self, o, stages.distinct(k));
-                        tile.step::<A>(stages.h(k), self.damped);
+                        tile.step::<A, true>(stages.h(k), self.damped);
                     }
                     self.track_tile(&tile, track, o, first + j);
                 }
