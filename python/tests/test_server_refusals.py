@@ -1,13 +1,14 @@
 """What a misbehaving pupil's refused or excess traffic costs the lab server (docs/web.md, "A pupil in
 the room"; issue 30): counted as work per refusal, not timed. A connection beyond its client's limit is
 cut before uvicorn sets anything up for it; a ping flood is cut; a command flood is read no faster
-than the ticks take it; the WebSocket frames are not compressed (deflate took about a tenth of the
-event loop for float64 frames). Clients are told apart by their address: a client binds 127.0.0.N
-(all of 127/8 is this machine)."""
+than the ticks take it, pipelined requests no faster than they are answered; the WebSocket frames are
+not compressed (deflate took about a tenth of the event loop for float64 frames). Clients are told
+apart by their address: a client binds 127.0.0.N (all of 127/8 is this machine)."""
 
 from __future__ import annotations
 
 import asyncio
+import contextlib
 import socket
 import time
 from collections.abc import Iterator
@@ -19,7 +20,7 @@ from websockets.sync.client import connect
 from ws_session import live_lab
 
 from pendulab.server import create_app, live_socket
-from pendulab.server.hygiene import PING_BURST, PING_RATE
+from pendulab.server.hygiene import PING_BURST, PING_RATE, TimedH11Protocol
 from pendulab.server.room import MAX_CONNECTIONS_PER_CLIENT
 from pendulab.server.schema import TICK_HZ
 from pendulab.server.session import Session, resolve_scenario
@@ -166,3 +167,43 @@ def test_a_flooding_client_has_its_commands_read_no_faster_than_the_ticks(
             time.sleep(0.01)
         ticks = TICK_HZ * (time.monotonic() - start) + 2  # ticks since the first send, at most
         assert len(parsed) <= (MAX_PENDING + 1) * (ticks + 1), f"{len(parsed)} read in {ticks:.0f} ticks"
+
+
+def test_pipelined_posts_are_read_no_faster_than_they_are_answered(
+    port: int, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """One connection sending POSTs without waiting for the answers (HTTP pipelining) had one more
+    chunk (up to 256 KiB) of them read into the server's memory per POST answered off the event loop
+    (an answer computed in a thread or worker): about 85 MB a second, without end. Counted: what the
+    server read beyond the requests it answered stays within a chunk or two."""
+    body = b'{"n": 16}'
+    request = (
+        b"POST /api/effective_potential HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\n"
+        b"Content-Length: %d\r\n\r\n%s" % (len(body), body)
+    )
+    read = [0]
+    received = TimedH11Protocol.data_received
+
+    def counted(self: TimedH11Protocol, data: bytes) -> None:
+        if self.client and self.client[0] == "127.0.0.23":
+            read[0] += len(data)
+        received(self, data)
+
+    monkeypatch.setattr(TimedH11Protocol, "data_received", counted)
+    s = _open(port, "127.0.0.23")
+    s.setblocking(False)
+    blob, sent, answers, answered = request * 2000, 0, b"", 0
+    try:
+        deadline = time.monotonic() + 20
+        while answered < 300 and time.monotonic() < deadline:
+            with contextlib.suppress(BlockingIOError):
+                sent += s.send(blob[sent % len(blob) :])
+            with contextlib.suppress(BlockingIOError):
+                answers += s.recv(1 << 20)
+            answered = answers.count(b"HTTP/1.1 200")
+            held = read[0] - answered * len(request)  # read, not yet answered
+            assert held < 2**20, f"{held} bytes read beyond {answered} answers"
+            time.sleep(0.001)
+        assert answered >= 300, f"{answered} pipelined requests answered"
+    finally:
+        s.close()
