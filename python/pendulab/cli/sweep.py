@@ -15,6 +15,7 @@ import typer
 
 from .._core import InvalidInputError
 from ..integrators import check_arithmetic
+from ..sweeps.compute import METHODS, check_method
 from ..sweeps.file import SweepFile, load_sweep_file
 from ..sweeps.results import MANIFEST
 from ..sweeps.resume import ResumeConflict
@@ -38,7 +39,8 @@ def _plan(sf: SweepFile, kwargs: dict[str, Any]) -> str:
             points += f" (seed {d.info['seed']}, {d.info['method']})"
     q = kwargs["quantity"]
     what = q if isinstance(q, str) else ", ".join(str(x) for x in q)
-    sim = f"; RATTLE to t = {kwargs['t_end']:g} s, dt = {kwargs['dt']:g} s" if kwargs["t_end"] else ""
+    method = "RATTLE" if kwargs["method"] == "rattle" else kwargs["method"]
+    sim = f"; {method} to t = {kwargs['t_end']:g} s, dt = {kwargs['dt']:g} s" if kwargs["t_end"] else ""
     return f"  {d.n} points: {points} -> {what}{sim}"
 
 
@@ -103,6 +105,15 @@ def sweep_cmd(
             show_default=False,
         ),
     ] = None,
+    method: Annotated[
+        str | None,
+        typer.Option(
+            metavar="|".join(METHODS),
+            help="RATTLE or its compositions of order 4, 6, 8 (default: the file's [simulation] method, "
+            "else rattle).",
+            show_default=False,
+        ),
+    ] = None,
     resume: Annotated[
         bool, typer.Option("--resume", help="Continue the sweep in --out: skip the chunks already written.")
     ] = False,
@@ -118,7 +129,8 @@ def sweep_cmd(
     a thread pool (default) or Dask (--backend dask: a LocalCluster of --workers processes; --scheduler:
     a running cluster), writing each chunk to --out as it finishes. Prints the plan, then per result
     column its range and NaN count. Ctrl-C keeps the finished chunks; --resume does the rest.
-    --arithmetic overrides the file's [simulation] arithmetic, as the other options its [run] table."""
+    --arithmetic and --method override the file's [simulation] arithmetic and method, as the other
+    options its [run] table."""
     with _user_errors():
         if workers is not None and scheduler is not None:
             _fail("--workers and --scheduler exclude each other (the scheduler's cluster has its workers)")
@@ -129,6 +141,11 @@ def sweep_cmd(
                 check_arithmetic(arithmetic, "rattle")  # pl.sweep's check, here before the file is read
             except InvalidInputError as e:
                 _fail(f"--arithmetic: {e}")
+        if method is not None:
+            try:
+                check_method(method)  # pl.sweep's check, here before the file is read
+            except InvalidInputError as e:
+                _fail(f"--method: {e}")
         sf = load_sweep_file(_sweep_file(sweep_file))
         kwargs = sf.sweep_kwargs(
             workers=workers,
@@ -136,6 +153,7 @@ def sweep_cmd(
             backend=backend,
             chunk_size=chunk_size,
             arithmetic=arithmetic,
+            method=method,
         )
         if not quiet:
             _say(f"sweep {sweep_file}" + (f": {sf.title}" if sf.title else ""), err=True)

@@ -2,10 +2,10 @@
 that are not points (``SweepSpec``), the fingerprint that makes resuming safe, and ``compute_chunk`` —
 a pure function of a ``ChunkTask`` that the thread pool and the Dask workers run. The exact
 quantities (rotation number T-4.5, z-period) come from the exact solution; the simulated ones from
-one RATTLE ensemble run per chunk (``simulate_ensemble``'s kernel, with the sweep's arithmetic,
-``"fused"`` or ``"unfused"``, resolved once, and checked to be of the version of its bits the sweep
-records), so every point is computed independently of the chunking, the backend and the CPU, bit for
-bit.
+one ensemble run per chunk (``simulate_ensemble``'s kernel, with the sweep's method, RATTLE or one of
+its compositions, and its arithmetic, ``"fused"`` or ``"unfused"``, resolved once, and checked to be of
+the version of its bits the sweep records), so every point is computed independently of the chunking,
+the backend and the CPU, bit for bit.
 """
 
 from __future__ import annotations
@@ -33,7 +33,7 @@ from .._core import (
     rotation_numbers,
     state_from_angles,
 )
-from ..ensemble.run import max_sway, model_damping
+from ..ensemble.run import SUBSTEPS, max_sway, model_damping
 from ..integrators import check_arithmetic
 from ..model import FloatArray, Pendulum
 from .design import AXES, AXIS_LIMITS, INITIAL_AXES, Design, check_axis_name
@@ -49,7 +49,12 @@ QUANTITIES: dict[str, dict[str, str]] = {
 """Quantity name → the result columns it makes, with their units."""
 
 SIMULATED = ("final_state", "max_sway", "energy_drift", "settle_time")
-"""The quantities that integrate (RATTLE to t_end); the others come from the exact solution."""
+"""The quantities that integrate (RATTLE or a composition of it to t_end); the others come from the exact
+solution."""
+
+METHODS = tuple(SUBSTEPS)
+"""The sweep's integrators (``method``): ``simulate_ensemble``'s vectorised ones, RATTLE and its
+compositions of order 4, 6 and 8."""
 
 
 class _Cancelled(Exception):
@@ -66,13 +71,15 @@ def _bad(message: str) -> InvalidInputError:
 @dataclass(frozen=True)
 class SweepSpec:
     """Everything but the points: the quantities, the pendulum (l [m], g [m/s²], m [kg]) used where
-    the design does not vary length or g, the fixed initial conditions (``fixed``: axis → value; 0
-    for those not given), for simulated quantities ``t_end`` [s] and ``dt`` [s], the linear damping
-    c [1/s] where the design does not vary it, for ``settle_time`` the ``settle_angle`` [rad], and for
-    simulated quantities the RATTLE ``arithmetic`` (``"fused"`` or ``"unfused"``, resolved once when
-    the sweep is set up, so that every chunk, on any worker, uses the same; None for exact ones) and
-    ``arithmetic_version``, the version of that arithmetic's bits (``_core.arithmetic_version``; None
-    in the record of a sweep written before versions were recorded, ``sweeps/resume.py``)."""
+        the design does not vary length or g, the fixed initial conditions (``fixed``: axis → value; 0
+        for those not given), for simulated quantities ``t_end`` [s] and ``dt`` [s], the linear damping
+        c [1/s] where the design does not vary it, for ``settle_time`` the ``settle_angle`` [rad], and for
+        simulated quantities the RATTLE ``arithmetic`` (``"fused"`` or ``"unfused"``, resolved once when
+        the sweep is set up, so that every chunk, on any worker, uses the same; None for exact ones) and
+        ``arithmetic_version``, the version of that arithmetic's bits (``_core.arithmetic_version``; None
+        in the record of a sweep written before versions were recorded, ``sweeps/resume.py``), and
+    ``method``, the integrator of simulated quantities (one of :data:`METHODS`; None for exact ones, and
+    in the record of a sweep written before methods were recorded, which ran RATTLE)."""
 
     quantities: tuple[str, ...]
     length: float
@@ -85,10 +92,16 @@ class SweepSpec:
     settle_angle: float | None = None
     arithmetic: str | None = None
     arithmetic_version: int | None = None
+    method: str | None = None
 
     @property
     def simulated(self) -> bool:
         return any(q in SIMULATED for q in self.quantities)
+
+    @property
+    def substeps(self) -> int:
+        """RATTLE sub-steps per step of the method (1 for RATTLE; ``SUBSTEPS`` of ``ensemble/run.py``)."""
+        return SUBSTEPS[self.method or "rattle"]
 
     @property
     def steps(self) -> int:
@@ -106,6 +119,7 @@ class SweepSpec:
             ("settle_angle", None),
             ("arithmetic", None),
             ("arithmetic_version", None),
+            ("method", None),
         ):
             if d[key] == default:
                 del d[key]
@@ -133,11 +147,14 @@ def make_spec(
     dt: float | None = None,
     settle_angle: float | None = None,
     arithmetic: Any = "auto",
+    method: Any = "rattle",
 ) -> SweepSpec:
     """Checks and collects the settings of a sweep over ``design`` (see :func:`sweep`); ``arithmetic``
-    (``"auto"``, ``"unfused"``, ``"fused"``) is resolved here, as ``simulate_ensemble`` resolves it."""
+    (``"auto"``, ``"unfused"``, ``"fused"``) is resolved here, as ``simulate_ensemble`` resolves it;
+    ``method`` is one of :data:`METHODS`."""
     quantities = _quantities(quantity)
-    resolved = check_arithmetic(arithmetic, "rattle")  # checked even where nothing integrates
+    method = check_method(method)  # both checked even where nothing integrates
+    resolved = check_arithmetic(arithmetic, method)
     p = Pendulum() if pendulum is None else pendulum
     if not isinstance(p, Pendulum):
         raise _bad(f"pendulum must be a pendulab.Pendulum, got {type(p).__name__}")
@@ -188,7 +205,7 @@ def make_spec(
             raise _bad(f"{', '.join(sim)} {verb}: give t_end [s] (and dt [s])")
         dt = limits.number("dt", dt, "dt")
         t_end = limits.number("t_end", t_end, "time", positive=True)
-        limits.planned_steps(0.0, t_end, dt)
+        limits.planned_steps(0.0, t_end * SUBSTEPS[method], dt)  # one point's RATTLE sub-steps
         steps = round(t_end / dt)
         if not (math.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
             raise _bad(
@@ -196,13 +213,22 @@ def make_spec(
             )
         t_end, dt = float(t_end), float(dt)
         arith: str | None = resolved
+        used: str | None = method
     else:
-        t_end = dt = arith = None  # not used: not part of what the results depend on
-    fixed_sorted = dict(sorted(fixed_values.items()))
+        t_end = dt = arith = used = None  # not used: not part of what the results depend on
     version = None if arith is None else arithmetic_version(arith)
-    return SweepSpec(
-        quantities, p.length, p.g, p.mass, fixed_sorted, t_end, dt, damping, settle_angle, arith, version
-    )
+    settings = (dict(sorted(fixed_values.items())), t_end, dt, damping, settle_angle, arith, version, used)
+    return SweepSpec(quantities, p.length, p.g, p.mass, *settings)
+
+
+def check_method(method: Any) -> str:
+    """``method`` if it is one of :data:`METHODS`, else an ``InvalidInputError`` naming it and them."""
+    if not isinstance(method, str) or method not in SUBSTEPS:
+        raise _bad(
+            f"method = {limits.show(method)}: sweeps integrate with {', '.join(map(repr, METHODS))} "
+            "(RATTLE or its symmetric compositions of order 4, 6, 8, as pl.simulate_ensemble)"
+        )
+    return method
 
 
 def fingerprint(design: Design, spec: SweepSpec) -> str:
@@ -295,7 +321,8 @@ def _simulate(
             f"this pendulab's {arithmetic} arithmetic is of version {here}, the sweep's of version "
             f"{spec.arithmetic_version}: run every worker with the pendulab that set the sweep up"
         )
-    options = RunOptions(dt=dt, arithmetic=arithmetic)
+    # the sweep's method (RATTLE for a SweepSpec made without one)
+    options = RunOptions(method=spec.method or "rattle", dt=dt, arithmetic=arithmetic)
     run = EnsembleRun(models, x, v, options, spec.steps, need_summary, settle)
     # wait returns the moment the chunk is done; a cancel is seen within 20 ms
     while not run.wait(0.02):

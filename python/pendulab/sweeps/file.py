@@ -22,6 +22,7 @@
     dt = 1e-3                              # s
     settle_angle = 0.01                    # rad, needed by settle_time
     arithmetic = "auto"                    # RATTLE's multiply-adds: "auto", "unfused" or "fused"
+    method = "rattle"                      # or "rattle4", "rattle6", "rattle8" (order 4, 6, 8)
 
     [run]                                  # optional; the command line overrides these
     chunk_size = 2000
@@ -91,6 +92,8 @@ class SimulationTable(_Strict):
     )
     # any value here: make_spec checks it (check_arithmetic, as pl.sweep does) and names what is allowed
     arithmetic: Any = Field("auto", description='RATTLE multiply-adds: "auto", "unfused" or "fused"')
+    # likewise: make_spec checks it (check_method) and names what is allowed
+    method: Any = Field("rattle", description='"rattle" or its compositions "rattle4", "rattle6", "rattle8"')
 
 
 class RunTable(_Strict):
@@ -125,8 +128,8 @@ class SweepSpecFile(_Strict):
 @dataclass(frozen=True)
 class SweepFile:
     """A validated sweep file: ``design``, ``quantities``, ``pendulum``, ``fixed``, the simulation's
-    ``t_end`` and ``dt`` [s] (None for exact quantities), its ``arithmetic`` (default "auto"), the
-    ``[run]`` settings and the ``title``."""
+    ``t_end`` and ``dt`` [s] (None for exact quantities), its ``arithmetic`` (default "auto") and
+    ``method`` (default "rattle"), the ``[run]`` settings and the ``title``."""
 
     spec: SweepSpecFile
     design: Design
@@ -145,14 +148,17 @@ class SweepFile:
         backend: str | None = None,
         chunk_size: int | None = None,
         arithmetic: str | None = None,
+        method: str | None = None,
     ) -> dict[str, Any]:
         """The keywords of :func:`pendulab.sweep` this file sets (not out, resume, progress), with the
-        ``[run]`` settings and ``[simulation] arithmetic`` overridden where given (``pendulab sweep``'s
-        options; ``arithmetic`` is checked by :func:`pendulab.sweep`): a scheduler implies the dask
+        ``[run]`` settings and ``[simulation] arithmetic`` and ``method`` overridden where given
+        (``pendulab sweep``'s options; ``arithmetic`` and ``method`` are checked by
+        :func:`pendulab.sweep`): a scheduler implies the dask
         backend and replaces the file's workers; workers given alone replace its scheduler."""
         kwargs = self._file_kwargs()
         for key, value in (
             ("arithmetic", arithmetic),
+            ("method", method),
             ("workers", workers),
             ("scheduler", scheduler),
             ("backend", backend),
@@ -178,6 +184,7 @@ class SweepFile:
             "dt": None if sim is None else sim.dt,
             "settle_angle": None if sim is None else sim.settle_angle,
             "arithmetic": "auto" if sim is None else sim.arithmetic,
+            "method": "rattle" if sim is None else sim.method,
             "chunk_size": run.chunk_size,
             "backend": run.backend,
             "workers": run.workers,
@@ -274,10 +281,11 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
             None if sim is None else sim.dt,
             None if sim is None else sim.settle_angle,
             "auto" if sim is None else sim.arithmetic,
+            "rattle" if sim is None else sim.method,
         )
     except InvalidInputError as e:
         text = str(e).replace("give t_end [s] (and dt [s])", "add [simulation] t_end (in s) and dt (in s)")
-        if text.startswith(("t_end", "dt", "invalid arithmetic")):
+        if text.startswith(("t_end", "dt", "invalid arithmetic", "method")):
             text = f"[simulation] {text}"
         raise SweepFileError(source, text) from None
     return SweepFile(spec, design, pendulum, source)

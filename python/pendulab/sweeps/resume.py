@@ -1,5 +1,7 @@
 """What a resumed sweep takes from the sweep already in ``out`` and what it refuses (``docs/sweeps.md``,
-"Arithmetic"): the RATTLE arithmetic its chunks were computed with and the version of that
+"Method", "Arithmetic"): the integrator its chunks were computed with (``method``: another is
+refused; a record without one was written before methods were recorded, when sweeps ran RATTLE, and
+stays without one), the RATTLE arithmetic its chunks were computed with and the version of that
 arithmetic's bits (``_core.arithmetic_version``, the Rust core's ``Arithmetic::version``, bumped
 whenever any bit of its results changes). The new chunks must be the same numbers, bit for bit, as
 the ones there, so a resume with ``arithmetic="auto"`` adopts the recorded arithmetic, a named one
@@ -17,7 +19,7 @@ from typing import Any
 
 from .. import validate as limits
 from .._core import InvalidInputError, arithmetic_version
-from .compute import SweepSpec, _bad, fingerprint
+from .compute import METHODS, SweepSpec, _bad, fingerprint
 from .design import Design
 from .sinks import recorded_sweep
 
@@ -110,16 +112,26 @@ def _unrecorded(
     return spec, record, warning
 
 
-def resume_arithmetic(
+def _recorded_method(where: os.PathLike[str], recorded: Any) -> str | None:
+    """The recorded method as recorded (None: none recorded, so RATTLE), checked."""
+    if recorded is not None and recorded not in METHODS:
+        raise _bad(
+            f"{where} records method {limits.show(recorded)}, not one of {', '.join(map(repr, METHODS))}: "
+            "not a sweep this pendulab can continue; run it again into a new out"
+        )
+    return recorded if recorded is None else str(recorded)
+
+
+def resume_settings(
     d: Design, spec: SweepSpec, asked: Any, out: Any, resume: bool
 ) -> tuple[SweepSpec, SweepSpec, str | None]:
     """The spec the chunks run with, the spec the output records (and its fingerprint hashes), and a
     warning to give if chunks are computed (module doc). ``asked``: the ``arithmetic`` given to
     :func:`pendulab.sweep` before it was resolved. Refuses (:class:`ResumeConflict`), before any
-    work, a resume of the same sweep whose recorded arithmetic version is not this pendulab's, or with
-    a named arithmetic other than the recorded one; a sweep that differs in other settings as well
-    is left to :meth:`OutputDir.open <pendulab.sweeps.sinks.OutputDir.open>`, which names all the
-    differences."""
+    work, a resume of the same sweep but for its method (one recorded, or RATTLE where none is), or
+    whose recorded arithmetic version is not this pendulab's, or with a named arithmetic other than
+    the recorded one; a sweep that differs in other settings as well is left to
+    :meth:`OutputDir.open <pendulab.sweeps.sinks.OutputDir.open>`, which names all the differences."""
     if not resume or out is None or spec.arithmetic is None:
         return spec, spec, None
     found = recorded_sweep(out)
@@ -128,6 +140,33 @@ def resume_arithmetic(
     where, old = found
     old_spec = old.get("spec")
     old_spec = old_spec if isinstance(old_spec, dict) else {}
+    ran = _recorded_method(where, old_spec.get("method"))
+    if (ran or "rattle") != spec.method:
+        arith, version = old_spec.get("arithmetic"), old_spec.get("arithmetic_version")
+        same = replace(spec, method=ran, arithmetic=arith, arithmetic_version=version)  # but the method
+        if old.get("fingerprint") == fingerprint(d, same):
+            raise ResumeConflict(
+                "method = {asked!r} differs from {ran!r}, the method the sweep in {where} was computed "
+                "with{how}: resume with {fix} so that the new chunks are computed as those there, or "
+                "give another {out}",
+                asked=spec.method,
+                ran=ran or "rattle",
+                where=where,
+                how="" if ran is not None else " (it records none: written before sweeps recorded one)",
+                fix=Setting("method", ran or "rattle"),
+                out=Setting("out"),
+            )
+        return spec, spec, None  # a different sweep: OutputDir.open names the differences
+    # a record without a method (RATTLE, as before methods were recorded) stays without one
+    base = spec if ran is not None else replace(spec, method=None)
+    run, record, warning = _arithmetic(d, base, asked, where, old, old_spec)
+    return replace(run, method=spec.method), record, warning
+
+
+def _arithmetic(
+    d: Design, spec: SweepSpec, asked: Any, where: os.PathLike[str], old: dict[str, Any], old_spec: Any
+) -> tuple[SweepSpec, SweepSpec, str | None]:
+    """:func:`resume_settings` for the arithmetic, once the method is the recorded one."""
     if old_spec.get("arithmetic") is None:
         return _unrecorded(d, spec, where, old)
     recorded = old_spec["arithmetic"]

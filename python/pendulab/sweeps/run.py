@@ -12,14 +12,14 @@ pool or a Dask cluster, written to Parquet chunk by chunk and resumable (``docs/
 Quantities, per point (SI units):
 
 =================== ======= ======================================================================
-``final_state``     m, m/s  x, y, z, vx, vy, vz at ``t_end`` (RATTLE, step ``dt``, as
-                            ``simulate_ensemble``)
+``final_state``     m, m/s  x, y, z, vx, vy, vz at ``t_end`` (RATTLE or ``method``, step ``dt``,
+                            as ``simulate_ensemble``)
 ``rotation_number`` 1       W = Δφ/2π per z-period, exact (T-4.5); NaN for J₃ = 0 or g = 0
 ``period``          s       the z-period T_z of the exact solution (``ExactSolution.period_z``); inf
                             on the separatrix, NaN at rest
 ``max_sway``        rad     the largest polar angle from the downward vertical over 0 … t_end,
-                            arccos(−z_max/l), z_max checked at every RATTLE step
-``energy_drift``    1       (max E − min E) over the run / (m|g|l): RATTLE's energy error
+                            arccos(−z_max/l), z_max checked at every step
+``energy_drift``    1       (max E − min E) over the run / (m|g|l): the integrator's energy error
 =================== ======= ======================================================================
 
 The exact quantities need no ``t_end``; the others integrate once for all of them. Every point is
@@ -55,7 +55,7 @@ from .compute import (
 )
 from .design import AXES, as_design
 from .results import MemorySink, OutputDir, SweepResult
-from .resume import resume_arithmetic
+from .resume import resume_settings
 
 BACKENDS = ("threads", "dask")
 
@@ -73,12 +73,13 @@ MAX_CHUNK = 10_000_000
 
 def default_chunk_size(spec: SweepSpec) -> int:
     """Points per chunk: :data:`EXACT_CHUNK` for exact quantities; for simulated ones about
-    :data:`TARGET_CHUNK_WORK` trajectory-steps, a multiple of the kernel's block
+    :data:`TARGET_CHUNK_WORK` trajectory-steps (RATTLE sub-steps: a composition's step counts as
+    ``SUBSTEPS`` of them), a multiple of the kernel's block
     (``_core.ENSEMBLE_LANES``, 48 trajectories), from one block to 100 000 points. A resumed sweep
     keeps the chunk size its output records."""
     if not spec.simulated:
         return EXACT_CHUNK
-    per = TARGET_CHUNK_WORK / max(spec.steps, 1)
+    per = TARGET_CHUNK_WORK / max(spec.steps * spec.substeps, 1)
     block = _core.ENSEMBLE_LANES
     return int(min(max(block * round(per / block), block), 100_000 // block * block))
 
@@ -130,6 +131,7 @@ def sweep(
     dt: float | None = None,
     settle_angle: float | None = None,
     arithmetic: str = "auto",
+    method: str = "rattle",
     backend: str | None = None,
     scheduler: Any = None,
     workers: int | None = None,
@@ -146,7 +148,11 @@ def sweep(
     damping only; default l = 1 m, g = 9.81 m/s², m = 1 kg) gives length, g and damping where the
     design does not vary them; ``fixed`` sets initial conditions that are not axes (default 0).
     Simulated quantities integrate with RATTLE to ``t_end`` [s] at step ``dt`` [s] (default 1e-3 s;
-    t_end a multiple of dt). ``settle_time`` (the time after which the sway from the stable
+    t_end a multiple of dt), or with ``method="rattle4"``, ``"rattle6"`` or ``"rattle8"`` its symmetric
+    compositions of order 4, 6 and 8 (3, 7 and 15 RATTLE sub-steps per step; the work bound counts
+    them), each point's numbers those of :func:`pendulab.simulate_ensemble` with that method bit for
+    bit; the method is recorded in ``metadata["spec"]["method"]`` and in ``out`` (simulated
+    quantities only). ``settle_time`` (the time after which the sway from the stable
     equilibrium stays within ``settle_angle`` [rad]; +inf if not settled by t_end) needs
     ``settle_angle``. The exact quantities (rotation_number, period) need an undamped pendulum.
     ``arithmetic``: RATTLE's multiply-adds, as in :func:`pendulab.simulate_ensemble`: ``"auto"``
@@ -164,7 +170,8 @@ def sweep(
     ``out``: a directory (one Parquet file per chunk and ``_manifest.json``) or a ``.parquet`` file
     (chunks staged beside it, merged at the end); each chunk is written atomically as it finishes.
     ``resume=True`` continues a sweep of the same settings in ``out``, skipping the chunks already
-    there; with ``arithmetic="auto"`` it takes the arithmetic recorded there (a named one that differs
+    there; a sweep computed with another ``method`` is refused (one that records none ran "rattle");
+    with ``arithmetic="auto"`` it takes the arithmetic recorded there (a named one that differs
     is refused, and so is a sweep of another version of the arithmetic's bits, or of none recorded
     where this pendulab's version is not 1: start a new sweep then; a sweep written before the
     arithmetic was recorded continues with this run's and warns, ``RuntimeWarning``; refusals are
@@ -187,13 +194,13 @@ def sweep(
     """
     t0 = time.perf_counter()
     d = as_design(design)
-    spec = make_spec(d, quantity, pendulum, fixed, t_end, dt, settle_angle, arithmetic)
+    spec = make_spec(d, quantity, pendulum, fixed, t_end, dt, settle_angle, arithmetic, method)
     if d.n > limits.MAX_SAMPLES:
         raise limits.invalid("design", f"<{d.n} points>", f"at most {limits.MAX_SAMPLES:.0e} points")
-    if spec.t_end is not None and spec.dt is not None:  # trajectory-steps: the work of the whole sweep
-        limits.planned_steps(0.0, spec.t_end * d.n, spec.dt)
+    if spec.t_end is not None and spec.dt is not None:  # RATTLE sub-steps: the work of the whole sweep
+        limits.planned_steps(0.0, spec.t_end * d.n * spec.substeps, spec.dt)
     backend, workers, chunk_size = _check_backend(backend, scheduler, workers, chunk_size)
-    spec, recorded, unrecorded = resume_arithmetic(d, spec, arithmetic, out, resume)
+    spec, recorded, unrecorded = resume_settings(d, spec, arithmetic, out, resume)
     fp = fingerprint(d, recorded)
     units = {"point": "1", **{k: AXES[k] for k in d.names}, **spec.output_units()}
     meta = {"design": d.describe(), "spec": recorded.describe(), "fingerprint": fp, "columns": units}
@@ -205,7 +212,7 @@ def sweep(
     stats: dict[str, Any] = {"chunks": n_chunks, "chunk_size": size, "skipped": n_chunks - len(todo)}
     stats["computed"] = 0
     if progress is None:
-        work = len(todo) * size * (max(spec.steps, 1) / 2e8 if spec.simulated else 3e-6)
+        work = len(todo) * size * (max(spec.steps * spec.substeps, 1) / 2e8 if spec.simulated else 3e-6)
         progress = len(todo) > 1 and work > 3.0
     runner: Threads | Dask | None = None
     if todo:

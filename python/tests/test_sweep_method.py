@@ -1,0 +1,216 @@
+"""The integrator of sweeps (``pl.sweep(..., method=...)``, docs/sweeps.md): RATTLE (the default) or its
+symmetric compositions "rattle4", "rattle6", "rattle8", carried to the ensemble kernel (each point the
+numbers of ``pl.simulate_ensemble`` with that method, bit for bit), recorded (metadata, manifest), its
+sub-steps counted by the work bound, honoured on resume (another method refused, before any work; a
+record without a method ran RATTLE), and the same from a sweep file's ``[simulation] method`` and
+``pendulab sweep --method``; anything else refused naming the value and the allowed ones. Times in
+seconds, angles in radians, lengths in metres."""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import re
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from test_cli import assert_user_error, invoke
+
+import pendulab as pl
+from pendulab.sweeps import compute as sweep_compute
+from pendulab.sweeps.design import as_design
+from pendulab.sweeps.file import SweepFileError, load_sweep_file
+from pendulab.sweeps.resume import ResumeConflict
+from pendulab.validate.table import MAX_STEPS
+
+GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0])}
+QS = ["final_state", "max_sway", "energy_drift"]
+KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-2, "progress": False}
+ALLOWED = "'rattle', 'rattle4', 'rattle6', 'rattle8'"
+
+
+def _same(a: pl.SweepResult, b: pl.SweepResult) -> bool:
+    return list(a.units) == list(b.units) and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.units)
+
+
+def _manifest(out: Path) -> dict[str, Any]:
+    return json.loads((out / "_manifest.json").read_text())
+
+
+def _drop_chunk(out: Path, index: int) -> None:
+    """As if the run had been interrupted before chunk ``index`` was written."""
+    (out / f"chunk-{index:06d}.parquet").unlink()
+    m = _manifest(out)
+    m["chunks_done"] = [i for i in m["chunks_done"] if i != index]
+    m["complete"] = False
+    (out / "_manifest.json").write_text(json.dumps(m))
+
+
+def _counting(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    calls = [0]
+    real = sweep_compute._simulate
+
+    def counted(*args: Any) -> Any:
+        calls[0] += 1
+        return real(*args)
+
+    monkeypatch.setattr(sweep_compute, "_simulate", counted)
+    return calls
+
+
+def _sweep_file(tmp_path: Path, method: str | None) -> Path:
+    """GRID, QS and KW as a sweep file, with ``[simulation] method`` if given (chunks of 4)."""
+    key = "" if method is None else f"method = {method}\n"
+    path = tmp_path / f"sw-{len(list(tmp_path.glob('sw-*.toml')))}.toml"
+    path.write_text(
+        'quantity = ["final_state", "max_sway", "energy_drift"]\n'
+        "[grid]\ntheta0 = { start = 0.3, stop = 2.5, num = 5 }\nphi_dot0 = [0.0, 1.5, -2.0]\n"
+        f"[simulation]\nt_end = 0.2\ndt = 1e-2\n{key}[run]\nchunk_size = 4\n"
+    )
+    return path
+
+
+@pytest.mark.parametrize("method", ["rattle6", "rattle"])
+def test_a_sweep_is_simulate_ensemble_of_its_method_bit_for_bit(method: str) -> None:
+    """Every column of a sweep with a method (in chunks of 4) equals one simulate_ensemble call with
+    that method and the sweep's arithmetic over all points, bit for bit; the method is recorded; the
+    methods give other numbers (so the keyword reaches the kernel)."""
+    sw = pl.sweep(GRID, QS, method=method, chunk_size=4, **KW)
+    assert sw.metadata["spec"]["method"] == method
+    th, pd = np.meshgrid(GRID["theta0"], GRID["phi_dot0"], indexing="ij")
+    p = pl.Pendulum()
+    starts = np.array(
+        [p.state_from_angles(a, 0.0, 0.0, b).as_array() for a, b in zip(th.ravel(), pd.ravel(), strict=True)]
+    )
+    arithmetic = sw.metadata["spec"]["arithmetic"]
+    ens = pl.simulate_ensemble(p, starts, 0.2, dt=1e-2, method=method, arithmetic=arithmetic, progress=False)
+    assert ens.summary is not None
+    for k, name in enumerate("xyz"):
+        assert np.array_equal(sw[name], ens.final_x[:, k]), name
+        assert np.array_equal(sw["v" + name], ens.final_v[:, k]), name
+    for name in ("max_sway", "energy_drift"):
+        assert np.array_equal(sw[name], ens.summary[name]), name
+    other = pl.sweep(GRID, QS, method="rattle4" if method == "rattle6" else "rattle6", **KW)
+    assert not np.array_equal(sw["x"], other["x"])
+    assert _same(sw, pl.sweep(GRID, QS, method=method, **KW))  # whatever the chunking
+    if method == "rattle":
+        assert _same(sw, pl.sweep(GRID, QS, **KW))  # the default
+
+
+@pytest.mark.parametrize("bad", ["rk4", "RATTLE6", "dop853", "", 6, None])
+def test_a_bad_method_is_refused_naming_it_and_the_allowed_ones(bad: Any) -> None:
+    """Refused before any work, also where nothing integrates (as arithmetic is)."""
+    shown = repr(bad)
+    for quantity, kw in ((QS, KW), ("period", {"progress": False})):
+        with pytest.raises(pl.InvalidInputError) as e:
+            pl.sweep(GRID, quantity, method=bad, **kw)
+        assert f"method = {shown}: sweeps integrate with {ALLOWED}" in str(e.value), str(e.value)
+
+
+def test_exact_quantities_record_no_method() -> None:
+    exact = pl.sweep({"theta0": [0.5, 1.0], "phi_dot0": [1.0]}, "period", method="rattle8", progress=False)
+    assert "method" not in exact.metadata["spec"]
+
+
+def test_the_work_bound_counts_sub_steps() -> None:
+    """t_end·points/dt within the bound for RATTLE, not with 3 or 15 sub-steps per step: refused before
+    any work, the count the sub-steps' (the RATTLE sweep gets past the bound to the bad backend)."""
+    n = 15
+    t_end = MAX_STEPS / n * 1e-2 / 2
+    with pytest.raises(pl.InvalidInputError, match="backend"):
+        pl.sweep(GRID, "final_state", t_end=t_end, dt=1e-2, backend="nope", progress=False)
+    for method, substeps in (("rattle4", 3), ("rattle8", 15)):
+        with pytest.raises(pl.InvalidInputError, match=re.escape(f"{MAX_STEPS * substeps / 2:.3g} steps")):
+            pl.sweep(GRID, "final_state", t_end=t_end, dt=1e-2, method=method, backend="nope")
+
+
+def test_resume_with_another_method_is_refused(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A sweep recorded with rattle6, interrupted: resuming it with rattle or rattle4 is refused
+    before any work (ResumeConflict naming both and the fix); with rattle6 it finishes bit for bit.
+    With other settings different too, the generic refusal names every difference."""
+    out = tmp_path / "sw"
+    first = pl.sweep(GRID, QS, method="rattle6", out=out, chunk_size=4, **KW)
+    assert _manifest(out)["spec"]["method"] == "rattle6"
+    _drop_chunk(out, 1)
+    calls = _counting(monkeypatch)
+    for method in ("rattle", "rattle4"):
+        with pytest.raises(ResumeConflict) as e:
+            pl.sweep(GRID, QS, method=method, out=out, resume=True, **KW)
+        for needle in (f"method = {method!r} differs from 'rattle6'", str(out), "method='rattle6'"):
+            assert needle in str(e.value), (needle, str(e.value))
+    with pytest.raises(
+        pl.InvalidInputError, match=r"different sweep: dt .*method \('rattle6' there, 'rattle'"
+    ):
+        pl.sweep(GRID, QS, out=out, resume=True, t_end=0.2, dt=2e-2, progress=False)
+    assert calls == [0] and not (out / "chunk-000001.parquet").exists()
+    again = pl.sweep(GRID, QS, method="rattle6", out=out, resume=True, **KW)
+    assert calls == [1] and again.stats["computed"] == 1 and _same(first, pl.read_sweep(out))
+
+
+def test_a_sweep_that_records_no_method_ran_rattle(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A directory written before the method was recorded (its spec and fingerprint without it) resumes
+    with the default (RATTLE), its record staying without one, and refuses another method."""
+    out = tmp_path / "old"
+    first = pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
+    m = _manifest(out)
+    assert m["spec"].pop("method") == "rattle"
+    text = json.dumps({"design": as_design(GRID).fingerprint(), "spec": m["spec"]}, sort_keys=True)
+    m["fingerprint"] = hashlib.sha256(text.encode()).hexdigest()  # the fingerprint of the old format
+    (out / "_manifest.json").write_text(json.dumps(m))
+    _drop_chunk(out, 2)
+    calls = _counting(monkeypatch)
+    with pytest.raises(ResumeConflict, match=r"'rattle6' differs from 'rattle'.*records none"):
+        pl.sweep(GRID, QS, method="rattle6", out=out, resume=True, **KW)
+    assert calls == [0]
+    again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
+    assert calls == [1] and _same(first, pl.read_sweep(out))
+    assert "method" not in again.metadata["spec"] and "method" not in _manifest(out)["spec"]
+
+
+def test_sweep_file_key_and_cli_option(tmp_path: Path) -> None:
+    """``[simulation] method`` reaches pl.sweep (the same numbers as naming it there, recorded);
+    without it the method is RATTLE; ``pendulab sweep --method`` overrides the file's key."""
+    named = _sweep_file(tmp_path, '"rattle6"')
+    assert load_sweep_file(named).sweep_kwargs()["method"] == "rattle6"
+    assert load_sweep_file(named).sweep_kwargs(method="rattle4")["method"] == "rattle4"
+    assert load_sweep_file(_sweep_file(tmp_path, None)).sweep_kwargs()["method"] == "rattle"
+    for toml, option, want in (
+        (named, [], "rattle6"),
+        (named, ["--method", "rattle8"], "rattle8"),
+        (_sweep_file(tmp_path, None), [], "rattle"),
+    ):
+        out = tmp_path / f"out-{len(list(tmp_path.glob('out-*')))}"
+        code, _, stderr = invoke("sweep", str(toml), "--out", str(out), "--no-progress", *option)
+        assert code == 0, stderr
+        assert f"{'RATTLE' if want == 'rattle' else want} to t = 0.2 s" in stderr, stderr
+        res = pl.read_sweep(out)
+        assert res.metadata["spec"]["method"] == want and _manifest(out)["spec"]["method"] == want
+        assert _same(res, pl.sweep(GRID, QS, method=want, **KW)), (toml.read_text(), option)
+
+
+def test_bad_method_in_a_sweep_file_or_on_the_command_line(tmp_path: Path) -> None:
+    path = _sweep_file(tmp_path, '"rk4"')
+    with pytest.raises(SweepFileError) as e:
+        load_sweep_file(path)
+    assert f"{path}: [simulation] method = 'rk4': sweeps integrate with {ALLOWED}" in str(e.value)
+    code, out, err = invoke("sweep", str(path), "--out", str(tmp_path / "o"), "--no-progress")
+    assert_user_error(code, out, err, "[simulation] method = 'rk4'", ALLOWED)
+    good = _sweep_file(tmp_path, None)
+    code, out, err = invoke("sweep", str(good), "--out", str(tmp_path / "o"), "--method", "rk4")
+    assert_user_error(code, out, err, "--method: method = 'rk4'", ALLOWED)
+    assert not (tmp_path / "o").exists()
+
+
+def test_cli_resume_refuses_another_method(tmp_path: Path) -> None:
+    """The refusal names its fix as the command's options (``--method rattle6``)."""
+    out = tmp_path / "sw"
+    named = _sweep_file(tmp_path, '"rattle6"')
+    code, _, stderr = invoke("sweep", str(named), "--out", str(out), "--no-progress")
+    assert code == 0, stderr
+    _drop_chunk(out, 0)
+    code, stdout, stderr = invoke("sweep", str(named), "--out", str(out), "--resume", "--method", "rattle")
+    assert_user_error(code, stdout, stderr, "differs from 'rattle6'", "resume with --method rattle6")
+    code, stdout, stderr = invoke("sweep", str(named), "--out", str(out), "--resume", "--no-progress")
+    assert code == 0 and "computed 1, skipped 3" in stdout, stderr
