@@ -268,22 +268,28 @@ def test_the_recorded_cpu_names_the_core_behind_a_generic_model_name(tmp_path: P
 
 
 def test_ensemble_work_precision_table_from_synthetic_runs() -> None:
-    """bench/peers/ensemble_work_precision.py: per error level the least wall time of each method whose
-    largest error reaches it, and the C RK4 ensemble's time over the best Pendulab method's."""
+    """bench/peers/ensemble_work_precision.py: per error level (largest over the starts, then the
+    median) the least wall time of each method that reaches it, and the C RK4 ensemble's time over the
+    best Pendulab method's."""
     wp = _load("ensemble_work_precision")
-    rows = [
-        {"setting": 1e-3, "wall": 0.4, "max_error": 2e-7},
-        {"setting": 1e-2, "wall": 0.1, "max_error": 2e-3},
-    ]
+
+    def run(setting: float, wall: float, largest: float) -> dict[str, float]:
+        return {"setting": setting, "wall": wall, "max_error": largest, "median_error": largest / 10}
+
+    rows = [run(1e-3, 0.4, 2e-7), run(1e-2, 0.1, 2e-3)]
     assert (
         wp.cheapest(rows, 1e-6) == 0.4 and wp.cheapest(rows, 1e-2) == 0.1 and wp.cheapest(rows, 1e-9) is None
     )
+    assert wp.cheapest(rows, 1e-3, "median_error") == 0.1
     res = {
         "n": 8, "t_end": 10.0, "threads": 2, "arithmetic": "fused",
         "meta": {"date": "today", "cpu": "a CPU", "load_start": 0.1, "load_end": 0.2},
-        "runs": {"rattle6": [{"setting": 0.01, "wall": 0.05, "max_error": 1e-8}], "C rk4": rows},
+        "runs": {"rattle6": [run(0.01, 0.05, 1e-8)], "C rk4": rows},
     }  # fmt: skip
     text = wp.markdown(res)
-    line = next(x for x in text.splitlines() if x.startswith("| 1e-05 |"))
-    assert line == "| 1e-05 | 50 ms | 400 ms | 8.0 (`rattle6`) |"
-    assert "| 1e-09 | — | — | — |" in text and "a CPU" in text
+    largest, median = text.split("| median error ≤ |")
+    assert "| largest error ≤ | `rattle6` | `C rk4` |" in largest and "a CPU" in largest
+    assert "| 1e-05 | 50 ms | 400 ms | 8.0 (`rattle6`) |" in largest
+    assert "| 1e-09 | — | — | — |" in largest
+    # by the median (10× below each largest error) C RK4's coarse run reaches 1e-3
+    assert "| 1e-03 | 50 ms | 100 ms | 2.0 (`rattle6`) |" in median
