@@ -16,11 +16,11 @@ from typing import Any
 import numpy as np
 import pyarrow.parquet as pq
 import pytest
-from sweep_records import counting, drop_chunk, manifest, same
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
 import pendulab.integrators as integrators
+from pendulab.sweeps import compute as sweep_compute
 from pendulab.sweeps.design import as_design
 from pendulab.sweeps.file import SweepFileError, load_sweep_file
 
@@ -32,6 +32,35 @@ KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-3, "progress": False}
 def _cpu(monkeypatch: pytest.MonkeyPatch, fma: bool) -> None:
     """This process's "auto" as on a CPU with (True) or without (False) a fast fused multiply-add."""
     monkeypatch.setattr(integrators, "fused_is_fast", lambda: fma)
+
+
+def _same(a: pl.SweepResult, b: pl.SweepResult) -> bool:
+    return list(a.units) == list(b.units) and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.units)
+
+
+def _manifest(out: Path) -> dict[str, Any]:
+    return json.loads((out / "_manifest.json").read_text())
+
+
+def _drop_chunk(out: Path, index: int) -> None:
+    """As if the run had been interrupted before chunk ``index`` was written."""
+    (out / f"chunk-{index:06d}.parquet").unlink()
+    m = _manifest(out)
+    m["chunks_done"] = [i for i in m["chunks_done"] if i != index]
+    m["complete"] = False
+    (out / "_manifest.json").write_text(json.dumps(m))
+
+
+def _counting(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    calls = [0]
+    real = sweep_compute._simulate
+
+    def counted(*args: Any) -> Any:
+        calls[0] += 1
+        return real(*args)
+
+    monkeypatch.setattr(sweep_compute, "_simulate", counted)
+    return calls
 
 
 @pytest.mark.parametrize("arithmetic", ["unfused", "fused"])
@@ -50,7 +79,7 @@ def test_a_sweep_is_simulate_ensemble_of_its_arithmetic_bit_for_bit(arithmetic: 
     for k, name in enumerate("xyz"):
         assert np.array_equal(sw[name], ens.final_x[:, k]), name
         assert np.array_equal(sw["v" + name], ens.final_v[:, k]), name
-    assert not same(sw, other)
+    assert not _same(sw, other)
     assert sw.metadata["spec"]["arithmetic"] == arithmetic
 
 
@@ -64,9 +93,9 @@ def test_auto_is_resolved_once_and_recorded(
     _cpu(monkeypatch, fma)
     want = "fused" if fma else "unfused"
     sw = pl.sweep(GRID, QS, out=tmp_path / "d", chunk_size=4, **KW)
-    assert same(sw, pl.sweep(GRID, QS, arithmetic=want, **KW))
+    assert _same(sw, pl.sweep(GRID, QS, arithmetic=want, **KW))
     assert sw.metadata["spec"]["arithmetic"] == want
-    assert manifest(tmp_path / "d")["spec"]["arithmetic"] == want
+    assert _manifest(tmp_path / "d")["spec"]["arithmetic"] == want
     for path in sorted((tmp_path / "d").glob("chunk-*.parquet")):
         info = json.loads(pq.read_schema(path).metadata[b"pendulab_sweep"])
         assert info["spec"]["arithmetic"] == want, path
@@ -92,18 +121,18 @@ def test_resume_with_auto_adopts_the_recorded_arithmetic(
     pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
     recorded = "fused" if fma_first else "unfused"
     first = pl.sweep(GRID, QS, arithmetic=recorded, **KW)  # in memory (out's columns are read lazily)
-    drop_chunk(out, 2)
+    _drop_chunk(out, 2)
     _cpu(monkeypatch, not fma_first)
-    calls = counting(monkeypatch)
+    calls = _counting(monkeypatch)
     again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
     assert calls == [1] and again.stats["computed"] == 1
     assert (
-        again.metadata["spec"]["arithmetic"] == recorded and manifest(out)["spec"]["arithmetic"] == recorded
+        again.metadata["spec"]["arithmetic"] == recorded and _manifest(out)["spec"]["arithmetic"] == recorded
     )
-    assert same(first, again) and same(first, pl.read_sweep(out))
-    assert not same(first, pl.sweep(GRID, QS, **KW))  # this machine's own "auto" gives other bits
-    drop_chunk(out, 0)
-    assert same(first, pl.sweep(GRID, QS, out=out, resume=True, arithmetic=recorded, **KW))
+    assert _same(first, again) and _same(first, pl.read_sweep(out))
+    assert not _same(first, pl.sweep(GRID, QS, **KW))  # this machine's own "auto" gives other bits
+    _drop_chunk(out, 0)
+    assert _same(first, pl.sweep(GRID, QS, out=out, resume=True, arithmetic=recorded, **KW))
 
 
 def test_resume_refuses_a_conflicting_named_arithmetic(
@@ -114,8 +143,8 @@ def test_resume_refuses_a_conflicting_named_arithmetic(
     well is reported as a different sweep, with the arithmetic among the differences."""
     out = tmp_path / "sw"
     pl.sweep(GRID, QS, out=out, chunk_size=4, arithmetic="fused", **KW)
-    drop_chunk(out, 1)
-    calls = counting(monkeypatch)
+    _drop_chunk(out, 1)
+    calls = _counting(monkeypatch)
     with pytest.raises(pl.InvalidInputError) as e:
         pl.sweep(GRID, QS, out=out, resume=True, arithmetic="unfused", **KW)
     for needle in ("arithmetic = 'unfused' differs from 'fused'", str(out), "arithmetic='fused'", "'auto'"):
@@ -139,17 +168,17 @@ def test_a_sweep_that_records_no_arithmetic_resumes_with_a_warning(
     out = tmp_path / "old"
     pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
     first = pl.sweep(GRID, QS, **KW)  # in memory (out's columns are read lazily)
-    m = manifest(out)
+    m = _manifest(out)
     del m["spec"]["arithmetic"], m["spec"]["arithmetic_version"]
     text = json.dumps({"design": as_design(GRID).fingerprint(), "spec": m["spec"]}, sort_keys=True)
     m["fingerprint"] = hashlib.sha256(text.encode()).hexdigest()  # the fingerprint of the old format
     (out / "_manifest.json").write_text(json.dumps(m))
-    drop_chunk(out, 3)
-    calls = counting(monkeypatch)
+    _drop_chunk(out, 3)
+    calls = _counting(monkeypatch)
     with pytest.warns(RuntimeWarning, match=r"does not record the arithmetic .* the remaining chunks use"):
         again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
-    assert calls == [1] and same(first, again)  # written and resumed with this machine's "auto"
-    assert "arithmetic" not in again.metadata["spec"] and "arithmetic" not in manifest(out)["spec"]
+    assert calls == [1] and _same(first, again)  # written and resumed with this machine's "auto"
+    assert "arithmetic" not in again.metadata["spec"] and "arithmetic" not in _manifest(out)["spec"]
     assert pl.sweep(GRID, QS, out=out, resume=True, **KW).stats["computed"] == 0  # no warning: nothing to do
 
 
@@ -189,8 +218,8 @@ def test_sweep_file_key_and_cli_option(tmp_path: Path, monkeypatch: pytest.Monke
         assert code == 0, stderr
         assert f"; arithmetic {want}\n" in stdout, (option, stdout)
         res = pl.read_sweep(out)
-        assert res.metadata["spec"]["arithmetic"] == want and manifest(out)["spec"]["arithmetic"] == want
-        assert same(res, pl.sweep(GRID, QS, arithmetic=want, **KW)), (toml.read_text(), option)
+        assert res.metadata["spec"]["arithmetic"] == want and _manifest(out)["spec"]["arithmetic"] == want
+        assert _same(res, pl.sweep(GRID, QS, arithmetic=want, **KW)), (toml.read_text(), option)
 
 
 @pytest.mark.parametrize("value", ['"fma"', '"FUSED"', "3", "true"])
@@ -224,8 +253,8 @@ def test_cli_resume_refuses_a_conflicting_arithmetic(tmp_path: Path, monkeypatch
     )
     assert code == 0, stderr
     first = pl.sweep(GRID, QS, arithmetic="fused", **KW)
-    drop_chunk(out, 2)
-    calls = counting(monkeypatch)
+    _drop_chunk(out, 2)
+    calls = _counting(monkeypatch)
     unnamed = _sweep_file(tmp_path, None)
     for toml, option in (
         (unnamed, ["--arithmetic", "unfused"]),
@@ -241,6 +270,6 @@ def test_cli_resume_refuses_a_conflicting_arithmetic(tmp_path: Path, monkeypatch
         )
         assert code == 0, stderr
         assert "computed 1, skipped 3" in stdout and "; arithmetic fused\n" in stdout, stdout
-        assert same(first, pl.read_sweep(out)) and manifest(out)["spec"]["arithmetic"] == "fused"
-        drop_chunk(out, 2)
+        assert _same(first, pl.read_sweep(out)) and _manifest(out)["spec"]["arithmetic"] == "fused"
+        _drop_chunk(out, 2)
     assert calls == [2]
