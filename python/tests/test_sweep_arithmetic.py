@@ -11,56 +11,22 @@ from __future__ import annotations
 import hashlib
 import json
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import pyarrow.parquet as pq
 import pytest
+from sweep_records import GRID, KW, QS, arithmetic_sweep_file, counting, drop_chunk, manifest, same
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
 import pendulab.integrators as integrators
-from pendulab.sweeps import compute as sweep_compute
 from pendulab.sweeps.design import as_design
 from pendulab.sweeps.file import SweepFileError, load_sweep_file
-
-GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0])}
-QS = ["final_state", "energy_drift"]
-KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-3, "progress": False}
 
 
 def _cpu(monkeypatch: pytest.MonkeyPatch, fma: bool) -> None:
     """This process's "auto" as on a CPU with (True) or without (False) a fast fused multiply-add."""
     monkeypatch.setattr(integrators, "fused_is_fast", lambda: fma)
-
-
-def _same(a: pl.SweepResult, b: pl.SweepResult) -> bool:
-    return list(a.units) == list(b.units) and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.units)
-
-
-def _manifest(out: Path) -> dict[str, Any]:
-    return json.loads((out / "_manifest.json").read_text())
-
-
-def _drop_chunk(out: Path, index: int) -> None:
-    """As if the run had been interrupted before chunk ``index`` was written."""
-    (out / f"chunk-{index:06d}.parquet").unlink()
-    m = _manifest(out)
-    m["chunks_done"] = [i for i in m["chunks_done"] if i != index]
-    m["complete"] = False
-    (out / "_manifest.json").write_text(json.dumps(m))
-
-
-def _counting(monkeypatch: pytest.MonkeyPatch) -> list[int]:
-    calls = [0]
-    real = sweep_compute._simulate
-
-    def counted(*args: Any) -> Any:
-        calls[0] += 1
-        return real(*args)
-
-    monkeypatch.setattr(sweep_compute, "_simulate", counted)
-    return calls
 
 
 @pytest.mark.parametrize("arithmetic", ["unfused", "fused"])
@@ -79,7 +45,7 @@ def test_a_sweep_is_simulate_ensemble_of_its_arithmetic_bit_for_bit(arithmetic: 
     for k, name in enumerate("xyz"):
         assert np.array_equal(sw[name], ens.final_x[:, k]), name
         assert np.array_equal(sw["v" + name], ens.final_v[:, k]), name
-    assert not _same(sw, other)
+    assert not same(sw, other)
     assert sw.metadata["spec"]["arithmetic"] == arithmetic
 
 
@@ -93,9 +59,9 @@ def test_auto_is_resolved_once_and_recorded(
     _cpu(monkeypatch, fma)
     want = "fused" if fma else "unfused"
     sw = pl.sweep(GRID, QS, out=tmp_path / "d", chunk_size=4, **KW)
-    assert _same(sw, pl.sweep(GRID, QS, arithmetic=want, **KW))
+    assert same(sw, pl.sweep(GRID, QS, arithmetic=want, **KW))
     assert sw.metadata["spec"]["arithmetic"] == want
-    assert _manifest(tmp_path / "d")["spec"]["arithmetic"] == want
+    assert manifest(tmp_path / "d")["spec"]["arithmetic"] == want
     for path in sorted((tmp_path / "d").glob("chunk-*.parquet")):
         info = json.loads(pq.read_schema(path).metadata[b"pendulab_sweep"])
         assert info["spec"]["arithmetic"] == want, path
@@ -121,18 +87,18 @@ def test_resume_with_auto_adopts_the_recorded_arithmetic(
     pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
     recorded = "fused" if fma_first else "unfused"
     first = pl.sweep(GRID, QS, arithmetic=recorded, **KW)  # in memory (out's columns are read lazily)
-    _drop_chunk(out, 2)
+    drop_chunk(out, 2)
     _cpu(monkeypatch, not fma_first)
-    calls = _counting(monkeypatch)
+    calls = counting(monkeypatch)
     again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
     assert calls == [1] and again.stats["computed"] == 1
     assert (
-        again.metadata["spec"]["arithmetic"] == recorded and _manifest(out)["spec"]["arithmetic"] == recorded
+        again.metadata["spec"]["arithmetic"] == recorded and manifest(out)["spec"]["arithmetic"] == recorded
     )
-    assert _same(first, again) and _same(first, pl.read_sweep(out))
-    assert not _same(first, pl.sweep(GRID, QS, **KW))  # this machine's own "auto" gives other bits
-    _drop_chunk(out, 0)
-    assert _same(first, pl.sweep(GRID, QS, out=out, resume=True, arithmetic=recorded, **KW))
+    assert same(first, again) and same(first, pl.read_sweep(out))
+    assert not same(first, pl.sweep(GRID, QS, **KW))  # this machine's own "auto" gives other bits
+    drop_chunk(out, 0)
+    assert same(first, pl.sweep(GRID, QS, out=out, resume=True, arithmetic=recorded, **KW))
 
 
 def test_resume_refuses_a_conflicting_named_arithmetic(
@@ -143,8 +109,8 @@ def test_resume_refuses_a_conflicting_named_arithmetic(
     well is reported as a different sweep, with the arithmetic among the differences."""
     out = tmp_path / "sw"
     pl.sweep(GRID, QS, out=out, chunk_size=4, arithmetic="fused", **KW)
-    _drop_chunk(out, 1)
-    calls = _counting(monkeypatch)
+    drop_chunk(out, 1)
+    calls = counting(monkeypatch)
     with pytest.raises(pl.InvalidInputError) as e:
         pl.sweep(GRID, QS, out=out, resume=True, arithmetic="unfused", **KW)
     for needle in ("arithmetic = 'unfused' differs from 'fused'", str(out), "arithmetic='fused'", "'auto'"):
@@ -168,30 +134,18 @@ def test_a_sweep_that_records_no_arithmetic_resumes_with_a_warning(
     out = tmp_path / "old"
     pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
     first = pl.sweep(GRID, QS, **KW)  # in memory (out's columns are read lazily)
-    m = _manifest(out)
+    m = manifest(out)
     del m["spec"]["arithmetic"], m["spec"]["arithmetic_version"]
     text = json.dumps({"design": as_design(GRID).fingerprint(), "spec": m["spec"]}, sort_keys=True)
     m["fingerprint"] = hashlib.sha256(text.encode()).hexdigest()  # the fingerprint of the old format
     (out / "_manifest.json").write_text(json.dumps(m))
-    _drop_chunk(out, 3)
-    calls = _counting(monkeypatch)
+    drop_chunk(out, 3)
+    calls = counting(monkeypatch)
     with pytest.warns(RuntimeWarning, match=r"does not record the arithmetic .* the remaining chunks use"):
         again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
-    assert calls == [1] and _same(first, again)  # written and resumed with this machine's "auto"
-    assert "arithmetic" not in again.metadata["spec"] and "arithmetic" not in _manifest(out)["spec"]
+    assert calls == [1] and same(first, again)  # written and resumed with this machine's "auto"
+    assert "arithmetic" not in again.metadata["spec"] and "arithmetic" not in manifest(out)["spec"]
     assert pl.sweep(GRID, QS, out=out, resume=True, **KW).stats["computed"] == 0  # no warning: nothing to do
-
-
-def _sweep_file(tmp_path: Path, arithmetic: str | None) -> Path:
-    """GRID, QS and KW as a sweep file, with ``[simulation] arithmetic`` if given (chunks of 4)."""
-    key = "" if arithmetic is None else f"arithmetic = {arithmetic}\n"
-    path = tmp_path / f"sw-{len(list(tmp_path.glob('sw-*.toml')))}.toml"
-    path.write_text(
-        'quantity = ["final_state", "energy_drift"]\n'
-        "[grid]\ntheta0 = { start = 0.3, stop = 2.5, num = 5 }\nphi_dot0 = [0.0, 1.5, -2.0]\n"
-        f"[simulation]\nt_end = 0.2\ndt = 1e-3\n{key}[run]\nchunk_size = 4\n"
-    )
-    return path
 
 
 @pytest.mark.parametrize("fma", [True, False])
@@ -202,24 +156,24 @@ def test_sweep_file_key_and_cli_option(tmp_path: Path, monkeypatch: pytest.Monke
     _cpu(monkeypatch, fma)
     auto = "fused" if fma else "unfused"
     other = "unfused" if fma else "fused"
-    named = _sweep_file(tmp_path, f'"{other}"')
+    named = arithmetic_sweep_file(tmp_path, f'"{other}"')
     assert load_sweep_file(named).sweep_kwargs()["arithmetic"] == other
     assert load_sweep_file(named).sweep_kwargs(arithmetic="auto")["arithmetic"] == "auto"
-    assert load_sweep_file(_sweep_file(tmp_path, None)).sweep_kwargs()["arithmetic"] == "auto"
+    assert load_sweep_file(arithmetic_sweep_file(tmp_path, None)).sweep_kwargs()["arithmetic"] == "auto"
     for toml, option, want in (
         (named, [], other),
         (named, ["--arithmetic", auto], auto),
         (named, ["--arithmetic", "auto"], auto),
-        (_sweep_file(tmp_path, None), [], auto),
-        (_sweep_file(tmp_path, '"auto"'), ["--arithmetic", other], other),
+        (arithmetic_sweep_file(tmp_path, None), [], auto),
+        (arithmetic_sweep_file(tmp_path, '"auto"'), ["--arithmetic", other], other),
     ):
         out = tmp_path / f"out-{len(list(tmp_path.glob('out-*')))}"
         code, stdout, stderr = invoke("sweep", str(toml), "--out", str(out), "--no-progress", *option)
         assert code == 0, stderr
         assert f"; arithmetic {want}\n" in stdout, (option, stdout)
         res = pl.read_sweep(out)
-        assert res.metadata["spec"]["arithmetic"] == want and _manifest(out)["spec"]["arithmetic"] == want
-        assert _same(res, pl.sweep(GRID, QS, arithmetic=want, **KW)), (toml.read_text(), option)
+        assert res.metadata["spec"]["arithmetic"] == want and manifest(out)["spec"]["arithmetic"] == want
+        assert same(res, pl.sweep(GRID, QS, arithmetic=want, **KW)), (toml.read_text(), option)
 
 
 @pytest.mark.parametrize("value", ['"fma"', '"FUSED"', "3", "true"])
@@ -228,14 +182,14 @@ def test_bad_arithmetic_in_a_sweep_file_or_on_the_command_line(tmp_path: Path, v
     before it is, by pl.sweep's check: the key or option, the value and the allowed ones; exit code 2."""
     allowed = "one of 'auto', 'unfused', 'fused'"
     shown = value.replace('"', "'") if value.startswith('"') else value.capitalize()  # TOML true: True
-    path = _sweep_file(tmp_path, value)
+    path = arithmetic_sweep_file(tmp_path, value)
     with pytest.raises(SweepFileError) as e:
         load_sweep_file(path)
     assert f"{path}: [simulation] invalid arithmetic = {shown}: {allowed}" in str(e.value), str(e.value)
     code, out, err = invoke("sweep", str(path), "--out", str(tmp_path / "o"), "--no-progress")
     assert_user_error(code, out, err, "[simulation] invalid arithmetic", shown, allowed)
     if value.startswith('"'):
-        good = _sweep_file(tmp_path, None)
+        good = arithmetic_sweep_file(tmp_path, None)
         code, out, err = invoke("sweep", str(good), "--out", str(tmp_path / "o"), "--arithmetic", value[1:-1])
         assert_user_error(code, out, err, "--arithmetic", f"invalid arithmetic = {shown}", allowed)
     assert not (tmp_path / "o").exists()
@@ -249,17 +203,17 @@ def test_cli_resume_refuses_a_conflicting_arithmetic(tmp_path: Path, monkeypatch
     _cpu(monkeypatch, False)  # this CPU's "auto" is unfused: resuming with it must not mix in unfused chunks
     out = tmp_path / "sw"
     code, _, stderr = invoke(
-        "sweep", str(_sweep_file(tmp_path, '"fused"')), "--out", str(out), "--no-progress"
+        "sweep", str(arithmetic_sweep_file(tmp_path, '"fused"')), "--out", str(out), "--no-progress"
     )
     assert code == 0, stderr
     first = pl.sweep(GRID, QS, arithmetic="fused", **KW)
-    _drop_chunk(out, 2)
-    calls = _counting(monkeypatch)
-    unnamed = _sweep_file(tmp_path, None)
+    drop_chunk(out, 2)
+    calls = counting(monkeypatch)
+    unnamed = arithmetic_sweep_file(tmp_path, None)
     for toml, option in (
         (unnamed, ["--arithmetic", "unfused"]),
-        (_sweep_file(tmp_path, '"unfused"'), []),
-        (_sweep_file(tmp_path, '"fused"'), ["--arithmetic", "unfused"]),
+        (arithmetic_sweep_file(tmp_path, '"unfused"'), []),
+        (arithmetic_sweep_file(tmp_path, '"fused"'), ["--arithmetic", "unfused"]),
     ):
         code, stdout, stderr = invoke("sweep", str(toml), "--out", str(out), "--resume", *option)
         assert_user_error(code, stdout, stderr, "arithmetic = 'unfused' differs from 'fused'", str(out))
@@ -270,6 +224,6 @@ def test_cli_resume_refuses_a_conflicting_arithmetic(tmp_path: Path, monkeypatch
         )
         assert code == 0, stderr
         assert "computed 1, skipped 3" in stdout and "; arithmetic fused\n" in stdout, stdout
-        assert _same(first, pl.read_sweep(out)) and _manifest(out)["spec"]["arithmetic"] == "fused"
-        _drop_chunk(out, 2)
+        assert same(first, pl.read_sweep(out)) and manifest(out)["spec"]["arithmetic"] == "fused"
+        drop_chunk(out, 2)
     assert calls == [2]

@@ -20,8 +20,8 @@ from typing import Any
 import numpy as np
 import pyarrow.parquet as pq
 import pytest
+from sweep_records import GRID, KW, QS, arithmetic_sweep_file, counting, drop_chunk, manifest, same
 from test_cli import assert_user_error, invoke
-from test_sweep_arithmetic import GRID, KW, QS, _counting, _drop_chunk, _manifest, _same, _sweep_file
 
 import pendulab as pl
 from pendulab import _core
@@ -34,7 +34,7 @@ from pendulab.sweeps.resume import ResumeConflict
 def _rewrite(out: Path, **spec: Any) -> None:
     """The manifest in ``out`` as a build that records ``spec``'s keys so would have written it (a value
     None: the key left out, as before it was recorded), with that build's fingerprint."""
-    m = _manifest(out)
+    m = manifest(out)
     for key, value in spec.items():
         if value is None:
             m["spec"].pop(key, None)
@@ -62,7 +62,7 @@ def _interrupted(tmp_path: Path, computed_with: str, **spec: Any) -> Path:
     out = tmp_path / f"sw-{computed_with}"
     pl.sweep(GRID, QS, out=out, chunk_size=4, arithmetic=computed_with, **KW)
     _rewrite(out, **spec)
-    _drop_chunk(out, 1)
+    drop_chunk(out, 1)
     return out
 
 
@@ -77,7 +77,7 @@ def test_the_version_of_the_arithmetic_is_recorded(tmp_path: Path) -> None:
         sw = pl.sweep(GRID, QS, out=out, chunk_size=4, arithmetic=arithmetic, **KW)
         want = _core.arithmetic_version(arithmetic)
         assert sw.metadata["spec"]["arithmetic_version"] == want
-        assert _manifest(out)["spec"]["arithmetic_version"] == want
+        assert manifest(out)["spec"]["arithmetic_version"] == want
         for path in sorted(out.glob("chunk-*.parquet")):
             info = json.loads(pq.read_schema(path).metadata[b"pendulab_sweep"])
             assert info["spec"]["arithmetic_version"] == want, path
@@ -91,14 +91,14 @@ def test_resume_refuses_another_version(tmp_path: Path, monkeypatch: pytest.Monk
     """A sweep recorded with version 2 of the fused arithmetic (by a later build), resumed here (1):
     refused before any work, naming both versions and a new out, with "auto" and with "fused"."""
     out = _interrupted(tmp_path, "fused", arithmetic_version=2)
-    calls = _counting(monkeypatch)
+    calls = counting(monkeypatch)
     with pytest.raises(ResumeConflict) as e:
         pl.sweep(GRID, QS, out=out, resume=True, arithmetic=asked, **KW)
     text = str(e.value)
     for needle in (str(out), "fused arithmetic of version 2", "of version 1", "new out"):
         assert needle in text, (needle, text)
     assert calls == [0] and not (out / "chunk-000001.parquet").exists()
-    assert _manifest(out)["spec"]["arithmetic_version"] == 2
+    assert manifest(out)["spec"]["arithmetic_version"] == 2
 
 
 def test_a_fused_sweep_without_a_version_is_refused_once_the_version_changed(
@@ -109,7 +109,7 @@ def test_a_fused_sweep_without_a_version_is_refused_once_the_version_changed(
     records none, naming versions 1 and 2; an unfused one of the same age resumes there."""
     out = _interrupted(tmp_path, "fused", arithmetic_version=None)
     _versions(monkeypatch, fused=2)
-    calls = _counting(monkeypatch)
+    calls = counting(monkeypatch)
     with pytest.raises(ResumeConflict) as e:
         pl.sweep(GRID, QS, out=out, resume=True, **KW)
     text = str(e.value)
@@ -128,12 +128,12 @@ def test_a_sweep_without_a_version_at_version_1_resumes_bit_for_bit(
     have not changed): the missing chunk is computed, the result is the uninterrupted sweep's bit for
     bit, and the record (and fingerprint) stays as it was, so a second resume finds it whole."""
     out = _interrupted(tmp_path, arithmetic, arithmetic_version=None)
-    before = _manifest(out)
+    before = manifest(out)
     whole = pl.sweep(GRID, QS, arithmetic=arithmetic, **KW)
-    calls = _counting(monkeypatch)
+    calls = counting(monkeypatch)
     again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
-    assert calls == [1] and _same(whole, again) and _same(whole, pl.read_sweep(out))
-    after = _manifest(out)
+    assert calls == [1] and same(whole, again) and same(whole, pl.read_sweep(out))
+    after = manifest(out)
     assert "arithmetic_version" not in after["spec"] and after["fingerprint"] == before["fingerprint"]
     assert pl.sweep(GRID, QS, out=out, resume=True, **KW).stats["computed"] == 0
 
@@ -145,7 +145,7 @@ def test_a_sweep_without_an_arithmetic_is_refused_where_fused_changed(
     with fused of version 2: refused (no chunk there can be of it), suggesting unfused or a new out."""
     out = _interrupted(tmp_path, "fused", arithmetic=None, arithmetic_version=None)
     _versions(monkeypatch, fused=2)
-    calls = _counting(monkeypatch)
+    calls = counting(monkeypatch)
     with pytest.raises(
         ResumeConflict, match=r"'fused', whose bits are of version 2 now.*arithmetic='unfused'"
     ):
@@ -178,22 +178,30 @@ def test_the_fix_is_spelled_as_keywords_in_python_and_as_options_on_the_command_
     ``--arithmetic auto`` and ``--out``, and no Python keyword; the same for another version."""
     out = tmp_path / "sw"
     code, _, stderr = invoke(
-        "sweep", str(_sweep_file(tmp_path, '"fused"')), "--out", str(out), "--no-progress"
+        "sweep", str(arithmetic_sweep_file(tmp_path, '"fused"')), "--out", str(out), "--no-progress"
     )
     assert code == 0, stderr
-    _drop_chunk(out, 2)
+    drop_chunk(out, 2)
     with pytest.raises(ResumeConflict) as e:
         pl.sweep(GRID, QS, out=out, resume=True, arithmetic="unfused", **KW)
     api = str(e.value)
     assert "resume with arithmetic='fused' (or arithmetic='auto'," in api and "give another out" in api, api
     assert "--" not in api, api
     code, stdout, stderr = invoke(
-        "sweep", str(_sweep_file(tmp_path, None)), "--out", str(out), "--resume", "--arithmetic", "unfused"
+        "sweep",
+        str(arithmetic_sweep_file(tmp_path, None)),
+        "--out",
+        str(out),
+        "--resume",
+        "--arithmetic",
+        "unfused",
     )
     assert_user_error(
         code, stdout, stderr, "resume with --arithmetic fused (or --arithmetic auto,", "give another --out"
     )
     assert "arithmetic='" not in stderr and " out" not in stderr.replace("--out", ""), stderr
     _rewrite(out, arithmetic_version=2)
-    code, stdout, stderr = invoke("sweep", str(_sweep_file(tmp_path, None)), "--out", str(out), "--resume")
+    code, stdout, stderr = invoke(
+        "sweep", str(arithmetic_sweep_file(tmp_path, None)), "--out", str(out), "--resume"
+    )
     assert_user_error(code, stdout, stderr, "of version 2", "of version 1", "into a new --out")

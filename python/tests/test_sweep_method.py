@@ -16,10 +16,10 @@ from typing import Any
 
 import numpy as np
 import pytest
+from sweep_records import counting, drop_chunk, manifest, same
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
-from pendulab.sweeps import compute as sweep_compute
 from pendulab.sweeps.design import as_design
 from pendulab.sweeps.file import SweepFileError, load_sweep_file
 from pendulab.sweeps.resume import ResumeConflict
@@ -29,35 +29,6 @@ GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0
 QS = ["final_state", "max_sway", "energy_drift"]
 KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-2, "progress": False}
 ALLOWED = "'rattle', 'rattle4', 'rattle6', 'rattle8'"
-
-
-def _same(a: pl.SweepResult, b: pl.SweepResult) -> bool:
-    return list(a.units) == list(b.units) and all(np.array_equal(a[k], b[k], equal_nan=True) for k in a.units)
-
-
-def _manifest(out: Path) -> dict[str, Any]:
-    return json.loads((out / "_manifest.json").read_text())
-
-
-def _drop_chunk(out: Path, index: int) -> None:
-    """As if the run had been interrupted before chunk ``index`` was written."""
-    (out / f"chunk-{index:06d}.parquet").unlink()
-    m = _manifest(out)
-    m["chunks_done"] = [i for i in m["chunks_done"] if i != index]
-    m["complete"] = False
-    (out / "_manifest.json").write_text(json.dumps(m))
-
-
-def _counting(monkeypatch: pytest.MonkeyPatch) -> list[int]:
-    calls = [0]
-    real = sweep_compute._simulate
-
-    def counted(*args: Any) -> Any:
-        calls[0] += 1
-        return real(*args)
-
-    monkeypatch.setattr(sweep_compute, "_simulate", counted)
-    return calls
 
 
 def _sweep_file(tmp_path: Path, method: str | None) -> Path:
@@ -94,9 +65,9 @@ def test_a_sweep_is_simulate_ensemble_of_its_method_bit_for_bit(method: str) -> 
         assert np.array_equal(sw[name], ens.summary[name]), name
     other = pl.sweep(GRID, QS, method="rattle4" if method == "rattle6" else "rattle6", **KW)
     assert not np.array_equal(sw["x"], other["x"])
-    assert _same(sw, pl.sweep(GRID, QS, method=method, **KW))  # whatever the chunking
+    assert same(sw, pl.sweep(GRID, QS, method=method, **KW))  # whatever the chunking
     if method == "rattle":
-        assert _same(sw, pl.sweep(GRID, QS, **KW))  # the default
+        assert same(sw, pl.sweep(GRID, QS, **KW))  # the default
 
 
 @pytest.mark.parametrize("bad", ["rk4", "RATTLE6", "dop853", "", 6, None])
@@ -132,9 +103,9 @@ def test_resume_with_another_method_is_refused(tmp_path: Path, monkeypatch: pyte
     With other settings different too, the generic refusal names every difference."""
     out = tmp_path / "sw"
     first = pl.sweep(GRID, QS, method="rattle6", out=out, chunk_size=4, **KW)
-    assert _manifest(out)["spec"]["method"] == "rattle6"
-    _drop_chunk(out, 1)
-    calls = _counting(monkeypatch)
+    assert manifest(out)["spec"]["method"] == "rattle6"
+    drop_chunk(out, 1)
+    calls = counting(monkeypatch)
     for method in ("rattle", "rattle4"):
         with pytest.raises(ResumeConflict) as e:
             pl.sweep(GRID, QS, method=method, out=out, resume=True, **KW)
@@ -146,7 +117,7 @@ def test_resume_with_another_method_is_refused(tmp_path: Path, monkeypatch: pyte
         pl.sweep(GRID, QS, out=out, resume=True, t_end=0.2, dt=2e-2, progress=False)
     assert calls == [0] and not (out / "chunk-000001.parquet").exists()
     again = pl.sweep(GRID, QS, method="rattle6", out=out, resume=True, **KW)
-    assert calls == [1] and again.stats["computed"] == 1 and _same(first, pl.read_sweep(out))
+    assert calls == [1] and again.stats["computed"] == 1 and same(first, pl.read_sweep(out))
 
 
 def test_a_sweep_that_records_no_method_ran_rattle(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -154,19 +125,19 @@ def test_a_sweep_that_records_no_method_ran_rattle(tmp_path: Path, monkeypatch: 
     with the default (RATTLE), its record staying without one, and refuses another method."""
     out = tmp_path / "old"
     first = pl.sweep(GRID, QS, out=out, chunk_size=4, **KW)
-    m = _manifest(out)
+    m = manifest(out)
     assert m["spec"].pop("method") == "rattle"
     text = json.dumps({"design": as_design(GRID).fingerprint(), "spec": m["spec"]}, sort_keys=True)
     m["fingerprint"] = hashlib.sha256(text.encode()).hexdigest()  # the fingerprint of the old format
     (out / "_manifest.json").write_text(json.dumps(m))
-    _drop_chunk(out, 2)
-    calls = _counting(monkeypatch)
+    drop_chunk(out, 2)
+    calls = counting(monkeypatch)
     with pytest.raises(ResumeConflict, match=r"'rattle6' differs from 'rattle'.*records none"):
         pl.sweep(GRID, QS, method="rattle6", out=out, resume=True, **KW)
     assert calls == [0]
     again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
-    assert calls == [1] and _same(first, pl.read_sweep(out))
-    assert "method" not in again.metadata["spec"] and "method" not in _manifest(out)["spec"]
+    assert calls == [1] and same(first, pl.read_sweep(out))
+    assert "method" not in again.metadata["spec"] and "method" not in manifest(out)["spec"]
 
 
 def test_sweep_file_key_and_cli_option(tmp_path: Path) -> None:
@@ -186,8 +157,8 @@ def test_sweep_file_key_and_cli_option(tmp_path: Path) -> None:
         assert code == 0, stderr
         assert f"{'RATTLE' if want == 'rattle' else want} to t = 0.2 s" in stderr, stderr
         res = pl.read_sweep(out)
-        assert res.metadata["spec"]["method"] == want and _manifest(out)["spec"]["method"] == want
-        assert _same(res, pl.sweep(GRID, QS, method=want, **KW)), (toml.read_text(), option)
+        assert res.metadata["spec"]["method"] == want and manifest(out)["spec"]["method"] == want
+        assert same(res, pl.sweep(GRID, QS, method=want, **KW)), (toml.read_text(), option)
 
 
 def test_bad_method_in_a_sweep_file_or_on_the_command_line(tmp_path: Path) -> None:
@@ -209,7 +180,7 @@ def test_cli_resume_refuses_another_method(tmp_path: Path) -> None:
     named = _sweep_file(tmp_path, '"rattle6"')
     code, _, stderr = invoke("sweep", str(named), "--out", str(out), "--no-progress")
     assert code == 0, stderr
-    _drop_chunk(out, 0)
+    drop_chunk(out, 0)
     code, stdout, stderr = invoke("sweep", str(named), "--out", str(out), "--resume", "--method", "rattle")
     assert_user_error(code, stdout, stderr, "differs from 'rattle6'", "resume with --method rattle6")
     code, stdout, stderr = invoke("sweep", str(named), "--out", str(out), "--resume", "--no-progress")
