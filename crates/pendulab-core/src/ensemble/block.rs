@@ -174,6 +174,9 @@ impl Block {
             let mut tile = Tile::<T, P>::load(self, o);
             if !COMPOSED {
                 let h = stages.h(0);
+                // tracked inline, not through `track_tile`: with it, the one-pendulum form with the
+                // summary executes 2 % more instructions per step (cachegrind, x86-64-v3,
+                // examples/ensemble_forms.rs SUMMARY=1; the same for the damped form)
                 for j in 1..=chunk {
                     tile.step::<A, false>(h, self.damped);
                     if track.summary {

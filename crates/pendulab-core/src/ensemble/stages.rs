@@ -91,6 +91,9 @@ mod tests {
             let total: f64 = (0..len).map(|k| s.h(k)).sum();
             assert!((total - 0.01).abs() < 1e-15, "{method:?}: Σ h_k = {total}");
             assert!((0..len).any(|k| s.h(k) < 0.0), "{method:?} has a backward sub-step");
+            // tile.rs (`Tile::rattle`): the first sub-step is forward, so it leaves every zero
+            // component +0, and the backward sub-steps' −0 kick components cannot change a sign
+            assert!(s.h(0) > 0.0, "{method:?} begins with a forward sub-step");
         }
         assert!(DISTINCT >= Stages::of(Method::Rattle8, 1.0).unwrap().distinct_len());
     }

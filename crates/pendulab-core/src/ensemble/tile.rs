@@ -227,7 +227,10 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         let half = 0.5 * h;
         // (0, 0, −g)·(h/2) as the single path computes it: 0·(h/2) is +0 for RATTLE's dt > 0 (the
         // constant, which the compiler folds: 8 % fewer instructions than the product at
-        // x86-64-v3), and −0 for a composition's backward sub-steps
+        // x86-64-v3), and −0 for a composition's backward sub-steps. That −0 never shows in a
+        // result: a composition begins with a forward sub-step (stages.rs, tested), whose +0 kick
+        // makes every zero component of the state +0, and +0 + (−0) = +0 + (+0) = +0, so a
+        // mutation of it to +0 is not observable; it is kept to mirror `Composition::step`
         let zero = if COMPOSED { 0.0 * half } else { 0.0 };
         let kick = |t: &Self, i: usize| DVec3::new(zero, zero, -t.params.g(i) * half);
         let mut quads = Quads::new();
