@@ -41,6 +41,14 @@ export function numberInput(row: HTMLElement, label: string, name: string, value
   return i;
 }
 
+/** The refusal of the first of `list` (pendulums of mode `own`, numbered from `first`: 2 for the second
+ *  pendulum, 3 for the rows of pendulums 3 and 4) whose length, mass or θ₀ `twinProblem` refuses, naming
+ *  that pendulum (`twin.badOwn`); null when every one is fine. */
+export function ownRefusal(list: readonly TwinOptions[], first: number): string | null {
+  const bad = list.findIndex((o) => twinProblem({ ...o, mode: 'own' }) !== null);
+  return bad < 0 ? null : t('twin.badOwn', { n: first + bad });
+}
+
 export class ExtraPendulums {
   readonly extras: Extra[] = [];
   private readonly list: HTMLElement;
@@ -133,14 +141,11 @@ export class ExtraPendulums {
   /** Starts every extra pendulum as a copy of the first (`s`) with its own length, mass and θ₀; false (and
    *  a message) when an input is out of range. */
   start(s: Status): boolean {
-    const opts: TwinOptions[] = [];
-    for (const e of this.extras) {
-      const o: TwinOptions = { mode: 'own', epsilon: 0, method: s.method, damping: 0, length: typedNumber(e.inputs.length), mass: typedNumber(e.inputs.mass), theta: typedNumber(e.inputs.theta) / DEG };
-      if (twinProblem(o) !== null) {
-        this.explain(t('twin.badOwn'));
-        return false;
-      }
-      opts.push(o);
+    const opts = this.extras.map((e): TwinOptions => ({ mode: 'own', epsilon: 0, method: s.method, damping: 0, length: typedNumber(e.inputs.length), mass: typedNumber(e.inputs.mass), theta: typedNumber(e.inputs.theta) / DEG }));
+    const refused = ownRefusal(opts, 3);
+    if (refused !== null) {
+      this.explain(refused);
+      return false;
     }
     this.extras.forEach((e, i) => {
       e.pending = twinCommands(s, opts[i] as TwinOptions);

@@ -141,7 +141,7 @@ export class TwinPanel {
       // options kept as they were when refused (the share link writes them)
       const problem = twinProblem(o);
       if (problem !== null) {
-        actions.explain(t(problem === 'own' ? 'twin.badOwn' : 'twin.bad'));
+        actions.explain(problem === 'own' ? t('twin.badOwn', { n: 2 }) : t('twin.bad'));
         return;
       }
       Object.assign(this.options, o);

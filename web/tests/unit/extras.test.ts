@@ -1,8 +1,12 @@
 // Pendulums in a row (twin.ts rowOffsets; panels/extras.ts): the second pivot where sideBySide puts it,
-// each next one beside the one before with the same gap rule, all on one line, no spheres overlapping.
+// each next one beside the one before with the same gap rule, all on one line, no spheres overlapping; a
+// refused pendulum of its own named by its number.
 import { describe, expect, it } from 'vitest';
 import { rowOffsets, sideBySide } from '../../src/twin';
 import { decodeTwin, decodeUrl, encodeUrl } from '../../src/url';
+import type { TwinOptions } from '../../src/twin';
+import { ownRefusal } from '../../src/panels/extras';
+import { LANGUAGES, setLanguage } from '../../src/i18n';
 
 describe('a row of pendulums', () => {
   it('places pivots 2 … n beside each other along one line, 1.1 (l_i + l_{i+1}) apart [m]', () => {
@@ -46,5 +50,23 @@ describe('pendulums 3 and 4 in the share link', () => {
     expect(decodeTwin('own:1:1:10,1:1')).toBeNull();
     expect(decodeTwin('eps:0.5,1:1:10')).toBeNull();
     expect(decodeUrl('twin=own:1:1:10,1:-1:10').problems).toHaveLength(1);
+  });
+});
+
+describe('a refused pendulum of its own is named', () => {
+  it('the message names the pendulum whose length, mass or θ₀ is refused (2, 3 or 4), in every language', () => {
+    const deg = Math.PI / 180;
+    const ok: TwinOptions = { mode: 'own', epsilon: 0, method: 'rk4', damping: 0, length: 1, mass: 1, theta: 10 * deg };
+    expect(ownRefusal([ok, ok], 3)).toBeNull();
+    expect(ownRefusal([ok, { ...ok, mass: -1 }], 3)).toBe('pendulum 4 needs a length > 0, a mass > 0 and a start angle 0 … 180°');
+    expect(ownRefusal([{ ...ok, length: NaN }, { ...ok, mass: -1 }], 3)).toMatch(/^pendulum 3 needs/);
+    expect(ownRefusal([{ ...ok, theta: 200 * deg }], 2)).toMatch(/^pendulum 2 needs/);
+    setLanguage('de');
+    expect(ownRefusal([ok, { ...ok, length: 0 }], 3)).toMatch(/^Pendel 4 braucht/);
+    setLanguage('fr');
+    expect(ownRefusal([ok, { ...ok, length: 0 }], 3)).toMatch(/^le pendule 4 demande/);
+    setLanguage('en');
+    // no language names a fixed pendulum ("the second") in the message of every one
+    for (const { words } of Object.values(LANGUAGES)) expect(words['twin.badOwn']).toContain('{n}');
   });
 });

@@ -14,7 +14,7 @@ export const DE_MESSAGES: MessagesWords = {
   'twin.length': 'l₂ [m]',
   'twin.mass': 'm₂ [kg]',
   'twin.theta': 'θ₀₂ [°]',
-  'twin.badOwn': 'das zweite Pendel braucht eine Länge > 0, eine Masse > 0 und einen Startwinkel 0 … 180°',
+  'twin.badOwn': 'Pendel {n} braucht eine Länge > 0, eine Masse > 0 und einen Startwinkel 0 … 180°',
   'twin.colLength': 'l [m]',
   'twin.colMass': 'm [kg]',
   'twin.colTheta': 'θ₀ [°]',

@@ -13,7 +13,7 @@ export const EN_MESSAGES = {
   'twin.length': 'l₂ [m]',
   'twin.mass': 'm₂ [kg]',
   'twin.theta': 'θ₀₂ [°]',
-  'twin.badOwn': 'the second pendulum needs a length > 0, a mass > 0 and a start angle 0 … 180°',
+  'twin.badOwn': 'pendulum {n} needs a length > 0, a mass > 0 and a start angle 0 … 180°',
   'twin.colLength': 'l [m]',
   'twin.colMass': 'm [kg]',
   'twin.colTheta': 'θ₀ [°]',

@@ -14,7 +14,7 @@ export const FR_MESSAGES: MessagesWords = {
   'twin.length': 'l₂ [m]',
   'twin.mass': 'm₂ [kg]',
   'twin.theta': 'θ₀₂ [°]',
-  'twin.badOwn': 'le second pendule demande une longueur > 0, une masse > 0 et un angle de départ 0 … 180°',
+  'twin.badOwn': 'le pendule {n} demande une longueur > 0, une masse > 0 et un angle de départ 0 … 180°',
   'twin.colLength': 'l [m]',
   'twin.colMass': 'm [kg]',
   'twin.colTheta': 'θ₀ [°]',
