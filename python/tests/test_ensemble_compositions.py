@@ -82,6 +82,36 @@ def test_observed_order_with_damping_against_an_independent_integrator() -> None
         assert abs(observed - order) < 0.35, f"{method}: order {observed:.2f}"
 
 
+def test_summary_and_settle_time_are_taken_after_every_full_step() -> None:
+    """With a composition the summary and the settle time see the state after each full step of dt
+    (not the sub-steps): the extremes of z, the crossings of the pivot's plane and the settle time
+    equal those of simulate() with the same method saved at every step; damped, g > 0 and g < 0."""
+    theta_s, dt, t_end = 0.05, 0.02, 20.0
+    settled = 0
+    for g, c in [(9.81, 0.5), (-9.81, 0.3)]:
+        p = pl.Pendulum(length=1.0, g=g, damping=c)
+        theta = np.array([0.3, 1.2, 2.0]) if g > 0 else np.pi - np.array([0.3, 1.2, 2.0])
+        states = pl.states_from_angles(p, theta=theta, phi_dot=[0.5, -1.0, 2.0], theta_dot=[0.0, 3.0, 6.0])
+        for method in ["rattle4", "rattle6"]:
+            res = pl.simulate_ensemble(
+                p, states, t_end, dt=dt, method=method, settle_angle=theta_s, summary=True, progress=False
+            )
+            assert res.summary is not None and res.settle_time is not None
+            for k in range(len(states)):
+                tr = pl.simulate(p, p.state(states[k, :3], states[k, 3:]), t_end, method=method, dt=dt)
+                z = tr.x[1:, 2]  # the states after each full step
+                assert res.summary["z_min"][k] == min(states[k, 2], z.min()), (g, method, k)
+                assert res.summary["z_max"][k] == max(states[k, 2], z.max()), (g, method, k)
+                above = np.concatenate([[states[k, 2] > 0.0], z > 0.0])
+                assert res.summary["crossings"][k] == np.count_nonzero(np.diff(above)), (g, method, k)
+                out = np.flatnonzero(z * -np.sign(g) < np.cos(theta_s))  # outside the settle band
+                steps = len(z)  # z[i] is after step i + 1; settled from the step after the last one out
+                expected = 0.0 if out.size == 0 else np.inf if out[-1] + 1 == steps else (out[-1] + 2) * dt
+                assert res.settle_time[k] == pytest.approx(expected, abs=1e-12), (g, method, k)
+                settled += bool(0.0 < expected < np.inf)
+    assert settled >= 4  # the comparison covered runs that settle, not only the never-settled
+
+
 def test_structure_kept_and_no_energy_drift() -> None:
     """rattle4 and rattle6 at 20 ms over 20 s and over 200 s (~100 periods): J₃ to round-off, |x| = l,
     x·v = 0, and the energy error bounded: its range over 200 s is that over the first 20 s (a
