@@ -365,6 +365,8 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
         meta |= {"rtol": run.rtol, "atol": run.atol, "project": run.project}
     if save_every is not None:
         meta["save_every"] = int(save_every)
+    if times is not None:
+        meta["save_at_times"] = int(times.size)  # how many save_at times were asked for
     if not info["preserves_ts2"] and not (info["adaptive"] and run.project):
         _check_drift(pendulum, t, x, v, method, run.project, run.drift)
     return Trajectory(pendulum, t, x, v, method, meta, dict(solver.stats), interrupted)

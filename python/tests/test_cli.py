@@ -94,6 +94,25 @@ def test_run_overrides_and_quiet(tmp_path: Path) -> None:
     assert meta["method"] == "rattle4" and meta["options"]["dt"] == 0.01 and meta["stats"]["steps"] == 50
 
 
+def test_run_summary_says_how_each_method_stepped_and_saved(tmp_path: Path) -> None:
+    """The summary's method line in words: a fixed-step run's dt and saving; an adaptive run (dop853
+    without dt) its tolerances, projection and saving, and no dt (it has no fixed step)."""
+    code, stdout, stderr = invoke("run", ROSETTE, *SHORT)
+    assert code == 0, stderr
+    assert "\nmethod:   rattle, dt = 0.001 s, " in stdout and "saved every 50th step\n" in stdout
+    adaptive = tmp_path / "adaptive.toml"
+    text = Path(ROSETTE).read_text(encoding="utf-8").replace('"rattle"', '"dop853"')
+    adaptive.write_text(text.replace("dt = 1.0e-3", "").replace("save_every = 10", ""), encoding="utf-8")
+    code, stdout, stderr = invoke("run", str(adaptive), "--t-end", "0.5", "--rtol", "1e-9")
+    assert code == 0, stderr
+    line = next(line for line in stdout.splitlines() if line.startswith("method:"))
+    assert line == (
+        "method:   dop853, adaptive steps, rtol = 1e-09, atol = 1e-12, projected onto TS2 after each step, "
+        "saved every accepted step"
+    )
+    assert "saving every accepted step" in stderr and "1-th" not in stderr
+
+
 def test_bad_suffix_fails_before_the_run(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """An unknown output suffix is an error before any work, naming the allowed suffixes."""
 

@@ -13,7 +13,8 @@ to the letter). Blocks are taken from the text, nothing is added to them:
   must succeed. The output shown for a ``pendulab`` command must be what it prints: every shown line
   (an annotation ``(stderr)`` at its end dropped) equals a line of its stdout or stderr, where ``…``
   stands for any text, a round-off figure (``4.441e-16``: an exponent of -13 or below) for any number
-  and ``'fused'`` for ``'unfused'`` too (both depend on the CPU's arithmetic: docs/cli.md).
+  and ``'fused'`` (``, fused arithmetic``) for ``'unfused'`` (``, unfused arithmetic``) too (both depend
+  on the CPU's arithmetic: docs/cli.md).
   Commands that cannot finish are checked, not run: a synopsis line (placeholders in capitals such as
   ``FILE.toml`` or ``tcp://HOST:8786``, ``[optional parts]``, ``…``) and ``pendulab serve`` (a server
   runs until stopped) must name a real command and only options its ``--help`` lists (an address to
@@ -279,8 +280,8 @@ _ROUND_OFF = re.compile(r"\d\.\d+e-(?:1[3-9]|[2-9]\d|\d{3})")
 def shown_pattern(line: str) -> re.Pattern[str]:
     """The regular expression a shown output line stands for (see the module doc)."""
     line = re.sub(r"\s+\(stderr\)$", "", line.rstrip())
-    parts = re.split(r"(…|'fused'|" + _ROUND_OFF.pattern + ")", line)
-    wild = {"…": ".*", "'fused'": "'(?:un)?fused'"}
+    parts = re.split(r"(…|'fused'|, fused arithmetic|" + _ROUND_OFF.pattern + ")", line)
+    wild = {"…": ".*", "'fused'": "'(?:un)?fused'", ", fused arithmetic": ", (?:un)?fused arithmetic"}
     return re.compile(
         "".join(wild.get(x, r"[-+0-9.e]+" if _ROUND_OFF.fullmatch(x) else re.escape(x)) for x in parts)
     )
@@ -302,6 +303,8 @@ def test_shown_lines_match_what_is_meant() -> None:
     assert shown_pattern("max |J3 - J3_0| = 4.441e-16").fullmatch("max |J3 - J3_0| = 2.220e-16")
     assert not shown_pattern("max |E - E0| = 1.319e-06").fullmatch("max |E - E0| = 1.320e-06")
     assert shown_pattern("{'arithmetic': 'fused'}").fullmatch("{'arithmetic': 'unfused'}")
+    shown = shown_pattern("rattle, dt = 0.001 s, fused arithmetic, saved every 10th step")
+    assert shown.fullmatch("rattle, dt = 0.001 s, unfused arithmetic, saved every 10th step")
     assert not shown_pattern("error: missing.toml: No such file").fullmatch("error: missing.toml: other")
     assert is_synopsis("pendulab sweep s.toml --out s/ --scheduler tcp://HOST:8786 --resume")
     assert not is_synopsis("pendulab sweep s.toml --out s/ --workers 2")

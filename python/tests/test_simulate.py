@@ -29,6 +29,20 @@ def test_the_readme_example_runs_and_conserves(pendulum: pl.Pendulum, rosette: p
     assert "rattle" in tr.summary()
 
 
+def test_summary_names_the_requested_output_times(pendulum: pl.Pendulum, rosette: pl.State) -> None:
+    """A run with save_at records how many times were asked for; the summary says the samples are at
+    them (DOP853's dense output, a fixed-step method landing on each), with a first step if given."""
+    times = np.linspace(0.0, 1.0, 7)
+    tr = pl.simulate(pendulum, rosette, t_end=1.0, method="dop853", dt=0.01, save_at=times, project=False)
+    assert tr.options["save_at_times"] == 7
+    assert "dop853, adaptive steps, rtol = 1e-10, atol = 1e-12, first step 0.01 s, not projected, " in (
+        tr.summary()
+    )
+    assert "saved at 7 requested times" in tr.summary()
+    tr = pl.simulate(pendulum, rosette, t_end=1.0, method="rattle4", save_at=times[2:])
+    assert "rattle4, dt = 0.001 s, " in tr.summary() and "saved at 5 requested times" in tr.summary()
+
+
 @pytest.mark.parametrize("method", ALL)
 def test_every_method_runs_from_python(method: str, pendulum: pl.Pendulum) -> None:
     """Every registered method integrates a start away from the poles for 1 s; those that declare

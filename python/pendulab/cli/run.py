@@ -24,6 +24,7 @@ from ..model import models as model_table
 from ..scenario import RunOverrides, Scenario, ScenarioError, load_scenario
 from ..scenario.examples import scenario_files, sweep_files
 from ..trajectory import Trajectory
+from ..trajectory.report import nth
 from ..variants.spring import SpringTrajectory
 from .common import (
     EXIT_INTERRUPTED,
@@ -48,7 +49,8 @@ def _settings(sc: Scenario) -> str:
     elif sim.dt is None:
         step = f"dt = {sim.resolved_dt():g} s"
     n = sc.expected_samples()
-    saved = f"{n} samples" if n is not None else f"every {sim.save_every or 1}-th step"
+    # an adaptive run without save_at: its steps, so the number of samples, are known only afterwards
+    saved = f"{n} samples" if n is not None else f"every {nth(sim.save_every or 1)}accepted step"
     return f"{sim.method}, {step}, t = {sim.t0:g} .. {sim.t_end:g} s, saving {saved}"
 
 

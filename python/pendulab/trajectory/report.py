@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from ..display import Row, number, relative_drift
+from ..integrators import methods
 from .tables import param_units
 
 
@@ -43,6 +44,50 @@ def key_numbers(tr: Any) -> list[Row]:
     return rows
 
 
+def nth(n: int) -> str:
+    """1 → "", 2 → "2nd ", 11 → "11th ", 23 → "23rd " (for "every 2nd step")."""
+    if n == 1:
+        return ""
+    suffix = "th" if n % 100 in (11, 12, 13) else {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+    return f"{n}{suffix} "
+
+
+def method_line(tr: Any) -> str:
+    """The method and how it ran, in words: a fixed-step method's dt [s]; an adaptive one's (DOP853)
+    tolerances rtol and atol [m, m/s] (its own step sizes: no dt, unless a first step was given) and
+    whether it projects onto TS²; the arithmetic; which samples were kept (every n-th step or the
+    requested ``save_at`` times); then any other option as ``key = value``."""
+    o = dict(tr.options)
+    info = {m["name"]: m for m in methods()}.get(tr.method)
+    adaptive = bool(info and info["adaptive"])
+    parts = []
+    if adaptive:
+        parts.append(f"adaptive steps, rtol = {o.pop('rtol', float('nan')):g}, atol = {o.pop('atol', 0.0):g}")
+        first = o.pop("dt", 0.0)
+        if first:
+            parts.append(f"first step {first:g} s")
+        if "project" in o:
+            parts.append("projected onto TS2 after each step" if o.pop("project") else "not projected")
+    elif "dt" in o:
+        parts.append(f"dt = {o.pop('dt'):g} s")
+    if "arithmetic" in o:
+        parts.append(f"{o.pop('arithmetic')} arithmetic")
+    t0, t_end = o.pop("t0", None), o.pop("t_end", None)
+    if len(tr):  # the span line shows t[0] .. t[-1]: the run's own span only if it differs
+        start = tr.t[0] if t0 is None else t0
+        end = tr.t[-1] if t_end is None else t_end
+        if start != tr.t[0] or end != tr.t[-1]:  # save_at inside the run, or interrupted
+            parts.append(f"run from t = {start:g} to {end:g} s")
+    step = "accepted step" if adaptive else "step"
+    times, every = o.pop("save_at_times", None), o.pop("save_every", None)
+    if times is not None:
+        parts.append(f"saved at {times} requested times")
+    elif every is not None or adaptive or "dt" in tr.options:
+        parts.append(f"saved every {nth(int(every or 1))}{step}")
+    parts += [f"{k} = {v}" for k, v in o.items()]
+    return ", ".join([tr.method, *parts])
+
+
 def summary(tr: Any) -> str:
     """A few lines: span, samples, conservation of E and J₃ (or, for non-conservative models, the
     power balance E(t) − E(0) − ∫P dt of T-7.1 instead of an energy drift), constraint residuals,
@@ -60,7 +105,7 @@ def summary(tr: Any) -> str:
         described = f"{p.model} model, {described}{extras}"
     lines = [
         f"pendulum: {described}",
-        f"method:   {tr.method}  {tr.options}",
+        f"method:   {method_line(tr)}",
         f"span:     t = {tr.t[0]:g} .. {tr.t[-1]:g} s, {len(tr)} samples, {steps} steps"
         + ("  (INTERRUPTED)" if tr.interrupted else ""),
     ]

@@ -107,6 +107,8 @@ def simulate_string(
     options: dict[str, Any] = {"dt": dt, "t0": t0, "t_end": t_end}
     if save_every is not None:
         options["save_every"] = int(save_every)
+    if times is not None:
+        options["save_at_times"] = int(times.size)  # how many save_at times were asked for
     return Trajectory(
         pendulum,
         np.concatenate([p["t"] for p in parts]),
