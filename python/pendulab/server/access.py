@@ -10,7 +10,8 @@ CORS-"simple" requests to it, and a DNS name controlled by an attacker can be ma
    plus the bound address and the machine's names and addresses when bound elsewhere
    (:func:`allowed_hosts`), plus ``--allow-host`` names. Otherwise HTTP 400.
 2. **Origin**: a WebSocket upgrade or a non-GET request that carries an ``Origin`` header must come
-   from the page's own origin (the same host and port as the ``Host`` header); a WebSocket from another
+   from the page's own origin (:func:`same_origin`: the scheme the server is reached by, the host and
+   port of the ``Host`` header, nothing else); a WebSocket from another
    origin is accepted only to be told why and closed with code 1008 (policy violation), an HTTP request
    gets 403. Requests without ``Origin`` (scripts, curl, the tests) are not from a page in a browser.
 3. **Token** (classroom mode, when the app has one): the request carries it as ``?token=…``, as the
@@ -26,6 +27,7 @@ import hashlib
 import hmac
 import ipaddress
 import json
+import re
 import socket
 from collections.abc import Iterable, Sequence
 from urllib.parse import urlsplit
@@ -128,23 +130,52 @@ def cookie_name(token: str) -> str:
     return "pendulab-token-" + hashlib.sha256(token.encode()).hexdigest()[:12]
 
 
-def same_origin(origin: str, host: str | None) -> bool:
-    """True when the ``Origin`` header names the page's own origin: http or https, the same host and
-    port as the ``Host`` header (default ports filled in)."""
-    if not host:
+_DEFAULT_PORTS = {"http": 80, "https": 443}
+_SERVED = {"http": "http", "https": "https", "ws": "http", "wss": "https"}
+_AUTHORITY = re.compile(
+    r"(?P<host>[a-z0-9_](?:[a-z0-9_.-]*[a-z0-9_.])?|\[(?P<ipv6>[0-9a-f:.]+)\])"
+    r"(?::(?P<port>0|[1-9][0-9]{0,4}))?",
+    re.IGNORECASE,
+)
+
+
+def _authority(text: str, scheme: str) -> tuple[str, int] | None:
+    """``host[:port]`` as ``(host, port)``: the host lower-cased (an IPv6 literal in brackets, in its
+    compressed form), the port the scheme's default when none is given; None for anything else
+    (userinfo, an empty or non-numeric port, a port with leading zeros or over 65535, spaces, …)."""
+    m = _AUTHORITY.fullmatch(text)
+    if m is None:
+        return None
+    host = m["host"].lower()
+    if m["ipv6"] is not None:
+        try:
+            host = f"[{ipaddress.IPv6Address(m['ipv6']).compressed}]"
+        except ValueError:
+            return None
+    port = int(m["port"]) if m["port"] is not None else _DEFAULT_PORTS[scheme]
+    return (host, port) if port <= 65535 else None
+
+
+def same_origin(origin: str, host: str | None, scheme: str = "http") -> bool:
+    """True when the ``Origin`` header names the page's own origin: exactly ``scheme://host[:port]`` as a
+    browser writes it (RFC 6454: no userinfo, path, query or fragment), its scheme the one the server is
+    reached by (``scheme``: the request's, ``ws``/``wss`` counting as ``http``/``https``), its host and
+    port those of the ``Host`` header (host names compared without case, IPv6 literals in any spelling,
+    a missing port the scheme's default). ``null`` (sandboxed pages, files), other schemes and anything
+    unparsable are refused."""
+    served = _SERVED.get(scheme.lower())
+    if not host or served is None or not origin.isascii():
         return False
     try:
-        o = urlsplit(origin)
-        h = urlsplit(f"//{host}")
-        o_port = o.port or {"http": 80, "https": 443}.get(o.scheme)
-        h_port = h.port
+        parts = urlsplit(origin)
     except ValueError:
         return False
-    if o.scheme not in ("http", "https") or not o.hostname or not h.hostname:
+    if parts.scheme != served or origin[: len(served) + 3].lower() != served + "://":
         return False
-    if h_port is None:
-        h_port = {"http": 80, "https": 443}[o.scheme]
-    return o.hostname.lower() == h.hostname.lower() and o_port == h_port
+    if origin[len(served) + 3 :] != parts.netloc:  # a path, "?", "#", or whatever urlsplit dropped
+        return False
+    mine = _authority(parts.netloc, served)
+    return mine is not None and mine == _authority(host, served)
 
 
 class AccessGuard:
@@ -164,7 +195,11 @@ class AccessGuard:
         headers = Headers(scope=scope)
         origin = headers.get("origin")
         checks_origin = kind == "websocket" or scope["method"] not in ("GET", "HEAD", "OPTIONS")
-        if origin is not None and checks_origin and not same_origin(origin, headers.get("host")):
+        if (
+            origin is not None
+            and checks_origin
+            and not same_origin(origin, headers.get("host"), scope.get("scheme", "http"))
+        ):
             await refuse(
                 scope,
                 receive,
