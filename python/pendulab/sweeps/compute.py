@@ -5,7 +5,8 @@ quantities (rotation number T-4.5, z-period) come from the exact solution; the s
 one ensemble run per chunk (``simulate_ensemble``'s kernel, with the sweep's method, RATTLE or one of
 its compositions, and its arithmetic, ``"fused"`` or ``"unfused"``, resolved once, and checked to be of
 the version of its bits the sweep records), so every point is computed independently of the chunking,
-the backend and the CPU, bit for bit.
+the backend and the CPU, bit for bit. Each chunk's result carries what it ran (``RAN``, checked by
+``sweeps/workers.py`` in the calling process), so that an older worker that ignores a setting is caught.
 """
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ import json
 import math
 import threading
 from collections.abc import Mapping, Sequence
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, fields
 from typing import Any
 
 import numpy as np
@@ -55,6 +56,11 @@ solution."""
 METHODS = tuple(SUBSTEPS)
 """The sweep's integrators (``method``): ``simulate_ensemble``'s vectorised ones, RATTLE and its
 compositions of order 4, 6 and 8."""
+
+
+RAN = "_pendulab_ran"
+"""The key of a chunk's result under which its worker echoes what it ran (:func:`ran`): not a column;
+the calling process checks and removes it (``sweeps/workers.py``)."""
 
 
 class _Cancelled(Exception):
@@ -302,6 +308,23 @@ def _periods(c: dict[str, FloatArray], mass: float) -> FloatArray:
     return out
 
 
+def _integration(spec: SweepSpec) -> tuple[str, str, int]:
+    """The method (RATTLE for a SweepSpec made without one), the arithmetic (the sweep's, resolved
+    once by make_spec, so that every point is simulate_ensemble's trajectory with it bit for bit on any
+    CPU; "auto" here only for a SweepSpec made without one) and its version that a chunk runs."""
+    arithmetic = spec.arithmetic or check_arithmetic("auto", "rattle")
+    return spec.method or "rattle", arithmetic, arithmetic_version(arithmetic)
+
+
+def ran(spec: SweepSpec) -> dict[str, Any]:
+    """What a chunk of ``spec`` runs here, as its result echoes it (:data:`RAN`): the settings this
+    pendulab honours (``honours``, the fields of its SweepSpec), and for simulated quantities the
+    method, arithmetic and arithmetic version it integrates with (None for exact ones)."""
+    method, arithmetic, version = _integration(spec) if spec.simulated else (None, None, None)
+    honours = [f.name for f in fields(SweepSpec)]
+    return {"honours": honours, "method": method, "arithmetic": arithmetic, "arithmetic_version": version}
+
+
 def _simulate(
     c: dict[str, FloatArray], spec: SweepSpec, cancel: threading.Event | None
 ) -> dict[str, FloatArray]:
@@ -311,18 +334,13 @@ def _simulate(
     damping = np.ascontiguousarray(c["damping"])
     dt, settle = float(spec.dt or 0.0), spec.settle_angle
     models = EnsembleSpec(length, g, damping)
-    # the sweep's arithmetic, resolved once (make_spec), so that every point is simulate_ensemble's
-    # trajectory with that arithmetic bit for bit, whichever CPU runs the chunk; "auto" here only for
-    # a SweepSpec made without one
-    arithmetic = spec.arithmetic or check_arithmetic("auto", "rattle")
-    here = arithmetic_version(arithmetic)
+    method, arithmetic, here = _integration(spec)
     if spec.arithmetic_version is not None and spec.arithmetic_version != here:
         raise _bad(  # a Dask worker with another pendulab build would compute other bits
             f"this pendulab's {arithmetic} arithmetic is of version {here}, the sweep's of version "
             f"{spec.arithmetic_version}: run every worker with the pendulab that set the sweep up"
         )
-    # the sweep's method (RATTLE for a SweepSpec made without one)
-    options = RunOptions(method=spec.method or "rattle", dt=dt, arithmetic=arithmetic)
+    options = RunOptions(method=method, dt=dt, arithmetic=arithmetic)
     run = EnsembleRun(models, x, v, options, spec.steps, need_summary, settle)
     # wait returns the moment the chunk is done; a cancel is seen within 20 ms
     while not run.wait(0.02):
@@ -351,10 +369,11 @@ def _simulate(
     return out
 
 
-def compute_chunk(task: ChunkTask, cancel: threading.Event | None = None) -> dict[str, FloatArray]:
+def compute_chunk(task: ChunkTask, cancel: threading.Event | None = None) -> dict[str, Any]:
     """The result columns of one chunk: ``point`` (int64), the design's axes, then the quantity columns
-    (float64), one row per point. Pure: the same task gives the same numbers anywhere (it is what the
-    thread pool and the Dask workers run). ``cancel`` stops a simulation within ~1024 steps."""
+    (float64), one row per point, and under :data:`RAN` what it ran (:func:`ran`; not a column). Pure:
+    the same task gives the same numbers anywhere (it is what the thread pool and the Dask workers
+    run). ``cancel`` stops a simulation within ~1024 steps."""
     spec = task.spec
     c = _full(task)
     out: dict[str, Any] = {"point": np.arange(task.start, task.stop, dtype=np.int64)}
@@ -367,4 +386,5 @@ def compute_chunk(task: ChunkTask, cancel: threading.Event | None = None) -> dic
             out[q] = _periods(c, spec.mass)
         else:
             out.update({k: sim[k] for k in QUANTITIES[q]})
+    out[RAN] = ran(spec)
     return out

@@ -41,7 +41,7 @@ import numpy as np
 from .. import _core
 from .. import validate as limits
 from .._progress import tqdm
-from ..model import FloatArray, Pendulum
+from ..model import Pendulum
 from .backends import Dask, Threads, connect, drive
 from .compute import (
     QUANTITIES,
@@ -56,6 +56,7 @@ from .compute import (
 from .design import AXES, as_design
 from .results import MemorySink, OutputDir, SweepResult
 from .resume import resume_settings
+from .workers import check_ran
 
 BACKENDS = ("threads", "dask")
 
@@ -224,8 +225,8 @@ def sweep(
         start, stop = i * size, min((i + 1) * size, d.n)
         return ChunkTask(i, start, stop, d.columns(start, stop), spec)
 
-    def done(i: int, cols: dict[str, FloatArray]) -> None:
-        target.add(i, i * size, cols)
+    def done(i: int, cols: dict[str, Any]) -> None:
+        target.add(i, i * size, check_ran(i, cols, spec))  # refused if the worker ran other settings
         stats["computed"] += 1
 
     bar = tqdm(

@@ -1,0 +1,134 @@
+"""What a sweep's workers ran, checked before a chunk is written (``sweeps/workers.py``, docs/sweeps.md
+"Chunks and backends"): a Dask worker with an older pendulab unpickles a chunk's settings, ignores the
+ones it predates (``method``: it integrates RATTLE) and returns plain columns. Such results are made
+here without a cluster, by wrapping the function the driver runs (the check is in the calling process,
+the same for both backends): ``compute_chunk`` on the settings as an old worker reads them, its echo
+(``RAN``) removed. A real LocalCluster's chunks carry the echo (test_sweep.py runs one through the
+check). Times in seconds, angles in radians."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pytest
+from sweep_records import drop_chunk, same
+
+import pendulab as pl
+from pendulab import _core
+from pendulab.sweeps import compute as sweep_compute
+from pendulab.sweeps import run as sweep_mod
+from pendulab.sweeps.compute import RAN, ChunkTask
+from pendulab.sweeps.design import as_design
+
+GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0])}
+QS = ["final_state", "energy_drift"]
+KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-2, "chunk_size": 4, "progress": False}
+UPGRADE = f"Upgrade pendulab on every worker to the one this client runs (pendulab {_core.__version__})"
+
+
+def _workers(monkeypatch: pytest.MonkeyPatch, worker: Any) -> None:
+    """Every chunk computed by ``worker(task)`` instead of this pendulab's compute_chunk."""
+    monkeypatch.setattr(sweep_mod, "compute_chunk", lambda task, cancel=None: worker(task))
+
+
+def _old_worker(task: ChunkTask) -> dict[str, Any]:
+    """A worker from before methods were recorded: RATTLE whatever the spec says, no echo."""
+    cols = sweep_compute.compute_chunk(replace(task, spec=replace(task.spec, method=None)))
+    del cols[RAN]
+    return cols
+
+
+@pytest.mark.parametrize("method", ["rattle6", "rattle"])
+def test_a_chunk_from_an_old_worker_is_refused(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch, method: str
+) -> None:
+    """Refused before it is written, with any method (an old worker may ignore the arithmetic too),
+    naming the chunk, what the worker lacks, the sweep's method and the fix; once the workers run this
+    pendulab, a resume finishes the sweep bit for bit as a sweep on this process."""
+    out = tmp_path / "sw"
+    _workers(monkeypatch, _old_worker)
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.sweep(GRID, QS, method=method, out=out, **KW)
+    text = str(e.value)
+    assert re.match(r"chunk \d came from a worker whose pendulab is older than this client's", text), text
+    for needle in (
+        "does not echo what it ran",
+        f"it integrates plain RATTLE whatever the sweep names (here {method!r})",
+        "its result is not written",
+        UPGRADE,
+    ):
+        assert needle in text, (needle, text)
+    assert not list(out.glob("chunk-*.parquet"))
+    monkeypatch.undo()
+    again = pl.sweep(GRID, QS, method=method, out=out, resume=True, **KW)
+    assert same(again, pl.sweep(GRID, QS, method=method, **KW))
+
+
+def test_exact_quantities_need_no_echo(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Nothing integrates: an old worker's rotation numbers are accepted (and equal this pendulab's)."""
+    _workers(monkeypatch, _old_worker)
+    old = pl.sweep(GRID, "rotation_number", chunk_size=4, progress=False)
+    monkeypatch.undo()
+    assert same(old, pl.sweep(GRID, "rotation_number", chunk_size=4, progress=False))
+
+
+def test_a_worker_that_does_not_know_a_setting_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A worker that echoes but does not honour a setting the sweep uses (as this pendulab's workers
+    will be to a later client's new settings) is refused, naming the setting."""
+
+    def without_method(task: ChunkTask) -> dict[str, Any]:
+        cols = _old_worker(task)
+        honours = [f for f in sweep_compute.ran(task.spec)["honours"] if f != "method"]
+        cols[RAN] = sweep_compute.ran(replace(task.spec, method=None)) | {"honours": honours}
+        return cols
+
+    _workers(monkeypatch, without_method)
+    with pytest.raises(
+        pl.InvalidInputError, match=r"cannot honour the sweep's setting method \(it ignores it\)"
+    ):
+        pl.sweep(GRID, QS, method="rattle8", **KW)
+
+
+def test_a_worker_that_ran_another_method_or_arithmetic_is_refused(monkeypatch: pytest.MonkeyPatch) -> None:
+    """An echo naming other settings than the sweep's (another pendulab) is refused, naming both."""
+
+    def rattle4(task: ChunkTask) -> dict[str, Any]:
+        return sweep_compute.compute_chunk(replace(task, spec=replace(task.spec, method="rattle4")))
+
+    _workers(monkeypatch, rattle4)
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.sweep(GRID, QS, method="rattle6", arithmetic="fused", **KW)
+    assert re.match(
+        r"chunk \d was computed with method 'rattle4', arithmetic 'fused', arithmetic_version 1 by its "
+        r"worker, not the sweep's method 'rattle6', arithmetic 'fused', arithmetic_version 1",
+        str(e.value),
+    ), str(e.value)
+
+    def unfused(task: ChunkTask) -> dict[str, Any]:
+        return sweep_compute.compute_chunk(replace(task, spec=replace(task.spec, arithmetic="unfused")))
+
+    _workers(monkeypatch, unfused)
+    with pytest.raises(pl.InvalidInputError, match=r"arithmetic 'unfused'.*not the sweep's .*'fused'"):
+        pl.sweep(GRID, QS, arithmetic="fused", **KW)
+
+
+def test_this_pendulab_echoes_what_it_ran(tmp_path: Path) -> None:
+    """compute_chunk's echo: every setting of SweepSpec, the method, arithmetic and version it ran (none
+    for exact quantities); the echo is not a column of the result or of the files."""
+    spec = sweep_compute.make_spec(
+        as_design(GRID), QS, t_end=0.2, dt=1e-2, arithmetic="unfused", method="rattle4"
+    )
+    echo = sweep_compute.ran(spec)
+    assert echo["method"] == "rattle4" and echo["arithmetic"] == "unfused"
+    assert echo["arithmetic_version"] == _core.arithmetic_version("unfused")
+    assert {"method", "arithmetic", "arithmetic_version", "t_end", "dt"} <= set(echo["honours"])
+    exact = sweep_compute.ran(replace(spec, quantities=("period",)))
+    assert (exact["method"], exact["arithmetic"], exact["arithmetic_version"]) == (None, None, None)
+    sw = pl.sweep(GRID, QS, out=tmp_path / "sw", **KW)
+    assert RAN not in sw.units and RAN not in pl.read_sweep(tmp_path / "sw").units
+    drop_chunk(tmp_path / "sw", 1)  # the check runs on a resume's chunks too
+    assert pl.sweep(GRID, QS, out=tmp_path / "sw", resume=True, **KW).stats["computed"] == 1
