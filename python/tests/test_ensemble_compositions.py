@@ -139,6 +139,17 @@ def test_bad_method_and_the_work_bound_counts_sub_steps() -> None:
             pl.simulate_ensemble(p, states, 1.0, method=bad)  # type: ignore[arg-type]
     assert SUBSTEPS == {"rattle": 1, "rattle4": 3, "rattle6": 7, "rattle8": 15}
     # 2 trajectories × 4·10⁹ steps = 8·10⁹ RATTLE steps: allowed; ×15 sub-steps = 1.2·10¹¹: refused
-    # before anything runs (the limit is 10¹⁰)
-    with pytest.raises(pl.InvalidInputError, match="steps"):
+    # before anything runs (the limit is 10¹⁰), the message naming that product and its factors
+    with pytest.raises(pl.InvalidInputError) as e:
         pl.simulate_ensemble(p, states, 4e6, dt=1e-3, method="rattle8", progress=False)
+    assert str(e.value) == (
+        "the run would take 1.2e11 RATTLE steps (2 trajectories × t_end/dt = 4000000.0 s / 0.001 s = 4e9 "
+        "steps × 15 RATTLE sub-steps per step of rattle8), more than the limit of 1e10: lower t_end, raise "
+        "dt, use fewer trajectories or use a method of fewer sub-steps"
+    ), str(e.value)
+    with pytest.raises(pl.InvalidInputError) as e:  # RATTLE: no sub-steps to name
+        pl.simulate_ensemble(p, states, 1e8, dt=1e-3, progress=False)
+    assert str(e.value) == (
+        "the run would take 2e11 RATTLE steps (2 trajectories × t_end/dt = 100000000.0 s / 0.001 s = 1e11 "
+        "steps), more than the limit of 1e10: lower t_end, raise dt or use fewer trajectories"
+    ), str(e.value)

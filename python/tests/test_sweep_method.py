@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import re
 from pathlib import Path
 from typing import Any
 
@@ -87,14 +86,41 @@ def test_exact_quantities_record_no_method() -> None:
 
 def test_the_work_bound_counts_sub_steps() -> None:
     """t_end·points/dt within the bound for RATTLE, not with 3 or 15 sub-steps per step: refused before
-    any work, the count the sub-steps' (the RATTLE sweep gets past the bound to the bad backend)."""
+    any work, the count the sub-steps' (the RATTLE sweep gets past the bound to the bad backend). The
+    message names the product it refuses, each factor with the values given, the limit and the fixes."""
     n = 15
     t_end = MAX_STEPS / n * 1e-2 / 2
     with pytest.raises(pl.InvalidInputError, match="backend"):
         pl.sweep(GRID, "final_state", t_end=t_end, dt=1e-2, backend="nope", progress=False)
-    for method, substeps in (("rattle4", 3), ("rattle8", 15)):
-        with pytest.raises(pl.InvalidInputError, match=re.escape(f"{MAX_STEPS * substeps / 2:.3g} steps")):
+    for method, substeps, work in (("rattle4", 3, "1.5e10"), ("rattle8", 15, "7.5e10")):
+        with pytest.raises(pl.InvalidInputError) as e:
             pl.sweep(GRID, "final_state", t_end=t_end, dt=1e-2, method=method, backend="nope")
+        assert str(e.value) == (
+            f"the run would take {work} RATTLE steps (15 points × t_end/dt = {t_end!r} s / 0.01 s = 3.33e8 "
+            f"steps × {substeps} RATTLE sub-steps per step of {method}), more than the limit of 1e10: lower "
+            "t_end, raise dt, use fewer points or use a method of fewer sub-steps"
+        ), str(e.value)
+
+
+def test_one_point_beyond_the_work_bound(tmp_path: Path) -> None:
+    """A single point's steps beyond the bound: refused as that (no count of points; fewer points would
+    not help), by pl.sweep and when a sweep file is read ([simulation], whose t_end and dt it names)."""
+    one = (
+        "one point would take 1.5e10 RATTLE steps (t_end/dt = 1000000.0 s / 0.001 s = 1e9 steps × 15 "
+        "RATTLE sub-steps per step of rattle8), more than the limit of 1e10: lower t_end, raise dt or use "
+        "a method of fewer sub-steps"
+    )
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.sweep({"theta0": [0.5]}, "final_state", t_end=1e6, dt=1e-3, method="rattle8")
+    assert str(e.value) == one, str(e.value)
+    path = tmp_path / "long.toml"
+    path.write_text(
+        'quantity = "final_state"\n[grid]\ntheta0 = [0.5]\n'
+        '[simulation]\nt_end = 1e6\ndt = 1e-3\nmethod = "rattle8"\n'
+    )
+    with pytest.raises(SweepFileError) as f:
+        load_sweep_file(path)
+    assert f"{path}: [simulation] {one}" in str(f.value), str(f.value)
 
 
 def test_resume_with_another_method_is_refused(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

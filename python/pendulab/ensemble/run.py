@@ -230,7 +230,7 @@ def _plan(
     dt = limits.number("dt", dt, "dt")
     t_end = limits.number("t_end", t_end, "time", positive=True)
     # RATTLE steps of all trajectories (a composition's step is SUBSTEPS of them): the whole work
-    limits.planned_steps(0.0, t_end * n * SUBSTEPS[method], dt)
+    limits.planned_work(t_end, dt, n, "trajectory", method, SUBSTEPS[method])
     steps = round(t_end / dt)
     if not (math.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
         raise InvalidInputError(

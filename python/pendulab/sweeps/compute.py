@@ -211,7 +211,7 @@ def make_spec(
             raise _bad(f"{', '.join(sim)} {verb}: give t_end [s] (and dt [s])")
         dt = limits.number("dt", dt, "dt")
         t_end = limits.number("t_end", t_end, "time", positive=True)
-        limits.planned_steps(0.0, t_end * SUBSTEPS[method], dt)  # one point's RATTLE sub-steps
+        limits.planned_work(t_end, dt, 1, "point", method, SUBSTEPS[method])  # one point's RATTLE steps
         steps = round(t_end / dt)
         if not (math.isfinite(t_end) and t_end > 0 and abs(steps * dt - t_end) <= 1e-9 * t_end):
             raise _bad(

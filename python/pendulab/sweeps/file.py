@@ -285,7 +285,7 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
         )
     except InvalidInputError as e:
         text = str(e).replace("give t_end [s] (and dt [s])", "add [simulation] t_end (in s) and dt (in s)")
-        if text.startswith(("t_end", "dt", "invalid arithmetic", "method")):
+        if text.startswith(("t_end", "dt", "invalid arithmetic", "method", "one point would take")):
             text = f"[simulation] {text}"
         raise SweepFileError(source, text) from None
     return SweepFile(spec, design, pendulum, source)

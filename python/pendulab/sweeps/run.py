@@ -199,7 +199,7 @@ def sweep(
     if d.n > limits.MAX_SAMPLES:
         raise limits.invalid("design", f"<{d.n} points>", f"at most {limits.MAX_SAMPLES:.0e} points")
     if spec.t_end is not None and spec.dt is not None:  # RATTLE sub-steps: the work of the whole sweep
-        limits.planned_steps(0.0, spec.t_end * d.n * spec.substeps, spec.dt)
+        limits.planned_work(spec.t_end, spec.dt, d.n, "point", spec.method or "rattle", spec.substeps)
     backend, workers, chunk_size = _check_backend(backend, scheduler, workers, chunk_size)
     spec, recorded, unrecorded = resume_settings(d, spec, arithmetic, out, resume)
     fp = fingerprint(d, recorded)

@@ -28,6 +28,7 @@ from .checks import (
     integer,
     number,
     planned_steps,
+    planned_work,
     require_finite_result,
 )
 from .table import (
@@ -75,6 +76,7 @@ __all__ = [
     "param_spec",
     "parse_toml",
     "planned_steps",
+    "planned_work",
     "read_file_capped",
     "require_finite_result",
     "show",

@@ -1,7 +1,8 @@
 """The checks of single values and arrays every public entry point calls: real numbers within a
 limit of the table (:mod:`pendulab.validate.table`; SI units: positions [m], velocities [m/s], times
 [s], …), finite numbers, integers in a range, flags, choices, float64 arrays within a limit and of a
-shape, the planned steps (t_end − t₀)/dt of a fixed-step run, and results that must be finite.
+shape, the planned steps (t_end − t₀)/dt of a fixed-step run (and of all the trajectories of an
+ensemble or a sweep), and results that must be finite.
 
 Every check raises :class:`pendulab.InvalidInputError` (a ``ValueError``) naming the value and what
 is allowed (:func:`pendulab.validate.table.invalid`); a non-finite result is an
@@ -162,6 +163,35 @@ def planned_steps(t0: float, t_end: float, dt: float, name: str = "t_end") -> fl
             f"{steps:.3g} steps; {LIMITS['steps']['allowed']}"
         )
     return steps
+
+
+def _count(x: float) -> str:
+    """A count in 3 significant digits, exponents without sign or zeros: 48, 2.5e4, 1.2e11."""
+    mantissa, _, exponent = f"{x:.3g}".partition("e")
+    return mantissa if not exponent else f"{mantissa}e{int(exponent)}"
+
+
+def planned_work(t_end: float, dt: float, count: int, unit: str, method: str, substeps: int) -> float:
+    """Refuses, before it starts, a fixed-step run of ``count`` trajectories (``unit``: "trajectory",
+    "point") whose RATTLE steps in all — count × t_end/dt steps × ``substeps`` RATTLE sub-steps per step
+    of ``method`` (1 for RATTLE, 3, 7, 15 for its compositions) — exceed :data:`MAX_STEPS`; the
+    message names that product and each factor with the caller's values (t_end, dt [s]), the limit and
+    what lowers it. Returns the product."""
+    steps = t_end / dt
+    work = count * steps * substeps
+    if not work <= MAX_STEPS:
+        units = unit if count == 1 else ("trajectories" if unit == "trajectory" else unit + "s")
+        sub = "" if substeps == 1 else f" × {substeps} RATTLE sub-steps per step of {method}"
+        fixes = ["lower t_end", "raise dt"]
+        fixes += [f"use fewer {units}"] if count > 1 else []
+        fixes += ["use a method of fewer sub-steps"] if substeps > 1 else []
+        raise InvalidInputError(
+            f"{'the run' if count > 1 else 'one ' + unit} would take {_count(work)} RATTLE steps "
+            f"({'' if count == 1 else f'{count} {units} × '}t_end/dt = {show(t_end)} s / {show(dt)} s = "
+            f"{_count(steps)} steps{sub}), more than the limit of {_count(MAX_STEPS)}: "
+            f"{', '.join(fixes[:-1])} or {fixes[-1]}"
+        )
+    return work
 
 
 def require_finite_result(what: str, inputs: str, *arrays: Any) -> None:
