@@ -12,6 +12,7 @@ import errno
 import glob
 import json
 import os
+import re
 import tempfile
 import time
 from collections.abc import Callable, Iterator
@@ -125,20 +126,55 @@ def _metadata(tr: Any) -> dict[str, Any]:
     return header()
 
 
-def write_csv(tr: Tabular, path: str | os.PathLike[str]) -> None:
-    """CSV with a ``#`` header of metadata (JSON) and one row per sample, columns with units."""
+_TRAILING_ZERO = re.compile(r"\.0(?=[,\n])")
+_CSV_CHUNK = 1 << 14  # rows formatted at a time
+
+
+def csv_number(value: float) -> str:
+    """A float as CSV text: the shortest decimal that reads back as exactly ``value`` (Python's
+    ``repr``: 0.1 stays ``0.1``, not ``0.10000000000000001``), an integral value without ``.0``
+    (``5``, ``-0``, ``1e+16``); ``nan``, ``inf``, ``-inf`` as NumPy and ``float()`` read them."""
+    text = repr(float(value))
+    return text[:-2] if text.endswith(".0") else text
+
+
+def csv_rows(data: Any) -> Iterator[str]:
+    """The lines (with ``\\n``) of a 2-D float array, comma-separated, each number as :func:`csv_number`
+    writes it; formatted a chunk of rows at a time."""
     import numpy as np
 
+    table = np.asarray(data, dtype=np.float64)
+    for start in range(0, table.shape[0], _CSV_CHUNK):
+        rows = table[start : start + _CSV_CHUNK].tolist()
+        yield _TRAILING_ZERO.sub("", "".join(",".join(map(repr, row)) + "\n" for row in rows))
+
+
+def csv_metadata_line(kind: str, metadata: dict[str, Any]) -> str:
+    """The first line of a Pendulab CSV file: ``# pendulab <kind>; metadata (JSON): {...}`` (keys
+    sorted); readers skip it as a comment."""
+    return f"# pendulab {kind}; metadata (JSON): {json.dumps(metadata, sort_keys=True)}"
+
+
+def write_csv_table(path: str | os.PathLike[str], header: list[str], columns: list[Any]) -> None:
+    """Writes ``header`` (lines: the metadata line, the column names with units) and then one row per
+    sample of the equal-length ``columns`` (floats, :func:`csv_number`) to ``path`` atomically."""
+    import numpy as np
+
+    data = np.column_stack(columns)
+    with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="") as f:
+        f.write("".join(line + "\n" for line in header))
+        f.writelines(csv_rows(data))
+
+
+def write_csv(tr: Tabular, path: str | os.PathLike[str]) -> None:
+    """CSV with a ``#`` header of metadata (JSON) and one row per sample, columns with units; numbers
+    in the shortest form that reads back exactly (:func:`csv_number`)."""
     cols = tr.columns()
-    header = "\n".join(
-        [
-            f"# pendulab trajectory; metadata (JSON): {json.dumps(_metadata(tr), sort_keys=True)}",
-            ",".join(f"{name} [{unit}]" for name, (unit, _) in cols.items()),
-        ]
-    )
-    data = np.column_stack([values for _, values in cols.values()])
-    with atomic_path(path) as tmp:
-        np.savetxt(tmp, data, delimiter=",", header=header, comments="", fmt="%.17g")
+    header = [
+        csv_metadata_line("trajectory", _metadata(tr)),
+        ",".join(f"{name} [{unit}]" for name, (unit, _) in cols.items()),
+    ]
+    write_csv_table(path, header, [values for _, values in cols.values()])
 
 
 def write_parquet(tr: Tabular, path: str | os.PathLike[str]) -> None:

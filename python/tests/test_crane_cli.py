@@ -77,3 +77,31 @@ def test_grid_command_writes_every_case(tmp_path: Path) -> None:
     np.testing.assert_allclose([float(r[3]) for r in rows[:4]], res.sway[0].ravel(), rtol=1e-12)
     assert "8 runs in" in text
     assert_user_error(*invoke("crane", "grid", "--ropes", "5:1:3"), "--ropes")
+
+
+def test_crane_run_csv_reads_back_bit_for_bit(tmp_path: Path) -> None:
+    """``pendulab crane run --out`` writes every number in the shortest text that reads back as the
+    same float (t = 0.1 s as ``0.1``, not ``0.10000000000000001``); the grid's numbers too."""
+    from pendulab.crane.scenario import load
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "cranes" / "gantry_zvd.toml"
+    out = tmp_path / "run.csv"
+    code, _, err = invoke("crane", "run", str(example), "--out", str(out))
+    assert code == 0, err
+    lines = out.read_text().splitlines()
+    names = next(line for line in lines if line.startswith("t [s],")).split(",")
+    data = np.loadtxt(out, delimiter=",", comments="#", skiprows=lines.index(",".join(names)) + 1)
+    run = load(example).run()
+    assert [row.split(",", 1)[0] for row in lines[-len(run.t) :][:3]] == ["0", "0.05", "0.1"]
+    expected = {"t [s]": run.t, "payload_x [m]": run.payload[:, 0], "rope [m]": run.rope}
+    expected |= {"energy [J]": run.energy, "tension_rope [N]": run.tension[:, 0]}
+    for name, values in expected.items():
+        column = data[:, names.index(name)]
+        assert np.array_equal(column.view(np.uint64), values.view(np.uint64)), name
+    grid = tmp_path / "grid.csv"
+    args = ("--ropes", "6:10:2", "--ratios", "2:8:2", "--shapers", "none", "--settle", "5")
+    assert invoke("crane", "grid", *args, "--out", str(grid))[0] == 0
+    rows = [line.split(",") for line in grid.read_text().splitlines()[1:]]
+    res = crane.residual_grid([6.0, 10.0], [2.0, 8.0], [None], settle=5.0)
+    assert [r[1] for r in rows] == ["6", "6", "10", "10"]
+    assert np.array_equal([float(r[3]) for r in rows], res.sway[0].ravel())

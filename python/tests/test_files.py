@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from collections.abc import Iterator
 from pathlib import Path
 
 import numpy as np
@@ -27,6 +28,45 @@ def test_csv_round_trip_with_metadata(trajectory: pl.Trajectory, tmp_path: Path)
     data = np.loadtxt(path, delimiter=",", skiprows=2)
     assert data.shape == (len(trajectory), 12)
     assert np.array_equal(data[:, 1:4], trajectory.x)
+
+
+def _read_back(path: Path, skip: int) -> np.ndarray:
+    return np.loadtxt(path, delimiter=",", skiprows=skip, ndmin=2)
+
+
+def _same_bits(a: np.ndarray, b: np.ndarray) -> bool:
+    return a.shape == b.shape and np.array_equal(a.view(np.uint64), b.view(np.uint64))
+
+
+def test_csv_numbers_are_shortest_and_exact(pendulum: pl.Pendulum, rosette: pl.State, tmp_path: Path) -> None:
+    """Every CSV writer (trajectory, exact solution, energy-momentum map; the crane's in
+    test_crane_cli.py) writes each float as the shortest text that reads back as the same bits:
+    0.1 s as ``0.1``, not ``0.10000000000000001``; integral values as ``5``; -0.0, nan and inf kept."""
+    tricky = np.array([0.1, 1 / 3, -0.0, 5.0, 1e16, 2.5e-300, 5e-324, np.nan, np.inf, -np.inf, 1e300])
+    table = np.column_stack([tricky, np.where(np.isnan(tricky), np.nan, -tricky)])  # NaN has no sign
+    lines = "".join(io.csv_rows(table)).splitlines()
+    assert lines[:4] == ["0.1,-0.1", "0.3333333333333333,-0.3333333333333333", "-0,0", "5,-5"]
+    path = tmp_path / "t.csv"
+    path.write_text("\n".join(lines) + "\n")
+    assert _same_bits(_read_back(path, 0), table)
+
+    tr = pl.simulate(pendulum, rosette, t_end=1.0, dt=0.1)
+    text = tr.to_csv(tmp_path / "run.csv").read_text()
+    times = [line.split(",", 1)[0] for line in text.splitlines()[2:]]
+    assert times[:3] == ["0", "0.1", "0.2"] and times[-1] == "1", times
+    assert _same_bits(
+        _read_back(tmp_path / "run.csv", 2), np.column_stack([values for _, values in tr.columns().values()])
+    )
+    exact = pl.exact(pendulum, rosette).trajectory(np.linspace(0.0, 1.0, 11))
+    exact.save(tmp_path / "exact.csv")
+    cols = [values for _, values in exact.columns().values()]
+    assert _same_bits(_read_back(tmp_path / "exact.csv", 2), np.column_stack(cols))
+    emm = pl.em_map(pendulum, grid=(5, 7))
+    emm.save(tmp_path / "em.csv")
+    ee, jj = np.meshgrid(emm.E, emm.J3, indexing="ij")
+    grid = np.column_stack([ee.ravel(), jj.ravel(), emm.W.ravel()])
+    assert _same_bits(_read_back(tmp_path / "em.csv", 2), grid)
+    assert (tmp_path / "em.csv").read_text().startswith("# pendulab em-map; metadata (JSON): {")
 
 
 def test_parquet_and_netcdf_carry_units(trajectory: pl.Trajectory, tmp_path: Path) -> None:
@@ -57,11 +97,11 @@ def test_writes_are_atomic(
     target = tmp_path / "out.csv"
     target.write_text("old contents")
 
-    def broken(fname: object, *args: object, **kwargs: object) -> None:
-        Path(str(fname)).write_text("half a file")
+    def broken(data: object) -> Iterator[str]:
+        yield "0,half a file"
         raise OSError("disk full")
 
-    monkeypatch.setattr(np, "savetxt", broken)
+    monkeypatch.setattr(io, "csv_rows", broken)
     with pytest.raises(OSError, match="disk full"):
         io.write_csv(trajectory, target)
     assert target.read_text() == "old contents"

@@ -210,7 +210,7 @@ def report(sc: Any, name: str, out: Path | None = None, plot: Path | None = None
 
 def _write_csv(run: object, out: Path) -> None:
     from ..crane.system import CraneRun
-    from ..io import atomic_path
+    from ..io import write_csv_table
 
     assert isinstance(run, CraneRun)
     cols = {"t [s]": run.t}
@@ -225,9 +225,7 @@ def _write_csv(run: object, out: Path) -> None:
     cols["energy [J]"] = run.energy
     for k, v in run.work.items():
         cols[f"work_{k} [J]"] = v
-    table = np.column_stack(list(cols.values()))
-    with atomic_path(out) as tmp:
-        np.savetxt(tmp, table, delimiter=",", header=",".join(cols), comments="", fmt="%.17g")
+    write_csv_table(out, [",".join(cols)], list(cols.values()))
 
 
 def _span(option: str, spec: str, geometric: bool) -> np.ndarray:
@@ -298,16 +296,15 @@ def grid_cmd(
         for i, label in enumerate(res.labels):
             _say(f"{label:>9}: median {np.median(res.sway[i]):.4g} m, largest {res.sway[i].max():.4g} m")
         if out is not None:
-            from ..io import atomic_path
+            from ..io import atomic_path, csv_number
 
             with atomic_path(out) as tmp, open(tmp, "w", encoding="utf-8") as f:
                 f.write("shaper,rope [m],ratio,sway [m]\n")
                 for i, label in enumerate(res.labels):
                     for j, rope in enumerate(res.ropes):
                         for k, ratio in enumerate(res.ratios):
-                            f.write(
-                                f"{label},{float(rope)!r},{float(ratio)!r},{float(res.sway[i, j, k])!r}\n"
-                            )
+                            numbers = (csv_number(x) for x in (rope, ratio, res.sway[i, j, k]))
+                            f.write(",".join((label, *numbers)) + "\n")
             _say(f"wrote {out}")
         if plot is not None:
             from ..crane.plot import plot_grid

@@ -176,11 +176,8 @@ class EMMap:
                 ds.to_netcdf(tmp, engine="scipy")
         elif suffix == ".csv":
             ee, jj = np.meshgrid(self.E, self.J3, indexing="ij")
-            data = np.column_stack([ee.ravel(), jj.ravel(), self.W.ravel()])
-            header = f"# pendulab em-map; metadata (JSON): {json.dumps(self.metadata(), sort_keys=True)}\n"
-            header += "E [J],J3 [kg m^2/s],W [1]"
-            with io.atomic_path(target) as tmp:
-                np.savetxt(tmp, data, delimiter=",", header=header, comments="", fmt="%.17g")
+            header = [io.csv_metadata_line("em-map", self.metadata()), "E [J],J3 [kg m^2/s],W [1]"]
+            io.write_csv_table(target, header, [ee.ravel(), jj.ravel(), self.W.ravel()])
         else:
             raise InvalidInputError(
                 f"unknown suffix {suffix!r} in {str(path)!r} for the energy-momentum map data; "
