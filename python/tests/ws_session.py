@@ -62,13 +62,14 @@ def status_with(**want: Any) -> Any:
 
 
 @contextlib.contextmanager
-def live_lab(app: Any, header_timeout: float = 10.0) -> Iterator[int]:
-    """``app`` under uvicorn (the lab's configuration, :func:`pendulab.server.serving.server_config`) on a
-    free loopback port, in a thread; yields the port. Stopped (and joined) on exit."""
+def live_lab(app: Any, header_timeout: float = 10.0, **config: Any) -> Iterator[int]:
+    """``app`` under uvicorn (the lab's configuration, :func:`pendulab.server.serving.server_config`, with
+    ``config``'s settings) on a free loopback port, in a thread; yields the port. Stopped (and joined) on
+    exit."""
     sock = socket.socket()
     sock.bind(("127.0.0.1", 0))
     port = sock.getsockname()[1]
-    server = uvicorn.Server(server_config(app, "127.0.0.1", port, header_timeout=header_timeout))
+    server = uvicorn.Server(server_config(app, "127.0.0.1", port, header_timeout=header_timeout, **config))
     thread = threading.Thread(target=lambda: asyncio.run(server.serve(sockets=[sock])), daemon=True)
     thread.start()
     try:

@@ -140,6 +140,15 @@ def serve(
             "have under way or waiting; one more is answered 429.",
         ),
     ] = 2,
+    idle_timeout: Annotated[
+        float,
+        typer.Option(
+            min=1.0,
+            max=86_400.0,
+            help="Seconds a page's WebSocket may send nothing (no command, no answer to the server's "
+            "pings) before it is closed; an open page's browser answers the pings by itself.",
+        ),
+    ] = 60.0,
     allow_host: Annotated[
         list[str] | None,
         typer.Option(
@@ -213,6 +222,7 @@ def serve(
         port,
         max_sessions=max_sessions,
         max_connections_per_client=max_connections_per_client,
+        idle_timeout=idle_timeout,
         trusted_proxies=trust_proxy,
     )
     server = uvicorn.Server(config)

@@ -22,13 +22,18 @@ bodies only and capped, slow clients timed out.
   Nothing more is read from a connection whose request has arrived whole until its answer is sent
   (:class:`PipelineFlow`): a client pipelining requests cannot make the server hold what it sends.
 - :class:`LabWebSocketProtocol`: uvicorn's WebSocket protocol with at most :data:`MAX_WS_BUFFER` bytes
-  waiting for a client (a client that pings without reading is cut off) and at most :data:`PING_RATE`
-  pings a second (a burst of :data:`PING_BURST` seconds' worth; a ping flood is cut off too).
+  waiting for a client (a client that pings without reading is cut off), at most :data:`PING_RATE`
+  pings a second (a burst of :data:`PING_BURST` seconds' worth; a ping flood is cut off too), and an
+  idle timeout: the server pings every client every :data:`WS_PING_INTERVAL` seconds, and a client
+  from which nothing at all has arrived (no command, ping or pong) for :data:`WS_IDLE_TIMEOUT` seconds
+  is closed with code 1001. The lab's page sends nothing while nobody uses it, but its browser answers
+  every ping by itself (also in a background tab), so an open page is never idle.
 """
 
 from __future__ import annotations
 
 import asyncio
+import math
 import re
 from collections.abc import Iterable, Mapping
 from typing import Any
@@ -63,6 +68,15 @@ library one every 20 s or so); a connection that goes beyond :data:`PING_BURST` 
 
 PING_BURST = 10.0
 """Seconds' worth of :data:`PING_RATE` pings a connection may send at once."""
+
+WS_PING_INTERVAL = 20.0
+"""Seconds between the server's WebSocket pings to each client (uvicorn's keepalive; browsers answer
+them by themselves). Shorter when the idle timeout is shorter than two of them."""
+
+WS_IDLE_TIMEOUT = 60.0
+"""Default seconds without anything from a WebSocket client (command, ping or pong) after which it is
+closed (``pendulab serve --idle-timeout``); it is noticed at the next ping, so within
+:data:`WS_PING_INTERVAL` × 2 after."""
 
 _HOST_RE = re.compile(r"^[A-Za-z0-9.\-]+(:\d{1,5})?$|^\[[0-9A-Fa-f:.]+\](:\d{1,5})?$")
 
@@ -197,8 +211,36 @@ class LabWebSocketProtocol(WebSocketsSansIOProtocol):
 
     max_buffer = MAX_WS_BUFFER
     ping_rate = PING_RATE
+    idle_timeout: float | None = WS_IDLE_TIMEOUT
     _pings = 0.0  # the pings counted so far, less PING_RATE per second since ``_ping_at``
     _ping_at = 0.0
+    _heard = True  # anything from the client since the server's last ping (the handshake counts)
+    _silent = 0  # the server's pings in a row before which nothing came from the client
+
+    def send_keepalive_ping(self) -> None:
+        """Before each keepalive ping: a client silent for the last ``idle_timeout`` seconds' worth of
+        ping intervals is closed (module doc). Counted in pings, so every step is the event loop's
+        timer of uvicorn's keepalive, whatever the clock."""
+        if self.idle_timeout is not None and not self.close_sent and not self.transport.is_closing():
+            self._silent = 0 if self._heard else self._silent + 1
+            self._heard = False
+            if self._silent >= self.idle_pings():
+                self._close_idle()
+                return
+        super().send_keepalive_ping()
+
+    def idle_pings(self) -> int:
+        """The silent ping intervals in a row after which a client is idle: ``idle_timeout`` rounded up
+        to whole intervals, at least one."""
+        interval = self.ping_interval or WS_PING_INTERVAL
+        return max(1, math.ceil((self.idle_timeout or 0.0) / interval - 1e-9))
+
+    def _close_idle(self) -> None:
+        self.stop_keepalive()
+        self.conn.fail(1001, f"idle: nothing from the client in {self.idle_timeout:g} s")
+        self.transport.write(b"".join(self.conn.data_to_send()))
+        self.close_sent = True
+        self.transport.close()
 
     def handle_ping(self) -> None:
         now = self.loop.time()
@@ -214,6 +256,7 @@ class LabWebSocketProtocol(WebSocketsSansIOProtocol):
     def data_received(self, data: bytes) -> None:
         if self.transport.is_closing():
             return
+        self._heard = True
         super().data_received(data)
 
 

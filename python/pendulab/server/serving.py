@@ -15,7 +15,7 @@ from typing import Any
 
 import uvicorn
 
-from .hygiene import HEADER_TIMEOUT, LabWebSocketProtocol, TimedH11Protocol
+from .hygiene import HEADER_TIMEOUT, WS_IDLE_TIMEOUT, WS_PING_INTERVAL, LabWebSocketProtocol, TimedH11Protocol
 from .room import MAX_CONNECTIONS_PER_CLIENT
 
 SHUTDOWN_GRACE = 0.5
@@ -37,13 +37,18 @@ def server_config(
     max_sessions: int = 64,
     max_connections_per_client: int = MAX_CONNECTIONS_PER_CLIENT,
     header_timeout: float = HEADER_TIMEOUT,
+    idle_timeout: float = WS_IDLE_TIMEOUT,
     log_level: str = "warning",
     trusted_proxies: str | None = None,
 ) -> uvicorn.Config:
     """The uvicorn configuration of the lab: ``app`` on ``host``:``port`` with the limits of the module
     doc; at most ``max_sessions`` + 64 connections at once (the pages' WebSockets and their requests;
     beyond that uvicorn answers 503), at most ``max_connections_per_client`` of one client (address;
-    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`).
+    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`); a WebSocket from which nothing
+    (no command, ping or pong) arrives for ``idle_timeout`` seconds is closed (code 1001): the server pings
+    every :data:`~.hygiene.WS_PING_INTERVAL` seconds (at most half the idle timeout) and a browser answers
+    by itself, so an open page is kept (:class:`~.hygiene.LabWebSocketProtocol`). uvicorn's own pong
+    deadline is off: the idle timeout is the one rule.
 
     The client is the address a connection comes from. uvicorn would by default believe the
     ``X-Forwarded-For`` and ``X-Forwarded-Proto`` headers of connections from 127.0.0.1, so any program
@@ -55,13 +60,18 @@ def server_config(
         (TimedH11Protocol,),
         {"header_timeout": float(header_timeout), "max_per_client": int(max_connections_per_client)},
     )
+    if not idle_timeout > 0:
+        raise ValueError(f"the idle timeout must be > 0 s, got {idle_timeout}")
+    websocket = type("LabWebSocket", (LabWebSocketProtocol,), {"idle_timeout": float(idle_timeout)})
     return uvicorn.Config(
         app,
         host=host,
         port=port,
         log_level=log_level,
         http=protocol,
-        ws=LabWebSocketProtocol,
+        ws=websocket,
+        ws_ping_interval=min(WS_PING_INTERVAL, idle_timeout / 2),
+        ws_ping_timeout=None,  # the idle timeout closes a client that stopped answering (module doc)
         ws_max_size=WS_MAX_BYTES,
         ws_per_message_deflate=False,  # frames are float64: deflate saved little and took ~10 % of the loop
         timeout_keep_alive=KEEP_ALIVE,

@@ -1,0 +1,177 @@
+"""Idle WebSockets (docs/web.md, "A pupil in the room"): a client from which nothing at all arrives — no
+command, no ping, no answer to the server's pings — for the idle timeout is closed with code 1001; a
+client that sends nothing but answers the server's pings, as the lab's open page does (its browser
+answers them by itself), is kept however long it stays quiet. Before, such sockets were never closed by
+the lab (only uvicorn's undocumented 20-s pong deadline, a default, stood in for it).
+
+Counted, not timed: the server's protocol is driven ping by ping here (its keepalive timer is what calls
+``send_keepalive_ping``), with websockets' sans-I/O client as the page; over a real socket the count of
+pings a silent client gets before the close is exact whatever the machine's speed."""
+
+from __future__ import annotations
+
+import asyncio
+import socket
+import time
+from typing import Any
+
+import pytest
+from test_server_client_caps import _free_port, _serve_configs
+from typer.testing import CliRunner
+from uvicorn import Config
+from uvicorn.server import ServerState
+from websockets.client import ClientProtocol
+from websockets.frames import Frame, Opcode
+from websockets.uri import parse_uri
+from ws_session import live_lab
+
+from pendulab.cli import app as cli
+from pendulab.server import create_app
+from pendulab.server.hygiene import WS_IDLE_TIMEOUT, WS_PING_INTERVAL, LabWebSocketProtocol
+from pendulab.server.serving import server_config
+
+
+class _Transport(asyncio.Transport):
+    """What the protocol writes, kept for the client; closing only marks it closed."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.out = bytearray()
+        self.closed = False
+
+    def get_extra_info(self, name: str, default: Any = None) -> Any:
+        return {"peername": ("127.0.0.9", 50000), "sockname": ("127.0.0.1", 8000)}.get(name, default)
+
+    def write(self, data: Any) -> None:
+        self.out += data
+
+    def is_closing(self) -> bool:
+        return self.closed
+
+    def close(self) -> None:
+        self.closed = True
+
+    def abort(self) -> None:
+        self.closed = True
+
+    def pause_reading(self) -> None:
+        pass
+
+    def resume_reading(self) -> None:
+        pass
+
+    def get_write_buffer_size(self) -> int:
+        return len(self.out)
+
+
+async def _quiet_app(scope: Any, receive: Any, send: Any) -> None:
+    """A lab page's server side that expects nothing: accepts, then waits for the client to go."""
+    assert (await receive())["type"] == "websocket.connect"
+    await send({"type": "websocket.accept"})
+    while (await receive())["type"] != "websocket.disconnect":
+        pass
+
+
+def _quiet_client(pings: int, idle_timeout: float, answers: bool) -> tuple[int, int | None]:
+    """A client that sends nothing of its own, answering the server's pings or not, through ``pings``
+    of the server's keepalive steps (interval 1000 s: the timer itself never fires here). Returns the
+    pings it received and the close code it was sent (None: still open)."""
+
+    async def run() -> tuple[int, int | None]:
+        config = Config(_quiet_app, ws_ping_interval=1000.0, ws_ping_timeout=None, lifespan="off")
+        config.load()
+        cls = type("Lab", (LabWebSocketProtocol,), {"idle_timeout": idle_timeout})
+        server = cls(
+            config=config, server_state=ServerState(), app_state={}, _loop=asyncio.get_running_loop()
+        )
+        transport = _Transport()
+        server.connection_made(transport)
+        client = ClientProtocol(parse_uri("ws://127.0.0.1:8000/ws"))
+        client.send_request(client.connect())
+        server.data_received(b"".join(client.data_to_send()))
+        for _ in range(50):  # the app accepts
+            await asyncio.sleep(0)
+        assert server.handshake_complete
+
+        def to_client() -> list[Any]:
+            client.receive_data(bytes(transport.out))
+            transport.out.clear()
+            return list(client.events_received())
+
+        to_client()  # the handshake's answer
+        got = 0
+        for _ in range(pings):
+            server.send_keepalive_ping()
+            events = to_client()
+            got += sum(1 for e in events if isinstance(e, Frame) and e.opcode is Opcode.PING)
+            answer = b"".join(client.data_to_send())  # sans-I/O: the pongs it owes
+            if answers and not transport.closed:
+                server.data_received(answer)
+            if transport.closed:
+                break
+        code = client.close_rcvd.code if client.close_rcvd is not None else None
+        server.connection_lost(None)
+        return got, code
+
+    return asyncio.run(run())
+
+
+def test_a_client_that_sends_nothing_and_answers_no_ping_is_closed_after_the_idle_timeout() -> None:
+    interval = 1000.0
+    got, code = _quiet_client(pings=50, idle_timeout=3 * interval, answers=False)
+    # ping 1 finds the handshake heard; pings 2 and 3 find nothing since the last: 3 intervals silent
+    assert (got, code) == (3, 1001)
+    assert _quiet_client(pings=50, idle_timeout=2.5 * interval, answers=False) == (3, 1001)  # rounded up
+    assert _quiet_client(pings=50, idle_timeout=1.0, answers=False) == (1, 1001)  # at least one interval
+
+
+def test_a_quiet_page_that_answers_the_pings_is_never_idle() -> None:
+    """The lab's page sends no command while nobody uses it (web/src sends none on a timer), but its
+    browser answers every ping: 200 intervals of the idle timeout's 3, still open."""
+    assert _quiet_client(pings=200, idle_timeout=3000.0, answers=True) == (200, None)
+
+
+def test_a_silent_client_of_the_real_lab_gets_exactly_the_idle_timeouts_pings_then_1001() -> None:
+    """Over a real socket with the lab itself: a client that completed the handshake and then answers
+    nothing (it reads the frames the lab streams) gets the pings of the idle timeout, no more, and the
+    close. Timeout 0.1 s, pings every 0.05 s: 2 silent intervals after the first ping."""
+    lab = create_app("rosette")
+    with live_lab(lab, idle_timeout=0.1) as port:
+        client = ClientProtocol(parse_uri(f"ws://127.0.0.1:{port}/ws"))
+        client.send_request(client.connect())
+        with socket.create_connection(("127.0.0.1", port), timeout=20) as s:
+            s.sendall(b"".join(client.data_to_send()))
+            pings = 0
+            while client.close_rcvd is None and (data := s.recv(65536)):
+                client.receive_data(data)
+                for e in client.events_received():
+                    pings += isinstance(e, Frame) and e.opcode is Opcode.PING
+                client.data_to_send()  # the pongs: never sent
+        for _ in range(1000):  # its session ends and frees the client's place (bounded wait)
+            if not lab.state.room.sessions:
+                break
+            time.sleep(0.01)
+        assert not lab.state.room.sessions
+    assert client.close_rcvd is not None, "the silent client was not closed"
+    assert (pings, client.close_rcvd.code) == (2, 1001)
+    assert "idle" in client.close_rcvd.reason
+
+
+def test_the_idle_timeout_is_a_setting_of_the_server_and_of_pendulab_serve(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    config = server_config(create_app("rosette"), "127.0.0.1", 8000)
+    assert config.ws.idle_timeout == WS_IDLE_TIMEOUT  # type: ignore[union-attr]
+    assert (config.ws_ping_interval, config.ws_ping_timeout) == (WS_PING_INTERVAL, None)
+    short = server_config(create_app("rosette"), "127.0.0.1", 8000, idle_timeout=10.0)
+    assert short.ws_ping_interval == 5.0  # two pings at least within the timeout
+    with pytest.raises(ValueError, match="idle timeout"):
+        server_config(create_app("rosette"), "127.0.0.1", 8000, idle_timeout=0.0)
+    ran = _serve_configs(monkeypatch)
+    args = ["serve", "--no-browser", "--port", str(_free_port()), "--idle-timeout", "300"]
+    result = CliRunner().invoke(cli, args)
+    assert result.exit_code == 0, result.output
+    (config,) = ran
+    assert config.ws.idle_timeout == 300.0  # type: ignore[union-attr]
+    bad = CliRunner().invoke(cli, ["serve", "--idle-timeout", "0"])
+    assert bad.exit_code != 0 and "--idle-timeout" in bad.output
