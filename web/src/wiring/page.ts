@@ -27,6 +27,38 @@ export function downloadBlob(name: string, blob: Blob): void {
   setTimeout(() => URL.revokeObjectURL(url), 10_000);
 }
 
+/** What `firstControl` asks of an element (an HTMLElement; plain objects in the unit tests). */
+export interface Focusable {
+  readonly classList: { contains(name: string): boolean };
+  getClientRects(): { readonly length: number };
+  matches(selector: string): boolean;
+}
+
+/** The elements of the settings panel that take the focus by Tab, in document order. */
+export const FOCUSABLE = 'input, select, textarea, button, [tabindex]:not([tabindex="-1"])';
+
+/** The first of `candidates` (the settings panel's focusable elements, in order) that is shown, enabled and
+ *  a control — not a folder's title (lil-gui's `.lil-title`): in the simple view the length's slider. */
+export function firstControl<E extends Focusable>(candidates: Iterable<E>): E | null {
+  for (const e of candidates) if (!e.classList.contains('lil-title') && !e.matches(':disabled') && e.getClientRects().length > 0) return e;
+  return null;
+}
+
+/** "Skip to controls" (#skip, the page's first focusable element; visually hidden until focused): Enter
+ *  moves the focus past the toolbar and the tools to the first control of the settings panel (#gui), the
+ *  rod length in the simple view, where about 28 Tab presses led before. Without scripts it is a plain
+ *  link to #gui; with them the address keeps no #gui (the share link is the address). */
+function wireSkipLink(): void {
+  const skip = byId('skip');
+  skip.textContent = t('page.skip');
+  skip.addEventListener('click', (e) => {
+    e.preventDefault();
+    const target = firstControl(byId('gui').querySelectorAll<HTMLElement>(FOCUSABLE));
+    target?.focus();
+    target?.scrollIntoView({ block: 'nearest' });
+  });
+}
+
 /** Chooses the language (the link's `lang`, the last choice, the browser's) and writes the page's fixed texts. */
 export function setUpPage(): void {
   const lang = chooseLanguage(
@@ -45,6 +77,7 @@ export function setUpPage(): void {
   byId('panel-title').textContent = t('page.panel');
   const regions = { tools: 'page.tools', energy: 'page.energy', data: 'page.data', plots: 'page.plots', portraits: 'page.portraits', reduced: 'page.reduced' } as const;
   for (const [id, key] of Object.entries(regions)) byId(id).setAttribute('aria-label', t(key));
+  wireSkipLink();
 }
 
 /** Shows a text in the message line: a problem (red) or, with `info`, news (blue). */

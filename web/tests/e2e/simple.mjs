@@ -4,7 +4,8 @@
 // Pendulum Lab has — length and mass (lil-gui's Pendulum folder), gravity and friction, the start angle,
 // stopwatch, period timer, ruler and protractor, energy bars, two pendulums, slow motion —; the link
 // carries it; with presentation mode on top the type is large; pressing again brings everything back; a link
-// that does not say which view opens as the device chose last (localStorage), else in the simple view.
+// that does not say which view opens as the device chose last (localStorage), else in the simple view. A
+// "Skip to controls" link, the first Tab stop, takes the keyboard to the length's control.
 const shown = (sel) => [...document.querySelectorAll(sel)].some((e) => e.getClientRects().length > 0 && e.getBoundingClientRect().height > 0);
 
 async function state(page) {
@@ -26,6 +27,7 @@ export async function checkSimpleView(page, { check, WAIT, shot }) {
   await page.screenshot({ path: shot('simple-view') });
   check(simple.simple && simple.gone.length === 0 && simple.folders === 2, `simple view: the data panel, plots, portraits, reduced view, fitting, model picker and ${full.folders - 2} settings folders are folded away${simple.gone.length ? ' (still shown: ' + simple.gone.join(', ') + ')' : ''}`);
   check(simple.kept.length === 0 && simple.targets < full.targets, `simple view: PhET's tools kept (length and mass, gravity and friction, start, stopwatch, period, ruler, energy, two pendulums, slow motion); ${simple.targets} controls instead of ${full.targets}${simple.kept.length ? '; missing: ' + simple.kept.join(', ') : ''}`);
+  await checkSkipLink(page, { check, WAIT });
   // the link hands the simple view out; presentation mode on top of it
   const p2 = await page.context().newPage();
   await p2.goto(page.url(), { timeout: WAIT });
@@ -55,4 +57,40 @@ export async function checkSimpleView(page, { check, WAIT, shot }) {
   await p4.evaluate(() => localStorage.setItem('pendulab.simple', '0')); // the checks after this one use the whole panel
   await p4.close();
   check(!chosen && never, `a link without a view opens as the device chose (advanced: ${!chosen}); a device that never chose gets the simple view (${never})`);
+}
+
+/** "Skip to controls" (index.html #skip) on a fresh page of the simple view: out of sight until the first
+ *  Tab gives it the focus, then shown; Enter moves the focus to the rod length's control, which Tab alone
+ *  reaches only after many presses (about 28 when the audit counted; counted and printed here). */
+async function checkSkipLink(page, { check, WAIT }) {
+  const p = await page.context().newPage();
+  const fresh = async () => {
+    await p.goto(page.url(), { timeout: WAIT });
+    await p.waitForFunction(() => window.pendulab?.store.status != null && document.body.classList.contains('simple'), null, { timeout: WAIT });
+  };
+  const inLength = () => p.evaluate(() => document.activeElement?.closest('[data-param="length"]') != null);
+  await fresh();
+  let presses = 0;
+  while (presses < 100 && !(await inLength())) {
+    await p.keyboard.press('Tab');
+    presses += 1;
+  }
+  await fresh();
+  const onScreen = () =>
+    p.evaluate(() => {
+      const r = document.getElementById('skip').getBoundingClientRect();
+      return r.width > 0 && r.bottom > 0 && r.top >= 0 && r.right <= innerWidth;
+    });
+  const before = await onScreen();
+  await p.keyboard.press('Tab');
+  const first = await p.evaluate(() => ({ id: document.activeElement?.id, text: document.activeElement?.textContent }));
+  const shown = await onScreen();
+  await p.keyboard.press('Enter');
+  const landed = await inLength();
+  const url = p.url();
+  await p.close();
+  check(
+    !before && first.id === 'skip' && shown && landed && !url.includes('#'),
+    `"${first.text}": the first Tab reaches it (hidden before: ${!before}, shown while focused: ${shown}); Enter moves the focus to the length's control (${presses - 1} Tab presses after the link without it), the address unchanged`,
+  );
 }

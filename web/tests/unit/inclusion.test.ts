@@ -1,6 +1,6 @@
 // Issue 28's inclusion tools: accessible names containing the visible words in every language, the motion
 // in words, keys on the 3-D view, the mystery planet's g [m/s²], charts' text alternatives, the plain
-// layer's words and the sound's pitch [Hz].
+// layer's words, the sound's pitch [Hz] and where "Skip to controls" takes the focus.
 import { describe, expect, it } from 'vitest';
 import type { Vec3 } from '../../src/protocol';
 import { PeriodTimer } from '../../src/measure';
@@ -12,8 +12,21 @@ import { chartSummary } from '../../src/panels/alttext';
 import { viewKey } from '../../src/keyboard';
 import { accessibleName } from '../../src/panels/toolbar';
 import { frame, planar } from './classroom_fixtures';
+import { firstControl } from '../../src/wiring/page';
 
 describe('inclusion (issue 28)', () => {
+  it('"Skip to controls" goes to the first shown, enabled control of the settings panel, past folder titles', () => {
+    const el = (name: string, { title = false, shown = true, disabled = false } = {}) => ({
+      name,
+      classList: { contains: (c: string) => title && c === 'lil-title' },
+      getClientRects: () => ({ length: shown ? 1 : 0 }),
+      matches: (sel: string) => disabled && sel === ':disabled',
+    });
+    const panel = [el('root title', { title: true }), el('model', { shown: false }), el('pendulum title', { title: true }), el('off', { disabled: true }), el('length'), el('mass')];
+    expect(firstControl(panel)?.name).toBe('length');
+    expect(firstControl([el('title', { title: true }), el('hidden', { shown: false })])).toBeNull();
+    for (const { words } of Object.values(LANGUAGES)) expect(words['page.skip'].length).toBeGreaterThan(5);
+  });
   it('a button’s accessible name contains its visible words (axe label-content-name-mismatch) in every language', () => {
     expect(accessibleName('● Record', 'record a video (WebM)')).toBe('record a video (WebM)');
     expect(accessibleName('● Aufnahme', 'Video aufnehmen (WebM)')).toBe('Aufnahme: Video aufnehmen (WebM)');

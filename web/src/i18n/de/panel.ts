@@ -9,6 +9,7 @@ export const DE_PANEL: PanelWords = {
   'page.units': 'SI-Einheiten, z nach oben',
   'page.scene': '3-D-Ansicht des Pendels (ziehen zum Drehen, scrollen zum Zoomen)',
   'page.panel': 'Steuerung und Messungen',
+  'page.skip': 'Zur Steuerung springen',
   'page.software': 'Software-WebGL: ohne Kantenglättung',
   'conn.connected': 'verbunden',
   'conn.retrying': 'getrennt: neuer Versuch…',

@@ -7,6 +7,7 @@ export const EN_PANEL = {
   'page.units': 'SI units, z up',
   'page.scene': '3-D view of the pendulum (drag to orbit, scroll to zoom)',
   'page.panel': 'controls and measurements',
+  'page.skip': 'Skip to controls',
   'page.software': 'software WebGL: no antialiasing',
   'conn.connected': 'connected',
   'conn.retrying': 'disconnected: retrying…',

@@ -9,6 +9,7 @@ export const FR_PANEL: PanelWords = {
   'page.units': 'unités SI, z vers le haut',
   'page.scene': 'vue 3D du pendule (glisser pour tourner, molette pour zoomer)',
   'page.panel': 'commandes et mesures',
+  'page.skip': 'Aller aux commandes',
   'page.software': 'WebGL logiciel : sans anticrénelage',
   'conn.connected': 'connecté',
   'conn.retrying': 'déconnecté : nouvel essai…',
