@@ -149,32 +149,33 @@ def csv_rows(data: Any) -> Iterator[str]:
         yield _TRAILING_ZERO.sub("", "".join(",".join(map(repr, row)) + "\n" for row in rows))
 
 
-def csv_metadata_line(kind: str, metadata: dict[str, Any]) -> str:
-    """The first line of a Pendulab CSV file: ``# pendulab <kind>; metadata (JSON): {...}`` (keys
-    sorted); readers skip it as a comment."""
-    return f"# pendulab {kind}; metadata (JSON): {json.dumps(metadata, sort_keys=True)}"
+def csv_header(kind: str, metadata: dict[str, Any], columns: dict[str, tuple[str, Any]]) -> list[str]:
+    """The two header lines of every Pendulab CSV file: ``# pendulab <kind>; metadata (JSON): {...}``
+    (keys sorted; readers skip it as a comment) and the column names with units, ``t [s],x [m],…``."""
+    return [
+        f"# pendulab {kind}; metadata (JSON): {json.dumps(metadata, sort_keys=True)}",
+        ",".join(f"{name} [{unit}]" for name, (unit, _) in columns.items()),
+    ]
 
 
-def write_csv_table(path: str | os.PathLike[str], header: list[str], columns: list[Any]) -> None:
-    """Writes ``header`` (lines: the metadata line, the column names with units) and then one row per
-    sample of the equal-length ``columns`` (floats, :func:`csv_number`) to ``path`` atomically."""
+def write_columns_csv(
+    path: str | os.PathLike[str], kind: str, metadata: dict[str, Any], columns: dict[str, tuple[str, Any]]
+) -> None:
+    """Writes :func:`csv_header` and then one row per sample of the equal-length ``columns`` (name →
+    (unit, floats)), each number as :func:`csv_number` writes it, to ``path`` atomically: the CSV
+    writer of trajectories, exact solutions, energy-momentum maps and crane runs."""
     import numpy as np
 
-    data = np.column_stack(columns)
+    data = np.column_stack([values for _, values in columns.values()])
     with atomic_path(path) as tmp, open(tmp, "w", encoding="utf-8", newline="") as f:
-        f.write("".join(line + "\n" for line in header))
+        f.write("".join(line + "\n" for line in csv_header(kind, metadata, columns)))
         f.writelines(csv_rows(data))
 
 
 def write_csv(tr: Tabular, path: str | os.PathLike[str]) -> None:
     """CSV with a ``#`` header of metadata (JSON) and one row per sample, columns with units; numbers
     in the shortest form that reads back exactly (:func:`csv_number`)."""
-    cols = tr.columns()
-    header = [
-        csv_metadata_line("trajectory", _metadata(tr)),
-        ",".join(f"{name} [{unit}]" for name, (unit, _) in cols.items()),
-    ]
-    write_csv_table(path, header, [values for _, values in cols.values()])
+    write_columns_csv(path, "trajectory", _metadata(tr), tr.columns())
 
 
 def write_parquet(tr: Tabular, path: str | os.PathLike[str]) -> None:

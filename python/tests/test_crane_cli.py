@@ -105,3 +105,33 @@ def test_crane_run_csv_reads_back_bit_for_bit(tmp_path: Path) -> None:
     res = crane.residual_grid([6.0, 10.0], [2.0, 8.0], [None], settle=5.0)
     assert [r[1] for r in rows] == ["6", "6", "10", "10"]
     assert np.array_equal([float(r[3]) for r in rows], res.sway[0].ravel())
+
+
+def test_crane_run_csv_has_the_metadata_line_of_every_pendulab_csv(tmp_path: Path) -> None:
+    """A crane run's CSV starts like a trajectory's: ``# pendulab crane run; metadata (JSON): …`` (the
+    file's settings, the shaper's impulses, the sway modes, units), then the names with units; NumPy
+    (skiprows=2, as for a trajectory) and Sampled.from_csv (its pivot) read it; ``pendulab run`` of a
+    crane scenario writes the same."""
+    import json
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "cranes" / "gantry_zvd.toml"
+    out = tmp_path / "run.csv"
+    assert invoke("crane", "run", str(example), "--out", str(out))[0] == 0
+    first, names = out.read_text().splitlines()[:2]
+    assert first.startswith("# pendulab crane run; metadata (JSON): {")
+    meta = json.loads(first.split("metadata (JSON): ", 1)[1])
+    assert meta["file"]["crane"]["rope"] == 10.0 and meta["file"]["move"]["distance"] == 5.0
+    assert meta["shaper"]["kind"] == "zvd" and meta["shaper"]["amplitudes"] == [0.25, 0.5, 0.25]
+    assert meta["modes"][0] == pytest.approx(0.91, abs=1e-4) and meta["units"]["tension_rope"] == "N"
+    assert names.startswith("t [s],pivot_x [m],pivot_y [m],pivot_z [m],hook_x [m]")
+    data = np.loadtxt(out, delimiter=",", skiprows=2)
+    columns = [name.split(" [")[0] for name in names.split(",")]
+    assert data.shape[1] == len(columns) and all(
+        meta["units"][c] in name for c, name in zip(columns, names.split(","), strict=True)
+    )
+    path = crane.Sampled.from_csv(str(out))  # the crane's pivot, after the metadata line
+    t = np.linspace(0.0, 40.0, 9)
+    np.testing.assert_allclose(path.position(t)[:, 0], np.interp(t, data[:, 0], data[:, 1]), atol=1e-3)
+    again = tmp_path / "again.csv"
+    assert invoke("run", str(example), "--out", str(again))[0] == 0
+    assert again.read_text() == out.read_text()

@@ -21,7 +21,7 @@ def test_the_example_runs_from_the_command_line(tmp_path: Path) -> None:
     code, text, err = invoke("crane", "run", str(EXAMPLE), "--out", str(out))
     assert code == 0, err
     assert "sway modes 0.91, 7.9949 rad/s; shaper zvd" in text
-    data = np.genfromtxt(out, delimiter=",", names=True)
+    data = np.genfromtxt(out, delimiter=",", skip_header=1, names=True)  # after the # metadata line
     work = sum(data[k] for k in data.dtype.names if k.startswith("work_"))
     assert np.abs(data["energy_J"] - data["energy_J"][0] - work).max() < 1e-6
 

@@ -54,7 +54,7 @@ def test_validate_and_run_from_the_command_line(tmp_path: Path) -> None:
     code, text, err = invoke("run", "crane_hoist", "--t-end", "18", "--out", str(out))
     assert code == 0, err
     assert "sway modes 0.90416 rad/s; shaper zv" in text
-    data = np.genfromtxt(out, delimiter=",", names=True)
+    data = np.genfromtxt(out, delimiter=",", skip_header=1, names=True)  # after the # metadata line
     assert data["t_s"][-1] == pytest.approx(18.0)
     assert_user_error(*invoke("run", "crane_hoist", "--method", "rk4"), "takes no method")
     assert_user_error(*invoke("run", "crane_hoist", "--out", str(tmp_path / "x.parquet")), ".csv")

@@ -198,7 +198,7 @@ def report(sc: Any, name: str, out: Path | None = None, plot: Path | None = None
     balance = np.abs(run.energy_residual()).max()
     _say(f"largest rope tension {run.tension[:, 0].max():.6g} N; E - E0 - W max {balance:.3g} J")
     if out is not None:
-        _write_csv(run, out)
+        _write_csv(sc, run, out)
         _say(f"wrote {out}")
     if plot is not None:
         from ..crane.plot import plot_sway
@@ -208,24 +208,14 @@ def report(sc: Any, name: str, out: Path | None = None, plot: Path | None = None
         _say(f"wrote {plot}")
 
 
-def _write_csv(run: object, out: Path) -> None:
+def _write_csv(sc: Any, run: object, out: Path) -> None:
+    """The run as CSV: the ``#`` metadata line of every Pendulab CSV (the crane file's settings, the
+    shaper's impulses, the sway modes, units), the column names with units, one row per sample."""
     from ..crane.system import CraneRun
-    from ..io import write_csv_table
+    from ..io import write_columns_csv
 
     assert isinstance(run, CraneRun)
-    cols = {"t [s]": run.t}
-    hook = run.hook if run.rigging_sway is not None else None  # a separate hook only
-    for name, arr in (("pivot", run.pivot), ("hook", hook), ("payload", run.payload)):
-        if arr is not None:
-            for i, ax in enumerate("xyz"):
-                cols[f"{name}_{ax} [m]"] = arr[:, i]
-    cols["rope [m]"] = run.rope
-    cols["tension_rope [N]"] = run.tension[:, 0]
-    cols["tension_rigging [N]"] = run.tension[:, 1]
-    cols["energy [J]"] = run.energy
-    for k, v in run.work.items():
-        cols[f"work_{k} [J]"] = v
-    write_csv_table(out, [",".join(cols)], list(cols.values()))
+    write_columns_csv(out, "crane run", sc.metadata(run), run.columns())
 
 
 def _span(option: str, spec: str, geometric: bool) -> np.ndarray:

@@ -16,6 +16,7 @@ Every path gives ``position/velocity/acceleration(t)`` (arrays (N, 3), m, m/s, m
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass
@@ -191,14 +192,18 @@ class Sampled(Path):
     @classmethod
     def from_csv(cls, path: str, columns: Sequence[int] = (0, 1, 2, 3), skip_header: int = 1) -> Sampled:
         """A measured path from a CSV file: the columns (t [s], x, y, z [m]) by index, after
-        ``skip_header`` lines (comments starting with # are skipped; at most 10⁶ rows)."""
+        ``skip_header`` lines (comments starting with # are skipped, and not counted when they lead the
+        file: a Pendulab CSV's metadata line; at most 10⁶ rows). The pivot of a crane run written by
+        ``pendulab crane run --out`` is columns (0, 1, 2, 3)."""
         cols = tuple(int(c) for c in columns)
         if len(cols) != 4:
             raise InvalidInputError(f"columns = {columns!r}: four column indices (t, x, y, z)")
         try:
-            data = np.genfromtxt(
-                path, delimiter=",", skip_header=skip_header, usecols=cols, max_rows=1_000_001
-            )
+            with open(path, encoding="utf-8") as f:
+                lines = itertools.dropwhile(lambda line: line.startswith("#"), f)
+                data = np.genfromtxt(
+                    lines, delimiter=",", skip_header=skip_header, usecols=cols, max_rows=1_000_001
+                )
         except (ValueError, IndexError) as e:
             raise InvalidInputError(f"{path}: cannot read columns {cols} as numbers: {e}") from None
         data = np.atleast_2d(data)

@@ -46,12 +46,40 @@ class CraneScenario:
     atol: float
     move_end: float
     title: str
+    spec: CraneSpec | None = None
 
     def run(self) -> CraneRun:
         """Simulates the file's crane (:meth:`Crane.simulate`)."""
         return self.crane.simulate(
             self.t_end, self.sway, self.rigging_sway, dt=self.dt, rtol=self.rtol, atol=self.atol
         )
+
+    def metadata(self, run: CraneRun | None = None) -> dict[str, Any]:
+        """What a crane run's file carries (its CSV's ``#`` line, as a trajectory's): the file's
+        settings with their defaults (``file``: the tables of the module doc), the shaper's impulses
+        (times [s], amplitudes), the sway modes [rad/s], the move's end [s], the steps taken and the
+        units of the columns and numbers."""
+        c = self.crane
+        shaper_info = None
+        if self.shaper is not None:
+            sh = self.shaper
+            design = {"omega": sh.omega, "damping": sh.damping, "tolerance": sh.tolerance}
+            shaper_info = {"kind": sh.kind, "times": sh.times.tolist(), "amplitudes": sh.amplitudes.tolist()}
+            shaper_info |= {k: v for k, v in design.items() if math.isfinite(v)}
+        units = {"modes": "rad/s", "move_end": "s", "shaper.times": "s", "shaper.omega": "rad/s"}
+        if run is not None:
+            units |= {name: unit for name, (unit, _) in run.columns().items()}
+        return {
+            "software": "pendulab",
+            "title": self.title,
+            "file": None if self.spec is None else self.spec.model_dump(mode="json", exclude_none=True),
+            "shaper": shaper_info,
+            "modes": c.modes().tolist(),
+            "move_end": self.move_end,
+            **({"steps": run.steps} if run is not None else {}),
+            "units": units,
+            "conventions": "SI units, z up, gravity along -z for g > 0",
+        }
 
 
 def _describe(e: ValidationError) -> str:
@@ -140,6 +168,7 @@ def _build(f: CraneSpec, source: str) -> CraneScenario:
         sim.atol,
         move_end,
         f.title or "",
+        f,
     )
 
 

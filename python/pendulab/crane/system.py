@@ -164,6 +164,24 @@ class CraneRun:
         """The payload's horizontal displacement from the pivot [m], (N, 2)."""
         return np.asarray(self.payload[:, :2] - self.pivot[:, :2], dtype=np.float64)
 
+    def columns(self) -> dict[str, tuple[str, FloatArray]]:
+        """Flat columns name → (unit, values) for a CSV file: t [s]; pivot, hook (a separate hook
+        only) and payload x, y, z [m]; rope [m]; the rope's and the rigging's tension [N]; energy and
+        each work [J]."""
+        cols: dict[str, tuple[str, FloatArray]] = {"t": ("s", self.t)}
+        hook = self.hook if self.rigging_sway is not None else None
+        for name, arr in (("pivot", self.pivot), ("hook", hook), ("payload", self.payload)):
+            if arr is not None:
+                for i, ax in enumerate("xyz"):
+                    cols[f"{name}_{ax}"] = ("m", arr[:, i])
+        cols["rope"] = ("m", self.rope)
+        cols["tension_rope"] = ("N", self.tension[:, 0])
+        cols["tension_rigging"] = ("N", self.tension[:, 1])
+        cols["energy"] = ("J", self.energy)
+        for k, v in self.work.items():
+            cols[f"work_{k}"] = ("J", v)
+        return cols
+
 
 def _angles(d: FloatArray) -> FloatArray:
     theta = np.arctan2(np.hypot(d[:, 0], d[:, 1]), -d[:, 2])

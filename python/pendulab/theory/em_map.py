@@ -176,8 +176,8 @@ class EMMap:
                 ds.to_netcdf(tmp, engine="scipy")
         elif suffix == ".csv":
             ee, jj = np.meshgrid(self.E, self.J3, indexing="ij")
-            header = [io.csv_metadata_line("em-map", self.metadata()), "E [J],J3 [kg m^2/s],W [1]"]
-            io.write_csv_table(target, header, [ee.ravel(), jj.ravel(), self.W.ravel()])
+            columns = {"E": ("J", ee.ravel()), "J3": ("kg m^2/s", jj.ravel()), "W": ("1", self.W.ravel())}
+            io.write_columns_csv(target, "em-map", self.metadata(), columns)
         else:
             raise InvalidInputError(
                 f"unknown suffix {suffix!r} in {str(path)!r} for the energy-momentum map data; "
