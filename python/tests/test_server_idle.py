@@ -175,3 +175,49 @@ def test_the_idle_timeout_is_a_setting_of_the_server_and_of_pendulab_serve(
     assert config.ws.idle_timeout == 300.0  # type: ignore[union-attr]
     bad = CliRunner().invoke(cli, ["serve", "--idle-timeout", "0"])
     assert bad.exit_code != 0 and "--idle-timeout" in bad.output
+
+
+def test_an_idle_client_that_reads_nothing_is_cut_and_its_session_ends() -> None:
+    """A client that stopped reading (a frozen device, or on purpose) leaves the server's frames
+    unsent in its socket buffer. Closing the socket waits for that buffer to drain — for good, here —
+    so the idle close used to leave the connection and its session in place; it cuts it (a reset)
+    instead. A real socket pair with small buffers, the app sending 1 MB; the keepalive driven by hand."""
+    ended: list[str] = []
+
+    async def talkative_app(scope: Any, receive: Any, send: Any) -> None:
+        assert (await receive())["type"] == "websocket.connect"
+        await send({"type": "websocket.accept"})
+        await send({"type": "websocket.send", "bytes": bytes(1 << 20)})  # more than the socket takes
+        while (await receive())["type"] != "websocket.disconnect":
+            pass
+        ended.append("disconnect")
+
+    async def run() -> tuple[bool, bool]:
+        config = Config(talkative_app, ws_ping_interval=1000.0, ws_ping_timeout=None, lifespan="off")
+        config.load()
+        cls = type("Lab", (LabWebSocketProtocol,), {"idle_timeout": 2000.0})
+        loop = asyncio.get_running_loop()
+        server = cls(config=config, server_state=ServerState(), app_state={}, _loop=loop)
+        ours, theirs = socket.socketpair()
+        for s in (ours, theirs):
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_SNDBUF, 4096)
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_RCVBUF, 4096)
+        transport, _ = await loop.connect_accepted_socket(lambda: server, ours)
+        client = ClientProtocol(parse_uri("ws://127.0.0.1:8000/ws"))
+        client.send_request(client.connect())
+        theirs.sendall(b"".join(client.data_to_send()))  # the handshake; then it reads nothing
+        for _ in range(200):
+            await asyncio.sleep(0)
+            if transport.get_write_buffer_size() > 0:
+                break
+        assert transport.get_write_buffer_size() > 0, "the frame fit the socket: nothing waits"
+        for _ in range(3):  # pings 1-3: the handshake heard, then 2 intervals of silence: closed
+            server.send_keepalive_ping()
+        for _ in range(200):
+            await asyncio.sleep(0)
+            if server.disconnected and ended:
+                break
+        theirs.close()
+        return server.disconnected, bool(ended)
+
+    assert asyncio.run(run()) == (True, True)

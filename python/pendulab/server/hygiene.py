@@ -26,8 +26,9 @@ bodies only and capped, slow clients timed out.
   pings a second (a burst of :data:`PING_BURST` seconds' worth; a ping flood is cut off too), and an
   idle timeout: the server pings every client every :data:`WS_PING_INTERVAL` seconds, and a client
   from which nothing at all has arrived (no command, ping or pong) for :data:`WS_IDLE_TIMEOUT` seconds
-  is closed with code 1001. The lab's page sends nothing while nobody uses it, but its browser answers
-  every ping by itself (also in a background tab), so an open page is never idle.
+  is closed with code 1001 (cut, when it reads nothing either). The lab's page sends nothing while
+  nobody uses it, but its browser answers every ping by itself (also in a background tab), so an open
+  page is never idle.
 """
 
 from __future__ import annotations
@@ -240,7 +241,12 @@ class LabWebSocketProtocol(WebSocketsSansIOProtocol):
         self.conn.fail(1001, f"idle: nothing from the client in {self.idle_timeout:g} s")
         self.transport.write(b"".join(self.conn.data_to_send()))
         self.close_sent = True
-        self.transport.close()
+        if self.transport.get_write_buffer_size() > 0:
+            # The client reads nothing: close() would wait for the buffer to drain, for good, and
+            # keep the connection and its session. Cut it.
+            self.transport.abort()
+        else:
+            self.transport.close()
 
     def handle_ping(self) -> None:
         now = self.loop.time()
