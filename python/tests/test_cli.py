@@ -144,6 +144,35 @@ def test_user_errors_are_one_line(args: list[str], needles: list[str]) -> None:
     assert_user_error(*invoke(*args), *needles)
 
 
+@pytest.mark.parametrize(
+    ("args", "needles"),
+    [
+        (["run", ROSETTE, "--bogus"], ["pendulab run: no such option: --bogus", "'pendulab run --help'"]),
+        (["run"], ["pendulab run: missing argument 'SCENARIO'", "'pendulab run --help'"]),
+        (["run", ROSETTE, "--dt", "abc"], ["pendulab run: invalid value for '--dt'", "--help"]),
+        (["run", ROSETTE, "extra.toml"], ["unexpected extra argument", "extra.toml"]),
+        (["bogus"], ["pendulab: no such command 'bogus'", "'pendulab --help'"]),
+        (["--bogus"], ["pendulab: no such option: --bogus", "'pendulab --help'"]),
+        (["crane", "bogus"], ["pendulab crane: no such command 'bogus'", "'pendulab crane --help'"]),
+        (["crane", "run"], ["pendulab crane run: missing argument", "'pendulab crane run --help'"]),
+    ],
+)
+def test_usage_errors_are_one_line_too(args: list[str], needles: list[str]) -> None:
+    """Unknown options and commands, missing or extra arguments, values of the wrong type: the one
+    ``error: …`` line of every user error (not Click's Usage / Try / Error block), naming the command
+    and its --help; exit code 2."""
+    code, out, err = invoke(*args)
+    assert_user_error(code, out, err, *needles)
+    assert err.count("\n") == 1 and "Usage:" not in err and "Try " not in err
+
+
+def test_a_bare_group_still_prints_its_help() -> None:
+    """``pendulab`` and ``pendulab crane`` alone list their commands (Click's help, exit code 2)."""
+    for args in ([], ["crane"]):
+        code, out, err = invoke(*args)
+        assert code == 2 and "Commands:" in out + err and "error:" not in out + err
+
+
 def test_bad_scenario_file_error(tmp_path: Path) -> None:
     """A bad file is named with the key and value, in one line."""
     bad = tmp_path / "bad.toml"

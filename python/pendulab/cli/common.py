@@ -10,11 +10,19 @@ from __future__ import annotations
 
 import contextlib
 import os
+import sys
 from collections.abc import Iterator
 from pathlib import Path
-from typing import Annotated, NoReturn
+from typing import IO, Annotated, Any, NoReturn
 
 import typer
+from typer.core import TyperGroup
+
+try:  # the Click that typer runs on: its own copy in recent typer, else the click package
+    from typer._click.core import Context
+    from typer._click.exceptions import UsageError
+except ImportError:  # pragma: no cover - older typer
+    from click import Context, UsageError  # type: ignore[assignment]
 
 from .. import io
 from .._core import IntegrationError, InvalidInputError, __version__
@@ -26,7 +34,51 @@ EXIT_INTERRUPTED = 130
 
 _USER_ERRORS = (ScenarioError, InvalidInputError, IntegrationError, OSError, ImportError)
 
+
+class _UsageError(UsageError):
+    """A command-line usage error reported like every other user error: one line on stderr,
+    ``error: pendulab run: no such option: --bogus; see 'pendulab run --help'``, exit code 2."""
+
+    def show(self, file: IO[Any] | None = None) -> None:
+        command = self.ctx.command_path if self.ctx is not None else "pendulab"
+        text = " ".join(self.format_message().split()).rstrip(".")
+        if text[:2].istitle():  # "No such option" → "no such option"; "SCENARIO" stays
+            text = text[0].lower() + text[1:]
+        see = f"{' See' if text.endswith('?') else '; see'} '{command} --help'"  # after "Did you mean …?"
+        typer.echo(f"error: {command}: {text}{see}", file=file or sys.stderr)
+
+
+def _one_line(e: UsageError) -> UsageError:
+    """``e`` as a :class:`_UsageError` (the help that a bare group prints stays as it is)."""
+    if isinstance(e, _UsageError) or type(e).__name__ == "NoArgsIsHelpError":
+        return e
+    one = _UsageError(e.format_message(), e.ctx)
+    one.exit_code = e.exit_code
+    return one
+
+
+class _Commands(TyperGroup):
+    """The ``pendulab`` group: Click's usage errors (unknown option or command, missing argument, a
+    value of the wrong type), which it prints as three lines (Usage, Try --help, Error), become the
+    one ``error: …`` line of every other user error (docs/cli.md)."""
+
+    def make_context(
+        self, info_name: str | None, args: list[str], parent: Context | None = None, **extra: Any
+    ) -> Context:
+        try:
+            return super().make_context(info_name, args, parent, **extra)
+        except UsageError as e:
+            raise _one_line(e) from None
+
+    def invoke(self, ctx: Context) -> Any:
+        try:
+            return super().invoke(ctx)
+        except UsageError as e:
+            raise _one_line(e) from None
+
+
 app = typer.Typer(
+    cls=_Commands,
     name="pendulab",
     help="Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up.",
     epilog="Scenario files: docs/scenarios.md. This command: docs/cli.md. "
