@@ -255,7 +255,7 @@ def test_a_full_disk_or_read_only_directory_is_one_line_naming_the_file(
     def fail(*args: object, **kwargs: object) -> None:
         raise OSError(code, os.strerror(code))
 
-    monkeypatch.setattr(np, "savetxt", fail)
+    monkeypatch.setattr(pl.io, "csv_rows", fail)  # the CSV writer's rows, written after the header
     out = tmp_path / "out.csv"
     rc, _, err = _cli("run", str(SCENARIOS / "rosette.toml"), "--t-end", "0.1", "--out", str(out), "--quiet")
     line = _one_error(err)
