@@ -60,6 +60,11 @@ BLOCK_EVALUATIONS = 60
 #: The blocks are said to disagree only when their scatter is this improbable for blocks that agree
 #: (χ² of N − 1 degrees of freedom): 1.06x apart over 4 blocks (p = 0.3) is agreement.
 BLOCKS_ALARM = 0.05
+#: The damping's weighted slope over the blocks, in standard errors, from which a damping law is named.
+TREND_Z = 3.0
+#: ... and the share of the blocks' weighted scatter the slope must explain (R²; 4 blocks without a
+#: trend reach it by chance with p = 1 − √0.8 ≈ 0.11).
+TREND_SHARE = 0.8
 #: The models whose motion a block's own start fixes (no pivot path, hoist or other clock; the
 #: damped model's forcing is checked separately).
 AUTONOMOUS = ("ideal", "damped", "rotating")
@@ -98,8 +103,45 @@ class BlockCheck:
             "their error bars apart. The model misses something that changes along the record "
             "(friction or stiffness that depend on the amplitude, a drifting sensor, a hinge that is "
             f"not ideal), so the error bars are widened by the blocks' scale factor: {names} "
-            "(the Particle Data Group's rule for inconsistent measurements; res.blocks)"
+            "(the Particle Data Group's rule for inconsistent measurements; res.blocks)" + self.damping_law()
         ]
+
+    def damping_law(self) -> str:
+        """A hint at the damping law the blocks point to (empty where none): the viscous damping fitted
+        to each block rises steadily along a free decay, as the swing dies down, where the real loss
+        per swing falls more slowly than in proportion to the amplitude (dry friction: c ∝ 1/amplitude)
+        and falls where it falls faster (drag: c ∝ amplitude). Steadily: a weighted slope over the blocks
+        of more than TREND_Z of its standard errors that explains TREND_SHARE of their scatter."""
+        if "damping" not in self.values:
+            return ""
+        z = trend_z(np.array(self.values["damping"]), np.array(self.stderr["damping"]))
+        if z > TREND_Z:
+            return (
+                " The damping fitted to the blocks rises as the swing dies down: the amplitude decays "
+                "more linearly than exponentially, as dry friction makes: fit 'friction' beside 'damping'"
+            )
+        if z < -TREND_Z:
+            return (
+                " The damping fitted to the blocks falls as the swing dies down: the large swings lose "
+                "more, as air drag makes: fit 'drag' beside 'damping'"
+            )
+        return ""
+
+
+def trend_z(values: FloatArray, errors: FloatArray) -> float:
+    """The weighted least-squares slope of ``values`` ± ``errors`` against their index in units of its
+    standard error; 0 unless there are at least three, all finite, and the line explains at least
+    TREND_SHARE of their weighted scatter (a steady change, not one odd block)."""
+    if values.size < 3 or not (np.all(np.isfinite(values)) and np.all(np.isfinite(errors) & (errors > 0.0))):
+        return 0.0
+    w = 1.0 / errors**2
+    x = np.arange(values.size, dtype=np.float64)
+    x = x - float(np.sum(w * x) / np.sum(w))
+    y = values - float(np.sum(w * values) / np.sum(w))
+    sxx, sxy, syy = float(np.sum(w * x * x)), float(np.sum(w * x * y)), float(np.sum(w * y * y))
+    if not (syy > 0.0 and sxy * sxy >= TREND_SHARE * sxx * syy):
+        return 0.0
+    return sxy / math.sqrt(sxx)
 
 
 def applicable(problem: Problem, period: float) -> list[int] | None:

@@ -5,18 +5,18 @@ Per data kind, from the residual r (measured − fitted, the kind's unit, N × c
 
 - its rms against the data's white-noise floor (noise.py), read off the data before the fit: a model
   that explains the data leaves about the floor; a multiple of it is a misfit;
-- the lag-1 autocorrelation ρ₁ and the Ljung–Box statistic Q = n(n+2) Σ_{k=1}^{h} ρ_k²/(n−k), which
-  is χ²(h)-distributed for white residuals (Ljung & Box 1978, Biometrika 65:297); the Wald–Wolfowitz
-  runs test of the residual's signs, z = (R − μ)/s with μ = 2n₊n₋/n + 1, s² = (μ−1)(μ−2)/(n−1);
+- the lag-1 autocorrelation ρ₁, the Ljung–Box test of the first LJUNG_BOX_LAGS autocorrelations, the
+  runs test of the residual's signs and the band scan of its periodogram (whiteness.py: a misfit
+  smaller than the noise still puts its power in a few frequencies near the swing's);
 - with σ given, the χ² of the whole fit against the χ² distribution of its degrees of freedom (a fixed
   threshold on χ²/dof is too lax for large N: its spread is √(2/dof));
 - outliers: values more than 5 robust standard deviations (1.4826 · median |r|) both from the fit and
   from the running median of their OUTLIER_WINDOW neighbours (isolated, not a smooth misfit's run);
 - correlated noise or a misfit? The residual prewhitened by its own AR(1) fit, e_t = r_t − ρ₁ r_{t−1},
-  is tested again (Ljung–Box, runs): AR(1) measurement noise (video tracking, a filter) leaves white
-  e_t, while a misfit — a coherent oscillation at the swing's frequency ω, ρ₁ ≈ cos ωΔt — leaves a
-  coherent oscillation of amplitude |1 − ρ₁e^{−iωΔt}| times the old one, still correlated. The
-  difference-based noise floor underestimates such noise (by √(1 − ρ₁) for first differences), so a
+  is tested again (Ljung–Box, runs, band scan): AR(1) measurement noise (video tracking, a filter)
+  leaves white e_t, while a misfit — a coherent oscillation at the swing's frequency ω, ρ₁ ≈ cos ωΔt —
+  leaves a coherent oscillation of amplitude |1 − ρ₁e^{−iωΔt}| times the old one, still correlated.
+  The difference-based noise floor underestimates such noise (by √(1 − ρ₁) for first differences), so a
   residual above the floor is then no misfit.
 
 Error bars that account for correlated residuals: the Newey–West (1987, Econometrica 55:703) sandwich
@@ -44,6 +44,7 @@ import numpy as np
 
 from ..model import FloatArray
 from .swing_features import running_median
+from .whiteness import autocorrelations, band_scan, ljung_box, runs_z
 
 LJUNG_BOX_LAGS = 20
 #: p-values below this (Ljung–Box, χ²) are reported: about one false alarm in 10⁴ fits of a right model.
@@ -52,6 +53,11 @@ P_ALARM = 1e-4
 RUNS_ALARM = 4.5
 #: The residual's rms above this multiple of the noise floor is a misfit.
 FLOOR_ALARM = 1.5
+#: The band scan of the prewhitened residual must stay above this p-value for a correlated residual to
+#: be called AR(1) noise: a misfit near the swing's frequency that itself raises ρ₁ loses some of its
+#: band's power to the prewhitening (from p = 6e-7 to 1.2e-4 in a fit of dry friction); for AR(1)
+#: noise the prewhitened scan's p is uniform, so 1 % of such fits are said to be a small misfit.
+WHITENED_BAND = 1e-2
 #: Columns of a kind whose residual rms is below this share of the largest column's are not tested.
 COLUMN_SHARE = 0.3
 #: Values farther than this many robust standard deviations from the fit are outliers.
@@ -96,10 +102,16 @@ class KindCheck:
     whitened_runs_z: float = 0.0
     #: The median sampling interval [s].
     dt: float = 0.0
+    #: The band scan (whiteness.py): its p-value, the frequency [Hz] of its strongest band and that
+    #: band's power in units of the rest's; and its p-value after the AR(1) prewhitening.
+    band_p: float = 1.0
+    band_hz: float = 0.0
+    band_ratio: float = 1.0
+    whitened_band_p: float = 1.0
 
     @property
     def correlated(self) -> bool:
-        return self.ljung_box_p < P_ALARM or abs(self.runs_z) > RUNS_ALARM
+        return self.ljung_box_p < P_ALARM or abs(self.runs_z) > RUNS_ALARM or self.band_p < P_ALARM
 
     @property
     def ar1_noise(self) -> bool:
@@ -109,6 +121,7 @@ class KindCheck:
             and self.lag1 > 0.0
             and self.whitened_p >= P_ALARM
             and abs(self.whitened_runs_z) <= RUNS_ALARM
+            and self.whitened_band_p >= WHITENED_BAND
         )
 
     @property
@@ -156,40 +169,6 @@ class Goodness:
         return not self.findings
 
 
-def autocorrelations(x: FloatArray, lags: int) -> FloatArray:
-    """ρ_1 … ρ_lags of a series about its mean (0 for a constant series)."""
-    y = np.asarray(x, dtype=np.float64) - float(np.mean(x))
-    c0 = float(y @ y)
-    if c0 <= 0.0:
-        return np.zeros(lags)
-    return np.array([float(y[:-k] @ y[k:]) / c0 for k in range(1, lags + 1)])
-
-
-def ljung_box(x: FloatArray, lags: int = LJUNG_BOX_LAGS) -> tuple[float, float]:
-    """The Ljung–Box Q of the first ``lags`` autocorrelations and its χ²(lags) p-value."""
-    n = len(x)
-    h = max(1, min(lags, n // 5))
-    rho = autocorrelations(x, h)
-    q = float(n * (n + 2) * np.sum(rho**2 / (n - np.arange(1, h + 1))))
-    from scipy import stats  # SciPy is imported on first use (the io/lab extras)
-
-    return q, float(stats.chi2.sf(q, h))
-
-
-def runs_z(x: FloatArray) -> float:
-    """The Wald–Wolfowitz runs test z of the signs of ``x`` (0 when it cannot be formed)."""
-    s = np.asarray(x) > 0.0
-    n_pos = int(np.count_nonzero(s))
-    n = len(s)
-    n_neg = n - n_pos
-    if n_pos == 0 or n_neg == 0 or n < 3:
-        return 0.0
-    runs = 1 + int(np.count_nonzero(s[1:] != s[:-1]))
-    mu = 2.0 * n_pos * n_neg / n + 1.0
-    var = (mu - 1.0) * (mu - 2.0) / (n - 1.0)
-    return (runs - mu) / math.sqrt(var) if var > 0.0 else 0.0
-
-
 def carrying_columns(a: FloatArray) -> list[int]:
     """The columns of a kind's residual (N, columns) that carry it: those with an rms of at least
     COLUMN_SHARE of the largest (a column 3x smaller adds < 10 % to χ²)."""
@@ -208,11 +187,14 @@ def check_kind(t: FloatArray, r: FloatArray, floor: float, spread: float) -> Kin
     cols = carrying_columns(a)
     rho1 = [float(autocorrelations(a[:, j], 1)[0]) for j in cols]
     lag1 = float(np.mean(rho1))
-    p_lb = min(ljung_box(a[:, j])[1] for j in cols)
+    p_lb = min(ljung_box(a[:, j], LJUNG_BOX_LAGS)[1] for j in cols)
     z = max((runs_z(a[:, j]) for j in cols), key=abs)
+    dt = float(np.median(np.diff(t))) if len(t) > 1 else 0.0
+    band = min((band_scan(a[:, j], dt) for j in cols), key=lambda b: b[0])
     white = [a[1:, j] - rho * a[:-1, j] for j, rho in zip(cols, rho1, strict=True)]
-    white_p = min(ljung_box(w)[1] for w in white) if len(a) > 2 else 1.0
+    white_p = min(ljung_box(w, LJUNG_BOX_LAGS)[1] for w in white) if len(a) > 2 else 1.0
     white_z = max((runs_z(w) for w in white), key=abs) if len(a) > 2 else 0.0
+    white_band = min(band_scan(w, dt)[0] for w in white) if len(a) > 2 else 1.0
     outliers = 0
     for j in cols:
         dev = np.abs(a[:, j] - np.median(a[:, j]))
@@ -241,7 +223,9 @@ def check_kind(t: FloatArray, r: FloatArray, floor: float, spread: float) -> Kin
         trend,
         white_p,
         float(white_z),
-        float(np.median(np.diff(t))) if len(t) > 1 else 0.0,
+        dt,
+        *band,
+        white_band,
     )
 
 
@@ -316,6 +300,16 @@ def inflation(
     return out
 
 
+def _band(c: KindCheck) -> str:
+    """The band scan's clause of a finding, where it alarms (empty otherwise)."""
+    if c.band_p >= P_ALARM:
+        return ""
+    return (
+        f"; its power near {c.band_hz:.3g} Hz is {c.band_ratio:.3g}x that of the rest of its spectrum, "
+        f"p = {c.band_p:.2g}"
+    )
+
+
 def misfit(checks: Mapping[str, KindCheck], chi2_p: float | None) -> bool:
     """Whether the residual has structure that noise does not explain: correlated but not correlated
     noise (whatever its size: a small systematic effect counts), far above the noise floor, or an
@@ -352,8 +346,8 @@ def findings(
             tau = -c.dt / math.log(c.lag1) if 0.0 < c.lag1 < 1.0 and c.dt > 0.0 else math.inf
             out.append(
                 f"{kind}: the residual is correlated noise (lag-1 autocorrelation {c.lag1:.3f}, correlation "
-                f"time {tau:.3g} s; with its AR(1) part removed it is white by the Ljung-Box and runs "
-                "tests), "
+                f"time {tau:.3g} s; with its AR(1) part removed it is white by the Ljung-Box, runs and "
+                "band tests), "
                 "as video tracking or a filter makes, not a misfit: the error bars are widened for it "
                 "(res.inflation), and the noise floor read off the data underestimates it"
             )
@@ -362,19 +356,21 @@ def findings(
             out.append(
                 f"{kind}: the fit misses the data systematically{drift}: the residual (rms {size:.3g}, "
                 f"{ratio:.3g}x the data's noise floor {c.floor:.3g}) is correlated (lag-1 autocorrelation "
-                f"{c.lag1:.3f}, runs test z = {c.runs_z:.1f}). Either the model lacks something (another "
-                "damping law: fit 'drag' or dry friction; a sensor offset or bias; a moving pivot; wind; a "
-                "wrong scale or time base), or the noise itself is correlated (video tracking, filtering). "
-                "The error bars are widened for the correlation, but values may be biased by what is "
-                "missing; see res.plot()"
+                f"{c.lag1:.3f}, runs test z = {c.runs_z:.1f}{_band(c)}). Either the model lacks something "
+                "(another damping law: fit 'friction' or 'drag'; a sensor offset or bias; a moving pivot; "
+                "wind; a wrong scale or time base), or the noise itself is correlated (video tracking, "
+                "filtering). The error bars are widened for the correlation, but values may be biased by "
+                "what is missing; see res.plot()"
             )
         elif verdict == "correlated":
             out.append(
                 f"{kind}: the residual is correlated (lag-1 autocorrelation {c.lag1:.3f}, runs test "
-                f"z = {c.runs_z:.1f}) though no larger than the data's noise floor ({c.floor:.3g}): "
+                f"z = {c.runs_z:.1f}{_band(c)}) though no larger than the data's noise floor "
+                f"({c.floor:.3g}): "
                 "correlated noise (video tracking, filtering), or a small systematic effect the model "
-                "lacks (a sensor bias: fit force_bias, rate_bias or angle_offset; a damping law); the "
-                "error bars are widened for the correlation"
+                "lacks (a sensor bias: fit force_bias, rate_bias or angle_offset; a damping law: fit "
+                "'friction' or 'drag' and compare, pl.compare_fits); the error bars are widened for the "
+                "correlation (and by the record's blocks where they disagree)"
             )
         elif verdict == "above_floor":
             out.append(
