@@ -122,11 +122,43 @@ def _slewing_tower() -> tuple[crane.Crane, dict[str, Any], Model, list[float]]:
     return c, {"t_end": 30.0, "sway": (0.15, 2.5)}, m, [*slew.knots, *ht]
 
 
+def _measured_path() -> tuple[crane.Crane, dict[str, Any], Model, list[float]]:
+    # (e) hook + payload below a measured path (crane.Sampled: the spline through irregular samples
+    # 0.05 – 0.15 s apart with 1 mm noise, so its nodes fall between the core's 0.05 s knots and P⃛
+    # jumps there), hoisted through 17 noisy samples
+    rng = np.random.default_rng(11)
+    ts = np.cumsum(np.r_[0.0, rng.uniform(0.05, 0.15, 200)])
+    ts = ts[ts <= 12.0]
+    x = 2.0 * (1 - np.cos(np.pi * np.clip(ts / 10.0, 0, 1))) + rng.normal(0, 1e-3, ts.size)
+    ps = np.stack([x, 0.3 * x, np.zeros_like(x)], axis=1)
+    ht = np.linspace(1.0, 9.0, 17)
+    hl = 10.0 - 0.4 * (ht - 1.0) + rng.normal(0, 2e-3, ht.size)
+    hoist = crane.Hoist(ht, hl)
+    c = crane.Crane(
+        rope=float(hl[0]),
+        pivot=crane.Sampled(ts, ps),
+        payload_mass=1000.0,
+        hook_mass=250.0,
+        rigging=3.0,
+        hoist=hoist,
+    )
+    s = CubicSpline(ts, ps, axis=0)  # the path's definition, evaluated by the reference
+
+    def pivot(t: float) -> Any:
+        return tuple(s(t).tolist()), tuple(s(t, 1).tolist()), tuple(s(t, 2).tolist())
+
+    m = Model(
+        hook=Body(250.0), payload=Body(1000.0), rigging=3.0, pivot=pivot, rope=_rope(list(ht), list(hl))
+    )
+    return c, {"t_end": 12.0, "sway": (0.3, 0.2), "rigging_sway": (0.5, 1.0)}, m, [*ts, *ht]
+
+
 CASES = {
     "two bodies, still pivot, large 3-D swing": _still_swing,
     "two bodies, hoisting during a jerk-limited trolley move": _hoist_during_move,
     "two bodies, wind with a gust and turbulence, damping, trapezoidal move": _wind_gust,
     "one body, slewing tower, hoisting, wind": _slewing_tower,
+    "two bodies, measured path, hoisting through noisy samples": _measured_path,
 }
 
 

@@ -41,9 +41,13 @@ def _unit(direction: Sequence[float]) -> FloatArray:
 
 
 class Path:
-    """A pivot path (see the module doc). Subclasses define ``_pva(t)`` and ``breaks``."""
+    """A pivot path (see the module doc). Subclasses define ``_pva(t)``, ``breaks`` and, for a spline,
+    ``nodes``."""
 
     breaks: FloatArray = np.zeros(0)
+    # where a spline's cubic pieces join (P and its first two derivatives continuous, P⃛ steps): knots
+    # of the core's interpolant, so that it is the spline itself (T-11.4)
+    nodes: FloatArray = np.zeros(0)
     t_end: float = 0.0
 
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -62,10 +66,13 @@ class Path:
         return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[2]
 
     def knots(self, t0: float, t1: float, dt: float = 0.05) -> Knots:
-        """Knots (t, P, Ṗ, P̈) on [t0, t1] [s] every ≤ ``dt`` [s] and at every break, which appears twice
-        (left and right values) so that the quintic Hermite interpolant of the core (T-11.4) steps there."""
+        """Knots (t, P, Ṗ, P̈) on [t0, t1] [s] every ≤ ``dt`` [s], at every node of a spline and at every
+        break, which appears twice (left and right values) so that the quintic Hermite interpolant of the
+        core (T-11.4) steps there; between two knots the path is one cubic, which that interpolant is."""
         inner = self.breaks[(self.breaks > t0) & (self.breaks < t1)]
+        nodes = self.nodes[(self.nodes > t0) & (self.nodes < t1)]
         grid = np.union1d(np.linspace(t0, t1, max(2, math.ceil((t1 - t0) / dt) + 1)), inner)
+        grid = np.union1d(grid, nodes)
         p, v, a = self._pva(grid)
         if inner.size == 0:
             return grid, p, v, a
@@ -187,6 +194,7 @@ class Sampled(Path):
             raise InvalidInputError("pivot sample times must be strictly increasing")
         self._spline = CubicSpline(t, p, axis=0)
         self.breaks = np.zeros(0)
+        self.nodes = t
         self.t_end = float(t[-1])
 
     @classmethod

@@ -42,6 +42,7 @@ class Hoist(Path):
         self._spline = CubicSpline(ts, ls, bc_type="clamped")
         self.span = (float(ts[0]), float(ts[-1]))
         self.breaks = np.array(self.span)
+        self.nodes = ts
         self.t_end = self.span[1]
         fine = np.linspace(ts[0], ts[-1], 64 * ts.size)
         if np.any(self._spline(fine) <= 0):

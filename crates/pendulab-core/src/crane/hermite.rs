@@ -96,21 +96,31 @@ impl Hermite5 {
         self.knots.windows(2).filter(|w| w[0].t == w[1].t).map(|w| w[0].t).collect()
     }
 
-    /// (q, q̇, q̈) at t \[s\], on the piece that contains `t_piece` (an integrator passes the middle of
-    /// its step, so that a step ending on a jump uses the values from before it).
+    /// (q, q̇, q̈) at t \[s\], on the piece that contains t; at a knot time, on the side of `t_piece`
+    /// (an integrator passes the middle of its step, so that a stage at the end of a step that ends on
+    /// a jump uses the values from before it, one at its start those from after it). Every stage of a
+    /// step that crosses ordinary knots uses its own piece: a piece is never extrapolated into its
+    /// neighbours (only the first and last beyond the span, as the module doc says).
     pub fn eval_on(&self, t: f64, t_piece: f64) -> (DVec3, DVec3, DVec3) {
         let n = self.knots.len();
-        let (first, last) = (self.knots[0], self.knots[n - 1]);
-        if t_piece < first.t {
+        // the number of knots before t, those at t counted on t_piece's side
+        let before = if t_piece < t {
+            self.knots.partition_point(|k| k.t < t)
+        } else {
+            self.knots.partition_point(|k| k.t <= t)
+        };
+        if before == 0 {
+            let first = self.knots[0];
             let d = t - first.t;
             return (first.q + first.dq * d + first.ddq * (0.5 * d * d), first.dq + first.ddq * d, first.ddq);
         }
-        if t_piece >= last.t {
+        if before == n {
+            let last = self.knots[n - 1];
             let d = t - last.t;
             return (last.q + last.dq * d + last.ddq * (0.5 * d * d), last.dq + last.ddq * d, last.ddq);
         }
-        // the piece i with t_i ≤ t_piece < t_{i+1} (of positive length by construction)
-        let i = self.knots.partition_point(|k| k.t <= t_piece) - 1;
+        // the piece i with t_i ≤ t ≤ t_{i+1}, of positive length: a repeated knot is counted whole
+        let i = before - 1;
         let h = self.knots[i + 1].t - self.knots[i].t;
         let s = (t - self.knots[i].t) / h;
         let c = &self.coeffs[i];
@@ -149,6 +159,26 @@ mod tests {
             let (q, dq, ddq) = h.eval(t);
             let [a, b, c] = f(t);
             assert!((q.x - a).abs() < 1e-13 && (dq.x - b).abs() < 1e-12 && (ddq.x - c).abs() < 1e-11, "{t}");
+        }
+    }
+
+    #[test]
+    fn a_stage_past_an_ordinary_knot_uses_its_own_piece() {
+        // two cubics joined C² at t = 1 (a spline node): a step from 0.8 to 1.4 has its middle at 1.1,
+        // its first stages before the knot; each must be on the cubic of its own time, not on the
+        // other one extrapolated
+        let left = |t: f64| [t * t * t, 3.0 * t * t, 6.0 * t];
+        let right = |t: f64| {
+            let d = t - 1.0;
+            [1.0 + 3.0 * d + 3.0 * d * d - 2.0 * d * d * d, 3.0 + 6.0 * d - 6.0 * d * d, 6.0 - 12.0 * d]
+        };
+        let h = Hermite5::new("test", vec![knot(0.0, left), knot(1.0, left), knot(2.0, right)]).unwrap();
+        for (t, f) in [(0.85, left(0.85)), (0.99, left(0.99)), (1.0, left(1.0)), (1.3, right(1.3))] {
+            for t_piece in [0.5, 1.1] {
+                let (q, dq, ddq) = h.eval_on(t, t_piece);
+                assert!((q.x - f[0]).abs() < 1e-14 && (dq.x - f[1]).abs() < 1e-13, "{t} {t_piece}");
+                assert!((ddq.x - f[2]).abs() < 1e-12, "{t} {t_piece}");
+            }
         }
     }
 
