@@ -2,7 +2,8 @@
 ``InvalidInputError`` of a diverged solution, a pole, a state off the sphere or a bad parameter has
 ``key`` and ``values`` (``pendulab/server/messages.json``) beside its English words, and the lab server's
 422 answer of such a refusal in an analysis worker is keyed (the page words it in en/de/fr). Times in s,
-step sizes in s, residuals dimensionless."""
+step sizes in s, residuals dimensionless; every number written as a user writes it (``-1``, ``0.01``,
+``1e-9``; ``pendulab_core::error::Shown``), never ``-1e0``."""
 
 from __future__ import annotations
 
@@ -29,8 +30,8 @@ def test_a_diverged_solution_is_keyed_with_time_method_and_step() -> None:
         lambda: pl.simulate(p, p.state_from_angles(1.0, 0, 0, 0), t_end=100.0, dt=10.0, method="rk4")
     )
     assert isinstance(e, pl.IntegrationError)
-    assert (e.key, e.values) == ("diverged", {"t": "20", "method": "rk4", "dt": "1.000e1"})  # type: ignore[attr-defined]
-    assert "t = 20 s" in str(e)  # the English words are unchanged
+    assert (e.key, e.values) == ("diverged", {"t": "20", "method": "rk4", "dt": "10"})  # type: ignore[attr-defined]
+    assert "t = 20 s with method 'rk4' (dt = 10 s)" in str(e)  # as the user wrote them, not 1e1
 
 
 def test_a_pole_of_the_angle_equations_is_keyed_with_its_time() -> None:
@@ -43,7 +44,7 @@ def test_a_start_off_the_sphere_is_keyed_with_its_residual() -> None:
     p = pl.Pendulum()
     e = _refusal(lambda: pl.simulate(p, pl.State(np.array([0.5, 0, -0.5]), np.zeros(3)), t_end=1.0))
     assert e.key == "off_sphere"  # type: ignore[attr-defined]
-    assert e.values == {"what": "(|x| - l)/l", "value": "-2.929e-1", "tolerance": "1.000e-9"}  # type: ignore[attr-defined]
+    assert e.values == {"what": "(|x| - l)/l", "value": "-0.2929", "tolerance": "1e-9"}  # type: ignore[attr-defined]
 
 
 def test_a_parameter_out_of_range_is_keyed_with_name_value_and_range() -> None:
@@ -53,6 +54,7 @@ def test_a_parameter_out_of_range_is_keyed_with_name_value_and_range() -> None:
     )
     assert e.key == "invalid_parameter"  # type: ignore[attr-defined]
     assert e.values["name"] == "rtol" and e.values["value"] == "-1"  # type: ignore[attr-defined]
+    assert "invalid rtol = -1: " in str(e)  # as the user wrote it (was -1e0)
     assert "[1e-15, 1]" in e.values["allowed"]  # type: ignore[attr-defined]
 
 

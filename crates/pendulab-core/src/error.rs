@@ -7,7 +7,7 @@ use thiserror::Error;
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum Error {
     /// A scalar parameter is outside its allowed range (or not finite).
-    #[error("invalid {name} = {value:e}: {allowed}")]
+    #[error("invalid {name} = {}: {allowed}", Shown(*value))]
     InvalidParameter {
         /// Parameter name as the user wrote it (e.g. `"length"`, `"dt"`).
         name: &'static str,
@@ -18,8 +18,10 @@ pub enum Error {
     },
     /// A state is not on TS² (|x| = l, x·v = 0) within the stated tolerance.
     #[error(
-        "state is not on TS² (|x| = l, x·v = 0): {what} = {value:e} exceeds the tolerance {tolerance:e}; \
-         pass project=True to move it onto TS²"
+        "state is not on TS² (|x| = l, x·v = 0): {what} = {} exceeds the tolerance {}; \
+         pass project=True to move it onto TS²",
+        Shown(*value),
+        Shown(*tolerance)
     )]
     NotOnTangentBundle {
         /// Which residual failed: `"(|x| - l)/l"` or `"x·v/(l·|v|)"`.
@@ -30,7 +32,7 @@ pub enum Error {
         tolerance: f64,
     },
     /// A component of a state vector is NaN or infinite.
-    #[error("{name}[{index}] = {value} is not a finite number")]
+    #[error("{name}[{index}] = {} is not a finite number", Shown(*value))]
     NonFinite {
         /// `"x"` or `"v"` (or an angle name).
         name: &'static str,
@@ -52,9 +54,13 @@ pub enum Error {
     },
     /// The spherical-angle integrator came too close to a pole, where T-2.5 is singular.
     #[error(
-        "method 'rk4_angles' refuses to continue at t = {t} s: sin θ = {sin_theta:e} is below {limit:e} \
-         (θ = {theta} rad is within reach of a pole, where the angle equations T-2.5 are singular); \
-         use a Cartesian method such as 'rattle' or 'dop853'"
+        "method 'rk4_angles' refuses to continue at t = {} s: sin θ = {} is below {} \
+         (θ = {} rad is within reach of a pole, where the angle equations T-2.5 are singular); \
+         use a Cartesian method such as 'rattle' or 'dop853'",
+        Shown(*t),
+        Shown(*sin_theta),
+        Shown(*limit),
+        Shown(*theta)
     )]
     PoleSingularity {
         /// Time of the refusal \[s\].
@@ -68,7 +74,11 @@ pub enum Error {
     },
     /// The adaptive integrator could not meet the tolerance.
     #[error(
-        "step size underflow at t = {t} s: h = {h:e} s is too small for rtol = {rtol:e}, atol = {atol:e}"
+        "step size underflow at t = {} s: h = {} s is too small for rtol = {}, atol = {}",
+        Shown(*t),
+        Shown(*h),
+        Shown(*rtol),
+        Shown(*atol)
     )]
     StepSizeUnderflow {
         /// Time at which it happened \[s\].
@@ -82,7 +92,9 @@ pub enum Error {
     },
     /// The state became NaN or infinite during integration.
     #[error(
-        "the solution became non-finite at t = {t} s with method '{method}' (dt = {dt:e} s); {}",
+        "the solution became non-finite at t = {} s with method '{method}' (dt = {} s); {}",
+        Shown(*t),
+        Shown(*dt),
         diverged_advice(method)
     )]
     Diverged {
@@ -105,8 +117,10 @@ pub enum Error {
     },
     /// The reduced flow with reconstruction (T-3.4, T-3.6) came too close to a pole.
     #[error(
-        "the reduced flow reached a pole at t = {t} s (σ₁ = z/l = {sigma1}), where the reconstruction \
-         φ̇ = J₃/(m(l² − z²)) is singular; use the exact solution or a Cartesian integrator there"
+        "the reduced flow reached a pole at t = {} s (σ₁ = z/l = {}), where the reconstruction \
+         φ̇ = J₃/(m(l² − z²)) is singular; use the exact solution or a Cartesian integrator there",
+        Shown(*t),
+        Shown(*sigma1)
     )]
     ReducedFlowPole {
         /// Time \[s\].
@@ -205,10 +219,11 @@ pub enum Error {
 impl Error {
     /// The message key and values of an error of a common kind, for a page that words it in its
     /// language (the lab server's `messages.json`; docs/web.md, "Languages"), or None (the English
-    /// words alone). Times \[s\] to 4 decimals, step sizes \[s\] and residuals in 4 digits, as strings.
+    /// words alone). Times \[s\] to 4 decimals, step sizes \[s\] and residuals to 4 significant digits,
+    /// the value of a parameter as given, each as a string written by [`Shown`].
     pub fn key(&self) -> Option<(&'static str, Vec<(&'static str, String)>)> {
-        let t = |t: f64| format!("{}", (t * 1e4).round() / 1e4);
-        let e = |x: f64| format!("{x:.3e}");
+        let t = |t: f64| Shown((t * 1e4).round() / 1e4).to_string();
+        let e = |x: f64| Shown(format!("{x:.3e}").parse().unwrap_or(x)).to_string();
         Some(match self {
             Error::StepSizeUnderflow { t: at, h, .. } => {
                 ("step_too_small", vec![("t", t(*at)), ("h", e(*h))])
@@ -221,7 +236,11 @@ impl Error {
             }
             Error::NonFinite { name, index, value } => (
                 "not_finite",
-                vec![("name", name.to_string()), ("index", index.to_string()), ("value", value.to_string())],
+                vec![
+                    ("name", name.to_string()),
+                    ("index", index.to_string()),
+                    ("value", Shown(*value).to_string()),
+                ],
             ),
             Error::NotOnTangentBundle { what, value, tolerance } => (
                 "off_sphere",
@@ -231,12 +250,36 @@ impl Error {
                 "invalid_parameter",
                 vec![
                     ("name", name.to_string()),
-                    ("value", format!("{value}")),
+                    ("value", Shown(*value).to_string()),
                     ("allowed", allowed.to_string()),
                 ],
             ),
             _ => return None,
         })
+    }
+}
+
+/// A number in a message as a user writes it: the shortest digits that read back as the same f64, in
+/// plain decimals when 1e-4 ≤ |x| < 1e6 (`-1`, `0.5`, `1234.5`, `0.0001`), beyond that in whichever
+/// of the plain and the exponent form is shorter (`1e9`, `123456789`, `1e-7`, `2.5e20`, `-3e-300`);
+/// `nan`, `inf`, `-inf` as TOML and Python write them (`pendulab._numbers.shown` is the same in Python). Every number of [`enum@Error`]'s messages and message values is written by it:
+/// `{:e}` wrote a damping of −1 as `-1e0` and a step of 0.01 s as `1e-2`, `{}` wrote 1e-300 with 300
+/// digits.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Shown(pub f64);
+
+impl std::fmt::Display for Shown {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        if x.is_nan() {
+            f.write_str("nan")
+        } else if x.is_infinite() {
+            f.write_str(if x > 0.0 { "inf" } else { "-inf" })
+        } else {
+            let (plain, exponent) = (format!("{x}"), format!("{x:e}"));
+            let everyday = (1e-4..1e6).contains(&x.abs());
+            f.write_str(if everyday || plain.len() <= exponent.len() { &plain } else { &exponent })
+        }
     }
 }
 
@@ -277,5 +320,39 @@ pub fn require_finite(name: &'static str, value: f64, allowed: &'static str) -> 
         Ok(value)
     } else {
         Err(Error::InvalidParameter { name, value, allowed })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_in_messages_are_written_as_a_user_writes_them() {
+        let shown = |x: f64| Shown(x).to_string();
+        assert_eq!(shown(-1.0), "-1");
+        assert_eq!(shown(0.01), "0.01");
+        assert_eq!(shown(1.7453292519943295), "1.7453292519943295");
+        assert_eq!(shown(1e-4), "0.0001");
+        assert_eq!(shown(1e15), "1e15");
+        assert_eq!(shown(1e9), "1e9");
+        assert_eq!(shown(123456789.0), "123456789");
+        assert_eq!(shown(999999.0), "999999");
+        assert_eq!(shown(1e-7), "1e-7");
+        assert_eq!(shown(-2.5e20), "-2.5e20");
+        assert_eq!(shown(1e-300), "1e-300");
+        assert_eq!((shown(0.0), shown(-0.0)), ("0".into(), "-0".into()));
+        assert_eq!(
+            (shown(f64::NAN), shown(f64::INFINITY), shown(f64::NEG_INFINITY)),
+            ("nan".into(), "inf".into(), "-inf".into())
+        );
+        for x in [0.1 + 0.2, -1e-5, 123456.789, 6.02214076e23, f64::MIN_POSITIVE, f64::MAX] {
+            assert_eq!(shown(x).parse::<f64>().unwrap().to_bits(), x.to_bits(), "{x:e} reads back");
+        }
+        let e = require_non_negative("damping", -1.0, "a finite number >= 0");
+        assert_eq!(e.unwrap_err().to_string(), "invalid damping = -1: a finite number >= 0");
+        let d = Error::Diverged { t: 20.0, method: "rk4", dt: 0.01 };
+        assert!(d.to_string().contains("t = 20 s with method 'rk4' (dt = 0.01 s)"), "{d}");
+        assert_eq!(d.key().unwrap().1[2], ("dt", "0.01".to_string()));
     }
 }

@@ -5,6 +5,7 @@
 //! J₃ [kg m²/s], θ \[rad\], periods \[s\].
 
 use crate::wire::LIMITS;
+use pendulab_core::error::Shown;
 use pendulab_core::exact::energy_momentum::conical_boundary;
 use pendulab_core::exact::phases::phases;
 use pendulab_core::exact::ExactSolution;
@@ -40,7 +41,11 @@ fn field(body: &Value, key: &str, default: f64) -> Result<f64, String> {
                 .ok_or(format!("{key} = {v}: input should be a finite number"))?;
             if let Some((_, lo, hi, unit)) = LIMITS.iter().find(|(n, ..)| *n == key) {
                 if !(x >= *lo && x <= *hi) {
-                    return Err(format!("{key} = {v}: must be between {lo} and {hi} {unit}"));
+                    return Err(format!(
+                        "{key} = {v}: must be between {} and {} {unit}",
+                        Shown(*lo),
+                        Shown(*hi)
+                    ));
                 }
             }
             Ok(x)

@@ -65,28 +65,28 @@ describe('HTTP error answers', () => {
   });
 
   it("the core's common refusals (diverged, pole, off the sphere, a bad parameter) in the page language", () => {
-    const diverged = { detail: 'the solution became non-finite …', key: 'diverged', values: { t: '20', method: 'rk4', dt: '1.000e1' } };
+    const diverged = { detail: 'the solution became non-finite …', key: 'diverged', values: { t: '20', method: 'rk4', dt: '10' } };
     const pole = { detail: 'x', key: 'near_pole', values: { t: '0.5' } };
     const length = { detail: 'x', key: 'invalid_parameter', values: { name: 'length', value: '-1', allowed: 'a number in [1e-6, 1e4] m' } };
     setLanguage('de');
-    expect(httpProblem(diverged, 'HTTP 422')).toBe('die Lösung wurde bei t = 20 s mit dem Verfahren rk4 unendlich (dt = 1.000e1 s): dt verkleinern');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('die Lösung wurde bei t = 20 s mit dem Verfahren rk4 unendlich (dt = 10 s): dt verkleinern');
     expect(httpProblem(pole, 'HTTP 422')).toContain('bei t = 0.5 s einen Pol');
     expect(httpProblem(length, 'HTTP 422')).toMatch(/^Länge.* = -1 ist nicht erlaubt/);
     setLanguage('fr');
     expect(httpProblem(diverged, 'HTTP 422')).toContain('à t = 20 s avec la méthode rk4');
-    expect(httpProblem({ detail: 'x', key: 'off_sphere', values: { what: '(|x| - l)/l', value: '-2.929e-1', tolerance: '1.000e-9' } }, 'HTTP 422')).toContain('pas sur la sphère');
+    expect(httpProblem({ detail: 'x', key: 'off_sphere', values: { what: '(|x| - l)/l', value: '-0.2929', tolerance: '1e-9' } }, 'HTTP 422')).toContain('pas sur la sphère');
     expect(httpProblem({ detail: 'x', key: 'step_too_small', values: { t: '3', h: '1e-15' } }, 'HTTP 422')).toContain('trop petit à t = 3 s');
     const fault = { detail: 'x', key: 'internal_error', values: { detail: "KeyError: 'q'" } };
     expect(httpProblem(fault, 'HTTP 500')).toBe("erreur interne du serveur (un défaut du logiciel : merci de le signaler) ; détails (en anglais) : KeyError: 'q'");
     setLanguage('de');
     expect(httpProblem(fault, 'HTTP 500')).toMatch(/^interner Fehler des Servers .*bitte melden\); Details \(englisch\): KeyError: 'q'$/);
-    const stopped = { type: 'error' as const, message: 'x', key: 'integration_stopped', values: { detail: 'the solution became…', why: 'diverged', t: '2.5', method: 'rk4', dt: '5.000e-2' } };
-    expect(serverWords(stopped)).toBe('die Rechnung ist stehen geblieben (die Lösung wurde bei t = 2.5 s mit dem Verfahren rk4 unendlich (dt = 5.000e-2 s): dt verkleinern); angehalten');
+    const stopped = { type: 'error' as const, message: 'x', key: 'integration_stopped', values: { detail: 'the solution became…', why: 'diverged', t: '2.5', method: 'rk4', dt: '0.05' } };
+    expect(serverWords(stopped)).toBe('die Rechnung ist stehen geblieben (die Lösung wurde bei t = 2.5 s mit dem Verfahren rk4 unendlich (dt = 0.05 s): dt verkleinern); angehalten');
     setLanguage('fr');
-    expect(serverWords({ ...stopped, values: { detail: 'step size underflow…', why: 'step_too_small', t: '3', h: '1.000e-15' } })).toContain('(le pas est devenu trop petit à t = 3 s');
+    expect(serverWords({ ...stopped, values: { detail: 'step size underflow…', why: 'step_too_small', t: '3', h: '1e-15' } })).toContain('(le pas est devenu trop petit à t = 3 s');
     expect(serverWords({ ...stopped, values: { detail: 'English words', why: 'unknown_kind' } })).toBe('le calcul s’est arrêté (English words) ; en pause');
     setLanguage('en');
-    expect(httpProblem(diverged, 'HTTP 422')).toBe('the solution became non-finite at t = 20 s with method rk4 (dt = 1.000e1 s): reduce dt');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('the solution became non-finite at t = 20 s with method rk4 (dt = 10 s): reduce dt');
   });
 });
 

@@ -8,6 +8,7 @@
 
 use super::pendulum::LivePendulum;
 use super::session::{Command, LiveSession, Setup, StateSpec};
+use crate::error::Shown;
 use crate::string_run::{EventKind, StringEvent};
 use crate::{DVec3, Method};
 use serde_json::{json, Map, Value};
@@ -64,7 +65,12 @@ fn number(o: &Map<String, Value>, key: &'static str, problems: &mut Vec<String>)
     };
     if let Some((_, lo, hi, unit)) = LIMITS.iter().find(|(n, ..)| *n == key) {
         if !(x >= *lo && x <= *hi) {
-            problems.push(format!("{key} = {}: must be between {lo} and {hi} {unit}", show(v)));
+            problems.push(format!(
+                "{key} = {}: must be between {} and {} {unit}",
+                show(v),
+                Shown(*lo),
+                Shown(*hi)
+            ));
             return None;
         }
     }

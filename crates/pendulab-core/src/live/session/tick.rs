@@ -252,7 +252,7 @@ mod tests {
         else {
             panic!("not keyed")
         };
-        let expected = json!({ "detail": diverged.to_string(), "why": "diverged", "t": "2.5", "method": "rk4", "dt": "5.000e-2" });
+        let expected = json!({ "detail": diverged.to_string(), "why": "diverged", "t": "2.5", "method": "rk4", "dt": "0.05" });
         assert_eq!(values, expected);
         assert!(matches!(s.error_out(Error::Refused("x".into()), None), Out::Error(..)), "once");
     }
