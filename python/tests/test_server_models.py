@@ -6,6 +6,7 @@ does not stall another one."""
 from __future__ import annotations
 
 import json
+import re
 import threading
 import time
 from typing import Any
@@ -74,6 +75,24 @@ def test_schema_lists_every_model_of_the_registry_with_units_limits_and_slider_s
     assert "set_model" in s["commands"]
     tail = ["power", "a1", "a2", "a3", "pivot1", "pivot2", "pivot3", "taut", "error_x"]
     assert s["frame"]["fields"][-9:] == tail
+
+
+def test_schema_allowed_words_name_the_limits_the_lab_checks(client: TestClient) -> None:
+    # the page's refusal of a typed value quotes `allowed` beside min … max: for length, mass and g it
+    # quoted the core's wider range ("length = 5000 is not allowed: a number in [1e-6, 1e4] m
+    # (0.001 … 1000 m)")
+    s = client.get("/api/schema").json()
+    params = s["model"]["params"] + [p for m in s["models"] for p in m["params"]]
+    checked = 0
+    for p in params:
+        said = re.search(r"\[([-+0-9.e]+), ([-+0-9.e]+)\]", p["allowed"])  # in numbers: not [-π/2, π/2]
+        if said is not None and p["min"] is not None and p["max"] is not None:
+            assert (float(said[1]), float(said[2])) == (p["min"], p["max"]), p
+            checked += 1
+    assert checked >= 10, checked
+    words = {p["name"]: p["allowed"] for p in s["model"]["params"]}
+    assert words["length"] == "a number in [0.001, 1000] m", words
+    assert words["g"] == "a number in [-1000, 1000] m/s^2 (any sign, 0 allowed)", words
 
 
 def test_scenarios_carry_their_model(client: TestClient) -> None:

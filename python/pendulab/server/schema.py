@@ -10,6 +10,7 @@ core's limits (``min``/``max``, null for none). Units SI throughout.
 from __future__ import annotations
 
 import math
+import re
 from typing import TYPE_CHECKING, Any
 
 from .._core import __version__
@@ -64,15 +65,27 @@ def _slider(p: ParamSpec) -> tuple[float, float, float]:
     return lo, hi, (hi - lo) / 1000
 
 
+def _lab_allowed(allowed: str, lo: float, hi: float) -> str:
+    """The registry's words for a parameter's values with its range replaced by the lab's narrower one:
+    `a number in [1e-6, 1e4] m` → `a number in [0.001, 1000] m` (a refusal said both ranges, the core's
+    one allowing the refused value: `length = 5000 is not allowed: a number in [1e-6, 1e4] m
+    (0.001 … 1000 m)`)."""
+    lab = f"[{lo:g}, {hi:g}]"
+    said, n = re.subn(r"\[[^\]]*\]", lab, allowed, count=1)
+    return said if n == 1 else f"{allowed}; in the lab {lab}"
+
+
 def param_schema(p: ParamSpec) -> dict[str, Any]:
     """One parameter for the page: name, label (the words a student reads), unit (SI), description (one
-    line of help), allowed (in words), default, the hard
+    line of help), allowed (in words: the range min … max), default, the hard
     limits min/max (null: none) and the slider's ui_min, ui_max, step."""
     lo: float | None
     hi: float | None
+    allowed = p["allowed"]
     if p["name"] in LIMITS:
         lim = LIMITS[p["name"]]
         lo, hi, ui = lim["min"], lim["max"], (lim["ui_min"], lim["ui_max"], lim["step"])
+        allowed = _lab_allowed(allowed, lo, hi)
     else:
         lo, hi, ui = _finite(p["min"]), _finite(p["max"]), _slider(p)
     return {
@@ -80,7 +93,7 @@ def param_schema(p: ParamSpec) -> dict[str, Any]:
         "label": p["label"],
         "unit": p["unit"],
         "description": p["description"],
-        "allowed": p["allowed"],
+        "allowed": allowed,
         "default": p["default"],
         "min": lo,
         "max": hi,

@@ -3,7 +3,8 @@
 // DNS mapped to nothing). Checks: the physics runs in the page (window.pendulab.engine() is "wasm"), the
 // first frame arrives (time printed), frames move paced by the wall clock, the true error against the exact
 // solution travels in them, commands work through the same protocol (the model picker's damped model with
-// its damping, a scenario loaded, a refused command explained, and in German and French), the page's URL reproduces the run in a
+// its damping, a scenario loaded, a refused command explained, and in German and French; a typed value out of
+// range named with the lab's range), the page's URL reproduces the run in a
 // second page, what needs Python says so, no request left the machine, no console errors.
 // Usage: node tests/e2e/lab_file.mjs /abs/path/pendulab-lab.html
 import { mkdirSync } from 'node:fs';
@@ -71,6 +72,16 @@ try {
     return /length = -1/.test(text) ? text : null;
   }, null, { timeout: WAIT, polling: 20 });
   check(true, `a refused command is explained: ${await said.jsonValue()}`);
+  // a value typed into the length box is refused in the page naming the lab's range, not the core's wider
+  // one that allows it (it said "length = 5000 is not allowed: a number in [1e-6, 1e4] m (0.001 … 1000 m)")
+  const box = page.locator('[data-param="length"] input').first();
+  await box.fill('5000');
+  await box.press('Enter');
+  const typed = await (await page.waitForFunction(() => {
+    const text = document.getElementById('message')?.textContent ?? '';
+    return /length = 5000/.test(text) ? text : null;
+  }, null, { timeout: WAIT, polling: 20 })).jsonValue();
+  check(/\[0\.001, 1000\] m/.test(typed) && !/1e4/.test(typed), `a typed length out of range names the lab's range: ${typed}`);
   // a scenario of the file's list
   const names = await page.evaluate(async () => (await (await fetch('api/scenarios')).json()).map((s) => s.name));
   const other = names.find((n) => n !== 'rosette' && n !== s1.scenario) ?? names[0];
