@@ -186,7 +186,7 @@ def test_absurd_values_and_times_are_clear_errors(filmed: tuple) -> None:
     t, xz = filmed
     bad = xz.copy()
     bad[100, 0] = 1e308
-    with pytest.raises(pl.InvalidInputError, match=r"beyond ±1e\+12"):
+    with pytest.raises(pl.InvalidInputError, match=r"beyond ±1e12 "):
         pl.fit(t, positions=bad)
     with pytest.raises(pl.InvalidInputError, match="beyond"):
         pl.fit(t * 1e300, positions=xz)

@@ -162,9 +162,9 @@ ROWS = "".join(f"{i / 30:.4f},{0.1 * math.sin(i / 5):.5f},-0.5\n" for i in range
     [
         (ROWS + "2.0,inf,-0.5\n", "row 41 (line 42), column 'x': 'inf' is infinite"),
         (ROWS + "2.0,1e400,-0.5\n", "is infinite"),
-        (ROWS + "2.0,1e308,-0.5\n", "'1e308' is beyond ±1e+09 m"),
+        (ROWS + "2.0,1e308,-0.5\n", "'1e308' is beyond ±1e9 m"),
         (ROWS + "2.0,5e-324,-0.5\n", "'5e-324' is subnormal"),
-        (ROWS + "1e300,0.1,-0.5\n", "column 't': '1e300' is beyond ±1e+12 s"),
+        (ROWS + "1e300,0.1,-0.5\n", "column 't': '1e300' is beyond ±1e12 s"),
         ("".join(f"{i}e-300,0.1,-0.5\n" for i in range(20)), "cannot be told apart"),
         (ROWS + "2.0," + "1" * 200_000 + ",-0.5\n", "is infinite"),
         (ROWS + "2.0," + "x" * 200_000 + ",-0.5\n", "line 42"),

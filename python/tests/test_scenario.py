@@ -97,7 +97,7 @@ def test_every_example_loads_and_validates(path: Path) -> None:
         ),
         pytest.param(
             edited("length = 1.0", "length = -1.0"),
-            ["pendulum.length = -1.0: must be >= 1e-06", "rod length l"],
+            ["pendulum.length = -1.0: must be >= 1e-6", "rod length l"],
             id="negative-length",
         ),
         pytest.param(

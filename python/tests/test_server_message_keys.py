@@ -34,12 +34,12 @@ def _refusal(text: str) -> CommandError:
         (
             '{"type": "set_params", "length": -1}',
             "too_small",
-            {"name": "length", "value": "-1", "limit": 1e-3},
+            {"name": "length", "value": "-1", "limit": "0.001"},
         ),
         (
             '{"type": "set_params", "g": 1e9}',
             "too_large",
-            {"name": "g", "value": "1000000000.0", "limit": 1e3},
+            {"name": "g", "value": "1e9", "limit": "1000"},
         ),
         ('{"type": "set_params", "colour": 3}', "unknown_key", {"name": "colour"}),
     ],
@@ -51,6 +51,21 @@ def test_a_refused_value_is_keyed_with_its_name_value_and_limit(command: str, ke
     assert notice["key"] == key and notice["values"] == values and notice["command"] == "set_params"
     assert notice["message"] == str(e)  # the English message is unchanged
     assert message(key, **values)  # every placeholder filled
+
+
+@pytest.mark.parametrize(
+    ("command", "words"),
+    [
+        ('{"type": "set_method", "dt": 0}', "dt = 0: input should be greater than or equal to 1e-6"),
+        ('{"type": "set_time_scale", "time_scale": 1e-9}', "time_scale = 1e-9: input should be greater"),
+        ('{"type": "set_params", "g": -2e3}', "g = -2000: input should be greater than or equal to -1000"),
+    ],
+)
+def test_refused_numbers_are_written_as_a_user_writes_them(command: str, words: str) -> None:
+    # not pydantic's 0.000001 nor Python's 1e-09, -2000.0 (pendulab._numbers.shown)
+    e = _refusal(command)
+    assert str(e) == words or str(e).startswith(words), str(e)
+    assert not re.search(r"e[-+]0\d|\.0\b|0\.00000", str(e) + str(e.values)), (str(e), e.values)
 
 
 def test_two_problems_are_not_keyed() -> None:

@@ -182,7 +182,7 @@ export function decodeUrl(query: string): { value: UrlScenario; problems: string
   const at = number('at');
   if (at !== undefined) {
     if (at >= 0 && at <= 1e6) value.at = at;
-    else problems.push(tr('url.notTime', { value: at }));
+    else problems.push(tr('url.notTime', { value: JSON.stringify(q.get('at')) })); // as written: 2e6, not 2000000
   }
   const view = q.get('view');
   if (view !== null) {

@@ -24,6 +24,7 @@ from typing import Any
 import numpy as np
 
 from .._core import InvalidInputError
+from .._numbers import shown
 from ..model import FloatArray
 from ..validate import LIMITS
 from .data import MAX_SAMPLES
@@ -137,9 +138,9 @@ def read_cells(
             fail(
                 int(np.argmax(beyond)),
                 k,
-                f"is beyond ±{BOUNDS[quantity]:g} {unit} (a {quantity} in SI)",
+                f"is beyond ±{shown(BOUNDS[quantity])} {unit} (a {quantity} in SI)",
                 "data_cell_beyond",
-                limit=f"{BOUNDS[quantity]:g}",
+                limit=shown(BOUNDS[quantity]),
                 unit=unit,
             )
         if quantity == "time":
@@ -187,11 +188,12 @@ def _check_spacing(t: FloatArray, fail: Any, k: int) -> None:
         fail(
             int(max(order[i], order[i + 1])),
             k,
-            f"is {step[i]:.3g} s from another time; samples closer than {MIN_STEP:g} s (the shortest "
+            f"is {shown(step[i], 3)} s from another time; samples closer than {shown(MIN_STEP)} s "
+            "(the shortest "
             "time step) cannot be told apart",
             "data_times_too_close",
-            step=f"{step[i]:.3g}",
-            most=f"{MIN_STEP:g}",
+            step=shown(step[i], 3),
+            most=shown(MIN_STEP),
         )
 
 

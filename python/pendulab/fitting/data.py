@@ -37,6 +37,7 @@ from typing import Any
 import numpy as np
 
 from .._core import InvalidInputError
+from .._numbers import shown
 from ..model import FloatArray
 from .keyed import KeyedInputError
 
@@ -65,7 +66,14 @@ metre-sized value, and a residual of up to :data:`MAX_VALUE` over a smaller one 
 
 
 def _show(value: Any) -> str:
-    text = repr(value)
+    """``value`` in a message, at most 80 characters; a number or a list of numbers as the user writes
+    them (:func:`pendulab._numbers.shown`: ``[1e308, -0.5]``, not ``[1e+308, -0.5]``)."""
+    if isinstance(value, float):
+        text = shown(value)
+    elif isinstance(value, list) and all(isinstance(v, float) for v in value):
+        text = "[" + ", ".join(map(shown, value)) + "]"
+    else:
+        text = repr(value)
     return text if len(text) <= 80 else text[:77] + "..."
 
 
@@ -137,7 +145,7 @@ def _sigma(kind: str, sigma: Any) -> float | None:
         )
     if s < MIN_SIGMA:
         raise InvalidInputError(
-            f"sigma = {s!r} {KINDS[kind]} for {kind} is below {MIN_SIGMA:g} {KINDS[kind]}, finer than "
+            f"sigma = {s!r} {KINDS[kind]} for {kind} is below {shown(MIN_SIGMA)} {KINDS[kind]}, finer than "
             "any measurement and than float64 resolves: give the noise of one value in SI units"
         )
     return s
@@ -206,10 +214,11 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
         if np.any(theta < -0.5) or np.any(theta > math.pi + 0.5):
             raise KeyedInputError(
                 "angles: θ must lie in [0, π] rad (the polar angle from the downward vertical); "
-                f"got values from {theta.min():.6g} to {theta.max():.6g} — degrees? use np.radians",
+                f"got values from {shown(theta.min(), 6)} to {shown(theta.max(), 6)} — degrees? use "
+                "np.radians",
                 "data_theta_range",
-                lo=f"{theta.min():.6g}",
-                hi=f"{theta.max():.6g}",
+                lo=shown(theta.min(), 6),
+                hi=shown(theta.max(), 6),
             )
     _check_ranges(times, arrays)
     sig = {k: _sigma(k, sigma) for k in arrays}
@@ -224,34 +233,36 @@ def _check_ranges(times: FloatArray, arrays: Mapping[str, FloatArray]) -> None:
         if big.size:
             i = int(big[0])
             raise KeyedInputError(
-                f"{kind} in sorted row {i}: {_show(a[i].tolist())} is beyond ±{MAX_VALUE:g} (SI units); "
+                f"{kind} in sorted row {i}: {_show(a[i].tolist())} is beyond ±{shown(MAX_VALUE)} (SI units); "
                 "a measurement of a pendulum never is — check the file's units and columns",
                 "data_value_beyond",
                 kind=kind,
                 row=i,
                 value=_show(a[i].tolist()),
-                limit=f"{MAX_VALUE:g}",
+                limit=shown(MAX_VALUE),
             )
     span = float(times[-1] - times[0])
     if not SPAN[0] <= span <= SPAN[1]:
         raise KeyedInputError(
-            f"the record spans {span:.6g} s; a fit needs {SPAN[0]:g} s to {SPAN[1]:g} s (times in s?)",
+            f"the record spans {shown(span, 6)} s; a fit needs {shown(SPAN[0])} s to {shown(SPAN[1])} s "
+            "(times in s?)",
             "data_span",
-            span=f"{span:.6g}",
-            least=f"{SPAN[0]:g}",
-            most=f"{SPAN[1]:g}",
+            span=shown(span, 6),
+            least=shown(SPAN[0]),
+            most=shown(SPAN[1]),
         )
     gap = np.diff(times)
     close = np.flatnonzero(gap < MIN_SPACING * span)
     if close.size:
         i = int(close[0])
         raise KeyedInputError(
-            f"the times {times[i]!r} s and {times[i + 1]!r} s are {gap[i]:.3g} s apart, less than "
-            f"{MIN_SPACING:g} of the record's span {span:.6g} s: round-off, not a measurement",
+            f"the times {shown(times[i])} s and {shown(times[i + 1])} s are {shown(gap[i], 3)} s apart, "
+            "less than "
+            f"{shown(MIN_SPACING)} of the record's span {shown(span, 6)} s: round-off, not a measurement",
             "data_spacing",
-            t1=repr(float(times[i])),
-            t2=repr(float(times[i + 1])),
-            gap=f"{gap[i]:.3g}",
+            t1=shown(times[i]),
+            t2=shown(times[i + 1]),
+            gap=shown(gap[i], 3),
         )
 
 

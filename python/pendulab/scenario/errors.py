@@ -19,6 +19,7 @@ from typing import Any
 from pydantic import BaseModel
 from pydantic_core import ErrorDetails
 
+from .._numbers import shown
 from ..validate import abbreviate
 from .schema import (
     SECTIONS,
@@ -172,9 +173,8 @@ def _problem(err: ErrorDetails, data: Any = None, root: type[BaseModel] = Scenar
         reason = err["msg"].replace("List should", "must").replace(" after validation", "")
     elif kind in _BOUNDS:
         bound = ctx[_BOUNDS[kind][0]]
-        if isinstance(bound, float) and bound.is_integer() and abs(bound) < 1e15:
-            bound = int(bound)
-        reason = f"must be {_BOUNDS[kind][1]} {bound!r}"
+        number = isinstance(bound, int | float) and not isinstance(bound, bool)
+        reason = f"must be {_BOUNDS[kind][1]} {shown(bound) if number else repr(bound)}"
     else:  # anything else: pydantic says "Input should be …"
         reason = re.sub(r"^(Input|Value|List) should", "must", err["msg"])
     text = (

@@ -14,6 +14,8 @@ from typing import Any
 
 from pydantic import ValidationError
 
+from .._numbers import shown
+
 #: the error notices a page translates: key -> English words with {placeholders} (``messages.json``)
 MESSAGES: dict[str, str] = {
     k: v
@@ -40,7 +42,15 @@ class CommandError(ValueError):
 
 
 def show_value(value: Any) -> str:
-    text = json.dumps(value, allow_nan=True) if not isinstance(value, str) else repr(value)
+    """A value of a refused message as the user wrote it: a string quoted, a number by
+    :func:`pendulab._numbers.shown` (``1e-9``, ``-1``; not ``1e-09``, ``-1.0``), else its JSON (``NaN``
+    as JSON writes it); at most 80 characters."""
+    if isinstance(value, str):
+        text = repr(value)
+    elif isinstance(value, float) and math.isfinite(value):
+        text = shown(value)
+    else:
+        text = json.dumps(value, allow_nan=True)
     return text if len(text) <= 80 else text[:77] + "..."
 
 
@@ -61,8 +71,10 @@ def _problem(err: Any, skip: int) -> str:
         return f"unknown key {key!r}"
     if err["type"] == "missing":
         return f"{key} is missing"
-    shown = show_value(err.get("input"))
-    return f"{key} = {shown}: {msg[:1].lower()}{msg[1:]}"
+    if err["type"] in _BOUND_WORDS:  # pydantic writes the limit 1e-6 as 0.000001
+        limit = err.get("ctx", {}).get(_KEYED[err["type"]][1])
+        msg = f"input should be {_BOUND_WORDS[err['type']]} {show_value(limit)}"
+    return f"{key} = {show_value(err.get('input'))}: {msg[:1].lower()}{msg[1:]}"
 
 
 #: pydantic's error types the page translates: type -> (message key, the limit's name in ``ctx``)
@@ -76,6 +88,15 @@ _KEYED = {
 }
 
 
+#: the words of pydantic's bounds, with the limit written by :func:`show_value`
+_BOUND_WORDS = {
+    "greater_than_equal": "greater than or equal to",
+    "greater_than": "greater than",
+    "less_than_equal": "less than or equal to",
+    "less_than": "less than",
+}
+
+
 def validation_key(e: ValidationError, skip: int = 0) -> tuple[str | None, dict[str, Any]]:
     """The message key and values (``messages.json``) of a pydantic error with one problem of a kind the
     page translates; ``(None, {})`` otherwise (the page shows the English message)."""
@@ -86,7 +107,7 @@ def validation_key(e: ValidationError, skip: int = 0) -> tuple[str | None, dict[
     key, limit = _KEYED[err["type"]]
     values: dict[str, Any] = {"name": ".".join(str(p) for p in err["loc"][skip:])}
     if limit is not None:
-        values |= {"value": show_value(err.get("input")), "limit": err.get("ctx", {}).get(limit)}
+        values |= {"value": show_value(err.get("input")), "limit": show_value(err.get("ctx", {}).get(limit))}
     return key, values
 
 

@@ -116,6 +116,8 @@ describe('the whole lab in the link (issue 28)', () => {
     expect(decodeTwin('fly:1')).toBeNull();
     const bad = decodeUrl('twin=own:1&plot=a&view=x%3Ay%3Az&at=-3');
     expect(bad.problems).toHaveLength(4);
+    // a time out of range echoed as it was written (2e6 was shown as 2000000)
+    expect(decodeUrl('at=2e6').problems).toEqual(['at = "2e6" is not a time 0 … 1e6 s']);
   });
   it('does not replay a paused time for an adaptive method or a running lab', () => {
     expect(fromStatus({ ...status, adaptive: true }).at).toBeUndefined();
