@@ -49,6 +49,15 @@ export function ownRefusal(list: readonly TwinOptions[], first: number): string 
   return bad < 0 ? null : t('twin.badOwn', { n: first + bad });
 }
 
+/** The refusal of the second pendulum's inputs for its mode (null when fine), naming what is wrong: the
+ *  pendulum of mode `own`, ε of mode `epsilon`, the damping of mode `damped` (one message for both said
+ *  "ε must be a number and the damping ≥ 0" of a refused damping too). */
+export function twinRefusal(o: TwinOptions): string | null {
+  if (twinProblem(o) === null) return null;
+  if (o.mode === 'own') return ownRefusal([o], 2);
+  return t(o.mode === 'epsilon' ? 'twin.badEpsilon' : 'twin.badDamping');
+}
+
 export class ExtraPendulums {
   readonly extras: Extra[] = [];
   private readonly list: HTMLElement;

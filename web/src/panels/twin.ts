@@ -7,9 +7,9 @@ import { LabStore } from '../state';
 import type { TrailSlice } from '../scene/trail';
 import { CurvePlot, dataRange } from './curves';
 import { Visibility } from './visible';
-import { rowOffsets, separation, sideBySide, twinCommands, twinProblem } from '../twin';
+import { rowOffsets, separation, sideBySide, twinCommands } from '../twin';
 import type { ExtraPendulums } from './extras';
-import { numberInput } from './extras';
+import { numberInput, twinRefusal } from './extras';
 import type { Frame, Vec3 } from '../protocol';
 import type { TwinMode, TwinOptions } from '../twin';
 import { DEG } from '../measure';
@@ -139,9 +139,9 @@ export class TwinPanel {
       };
       // the chosen mode's inputs only (an emptied box of another mode is no reason to refuse), and the
       // options kept as they were when refused (the share link writes them)
-      const problem = twinProblem(o);
-      if (problem !== null) {
-        actions.explain(problem === 'own' ? t('twin.badOwn', { n: 2 }) : t('twin.bad'));
+      const refused = twinRefusal(o);
+      if (refused !== null) {
+        actions.explain(refused);
         return;
       }
       Object.assign(this.options, o);

@@ -5,7 +5,7 @@ import { describe, expect, it } from 'vitest';
 import { rowOffsets, sideBySide } from '../../src/twin';
 import { decodeTwin, decodeUrl, encodeUrl } from '../../src/url';
 import type { TwinOptions } from '../../src/twin';
-import { ownRefusal } from '../../src/panels/extras';
+import { ownRefusal, twinRefusal } from '../../src/panels/extras';
 import { LANGUAGES, setLanguage } from '../../src/i18n';
 
 describe('a row of pendulums', () => {
@@ -68,5 +68,19 @@ describe('a refused pendulum of its own is named', () => {
     setLanguage('en');
     // no language names a fixed pendulum ("the second") in the message of every one
     for (const { words } of Object.values(LANGUAGES)) expect(words['twin.badOwn']).toContain('{n}');
+  });
+});
+
+describe('a refused second pendulum names what is wrong', () => {
+  it('ε for mode epsilon, the damping for mode damped, the pendulum for mode own; nothing when fine', () => {
+    const o: TwinOptions = { mode: 'damped', epsilon: 0.01, method: 'rk4', damping: -1, length: 1, mass: 1, theta: 0.1 };
+    expect(twinRefusal(o)).toBe('the damping must be a number ≥ 0 (1/s)'); // said "ε must be a number and …"
+    expect(twinRefusal({ ...o, mode: 'epsilon', epsilon: NaN })).toBe('ε must be a number (degrees)');
+    expect(twinRefusal({ ...o, mode: 'own', mass: 0 })).toMatch(/^pendulum 2 needs/);
+    expect(twinRefusal({ ...o, damping: 0.5 })).toBeNull();
+    expect(twinRefusal({ ...o, mode: 'epsilon' })).toBeNull(); // another mode's bad box is no reason
+    setLanguage('de');
+    expect(twinRefusal(o)).toMatch(/^die Dämpfung/);
+    setLanguage('en');
   });
 });
