@@ -9,6 +9,7 @@ Units are SI throughout.
 from __future__ import annotations
 
 import contextlib
+import math
 import os
 import sys
 from collections.abc import Iterator
@@ -65,6 +66,8 @@ class _Commands(TyperGroup):
     def make_context(
         self, info_name: str | None, args: list[str], parent: Context | None = None, **extra: Any
     ) -> Context:
+        if parent is None:
+            _tidy(self)
         try:
             return super().make_context(info_name, args, parent, **extra)
         except UsageError as e:
@@ -75,6 +78,73 @@ class _Commands(TyperGroup):
             return super().invoke(ctx)
         except UsageError as e:
             raise _one_line(e) from None
+
+
+_KINDS = {float: "a number", int: "a whole number", Path: "a path"}
+_RANGE_ERRORS = ("greater_than", "greater_than_equal", "less_than", "less_than_equal")
+
+
+def _first_clause(text: str) -> str:
+    """``text`` up to its first ``;`` or sentence end outside parentheses, without the full stop."""
+    depth = 0
+    for i, c in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(c, 0)
+        if depth == 0 and (c == ";" or text.startswith(". ", i)):
+            return text[:i]
+    return text.rstrip(".")
+
+
+def _allowed(param: Any) -> str:
+    """What ``param`` takes, for an error: its kind, range and the first clause of its help,
+    ``a whole number in [1, 1024] (threads …)``."""
+    kind = _KINDS.get(param.type_descriptor.annotation, "a value")
+    if param.min is not None or param.max is not None:
+        lo = "-inf" if param.min is None else f"{param.min:g}"
+        hi = "inf" if param.max is None else f"{param.max:g}"
+        kind += f" in [{lo}, {hi}]"
+    elif param.type_descriptor.annotation is float:
+        kind = "a finite number"
+    what = _first_clause(" ".join((getattr(param, "help", None) or "").split()))
+    first = what.split(" ")[0]
+    if first[1:].islower():  # "Step size in s" → "step size in s"; "RATTLE8 step", "V_tol" stay
+        what = what[0].lower() + what[1:]
+    return f"{kind} ({what})" if what else kind
+
+
+def _checked(param: Any) -> Any:
+    """``param.process_value`` that names the option, the value as typed and what is allowed when the
+    value is not of the option's type (typer's own message is pydantic's ``Input should be a valid
+    number``, without either), and that turns away nan and inf for a float."""
+    process = param.process_value
+    name = param.opts[0] if param.param_type_name == "option" else param.display_name_raw
+
+    def process_value(ctx: Context, value: Any) -> Any:
+        try:
+            out = process(ctx, value)
+        except UsageError as e:
+            errors = getattr(e.__cause__, "errors", None)
+            if not callable(errors) or not isinstance(value, str):
+                raise
+            first = (errors() or [{}])[0].get("type", "")
+            problem = f"is not {_KINDS.get(param.type_descriptor.annotation, 'allowed')}"
+            if first in _RANGE_ERRORS:
+                problem = "is out of range" if math.isfinite(float(value)) else "is not a finite number"
+            raise UsageError(f"{name}: {value!r} {problem}; allowed: {_allowed(param)}", ctx) from None
+        if isinstance(out, float) and not math.isfinite(out):
+            raise UsageError(f"{name}: {value!r} is not a finite number; allowed: {_allowed(param)}", ctx)
+        return out
+
+    return process_value
+
+
+def _tidy(command: Any) -> None:
+    """Once per command line, on every parameter of every command under ``command``: the messages of
+    :func:`_checked`."""
+    for sub in getattr(command, "commands", {}).values():
+        _tidy(sub)
+    for param in command.params:
+        if hasattr(param, "type_descriptor") and not getattr(param, "is_flag", False):
+            param.process_value = _checked(param)
 
 
 app = typer.Typer(
