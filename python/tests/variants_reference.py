@@ -27,7 +27,9 @@ A moving pivot p(t): the bob is at r = p(t) + x and T = ½|ṗ + ẋ|². The cro
 contributes d/dt(ṗ·∂x/∂q) − ṗ·∂ẋ/∂q = p̈·∂x/∂q to the left side, i.e. the generalised force of the
 uniform field −p̈(t): F gains −p̈ (the inertial force of the non-rotating pivot frame), and a damping
 force relative to the pivot is −c ẋ. A frame turning at Ω: T = ½|ẋ + Ω×x|² gives, in the same way,
-the terms −2Ω×ẋ − Ω×(Ω×x) in F.
+the terms −2Ω×ẋ − Ω×(Ω×x) in F. A rope of prescribed length ρ = l(t) (a hoist) is a rheonomic
+constraint: ρ, ρ̇, ρ̈ are then given and the θ and φ equations above hold as written, with their
+ρ̇ terms (the Coriolis-like −2ρ̇θ̇/ρ, −2ρ̇φ̇/ρ of a changing radius).
 """
 
 from __future__ import annotations
@@ -38,6 +40,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 Force = Callable[[float, np.ndarray, np.ndarray], np.ndarray]
+Rope = Callable[[float], tuple[float, float, float]]
 
 
 def frame(th: float, ph: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -69,11 +72,12 @@ def to_cartesian(y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def reference(
-    force: Force, x0: np.ndarray, v0: np.ndarray, t: np.ndarray, *, rod: bool = True
+    force: Force, x0: np.ndarray, v0: np.ndarray, t: np.ndarray, *, rod: bool = True, rope: Rope | None = None
 ) -> tuple[np.ndarray, np.ndarray]:
     """x [m], v [m/s] at the times t [s] (t[0] the start) of the bob under the force per unit mass
     ``force(t, x, ẋ)`` [m/s²], on a rod (|x| fixed) or, with ``rod=False``, free in ρ (the spring's
-    pull is then part of ``force``). DOP853, rtol 1e-13, atol 1e-14."""
+    pull is then part of ``force``), or on a rope of prescribed length ``rope(t)`` = (l, l̇, l̈) [m, m/s,
+    m/s²] (x0, v0 then with |x0| = l(t[0]), x0·v0 = l l̇). DOP853, rtol 1e-13, atol 1e-14."""
 
     def rhs(tt: float, y: np.ndarray) -> np.ndarray:
         rho, th, ph, rd, thd, phd = y
@@ -82,13 +86,16 @@ def reference(
         x = rho * u
         xd = rd * u + rho * thd * e_th + rho * st * phd * e_ph
         f = force(tt, x, xd)
-        rdd = 0.0 if rod else rho * thd**2 + rho * st**2 * phd**2 + f @ u
+        if rope is not None:
+            rdd = rope(tt)[2]
+        else:
+            rdd = 0.0 if rod else rho * thd**2 + rho * st**2 * phd**2 + f @ u
         thdd = st * ct * phd**2 - 2.0 * rd * thd / rho + f @ e_th / rho
         phdd = -2.0 * ct / st * thd * phd - 2.0 * rd * phd / rho + f @ e_ph / (rho * st)
         return np.array([rd, thd, phd, rdd, thdd, phdd])
 
     y0 = to_angles(np.asarray(x0, float), np.asarray(v0, float))
-    if rod:
+    if rod and rope is None:
         y0[3] = 0.0
     sol = solve_ivp(rhs, (t[0], t[-1]), y0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)
     assert sol.success, sol.message
