@@ -154,7 +154,7 @@ def test_user_errors_are_one_line(args: list[str], needles: list[str]) -> None:
         (["bogus"], ["pendulab: no such command 'bogus'", "'pendulab --help'"]),
         (["--bogus"], ["pendulab: no such option: --bogus", "'pendulab --help'"]),
         (["crane", "bogus"], ["pendulab crane: no such command 'bogus'", "'pendulab crane --help'"]),
-        (["crane", "run"], ["pendulab crane run: missing argument", "'pendulab crane run --help'"]),
+        (["crane", "run"], ["pendulab crane run: missing argument 'FILE'", "'pendulab crane run --help'"]),
     ],
 )
 def test_usage_errors_are_one_line_too(args: list[str], needles: list[str]) -> None:

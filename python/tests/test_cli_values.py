@@ -74,3 +74,30 @@ def test_the_message_reads_well() -> None:
         "error: pendulab run: --dt: 'abc' is not a number; allowed: a finite number (step size in s (> 0)); "
         "see 'pendulab run --help'\n"
     )
+
+
+def _arguments() -> list[tuple[tuple[str, ...], Any]]:
+    return [
+        (path, command)
+        for path, command in _commands(get_command(cli.app), ())
+        if any(p.param_type_name == "argument" for p in command.params)
+    ]
+
+
+@pytest.mark.parametrize(("path", "command"), _arguments(), ids=[" ".join(p) for p, _ in _arguments()])
+def test_arguments_read_alike_in_usage_lines_and_errors(path: tuple[str, ...], command: Any) -> None:
+    """Every command's usage line writes its arguments as the docs do (``SCENARIO``, ``[MODEL]``,
+    ``KINDS...``; not typer's ``{SCENARIO}`` or a lower-case ``{file}``), and a missing one is named
+    the same way (``missing argument 'FILE'``)."""
+    code, out, _err = invoke(*path, "--help")
+    usage = out.splitlines()[0]
+    assert code == 0 and usage.startswith(f"Usage: pendulab {' '.join(path)} [OPTIONS]"), out
+    arguments = [p for p in command.params if p.param_type_name == "argument"]
+    for p in arguments:
+        name = p.name.upper() if p.metavar is None else p.metavar
+        shown = (name if p.required else f"[{name}]") + ("..." if p.nargs != 1 else "")
+        assert name.isupper() and f" {shown}" in usage and "{" not in usage, (shown, usage)
+    required = [p for p in arguments if p.required]
+    if required:
+        name = required[0].metavar or required[0].name.upper()
+        assert_user_error(*invoke(*path), f"pendulab {' '.join(path)}: missing argument '{name}'")

@@ -9,6 +9,7 @@ Units are SI throughout.
 from __future__ import annotations
 
 import contextlib
+import functools
 import math
 import os
 import sys
@@ -139,12 +140,22 @@ def _checked(param: Any) -> Any:
 
 def _tidy(command: Any) -> None:
     """Once per command line, on every parameter of every command under ``command``: the messages of
-    :func:`_checked`."""
+    :func:`_checked`; arguments named by an upper-case metavar in usage lines and errors alike."""
     for sub in getattr(command, "commands", {}).values():
         _tidy(sub)
     for param in command.params:
         if hasattr(param, "type_descriptor") and not getattr(param, "is_flag", False):
             param.process_value = _checked(param)
+        if param.param_type_name == "argument":
+            param.metavar = param.metavar or param.name.upper()
+            param._usage_display_name = functools.partial(_usage_name, param)
+
+
+def _usage_name(param: Any) -> str:
+    """An argument in a usage line as in ``missing argument 'SCENARIO'`` and the docs: ``SCENARIO``
+    if required, ``[MODEL]`` if not, ``SCENARIO...`` if repeatable (typer writes ``{SCENARIO}``)."""
+    name = param.metavar if param.required else f"[{param.metavar}]"
+    return name + ("..." if param.nargs != 1 else "")
 
 
 app = typer.Typer(
