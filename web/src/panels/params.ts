@@ -74,6 +74,16 @@ export class ParamEdit {
     if (v !== null) this.commit(v);
   }
 
+  /** The box left (Enter, or the focus gone) holding `text`: when lil-gui reads no number in it (`abc`, an
+   *  emptied box: its parseFloat is NaN), lil-gui drops it and shows the old value again without a word;
+   *  this says so and shows the value in effect. A number (even `1e999`, `12abc`) is lil-gui's, as typed. */
+  left(text: string): void {
+    if (!Number.isNaN(Number.parseFloat(text))) return;
+    this.typed = null;
+    this.explain(t('start.notNumber', { name: this.p.name }));
+    this.restore();
+  }
+
   private commit(v: number): void {
     const problem = checkParam(this.p, v);
     if (problem === null) {
@@ -105,6 +115,8 @@ export function addParam(
   });
   c.onChange((v: number) => edit.changed(v, box !== null && document.activeElement === box));
   c.onFinishChange(() => edit.finished());
+  // captured on the control, so before lil-gui's own blur puts the old value back into the box
+  c.domElement.addEventListener('blur', (e) => e.target === box && box !== null && edit.left(box.value), true);
   const [, help] = paramWordsOf(p);
   c.domElement.title = t('gui.paramHelp', { help, name: p.name, unit: p.unit, range: allowedRange(p), default: p.default });
   c.domElement.dataset['param'] = p.name;

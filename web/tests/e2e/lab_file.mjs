@@ -4,7 +4,7 @@
 // first frame arrives (time printed), frames move paced by the wall clock, the true error against the exact
 // solution travels in them, commands work through the same protocol (the model picker's damped model with
 // its damping, a scenario loaded, a refused command explained, and in German and French; a typed value out of
-// range named with the lab's range), the page's URL reproduces the run in a
+// range named with the lab's range, no number in the box said so), the page's URL reproduces the run in a
 // second page, what needs Python says so, no request left the machine, no console errors.
 // Usage: node tests/e2e/lab_file.mjs /abs/path/pendulab-lab.html
 import { mkdirSync } from 'node:fs';
@@ -82,6 +82,15 @@ try {
     return /length = 5000/.test(text) ? text : null;
   }, null, { timeout: WAIT, polling: 20 })).jsonValue();
   check(/\[0\.001, 1000\] m/.test(typed) && !/1e4/.test(typed), `a typed length out of range names the lab's range: ${typed}`);
+  // no number in the box: lil-gui dropped it without a word; now the page says so and the box shows the length
+  await box.fill('abc');
+  await box.press('Enter');
+  const nan = await (await page.waitForFunction(() => {
+    const text = document.getElementById('message')?.textContent ?? '';
+    return /must be a number/.test(text) ? text : null;
+  }, null, { timeout: WAIT, polling: 20 })).jsonValue();
+  const shown = await box.inputValue();
+  check(nan === 'length must be a number' && Number(shown) === (await status(page)).params.length, `"abc" typed for the length: ${nan}; the box shows ${shown}`);
   // a scenario of the file's list
   const names = await page.evaluate(async () => (await (await fetch('api/scenarios')).json()).map((s) => s.name));
   const other = names.find((n) => n !== 'rosette' && n !== s1.scenario) ?? names[0];

@@ -30,6 +30,20 @@ function edit(p: ParamSchema) {
 }
 
 describe('a parameter box', () => {
+  it('left with no number in it says so and shows the value in effect (lil-gui dropped "abc" silently)', () => {
+    for (const text of ['abc', '', ' ', 'NaN', '-']) {
+      const { e, log } = edit(g);
+      e.left(text);
+      expect(log.said).toEqual(['g must be a number']);
+      expect([log.sent, log.restored]).toEqual([[], 1]);
+    }
+    for (const text of ['9.81', '12abc', '1e999', '-1e9']) {
+      const { e, log } = edit(g);
+      e.left(text); // a number: lil-gui reads it and the commit checks it
+      expect([log.said, log.sent, log.restored]).toEqual([[], [], 0]);
+    }
+  });
+
   it('sends a typed number once it is complete, not its keystrokes (typing -1e9 sent g = -1)', () => {
     const { e, log } = edit(g);
     for (const v of [-1, -1, -1e9]) e.changed(v, true); // lil-gui's parseFloat of "-1", "-1e", "-1e9"
