@@ -85,6 +85,7 @@ export class Controls {
         else this.refuse(actions, dt, 'dt', t('gui.dtRange', { min: dtLim.min, max: dtLim.max }));
       });
     dt.domElement.title = t('gui.dtHelp', { min: dtLim.min, max: dtLim.max });
+    this.saysNotNumber(actions, dt, 'dt');
     this.synced.push(dt);
 
     // --- run ---
@@ -100,6 +101,7 @@ export class Controls {
         else this.refuse(actions, ts, 'time_scale', t('gui.tsRange', { min: tsLim.min, max: tsLim.max }));
       });
     ts.domElement.title = t('gui.tsHelp', { min: tsLim.min, max: tsLim.max });
+    this.saysNotNumber(actions, ts, 'time_scale');
     this.synced.push(ts);
     m['paused'] = false;
     m['run'] = () => actions.send({ type: m['paused'] === true ? 'resume' : 'pause' });
@@ -151,6 +153,15 @@ export class Controls {
     const value = this.status?.[key];
     if (value !== undefined) this.model[key] = value;
     c.updateDisplay();
+  }
+
+  /** The box of `c` left with no number in it (`abc`, emptied): lil-gui drops it without a word; say so
+   *  and show the value in effect (captured before lil-gui's own blur puts the old value back). */
+  private saysNotNumber(actions: ControlActions, c: Controller, key: 'dt' | 'time_scale'): void {
+    c.domElement.addEventListener('blur', (e) => {
+      const box = e.target;
+      if (box instanceof HTMLInputElement && Number.isNaN(Number.parseFloat(box.value))) this.refuse(actions, c, key, t('start.notNumber', { name: key }));
+    }, true);
   }
 
   /** Shows the server's status (without sending anything back). Fields being edited are left alone. */

@@ -91,6 +91,16 @@ try {
   }, null, { timeout: WAIT, polling: 20 })).jsonValue();
   const shown = await box.inputValue();
   check(nan === 'length must be a number' && Number(shown) === (await status(page)).params.length, `"abc" typed for the length: ${nan}; the box shows ${shown}`);
+  // the same for the time scale's box (dt's is lil-gui's too, in the advanced view)
+  const tsBox = page.locator('[data-folder="run"] .lil-controller', { hasText: /time scale/i }).locator('input').first();
+  await tsBox.fill('');
+  await tsBox.press('Enter');
+  const tsSaid = await (await page.waitForFunction(() => {
+    const text = document.getElementById('message')?.textContent ?? '';
+    return /time_scale must be a number/.test(text) ? text : null;
+  }, null, { timeout: WAIT, polling: 20 })).jsonValue();
+  const tsShown = await tsBox.inputValue();
+  check(Number(tsShown) === (await status(page)).time_scale, `an emptied time-scale box: ${tsSaid}; the box shows ${tsShown}`);
   // a scenario of the file's list
   const names = await page.evaluate(async () => (await (await fetch('api/scenarios')).json()).map((s) => s.name));
   const other = names.find((n) => n !== 'rosette' && n !== s1.scenario) ?? names[0];
