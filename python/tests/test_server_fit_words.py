@@ -16,7 +16,7 @@ from pendulab.fitting.blocks import BlockCheck
 from pendulab.fitting.data import observations
 from pendulab.fitting.goodness import KindCheck, findings
 from pendulab.fitting.start import check_length_hint
-from pendulab.server.fit_words import KEYS, NOTES, REASONS, keyed, report_items
+from pendulab.server.fit_words import CLAUSES, KEYS, NOTES, REASONS, keyed, report_items
 
 SOURCE = Path(__file__).resolve().parents[1] / "pendulab" / "server" / "fit_words.py"
 
@@ -158,7 +158,7 @@ def test_every_reason_for_an_undetermined_parameter_is_keyed() -> None:
 
 
 def test_the_keys_are_those_the_server_uses() -> None:
-    used = {k for k, _ in NOTES} | {k for k, _ in REASONS}
+    used = {k for k, _ in NOTES} | {k for k, _ in REASONS} | {k for k, _ in CLAUSES}
     items = {"header", "droppedRows", "combinationValue", "mirror", "planar", "residual", "chi2"}
     items |= {"chi2Estimated", "noise", "fixed", "converged", "notConvergedItem", "aicBic"}
     items |= {"compound", "compoundLengthHeld", "compoundLength", "compoundTorque"}

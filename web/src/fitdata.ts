@@ -21,11 +21,13 @@ export interface FitRequest {
 }
 
 /** A line of the fit's answer as a message key with values (python/pendulab/server/fit_words.py; the page
- *  words it: i18n/fitwords.ts), with the server's English `text` where it has one. */
+ *  words it: i18n/fitwords.ts), with the server's English `text` where it has one, and the keyed clauses
+ *  a warning carries after its own words (`clauses`: the band scan's power, the damping law's hint). */
 export interface KeyedLine {
   key: string | null;
   values: Record<string, string>;
   text?: string;
+  clauses?: KeyedLine[];
 }
 
 /** One fitted parameter: value and standard error (null: the data do not determine it) in `unit`; `reason`
@@ -99,6 +101,7 @@ export function readKeyed(raw: unknown): KeyedLine | null {
   }
   const line: KeyedLine = { key, values };
   if (typeof r['text'] === 'string') line.text = r['text'];
+  if (Array.isArray(r['clauses'])) line.clauses = r['clauses'].map(readKeyed).filter((l): l is KeyedLine => l !== null);
   return line;
 }
 

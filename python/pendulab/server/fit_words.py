@@ -96,6 +96,17 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
 ]
 """Warning key -> the pattern of its English words (from the start of the sentence)."""
 
+CLAUSES: list[tuple[str, re.Pattern[str]]] = [
+    # goodness._band (pendulab/fitting/goodness.py): in the correlated and systematic findings
+    ("bandPower", _p("its power near {hz} Hz is {ratio}x that of the rest of its spectrum, p = {p}")),
+    # blocks.BlockCheck.damping_law (pendulab/fitting/blocks.py): after the blocks' finding
+    ("dampingDry", _p("as dry friction makes: fit '{param:w}' beside 'damping'")),
+    ("dampingDrag", _p("as air drag makes: fit '{param:w}' beside 'damping'")),
+]
+"""Clauses a warning may carry after its own words (anywhere in it) -> the pattern of their English
+words: a note lists those it has as ``clauses``, each ``{"key", "values"}``, which the page words after
+the note's own words."""
+
 REASONS: list[tuple[str, re.Pattern[str]]] = [
     ("notFinite", _p("the model's response to it is not finite at the fit")),
     ("flat", _p("the residuals do not change with it at the fit")),
@@ -110,12 +121,17 @@ def _values(m: re.Match[str]) -> dict[str, str]:
 
 def keyed(text: str, table: list[tuple[str, re.Pattern[str]]] = NOTES) -> dict[str, Any]:
     """``text`` (one warning, whitespace collapsed) as ``{"key", "values", "text"}``; ``key`` None when
-    no pattern of ``table`` matches it."""
+    no pattern of ``table`` matches it. A warning (``table`` NOTES) also gets ``clauses``: those of
+    :data:`CLAUSES` it contains, in their order in it."""
     text = " ".join(text.split())
     for key, pattern in table:
         m = pattern.match(text)
         if m is not None:
-            return {"key": key, "values": _values(m), "text": text}
+            out: dict[str, Any] = {"key": key, "values": _values(m), "text": text}
+            if table is NOTES:
+                found = [(c.start(), k, _values(c)) for k, p in CLAUSES if (c := p.search(text)) is not None]
+                out["clauses"] = [{"key": k, "values": v} for _, k, v in sorted(found)]
+            return out
     return {"key": None, "values": {}, "text": text}
 
 

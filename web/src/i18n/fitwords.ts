@@ -23,6 +23,9 @@ const EN: Table = {
   chi2Large: 'the fitted motion misses the data by {factor} times their given noise (chi2 = {chi2}): improbable for a right model. The model lacks something (friction, a moving pivot), the noise given is too small, or the fit is stuck (try other starting values)',
   chi2Small: 'chi2/dof = {reduced} is improbably small for {dof} degrees of freedom: the noise given is too large, and so are the error bars',
   blocksDisagree: "the record's {n} parts, each fitted on its own, disagree: {param} = {values} (the parts in time order), {scale} times their error bars apart. The model misses something that changes along the record (friction that depends on the amplitude, a drifting sensor, a hinge that is not ideal): the error bars were widened for it",
+  bandPower: '; near {hz} Hz the misses have {ratio} times the power of the rest of their spectrum (p = {p}): a pattern at a few frequencies, not random noise',
+  dampingDry: '; the damping fitted to each part grows as the swing dies down (the swing shrinks more linearly than exponentially), as dry friction makes: fit {param} as well',
+  dampingDrag: '; the damping fitted to each part falls as the swing dies down (the large swings lose more), as air drag makes: fit {param} as well',
   gFar: "the fitted g = {g} m/s² is far from any planet's (Earth: 9.81 m/s²): are the data in SI units (metres, not mm or pixels; seconds; radians)?",
   pivotFitted: 'the positions do not hang from the origin: where the pivot is was fitted too',
   timeLimit: 'the fit stopped at its time limit of {seconds} s: the values are the best reached',
@@ -96,6 +99,9 @@ const DE: Table = {
   chi2Large: 'die angepasste Bewegung verfehlt die Daten um das {factor}-Fache ihres angegebenen Rauschens (chi2 = {chi2}): für ein richtiges Modell unwahrscheinlich. Dem Modell fehlt etwas (Reibung, ein bewegter Aufhängepunkt), das angegebene Rauschen ist zu klein, oder die Anpassung hängt fest (andere Startwerte versuchen)',
   chi2Small: 'chi2/dof = {reduced} ist für {dof} Freiheitsgrade unwahrscheinlich klein: das angegebene Rauschen ist zu groß, und damit auch die Fehlerbalken',
   blocksDisagree: 'die {n} Abschnitte der Aufnahme, jeder für sich angepasst, widersprechen sich: {param} = {values} (die Abschnitte zeitlich geordnet), um das {scale}-Fache ihrer Fehlerbalken auseinander. Dem Modell fehlt etwas, das sich entlang der Aufnahme ändert (Reibung, die von der Amplitude abhängt, ein driftender Sensor, ein nicht ideales Scharnier): die Fehlerbalken wurden dafür verbreitert',
+  bandPower: '; bei {hz} Hz haben die Abweichungen das {ratio}-Fache der Leistung ihres übrigen Spektrums (p = {p}): ein Muster bei wenigen Frequenzen, kein zufälliges Rauschen',
+  dampingDry: '; die an jeden Abschnitt angepasste Dämpfung wächst, während die Schwingung abklingt (sie nimmt eher linear als exponentiell ab), wie es trockene Reibung bewirkt: {param} zusätzlich anpassen',
+  dampingDrag: '; die an jeden Abschnitt angepasste Dämpfung sinkt, während die Schwingung abklingt (die großen Schwingungen verlieren mehr), wie es Luftwiderstand bewirkt: {param} zusätzlich anpassen',
   gFar: 'das angepasste g = {g} m/s² passt zu keinem Planeten (Erde: 9,81 m/s²): sind die Daten in SI-Einheiten (Meter, nicht mm oder Pixel; Sekunden; Radiant)?',
   pivotFitted: 'die Positionen hängen nicht am Ursprung: der Ort des Aufhängepunkts wurde mit angepasst',
   timeLimit: 'die Anpassung hielt an ihrer Zeitgrenze von {seconds} s an: die Werte sind die besten erreichten',
@@ -169,6 +175,9 @@ const FR: Table = {
   chi2Large: 'le mouvement ajusté manque les données de {factor} fois leur bruit donné (chi2 = {chi2}) : improbable pour un bon modèle. Il manque quelque chose au modèle (frottement, pivot qui bouge), le bruit donné est trop petit, ou l’ajustement est bloqué (essayer d’autres valeurs de départ)',
   chi2Small: 'chi2/dof = {reduced} est improbablement petit pour {dof} degrés de liberté : le bruit donné est trop grand, et les barres d’erreur aussi',
   blocksDisagree: 'les {n} parties de l’enregistrement, ajustées chacune seule, sont en désaccord : {param} = {values} (les parties dans l’ordre du temps), écartées de {scale} fois leurs barres d’erreur. Il manque au modèle quelque chose qui change le long de l’enregistrement (un frottement qui dépend de l’amplitude, un capteur qui dérive, une charnière imparfaite) : les barres d’erreur ont été élargies en conséquence',
+  bandPower: ' ; vers {hz} Hz, les écarts ont {ratio} fois la puissance du reste de leur spectre (p = {p}) : un motif à quelques fréquences, pas un bruit aléatoire',
+  dampingDry: ' ; l’amortissement ajusté à chaque partie croît à mesure que l’oscillation s’éteint (elle décroît plus linéairement qu’exponentiellement), comme le fait un frottement sec : ajuster aussi {param}',
+  dampingDrag: ' ; l’amortissement ajusté à chaque partie diminue à mesure que l’oscillation s’éteint (les grandes oscillations perdent plus), comme le fait la résistance de l’air : ajuster aussi {param}',
   gFar: 'le g ajusté = {g} m/s² ne correspond à aucune planète (Terre : 9,81 m/s²) : les données sont-elles en unités SI (mètres, pas mm ni pixels ; secondes ; radians) ?',
   pivotFitted: 'les positions ne pendent pas de l’origine : la position du pivot a aussi été ajustée',
   timeLimit: 'l’ajustement s’est arrêté à sa limite de {seconds} s : les valeurs sont les meilleures atteintes',
@@ -268,14 +277,16 @@ function worded(name: string, value: string): string {
   return value;
 }
 
-/** A keyed line in the page's language; a line without a known key as the server's English text. */
+/** A keyed line in the page's language, followed by its keyed clauses (each table's clause words begin
+ *  with their own separator); a line without a known key as the server's English text (with its clauses). */
 export function fitLine(line: FitLine): string {
   const words = line.key === null ? undefined : look(line.key);
   if (words === undefined) return line.text ?? line.key ?? '';
-  return words.replace(/\{(\w+)\}/g, (m, name: string) => {
+  const own = words.replace(/\{(\w+)\}/g, (m, name: string) => {
     const v = line.values[name];
     return v === undefined ? m : worded(name, v);
   });
+  return own + (line.clauses ?? []).map((c) => (c.key !== null && look(c.key) !== undefined ? fitLine(c) : '')).join('');
 }
 
 /** A fitted parameter as a line: `name = value ± error unit`, or why the data do not determine it. */

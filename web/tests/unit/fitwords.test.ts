@@ -35,6 +35,21 @@ describe('fit words', () => {
     expect(fitLine({ key: null, values: {}, text: 'unkeyed' })).toBe('unkeyed');
   });
 
+  it('the clauses of a warning (the band scan, the damping law) follow its words in the language of the page', () => {
+    const band = { key: 'bandPower', values: { hz: '0.55', ratio: '5', p: '6.5e-08' } };
+    const note = { key: 'systematic', values: { kind: 'angles', rms: '0.004', ratio: '1.6', floor: '0.0025' }, clauses: [band] };
+    setLanguage('de');
+    expect(fitLine(note)).toMatch(/korreliert; bei 0\.55 Hz haben die Abweichungen das 5-Fache der Leistung ihres übrigen Spektrums \(p = 6\.5e-08\)/);
+    const law = { key: 'blocksDisagree', values: { n: '4', param: 'damping', values: '0.01, 0.012 1/s', scale: '9' }, clauses: [{ key: 'dampingDry', values: { param: 'friction' } }] };
+    setLanguage('fr');
+    expect(fitLine(law)).toMatch(/ ; l’amortissement ajusté à chaque partie croît .* frottement sec : ajuster aussi \S/);
+    expect(fitLine(law)).not.toMatch(/\{param\}/);
+    setLanguage('en');
+    expect(fitLine(law)).toMatch(/widened for it; the damping fitted to each part grows .*as dry friction makes: fit \S/);
+    // a clause the table does not know is left out (the English text has it)
+    expect(fitLine({ ...note, clauses: [{ key: 'somethingNew', values: {} }] })).not.toMatch(/somethingNew/);
+  });
+
   it('names the parameters in student words and says why one is not determined', () => {
     setLanguage('de');
     const lines = fitReportLines(
