@@ -44,7 +44,7 @@ import numpy as np
 
 from ..model import FloatArray
 from .swing_features import running_median
-from .whiteness import autocorrelations, band_scan, ljung_box, runs_z
+from .whiteness import autocorrelations, band_scan, chi2_tails, ljung_box, runs_z
 
 LJUNG_BOX_LAGS = 20
 #: p-values below this (Ljung–Box, χ²) are reported: about one false alarm in 10⁴ fits of a right model.
@@ -320,14 +320,17 @@ def misfit(checks: Mapping[str, KindCheck], chi2_p: float | None) -> bool:
     return chi2_p is not None and chi2_p < P_ALARM
 
 
+def ar1_rho(checks: Mapping[str, KindCheck]) -> float:
+    """The largest lag-1 autocorrelation of the kinds whose residual is AR(1) noise (else 0): for χ²."""
+    return max((c.lag1 for c in checks.values() if c.verdict() == "ar1_noise"), default=0.0)
+
+
 def findings(
     checks: Mapping[str, KindCheck], chi2_p: float | None, chi2: float, dof: int, robust: bool = False
 ) -> list[str]:
     """Plain-language findings: what looks wrong and what to try (empty when nothing does). With a
     ``robust`` loss the residual's size is its robust spread (1.4826 · median |r|) and outliers are
     not reported: the loss already discounts them."""
-    from scipy import stats
-
     out: list[str] = []
     for kind, c in checks.items():
         verdict = c.verdict(robust)
@@ -366,11 +369,10 @@ def findings(
             out.append(
                 f"{kind}: the residual is correlated (lag-1 autocorrelation {c.lag1:.3f}, runs test "
                 f"z = {c.runs_z:.1f}{_band(c)}) though no larger than the data's noise floor "
-                f"({c.floor:.3g}): "
-                "correlated noise (video tracking, filtering), or a small systematic effect the model "
-                "lacks (a sensor bias: fit force_bias, rate_bias or angle_offset; a damping law: fit "
-                "'friction' or 'drag' and compare, pl.compare_fits); the error bars are widened for the "
-                "correlation (and by the record's blocks where they disagree)"
+                f"({c.floor:.3g}): correlated noise (video tracking, filtering), or a small systematic "
+                "effect the model lacks (a sensor bias: fit force_bias, rate_bias or angle_offset; a damping "
+                "law: fit 'friction' or 'drag' and compare, pl.compare_fits); the error bars are widened for "
+                "the correlation (and by the record's blocks where they disagree)"
             )
         elif verdict == "above_floor":
             out.append(
@@ -390,7 +392,7 @@ def findings(
             f"right model (p = {chi2_p:.2g}): a model that lacks something (damping, drag, a moving "
             "pivot), a sigma too small, or a local minimum (try other starting values); see res.plot()"
         )
-    elif chi2_p is not None and stats.chi2.cdf(chi2, dof) < P_ALARM:
+    elif chi2_p is not None and chi2_tails(chi2, dof, ar1_rho(checks))[1] < P_ALARM:
         out.append(
             f"chi2/dof = {chi2 / dof:.3g} is improbably small for {dof} degrees of freedom: the given "
             "sigma is too large, so the error bars are too"

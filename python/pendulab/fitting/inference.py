@@ -25,12 +25,13 @@ import numpy as np
 from ..model import FloatArray
 from .blocks import check_blocks
 from .data import KINDS, residual
-from .goodness import EXACT, Goodness, check_kind, findings
+from .goodness import EXACT, Goodness, ar1_rho, check_kind, findings
 from .goodness import misfit as misfit_found
 from .identify import Correlation, Identifiability, analyse, jacobian
 from .problem import POSITIVE
 from .result import FitResult
 from .search import Search, polish
+from .whiteness import chi2_tails
 
 
 def robust_weights(loss: str, z: FloatArray) -> FloatArray:
@@ -83,11 +84,8 @@ def conclude(
     ident = _identified(search, final, (r, jac), variance, logged, checks)
     misfit = chi2  # Σ r² in units of the search's σ (the data's own floor when σ is not given)
     chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
-    chi2_p = None
-    if sigma_known:
-        from scipy import stats
-
-        chi2_p = float(stats.chi2.sf(chi2, dof))
+    # with σ given, χ² against its distribution (widened for a residual that is AR(1) noise)
+    chi2_p = chi2_tails(chi2, dof, ar1_rho(checks))[0] if sigma_known else None
     said = findings(checks, chi2_p, chi2, dof, robust=search.loss != "linear")
     # a misfit: the record's blocks fitted on their own, the error bars widened by their disagreement
     blocks = (
