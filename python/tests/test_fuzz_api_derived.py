@@ -140,3 +140,22 @@ def test_complex_or_text_states_are_refused_by_name_not_cast() -> None:
             pl.simulate_ensemble(p, starts, 0.1, progress=False)
     ok = pl.State([0.5, 0.0, -(0.75**0.5)], [0.0, 0.3, 0.0])  # lists of real numbers stay fine
     assert pl.simulate(p, ok, 0.01).x.shape[1] == 3
+
+
+def test_states_built_by_hand_from_integers_or_float32_are_float64() -> None:
+    """A State from integer or float32 arrays (or lists of integers) holds float64 arrays: simulate,
+    exact and the ensemble take it, with the numbers of the same state made by Pendulum.state (the
+    one-file lab audit: integer arrays reached the core as a TypeError about 'PyArray<T, D>')."""
+    p = pl.Pendulum()
+    made = p.state([0.0, 0.0, -1.0], [1.0, 0.0, 0.0])
+    reference = pl.simulate(p, made, 0.5).x
+    for x, v in [
+        (np.array([0, 0, -1]), np.array([1, 0, 0])),
+        ([0, 0, -1], [1, 0, 0]),
+        (np.array([0, 0, -1], np.float32), np.array([1, 0, 0], np.uint8)),
+    ]:
+        s = pl.State(x, v)
+        assert s.x.dtype == np.float64 and s.v.dtype == np.float64 and not s.x.flags.writeable
+        assert np.array_equal(pl.simulate(p, s, 0.5).x, reference)
+        assert np.array_equal(pl.exact(p, s).state(0.5).x, pl.exact(p, made).state(0.5).x)
+        assert np.array_equal(pl.simulate_ensemble(p, [s], 0.5, progress=False).final_x[0], reference[-1])

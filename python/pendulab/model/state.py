@@ -68,6 +68,19 @@ class State:
     v: FloatArray
     projection: tuple[float, float] | None = field(default=None, compare=False)
 
+    def __post_init__(self) -> None:
+        # a State built by hand from integers, float32 or lists holds float64 arrays like one from
+        # Pendulum.state (integer arrays reached the core as 'PyArray<T, D>' TypeErrors); anything
+        # else (complex, text, a wrong shape) is kept as given and refused by name where it is used
+        for name in ("x", "v"):
+            given = getattr(self, name)
+            try:
+                a = np.asarray(given)
+            except (TypeError, ValueError):  # ragged
+                continue
+            if a.dtype.kind in "fiu" and not (isinstance(given, np.ndarray) and a.dtype == np.float64):
+                object.__setattr__(self, name, _frozen(a))
+
     def angles(self) -> tuple[float, float]:
         """Polar angle θ from the downward vertical and azimuth φ = atan2(y, x) [rad]."""
         rho = float(np.hypot(self.x[0], self.x[1]))
