@@ -25,12 +25,13 @@ scores g_i = Σ_rows of sample i J_rowᵀ r_row, Bartlett weights w_L = 1 − L/
 S = 1.1447 (α n)^{1/3}, α = 4ρ²/((1−ρ)²(1+ρ)²) of Andrews (1991, Econometrica 59:817) for AR(1)
 residuals. For strongly correlated residuals (ρ₁ ≥ PREWHITEN) the Bartlett sum is biased low (by
 ≈ 2Σ k ρ^k/((S+1) Σ ρ^|k|), 10 % of the variance at ρ = 0.8): Ω is then also formed after
-prewhitening the scores by their AR(1) fit, Ω_kl = Ω*_kl/((1 − a_k)(1 − a_l)) with Ω* the
-Newey–West Ω of e_i = g_i − a ∘ g_{i−1}, a_k = Σ g_ik g_{i−1,k}/Σ g_{i−1,k}² clipped to [0, 0.95]
-(Andrews & Monahan 1992, Econometrica 60:953, with a diagonal AR(1) so that no matrix inverse can
-blow up), and the larger of the two variances is used. Each parameter's error bar is the larger of
-the classical and the sandwich one (the classical covariance scaled by D = diag(max(1, √(C_sandwich,ii
-/ C_ii))), so it stays positive definite); for white residuals the two agree.
+prewhitening the scores by an AR(1) fit, Ω = Ω*/(1 − a)² with Ω* the Newey–West Ω of
+e_i = g_i − a g_{i−1}, a the median over the unknowns k of a_k = Σ g_ik g_{i−1,k}/Σ g_{i−1,k}²,
+clipped to [0, 0.95] (Andrews & Monahan 1992, Econometrica 60:953, a scalar AR(1): no inverse to
+blow up; each score's own 1 − a_k broke the cancellations of nearly degenerate parameters, whose a_k
+differ by hundredths, and left their bars 5x too wide); the larger variance is used. Each error bar
+is the larger of the classical and the sandwich one (the classical covariance scaled by
+D = diag(max(1, √(C_sandwich,ii / C_ii))): positive definite); for white residuals the two agree.
 Units: SI, those of each data kind.
 """
 
@@ -258,16 +259,15 @@ def newey_west(g: FloatArray, lags: int) -> FloatArray:
 
 
 def prewhitened_newey_west(g: FloatArray, n: int) -> FloatArray:
-    """Ω of the scores ``g`` (n, k) after prewhitening each by its own AR(1) fit (module doc)."""
+    """Ω of the scores ``g`` (n, k) after prewhitening them by one AR(1) coefficient (module doc)."""
     lagged, now = g[:-1], g[1:]
     denom = np.sum(lagged * lagged, axis=0)
     with np.errstate(invalid="ignore", divide="ignore"):
         a = np.where(denom > 0.0, np.sum(now * lagged, axis=0) / denom, 0.0)
-    a = np.clip(a, 0.0, MAX_SCORE_AR)
-    e = now - a * lagged
+    common = float(np.clip(np.median(a), 0.0, MAX_SCORE_AR))
+    e = now - common * lagged
     rho_e = float(np.mean([autocorrelations(e[:, k], 1)[0] for k in range(e.shape[1])]))
-    recolour = np.outer(1.0 - a, 1.0 - a)
-    return newey_west(e, andrews_bandwidth(rho_e, n)) * (n / (n - 1.0)) / recolour
+    return newey_west(e, andrews_bandwidth(rho_e, n)) * (n / (n - 1.0)) / (1.0 - common) ** 2
 
 
 def inflation(
