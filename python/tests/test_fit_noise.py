@@ -60,25 +60,35 @@ def test_the_running_median_keeps_a_monotone_start_and_removes_a_spike() -> None
 
 def test_further_starts_are_skipped_only_at_the_noise_floor() -> None:
     """estimator.at_noise_floor: a result whose χ²/dof (in units of the search's σ, the k anchor
-    residuals left out) is at most FLOOR_CHI2 ends the search; one above it, a failed one, or a robust
-    loss's does not."""
+    residuals left out) is at most FLOOR_CHI2 over a record of at least FLOOR_PERIODS of its
+    small-swing periods 2π√(l/|g|) ends the search; one above it, over a shorter record, a failed one,
+    or a robust loss's does not."""
     from types import SimpleNamespace
 
-    from pendulab.fitting.estimator import FLOOR_CHI2, at_noise_floor
+    from pendulab.fitting.multistart import FLOOR_CHI2, FLOOR_PERIODS, at_noise_floor
 
     n, k = 1000, 3
     dof = n - k
+    period = 2 * np.pi * np.sqrt(1.0 / 9.81)  # l = 1 m, g = 9.81 m/s²
 
-    def search(chi2: float, success: bool = True, loss: str = "linear") -> SimpleNamespace:
+    def search(
+        chi2: float, success: bool = True, loss: str = "linear", span: float = 10.0
+    ) -> SimpleNamespace:
         fun = np.zeros(n + k)  # n data residuals and k anchor residuals
-        result = SimpleNamespace(success=success, cost=0.5 * chi2, fun=fun)
-        return SimpleNamespace(result=result, free=["a", "b", "c"], loss=loss)
+        result = SimpleNamespace(success=success, cost=0.5 * chi2, fun=fun, x=np.zeros(k))
+        problem = SimpleNamespace(
+            with_free=lambda x: {"length": 1.0, "g": 9.81, "damping": 0.0},
+            obs=SimpleNamespace(t=np.linspace(2.0, 2.0 + span, n)),
+        )
+        return SimpleNamespace(result=result, free=["a", "b", "c"], loss=loss, problem=problem)
 
     assert at_noise_floor(search(FLOOR_CHI2 * dof))
     assert not at_noise_floor(search(1.01 * FLOOR_CHI2 * dof))
     assert not at_noise_floor(search(0.5 * dof, success=False))
     assert not at_noise_floor(search(0.5 * dof, loss="soft_l1"))
     assert not at_noise_floor(SimpleNamespace(result=None, free=["a"], loss="linear"))
+    assert at_noise_floor(search(0.5 * dof, span=1.001 * FLOOR_PERIODS * period))
+    assert not at_noise_floor(search(0.5 * dof, span=0.999 * FLOOR_PERIODS * period))
 
 
 def test_outliers_are_isolated_values_not_a_smooth_run_of_a_misfit() -> None:

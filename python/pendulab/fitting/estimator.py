@@ -41,6 +41,7 @@ from .inference import conclude, robust_weights
 from .multistart import (
     DISSIPATION,
     FLOOR_CHI2,
+    FLOOR_PERIODS,
     at_noise_floor,
     nested_start,
     run_starts,
@@ -64,6 +65,7 @@ from .start import signed_start, starting_values
 __all__ = [
     "DISSIPATION",
     "FLOOR_CHI2",
+    "FLOOR_PERIODS",
     "at_noise_floor",
     "conclude",
     "fit",

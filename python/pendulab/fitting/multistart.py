@@ -115,16 +115,30 @@ def _reweigh(search: Search, robust: str) -> None:
 #: further start could only find an optimum that the data cannot tell from it.
 FLOOR_CHI2 = 1.5
 
+#: ... and when the record spans at least this many small-swing periods 2π√(l/|g|) of the best
+#: result: over less (a third of a swing, bench/fit_validate.py case 20) optima that explain the data
+#: equally well lie far apart, and stopping at the first one reported its length and g with confident
+#: bars although the data do not determine them.
+FLOOR_PERIODS = 1.0
+
 
 def at_noise_floor(search: Search) -> bool:
     """Whether the best result so far explains the data to their noise (χ²/dof ≤ FLOOR_CHI2 in units
-    of the search's σ; the anchor's k residuals are left out)."""
+    of the search's σ; the anchor's k residuals are left out) over a record of at least FLOOR_PERIODS
+    of its periods."""
     res = search.result
     if res is None or not res.success or search.loss != "linear":
         return False
     k = len(search.free)
     dof = max(int(res.fun.size) - 2 * k, 1)  # res.fun holds the data's residuals and the k anchors
-    return bool(2.0 * float(res.cost) <= FLOOR_CHI2 * dof)
+    if not 2.0 * float(res.cost) <= FLOOR_CHI2 * dof:
+        return False
+    values = search.problem.with_free(res.x)
+    length, g = values.get("length", math.nan), values.get("g", math.nan)
+    if not (length > 0.0 and g != 0.0 and math.isfinite(length) and math.isfinite(g)):
+        return True
+    t = search.problem.obs.t
+    return bool(float(t[-1] - t[0]) >= FLOOR_PERIODS * 2.0 * math.pi * math.sqrt(length / abs(g)))
 
 
 def nested_start(
