@@ -71,12 +71,41 @@ def test_grid_command_writes_every_case(tmp_path: Path) -> None:
         str(out),
     )
     assert code == 0, err
-    rows = [line.split(",") for line in out.read_text().splitlines()[1:]]
+    rows = [line.split(",") for line in out.read_text().splitlines()[2:]]
     assert len(rows) == 8 and {r[0] for r in rows} == {"unshaped", "zvd"}
     res = crane.residual_grid([6.0, 10.0], [2.0, 8.0], [None], settle=5.0)
     np.testing.assert_allclose([float(r[3]) for r in rows[:4]], res.sway[0].ravel(), rtol=1e-12)
     assert "8 runs in" in text
     assert_user_error(*invoke("crane", "grid", "--ropes", "5:1:3"), "--ropes")
+
+
+def test_crane_grid_csv_has_the_metadata_line_of_every_pendulab_csv(tmp_path: Path) -> None:
+    """``pendulab crane grid --out`` starts like every Pendulab CSV: ``# pendulab crane grid; metadata
+    (JSON): …`` (the command's settings, the design ω, each shaper's impulses, units), then the names
+    with units; NumPy reads it as a trajectory's (skiprows=2 for the numbers, skip_header=1 with names)."""
+    import json
+
+    out = tmp_path / "grid.csv"
+    args = ("--ropes", "6:10:2", "--ratios", "2:8:2", "--shapers", "none,zv", "--settle", "5")
+    code, _, err = invoke("crane", "grid", *args, "--hook-mass", "50", "--out", str(out))
+    assert code == 0, err
+    first, names = out.read_text().splitlines()[:2]
+    assert first.startswith("# pendulab crane grid; metadata (JSON): {")
+    meta = json.loads(first.split("metadata (JSON): ", 1)[1])
+    settings = meta["settings"]
+    assert (settings["ropes"], settings["ratios"], settings["shapers"]) == ("6:10:2", "2:8:2", ["none", "zv"])
+    assert settings["hook_mass"] == 50.0 and settings["settle"] == 5.0 and settings["design_rope"] == 8.0
+    # designed for the middle rope and the median ratio (2 and 8: 5)
+    probe = crane.Crane(rope=8.0, payload_mass=50.0 * 5.0, hook_mass=50.0, rigging=2.0, g=9.81)
+    assert meta["design_omega"] == pytest.approx(float(probe.modes()[0]), rel=1e-12)
+    zv = crane.shaper("zv", omega=meta["design_omega"])
+    assert meta["shapers"]["zv"] == {"times": zv.times.tolist(), "amplitudes": [0.5, 0.5]}
+    assert meta["cases"] == 8 and meta["units"]["sway"] == "m" and meta["units"]["settle"] == "s"
+    assert names == "shaper,rope [m],ratio,sway [m]"
+    table = np.genfromtxt(out, delimiter=",", skip_header=1, names=True, dtype=None, encoding="utf-8")
+    assert list(table["shaper"]) == ["unshaped"] * 4 + ["zv"] * 4 and list(table["rope_m"][:2]) == [6.0, 6.0]
+    rows = np.loadtxt(out, delimiter=",", skiprows=2, usecols=(1, 2, 3))
+    assert rows.shape == (8, 3) and np.array_equal(rows[:, 2], table["sway_m"])
 
 
 def test_crane_run_csv_reads_back_bit_for_bit(tmp_path: Path) -> None:
@@ -101,7 +130,7 @@ def test_crane_run_csv_reads_back_bit_for_bit(tmp_path: Path) -> None:
     grid = tmp_path / "grid.csv"
     args = ("--ropes", "6:10:2", "--ratios", "2:8:2", "--shapers", "none", "--settle", "5")
     assert invoke("crane", "grid", *args, "--out", str(grid))[0] == 0
-    rows = [line.split(",") for line in grid.read_text().splitlines()[1:]]
+    rows = [line.split(",") for line in grid.read_text().splitlines()[2:]]
     res = crane.residual_grid([6.0, 10.0], [2.0, 8.0], [None], settle=5.0)
     assert [r[1] for r in rows] == ["6", "6", "10", "10"]
     assert np.array_equal([float(r[3]) for r in rows], res.sway[0].ravel())

@@ -8,6 +8,7 @@ rad/s, kg); exit code 0 on success, 2 on a user error (one ``error: …`` line),
 
 from __future__ import annotations
 
+import json
 import math
 from pathlib import Path
 from typing import Annotated, Any
@@ -286,15 +287,10 @@ def grid_cmd(
         for i, label in enumerate(res.labels):
             _say(f"{label:>9}: median {np.median(res.sway[i]):.4g} m, largest {res.sway[i].max():.4g} m")
         if out is not None:
-            from ..io import atomic_path, csv_number
-
-            with atomic_path(out) as tmp, open(tmp, "w", encoding="utf-8") as f:
-                f.write("shaper,rope [m],ratio,sway [m]\n")
-                for i, label in enumerate(res.labels):
-                    for j, rope in enumerate(res.ropes):
-                        for k, ratio in enumerate(res.ratios):
-                            numbers = (csv_number(x) for x in (rope, ratio, res.sway[i, j, k]))
-                            f.write(",".join((label, *numbers)) + "\n")
+            settings = {"ropes": ropes, "ratios": ratios, "shapers": kinds, "design_rope": design}
+            settings |= {"distance": distance, "v_max": v_max, "a_max": a_max, "j_max": j_max}
+            settings |= {"hook_mass": hook_mass, "rigging": rigging, "g": g, "settle": settle}
+            _write_grid_csv(out, res, settings, w, [s for s in shs if s is not None])
             _say(f"wrote {out}")
         if plot is not None:
             from ..crane.plot import plot_grid
@@ -302,3 +298,52 @@ def grid_cmd(
 
             save_figure(plot_grid(res), plot)
             _say(f"wrote {plot}")
+
+
+GRID_UNITS = {
+    "rope": "m",
+    "ratio": "1",
+    "sway": "m",
+    "ropes": "m",
+    "design_rope": "m",
+    "distance": "m",
+    "v_max": "m/s",
+    "a_max": "m/s^2",
+    "j_max": "m/s^3",
+    "hook_mass": "kg",
+    "rigging": "m",
+    "g": "m/s^2",
+    "settle": "s",
+    "design_omega": "rad/s",
+    "shapers.times": "s",
+}
+
+
+def _write_grid_csv(out: Path, res: Any, settings: dict[str, Any], omega: float, shapers: list[Any]) -> None:
+    """The grid as CSV: the ``#`` metadata line of every Pendulab CSV (``# pendulab crane grid; metadata
+    (JSON): {...}``: the command's settings, ``ropes`` linear and ``ratios`` geometric START:STOP:N, the
+    design ω [rad/s], each shaper's impulses, units), the header ``shaper,rope [m],ratio,sway [m]`` and
+    one row per case; numbers as :func:`pendulab.io.csv_number` writes them."""
+    from ..io import atomic_path, csv_number
+
+    impulses = {s.kind: {"times": s.times.tolist(), "amplitudes": s.amplitudes.tolist()} for s in shapers}
+    meta = {
+        "software": "pendulab",
+        "settings": settings,
+        "design_omega": omega,
+        "shapers": impulses,
+        "cases": int(res.sway.size),
+        "interrupted": bool(res.interrupted),
+        "sway": "the payload's largest horizontal distance from the pivot over settle s after the move",
+        "ratio": "payload mass / hook mass",
+        "units": GRID_UNITS,
+        "conventions": "SI units, z up, gravity along -z for g > 0",
+    }
+    with atomic_path(out) as tmp, open(tmp, "w", encoding="utf-8", newline="") as f:
+        f.write(f"# pendulab crane grid; metadata (JSON): {json.dumps(meta, sort_keys=True)}\n")
+        f.write("shaper,rope [m],ratio,sway [m]\n")
+        for i, label in enumerate(res.labels):
+            for j, rope in enumerate(res.ropes):
+                for k, ratio in enumerate(res.ratios):
+                    numbers = (csv_number(x) for x in (rope, ratio, res.sway[i, j, k]))
+                    f.write(",".join((label, *numbers)) + "\n")
