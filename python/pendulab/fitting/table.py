@@ -133,6 +133,8 @@ def parse_table_notes(
     text = text.removeprefix("\ufeff")  # Excel's "CSV UTF-8" and Windows editors write a BOM
     if "\r" in text and "\n" not in text:  # Excel for Mac's "CSV (Macintosh)": CR line ends
         text = text.replace("\r", "\n")
+    if columns is None:
+        _refuse_crane_csv(text, where)
     layout = find_layout(text, where)
     names = columns if columns is not None else _vernier_names(layout) or layout.header
     if names is None:
@@ -164,6 +166,53 @@ def parse_table_notes(
     col = {kinds[j]: data[:, k] for k, j in enumerate(use)}
     notes = _notes(layout, columns is not None)
     return _kinds(col, kinds, layout, columns is not None, where, notes), notes
+
+
+CRANE_GRID_HEADER = "shaper,rope [m],ratio,sway [m]"
+"""The header of ``pendulab crane grid --out`` (below its ``# pendulab crane grid`` line)."""
+MAKES_FITTABLE = "pendulab run SCENARIO.toml --out FILE.csv"
+"""The command whose CSV ``pendulab fit`` reads, named when a file of another Pendulab command is refused."""
+
+
+def _refuse_crane_csv(text: str, where: str) -> None:
+    """Refuses the CSV of ``pendulab crane run`` or ``crane grid`` (known by its ``# pendulab crane …``
+    line, or by its header in files written before the crane grid had that line), naming its columns,
+    what a fit needs and the command that writes a fittable file. A crane's payload hangs below a hook
+    from a trolley that moves, on a rope that may be hoisted, in wind: not the fixed-pivot pendulum the
+    fit's models describe, and its absolute payload x, y, z are not a bob's position about a pivot."""
+    lines = (line.strip() for line in text[:MAX_HEADER_PEEK].split("\n"))
+    first = next((line for line in lines if line), "")
+    header = first if not first.startswith("#") else next((line for line in lines if line), "")
+    names = [n.strip() for n in header.split(",")]
+    bare = {n.split(" [")[0] for n in names}
+    needs = "t and x, y, z (or x, z; x, y seen from above; theta, phi; angle) of a bob about a fixed pivot"
+    makes = f"as {MAKES_FITTABLE} writes (a pendulum's t, x, y, z)"
+    if first.startswith("# pendulab crane grid") or header == CRANE_GRID_HEADER:
+        raise KeyedInputError(
+            f"{where}: a crane grid (pendulab crane grid --out): one row per case with the columns "
+            f"{_names(names)}, no time series; a fit needs {needs}, {makes}",
+            "data_crane_grid",
+            file=where,
+            columns=_names(names),
+            command=MAKES_FITTABLE,
+        )
+    if first.startswith("# pendulab crane run") or {"t", "pivot_x", "payload_x"} <= bare:
+        raise KeyedInputError(
+            f"{where}: a crane run (pendulab crane run --out) with the columns {_names(names)}: its payload "
+            "hangs from a moving trolley (pivot_x, pivot_y, pivot_z), maybe below a hook and on a hoisted "
+            f"rope, which none of the fit's models (a fixed pivot) describes; a fit needs {needs}, "
+            f"{makes}. For a crane's sway after the move, write t and the payload's offset from "
+            "the pivot (payload_x - pivot_x, payload_y - pivot_y) as t,x,y (seen from above)",
+            "data_crane_run",
+            file=where,
+            columns=_names(names),
+            command=MAKES_FITTABLE,
+        )
+
+
+MAX_HEADER_PEEK = 1 << 20
+"""Characters of a file looked at for the first lines of a Pendulab crane CSV (its metadata line
+is a few kB)."""
 
 
 def _vernier_names(layout: Layout) -> list[str] | None:

@@ -47,6 +47,8 @@ export const DE_REFUSALS: RefusalsWords = {
   'server.data_unknown_columns': '{file}: unbekannte Spaltenname(n) {unknown}; erlaubt sind {allowed}',
   'server.data_components': '{file}: {kind} braucht alle drei Komponenten {parts}; gefunden nur {found}',
   'server.data_positions_alone': '{file}: die Positionsspalte(n) {have} allein; Positionen sind x, y, z oder x, z (Kamera von der Seite) oder x, y (von oben gesehen)',
+  'server.data_crane_run': '{file}: ein Kranlauf (pendulab crane run --out) mit den Spalten {columns}: seine Last hängt an einer fahrenden Laufkatze, vielleicht unter einem Haken und an einem gehievten Seil, was keines der Modelle der Anpassung (ein fester Aufhängepunkt) beschreibt. Eine Anpassung braucht t, x, y, z eines Pendels, wie {command} sie schreibt; für das Pendeln eines Krans nach der Fahrt t und den Abstand der Last vom Aufhängepunkt (payload_x - pivot_x, payload_y - pivot_y) als t,x,y schreiben',
+  'server.data_crane_grid': '{file}: ein Krangitter (pendulab crane grid --out) mit den Spalten {columns}: eine Zeile je Fall, keine Zeitreihe zum Anpassen. Eine Anpassung braucht t, x, y, z eines Pendels, wie {command} sie schreibt',
   'server.data_no_columns': '{file}: keine Datenspalten unter {columns}: sie t, x, y, z, theta, phi oder angle nennen (docs/fit.md)',
   'server.data_too_few': 'nur {have} brauchbare Messwerte: eine Anpassung braucht mindestens {need}',
   'server.data_time_twice': 'die Zeit t = {t} s kommt zweimal vor: jeder Messwert braucht seine eigene Zeit',

@@ -46,6 +46,8 @@ export const EN_REFUSALS = {
   'server.data_unknown_columns': '{file}: unknown column name(s) {unknown}; use {allowed}',
   'server.data_components': '{file}: {kind} needs all three components {parts}; found only {found}',
   'server.data_positions_alone': '{file}: the position column(s) {have} alone; positions are x, y, z, or x, z (a camera from the side), or x, y (seen from above)',
+  'server.data_crane_run': '{file}: a crane run (pendulab crane run --out) with the columns {columns}: its payload hangs from a moving trolley, maybe below a hook and on a hoisted rope, which none of the fit\'s models (a fixed pivot) describes. A fit needs a pendulum\'s t, x, y, z as {command} writes them; for a crane\'s sway after the move, write t and the payload\'s offset from the pivot (payload_x - pivot_x, payload_y - pivot_y) as t,x,y',
+  'server.data_crane_grid': '{file}: a crane grid (pendulab crane grid --out) with the columns {columns}: one row per case, no time series to fit. A fit needs a pendulum\'s t, x, y, z as {command} writes them',
   'server.data_no_columns': '{file}: no data columns among {columns}: name them t, x, y, z, theta, phi or angle (docs/fit.md)',
   'server.data_too_few': 'only {have} usable samples: a fit needs at least {need}',
   'server.data_time_twice': 'the time t = {t} s appears twice: every sample needs its own time',

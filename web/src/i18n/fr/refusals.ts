@@ -47,6 +47,8 @@ export const FR_REFUSALS: RefusalsWords = {
   'server.data_unknown_columns': '{file} : nom(s) de colonne inconnu(s) {unknown} ; utiliser {allowed}',
   'server.data_components': '{file} : {kind} demande les trois composantes {parts} ; trouvé seulement {found}',
   'server.data_positions_alone': '{file} : la ou les colonnes de position {have} seules ; les positions sont x, y, z, ou x, z (une caméra de côté), ou x, y (vu d’en haut)',
+  'server.data_crane_run': '{file} : une course de grue (pendulab crane run --out) avec les colonnes {columns} : sa charge pend d’un chariot qui se déplace, peut-être sous un crochet et à un câble hissé, ce qu’aucun modèle de l’ajustement (un point de suspension fixe) ne décrit. Un ajustement demande t, x, y, z d’un pendule, tels que {command} les écrit ; pour le balancement d’une grue après le déplacement, écrire t et l’écart de la charge au point de suspension (payload_x - pivot_x, payload_y - pivot_y) en t,x,y',
+  'server.data_crane_grid': '{file} : une grille de grue (pendulab crane grid --out) avec les colonnes {columns} : une ligne par cas, aucune série temporelle à ajuster. Un ajustement demande t, x, y, z d’un pendule, tels que {command} les écrit',
   'server.data_no_columns': '{file} : aucune colonne de données parmi {columns} : les nommer t, x, y, z, theta, phi ou angle (docs/fit.md)',
   'server.data_too_few': 'seulement {have} mesures utilisables : un ajustement en demande au moins {need}',
   'server.data_time_twice': 'l’instant t = {t} s apparaît deux fois : chaque mesure a besoin de son propre instant',
