@@ -22,7 +22,7 @@ $(VENV)/.deps: python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(PY) -m pip install --quiet --upgrade pip
 	$(PY) -m pip install --quiet "maturin>=1.7,<2" "numpy>=1.26" "typer>=0.29" "tqdm>=4.66" "pydantic>=2.6" \
-		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "sympy>=1.12" "scipy>=1.11" "threadpoolctl>=3.1" "pyarrow>=15" "xarray>=2024.1" "zarr>=2.18" "matplotlib>=3.8" \
+		"pytest>=8" "ruff>=0.5" "mpmath>=1.3" "sympy>=1.12" "scipy>=1.11" "threadpoolctl>=3.1" "pyarrow>=15" "xarray>=2024.1" "pandas>=2" "zarr>=2.18" "matplotlib>=3.8" \
 		"fastapi>=0.115" "uvicorn>=0.30" "websockets>=13" "orjson>=3.10" "qrcode>=8" "httpx>=0.27" "httpx2>=2" "dask[distributed]>=2024.1" \
 		"imageio-ffmpeg>=0.5" "pillow>=10.1" "nbclient>=0.10" "nbformat>=5.10" "ipykernel>=6.29" \
 		"ziglang>=0.13" "auditwheel>=6" \
