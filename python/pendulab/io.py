@@ -1,8 +1,9 @@
 """Writing trajectories to disk: CSV, Parquet and NetCDF, chosen by the file suffix.
 
 Every file carries units and the run's parameters in its metadata (CSV: ``#`` header lines;
-Parquet: schema metadata; NetCDF: attributes). Files are written atomically: to a temporary file
-in the same directory, then renamed over the target, so a crash never leaves a half-written file.
+Parquet: schema metadata; NetCDF: attributes); :func:`read_metadata` reads them back. Files are
+written atomically: to a temporary file in the same directory, then renamed over the target, so a
+crash never leaves a half-written file.
 """
 
 from __future__ import annotations
@@ -214,3 +215,68 @@ def save(tr: Tabular, path: str | os.PathLike[str]) -> Path:
     """Writes ``tr`` to ``path`` in the format its suffix names; returns the path."""
     WRITERS[format_of(path)](tr, path)
     return Path(path)
+
+
+_CSV_MARK = "metadata (JSON): "
+_CSV_LINE_MAX = 1 << 22  # characters of a CSV's first line read [about 4 MB]
+
+
+def read_metadata(path: str | os.PathLike[str]) -> dict[str, Any]:
+    """The metadata a Pendulab file carries (parameters, ``method``, ``options``, ``stats``, units), from
+    a CSV's ``# pendulab <kind>; metadata (JSON): {...}`` line, a Parquet file's schema metadata or a
+    NetCDF file's ``pendulab`` attribute; a clear error for a file without it.
+
+    An adaptive run's ``options`` (``dop853``) hold ``rtol`` and ``atol`` and, when one was given, the
+    ``first_step`` [s], never a ``dt``; files of Pendulab 0.1.0 wrote ``"dt": 0.0`` for a first step
+    chosen automatically (``"dt": h`` for a given one), read here as the current files say it."""
+    from ._core import InvalidInputError
+
+    fmt = format_of(path)
+    where = os.fspath(path)
+    if fmt == "csv":
+        with open(path, encoding="utf-8-sig") as f:
+            first = f.readline(_CSV_LINE_MAX)
+        if not (first.startswith("# pendulab ") and _CSV_MARK in first):
+            mark = f"# pendulab <kind>; {_CSV_MARK}{{...}}"
+            raise InvalidInputError(f"{where}: no Pendulab metadata: the first line is not {mark!r}")
+        raw: str | bytes = first.split(_CSV_MARK, 1)[1]
+    elif fmt == "parquet":
+        _require("pyarrow")
+        import pyarrow.parquet as pq
+
+        raw = (pq.read_schema(path).metadata or {}).get(b"pendulab", b"")
+    else:
+        _require("xarray")
+        _require("scipy")
+        import xarray as xr
+
+        with xr.open_dataset(path, engine="scipy") as ds:
+            raw = str(ds.attrs.get("pendulab", ""))
+    try:
+        meta = json.loads(raw)
+    except ValueError:
+        meta = None
+    if not isinstance(meta, dict):
+        raise InvalidInputError(f"{where}: no Pendulab metadata (JSON) in this {fmt} file")
+    return upgraded(meta)
+
+
+def upgraded(meta: dict[str, Any]) -> dict[str, Any]:
+    """``meta`` (a file's metadata) with the ``options`` of an adaptive run of Pendulab 0.1.0 as current
+    files write them: ``"dt": 0.0`` (a first step chosen automatically) dropped, ``"dt": h`` > 0 (a
+    given first step) as ``"first_step": h``. Other metadata is returned as it is."""
+    options = meta.get("options")
+    if not (isinstance(options, dict) and "dt" in options and _adaptive(meta.get("method"))):
+        return meta
+    options = dict(options)
+    first = options.pop("dt")
+    if isinstance(first, int | float) and first > 0:
+        options.setdefault("first_step", first)
+    return meta | {"options": options}
+
+
+def _adaptive(method: object) -> bool:
+    """True for the name of a method that chooses its own steps (``dop853``)."""
+    from ._core import methods
+
+    return any(m["name"] == method and m["adaptive"] for m in methods())

@@ -358,11 +358,12 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
     t = np.concatenate([p[0] for p in parts])
     x = np.concatenate([p[1] for p in parts])
     v = np.concatenate([p[2] for p in parts])
-    meta = {"dt": dt, "t0": t0, "t_end": t_end}
+    meta: dict[str, Any] = {"dt": dt, "t0": t0, "t_end": t_end}
     if run.arithmetic != "unfused":
         meta["arithmetic"] = run.arithmetic
-    if info["adaptive"]:
-        meta |= {"rtol": run.rtol, "atol": run.atol, "project": run.project}
+    if info["adaptive"]:  # no step size: its tolerances, a given first step (0.1.0 wrote "dt": 0.0)
+        meta |= {"rtol": run.rtol, "atol": run.atol, "project": run.project, "first_step": meta.pop("dt")}
+        meta = {k: v for k, v in meta.items() if k != "first_step" or dt > 0}
     if save_every is not None:
         meta["save_every"] = int(save_every)
     if times is not None:

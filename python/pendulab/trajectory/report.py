@@ -63,7 +63,8 @@ def method_line(tr: Any) -> str:
     parts = []
     if adaptive:
         parts.append(f"adaptive steps, rtol = {o.pop('rtol', float('nan')):g}, atol = {o.pop('atol', 0.0):g}")
-        first = o.pop("dt", 0.0)
+        first = o.pop("first_step", 0.0)
+        first = o.pop("dt", 0.0) or first  # options of 0.1.0: "dt" 0.0 (automatic) or the first step
         if first:
             parts.append(f"first step {first:g} s")
         if "project" in o:

@@ -36,6 +36,11 @@ if TYPE_CHECKING:
 class Trajectory:
     """Samples of one run. ``interrupted`` is True when the run was stopped (Ctrl-C) before t_end.
 
+    ``options``: how it ran, as its files' metadata carry it: a fixed-step method's ``dt`` [s]; an
+    adaptive method's (``dop853``) ``rtol``, ``atol`` and ``project``, and ``first_step`` [s] when one
+    was given (no ``dt``: it chooses its steps); ``t0``, ``t_end`` [s] and how samples were kept.
+    ``stats``: the core's counters (``steps``, for DOP853 also ``rejected`` and ``rhs_evals``).
+
     The string model (``model="string"``) also has ``taut`` (N,) bool — the string is taut at the
     sample — and ``events``: a dict of arrays ``t`` [s], ``kind`` ("slack": the tension reached 0;
     "taut": the string snapped taut), ``x`` [m], ``v_before``, ``v_after`` [m/s], ``energy_lost`` [J].
