@@ -351,7 +351,9 @@ export class LabStore {
       model: s?.model ?? null,
       model_params: s?.model_params ?? null,
       method: s?.method ?? null,
-      dt: s?.dt ?? null,
+      // an adaptive method (dop853) chooses its own steps: the lab's dt setting is none of them
+      adaptive: s?.adaptive ?? null,
+      dt: s === null || s.adaptive ? null : s.dt,
       truncated: this.trajectoryTruncated,
     };
     const header = CSV_COLUMNS.join(',');

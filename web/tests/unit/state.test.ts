@@ -234,6 +234,14 @@ describe('LabStore', () => {
     const row = (lines[3] as string).split(',').map(Number);
     const [c, s] = [Math.cos(0.5), Math.sin(0.5)];
     expect(row).toEqual([0.5, c, s, 0, -s, c, 0, -9.81, 1, 1, 0, -c, -s, 0, 0, 0, 0, 1, 0]);
+    expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ adaptive: false, dt: 0.001 });
+  });
+
+  it('writes no dt for an adaptive method, which chooses its own steps', () => {
+    store.onStatus(status({ method: 'dop853', adaptive: true, dt: 0.001 }));
+    store.onFrames([frame(0), frame(0.5)]);
+    const meta = JSON.parse((store.toCSV().split('\n')[0] as string).slice(2));
+    expect(meta).toMatchObject({ method: 'dop853', adaptive: true, dt: null });
   });
 
   it('notifies subscribers and keeps the last errors', () => {
