@@ -258,10 +258,10 @@ def read_metadata(path: str | os.PathLike[str]) -> dict[str, Any]:
         meta = None
     if not isinstance(meta, dict):
         raise InvalidInputError(f"{where}: no Pendulab metadata (JSON) in this {fmt} file")
-    return upgraded(meta)
+    return _upgraded(meta)
 
 
-def upgraded(meta: dict[str, Any]) -> dict[str, Any]:
+def _upgraded(meta: dict[str, Any]) -> dict[str, Any]:
     """``meta`` (a file's metadata) with the ``options`` of an adaptive run of Pendulab 0.1.0 as current
     files write them: ``"dt": 0.0`` (a first step chosen automatically) dropped, ``"dt": h`` > 0 (a
     given first step) as ``"first_step": h``. Other metadata is returned as it is."""
