@@ -119,7 +119,9 @@ def serve(
     max_sessions_per_client: Annotated[
         int,
         typer.Option(
-            min=1, max=10_000, help="Most pages one device (address) may hold open; one more is refused."
+            min=1,
+            max=10_000,
+            help="Most pages one device (address; an IPv6 address's /64) may hold open; one more is refused.",
         ),
     ] = 8,
     max_connections_per_client: Annotated[
@@ -127,8 +129,8 @@ def serve(
         typer.Option(
             min=1,
             max=100_000,
-            help="Most TCP connections one device (address) may hold open (its pages' WebSockets and "
-            "requests); more are reset. Raise it for a class behind one NAT address.",
+            help="Most TCP connections one device (address; an IPv6 address's /64) may hold open (its "
+            "pages' WebSockets and requests); more are reset. Raise it for a class behind one NAT address.",
         ),
     ] = 24,
     max_computations_per_client: Annotated[

@@ -15,10 +15,11 @@ bodies only and capped, slow clients timed out.
 - :class:`TimedH11Protocol`: uvicorn's HTTP/1.1 protocol with a deadline for the request *headers*
   (:data:`HEADER_TIMEOUT`): a connection that opens and sends its headers slowly or never
   (slowloris) is closed. uvicorn itself times out only idle keep-alive connections. One client
-  (address) may hold at most :data:`~pendulab.server.room.MAX_CONNECTIONS_PER_CLIENT` connections;
-  more are cut (reset) as soon as they are accepted, before uvicorn sets up anything for them and
-  without writing an answer, so one client's idle sockets cannot fill the server's connection limit
-  for everyone, and one reconnecting in a tight loop costs the server an accept and a close each time.
+  (address, an IPv6 one's /64: :func:`~pendulab.server.room.address_key`) may hold at most
+  :data:`~pendulab.server.room.MAX_CONNECTIONS_PER_CLIENT` connections; more are cut (reset) as soon
+  as they are accepted, before uvicorn sets up anything for them and without writing an answer, so
+  one client's idle sockets cannot fill the server's connection limit for everyone, and one
+  reconnecting in a tight loop costs the server an accept and a close each time.
   Nothing more is read from a connection whose request has arrived whole until its answer is sent
   (:class:`PipelineFlow`): a client pipelining requests cannot make the server hold what it sends.
 - :class:`LabWebSocketProtocol`: uvicorn's WebSocket protocol with at most :data:`MAX_WS_BUFFER` bytes
@@ -48,7 +49,7 @@ from uvicorn.protocols.http.flow_control import FlowControl
 from uvicorn.protocols.http.h11_impl import H11Protocol
 from uvicorn.protocols.websockets.websockets_sansio_impl import WebSocketsSansIOProtocol
 
-from .room import MAX_CONNECTIONS_PER_CLIENT
+from .room import MAX_CONNECTIONS_PER_CLIENT, address_key
 
 MAX_BODY_BYTES = 64 * 1024
 """Largest request body [bytes] (the lab's requests are a few hundred bytes)."""
@@ -198,9 +199,11 @@ async def _answer(scope: Scope, receive: Receive, send: Send, status: int, messa
     await response(scope, receive, send)
 
 
-def _open_from(connections: Iterable[Any], host: str) -> int:
-    """The open connections (HTTP and WebSocket protocols of uvicorn's server state) from ``host``."""
-    return sum(1 for c in connections if (getattr(c, "client", None) or ("",))[0] == host)
+def _open_from(connections: Iterable[Any], key: str) -> int:
+    """The open connections (HTTP and WebSocket protocols of uvicorn's server state) of the client
+    ``key`` (:func:`~pendulab.server.room.address_key`)."""
+    hosts = ((getattr(c, "client", None) or (None,))[0] for c in connections)
+    return sum(1 for host in hosts if host is not None and address_key(str(host)) == key)
 
 
 class LabWebSocketProtocol(WebSocketsSansIOProtocol):
@@ -302,7 +305,7 @@ class TimedH11Protocol(H11Protocol):
     def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
         self._header_timer: asyncio.TimerHandle | None = None
         peer = transport.get_extra_info("peername")
-        if peer and _open_from(self.connections, str(peer[0])) >= self.max_per_client:
+        if peer and _open_from(self.connections, address_key(str(peer[0]))) >= self.max_per_client:
             self.refused = True  # one client holding the server's connections (idle-socket churn):
             transport.abort()  # cut before uvicorn sets anything up, nothing written (module doc)
             return

@@ -1,7 +1,8 @@
 """Fairness per client and per room (docs/web.md, "Security": "a pupil in the room").
 
 A *client* is the address a connection comes from (a pupil's device; in classroom mode every pupil
-carries the same token, so the token cannot tell them apart). :class:`Room` keeps, per client:
+carries the same token, so the token cannot tell them apart), an IPv6 address by its /64 network
+(:func:`address_key`). :class:`Room` keeps, per client:
 
 - its open lab sessions: at most ``per_client`` (:data:`MAX_SESSIONS_PER_CLIENT`); one more is refused
   with an error notice, as the server-wide ``max_sessions`` is;
@@ -25,6 +26,8 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import functools
+import ipaddress
 import time
 from collections.abc import AsyncIterator, Mapping
 from typing import Any
@@ -54,11 +57,36 @@ quarter of two cores' time, the rest left for the sessions' frames, sending them
 requests (one tick of the whole room must fit in 16.7 ms, :mod:`.ticker`)."""
 
 
+IPV6_PREFIX = 64
+"""Leading bits of an IPv6 address that name one client. A /64 is the least a network hands out (a
+home's or a LAN's subnet, a host's own routed /64); inside it a device takes as many addresses as it
+likes (SLAAC privacy addresses, or any it assigns itself), so keyed by the whole address one device
+would be as many clients as it has addresses, around every cap per client."""
+
+
+@functools.lru_cache(maxsize=4096)
+def address_key(host: str) -> str:
+    """The client an address belongs to, the key of the caps per client: an IPv4 address itself; an
+    IPv6 address its /64 network (``2001:db8:1:2::/64``, :data:`IPV6_PREFIX`; a zone index such as
+    ``%eth0`` dropped); an IPv4-mapped IPv6 address (``::ffff:192.0.2.7``, how a socket bound to ``::``
+    sees an IPv4 client) the IPv4 address. Anything that is no IP address (a Unix socket, a test
+    client's name) is its own key."""
+    try:
+        ip = ipaddress.ip_address(host.split("%", 1)[0])
+    except ValueError:
+        return host
+    if isinstance(ip, ipaddress.IPv6Address):
+        if ip.ipv4_mapped is not None:
+            return str(ip.ipv4_mapped)
+        return str(ipaddress.IPv6Network((ip, IPV6_PREFIX), strict=False))
+    return str(ip)
+
+
 def client_key(scope: Mapping[str, Any]) -> str:
-    """The client a request or WebSocket comes from: its address (``"?"`` when the server does not
-    know it)."""
+    """The client a request or WebSocket comes from: its address's :func:`address_key` (``"?"`` when
+    the server does not know it)."""
     client = scope.get("client")
-    return str(client[0]) if client else "?"
+    return address_key(str(client[0])) if client else "?"
 
 
 class Room:

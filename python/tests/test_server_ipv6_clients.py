@@ -1,0 +1,134 @@
+"""IPv6 clients and the caps per client (docs/web.md, "A pupil in the room"): one device may take any
+number of addresses in its /64 (SLAAC privacy addresses, or any it assigns itself), so the caps key an
+IPv6 client by its /64 network (``pendulab.server.room.address_key``); keyed by the whole address, as
+before, each new address was a new client with its own 8 sessions, 24 connections and 2 computations.
+An IPv4 client is its address, whether it comes as itself or IPv4-mapped (``::ffff:a.b.c.d``, through a
+socket bound to ``::``). The attack is made with addresses of the documentation prefix 2001:db8::/32
+given to the application (the test machine routes none of them): many addresses of one /64 share one
+client's caps; two /64s are two clients."""
+
+from __future__ import annotations
+
+import asyncio
+from typing import Any
+
+import pytest
+from uvicorn.server import ServerState
+from ws_session import LabClient, receive
+
+from pendulab.server import create_app
+from pendulab.server.room import address_key, client_key
+from pendulab.server.serving import server_config
+
+ONE_64 = ["2001:db8:1:2::a", "2001:db8:1:2::b", "2001:db8:1:2:ffff:ffff:ffff:ffff", "2001:db8:1:2:0:5efe:1:2"]
+OTHER_64 = "2001:db8:1:3::a"
+
+
+@pytest.mark.parametrize(
+    ("host", "key"),
+    [
+        ("192.0.2.7", "192.0.2.7"),
+        ("::ffff:192.0.2.7", "192.0.2.7"),  # IPv4-mapped: the IPv4 client
+        ("2001:db8:1:2::a", "2001:db8:1:2::/64"),
+        ("2001:DB8:1:2:abcd:ef01:2345:6789", "2001:db8:1:2::/64"),
+        ("fe80::1%eth0", "fe80::/64"),  # link-local, its zone index dropped
+        ("::1", "::/64"),
+        ("testclient", "testclient"),  # no IP address: its own key
+    ],
+)
+def test_the_key_of_an_address(host: str, key: str) -> None:
+    assert address_key(host) == key
+    assert client_key({"client": (host, 50000)}) == key
+
+
+def test_ipv4_clients_are_their_addresses() -> None:
+    assert address_key("192.0.2.7") != address_key("192.0.2.8")
+    assert address_key("10.1.2.3") != address_key("10.1.2.4")
+
+
+def _lab(host: str, app: Any) -> LabClient:
+    return LabClient(app, client=(host, 50000))
+
+
+def test_many_addresses_of_one_64_share_one_clients_sessions() -> None:
+    """Two sessions per client: the third, from a third address of the same /64, is refused with
+    ``device_full``; one from another /64 is served meanwhile."""
+    app = create_app("rosette", max_sessions_per_client=2)
+    a, b, c = (_lab(h, app) for h in ONE_64[:3])
+    with a.websocket_connect("/ws") as wa, b.websocket_connect("/ws") as wb:
+        assert receive(wa)[1]["type"] == "status" and receive(wb)[1]["type"] == "status"
+        with c.websocket_connect("/ws") as wc:
+            notice = receive(wc)[1]
+            assert notice["type"] == "error" and notice["key"] == "device_full", notice
+        with _lab(OTHER_64, app).websocket_connect("/ws") as other:
+            assert receive(other)[1]["type"] == "status"
+
+
+def test_an_ipv4_client_mapped_or_not_is_one_client() -> None:
+    app = create_app("rosette", max_sessions_per_client=1)
+    with _lab("192.0.2.7", app).websocket_connect("/ws") as plain:
+        assert receive(plain)[1]["type"] == "status"
+        with _lab("::ffff:192.0.2.7", app).websocket_connect("/ws") as mapped:
+            assert receive(mapped)[1]["key"] == "device_full"
+        with _lab("192.0.2.8", app).websocket_connect("/ws") as neighbour:
+            assert receive(neighbour)[1]["type"] == "status"
+
+
+def test_many_addresses_of_one_64_share_one_clients_computations() -> None:
+    app = create_app("rosette", max_computations_per_client=1)
+    app.state.room.requests[client_key({"client": (ONE_64[0], 1)})] = 1  # one under way
+    for host in ONE_64[1:]:
+        r = _lab(host, app).post("/api/exact", json={"theta": 1.0})
+        assert r.status_code == 429 and r.json()["key"] == "device_busy", host
+    assert _lab(OTHER_64, app).post("/api/exact", json={"theta": 1.0}).status_code == 200
+
+
+class _Transport(asyncio.Transport):
+    """An accepted connection from ``host``: only whether it was cut is kept."""
+
+    def __init__(self, host: str) -> None:
+        super().__init__()
+        self.host = host
+        self.cut = False
+
+    def get_extra_info(self, name: str, default: Any = None) -> Any:
+        peer, local = (self.host, 50000, 0, 0), ("::", 8000, 0, 0)  # an AF_INET6 socket's names
+        sock = type("Socket", (), {"getpeername": lambda _: peer, "getsockname": lambda _: local})()
+        return {"peername": peer, "sockname": local, "socket": sock}.get(name, default)
+
+    def is_closing(self) -> bool:
+        return self.cut
+
+    def abort(self) -> None:
+        self.cut = True
+
+    def close(self) -> None:
+        self.cut = True
+
+    def set_protocol(self, protocol: Any) -> None:
+        pass
+
+    def get_protocol(self) -> Any:
+        return None
+
+
+def test_many_addresses_of_one_64_share_one_clients_connections() -> None:
+    """The lab's HTTP protocol (``server_config``'s, at most 3 connections per client) accepting
+    connections as uvicorn does: the fourth from the /64, from a new address, is cut as soon as it is
+    accepted; another /64 (and an IPv4 client) still gets in."""
+
+    async def run() -> list[bool]:
+        config = server_config(create_app("rosette"), "::", 8000, max_connections_per_client=3)
+        config.load()
+        state = ServerState()
+        cut = []
+        for host in [*ONE_64, OTHER_64, "::ffff:192.0.2.7"]:
+            protocol = config.http_protocol_class(config=config, server_state=state, app_state={})
+            transport = _Transport(host)
+            protocol.connection_made(transport)
+            cut.append(transport.cut)
+        for c in list(state.connections):
+            c._disarm()  # no header timer left behind
+        return cut
+
+    assert asyncio.run(run()) == [False, False, False, True, False, False]
