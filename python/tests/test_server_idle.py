@@ -165,8 +165,10 @@ def test_the_idle_timeout_is_a_setting_of_the_server_and_of_pendulab_serve(
     assert (config.ws_ping_interval, config.ws_ping_timeout) == (WS_PING_INTERVAL, None)
     short = server_config(create_app("rosette"), "127.0.0.1", 8000, idle_timeout=10.0)
     assert short.ws_ping_interval == 5.0  # two pings at least within the timeout
-    with pytest.raises(ValueError, match="idle timeout"):
-        server_config(create_app("rosette"), "127.0.0.1", 8000, idle_timeout=0.0)
+    for bad in (0.0, -1.0, float("nan"), float("inf")):  # inf: its ceil(inf / interval) raised at each ping
+        finite = f"idle timeout must be a finite number of seconds > 0, got {bad}"
+        with pytest.raises(ValueError, match=finite):
+            server_config(create_app("rosette"), "127.0.0.1", 8000, idle_timeout=bad)
     ran = _serve_configs(monkeypatch)
     args = ["serve", "--no-browser", "--port", str(_free_port()), "--idle-timeout", "300"]
     result = CliRunner().invoke(cli, args)
@@ -221,3 +223,59 @@ def test_an_idle_client_that_reads_nothing_is_cut_and_its_session_ends() -> None
         return server.disconnected, bool(ended)
 
     assert asyncio.run(run()) == (True, True)
+
+
+async def _accepted(config: Config) -> tuple[Any, ClientProtocol, _Transport]:
+    """A WebSocket of ``config`` (loaded) accepted by ``_quiet_app``: the server's protocol, the
+    sans-I/O client after the handshake and the transport between them."""
+    server = config.ws_protocol_class(  # type: ignore[misc]
+        config=config, server_state=ServerState(), app_state={}, _loop=asyncio.get_running_loop()
+    )
+    transport = _Transport()
+    server.connection_made(transport)
+    client = ClientProtocol(parse_uri("ws://127.0.0.1:8000/ws"))
+    client.send_request(client.connect())
+    server.data_received(b"".join(client.data_to_send()))
+    for _ in range(50):  # the app accepts
+        await asyncio.sleep(0)
+    assert server.handshake_complete
+    client.receive_data(bytes(transport.out))
+    transport.out.clear()
+    return server, client, transport
+
+
+@pytest.mark.parametrize("idle_timeout", [0.05, 1.0, 10.0, 60.0, 3600.0, 86_400.0])
+def test_the_idle_check_runs_at_the_keepalive_pings_which_server_config_always_turns_on(
+    idle_timeout: float,
+) -> None:
+    """The idle check is the protocol's ``send_keepalive_ping``, which uvicorn's keepalive timer calls,
+    and uvicorn arms that timer only when ``ws_ping_interval`` is a number > 0. With the lab's
+    configuration (``server_config``) the timer is armed when the handshake completes, for at most
+    half the idle timeout, whatever the timeout; with uvicorn's pings turned off it is not, and a
+    silent client is never closed. For the shortest timeout the timer is let run: the silent client
+    gets the close (1001) in real time, from nothing but the configuration's own timer."""
+
+    async def run(pings_on: bool) -> tuple[float | None, int | None]:
+        config = server_config(_quiet_app, "127.0.0.1", 8000, idle_timeout=idle_timeout)
+        if not pings_on:
+            config.ws_ping_interval = None  # what the idle check must not be left with
+        config.load()
+        server, client, transport = await _accepted(config)
+        timer = server.ping_timer
+        armed = None if timer is None else timer.when() - asyncio.get_running_loop().time()
+        if idle_timeout < 1.0:  # 0.05 s: pings every 0.025 s, the close after 2 silent intervals
+            for _ in range(400):
+                await asyncio.sleep(0.005)
+                if transport.closed:
+                    break
+        client.receive_data(bytes(transport.out))
+        code = client.close_rcvd.code if client.close_rcvd is not None else None
+        server.connection_lost(None)
+        return armed, code
+
+    armed, code = asyncio.run(run(pings_on=True))
+    assert armed is not None, "server_config left uvicorn's keepalive pings off: nothing checks idleness"
+    assert 0.0 < armed <= idle_timeout / 2 + 1e-3
+    if idle_timeout < 1.0:
+        assert code == 1001
+    assert asyncio.run(run(pings_on=False)) == (None, None)  # pings off: never checked, never closed

@@ -11,6 +11,7 @@ within that budget.
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import uvicorn
@@ -44,11 +45,19 @@ def server_config(
     """The uvicorn configuration of the lab: ``app`` on ``host``:``port`` with the limits of the module
     doc; at most ``max_sessions`` + 64 connections at once (the pages' WebSockets and their requests;
     beyond that uvicorn answers 503), at most ``max_connections_per_client`` of one client (address;
-    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`); a WebSocket from which nothing
-    (no command, ping or pong) arrives for ``idle_timeout`` seconds is closed (code 1001): the server pings
-    every :data:`~.hygiene.WS_PING_INTERVAL` seconds (at most half the idle timeout) and a browser answers
-    by itself, so an open page is kept (:class:`~.hygiene.LabWebSocketProtocol`). uvicorn's own pong
-    deadline is off: the idle timeout is the one rule.
+    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`; an IPv6 client is its /64,
+    :func:`~.room.address_key`); a WebSocket from which nothing (no command, ping or pong) arrives for
+    ``idle_timeout`` seconds (a finite number > 0, else ``ValueError``) is closed (code 1001): the server
+    pings every :data:`~.hygiene.WS_PING_INTERVAL` seconds (at most half the idle timeout) and a browser
+    answers by itself, so an open page is kept (:class:`~.hygiene.LabWebSocketProtocol`). uvicorn's own
+    pong deadline is off: the idle timeout is the one rule.
+
+    The idle check runs only at uvicorn's keepalive pings: it is
+    :meth:`~.hygiene.LabWebSocketProtocol.send_keepalive_ping`, which uvicorn's timer calls every
+    ``ws_ping_interval`` seconds, and uvicorn starts that timer only when ``ws_ping_interval`` is a
+    number > 0. This configuration therefore always turns the pings on (``ws_ping_interval`` is never
+    None or 0, whatever ``idle_timeout``); a configuration with them off would never close an idle
+    client (tests: ``python/tests/test_server_idle.py``).
 
     The client is the address a connection comes from. uvicorn would by default believe the
     ``X-Forwarded-For`` and ``X-Forwarded-Proto`` headers of connections from 127.0.0.1, so any program
@@ -60,8 +69,8 @@ def server_config(
         (TimedH11Protocol,),
         {"header_timeout": float(header_timeout), "max_per_client": int(max_connections_per_client)},
     )
-    if not idle_timeout > 0:
-        raise ValueError(f"the idle timeout must be > 0 s, got {idle_timeout}")
+    if not (idle_timeout > 0 and math.isfinite(idle_timeout)):  # inf: no whole number of pings
+        raise ValueError(f"the idle timeout must be a finite number of seconds > 0, got {idle_timeout}")
     websocket = type("LabWebSocket", (LabWebSocketProtocol,), {"idle_timeout": float(idle_timeout)})
     return uvicorn.Config(
         app,
@@ -70,7 +79,7 @@ def server_config(
         log_level=log_level,
         http=protocol,
         ws=websocket,
-        ws_ping_interval=min(WS_PING_INTERVAL, idle_timeout / 2),
+        ws_ping_interval=min(WS_PING_INTERVAL, idle_timeout / 2),  # never off: the idle check runs at pings
         ws_ping_timeout=None,  # the idle timeout closes a client that stopped answering (module doc)
         ws_max_size=WS_MAX_BYTES,
         ws_per_message_deflate=False,  # frames are float64: deflate saved little and took ~10 % of the loop
