@@ -23,6 +23,7 @@ from pendulab.sweeps import compute as sweep_compute
 from pendulab.sweeps import run as sweep_mod
 from pendulab.sweeps.compute import RAN, ChunkTask
 from pendulab.sweeps.design import as_design
+from pendulab.sweeps.workers import check_workers
 
 GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0])}
 QS = ["final_state", "energy_drift"]
@@ -132,3 +133,125 @@ def test_this_pendulab_echoes_what_it_ran(tmp_path: Path) -> None:
     assert RAN not in sw.units and RAN not in pl.read_sweep(tmp_path / "sw").units
     drop_chunk(tmp_path / "sw", 1)  # the check runs on a resume's chunks too
     assert pl.sweep(GRID, QS, out=tmp_path / "sw", resume=True, **KW).stats["computed"] == 1
+
+
+# --- before any chunk: every Dask worker asked what it would run ----------------------------------------
+
+
+def _age(client: Any, kind: str) -> None:
+    """Makes the pendulab of every worker of ``client`` (in its own process) one of an older kind:
+    "silent" — from before the echo: no ``compute.ran`` (so it cannot unpickle the question) and chunks
+    integrated with RATTLE whatever the sweep names, without an echo; "no_method" — it echoes, but does
+    not know sweeps' ``method``; "current" — this pendulab again. Each worker counts the chunks it
+    computes from here on (``compute.computed``)."""
+
+    def age(kind: str) -> None:
+        import types
+        from dataclasses import replace
+
+        from pendulab.sweeps import compute
+
+        if not hasattr(compute, "real"):
+            compute.real = dict(vars(compute))  # type: ignore[attr-defined]  # the module as it is
+        real = compute.real  # type: ignore[attr-defined]
+        compute.computed = 0  # type: ignore[attr-defined]
+        counted = types.FunctionType(real["compute_chunk"].__code__, real, "counted", (None,))
+
+        def chunk(task: Any, cancel: Any = None) -> Any:
+            compute.computed += 1  # type: ignore[attr-defined]
+            if kind != "silent":
+                return counted(task, cancel)
+            cols = counted(replace(task, spec=replace(task.spec, method=None)), cancel)
+            del cols[real["RAN"]]
+            return cols
+
+        def ran_without_method(spec: Any) -> dict[str, Any]:
+            echo = real["ran"](replace(spec, method=None))
+            return echo | {"honours": [h for h in echo["honours"] if h != "method"]}
+
+        compute.compute_chunk = chunk
+        compute.ran = {"no_method": ran_without_method}.get(kind, real["ran"])
+        if kind == "silent":
+            del compute.ran
+
+    client.run(age, kind)
+
+
+@pytest.fixture(scope="module")
+def cluster() -> Any:
+    """A real LocalCluster of two worker processes and a client on it (left as this pendulab)."""
+    distributed = pytest.importorskip("distributed")
+    with (
+        distributed.LocalCluster(
+            n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None, silence_logs=40
+        ) as local,
+        distributed.Client(local) as client,
+    ):
+        try:
+            yield client
+        finally:
+            _age(client, "current")
+
+
+def _computed(client: Any) -> int:
+    def count() -> int:
+        from pendulab.sweeps import compute
+
+        return int(getattr(compute, "computed", 0))
+
+    return sum(client.run(count).values())
+
+
+def test_an_old_dask_worker_is_refused_before_any_chunk_is_computed(tmp_path: Path, cluster: Any) -> None:
+    """Real worker processes whose pendulab predates the echo: every worker is asked what it would run
+    before the first chunk is sent, and the sweep is refused naming a worker, how many others, what
+    it lacks and the fix, with no chunk computed on any worker (before, each chunk was computed in full
+    and then refused by its missing echo) and none written. The same for workers that echo but do not
+    know ``method``. Exact quantities integrate nothing: such workers compute them."""
+    out = tmp_path / "sw"
+    _age(cluster, "silent")
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.sweep(GRID, QS, method="rattle6", scheduler=cluster, out=out, **KW)
+    text = str(e.value)
+    assert re.match(
+        r"the Dask worker tcp://\S+ \(and 1 other of the cluster's 2\) cannot say what it would run "
+        r"\(AttributeError\W.*'ran'.*\): its pendulab is older than this client's \(or missing\), and such "
+        r"a worker cannot honour the settings it predates — from before sweeps' method it integrates "
+        r"plain RATTLE whatever the sweep names \(here 'rattle6'\)",
+        text,
+    ), text
+    assert f"; nothing was computed. {UPGRADE}" in text, text
+    assert _computed(cluster) == 0 and not list(out.glob("chunk-*.parquet"))
+    exact = pl.sweep(GRID, "rotation_number", scheduler=cluster, chunk_size=4, progress=False)
+    assert _computed(cluster) == 4 and same(exact, pl.sweep(GRID, "rotation_number", progress=False))
+
+    _age(cluster, "no_method")
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.sweep(GRID, QS, method="rattle8", scheduler=cluster, **KW)
+    assert re.match(
+        r"the Dask worker tcp://\S+ \(and 1 other of the cluster's 2\) runs a pendulab older than this "
+        r"client's: it cannot honour the sweep's setting method \(it ignores it\); nothing was computed",
+        str(e.value),
+    ), str(e.value)
+    assert _computed(cluster) == 0
+
+    _age(cluster, "current")
+    assert same(pl.sweep(GRID, QS, scheduler=cluster, **KW), pl.sweep(GRID, QS, **KW))
+    assert _computed(cluster) == 4
+
+
+def test_a_dask_worker_that_would_run_another_method_is_named() -> None:
+    """The answers of a cluster of which one worker runs another pendulab (rattle4 for the sweep's
+    rattle6): refused naming that worker and both settings; all answering this pendulab's: accepted."""
+    spec = sweep_compute.make_spec(
+        as_design(GRID), QS, t_end=0.2, dt=1e-2, arithmetic="fused", method="rattle6"
+    )
+    mine, other = sweep_compute.ran(spec), sweep_compute.ran(replace(spec, method="rattle4"))
+    check_workers({"tcp://10.0.0.1:1": mine, "tcp://10.0.0.2:1": mine}, spec)
+    with pytest.raises(pl.InvalidInputError) as e:
+        check_workers({"tcp://10.0.0.1:1": mine, "tcp://10.0.0.2:1": other}, spec)
+    assert str(e.value).startswith(
+        "the Dask worker tcp://10.0.0.2:1 would compute with method 'rattle4', arithmetic 'fused', "
+        "arithmetic_version 1, not the sweep's method 'rattle6', arithmetic 'fused', arithmetic_version 1: "
+        f"it runs another pendulab than this client; nothing was computed. {UPGRADE}"
+    ), str(e.value)

@@ -82,6 +82,11 @@ class Dask:
         self.slots = 2 * nthreads
         self.run = uuid.uuid4().hex[:8]
 
+    def ask(self, fn: Callable[..., Any], *args: Any) -> dict[str, Any]:
+        """``fn(*args)`` on every worker of the cluster now: worker address → what it returned, or the
+        exception it raised (also the one of a worker that cannot unpickle ``fn``)."""
+        return dict(self.client.run(fn, *args, on_error="return"))
+
     def submit(self, fn: Callable[..., Any], task: Any) -> Any:
         return self.client.submit(
             fn, task, key=f"pendulab-sweep-{self.run}-{task.index}", pure=False, retries=1

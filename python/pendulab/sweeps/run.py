@@ -52,11 +52,12 @@ from .compute import (
     compute_chunk,
     fingerprint,
     make_spec,
+    ran,
 )
 from .design import AXES, as_design
 from .results import MemorySink, OutputDir, SweepResult
 from .resume import resume_settings
-from .workers import check_ran
+from .workers import check_ran, check_workers
 
 BACKENDS = ("threads", "dask")
 
@@ -219,6 +220,12 @@ def sweep(
     if todo:
         threads = backend == "threads"
         runner = Threads(workers or os.cpu_count() or 1) if threads else Dask(scheduler, workers)
+        if isinstance(runner, Dask) and spec.simulated:
+            try:  # every worker runs this pendulab's settings, before any chunk is computed
+                check_workers(runner.ask(ran, spec), spec)
+            except BaseException:
+                runner.close()
+                raise
     stats["backend"] = runner.name if runner is not None else backend
 
     def task(i: int) -> ChunkTask:
