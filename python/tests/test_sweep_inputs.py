@@ -146,6 +146,10 @@ def test_settle_time_over_damping_and_start() -> None:
         (lambda: pl.sweep([1.0, 2.0], "period"), ["got list"]),
         (lambda: pl.sweep_design.random(0, {"theta0": (0, 1)}), ["n = 0"]),
         (lambda: pl.sweep_design.random(5, {"theta0": (1, 0)}), ["lo = 1.0 must be <= hi = 0.0"]),
+        (  # refused before anything is drawn (was a MemoryError, or the process killed for ~2e9 points)
+            lambda: pl.sweep_design.random(2**40, {"theta0": (0, 1)}),
+            ["a random design of 1099511627776 points needs about 3.28e+04 GiB of memory", "draw fewer"],
+        ),
         (lambda: pl.sweep_design.points({"theta0": [1, 2], "g": [1.0]}), ["equal lengths"]),
     ],
 )
@@ -197,6 +201,10 @@ def test_bad_outputs_and_sizes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) 
         ('quantity = "period"\n[grid]\nthet0 = [1.0]', ["[grid] unknown axis 'thet0'"]),
         ('quantity = "period"\n[pendulum]\nlength = -1\n[grid]\ntheta0 = [1.0]', ["pendulum.length = -1"]),
         ('quantity = "period"\n[random]\nn = 3\nranges = {g = [2, 1]}', ["[random] range of 'g'"]),
+        (  # pl.sweep takes at most 1e9 points: refused as the file is read, before any point is drawn
+            'quantity = "period"\n[random]\nn = 2_000_000_000\nranges = {theta0 = [0, 1]}',
+            ["random.n = 2000000000: must be less than or equal to 1000000000"],
+        ),
         ('quantity = "period"\n[grid\n', ["invalid TOML"]),
     ],
 )

@@ -123,6 +123,49 @@ def test_one_point_beyond_the_work_bound(tmp_path: Path) -> None:
     assert f"{path}: [simulation] {one}" in str(f.value), str(f.value)
 
 
+@pytest.mark.parametrize(
+    ("design", "method", "work", "fixes"),
+    [
+        (
+            "[grid]\ntheta0 = { start = 0.1, stop = 1.0, num = 1000 }\n"
+            "phi_dot0 = { start = -1, stop = 1, num = 1000 }",
+            "rattle",
+            "2e10 RATTLE steps (1000000 points × t_end/dt = 20.0 s / 0.001 s = 2e4 steps)",
+            "lower t_end, raise dt or use fewer points ([grid])",
+        ),
+        (
+            "[random]\nn = 200_000\nranges = { theta0 = [0.1, 1.0] }",
+            "rattle4",
+            "1.2e10 RATTLE steps (200000 points × t_end/dt = 20.0 s / 0.001 s = 2e4 steps × 3 RATTLE "
+            "sub-steps per step of rattle4)",
+            "lower t_end, raise dt, use fewer points ([random] n) or use a method of fewer sub-steps",
+        ),
+    ],
+)
+def test_a_sweep_file_beyond_the_work_bound_is_refused_when_read(
+    tmp_path: Path, design: str, method: str, work: str, fixes: str
+) -> None:
+    """Each point within the bound, the whole sweep (points × steps × sub-steps) beyond it: refused as
+    the file is read, before any work, with pl.sweep's message (the product, each factor, the limit)
+    and the fix naming the file's table; so is ``pendulab sweep``, which creates nothing. Before, only
+    one point's steps were checked there."""
+    path = tmp_path / "big.toml"
+    path.write_text(
+        f'quantity = "final_state"\n{design}\n[simulation]\nt_end = 20.0\ndt = 1e-3\nmethod = "{method}"\n'
+    )
+    with pytest.raises(SweepFileError) as e:
+        load_sweep_file(path)
+    assert str(e.value) == f"{path}: the run would take {work}, more than the limit of 1e10: {fixes}"
+    if method == "rattle":  # the message pl.sweep gives for the same sweep
+        grid = {"theta0": np.linspace(0.1, 1.0, 1000), "phi_dot0": np.linspace(-1, 1, 1000)}
+        with pytest.raises(pl.InvalidInputError) as same_sweep:
+            pl.sweep(grid, "final_state", t_end=20.0, dt=1e-3)
+        assert str(same_sweep.value) == str(e.value)[len(f"{path}: ") :].replace(" ([grid])", "")
+    code, out, err = invoke("sweep", str(path), "--out", str(tmp_path / "o"))
+    assert_user_error(code, out, err, "more than the limit of 1e10")
+    assert not (tmp_path / "o").exists()
+
+
 def test_resume_with_another_method_is_refused(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """A sweep recorded with rattle6, interrupted: resuming it with rattle or rattle4 is refused
     before any work (ResumeConflict naming both and the fix); with rattle6 it finishes bit for bit.

@@ -37,6 +37,7 @@ import numpy as np
 
 from .. import validate as limits
 from .._core import InvalidInputError
+from ..memory import check_memory
 from ..model import FloatArray
 
 if TYPE_CHECKING:
@@ -198,7 +199,9 @@ def random(
 ) -> Design:
     """``n`` points with each axis in its range [lo, hi] (unit of the axis): independent uniform draws
     (``method="uniform"``) or a Latin hypercube (``"lhs"``), from ``np.random.default_rng(seed)``.
-    The same arguments give the same points on every machine."""
+    The same arguments give the same points on every machine. A design whose points would not fit in
+    the memory this process can still get is refused before any is drawn
+    (:func:`pendulab.memory.check_memory`)."""
     if isinstance(n, bool) or not isinstance(n, int | np.integer) or not 1 <= n <= MAX_POINTS:
         raise _bad(f"n = {limits.show(n)} must be an integer number of points >= 1")
     if method not in RANDOM_METHODS:
@@ -223,6 +226,8 @@ def random(
                 f"hi = {limits.show(hi)} ({AXES[name]})"
             )
         bounds[name] = (lo, hi)
+    # its columns, one draw and (lhs) one permutation at once: refused before anything is drawn
+    check_memory(f"a random design of {int(n)} points", 8.0 * int(n) * (len(bounds) + 3), "draw fewer points")
     rng = np.random.default_rng(int(seed))
     values: dict[str, FloatArray] = {}
     for name, (lo, hi) in bounds.items():

@@ -53,10 +53,11 @@ from ..scenario.schema import (
     _show,  # a value as it looks in TOML, as scenario errors show it
     printable,
 )
-from ..validate import parse_toml, read_file_capped
+from ..validate import MAX_SAMPLES, parse_toml, read_file_capped
 from . import design as sweep_design
 from .compute import QUANTITIES, make_spec
 from .design import Design
+from .run import check_work
 
 MAX_AXIS_VALUES = 10_000_000
 
@@ -78,7 +79,7 @@ class PendulumTable(_Strict):
 
 
 class RandomTable(_Strict):
-    n: int = Field(ge=1, le=sweep_design.MAX_POINTS, description="number of points, >= 1")
+    n: int = Field(ge=1, le=MAX_SAMPLES, description="number of points, >= 1")  # as pl.sweep takes
     seed: int = Field(0, ge=0, description="seed of NumPy's default_rng, >= 0")
     method: Literal["uniform", "lhs"] = Field("uniform", description='"uniform" or "lhs"')
     ranges: dict[str, tuple[float, float]] = Field(description="axis = [lo, hi] in the axis's unit")
@@ -272,7 +273,7 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
         raise SweepFileError(source, f"[pendulum] {e}") from None
     sim = spec.simulation
     try:
-        make_spec(
+        sweep_spec = make_spec(
             design,
             spec.quantity,
             pendulum,
@@ -288,6 +289,12 @@ def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepF
         if text.startswith(("t_end", "dt", "invalid arithmetic", "method", "one point would take")):
             text = f"[simulation] {text}"
         raise SweepFileError(source, text) from None
+    points = "[grid]" if spec.grid is not None else "[random] n"
+    try:
+        check_work(design, sweep_spec)  # the whole sweep's work, as pl.sweep checks it
+    except InvalidInputError as e:
+        text = str(e).replace("use fewer points", f"use fewer points ({points})")
+        raise SweepFileError(source, text.replace("design = ", f"{points}: ", 1)) from None
     return SweepFile(spec, design, pendulum, source)
 
 

@@ -54,7 +54,7 @@ from .compute import (
     make_spec,
     ran,
 )
-from .design import AXES, as_design
+from .design import AXES, Design, as_design
 from .results import MemorySink, OutputDir, SweepResult
 from .resume import resume_settings
 from .workers import check_ran, check_workers
@@ -84,6 +84,18 @@ def default_chunk_size(spec: SweepSpec) -> int:
     per = TARGET_CHUNK_WORK / max(spec.steps * spec.substeps, 1)
     block = _core.ENSEMBLE_LANES
     return int(min(max(block * round(per / block), block), 100_000 // block * block))
+
+
+def check_work(design: Design, spec: SweepSpec) -> None:
+    """Refuses, before any work, a sweep of more than ``MAX_SAMPLES`` points, or one whose RATTLE steps
+    in all — points × t_end/dt × RATTLE sub-steps per step of its method — exceed ``MAX_STEPS``
+    (:func:`pendulab.validate.planned_work`: the message names that product, each factor, the limit
+    and the fixes); ``make_spec`` checks one point's. ``pl.sweep`` and a sweep file's loading both
+    check it."""
+    if design.n > limits.MAX_SAMPLES:
+        raise limits.invalid("design", f"<{design.n} points>", f"at most {limits.MAX_SAMPLES:.0e} points")
+    if spec.t_end is not None and spec.dt is not None:
+        limits.planned_work(spec.t_end, spec.dt, design.n, "point", spec.method or "rattle", spec.substeps)
 
 
 def _positive_int(name: str, value: Any, most: int) -> int:
@@ -197,10 +209,7 @@ def sweep(
     t0 = time.perf_counter()
     d = as_design(design)
     spec = make_spec(d, quantity, pendulum, fixed, t_end, dt, settle_angle, arithmetic, method)
-    if d.n > limits.MAX_SAMPLES:
-        raise limits.invalid("design", f"<{d.n} points>", f"at most {limits.MAX_SAMPLES:.0e} points")
-    if spec.t_end is not None and spec.dt is not None:  # RATTLE sub-steps: the work of the whole sweep
-        limits.planned_work(spec.t_end, spec.dt, d.n, "point", spec.method or "rattle", spec.substeps)
+    check_work(d, spec)
     backend, workers, chunk_size = _check_backend(backend, scheduler, workers, chunk_size)
     spec, recorded, unrecorded = resume_settings(d, spec, arithmetic, out, resume)
     fp = fingerprint(d, recorded)
