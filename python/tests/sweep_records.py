@@ -1,9 +1,9 @@
 """Helpers of the sweep tests that read and tamper with a sweep's records on disk (the manifest and
 its chunk files, docs/sweeps.md "Resume") and count the ensemble runs a sweep starts, shared by
-test_sweep_arithmetic.py, test_sweep_arithmetic_version.py and test_sweep_method.py; and the sweep of
-the two arithmetic test files (GRID, QS, KW and ``arithmetic_sweep_file``). A plain module (no
-``test_`` prefix): test files import from it, never from each other. Times in seconds, angles in
-radians."""
+test_sweep_arithmetic.py, test_sweep_arithmetic_version.py and test_sweep_method.py; the sweep of
+the two arithmetic test files (GRID, QS, KW); and ``sweep_file``, GRID's sweep as a sweep file, for
+all three. A plain module (no ``test_`` prefix): test files import from it, never from each other.
+Times in seconds, angles in radians."""
 
 from __future__ import annotations
 
@@ -55,13 +55,15 @@ QS = ["final_state", "energy_drift"]
 KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-3, "progress": False}
 
 
-def arithmetic_sweep_file(tmp_path: Path, arithmetic: str | None) -> Path:
-    """GRID, QS and KW as a sweep file, with ``[simulation] arithmetic`` if given (chunks of 4)."""
-    key = "" if arithmetic is None else f"arithmetic = {arithmetic}\n"
+def sweep_file(tmp_path: Path, quantities: list[str], dt: float, **simulation_keys: str | None) -> Path:
+    """GRID, ``quantities`` to t_end = 0.2 s at step ``dt`` as a sweep file (chunks of 4), with each of
+    ``simulation_keys`` that is not None a key of ``[simulation]`` (its value as TOML, e.g.
+    ``method='"rattle6"'``); a new file in ``tmp_path`` each call."""
+    keys = "".join(f"{key} = {value}\n" for key, value in simulation_keys.items() if value is not None)
     path = tmp_path / f"sw-{len(list(tmp_path.glob('sw-*.toml')))}.toml"
     path.write_text(
-        'quantity = ["final_state", "energy_drift"]\n'
+        f"quantity = {json.dumps(quantities)}\n"
         "[grid]\ntheta0 = { start = 0.3, stop = 2.5, num = 5 }\nphi_dot0 = [0.0, 1.5, -2.0]\n"
-        f"[simulation]\nt_end = 0.2\ndt = 1e-3\n{key}[run]\nchunk_size = 4\n"
+        f"[simulation]\nt_end = 0.2\ndt = {dt!r}\n{keys}[run]\nchunk_size = 4\n"
     )
     return path

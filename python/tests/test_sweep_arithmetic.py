@@ -15,7 +15,7 @@ from pathlib import Path
 import numpy as np
 import pyarrow.parquet as pq
 import pytest
-from sweep_records import GRID, KW, QS, arithmetic_sweep_file, counting, drop_chunk, manifest, same
+from sweep_records import GRID, KW, QS, counting, drop_chunk, manifest, same, sweep_file
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
@@ -156,16 +156,16 @@ def test_sweep_file_key_and_cli_option(tmp_path: Path, monkeypatch: pytest.Monke
     _cpu(monkeypatch, fma)
     auto = "fused" if fma else "unfused"
     other = "unfused" if fma else "fused"
-    named = arithmetic_sweep_file(tmp_path, f'"{other}"')
+    named = sweep_file(tmp_path, QS, 1e-3, arithmetic=f'"{other}"')
     assert load_sweep_file(named).sweep_kwargs()["arithmetic"] == other
     assert load_sweep_file(named).sweep_kwargs(arithmetic="auto")["arithmetic"] == "auto"
-    assert load_sweep_file(arithmetic_sweep_file(tmp_path, None)).sweep_kwargs()["arithmetic"] == "auto"
+    assert load_sweep_file(sweep_file(tmp_path, QS, 1e-3)).sweep_kwargs()["arithmetic"] == "auto"
     for toml, option, want in (
         (named, [], other),
         (named, ["--arithmetic", auto], auto),
         (named, ["--arithmetic", "auto"], auto),
-        (arithmetic_sweep_file(tmp_path, None), [], auto),
-        (arithmetic_sweep_file(tmp_path, '"auto"'), ["--arithmetic", other], other),
+        (sweep_file(tmp_path, QS, 1e-3), [], auto),
+        (sweep_file(tmp_path, QS, 1e-3, arithmetic='"auto"'), ["--arithmetic", other], other),
     ):
         out = tmp_path / f"out-{len(list(tmp_path.glob('out-*')))}"
         code, stdout, stderr = invoke("sweep", str(toml), "--out", str(out), "--no-progress", *option)
@@ -182,14 +182,14 @@ def test_bad_arithmetic_in_a_sweep_file_or_on_the_command_line(tmp_path: Path, v
     before it is, by pl.sweep's check: the key or option, the value and the allowed ones; exit code 2."""
     allowed = "one of 'auto', 'unfused', 'fused'"
     shown = value.replace('"', "'") if value.startswith('"') else value.capitalize()  # TOML true: True
-    path = arithmetic_sweep_file(tmp_path, value)
+    path = sweep_file(tmp_path, QS, 1e-3, arithmetic=value)
     with pytest.raises(SweepFileError) as e:
         load_sweep_file(path)
     assert f"{path}: [simulation] invalid arithmetic = {shown}: {allowed}" in str(e.value), str(e.value)
     code, out, err = invoke("sweep", str(path), "--out", str(tmp_path / "o"), "--no-progress")
     assert_user_error(code, out, err, "[simulation] invalid arithmetic", shown, allowed)
     if value.startswith('"'):
-        good = arithmetic_sweep_file(tmp_path, None)
+        good = sweep_file(tmp_path, QS, 1e-3)
         code, out, err = invoke("sweep", str(good), "--out", str(tmp_path / "o"), "--arithmetic", value[1:-1])
         assert_user_error(code, out, err, "--arithmetic", f"invalid arithmetic = {shown}", allowed)
     assert not (tmp_path / "o").exists()
@@ -203,17 +203,17 @@ def test_cli_resume_refuses_a_conflicting_arithmetic(tmp_path: Path, monkeypatch
     _cpu(monkeypatch, False)  # this CPU's "auto" is unfused: resuming with it must not mix in unfused chunks
     out = tmp_path / "sw"
     code, _, stderr = invoke(
-        "sweep", str(arithmetic_sweep_file(tmp_path, '"fused"')), "--out", str(out), "--no-progress"
+        "sweep", str(sweep_file(tmp_path, QS, 1e-3, arithmetic='"fused"')), "--out", str(out), "--no-progress"
     )
     assert code == 0, stderr
     first = pl.sweep(GRID, QS, arithmetic="fused", **KW)
     drop_chunk(out, 2)
     calls = counting(monkeypatch)
-    unnamed = arithmetic_sweep_file(tmp_path, None)
+    unnamed = sweep_file(tmp_path, QS, 1e-3)
     for toml, option in (
         (unnamed, ["--arithmetic", "unfused"]),
-        (arithmetic_sweep_file(tmp_path, '"unfused"'), []),
-        (arithmetic_sweep_file(tmp_path, '"fused"'), ["--arithmetic", "unfused"]),
+        (sweep_file(tmp_path, QS, 1e-3, arithmetic='"unfused"'), []),
+        (sweep_file(tmp_path, QS, 1e-3, arithmetic='"fused"'), ["--arithmetic", "unfused"]),
     ):
         code, stdout, stderr = invoke("sweep", str(toml), "--out", str(out), "--resume", *option)
         assert_user_error(code, stdout, stderr, "arithmetic = 'unfused' differs from 'fused'", str(out))

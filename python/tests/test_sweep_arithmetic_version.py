@@ -20,7 +20,7 @@ from typing import Any
 import numpy as np
 import pyarrow.parquet as pq
 import pytest
-from sweep_records import GRID, KW, QS, arithmetic_sweep_file, counting, drop_chunk, manifest, same
+from sweep_records import GRID, KW, QS, counting, drop_chunk, manifest, same, sweep_file
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
@@ -178,7 +178,7 @@ def test_the_fix_is_spelled_as_keywords_in_python_and_as_options_on_the_command_
     ``--arithmetic auto`` and ``--out``, and no Python keyword; the same for another version."""
     out = tmp_path / "sw"
     code, _, stderr = invoke(
-        "sweep", str(arithmetic_sweep_file(tmp_path, '"fused"')), "--out", str(out), "--no-progress"
+        "sweep", str(sweep_file(tmp_path, QS, 1e-3, arithmetic='"fused"')), "--out", str(out), "--no-progress"
     )
     assert code == 0, stderr
     drop_chunk(out, 2)
@@ -189,7 +189,7 @@ def test_the_fix_is_spelled_as_keywords_in_python_and_as_options_on_the_command_
     assert "--" not in api, api
     code, stdout, stderr = invoke(
         "sweep",
-        str(arithmetic_sweep_file(tmp_path, None)),
+        str(sweep_file(tmp_path, QS, 1e-3)),
         "--out",
         str(out),
         "--resume",
@@ -201,7 +201,5 @@ def test_the_fix_is_spelled_as_keywords_in_python_and_as_options_on_the_command_
     )
     assert "arithmetic='" not in stderr and " out" not in stderr.replace("--out", ""), stderr
     _rewrite(out, arithmetic_version=2)
-    code, stdout, stderr = invoke(
-        "sweep", str(arithmetic_sweep_file(tmp_path, None)), "--out", str(out), "--resume"
-    )
+    code, stdout, stderr = invoke("sweep", str(sweep_file(tmp_path, QS, 1e-3)), "--out", str(out), "--resume")
     assert_user_error(code, stdout, stderr, "of version 2", "of version 1", "into a new --out")

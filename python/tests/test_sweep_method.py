@@ -15,7 +15,7 @@ from typing import Any
 
 import numpy as np
 import pytest
-from sweep_records import counting, drop_chunk, manifest, same
+from sweep_records import counting, drop_chunk, manifest, same, sweep_file
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
@@ -28,18 +28,6 @@ GRID = {"theta0": np.linspace(0.3, 2.5, 5), "phi_dot0": np.array([0.0, 1.5, -2.0
 QS = ["final_state", "max_sway", "energy_drift"]
 KW: dict[str, Any] = {"t_end": 0.2, "dt": 1e-2, "progress": False}
 ALLOWED = "'rattle', 'rattle4', 'rattle6', 'rattle8'"
-
-
-def _sweep_file(tmp_path: Path, method: str | None) -> Path:
-    """GRID, QS and KW as a sweep file, with ``[simulation] method`` if given (chunks of 4)."""
-    key = "" if method is None else f"method = {method}\n"
-    path = tmp_path / f"sw-{len(list(tmp_path.glob('sw-*.toml')))}.toml"
-    path.write_text(
-        'quantity = ["final_state", "max_sway", "energy_drift"]\n'
-        "[grid]\ntheta0 = { start = 0.3, stop = 2.5, num = 5 }\nphi_dot0 = [0.0, 1.5, -2.0]\n"
-        f"[simulation]\nt_end = 0.2\ndt = 1e-2\n{key}[run]\nchunk_size = 4\n"
-    )
-    return path
 
 
 @pytest.mark.parametrize("method", ["rattle6", "rattle"])
@@ -212,14 +200,14 @@ def test_a_sweep_that_records_no_method_ran_rattle(tmp_path: Path, monkeypatch: 
 def test_sweep_file_key_and_cli_option(tmp_path: Path) -> None:
     """``[simulation] method`` reaches pl.sweep (the same numbers as naming it there, recorded);
     without it the method is RATTLE; ``pendulab sweep --method`` overrides the file's key."""
-    named = _sweep_file(tmp_path, '"rattle6"')
+    named = sweep_file(tmp_path, QS, 1e-2, method='"rattle6"')
     assert load_sweep_file(named).sweep_kwargs()["method"] == "rattle6"
     assert load_sweep_file(named).sweep_kwargs(method="rattle4")["method"] == "rattle4"
-    assert load_sweep_file(_sweep_file(tmp_path, None)).sweep_kwargs()["method"] == "rattle"
+    assert load_sweep_file(sweep_file(tmp_path, QS, 1e-2)).sweep_kwargs()["method"] == "rattle"
     for toml, option, want in (
         (named, [], "rattle6"),
         (named, ["--method", "rattle8"], "rattle8"),
-        (_sweep_file(tmp_path, None), [], "rattle"),
+        (sweep_file(tmp_path, QS, 1e-2), [], "rattle"),
     ):
         out = tmp_path / f"out-{len(list(tmp_path.glob('out-*')))}"
         code, _, stderr = invoke("sweep", str(toml), "--out", str(out), "--no-progress", *option)
@@ -231,13 +219,13 @@ def test_sweep_file_key_and_cli_option(tmp_path: Path) -> None:
 
 
 def test_bad_method_in_a_sweep_file_or_on_the_command_line(tmp_path: Path) -> None:
-    path = _sweep_file(tmp_path, '"rk4"')
+    path = sweep_file(tmp_path, QS, 1e-2, method='"rk4"')
     with pytest.raises(SweepFileError) as e:
         load_sweep_file(path)
     assert f"{path}: [simulation] method = 'rk4': sweeps integrate with {ALLOWED}" in str(e.value)
     code, out, err = invoke("sweep", str(path), "--out", str(tmp_path / "o"), "--no-progress")
     assert_user_error(code, out, err, "[simulation] method = 'rk4'", ALLOWED)
-    good = _sweep_file(tmp_path, None)
+    good = sweep_file(tmp_path, QS, 1e-2)
     code, out, err = invoke("sweep", str(good), "--out", str(tmp_path / "o"), "--method", "rk4")
     assert_user_error(code, out, err, "--method: method = 'rk4'", ALLOWED)
     assert not (tmp_path / "o").exists()
@@ -246,7 +234,7 @@ def test_bad_method_in_a_sweep_file_or_on_the_command_line(tmp_path: Path) -> No
 def test_cli_resume_refuses_another_method(tmp_path: Path) -> None:
     """The refusal names its fix as the command's options (``--method rattle6``)."""
     out = tmp_path / "sw"
-    named = _sweep_file(tmp_path, '"rattle6"')
+    named = sweep_file(tmp_path, QS, 1e-2, method='"rattle6"')
     code, _, stderr = invoke("sweep", str(named), "--out", str(out), "--no-progress")
     assert code == 0, stderr
     drop_chunk(out, 0)
