@@ -157,7 +157,7 @@ wasm:
 		rm -f $$dst.opt; mv $$dst.tmp $$dst; echo "$$how" > $$dst.opt; done
 	@ls -l $(WASM) $(WASM_SIMD)
 
-# The lab with nothing to install (docs/lab.md): one HTML file with the engine (.wasm, base64), its Web
+# The lab with nothing to install (docs/lab.md): one HTML file with the engine (.wasm: raw DEFLATE, base64), its Web
 # Worker (a Blob URL), the schema and example scenarios (tools/lab_snapshot.py: the server's answers),
 # scripts and styles inlined; opens from file:// with no network. At most 3 MB.
 LAB_HTML := dist/pendulab-lab.html

@@ -1,4 +1,4 @@
-// Numbers as the panels show them (no DOM).
+// Numbers as the panels show them, and JSON as Python writes it (no DOM).
 
 /** `v` to `digits` significant digits; '—' for none or NaN, ∞ for infinities, exponents outside [1e-3, 1e6). */
 export function fmt(v: number | null | undefined, digits = 6): string {
@@ -15,4 +15,17 @@ export function fmt(v: number | null | undefined, digits = 6): string {
  *  angle of 0°, two pendulums ε = 0 apart) without a word. */
 export function typedNumber(input: { readonly value: string; readonly validity: { readonly badInput: boolean } }): number {
   return input.validity.badInput || input.value.trim() === '' ? NaN : Number(input.value);
+}
+
+/** `value` as Python's `json.dumps(value, sort_keys=True)` writes it (keys sorted, `", "` and `": "` between
+ *  items): the CLI's CSV metadata line, so the lab's reads the same (numbers as JavaScript writes them, each
+ *  read back exactly). */
+export function pythonJSON(value: unknown): string {
+  if (Array.isArray(value)) return `[${value.map(pythonJSON).join(', ')}]`;
+  if (value !== null && typeof value === 'object') {
+    const entries = Object.entries(value as Record<string, unknown>).filter(([, v]) => v !== undefined);
+    entries.sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0));
+    return `{${entries.map(([k, v]) => `${JSON.stringify(k)}: ${pythonJSON(v)}`).join(', ')}}`;
+  }
+  return JSON.stringify(value) ?? 'null';
 }

@@ -6,6 +6,7 @@
 import type { ErrorNotice, EventNotice, ExactQuantities, Frame, Status, Vec3 } from './protocol';
 import { recordEvent } from './events';
 import { PeriodTimer, workBetween } from './measure';
+import { pythonJSON } from './format';
 
 /** Frames kept for interpolation. */
 export const BUFFER_MAX = 512;
@@ -17,6 +18,11 @@ export const HISTORY_MAX = 4000;
 export const TRAJECTORY_MAX = 200_000;
 /** Most simulated time the playhead trails the newest frame, in ticks of the server. */
 export const MAX_LAG_TICKS = 3;
+
+/** How the lab's engine rounds a·b + c, both the page's and `pendulab serve`'s (the live session steps with
+ *  the core's default, `Arithmetic::Unfused`: docs/lab.md, "Against the Python package"); `pl.simulate(...,
+ *  arithmetic=...)` with it replays a CSV download bit for bit. */
+export const LAB_ARITHMETIC = 'unfused';
 
 /** Columns of the CSV download, in SI units. */
 export const CSV_COLUMNS = [
@@ -128,6 +134,9 @@ export class LabStore {
   /** Every frame of the current epoch (up to TRAJECTORY_MAX), for the CSV download. */
   trajectory: Frame[] = [];
   trajectoryTruncated = false;
+  /** The method and dt the trajectory was stepped with, and from when [s]: one, unless set_method (which
+   *  goes on from the current state in the same epoch) changed them; for the CSV download. */
+  methods: { t: number; method: string; dt: number }[] = [];
   /** E and J₃ of the epoch's first frame: the references of the drift plots. */
   reference: { energy: number; j3: number } | null = null;
   /** Tension extremes of the epoch (every received frame), or null before the first. */
@@ -169,6 +178,9 @@ export class LabStore {
     this.disconnected = false;
     this.status = s;
     if (restart) this.clear();
+    const last = this.methods[this.methods.length - 1];
+    if (restart || last === undefined) this.methods = [{ t: s.t, method: s.method, dt: s.dt }];
+    else if (last.method !== s.method || last.dt !== s.dt) this.methods.push({ t: s.t, method: s.method, dt: s.dt });
     this.emit();
   }
 
@@ -341,12 +353,21 @@ export class LabStore {
     return this.trail.slice(start, end);
   }
 
-  /** The trajectory received in this epoch as CSV: a `#` line of JSON metadata, a header with units, rows. */
+  /** The trajectory received in this epoch as CSV: a `#` line of metadata as the CLI's CSVs have it
+   *  (`# pendulab lab trajectory; metadata (JSON): {…}`, keys sorted: python/pendulab/io.py `csv_header`),
+   *  a header with units, rows. The metadata carries what replays the run with `pl.simulate` (docs/web.md,
+   *  "Share and export"): the pendulum as `pl.Pendulum(**pendulum)` takes it, the method, the start (the
+   *  epoch's first frame: the state the engine stepped on from, also after a change of model or parameters
+   *  mid-run, where the scenario's start would not replay the rows), `options` as the CLI writes them with
+   *  the arithmetic the engine steps with, and `method_changes` (set_method mid-epoch: t, method, dt). */
   toCSV(): string {
     const s = this.status;
+    const first = this.trajectory[0];
     const meta = {
+      software: 'pendulab',
       source: 'pendulab lab',
       scenario: s?.scenario ?? null,
+      pendulum: s === null ? null : { model: s.model, ...s.params, ...s.model_params },
       params: s?.params ?? null,
       model: s?.model ?? null,
       model_params: s?.model_params ?? null,
@@ -354,12 +375,15 @@ export class LabStore {
       // an adaptive method (dop853) chooses its own steps: the lab's dt setting is none of them
       adaptive: s?.adaptive ?? null,
       dt: s === null || s.adaptive ? null : s.dt,
+      start: first === undefined ? null : { t: first.t, x: first.x, v: first.v },
+      options: s === null ? null : { arithmetic: LAB_ARITHMETIC, ...(s.adaptive ? {} : { dt: s.dt }), t0: first?.t ?? s.t0 },
+      method_changes: this.methods.slice(1),
       truncated: this.trajectoryTruncated,
     };
     const header = CSV_COLUMNS.join(',');
     const rows = this.trajectory.map((f) =>
       [f.t, ...f.x, ...f.v, f.energy, f.j3, f.tension, f.power, ...f.a, ...f.pivot, f.taut ? 1 : 0, f.errorX].map((v) => String(v)).join(','),
     );
-    return [`# ${JSON.stringify(meta)}`, header, ...rows].join('\n') + '\n';
+    return [`# pendulab lab trajectory; metadata (JSON): ${pythonJSON(meta)}`, header, ...rows].join('\n') + '\n';
   }
 }

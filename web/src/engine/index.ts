@@ -4,9 +4,9 @@
 // server's bundle, so none of the engine's code is in it). Both speak the same commands and send the
 // same frames and notices; connection.ts opens whichever `openSocket` gives.
 
-/** What the one-file lab carries: the engine (base64 .wasm: `wasmSimd` built with SIMD128, `wasm`
- *  without, the fallback), GET /api/schema's and /api/scenarios' answers as the server gave them when
- *  the file was built, and the scenario to start with. */
+/** What the one-file lab carries: the engine (each .wasm as the base64 of its raw DEFLATE stream,
+ *  unpack.ts: `wasmSimd` built with SIMD128, `wasm` without, the fallback), GET /api/schema's and
+ *  /api/scenarios' answers as the server gave them when the file was built, and the scenario to start with. */
 export interface LabBundle {
   wasm: string;
   wasmSimd?: string;
@@ -73,10 +73,11 @@ export async function installEngine(): Promise<EngineKind> {
   const { EngineSocket } = await import('./socket');
   const { installApi } = await import('./api');
   const { Engine } = await import('./wasm');
+  const { unpackWasm } = await import('./unpack');
   // compiled once: the quick analyses on this thread, each socket's worker instantiates the same module
   const chosen = chooseWasm(lab);
   document.documentElement.dataset['wasmBuild'] = chosen.build;
-  const wasm = await WebAssembly.compile(Uint8Array.from(atob(chosen.base64), (c) => c.charCodeAt(0)));
+  const wasm = await WebAssembly.compile(unpackWasm(chosen.base64));
   factory = () => new EngineSocket(wasm, lab);
   installApi(lab, await Engine.load(wasm));
 

@@ -135,7 +135,7 @@ export class Controls {
     // --- export ---
     const ex = this.gui.addFolder(t('gui.export')).close();
     m['csv'] = () => actions.downloadCSV();
-    ex.add(m, 'csv').name(t('gui.csv'));
+    ex.add(m, 'csv').name(t('gui.csv')).domElement.dataset['control'] = 'csv';
     m['toml'] = () => actions.downloadTOML();
     const toml = ex.add(m, 'toml').name(t('gui.toml'));
     toml.domElement.dataset['control'] = 'toml';

@@ -5,8 +5,11 @@
 // solution travels in them, commands work through the same protocol (the model picker's damped model with
 // its damping, a scenario loaded, a refused command explained, and in German and French; a typed value out of
 // range named with the lab's range, no number in the box said so), the page's URL reproduces the run in a
-// second page, what needs Python says so, no request left the machine, no console errors.
+// second page, what needs Python says so, the CSV download replayed by the Python package bit for bit
+// (tools/replay_lab_csv.py: pl.simulate with the arithmetic its header names; the SIMD128 build, and the
+// baseline build in a page told it has no SIMD128), no request left the machine, no console errors.
 // Usage: node tests/e2e/lab_file.mjs /abs/path/pendulab-lab.html
+import { execFileSync } from 'node:child_process';
 import { mkdirSync } from 'node:fs';
 import { checker, errorWatcher, labFileUrl, launchChromium, waitFrames, WAIT } from './file_lab.mjs';
 
@@ -15,6 +18,27 @@ const { context, refused } = await launchChromium('lab', { offline: true });
 const { check, finish } = checker('lab file');
 const { errors, watch } = errorWatcher();
 const status = (page) => page.evaluate(() => window.pendulab.store.status);
+const PYTHON = process.env.PYTHON ?? '../.venv/bin/python';
+
+/** Downloads the CSV through the page's button (Share and export → CSV) into test-results/lab-NAME.csv and
+ *  replays it with the Python package; checks it is reproduced bit for bit. */
+async function replayCSV(page, name) {
+  // the export folder is in the advanced view (the simple view, the first visit's, hides it): there and back
+  const simple = await page.evaluate(() => document.body.classList.contains('simple'));
+  if (simple) await page.locator('[data-action="simple"]').click();
+  const button = page.locator('[data-control="csv"] button');
+  if (!(await button.isVisible())) await page.locator('.lil-title', { hasText: 'Share and export' }).click();
+  const [download] = await Promise.all([page.waitForEvent('download', { timeout: WAIT }), button.click()]);
+  if (simple) await page.locator('[data-action="simple"]').click();
+  const path = `test-results/lab-${name}.csv`;
+  await download.saveAs(path);
+  try {
+    const said = execFileSync(PYTHON, ['../tools/replay_lab_csv.py', path], { encoding: 'utf8', stdio: 'pipe' }).trim();
+    check(/: 0 differ from pl\.simulate\(arithmetic='unfused'\)/.test(said), `the CSV download replayed by the Python package: ${said}`);
+  } catch (e) {
+    check(false, `the CSV download (${path}) replayed by the Python package: ${e.stdout ?? ''}${e.stderr ?? e.message}`);
+  }
+}
 
 try {
   mkdirSync('test-results', { recursive: true });
@@ -27,6 +51,8 @@ try {
   console.log(`first frame ${first.toFixed(2)} s after opening the file`);
   check(first < 15, `the first frame arrives (${first.toFixed(2)} s; the goal is 1.5 s on an idle machine)`);
   check((await page.evaluate(() => window.pendulab.engine())) === 'wasm', 'window.pendulab.engine() is "wasm"');
+  const simd = await page.evaluate(() => document.documentElement.dataset.wasmBuild);
+  check(simd === 'simd128', `chromium runs the SIMD128 build (${simd})`);
 
   // paced by the wall clock: 0.6–1.4 simulated seconds per second over 2 s
   await page.waitForFunction(() => (window.pendulab.store.latest()?.t ?? 0) > 0.5, null, { timeout: WAIT });
@@ -55,6 +81,7 @@ try {
   }, s0);
   check(views.boundary > 100 && views.orbit > 100, `the EM map and the reduced view in the page (${views.boundary} boundary points, ${views.orbit} orbit points)`);
   await page.screenshot({ path: 'test-results/lab-file.png' });
+  await replayCSV(page, 'rosette');
 
   // the same commands as over the WebSocket: the model picker's damped model, then its damping
   await page.evaluate(() => window.pendulab.send({ type: 'set_model', model: 'damped', params: { damping: 0.8 } }));
@@ -65,6 +92,7 @@ try {
   const s1 = await status(page);
   check(s1.model_params.damping === 0.8 && e2 < e1, `damped (${s1.model_params.damping} 1/s): E ${e1.toFixed(4)} → ${e2.toFixed(4)} J`);
   check(s1.error_estimate?.how === 'richardson', `its error estimated by Richardson (${s1.error_estimate?.how})`);
+  await replayCSV(page, 'damped');
   // a refused command is explained on the page
   await page.evaluate(() => window.pendulab.send({ type: 'set_params', length: -1 }));
   const said = await page.waitForFunction(() => {
@@ -156,6 +184,20 @@ try {
     check(true, `a refusal in the page's language (${lang}): ${await text.jsonValue()}`);
     await p.close();
   }
+
+  // the baseline build (a browser without SIMD128: WebAssembly.validate refuses the page's probe) computes the same
+  const old = await context.newPage();
+  watch(old);
+  await old.addInitScript(() => {
+    WebAssembly.validate = () => false;
+  });
+  await old.goto(file, { timeout: WAIT });
+  await waitFrames(old, 0, 20);
+  const build = await old.evaluate(() => document.documentElement.dataset.wasmBuild);
+  check(build === 'baseline', `a browser without SIMD128 runs the baseline build (${build})`);
+  await old.waitForFunction(() => (window.pendulab.store.latest()?.t ?? 0) > 1, null, { timeout: WAIT });
+  await replayCSV(old, 'baseline');
+  await old.close();
 
   check(refused.length === 0, `no network request (${refused.length} refused${refused.length ? ': ' + refused.slice(0, 3).join(', ') : ''})`);
   check(errors.length === 0, `no console errors${errors.length ? ': ' + errors.slice(0, 3).join(' | ') : ''}`);

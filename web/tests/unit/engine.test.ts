@@ -4,6 +4,8 @@ import { describe, expect, it } from 'vitest';
 import { KIND_FRAMES, KIND_JSON, unpack } from '../../src/engine/wasm';
 import { answer, needsServer } from '../../src/engine/api';
 import { chooseWasm, hasSimd128 } from '../../src/engine/index';
+import { unpackWasm } from '../../src/engine/unpack';
+import { deflateSync } from 'fflate';
 import { decodeFrames, encodeFrames, parseNotice, RECORD_BYTES } from '../../src/protocol';
 import type { Frame } from '../../src/protocol';
 
@@ -80,5 +82,20 @@ describe('chooseWasm', () => {
   });
   it('detects SIMD128 with a module that is valid exactly when SIMD128 is there (node 20 has it)', () => {
     expect(hasSimd128()).toBe(true);
+  });
+});
+
+describe('unpackWasm', () => {
+  // the smallest SIMD128 module (engine/index.ts's probe), as vite.lab.config.mjs packs a .wasm: raw DEFLATE, base64
+  const probe = Uint8Array.of(0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11);
+  const base64 = (b: Uint8Array): string => btoa(String.fromCharCode(...b));
+  it("gives back the module's bytes, which compile", async () => {
+    const bytes = unpackWasm(base64(deflateSync(probe, { level: 9 })));
+    expect([...bytes]).toEqual([...probe]);
+    expect(await WebAssembly.compile(bytes)).toBeInstanceOf(WebAssembly.Module);
+  });
+  it('says so when the file carries something else', () => {
+    expect(() => unpackWasm(base64(probe))).toThrow(/the lab's engine \(.wasm\) in this file is damaged/);
+    expect(() => unpackWasm(base64(deflateSync(Uint8Array.of(1, 2, 3, 4, 5, 6, 7, 8))))).toThrow(/not a WebAssembly module \(8 bytes/);
   });
 });

@@ -225,8 +225,18 @@ describe('LabStore', () => {
     store.onFrames([frame(0), frame(0.5)]);
     const lines = store.toCSV().trim().split('\n');
     expect(lines).toHaveLength(4);
-    expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ scenario: 'rosette', method: 'rattle' });
-    expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ model: 'ideal', model_params: {} });
+    // the CLI's metadata line (python/pendulab/io.py csv_header), read as the README reads it
+    const [prefix, json] = (lines[0] as string).split('metadata (JSON): ');
+    expect(prefix).toBe('# pendulab lab trajectory; ');
+    const meta = JSON.parse(json as string) as Record<string, unknown>;
+    expect(meta).toMatchObject({ scenario: 'rosette', method: 'rattle', model: 'ideal', model_params: {} });
+    // what replays the run: pl.Pendulum(**pendulum), the epoch's start, the arithmetic the engine steps with
+    expect(meta['pendulum']).toEqual({ model: 'ideal', length: 1, mass: 1, g: 9.81 });
+    expect(meta['start']).toEqual({ t: 0, x: [1, 0, 0], v: [0, 1, 0] }); // the first frame's state
+    expect(meta['method_changes']).toEqual([]);
+    expect(meta['options']).toEqual({ arithmetic: 'unfused', dt: 0.001, t0: 0 });
+    expect(Object.keys(meta)).toEqual([...Object.keys(meta)].sort()); // sorted as json.dumps(sort_keys=True)
+    expect(json).toContain('"options": {"arithmetic": "unfused", "dt": 0.001, "t0": 0}');
     expect(lines[1]).toBe(
       't [s],x1 [m],x2 [m],x3 [m],v1 [m/s],v2 [m/s],v3 [m/s],energy [J],j3 [kg m^2/s],tension [N],' +
         'power [W],a1 [m/s^2],a2 [m/s^2],a3 [m/s^2],pivot1 [m],pivot2 [m],pivot3 [m],taut [1],error_x [m]',
@@ -234,14 +244,32 @@ describe('LabStore', () => {
     const row = (lines[3] as string).split(',').map(Number);
     const [c, s] = [Math.cos(0.5), Math.sin(0.5)];
     expect(row).toEqual([0.5, c, s, 0, -s, c, 0, -9.81, 1, 1, 0, -c, -s, 0, 0, 0, 0, 1, 0]);
-    expect(JSON.parse((lines[0] as string).slice(2))).toMatchObject({ adaptive: false, dt: 0.001 });
+    expect(meta).toMatchObject({ adaptive: false, dt: 0.001 });
   });
 
   it('writes no dt for an adaptive method, which chooses its own steps', () => {
     store.onStatus(status({ method: 'dop853', adaptive: true, dt: 0.001 }));
     store.onFrames([frame(0), frame(0.5)]);
-    const meta = JSON.parse((store.toCSV().split('\n')[0] as string).slice(2));
+    const meta = JSON.parse((store.toCSV().split('\n')[0] as string).split('metadata (JSON): ')[1] as string);
     expect(meta).toMatchObject({ method: 'dop853', adaptive: true, dt: null });
+    expect(meta.options).toEqual({ arithmetic: 'unfused', t0: 0 }); // as pl.simulate's: no dt for dop853
+  });
+
+  it("starts the CSV's run at the epoch's first frame, with the model's own parameters and any change of method", () => {
+    // a change of model mid-run: a new epoch going on from the state reached, not from the scenario's start
+    store.onStatus(status({ epoch: 1, t: 2.5, model: 'damped', model_params: { damping: 0.8 } }));
+    store.onFrames([frame(2.5), frame(2.6)]);
+    const meta = () => JSON.parse((store.toCSV().split('\n')[0] as string).split('metadata (JSON): ')[1] as string) as Record<string, unknown>;
+    expect(meta()['pendulum']).toEqual({ model: 'damped', length: 1, mass: 1, g: 9.81, damping: 0.8 });
+    expect(meta()['start']).toEqual({ t: 2.5, x: [Math.cos(2.5), Math.sin(2.5), 0], v: [-Math.sin(2.5), Math.cos(2.5), 0] });
+    expect(meta()['options']).toMatchObject({ arithmetic: 'unfused', t0: 2.5 });
+    // set_method goes on in the same epoch: said, with when
+    store.onStatus(status({ epoch: 1, t: 2.7, model: 'damped', model_params: { damping: 0.8 } }));
+    expect(meta()['method_changes']).toEqual([]);
+    store.onStatus(status({ epoch: 1, t: 2.75, method: 'rk4', dt: 0.01, model: 'damped', model_params: { damping: 0.8 } }));
+    expect(meta()['method_changes']).toEqual([{ dt: 0.01, method: 'rk4', t: 2.75 }]);
+    store.onStatus(status({ epoch: 2, t: 3 }));
+    expect(meta()['method_changes']).toEqual([]);
   });
 
   it('notifies subscribers and keeps the last errors', () => {
