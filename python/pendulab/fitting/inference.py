@@ -8,7 +8,9 @@
 - the linearised covariance (JᵀJ)⁻¹ × s² (s² = χ²/dof when σ is not given; T-10.2) and what the data
   determine (identify.py), widened for correlated residuals (Newey–West, goodness.py);
 - the goodness of fit per data kind against its noise floor, the χ² probability with σ given, the
-  block check of a misfit (blocks.py) and a g far from any planet's (T-10.5), each warned.
+  block check of a misfit (blocks.py) and a g far from any planet's (T-10.5), each warned;
+- over a record shorter than one swing, the bars of length and g checked by their profile likelihood:
+  taken from it, or the parameters not determined (short_record.py), warned.
 Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
 """
 
@@ -31,6 +33,7 @@ from .identify import Correlation, Identifiability, analyse, jacobian
 from .problem import POSITIVE
 from .result import FitResult
 from .search import Search, polish
+from .short_record import check_short_record
 from .whiteness import chi2_tails
 
 
@@ -100,16 +103,8 @@ def conclude(
             f"the fitted g = {g_fit:.4g} m/s² is far from any planet's (Earth 9.81): are the data in SI "
             "units (positions in m, not mm or pixels; times in s; angles in rad)?"
         )
-    for text in said:
-        warnings.warn(text, UserWarning, stacklevel=3)
-    if not converged and not interrupted:
-        warnings.warn(
-            f"the fit did not converge ({message}); the values are the best reached",
-            RuntimeWarning,
-            stacklevel=3,
-        )
     goodness = Goodness(checks, chi2_p, {n: ident.inflation.get(n, 1.0) for n in free}, said)
-    return FitResult.build(
+    res = FitResult.build(
         problem=problem,
         values=final,
         predictions=pred,
@@ -136,6 +131,17 @@ def conclude(
         variance=variance,
         blocks=blocks,
     )
+    # a record shorter than a swing: the profile likelihood checks the bars of the length and g
+    said += check_short_record(res, search.time_up, not interrupted and search.loss == "linear")
+    for text in said:
+        warnings.warn(text, UserWarning, stacklevel=3)
+    if not converged and not interrupted:
+        warnings.warn(
+            f"the fit did not converge ({message}); the values are the best reached",
+            RuntimeWarning,
+            stacklevel=3,
+        )
+    return res
 
 
 def _polished(

@@ -102,16 +102,21 @@ def _end(
     direction: float,
     budget: int,
     target: float,
+    doublings: int | None = None,
 ) -> float:
     """One end of the interval (``direction`` −1 or +1): steps of doubling size from the optimum until
     the rise exceeds ``target``, then bisection of the crossing, at most ``budget`` refits; the bound
-    (or ±inf) when the rise stays below the target up to it."""
+    (or ±inf) when the rise stays below the target up to it, and ±inf when it still does after
+    ``doublings`` steps (None: as many as the budget allows; the last step reaches 2^doublings − 1
+    times ``step0`` from the optimum)."""
     lo_bound, hi_bound = bounds
     bound = lo_bound if direction < 0 else hi_bound
     value = values[rise.name]
     inside, inside_vals, step = value, values, step0
     outside = None
-    while budget > 0:
+    steps = 0
+    while budget > 0 and (doublings is None or steps < doublings):
+        steps += 1
         c = min(max(inside + direction * step, lo_bound), hi_bound)
         budget -= 1
         d, vals = rise(c, inside_vals)

@@ -85,6 +85,21 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
     ("pivotFitted", _p("the positions do not hang from the origin: the pivot's position is fitted too")),
     ("timeLimit", _p("fit interrupted (the time limit of {seconds} s): returning the best values")),
     ("notConverged", _p("the fit did not converge (")),
+    # pendulab/fitting/short_record.py
+    (
+        "shortUndetermined",
+        _p(
+            "the record spans only {periods} of a small-swing period 2π√(l/g) = {period} s: {others:l} "
+            "are not determined ("
+        ),
+    ),
+    (
+        "shortWidened",
+        _p(
+            "the record spans only {periods} of a small-swing period 2π√(l/g) = {period} s: the error "
+            "bars of {others:l} were taken from their 95 % profile-likelihood intervals"
+        ),
+    ),
     # pendulab/fitting/data.py
     ("dropped", _p("dropped {n} of {total} rows with NaN or inf")),
     ("sorted", _p("the times were not in increasing order: the rows were sorted")),
@@ -111,6 +126,7 @@ REASONS: list[tuple[str, re.Pattern[str]]] = [
     ("notFinite", _p("the model's response to it is not finite at the fit")),
     ("flat", _p("the residuals do not change with it at the fit")),
     ("combination", re.compile(r"the data determine only a combination of it with (?P<others>.+)$")),
+    ("shortRecord", _p("a record of {periods} of a swing does not determine it")),
 ]
 """Why a parameter is not determined (pendulab/fitting/identify.py) -> key."""
 

@@ -1,0 +1,225 @@
+"""Error bars of a record shorter than one swing (docs/fit.md, "A record shorter than a swing").
+
+Over less than one small-swing period 2π√(l/|g|) of the result (:data:`SHORT_PERIODS`, as
+multistart.FLOOR_PERIODS) the length, g and the pivot's height trade off along a curved valley of the
+misfit, and the linearised error bars from its curvature at the optimum are far too narrow there: a
+third of a swing (bench/fit_validate.py case 20, seed 38) gave l = 0.384 ± 0.050 m for a truth of
+0.6 m (4.3 stderr off) with no warning. For such a record the profile likelihood (profile.py) of the
+length and of g is computed: where it stays below the 95 % level out to :data:`DOUBLINGS` doublings
+of the curvature's bar (63 bars) or to a bound, the data bound the parameter on one side only, and
+length, g and every parameter correlated with them by |ρ| ≥ :data:`CORRELATED` are reported as not
+determined, with a warning that names them, the record's span in periods and what would help;
+where both profiles close, each profiled bar is widened to its 95 % profile interval (the larger side
+over 1.96; an asymmetric interval is said), and the correlated parameters not profiled are widened by
+the largest factor of those they are correlated with. Records of a period or more pay nothing.
+Units: each parameter's (SI); times [s].
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from statistics import NormalDist
+from typing import Any
+
+import numpy as np
+
+from .multistart import FLOOR_PERIODS
+from .problem import bounds_of, scale_of
+from .profile import _end, _Rise
+
+#: A record spanning fewer small-swing periods 2π√(l/|g|) of the result than this has its bars of
+#: length and g checked by their profile likelihood.
+SHORT_PERIODS = FLOOR_PERIODS
+
+#: Parameters whose correlation with the length or g is at least this share their fate.
+CORRELATED = 0.9
+
+#: Steps of doubling size per end of a profile (out to 63 curvature bars), then :data:`BISECTIONS`.
+DOUBLINGS = 6
+BISECTIONS = 4
+
+#: At most this many parameters are profiled: the length and g (when only one of them is fitted, it
+#: and the parameter most correlated with it); the others correlated with them take the largest factor.
+MAX_PROFILES = 2
+
+#: A bar widened by this factor or more is warned about (the profile then says more than the curvature).
+WIDENED = 1.2
+
+#: ... and so is one whose profile interval has a side more than this many times the other.
+ASYMMETRIC = 1.5
+
+#: The level of the profile interval.
+LEVEL = 0.95
+
+
+class _Late(Exception):
+    """The fit's time limit passed during the check."""
+
+
+class _TimedRise(_Rise):
+    """profile.py's rise of the misfit, raising :class:`_Late` once ``time_up()``."""
+
+    def __init__(self, res: Any, name: str, period: float, time_up: Callable[[], bool]) -> None:
+        super().__init__(res, name, period)
+        self.time_up = time_up
+
+    def __call__(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float]]:
+        if self.time_up():
+            raise _Late
+        return super().__call__(c, start)
+
+
+def check_short_record(res: Any, time_up: Callable[[], bool], checkable: bool = True) -> list[str]:
+    """For a :class:`pendulab.FitResult` ``res`` of a record shorter than :data:`SHORT_PERIODS` periods:
+    the bars of the length, g and the parameters correlated with them checked by their profile
+    likelihood and widened, or the parameters reported not determined (``res`` is changed in place);
+    the findings to warn. ``time_up``: whether the fit's time limit has passed; once it has, or when
+    not ``checkable`` (an interrupted fit, a robust loss), the profile is not computed and the
+    parameters are not determined: their curvature bars cannot be trusted."""
+    values = {**res.fixed, **res.params}
+    length, g = float(values.get("length", math.nan)), float(values.get("g", math.nan))
+    if res.model == "spring" or not (length > 0.0 and math.isfinite(length) and math.isfinite(g) and g != 0):
+        return []
+    period = 2.0 * math.pi * math.sqrt(length / abs(g))
+    periods = float(res.t[-1] - res.t[0]) / period
+    core = [n for n in ("length", "g") if n in res.params and res.determined[n]]
+    if periods >= SHORT_PERIODS or not core:
+        return []
+    linked = _linked(res, core)
+    profiled: dict[str, tuple[float, float]] = {}
+    unchecked = "the fit stopped before the profile likelihood was checked"
+    if not checkable:
+        return [_undetermined(res, core + linked, periods, period, profiled, unchecked)]
+    try:
+        for name in (core + linked)[:MAX_PROFILES]:
+            profiled[name] = _profile(res, name, period, time_up)
+            if not all(map(math.isfinite, profiled[name])):
+                break  # an open profile: the valley is open
+    except _Late:
+        return [_undetermined(res, core + linked, periods, period, profiled, unchecked)]
+    if any(not all(map(math.isfinite, ends)) for ends in profiled.values()):
+        why = "the profile likelihood does not close"
+        return [_undetermined(res, core + linked, periods, period, profiled, why)]
+    return _widened(res, core, linked, periods, period, profiled)
+
+
+def _linked(res: Any, core: list[str]) -> list[str]:
+    """The determined parameters other than ``core`` correlated with one of them by |ρ| ≥ CORRELATED,
+    the most correlated first."""
+    i = {n: k for k, n in enumerate(res.names)}
+    rho = {
+        n: max(abs(float(np.nan_to_num(res.correlation[i[n], i[c]]))) for c in core)
+        for n in res.names
+        if n not in core and res.determined[n]
+    }
+    return sorted((n for n, r in rho.items() if r >= CORRELATED), key=lambda n: -rho[n])
+
+
+def _profile(res: Any, name: str, period: float, time_up: Callable[[], bool]) -> tuple[float, float]:
+    """The 95 % profile interval of ``name`` [its unit], each end at most DOUBLINGS doublings of the
+    curvature's bar out (else ±inf) and BISECTIONS bisections; a bound of the parameter reached
+    below the level is returned as ±inf (the data do not bound it there)."""
+    from scipy import stats
+
+    rise = _TimedRise(res, name, period, time_up)
+
+    values = {**res.fixed, **res.params}
+    value, err = values[name], res.stderr[name]
+    bounds = bounds_of(res._problem.model, name, value)
+    step0 = err if math.isfinite(err) and err > 0 else scale_of(name, value, values["length"], period)
+    target = float(stats.chi2.ppf(LEVEL, 1))
+    ends = [
+        _end(rise, values, step0, bounds, d, DOUBLINGS + BISECTIONS, target, DOUBLINGS) for d in (-1.0, 1.0)
+    ]
+    lo, hi = (e if e not in bounds else math.copysign(math.inf, e - value) for e in ends)
+    return lo, hi
+
+
+def _undetermined(
+    res: Any,
+    names: list[str],
+    periods: float,
+    period: float,
+    profiled: dict[str, tuple[float, float]],
+    why: str,
+) -> str:
+    """``names`` marked not determined in ``res`` (``why``: the profile did not close, or was not
+    computed); the finding."""
+    reason = f"a record of {periods:.2g} of a swing does not determine it ({why})"
+    i = {n: k for k, n in enumerate(res.names)}
+    for n in names:
+        res.determined[n] = False
+        res.reasons[n] = reason
+        res.stderr[n] = math.inf
+        res.covariance[i[n], :] = math.nan
+        res.covariance[:, i[n]] = math.nan
+        res.covariance[i[n], i[n]] = math.inf
+        res.correlation[i[n], :] = math.nan
+        res.correlation[:, i[n]] = math.nan
+    shown = "; ".join(_shown(res, n, lo, hi) for n, (lo, hi) in profiled.items())
+    return (
+        f"the record spans only {periods:.2g} of a small-swing period 2π√(l/g) = {period:.3g} s: "
+        f"{', '.join(names)} are not determined (the curvature's error bars are too narrow along the "
+        f"valley where they trade off; {why}"
+        + (f": 95 % profile {shown}" if shown else "")
+        + "). Record at least one full swing to determine them"
+    )
+
+
+def _widened(
+    res: Any,
+    core: list[str],
+    linked: list[str],
+    periods: float,
+    period: float,
+    profiled: dict[str, tuple[float, float]],
+) -> list[str]:
+    """The bars in ``res`` widened to the profile intervals (those of ``linked`` not profiled by the
+    largest factor of the core parameters); the finding when a bar grew by WIDENED or more."""
+    z = NormalDist().inv_cdf(0.5 + LEVEL / 2.0)
+    i = {n: k for k, n in enumerate(res.names)}
+    factor: dict[str, float] = {}
+    for n, (lo, hi) in profiled.items():
+        v = res.params[n]
+        factor[n] = max(max(hi - v, v - lo) / z / res.stderr[n], 1.0)
+    for n in linked:
+        if n not in factor:
+            factor[n] = max(factor[c] for c in core)
+    for n, f in factor.items():
+        res.stderr[n] *= f
+        res.covariance[i[n], :] *= f
+        res.covariance[:, i[n]] *= f
+    lopsided = [n for n, (lo, hi) in profiled.items() if _asymmetric(res.params[n], lo, hi)]
+    said = [n for n, f in factor.items() if f >= WIDENED or n in lopsided]
+    if not said:
+        return []
+    shown = "; ".join(_shown(res, n, lo, hi) for n, (lo, hi) in profiled.items())
+    return [
+        f"the record spans only {periods:.2g} of a small-swing period 2π√(l/g) = {period:.3g} s: the "
+        f"error bars of {', '.join(said)} were taken from their 95 % profile-likelihood intervals "
+        f"({shown}; the error bar is the larger side over 1.96), which the curvature at the fit "
+        "understates. Record at least one full swing to narrow them"
+    ]
+
+
+def _shown(res: Any, name: str, lo: float, hi: float) -> str:
+    """``name`` lo … hi [unit], with ≥ lo or ≤ hi for an open end, and the sides when asymmetric."""
+    unit = res.units.get(name, "")
+    unit = f" {unit}" if unit and unit != "1" else ""
+    v = res.params[name]
+    if not math.isfinite(hi) and not math.isfinite(lo):
+        return f"{name} not bounded"
+    if not math.isfinite(hi):
+        return f"{name} ≥ {lo:.3g}{unit}"
+    if not math.isfinite(lo):
+        return f"{name} ≤ {hi:.3g}{unit}"
+    up, down = hi - v, v - lo
+    side = f", asymmetric: +{up:.2g}/−{down:.2g}" if _asymmetric(v, lo, hi) else ""
+    return f"{name} {lo:.4g} … {hi:.4g}{unit}{side}"
+
+
+def _asymmetric(value: float, lo: float, hi: float) -> bool:
+    """Whether one side of the interval lo … hi is more than ASYMMETRIC times the other."""
+    up, down = hi - value, value - lo
+    return max(up, down) > ASYMMETRIC * max(min(up, down), 0.0)
