@@ -12,10 +12,16 @@
 use crate::convert::{samples_to_numpy, to_py, Arrays, InvalidInputError};
 use crate::getters::pymethods_with_getters;
 use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
+use pendulab_core::error::Shown;
 use pendulab_core::model::AnyModel;
 use pendulab_core::{DVec3, Method, Model, Params, Solver, State};
 use pyo3::prelude::*;
 use std::sync::{Arc, Mutex};
+
+/// Numbers as the core's messages write them ([`Shown`]: `1`, `nan`, `1e-7`; not `1.0`, `NaN`, `1e0`), in brackets.
+fn shown_all(values: &[f64]) -> String {
+    format!("[{}]", values.iter().map(|v| Shown(*v).to_string()).collect::<Vec<_>>().join(", "))
+}
 
 /// A registry model plus a Python force F(t, x, v) [N].
 pub struct PyForce {
@@ -33,23 +39,27 @@ impl PyForce {
             let out = self.force.call1(py, (t, x.to_array().to_vec(), v.to_array().to_vec()))?;
             let values: Vec<f64> = out.extract(py).map_err(|_| {
                 InvalidInputError::new_err(format!(
-                    "the force callable returned {}, not 3 numbers (N), at t = {t} s",
-                    out.bind(py).repr().map(|r| r.to_string()).unwrap_or_else(|_| "?".into())
+                    "the force callable returned {}, not 3 numbers (N), at t = {} s",
+                    out.bind(py).repr().map(|r| r.to_string()).unwrap_or_else(|_| "?".into()),
+                    Shown(t)
                 ))
             })?;
             if values.len() != 3 {
                 return Err(InvalidInputError::new_err(format!(
-                    "the force callable returned {} numbers at t = {t} s; it must return 3 (N)",
-                    values.len()
+                    "the force callable returned {} numbers at t = {} s; it must return 3 (N)",
+                    values.len(),
+                    Shown(t)
                 )));
             }
             if let Some(k) = values.iter().position(|f| !f.is_finite()) {
                 return Err(InvalidInputError::new_err(format!(
-                    "the force callable returned F = {values:?} N at t = {t} s, x = {:?} m, v = {:?} m/s: \
+                    "the force callable returned F = {} N at t = {} s, x = {} m, v = {} m/s: \
                      component {k} = {} is not a finite number",
-                    x.to_array(),
-                    v.to_array(),
-                    values[k]
+                    shown_all(&values),
+                    Shown(t),
+                    shown_all(&x.to_array()),
+                    shown_all(&v.to_array()),
+                    Shown(values[k])
                 )));
             }
             Ok(DVec3::new(values[0], values[1], values[2]))

@@ -8,6 +8,7 @@ step sizes in s, residuals dimensionless; every number written as a user writes 
 from __future__ import annotations
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -74,3 +75,35 @@ def test_a_keyed_core_refusal_answers_422_with_key_and_values() -> None:
 def test_every_core_key_has_english_words() -> None:
     for key in ("step_too_small", "diverged", "near_pole", "not_finite", "off_sphere", "invalid_parameter"):
         assert key in MESSAGES
+
+
+def test_a_run_that_blows_up_is_a_divergence_not_bad_input() -> None:
+    # g = 1000 m/s² at dt = 0.05 s: the angles' RK4 blows up, and the speed it rebuilt from its angles (above
+    # 1e7 m/s, or not finite) was refused as "invalid speed = 49745656823029380", as if the user had given it
+    p = pl.Pendulum(g=1000.0)
+    start = p.state_from_angles(1.0, 0, 0, 2.0)
+    e = _refusal(lambda: pl.simulate(p, start, t_end=5.0, dt=0.05, method="rk4_angles"))
+    assert isinstance(e, pl.IntegrationError), repr(e)
+    assert (e.key, e.values) == ("diverged", {"t": "0.1", "method": "rk4_angles", "dt": "0.05"})  # type: ignore[attr-defined]
+    words = str(e)
+    assert words.startswith("the integration diverged at t = 0.1 s with method 'rk4_angles' (dt = 0.05 s)"), (
+        words
+    )
+    assert words.endswith(
+        "reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"
+    )
+    assert "speed" not in words and "invalid" not in words
+    assert "{" not in message("diverged", **e.values)  # type: ignore[attr-defined]
+    # the same start at dt = 1 ms runs
+    assert pl.simulate(p, start, t_end=1.0, dt=1e-3, method="rk4_angles").t[-1] == 1.0
+
+
+def test_a_speed_the_user_gives_is_still_refused_as_input() -> None:
+    p = pl.Pendulum()
+    for run in (
+        lambda: p.state_from_angles(1.0, 0, 1e8, 0),
+        lambda: pl.simulate(p, pl.State(np.array([0, 0, -1.0]), np.array([2e7, 0, 0])), t_end=1.0),
+    ):
+        e = _refusal(run)
+        assert isinstance(e, pl.InvalidInputError) and e.key == "invalid_parameter", repr(e)  # type: ignore[attr-defined]
+        assert re.match(r"invalid speed = (1e8|2e7): a speed \|v\| <= 1e7 m/s$", str(e)), str(e)

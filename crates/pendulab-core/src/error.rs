@@ -90,9 +90,11 @@ pub enum Error {
         /// Absolute tolerance in force.
         atol: f64,
     },
-    /// The state became NaN or infinite during integration.
+    /// The state the integrator computed (not one the user gave) became NaN or infinite, or left the
+    /// bounds of a state ([`crate::limits::STATE`]): the integration diverged.
     #[error(
-        "the solution became non-finite at t = {} s with method '{method}' (dt = {} s); {}",
+        "the integration diverged at t = {} s with method '{method}' (dt = {} s): the computed state \
+         became non-finite or left the bounds of a state; {}",
         Shown(*t),
         Shown(*dt),
         diverged_advice(method)
@@ -283,12 +285,18 @@ impl std::fmt::Display for Shown {
     }
 }
 
-/// What to do after a divergence: a smaller step, and a structure-preserving method unless one is in use.
+/// What to do after a divergence: a smaller step (tighter tolerances for `dop853`), and an adaptive or
+/// structure-preserving method unless one is in use (the spring's and the string's drivers have one
+/// method each).
 fn diverged_advice(method: &str) -> &'static str {
     if method.starts_with("rattle") {
         "reduce dt (the step must resolve the fastest motion, dt·ω ≪ 1)"
+    } else if method.starts_with("dop853") {
+        "lower rtol and atol, or use the structure-preserving 'rattle'"
+    } else if method.starts_with("spring") || method.starts_with("string") {
+        "reduce dt"
     } else {
-        "reduce dt or use 'rattle'"
+        "reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"
     }
 }
 
@@ -352,7 +360,13 @@ mod tests {
         let e = require_non_negative("damping", -1.0, "a finite number >= 0");
         assert_eq!(e.unwrap_err().to_string(), "invalid damping = -1: a finite number >= 0");
         let d = Error::Diverged { t: 20.0, method: "rk4", dt: 0.01 };
-        assert!(d.to_string().contains("t = 20 s with method 'rk4' (dt = 0.01 s)"), "{d}");
+        assert!(
+            d.to_string().starts_with("the integration diverged at t = 20 s with method 'rk4' (dt = 0.01 s)"),
+            "{d}"
+        );
+        assert!(d
+            .to_string()
+            .ends_with("reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"));
         assert_eq!(d.key().unwrap().1[2], ("dt", "0.01".to_string()));
     }
 }

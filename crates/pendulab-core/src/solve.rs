@@ -10,7 +10,7 @@
 //!   with its dense output (order 7); fixed-step methods land on each time by shortening the one
 //!   step that would cross it.
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shown};
 use crate::integrate::Stats;
 use crate::model::Model;
 use crate::state::State;
@@ -311,12 +311,21 @@ pub(crate) fn check_save_times(ts: &[f64], t0: f64, t_end: f64) -> Result<()> {
     }
     if let Some(bad) = ts.iter().find(|t| !t.is_finite() || **t < t0 || **t > t_end) {
         return Err(Error::InvalidSaveTimes {
-            reason: format!("{bad} s is not a finite time within [t0, t_end] = [{t0}, {t_end}] s"),
+            reason: format!(
+                "{} s is not a finite time within [t0, t_end] = [{}, {}] s",
+                Shown(*bad),
+                Shown(t0),
+                Shown(t_end)
+            ),
         });
     }
     if let Some(w) = ts.windows(2).find(|w| w[1] <= w[0]) {
         return Err(Error::InvalidSaveTimes {
-            reason: format!("times must be strictly increasing, but {} s is followed by {} s", w[0], w[1]),
+            reason: format!(
+                "times must be strictly increasing, but {} s is followed by {} s",
+                Shown(w[0]),
+                Shown(w[1])
+            ),
         });
     }
     Ok(())

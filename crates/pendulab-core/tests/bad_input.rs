@@ -87,3 +87,32 @@ fn a_run_that_blows_up_is_an_error_not_a_nan() {
         assert!(st.state().is_finite());
     }
 }
+
+#[test]
+fn a_blow_up_of_the_angle_method_is_a_divergence_not_a_refused_speed() {
+    // g = 1000 m/s² at dt = 0.05 s: the angles' RK4 blows up; the speed it rebuilt from still-finite
+    // angles (|v| > 1e7 m/s) was refused as "invalid speed = …", as if the user had given it
+    let model = IdealPendulum::new(1.0, 1.0, 1000.0).unwrap();
+    for theta in [0.5, 1.0, 2.0, 2.5] {
+        let s0 = State::from_angles(pendulab_core::Model::params(&model), theta, 0.0, 0.0, 2.0).unwrap();
+        let run =
+            Solver::new(model, 0.0, s0, 5.0, &fixed(Method::Rk4Angles, 0.05), SaveAt::Every(1), 1 << 30)
+                .and_then(|mut s| s.advance(u64::MAX).map(|_| ()));
+        let e = run.unwrap_err();
+        assert!(
+            matches!(e, Error::Diverged { method: "rk4_angles", dt, .. } if dt == 0.05),
+            "θ₀ = {theta}: {e}"
+        );
+        let words = e.to_string();
+        assert!(
+            words.starts_with("the integration diverged at t = ") && words.contains("(dt = 0.05 s)"),
+            "{words}"
+        );
+        assert!(words
+            .ends_with("reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"));
+    }
+    // the same speed given by the user is refused as input
+    let p = pendulab_core::Model::params(&model);
+    let e = State::from_angles(p, 1.0, 0.0, 2e7, 0.0).unwrap_err();
+    assert_eq!(e.to_string(), "invalid speed = 2e7: a speed |v| <= 1e7 m/s");
+}

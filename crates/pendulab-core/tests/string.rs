@@ -373,7 +373,10 @@ fn bad_save_times_are_refused_naming_the_time() {
     let sp = string(0.0);
     for (times, needle) in [
         (vec![0.5, 0.2], "0.5 s is followed by 0.2 s"),
-        (vec![0.1, f64::NAN], "NaN s is not a finite time"),
+        (vec![0.1, f64::NAN], "nan s is not a finite time"),
+        // numbers as a user writes them (error::Shown), not 300 digits of {}
+        (vec![-1e-300, 1.0], "-1e-300 s is not a finite time"),
+        (vec![0.1, 1e15], "1e15 s is not a finite time"),
         (vec![0.1, 4.0], "4 s is not a finite time within [t0, t_end] = [0, 3] s"),
         (vec![-0.5, 1.0], "-0.5 s is not a finite time"),
         (vec![], "no save times"),

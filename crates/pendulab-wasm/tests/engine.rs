@@ -263,8 +263,8 @@ fn refusals_carry_the_servers_message_keys() {
     }
 }
 
-/// A command that is carried out but fails (an error of the core, unkeyed) between two refusals leaves
-/// each refusal its own key.
+/// A command that is carried out but fails (an error of the core, keyed by its kind) between two
+/// refusals leaves each refusal its own key.
 #[test]
 fn a_failing_command_between_refusals_keeps_their_keys_apart() {
     let mut e = Engine::new(CONFIG).unwrap();
@@ -278,6 +278,12 @@ fn a_failing_command_between_refusals_keeps_their_keys_apart() {
     let errors: Vec<&Value> = notices.iter().filter(|n| n["type"] == "error").collect();
     assert_eq!(errors.len(), 3, "{errors:?}");
     assert_eq!(errors[0]["key"], "too_small");
-    assert!(errors[1].get("key").is_none() && errors[1]["message"].as_str().unwrap().contains("damping"));
+    assert!(errors[1]["message"].as_str().unwrap().contains("invalid damping = -1: "), "{}", errors[1]);
+    assert_eq!(errors[1]["key"], "invalid_parameter");
+    assert_eq!(
+        (&errors[1]["values"]["name"], &errors[1]["values"]["value"]),
+        (&"damping".into(), &"-1".into())
+    );
+    assert_eq!(errors[1]["command"], "set_model");
     assert_eq!(errors[2]["key"], "unknown_key");
 }

@@ -100,6 +100,14 @@ def _message(m: bytes | str) -> Message:
     return m if isinstance(m, bytes) else json.loads(m)
 
 
+def _refused(e: Exception, command: str | None) -> CommandError:
+    """A refusal of the core (or of a scenario file) as a :class:`CommandError` in one line, keyed as the
+    core keyed it (``key`` and ``values`` of its exception: ``messages.json``) for a page that words it in
+    its language; a refusal the core did not key keeps its English words alone."""
+    key, values = getattr(e, "key", None), getattr(e, "values", None)
+    return CommandError(" ".join(str(e).split()), command=command, key=key, values=values)
+
+
 class Session:
     """One client's lab (module doc). Not thread-safe: one owner ticks it.
 
@@ -129,7 +137,7 @@ class Session:
             try:
                 return ("setup", self._setup(cmd.name))
             except _LOAD_ERRORS as e:
-                raise CommandError(" ".join(str(e).split()), command=cmd.type) from None
+                raise _refused(e, cmd.type) from None
         return cmd.model_dump_json(exclude_none=True)
 
     def tick(
@@ -176,7 +184,7 @@ class Session:
         try:
             return _records(self.core.apply(item))
         except (InvalidInputError, IntegrationError) as e:
-            raise CommandError(" ".join(str(e).split()), command=cmd.type) from None
+            raise _refused(e, cmd.type) from None
 
     def advance(self, elapsed: float, budget_seconds: float = TICK_BUDGET) -> np.ndarray | None:
         """Advances by ``elapsed`` wall-clock seconds × time_scale within ``budget_seconds``; the records
@@ -184,14 +192,14 @@ class Session:
         try:
             return _records(self.core.advance(elapsed, budget_seconds))
         except (InvalidInputError, IntegrationError) as e:
-            raise CommandError(str(e)) from None
+            raise _refused(e, None) from None
 
     def take_pending_steps(self, budget_seconds: float = TICK_BUDGET) -> np.ndarray | None:
         """Takes the waiting steps of ``step`` commands within ``budget_seconds``; the record reached."""
         try:
             return _records(self.core.take_pending_steps(budget_seconds))
         except (InvalidInputError, IntegrationError) as e:
-            raise CommandError(str(e), command="step") from None
+            raise _refused(e, "step") from None
 
     def fill_errors(self, records: np.ndarray, budget_seconds: float = TICK_BUDGET) -> np.ndarray:
         """``records`` (the current stepper's, in time order) with ``error_x`` [m] filled within

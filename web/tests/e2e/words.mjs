@@ -4,7 +4,8 @@
 // collected, and no text of the German or French page may be one of the English page's, except the
 // words that are the same in that language (SAME: names, symbols, cognates). So a scenario title, a model
 // description, a region's label or a server message left in English fails here. Then a value the server
-// refuses (a length of −1 m) is explained in German from the server's message key (messages.json).
+// refuses (a length of −1 m) is explained in German from the server's message key (messages.json), and one
+// the core refuses (a state off the sphere) in German and French from the core's key.
 const SAME = {
   de: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Integrator', 'Pause', 'rad', 'ZVD'],
   fr: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Pause', 'rad', 'Simple', 'angle θ [°]', 'distance |x| [m]', 'tension T [N]', 'amplitude', 'axes', 'exact', 'tension', 'tension max', 'tension min', 'ZVD'],
@@ -53,6 +54,13 @@ export async function checkWords(page, { check, WAIT }) {
       check(/^aus dem Link weggelassen: at = "gestern" ist keine endliche Zahl$/.test(link.trim()), `a link's unreadable value is reported in German: "${link}"`);
       await odd.close();
     }
+    // a command the core refuses (a state off the sphere): worded from the core's message key, as the server's
+    const sphere = { de: 'der Start liegt nicht auf der Kugel: (|x| - l)/l = -0.2929 überschreitet die Toleranz 1e-9', fr: 'le départ n’est pas sur la sphère : (|x| - l)/l = -0.2929 dépasse la tolérance 1e-9' }[lang];
+    await p.evaluate(() => window.pendulab.send({ type: 'set_state', x: [0.5, 0, -0.5], v: [0, 0, 0], project: false }));
+    const core = await p
+      .waitForFunction((w) => document.getElementById('message').textContent.trim() === w && w, sphere, { timeout: WAIT })
+      .then((h) => h.jsonValue(), () => p.evaluate(() => document.getElementById('message').textContent));
+    check(core.trim() === sphere, `${lang}: a refusal of the core in the page's language, from its message key: "${core.trim()}"`);
     await p.close();
   }
   // the scenarios whose notes and rows differ from the rosette's (issue 28): a damped model (its own parameters,

@@ -38,6 +38,27 @@ describe('server messages', () => {
   });
 });
 
+describe("the core's refusals in a lab session", () => {
+  it('a command the core refuses (a state off the sphere, a parameter out of range) in en, de and fr', () => {
+    // as the server and the in-page engine send them (LiveSession::error_out): the core's English words, its key
+    const sphere = parseNotice(JSON.stringify({ type: 'error', message: 'state is not on TS² (|x| = l, x·v = 0): (|x| - l)/l = -0.2929 exceeds the tolerance 1e-9; pass project=True to move it onto TS²', command: 'set_state', key: 'off_sphere', values: { what: '(|x| - l)/l', value: '-0.2929', tolerance: '1e-9' } }));
+    const damping = parseNotice(JSON.stringify({ type: 'error', message: 'invalid damping = -1: a number in [0, 100] 1/s', command: 'set_model', key: 'invalid_parameter', values: { name: 'damping', value: '-1', allowed: 'a number in [0, 100] 1/s' } }));
+    if (sphere.type !== 'error' || damping.type !== 'error') throw new Error('not error notices');
+    const words = (lang: 'en' | 'de' | 'fr') => {
+      setLanguage(lang);
+      return [serverWords(sphere), serverWords(damping)];
+    };
+    expect(words('en')).toEqual(['the start is not on the sphere: (|x| - l)/l = -0.2929 exceeds the tolerance 1e-9', 'damping = -1 is not allowed: a number in [0, 100] 1/s']);
+    const [de, deDamping] = words('de');
+    expect(de).toBe('der Start liegt nicht auf der Kugel: (|x| - l)/l = -0.2929 überschreitet die Toleranz 1e-9');
+    expect(deDamping).toBe('Reibung (lineare Dämpfung) c = -1 ist nicht erlaubt: a number in [0, 100] 1/s'); // the allowed range stays English
+    const [fr, frDamping] = words('fr');
+    expect(fr).toBe('le départ n’est pas sur la sphère : (|x| - l)/l = -0.2929 dépasse la tolérance 1e-9');
+    expect(frDamping).toMatch(/ = -1 n’est pas permis : a number in \[0, 100\] 1\/s$/);
+    setLanguage('en');
+  });
+});
+
 describe('HTTP error answers', () => {
   it('a keyed answer (busy, time limit, device busy) in the page language; an unkeyed one as the server wrote it', () => {
     const busy = { detail: 'busy: 8 computations are waiting; try again in a moment', key: 'busy', values: { waiting: 8 } };
@@ -65,11 +86,11 @@ describe('HTTP error answers', () => {
   });
 
   it("the core's common refusals (diverged, pole, off the sphere, a bad parameter) in the page language", () => {
-    const diverged = { detail: 'the solution became non-finite …', key: 'diverged', values: { t: '20', method: 'rk4', dt: '10' } };
+    const diverged = { detail: 'the integration diverged …', key: 'diverged', values: { t: '20', method: 'rk4', dt: '10' } };
     const pole = { detail: 'x', key: 'near_pole', values: { t: '0.5' } };
     const length = { detail: 'x', key: 'invalid_parameter', values: { name: 'length', value: '-1', allowed: 'a number in [1e-6, 1e4] m' } };
     setLanguage('de');
-    expect(httpProblem(diverged, 'HTTP 422')).toBe('die Lösung wurde bei t = 20 s mit dem Verfahren rk4 unendlich (dt = 10 s): dt verkleinern');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('die Integration ist bei t = 20 s mit dem Verfahren rk4 divergiert (dt = 10 s): dt verkleinern oder ein adaptives (dop853) oder strukturerhaltendes (rattle) Verfahren wählen');
     expect(httpProblem(pole, 'HTTP 422')).toContain('bei t = 0.5 s einen Pol');
     expect(httpProblem(length, 'HTTP 422')).toMatch(/^Länge.* = -1 ist nicht erlaubt/);
     setLanguage('fr');
@@ -80,13 +101,13 @@ describe('HTTP error answers', () => {
     expect(httpProblem(fault, 'HTTP 500')).toBe("erreur interne du serveur (un défaut du logiciel : merci de le signaler) ; détails (en anglais) : KeyError: 'q'");
     setLanguage('de');
     expect(httpProblem(fault, 'HTTP 500')).toMatch(/^interner Fehler des Servers .*bitte melden\); Details \(englisch\): KeyError: 'q'$/);
-    const stopped = { type: 'error' as const, message: 'x', key: 'integration_stopped', values: { detail: 'the solution became…', why: 'diverged', t: '2.5', method: 'rk4', dt: '0.05' } };
-    expect(serverWords(stopped)).toBe('die Rechnung ist stehen geblieben (die Lösung wurde bei t = 2.5 s mit dem Verfahren rk4 unendlich (dt = 0.05 s): dt verkleinern); angehalten');
+    const stopped = { type: 'error' as const, message: 'x', key: 'integration_stopped', values: { detail: 'the integration diverged…', why: 'diverged', t: '2.5', method: 'rk4', dt: '0.05' } };
+    expect(serverWords(stopped)).toBe('die Rechnung ist stehen geblieben (die Integration ist bei t = 2.5 s mit dem Verfahren rk4 divergiert (dt = 0.05 s): dt verkleinern oder ein adaptives (dop853) oder strukturerhaltendes (rattle) Verfahren wählen); angehalten');
     setLanguage('fr');
     expect(serverWords({ ...stopped, values: { detail: 'step size underflow…', why: 'step_too_small', t: '3', h: '1e-15' } })).toContain('(le pas est devenu trop petit à t = 3 s');
     expect(serverWords({ ...stopped, values: { detail: 'English words', why: 'unknown_kind' } })).toBe('le calcul s’est arrêté (English words) ; en pause');
     setLanguage('en');
-    expect(httpProblem(diverged, 'HTTP 422')).toBe('the solution became non-finite at t = 20 s with method rk4 (dt = 10 s): reduce dt');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('the integration diverged at t = 20 s with method rk4 (dt = 10 s): reduce dt, or choose an adaptive (dop853) or structure-preserving (rattle) method');
   });
 });
 

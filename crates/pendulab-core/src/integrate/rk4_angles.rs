@@ -54,12 +54,23 @@ pub fn to_angles(s: &State, length: f64) -> [f64; 4] {
     [theta, phi, s.v.dot(e_theta) / length, s.v.dot(e_phi) / (length * st)]
 }
 
-fn guard(t: f64, y: &[f64; 4]) -> Result<()> {
+/// Refuses a stage at time `t` \[s\] of a step of `h` \[s\]: a non-finite angle or rate is a divergence
+/// ([`Error::Diverged`]), sin θ below [`POLE_LIMIT`] a pole ([`Error::PoleSingularity`]).
+fn guard(t: f64, y: &[f64; 4], h: f64) -> Result<()> {
+    if !y.iter().all(|c| c.is_finite()) {
+        return Err(diverged(t, h));
+    }
     let sin_theta = y[0].sin().abs();
-    if sin_theta < POLE_LIMIT || !sin_theta.is_finite() {
+    if sin_theta < POLE_LIMIT {
         return Err(Error::PoleSingularity { t, theta: y[0], sin_theta, limit: POLE_LIMIT });
     }
     Ok(())
+}
+
+/// The divergence of a step of `h` \[s\] at time `t` \[s\]: the angles this method computed (never the
+/// user's) became non-finite or gave a speed beyond the bounds of a state.
+fn diverged(t: f64, h: f64) -> Error {
+    Error::Diverged { t, method: "rk4_angles", dt: h }
 }
 
 impl Rk4Angles {
@@ -67,7 +78,7 @@ impl Rk4Angles {
     pub fn step_angles(model: &IdealPendulum, t: f64, y: [f64; 4], h: f64) -> Result<[f64; 4]> {
         let dy = Self::increment(model, t, y, h)?;
         let y1 = std::array::from_fn(|i| y[i] + dy[i]);
-        guard(t + h, &y1)?;
+        guard(t + h, &y1, h)?;
         Ok(y1)
     }
 
@@ -84,16 +95,16 @@ impl Rk4Angles {
         h: f64,
     ) -> Result<[f64; 4]> {
         let add = |a: &[f64; 4], k: &[f64; 4], c: f64| std::array::from_fn::<f64, 4, _>(|i| a[i] + c * k[i]);
-        guard(t, &y)?;
+        guard(t, &y, h)?;
         let k1 = rhs(t, y);
         let y2 = add(&y, &k1, 0.5 * h);
-        guard(t + 0.5 * h, &y2)?;
+        guard(t + 0.5 * h, &y2, h)?;
         let k2 = rhs(t + 0.5 * h, y2);
         let y3 = add(&y, &k2, 0.5 * h);
-        guard(t + 0.5 * h, &y3)?;
+        guard(t + 0.5 * h, &y3, h)?;
         let k3 = rhs(t + 0.5 * h, y3);
         let y4 = add(&y, &k3, h);
-        guard(t + h, &y4)?;
+        guard(t + h, &y4, h)?;
         let k4 = rhs(t + h, y4);
         Ok(std::array::from_fn(|i| h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])))
     }
@@ -132,7 +143,7 @@ impl FixedStep for Rk4Angles {
             *self = Self { y: to_angles(s, l), ..Self::default() };
         }
         let y = self.y;
-        guard(t, &y)?;
+        guard(t, &y, h)?;
         let dy = if model.is_ideal() {
             Self::increment(&ideal, t, y, h)?
         } else {
@@ -148,9 +159,11 @@ impl FixedStep for Rk4Angles {
             y1[1] += TAU;
             comp[1] -= TAU_LO;
         }
-        guard(t + h, &y1)?;
+        guard(t + h, &y1, h)?;
         let [theta, phi, theta_dot, phi_dot] = y1;
-        *s = State::from_angles(ideal.params(), theta, phi, theta_dot, phi_dot)?;
+        // finite angles whose speed l·|(θ̇, φ̇ sin θ)| passes the bounds of a state: diverged, not bad input
+        *s = State::from_angles(ideal.params(), theta, phi, theta_dot, phi_dot)
+            .map_err(|_| diverged(t + h, h))?;
         (self.y, self.comp, self.last) = (y1, comp, Some(*s));
         Ok(())
     }

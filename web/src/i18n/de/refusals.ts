@@ -17,7 +17,7 @@ export const DE_REFUSALS: RefusalsWords = {
   'server.device_full': 'zu viele Laborsitzungen von diesem Gerät: {have} sind offen, mehr darf ein Gerät nicht haben; einen anderen Tab schließen',
   'server.device_busy': 'zu viele Berechnungen gleichzeitig von diesem Gerät: höchstens {most} dürfen für ein Gerät laufen oder warten; die Antworten abwarten, dann erneut versuchen',
   'server.step_too_small': 'die Schrittweite wurde bei t = {t} s zu klein (h = {h} s): die Bewegung ändert sich für die Toleranzen zu schnell',
-  'server.diverged': 'die Lösung wurde bei t = {t} s mit dem Verfahren {method} unendlich (dt = {dt} s): dt verkleinern',
+  'server.diverged': 'die Integration ist bei t = {t} s mit dem Verfahren {method} divergiert (dt = {dt} s): dt verkleinern oder ein adaptives (dop853) oder strukturerhaltendes (rattle) Verfahren wählen',
   'server.near_pole': 'die Rechnung hat bei t = {t} s einen Pol erreicht (das Pendel genau nach oben oder unten), wo diese Gleichungen versagen: ein kartesisches Verfahren wählen',
   'server.not_finite': '{name}[{index}] = {value} ist keine endliche Zahl',
   'server.off_sphere': 'der Start liegt nicht auf der Kugel: {what} = {value} überschreitet die Toleranz {tolerance}',

@@ -16,7 +16,7 @@ export const EN_REFUSALS = {
   'server.device_full': 'too many lab sessions from your device: {have} are open, the most one device may have; close another tab',
   'server.device_busy': 'too many computations at once from your device: at most {most} may run or wait for one device; wait for the answers, then try again',
   'server.step_too_small': 'the step size became too small at t = {t} s (h = {h} s): the motion changes too fast for the tolerances',
-  'server.diverged': 'the solution became non-finite at t = {t} s with method {method} (dt = {dt} s): reduce dt',
+  'server.diverged': 'the integration diverged at t = {t} s with method {method} (dt = {dt} s): reduce dt, or choose an adaptive (dop853) or structure-preserving (rattle) method',
   'server.near_pole': 'the computation reached a pole (the pendulum straight up or down) at t = {t} s, where these equations fail: use a Cartesian method',
   'server.not_finite': '{name}[{index}] = {value} is not a finite number',
   'server.off_sphere': 'the start is not on the sphere: {what} = {value} exceeds the tolerance {tolerance}',

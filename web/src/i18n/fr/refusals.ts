@@ -17,7 +17,7 @@ export const FR_REFUSALS: RefusalsWords = {
   'server.device_full': 'trop de sessions du labo depuis votre appareil : {have} sont ouvertes, le maximum par appareil ; fermer un autre onglet',
   'server.device_busy': 'trop de calculs à la fois depuis votre appareil : au plus {most} peuvent tourner ou attendre pour un appareil ; attendre les réponses, puis réessayer',
   'server.step_too_small': 'le pas est devenu trop petit à t = {t} s (h = {h} s) : le mouvement change trop vite pour les tolérances',
-  'server.diverged': 'la solution est devenue infinie à t = {t} s avec la méthode {method} (dt = {dt} s) : réduire dt',
+  'server.diverged': 'l’intégration a divergé à t = {t} s avec la méthode {method} (dt = {dt} s) : réduire dt, ou choisir une méthode adaptative (dop853) ou qui préserve la structure (rattle)',
   'server.near_pole': 'le calcul a atteint un pôle (le pendule tout droit en haut ou en bas) à t = {t} s, où ces équations échouent : choisir une méthode cartésienne',
   'server.not_finite': '{name}[{index}] = {value} n’est pas un nombre fini',
   'server.off_sphere': 'le départ n’est pas sur la sphère : {what} = {value} dépasse la tolérance {tolerance}',

@@ -12,7 +12,7 @@ use super::budget::{Budget, Slicer};
 use super::error::{LiveError, Reference};
 use super::frame::{Record, FRAME_FIELDS};
 use super::pendulum::{LivePendulum, LiveStepper};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shown};
 use crate::integrate::Method;
 use crate::state::State;
 use crate::stepper::SolveOptions;
@@ -211,7 +211,7 @@ impl LiveSession {
                 self.stop = Some(e.clone());
                 return Err(Error::Refused(format!(
                     "integration stopped at t = {} s: {e}; paused",
-                    self.stepper.t()
+                    Shown(self.stepper.t())
                 )));
             }
         }
@@ -269,7 +269,7 @@ impl LiveSession {
             self.stop = Some(e.clone());
             return Err(Error::Refused(format!(
                 "integration stopped at t = {} s: {e}; paused",
-                self.stepper.t()
+                Shown(self.stepper.t())
             )));
         }
         self.lagging = !done;

@@ -138,9 +138,11 @@ impl LiveSession {
     }
 
     /// The notice of an error of a command, a step or the advance: keyed `integration_stopped` (with
-    /// the integrator's words as `detail`) when the integration stopped, else plain. When the
-    /// integrator's error is of a common kind ([`Error::key`]), `why` names its key and its values
-    /// are beside `detail` (flat: a page words the detail in its language too).
+    /// the integrator's words as `detail`) when the integration stopped. When the integrator's error
+    /// is of a common kind ([`Error::key`]), `why` names its key and its values are beside `detail`
+    /// (flat: a page words the detail in its language too). A refused command of a common kind (a
+    /// parameter out of range, a state off the sphere or not finite) is keyed by its kind, the rest
+    /// plain.
     fn error_out(&mut self, e: Error, command: Option<&'static str>) -> Out {
         match self.stop.take() {
             Some(stop) => {
@@ -153,7 +155,13 @@ impl LiveSession {
                 }
                 Out::Keyed(e.to_string(), command, "integration_stopped", values)
             }
-            None => Out::Error(e.to_string(), command),
+            None => match e.key() {
+                Some((key, values)) => {
+                    let values = values.into_iter().map(|(k, v)| (k.to_string(), json!(v))).collect();
+                    Out::Keyed(e.to_string(), command, key, serde_json::Value::Object(values))
+                }
+                None => Out::Error(e.to_string(), command),
+            },
         }
     }
 
@@ -255,5 +263,31 @@ mod tests {
         let expected = json!({ "detail": diverged.to_string(), "why": "diverged", "t": "2.5", "method": "rk4", "dt": "0.05" });
         assert_eq!(values, expected);
         assert!(matches!(s.error_out(Error::Refused("x".into()), None), Out::Error(..)), "once");
+    }
+
+    /// A command the core refuses for a common reason (a state off the sphere, a parameter out of its
+    /// range) is keyed by that reason, so that a page words it in its language; a rarer one is plain.
+    #[test]
+    fn a_command_the_core_refuses_is_keyed_by_its_kind() {
+        use crate::live::session::StateSpec;
+        let p = LivePendulum::new("ideal", 1.0, 1.0, 9.81, &[]).unwrap();
+        let state = p.state_from_angles(1.0, 0.0, 0.0, 2.0).unwrap();
+        let mut s = LiveSession::new(Setup::new(p, state, Method::Rattle, 1e-3)).unwrap();
+        let (x, v) = (glam::DVec3::new(0.5, 0.0, -0.5), glam::DVec3::ZERO);
+        let e = s.apply(Command::SetState(StateSpec::Cartesian { x, v, project: false })).unwrap_err();
+        let Out::Keyed(message, Some("set_state"), "off_sphere", values) = s.error_out(e, Some("set_state"))
+        else {
+            panic!("not keyed")
+        };
+        assert!(message.starts_with("state is not on TS²"), "{message}");
+        assert_eq!(values, json!({ "what": "(|x| - l)/l", "value": "-0.2929", "tolerance": "1e-9" }));
+        let damped = Command::SetModel { model: "damped".into(), params: vec![("damping".into(), -1.0)] };
+        let e = s.apply(damped).unwrap_err();
+        let Out::Keyed(_, _, "invalid_parameter", values) = s.error_out(e, Some("set_model")) else {
+            panic!("not keyed")
+        };
+        assert_eq!((&values["name"], &values["value"]), (&json!("damping"), &json!("-1")));
+        let e = s.apply(Command::SetModel { model: "sprung".into(), params: vec![] }).unwrap_err();
+        assert!(matches!(s.error_out(e, Some("set_model")), Out::Error(m, _) if m.contains("unknown model")));
     }
 }
