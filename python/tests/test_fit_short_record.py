@@ -61,6 +61,12 @@ def test_the_reason_of_a_short_record_is_keyed_and_a_long_record_pays_nothing(
         "text": "a record of 0.3 of a swing does not determine it (the profile ...)",
     }
 
+    one = (
+        "the record spans only 0.29 of a small-swing period 2π√(l/g) = 1.59 s: pivot_x is not determined (..."
+    )
+    assert keyed(one)["key"] == "shortUndetermined"
+    assert keyed(one)["values"] == {"periods": "0.29", "period": "1.59", "others": "pivot_x"}
+
     def never(*_: object) -> None:
         raise AssertionError("profiled a record of three periods")
 
@@ -85,3 +91,15 @@ def test_a_short_record_whose_profile_agrees_with_the_curvature_keeps_its_bar() 
     assert res.determined["g"] and not res.findings
     assert (hi - lo) / 2.0 / 1.96 <= res.stderr["g"] < 1.2 * (hi - lo) / 2.0 / 1.96
     assert abs(res.params["g"] - 9.81) < 3.0 * res.stderr["g"]
+
+
+def test_with_length_and_g_not_determined_the_pivots_bar_does_not_hold_them_fixed() -> None:
+    """Seed 3: the curvature leaves length and g not determined, and pivot_x kept the bar computed
+    with them held, 0.293 ± 0.0009 m for 0.31 m (18.7 bars off, no warning). Its profile with them
+    free is 0.268–0.318 m: the bar is taken from it, and said."""
+    r = fv.trial(CASE_20, 3, 60.0)
+    assert r["status"] == "ok", r
+    assert not r["determined"]["length"] and not r["determined"]["g"]
+    off = r["off_in_stderr"]["pivot_x"]
+    assert not r["determined"]["pivot_x"] or off <= 3.0, (r["params"]["pivot_x"], r["stderr"]["pivot_x"])
+    assert any(w.startswith("the record spans only") and "pivot_x" in w for w in r["model_warnings"])

@@ -11,7 +11,10 @@ length, g and every parameter correlated with them by |ρ| ≥ :data:`CORRELATED
 determined, with a warning that names them, the record's span in periods and what would help;
 where both profiles close, each profiled bar is widened to its 95 % profile interval (the larger side
 over 1.96; an asymmetric interval is said), and the correlated parameters not profiled are widened by
-the largest factor of those they are correlated with. Records of a period or more pay nothing.
+the largest factor of those they are correlated with. Where the curvature already left the length
+or g not determined, the bars of the others were computed with them held (case 20: pivot_x 6–21
+bars off): the first two determined parameters other than the start are profiled with every
+unknown free instead (:func:`_held`). Records of a period or more pay nothing.
 Units: each parameter's (SI); times [s].
 """
 
@@ -25,7 +28,7 @@ from typing import Any
 import numpy as np
 
 from .multistart import FLOOR_PERIODS
-from .problem import bounds_of, scale_of
+from .problem import STATE_NAMES, bounds_of, scale_of
 from .profile import _end, _Rise
 
 #: A record spanning fewer small-swing periods 2π√(l/|g|) of the result than this has its bars of
@@ -84,8 +87,10 @@ def check_short_record(res: Any, time_up: Callable[[], bool], checkable: bool = 
     period = 2.0 * math.pi * math.sqrt(length / abs(g))
     periods = float(res.t[-1] - res.t[0]) / period
     core = [n for n in ("length", "g") if n in res.params and res.determined[n]]
-    if periods >= SHORT_PERIODS or not core:
+    if periods >= SHORT_PERIODS:
         return []
+    if not core:  # the curvature left them not determined: the other bars hold them fixed
+        return _held(res, periods, period, time_up, checkable)
     linked = _linked(res, core)
     profiled: dict[str, tuple[float, float]] = {}
     unchecked = "the fit stopped before the profile likelihood was checked"
@@ -102,6 +107,33 @@ def check_short_record(res: Any, time_up: Callable[[], bool], checkable: bool = 
         why = "the profile likelihood does not close"
         return [_undetermined(res, core + linked, periods, period, profiled, why)]
     return _widened(res, core, linked, periods, period, profiled)
+
+
+def _held(res: Any, periods: float, period: float, time_up: Callable[[], bool], checkable: bool) -> list[str]:
+    """Length or g fitted and not determined by the curvature: the bars of the other parameters are
+    computed with them held at the fit's values, too narrow along the valley where they move
+    (case 20: pivot_x ± 0.0009 m, 6–21 bars off, its profile 0.268–0.318 m). The first
+    MAX_PROFILES determined ones that are not the start (STATE_NAMES) are profiled with every other
+    unknown free: an open profile, not determined; a closed one, the bar taken from it."""
+    if not any(n in res.params and not res.determined[n] for n in ("length", "g")):
+        return []
+    chosen = [n for n in res.names if res.determined[n] and n not in STATE_NAMES][:MAX_PROFILES]
+    profiled: dict[str, tuple[float, float]] = {}
+    why = "the fit stopped before the profile likelihood was checked"
+    try:
+        for name in chosen if checkable else []:
+            profiled[name] = _profile(res, name, period, time_up)
+    except _Late:
+        pass
+    closed = {n: e for n, e in profiled.items() if all(map(math.isfinite, e))}
+    unchecked = [n for n in chosen if n not in profiled]
+    said = [_undetermined(res, unchecked, periods, period, {}, why)] if unchecked else []
+    open_ = {n: e for n, e in profiled.items() if n not in closed}
+    if open_:
+        said.append(
+            _undetermined(res, list(open_), periods, period, open_, "the profile likelihood does not close")
+        )
+    return said + (_widened(res, [], [], periods, period, closed) if closed else [])
 
 
 def _linked(res: Any, core: list[str]) -> list[str]:
@@ -160,10 +192,11 @@ def _undetermined(
     shown = "; ".join(_shown(res, n, lo, hi) for n, (lo, hi) in profiled.items())
     return (
         f"the record spans only {periods:.2g} of a small-swing period 2π√(l/g) = {period:.3g} s: "
-        f"{', '.join(names)} are not determined (the curvature's error bars are too narrow along the "
+        f"{', '.join(names)} {'is' if len(names) == 1 else 'are'} not determined (the curvature's error "
+        "bars are too narrow along the "
         f"valley where they trade off; {why}"
         + (f": 95 % profile {shown}" if shown else "")
-        + "). Record at least one full swing to determine them"
+        + f"). Record at least one full swing to determine {'it' if len(names) == 1 else 'them'}"
     )
 
 

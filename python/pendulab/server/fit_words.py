@@ -94,6 +94,13 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
         ),
     ),
     (
+        "shortUndetermined",
+        _p(
+            "the record spans only {periods} of a small-swing period 2π√(l/g) = {period} s: {others:l} "
+            "is not determined ("
+        ),
+    ),
+    (
         "shortWidened",
         _p(
             "the record spans only {periods} of a small-swing period 2π√(l/g) = {period} s: the error "
