@@ -114,6 +114,9 @@ impl Model for Handle {
     fn is_hybrid(&self) -> bool {
         self.0.base.is_hybrid()
     }
+    fn next_break(&self, t: f64) -> f64 {
+        self.0.base.next_break(t)
+    }
     fn power_per_mass(&self, t: f64, x: DVec3, v: DVec3) -> f64 {
         self.0.base.power_per_mass(t, x, v) + self.0.call(t, x, v).dot(v) / self.0.base.params().mass
     }

@@ -37,8 +37,28 @@ def test_closed_loop_moves_and_kills_the_sway_and_replays_in_3d() -> None:
         t_end=40.0, dt=0.05, rtol=1e-11, atol=1e-11
     )
     # the load's offset from the trolley is l sin θ in both models
-    np.testing.assert_allclose(replay.offset()[:, 0], 10.0 * np.sin(run.sway(replay.t)), atol=2e-4)
+    np.testing.assert_allclose(replay.offset()[:, 0], 10.0 * np.sin(run.sway(replay.t)), atol=1e-9)
     assert np.abs(replay.payload[:, 1]).max() < 1e-9  # planar
+
+
+def test_the_loop_path_has_breaks_where_its_acceleration_steps_or_kinks() -> None:
+    """An LQRRun as a pivot path: u steps from 0 at t_start and kinks where the limit a_max starts or
+    stops clipping it; these are its breaks, so the crane's integrator ends its steps there. Replayed
+    in the 3-D crane, the load's offset is l sin θ of the planar loop to 2e-11 m (measured; with no
+    breaks 6e-7 m, the jump at t_start smoothed over a knot interval). The loop itself is integrated
+    piecewise between the switches; past its t_end the crane run is refused."""
+    ctrl = crane.lqr(10.0, q=(1.0, 1.0, 50.0, 1.0), r=1.0, a_max=0.6)
+    run = ctrl.simulate(distance=5.0, t_end=30.0, t_start=1.0)
+    assert run.switches.size == 1 and run.breaks.tolist() == [1.0, run.switches[0]]
+    ts = run.switches[0]
+    _, _, u = run.trolley(np.array([ts - 1e-3, ts, ts + 1e-3]))
+    assert u[0] == 0.6 and abs(u[1] - 0.6) < 1e-9 and u[2] < 0.6  # the clip lets go at the switch
+    assert run.trolley(1.0, left=True)[2][0] == 0.0 and run.trolley(1.0)[2][0] == 0.6  # the step at t0
+    c = crane.Crane(rope=10.0, pivot=run, payload_mass=500.0)
+    replay = c.simulate(t_end=30.0, dt=0.05, rtol=1e-11, atol=1e-11)
+    np.testing.assert_allclose(replay.offset()[:, 0], 10.0 * np.sin(run.sway(replay.t)), atol=1e-9)
+    with pytest.raises(InvalidInputError, match=r"ends at t_end = 30 s, .* t_end = 40 s"):
+        c.simulate(t_end=40.0)
 
 
 def test_bad_lqr_input() -> None:

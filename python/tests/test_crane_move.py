@@ -128,3 +128,26 @@ def test_a_measured_path_from_csv(tmp_path) -> None:  # type: ignore[no-untyped-
     (tmp_path / "bad.csv").write_text("t,x,y,z\n0,0,0,0\n1,,0,0\n2,0,0,0\n3,0,0,0\n")
     with pytest.raises(pl.InvalidInputError, match="row 2"):
         crane.Sampled.from_csv(str(tmp_path / "bad.csv"))
+
+
+def test_a_measured_path_is_not_extrapolated_past_its_samples() -> None:
+    """crane.Sampled is defined on [t₀, t_n] only: t² sampled on [0, 2] s extrapolated its last cubic
+    to 100 m at 10 s. A time outside the samples and a crane run reaching past them are refused,
+    naming both times; inside, the run is as before. The Hoist holds its ends instead (its clamped
+    spline ends at rest)."""
+    t = np.linspace(0.0, 2.0, 9)
+    sampled = crane.Sampled(t, np.stack([t**2, 0 * t, 0 * t], axis=1))
+    assert sampled.span == (0.0, 2.0)
+    np.testing.assert_allclose(sampled.position([0.5, 2.0])[:, 0], [0.25, 4.0], rtol=1e-14)
+    with pytest.raises(pl.InvalidInputError, match=r"t = 10 s is outside .* t = 0 … 2 s"):
+        sampled.position(10.0)
+    with pytest.raises(pl.InvalidInputError, match=r"t = -0.5 s is outside"):
+        sampled.pivot_samples(2.0, t_start=-0.5)
+    c = crane.Crane(rope=5.0, pivot=sampled)
+    with pytest.raises(pl.InvalidInputError, match=r"cover t = 0 … 2 s, .* t_end = 10 s"):
+        c.simulate(t_end=10.0)
+    run = c.simulate(t_end=2.0, dt=0.5)
+    assert run.pivot[-1, 0] == pytest.approx(4.0, rel=1e-14)
+    hoist = crane.Hoist([0.0, 2.0], [5.0, 4.0])
+    np.testing.assert_allclose(hoist.length([2.0, 10.0]), [4.0, 4.0], rtol=1e-15)
+    assert hoist.velocity(10.0)[0, 0] == 0.0

@@ -27,6 +27,26 @@ def test_resonant_exchange_and_conservation() -> None:
     assert b.min() < 0.1 * b[0], "energy must leave the bouncing mode at resonance"
 
 
+@pytest.mark.parametrize("g", [9.81, -4.0])
+def test_the_equilibrium_length_is_the_stable_rest_point(g: float) -> None:
+    """l = l₀ + |g|/(k/m): the bob rests on the vertical on the side gravity pulls it to, the spring
+    stretched (for g < 0 above the pivot). Started there at rest it stays, with bouncing energy 0;
+    pushed sideways it swings about it and stays near (stable). For g < 0 the formula l₀ + g/(k/m)
+    gave the compressed point below the pivot, where the bob does not rest (before the fix: 0.6 m)."""
+    sp = pl.SwingingSpring(k_over_m=20.0, rest_length=0.8, g=g)
+    ell = sp.equilibrium_length
+    assert ell == pytest.approx(0.8 + abs(g) / 20.0, rel=1e-15)
+    up = np.sign(-g)  # the side gravity pulls to: −e₃ for g > 0, +e₃ for g < 0
+    rest = pl.simulate_spring(sp, [0.0, 0.0, up * ell], [0.0, 0.0, 0.0], t_end=5.0, dt=1e-3, save_every=100)
+    assert np.abs(rest.x - [0.0, 0.0, up * ell]).max() < 1e-12
+    assert np.abs(rest.bouncing_energy).max() < 1e-24
+    pushed = pl.simulate_spring(
+        sp, [0.0, 0.0, up * ell], [0.05, 0.02, 0.01], t_end=30.0, dt=1e-3, save_every=100, order=4
+    )
+    assert np.abs(pushed.x - [0.0, 0.0, up * ell]).max() < 0.1  # measured 0.023 m (g > 0), 0.035 m
+    assert np.abs(pushed.r - ell).max() < 0.01
+
+
 def test_bad_input() -> None:
     with pytest.raises(pl.InvalidInputError, match="k_over_m"):
         pl.simulate_spring(pl.SwingingSpring(-1.0, 1.0), [0, 0, -1], [0, 0, 0], t_end=1.0)

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from scipy.interpolate import CubicSpline
 from variants_reference import Force, reference, start
 
 import pendulab as pl
@@ -171,10 +172,13 @@ def test_hoisted_rope_under_a_slewing_boom() -> None:
 
 
 def test_pivot_on_a_sampled_path() -> None:
-    """T-7.2, model sampled_pivot: the spline through samples every 10 ms of a smooth 3-D path p(t)
-    against the reference with the path's exact p̈. The spline's p̈ is piecewise linear (C⁰): its error
-    O(h²) alternates in sign along the knots and integrates to < 1e-10 l (rkmk4 at dt = 1 ms: 5e-11 l).
-    DOP853 steps across the kinks and stays ~1e4 × its tolerance off (1.5e-8 l at rtol 1e-12)."""
+    """T-7.2, model sampled_pivot: the spline through samples every 10 ms of a smooth 3-D path p(t).
+    Its p̈ is piecewise linear, kinked at every sample, and DOP853 ends its steps there: against the
+    reference integrating the spline's own p̈ (SciPy's CubicSpline, restarted at every sample) it
+    agrees to round-off (measured 2e-14 l at rtol 1e-12; 1.5e-8 l when it stepped across the kinks).
+    Against the reference with the path's exact p̈ the spline's own O(h²) error remains (5.1e-11 l; it
+    alternates in sign along the knots and integrates away). rkmk4 with dt dividing the spacing keeps
+    order 4; the RATTLE compositions fall to order 2 (docs/models.md, *Accuracy on a sampled path*)."""
 
     def path(tt: np.ndarray) -> np.ndarray:
         return np.stack(
@@ -188,14 +192,26 @@ def test_pivot_on_a_sampled_path() -> None:
         return np.array([0.0, 0.0, -G]) - pdd - 0.03 * v
 
     samples = np.arange(-0.1, 10.105, 0.01)
+    spline = CubicSpline(samples, path(samples), axis=0)
+
+    def spline_force(tt: float, _x: np.ndarray, v: np.ndarray) -> np.ndarray:
+        return np.array([0.0, 0.0, -G]) - spline(tt, 2) - 0.03 * v
+
     p = pl.Pendulum(length=1.0, g=G, pivot_samples=(samples, path(samples)), damping=0.03)
     x0, v0 = start(1.0, 1.3, 0.9, 0.6, 2.5)
     t = np.linspace(0.0, 10.0, 201)
     x, _ = reference(force, x0, v0, t)
-    tr = pl.simulate(p, p.state(x0, v0), 10.0, method="dop853", rtol=1e-13, atol=1e-13, save_at=t)
-    assert np.abs(tr.x - x).max() < 5e-9  # measured 1.6e-9 m (at rtol 1e-12: 1.5e-8 m)
-    rk = pl.simulate(p, p.state(x0, v0), 10.0, method="rkmk4", dt=1e-3, save_at=t)
-    assert np.abs(rk.x - x).max() < 5e-10  # measured 5.0e-11 m
+    xs, _ = reference(spline_force, x0, v0, t, breaks=samples)
+    tr = pl.simulate(p, p.state(x0, v0), 10.0, method="dop853", rtol=1e-12, atol=1e-12, save_at=t)
+    assert np.abs(tr.x - xs).max() < 1e-12  # measured 2.2e-14 m (1.5e-8 m stepping across the kinks)
+    assert np.abs(tr.x - x).max() < 2e-10  # measured 5.1e-11 m: the spline's own error
+    err = [
+        np.abs(pl.simulate(p, p.state(x0, v0), 10.0, method=m, dt=dt, save_at=t).x - xs).max()
+        for m in ("rkmk4", "rattle4")
+        for dt in (2e-3, 1e-3)
+    ]
+    assert 12.8 < err[0] / err[1] < 20.0, err  # rkmk4: order 4 (measured 15.9; 2.5e-10 m at 2 ms)
+    assert 3.2 < err[2] / err[3] < 5.0, err  # rattle4: order 2 on the kinks (measured 3.9)
 
 
 def test_compositions_keep_their_order_on_a_sampled_cubic() -> None:

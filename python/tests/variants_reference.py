@@ -34,7 +34,8 @@ constraint: ρ, ρ̇, ρ̈ are then given and the θ and φ equations above hold
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import itertools
+from collections.abc import Callable, Sequence
 
 import numpy as np
 from scipy.integrate import solve_ivp
@@ -72,12 +73,20 @@ def to_cartesian(y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def reference(
-    force: Force, x0: np.ndarray, v0: np.ndarray, t: np.ndarray, *, rod: bool = True, rope: Rope | None = None
+    force: Force,
+    x0: np.ndarray,
+    v0: np.ndarray,
+    t: np.ndarray,
+    *,
+    rod: bool = True,
+    rope: Rope | None = None,
+    breaks: Sequence[float] = (),
 ) -> tuple[np.ndarray, np.ndarray]:
     """x [m], v [m/s] at the times t [s] (t[0] the start) of the bob under the force per unit mass
     ``force(t, x, ẋ)`` [m/s²], on a rod (|x| fixed) or, with ``rod=False``, free in ρ (the spring's
     pull is then part of ``force``), or on a rope of prescribed length ``rope(t)`` = (l, l̇, l̈) [m, m/s,
-    m/s²] (x0, v0 then with |x0| = l(t[0]), x0·v0 = l l̇). DOP853, rtol 1e-13, atol 1e-14."""
+    m/s²] (x0, v0 then with |x0| = l(t[0]), x0·v0 = l l̇). DOP853, rtol 1e-13, atol 1e-14, restarted at
+    each of the ``breaks`` [s] (times where the force is not smooth in t, e.g. a spline's knots)."""
 
     def rhs(tt: float, y: np.ndarray) -> np.ndarray:
         rho, th, ph, rd, thd, phd = y
@@ -97,10 +106,18 @@ def reference(
     y0 = to_angles(np.asarray(x0, float), np.asarray(v0, float))
     if rod and rope is None:
         y0[3] = 0.0
-    sol = solve_ivp(rhs, (t[0], t[-1]), y0, method="DOP853", t_eval=t, rtol=1e-13, atol=1e-14)
-    assert sol.success, sol.message
-    assert np.min(np.abs(np.sin(sol.y[1]))) > 0.05, "the run came near the coordinates' pole ±e₂"
-    return to_cartesian(sol.y)
+    cuts = [float(t[0]), *sorted(b for b in set(map(float, breaks)) if t[0] < b < t[-1]), float(t[-1])]
+    ys, y = [], y0
+    for a, b in itertools.pairwise(cuts):
+        inside = t[(t >= a) & ((t < b) | (b == t[-1]))]
+        pts = np.union1d(inside, [b])
+        sol = solve_ivp(rhs, (a, b), y, method="DOP853", t_eval=pts, rtol=1e-13, atol=1e-14)
+        assert sol.success, sol.message
+        ys.append(sol.y[:, np.isin(pts, inside)])
+        y = sol.y[:, -1]
+    out = np.concatenate(ys, axis=1)
+    assert np.min(np.abs(np.sin(out[1]))) > 0.05, "the run came near the coordinates' pole ±e₂"
+    return to_cartesian(out)
 
 
 def start(rho: float, th: float, ph: float, thd: float, phd: float) -> tuple[np.ndarray, np.ndarray]:

@@ -1,7 +1,7 @@
 //! The elastic pendulum, or swinging spring (docs/theory.md T-7.4): a bob of mass m on a massless spring
 //! of stiffness k [N/m] and rest length l₀ \[m\] from a fixed pivot, in gravity g along −e₃:
 //!
-//!   r̈ = −(k/m)(|r| − l₀) r/|r| − g e₃,   equilibrium length l = l₀ + m g/k,
+//!   r̈ = −(k/m)(|r| − l₀) r/|r| − g e₃,   equilibrium length l = l₀ + m |g|/k,
 //!   E = ½m|v|² + ½k(|r| − l₀)² + m g z,   J₃ = m (x v_y − y v_x),
 //!
 //! both conserved; the system is not integrable. At the 1:1:2 resonance √(k/m) = 2√(g/l) energy passes
@@ -42,9 +42,12 @@ impl SwingingSpring {
         Ok(Self { k_over_m, rest_length, g, mass })
     }
 
-    /// The equilibrium length l = l₀ + g/(k/m) \[m\] (hanging at rest, g > 0).
+    /// The length l = l₀ + |g|/(k/m) \[m\] of the stable equilibrium: the bob at rest on the vertical
+    /// through the pivot on the side gravity pulls it to, the spring stretched by |g|/(k/m) — below the
+    /// pivot for g > 0, above it for g < 0 (the mirror image; the other rest point on the vertical,
+    /// the spring compressed to l₀ − |g|/(k/m) on the far side, is unstable), l₀ for g = 0.
     pub fn equilibrium_length(&self) -> f64 {
-        self.rest_length + self.g / self.k_over_m
+        self.rest_length + self.g.abs() / self.k_over_m
     }
 
     /// The spring at the 1:1:2 resonance √(k/m) = 2√(g/l) for a given equilibrium length l \[m\]:

@@ -132,3 +132,16 @@ fn the_incremental_stepper_is_the_run_step_for_step() {
     assert!(SpringStepper::new(sp, s0, 0.0, 1e-3, 3).is_err());
     assert!(SpringStepper::new(sp, State { x: DVec3::ZERO, v: DVec3::ZERO }, 0.0, 1e-3, 2).is_err());
 }
+
+#[test]
+fn the_equilibrium_length_is_where_the_bob_rests_for_either_sign_of_g() {
+    // l = l₀ + |g|/(k/m), on the side of the pivot gravity pulls to (above it for g < 0): r̈ = 0 there;
+    // for g < 0 the old l₀ + g/(k/m) was the compressed, unstable point (r̈ = 8 m/s² up at its mirror)
+    for g in [9.81, -4.0] {
+        let sp = SwingingSpring::new(20.0, 0.8, g, 1.0).unwrap();
+        let ell = sp.equilibrium_length();
+        assert!((ell - (0.8 + g.abs() / 20.0)).abs() < 1e-15, "g = {g}: l = {ell}");
+        let a = sp.acceleration(DVec3::new(0.0, 0.0, -g.signum() * ell));
+        assert!(a.length() < 1e-14, "g = {g}: r̈ = {a} at the equilibrium");
+    }
+}

@@ -154,3 +154,41 @@ fn per_trajectory_models_and_a_moving_pivot() {
         assert_eq!(&res.states[2 * k..2 * k + 2], &single(&vib, start, &final_only(true)).0[..], "{k}");
     }
 }
+
+#[test]
+fn a_sampled_pivot_ends_the_steps_on_its_samples_in_the_lanes_too() {
+    // The spline's p̈ kinks at every sample: DOP853 ends a step on each (Model::next_break), in the
+    // single run and in the vectorised lanes alike, bit for bit. Samples 0.07 s apart from t = −0.1 s,
+    // with one a rounding error before t_end (skipped: a sliver of a step would underflow).
+    let pv = Params::new(1.0, 1.0, 9.81).unwrap();
+    let mut times: Vec<f64> = (0..73).map(|k| -0.1 + 0.07 * k as f64).collect();
+    times.push(5.0 - 4e-15);
+    times.extend([5.3, 5.6]);
+    let positions: Vec<_> = times
+        .iter()
+        .map(|&t| pendulab_core::DVec3::new(0.3 * (1.3 * t).sin(), 0.2 * (0.7 * t).cos(), 0.05 * t * t))
+        .collect();
+    let m = AnyModel::sampled_pivot(pv, &times, &positions, 0.02).unwrap();
+    assert_eq!(m.next_break(0.0), times[2]);
+    assert_eq!(m.next_break(times[2]), times[3]);
+    assert_eq!(m.next_break(times[2] - 1e-17), times[3], "a sample within round-off counts as reached");
+    assert_eq!(m.next_break(5.6), f64::INFINITY, "the last sample is no kink (the end piece goes on)");
+    // a pivot at rest has no kinks: its runs are the fixed pivot's, step for step
+    let rest =
+        AnyModel::sampled_pivot(pv, &times, &vec![pendulab_core::DVec3::ZERO; times.len()], 0.0).unwrap();
+    assert_eq!(rest.next_break(0.0), f64::INFINITY);
+    let s = starts(&m, 9);
+    let set = AdaptiveSettings {
+        options: SolveOptions { rtol: 1e-6, ..settings(false).options },
+        ..final_only(false)
+    };
+    let (p, c) = (AtomicU64::new(0), AtomicBool::new(false));
+    let res = run_adaptive(&m, &s, &set, &p, &c).unwrap();
+    for (k, start) in s.iter().enumerate() {
+        let (states, steps, _) = single(&m, start, &set);
+        assert_eq!(&res.states[2 * k..2 * k + 2], &states[..], "trajectory {k}");
+        assert_eq!(res.steps[k], steps, "trajectory {k}");
+        // at rtol 1e-6 the free steps would be longer than 0.07 s: at least one per sample interval
+        assert!(steps >= 72, "{steps} steps for 72 sample intervals in (0, 5)");
+    }
+}

@@ -29,6 +29,9 @@ from .._core import InvalidInputError
 from .paths import Path
 from .shaper import FloatArray
 
+# switches of the control into and out of its limit a_max that one run may have (chattering beyond)
+MAX_SWITCHES = 10_000
+
 
 def _matrices(rope: float, g: float) -> tuple[FloatArray, FloatArray]:
     a = np.array([[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1], [0, 0, -g / rope, 0]], dtype=float)
@@ -60,47 +63,123 @@ class LQR:
             raise InvalidInputError(
                 f"need a finite distance and t_end > t_start, got {distance!r}, {t_end!r}"
             )
-        big_l, g = self.rope, self.g
+        big_l, g, a_max, k = self.rope, self.g, self.a_max, self.K[0]
 
-        def rhs(_t: float, y: FloatArray) -> list[float]:
-            x, v, th, om = y
-            u = float(self.control(np.array([x - d, v, th, om])))
-            return [v, u, om, -(g * math.sin(th) + u * math.cos(th)) / big_l]
+        # u = clip(−K z, ±a_max) kinks where the clip starts and stops acting: the loop is integrated
+        # piecewise in three modes (free: u = −K z; saturated: u = ±a_max), each smooth, switching at
+        # the roots of −K z ∓ a_max (terminal events); the switch times are the path's breaks
+        def gain(y: FloatArray) -> float:
+            return -float(k @ np.array([y[0] - d, y[1], y[2], y[3]]))
 
-        sol = solve_ivp(
-            rhs,
-            (t0, t1),
-            [0.0, 0.0, float(sway), 0.0],
-            method="DOP853",
-            rtol=1e-11,
-            atol=1e-12,
-            dense_output=True,
-        )
-        if not sol.success:
-            raise InvalidInputError(f"the closed loop could not be integrated: {sol.message}")
-        return LQRRun(self, d, t0, t1, sol.sol)
+        def rhs_of(mode: int) -> Any:
+            def rhs(_t: float, y: FloatArray) -> list[float]:
+                u = gain(y) if mode == 0 else mode * a_max
+                return [y[1], u, y[3], -(g * math.sin(y[2]) + u * math.cos(y[2])) / big_l]
+
+            return rhs
+
+        def event(level: float, direction: int) -> Any:
+            def ev(_t: float, y: FloatArray) -> float:
+                return gain(y) - level
+
+            ev.terminal, ev.direction = True, direction  # type: ignore[attr-defined]
+            return ev
+
+        y: list[float] = [0.0, 0.0, float(sway), 0.0]
+        u0 = gain(np.array(y))
+        mode = 1 if u0 > a_max else -1 if u0 < -a_max else 0
+        pieces: list[tuple[float, Any]] = []
+        switches: list[float] = []
+        t = t0
+        while True:
+            if not math.isfinite(a_max):
+                events: list[Any] = []
+            elif mode == 0:  # leaves the free mode when −K z rises through a_max or falls through −a_max
+                events = [event(a_max, 1), event(-a_max, -1)]
+            else:  # leaves saturation when −K z comes back inside (−a_max, a_max)
+                events = [event(mode * a_max, -mode)]
+            sol = solve_ivp(
+                rhs_of(mode),
+                (t, t1),
+                y,
+                method="DOP853",
+                rtol=1e-11,
+                atol=1e-12,
+                dense_output=True,
+                events=events or None,
+            )
+            if not sol.success:
+                raise InvalidInputError(f"the closed loop could not be integrated: {sol.message}")
+            pieces.append((t, sol.sol))
+            if sol.status != 1:  # reached t_end
+                break
+            t, y = float(sol.t[-1]), sol.y[:, -1].tolist()
+            if t >= t1:
+                break
+            switches.append(t)
+            if len(switches) > MAX_SWITCHES:
+                raise InvalidInputError(
+                    f"the control switched into and out of its limit a_max = {a_max:g} m/s² more than "
+                    f"{MAX_SWITCHES} times before t = {t:g} s (chattering): use a smaller gain or a "
+                    "larger a_max"
+                )
+            # out of saturation into the free mode, or from it into the limit on the side of u's sign
+            mode = 0 if mode != 0 else (1 if gain(np.array(y)) > 0 else -1)
+        return LQRRun(self, d, t0, t1, _Pieces(pieces), np.array(switches))
+
+
+class _Pieces:
+    """The dense outputs of the loop's pieces [(start [s], OdeSolution)], evaluated as one."""
+
+    def __init__(self, pieces: list[tuple[float, Any]]) -> None:
+        self.starts = np.array([a for a, _ in pieces])
+        self.sols = [f for _, f in pieces]
+
+    def __call__(self, t: FloatArray) -> FloatArray:
+        idx = np.clip(np.searchsorted(self.starts, t, side="right") - 1, 0, len(self.sols) - 1)
+        out = np.empty((4, t.size))
+        for i in np.unique(idx):
+            sel = idx == i
+            out[:, sel] = self.sols[i](t[sel])
+        return out
 
 
 class LQRRun(Path):
     """A closed-loop run: ``trolley(t)`` (x, ẋ, u), ``sway(t)`` θ [rad]; as a :class:`Path` along e₁ the
-    trolley position [m], velocity and acceleration u (held at rest outside [t_start, t_end])."""
+    trolley position [m], velocity and acceleration u (at rest at x = 0 before t_start, held at rest
+    after t_end). Its ``breaks``: t_start (u steps from 0 to −K z₀) and ``switches``, the times [s]
+    where the limit ±a_max starts or stops clipping u (P̈ kinks), so that the crane's integrator ends
+    its steps there. A crane run past t_end is refused: the loop's trolley has not stopped then in
+    general, and the hold would stop it dead (simulate the loop as long as the crane run)."""
 
-    def __init__(self, ctrl: LQR, distance: float, t0: float, t1: float, dense: Any) -> None:
+    def __init__(
+        self, ctrl: LQR, distance: float, t0: float, t1: float, dense: Any, switches: Any = ()
+    ) -> None:
         self.ctrl, self.distance, self._dense = ctrl, distance, dense
         self.span = (t0, t1)
-        self.breaks = np.zeros(0)
+        self.switches = np.asarray(switches, dtype=np.float64)
+        self.breaks = np.union1d([t0], self.switches)
         self.t_end = t1
+
+    def check_run(self, t_start: float, t_end: float) -> None:
+        if t_end > self.span[1]:
+            raise InvalidInputError(
+                f"the LQR run ends at t_end = {self.span[1]:.10g} s, but the crane run goes on to t_end = "
+                f"{t_end:.10g} s: simulate the closed loop as long (LQR.simulate(..., t_end={t_end:.10g}))"
+            )
 
     def _state(self, t: FloatArray) -> FloatArray:
         tc = np.clip(t, *self.span)
         return np.asarray(self._dense(tc).T, dtype=np.float64)  # (N, 4)
 
-    def trolley(self, t: Any) -> tuple[FloatArray, FloatArray, FloatArray]:
-        """Trolley position [m], velocity [m/s], acceleration [m/s²] at times t [s]."""
+    def trolley(self, t: Any, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        """Trolley position [m], velocity [m/s], acceleration [m/s²] at times t [s] (at t_start those
+        after it, or with ``left`` those before: at rest; at rest outside [t_start, t_end])."""
         ts = np.atleast_1d(np.asarray(t, dtype=np.float64))
         y = self._state(ts)
         z = y - np.array([self.distance, 0.0, 0.0, 0.0])
-        inside = (ts >= self.span[0]) & (ts <= self.span[1])
+        a, b = self.span
+        inside = (ts > a) & (ts <= b) | ((ts == a) & (not left))
         return y[:, 0], np.where(inside, y[:, 1], 0.0), np.where(inside, self.ctrl.control(z), 0.0)
 
     def sway(self, t: Any) -> FloatArray:
@@ -108,7 +187,7 @@ class LQRRun(Path):
         return self._state(np.atleast_1d(np.asarray(t, dtype=np.float64)))[:, 2]
 
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
-        x, v, a = self.trolley(t)
+        x, v, a = self.trolley(t, left)
         zero = np.zeros((t.size, 3))
         p, dp, ddp = zero.copy(), zero.copy(), zero.copy()
         p[:, 0], dp[:, 0], ddp[:, 0] = x, v, a

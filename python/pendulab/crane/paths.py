@@ -46,7 +46,7 @@ class Path:
 
     breaks: FloatArray = np.zeros(0)
     # where a spline's cubic pieces join (P and its first two derivatives continuous, P⃛ steps): knots
-    # of the core's interpolant, so that it is the spline itself (T-11.4)
+    # of the core's interpolant, so that it is the spline itself, and steps of its integrator (T-11.4)
     nodes: FloatArray = np.zeros(0)
     t_end: float = 0.0
 
@@ -65,22 +65,28 @@ class Path:
         """P̈(t) [m/s²], shape (N, 3) (right-continuous at the breaks)."""
         return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[2]
 
+    def check_run(self, t_start: float, t_end: float) -> None:
+        """Refuses (``InvalidInputError``) a run over [t_start, t_end] [s] the path does not define;
+        the moves define all times (at rest outside their motion); :class:`Sampled` refuses times
+        outside its samples, an ``LQRRun`` times after its loop's end."""
+
     def knots(self, t0: float, t1: float, dt: float = 0.05) -> Knots:
-        """Knots (t, P, Ṗ, P̈) on [t0, t1] [s] every ≤ ``dt`` [s], at every node of a spline and at every
-        break, which appears twice (left and right values) so that the quintic Hermite interpolant of the
-        core (T-11.4) steps there; between two knots the path is one cubic, which that interpolant is."""
-        inner = self.breaks[(self.breaks > t0) & (self.breaks < t1)]
-        nodes = self.nodes[(self.nodes > t0) & (self.nodes < t1)]
+        """Knots (t, P, Ṗ, P̈) on [t0, t1] [s] every ≤ ``dt`` [s], and at every break and every node of a
+        spline twice (the values before and after), so that the quintic Hermite interpolant of the core
+        (T-11.4) steps there and its integrator ends a step there rather than crossing a jump of P̈ or
+        a kink (a node: P̈ continuous, P⃛ steps); between two knots the path is one cubic, which that
+        interpolant is."""
+        jumps = np.union1d(self.breaks, self.nodes)
+        inner = jumps[(jumps > t0) & (jumps < t1)]
         grid = np.union1d(np.linspace(t0, t1, max(2, math.ceil((t1 - t0) / dt) + 1)), inner)
-        grid = np.union1d(grid, nodes)
         p, v, a = self._pva(grid)
         if inner.size == 0:
             return grid, p, v, a
         idx = np.searchsorted(grid, inner)
-        _, _, a_left = self._pva(inner, left=True)
+        _, v_left, a_left = self._pva(inner, left=True)
         t_all = np.insert(grid, idx, inner)
         p_all = np.insert(p, idx, p[idx], axis=0)
-        v_all = np.insert(v, idx, v[idx], axis=0)
+        v_all = np.insert(v, idx, v_left, axis=0)
         a_all = np.insert(a, idx, a_left, axis=0)
         return t_all, p_all, v_all, a_all
 
@@ -183,7 +189,14 @@ class Tower(Path):
 
 
 class Sampled(Path):
-    """A measured path through samples (t_i [s], P_i [m] (n, 3), n ≥ 4): the not-a-knot cubic spline."""
+    """A measured path through samples (t_i [s], P_i [m] (n, 3), n ≥ 4): the not-a-knot cubic spline,
+    defined on [t₀, t_n] only. A time outside it (``position``, ``pivot_samples``) and a crane run
+    reaching outside it are refused, naming both: the samples say nothing there, and neither choice
+    is right in general — the end cubic extrapolated runs away (t² sampled on [0, 2] s would be at
+    100 m at 10 s), and held at rest the path would stop dead from its last velocity (an impulse the
+    rope cannot take). If the crane stood still after the measurement, append samples at the last
+    position (and likewise before the first). A :class:`~pendulab.crane.Hoist` holds its ends instead:
+    its clamped spline ends at rest, so holding it is the same smooth motion."""
 
     def __init__(self, times: Any, positions: Any) -> None:
         t = np.asarray(times, dtype=np.float64).ravel()
@@ -222,7 +235,34 @@ class Sampled(Path):
             raise InvalidInputError(f"{path}: row {bad + 1} of the data has an empty or non-numeric value")
         return cls(data[:, 0], data[:, 1:4])
 
+    @property
+    def span(self) -> tuple[float, float]:
+        """The sampled interval [t₀, t_n] [s] on which the path is defined."""
+        return float(self.nodes[0]), float(self.nodes[-1])
+
+    def check_run(self, t_start: float, t_end: float) -> None:
+        a, b = self.span
+        if not (a <= t_start and t_end <= b):
+            raise InvalidInputError(
+                f"the measured pivot path's samples cover t = {a:.10g} … {b:.10g} s, but the run goes from "
+                f"t_start = {t_start:.10g} s to t_end = {t_end:.10g} s: give samples over the whole run (a "
+                "measured path is not extrapolated; if the crane stood still, repeat its last position "
+                "at later times)"
+            )
+
+    def knots(self, t0: float, t1: float, dt: float = 0.05) -> Knots:
+        a, b = self.span
+        return super().knots(max(t0, a), min(t1, b), dt)
+
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
+        a, b = self.span
+        outside = (t < a) | (t > b) | np.isnan(t)
+        if np.any(outside):
+            bad = float(t[np.argmax(outside)])
+            raise InvalidInputError(
+                f"t = {bad:.10g} s is outside the measured pivot path's samples, t = {a:.10g} … {b:.10g} "
+                "s (a measured path is not extrapolated: give samples that cover it)"
+            )
         s = self._spline
         return s(t), s(t, 1), s(t, 2)
 

@@ -285,6 +285,7 @@ class Crane:
             raise InvalidInputError(
                 f"t_end = {t_end!r} s must be finite and later than t_start = {t_start!r} s"
             )
+        self.pivot.check_run(t0, t1)
         dt = _positive("dt", dt, "s")
         n = math.ceil((t1 - t0) / dt - 1e-9) + 1
         if n > MAX_SAVES:

@@ -118,7 +118,7 @@ def check_run_settings(pendulum: Pendulum, state: State, sim: SimulationSection,
 
 def build_spring(spec: ScenarioSpec, source: str) -> tuple[SwingingSpring, State]:
     """The swinging spring (T-7.4): ``length`` is the rest length l₀ [m], ``stiffness`` k [N/m]; an
-    angle start lies on the sphere of the equilibrium length l = l₀ + m g/k, a Cartesian start is
+    angle start lies on the sphere of the equilibrium length l = l₀ + m |g|/k, a Cartesian start is
     taken as given (x [m], v [m/s] anywhere). Methods: rattle → Störmer–Verlet (order 2), rattle4
     → its triple jump (order 4); save_every only. Validated by the core."""
     p, sim, ini = spec.pendulum, spec.simulation, spec.initial
@@ -143,7 +143,7 @@ def build_spring(spec: ScenarioSpec, source: str) -> tuple[SwingingSpring, State
         if not (math.isfinite(ell) and ell > 0):
             raise ScenarioError(
                 source,
-                "[initial] an angle start needs an equilibrium length l = l0 + m g/k > 0, "
+                "[initial] an angle start needs an equilibrium length l = l0 + m |g|/k > 0, "
                 f"got {ell!r} m; give a Cartesian start x, v instead",
             )
         state = Pendulum(length=ell, g=p.g, mass=p.mass).state_from_angles(*ini.angles())

@@ -25,7 +25,7 @@ OWN_STEPPER_MODELS = ("spring", "string")
 class SpringPendulum:
     """The swinging spring as a scenario gives it to the lab, in the place of a :class:`pendulab.Pendulum`:
     ``length`` is the rest length l₀ [m], ``stiffness`` k [N/m], ``mass`` [kg], ``g`` [m/s²] along −z.
-    The bob hangs at rest at the equilibrium length l₀ + m g/k."""
+    The bob hangs at rest at the equilibrium length l₀ + m |g|/k (above the pivot for g < 0)."""
 
     length: float
     g: float

@@ -2,7 +2,7 @@
 stiffness k [N/m] and rest length l₀ [m] from a fixed pivot, gravity g [m/s²] along −z. The state is
 unconstrained (r [m], v [m/s]); E and J₃ are conserved and kept by the symplectic Störmer–Verlet
 method (order 2) or its triple jump (order 4). At the 1:1:2 resonance √(k/m) = 2√(g/l), with
-l = l₀ + m g/k, energy passes between bouncing and swinging and the swing plane turns in steps.
+l = l₀ + m |g|/k, energy passes between bouncing and swinging and the swing plane turns in steps.
 """
 
 from __future__ import annotations
@@ -39,8 +39,11 @@ class SwingingSpring:
 
     @property
     def equilibrium_length(self) -> float:
-        """l = l₀ + g/(k/m) [m]."""
-        return self.rest_length + self.g / self.k_over_m
+        """l = l₀ + |g|/(k/m) [m], the length at the stable equilibrium: the bob at rest on the vertical
+        through the pivot, on the side gravity pulls it to, the spring stretched by |g|/(k/m) — below
+        the pivot for g > 0, above it for g < 0 (the mirror image of g > 0; the other rest point, the
+        spring compressed to l₀ − |g|/(k/m) on the far side, is unstable); l₀ for g = 0."""
+        return self.rest_length + abs(self.g) / self.k_over_m
 
     @property
     def spec(self) -> ModelSpec:
@@ -53,7 +56,8 @@ class SwingingSpring:
 @dataclass(frozen=True)
 class SpringTrajectory:
     """Times ``t`` [s], positions ``x`` and velocities ``v`` (N, 3) [m, m/s], ``energy`` [J], ``j3``
-    [kg m²/s], and ``bouncing_energy`` [J]: the radial (spring) part ½m ṙ² + ½k(|r| − l)²."""
+    [kg m²/s], and ``bouncing_energy`` [J]: the radial (spring) part ½m ṙ² + ½k(|r| − l)² about the
+    stable equilibrium length l (:attr:`SwingingSpring.equilibrium_length`)."""
 
     spring: SwingingSpring
     t: FloatArray

@@ -25,7 +25,7 @@
 
 use super::adaptive_settings::{AdaptiveSettings, Models};
 use crate::error::{Error, Result};
-use crate::integrate::dop853::{initial_step, project_accepted, rhs, Y6};
+use crate::integrate::dop853::{initial_step, project_accepted, rhs, step_end, Y6};
 use crate::integrate::dop853_control::StepControl;
 use crate::integrate::dop853_tableau::{A, B, C, E3, E5, STAGES};
 use crate::integrate::Stats;
@@ -222,17 +222,20 @@ impl<'s> Lanes<'s> {
         let mut h: Row = [0.0; LANES];
         let mut last = [false; LANES];
         let mut busy = [false; LANES];
+        let trajs = self.ctl.map(|c| c.traj.unwrap_or(0));
+        let model = |l: usize| models.of(first + trajs[l]);
+        // where each lane's step ends at the latest: t_end, or its model's next break (`Dop853::step`)
+        let mut stop: Row = [t_end; LANES];
         for l in 0..LANES {
             if self.ctl[l].traj.is_none() {
                 continue;
             }
-            match self.control.trial(self.ctl[l].h, self.ctl[l].t, t_end) {
+            stop[l] = step_end(model(l), self.ctl[l].t, t_end);
+            match self.control.trial(self.ctl[l].h, self.ctl[l].t, stop[l]) {
                 Ok((hl, la)) => (h[l], last[l], busy[l]) = (hl, la, true),
                 Err(e) => ended[l] = Some(Err(e)),
             }
         }
-        let trajs = self.ctl.map(|c| c.traj.unwrap_or(0));
-        let model = |l: usize| models.of(first + trajs[l]);
         // stages 1‥11: yᵢ = y + Σⱼ kⱼ (h aᵢⱼ) in the order of `Dop853::attempt`, then f per lane
         let mut yi: Rows = [[0.0; LANES]; 6];
         for i in 1..STAGES {
@@ -265,7 +268,7 @@ impl<'s> Lanes<'s> {
             if err[l] <= 1.0 {
                 let m = model(l);
                 let h_new = StepControl::after_accept(h[l], root, ctl.rejected);
-                let t1 = if last[l] { t_end } else { ctl.t + h[l] };
+                let t1 = if last[l] { stop[l] } else { ctl.t + h[l] };
                 let flags = (self.settings.options.project, self.settings.conserve, m.params().length);
                 match project_accepted(m, flags, ctl.targets, (t1, get(&y1, l)), h[l]) {
                     Ok(y) => {

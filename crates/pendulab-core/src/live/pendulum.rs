@@ -182,7 +182,7 @@ impl LivePendulum {
     }
 
     /// The state at polar angle θ \[rad\] from the downward vertical, azimuth φ, rates θ̇, φ̇ [rad/s]; the
-    /// spring's on the sphere of its equilibrium length l₀ + m g/k (l₀ when that is not positive).
+    /// spring's on the sphere of its equilibrium length l₀ + m |g|/k.
     pub fn state_from_angles(&self, theta: f64, phi: f64, theta_dot: f64, phi_dot: f64) -> Result<State> {
         let mut params = self.params;
         if self.model == "spring" {

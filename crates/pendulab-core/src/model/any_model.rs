@@ -246,4 +246,7 @@ impl Model for AnyModel {
     fn check_run(&self, t0: f64, t1: f64) -> Result<()> {
         both!(self, m => m.check_run(t0, t1))
     }
+    fn next_break(&self, t: f64) -> f64 {
+        both!(self, m => m.next_break(t))
+    }
 }

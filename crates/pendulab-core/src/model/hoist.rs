@@ -250,4 +250,7 @@ impl Model for Hoisted {
     fn check_run(&self, t0: f64, t1: f64) -> Result<()> {
         Hoisted::check_run(self, t0, t1)
     }
+    fn next_break(&self, t: f64) -> f64 {
+        self.inner.next_break(t)
+    }
 }

@@ -130,6 +130,13 @@ pub trait Model: Send + Sync {
     fn check_run(&self, _t0: f64, _t1: f64) -> crate::error::Result<()> {
         Ok(())
     }
+    /// The first time after `t` \[s\] at which f(t, ·) is not smooth in t — a sampled pivot's sample
+    /// times, where the spline's p̈ has a kink — or +∞ (default: none). The adaptive `dop853` ends a
+    /// step there instead of stepping across (its error estimate assumes a smooth f; a step across
+    /// a kink is accurate to a low order only). The fixed-step methods ignore it.
+    fn next_break(&self, _t: f64) -> f64 {
+        f64::INFINITY
+    }
     /// True for hybrid models (the string pendulum: taut and slack phases with events), which the
     /// plain [`crate::Stepper`] refuses; they have their own driver ([`crate::string_run`]).
     fn is_hybrid(&self) -> bool {

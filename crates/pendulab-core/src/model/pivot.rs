@@ -196,4 +196,10 @@ impl Model for MovingPivot {
     fn power_per_mass(&self, t: f64, _x: DVec3, v: DVec3) -> f64 {
         -self.path.acceleration(t).dot(v) - self.damping * v.length_squared()
     }
+    fn next_break(&self, t: f64) -> f64 {
+        match self.path {
+            PivotPath::Samples(ref s) => s.next_kink_after(t),
+            _ => f64::INFINITY,
+        }
+    }
 }

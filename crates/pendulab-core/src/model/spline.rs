@@ -28,6 +28,9 @@ pub struct PivotSamples {
     t: Vec<f64>,
     p: Vec<DVec3>,
     m: Vec<DVec3>,
+    /// The inner samples where p⃛ = (M_{i+1} − M_i)/h_i steps: every one in general; not where it is
+    /// exactly continuous (a pivot at rest, a sampled straight line).
+    kinks: Vec<f64>,
 }
 
 fn bad(reason: String) -> Error {
@@ -94,12 +97,23 @@ impl PivotSamples {
         m.push(inner[0] * (1.0 + h0 / h1) - inner[1.min(k - 1)] * (h0 / h1));
         m.extend_from_slice(&inner);
         m.push(inner[k - 1] * (1.0 + hb / ha) - inner[k.saturating_sub(2)] * (hb / ha));
-        Ok(Self { t: times.to_vec(), p: positions.to_vec(), m })
+        let jerk = |i: usize| (m[i + 1] - m[i]) / h[i];
+        let kinks = (1..n - 1).filter(|&i| jerk(i - 1) != jerk(i)).map(|i| times[i]).collect();
+        Ok(Self { t: times.to_vec(), p: positions.to_vec(), m, kinks })
     }
 
     /// The sampled interval [t₀, t_n] \[s\].
     pub fn span(&self) -> (f64, f64) {
         (self.t[0], self.t[self.t.len() - 1])
+    }
+
+    /// The first kink of p̈ later than `t` \[s\] by more than round-off of t (+∞ after the last): an
+    /// inner sample where the slope of p̈, p⃛, steps, so an adaptive step should end there rather than
+    /// cross it ([`crate::model::Model::next_break`]). A kink within 64 ulp of t counts as reached.
+    pub fn next_kink_after(&self, t: f64) -> f64 {
+        let reached = t + 64.0 * f64::EPSILON * t.abs() + 1e3 * f64::MIN_POSITIVE;
+        let i = self.kinks.partition_point(|&ti| ti <= reached);
+        self.kinks.get(i).copied().unwrap_or(f64::INFINITY)
     }
 
     /// (index i, A, h_i) of the piece for t; outside the span the end piece (extrapolated).

@@ -73,6 +73,20 @@ pub(crate) fn initial_step<M: Model>(
     (100.0 * h).min(h1).min(h_max).min(span)
 }
 
+/// Where a step from `t0` \[s\] towards `t_stop` \[s\] (may be +∞) must end at the latest: the model's
+/// next break ([`Model::next_break`]) when it comes first, unless it lies within round-off of t_stop
+/// (a sliver of a step from it to t_stop would be below the smallest step); else t_stop. Shared with
+/// the vectorised ensemble.
+#[inline(always)]
+pub(crate) fn step_end<M: Model>(model: &M, t0: f64, t_stop: f64) -> f64 {
+    let b = model.next_break(t0);
+    if b < t_stop - 64.0 * f64::EPSILON * t_stop.abs().max(b.abs()) {
+        b
+    } else {
+        t_stop
+    }
+}
+
 /// The accepted y₁ at `t1` [s] after a step of `h` [s], projected onto TS² of length `length` [m]
 /// when `project` is on, and then onto the start's energy and J₃ (`targets`, where the model keeps
 /// them) when `invariants` is on; shared with the vectorised ensemble.
@@ -213,7 +227,8 @@ impl Dop853 {
         initial_step(self.atol, self.rtol, self.h_max, model, (t, y, f0), span, stats)
     }
 
-    /// One accepted step from (`t`, `s`), never past `t_stop` \[s\] (which may be +∞); rejected
+    /// One accepted step from (`t`, `s`), never past `t_stop` \[s\] (which may be +∞) nor past the
+    /// model's next break ([`Model::next_break`]: a step ends on it, not across); rejected
     /// attempts are counted in `stats`. Fails with [`Error::StepSizeUnderflow`] when the tolerance
     /// cannot be met with a step above round-off of t (e.g. the solution became non-finite).
     ///
@@ -258,6 +273,9 @@ impl Dop853 {
                 }
             }
         };
+        // the step ends on the model's next break (a kink of a sampled pivot's p̈) rather than crossing
+        // it; the first step above is still sized for the whole span (as the ensemble's lanes do)
+        let t_stop = step_end(model, t0, t_stop);
         let control = StepControl { h_max: self.h_max, rtol: self.rtol, atol: self.atol };
         let mut rejected_last = false;
         self.k[0] = self.f_current;
