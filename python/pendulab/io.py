@@ -234,8 +234,13 @@ def read_metadata(path: str | os.PathLike[str]) -> dict[str, Any]:
     fmt = format_of(path)
     where = os.fspath(path)
     if fmt == "csv":
-        with open(path, encoding="utf-8-sig") as f:
-            first = f.readline(_CSV_LINE_MAX)
+        try:
+            with open(path, encoding="utf-8-sig") as f:
+                first = f.readline(_CSV_LINE_MAX)
+        except UnicodeDecodeError as e:
+            raise InvalidInputError(
+                f"{where}: not a text CSV file (byte {e.start} is not UTF-8): no Pendulab metadata"
+            ) from None
         if not (first.startswith("# pendulab ") and _CSV_MARK in first):
             mark = f"# pendulab <kind>; {_CSV_MARK}{{...}}"
             raise InvalidInputError(f"{where}: no Pendulab metadata: the first line is not {mark!r}")

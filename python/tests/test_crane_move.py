@@ -141,6 +141,10 @@ def test_a_measured_path_is_not_extrapolated_past_its_samples() -> None:
     np.testing.assert_allclose(sampled.position([0.5, 2.0])[:, 0], [0.25, 4.0], rtol=1e-14)
     with pytest.raises(pl.InvalidInputError, match=r"t = 10 s is outside .* t = 0 … 2 s"):
         sampled.position(10.0)
+    with pytest.raises(
+        pl.InvalidInputError, match=r"t = nan s is not a finite number: a time \[s\] in 0 … 2"
+    ):
+        sampled.position(float("nan"))
     with pytest.raises(pl.InvalidInputError, match=r"t = -0.5 s is outside"):
         sampled.pivot_samples(2.0, t_start=-0.5)
     c = crane.Crane(rope=5.0, pivot=sampled)

@@ -104,6 +104,12 @@ def test_a_file_without_pendulab_metadata_is_a_clear_error(tmp_path: Path) -> No
     broken.write_text('# pendulab trajectory; metadata (JSON): {"options": \nt,x\n')
     with pytest.raises(pl.InvalidInputError, match=r"broken\.csv: no Pendulab metadata \(JSON\)"):
         io.read_metadata(broken)
+    binary = tmp_path / "binary.csv"
+    binary.write_bytes(b"PK\x03\x04\xff\xfe")
+    with pytest.raises(
+        pl.InvalidInputError, match=r"binary\.csv: not a text CSV file \(byte 4 is not UTF-8\)"
+    ):
+        io.read_metadata(binary)
     with pytest.raises(ValueError, match=r"unknown output suffix '\.txt'"):
         io.read_metadata(tmp_path / "run.txt")
 

@@ -259,6 +259,10 @@ class Sampled(Path):
         outside = (t < a) | (t > b) | np.isnan(t)
         if np.any(outside):
             bad = float(t[np.argmax(outside)])
+            if not np.isfinite(bad):
+                raise InvalidInputError(
+                    f"t = {bad} s is not a finite number: a time [s] in {a:.10g} … {b:.10g}"
+                )
             raise InvalidInputError(
                 f"t = {bad:.10g} s is outside the measured pivot path's samples, t = {a:.10g} … {b:.10g} "
                 "s (a measured path is not extrapolated: give samples that cover it)"
