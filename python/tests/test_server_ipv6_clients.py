@@ -5,7 +5,8 @@ before, each new address was a new client with its own 8 sessions, 24 connection
 An IPv4 client is its address, whether it comes as itself or IPv4-mapped (``::ffff:a.b.c.d``, through a
 socket bound to ``::``). The attack is made with addresses of the documentation prefix 2001:db8::/32
 given to the application (the test machine routes none of them): many addresses of one /64 share one
-client's caps; two /64s are two clients."""
+client's caps; two /64s are two clients. A link-local address (``fe80::/10``) is a client by
+itself and its zone: every link's addresses share the /64 ``fe80::/64``."""
 
 from __future__ import annotations
 
@@ -31,7 +32,12 @@ OTHER_64 = "2001:db8:1:3::a"
         ("::ffff:192.0.2.7", "192.0.2.7"),  # IPv4-mapped: the IPv4 client
         ("2001:db8:1:2::a", "2001:db8:1:2::/64"),
         ("2001:DB8:1:2:abcd:ef01:2345:6789", "2001:db8:1:2::/64"),
-        ("fe80::1%eth0", "fe80::/64"),  # link-local, its zone index dropped
+        ("2001:db8:1:2::a%eth0", "2001:db8:1:2::/64"),  # a global address's zone index dropped
+        ("fe80::1%eth0", "fe80::1%eth0"),  # link-local: the whole address, with its zone
+        ("FE80::A:0:0:1%2", "fe80::a:0:0:1%2"),
+        ("fe80::1", "fe80::1"),
+        ("febf:ffff::1", "febf:ffff::1"),  # the last of fe80::/10
+        ("fec0::1", "fec0::/64"),  # beyond it: a /64 again
         ("::1", "::/64"),
         ("testclient", "testclient"),  # no IP address: its own key
     ],
@@ -44,6 +50,21 @@ def test_the_key_of_an_address(host: str, key: str) -> None:
 def test_ipv4_clients_are_their_addresses() -> None:
     assert address_key("192.0.2.7") != address_key("192.0.2.8")
     assert address_key("10.1.2.3") != address_key("10.1.2.4")
+
+
+def test_link_local_clients_are_their_addresses_on_their_links() -> None:
+    """Every link-local address, on every link, lies in ``fe80::/64``: keyed by its /64, as before, all
+    link-local clients of all the server's interfaces shared one client's caps (one pupil's 8 sessions
+    for the whole link). Keyed by the address and its zone: two devices of one link, or one address
+    on two links (two devices), are two clients; one address on one link is one client."""
+    app = create_app("rosette", max_sessions_per_client=1)
+    with _lab("fe80::1%eth0", app).websocket_connect("/ws") as first:
+        assert receive(first)[1]["type"] == "status"
+        with _lab("FE80::0:1%eth0", app).websocket_connect("/ws") as again:
+            assert receive(again)[1]["key"] == "device_full"
+        for other in ("fe80::2%eth0", "fe80::1%eth1", "fe80::1:0:0:1%eth0"):
+            with _lab(other, app).websocket_connect("/ws") as ws:
+                assert receive(ws)[1]["type"] == "status", other
 
 
 def _lab(host: str, app: Any) -> LabClient:

@@ -121,7 +121,8 @@ def serve(
         typer.Option(
             min=1,
             max=10_000,
-            help="Most pages one device (address; an IPv6 address's /64) may hold open; one more is refused.",
+            help="Most pages one device (address; a global IPv6 address's /64) may hold open; one more is "
+            "refused.",
         ),
     ] = 8,
     max_connections_per_client: Annotated[
@@ -129,7 +130,7 @@ def serve(
         typer.Option(
             min=1,
             max=100_000,
-            help="Most TCP connections one device (address; an IPv6 address's /64) may hold open (its "
+            help="Most TCP connections one device (address; a global IPv6 address's /64) may hold open (its "
             "pages' WebSockets and requests); more are reset. Raise it for a class behind one NAT address.",
         ),
     ] = 24,

@@ -180,7 +180,7 @@ def create_app(
     notice saying so and is closed (code 1013, try again later). Only requests whose ``Host`` is one of
     ``allowed_hosts`` are served (default: the loopback names; :func:`pendulab.server.access.allowed_hosts`
     for another address), only the lab's own page may open ``/ws`` or POST, and with ``token`` every
-    request must carry it (classroom mode, :mod:`.access`). One client (address, an IPv6 one's /64:
+    request must carry it (classroom mode, :mod:`.access`). One client (address, a global IPv6 one's /64:
     :mod:`.room`) may hold ``max_sessions_per_client`` WebSockets and have
     ``max_computations_per_client`` computing requests under way or waiting (one more: 429, key
     ``device_busy``). Raises :class:`pendulab.ScenarioError` for a bad scenario."""

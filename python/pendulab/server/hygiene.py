@@ -15,7 +15,7 @@ bodies only and capped, slow clients timed out.
 - :class:`TimedH11Protocol`: uvicorn's HTTP/1.1 protocol with a deadline for the request *headers*
   (:data:`HEADER_TIMEOUT`): a connection that opens and sends its headers slowly or never
   (slowloris) is closed. uvicorn itself times out only idle keep-alive connections. One client
-  (address, an IPv6 one's /64: :func:`~pendulab.server.room.address_key`) may hold at most
+  (address, a global IPv6 one's /64: :func:`~pendulab.server.room.address_key`) may hold at most
   :data:`~pendulab.server.room.MAX_CONNECTIONS_PER_CLIENT` connections; more are cut (reset) as soon
   as they are accepted, before uvicorn sets up anything for them and without writing an answer, so
   one client's idle sockets cannot fill the server's connection limit for everyone, and one

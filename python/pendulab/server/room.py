@@ -1,8 +1,8 @@
 """Fairness per client and per room (docs/web.md, "Security": "a pupil in the room").
 
 A *client* is the address a connection comes from (a pupil's device; in classroom mode every pupil
-carries the same token, so the token cannot tell them apart), an IPv6 address by its /64 network
-(:func:`address_key`). :class:`Room` keeps, per client:
+carries the same token, so the token cannot tell them apart), a global IPv6 address by its /64 network,
+a link-local one by itself (:func:`address_key`). :class:`Room` keeps, per client:
 
 - its open lab sessions: at most ``per_client`` (:data:`MAX_SESSIONS_PER_CLIENT`); one more is refused
   with an error notice, as the server-wide ``max_sessions`` is;
@@ -61,24 +61,30 @@ IPV6_PREFIX = 64
 """Leading bits of an IPv6 address that name one client. A /64 is the least a network hands out (a
 home's or a LAN's subnet, a host's own routed /64); inside it a device takes as many addresses as it
 likes (SLAAC privacy addresses, or any it assigns itself), so keyed by the whole address one device
-would be as many clients as it has addresses, around every cap per client."""
+would be as many clients as it has addresses, around every cap per client. Not for link-local
+addresses (``fe80::/10``): every link's hosts, on every interface, share the prefix ``fe80::/64``, so
+they are keyed by the whole address and its zone (:func:`address_key`)."""
 
 
 @functools.lru_cache(maxsize=4096)
 def address_key(host: str) -> str:
     """The client an address belongs to, the key of the caps per client: an IPv4 address itself; an
     IPv6 address its /64 network (``2001:db8:1:2::/64``, :data:`IPV6_PREFIX`; a zone index such as
-    ``%eth0`` dropped); an IPv4-mapped IPv6 address (``::ffff:192.0.2.7``, how a socket bound to ``::``
-    sees an IPv4 client) the IPv4 address. Anything that is no IP address (a Unix socket, a test
-    client's name) is its own key."""
+    ``%eth0`` dropped); a link-local IPv6 address (``fe80::/10``) itself with its zone index, if any
+    (``fe80::1%eth0``: the /64 of every link-local address is ``fe80::/64``, on every link, so keyed by
+    it all link-local clients of all interfaces were one); an IPv4-mapped IPv6 address
+    (``::ffff:192.0.2.7``, how a socket bound to ``::`` sees an IPv4 client) the IPv4 address. Anything
+    that is no IP address (a Unix socket, a test client's name) is its own key."""
     try:
-        ip = ipaddress.ip_address(host.split("%", 1)[0])
+        ip = ipaddress.ip_address(host)
     except ValueError:
         return host
     if isinstance(ip, ipaddress.IPv6Address):
         if ip.ipv4_mapped is not None:
             return str(ip.ipv4_mapped)
-        return str(ipaddress.IPv6Network((ip, IPV6_PREFIX), strict=False))
+        if ip.is_link_local:
+            return str(ip)  # compressed, lower case, with its zone (``%eth0``) where one was given
+        return str(ipaddress.IPv6Network((int(ip), IPV6_PREFIX), strict=False))  # no zone
     return str(ip)
 
 

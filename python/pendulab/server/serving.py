@@ -45,7 +45,7 @@ def server_config(
     """The uvicorn configuration of the lab: ``app`` on ``host``:``port`` with the limits of the module
     doc; at most ``max_sessions`` + 64 connections at once (the pages' WebSockets and their requests;
     beyond that uvicorn answers 503), at most ``max_connections_per_client`` of one client (address;
-    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`; an IPv6 client is its /64,
+    more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`; a global IPv6 client is its /64,
     :func:`~.room.address_key`); a WebSocket from which nothing (no command, ping or pong) arrives for
     ``idle_timeout`` seconds (a finite number > 0, else ``ValueError``) is closed (code 1001): the server
     pings every :data:`~.hygiene.WS_PING_INTERVAL` seconds (at most half the idle timeout) and a browser
