@@ -11,6 +11,7 @@ pings a silent client gets before the close is exact whatever the machine's spee
 from __future__ import annotations
 
 import asyncio
+import re
 import socket
 import time
 from typing import Any
@@ -28,7 +29,7 @@ from ws_session import live_lab
 from pendulab.cli import app as cli
 from pendulab.server import create_app
 from pendulab.server.hygiene import WS_IDLE_TIMEOUT, WS_PING_INTERVAL, LabWebSocketProtocol
-from pendulab.server.serving import server_config
+from pendulab.server.serving import MIN_IDLE_TIMEOUT, server_config
 
 
 class _Transport(asyncio.Transport):
@@ -134,9 +135,9 @@ def test_a_quiet_page_that_answers_the_pings_is_never_idle() -> None:
 def test_a_silent_client_of_the_real_lab_gets_exactly_the_idle_timeouts_pings_then_1001() -> None:
     """Over a real socket with the lab itself: a client that completed the handshake and then answers
     nothing (it reads the frames the lab streams) gets the pings of the idle timeout, no more, and the
-    close. Timeout 0.1 s, pings every 0.05 s: 2 silent intervals after the first ping."""
+    close. Timeout 1 s (the least allowed), pings every 0.5 s: 2 silent intervals after the first ping."""
     lab = create_app("rosette")
-    with live_lab(lab, idle_timeout=0.1) as port:
+    with live_lab(lab, idle_timeout=MIN_IDLE_TIMEOUT) as port:
         client = ClientProtocol(parse_uri(f"ws://127.0.0.1:{port}/ws"))
         client.send_request(client.connect())
         with socket.create_connection(("127.0.0.1", port), timeout=20) as s:
@@ -165,18 +166,29 @@ def test_the_idle_timeout_is_a_setting_of_the_server_and_of_pendulab_serve(
     assert (config.ws_ping_interval, config.ws_ping_timeout) == (WS_PING_INTERVAL, None)
     short = server_config(create_app("rosette"), "127.0.0.1", 8000, idle_timeout=10.0)
     assert short.ws_ping_interval == 5.0  # two pings at least within the timeout
-    for bad in (0.0, -1.0, float("nan"), float("inf")):  # inf: its ceil(inf / interval) raised at each ping
-        finite = f"idle timeout must be a finite number of seconds > 0, got {bad}"
-        with pytest.raises(ValueError, match=finite):
-            server_config(create_app("rosette"), "127.0.0.1", 8000, idle_timeout=bad)
+    least, most = (server_config(_quiet_app, "127.0.0.1", 8000, idle_timeout=t) for t in (1, 86_400.0))
+    assert (least.ws.idle_timeout, least.ws_ping_interval) == (1.0, 0.5)  # type: ignore[union-attr]
+    assert (most.ws.idle_timeout, most.ws_ping_interval) == (86_400.0, 20.0)  # type: ignore[union-attr]
+    # inf: its ceil(inf / interval) raised at each ping; 1e-9 and 0.999: pings every half of it
+    bads: list[Any] = [0.0, -1.0, float("nan"), float("inf"), 1e-9, 0.05, 0.999, 86_400.5, True, "60"]
+    for bad in bads:
+        allowed = f"the idle timeout must be a number of seconds from 1 to 86400 (one day), got {bad!r}"
+        with pytest.raises(ValueError, match=re.escape(allowed)):
+            server_config(_quiet_app, "127.0.0.1", 8000, idle_timeout=bad)
     ran = _serve_configs(monkeypatch)
     args = ["serve", "--no-browser", "--port", str(_free_port()), "--idle-timeout", "300"]
     result = CliRunner().invoke(cli, args)
     assert result.exit_code == 0, result.output
     (config,) = ran
     assert config.ws.idle_timeout == 300.0  # type: ignore[union-attr]
-    bad = CliRunner().invoke(cli, ["serve", "--idle-timeout", "0"])
-    assert bad.exit_code != 0 and "--idle-timeout" in bad.output
+    for arg, shown in (("0", "0.0"), ("1e-9", "1e-09"), ("0.5", "0.5"), ("86401", "86401.0"), ("nan", "nan")):
+        bad = CliRunner().invoke(cli, ["serve", "--no-browser", "--idle-timeout", arg])
+        assert bad.exit_code == 2, bad.output
+        assert (
+            "error: pendulab serve: --idle-timeout: the idle timeout must be a number of seconds from 1 to "
+            f"86400 (one day), got {shown}; see 'pendulab serve --help'" in bad.output
+        ), bad.output
+    assert len(ran) == 1  # none of them started a server
 
 
 def test_an_idle_client_that_reads_nothing_is_cut_and_its_session_ends() -> None:
@@ -244,7 +256,7 @@ async def _accepted(config: Config) -> tuple[Any, ClientProtocol, _Transport]:
     return server, client, transport
 
 
-@pytest.mark.parametrize("idle_timeout", [0.05, 1.0, 10.0, 60.0, 3600.0, 86_400.0])
+@pytest.mark.parametrize("idle_timeout", [1.0, 10.0, 60.0, 3600.0, 86_400.0])
 def test_the_idle_check_runs_at_the_keepalive_pings_which_server_config_always_turns_on(
     idle_timeout: float,
 ) -> None:
@@ -252,8 +264,8 @@ def test_the_idle_check_runs_at_the_keepalive_pings_which_server_config_always_t
     and uvicorn arms that timer only when ``ws_ping_interval`` is a number > 0. With the lab's
     configuration (``server_config``) the timer is armed when the handshake completes, for at most
     half the idle timeout, whatever the timeout; with uvicorn's pings turned off it is not, and a
-    silent client is never closed. For the shortest timeout the timer is let run: the silent client
-    gets the close (1001) in real time, from nothing but the configuration's own timer."""
+    silent client is never closed. For the shortest timeout allowed (1 s) the timer is let run: the
+    silent client gets the close (1001) in real time, from nothing but the configuration's own timer."""
 
     async def run(pings_on: bool) -> tuple[float | None, int | None]:
         config = server_config(_quiet_app, "127.0.0.1", 8000, idle_timeout=idle_timeout)
@@ -263,11 +275,10 @@ def test_the_idle_check_runs_at_the_keepalive_pings_which_server_config_always_t
         server, client, transport = await _accepted(config)
         timer = server.ping_timer
         armed = None if timer is None else timer.when() - asyncio.get_running_loop().time()
-        if idle_timeout < 1.0:  # 0.05 s: pings every 0.025 s, the close after 2 silent intervals
-            for _ in range(400):
+        if idle_timeout == MIN_IDLE_TIMEOUT:  # 1 s: pings every 0.5 s, the close after 2 silent intervals
+            deadline = asyncio.get_running_loop().time() + 20 * idle_timeout  # bounded, however loaded
+            while not transport.closed and asyncio.get_running_loop().time() < deadline:
                 await asyncio.sleep(0.005)
-                if transport.closed:
-                    break
         client.receive_data(bytes(transport.out))
         code = client.close_rcvd.code if client.close_rcvd is not None else None
         server.connection_lost(None)
@@ -276,6 +287,6 @@ def test_the_idle_check_runs_at_the_keepalive_pings_which_server_config_always_t
     armed, code = asyncio.run(run(pings_on=True))
     assert armed is not None, "server_config left uvicorn's keepalive pings off: nothing checks idleness"
     assert 0.0 < armed <= idle_timeout / 2 + 1e-3
-    if idle_timeout < 1.0:
+    if idle_timeout == MIN_IDLE_TIMEOUT:
         assert code == 1001
     assert asyncio.run(run(pings_on=False)) == (None, None)  # pings off: never checked, never closed

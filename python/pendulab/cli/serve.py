@@ -21,7 +21,7 @@ from typing import Annotated
 
 import typer
 
-from .common import _fail, _say, _user_errors, app
+from .common import UsageError, _fail, _say, _user_errors, app
 
 DEFAULT_HOST = "127.0.0.1"
 DEFAULT_PORT = 8000
@@ -88,6 +88,19 @@ def _check_proxies(value: str) -> None:
             _fail(f"--trust-proxy: {item!r} is not an IP address or network (e.g. 127.0.0.1, 10.0.0.0/8, *)")
 
 
+def _idle_timeout(value: float) -> float:
+    """``--idle-timeout`` checked by ``server_config``'s own rule
+    (:func:`pendulab.server.serving.check_idle_timeout`), as the command line is read."""
+    try:
+        from ..server.serving import check_idle_timeout
+    except ImportError:  # serve names the missing extra itself
+        return value
+    try:
+        return check_idle_timeout(value)
+    except ValueError as e:
+        raise UsageError(f"--idle-timeout: {e}") from None
+
+
 def _open_when_up(server: object, url: str) -> None:
     for _ in range(200):  # up to 10 s
         if getattr(server, "started", False):
@@ -146,10 +159,10 @@ def serve(
     idle_timeout: Annotated[
         float,
         typer.Option(
-            min=1.0,
-            max=86_400.0,
+            callback=_idle_timeout,
             help="Seconds a page's WebSocket may send nothing (no command, no answer to the server's "
-            "pings) before it is closed; an open page's browser answers the pings by itself.",
+            "pings) before it is closed, 1 to 86400 (one day); an open page's browser answers the pings "
+            "by itself.",
         ),
     ] = 60.0,
     allow_host: Annotated[

@@ -11,7 +11,7 @@ within that budget.
 
 from __future__ import annotations
 
-import math
+import numbers
 from typing import Any
 
 import uvicorn
@@ -28,6 +28,27 @@ closed with code 1009); the session refuses commands over 4096 characters itself
 
 KEEP_ALIVE = 5
 """Seconds an idle HTTP keep-alive connection stays open."""
+
+MIN_IDLE_TIMEOUT = 1.0
+"""Least idle timeout [s] of a WebSocket (:func:`server_config`, ``pendulab serve --idle-timeout``): the
+server pings twice per timeout, and a browser's answer needs a round trip, so a shorter one would ping
+every client many times a second and close pages for a hiccup of their network."""
+
+MAX_IDLE_TIMEOUT = 86_400.0
+"""Most idle timeout [s] of a WebSocket: one day."""
+
+
+def check_idle_timeout(seconds: Any) -> float:
+    """``seconds`` as the idle timeout of :func:`server_config` and ``pendulab serve --idle-timeout`` (the
+    one rule of both): a number from :data:`MIN_IDLE_TIMEOUT` to :data:`MAX_IDLE_TIMEOUT`, else a
+    ``ValueError`` naming it and what is allowed."""
+    ok = isinstance(seconds, numbers.Real) and not isinstance(seconds, bool)
+    if not (ok and MIN_IDLE_TIMEOUT <= seconds <= MAX_IDLE_TIMEOUT):  # nan too
+        raise ValueError(
+            f"the idle timeout must be a number of seconds from {MIN_IDLE_TIMEOUT:g} to "
+            f"{MAX_IDLE_TIMEOUT:g} (one day), got {seconds!r}"
+        )
+    return float(seconds)
 
 
 def server_config(
@@ -47,10 +68,11 @@ def server_config(
     beyond that uvicorn answers 503), at most ``max_connections_per_client`` of one client (address;
     more are reset when accepted: :class:`~.hygiene.TimedH11Protocol`; a global IPv6 client is its /64,
     :func:`~.room.address_key`); a WebSocket from which nothing (no command, ping or pong) arrives for
-    ``idle_timeout`` seconds (a finite number > 0, else ``ValueError``) is closed (code 1001): the server
-    pings every :data:`~.hygiene.WS_PING_INTERVAL` seconds (at most half the idle timeout) and a browser
-    answers by itself, so an open page is kept (:class:`~.hygiene.LabWebSocketProtocol`). uvicorn's own
-    pong deadline is off: the idle timeout is the one rule.
+    ``idle_timeout`` seconds (:func:`check_idle_timeout`: 1 s to a day, else ``ValueError``) is closed
+    (code 1001): the server pings every :data:`~.hygiene.WS_PING_INTERVAL` seconds (at most half the idle
+    timeout) and a browser answers by itself, so an open page is kept
+    (:class:`~.hygiene.LabWebSocketProtocol`). uvicorn's own pong deadline is off: the idle timeout is
+    the one rule.
 
     The idle check runs only at uvicorn's keepalive pings: it is
     :meth:`~.hygiene.LabWebSocketProtocol.send_keepalive_ping`, which uvicorn's timer calls every
@@ -69,9 +91,8 @@ def server_config(
         (TimedH11Protocol,),
         {"header_timeout": float(header_timeout), "max_per_client": int(max_connections_per_client)},
     )
-    if not (idle_timeout > 0 and math.isfinite(idle_timeout)):  # inf: no whole number of pings
-        raise ValueError(f"the idle timeout must be a finite number of seconds > 0, got {idle_timeout}")
-    websocket = type("LabWebSocket", (LabWebSocketProtocol,), {"idle_timeout": float(idle_timeout)})
+    idle_timeout = check_idle_timeout(idle_timeout)
+    websocket = type("LabWebSocket", (LabWebSocketProtocol,), {"idle_timeout": idle_timeout})
     return uvicorn.Config(
         app,
         host=host,
