@@ -9,6 +9,7 @@ check). Times in seconds, angles in radians."""
 from __future__ import annotations
 
 import re
+import time
 from dataclasses import replace
 from pathlib import Path
 from typing import Any
@@ -19,6 +20,7 @@ from sweep_records import drop_chunk, same
 
 import pendulab as pl
 from pendulab import _core
+from pendulab.sweeps import backends as sweep_backends
 from pendulab.sweeps import compute as sweep_compute
 from pendulab.sweeps import run as sweep_mod
 from pendulab.sweeps.compute import RAN, ChunkTask
@@ -255,3 +257,57 @@ def test_a_dask_worker_that_would_run_another_method_is_named() -> None:
         "arithmetic_version 1, not the sweep's method 'rattle6', arithmetic 'fused', arithmetic_version 1: "
         f"it runs another pendulab than this client; nothing was computed. {UPGRADE}"
     ), str(e.value)
+
+
+HANG = 5.0
+"""Seconds the hung worker's event loop stays blocked (longer than the sweep may wait for it)."""
+
+
+def test_a_hung_dask_worker_is_named_within_the_timeout(
+    tmp_path: Path, cluster: Any, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """A real worker process that hangs at the question before the first chunk (its event loop blocked
+    for ``HANG`` s, as by a stuck call): the sweep waited for it as long as it hung (for good, for a
+    worker that never comes back). Now it is refused after ``WORKER_TIMEOUT`` (1 s here), naming that
+    worker, the timeout and the fix, with nothing computed on any worker and nothing written."""
+    _age(cluster, "current")  # every worker has pendulab imported: the healthy one answers at once
+    slow, _ = sorted(cluster.nthreads())
+
+    def hang(seconds: float) -> None:
+        import time
+
+        from pendulab.sweeps import compute
+
+        ran = compute.ran
+
+        def hung(spec: Any) -> Any:
+            compute.ran = ran  # hangs once
+            time.sleep(seconds)
+            return ran(spec)
+
+        compute.ran = hung
+
+    cluster.run(hang, HANG, workers=[slow])
+    monkeypatch.setattr(sweep_backends, "WORKER_TIMEOUT", 1.0)
+    out = tmp_path / "sw"
+    t0 = time.perf_counter()
+    with pytest.raises(TimeoutError) as e:
+        pl.sweep(GRID, QS, method="rattle6", scheduler=cluster, out=out, **KW)
+    took = time.perf_counter() - t0
+    assert str(e.value) == (
+        f"the Dask worker {slow} did not answer within 1 s what it would run (asked before the first "
+        "chunk): it hangs, its event loop blocked or cut off from the scheduler; nothing was computed. "
+        "Restart that worker or take it out of the cluster, or allow it longer "
+        "(pendulab.sweeps.backends.WORKER_TIMEOUT), then run the sweep again"
+    )
+    assert took < HANG, took  # it did not wait for the worker
+    assert _computed(cluster) == 0 and not list(out.glob("chunk-*.parquet"))  # (waits for the worker)
+    assert same(pl.sweep(GRID, QS, scheduler=cluster, **KW), pl.sweep(GRID, QS, **KW))  # it is back
+
+
+@pytest.mark.parametrize("bad", [0.0, -1.0, float("nan"), float("inf"), True])
+def test_the_workers_timeout_is_a_number_of_seconds(cluster: Any, bad: Any) -> None:
+    runner = sweep_backends.Dask(cluster, None)
+    with pytest.raises(pl.InvalidInputError) as e:
+        runner.ask(sweep_compute.ran, None, timeout=bad)
+    assert str(e.value) == f"the Dask workers' timeout must be a finite number of seconds > 0, got {bad!r}"

@@ -7,9 +7,11 @@ from __future__ import annotations
 import concurrent.futures as cf
 import contextlib
 import logging
+import math
 import os
 import signal
 import threading
+import time
 import uuid
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -21,6 +23,13 @@ CONNECT_TIMEOUT = 5.0
 
 POLL = 0.1
 """Seconds between the driver's checks (progress, Ctrl-C)."""
+
+WORKER_TIMEOUT = 30.0
+"""Seconds every Dask worker gets to answer the question asked before the first chunk (what it would
+run, :meth:`Dask.ask`): a healthy worker answers in milliseconds (a second or so if it has still to
+import pendulab); one that has not answered by then hangs (its event loop blocked, or cut off) and
+would hang the sweep. Set it (``pendulab.sweeps.backends.WORKER_TIMEOUT = 120``) for a slower
+cluster."""
 
 
 class Threads:
@@ -82,10 +91,44 @@ class Dask:
         self.slots = 2 * nthreads
         self.run = uuid.uuid4().hex[:8]
 
-    def ask(self, fn: Callable[..., Any], *args: Any) -> dict[str, Any]:
-        """``fn(*args)`` on every worker of the cluster now: worker address → what it returned, or the
-        exception it raised (also the one of a worker that cannot unpickle ``fn``)."""
-        return dict(self.client.run(fn, *args, on_error="return"))
+    def ask(self, fn: Callable[..., Any], *args: Any, timeout: float | None = None) -> dict[str, Any]:
+        """``fn(*args)`` on every worker of the cluster now (``distributed.Client.run``, one worker a
+        thread, all at once): worker address → what it returned, or the exception it raised (also the
+        one of a worker that cannot unpickle ``fn``). A ``TimeoutError`` naming the first worker (by
+        address) that has not answered within ``timeout`` s (default :data:`WORKER_TIMEOUT`), how many
+        others, and the fix. The thread of a hung worker is left waiting (a daemon: it holds up nothing,
+        and ends when the worker answers or the client closes)."""
+        wait = WORKER_TIMEOUT if timeout is None else timeout
+        if isinstance(wait, bool) or not (isinstance(wait, (int, float)) and 0 < wait < math.inf):
+            raise InvalidInputError(
+                f"the Dask workers' timeout must be a finite number of seconds > 0, got {wait!r}"
+            )
+        answers: dict[str, Any] = {}
+
+        def one(addr: str) -> None:
+            try:
+                answers.update(self.client.run(fn, *args, workers=[addr], on_error="return"))
+            except Exception as e:  # the scheduler's own error for this worker (e.g. it left)
+                answers[addr] = e
+
+        asking = {
+            addr: threading.Thread(target=one, args=(addr,), name=f"pendulab-ask {addr}", daemon=True)
+            for addr in sorted(self.client.nthreads())
+        }
+        for t in asking.values():
+            t.start()
+        deadline = time.monotonic() + wait
+        for t in asking.values():
+            t.join(max(deadline - time.monotonic(), 0.0))
+        hung = [addr for addr, t in asking.items() if t.is_alive()]
+        if hung:
+            raise TimeoutError(
+                f"{name_workers(hung, len(asking))} did not answer within {wait:g} s what it would run "
+                "(asked before the first chunk): it hangs, its event loop blocked or cut off from the "
+                "scheduler; nothing was computed. Restart that worker or take it out of the cluster, or "
+                "allow it longer (pendulab.sweeps.backends.WORKER_TIMEOUT), then run the sweep again"
+            )
+        return dict(answers)
 
     def submit(self, fn: Callable[..., Any], task: Any) -> Any:
         return self.client.submit(
@@ -109,6 +152,16 @@ class Dask:
             self.client.close()
         if self.cluster is not None:
             self.cluster.close()
+
+
+def name_workers(addresses: list[str], cluster: int) -> str:
+    """The first of ``addresses`` and how many more of the ``cluster``'s workers: ``the Dask worker
+    tcp://10.0.0.7:40211 (and 2 others of the cluster's 5)``."""
+    named = f"the Dask worker {addresses[0]}"
+    if len(addresses) > 1:
+        more = len(addresses) - 1
+        named += f" (and {more} other{'s' if more > 1 else ''} of the cluster's {cluster})"
+    return named
 
 
 def connect(address: str, timeout: float | None = None) -> Any:

@@ -13,9 +13,11 @@ where it always holds. Exact quantities integrate nothing: their chunks are acce
 
 A chunk's echo comes back only once the chunk is computed, so before the first chunk is sent to a Dask
 cluster every worker is asked what it would run (:func:`check_workers`: ``ran`` of the sweep's spec on
-each, ``distributed.Client.run``); a worker older than the echo cannot even unpickle that function and
-answers with the error. A worker that would not run the sweep is refused as above, naming its address,
-before anything is computed. Workers that join the cluster later are checked by their chunks' echo.
+each, ``distributed.Client.run``; one that has not answered within :data:`~.backends.WORKER_TIMEOUT` s
+hangs, and is named in a ``TimeoutError``: :meth:`.backends.Dask.ask`); a worker older than the echo
+cannot even unpickle that function and answers with the error. A worker that would not run the sweep
+is refused as above, naming its address, before anything is computed. Workers that join the cluster
+later are checked by their chunks' echo.
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from typing import Any
 from .. import validate as limits
 from .._core import InvalidInputError, __version__
 from ..model import FloatArray
+from .backends import name_workers
 from .compute import RAN, SweepSpec
 
 UPGRADE = (
@@ -108,9 +111,7 @@ def check_workers(answers: Mapping[str, Any], spec: SweepSpec) -> None:
     if not bad:
         return
     addr, answer, (kind, what, want) = bad[0]
-    worker = f"the Dask worker {addr}"
-    if len(bad) > 1:
-        worker += f" (and {len(bad) - 1} other{'s' if len(bad) > 2 else ''} of the cluster's {len(answers)})"
+    worker = name_workers([a for a, _, _ in bad], len(answers))
     upgrade = "nothing was computed. " + UPGRADE.format(version=__version__)
     if kind == "silent":
         said = _error(answer) if isinstance(answer, BaseException) else f"it answered {limits.show(answer)}"
