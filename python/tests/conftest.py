@@ -1,9 +1,12 @@
-"""Shared fixtures: the repository paths, the rosette start (l = 1 m, g = 9.81 m/s², θ₀ = 60°,
-φ̇₀ = 2 rad/s) and its exact solution."""
+"""Shared fixtures: the repository paths, a script of tools/ as a module (:func:`load_tool`), the rosette
+start (l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s) and its exact solution."""
 
 from __future__ import annotations
 
+import importlib.util
 import signal
+import sys
+import types
 from pathlib import Path
 
 import numpy as np
@@ -20,6 +23,17 @@ signal.signal(signal.SIGINT, signal.default_int_handler)
 REPO = Path(__file__).resolve().parents[2]
 SCENARIOS = REPO / "examples" / "scenarios"
 TESTDATA = REPO / "testdata"
+
+
+def load_tool(name: str) -> types.ModuleType:
+    """The script ``tools/<name>.py`` as a module, loaded afresh (tools/ is not a package) and registered
+    in ``sys.modules`` under ``name`` (its dataclasses look their module up there)."""
+    spec = importlib.util.spec_from_file_location(name, REPO / "tools" / f"{name}.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
 
 
 @pytest.fixture

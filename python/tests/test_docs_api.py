@@ -8,6 +8,8 @@ import inspect
 import re
 from pathlib import Path
 
+from conftest import load_tool
+
 import pendulab as pl
 
 API_PAGE = Path(__file__).resolve().parents[2] / "docs" / "reference" / "api.md"
@@ -125,13 +127,6 @@ def test_simulate_reference_has_every_row_with_its_default() -> None:
 def test_the_reference_gives_each_of_two_names_on_one_line_its_own_row() -> None:
     """tools/docs_griffe.py turns ``rtol, atol : text`` into two entries, so that mkdocstrings shows each
     with its own default from the signature (it showed rtol's 1e-10 for both)."""
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location(
-        "docs_griffe", API_PAGE.parents[2] / "tools" / "docs_griffe.py"
-    )
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    text = module.one_line_entries_to_numpy("Parameters\n----------\nrtol, atol : tolerances of dop853.\n")
+    griffe = load_tool("docs_griffe")
+    text = griffe.one_line_entries_to_numpy("Parameters\n----------\nrtol, atol : tolerances of dop853.\n")
     assert text.splitlines()[2:] == ["rtol", "    tolerances of dop853.", "atol", "    tolerances of dop853."]

@@ -4,27 +4,16 @@
 
 from __future__ import annotations
 
-import importlib.util
 import os
-import sys
 from pathlib import Path
 
-from conftest import REPO
+from conftest import load_tool
 
 FILES = int(os.environ.get("FUZZ_FILES", "80"))
 
 
-def _corpus_module():  # tools/ is not a package: load the script by path
-    spec = importlib.util.spec_from_file_location("fuzz_scenarios", REPO / "tools" / "fuzz_scenarios.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    sys.modules[spec.name] = module  # its dataclasses look their module up there
-    spec.loader.exec_module(module)
-    return module
-
-
 def test_mutated_scenarios_exit_0_or_2_with_error_lines_only(tmp_path: Path) -> None:
-    fz = _corpus_module()
+    fz = load_tool("fuzz_scenarios")
     tally = fz.Tally()
     for path in fz.generate(FILES, seed=13, directory=tmp_path):
         fz.check_file(path, tally, run_work=2e4)

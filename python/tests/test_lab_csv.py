@@ -8,14 +8,13 @@ pendulum, method, dt and arithmetic gives its states bit for bit (``tools/replay
 
 from __future__ import annotations
 
-import importlib.util
 import json
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 import pytest
-from conftest import REPO
+from conftest import load_tool
 
 from pendulab.io import read_metadata
 
@@ -23,15 +22,7 @@ DATA = Path(__file__).parent / "data" / "lab"
 FILES = sorted(DATA.glob("lab-*.csv"))
 
 
-def _tool():
-    spec = importlib.util.spec_from_file_location("replay_lab_csv", REPO / "tools" / "replay_lab_csv.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-replay_lab_csv = _tool()
+replay_lab_csv = load_tool("replay_lab_csv")
 
 
 def _with_meta(src: Path, dst: Path, **change: object) -> Path:

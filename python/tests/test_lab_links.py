@@ -14,14 +14,13 @@ The e2e suite opens a sample of these links in the one-file lab (web/tests/e2e/l
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import math
 import re
 from urllib.parse import parse_qsl
 
 import pytest
-from conftest import REPO
+from conftest import REPO, load_tool
 
 from pendulab.server import Session, resolve_scenario
 from pendulab.server.app import scenarios
@@ -30,15 +29,7 @@ from pendulab.server.protocol import parse_command
 WEB = REPO / "web" / "src"
 
 
-def _lab_links():
-    spec = importlib.util.spec_from_file_location("lab_links", REPO / "tools" / "lab_links.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-lab_links = _lab_links()
+lab_links = load_tool("lab_links")
 LINKS = lab_links.all_links()
 
 

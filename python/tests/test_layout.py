@@ -4,28 +4,19 @@ the same name (``pendulab.exact`` is the function, its module is ``pendulab.theo
 
 from __future__ import annotations
 
-import importlib.util
 import pkgutil
-import sys
 import types
 from pathlib import Path
+
+from conftest import load_tool
 
 import pendulab as pl
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _checker() -> types.ModuleType:
-    spec = importlib.util.spec_from_file_location("check_imports", ROOT / "tools" / "check_imports.py")
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["check_imports"] = mod
-    spec.loader.exec_module(mod)
-    return mod
-
-
 def test_the_package_has_no_import_cycle() -> None:
-    check = _checker()
+    check = load_tool("check_imports")
     graph = check.import_graph(Path(pl.__file__).parent)
     assert "pendulab.simulation" in graph and "pendulab.cli.common" in graph
     assert check.cycles(graph) == []
@@ -39,7 +30,7 @@ def test_the_check_finds_a_cycle_hidden_in_a_function(tmp_path: Path) -> None:
     (pkg / "sub" / "__init__.py").write_text("")
     (pkg / "sub" / "b.py").write_text("from .. import a\n")
     (pkg / "c.py").write_text("from .a import f\n")  # downward only: not part of the cycle
-    check = _checker()
+    check = load_tool("check_imports")
     assert check.cycles(check.import_graph(pkg)) == [["pendulab.a", "pendulab.sub.b"]]
     assert check.main(["check_imports", str(pkg)]) == 1
 

@@ -4,26 +4,15 @@ written as a ``use`` group or inline, while comments, strings and unit tests do 
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-import types
 from pathlib import Path
+
+from conftest import load_tool
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _checker() -> types.ModuleType:
-    path = ROOT / "tools" / "check_rust_modules.py"
-    spec = importlib.util.spec_from_file_location("check_rust_modules", path)
-    assert spec is not None and spec.loader is not None
-    mod = importlib.util.module_from_spec(spec)
-    sys.modules["check_rust_modules"] = mod
-    spec.loader.exec_module(mod)
-    return mod
-
-
 def test_the_core_crate_has_no_module_cycle() -> None:
-    check = _checker()
+    check = load_tool("check_rust_modules")
     _, edges = check.parse(ROOT / "crates" / "pendulab-core" / "src")
     assert "state" in edges["model::registry"] and "limits" in edges["state"]
     assert "model::registry" in edges["model::any_model"]  # a `use super::registry::spec`
@@ -45,7 +34,7 @@ def _crate(tmp_path: Path, state_rs: str) -> Path:
 
 
 def test_the_check_finds_a_file_reaching_up(tmp_path: Path) -> None:
-    check = _checker()
+    check = load_tool("check_rust_modules")
     up = _crate(tmp_path / "a", "pub struct State;\nfn g() { let _ = crate::model::Spec; }\n")
     _, edges = check.parse(up)
     assert edges["state"] == {"model::registry"}  # followed through the re-export of model/mod.rs
@@ -54,7 +43,7 @@ def test_the_check_finds_a_file_reaching_up(tmp_path: Path) -> None:
 
 
 def test_comments_strings_and_tests_are_not_edges(tmp_path: Path) -> None:
-    check = _checker()
+    check = load_tool("check_rust_modules")
     text = (
         "pub struct State;\n// crate::model::Spec in a comment\n"
         'const S: &str = "crate::model::Spec // in a string";\n'

@@ -73,33 +73,41 @@ async def _quiet_app(scope: Any, receive: Any, send: Any) -> None:
         pass
 
 
+async def _accepted(config: Config) -> tuple[Any, ClientProtocol, _Transport]:
+    """A WebSocket of ``config`` (loaded) accepted by ``_quiet_app``: the server's protocol, the
+    sans-I/O client after the handshake and the transport between them."""
+    server = config.ws_protocol_class(  # type: ignore[misc]
+        config=config, server_state=ServerState(), app_state={}, _loop=asyncio.get_running_loop()
+    )
+    transport = _Transport()
+    server.connection_made(transport)
+    client = ClientProtocol(parse_uri("ws://127.0.0.1:8000/ws"))
+    client.send_request(client.connect())
+    server.data_received(b"".join(client.data_to_send()))
+    for _ in range(50):  # the app accepts
+        await asyncio.sleep(0)
+    assert server.handshake_complete
+    client.receive_data(bytes(transport.out))
+    transport.out.clear()
+    return server, client, transport
+
+
 def _quiet_client(pings: int, idle_timeout: float, answers: bool) -> tuple[int, int | None]:
     """A client that sends nothing of its own, answering the server's pings or not, through ``pings``
     of the server's keepalive steps (interval 1000 s: the timer itself never fires here). Returns the
     pings it received and the close code it was sent (None: still open)."""
 
     async def run() -> tuple[int, int | None]:
-        config = Config(_quiet_app, ws_ping_interval=1000.0, ws_ping_timeout=None, lifespan="off")
-        config.load()
         cls = type("Lab", (LabWebSocketProtocol,), {"idle_timeout": idle_timeout})
-        server = cls(
-            config=config, server_state=ServerState(), app_state={}, _loop=asyncio.get_running_loop()
-        )
-        transport = _Transport()
-        server.connection_made(transport)
-        client = ClientProtocol(parse_uri("ws://127.0.0.1:8000/ws"))
-        client.send_request(client.connect())
-        server.data_received(b"".join(client.data_to_send()))
-        for _ in range(50):  # the app accepts
-            await asyncio.sleep(0)
-        assert server.handshake_complete
+        config = Config(_quiet_app, ws=cls, ws_ping_interval=1000.0, ws_ping_timeout=None, lifespan="off")
+        config.load()
+        server, client, transport = await _accepted(config)
 
         def to_client() -> list[Any]:
             client.receive_data(bytes(transport.out))
             transport.out.clear()
             return list(client.events_received())
 
-        to_client()  # the handshake's answer
         got = 0
         for _ in range(pings):
             server.send_keepalive_ping()
@@ -235,25 +243,6 @@ def test_an_idle_client_that_reads_nothing_is_cut_and_its_session_ends() -> None
         return server.disconnected, bool(ended)
 
     assert asyncio.run(run()) == (True, True)
-
-
-async def _accepted(config: Config) -> tuple[Any, ClientProtocol, _Transport]:
-    """A WebSocket of ``config`` (loaded) accepted by ``_quiet_app``: the server's protocol, the
-    sans-I/O client after the handshake and the transport between them."""
-    server = config.ws_protocol_class(  # type: ignore[misc]
-        config=config, server_state=ServerState(), app_state={}, _loop=asyncio.get_running_loop()
-    )
-    transport = _Transport()
-    server.connection_made(transport)
-    client = ClientProtocol(parse_uri("ws://127.0.0.1:8000/ws"))
-    client.send_request(client.connect())
-    server.data_received(b"".join(client.data_to_send()))
-    for _ in range(50):  # the app accepts
-        await asyncio.sleep(0)
-    assert server.handshake_complete
-    client.receive_data(bytes(transport.out))
-    transport.out.clear()
-    return server, client, transport
 
 
 @pytest.mark.parametrize("idle_timeout", [1.0, 10.0, 60.0, 3600.0, 86_400.0])
