@@ -69,3 +69,14 @@ def test_cli_user_errors(tmp_path: Path) -> None:
     bad.write_text("[crane]\nrope = 10.0\n")
     assert_user_error(*invoke("crane", "run", str(bad)), "simulation")
     assert_user_error(*invoke("crane", "run", str(EXAMPLE), "--out", str(tmp_path / "x.parquet")), ".csv")
+
+
+def test_pendulab_run_quiet_prints_nothing_for_a_crane_file(tmp_path: Path) -> None:
+    """`pendulab run FILE -q` prints nothing but errors (docs/cli.md) for a crane file too (it printed
+    the crane's report and 'wrote …')."""
+    out = tmp_path / "run.csv"
+    code, text, err = invoke("run", str(EXAMPLE), "-q", "--out", str(out))
+    assert code == 0 and text == "" and err == "", (text, err)
+    assert out.stat().st_size > 0
+    code, text, _ = invoke("run", str(EXAMPLE))
+    assert code == 0 and "sway modes 0.91, 7.9949 rad/s; shaper zvd" in text

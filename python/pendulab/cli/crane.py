@@ -186,27 +186,35 @@ def run_cmd(
         report(load(file), str(file), out, plot)
 
 
-def report(sc: Any, name: str, out: Path | None = None, plot: Path | None = None) -> None:
+def report(
+    sc: Any, name: str, out: Path | None = None, plot: Path | None = None, quiet: bool = False
+) -> None:
     """Runs the crane scenario ``sc`` (``pendulab.crane.scenario.CraneScenario``) and prints its
     modes [rad/s], residual sway [m], largest tension [N] and energy balance [J]; writes ``out``
-    (.csv) and ``plot`` (an image) when given (``pendulab crane run`` and ``pendulab run``)."""
+    (.csv) and ``plot`` (an image) when given (``pendulab crane run`` and ``pendulab run``). ``quiet``
+    (``pendulab run -q``) prints nothing."""
+
+    def say(text: str) -> None:
+        if not quiet:
+            _say(text)
+
     run = sc.run()
     modes = ", ".join(f"{m:.5g}" for m in sc.crane.modes())
-    _say(f"{sc.title or name}: sway modes {modes} rad/s; shaper {sc.shaper.kind if sc.shaper else 'none'}")
+    say(f"{sc.title or name}: sway modes {modes} rad/s; shaper {sc.shaper.kind if sc.shaper else 'none'}")
     after = run.t >= sc.move_end
     sway = float(np.hypot(*run.offset()[after].T).max())
-    _say(f"largest sway after the move (t >= {sc.move_end:.3f} s): {sway:.5g} m")
+    say(f"largest sway after the move (t >= {sc.move_end:.3f} s): {sway:.5g} m")
     balance = np.abs(run.energy_residual()).max()
-    _say(f"largest rope tension {run.tension[:, 0].max():.6g} N; E - E0 - W max {balance:.3g} J")
+    say(f"largest rope tension {run.tension[:, 0].max():.6g} N; E - E0 - W max {balance:.3g} J")
     if out is not None:
         _write_csv(sc, run, out)
-        _say(f"wrote {out}")
+        say(f"wrote {out}")
     if plot is not None:
         from ..crane.plot import plot_sway
         from ..plot import save_figure
 
         save_figure(plot_sway({"run": run}, t_marks=[sc.move_end] if sc.move_end else []), plot)
-        _say(f"wrote {plot}")
+        say(f"wrote {plot}")
 
 
 def _write_csv(sc: Any, run: object, out: Path) -> None:

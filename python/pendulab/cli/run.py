@@ -128,7 +128,7 @@ def run(
                 _fail(f"--out {str(out)!r}: crane runs are written as .csv")
             if not quiet:
                 _say(f"running {scenario}" + (f": {sc.title}" if sc.title else ""), err=True)
-            report(sc.crane(), str(scenario), out)
+            report(sc.crane(), str(scenario), out, quiet=quiet)
             return
         projection = sc.initial_state().projection
         if not quiet:
