@@ -58,8 +58,8 @@ def find(text: str | Path, kind: str = "scenario") -> Path:
     if kind not in _SUFFIX:
         raise ValueError(f"kind = {kind!r}: must be 'scenario', 'sweep' or 'data'")
     path = Path(text)
-    if path.is_file():
-        return path
+    if path.is_file() or (path.exists() and not path.is_dir()):  # a device or pipe (/dev/stdin) too:
+        return path  # the reader bounds what it reads and says what is wrong (docs/limits.md, file_bytes)
     examples = {"scenario": scenario_files, "sweep": sweep_files, "data": data_files}[kind]()
     name = str(text).removeprefix(PREFIX)
     suffix = _SUFFIX[kind]
@@ -73,6 +73,15 @@ def find(text: str | Path, kind: str = "scenario") -> Path:
         raise IsADirectoryError(
             f"{text}: a directory, not a {kind} file, and no example {kind} of that name (examples: {known}; "
             f"{listing})"
+        )
+    stem = Path(name).stem
+    if Path(name).suffix == suffix and stem in examples:
+        # A path into the checkout's examples/ (README, docs) typed where there is none, e.g. after
+        # installing the wheel: the shipped example of that name is given by its name alone.
+        given = stem if kind != "data" else PREFIX + stem
+        raise FileNotFoundError(
+            f"{text}: No such file here; the example {kind} {stem!r} ships with the package: give its "
+            f"name alone, {given!r}, instead of the path (examples: {known}; {listing})"
         )
     raise FileNotFoundError(
         f"{text}: No such file, and no example {kind} of that name (examples: {known}; {listing})"

@@ -1,0 +1,90 @@
+"""What a new user types first, taken from README.md and docs/ but outside the checkout (an installed
+wheel): a path into the checkout's ``examples/`` names the shipped example to give by name instead, and
+``python -m pendulab`` is the ``pendulab`` command."""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+import pendulab as pl
+from pendulab import cli
+from pendulab.scenario import examples
+
+
+@pytest.mark.parametrize(
+    ("path", "kind", "given"),
+    [
+        ("examples/scenarios/rosette.toml", "scenario", "'rosette'"),
+        ("examples/sweeps/rotation_number.toml", "sweep", "'rotation_number'"),
+        ("examples/data/filmed_swing.csv", "data", "'example:filmed_swing'"),
+    ],
+)
+def test_a_path_into_the_checkouts_examples_names_the_example(
+    path: str, kind: str, given: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)  # no examples/ here, as for a wheel
+    with pytest.raises(FileNotFoundError) as info:
+        examples.find(path, kind)
+    message = str(info.value)
+    assert message.startswith(f"{path}: No such file here; the example {kind} ")
+    assert f"give its name alone, {given}, instead of the path" in message
+    assert examples.find(given.strip("'"), kind).name == Path(path).name  # and that name works
+
+
+def test_other_missing_files_keep_the_plain_message(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    for text, kind in [("examples/scenarios/mine.toml", "scenario"), ("rosette.csv", "scenario")]:
+        with pytest.raises(FileNotFoundError, match=r": No such file, and no example scenario of that name"):
+            examples.find(text, kind)
+
+
+def test_cli_run_with_the_readme_path_outside_the_checkout(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(cli.app, ["run", "examples/scenarios/rosette.toml", "-q"])
+    assert result.exit_code == 2, result.output
+    errors = [ln for ln in result.stderr.splitlines() if ln.startswith("error: ")]
+    assert len(errors) == 1 and "give its name alone, 'rosette', instead of the path" in errors[0]
+
+
+def test_python_dash_m_pendulab_is_the_command(tmp_path: Path) -> None:
+    def run(*args: str) -> subprocess.CompletedProcess[str]:
+        return subprocess.run(
+            [sys.executable, "-m", "pendulab", *args],
+            cwd=tmp_path,
+            capture_output=True,
+            text=True,
+            timeout=60.0,
+        )
+
+    p = run("--version")
+    assert p.returncode == 0 and p.stdout.strip() == f"pendulab {pl.__version__}", p.stderr
+    p = run("rn")
+    assert p.returncode == 2 and "error: pendulab: no such command 'rn'" in p.stderr, p.stderr
+
+
+@pytest.mark.skipif(not Path("/dev/zero").exists(), reason="needs /dev/zero")
+def test_a_device_is_read_as_a_file_not_called_missing(tmp_path: Path) -> None:
+    """docs/limits.md: `pendulab validate /dev/zero` answers at once, with the file-size limit (it said
+    "No such file", the device not being a regular file); a scenario piped to /dev/stdin is read."""
+    for command in (["validate"], ["run"], ["sweep", "--out", str(tmp_path / "z.parquet")]):
+        result = CliRunner().invoke(cli.app, [command[0], "/dev/zero", *command[1:]])
+        assert result.exit_code == 2, result.output
+        refused = "error: /dev/zero: the file is larger than 1048576 bytes (1 MiB)"
+        assert refused in result.stderr, result.stderr
+    rosette = examples.find("rosette").read_text(encoding="utf-8")
+    p = subprocess.run(
+        [sys.executable, "-m", "pendulab", "validate", "/dev/stdin"],
+        input=rosette,
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
+    assert p.returncode == 0 and p.stdout.startswith("/dev/stdin: OK (Rosette"), p.stderr
