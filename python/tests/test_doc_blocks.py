@@ -20,7 +20,11 @@ to the letter). Blocks are taken from the text, nothing is added to them:
   runs until stopped) must name a real command and only options its ``--help`` lists (an address to
   fill in is never contacted); a ``make TARGET`` line must name a target of the Makefile (``make -n``;
   building takes minutes and is what CI does anyway).
-- other blocks (output, TOML, file trees) are text.
+- ``toml`` blocks are whole files, loaded as ``pendulab validate`` and ``pendulab sweep`` load them: a
+  sweep file (a top-level ``quantity``) by the sweep file's loader, any other as a scenario (crane files
+  too). A block whose first line is ``# examples/….toml (abridged)…`` shows part of that shipped file:
+  each value it shows must be the file's.
+- other blocks (output, file trees) are text.
 
 A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; :data:`ALLOWED_SKIPS` keeps that
 list short and explicit. The README's wheel-install block (``<!-- wheel-install … -->``) is run by
@@ -35,6 +39,7 @@ import re
 import shlex
 import subprocess
 import sys
+import tomllib
 import warnings
 from dataclasses import dataclass
 from functools import cache
@@ -43,7 +48,9 @@ from pathlib import Path
 import pytest
 from conftest import REPO
 
-PAGES = [REPO / "README.md", *sorted((REPO / "docs").glob("*.md"))]
+# The README and every page of the site (docs/ with its sub-folders: the tour's index, the reference),
+# but not the READMEs mkdocs.yml leaves out of it (exclude_docs).
+PAGES = [REPO / "README.md", *sorted(p for p in (REPO / "docs").rglob("*.md") if p.name != "README.md")]
 COMMANDS = ("pendulab", "make", "python", "python3", "pip", ".", "source", "echo", "cd")
 # Blocks that are not run, by page: (first line of the block, reason). Keep this short.
 ALLOWED_SKIPS = {
@@ -65,6 +72,12 @@ class Block:
         return f"{self.page}:{self.line}"
 
 
+def _name(path: Path) -> str:
+    """The page as the messages name it: README.md, cli.md, tour/index.md."""
+    docs = REPO / "docs"
+    return path.relative_to(docs).as_posix() if path.is_relative_to(docs) else path.name
+
+
 def blocks(path: Path) -> list[Block]:
     lines = path.read_text(encoding="utf-8").split("\n")
     out, i = [], 0
@@ -80,7 +93,7 @@ def blocks(path: Path) -> list[Block]:
         while k >= 0 and not lines[k].strip():
             k -= 1
         marker = lines[k].strip() if k >= 0 and lines[k].strip().startswith("<!--") else ""
-        out.append(Block(path.name, i + 1, m.group(1), "\n".join(lines[i + 1 : j]), marker))
+        out.append(Block(_name(path), i + 1, m.group(1), "\n".join(lines[i + 1 : j]), marker))
         i = j + 1
     return out
 
@@ -165,6 +178,38 @@ def _check(cmd: list[str], cwd: Path, where: str) -> subprocess.CompletedProcess
     p = subprocess.run(cmd, cwd=cwd, env=_env(), capture_output=True, text=True, timeout=TIMEOUT)
     assert p.returncode == 0, f"{where}:\n{p.stdout[-2000:]}\n{p.stderr[-4000:]}"
     return p
+
+
+# -------------------------------------------------------------------------------------------- toml
+
+TOML = [b for b in ALL if b.lang == "toml" and not skipped(b)]
+
+
+def _shown(block: dict, file: dict, where: str, prefix: str = "") -> None:
+    for key, value in block.items():
+        assert key in file, f"{where}: {prefix}{key} is not in the file the block abridges"
+        if isinstance(value, dict):
+            _shown(value, file[key], where, f"{prefix}{key}.")
+        else:
+            assert value == file[key], f"{where}: {prefix}{key} = {value!r}, the file has {file[key]!r}"
+
+
+@pytest.mark.parametrize("block", TOML, ids=[b.where for b in TOML])
+def test_toml_blocks_are_valid_files(block: Block, tmp_path: Path) -> None:
+    from pendulab import load_scenario
+    from pendulab.sweeps.file import load_sweep_file
+
+    data = tomllib.loads(block.text)
+    abridged = re.match(r"#\s*(examples/\S+\.toml) \(abridged\)", block.text)
+    if abridged:
+        _shown(data, tomllib.loads((REPO / abridged.group(1)).read_text(encoding="utf-8")), block.where)
+        return
+    path = tmp_path / "block.toml"
+    path.write_text(block.text, encoding="utf-8")
+    if "quantity" in data:
+        load_sweep_file(path)
+    else:
+        load_scenario(path)
 
 
 # ------------------------------------------------------------------------------------------- shell

@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 
 from pendulab import cli
 
-PAGES = [REPO / "README.md", *sorted((REPO / "docs").glob("*.md"))]
+PAGES = [REPO / "README.md", *sorted(p for p in (REPO / "docs").rglob("*.md") if p.name != "README.md")]
 _OPTION = re.compile(r"(?<![\w-])(--?[a-zA-Z][\w-]*)")
 
 
@@ -44,7 +44,8 @@ def inline_commands() -> list[tuple[str, tuple[str, ...], list[str], str]]:
                 path = tuple(words[1:3]) if words[1:2] == ["crane"] else tuple(words[1:2])
                 if not path or path[0].startswith("-") or _help(path) is None:
                     continue
-                found.append((f"{page.name}:{number}", path, words[1 + len(path) :], text))
+                where = f"{page.relative_to(REPO).as_posix()}:{number}"
+                found.append((where, path, words[1 + len(path) :], text))
     return found
 
 
