@@ -6,14 +6,19 @@ An IPv4 client is its address, whether it comes as itself or IPv4-mapped (``::ff
 socket bound to ``::``). The attack is made with addresses of the documentation prefix 2001:db8::/32
 given to the application (the test machine routes none of them): many addresses of one /64 share one
 client's caps; two /64s are two clients. A link-local address (``fe80::/10``) is a client by
-itself and its zone: every link's addresses share the /64 ``fe80::/64``."""
+itself (and its zone where the address names one): every link's addresses share ``fe80::/64``."""
 
 from __future__ import annotations
 
 import asyncio
+import contextlib
+import ipaddress
+import socket
+from pathlib import Path
 from typing import Any
 
 import pytest
+from uvicorn.protocols.utils import get_remote_addr
 from uvicorn.server import ServerState
 from ws_session import LabClient, receive
 
@@ -55,8 +60,9 @@ def test_ipv4_clients_are_their_addresses() -> None:
 def test_link_local_clients_are_their_addresses_on_their_links() -> None:
     """Every link-local address, on every link, lies in ``fe80::/64``: keyed by its /64, as before, all
     link-local clients of all the server's interfaces shared one client's caps (one pupil's 8 sessions
-    for the whole link). Keyed by the address and its zone: two devices of one link, or one address
-    on two links (two devices), are two clients; one address on one link is one client."""
+    for the whole link). Keyed by the address, and its zone where it names one: two devices of one
+    link, or one address on two links (two devices), are two clients; one address on one link is one
+    client. (uvicorn names a client without its zone: the next test.)"""
     app = create_app("rosette", max_sessions_per_client=1)
     with _lab("fe80::1%eth0", app).websocket_connect("/ws") as first:
         assert receive(first)[1]["type"] == "status"
@@ -65,6 +71,38 @@ def test_link_local_clients_are_their_addresses_on_their_links() -> None:
         for other in ("fe80::2%eth0", "fe80::1%eth1", "fe80::1:0:0:1%eth0"):
             with _lab(other, app).websocket_connect("/ws") as ws:
                 assert receive(ws)[1]["type"] == "status", other
+
+
+def _link_local() -> tuple[str, int] | None:
+    """A link-local address of this machine and its interface's index (Linux: /proc/net/if_inet6), or
+    None."""
+    with contextlib.suppress(OSError):
+        for line in Path("/proc/net/if_inet6").read_text().splitlines():
+            digits, _, _, scope, _, name = line.split()
+            if scope == "20":  # link
+                return str(ipaddress.IPv6Address(int(digits, 16))), socket.if_nametoindex(name)
+    return None
+
+
+def test_a_real_link_local_client_is_keyed_as_the_server_sees_it() -> None:
+    """A TCP connection over a link-local address of this machine, named as uvicorn names the client
+    (``get_remote_addr``): the address without its zone (the socket gives the interface as a separate
+    index, which uvicorn drops), and that address is the key (was ``fe80::/64``)."""
+    local = _link_local()
+    if local is None:
+        pytest.skip("no link-local IPv6 address on this machine")
+    address, index = local
+    with socket.socket(socket.AF_INET6) as server, socket.socket(socket.AF_INET6) as client:
+        server.bind((address, 0, 0, index))
+        server.listen(1)
+        client.settimeout(10)
+        client.connect((address, server.getsockname()[1], 0, index))
+        accepted, _ = server.accept()
+        with accepted:
+            transport = type("Transport", (), {"get_extra_info": lambda _, name: accepted})()
+            remote = get_remote_addr(transport)  # type: ignore[arg-type]
+    assert remote is not None and remote[0] == address
+    assert address_key(remote[0]) == address != "fe80::/64"
 
 
 def _lab(host: str, app: Any) -> LabClient:

@@ -63,18 +63,19 @@ home's or a LAN's subnet, a host's own routed /64); inside it a device takes as 
 likes (SLAAC privacy addresses, or any it assigns itself), so keyed by the whole address one device
 would be as many clients as it has addresses, around every cap per client. Not for link-local
 addresses (``fe80::/10``): every link's hosts, on every interface, share the prefix ``fe80::/64``, so
-they are keyed by the whole address and its zone (:func:`address_key`)."""
+they are keyed by the whole address (:func:`address_key`)."""
 
 
 @functools.lru_cache(maxsize=4096)
 def address_key(host: str) -> str:
     """The client an address belongs to, the key of the caps per client: an IPv4 address itself; an
     IPv6 address its /64 network (``2001:db8:1:2::/64``, :data:`IPV6_PREFIX`; a zone index such as
-    ``%eth0`` dropped); a link-local IPv6 address (``fe80::/10``) itself with its zone index, if any
-    (``fe80::1%eth0``: the /64 of every link-local address is ``fe80::/64``, on every link, so keyed by
-    it all link-local clients of all interfaces were one); an IPv4-mapped IPv6 address
-    (``::ffff:192.0.2.7``, how a socket bound to ``::`` sees an IPv4 client) the IPv4 address. Anything
-    that is no IP address (a Unix socket, a test client's name) is its own key."""
+    ``%eth0`` dropped); a link-local IPv6 address (``fe80::/10``) itself, with its zone index where it
+    names one (``fe80::1%eth0``; uvicorn names a client without it): the /64 of every link-local address
+    is ``fe80::/64``, on every link, so keyed by it all link-local clients of all interfaces were one;
+    an IPv4-mapped IPv6 address (``::ffff:192.0.2.7``, how a socket bound to ``::`` sees an IPv4 client)
+    the IPv4 address. Anything that is no IP address (a Unix socket, a test client's name) is its own
+    key."""
     try:
         ip = ipaddress.ip_address(host)
     except ValueError:
