@@ -88,3 +88,32 @@ def test_a_device_is_read_as_a_file_not_called_missing(tmp_path: Path) -> None:
         timeout=60,
     )
     assert p.returncode == 0 and p.stdout.startswith("/dev/stdin: OK (Rosette"), p.stderr
+
+
+def test_a_misspelt_or_misplaced_model_parameter_is_named_with_its_fix() -> None:
+    """Pendulum(lenght=1.0) said "the 'damped' model has no parameter", a model the user never named;
+    now each message names the keyword, its value, the nearest name or the models that have it."""
+    cases = [
+        (
+            {"lenght": 1.0},
+            "invalid parameter lenght = 1.0: no model has a parameter 'lenght' (did you mean 'length'?)",
+        ),
+        (
+            {"frame_rate": 1e-4, "radius": 5.0},
+            "invalid parameters frame_rate = 0.0001, radius = 5.0: no one model has all of them "
+            "(the models of each: frame_rate: rotating; radius: slewing, hoisted); give model='…'",
+        ),
+        (
+            {"model": "ideal", "lenght": 1.0},
+            "the 'ideal' model has no parameter 'lenght' (did you mean 'length'?); "
+            "its parameters: length, mass, g",
+        ),
+        ({"model": "ideal", "damping": 0.1}, "(a parameter of 'damped', 'rotating', "),
+    ]
+    for keywords, message in cases:
+        with pytest.raises(pl.InvalidInputError) as info:
+            pl.Pendulum(**keywords)  # type: ignore[arg-type]
+        assert message in str(info.value), str(info.value)
+        assert "'damped' model" not in str(info.value)
+    assert pl.Pendulum(damping=0.1, radius=5.0).model == "slewing"  # one model has both: inferred
+    assert pl.Pendulum(model="rotating", frame_rate=1e-4, damping=0.1).model == "rotating"

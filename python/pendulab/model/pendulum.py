@@ -24,7 +24,7 @@ from .._core import models as _models
 from ..display import Row, html_table
 from ..validate import COMMON, array, invalid
 from ..validate import number as checked
-from .registry import _infer_model, check_model_keywords
+from .registry import _infer_model, check_model_keywords, infer_model
 from .state import (
     FloatArray,
     State,
@@ -50,7 +50,8 @@ class Pendulum:
         and the gravity direction gravity_x/y/z), ``"rotating"`` (frame_rate [rad/s], latitude
         [rad], damping [1/s]), ``"slewing"`` and ``"vibrating"`` (moving pivots). When omitted it is
         inferred from the keywords: the first model of :func:`models` that has all of them (so
-        ``damping`` alone → ``"damped"``, ``frame_rate``/``latitude`` → ``"rotating"``).
+        ``damping`` alone → ``"damped"``, ``frame_rate``/``latitude`` → ``"rotating"``); a keyword
+        no model has, or keywords no one model has together, is an error naming them.
     pivot_samples : ``(times, positions)``, times [s] (n,) strictly increasing, positions [m] (n, 3),
         n ≥ 4: the pivot moves along the C² (not-a-knot) cubic spline through them, whose second
         derivative is the pivot acceleration p̈ of T-7.2 (model ``"sampled_pivot"``, inferred when
@@ -99,7 +100,7 @@ class Pendulum:
             )
         self._force = force
         if model is None:
-            model = "sampled_pivot" if pivot_samples is not None else _infer_model(set(extra))
+            model = "sampled_pivot" if pivot_samples is not None else infer_model(extra)
         self._extra = {str(k): float(v) for k, v in extra.items()}
         self._pivot: tuple[FloatArray, FloatArray] | None = None
         if pivot_samples is not None:

@@ -10,10 +10,12 @@ Length l [m], mass m [kg] and g [m/s²] come first in every model; the rest are 
 
 from __future__ import annotations
 
+import difflib
 from typing import TYPE_CHECKING
 
+from .._core import InvalidInputError
 from .._core import models as _models
-from ..validate import choice, finite, invalid
+from ..validate import choice, finite, invalid, show
 
 if TYPE_CHECKING:
     from .._core import ModelInfo
@@ -54,12 +56,59 @@ def _infer_model(keys: set[str]) -> str:
     return "damped"
 
 
+def infer_model(extra: dict[str, float]) -> str:
+    """The model ``Pendulum(**extra)`` without ``model=`` names (:func:`_infer_model`); a keyword that
+    no model has, or keywords that no one model has together, is an :class:`InvalidInputError` naming
+    them (with the nearest name, or the models that have each) — not "the 'damped' model has no
+    parameter", a model the caller never named."""
+    owners: dict[str, list[str]] = {p["name"]: [] for m in _models() for p in m["params"]}
+    for m in _models():
+        for q in m["params"]:
+            owners[q["name"]].append(m["name"])
+    for key, value in extra.items():
+        if key not in owners:
+            near = difflib.get_close_matches(key, [*owners, "model", "pivot_samples", "force"], n=1)
+            hint = f" (did you mean {near[0]!r}?)" if near else ""
+            raise invalid(
+                "parameter " + key,
+                value,
+                f"no model has a parameter {key!r}{hint}; Pendulum takes length, g, mass, model, "
+                "pivot_samples, force and the models' own parameters (pendulab.models(), `pendulab models`)",
+            )
+    model = _infer_model(set(extra))
+    if not set(extra) <= {p["name"] for m in _models() if m["name"] == model for p in m["params"]}:
+        given = ", ".join(f"{k} = {show(v)}" for k, v in extra.items())
+        which = "; ".join(f"{k}: {', '.join(owners[k])}" for k in extra)
+        raise InvalidInputError(
+            f"invalid parameters {given}: no one model has all of them (the models of each: {which}); "
+            "give model='…' and that model's parameters (pendulab.models(), `pendulab models`)"
+        )
+    return model
+
+
 def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
     """``model`` (when given) is a registered name, and each keyword parameter a short name with a
     finite value (within the model's limits when it is one of ``model``'s parameters; the core then
     checks names and ranges against the model inferred or given)."""
     if model is not None:
         choice("model", model, [m["name"] for m in _models()])
+        names = [q["name"] for m in _models() if m["name"] == model for q in m["params"]]
+        for key, value in extra.items():
+            if key not in names:
+                others = [m["name"] for m in _models() if key in {q["name"] for q in m["params"]}]
+                near = difflib.get_close_matches(key, names, n=1)
+                hint = (
+                    f" (did you mean {near[0]!r}?)"
+                    if near
+                    else f" (a parameter of {', '.join(map(repr, others))}: model={others[0]!r}?)"
+                    if others
+                    else ""
+                )
+                raise invalid(
+                    "parameter " + key,
+                    value,
+                    f"the {model!r} model has no parameter {key!r}{hint}; its parameters: {', '.join(names)}",
+                )
     for key, value in extra.items():
         if len(key) > 64:
             raise invalid("parameter name", key, "a parameter of the model (pendulab.models())")
