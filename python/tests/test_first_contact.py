@@ -6,9 +6,11 @@ from __future__ import annotations
 
 import subprocess
 import sys
+import tomllib
 from pathlib import Path
 
 import pytest
+from conftest import REPO
 from typer.testing import CliRunner
 
 import pendulab as pl
@@ -117,3 +119,21 @@ def test_a_misspelt_or_misplaced_model_parameter_is_named_with_its_fix() -> None
         assert "'damped' model" not in str(info.value)
     assert pl.Pendulum(damping=0.1, radius=5.0).model == "slewing"  # one model has both: inferred
     assert pl.Pendulum(model="rotating", frame_rate=1e-4, damping=0.1).model == "rotating"
+
+
+def test_fitting_names_the_extra_that_brings_scipy(monkeypatch: pytest.MonkeyPatch) -> None:
+    """pl.fit needs SciPy, which the README's `[lab]` install (whose lab fits data files) did not bring:
+    `pendulab fit` then said only "No module named 'scipy'". The `fit` and `lab` extras have it now, and
+    without it the command names the extra."""
+    extras = tomllib.loads((REPO / "python" / "pyproject.toml").read_text(encoding="utf-8"))["project"][
+        "optional-dependencies"
+    ]
+    for extra in ("fit", "lab", "crane"):
+        assert any(req.startswith("scipy") for req in extras[extra]), extra
+    monkeypatch.setitem(sys.modules, "scipy", None)  # as if SciPy were not installed
+    result = CliRunner().invoke(cli.app, ["fit", "example:filmed_swing"])
+    assert result.exit_code == 2, result.output
+    assert (
+        result.stderr.strip()
+        == "error: pendulab fit needs SciPy: pip install 'pendulab[fit]' (or scipy>=1.11)"
+    )

@@ -96,6 +96,14 @@ def _number(text: str, what: str) -> float:
     return value
 
 
+def _need_scipy() -> None:
+    """pl.fit's least_squares: SciPy is an extra (``fit``, ``lab``), not a base dependency."""
+    try:
+        import scipy.optimize  # noqa: F401
+    except ImportError:
+        _fail("pendulab fit needs SciPy: pip install 'pendulab[fit]' (or scipy>=1.11)")
+
+
 @app.command("fit", short_help="Fit length, g, damping and the start to measured data (CSV).")
 def fit_cmd(
     data: Annotated[
@@ -144,6 +152,7 @@ def fit_cmd(
     specific_force [m/s^2]; angular_speed [rad/s]. Exports of Tracker, Logger Pro, phyphox, Cassy and
     Excel are read as they are (docs/fit.md)."""
     with _user_errors():
+        _need_scipy()
         if out is not None and out.suffix.lower() != ".toml":
             _fail(f"--out {str(out)!r}: the fitted scenario is written as TOML; give a name ending in .toml")
         if out is not None and not out.resolve().parent.is_dir():  # checked before the fit, as --plot
