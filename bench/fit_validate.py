@@ -115,24 +115,27 @@ def trial(index: int, seed: int, time_limit: float, sigma_given: bool = False) -
         else math.nan
     )
     out["truth"] = dict(data.truth)
+    if res.mirror_blind and out["params"].get("phi_dot0", 0.0) * out["truth"].get("phi_dot0", 0.0) < 0.0:
+        for n in ("phi0", "phi_dot0"):  # the data cannot tell the motion from its mirror image y -> -y
+            out["truth"][n] = -out["truth"][n]
     out["rel_error"] = {
         n: float(abs(out["params"][n] / v - 1.0)) if v else float(abs(out["params"][n]))
-        for n, v in data.truth.items()
+        for n, v in out["truth"].items()
         if n in out["params"]
     }
     out["off_in_stderr"] = {
         n: float(abs(out["params"][n] - v) / out["stderr"][n])
-        for n, v in data.truth.items()
+        for n, v in out["truth"].items()
         if n in out["params"]
     }
     out["inside"] = {
         n: bool(out["determined"][n] and abs(out["params"][n] - v) <= 2.0 * out["stderr"][n])
-        for n, v in data.truth.items()
+        for n, v in out["truth"].items()
         if n in out["params"]
     }
     out["within3"] = {
         n: bool(abs(out["params"][n] - v) <= 3.0 * out["stderr"][n])
-        for n, v in data.truth.items()
+        for n, v in out["truth"].items()
         if n in out["params"]
     }
     if case.sort == "units":

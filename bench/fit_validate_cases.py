@@ -220,8 +220,8 @@ def cases() -> list[Case]:
             "degenerate",
             VIDEO_FIT,
             DAMPED,
-            video(VIDEO, t_from=0.0, duration=0.5),
-            "too few swings: honest bars or not determined",
+            video(VIDEO, t_from=0.0, duration=0.5, start_truth=True),
+            "too few swings: honest bars or not determined (the start's too)",
             key=["length", "g"],
         ),
         # --- units ------------------------------------------------------------------------------

@@ -75,10 +75,12 @@ def video(
     outliers: float = 0.0,
     scale: float = 1.0,
     columns: tuple[int, ...] = (0, 2),
+    start_truth: bool = False,
 ) -> Callable[[np.random.Generator, float], Data]:
     """A bob released at rest-or-moving ``start`` = (θ, φ, θ̇, φ̇) at t = 0 and filmed from ``t_from``
     (mid-swing) for ``duration`` s: positions (x, z) by default, the pivot at ``pivot`` in the camera's
-    frame."""
+    frame. With ``start_truth`` the truth has the start at the first sample too (theta0, phi0,
+    theta_dot0, phi_dot0 [rad, rad/s]; bench/fit_validate.py mirrors phi's for a mirror-blind fit)."""
     names = {0: "pivot_x", 1: "pivot_y", 2: "pivot_z"}
     true = {
         "length": truth.length,
@@ -89,11 +91,27 @@ def video(
     }
 
     def make(rng: np.random.Generator, s: float) -> Data:
-        t, x, _, _ = traj(truth, start, t_from, duration, 1.0 / fps)
+        t, x, v, _ = traj(truth, start, t_from, duration, 1.0 / fps)
         pos = ip.measure_positions(x, rng, s * sigma, pivot, columns, scale, rho, outliers if s else 0.0)
-        return Data({"t": t, "positions": pos}, true, sigma)
+        started = _angles(x[0], v[0]) if start_truth else {}
+        return Data({"t": t, "positions": pos}, {**true, **started}, sigma)
 
     return make
+
+
+def _angles(x: np.ndarray, v: np.ndarray) -> dict[str, float]:
+    """θ, φ [rad] and θ̇, φ̇ [rad/s] of the bob at x [m] with velocity v [m/s] (pivot at the origin;
+    x = l (sin θ cos φ, sin θ sin φ, −cos θ), as ``ip.start_state``)."""
+    ell = float(np.linalg.norm(x))
+    theta, phi = float(np.arctan2(np.hypot(x[0], x[1]), -x[2])), float(np.arctan2(x[1], x[0]))
+    e_theta = np.array([np.cos(theta) * np.cos(phi), np.cos(theta) * np.sin(phi), np.sin(theta)])
+    e_phi = np.array([-np.sin(phi), np.cos(phi), 0.0])
+    return {
+        "theta0": theta,
+        "phi0": phi,
+        "theta_dot0": float(v @ e_theta) / ell,
+        "phi_dot0": float(v @ e_phi) / (ell * np.sin(theta)),
+    }
 
 
 def encoder(

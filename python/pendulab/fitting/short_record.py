@@ -11,10 +11,12 @@ length, g and every parameter correlated with them by |ρ| ≥ :data:`CORRELATED
 determined, with a warning that names them, the record's span in periods and what would help;
 where both profiles close, each profiled bar is widened to its 95 % profile interval (the larger side
 over 1.96; an asymmetric interval is said), and the correlated parameters not profiled are widened by
-the largest factor of those they are correlated with. Where the curvature already left the length
-or g not determined, the bars of the others were computed with them held (case 20: pivot_x 6–21
-bars off): the first two determined parameters other than the start are profiled with every
-unknown free instead (:func:`_held`). Records of a period or more pay nothing.
+the largest factor of those they are correlated with. Wherever the length or g ends up not
+determined (by the curvature, an open profile or the time limit), the bars of the others are
+linearised with them free (identify.py) but the valley curves (case 20, seed 3: φ̇₀ 4.5 such bars
+off): every other determined parameter, the start's too, is profiled with every unknown free
+(:func:`_held`): open, not determined; closed, the bar from the profile. An end that no converged
+refit closes is open (profile.py). Records of a period or more pay nothing.
 Units: each parameter's (SI); times [s].
 """
 
@@ -29,7 +31,7 @@ import numpy as np
 
 from .multistart import FLOOR_PERIODS
 from .problem import STATE_NAMES, bounds_of, scale_of
-from .profile import _end, _Rise
+from .profile import REFIT_EVALUATIONS, REFIT_ROUNDS, Rise, profile_end
 
 #: A record spanning fewer small-swing periods 2π√(l/|g|) of the result than this has its bars of
 #: length and g checked by their profile likelihood.
@@ -38,9 +40,12 @@ SHORT_PERIODS = FLOOR_PERIODS
 #: Parameters whose correlation with the length or g is at least this share their fate.
 CORRELATED = 0.9
 
-#: Steps of doubling size per end of a profile (out to 63 curvature bars), then :data:`BISECTIONS`.
+#: Steps of doubling size per end of a profile (out to 63 curvature bars), then :data:`BISECTIONS`
+#: and the check of the outer point (profile.py); at most :data:`REFITS` refits per end (twice that:
+#: room to step on once past a refit the check finds failed).
 DOUBLINGS = 6
 BISECTIONS = 4
+REFITS = 2 * (DOUBLINGS + BISECTIONS + 1)
 
 #: At most this many parameters are profiled: the length and g (when only one of them is fitted, it
 #: and the parameter most correlated with it); the others correlated with them take the largest factor.
@@ -60,14 +65,14 @@ class _Late(Exception):
     """The fit's time limit passed during the check."""
 
 
-class _TimedRise(_Rise):
+class _TimedRise(Rise):
     """profile.py's rise of the misfit, raising :class:`_Late` once ``time_up()``."""
 
     def __init__(self, res: Any, name: str, period: float, time_up: Callable[[], bool]) -> None:
         super().__init__(res, name, period)
         self.time_up = time_up
 
-    def __call__(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float]]:
+    def __call__(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float], bool]:
         if self.time_up():
             raise _Late
         return super().__call__(c, start)
@@ -93,36 +98,43 @@ def check_short_record(res: Any, time_up: Callable[[], bool], checkable: bool = 
         return _held(res, periods, period, time_up, checkable)
     linked = _linked(res, core)
     profiled: dict[str, tuple[float, float]] = {}
+    unsettled: list[str] = []
     unchecked = "the fit stopped before the profile likelihood was checked"
     if not checkable:
-        return [_undetermined(res, core + linked, periods, period, profiled, unchecked)]
+        said = _undetermined(res, core + linked, periods, period, profiled, unchecked)
+        return [said, *_held(res, periods, period, time_up, checkable)]
     try:
         for name in (core + linked)[:MAX_PROFILES]:
-            profiled[name] = _profile(res, name, period, time_up)
+            profiled[name] = _profile(res, name, period, time_up, unsettled)
             if not all(map(math.isfinite, profiled[name])):
                 break  # an open profile: the valley is open
     except _Late:
-        return [_undetermined(res, core + linked, periods, period, profiled, unchecked)]
+        said = _undetermined(res, core + linked, periods, period, profiled, unchecked)
+        return [said, *_held(res, periods, period, time_up, checkable)]
     if any(not all(map(math.isfinite, ends)) for ends in profiled.values()):
-        why = "the profile likelihood does not close"
-        return [_undetermined(res, core + linked, periods, period, profiled, why)]
+        said = _undetermined(res, core + linked, periods, period, profiled, _open(unsettled))
+        return [said, *_held(res, periods, period, time_up, checkable)]
     return _widened(res, core, linked, periods, period, profiled)
 
 
 def _held(res: Any, periods: float, period: float, time_up: Callable[[], bool], checkable: bool) -> list[str]:
-    """Length or g fitted and not determined by the curvature: the bars of the other parameters are
-    computed with them held at the fit's values, too narrow along the valley where they move
-    (case 20: pivot_x ± 0.0009 m, 6–21 bars off, its profile 0.268–0.318 m). The first
-    MAX_PROFILES determined ones that are not the start (STATE_NAMES) are profiled with every other
-    unknown free: an open profile, not determined; a closed one, the bar taken from it."""
+    """Length or g fitted and not determined by the curvature. identify.py computes the others' bars
+    with them free, but only to first order: along the curved valley where they move, a third of a
+    swing leaves those bars too narrow still (case 20, seed 3: φ̇₀ = 0.09 ± 0.16 rad/s for 0.8,
+    4.5 bars off; with them held it had been ± 0.029, and pivot_x ± 0.0009 m, 6–21 bars off). Every
+    determined parameter, the start's too (the pivot and damping first), is profiled with every other
+    unknown free: an open profile, not determined; a closed one, the bar taken from it (never
+    narrower); one the time limit leaves unprofiled, not determined."""
     if not any(n in res.params and not res.determined[n] for n in ("length", "g")):
         return []
-    chosen = [n for n in res.names if res.determined[n] and n not in STATE_NAMES][:MAX_PROFILES]
+    determined = [n for n in res.names if res.determined[n]]
+    chosen = [n for n in determined if n not in STATE_NAMES] + [n for n in determined if n in STATE_NAMES]
     profiled: dict[str, tuple[float, float]] = {}
+    unsettled: list[str] = []
     why = "the fit stopped before the profile likelihood was checked"
     try:
         for name in chosen if checkable else []:
-            profiled[name] = _profile(res, name, period, time_up)
+            profiled[name] = _profile(res, name, period, time_up, unsettled)
     except _Late:
         pass
     closed = {n: e for n, e in profiled.items() if all(map(math.isfinite, e))}
@@ -130,10 +142,18 @@ def _held(res: Any, periods: float, period: float, time_up: Callable[[], bool], 
     said = [_undetermined(res, unchecked, periods, period, {}, why)] if unchecked else []
     open_ = {n: e for n, e in profiled.items() if n not in closed}
     if open_:
-        said.append(
-            _undetermined(res, list(open_), periods, period, open_, "the profile likelihood does not close")
-        )
+        said.append(_undetermined(res, list(open_), periods, period, open_, _open(unsettled)))
     return said + (_widened(res, [], [], periods, period, closed) if closed else [])
+
+
+def _open(unsettled: list[str]) -> str:
+    """Why a profile is open: it does not close, or (``unsettled``) a refit of it did not converge."""
+    if not unsettled:
+        return "the profile likelihood does not close"
+    return (
+        f"the profile likelihood does not close, or a refit of it ({', '.join(unsettled)}) did not "
+        f"converge in {REFIT_ROUNDS} x {REFIT_EVALUATIONS} model runs"
+    )
 
 
 def _linked(res: Any, core: list[str]) -> list[str]:
@@ -148,10 +168,13 @@ def _linked(res: Any, core: list[str]) -> list[str]:
     return sorted((n for n, r in rho.items() if r >= CORRELATED), key=lambda n: -rho[n])
 
 
-def _profile(res: Any, name: str, period: float, time_up: Callable[[], bool]) -> tuple[float, float]:
+def _profile(
+    res: Any, name: str, period: float, time_up: Callable[[], bool], unsettled: list[str]
+) -> tuple[float, float]:
     """The 95 % profile interval of ``name`` [its unit], each end at most DOUBLINGS doublings of the
     curvature's bar out (else ±inf) and BISECTIONS bisections; a bound of the parameter reached
-    below the level is returned as ±inf (the data do not bound it there)."""
+    below the level is returned as ±inf (the data do not bound it there), and so is an end that no
+    converged refit closes (profile.py; ``name`` is then added to ``unsettled``)."""
     from scipy import stats
 
     rise = _TimedRise(res, name, period, time_up)
@@ -162,9 +185,12 @@ def _profile(res: Any, name: str, period: float, time_up: Callable[[], bool]) ->
     step0 = err if math.isfinite(err) and err > 0 else scale_of(name, value, values["length"], period)
     target = float(stats.chi2.ppf(LEVEL, 1))
     ends = [
-        _end(rise, values, step0, bounds, d, DOUBLINGS + BISECTIONS, target, DOUBLINGS) for d in (-1.0, 1.0)
+        profile_end(rise, values, step0, bounds, d, REFITS, target, DOUBLINGS, BISECTIONS)
+        for d in (-1.0, 1.0)
     ]
-    lo, hi = (e if e not in bounds else math.copysign(math.inf, e - value) for e in ends)
+    if not all(settled for _, settled in ends):
+        unsettled.append(name)
+    lo, hi = (e if e not in bounds else math.copysign(math.inf, e - value) for e, _ in ends)
     return lo, hi
 
 
