@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import ipaddress
+import math
 import os
 import socket
 import sys
@@ -90,7 +91,10 @@ def _check_proxies(value: str) -> None:
 
 def _idle_timeout(value: float) -> float:
     """``--idle-timeout`` checked by ``server_config``'s own rule
-    (:func:`pendulab.server.serving.check_idle_timeout`), as the command line is read."""
+    (:func:`pendulab.server.serving.check_idle_timeout`), as the command line is read. nan and ±inf
+    pass through to the one message every float option gives them (``cli.common._checked``)."""
+    if not math.isfinite(value):
+        return value
     try:
         from ..server.serving import check_idle_timeout
     except ImportError:  # serve names the missing extra itself
