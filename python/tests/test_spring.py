@@ -27,6 +27,36 @@ def test_resonant_exchange_and_conservation() -> None:
     assert b.min() < 0.1 * b[0], "energy must leave the bouncing mode at resonance"
 
 
+def test_resonant_for_negative_g_is_the_mirror_image() -> None:
+    """g < 0: the 1:1:2 resonance about the stable rest point above the pivot, k/m = 4|g|/l (was
+    k/m = 4g/l < 0, which the core refused naming k_over_m only). Mirrored through z = 0, its run is
+    the g > 0 run: the bouncing energy leaves the spring in the same way."""
+    up, down = pl.SwingingSpring.resonant(1.0, g=-9.81), pl.SwingingSpring.resonant(1.0, g=9.81)
+    assert (up.k_over_m, up.rest_length, up.g) == (down.k_over_m, down.rest_length, -9.81)
+    assert up.equilibrium_length == pytest.approx(1.0, rel=1e-15)
+    x0, v0 = np.array([0.01, 0.002, -1.05]), np.array([0.0, 0.003, 0.0])
+    mirror = np.array([1.0, 1.0, -1.0])
+    a = pl.simulate_spring(down, x0, v0, t_end=60.0, dt=1e-3, save_every=100, order=4)
+    b = pl.simulate_spring(up, x0 * mirror, v0 * mirror, t_end=60.0, dt=1e-3, save_every=100, order=4)
+    assert np.abs(b.x * mirror - a.x).max() < 1e-12
+    assert b.bouncing_energy.min() < 0.1 * b.bouncing_energy[0]
+
+
+@pytest.mark.parametrize(
+    ("args", "words"),
+    [
+        ((1.0, 0.0), "g = 0.0 m/s² is not allowed: a finite number other than 0"),
+        ((1.0, float("nan")), "g = nan m/s² is not allowed"),
+        ((0.0, 9.81), "equilibrium_length = 0.0 m is not allowed: the stable rest length must be a finite"),
+        ((-1.0, 9.81), "equilibrium_length = -1.0 m is not allowed"),
+        ((float("inf"), 9.81), "equilibrium_length = inf m is not allowed"),
+    ],
+)
+def test_resonant_refuses_what_has_no_resonance(args: tuple[float, float], words: str) -> None:
+    with pytest.raises(pl.InvalidInputError, match=words):
+        pl.SwingingSpring.resonant(*args)
+
+
 @pytest.mark.parametrize("g", [9.81, -4.0])
 def test_the_equilibrium_length_is_the_stable_rest_point(g: float) -> None:
     """l = l₀ + |g|/(k/m): the bob rests on the vertical on the side gravity pulls it to, the spring

@@ -177,8 +177,9 @@ def test_pivot_on_a_sampled_path() -> None:
     reference integrating the spline's own p̈ (SciPy's CubicSpline, restarted at every sample) it
     agrees to round-off (measured 2e-14 l at rtol 1e-12; 1.5e-8 l when it stepped across the kinks).
     Against the reference with the path's exact p̈ the spline's own O(h²) error remains (5.1e-11 l; it
-    alternates in sign along the knots and integrates away). rkmk4 with dt dividing the spacing keeps
-    order 4; the RATTLE compositions fall to order 2 (docs/models.md, *Accuracy on a sampled path*)."""
+    alternates in sign along the knots and integrates away). rkmk4 and rattle4 keep order 4, dt dividing
+    the spacing or not (docs/models.md, *Accuracy on a sampled path*); rattle4 fell to order 2 while its
+    substeps reached across the samples, rkmk4 to O(dt²) per sample inside a step."""
 
     def path(tt: np.ndarray) -> np.ndarray:
         return np.stack(
@@ -205,19 +206,23 @@ def test_pivot_on_a_sampled_path() -> None:
     tr = pl.simulate(p, p.state(x0, v0), 10.0, method="dop853", rtol=1e-12, atol=1e-12, save_at=t)
     assert np.abs(tr.x - xs).max() < 1e-12  # measured 2.2e-14 m (1.5e-8 m stepping across the kinks)
     assert np.abs(tr.x - x).max() < 2e-10  # measured 5.1e-11 m: the spline's own error
-    err = [
-        np.abs(pl.simulate(p, p.state(x0, v0), 10.0, method=m, dt=dt, save_at=t).x - xs).max()
+    err = {
+        (m, dt): np.abs(pl.simulate(p, p.state(x0, v0), 10.0, method=m, dt=dt, save_at=t).x - xs).max()
         for m in ("rkmk4", "rattle4")
-        for dt in (2e-3, 1e-3)
-    ]
-    assert 12.8 < err[0] / err[1] < 20.0, err  # rkmk4: order 4 (measured 15.9; 2.5e-10 m at 2 ms)
-    assert 3.2 < err[2] / err[3] < 5.0, err  # rattle4: order 2 on the kinks (measured 3.9)
+        for dt in (2e-3, 1e-3, 3.7e-3, 1.85e-3)
+    }
+    # A fixed step over a sample is split there and each step runs on its interval's cubic (substeps
+    # reaching past it included), so both keep order 4 with dt dividing the spacing or not.
+    assert 12.8 < err["rkmk4", 2e-3] / err["rkmk4", 1e-3] < 20.0, err  # measured 15.9; 2.5e-10 m at 2 ms
+    assert 12.0 < err["rkmk4", 3.7e-3] / err["rkmk4", 1.85e-3] < 20.0, err  # 13.6 (was 1.7e-8 m at 3.7 ms)
+    assert 12.8 < err["rattle4", 2e-3] / err["rattle4", 1e-3] < 20.0, err  # measured 16.0 (was 3.9)
+    assert 12.0 < err["rattle4", 3.7e-3] / err["rattle4", 1.85e-3] < 20.0, err  # measured 13.7
+    assert err["rattle4", 1e-3] < 2e-9, err  # measured 9.3e-10 m (was 3.8e-8 m)
 
 
 def test_compositions_keep_their_order_on_a_sampled_cubic() -> None:
-    """A cubic path is its own spline (p̈ linear, no kinks): rattle4 converges at order 4 on it (error
-    ÷ 16 per halved dt against DOP853 of the same model). On a general path the kinks of the spline's
-    p̈ cut the RATTLE compositions to order 2 (docs/models.md, *Pivot path from samples*)."""
+    """A cubic path is its own spline (p̈ linear, no kinks, so no break to split on): rattle4 converges
+    at order 4 on it (error ÷ 16 per halved dt against DOP853 of the same model)."""
     samples = np.arange(-0.1, 10.105, 0.02)
     cubic = np.stack([0.01 * samples**3 - 0.1 * samples**2, 0.02 * samples**3, -0.005 * samples**3], axis=-1)
     p = pl.Pendulum(length=1.0, g=G, pivot_samples=(samples, cubic))

@@ -50,12 +50,19 @@ impl SwingingSpring {
         self.rest_length + self.g.abs() / self.k_over_m
     }
 
-    /// The spring at the 1:1:2 resonance √(k/m) = 2√(g/l) for a given equilibrium length l \[m\]:
-    /// k/m = 4g/l and l₀ = l − g/(k/m) = 3l/4.
+    /// The spring at the 1:1:2 resonance √(k/m) = 2√(|g|/l) for a given stable equilibrium length
+    /// l \[m\]: k/m = 4|g|/l and l₀ = l − |g|/(k/m) = 3l/4. For g < 0 it is the mirror image of g > 0
+    /// (the bob rests above the pivot at l); g = 0 is refused (no swing frequency, no resonance).
     pub fn resonant(equilibrium_length: f64, g: f64, mass: f64) -> Result<Self> {
         require_positive("equilibrium_length", equilibrium_length, "a length > 0 m")?;
-        require_positive("g", g, "the resonance needs gravity g > 0 m/s²")?;
-        Self::new(4.0 * g / equilibrium_length, 0.75 * equilibrium_length, g, mass)
+        if !(g.is_finite() && g != 0.0) {
+            return Err(Error::InvalidParameter {
+                name: "g",
+                value: g,
+                allowed: "the resonance needs gravity: a finite g other than 0 m/s² (g < 0 rests the bob above the pivot)",
+            });
+        }
+        Self::new(4.0 * g.abs() / equilibrium_length, 0.75 * equilibrium_length, g, mass)
     }
 
     /// Acceleration r̈ [m/s²].

@@ -14,7 +14,7 @@ use crate::integrate::rattle_kernel::Arithmetic;
 use crate::integrate::rk4::Rk4;
 use crate::integrate::rk4_angles::Rk4Angles;
 use crate::integrate::rkmk4::Rkmk4;
-use crate::integrate::{fixed_steps, FixedStep, Method, Stats};
+use crate::integrate::{fixed_steps, FixedStep, Method, Stats, StepAcrossBreaks};
 use crate::model::Model;
 use crate::state::State;
 
@@ -198,18 +198,25 @@ impl<M: Model> Stepper<M> {
                 self.k = 0;
                 return Ok(());
             }
-            if t_next <= t_stop + slack {
-                s.step(model, t, state, self.dt)?;
+            let full = t_next <= t_stop + slack;
+            let h = if full { self.dt } else { t_stop - t };
+            // a model with breaks ahead splits the step on them (integrate::step_across_breaks)
+            let taken = if model.next_break(t) != f64::INFINITY {
+                model.visit(StepAcrossBreaks { scheme: s, t, h, state })?
+            } else {
+                s.step(model, t, state, h)?;
+                1
+            };
+            if full {
                 self.k += 1;
                 self.t = if (t_next - t_stop).abs() <= slack { t_stop } else { t_next };
             } else {
-                s.step(model, t, state, t_stop - t)?;
                 self.t = t_stop;
                 self.t_anchor = t_stop;
                 self.k = 0;
             }
-            stats.steps += 1;
-            stats.rhs_evals += s.evals_per_step();
+            stats.steps += taken;
+            stats.rhs_evals += taken * s.evals_per_step();
             Ok(())
         }, {
             let Scheme::Dop853(d) = &mut self.scheme else { unreachable!() };
@@ -233,9 +240,9 @@ impl<M: Model> Stepper<M> {
     fn step_n_here(&mut self, n: u64) -> Result<()> {
         let (model, state) = (&self.model, &mut self.state);
         with_fixed!(&mut self.scheme, s => {
-            let k0 = self.k;
-            let result = fixed_steps(model, s, self.t_anchor, self.dt, n, &mut self.k, state);
-            let taken = self.k - k0;
+            let (k0, mut splits) = (self.k, 0);
+            let result = fixed_steps(model, s, (self.t_anchor, self.dt), n, (&mut self.k, &mut splits), state);
+            let taken = self.k - k0 + splits;
             self.t = self.t_anchor + self.k as f64 * self.dt;
             self.stats.steps += taken;
             self.stats.rhs_evals += taken * s.evals_per_step();

@@ -145,3 +145,23 @@ fn the_equilibrium_length_is_where_the_bob_rests_for_either_sign_of_g() {
         assert!(a.length() < 1e-14, "g = {g}: r̈ = {a} at the equilibrium");
     }
 }
+
+#[test]
+fn the_resonance_for_negative_g_is_the_mirror_image() {
+    // k/m = 4|g|/l at the stable rest length above the pivot (was: refused, 'needs gravity g > 0');
+    // g = 0 has no swing frequency and is refused naming g
+    let (up, down) = (SwingingSpring::resonant(1.0, -9.81, 1.0).unwrap(), spring());
+    assert_eq!((up.k_over_m, up.rest_length, up.g), (down.k_over_m, down.rest_length, -9.81));
+    assert!((up.equilibrium_length() - 1.0).abs() < 1e-15);
+    let err = SwingingSpring::resonant(1.0, 0.0, 1.0).unwrap_err().to_string();
+    assert!(err.contains("g") && err.contains("other than 0"), "{err}");
+}
+
+#[test]
+fn the_registry_says_where_the_spring_rests() {
+    // the rest point is l0 + m|g|/k, above the pivot for g < 0 (was: 'hangs at l = l0 + m g/k')
+    let spec = pendulab_core::model::registry::spec("spring").unwrap();
+    let text = spec.params.iter().find(|p| p.name == "stiffness").unwrap().description;
+    assert!(text.contains("l = l0 + m|g|/k") && text.contains("above it for g < 0"), "{text}");
+    assert!(text.contains("k = 3 m|g|/l0") && !text.contains("m g/k"), "{text}");
+}

@@ -1,7 +1,7 @@
 """The swinging spring (elastic pendulum, docs/theory.md T-7.4): a bob of mass m [kg] on a spring of
 stiffness k [N/m] and rest length l₀ [m] from a fixed pivot, gravity g [m/s²] along −z. The state is
 unconstrained (r [m], v [m/s]); E and J₃ are conserved and kept by the symplectic Störmer–Verlet
-method (order 2) or its triple jump (order 4). At the 1:1:2 resonance √(k/m) = 2√(g/l), with
+method (order 2) or its triple jump (order 4). At the 1:1:2 resonance √(k/m) = 2√(|g|/l), with
 l = l₀ + m |g|/k, energy passes between bouncing and swinging and the swing plane turns in steps.
 """
 
@@ -25,7 +25,8 @@ from ..model import FloatArray
 @dataclass(frozen=True)
 class SwingingSpring:
     """Stiffness per unit mass ``k_over_m`` [1/s²], rest length ``rest_length`` [m], ``g`` [m/s²],
-    ``mass`` [kg]. ``SwingingSpring.resonant(l)`` gives the 1:1:2 resonance at equilibrium length l."""
+    ``mass`` [kg]. ``SwingingSpring.resonant(l)`` gives the 1:1:2 resonance at equilibrium length l
+    (also for g < 0: the mirror image, the bob resting above the pivot)."""
 
     k_over_m: float
     rest_length: float
@@ -34,8 +35,24 @@ class SwingingSpring:
 
     @classmethod
     def resonant(cls, equilibrium_length: float = 1.0, g: float = 9.81, mass: float = 1.0) -> SwingingSpring:
-        """k/m = 4g/l and l₀ = 3l/4, so that √(k/m) = 2√(g/l) (T-7.4)."""
-        return cls(4.0 * g / equilibrium_length, 0.75 * equilibrium_length, g, mass)
+        """The 1:1:2 resonance at the stable rest length l = ``equilibrium_length`` [m]: k/m = 4|g|/l
+        and l₀ = 3l/4, so that √(k/m) = 2√(|g|/l) (T-7.4). For g < 0 it is the mirror image of g > 0
+        (the bob rests above the pivot at l, the spring stretched, and swings about that stable point).
+        Refused (``InvalidInputError`` naming the value): l not a finite number > 0, and g = 0 or not
+        finite (without gravity the bob has no swing frequency, so there is no resonance)."""
+        ell, grav = float(equilibrium_length), float(g)
+        if not (math.isfinite(ell) and ell > 0.0):
+            raise InvalidInputError(
+                f"SwingingSpring.resonant: equilibrium_length = {equilibrium_length!r} m is not allowed: "
+                "the stable rest length must be a finite number > 0 m"
+            )
+        if not (math.isfinite(grav) and grav != 0.0):
+            raise InvalidInputError(
+                f"SwingingSpring.resonant: g = {g!r} m/s² is not allowed: a finite number other than 0 "
+                "m/s² (g > 0 hangs the bob below the pivot, g < 0 rests it above; with g = 0 it has no "
+                "swing frequency and no 1:1:2 resonance)"
+            )
+        return cls(4.0 * abs(grav) / ell, 0.75 * ell, grav, mass)
 
     @property
     def equilibrium_length(self) -> float:

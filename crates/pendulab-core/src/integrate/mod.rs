@@ -47,21 +47,22 @@ pub trait FixedStep {
 }
 
 /// Takes `n` fixed steps of `dt` \[s\] with `scheme` on the grid t = `t_anchor` + k·dt from step `*k`
-/// on, advancing `*k` with every step taken (also when a step fails): the one fixed-step loop, which
-/// every driver ([`crate::Stepper::step_n`], hence [`crate::Solver`]) runs. A wrapped model
-/// (`AnyModel`) chooses its variant once, through [`Model::visit`], so the loop is monomorphised per
-/// variant.
+/// on, advancing `*k` with every step taken: the one fixed-step loop, which every driver
+/// ([`crate::Stepper::step_n`], hence [`crate::Solver`]) runs. A wrapped model (`AnyModel`) chooses
+/// its variant once, through [`Model::visit`], so the loop is monomorphised per variant. On a model
+/// with breaks ahead ([`Model::next_break`]: a sampled pivot's kinks) each step is
+/// [`step_across_breaks`]; `*splits` counts the extra sub-steps that took. Without (a fixed pivot,
+/// an analytic path, or past the last break) the loop is the plain one, numbers unchanged.
 #[inline(always)]
 pub fn fixed_steps<M: Model, S: FixedStep>(
     model: &M,
     scheme: &mut S,
-    t_anchor: f64,
-    dt: f64,
+    (t_anchor, dt): (f64, f64),
     n: u64,
-    k: &mut u64,
+    (k, splits): (&mut u64, &mut u64),
     state: &mut State,
 ) -> Result<()> {
-    model.visit(FixedSteps { scheme, t_anchor, dt, n, k, state })
+    model.visit(FixedSteps { scheme, t_anchor, dt, n, k, splits, state })
 }
 
 /// The loop of [`fixed_steps`] as a [`ModelVisitor`].
@@ -71,6 +72,7 @@ struct FixedSteps<'a, S> {
     dt: f64,
     n: u64,
     k: &'a mut u64,
+    splits: &'a mut u64,
     state: &'a mut State,
 }
 
@@ -78,11 +80,67 @@ impl<S: FixedStep> ModelVisitor for FixedSteps<'_, S> {
     type Output = Result<()>;
     #[inline(always)]
     fn visit<M: Model>(self, model: &M) -> Result<()> {
+        // +∞ for every model without breaks at compile time (the default next_break), so their loop
+        // is the plain one below
+        if model.next_break(self.t_anchor + *self.k as f64 * self.dt) != f64::INFINITY {
+            for _ in 0..self.n {
+                let t = self.t_anchor + *self.k as f64 * self.dt;
+                *self.splits += step_across_breaks(self.scheme, model, t, self.state, self.dt)? - 1;
+                *self.k += 1;
+            }
+            return Ok(());
+        }
         for _ in 0..self.n {
             self.scheme.step(model, self.t_anchor + *self.k as f64 * self.dt, self.state, self.dt)?;
             *self.k += 1;
         }
         Ok(())
+    }
+}
+
+/// One fixed step of `h` > 0 \[s\] from `t` \[s\] on a model with breaks ([`Model::next_break`]): a
+/// step that straddles breaks is split into sub-steps ending exactly on each (the break nearest the
+/// step's end within round-off is skipped, as `dop853` does: `dop853::step_end`), and every
+/// (sub-)step runs on the model's smooth piece between breaks ([`Model::smooth_piece`]), so that
+/// stages reaching past a break (the RATTLE compositions') still see one smooth force. A step
+/// with no break inside is exactly `h`, as on a smooth model. Returns the number of sub-steps (≥ 1).
+pub fn step_across_breaks<M: Model, S: FixedStep>(
+    scheme: &mut S,
+    model: &M,
+    t: f64,
+    state: &mut State,
+    h: f64,
+) -> Result<u64> {
+    let t_end = t + h;
+    let (mut tau, mut taken) = (t, 0u64);
+    loop {
+        let end = dop853::step_end(model, tau, t_end);
+        let last = end == t_end;
+        let step = if last && taken == 0 { h } else { end - tau };
+        let piece = model.smooth_piece(tau + 0.5 * step);
+        scheme.step(piece.as_ref().unwrap_or(model), tau, state, step)?;
+        taken += 1;
+        if last {
+            return Ok(taken);
+        }
+        tau = end;
+    }
+}
+
+/// [`step_across_breaks`] through [`Model::visit`] (a wrapped model's variant chosen once); the
+/// single step of [`crate::Stepper::step_towards`].
+pub(crate) struct StepAcrossBreaks<'a, S> {
+    pub scheme: &'a mut S,
+    pub t: f64,
+    pub h: f64,
+    pub state: &'a mut State,
+}
+
+impl<S: FixedStep> ModelVisitor for StepAcrossBreaks<'_, S> {
+    type Output = Result<u64>;
+    #[inline(always)]
+    fn visit<M: Model>(self, model: &M) -> Result<u64> {
+        step_across_breaks(self.scheme, model, self.t, self.state, self.h)
     }
 }
 

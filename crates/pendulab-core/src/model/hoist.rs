@@ -253,4 +253,7 @@ impl Model for Hoisted {
     fn next_break(&self, t: f64) -> f64 {
         self.inner.next_break(t)
     }
+    fn smooth_piece(&self, t: f64) -> Option<Self> {
+        self.inner.smooth_piece(t).map(|inner| Self { inner, rope: self.rope })
+    }
 }

@@ -131,11 +131,25 @@ pub trait Model: Send + Sync {
         Ok(())
     }
     /// The first time after `t` \[s\] at which f(t, ·) is not smooth in t — a sampled pivot's sample
-    /// times, where the spline's p̈ has a kink — or +∞ (default: none). The adaptive `dop853` ends a
-    /// step there instead of stepping across (its error estimate assumes a smooth f; a step across
-    /// a kink is accurate to a low order only). The fixed-step methods ignore it.
+    /// times, where the spline's p̈ has a kink — or +∞ (default: none). Every method ends a step
+    /// there instead of stepping across (a step across a kink is accurate to a low order only): the
+    /// adaptive `dop853` by its step control, the fixed-step methods by splitting the step that
+    /// straddles it into sub-steps ending on it (`integrate::fixed_steps`; the outputs stay on the
+    /// grid t₀ + k·dt).
     fn next_break(&self, _t: f64) -> f64 {
         f64::INFINITY
+    }
+    /// For a model with breaks ([`Model::next_break`]): the same model with its f(t, ·) restricted to
+    /// the smooth piece between breaks that holds `t` \[s\] and continued past its ends (a sampled
+    /// pivot's spline cubic on that sample interval), so that a fixed step between two breaks sees one
+    /// smooth force even where its stages reach beyond them (the RATTLE compositions' substeps of
+    /// weight > 1 or < 0). Inside the piece the forces are the model's own, bit for bit. Default:
+    /// None (f is smooth in t).
+    fn smooth_piece(&self, _t: f64) -> Option<Self>
+    where
+        Self: Sized,
+    {
+        None
     }
     /// True for hybrid models (the string pendulum: taut and slack phases with events), which the
     /// plain [`crate::Stepper`] refuses; they have their own driver ([`crate::string_run`]).

@@ -108,6 +108,8 @@ pub struct MovingPivot {
     path: PivotPath,
     damping: f64,
     name: &'static str,
+    /// `Some(i)`: a sampled path's p̈ is piece i's, continued past its ends ([`Model::smooth_piece`]).
+    piece: Option<usize>,
 }
 
 impl MovingPivot {
@@ -135,12 +137,22 @@ impl MovingPivot {
                 allowed: "a finite number >= 0 1/s",
             });
         }
-        Ok(Self { params, path, damping, name })
+        Ok(Self { params, path, damping, name, piece: None })
     }
 
     /// The pivot path.
     pub fn path(&self) -> &PivotPath {
         &self.path
+    }
+
+    /// p̈(t) [m/s²] of the path, or of the spline piece the model is restricted to
+    /// ([`Model::smooth_piece`]).
+    #[inline(always)]
+    fn pivot_acceleration(&self, t: f64) -> DVec3 {
+        match (&self.path, self.piece) {
+            (PivotPath::Samples(s), Some(i)) => s.acceleration_on_piece(t, i),
+            (path, _) => path.acceleration(t),
+        }
     }
 
     /// Linear damping c [1/s] relative to the pivot.
@@ -181,7 +193,7 @@ impl Model for MovingPivot {
     }
     #[inline(always)]
     fn kick_acceleration(&self, t: f64, _x: DVec3) -> DVec3 {
-        DVec3::new(0.0, 0.0, -self.params.g) - self.path.acceleration(t)
+        DVec3::new(0.0, 0.0, -self.params.g) - self.pivot_acceleration(t)
     }
     fn kick_is_uniform(&self) -> bool {
         true
@@ -194,12 +206,18 @@ impl Model for MovingPivot {
         v * (-self.damping * h).exp()
     }
     fn power_per_mass(&self, t: f64, _x: DVec3, v: DVec3) -> f64 {
-        -self.path.acceleration(t).dot(v) - self.damping * v.length_squared()
+        -self.pivot_acceleration(t).dot(v) - self.damping * v.length_squared()
     }
     fn next_break(&self, t: f64) -> f64 {
         match self.path {
             PivotPath::Samples(ref s) => s.next_kink_after(t),
             _ => f64::INFINITY,
+        }
+    }
+    fn smooth_piece(&self, t: f64) -> Option<Self> {
+        match self.path {
+            PivotPath::Samples(ref s) => Some(Self { piece: Some(s.piece_at(t)), ..self.clone() }),
+            _ => None,
         }
     }
 }

@@ -289,7 +289,8 @@ const SPRING: &[ParamSpec] = &[ParamSpec {
     min: 1e-6,
     max: 1e8,
     description: "swinging spring (T-7.4): spring constant k; length is the rest length l0, the bob \
-                  hangs at l = l0 + m g/k; 1:1:2 resonance at k = 3 m g/l0 (default: for l0 = 1 m, m = 1 kg)",
+                  rests at l = l0 + m|g|/k (below the pivot for g > 0, above it for g < 0); 1:1:2 \
+                  resonance at k = 3 m|g|/l0 (default: for l0 = 1 m, m = 1 kg)",
     allowed: "a number in [1e-6, 1e8] N/m",
 }];
 

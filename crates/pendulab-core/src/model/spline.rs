@@ -116,9 +116,18 @@ impl PivotSamples {
         self.kinks.get(i).copied().unwrap_or(f64::INFINITY)
     }
 
+    /// The index i of the piece [t_i, t_{i+1}] that holds t \[s\]; outside the span the end piece.
+    pub fn piece_at(&self, t: f64) -> usize {
+        self.t.partition_point(|&ti| ti <= t).clamp(1, self.t.len() - 1) - 1
+    }
+
     /// (index i, A, h_i) of the piece for t; outside the span the end piece (extrapolated).
     fn locate(&self, t: f64) -> (usize, f64, f64) {
-        let i = self.t.partition_point(|&ti| ti <= t).clamp(1, self.t.len() - 1) - 1;
+        self.on_piece(t, self.piece_at(t))
+    }
+
+    /// (i, A, h_i) of piece i evaluated at t, also outside [t_i, t_{i+1}] (its cubic continued).
+    fn on_piece(&self, t: f64, i: usize) -> (usize, f64, f64) {
         let h = self.t[i + 1] - self.t[i];
         (i, (self.t[i + 1] - t) / h, h)
     }
@@ -142,7 +151,19 @@ impl PivotSamples {
 
     /// p̈(t) [m/s²].
     pub fn acceleration(&self, t: f64) -> DVec3 {
-        let (i, a, _) = self.locate(t);
+        self.acceleration_of(self.locate(t))
+    }
+
+    /// p̈ [m/s²] at t \[s\] of piece `piece` (from [`PivotSamples::piece_at`]), its cubic continued
+    /// beyond [t_i, t_{i+1}]: the smooth force a fixed step between two kinks needs even where its
+    /// stages reach past them (the RATTLE compositions' substeps, [`crate::model::Model::smooth_piece`]).
+    /// Inside the piece it is [`PivotSamples::acceleration`] bit for bit.
+    pub fn acceleration_on_piece(&self, t: f64, piece: usize) -> DVec3 {
+        self.acceleration_of(self.on_piece(t, piece.min(self.t.len() - 2)))
+    }
+
+    #[inline(always)]
+    fn acceleration_of(&self, (i, a, _): (usize, f64, f64)) -> DVec3 {
         self.m[i] * a + self.m[i + 1] * (1.0 - a)
     }
 }
