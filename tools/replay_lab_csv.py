@@ -11,8 +11,10 @@ times, so its steps are not those of one ``pl.simulate``, and a run whose method
 ``method_changes``) is refused.
 
 Usage: ``python tools/replay_lab_csv.py FILE.csv``; prints what was replayed, exits 1 naming the first
-row that differs. ``web/tests/e2e/lab_file.mjs`` runs it on the one-file lab's downloads,
-``python/tests/test_lab_csv.py`` on downloads kept in ``python/tests/data/lab/``.
+row that differs, 2 with one line ``error: FILE: ...`` for a file it cannot replay (missing, not a lab
+CSV, metadata without what a replay needs, a run it does not replay). ``web/tests/e2e/lab_file.mjs``
+runs it on the one-file lab's downloads, ``python/tests/test_lab_csv.py`` on downloads kept in
+``python/tests/data/lab/``.
 """
 
 from __future__ import annotations
@@ -27,6 +29,15 @@ from pendulab.io import read_metadata
 
 PREFIX = "# pendulab lab trajectory; metadata (JSON): "
 COLUMNS = ["t [s]", "x1 [m]", "x2 [m]", "x3 [m]", "v1 [m/s]", "v2 [m/s]", "v3 [m/s]"]
+NEEDED: dict[str, type] = {
+    "method": str,
+    "adaptive": bool,
+    "method_changes": list,
+    "pendulum": dict,
+    "options": dict,
+    "start": dict,
+}
+"""The metadata a replay reads, with their JSON types (a file without them is refused, naming them)."""
 
 
 def read(path: str | Path) -> tuple[dict[str, Any], list[str], np.ndarray]:
@@ -36,9 +47,21 @@ def read(path: str | Path) -> tuple[dict[str, Any], list[str], np.ndarray]:
     if not first.startswith(PREFIX):
         raise ValueError(f"{path}: the first line is not the lab's metadata line {PREFIX!r}: {first[:80]!r}")
     meta = read_metadata(path)
+    missing = [key for key in NEEDED if not isinstance(meta.get(key), NEEDED[key])]
+    for table, keys in (("options", ("t0", "arithmetic")), ("start", ("x", "v"))):
+        if table not in missing:
+            missing += [f"{table}.{k}" for k in keys if k not in meta[table]]
+    if missing:
+        raise ValueError(f"{path}: the metadata lack what a replay needs: {', '.join(missing)}")
     if names[: len(COLUMNS)] != COLUMNS:
         raise ValueError(f"{path}: the columns begin {names[: len(COLUMNS)]}, not {COLUMNS}")
-    return meta, names, np.loadtxt(path, delimiter=",", skiprows=2, ndmin=2)
+    try:
+        data = np.loadtxt(path, delimiter=",", skiprows=2, ndmin=2)
+    except ValueError as e:
+        raise ValueError(f"{path}: the rows are not numbers ({' '.join(str(e).split())})") from None
+    if data.shape[0] == 0 or data.shape[1] < len(COLUMNS):
+        raise ValueError(f"{path}: {data.shape[0]} rows of {data.shape[1]} numbers, no states to replay")
+    return meta, names, data
 
 
 def replay(path: str | Path, arithmetic: str | None = None) -> dict[str, Any]:
@@ -60,8 +83,12 @@ def replay(path: str | Path, arithmetic: str | None = None) -> dict[str, Any]:
     k = np.rint((t - t0) / dt).astype(np.int64)
     if k.min() < 0 or np.any(np.abs(t0 + k * dt - t) > 1e-6 * dt):
         raise ValueError(f"{path}: the times are not whole steps of dt = {dt} s after t0 = {t0} s")
+    try:
+        pendulum = pl.Pendulum(**meta["pendulum"])
+    except TypeError as e:  # a key that is not a parameter
+        raise ValueError(f"{path}: the metadata's pendulum {meta['pendulum']} is not one: {e}") from None
     tr = pl.simulate(
-        pl.Pendulum(**meta["pendulum"]),
+        pendulum,
         pl.State(np.array(start["x"], dtype=float), np.array(start["v"], dtype=float)),
         t0 + int(k.max()) * dt,
         method=meta["method"],
@@ -88,9 +115,18 @@ def main(argv: list[str]) -> int:
     if len(argv) != 1:
         print(__doc__.split("\n\n")[-1], file=sys.stderr)
         return 2
-    meta, _, _ = read(argv[0])
-    got = replay(argv[0])
-    fused = replay(argv[0], "fused")
+    path = argv[0]
+    try:
+        meta, _, _ = read(path)
+        got = replay(path)
+        fused = replay(path, "fused")
+    except OSError as e:  # missing, a directory, no permission
+        print(f"error: {path}: cannot read: {e.strerror or e}", file=sys.stderr)
+        return 2
+    except (ValueError, pl.IntegrationError) as e:  # InvalidInputError is a ValueError
+        text = " ".join(str(e).split())
+        print(f"error: {text if text.startswith(path) else f'{path}: {text}'}", file=sys.stderr)
+        return 2
     print(
         f"{argv[0]}: {got['rows']} rows, t {got['t'][0]} .. {got['t'][1]} s, {meta['pendulum']['model']}, "
         f"{meta['method']}, dt {meta['options']['dt']} s: {got['differ']} differ from "

@@ -10,10 +10,10 @@ from typing import TYPE_CHECKING, Any
 from ._core import InvalidInputError, fused_is_fast
 from ._core import methods as _methods
 from .model import Pendulum
-from .validate import choice, finite, flag, number
+from .validate import LIMITS, choice, finite, flag, number
 
 if TYPE_CHECKING:
-    from ._core import MethodInfo
+    from ._core import MethodInfo, ParamSpec
 
 _U64 = 2**63 - 1
 """The largest count the core's unsigned 64-bit step counters take from Python (signed range)."""
@@ -52,11 +52,12 @@ def check_settings(
     t0: Any,
 ) -> tuple[str, float | None, float, float, bool, bool, float]:
     """The shared settings of :func:`simulate` and :class:`Stepper` checked against :mod:`pendulab.validate`:
-    method (a registered name), dt [s] (None or the dt limit), rtol, atol (finite; the core checks their
-    ranges), project and conserve (bools), t0 [s] (the time limit)."""
+    method (a registered name), dt [s] (None or the dt limit, for every method: an adaptive method's
+    first step, never 0; None lets it choose), rtol, atol (finite; the core checks their ranges),
+    project and conserve (bools), t0 [s] (the time limit)."""
     method = choice("method", method, method_names())
-    automatic = _method_table()[method]["adaptive"] and type(dt) in (int, float) and dt == 0.0
-    dt = None if dt is None else 0.0 if automatic else number("dt", dt, "dt")  # dop853: 0 = automatic
+    if dt is not None:
+        dt = number("dt", dt, _dt_limit(method))
     rtol = finite("rtol", rtol, "a finite relative tolerance (dop853)")
     atol = finite("atol", atol, "a finite absolute tolerance in m and m/s (dop853)")
     return (
@@ -68,6 +69,16 @@ def check_settings(
         flag("conserve", conserve),
         number("t0", t0, "time"),
     )
+
+
+def _dt_limit(method: str) -> ParamSpec:
+    """The dt limit as :data:`pendulab.validate.LIMITS` has it; for an adaptive method the words say
+    that dt is its first step and that None (leaving it out) lets the method choose it."""
+    spec = LIMITS["dt"]
+    if not _method_table()[method]["adaptive"]:
+        return spec
+    allowed = f"{spec['allowed']} (the first step of {method}), or None to let {method} choose it"
+    return spec | {"allowed": allowed}
 
 
 @functools.cache

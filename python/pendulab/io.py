@@ -228,7 +228,22 @@ def read_metadata(path: str | os.PathLike[str]) -> dict[str, Any]:
 
     An adaptive run's ``options`` (``dop853``) hold ``rtol`` and ``atol`` and, when one was given, the
     ``first_step`` [s], never a ``dt``; files of Pendulab 0.1.0 wrote ``"dt": 0.0`` for a first step
-    chosen automatically (``"dt": h`` for a given one), read here as the current files say it."""
+    chosen automatically (``"dt": h`` for a given one), read here as the current files say it. A crane
+    run's CSV says the spacing of its rows [s] as ``file.simulation.output_spacing`` (its file's
+    ``[simulation] dt``); older ones said ``dt`` there, also read as today's.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> import pendulab as pl
+    >>> from pendulab.io import read_metadata
+    >>> p = pl.Pendulum()
+    >>> tr = pl.simulate(p, p.state_from_angles(theta=0.5), t_end=1.0, method="dop853")
+    >>> path = tr.to_csv("swing.csv")
+    >>> meta = read_metadata(path)
+    >>> meta["method"], meta["options"]["rtol"], "dt" in meta["options"]
+    ('dop853', 1e-10, False)
+    """
     from ._core import InvalidInputError
 
     fmt = format_of(path)
@@ -269,7 +284,13 @@ def read_metadata(path: str | os.PathLike[str]) -> dict[str, Any]:
 def _upgraded(meta: dict[str, Any]) -> dict[str, Any]:
     """``meta`` (a file's metadata) with the ``options`` of an adaptive run of Pendulab 0.1.0 as current
     files write them: ``"dt": 0.0`` (a first step chosen automatically) dropped, ``"dt": h`` > 0 (a
-    given first step) as ``"first_step": h``. Other metadata is returned as it is."""
+    given first step) as ``"first_step": h``; a crane run's ``file.simulation.dt`` (the spacing of its
+    output rows) as ``output_spacing``. Other metadata is returned as it is."""
+    file = meta.get("file")
+    if isinstance(file, dict) and "crane" in file:  # a crane run's CSV (pendulab crane run --out)
+        from .crane.scenario import file_settings
+
+        meta = meta | {"file": file_settings(file)}
     options = meta.get("options")
     if not (isinstance(options, dict) and "dt" in options and _adaptive(meta.get("method"))):
         return meta
@@ -281,7 +302,9 @@ def _upgraded(meta: dict[str, Any]) -> dict[str, Any]:
 
 
 def _adaptive(method: object) -> bool:
-    """True for the name of a method that chooses its own steps (``dop853``)."""
-    from ._core import methods
+    """True for the name of a method that chooses its own steps (``dop853``): the integrators' table,
+    the one :func:`pendulab.simulate` reads (an unknown name, or not a name: False)."""
+    from .integrators import _method_table
 
-    return any(m["name"] == method and m["adaptive"] for m in methods())
+    info = _method_table().get(method) if isinstance(method, str) else None
+    return info is not None and bool(info["adaptive"])

@@ -81,7 +81,7 @@ def simulate(
     t_end : the end time [s] (> ``t0``).
     method : a name from :func:`methods` (default ``"rattle"``; ``"dop853"`` for a pendulum with a
         user ``force`` callable, which the RATTLE family cannot integrate).
-    dt : step size [s] of fixed-step methods (default 1e-3 s); for ``dop853`` an optional initial step.
+    dt : step size [s] (default 1e-3 s); for ``dop853`` its first step (default None: automatic; never 0).
     rtol, atol : tolerances of ``dop853`` (atol in m and m/s).
     project : ``dop853`` only: project onto TS² after every step (default True).
     conserve : ``dop853`` only (with ``project``): also project the velocity so that E (conservative

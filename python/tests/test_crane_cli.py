@@ -164,3 +164,34 @@ def test_crane_run_csv_has_the_metadata_line_of_every_pendulab_csv(tmp_path: Pat
     again = tmp_path / "again.csv"
     assert invoke("run", str(example), "--out", str(again))[0] == 0
     assert again.read_text() == out.read_text()
+
+
+def test_crane_csvs_say_their_output_spacing_and_tolerances(tmp_path: Path) -> None:
+    """A crane run's ``[simulation] dt`` is the spacing of the rows of an adaptive (DOP853) run: its
+    metadata says ``output_spacing`` (it said ``dt``, which elsewhere is a step; read_metadata reads the
+    old form as the new). The grid's metadata said neither its sampling interval nor its tolerances."""
+    import json
+
+    from pendulab.io import read_metadata
+
+    example = Path(__file__).resolve().parents[2] / "examples" / "cranes" / "gantry_zvd.toml"
+    out = tmp_path / "run.csv"
+    assert invoke("crane", "run", str(example), "--out", str(out))[0] == 0
+    meta = read_metadata(out)
+    sim = meta["file"]["simulation"]
+    assert sim["output_spacing"] == 0.05 and "dt" not in sim and sim["rtol"] == 1e-10
+    assert meta["units"]["file.simulation.output_spacing"] == "s"
+    first, rest = out.read_text(encoding="utf-8").split("\n", 1)
+    old = json.loads(first.split("metadata (JSON): ", 1)[1])
+    old["file"]["simulation"] = {("dt" if k == "output_spacing" else k): v for k, v in sim.items()}
+    older = tmp_path / "old.csv"
+    older.write_text(f"# pendulab crane run; metadata (JSON): {json.dumps(old)}\n{rest}", encoding="utf-8")
+    assert read_metadata(older)["file"] == meta["file"]
+    grid = tmp_path / "grid.csv"
+    args = ("--ropes", "6:10:2", "--ratios", "2:8:2", "--shapers", "none", "--settle", "5")
+    assert invoke("crane", "grid", *args, "--out", str(grid))[0] == 0
+    settings = read_metadata(grid)["settings"]
+    assert (settings["sample_spacing"], settings["rtol"], settings["atol"]) == (0.05, 1e-8, 1e-8)
+    assert read_metadata(grid)["units"]["sample_spacing"] == "s"
+    res = crane.residual_grid([6.0], [2.0], [None], settle=5.0)
+    assert (res.sample_spacing, res.rtol, res.atol) == (0.05, 1e-8, 1e-8)

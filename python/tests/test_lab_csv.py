@@ -16,6 +16,7 @@ import pandas as pd
 import pytest
 from conftest import load_tool
 
+import pendulab as pl
 from pendulab.io import read_metadata
 
 DATA = Path(__file__).parent / "data" / "lab"
@@ -23,6 +24,7 @@ FILES = sorted(DATA.glob("lab-*.csv"))
 
 
 replay_lab_csv = load_tool("replay_lab_csv")
+COLUMNS_LAB = replay_lab_csv.COLUMNS
 
 
 def _with_meta(src: Path, dst: Path, **change: object) -> Path:
@@ -80,3 +82,37 @@ def test_a_header_that_does_not_say_the_run_is_not_replayed(tmp_path: Path) -> N
     old.write_text('# {"source": "pendulab lab", "method": "rattle"}\n' + rows)
     with pytest.raises(ValueError, match="is not the lab's metadata line"):
         replay_lab_csv.replay(old)
+
+
+def test_a_file_the_tool_cannot_replay_is_one_error_line_with_exit_code_2(tmp_path: Path, capsys) -> None:
+    """A wrong file was answered with a Python traceback (KeyError, FileNotFoundError, ...): now one line
+    ``error: FILE: ...`` saying what is wrong, exit code 2 (1 stays "rows differ")."""
+    rosette = DATA / "lab-rosette.csv"
+    p = pl.Pendulum()
+    trajectory = pl.simulate(p, p.state_from_angles(0.5), 0.1).to_csv(tmp_path / "cli.csv")
+    no_start = tmp_path / "no_start.csv"
+    first, rest = rosette.read_text(encoding="utf-8").split("\n", 1)
+    meta = json.loads(first.split("metadata (JSON): ", 1)[1])
+    del meta["start"], meta["options"]["t0"]
+    no_start.write_text(f"{first.split('{', 1)[0]}{json.dumps(meta)}\n{rest}", encoding="utf-8")
+    binary = tmp_path / "binary.csv"
+    binary.write_bytes(b"\xff\xfe\x00garbage")
+    words = tmp_path / "words.csv"
+    words.write_text(
+        f"{rosette.read_text(encoding='utf-8').split(chr(10), 2)[0]}\n{','.join(COLUMNS_LAB)}\na,b\n"
+    )
+    adaptive = _with_meta(rosette, tmp_path / "adaptive.csv", adaptive=True, method="dop853")
+    cases = {
+        tmp_path / "missing.csv": "cannot read",
+        tmp_path: "cannot read",
+        trajectory: "is not the lab's metadata line",
+        no_start: "the metadata lack what a replay needs: start, options.t0",
+        binary: "",
+        words: "the rows are not numbers",
+        adaptive: "method 'dop853' is adaptive",
+    }
+    for path, needle in cases.items():
+        assert replay_lab_csv.main([str(path)]) == 2, path
+        err = capsys.readouterr().err
+        assert err.startswith(f"error: {path}: ") and err.count("\n") == 1 and needle in err, err
+        assert "Traceback" not in err

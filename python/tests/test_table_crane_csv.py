@@ -59,15 +59,24 @@ def test_a_crane_grid_csv_is_refused_as_no_time_series(crane_files: dict[str, Pa
     assert MAKES_FITTABLE in str(e.value)
 
 
-def test_pendulab_fit_says_it_and_the_named_columns_still_read(crane_files: dict[str, Path]) -> None:
-    """``pendulab fit`` prints the refusal as one error line; naming the columns (``--columns``) is the
-    user's own reading of the file and is not refused (here: the payload's x, y, z as positions)."""
+def test_pendulab_fit_says_it_and_named_columns_are_refused_the_same_way(
+    crane_files: dict[str, Path],
+) -> None:
+    """``pendulab fit`` prints the refusal as one error line; naming the columns (``--columns``, here the
+    payload's absolute x, y, z as positions) was let through before, and fitted a moving trolley's payload
+    as a bob about a fixed pivot: it is refused in the same words."""
     assert_user_error(*invoke("fit", str(crane_files["run"])), "a crane run", MAKES_FITTABLE)
     assert_user_error(*invoke("fit", str(crane_files["grid"])), "a crane grid", MAKES_FITTABLE)
     header = crane_files["old_run"].read_text().split("\n", 1)[0].split(",")
     columns = ["t"] + ["-"] * 6 + ["x", "y", "z"] + ["-"] * (len(header) - 10)
-    got = read_table(crane_files["run"], columns)
-    assert got["positions"].shape[1] == 3 and got["t"][0] == 0.0
+    for name in ("run", "old_run"):
+        with pytest.raises(pl.InvalidInputError) as e:
+            read_table(crane_files[name], columns)
+        assert e.value.key == "data_crane_run"  # type: ignore[attr-defined]
+        code, out, err = invoke("fit", str(crane_files[name]), "--columns", ",".join(columns))
+        assert_user_error(code, out, err, "a crane run", MAKES_FITTABLE)
+    with pytest.raises(pl.InvalidInputError, match="a crane grid"):
+        read_table(crane_files["grid"], ["-", "t", "-", "x"])
 
 
 def test_a_pendulab_trajectory_csv_still_reads(tmp_path: Path) -> None:

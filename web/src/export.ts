@@ -3,8 +3,9 @@
 import type { ModelParams, Status, Vec3 } from './protocol';
 
 /** Body of POST /api/scenario.toml: model, l [m], m [kg], g [m/s²], the model's own parameters (SI), the
- *  start x [m], v [m/s], method, dt [s], t0 [s] and t_end [s] (at least 100 s after t0, and past the time
- *  reached, so the file replays what was watched). */
+ *  start x [m], v [m/s], method, dt [s] (a fixed-step method's) or rtol and atol [m, m/s] (an adaptive
+ *  method's: in a file a dt would be its first step), t0 [s] and t_end [s] (at least 100 s after t0, and
+ *  past the time reached, so the file replays what was watched). */
 export interface ScenarioRequest {
   title?: string;
   model: string;
@@ -15,7 +16,9 @@ export interface ScenarioRequest {
   x: Vec3;
   v: Vec3;
   method: string;
-  dt: number;
+  dt?: number;
+  rtol?: number;
+  atol?: number;
   t0: number;
   t_end: number;
 }
@@ -30,10 +33,14 @@ export function scenarioRequest(s: Status): ScenarioRequest {
     x: s.start.x,
     v: s.start.v,
     method: s.method,
-    dt: s.dt,
     t0: s.t0,
     t_end: Math.max(s.t0 + 100, Math.ceil(s.t)),
   };
+  if (!s.adaptive) out.dt = s.dt;
+  else {
+    if (s.rtol !== undefined) out.rtol = s.rtol;
+    if (s.atol !== undefined) out.atol = s.atol;
+  }
   const title = s.title ?? s.scenario;
   if (title) out.title = `${title} (from the lab)`;
   return out;

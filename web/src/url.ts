@@ -249,11 +249,12 @@ export function fromStatus(s: Status): UrlScenario {
     mass: s.params.mass,
     g: s.params.g,
     method: s.method,
-    dt: s.dt,
     timeScale: s.time_scale,
     x: s.start.x,
     v: s.start.v,
   };
+  // an adaptive method's steps are its own (the session's dt is only its first): no dt then
+  if (!s.adaptive) u.dt = s.dt;
   if (s.scenario !== null) u.scenario = s.scenario;
   if (Object.keys(s.model_params).length > 0) u.modelParams = { ...s.model_params };
   if (s.paused) u.paused = true;

@@ -141,3 +141,12 @@ fn string_events_reach_the_tick() {
     }
     assert!(events >= 2 && slack, "{events} events, slack {slack}");
 }
+
+#[test]
+fn the_status_says_an_adaptive_runs_tolerances() {
+    // an exported scenario of a dop853 session carries its tolerances, not the live stepper's first step
+    let s = Setup { rtol: 1e-8, atol: 1e-11, ..setup("ideal", Method::Dop853, 1e-3) };
+    let status = LiveSession::new(s).unwrap().status();
+    assert_eq!(status["adaptive"], true);
+    assert_eq!((status["rtol"].as_f64(), status["atol"].as_f64()), (Some(1e-8), Some(1e-11)));
+}

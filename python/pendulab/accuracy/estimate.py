@@ -59,8 +59,9 @@ from typing import Any
 import numpy as np
 
 from .._core import ExactSolution as _CoreExact
-from .._core import IntegrationError, InvalidInputError, methods
+from .._core import IntegrationError, InvalidInputError
 from ..error_estimate import ErrorEstimate
+from ..integrators import _method_table
 from ..model import Pendulum, State
 from ..trajectory import Trajectory
 
@@ -84,14 +85,14 @@ Runner = Callable[..., Trajectory]
 
 
 def _order(method: str) -> int:
-    info = next((m for m in methods() if m["name"] == method), None)
+    info = _method_table().get(method)
     if info is None:
         raise InvalidInputError(f"unknown method {method!r}")
     return int(info["order"])
 
 
 def _is_adaptive(method: str) -> bool:
-    return bool(next(m for m in methods() if m["name"] == method)["adaptive"])
+    return bool(_method_table()[method]["adaptive"])
 
 
 def _work(tr: Trajectory) -> float:

@@ -4,7 +4,7 @@ reads it (``"RATTLE (symplectic, order 2)"``, ``"damped pendulum"``), from the i
 
 from __future__ import annotations
 
-from .._core import methods
+from ..integrators import _method_table
 
 _METHOD_NAMES = {
     "rattle": "RATTLE",
@@ -42,7 +42,7 @@ def method_words(name: str) -> str:
     >>> method_words("dop853")
     'Dormand–Prince 8(5,3), adaptive (order 8)'
     """
-    info = {m["name"]: m for m in methods()}.get(name)
+    info = _method_table().get(name)
     if info is None:
         return _METHOD_NAMES.get(name, name)
     kind = "symplectic, " if info["symplectic"] else ""

@@ -35,13 +35,18 @@ CHUNK_CASES = 200
 class GridResult:
     """``sway`` [m] (n_shapers, n_ropes, n_ratios): the payload's largest horizontal distance from the
     pivot after the move; ``ropes`` [m], ``ratios`` (m₂/m₁), ``labels`` (one per shaper, "unshaped"
-    for None); ``interrupted`` when Ctrl-C stopped the grid (the cases not computed are NaN)."""
+    for None); ``interrupted`` when Ctrl-C stopped the grid (the cases not computed are NaN);
+    ``sample_spacing`` [s], the interval at which the sway was sampled after the move, and the DOP853
+    tolerances ``rtol``, ``atol`` of the runs."""
 
     sway: FloatArray
     ropes: FloatArray
     ratios: FloatArray
     labels: tuple[str, ...]
     interrupted: bool = False
+    sample_spacing: float = 0.05
+    rtol: float = 1e-8
+    atol: float = 1e-8
 
 
 def residual_grid(
@@ -122,4 +127,4 @@ def residual_grid(
                 RuntimeWarning,
                 stacklevel=2,
             )
-    return GridResult(sway, lr, rr, tuple(labels), interrupted)
+    return GridResult(sway, lr, rr, tuple(labels), interrupted, float(dt), float(rtol), float(atol))

@@ -60,6 +60,7 @@ class CraneScenario:
         (times [s], amplitudes), the sway modes [rad/s], the move's end [s], the steps taken and the
         units of the columns and numbers."""
         c = self.crane
+        spec = None if self.spec is None else self.spec.model_dump(mode="json", exclude_none=True)
         shaper_info = None
         if self.shaper is not None:
             sh = self.shaper
@@ -67,12 +68,14 @@ class CraneScenario:
             shaper_info = {"kind": sh.kind, "times": sh.times.tolist(), "amplitudes": sh.amplitudes.tolist()}
             shaper_info |= {k: v for k, v in design.items() if math.isfinite(v)}
         units = {"modes": "rad/s", "move_end": "s", "shaper.times": "s", "shaper.omega": "rad/s"}
+        if spec is not None:
+            units |= {"file.simulation.output_spacing": "s"}
         if run is not None:
             units |= {name: unit for name, (unit, _) in run.columns().items()}
         return {
             "software": "pendulab",
             "title": self.title,
-            "file": None if self.spec is None else self.spec.model_dump(mode="json", exclude_none=True),
+            "file": None if spec is None else file_settings(spec),
             "shaper": shaper_info,
             "modes": c.modes().tolist(),
             "move_end": self.move_end,
@@ -80,6 +83,17 @@ class CraneScenario:
             "units": units,
             "conventions": "SI units, z up, gravity along -z for g > 0",
         }
+
+
+def file_settings(file: dict[str, Any]) -> dict[str, Any]:
+    """A crane file's settings as a run's metadata says them (``file``): ``[simulation] dt``, the spacing
+    of the output rows of an adaptive run (DOP853 chooses its own steps), as ``output_spacing`` [s].
+    Older files' metadata said ``dt``: :func:`pendulab.io.read_metadata` reads them through here."""
+    sim = file.get("simulation")
+    if not (isinstance(sim, dict) and "dt" in sim):
+        return file
+    sim = {("output_spacing" if k == "dt" else k): v for k, v in sim.items()}
+    return file | {"simulation": sim}
 
 
 def _describe(e: ValidationError) -> str:

@@ -133,8 +133,7 @@ def parse_table_notes(
     text = text.removeprefix("\ufeff")  # Excel's "CSV UTF-8" and Windows editors write a BOM
     if "\r" in text and "\n" not in text:  # Excel for Mac's "CSV (Macintosh)": CR line ends
         text = text.replace("\r", "\n")
-    if columns is None:
-        _refuse_crane_csv(text, where)
+    _refuse_crane_csv(text, where)  # also with columns named: naming them does not make it a pendulum
     layout = find_layout(text, where)
     names = columns if columns is not None else _vernier_names(layout) or layout.header
     if names is None:

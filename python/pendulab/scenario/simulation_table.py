@@ -13,8 +13,7 @@ import difflib
 
 from pydantic import Field, field_validator, model_validator
 
-from .._core import methods
-from ..integrators import DEFAULTS, method_names
+from ..integrators import DEFAULTS, _method_table, method_names
 from ..validate import LIMITS, MAX_SAMPLES, MAX_STEPS, abbreviate
 from .table_base import _lim, _Section, _Time
 
@@ -102,7 +101,7 @@ class SimulationSection(_Section):
 
     def is_adaptive(self) -> bool:
         """True when the method chooses its own steps (dop853)."""
-        return bool({m["name"]: m for m in methods()}[self.method]["adaptive"])
+        return bool(_method_table()[self.method]["adaptive"])
 
     def resolved_dt(self) -> float:
         """The step size handed to the core [s]: ``dt``, else 1e-3 s (0 = automatic for adaptive methods)."""

@@ -14,7 +14,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
 from .._core import InvalidInputError
-from ..integrators import method_names
+from ..integrators import _method_table, method_names
 from ..model import Pendulum
 from ..scenario import Scenario
 from .commands import ExactRequest, Vec3, limit_bounds
@@ -95,23 +95,37 @@ class ScenarioRequest(_Request):
     x: Vec3 = Field(description="start position in m")
     v: Vec3 = Field(description="start velocity in m/s")
     method: str = Field("rattle", max_length=40)
-    dt: float = Field(1e-3, description="step size in s", **limit_bounds("dt"))
+    dt: float | None = Field(
+        1e-3,
+        description="step size in s (fixed-step methods; not written for an adaptive one)",
+        **limit_bounds("dt"),
+    )
+    rtol: float | None = Field(None, description="relative tolerance (adaptive methods)", ge=1e-15, le=1)
+    atol: float | None = Field(None, description="absolute tolerance in m and m/s (adaptive methods)", ge=0)
     t0: float = Field(0.0, description="start time in s", ge=-1e12, le=1e12)
     t_end: float = Field(100.0, description="end time in s", ge=-1e12, le=1e12)
 
 
 def scenario_toml(req: ScenarioRequest) -> str:
     """The scenario as a TOML file that ``pendulab run`` accepts (and that loads back to the same
-    pendulum, start and method). Raises :class:`pendulab.ScenarioError` naming what is wrong."""
+    pendulum, start and method). A fixed-step method's ``dt`` is written; an adaptive method's
+    (``dop853``) is not (in a file it would be the first step, and the lab's DOP853 lands on its frames'
+    times): its ``rtol`` and ``atol`` are, as given (else the defaults apply). Raises
+    :class:`pendulab.ScenarioError` naming what is wrong."""
     if req.method not in method_names():
         raise InvalidInputError(f"unknown method {req.method!r}; available: {', '.join(method_names())}")
     pendulum: dict[str, Any] = {"length": req.length, "mass": req.mass, "g": req.g}
     if req.model != "ideal" or req.params:
         pendulum |= {"model": req.model, **req.params}
+    simulation: dict[str, Any] = {"t0": req.t0, "t_end": req.t_end, "method": req.method}
+    if _method_table()[req.method]["adaptive"]:
+        simulation |= {k: v for k, v in (("rtol", req.rtol), ("atol", req.atol)) if v is not None}
+    elif req.dt is not None:
+        simulation["dt"] = req.dt
     data: dict[str, Any] = {
         "pendulum": pendulum,
         "initial": {"x": list(req.x), "v": list(req.v)},
-        "simulation": {"t0": req.t0, "t_end": req.t_end, "method": req.method, "dt": req.dt},
+        "simulation": simulation,
     }
     if req.title:
         data["title"] = req.title

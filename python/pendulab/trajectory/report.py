@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from ..display import Row, number, relative_drift
-from ..integrators import methods
+from ..integrators import _method_table
 from .tables import param_units
 
 
@@ -58,7 +58,7 @@ def method_line(tr: Any) -> str:
     whether it projects onto TS²; the arithmetic; which samples were kept (every n-th step or the
     requested ``save_at`` times); then any other option as ``key = value``."""
     o = dict(tr.options)
-    info = {m["name"]: m for m in methods()}.get(tr.method)
+    info = _method_table().get(tr.method)
     adaptive = bool(info and info["adaptive"])
     parts = []
     if adaptive:

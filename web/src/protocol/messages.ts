@@ -42,7 +42,12 @@ export interface Status {
   time_scale: number;
   method: string;
   adaptive: boolean;
+  /** A fixed-step method's step [s]; for an adaptive method (dop853) only its live first step: neither
+   *  the URL nor the exported scenario carries it then, but the tolerances below. */
   dt: number;
+  /** The adaptive method's tolerances (relative; absolute in m and m/s). */
+  rtol?: number;
+  atol?: number;
   params: Params;
   /** The model of the core's registry and all its own parameters (SI units). */
   model: string;

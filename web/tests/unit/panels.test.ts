@@ -116,5 +116,10 @@ describe('scenario download', () => {
       t_end: 251,
     });
     expect(scenarioRequest({ ...s, t: 3 }).t_end).toBe(100);
+    // an adaptive method: its tolerances, no dt (in a scenario file dt would be dop853's first step)
+    const adaptive = scenarioRequest({ ...s, method: 'dop853', adaptive: true, dt: 0.001, rtol: 1e-8, atol: 1e-11 });
+    expect(adaptive).toMatchObject({ method: 'dop853', rtol: 1e-8, atol: 1e-11 });
+    expect('dt' in adaptive).toBe(false);
+    expect('rtol' in scenarioRequest({ ...s, rtol: 1e-8, atol: 1e-11 })).toBe(false);
   });
 });

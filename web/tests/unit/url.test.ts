@@ -119,6 +119,13 @@ describe('the whole lab in the link (issue 28)', () => {
     // a time out of range echoed as it was written (2e6 was shown as 2000000)
     expect(decodeUrl('at=2e6').problems).toEqual(['at = "2e6" is not a time 0 … 1e6 s']);
   });
+  it('carries no dt for an adaptive method (its steps are its own; the session dt is only its first)', () => {
+    expect(fromStatus(status).dt).toBe(0.0005);
+    const u = fromStatus({ ...status, method: 'dop853', adaptive: true });
+    expect(u.dt).toBeUndefined();
+    expect(encodeUrl(u)).not.toContain('dt=');
+    expect(commandsFor(u)).toContainEqual({ type: 'set_method', method: 'dop853' });
+  });
   it('does not replay a paused time for an adaptive method or a running lab', () => {
     expect(fromStatus({ ...status, adaptive: true }).at).toBeUndefined();
     expect(fromStatus({ ...status, paused: false }).at).toBeUndefined();

@@ -49,9 +49,10 @@ pub struct LiveSession {
     pub error: LiveError,
     /// Method.
     pub method: Method,
-    /// Step \[s\].
+    /// Step \[s\] of a fixed-step method; for `dop853` the live stepper's first step (a scenario
+    /// exported from an adaptive run carries its tolerances, not this).
     pub dt: f64,
-    /// dop853 tolerances.
+    /// dop853 relative tolerance (in the `status` notice, as `atol`).
     pub rtol: f64,
     /// dop853 absolute tolerance.
     pub atol: f64,
@@ -163,6 +164,8 @@ impl LiveSession {
             "method": self.method.info().name,
             "adaptive": self.adaptive(),
             "dt": self.dt,
+            "rtol": self.rtol,
+            "atol": self.atol,
             "params": { "length": p.length, "mass": p.mass, "g": p.g },
             "model": self.pendulum.model,
             "model_params": own,
