@@ -12,11 +12,12 @@ determined, with a warning that names them, the record's span in periods and wha
 where both profiles close, each profiled bar is widened to its 95 % profile interval (the larger side
 over 1.96; an asymmetric interval is said), and the correlated parameters not profiled are widened by
 the largest factor of those they are correlated with. Wherever the length or g ends up not
-determined (by the curvature, an open profile or the time limit), the bars of the others are
-linearised with them free (identify.py) but the valley curves (case 20, seed 3: φ̇₀ 4.5 such bars
-off): every other determined parameter, the start's too, is profiled with every unknown free
-(:func:`_held`): open, not determined; closed, the bar from the profile. An end that no converged
-refit closes is open (profile.py). Records of a period or more pay nothing.
+determined (by the curvature, an open profile or the time limit), and where their profiles close,
+the bars of the others are linearised (with them free: identify.py) but the valley curves (case 20,
+seed 3: φ̇₀ 4.5 such bars off): every other determined parameter, the start's too, is profiled
+with every unknown free (:func:`_held`): open, not determined; closed, the bar from the profile.
+An end that no checked, converged refit closes is open (profile.py). Records of a period or more pay
+nothing.
 Units: each parameter's (SI); times [s].
 """
 
@@ -114,20 +115,31 @@ def check_short_record(res: Any, time_up: Callable[[], bool], checkable: bool = 
     if any(not all(map(math.isfinite, ends)) for ends in profiled.values()):
         said = _undetermined(res, core + linked, periods, period, profiled, _open(unsettled))
         return [said, *_held(res, periods, period, time_up, checkable)]
-    return _widened(res, core, linked, periods, period, profiled)
+    widened = _widened(res, core, linked, periods, period, profiled)
+    return widened + _held(res, periods, period, time_up, checkable, done=set(profiled))
 
 
-def _held(res: Any, periods: float, period: float, time_up: Callable[[], bool], checkable: bool) -> list[str]:
+def _held(
+    res: Any,
+    periods: float,
+    period: float,
+    time_up: Callable[[], bool],
+    checkable: bool,
+    done: set[str] | None = None,
+) -> list[str]:
     """Length or g fitted and not determined by the curvature. identify.py computes the others' bars
     with them free, but only to first order: along the curved valley where they move, a third of a
     swing leaves those bars too narrow still (case 20, seed 3: φ̇₀ = 0.09 ± 0.16 rad/s for 0.8,
     4.5 bars off; with them held it had been ± 0.029, and pivot_x ± 0.0009 m, 6–21 bars off). Every
     determined parameter, the start's too (the pivot and damping first), is profiled with every other
     unknown free: an open profile, not determined; a closed one, the bar taken from it (never
-    narrower); one the time limit leaves unprofiled, not determined."""
-    if not any(n in res.params and not res.determined[n] for n in ("length", "g")):
+    narrower); one the time limit leaves unprofiled, not determined. With the length and g
+    determined and their profiles closed (``done``: those profiled), the others are profiled too: the
+    curvature's bars along the same valley were too narrow (case 20, seed 31: φ̇₀ = 3.03 ± 0.56 rad/s
+    for 0.8, 4 bars off, with length and g from their profiles)."""
+    if done is None and not any(n in res.params and not res.determined[n] for n in ("length", "g")):
         return []
-    determined = [n for n in res.names if res.determined[n]]
+    determined = [n for n in res.names if res.determined[n] and n not in (done or set())]
     chosen = [n for n in determined if n not in STATE_NAMES] + [n for n in determined if n in STATE_NAMES]
     profiled: dict[str, tuple[float, float]] = {}
     unsettled: list[str] = []
