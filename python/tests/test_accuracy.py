@@ -64,6 +64,30 @@ def test_the_coarse_companion_needs_save_times_on_its_grid() -> None:
     assert tr.error.max_position < 1e-4, tr.error.position
 
 
+def test_a_sampled_pivot_needs_its_samples_on_the_coarse_grid() -> None:
+    """A fixed step holding a sample of a sampled pivot's path is split there, so a 2·dt run off the
+    samples' grid splits its steps in another pattern than the plain run and the Richardson difference
+    misjudges the error: at dt = 16 ms on samples every 10 ms the 2·dt estimate was 46× too low (0.022
+    of the true error; 0.64 at 3.7 ms). The samples count like save times: off the 2·dt grid, dt/2."""
+    t = np.arange(-0.1, 3.105, 0.01)
+    path = np.stack([0.3 * np.sin(1.3 * t), 0.2 * np.sin(0.7 * t + 0.5), 0.1 * np.cos(2 * t)], axis=-1)
+    p = pl.Pendulum(length=1.0, g=9.81, pivot_samples=(t, path), damping=0.03)
+    s0 = p.state_from_angles(theta=1.3, phi=0.9, theta_dot=0.6, phi_dot=2.5)
+    for dt, companion in ((1.6e-2, "dt/2"), (3.7e-3, "dt/2"), (1e-3, "2dt")):
+        tr = pl.simulate(p, s0, 3.0, method="rk4", dt=dt, save_every=10, error_estimate=True)
+        # DOP853 ends its steps on the samples (to round-off of the independent reference, T-7.2)
+        ref = pl.simulate(p, s0, 3.0, method="dop853", rtol=1e-13, atol=1e-14, save_at=tr.t)
+        true = np.linalg.norm(tr.x - ref.x, axis=1)
+        assert true.max() > 1e-10, (dt, true.max())  # the reference: ~1e-14 m
+        est = tr.error_estimate
+        assert est.reference["companion"] == companion, (dt, est.reference)
+        if companion == "dt/2":
+            assert "pivot's samples" in est.reference["why"], est.reference
+        big = true > 0.1 * true.max()
+        ratio = est.position[big] / true[big]
+        assert ratio.min() > 0.5 and ratio.max() < 2.0, (dt, ratio.min(), ratio.max())
+
+
 def test_an_unstable_coarse_run_falls_back_to_the_half_step() -> None:
     # RATTLE8 at 0.15/ω is stable, at 0.3/ω (the 2·dt run) it blows up next to the top
     s0 = IDEAL.state_from_angles(theta=np.radians(150), phi_dot=0.3)

@@ -15,7 +15,9 @@ fixed-step fall-back below.
      the C·(2h)^{p+1} pattern by at most that of one step. Up to every sample at most
      ``MAX_IRREGULAR`` (1/8) of the coarse steps may be irregular (``save_every`` even and
      ``save_at`` on the 2·dt grid: none; sparse ``save_at`` times off the grid: a few; ``save_every``
-     = 1 or 3: every one, so the fine companion);
+     = 1 or 3: every one, so the fine companion); a sampled pivot's samples count alike, for a fixed
+     step holding one is split there (2·dt spanning the 10-ms spacing: the coarse estimate was 46×
+     too low; docs/integrators.md, "Sampled pivot");
   2. the coarse run fails: raises (unstable, leaves TS²), is not finite;
   3. round-off may rival the truncation error: Richardson sees only what changes with h, so the
      difference y_{2h} − y_h carries round-off at its own size, and dividing it by 2ᵖ − 1 hides it
@@ -194,15 +196,30 @@ def estimate(run: Runner, tr: Trajectory, state: State, kwargs: dict[str, Any]) 
 
 
 def _coarse_refusal(tr: Trajectory, dt: float) -> str | None:
-    """Why the save times rule out the coarse companion (None: they allow it)."""
+    """Why the save times, or a sampled pivot's kinks, rule out the coarse companion (None: they allow
+    it). A fixed step that holds a sample of the pivot's path is split there (``Model::next_break``):
+    like a shortened step, each split breaks the C·(2h)^{p+1} pattern, and where 2·dt spans a sample
+    interval every coarse step is split (estimate 46× too low at dt = 16 ms on samples every 10 ms)."""
     t0 = float(tr.options.get("t0", tr.t[0]))
-    share = irregular_share(np.concatenate([[t0], tr.t]) if tr.t[0] > t0 else tr.t, 2.0 * dt)
+    times = np.concatenate([[t0], tr.t]) if tr.t[0] > t0 else tr.t
+    kinks = _pivot_kinks(tr, t0)
+    share = irregular_share(np.union1d(times, kinks) if kinks.size else times, 2.0 * dt)
     if share > MAX_IRREGULAR:
+        what = "the save times and the pivot's samples are" if kinks.size else "the save times are"
         return (
-            f"the save times are off the 2·dt grid: {share:.0%} of the 2·dt run's steps would be "
-            f"shortened (at most {MAX_IRREGULAR:.1%})"
+            f"{what} off the 2·dt grid: {share:.0%} of the 2·dt run's steps would be "
+            f"{'shortened or split' if kinks.size else 'shortened'} (at most {MAX_IRREGULAR:.1%})"
         )
     return None
+
+
+def _pivot_kinks(tr: Trajectory, t0: float) -> np.ndarray:
+    """The sampled pivot's sample times [s] inside the run (where its p̈ is kinked), else none."""
+    samples = tr.pendulum.pivot_samples
+    if samples is None:
+        return np.empty(0)
+    times = np.asarray(samples[0], dtype=float)
+    return times[(times > t0) & (times < float(tr.t[-1]))]
 
 
 def _not_asymptotic(tr: Trajectory, coarse: Trajectory, p: int) -> str | None:
