@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 from ._core import InvalidInputError, fused_is_fast
 from ._core import methods as _methods
 from .model import Pendulum
-from .validate import LIMITS, choice, finite, flag, number
+from .validate import LIMITS, abbreviate, choice, did_you_mean, finite, flag, number
 
 if TYPE_CHECKING:
     from ._core import MethodInfo, ParamSpec
@@ -113,6 +113,14 @@ def method_names() -> list[str]:
     ['rattle', 'rattle4', 'rattle6', 'rattle8', 'dop853', 'rkmk4', 'rk4', 'rk4_angles']
     """
     return [m["name"] for m in _methods()]
+
+
+def unknown_method(name: str) -> str:
+    """The message refusing a method ``name`` that is not registered: the nearest name (the same
+    but for case first; :func:`pendulab.validate.did_you_mean`) and the available ones."""
+    names = method_names()
+    hint = did_you_mean(name, names)
+    return f"unknown method {abbreviate(repr(name))}{hint}; available: {', '.join(names)}"
 
 
 def check_arithmetic(arithmetic: Any, method: str, model: str | None = None) -> str:

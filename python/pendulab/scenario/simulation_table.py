@@ -9,12 +9,10 @@ what the core receives.
 
 from __future__ import annotations
 
-import difflib
-
 from pydantic import Field, field_validator, model_validator
 
-from ..integrators import DEFAULTS, _method_table, method_names
-from ..validate import LIMITS, MAX_SAMPLES, MAX_STEPS, abbreviate
+from ..integrators import DEFAULTS, _method_table, method_names, unknown_method
+from ..validate import LIMITS, MAX_SAMPLES, MAX_STEPS
 from .table_base import _lim, _Section, _Time
 
 _U64_LIMIT = 2**63  # save_every must fit the core's unsigned 64-bit counter
@@ -63,13 +61,8 @@ class SimulationSection(_Section):
     @field_validator("method")
     @classmethod
     def _known_method(cls, name: str) -> str:
-        names = method_names()
-        if name not in names:
-            hint = difflib.get_close_matches(name[:100], names, n=1)
-            suggestion = f" (did you mean {hint[0]!r}?)" if hint else ""
-            raise ValueError(
-                f"unknown method {abbreviate(repr(name))}{suggestion}; available: {', '.join(names)}"
-            )
+        if name not in method_names():
+            raise ValueError(unknown_method(name))
         return name
 
     @model_validator(mode="after")

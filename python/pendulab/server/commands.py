@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal, TypedDict
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
 from .._core import LiveSession, models
-from ..integrators import method_names
+from ..integrators import method_names, unknown_method
 from ..model import Pendulum, State
 from .live_models import OWN_STEPPER_MODELS
 from .notices import CommandError, show_value, validation_key, validation_problems
@@ -216,7 +216,7 @@ class SetMethod(_Command):
         if self.method is None and self.dt is None:
             raise ValueError("give method, dt (s) or both")
         if self.method is not None and self.method not in method_names():
-            raise ValueError(f"unknown method {self.method!r}; available: {', '.join(method_names())}")
+            raise ValueError(unknown_method(self.method))
         return self
 
 

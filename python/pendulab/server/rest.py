@@ -14,7 +14,7 @@ import numpy as np
 from pydantic import BaseModel, ConfigDict, Field
 
 from .._core import InvalidInputError
-from ..integrators import _method_table, method_names
+from ..integrators import _method_table, method_names, unknown_method
 from ..model import Pendulum
 from ..scenario import Scenario
 from .commands import ExactRequest, Vec3, limit_bounds
@@ -113,7 +113,7 @@ def scenario_toml(req: ScenarioRequest) -> str:
     times): its ``rtol`` and ``atol`` are, as given (else the defaults apply). Raises
     :class:`pendulab.ScenarioError` naming what is wrong."""
     if req.method not in method_names():
-        raise InvalidInputError(f"unknown method {req.method!r}; available: {', '.join(method_names())}")
+        raise InvalidInputError(unknown_method(req.method))
     pendulum: dict[str, Any] = {"length": req.length, "mass": req.mass, "g": req.g}
     if req.model != "ideal" or req.params:
         pendulum |= {"model": req.model, **req.params}

@@ -11,6 +11,7 @@ is allowed (:func:`pendulab.validate.table.invalid`); a non-finite result is an
 
 from __future__ import annotations
 
+import difflib
 import math
 import numbers
 from collections.abc import Iterable
@@ -83,11 +84,23 @@ def flag(name: str, value: Any) -> bool:
     return bool(value)
 
 
+def did_you_mean(value: Any, options: Iterable[str]) -> str:
+    """`` (did you mean 'x'?)`` for the option nearest to the string ``value``, or ``""``: an option
+    equal to it but for case first, else the closest by :func:`difflib.get_close_matches`. Only a hint:
+    the wrong case is never accepted."""
+    if not isinstance(value, str):
+        return ""
+    opts = list(options)
+    near = [o for o in opts if o.casefold() == value.casefold()]
+    near = near or difflib.get_close_matches(value[:100], opts, n=1)
+    return f" (did you mean {near[0]!r}?)" if near else ""
+
+
 def choice(name: str, value: Any, options: Iterable[str]) -> str:
-    """One of ``options`` (strings)."""
+    """One of ``options`` (strings); the error names the nearest option (:func:`did_you_mean`)."""
     opts = list(options)
     if not isinstance(value, str) or value not in opts:
-        raise invalid(name, value, f"one of {', '.join(map(repr, opts))}")
+        raise invalid(name, value, f"one of {', '.join(map(repr, opts))}{did_you_mean(value, opts)}")
     return value
 
 
