@@ -54,3 +54,22 @@ def test_the_project_address_is_stated_once_and_repeated_the_same() -> None:
     assert len(crates) >= 3
     for crate in crates:
         assert "repository.workspace = true" in crate.read_text(), crate
+
+
+def test_load_scenario_takes_a_shipped_example_by_name(tmp_path, monkeypatch) -> None:
+    """``pl.load_scenario("rosette")`` loads the shipped example, as ``pendulab run rosette`` does, from
+    any directory; a path that exists wins; anything else is refused naming it and the examples."""
+    import pendulab as pl
+
+    monkeypatch.chdir(tmp_path)  # outside the checkout: examples/scenarios/… is not here
+    sc = pl.load_scenario("rosette")
+    assert sc.source == str(examples.scenario_files()["rosette"])
+    assert sc.spec == pl.load_scenario(examples.scenario_files()["rosette"]).spec
+    assert pl.load_scenario("example:rosette.toml").title == sc.title
+    text = examples.scenario_files()["rosette"].read_text(encoding="utf-8")
+    (tmp_path / "rosette").write_text(text.replace("length = 1.0", "length = 2.5"), encoding="utf-8")
+    assert pl.load_scenario("rosette").pendulum().length == 2.5  # the local file, not the example
+    with pytest.raises(FileNotFoundError, match=r"rosete: No such file, and no example scenario .*rosette"):
+        pl.load_scenario("rosete")
+    with pytest.raises(FileNotFoundError, match=r"give its name alone, 'rosette'"):
+        pl.load_scenario("examples/scenarios/rosette.toml")

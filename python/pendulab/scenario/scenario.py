@@ -63,6 +63,7 @@ from ..variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
 from .crane_schema import CRANE_SECTIONS, CraneSpec, is_crane
 from .errors import ScenarioError, _problem, _syntax_error
+from .examples import find as find_example
 from .overrides import RunOverrides, run_overrides
 from .scenario_text import _toml_value as _toml_value
 from .scenario_text import scenario_repr, summary_rows, toml_text
@@ -347,14 +348,25 @@ def _build_crane(spec: CraneSpec, source: str) -> CraneScenario:
 
 
 def load_scenario(path: str | os.PathLike[str]) -> Scenario:
-    """Reads and validates a scenario file (TOML, UTF-8).
+    """Reads and validates a scenario file (TOML, UTF-8): ``path`` as given when it exists, else the
+    shipped example scenario of that name (``"rosette"``, as ``pendulab run rosette``; ``pendulab
+    scenarios`` lists them).
 
     Raises :class:`ScenarioError` for bad contents (a file above 1 MiB or nested deeper than 16 levels
-    is refused before parsing, docs/limits.md) and ``OSError`` naming the file if it cannot be read.
+    is refused before parsing, docs/limits.md), :class:`FileNotFoundError` naming ``path`` and the
+    shipped examples when it is neither a file nor an example's name, and ``OSError`` naming the file
+    if it cannot be read.
+
+    Examples
+    --------
+    >>> import pendulab as pl
+    >>> pl.load_scenario("rosette").title
+    'Rosette: 60° release with sideways spin'
     """
-    source = os.fspath(path)
+    found = find_example(Path(path), "scenario")  # a path that exists wins over an example's name
+    source = os.fspath(path) if found == Path(path) else os.fspath(found)
     try:
-        text = read_file_capped(path)
+        text = read_file_capped(source)
     except InvalidInputError as e:
         raise ScenarioError(source, str(e)) from None
     return Scenario.from_toml_str(text, source)
