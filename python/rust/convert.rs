@@ -24,8 +24,8 @@ create_exception!(
     "The integration could not continue (diverged, pole, step underflow)."
 );
 
-/// A core error as a Python exception: `IntegrationError` when the integration could not go on,
-/// `InvalidInputError` for bad input.
+/// A core error as a Python exception: `IntegrationError` when the integration could not go on (also
+/// a live session's stopped run), `InvalidInputError` for bad input.
 ///
 /// The common kinds also carry `key` and `values` (attributes of the exception): the message key of
 /// `pendulab/server/messages.json` and its values, so that the lab server's REST analyses answer in
@@ -36,7 +36,8 @@ pub(crate) fn to_py(err: Error) -> PyErr {
         Error::PoleSingularity { .. }
         | Error::ReducedFlowPole { .. }
         | Error::Diverged { .. }
-        | Error::StepSizeUnderflow { .. } => IntegrationError::new_err(err.to_string()),
+        | Error::StepSizeUnderflow { .. }
+        | Error::Stopped { .. } => IntegrationError::new_err(err.to_string()),
         _ => InvalidInputError::new_err(err.to_string()),
     };
     if let Some((key, values)) = err.key() {

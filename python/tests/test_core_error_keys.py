@@ -31,8 +31,9 @@ def test_a_diverged_solution_is_keyed_with_time_method_and_step() -> None:
         lambda: pl.simulate(p, p.state_from_angles(1.0, 0, 0, 0), t_end=100.0, dt=10.0, method="rk4")
     )
     assert isinstance(e, pl.IntegrationError)
-    assert (e.key, e.values) == ("diverged", {"t": "20", "method": "rk4", "dt": "10"})  # type: ignore[attr-defined]
-    assert "t = 20 s with method 'rk4' (dt = 10 s)" in str(e)  # as the user wrote them, not 1e1
+    # the last state known finite: rk4 does not check its steps, the save at t = 20 s found it not finite
+    assert (e.key, e.values) == ("diverged", {"t": "10", "method": "rk4", "dt": "10"})  # type: ignore[attr-defined]
+    assert "after t = 10 s with method 'rk4' (dt = 10 s)" in str(e)  # as the user wrote them, not 1e1
 
 
 def test_a_pole_of_the_angle_equations_is_keyed_with_its_time() -> None:
@@ -73,7 +74,19 @@ def test_a_keyed_core_refusal_answers_422_with_key_and_values() -> None:
 
 
 def test_every_core_key_has_english_words() -> None:
-    for key in ("step_too_small", "diverged", "near_pole", "not_finite", "off_sphere", "invalid_parameter"):
+    for key in (
+        "step_too_small",
+        "diverged",
+        "diverged_rattle",
+        "diverged_dop853",
+        "diverged_dt",
+        "near_pole",
+        "not_finite",
+        "off_sphere",
+        "invalid_parameter",
+        "unknown_model",
+        "integration_stopped",
+    ):
         assert key in MESSAGES
 
 
@@ -84,11 +97,12 @@ def test_a_run_that_blows_up_is_a_divergence_not_bad_input() -> None:
     start = p.state_from_angles(1.0, 0, 0, 2.0)
     e = _refusal(lambda: pl.simulate(p, start, t_end=5.0, dt=0.05, method="rk4_angles"))
     assert isinstance(e, pl.IntegrationError), repr(e)
-    assert (e.key, e.values) == ("diverged", {"t": "0.1", "method": "rk4_angles", "dt": "0.05"})  # type: ignore[attr-defined]
+    # the step from t = 0.05 s diverged: the last state computed, where the run stands (was its end, 0.1 s)
+    assert (e.key, e.values) == ("diverged", {"t": "0.05", "method": "rk4_angles", "dt": "0.05"})  # type: ignore[attr-defined]
     words = str(e)
-    assert words.startswith("the integration diverged at t = 0.1 s with method 'rk4_angles' (dt = 0.05 s)"), (
-        words
-    )
+    assert words.startswith(
+        "the integration diverged after t = 0.05 s with method 'rk4_angles' (dt = 0.05 s)"
+    ), words
     assert words.endswith(
         "reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"
     )

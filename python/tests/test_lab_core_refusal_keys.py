@@ -117,19 +117,19 @@ def test_a_lab_run_that_blows_up_says_it_diverged_with_method_dt_and_what_to_do(
         "rk4_angles",
         "0.05",
     ), n
-    assert "the integration diverged at t = " in n["message"] and "speed" not in n["message"], n["message"]
+    assert "the integration diverged after t = " in n["message"] and "speed" not in n["message"], n["message"]
     assert s.status()["paused"] is True
     why = {k: v for k, v in n["values"].items() if k not in ("detail", "why")}
     assert _page_words("en", "diverged", why).endswith(
         "(dt = 0.05 s): reduce dt, or choose an adaptive (dop853) or structure-preserving (rattle) method"
     )
-    assert _page_words("de", "diverged", why).startswith("die Integration ist bei t = ")
+    assert _page_words("de", "diverged", why).startswith("die Integration ist nach t = ")
     assert "avec la méthode rk4_angles (dt = 0.05 s)" in _page_words("fr", "diverged", why)
 
 
 def test_simulate_of_the_same_run_says_it_diverged() -> None:
     p = pl.Pendulum(g=1000.0)
     with pytest.raises(
-        pl.IntegrationError, match=r"^the integration diverged at t = [\d.]+ s with method 'rk4_angles'"
+        pl.IntegrationError, match=r"^the integration diverged after t = [\d.]+ s with method 'rk4_angles'"
     ):
         pl.simulate(p, p.state_from_angles(0.5, 0, 0, 2.0), t_end=5.0, dt=0.05, method="rk4_angles")

@@ -91,8 +91,10 @@ impl SwingingSpring {
         s.v = v_half + self.acceleration(s.x) * (0.5 * h);
     }
 
-    /// One step of order 2 (`order` = 2, Störmer–Verlet) or 4 (triple jump of three Verlet steps).
-    pub fn step(&self, s: &mut State, h: f64, order: u32) -> Result<()> {
+    /// One step of `h` \[s\] from the state `s` at time `t` \[s\], of order 2 (`order` = 2, Störmer–Verlet)
+    /// or 4 (triple jump of three Verlet steps). A state that is not finite after it is
+    /// [`Error::Diverged`] naming `t` (the last finite state's time) and `h` (`s` is then not finite).
+    pub fn step(&self, t: f64, s: &mut State, h: f64, order: u32) -> Result<()> {
         match order {
             2 => self.verlet(s, h),
             4 => {
@@ -113,7 +115,7 @@ impl SwingingSpring {
         if s.is_finite() {
             Ok(())
         } else {
-            Err(Error::Diverged { t: f64::NAN, method: "spring verlet", dt: h })
+            Err(Error::Diverged { t, method: "spring verlet", dt: h })
         }
     }
 
@@ -181,20 +183,16 @@ impl SpringStepper {
         crate::limits::check_limits(&crate::limits::STATE[1], start.x.length())?;
         crate::state::check_speed(start.v)?;
         let mut s = start;
-        spring.step(&mut s, 0.0, order)?; // a zero step: checks the order, changes nothing
+        spring.step(t0, &mut s, 0.0, order)?; // a zero step: checks the order, changes nothing
         Ok(Self { spring, s: start, t0, dt, order, k: 0 })
     }
 
-    /// Takes `n` steps of dt; on divergence the error names the time and the state stays the last
-    /// finite one.
+    /// Takes `n` steps of dt; on divergence the error names the last finite state's time (the start
+    /// of the step that diverged) and dt, and the state stays that last finite one.
     pub fn step(&mut self, n: u64) -> Result<()> {
         for _ in 0..n {
             let mut s = self.s;
-            self.spring.step(&mut s, self.dt, self.order).map_err(|_| Error::Diverged {
-                t: self.t0 + (self.k + 1) as f64 * self.dt,
-                method: "spring verlet",
-                dt: self.dt,
-            })?;
+            self.spring.step(self.t(), &mut s, self.dt, self.order)?;
             self.s = s;
             self.k += 1;
         }

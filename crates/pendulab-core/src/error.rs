@@ -57,7 +57,7 @@ pub enum Error {
         "method 'rk4_angles' refuses to continue at t = {} s: sin θ = {} is below {} \
          (θ = {} rad is within reach of a pole, where the angle equations T-2.5 are singular); \
          use a Cartesian method such as 'rattle' or 'dop853'",
-        Shown(*t),
+        Time(*t),
         Shown(*sin_theta),
         Shown(*limit),
         Shown(*theta)
@@ -75,7 +75,7 @@ pub enum Error {
     /// The adaptive integrator could not meet the tolerance.
     #[error(
         "step size underflow at t = {} s: h = {} s is too small for rtol = {}, atol = {}",
-        Shown(*t),
+        Time(*t),
         Shown(*h),
         Shown(*rtol),
         Shown(*atol)
@@ -91,20 +91,22 @@ pub enum Error {
         atol: f64,
     },
     /// The state the integrator computed (not one the user gave) became NaN or infinite, or left the
-    /// bounds of a state ([`crate::limits::STATE`]): the integration diverged.
+    /// bounds of a state ([`crate::limits::STATE`]): the integration diverged. `t` is the time of the
+    /// last finite state, where the run stands (the start of the step that diverged, or the last saved
+    /// sample when a method that does not check its states is found non-finite later).
     #[error(
-        "the integration diverged at t = {} s with method '{method}' (dt = {} s): the computed state \
+        "the integration diverged after t = {} s with method '{method}' (dt = {} s): the computed state \
          became non-finite or left the bounds of a state; {}",
-        Shown(*t),
+        Time(*t),
         Shown(*dt),
-        diverged_advice(method)
+        diverged_advice(method).1
     )]
     Diverged {
-        /// Time \[s\].
+        /// Time of the last finite state \[s\].
         t: f64,
         /// Method name.
         method: &'static str,
-        /// Step size \[s\].
+        /// Step size \[s\] (for `dop853`, the step tried).
         dt: f64,
     },
     /// The requested output does not fit in memory.
@@ -121,7 +123,7 @@ pub enum Error {
     #[error(
         "the reduced flow reached a pole at t = {} s (σ₁ = z/l = {}), where the reconstruction \
          φ̇ = J₃/(m(l² − z²)) is singular; use the exact solution or a Cartesian integrator there",
-        Shown(*t),
+        Time(*t),
         Shown(*sigma1)
     )]
     ReducedFlowPole {
@@ -212,10 +214,29 @@ pub enum Error {
         /// What happened, with the time.
         reason: String,
     },
+    /// A live session's integration stopped ([`crate::live`]): `cause` says why and when; the session
+    /// is paused at the last state computed.
+    #[error("{cause}; paused")]
+    Stopped {
+        /// The integrator's error.
+        cause: Box<Error>,
+    },
     /// A request a live session ([`crate::live`]) cannot carry out, said in full (what was asked and
     /// what is allowed).
     #[error("{0}")]
     Refused(String),
+    /// A request a live session cannot carry out, said in full (`words`), with the message key and values
+    /// a page words it by in its language (python/pendulab/server/messages.json: an unknown parameter, a
+    /// model the lab does not run, too many steps waiting).
+    #[error("{words}")]
+    RefusedKeyed {
+        /// The English words.
+        words: String,
+        /// The message key.
+        key: &'static str,
+        /// The values of the key's placeholders.
+        values: Vec<(&'static str, String)>,
+    },
 }
 
 impl Error {
@@ -230,9 +251,10 @@ impl Error {
             Error::StepSizeUnderflow { t: at, h, .. } => {
                 ("step_too_small", vec![("t", t(*at)), ("h", e(*h))])
             }
-            Error::Diverged { t: at, method, dt } => {
-                ("diverged", vec![("t", t(*at)), ("method", method.to_string()), ("dt", e(*dt))])
-            }
+            Error::Diverged { t: at, method, dt } => (
+                diverged_advice(method).0,
+                vec![("t", t(*at)), ("method", method.to_string()), ("dt", e(*dt))],
+            ),
             Error::PoleSingularity { t: at, .. } | Error::ReducedFlowPole { t: at, .. } => {
                 ("near_pole", vec![("t", t(*at))])
             }
@@ -256,8 +278,36 @@ impl Error {
                     ("allowed", allowed.to_string()),
                 ],
             ),
+            Error::UnknownModel { name, available } => {
+                ("unknown_model", vec![("model", name.clone()), ("available", available.clone())])
+            }
+            Error::RefusedKeyed { key, values, .. } => (*key, values.clone()),
+            Error::Stopped { cause } => {
+                let mut values = vec![("detail", cause.to_string())];
+                if let Some((why, more)) = cause.key() {
+                    values.push(("why", why.to_string()));
+                    values.extend(more);
+                }
+                ("integration_stopped", values)
+            }
             _ => return None,
         })
+    }
+}
+
+/// A time in a message \[s\]: rounded to 12 significant digits, then written by [`Shown`] (`0.15`, `1e-7`,
+/// `nan`). A computed time carries the round-off of its sums (0.1 + 0.05 = 0.15000000000000002), which
+/// the shortest digits that read back as the same f64 would show; 12 digits are those of the computed
+/// time itself (not rounded to the step, so a time off the step's grid still shows as such), with no
+/// noise in the last places: the time differs from the one written by at most 5e-12 of it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Time(pub f64);
+
+impl std::fmt::Display for Time {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let x = self.0;
+        let rounded = if x.is_finite() { format!("{x:.11e}").parse().unwrap_or(x) } else { x };
+        Shown(rounded).fmt(f)
     }
 }
 
@@ -285,18 +335,19 @@ impl std::fmt::Display for Shown {
     }
 }
 
-/// What to do after a divergence: a smaller step (tighter tolerances for `dop853`), and an adaptive or
-/// structure-preserving method unless one is in use (the spring's and the string's drivers have one
-/// method each).
-fn diverged_advice(method: &str) -> &'static str {
+/// The message key of a divergence of `method` and what to do, the same advice in every language (one
+/// key per advice: messages.json's `diverged`, `diverged_rattle`, `diverged_dop853`, `diverged_dt`): a
+/// smaller step (tighter tolerances for `dop853`), and an adaptive or structure-preserving method unless
+/// one is in use (the spring's and the string's drivers have one method each).
+pub fn diverged_advice(method: &str) -> (&'static str, &'static str) {
     if method.starts_with("rattle") {
-        "reduce dt (the step must resolve the fastest motion, dt·ω ≪ 1)"
+        ("diverged_rattle", "reduce dt (the step must resolve the fastest motion, dt·ω ≪ 1)")
     } else if method.starts_with("dop853") {
-        "lower rtol and atol, or use the structure-preserving 'rattle'"
+        ("diverged_dop853", "lower rtol and atol, or use the structure-preserving 'rattle'")
     } else if method.starts_with("spring") || method.starts_with("string") {
-        "reduce dt"
+        ("diverged_dt", "reduce dt")
     } else {
-        "reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"
+        ("diverged", "reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method")
     }
 }
 
@@ -332,41 +383,5 @@ pub fn require_finite(name: &'static str, value: f64, allowed: &'static str) -> 
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn numbers_in_messages_are_written_as_a_user_writes_them() {
-        let shown = |x: f64| Shown(x).to_string();
-        assert_eq!(shown(-1.0), "-1");
-        assert_eq!(shown(0.01), "0.01");
-        assert_eq!(shown(1.7453292519943295), "1.7453292519943295");
-        assert_eq!(shown(1e-4), "0.0001");
-        assert_eq!(shown(1e15), "1e15");
-        assert_eq!(shown(1e9), "1e9");
-        assert_eq!(shown(123456789.0), "123456789");
-        assert_eq!(shown(999999.0), "999999");
-        assert_eq!(shown(1e-7), "1e-7");
-        assert_eq!(shown(-2.5e20), "-2.5e20");
-        assert_eq!(shown(1e-300), "1e-300");
-        assert_eq!((shown(0.0), shown(-0.0)), ("0".into(), "-0".into()));
-        assert_eq!(
-            (shown(f64::NAN), shown(f64::INFINITY), shown(f64::NEG_INFINITY)),
-            ("nan".into(), "inf".into(), "-inf".into())
-        );
-        for x in [0.1 + 0.2, -1e-5, 123456.789, 6.02214076e23, f64::MIN_POSITIVE, f64::MAX] {
-            assert_eq!(shown(x).parse::<f64>().unwrap().to_bits(), x.to_bits(), "{x:e} reads back");
-        }
-        let e = require_non_negative("damping", -1.0, "a finite number >= 0");
-        assert_eq!(e.unwrap_err().to_string(), "invalid damping = -1: a finite number >= 0");
-        let d = Error::Diverged { t: 20.0, method: "rk4", dt: 0.01 };
-        assert!(
-            d.to_string().starts_with("the integration diverged at t = 20 s with method 'rk4' (dt = 0.01 s)"),
-            "{d}"
-        );
-        assert!(d
-            .to_string()
-            .ends_with("reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"));
-        assert_eq!(d.key().unwrap().1[2], ("dt", "0.01".to_string()));
-    }
-}
+#[path = "error_tests.rs"]
+mod tests;

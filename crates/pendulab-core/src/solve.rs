@@ -52,6 +52,8 @@ pub struct Solver<M: Model> {
     saved_total: u64,
     max_samples: u64,
     done: bool,
+    /// The time of the last state saved \[s\], the last one known finite (named by a divergence).
+    last_finite: f64,
 }
 
 fn too_many(samples: u64, max_samples: u64) -> Result<()> {
@@ -107,6 +109,7 @@ impl<M: Model> Solver<M> {
             saved_total: 0,
             max_samples,
             done: false,
+            last_finite: t0,
         };
         let starts_saved = match &solver.save {
             SaveAt::Every(_) => true,
@@ -121,14 +124,21 @@ impl<M: Model> Solver<M> {
         Ok(solver)
     }
 
+    /// The divergence of a run whose state was found not finite: named by the last time it was known
+    /// finite (methods that do not check every step, such as `rk4`, are found out at a save).
+    fn diverged(&self) -> Error {
+        Error::Diverged {
+            t: self.last_finite,
+            method: self.stepper.method().info().name,
+            dt: self.stepper.dt(),
+        }
+    }
+
     fn push(&mut self, t: f64, s: State) -> Result<()> {
         if !s.is_finite() {
-            return Err(Error::Diverged {
-                t,
-                method: self.stepper.method().info().name,
-                dt: self.stepper.dt(),
-            });
+            return Err(self.diverged());
         }
+        self.last_finite = t;
         self.saved_total += 1;
         too_many(self.saved_total, self.max_samples)?;
         self.samples.t.push(t);
@@ -194,7 +204,9 @@ impl<M: Model> Solver<M> {
                 }
             }
         }
-        self.stepper.check_finite()?;
+        if !self.stepper.state().is_finite() {
+            return Err(self.diverged());
+        }
         Ok(self.done)
     }
 

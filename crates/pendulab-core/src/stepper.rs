@@ -75,6 +75,9 @@ pub struct Stepper<M: Model> {
     t: f64,
     state: State,
     stats: Stats,
+    /// The time \[s\] the state was last known finite (the start, a new state, the last
+    /// [`Stepper::check_finite`] passed): the time a divergence found later names.
+    finite_at: f64,
 }
 
 impl<M: Model> Stepper<M> {
@@ -128,6 +131,7 @@ impl<M: Model> Stepper<M> {
             t: t0,
             state,
             stats: Stats::default(),
+            finite_at: t0,
         })
     }
 
@@ -161,6 +165,7 @@ impl<M: Model> Stepper<M> {
         self.state = self.model.integrator_state(self.t, state);
         self.t_anchor = self.t;
         self.k = 0;
+        self.finite_at = self.t;
         with_fixed!(&mut self.scheme, s => s.reset(), {
             let Scheme::Dop853(d) = &mut self.scheme else { unreachable!() };
             d.reset()
@@ -329,12 +334,14 @@ impl<M: Model> Stepper<M> {
         }
     }
 
-    /// Fails with [`Error::Diverged`] when the state is not finite.
-    pub fn check_finite(&self) -> Result<()> {
+    /// Fails with [`Error::Diverged`] when the state is not finite, naming the time it was last known
+    /// finite (methods that do not check every step, such as `rk4`, are found out here).
+    pub fn check_finite(&mut self) -> Result<()> {
         if self.state.is_finite() {
+            self.finite_at = self.t;
             Ok(())
         } else {
-            Err(Error::Diverged { t: self.t, method: self.method.info().name, dt: self.dt })
+            Err(Error::Diverged { t: self.finite_at, method: self.method.info().name, dt: self.dt })
         }
     }
 }

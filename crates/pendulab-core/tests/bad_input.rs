@@ -3,6 +3,7 @@
 mod common;
 
 use common::{fixed, rosette};
+use pendulab_core::error::Time;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
 use pendulab_core::{DVec3, Error, IdealPendulum, Method, SaveAt, SolveOptions, Solver, State, Stepper};
 
@@ -103,9 +104,19 @@ fn a_blow_up_of_the_angle_method_is_a_divergence_not_a_refused_speed() {
             matches!(e, Error::Diverged { method: "rk4_angles", dt, .. } if dt == 0.05),
             "θ₀ = {theta}: {e}"
         );
+        // the time named is the last state computed, a step-grid time to 12 digits (t + h was named:
+        // 0.15000000000000002 s), where a run stands and a lab run pauses
+        let Error::Diverged { t, .. } = e else { unreachable!() };
+        let steps = t / 0.05;
+        assert!((steps - steps.round()).abs() < 1e-9, "θ₀ = {theta}: t = {t} is not a step's start");
+        let mut rerun = Stepper::new(model, 0.0, s0, &fixed(Method::Rk4Angles, 0.05)).unwrap();
+        rerun.step_to(t).unwrap(); // the state there is finite and within bounds
+        assert!(rerun.state().is_finite() && rerun.step().is_err(), "θ₀ = {theta}: t = {t}");
         let words = e.to_string();
         assert!(
-            words.starts_with("the integration diverged at t = ") && words.contains("(dt = 0.05 s)"),
+            words.starts_with(&format!("the integration diverged after t = {} s ", Time(t)))
+                && words.contains("(dt = 0.05 s)")
+                && !words.contains("0000000"),
             "{words}"
         );
         assert!(words

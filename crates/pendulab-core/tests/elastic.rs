@@ -165,3 +165,26 @@ fn the_registry_says_where_the_spring_rests() {
     assert!(text.contains("l = l0 + m|g|/k") && text.contains("above it for g < 0"), "{text}");
     assert!(text.contains("k = 3 m|g|/l0") && !text.contains("m g/k"), "{text}");
 }
+
+/// A spring run that blows up (ω·dt = 100: Störmer–Verlet is unstable) names the last finite state's
+/// time and the step (the spring's own step named t = NaN), in a batch run and in the lab's stepper.
+#[test]
+fn a_divergence_names_the_last_finite_time_and_the_step() {
+    use pendulab_core::elastic::SpringStepper;
+    use pendulab_core::Error;
+    let sp = SwingingSpring::new(1e6, 1.0, 9.81, 1.0).unwrap();
+    let s0 = State { x: DVec3::new(0.1, 0.0, -1.0), v: DVec3::ZERO };
+    let dt = 0.1;
+    let e = sp.simulate(s0, dt, 1000, 1, 2).unwrap_err();
+    let Error::Diverged { t, method: "spring verlet", dt: named } = e else { panic!("{e}") };
+    assert_eq!(named, dt, "{e}");
+    let k = (t / dt).round();
+    assert!(t.is_finite() && k > 0.0 && (t - k * dt).abs() < 1e-9, "{e}");
+    let mut lab = SpringStepper::new(sp, s0, 0.0, dt, 2).unwrap();
+    assert_eq!(lab.step(1000).unwrap_err(), e, "the lab's stepper names the same");
+    assert_eq!(lab.t(), t, "it stands at the time named");
+    assert!(lab.state().is_finite());
+    let mut s = lab.state();
+    let step = sp.step(t, &mut s, dt, 2).unwrap_err();
+    assert_eq!(step, e, "one step of the spring from there names the same");
+}

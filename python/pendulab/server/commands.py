@@ -21,7 +21,7 @@ from .._core import LiveSession, models
 from ..integrators import method_names, unknown_method
 from ..model import Pendulum, State
 from .live_models import OWN_STEPPER_MODELS
-from .notices import CommandError, show_value, validation_key, validation_problems
+from .notices import CommandError, KeyedValueError, show_value, validation_key, validation_problems
 
 if TYPE_CHECKING:
     from .._core import LiveLimit, ModelInfo, ParamSpec
@@ -85,7 +85,11 @@ def _check_param_names(model: str, names: Any) -> None:
     unknown = [n for n in names if n not in allowed]
     if unknown:
         has = f"its parameters: {', '.join(allowed)}" if allowed else "it has none besides length, mass, g"
-        raise ValueError(f"the {model!r} model has no parameter {', '.join(map(repr, unknown))}; {has}")
+        words = f"the {model!r} model has no parameter {', '.join(map(repr, unknown))}; {has}"
+        named = {"model": model, "name": ", ".join(unknown)}
+        if allowed:
+            raise KeyedValueError(words, "unknown_parameter", **named, available=", ".join(allowed))
+        raise KeyedValueError(words, "no_parameters", **named)
 
 
 # --- commands -----------------------------------------------------------------------------------------
@@ -135,13 +139,22 @@ class SetModel(_Command):
 
     @model_validator(mode="after")
     def _known(self) -> SetModel:
+        available = ", ".join(MODEL_SPECS)
         if self.model in OFFLINE_MODELS:
-            raise ValueError(
+            raise KeyedValueError(
                 f"model {self.model!r} does not run in the lab (use pendulab run); "
-                f"the lab's models: {', '.join(MODEL_SPECS)}"
+                f"the lab's models: {available}",
+                "not_lab_model",
+                model=self.model,
+                available=available,
             )
         if self.model not in MODEL_SPECS:
-            raise ValueError(f"unknown model {self.model!r}; available: {', '.join(MODEL_SPECS)}")
+            raise KeyedValueError(
+                f"unknown model {self.model!r}; available: {available}",
+                "unknown_model",
+                model=self.model,
+                available=available,
+            )
         _check_param_names(self.model, self.params)
         return self
 

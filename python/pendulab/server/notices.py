@@ -41,6 +41,17 @@ class CommandError(ValueError):
         self.values = values or {}
 
 
+class KeyedValueError(ValueError):
+    """A command validator's refusal (its English words) with the message key and values a page words it
+    by (``messages.json``: an unknown model or parameter); pydantic keeps it as the error's
+    ``ctx["error"]``, where :func:`validation_key` finds it."""
+
+    def __init__(self, words: str, key: str, **values: str) -> None:
+        super().__init__(words)
+        self.key = key
+        self.values = values
+
+
 def show_value(value: Any) -> str:
     """A value of a refused message as the user wrote it: a string quoted, a number by
     :func:`pendulab._numbers.shown` (``1e-9``, ``-1``; not ``1e-09``, ``-1.0``), else its JSON (``NaN``
@@ -101,6 +112,9 @@ def validation_key(e: ValidationError, skip: int = 0) -> tuple[str | None, dict[
     """The message key and values (``messages.json``) of a pydantic error with one problem of a kind the
     page translates; ``(None, {})`` otherwise (the page shows the English message)."""
     errors = e.errors()
+    keyed = errors[0].get("ctx", {}).get("error") if len(errors) == 1 else None
+    if isinstance(keyed, KeyedValueError):  # a validator's own refusal (an unknown model or parameter)
+        return keyed.key, dict(keyed.values)
     if len(errors) != 1 or errors[0]["type"] not in _KEYED:
         return None, {}
     err = errors[0]

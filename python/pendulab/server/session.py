@@ -188,14 +188,18 @@ class Session:
 
     def advance(self, elapsed: float, budget_seconds: float = TICK_BUDGET) -> np.ndarray | None:
         """Advances by ``elapsed`` wall-clock seconds × time_scale within ``budget_seconds``; the records
-        reached (None: none; ``error_x`` unknown). :class:`CommandError` when the integration stops."""
+        reached (None: none; ``error_x`` unknown). :class:`CommandError` keyed ``integration_stopped`` (as
+        the tick's notice) when the integration stops: the session is then paused at the last state
+        computed."""
         try:
             return _records(self.core.advance(elapsed, budget_seconds))
         except (InvalidInputError, IntegrationError) as e:
             raise _refused(e, None) from None
 
     def take_pending_steps(self, budget_seconds: float = TICK_BUDGET) -> np.ndarray | None:
-        """Takes the waiting steps of ``step`` commands within ``budget_seconds``; the record reached."""
+        """Takes the waiting steps of ``step`` commands within ``budget_seconds``; the record reached.
+        :class:`CommandError` keyed ``integration_stopped`` when the integration stops (none left waiting,
+        paused)."""
         try:
             return _records(self.core.take_pending_steps(budget_seconds))
         except (InvalidInputError, IntegrationError) as e:

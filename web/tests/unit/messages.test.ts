@@ -90,11 +90,11 @@ describe('HTTP error answers', () => {
     const pole = { detail: 'x', key: 'near_pole', values: { t: '0.5' } };
     const length = { detail: 'x', key: 'invalid_parameter', values: { name: 'length', value: '-1', allowed: 'a number in [1e-6, 1e4] m' } };
     setLanguage('de');
-    expect(httpProblem(diverged, 'HTTP 422')).toBe('die Integration ist bei t = 20 s mit dem Verfahren rk4 divergiert (dt = 10 s): dt verkleinern oder ein adaptives (dop853) oder strukturerhaltendes (rattle) Verfahren wählen');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('die Integration ist nach t = 20 s mit dem Verfahren rk4 divergiert (dt = 10 s): dt verkleinern oder ein adaptives (dop853) oder strukturerhaltendes (rattle) Verfahren wählen');
     expect(httpProblem(pole, 'HTTP 422')).toContain('bei t = 0.5 s einen Pol');
     expect(httpProblem(length, 'HTTP 422')).toMatch(/^Länge.* = -1 ist nicht erlaubt/);
     setLanguage('fr');
-    expect(httpProblem(diverged, 'HTTP 422')).toContain('à t = 20 s avec la méthode rk4');
+    expect(httpProblem(diverged, 'HTTP 422')).toContain('après t = 20 s avec la méthode rk4');
     expect(httpProblem({ detail: 'x', key: 'off_sphere', values: { what: '(|x| - l)/l', value: '-0.2929', tolerance: '1e-9' } }, 'HTTP 422')).toContain('pas sur la sphère');
     expect(httpProblem({ detail: 'x', key: 'step_too_small', values: { t: '3', h: '1e-15' } }, 'HTTP 422')).toContain('trop petit à t = 3 s');
     const fault = { detail: 'x', key: 'internal_error', values: { detail: "KeyError: 'q'" } };
@@ -102,12 +102,47 @@ describe('HTTP error answers', () => {
     setLanguage('de');
     expect(httpProblem(fault, 'HTTP 500')).toMatch(/^interner Fehler des Servers .*bitte melden\); Details \(englisch\): KeyError: 'q'$/);
     const stopped = { type: 'error' as const, message: 'x', key: 'integration_stopped', values: { detail: 'the integration diverged…', why: 'diverged', t: '2.5', method: 'rk4', dt: '0.05' } };
-    expect(serverWords(stopped)).toBe('die Rechnung ist stehen geblieben (die Integration ist bei t = 2.5 s mit dem Verfahren rk4 divergiert (dt = 0.05 s): dt verkleinern oder ein adaptives (dop853) oder strukturerhaltendes (rattle) Verfahren wählen); angehalten');
+    expect(serverWords(stopped)).toBe('die Rechnung ist stehen geblieben (die Integration ist nach t = 2.5 s mit dem Verfahren rk4 divergiert (dt = 0.05 s): dt verkleinern oder ein adaptives (dop853) oder strukturerhaltendes (rattle) Verfahren wählen); angehalten');
     setLanguage('fr');
     expect(serverWords({ ...stopped, values: { detail: 'step size underflow…', why: 'step_too_small', t: '3', h: '1e-15' } })).toContain('(le pas est devenu trop petit à t = 3 s');
     expect(serverWords({ ...stopped, values: { detail: 'English words', why: 'unknown_kind' } })).toBe('le calcul s’est arrêté (English words) ; en pause');
     setLanguage('en');
-    expect(httpProblem(diverged, 'HTTP 422')).toBe('the integration diverged at t = 20 s with method rk4 (dt = 10 s): reduce dt, or choose an adaptive (dop853) or structure-preserving (rattle) method');
+    expect(httpProblem(diverged, 'HTTP 422')).toBe('the integration diverged after t = 20 s with method rk4 (dt = 10 s): reduce dt, or choose an adaptive (dop853) or structure-preserving (rattle) method');
+  });
+});
+
+describe('advice and rarer refusals in every language', () => {
+  it('a divergence gives the advice for the method that diverged: a diverged rattle is not told to use rattle', () => {
+    const stopped = (why: string, method: string) => ({ type: 'error' as const, message: 'x', key: 'integration_stopped', values: { detail: 'English', why, t: '1', method, dt: '0.1' } });
+    const words = (lang: 'en' | 'de' | 'fr') => {
+      setLanguage(lang);
+      return [serverWords(stopped('diverged_rattle', 'rattle')), serverWords(stopped('diverged_dop853', 'dop853')), serverWords(stopped('diverged_dt', 'string'))];
+    };
+    const [enRattle, enDop, enString] = words('en');
+    expect(enRattle).toBe('the computation stopped (the integration diverged after t = 1 s with method rattle (dt = 0.1 s): reduce dt (the step must resolve the fastest motion, dt·ω ≪ 1)); paused');
+    expect(enDop).toContain(': lower rtol and atol, or choose the structure-preserving rattle)');
+    expect(enString).toContain('(dt = 0.1 s): reduce dt)');
+    const [deRattle, deDop, deString] = words('de');
+    expect(deRattle).toBe('die Rechnung ist stehen geblieben (die Integration ist nach t = 1 s mit dem Verfahren rattle divergiert (dt = 0.1 s): dt verkleinern (der Schritt muss die schnellste Bewegung auflösen, dt·ω ≪ 1)); angehalten');
+    expect(deDop).toContain('rtol und atol verkleinern');
+    expect(deString).toContain('(dt = 0.1 s): dt verkleinern)');
+    const [frRattle, frDop] = words('fr');
+    expect(frRattle).toContain('réduire dt (le pas doit résoudre le mouvement le plus rapide, dt·ω ≪ 1)');
+    expect(frDop).toContain('réduire rtol et atol');
+    for (const w of [deRattle, frRattle]) expect(w).not.toMatch(/\(rattle\)/);
+    setLanguage('en');
+  });
+
+  it('an unknown model or parameter, an offline model and too many waiting steps in de and fr', () => {
+    const n = (key: string, values: Record<string, string>) => ({ message: 'English', key, values });
+    setLanguage('de');
+    expect(serverWords(n('unknown_model', { model: 'sprung', available: 'ideal, damped' }))).toBe('unbekanntes Modell sprung; verfügbar: ideal, damped');
+    expect(serverWords(n('still_stepping', { waiting: '1000000', most: '1000000' }))).toBe('es wird noch gerechnet: 1000000 Schritte warten (höchstens 1000000); auf das Bild warten oder pausieren');
+    expect(serverWords(n('no_parameters', { model: 'ideal', name: 'damping' }))).toMatch(/hat keinen Parameter .*; es hat keine außer Länge, Masse, g$/);
+    setLanguage('fr');
+    expect(serverWords(n('unknown_parameter', { model: 'damped', name: 'latitude', available: 'damping, amplitude' }))).toMatch(/n’a pas de paramètre .* ; ses paramètres : damping, amplitude$/);
+    expect(serverWords(n('not_lab_model', { model: 'sampled_pivot', available: 'ideal' }))).toMatch(/ne tourne pas dans le labo \(utiliser pendulab run\) ; les modèles du labo : ideal$/);
+    setLanguage('en');
   });
 });
 

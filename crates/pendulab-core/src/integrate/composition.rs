@@ -85,7 +85,8 @@ impl FixedStep for Composition {
         let mut tau = t;
         for &w in &self.weights {
             if !self.rattle.advance(model, tau, s, w * h) {
-                return Err(Error::Diverged { t: tau, method: "rattle composition", dt: h });
+                // the step's start: the last state computed (tau is inside the step)
+                return Err(Error::Diverged { t, method: "rattle composition", dt: h });
             }
             tau += w * h;
         }

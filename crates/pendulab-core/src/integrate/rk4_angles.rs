@@ -54,8 +54,10 @@ pub fn to_angles(s: &State, length: f64) -> [f64; 4] {
     [theta, phi, s.v.dot(e_theta) / length, s.v.dot(e_phi) / (length * st)]
 }
 
-/// Refuses a stage at time `t` \[s\] of a step of `h` \[s\]: a non-finite angle or rate is a divergence
-/// ([`Error::Diverged`]), sin θ below [`POLE_LIMIT`] a pole ([`Error::PoleSingularity`]).
+/// Refuses a stage (or the end) of the step of `h` \[s\] from time `t` \[s\]: a non-finite angle or rate
+/// is a divergence ([`Error::Diverged`]), sin θ below [`POLE_LIMIT`] a pole ([`Error::PoleSingularity`]).
+/// Both name the step's start `t`, the last state computed, where the run stands (not the stage's time:
+/// t + h came out as 0.15000000000000002 s, and a paused lab run then named two times).
 fn guard(t: f64, y: &[f64; 4], h: f64) -> Result<()> {
     if !y.iter().all(|c| c.is_finite()) {
         return Err(diverged(t, h));
@@ -67,8 +69,8 @@ fn guard(t: f64, y: &[f64; 4], h: f64) -> Result<()> {
     Ok(())
 }
 
-/// The divergence of a step of `h` \[s\] at time `t` \[s\]: the angles this method computed (never the
-/// user's) became non-finite or gave a speed beyond the bounds of a state.
+/// The divergence of the step of `h` \[s\] from time `t` \[s\]: the angles this method computed (never
+/// the user's) became non-finite or gave a speed beyond the bounds of a state.
 fn diverged(t: f64, h: f64) -> Error {
     Error::Diverged { t, method: "rk4_angles", dt: h }
 }
@@ -78,7 +80,7 @@ impl Rk4Angles {
     pub fn step_angles(model: &IdealPendulum, t: f64, y: [f64; 4], h: f64) -> Result<[f64; 4]> {
         let dy = Self::increment(model, t, y, h)?;
         let y1 = std::array::from_fn(|i| y[i] + dy[i]);
-        guard(t + h, &y1, h)?;
+        guard(t, &y1, h)?;
         Ok(y1)
     }
 
@@ -98,13 +100,13 @@ impl Rk4Angles {
         guard(t, &y, h)?;
         let k1 = rhs(t, y);
         let y2 = add(&y, &k1, 0.5 * h);
-        guard(t + 0.5 * h, &y2, h)?;
+        guard(t, &y2, h)?;
         let k2 = rhs(t + 0.5 * h, y2);
         let y3 = add(&y, &k2, 0.5 * h);
-        guard(t + 0.5 * h, &y3, h)?;
+        guard(t, &y3, h)?;
         let k3 = rhs(t + 0.5 * h, y3);
         let y4 = add(&y, &k3, h);
-        guard(t + h, &y4, h)?;
+        guard(t, &y4, h)?;
         let k4 = rhs(t + h, y4);
         Ok(std::array::from_fn(|i| h / 6.0 * (k1[i] + 2.0 * (k2[i] + k3[i]) + k4[i])))
     }
@@ -159,11 +161,11 @@ impl FixedStep for Rk4Angles {
             y1[1] += TAU;
             comp[1] -= TAU_LO;
         }
-        guard(t + h, &y1, h)?;
+        guard(t, &y1, h)?;
         let [theta, phi, theta_dot, phi_dot] = y1;
         // finite angles whose speed l·|(θ̇, φ̇ sin θ)| passes the bounds of a state: diverged, not bad input
-        *s = State::from_angles(ideal.params(), theta, phi, theta_dot, phi_dot)
-            .map_err(|_| diverged(t + h, h))?;
+        *s =
+            State::from_angles(ideal.params(), theta, phi, theta_dot, phi_dot).map_err(|_| diverged(t, h))?;
         (self.y, self.comp, self.last) = (y1, comp, Some(*s));
         Ok(())
     }

@@ -56,6 +56,26 @@ pub struct LivePendulum {
     pub own: Vec<(&'static str, f64)>,
 }
 
+/// The refusal of a parameter `key` that `model` does not have (`own`: the parameters it has besides
+/// length, mass, g), keyed `unknown_parameter` (`no_parameters` when it has none of its own).
+fn no_parameter(model: &'static str, key: &str, own: &[&str]) -> Error {
+    let name = if model == CRANE { "the crane".to_string() } else { format!("the '{model}' model") };
+    let mut values = vec![("model", model.to_string()), ("name", key.to_string())];
+    if own.is_empty() {
+        return Error::RefusedKeyed {
+            words: format!("{name} has no parameter '{key}'; it has none besides length, mass, g"),
+            key: "no_parameters",
+            values,
+        };
+    }
+    values.push(("available", own.join(", ")));
+    Error::RefusedKeyed {
+        words: format!("{name} has no parameter '{key}'; its parameters: {}", own.join(", ")),
+        key: "unknown_parameter",
+        values,
+    }
+}
+
 impl LivePendulum {
     /// Model `name` with l \[m\], m \[kg\], g [m/s²] and own parameters by name (defaults for the rest);
     /// errors name an unknown model, an unknown parameter or a value outside the registry's limits.
@@ -65,26 +85,22 @@ impl LivePendulum {
         }
         let ms = spec(name)?;
         if !live_models().contains(&ms.name) {
-            return Err(Error::Refused(format!(
-                "model {:?} does not run in the lab (use pendulab run); the lab's models: {}",
-                ms.name,
-                live_models().join(", ")
-            )));
+            let available = live_models().join(", ");
+            return Err(Error::RefusedKeyed {
+                words: format!(
+                    "model {:?} does not run in the lab (use pendulab run); the lab's models: {available}",
+                    ms.name
+                ),
+                key: "not_lab_model",
+                values: vec![("model", ms.name.to_string()), ("available", available)],
+            });
         }
         let params = Params::new(length, mass, g)?;
         let mut own: Vec<(&'static str, f64)> = ms.params.iter().map(|p| (p.name, p.default)).collect();
         for (key, value) in given {
             let Some(i) = ms.params.iter().position(|p| p.name == key) else {
                 let own: Vec<&str> = ms.params.iter().map(|p| p.name).collect();
-                let has = if own.is_empty() {
-                    "it has none besides length, mass, g".to_string()
-                } else {
-                    format!("its parameters: {}", own.join(", "))
-                };
-                return Err(Error::Refused(format!(
-                    "the '{}' model has no parameter '{key}'; {has}",
-                    ms.name
-                )));
+                return Err(no_parameter(ms.name, key, &own));
             };
             own[i].1 = check_limits(&ms.params[i], *value)?;
         }
@@ -100,10 +116,7 @@ impl LivePendulum {
         for (key, value) in given {
             let Some(i) = CRANE_PARAMS.iter().position(|p| p.name == key) else {
                 let names: Vec<&str> = CRANE_PARAMS.iter().map(|p| p.name).collect();
-                return Err(Error::Refused(format!(
-                    "the crane has no parameter '{key}'; its parameters: {}",
-                    names.join(", ")
-                )));
+                return Err(no_parameter(CRANE, key, &names));
             };
             own[i].1 = check_limits(&CRANE_PARAMS[i], *value)?;
         }

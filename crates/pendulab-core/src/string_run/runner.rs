@@ -27,12 +27,16 @@ struct Recorder {
     /// Samples kept since the start (including those already taken).
     kept: u64,
     max_samples: u64,
+    /// The taut phases' step \[s\] (named by a divergence).
+    dt: f64,
+    /// The time of the last sample kept \[s\] (the last finite state: named by a divergence).
+    last_t: f64,
 }
 
 impl Recorder {
     fn push(&mut self, t: f64, s: State, taut: bool) -> Result<()> {
         if !s.is_finite() {
-            return Err(Error::Diverged { t, method: "string", dt: 0.0 });
+            return Err(Error::Diverged { t: self.last_t, method: "string", dt: self.dt });
         }
         if self.t.last() == Some(&t) {
             // an event on a grid point: the event's state (after it) replaces the grid sample
@@ -53,6 +57,7 @@ impl Recorder {
         self.states.push(s);
         self.taut.push(taut);
         self.kept += 1;
+        self.last_t = t;
         Ok(())
     }
 
@@ -92,7 +97,7 @@ impl StringRunner {
             t_end,
             save,
             next_time: 0,
-            rec: Recorder { max_samples, ..Recorder::default() },
+            rec: Recorder { max_samples, dt: stepper.dt, last_t: t0, ..Recorder::default() },
             done: false,
             stepper,
         };
@@ -239,5 +244,27 @@ impl StringPendulum {
         let mut runner = StringRunner::new(stepper, t_end, SaveAt::Every(save_every), max_saved_bytes)?;
         while !runner.advance(u64::MAX)? {}
         Ok(runner.take())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A sample that is not finite is a divergence naming the last finite sample's time and the taut
+    /// phases' step (it named the bad sample's time and dt = 0).
+    #[test]
+    fn a_non_finite_sample_names_the_last_finite_time_and_the_step() {
+        let mut rec = Recorder { max_samples: 10, dt: 0.01, last_t: 0.0, ..Recorder::default() };
+        let ok = State { x: glam::DVec3::new(0.0, 0.0, -1.0), v: glam::DVec3::ZERO };
+        rec.push(0.0, ok, true).unwrap();
+        rec.push(0.01, ok, true).unwrap();
+        let bad = State { x: glam::DVec3::new(f64::NAN, 0.0, -1.0), v: glam::DVec3::ZERO };
+        let e = rec.push(0.02, bad, true).unwrap_err();
+        assert_eq!(e, Error::Diverged { t: 0.01, method: "string", dt: 0.01 });
+        assert!(e
+            .to_string()
+            .starts_with("the integration diverged after t = 0.01 s with method 'string' (dt = 0.01 s)"));
+        assert!(e.to_string().ends_with("; reduce dt"), "{e}");
     }
 }

@@ -53,9 +53,7 @@ impl LiveSession {
     pub fn apply(&mut self, cmd: Command) -> Result<Option<Record>> {
         self.apply_inner(cmd).map_err(|e| match e {
             Error::Diverged { .. } | Error::StepSizeUnderflow { .. } | Error::PoleSingularity { .. } => {
-                self.paused = true;
-                self.stop = Some(e.clone());
-                Error::Refused(format!("integration stopped: {e}; paused"))
+                self.stopped(e)
             }
             other => other,
         })
@@ -125,11 +123,18 @@ impl LiveSession {
             }
             Command::Step(n) => {
                 if self.pending_steps + n > MAX_PENDING_STEPS {
-                    return Err(Error::Refused(format!(
-                        "still stepping: {} steps are waiting to be taken (at most {MAX_PENDING_STEPS}); wait \
-                         for the frame, or pause",
-                        self.pending_steps
-                    )));
+                    return Err(Error::RefusedKeyed {
+                        words: format!(
+                            "still stepping: {} steps are waiting to be taken (at most {MAX_PENDING_STEPS}); \
+                             wait for the frame, or pause",
+                            self.pending_steps
+                        ),
+                        key: "still_stepping",
+                        values: vec![
+                            ("waiting", self.pending_steps.to_string()),
+                            ("most", MAX_PENDING_STEPS.to_string()),
+                        ],
+                    });
                 }
                 self.paused = true;
                 self.pending_steps += n;

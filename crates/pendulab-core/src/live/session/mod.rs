@@ -12,7 +12,7 @@ use super::budget::{Budget, Slicer};
 use super::error::{LiveError, Reference};
 use super::frame::{Record, FRAME_FIELDS};
 use super::pendulum::{LivePendulum, LiveStepper};
-use crate::error::{Error, Result, Shown};
+use crate::error::{Error, Result};
 use crate::integrate::Method;
 use crate::state::State;
 use crate::stepper::SolveOptions;
@@ -73,7 +73,6 @@ pub struct LiveSession {
     /// Estimate the ideal pendulum's error from the exact solution.
     pub exact_error: bool,
     clock: f64,
-    stop: Option<Error>,
     start: State,
     start_length: f64,
     slicer: Slicer,
@@ -112,7 +111,6 @@ impl LiveSession {
             commands: 0,
             exact_error: true,
             clock: setup.t0,
-            stop: None,
             start: setup.state,
             slicer: Slicer::new(),
             events: Vec::new(),
@@ -199,8 +197,18 @@ impl LiveSession {
         self.stepper.record()
     }
 
+    /// The integration cannot go on (`cause`: it diverged, came within reach of a pole, …): pauses at the
+    /// last state computed, where `cause`'s time is, and returns [`Error::Stopped`] (keyed
+    /// `integration_stopped`, with the cause's key as `why`) — the one error a caller of
+    /// [`LiveSession::advance`], [`LiveSession::take_pending_steps`] or [`LiveSession::apply`] gets, and
+    /// nothing of it is left behind for a later error.
+    pub(super) fn stopped(&mut self, cause: Error) -> Error {
+        self.paused = true;
+        Error::Stopped { cause: Box::new(cause) }
+    }
+
     /// Takes the waiting steps of `step` commands within `budget`; the record reached (None when none
-    /// were waiting).
+    /// were waiting). On [`Error::Stopped`] no steps are left waiting and the session is paused.
     pub fn take_pending_steps(&mut self, budget: &Budget<'_>) -> Result<Option<Record>> {
         if self.pending_steps == 0 {
             return Ok(None);
@@ -210,12 +218,7 @@ impl LiveSession {
             Ok(n) => self.pending_steps -= n.min(self.pending_steps),
             Err(e) => {
                 self.pending_steps = 0;
-                self.paused = true;
-                self.stop = Some(e.clone());
-                return Err(Error::Refused(format!(
-                    "integration stopped at t = {} s: {e}; paused",
-                    Shown(self.stepper.t())
-                )));
+                return Err(self.stopped(e));
             }
         }
         self.clock = self.stepper.t();
@@ -223,7 +226,8 @@ impl LiveSession {
     }
 
     /// Advances by `elapsed` wall-clock seconds × time_scale within `budget`; the records reached. Out
-    /// of budget it stops where it got to and sets `lagging`.
+    /// of budget it stops where it got to and sets `lagging`. On [`Error::Stopped`] the session is paused
+    /// at the last state computed (the records of the slices before are not returned).
     pub fn advance(&mut self, elapsed: f64, budget: &Budget<'_>) -> Result<Vec<Record>> {
         if self.paused {
             return Ok(Vec::new());
@@ -268,12 +272,7 @@ impl LiveSession {
             Ok(())
         })();
         if let Err(e) = result {
-            self.paused = true;
-            self.stop = Some(e.clone());
-            return Err(Error::Refused(format!(
-                "integration stopped at t = {} s: {e}; paused",
-                Shown(self.stepper.t())
-            )));
+            return Err(self.stopped(e));
         }
         self.lagging = !done;
         if !done {

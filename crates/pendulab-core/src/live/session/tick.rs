@@ -137,31 +137,19 @@ impl LiveSession {
         events.into_iter().skip(skipped).map(|(e, epoch)| Out::Event(e, epoch, skipped)).collect()
     }
 
-    /// The notice of an error of a command, a step or the advance: keyed `integration_stopped` (with
-    /// the integrator's words as `detail`) when the integration stopped. When the integrator's error
-    /// is of a common kind ([`Error::key`]), `why` names its key and its values are beside `detail`
-    /// (flat: a page words the detail in its language too). A refused command of a common kind (a
-    /// parameter out of range, a state off the sphere or not finite) is keyed by its kind, the rest
-    /// plain.
+    /// The notice of an error of a command, a step or the advance, keyed by its kind when it is of a
+    /// common one ([`Error::key`]: a parameter out of range, a state off the sphere, an unknown model or
+    /// parameter, …), else plain. A stopped integration ([`Error::Stopped`]) is keyed
+    /// `integration_stopped`, with the integrator's words as `detail`, and when its cause is of a common
+    /// kind, `why` names the cause's key and the cause's values are beside `detail` (flat: a page words
+    /// the detail in its language too).
     fn error_out(&mut self, e: Error, command: Option<&'static str>) -> Out {
-        match self.stop.take() {
-            Some(stop) => {
-                let mut values = json!({ "detail": stop.to_string() });
-                if let Some((why, more)) = stop.key() {
-                    values["why"] = json!(why);
-                    for (name, value) in more {
-                        values[name] = json!(value);
-                    }
-                }
-                Out::Keyed(e.to_string(), command, "integration_stopped", values)
+        match e.key() {
+            Some((key, values)) => {
+                let values = values.into_iter().map(|(k, v)| (k.to_string(), json!(v))).collect();
+                Out::Keyed(e.to_string(), command, key, serde_json::Value::Object(values))
             }
-            None => match e.key() {
-                Some((key, values)) => {
-                    let values = values.into_iter().map(|(k, v)| (k.to_string(), json!(v))).collect();
-                    Out::Keyed(e.to_string(), command, key, serde_json::Value::Object(values))
-                }
-                None => Out::Error(e.to_string(), command),
-            },
+            None => Out::Error(e.to_string(), command),
         }
     }
 
@@ -254,15 +242,15 @@ mod tests {
         let state = p.state_from_angles(1.0, 0.0, 0.0, 2.0).unwrap();
         let mut s = LiveSession::new(Setup::new(p, state, Method::Rattle, 1e-3)).unwrap();
         let diverged = Error::Diverged { t: 2.5, method: "rk4", dt: 0.05 };
-        s.stop = Some(diverged.clone());
-        let Out::Keyed(_, None, "integration_stopped", values) =
-            s.error_out(Error::Refused("x".into()), None)
-        else {
+        let stopped = s.stopped(diverged.clone());
+        assert!(s.paused);
+        let Out::Keyed(message, None, "integration_stopped", values) = s.error_out(stopped, None) else {
             panic!("not keyed")
         };
+        assert_eq!(message, format!("{diverged}; paused"));
         let expected = json!({ "detail": diverged.to_string(), "why": "diverged", "t": "2.5", "method": "rk4", "dt": "0.05" });
         assert_eq!(values, expected);
-        assert!(matches!(s.error_out(Error::Refused("x".into()), None), Out::Error(..)), "once");
+        assert!(matches!(s.error_out(Error::Refused("x".into()), None), Out::Error(..)), "plain");
     }
 
     /// A command the core refuses for a common reason (a state off the sphere, a parameter out of its
@@ -288,6 +276,10 @@ mod tests {
         };
         assert_eq!((&values["name"], &values["value"]), (&json!("damping"), &json!("-1")));
         let e = s.apply(Command::SetModel { model: "sprung".into(), params: vec![] }).unwrap_err();
-        assert!(matches!(s.error_out(e, Some("set_model")), Out::Error(m, _) if m.contains("unknown model")));
+        let Out::Keyed(message, _, "unknown_model", values) = s.error_out(e, Some("set_model")) else {
+            panic!("not keyed")
+        };
+        assert!(message.starts_with("unknown model \"sprung\""), "{message}");
+        assert_eq!(values["model"], json!("sprung"));
     }
 }

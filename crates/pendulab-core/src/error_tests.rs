@@ -1,0 +1,101 @@
+//! Unit tests of `error`: numbers and times in messages, divergences and their message keys.
+
+use super::*;
+
+#[test]
+fn numbers_in_messages_are_written_as_a_user_writes_them() {
+    let shown = |x: f64| Shown(x).to_string();
+    assert_eq!(shown(-1.0), "-1");
+    assert_eq!(shown(0.01), "0.01");
+    assert_eq!(shown(1.7453292519943295), "1.7453292519943295");
+    assert_eq!(shown(1e-4), "0.0001");
+    assert_eq!(shown(1e15), "1e15");
+    assert_eq!(shown(1e9), "1e9");
+    assert_eq!(shown(123456789.0), "123456789");
+    assert_eq!(shown(999999.0), "999999");
+    assert_eq!(shown(1e-7), "1e-7");
+    assert_eq!(shown(-2.5e20), "-2.5e20");
+    assert_eq!(shown(1e-300), "1e-300");
+    assert_eq!((shown(0.0), shown(-0.0)), ("0".into(), "-0".into()));
+    assert_eq!(
+        (shown(f64::NAN), shown(f64::INFINITY), shown(f64::NEG_INFINITY)),
+        ("nan".into(), "inf".into(), "-inf".into())
+    );
+    for x in [0.1 + 0.2, -1e-5, 123456.789, 6.02214076e23, f64::MIN_POSITIVE, f64::MAX] {
+        assert_eq!(shown(x).parse::<f64>().unwrap().to_bits(), x.to_bits(), "{x:e} reads back");
+    }
+    let e = require_non_negative("damping", -1.0, "a finite number >= 0");
+    assert_eq!(e.unwrap_err().to_string(), "invalid damping = -1: a finite number >= 0");
+    let d = Error::Diverged { t: 20.0, method: "rk4", dt: 0.01 };
+    assert!(
+        d.to_string().starts_with("the integration diverged after t = 20 s with method 'rk4' (dt = 0.01 s)"),
+        "{d}"
+    );
+    assert!(d
+        .to_string()
+        .ends_with("reduce dt, or use an adaptive ('dop853') or structure-preserving ('rattle') method"));
+    assert_eq!(d.key().unwrap().1[2], ("dt", "0.01".to_string()));
+}
+
+/// A time in a message has 12 significant digits: no round-off noise of t + h (0.15000000000000002),
+/// but every digit of a time off the step's grid that 12 digits hold.
+#[test]
+fn times_in_messages_have_twelve_significant_digits() {
+    let time = |x: f64| Time(x).to_string();
+    assert_eq!(time(0.1 + 0.05), "0.15");
+    assert_eq!(time(0.1 + 0.2), "0.3");
+    assert_eq!(time(1000.0000001), "1000.0000001");
+    assert_eq!(time(123456.7890123456), "123456.789012");
+    assert_eq!(
+        (time(20.0), time(0.0), time(1e-7), time(2.5e20)),
+        ("20".into(), "0".into(), "1e-7".into(), "2.5e20".into())
+    );
+    assert_eq!((time(f64::NAN), time(f64::INFINITY)), ("nan".into(), "inf".into()));
+    let d = Error::Diverged { t: 0.1 + 0.05, method: "rk4_angles", dt: 0.05 };
+    assert!(d.to_string().starts_with("the integration diverged after t = 0.15 s "), "{d}");
+    let p = Error::PoleSingularity { t: 0.1 + 0.2, theta: 1e-7, sin_theta: 1e-7, limit: 1e-6 };
+    assert!(p.to_string().contains("continue at t = 0.3 s:"), "{p}");
+}
+
+/// The advice of a divergence is part of its message key, so that every language gives the advice the
+/// English words give for the method that diverged (rattle's own divergence is not told to use rattle).
+#[test]
+fn a_divergence_is_keyed_by_its_advice() {
+    for (method, key, advice) in [
+        ("rk4", "diverged", "or use an adaptive ('dop853') or structure-preserving ('rattle') method"),
+        ("rk4_angles", "diverged", "or use an adaptive ('dop853') or structure-preserving ('rattle') method"),
+        ("rkmk4", "diverged", "or use an adaptive ('dop853') or structure-preserving ('rattle') method"),
+        ("rattle", "diverged_rattle", "reduce dt (the step must resolve the fastest motion, dt·ω ≪ 1)"),
+        (
+            "rattle composition",
+            "diverged_rattle",
+            "reduce dt (the step must resolve the fastest motion, dt·ω ≪ 1)",
+        ),
+        ("dop853", "diverged_dop853", "lower rtol and atol, or use the structure-preserving 'rattle'"),
+        (
+            "dop853 (sensitivities)",
+            "diverged_dop853",
+            "lower rtol and atol, or use the structure-preserving 'rattle'",
+        ),
+        ("spring verlet", "diverged_dt", "; reduce dt"),
+        ("string", "diverged_dt", "; reduce dt"),
+    ] {
+        let d = Error::Diverged { t: 1.0, method, dt: 0.01 };
+        assert_eq!(d.key().unwrap().0, key, "{method}");
+        assert!(d.to_string().ends_with(advice), "{d}");
+    }
+}
+
+/// A stopped live run is keyed `integration_stopped`, with the cause's words, its key (`why`) and values.
+#[test]
+fn a_stopped_run_is_keyed_with_its_cause() {
+    let cause = Error::Diverged { t: 0.05, method: "rk4_angles", dt: 0.05 };
+    let e = Error::Stopped { cause: Box::new(cause.clone()) };
+    assert_eq!(e.to_string(), format!("{cause}; paused"));
+    let (key, values) = e.key().unwrap();
+    assert_eq!(key, "integration_stopped");
+    assert_eq!(values[..2], [("detail", cause.to_string()), ("why", "diverged".to_string())]);
+    assert_eq!(values[2..], cause.key().unwrap().1[..]);
+    let plain = Error::Stopped { cause: Box::new(Error::Crane { reason: "slack".into() }) };
+    assert_eq!(plain.key().unwrap().1, vec![("detail", "crane: slack".to_string())]);
+}

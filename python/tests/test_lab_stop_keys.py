@@ -1,0 +1,165 @@
+"""A lab run that stops, and the lab's rarer refusals, reach the page keyed and worded once (docs/web.md,
+"Languages"): a stopped run is one statement naming one time — the integrator's words and the last state
+computed, where the session pauses — keyed ``integration_stopped`` with its cause's key (the advice for the
+method that diverged: ``diverged``, ``diverged_rattle``, …); ``Session.advance()`` and
+``take_pending_steps()`` called from Python raise that keyed error and leave nothing of the stop behind;
+an unknown model or parameter, a model that runs only offline and too many waiting steps are keyed in
+English, German and French. SI units: m, m/s, s, m/s²."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+from typing import Any
+
+import pytest
+from ws_session import LabClient, until
+
+from pendulab.server.app import create_app
+from pendulab.server.notices import message
+from pendulab.server.protocol import CommandError, parse_command
+from pendulab.server.scenarios import resolve_scenario
+from pendulab.server.session import Session
+
+I18N = Path(__file__).resolve().parents[2] / "web" / "src" / "i18n"
+
+OFF_SPHERE = '{"type": "set_state", "x": [0.5, 0, -0.5], "v": [0, 0, 0], "project": false}'
+BLOW_UP = ['{"type": "set_params", "g": 1000}', '{"type": "set_method", "method": "rk4_angles", "dt": 0.05}']
+
+
+def _page_words(lang: str, key: str, values: dict[str, Any]) -> str:
+    """The page's words of message ``key`` in ``lang``, filled as its t() fills them."""
+    table = (I18N / lang / "refusals.ts").read_text(encoding="utf-8")
+    line = re.search(rf"'server\.{key}': (['`\"])(.*)\1,", table)
+    assert line is not None, (lang, key)
+    words = line.group(2).replace("\\'", "'")
+    return re.sub(r"\{(\w+)\}", lambda m: str(values[m.group(1)]), words)
+
+
+def _blowing_up() -> Session:
+    s = Session(resolve_scenario("rosette"))
+    for text in BLOW_UP:
+        s.apply(parse_command(text))
+    return s
+
+
+def _errors(out: list[Any]) -> list[dict[str, Any]]:
+    return [m for m in out if isinstance(m, dict) and m["type"] == "error"]
+
+
+def test_a_stopped_run_names_one_time_where_it_pauses() -> None:
+    # rk4_angles at g = 1000 m/s², dt = 0.05 s: "integration stopped at t = 0.05 s: the integration diverged
+    # at t = 0.1 s …" named the last state and the step's end (0.15000000000000002 s, at other starts)
+    s = _blowing_up()
+    errors: list[dict[str, Any]] = []
+    for _ in range(20):
+        out, _, _ = s.tick([], 0.1)
+        errors += _errors(out)
+        if errors:
+            break
+    [n] = errors
+    assert (n["key"], n["values"]["why"], n["values"]["dt"]) == ("integration_stopped", "diverged", "0.05")
+    assert s.paused
+    times = re.findall(r"\bt = ([^ ]+) s", n["message"])
+    assert times == [n["values"]["t"]], n["message"]  # one time, the state the session pauses at
+    assert float(times[0]) == pytest.approx(s.t, abs=1e-12) and round(s.t / 0.05) == pytest.approx(s.t / 0.05)
+    assert n["message"].startswith("the integration diverged after t = ")
+    assert n["message"].endswith("; paused")
+    assert n["values"]["detail"] + "; paused" == n["message"]
+
+
+def test_session_advance_raises_the_keyed_stop_and_leaves_nothing_behind() -> None:
+    s = _blowing_up()
+    with pytest.raises(CommandError) as e:  # it was an unkeyed "integration stopped at t = …"
+        for _ in range(40):
+            s.advance(0.1)
+    assert (e.value.key, e.value.command, e.value.values["why"]) == ("integration_stopped", None, "diverged")
+    assert e.value.values["method"] == "rk4_angles" and str(e.value).endswith("; paused")
+    assert s.paused
+    # a later refusal of a command is keyed by its own kind, not as the stop left in the core
+    out, _, _ = s.tick([parse_command(OFF_SPHERE)], 0.0)
+    assert [(n["command"], n["key"]) for n in _errors(out)] == [("set_state", "off_sphere")]
+
+
+def test_take_pending_steps_raises_the_keyed_stop_and_leaves_nothing_behind() -> None:
+    s = _blowing_up()
+    s.apply(parse_command('{"type": "step", "n": 100}'))
+    with pytest.raises(CommandError) as e:
+        s.take_pending_steps()
+    assert (e.value.key, e.value.command) == ("integration_stopped", "step")
+    assert e.value.values["why"] == "diverged"
+    assert (s.paused, s.pending_steps) == (True, 0)
+    out, _, _ = s.tick([parse_command(OFF_SPHERE)], 0.0)
+    assert [(n["command"], n["key"]) for n in _errors(out)] == [("set_state", "off_sphere")]
+
+
+@pytest.mark.parametrize(
+    ("method", "key", "advice"),
+    [
+        ("rk4_angles", "diverged", {"de": "adaptives (dop853)", "fr": "adaptative (dop853)"}),
+        ("rattle", "diverged_rattle", {"de": "schnellste Bewegung", "fr": "le plus rapide"}),
+    ],
+)
+def test_each_language_gives_the_advice_for_the_method_that_diverged(
+    method: str, key: str, advice: dict[str, str]
+) -> None:
+    values = {"t": "1", "method": method, "dt": "0.1"}
+    for lang in ("de", "fr"):
+        words = _page_words(lang, key, values)
+        assert advice[lang] in words, words
+        if method.startswith("rattle"):  # a diverged rattle is not told to use rattle
+            assert "(rattle)" not in words and "rattle wählen" not in words, words
+
+
+@pytest.mark.parametrize(
+    ("text", "key", "values", "de"),
+    [
+        (
+            '{"type": "set_model", "model": "sprung"}',
+            "unknown_model",
+            {"model": "sprung"},
+            "unbekanntes Modell sprung; verfügbar: ",
+        ),
+        (
+            '{"type": "set_model", "model": "sampled_pivot"}',
+            "not_lab_model",
+            {"model": "sampled_pivot"},
+            "das Modell sampled_pivot läuft nicht im Labor (pendulab run verwenden)",
+        ),
+        (
+            '{"type": "set_model", "model": "damped", "params": {"latitude": 1}}',
+            "unknown_parameter",
+            {"model": "damped", "name": "latitude"},
+            "das Modell damped hat keinen Parameter latitude; seine Parameter: ",
+        ),
+        (
+            '{"type": "set_params", "params": {"damping": 0.1}}',
+            "no_parameters",
+            {"model": "ideal", "name": "damping"},
+            "das Modell ideal hat keinen Parameter damping; es hat keine außer Länge, Masse, g",
+        ),
+    ],
+)
+def test_the_rarer_refusals_reach_the_page_keyed(
+    text: str, key: str, values: dict[str, str], de: str
+) -> None:
+    with LabClient(create_app("rosette")).websocket_connect("/ws") as ws:
+        ws.send_text(text)
+        n: dict[str, Any] = until(ws, lambda k, v: k == "json" and v["type"] == "error")
+    assert n.get("key") == key, n
+    assert values.items() <= n["values"].items(), n["values"]
+    assert "{" not in message(key, **n["values"])  # every placeholder of the English words filled
+    assert _page_words("de", key, n["values"]).startswith(de)
+    assert "{" not in _page_words("fr", key, n["values"])
+
+
+def test_too_many_waiting_steps_are_keyed() -> None:
+    s = Session(resolve_scenario("rosette"))
+    step = parse_command('{"type": "step", "n": 100000}')
+    for _ in range(10):
+        s.apply(step)
+    with pytest.raises(CommandError) as e:
+        s.apply(step)
+    assert (e.value.key, e.value.values) == ("still_stepping", {"waiting": "1000000", "most": "1000000"})
+    assert str(e.value).startswith("still stepping: 1000000 steps are waiting")
+    assert _page_words("fr", "still_stepping", e.value.values).startswith("calcul en cours : 1000000 pas")
