@@ -63,7 +63,7 @@ pub enum Error {
         Shown(*theta)
     )]
     PoleSingularity {
-        /// Time of the refusal \[s\].
+        /// Time of the refusal \[s\]: the start of the step that came within reach of the pole.
         t: f64,
         /// Polar angle from the downward vertical \[rad\].
         theta: f64,

@@ -4,8 +4,9 @@
 // collected, and no text of the German or French page may be one of the English page's, except the
 // words that are the same in that language (SAME: names, symbols, cognates). So a scenario title, a model
 // description, a region's label or a server message left in English fails here. Then a value the server
-// refuses (a length of −1 m) is explained in German from the server's message key (messages.json), and one
-// the core refuses (a state off the sphere) in German and French from the core's key.
+// refuses (a length of −1 m) is explained in German from the server's message key (messages.json), one
+// the core refuses (a state off the sphere) in German and French from the core's key, and a rarer refusal
+// (an unknown model) in German and French from its key.
 const SAME = {
   de: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Integrator', 'Pause', 'rad', 'ZVD'],
   fr: ['Deutsch', 'English', 'Français', 'Jupiter (24.79 m/s²)', 'Mars (3.71 m/s²)', 'API', 'Esc', 'Tab', 'Pause', 'rad', 'Simple', 'angle θ [°]', 'distance |x| [m]', 'tension T [N]', 'amplitude', 'axes', 'exact', 'tension', 'tension max', 'tension min', 'ZVD'],
@@ -61,6 +62,13 @@ export async function checkWords(page, { check, WAIT }) {
       .waitForFunction((w) => document.getElementById('message').textContent.trim() === w && w, sphere, { timeout: WAIT })
       .then((h) => h.jsonValue(), () => p.evaluate(() => document.getElementById('message').textContent));
     check(core.trim() === sphere, `${lang}: a refusal of the core in the page's language, from its message key: "${core.trim()}"`);
+    // a rarer refusal (an unknown model): keyed too, so worded in the page's language
+    const unknown = { de: 'unbekanntes Modell sprung; verfügbar: ', fr: 'modèle inconnu sprung ; disponibles : ' }[lang];
+    await p.evaluate(() => window.pendulab.send({ type: 'set_model', model: 'sprung' }));
+    const rare = await p
+      .waitForFunction((w) => document.getElementById('message').textContent.trim().startsWith(w) && document.getElementById('message').textContent, unknown, { timeout: WAIT })
+      .then((h) => h.jsonValue(), () => p.evaluate(() => document.getElementById('message').textContent));
+    check(rare.trim().startsWith(unknown), `${lang}: an unknown model in the page's language, from its message key: "${rare.trim()}"`);
     await p.close();
   }
   // the scenarios whose notes and rows differ from the rosette's (issue 28): a damped model (its own parameters,
