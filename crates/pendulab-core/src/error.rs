@@ -141,13 +141,16 @@ pub enum Error {
         available: String,
     },
     /// A parameter the model does not have.
-    #[error("the '{model}' model has no parameter {name:?}; its parameters: length, mass, g, {available}")]
+    #[error(
+        "the '{model}' model has no parameter {name:?}; its parameters: length, mass, g{}{available}",
+        if available.is_empty() { "" } else { ", " }
+    )]
     UnknownParameter {
         /// Model name.
         model: &'static str,
         /// The unknown key.
         name: String,
-        /// The model's own parameters.
+        /// The model's own parameters ("" when it has none).
         available: String,
     },
     /// An unknown arithmetic name (`integrate::rattle_kernel::Arithmetic`).

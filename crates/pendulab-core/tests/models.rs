@@ -204,6 +204,10 @@ fn bad_parameters_are_named() {
     assert!(e("rotating", &[("latitude", 2.0)]).contains("latitude"));
     let unknown = e("damped", &[("dampnig", 0.1)]);
     assert!(unknown.contains("dampnig") && unknown.contains("damping"), "{unknown}");
+    // a model without parameters of its own lists l, m, g alone (no trailing comma)
+    let ideal = e("ideal", &[("damping", 0.1)]);
+    assert!(ideal.ends_with("its parameters: length, mass, g"), "{ideal}");
+    assert!(unknown.contains("its parameters: length, mass, g, damping"), "{unknown}");
     assert!(e("springy", &[]).contains("ideal"));
     let (_, s0) = rosette();
     let angles = Stepper::new(build("damped", &[("damping", 0.1)]), 0.0, s0, &opts(Method::Rk4Angles, 1e-3));
