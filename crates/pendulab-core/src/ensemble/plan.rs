@@ -65,7 +65,9 @@ fn check_starts(starts: &[State], check_from: impl Fn(usize, &[State]) -> Result
     check_from(0, starts)
 }
 
-/// Starts per part of the check (about 10 µs of work each).
+/// Starts per part of the check (about 10 µs of work each; used only with the `parallel` feature,
+/// which the WebAssembly build leaves out).
+#[cfg_attr(not(feature = "parallel"), allow(dead_code))]
 const CHECK_PART: usize = 512;
 
 /// The checked settings of a run: damping c [1/s] (one value or one per trajectory), the sub-steps
