@@ -1,13 +1,16 @@
-"""Shared fixtures: the repository paths, a script of tools/ as a module (:func:`load_tool`), the rosette
+"""Shared fixtures: the repository paths, a script of tools/ as a module (:func:`load_tool`), the lab
+page's words of a server message (:func:`page_words`, from ``web/src/i18n/*/refusals.ts``), the rosette
 start (l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s) and its exact solution."""
 
 from __future__ import annotations
 
 import importlib.util
+import re
 import signal
 import sys
 import types
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -23,6 +26,7 @@ signal.signal(signal.SIGINT, signal.default_int_handler)
 REPO = Path(__file__).resolve().parents[2]
 SCENARIOS = REPO / "examples" / "scenarios"
 TESTDATA = REPO / "testdata"
+I18N = REPO / "web" / "src" / "i18n"
 
 
 def load_tool(name: str) -> types.ModuleType:
@@ -34,6 +38,15 @@ def load_tool(name: str) -> types.ModuleType:
     sys.modules[name] = module
     spec.loader.exec_module(module)
     return module
+
+
+def page_words(lang: str, key: str, values: dict[str, Any]) -> str:
+    """The page's words of message ``key`` in ``lang``, filled as its t() fills them."""
+    table = (I18N / lang / "refusals.ts").read_text(encoding="utf-8")
+    line = re.search(rf"'server\.{key}': (['`\"])(.*)\1,", table)
+    assert line is not None, (lang, key)
+    words = line.group(2).replace("\\'", "'")
+    return re.sub(r"\{(\w+)\}", lambda m: str(values[m.group(1)]), words)
 
 
 @pytest.fixture

@@ -7,11 +7,10 @@ as if the user had given it. SI units: m, m/s, s, m/s²."""
 
 from __future__ import annotations
 
-import re
-from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import page_words as _page_words
 from ws_session import LabClient, until
 
 import pendulab as pl
@@ -21,19 +20,8 @@ from pendulab.server.protocol import CommandError, parse_command
 from pendulab.server.scenarios import resolve_scenario
 from pendulab.server.session import Session
 
-I18N = Path(__file__).resolve().parents[2] / "web" / "src" / "i18n"
-
 OFF_SPHERE = '{"type": "set_state", "x": [0.5, 0, -0.5], "v": [0, 0, 0], "project": false}'
 DAMPING = '{"type": "set_model", "model": "damped", "params": {"damping": -1}}'
-
-
-def _page_words(lang: str, key: str, values: dict[str, Any]) -> str:
-    """The page's words of message ``key`` in ``lang``, filled as its t() fills them."""
-    table = (I18N / lang / "refusals.ts").read_text(encoding="utf-8")
-    line = re.search(rf"'server\.{key}': (['`\"])(.*)\1,", table)
-    assert line is not None, (lang, key)
-    words = line.group(2).replace("\\'", "'")
-    return re.sub(r"\{(\w+)\}", lambda m: str(values[m.group(1)]), words)
 
 
 def _error(text: str) -> dict[str, Any]:

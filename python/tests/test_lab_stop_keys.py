@@ -9,10 +9,10 @@ English, German and French. SI units: m, m/s, s, m/s²."""
 from __future__ import annotations
 
 import re
-from pathlib import Path
 from typing import Any
 
 import pytest
+from conftest import page_words as _page_words
 from ws_session import LabClient, until
 
 from pendulab.server.app import create_app
@@ -21,19 +21,8 @@ from pendulab.server.protocol import CommandError, parse_command
 from pendulab.server.scenarios import resolve_scenario
 from pendulab.server.session import Session
 
-I18N = Path(__file__).resolve().parents[2] / "web" / "src" / "i18n"
-
 OFF_SPHERE = '{"type": "set_state", "x": [0.5, 0, -0.5], "v": [0, 0, 0], "project": false}'
 BLOW_UP = ['{"type": "set_params", "g": 1000}', '{"type": "set_method", "method": "rk4_angles", "dt": 0.05}']
-
-
-def _page_words(lang: str, key: str, values: dict[str, Any]) -> str:
-    """The page's words of message ``key`` in ``lang``, filled as its t() fills them."""
-    table = (I18N / lang / "refusals.ts").read_text(encoding="utf-8")
-    line = re.search(rf"'server\.{key}': (['`\"])(.*)\1,", table)
-    assert line is not None, (lang, key)
-    words = line.group(2).replace("\\'", "'")
-    return re.sub(r"\{(\w+)\}", lambda m: str(values[m.group(1)]), words)
 
 
 def _blowing_up() -> Session:
