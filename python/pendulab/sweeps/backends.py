@@ -4,6 +4,7 @@ and stops cleanly on Ctrl-C (``docs/sweeps.md``)."""
 
 from __future__ import annotations
 
+import asyncio
 import concurrent.futures as cf
 import contextlib
 import logging
@@ -11,7 +12,6 @@ import math
 import os
 import signal
 import threading
-import time
 import uuid
 from collections.abc import Callable, Iterator
 from typing import Any
@@ -90,45 +90,53 @@ class Dask:
         self.name = f"dask ({where}, {nthreads} worker thread{'s' if nthreads > 1 else ''})"
         self.slots = 2 * nthreads
         self.run = uuid.uuid4().hex[:8]
+        self.late: set[asyncio.Future[Any]] = set()
 
     def ask(self, fn: Callable[..., Any], *args: Any, timeout: float | None = None) -> dict[str, Any]:
-        """``fn(*args)`` on every worker of the cluster now (``distributed.Client.run``, one worker a
-        thread, all at once): worker address → what it returned, or the exception it raised (also the
-        one of a worker that cannot unpickle ``fn``). A ``TimeoutError`` naming the first worker (by
-        address) that has not answered within ``timeout`` s (default :data:`WORKER_TIMEOUT`), how many
-        others, and the fix. The thread of a hung worker is left waiting (a daemon: it holds up nothing,
-        and ends when the worker answers or the client closes)."""
+        """``fn(*args)`` on every worker of the cluster now (``distributed.Client.run``, one question a
+        worker, all asked at once on the client's own event loop: no thread per worker, whatever the size
+        of the cluster): worker address → what it returned, or the exception it raised (also the one of a
+        worker that cannot unpickle ``fn``). A ``TimeoutError`` naming the first worker (by address) that
+        has not answered within ``timeout`` s (default :data:`WORKER_TIMEOUT`), how many others, and the
+        fix. The question to a hung worker is left waiting on that loop (it holds up nothing, and ends
+        when the worker answers or the client closes)."""
         wait = WORKER_TIMEOUT if timeout is None else timeout
         if isinstance(wait, bool) or not (isinstance(wait, (int, float)) and 0 < wait < math.inf):
             raise InvalidInputError(
                 f"the Dask workers' timeout must be a finite number of seconds > 0, got {wait!r}"
             )
-        answers: dict[str, Any] = {}
-
-        def one(addr: str) -> None:
-            try:
-                answers.update(self.client.run(fn, *args, workers=[addr], on_error="return"))
-            except Exception as e:  # the scheduler's own error for this worker (e.g. it left)
-                answers[addr] = e
-
-        asking = {
-            addr: threading.Thread(target=one, args=(addr,), name=f"pendulab-ask {addr}", daemon=True)
-            for addr in sorted(self.client.nthreads())
-        }
-        for t in asking.values():
-            t.start()
-        deadline = time.monotonic() + wait
-        for t in asking.values():
-            t.join(max(deadline - time.monotonic(), 0.0))
-        hung = [addr for addr, t in asking.items() if t.is_alive()]
+        workers = sorted(self.client.nthreads())
+        answers: dict[str, Any] = self.client.sync(self._ask_all, workers, fn, args, wait) if workers else {}
+        hung = [addr for addr in workers if addr not in answers]
         if hung:
             raise TimeoutError(
-                f"{name_workers(hung, len(asking))} did not answer within {wait:g} s what it would run "
+                f"{name_workers(hung, len(workers))} did not answer within {wait:g} s what it would run "
                 "(asked before the first chunk): it hangs, its event loop blocked or cut off from the "
                 "scheduler; nothing was computed. Restart that worker or take it out of the cluster, or "
                 "allow it longer (pendulab.sweeps.backends.WORKER_TIMEOUT), then run the sweep again"
             )
-        return dict(answers)
+        return answers
+
+    async def _ask_all(
+        self, workers: list[str], fn: Callable[..., Any], args: tuple[Any, ...], wait: float
+    ) -> dict[str, Any]:
+        """On the client's event loop: the answers of the ``workers`` that answered within ``wait`` s.
+        The questions still open are kept (:attr:`late`) until they end."""
+
+        async def one(addr: str) -> dict[str, Any]:
+            try:
+                question = self.client.run(fn, *args, workers=[addr], on_error="return", asynchronous=True)
+                answer: dict[str, Any] = await question
+                return answer
+            except Exception as e:  # the scheduler's own error for this worker (e.g. it left)
+                return {addr: e}
+
+        asking = [asyncio.ensure_future(one(addr)) for addr in workers]
+        done, late = await asyncio.wait(asking, timeout=wait)
+        for question in late:
+            self.late.add(question)
+            question.add_done_callback(self.late.discard)
+        return {addr: a for question in done for addr, a in question.result().items()}
 
     def submit(self, fn: Callable[..., Any], task: Any) -> Any:
         return self.client.submit(
