@@ -2,10 +2,12 @@
 to the letter). Blocks are taken from the text, nothing is added to them:
 
 - ``python`` blocks: the blocks of one page run in order, in one fresh namespace (names defined earlier
-  on the page stay defined, as for a reader going down the page; nothing else is set up), in a child
-  process whose working folder is a temporary folder with ``examples`` linked to the checkout's (the
-  pages are written for the top of the checkout). A block that is a script (``if __name__ ==
-  "__main__":``) runs as its own file. Matplotlib draws off screen (``MPLBACKEND=Agg``).
+  on the page stay defined, as for a reader going down the page; nothing else is set up), in this
+  process (no second start-up of Python, NumPy and pendulab per page; warnings are printed, as for a
+  reader, not raised) with a temporary folder as the working folder, ``examples`` linked to the
+  checkout's (the pages are written for the top of the checkout). A block that is a script (``if
+  __name__ == "__main__":``) runs as its own file, in a child process. Matplotlib draws off screen
+  (``Agg``).
 - shell blocks (```` ```sh ````, ```` ```console ````, or untagged with a first line that is a command):
   each command runs in bash there, with ``pendulab`` and ``python`` of this environment first on PATH.
   In a transcript (lines ``$ command`` followed by its output) a command whose shown output has
@@ -33,10 +35,10 @@ tools/check_wheel.py (``make test-wheel``), its sweep script by test_readme.py.
 
 from __future__ import annotations
 
-import json
 import os
 import re
 import shlex
+import signal
 import subprocess
 import sys
 import tomllib
@@ -130,19 +132,6 @@ def test_skip_markers_are_few_and_listed() -> None:
 
 # ------------------------------------------------------------------------------------------ python
 
-RUNNER = r"""
-import json, sys, traceback
-blocks = json.load(open(sys.argv[1], encoding="utf-8"))
-ns = {"__name__": "__docs__"}
-for where, code in blocks:
-    try:
-        exec(compile(code, where, "exec"), ns)
-    except BaseException:
-        traceback.print_exc()
-        sys.exit(f"FAILED: the block at {where}")
-    print("ok", where, flush=True)
-"""
-
 
 def _env() -> dict[str, str]:
     env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH",)}
@@ -162,7 +151,7 @@ PY_PAGES = sorted({b.page for b in ALL if kind(b) == "python" and not skipped(b)
 
 
 @pytest.mark.parametrize("page", PY_PAGES)
-def test_python_blocks_run_as_written(page: str, work: Path) -> None:
+def test_python_blocks_run_as_written(page: str, work: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     todo = [b for b in ALL if b.page == page and kind(b) == "python" and not skipped(b)]
     scripts = [b for b in todo if re.search(r"""if __name__ == ["']__main__["']:""", b.text)]
     inline = [b for b in todo if b not in scripts]
@@ -170,8 +159,37 @@ def test_python_blocks_run_as_written(page: str, work: Path) -> None:
         for b in scripts:
             (work / "script.py").write_text(b.text, encoding="utf-8")
             _check([sys.executable, "script.py"], work, b.where)
-    (work / "blocks.json").write_text(json.dumps([(b.where, b.text) for b in inline]), encoding="utf-8")
-    _check([sys.executable, "-c", RUNNER, "blocks.json"], work, page)
+    _exec_in_order(inline, work, monkeypatch)
+
+
+def _exec_in_order(todo: list[Block], work: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The blocks ``todo`` in order in one fresh namespace, in this process, in the folder ``work``; each
+    page within :data:`TIMEOUT` s. A failing block's error names it (``the block at fit.md:8``)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    monkeypatch.chdir(work)
+    ns: dict[str, object] = {"__name__": "__docs__"}
+
+    def too_long(signum: int, frame: object) -> None:
+        raise TimeoutError(f"the python blocks of {todo[0].page} did not finish within {TIMEOUT:g} s")
+
+    before = signal.signal(signal.SIGALRM, too_long)
+    signal.setitimer(signal.ITIMER_REAL, TIMEOUT)
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("default")  # as for a reader: printed, not raised (pytest's "error")
+            for b in todo:
+                try:
+                    exec(compile(b.text, b.where, "exec"), ns)
+                except BaseException as e:
+                    e.add_note(f"FAILED: the block at {b.where}")
+                    raise
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, before)
+        if "matplotlib.pyplot" in sys.modules:  # a figure drawn with pyplot (xarray's .plot())
+            sys.modules["matplotlib.pyplot"].close("all")
 
 
 def _check(cmd: list[str], cwd: Path, where: str) -> subprocess.CompletedProcess[str]:
