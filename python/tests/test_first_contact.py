@@ -9,6 +9,7 @@ import sys
 import tomllib
 from pathlib import Path
 
+import numpy as np
 import pytest
 from conftest import REPO
 from typer.testing import CliRunner
@@ -137,3 +138,15 @@ def test_fitting_names_the_extra_that_brings_scipy(monkeypatch: pytest.MonkeyPat
         result.stderr.strip()
         == "error: pendulab fit needs SciPy: pip install 'pendulab[fit]' (or scipy>=1.11)"
     )
+
+
+def test_pl_fit_without_scipy_names_the_extra(monkeypatch: pytest.MonkeyPatch) -> None:
+    """pl.fit without SciPy raised a bare "No module named 'scipy'" from deep in its search (after
+    reading the data and the noise): now one ImportError at the start names the package and the extra."""
+    t = np.linspace(0.0, 5.0, 200)
+    angle = 0.3 * np.cos(np.sqrt(9.81) * t)
+    monkeypatch.setitem(sys.modules, "scipy", None)  # as if SciPy were not installed
+    with pytest.raises(ImportError) as info:
+        pl.fit(t, planar_angle=angle, fit=["g"])
+    assert str(info.value) == "pl.fit needs SciPy: pip install 'pendulab[fit]' (or scipy>=1.11)"
+    assert info.value.name == "scipy"

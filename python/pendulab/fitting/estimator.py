@@ -58,6 +58,7 @@ from .settings import (
     free_names,
     initial_values,
     is_planar,
+    need_scipy,
     off_origin,
 )
 from .start import signed_start, starting_values
@@ -122,9 +123,13 @@ def fit(
     position it implies. At most ``max_evaluations`` runs of the model per start. Returns a
     :class:`FitResult` whose ``goodness`` says whether the model explains the data (each finding is
     also warned); Ctrl-C returns the best values so far (``converged`` False), and so does reaching
-    ``time_limit`` [s] (the error analysis after it adds a few model runs per unknown). Raises
+    ``time_limit`` [s], which bounds the whole fit from its start: the search and, over a record
+    shorter than a swing, the profile likelihoods of the error analysis (each refit is cut at a model
+    run past the limit; what it leaves unprofiled is reported not determined, naming the limit); the
+    rest of the error analysis adds a few model runs per unknown. Raises
     :class:`pendulab.InvalidInputError` naming bad data or settings, and for data that show no motion
-    above their noise."""
+    above their noise; an ImportError without SciPy (``pip install 'pendulab[fit]'``)."""
+    need_scipy()
     if body is not None:
         pendulum = pendulum_of(body, pendulum)
     pendulum = Pendulum() if pendulum is None else pendulum

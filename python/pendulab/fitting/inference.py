@@ -132,7 +132,7 @@ def conclude(
         blocks=blocks,
     )
     # a record shorter than a swing: the profile likelihood checks the bars of the length and g
-    said += check_short_record(res, search.time_up, not interrupted and search.loss == "linear")
+    said += check_short_record(res, search, not interrupted and search.loss == "linear")
     for text in said:
         warnings.warn(text, UserWarning, stacklevel=3)
     if not converged and not interrupted:

@@ -14,7 +14,8 @@ far off that SciPy calls converged at a poor point (case 20, seed 0: the length'
 nearest inside values (the check); past a refit that did not converge or that the check finds below
 the level the steps go on, and an end that no checked refit closes is open (±inf, not settled:
 :func:`profile_end`), which :meth:`pendulab.FitResult.profile` warns about. :class:`Rise` and
-:func:`profile_end` are shared with short_record.py. Units: the parameter's.
+:func:`profile_end` are shared with short_record.py, whose refits the fit's ``time_limit`` bounds
+(:class:`Rise`'s clock). Units: the parameter's.
 """
 
 from __future__ import annotations
@@ -27,7 +28,7 @@ import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
 from .problem import POSITIVE, Problem, bounds_of, scale_of
-from .search import Search
+from .search import Search, TimeUp
 
 #: Bisection steps of each end's crossing (the interval's end to 2⁻¹⁰ of the bracket).
 BISECTIONS = 10
@@ -88,10 +89,12 @@ class Rise:
     """The profile misfit's rise (χ²_prof(c) − χ²_min) / variance with the parameter ``name`` of the
     FitResult ``res`` held at c, the other unknowns refitted from ``start`` (inf where the model cannot
     be run there); ``period`` [s] sets the refit's scales. A call returns the rise, the refitted values
-    and whether the refit converged (module doc)."""
+    and whether the refit converged (module doc). ``clock``: the fit's :class:`Search`, whose
+    ``time_limit`` then bounds every refit from the fit's start (checked before each round and at each
+    model run: :class:`pendulab.fitting.search.TimeUp` is raised); None: no limit (``FitResult.profile``)."""
 
-    def __init__(self, res: Any, name: str, period: float) -> None:
-        self.res, self.name, self.period = res, name, period
+    def __init__(self, res: Any, name: str, period: float, clock: Search | None = None) -> None:
+        self.res, self.name, self.period, self.clock = res, name, period, clock
         self.problem: Problem = res._problem
         self.others = [n for n in res.names if n != name]
 
@@ -116,11 +119,15 @@ class Rise:
                 sigma,
                 loss="linear",
                 max_evaluations=REFIT_EVALUATIONS,
-                time_limit=None,
+                time_limit=None if self.clock is None else self.clock.time_limit,
                 logged=logged,
             )
+            if self.clock is not None:  # the fit's deadline: a refit is cut at a model run past it
+                search.began = self.clock.began
             u = np.array([held[n] for n in others], dtype=np.float64)
             for _ in range(REFIT_ROUNDS):
+                if search.time_up():
+                    raise TimeUp
                 result = search.run(u)
                 u, before = result.x, rise
                 held = sub.with_free(u)

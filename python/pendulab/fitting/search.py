@@ -225,7 +225,7 @@ class Search:
     ) -> Any:
         """One trust-region search from ``u0`` on ``on`` (default: the whole problem), with at most
         ``evaluations`` residual evaluations besides the Jacobians' (default ``max_evaluations``)."""
-        from scipy.optimize import least_squares  # SciPy is imported on first use (the io/lab extras)
+        from scipy.optimize import least_squares  # SciPy is imported on first use (the `fit` extra)
 
         on = self.problem if on is None else on
 

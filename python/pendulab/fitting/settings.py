@@ -1,11 +1,13 @@
 """The settings of :func:`pendulab.fit` before any search: the search settings checked, the unknowns
 named (``fit=``, the start unless ``state0`` is given, the pivot when positions do not hang from the
 origin, φ₀ and φ̇₀ held for a hinge), every parameter's value before the search, and the refusal of
-data that show no motion above their noise floor (noise.py). Units: SI (docs/fit.md).
+data that show no motion above their noise floor (noise.py); SciPy (the ``fit`` extra) required with a
+clear error. Units: SI (docs/fit.md).
 """
 
 from __future__ import annotations
 
+import importlib.util
 import math
 from collections.abc import Mapping
 from typing import Any
@@ -106,6 +108,14 @@ def free_names(
     if not names:
         raise InvalidInputError("nothing to fit: give fit=[...] or leave state0 unset")
     return names
+
+
+def need_scipy() -> None:
+    """SciPy (``least_squares``, the χ² tails) is the ``fit`` extra, not a base dependency: without it
+    :func:`pendulab.fit` raises an ImportError naming the package and the extra, before any work. Only
+    looked up, not imported here: the search imports it within the fit's time limit, as before."""
+    if importlib.util.find_spec("scipy") is None:
+        raise ImportError("pl.fit needs SciPy: pip install 'pendulab[fit]' (or scipy>=1.11)", name="scipy")
 
 
 def check_settings(pendulum: Any, time_limit: Any, loss: Any, max_evaluations: Any) -> str:

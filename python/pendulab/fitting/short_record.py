@@ -16,15 +16,16 @@ determined (by the curvature, an open profile or the time limit), and where thei
 the bars of the others are linearised (with them free: identify.py) but the valley curves (case 20,
 seed 3: φ̇₀ 4.5 such bars off): every other determined parameter, the start's too, is profiled
 with every unknown free (:func:`_held`): open, not determined; closed, the bar from the profile.
-An end that no checked, converged refit closes is open (profile.py). Records of a period or more pay
-nothing.
+An end that no checked, converged refit closes is open (profile.py). Every refit is bounded by the
+fit's ``time_limit``, counted from the fit's start (checked at each model run): the parameters of a
+profile it cuts short, and those not yet profiled, are not determined, and the finding names the
+limit. Records of a period or more pay nothing.
 Units: each parameter's (SI); times [s].
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Callable
 from statistics import NormalDist
 from typing import Any
 
@@ -33,6 +34,7 @@ import numpy as np
 from .multistart import FLOOR_PERIODS
 from .problem import STATE_NAMES, bounds_of, scale_of
 from .profile import REFIT_EVALUATIONS, REFIT_ROUNDS, Rise, profile_end
+from .search import Search, TimeUp
 
 #: A record spanning fewer small-swing periods 2π√(l/|g|) of the result than this has its bars of
 #: length and g checked by their profile likelihood.
@@ -67,25 +69,29 @@ class _Late(Exception):
 
 
 class _TimedRise(Rise):
-    """profile.py's rise of the misfit, raising :class:`_Late` once ``time_up()``."""
+    """profile.py's rise of the misfit with every refit bounded by the fit's time limit (``clock``: the
+    fit's search), raising :class:`_Late` once it has passed, before a refit or during one."""
 
-    def __init__(self, res: Any, name: str, period: float, time_up: Callable[[], bool]) -> None:
-        super().__init__(res, name, period)
-        self.time_up = time_up
+    def __init__(self, res: Any, name: str, period: float, clock: Search) -> None:
+        super().__init__(res, name, period, clock)
 
     def __call__(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float], bool]:
-        if self.time_up():
+        if self.clock is not None and self.clock.time_up():
             raise _Late
-        return super().__call__(c, start)
+        try:
+            return super().__call__(c, start)
+        except TimeUp:
+            raise _Late from None
 
 
-def check_short_record(res: Any, time_up: Callable[[], bool], checkable: bool = True) -> list[str]:
+def check_short_record(res: Any, clock: Search, checkable: bool = True) -> list[str]:
     """For a :class:`pendulab.FitResult` ``res`` of a record shorter than :data:`SHORT_PERIODS` periods:
     the bars of the length, g and the parameters correlated with them checked by their profile
     likelihood and widened, or the parameters reported not determined (``res`` is changed in place);
-    the findings to warn. ``time_up``: whether the fit's time limit has passed; once it has, or when
-    not ``checkable`` (an interrupted fit, a robust loss), the profile is not computed and the
-    parameters are not determined: their curvature bars cannot be trusted."""
+    the findings to warn. ``clock``: the fit's search, whose ``time_limit`` (from the fit's start)
+    bounds every refit of the profiles; once it has passed, or when not ``checkable`` (an interrupted
+    fit, a robust loss), the profiles not finished are not computed and their parameters are not
+    determined (the finding names the time limit): their curvature bars cannot be trusted."""
     values = {**res.fixed, **res.params}
     length, g = float(values.get("length", math.nan)), float(values.get("g", math.nan))
     if res.model == "spring" or not (length > 0.0 and math.isfinite(length) and math.isfinite(g) and g != 0):
@@ -96,34 +102,33 @@ def check_short_record(res: Any, time_up: Callable[[], bool], checkable: bool = 
     if periods >= SHORT_PERIODS:
         return []
     if not core:  # the curvature left them not determined: the other bars hold them fixed
-        return _held(res, periods, period, time_up, checkable)
+        return _held(res, periods, period, clock, checkable)
     linked = _linked(res, core)
     profiled: dict[str, tuple[float, float]] = {}
     unsettled: list[str] = []
-    unchecked = "the fit stopped before the profile likelihood was checked"
     if not checkable:
-        said = _undetermined(res, core + linked, periods, period, profiled, unchecked)
-        return [said, *_held(res, periods, period, time_up, checkable)]
+        said = _undetermined(res, core + linked, periods, period, profiled, _unchecked(res, clock))
+        return [said, *_held(res, periods, period, clock, checkable)]
     try:
         for name in (core + linked)[:MAX_PROFILES]:
-            profiled[name] = _profile(res, name, period, time_up, unsettled)
+            profiled[name] = _profile(res, name, period, clock, unsettled)
             if not all(map(math.isfinite, profiled[name])):
                 break  # an open profile: the valley is open
     except _Late:
-        said = _undetermined(res, core + linked, periods, period, profiled, unchecked)
-        return [said, *_held(res, periods, period, time_up, checkable)]
+        said = _undetermined(res, core + linked, periods, period, profiled, _unchecked(res, clock, True))
+        return [said, *_held(res, periods, period, clock, checkable)]
     if any(not all(map(math.isfinite, ends)) for ends in profiled.values()):
         said = _undetermined(res, core + linked, periods, period, profiled, _open(unsettled))
-        return [said, *_held(res, periods, period, time_up, checkable)]
+        return [said, *_held(res, periods, period, clock, checkable)]
     widened = _widened(res, core, linked, periods, period, profiled)
-    return widened + _held(res, periods, period, time_up, checkable, done=set(profiled))
+    return widened + _held(res, periods, period, clock, checkable, done=set(profiled))
 
 
 def _held(
     res: Any,
     periods: float,
     period: float,
-    time_up: Callable[[], bool],
+    clock: Search,
     checkable: bool,
     done: set[str] | None = None,
 ) -> list[str]:
@@ -143,12 +148,12 @@ def _held(
     chosen = [n for n in determined if n not in STATE_NAMES] + [n for n in determined if n in STATE_NAMES]
     profiled: dict[str, tuple[float, float]] = {}
     unsettled: list[str] = []
-    why = "the fit stopped before the profile likelihood was checked"
+    why = _unchecked(res, clock)
     try:
         for name in chosen if checkable else []:
-            profiled[name] = _profile(res, name, period, time_up, unsettled)
+            profiled[name] = _profile(res, name, period, clock, unsettled)
     except _Late:
-        pass
+        why = _unchecked(res, clock, True)
     closed = {n: e for n, e in profiled.items() if all(map(math.isfinite, e))}
     unchecked = [n for n in chosen if n not in profiled]
     said = [_undetermined(res, unchecked, periods, period, {}, why)] if unchecked else []
@@ -156,6 +161,19 @@ def _held(
     if open_:
         said.append(_undetermined(res, list(open_), periods, period, open_, _open(unsettled)))
     return said + (_widened(res, [], [], periods, period, closed) if closed else [])
+
+
+def _unchecked(res: Any, clock: Search, late: bool = False) -> str:
+    """Why a profile was not computed or not finished: the fit's time limit (named, with how to raise
+    it; ``late``: a refit stopped for it, maybe a Jacobian's run ahead of it), or the fit stopped
+    before the check (Ctrl-C, or a robust loss)."""
+    limit = clock.time_limit
+    if limit is not None and (late or clock.time_up() or "time limit" in str(res.message)):
+        return (
+            f"the fit's time limit of {limit:g} s ran out before the profile likelihood was checked; "
+            "give pl.fit a larger time_limit, or time_limit=None for none"
+        )
+    return "the fit stopped before the profile likelihood was checked"
 
 
 def _open(unsettled: list[str]) -> str:
@@ -180,16 +198,14 @@ def _linked(res: Any, core: list[str]) -> list[str]:
     return sorted((n for n, r in rho.items() if r >= CORRELATED), key=lambda n: -rho[n])
 
 
-def _profile(
-    res: Any, name: str, period: float, time_up: Callable[[], bool], unsettled: list[str]
-) -> tuple[float, float]:
+def _profile(res: Any, name: str, period: float, clock: Search, unsettled: list[str]) -> tuple[float, float]:
     """The 95 % profile interval of ``name`` [its unit], each end at most DOUBLINGS doublings of the
     curvature's bar out (else ±inf) and BISECTIONS bisections; a bound of the parameter reached
     below the level is returned as ±inf (the data do not bound it there), and so is an end that no
     converged refit closes (profile.py; ``name`` is then added to ``unsettled``)."""
     from scipy import stats
 
-    rise = _TimedRise(res, name, period, time_up)
+    rise = _TimedRise(res, name, period, clock)
 
     values = {**res.fixed, **res.params}
     value, err = values[name], res.stderr[name]

@@ -53,7 +53,7 @@ def ljung_box(x: FloatArray, lags: int) -> tuple[float, float]:
     h = max(1, min(lags, n // 5))
     rho = autocorrelations(x, h)
     q = float(n * (n + 2) * np.sum(rho**2 / (n - np.arange(1, h + 1))))
-    from scipy import stats  # SciPy is imported on first use (the io/lab extras)
+    from scipy import stats  # SciPy is imported on first use (the `fit` extra)
 
     return q, float(stats.chi2.sf(q, h))
 
