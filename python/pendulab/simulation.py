@@ -25,7 +25,7 @@ from .integrators import (
     _method_table,
     check_arithmetic,
     check_settings,
-    method_names,
+    unknown_method,
 )
 from .memory import SAMPLE_BYTES, SAMPLE_COPIES, check_memory, saved_bytes_cap
 from .model import Pendulum, State, check_pendulum_state
@@ -317,7 +317,7 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
             )
     info = _method_table().get(method)
     if info is None:
-        raise InvalidInputError(f"unknown method {method!r}; available: {', '.join(method_names())}")
+        raise InvalidInputError(unknown_method(method))
     dt = run.dt
     if dt is None:
         dt = 0.0 if info["adaptive"] else DEFAULTS["dt"]

@@ -19,6 +19,7 @@ from sweep_records import counting, drop_chunk, manifest, same, sweep_file
 from test_cli import assert_user_error, invoke
 
 import pendulab as pl
+from pendulab.integrators import unknown_method
 from pendulab.sweeps.design import as_design
 from pendulab.sweeps.file import SweepFileError, load_sweep_file
 from pendulab.sweeps.resume import ResumeConflict
@@ -59,12 +60,17 @@ def test_a_sweep_is_simulate_ensemble_of_its_method_bit_for_bit(method: str) -> 
 
 @pytest.mark.parametrize("bad", ["rk4", "RATTLE6", "dop853", "", 6, None])
 def test_a_bad_method_is_refused_naming_it_and_the_allowed_ones(bad: Any) -> None:
-    """Refused before any work, also where nothing integrates (as arithmetic is)."""
+    """Refused before any work, also where nothing integrates (as arithmetic is); a name no integrator
+    has as everywhere (``unknown method 'RATTLE6' (did you mean 'rattle6'?); available: …``)."""
     shown = repr(bad)
     for quantity, kw in ((QS, KW), ("period", {"progress": False})):
         with pytest.raises(pl.InvalidInputError) as e:
             pl.sweep(GRID, quantity, method=bad, **kw)
-        assert f"method = {shown}: sweeps integrate with {ALLOWED}" in str(e.value), str(e.value)
+        if bad in ("RATTLE6", ""):
+            assert str(e.value) == unknown_method(bad)
+            assert ("(did you mean 'rattle6'?)" in str(e.value)) is (bad == "RATTLE6"), str(e.value)
+        else:
+            assert f"method = {shown}: sweeps integrate with {ALLOWED}" in str(e.value), str(e.value)
 
 
 def test_exact_quantities_record_no_method() -> None:

@@ -63,7 +63,7 @@ import numpy as np
 from .._core import ExactSolution as _CoreExact
 from .._core import IntegrationError, InvalidInputError
 from ..error_estimate import ErrorEstimate
-from ..integrators import _method_table
+from ..integrators import _method_table, unknown_method
 from ..model import Pendulum, State
 from ..trajectory import Trajectory
 
@@ -89,7 +89,7 @@ Runner = Callable[..., Trajectory]
 def _order(method: str) -> int:
     info = _method_table().get(method)
     if info is None:
-        raise InvalidInputError(f"unknown method {method!r}")
+        raise InvalidInputError(unknown_method(method))
     return int(info["order"])
 
 

@@ -26,7 +26,7 @@ import numpy as np
 from .. import validate as limits
 from .._core import EnsembleRun, EnsembleSpec, InvalidInputError, RunOptions
 from .._progress import tqdm
-from ..integrators import check_arithmetic
+from ..integrators import check_arithmetic, method_names, unknown_method
 from ..memory import check_memory
 from ..model import FloatArray, Pendulum
 from .adaptive import simulate_adaptive
@@ -152,6 +152,8 @@ def simulate_ensemble(
     """
     if not isinstance(pendulum, Pendulum):
         raise limits.invalid("pendulum", pendulum, "a pendulab.Pendulum")
+    if isinstance(method, str) and method not in method_names():
+        raise InvalidInputError(unknown_method(method))
     if not isinstance(method, str) or (method not in SUBSTEPS and method != "dop853"):
         raise InvalidInputError(
             f"method = {limits.show(method)}: simulate_ensemble runs 'rattle' or its compositions "

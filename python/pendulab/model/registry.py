@@ -10,12 +10,11 @@ Length l [m], mass m [kg] and g [m/s²] come first in every model; the rest are 
 
 from __future__ import annotations
 
-import difflib
 from typing import TYPE_CHECKING
 
 from .._core import InvalidInputError
 from .._core import models as _models
-from ..validate import choice, finite, invalid, show
+from ..validate import choice, did_you_mean, finite, invalid, show
 
 if TYPE_CHECKING:
     from .._core import ModelInfo
@@ -67,8 +66,7 @@ def infer_model(extra: dict[str, float]) -> str:
             owners[q["name"]].append(m["name"])
     for key, value in extra.items():
         if key not in owners:
-            near = difflib.get_close_matches(key, [*owners, "model", "pivot_samples", "force"], n=1)
-            hint = f" (did you mean {near[0]!r}?)" if near else ""
+            hint = did_you_mean(key, [*owners, "model", "pivot_samples", "force"])
             raise invalid(
                 "parameter " + key,
                 value,
@@ -96,11 +94,8 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
         for key, value in extra.items():
             if key not in names:
                 others = [m["name"] for m in _models() if key in {q["name"] for q in m["params"]}]
-                near = difflib.get_close_matches(key, names, n=1)
-                hint = (
-                    f" (did you mean {near[0]!r}?)"
-                    if near
-                    else f" (a parameter of {', '.join(map(repr, others))}: model={others[0]!r}?)"
+                hint = did_you_mean(key, names) or (
+                    f" (a parameter of {', '.join(map(repr, others))}: model={others[0]!r}?)"
                     if others
                     else ""
                 )

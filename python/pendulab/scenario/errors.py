@@ -10,7 +10,6 @@ own parameters, from the core's model registry.
 
 from __future__ import annotations
 
-import difflib
 import re
 import tomllib
 import typing
@@ -20,7 +19,7 @@ from pydantic import BaseModel
 from pydantic_core import ErrorDetails
 
 from .._numbers import shown
-from ..validate import abbreviate
+from ..validate import abbreviate, did_you_mean
 from .schema import (
     SECTIONS,
     ScenarioSpec,
@@ -125,8 +124,8 @@ def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
     if others := _models_with(name):
         text += f" (a parameter of the model{'s' if len(others) > 1 else ''} {', '.join(map(repr, others))}"
         text += f", not of {model!r}: set model = {others[0]!r}?)"
-    elif hint := difflib.get_close_matches(name[:100], keys, n=1):
-        text += f" (did you mean {hint[0]!r}?)"
+    else:
+        text += did_you_mean(name, keys)
     return text + f"; allowed keys in [pendulum] for model {model!r}: {', '.join(keys)}"
 
 
@@ -156,11 +155,8 @@ def _problem(err: ErrorDetails, data: Any = None, root: type[BaseModel] = Scenar
         parent = _model_at(loc, root)
         names = list(parent.model_fields) if parent is not None else []
         section = f"[{_key(loc[:-1])}]" if len(loc) > 1 else "the top level"
-        hint = difflib.get_close_matches(str(loc[-1])[:100], names, n=1)
-        text = f"unknown key {key} = {_show(value)}"
-        if hint:
-            text += f" (did you mean {hint[0]!r}?)"
-        return text + f"; allowed keys in {section}: {', '.join(names)}"
+        hint = did_you_mean(str(loc[-1]), names)
+        return f"unknown key {key} = {_show(value)}{hint}; allowed keys in {section}: {', '.join(names)}"
     if kind == "value_error":
         reason = str(err.get("ctx", {}).get("error", err["msg"]))
         return f"[{key}] {reason}" if key and isinstance(value, dict) else f"{key} = {_show(value)}: {reason}"

@@ -11,6 +11,7 @@ always wins, so a local ``rosette.toml`` is never shadowed by the example of the
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
@@ -61,7 +62,8 @@ def find(text: str | Path, kind: str = "scenario") -> Path:
     if path.is_file() or (path.exists() and not path.is_dir()):  # a device or pipe (/dev/stdin) too:
         return path  # the reader bounds what it reads and says what is wrong (docs/limits.md, file_bytes)
     examples = {"scenario": scenario_files, "sweep": sweep_files, "data": data_files}[kind]()
-    name = str(text).removeprefix(PREFIX)
+    text = os.fspath(text)  # the messages name it as given (``./x.toml``, not ``x.toml``)
+    name = str(path).removeprefix(PREFIX)
     suffix = _SUFFIX[kind]
     if name.endswith(suffix) and Path(name).parent == Path():
         name = name[: -len(suffix)]

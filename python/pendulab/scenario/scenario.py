@@ -363,7 +363,7 @@ def load_scenario(path: str | os.PathLike[str]) -> Scenario:
     >>> pl.load_scenario("rosette").title
     'Rosette: 60° release with sideways spin'
     """
-    found = find_example(Path(path), "scenario")  # a path that exists wins over an example's name
+    found = find_example(os.fspath(path), "scenario")  # a path that exists wins over an example's name
     source = os.fspath(path) if found == Path(path) else os.fspath(found)
     try:
         text = read_file_capped(source)

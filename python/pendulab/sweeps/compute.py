@@ -11,7 +11,6 @@ the backend and the CPU, bit for bit. Each chunk's result carries what it ran (`
 
 from __future__ import annotations
 
-import difflib
 import hashlib
 import json
 import math
@@ -35,7 +34,7 @@ from .._core import (
     state_from_angles,
 )
 from ..ensemble.run import SUBSTEPS, max_sway, model_damping
-from ..integrators import check_arithmetic
+from ..integrators import check_arithmetic, method_names, unknown_method
 from ..model import FloatArray, Pendulum
 from .design import AXES, AXIS_LIMITS, INITIAL_AXES, Design, check_axis_name
 
@@ -138,8 +137,7 @@ def _quantities(quantity: str | Sequence[str]) -> tuple[str, ...]:
         raise _bad(f"give at least one quantity: {', '.join(QUANTITIES)}")
     for q in names:
         if not isinstance(q, str) or q not in QUANTITIES:
-            hint = difflib.get_close_matches(str(q), list(QUANTITIES), n=1)
-            did = f" (did you mean {hint[0]!r}?)" if hint else ""
+            did = limits.did_you_mean(q, QUANTITIES)
             raise _bad(f"unknown quantity {limits.show(q)}{did}; the quantities are {', '.join(QUANTITIES)}")
     return tuple(q for q in QUANTITIES if q in names)  # canonical order, no duplicates
 
@@ -228,7 +226,11 @@ def make_spec(
 
 
 def check_method(method: Any) -> str:
-    """``method`` if it is one of :data:`METHODS`, else an ``InvalidInputError`` naming it and them."""
+    """``method`` if it is one of :data:`METHODS`, else an ``InvalidInputError`` naming it and them; a
+    name no integrator has gets the message of every entry point (the nearest name, the same but for
+    case first, and the registered ones: :func:`~pendulab.integrators.unknown_method`)."""
+    if isinstance(method, str) and method not in method_names():
+        raise _bad(unknown_method(method))
     if not isinstance(method, str) or method not in SUBSTEPS:
         raise _bad(
             f"method = {limits.show(method)}: sweeps integrate with {', '.join(map(repr, METHODS))} "

@@ -25,7 +25,6 @@ Three kinds of design, all with points numbered 0 … n − 1 (the ``point`` col
 
 from __future__ import annotations
 
-import difflib
 import hashlib
 import json
 import math
@@ -84,8 +83,7 @@ def _bad(message: str) -> InvalidInputError:
 def check_axis_name(name: Any, where: str = "axis") -> str:
     """``name`` if it is one of :data:`AXES`; otherwise a clear error with the closest name."""
     if not isinstance(name, str) or name not in AXES:
-        hint = difflib.get_close_matches(str(name), list(AXES), n=1)
-        did = f" (did you mean {hint[0]!r}?)" if hint else ""
+        did = limits.did_you_mean(name, AXES)
         raise _bad(f"unknown {where} {limits.show(name)}{did}; the axes are {', '.join(AXES)}")
     return name
 

@@ -36,7 +36,6 @@ file, the key, the bad value and what is allowed.
 
 from __future__ import annotations
 
-import difflib
 import os
 import tomllib
 from dataclasses import dataclass
@@ -53,7 +52,7 @@ from ..scenario.schema import (
     _show,  # a value as it looks in TOML, as scenario errors show it
     printable,
 )
-from ..validate import MAX_SAMPLES, parse_toml, read_file_capped
+from ..validate import MAX_SAMPLES, did_you_mean, parse_toml, read_file_capped
 from . import design as sweep_design
 from .compute import QUANTITIES, make_spec
 from .design import Design
@@ -211,8 +210,7 @@ def _problem(err: ErrorDetails) -> str:
             model = getattr(model, "model_fields", {}).get(part)
             model = getattr(model, "annotation", None)
         names = list(getattr(model, "model_fields", {}))
-        hint = difflib.get_close_matches(str(loc[-1]), names, n=1)
-        did = f" (did you mean {hint[0]!r}?)" if hint else ""
+        did = did_you_mean(str(loc[-1]), names)
         where = f"[{_key(loc[:-1])}]" if len(loc) > 1 else "the top level"
         return f"unknown key {key}{did}; allowed keys in {where}: {', '.join(names)}"
     msg = str(err.get("ctx", {}).get("error", err["msg"])) if kind == "value_error" else err["msg"]

@@ -1,0 +1,114 @@
+"""Every "did you mean" hint comes from one function, ``pendulab.validate.did_you_mean``: a name equal
+to the one given but for case first (which difflib's ratio misses: 'DAMPING' is nowhere near
+'damping' for it), else difflib's closest, else no hint. Checked at each place that names an unknown
+key: Pendulum's keywords, a scenario file's keys, a sweep's axes, quantities and file keys; and
+``pl.load_scenario`` naming a missing file as it was given."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+import pendulab as pl
+from pendulab.sweeps.file import SweepFileError, sweep_file_from_dict
+
+SCENARIO = """
+[pendulum]
+length = 1.0
+mass = 1.0
+g = 9.81
+{pendulum}
+[initial]
+theta_deg = 30.0
+{initial}
+[simulation]
+t_end = 0.1
+"""
+
+
+def _hint(expected: str | None) -> str:
+    """The hint naming ``expected``; for None, any hint (which the message must not have)."""
+    return f"(did you mean '{expected}'?)" if expected else "did you mean"
+
+
+@pytest.mark.parametrize(
+    ("given", "expected"), [("DAMPING", "damping"), ("dampnig", "damping"), ("zzzz", None)]
+)
+def test_pendulum_keyword_no_model_has(given: str, expected: str | None) -> None:
+    with pytest.raises(pl.InvalidInputError, match=f"no model has a parameter '{given}'") as e:
+        pl.Pendulum(**{given: 0.1})
+    assert (_hint(expected) in str(e.value)) is (expected is not None), str(e.value)
+
+
+@pytest.mark.parametrize(("given", "expected"), [("DRAG", "drag"), ("dragg", "drag"), ("zzzz", None)])
+def test_pendulum_keyword_the_model_has_not(given: str, expected: str | None) -> None:
+    with pytest.raises(pl.InvalidInputError, match=f"the 'damped' model has no parameter '{given}'") as e:
+        pl.Pendulum(model="damped", **{given: 0.1})
+    assert (_hint(expected) in str(e.value)) is (expected is not None), str(e.value)
+
+
+def test_pendulum_keyword_of_another_model_names_that_model() -> None:
+    with pytest.raises(pl.InvalidInputError, match=r"\(a parameter of 'damped', .*: model='damped'\?\)"):
+        pl.Pendulum(model="ideal", damping=0.1)
+
+
+@pytest.mark.parametrize(
+    ("pendulum", "initial", "needle", "expected"),
+    [
+        ("LENGTH = 2.0", "", "unknown key pendulum.LENGTH = 2.0", "length"),
+        ("lenhgt = 2.0", "", "unknown key pendulum.lenhgt = 2.0", "length"),
+        ("zzzz = 2.0", "", "unknown key pendulum.zzzz = 2.0", None),
+        ("", "PHI_DOT = 1.0", "unknown key initial.PHI_DOT = 1.0", "phi_dot"),
+        ("", "phi_dt = 1.0", "unknown key initial.phi_dt = 1.0", "phi_dot"),
+        ("", "zzzz = 1.0", "unknown key initial.zzzz = 1.0", None),
+    ],
+)
+def test_scenario_keys(pendulum: str, initial: str, needle: str, expected: str | None) -> None:
+    with pytest.raises(pl.ScenarioError) as e:
+        pl.Scenario.from_toml_str(SCENARIO.format(pendulum=pendulum, initial=initial), "s.toml")
+    (problem,) = e.value.problems
+    assert problem.startswith(needle), problem
+    assert (_hint(expected) in problem) is (expected is not None), problem
+
+
+@pytest.mark.parametrize(("given", "expected"), [("THETA0", "theta0"), ("thta0", "theta0"), ("zzzz", None)])
+def test_sweep_axis(given: str, expected: str | None) -> None:
+    with pytest.raises(pl.InvalidInputError, match=f"unknown axis '{given}'") as e:
+        pl.sweep({given: [0.1]}, "period")
+    assert (_hint(expected) in str(e.value)) is (expected is not None), str(e.value)
+
+
+@pytest.mark.parametrize(("given", "expected"), [("PERIOD", "period"), ("perod", "period"), ("zzzz", None)])
+def test_sweep_quantity(given: str, expected: str | None) -> None:
+    with pytest.raises(pl.InvalidInputError, match=f"unknown quantity '{given}'") as e:
+        pl.sweep({"theta0": [0.1]}, given)
+    assert (_hint(expected) in str(e.value)) is (expected is not None), str(e.value)
+
+
+@pytest.mark.parametrize(("given", "expected"), [("GRID", "grid"), ("gird", "grid"), ("zzzz", None)])
+def test_sweep_file_key(given: str, expected: str | None) -> None:
+    with pytest.raises(SweepFileError, match=f"unknown key {given}") as e:
+        sweep_file_from_dict({"quantity": "period", "grid": {"theta0": [0.1]}, given: {}}, "s.toml")
+    assert (_hint(expected) in str(e.value)) is (expected is not None), str(e.value)
+
+
+@pytest.mark.parametrize("given", ["./nope.toml", "./nope", "sub/./nope.toml", "sub//nope.toml"])
+def test_load_scenario_names_the_path_as_given(
+    given: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """Not as pathlib normalises it (``nope.toml``, ``sub/nope.toml``); a Path is shown as it prints."""
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "sub").mkdir()
+    with pytest.raises(FileNotFoundError) as e:
+        pl.load_scenario(given)
+    assert str(e.value).startswith(f"{given}: No such file, and no example scenario"), str(e.value)
+    with pytest.raises(FileNotFoundError, match=f"^{Path(given)}: No such file"):
+        pl.load_scenario(Path(given))
+
+
+def test_load_scenario_still_finds_the_example_of_a_dotted_name(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.chdir(tmp_path)
+    assert pl.load_scenario("./rosette.toml").spec == pl.load_scenario("rosette").spec
