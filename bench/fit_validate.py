@@ -46,8 +46,9 @@ for _v in ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "RAYON_
 HERE = Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
-#: Warnings that say the search stopped, not that the data disagree with the model.
-NOT_A_DIAGNOSIS = ("time limit", "did not converge", "interrupted")
+#: Warnings that say the search stopped, not that the data disagree with the model (nor that they agree
+#: with a simpler one: a swing consistent with a planar one, fitted as spherical; fitting/mirror.py).
+NOT_A_DIAGNOSIS = ("time limit", "did not converge", "interrupted", "consistent with a planar swing")
 NUMPY_NOISE = ("encountered in", "divide by zero", "overflow", "invalid value", "Mean of empty")
 
 

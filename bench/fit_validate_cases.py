@@ -8,7 +8,8 @@ Three sorts of case (docs/fit.md, "Validation"):
 - ``right``: the model fitted is the one that made the data (white or AR(1) noise, quantisation,
   outliers with a robust loss, mid-swing starts, elliptical swings seen from the side, a pivot off the
   origin; cases 22–24: the sensor's offset, bias or scale fitted as a systematic term; 25: dry
-  friction fitted; 26: a swing that starts on the negative side). Measured: how often each true
+  friction fitted; 26: a swing that starts on the negative side; 27: a swing released in the x–z
+  plane, fitted as a spherical one; 28: case 1 with the start's truth). Measured: how often each true
   parameter lies within ±2 stderr (target 90–98 %) and how often a warning is raised anyway (false
   alarms).
 - ``wrong``: the data contain physics or sensor effects the fitted model lacks (wind, dry pivot
@@ -286,6 +287,23 @@ def cases() -> list[Case]:
             {"model": "damped", "length": 0.5},
             encoder(enc_truth, amplitude=-1.2, t_from=0.1, duration=15.0, rate=50.0, sigma=2e-3),
             "case 3 mirrored: the first sample at a negative angle",
+        ),
+        Case(
+            "video x,z, a planar swing fitted as a spherical one",
+            "right",
+            VIDEO_FIT,
+            DAMPED,
+            video(VIDEO, start=(0.5, 0.0, 0.0, 0.0), start_truth=True),
+            "case 1 released in the x–z plane (φ₀ = φ̇₀ = 0), planar=False: the sideways motion seen at "
+            "second order",
+        ),
+        Case(
+            "video x,z, ellipse, the start's truth",
+            "right",
+            VIDEO_FIT,
+            DAMPED,
+            video(VIDEO, start_truth=True),
+            "case 1 with the start at the first sample in the truth: φ̇₀ clearly nonzero",
         ),
     ]
 

@@ -44,6 +44,9 @@ not determined: along that direction its variance is unbounded."""
 COMBINED = "the data determine only a combination of it with "
 """The reason of a parameter in a direction the data cannot see (server/fit_words.py keys it)."""
 
+FLAT = "the residuals do not change with it at the fit"
+"""The start of the reason of a parameter whose column is negligible (server/fit_words.py keys it)."""
+
 ROUND_OFF = 1e-10
 """Directions of the undetermined parameters' columns above this share of their largest singular value
 are projected out of the determined ones' (:func:`_free_of`); below it, round-off of the columns."""
@@ -144,8 +147,8 @@ def analyse(
     for i in np.flatnonzero(flat).tolist():
         reasons.setdefault(
             names[i],
-            "the residuals do not change with it at the fit (a symmetry of the data, or a stationary "
-            "point such as a sideways rate of 0 seen from the side)",
+            FLAT + " (a symmetry of the data, or a stationary point such as a sideways rate of 0 seen "
+            "from the side)",
         )
     live = np.flatnonzero(~flat)
     combos: dict[str, tuple[float, float]] = {}

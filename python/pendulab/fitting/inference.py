@@ -10,7 +10,10 @@
 - the goodness of fit per data kind against its noise floor, the χ² probability with σ given, the
   block check of a misfit (blocks.py) and a g far from any planet's (T-10.5), each warned;
 - over a record shorter than one swing, the bars of length and g checked by their profile likelihood:
-  taken from it, or the parameters not determined (short_record.py), warned.
+  taken from it, or the parameters not determined (short_record.py), warned;
+- for data blind to the mirror y → −y (positions seen as x, z) with the sideways motion near its
+  plane, the bars of φ₀ and φ̇₀ from their profile likelihood, and a swing consistent with a planar
+  one said (mirror.py).
 Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
 """
 
@@ -30,6 +33,7 @@ from .data import KINDS, residual
 from .goodness import EXACT, Goodness, ar1_rho, check_kind, findings
 from .goodness import misfit as misfit_found
 from .identify import Correlation, Identifiability, analyse, jacobian
+from .mirror import check_mirror
 from .problem import POSITIVE
 from .result import FitResult
 from .search import Search, polish
@@ -132,7 +136,10 @@ def conclude(
         blocks=blocks,
     )
     # a record shorter than a swing: the profile likelihood checks the bars of the length and g
-    said += check_short_record(res, search, not interrupted and search.loss == "linear")
+    checkable = not interrupted and search.loss == "linear"
+    said += check_short_record(res, search, checkable)
+    # data blind to the mirror y -> -y near the plane: the profile likelihood gives φ₀'s and φ̇₀'s bars
+    said += check_mirror(res, search, checkable)
     for text in said:
         warnings.warn(text, UserWarning, stacklevel=3)
     if not converged and not interrupted:

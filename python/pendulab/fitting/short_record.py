@@ -243,7 +243,7 @@ def _undetermined(
         res.covariance[i[n], i[n]] = math.inf
         res.correlation[i[n], :] = math.nan
         res.correlation[:, i[n]] = math.nan
-    shown = "; ".join(_shown(res, n, lo, hi) for n, (lo, hi) in profiled.items())
+    shown = "; ".join(shown_interval(res, n, lo, hi) for n, (lo, hi) in profiled.items())
     return (
         f"the record spans only {periods:.2g} of a small-swing period 2π√(l/g) = {period:.3g} s: "
         f"{', '.join(names)} {'is' if len(names) == 1 else 'are'} not determined (the curvature's error "
@@ -281,7 +281,7 @@ def _widened(
     said = [n for n, f in factor.items() if f >= WIDENED or n in lopsided]
     if not said:
         return []
-    shown = "; ".join(_shown(res, n, lo, hi) for n, (lo, hi) in profiled.items())
+    shown = "; ".join(shown_interval(res, n, lo, hi) for n, (lo, hi) in profiled.items())
     return [
         f"the record spans only {periods:.2g} of a small-swing period 2π√(l/g) = {period:.3g} s: the "
         f"error bars of {', '.join(said)} were taken from their 95 % profile-likelihood intervals "
@@ -290,7 +290,7 @@ def _widened(
     ]
 
 
-def _shown(res: Any, name: str, lo: float, hi: float) -> str:
+def shown_interval(res: Any, name: str, lo: float, hi: float) -> str:
     """``name`` lo … hi [unit], with ≥ lo or ≤ hi for an open end, and the sides when asymmetric."""
     unit = res.units.get(name, "")
     unit = f" {unit}" if unit and unit != "1" else ""

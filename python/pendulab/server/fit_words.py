@@ -107,6 +107,21 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
             "bars of {others:l} were taken from their 95 % profile-likelihood intervals"
         ),
     ),
+    # pendulab/fitting/mirror.py
+    (
+        "mirrorPlanar",
+        _p(
+            "the data are consistent with a planar swing: held in its plane (phi0 = 0 or π, phi_dot0 = 0) "
+            "the misfit rises by only {rise} (95 % level for the two: {level})"
+        ),
+    ),
+    (
+        "mirrorWidened",
+        _p(
+            "seen from the side near its plane, the sideways motion shows only at second order: the error "
+            "bars of {others:l} were taken from their 95 % profile-likelihood intervals"
+        ),
+    ),
     # pendulab/fitting/data.py
     ("dropped", _p("dropped {n} of {total} rows with NaN or inf")),
     ("sorted", _p("the times were not in increasing order: the rows were sorted")),
@@ -134,6 +149,14 @@ REASONS: list[tuple[str, re.Pattern[str]]] = [
     ("flat", _p("the residuals do not change with it at the fit")),
     ("combination", re.compile(r"the data determine only a combination of it with (?P<others>.+)$")),
     ("shortRecord", _p("a record of {periods} of a swing does not determine it")),
+    (
+        "mirrorUnchecked",
+        _p("the fit stopped before the profile likelihood of the sideways motion was checked"),
+    ),
+    (
+        "mirrorOpen",
+        _p("seen from the side near its plane, the sideways motion's profile likelihood does not close"),
+    ),
 ]
 """Why a parameter is not determined (pendulab/fitting/identify.py) -> key."""
 
