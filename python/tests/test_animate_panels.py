@@ -2,10 +2,13 @@
 orbit, for every kind of exact motion (poles, rest, g < 0, g = 0: no warning, no NaN) and for every
 model; a moving pivot drawn where it is (the pixels of its colour against the camera projection of
 p(t), within 1.5 px) and interpolated between samples to third order; the swinging spring's varying
-length; the floor grid; and one MovieSettings object reused and overridden. Times in seconds, lengths
-in metres, positions on screen in pixels."""
+length; the floor grid; one MovieSettings object reused and overridden; the fading trails, drawn in
+batches, the same picture as drawn one curve at a time. Times in seconds, lengths in metres, positions
+on screen in pixels."""
 
 from __future__ import annotations
+
+import itertools
 
 import numpy as np
 import pytest
@@ -14,7 +17,8 @@ from PIL import Image
 
 import pendulab as pl
 from pendulab import animate
-from pendulab.animate.canvas import Camera
+from pendulab.animate import panel_3d
+from pendulab.animate.canvas import Camera, blend, polyline
 from pendulab.animate.layout import boxes
 
 imageio_ffmpeg = pytest.importorskip("imageio_ffmpeg")
@@ -198,3 +202,45 @@ def test_movie_settings_are_one_object_reused_and_overridden() -> None:
     assert movie_settings(look, {"fps": 5}).fps == 5 and look.fps == 10
     with pytest.raises(TypeError, match="unknown movie setting"):
         movie_settings(look, {"frames_per_second": 5})
+
+
+def per_curve_fading(self, draw, pixels, i, colours):
+    """The fading trail as first written: one curve at a time, every piece's colour and pixels worked
+    out on their own (the picture the batched ``Panel3D._fading`` must keep)."""
+    start = max(0, i - self.trail_points)
+    if i - start < 1:
+        return
+    for curve, colour in enumerate(colours):
+        pts = pixels[start : i + 1, curve]
+        edges = np.linspace(0, len(pts) - 1, panel_3d.FADE_STEPS + 1).round().astype(int)
+        for a, c in itertools.pairwise(edges):
+            if c > a:
+                age = (i - (start + (a + c) / 2.0)) / self.trail_points
+                shade = blend(colour, self.theme.background, min(0.92, age))
+                polyline(draw, pts[a : c + 1], shade, width=2)
+
+
+def test_the_fading_trails_are_the_picture_drawn_one_curve_at_a_time(monkeypatch):
+    """40 bobs (one with a gap of NaN samples: its trail drawn with a break) and a moving pivot's trail:
+    every frame, from the first (trails shorter than ``trail``) on, equals the per-curve drawing pixel
+    for pixel, and the trails are there (the frames differ from those without trails)."""
+    p = pl.Pendulum(length=1.0, g=9.81, mass=1.0)
+    res = pl.simulate_ensemble(p, pl.states_from_angles(p, theta=np.linspace(0.2, 2.8, 40), phi_dot=1.0),
+                               t_end=1.5, save=pl.Save.every(20))  # fmt: skip
+    x, v = res.x.copy(), res.v.copy()
+    x[7, 5:9] = np.nan  # a gap in one bob's samples
+    ensemble = animate.from_samples(res.t, x, v, length=1.0, g=9.81, mass=1.0, label="forty")
+    slewing = pl.Pendulum(**MODELS["slewing"])
+    s0 = slewing.state_from_angles(theta=0.5, phi=0.0, theta_dot=0.0, phi_dot=0.5)
+    crane = pivot_motion(pl.simulate(slewing, s0, t_end=1.5))
+    for motion in (ensemble, crane):
+        look = animate.MovieSettings(fps=8, size=(320, 240), panels="3d", trail=1.0)
+        batched = [np.asarray(f) for f in animate.frames(motion, look)]
+        bare = [np.asarray(f) for f in animate.frames(motion, look, trail=0.0)]
+        with monkeypatch.context() as m:
+            m.setattr(panel_3d.Panel3D, "_fading", per_curve_fading)
+            single = [np.asarray(f) for f in animate.frames(motion, look)]
+        assert len(batched) == len(single) == 13
+        for k, (a, b) in enumerate(zip(batched, single, strict=True)):
+            assert np.array_equal(a, b), f"frame {k}: {np.count_nonzero(np.any(a != b, axis=-1))} px differ"
+        assert np.count_nonzero(np.any(batched[-1] != bare[-1], axis=-1)) > 100

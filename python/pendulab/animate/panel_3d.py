@@ -19,11 +19,13 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Sequence
+from functools import lru_cache
 
 import numpy as np
 from PIL import ImageDraw
 
-from .canvas import Box, Camera, blend, disc, font, polyline
+from .canvas import RGB, Box, Camera, blend, disc, font, polyline
 from .scene import Panel, Scene
 
 FADE_STEPS = 12
@@ -65,6 +67,7 @@ class Panel3D(Panel):
         self.colours = (
             [scene.theme.bob] if bobs == 1 else [scene.theme.gradient(i, bobs) for i in range(bobs)]
         )
+        self.trail_colours = self.colours if bobs > 1 else [scene.theme.trail]
         dt_dense = scene.clock.frame_dt / scene.step
         # at most the whole dense grid (a trail of 1e308 s is the whole path, not an overflow)
         points = min(opts.trail / dt_dense, float(len(scene.x))) if opts.trail > 0 else 0.0
@@ -130,10 +133,9 @@ class Panel3D(Panel):
         if self.moving:
             self._sphere(draw, self.path[i] - self.centre)
             if self.trail_points > 1:
-                self._fading(draw, self.pivot_pixels, i, theme.pivot)
+                self._fading(draw, self.pivot_pixels[:, None, :], i, (theme.pivot,))
         if self.trail_points > 1:
-            for b in range(scene.bobs):
-                self._trail(draw, i, b)
+            self._fading(draw, self.pixels, i, self.trail_colours)
         pivot = self.pivot_pixels[i]
         here = self.pixels[i]
         order = np.argsort(self.depths[i]) if scene.bobs > 1 else np.array([0])
@@ -155,25 +157,46 @@ class Panel3D(Panel):
         t = scene.t[i]
         draw.text((self.box.left + 8, self.box.top + 28), f"t = {t:.2f} s", fill=theme.text, font=font(16))
 
-    def _trail(self, draw: ImageDraw.ImageDraw, i: int, b: int) -> None:
-        colour = self.colours[b] if self.scene.bobs > 1 else self.theme.trail
-        self._fading(draw, self.pixels[:, b], i, colour)
-
-    def _fading(
-        self, draw: ImageDraw.ImageDraw, pixels: np.ndarray, i: int, colour: tuple[int, int, int]
-    ) -> None:
-        """The last ``trail_points`` of ``pixels`` (n_dense, 2) up to dense index i, fading with age."""
+    def _fading(self, draw: ImageDraw.ImageDraw, pixels: np.ndarray, i: int, colours: Sequence[RGB]) -> None:
+        """The last ``trail_points`` of each curve of ``pixels`` (n_dense, curves, 2) up to dense index
+        i, fading with age, curve after curve: :data:`FADE_STEPS` pieces of one colour each. The pieces
+        and their shades are the same for every curve of a frame (:func:`_pieces`, :func:`_shades`,
+        cached), and the window's pixels become Python numbers in one call, so a piece costs one
+        Pillow call; a curve with a non-finite pixel in the window is drawn with breaks there."""
         start = max(0, i - self.trail_points)
         if i - start < 1:
             return
-        pts = pixels[start : i + 1]
-        edges = np.linspace(0, len(pts) - 1, FADE_STEPS + 1).round().astype(int)
-        full = self.trail_points
-        for a, c in itertools.pairwise(edges):
-            if c <= a:
-                continue
-            age = (i - (start + (a + c) / 2.0)) / full  # 0 at the bob, 1 at the trail's end
-            polyline(draw, pts[a : c + 1], blend(colour, self.theme.background, min(0.92, age)), width=2)
+        pieces = _pieces(i - start, self.trail_points)
+        window = pixels[start : i + 1]
+        finite = np.isfinite(window).all(axis=(0, 2))
+        flat = window.transpose(1, 0, 2).reshape(len(colours), -1).tolist()
+        background = self.theme.background
+        for curve, colour in enumerate(colours):
+            shades = _shades(colour, background, pieces)
+            if finite[curve]:
+                xy = flat[curve]
+                for (a, c, _), shade in zip(pieces, shades, strict=True):
+                    draw.line(xy[2 * a : 2 * c + 2], fill=shade, width=2)
+            else:
+                for (a, c, _), shade in zip(pieces, shades, strict=True):
+                    polyline(draw, window[a : c + 1, curve], shade, width=2)
+
+
+@lru_cache(maxsize=64)
+def _pieces(last: int, full: int) -> tuple[tuple[int, int, float], ...]:
+    """The pieces (a, c, f) of a trail of points 0..last (the bob at ``last``): points a..c are drawn
+    in one colour, blended towards the background by f = min(0.92, age) with age = (last − (a + c)/2)
+    / ``full`` (0 at the bob, 1 at the end of a whole trail of ``full`` points)."""
+    edges = np.linspace(0, last, FADE_STEPS + 1).round().astype(int).tolist()
+    return tuple(
+        (a, c, min(0.92, (last - (a + c) / 2.0) / full)) for a, c in itertools.pairwise(edges) if c > a
+    )
+
+
+@lru_cache(maxsize=4096)
+def _shades(colour: RGB, background: RGB, pieces: tuple[tuple[int, int, float], ...]) -> tuple[RGB, ...]:
+    """The colour of each of ``pieces`` (:func:`_pieces`) of a trail of ``colour``."""
+    return tuple(blend(colour, background, f) for _, _, f in pieces)
 
 
 def _coil(
