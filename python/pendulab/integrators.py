@@ -72,12 +72,14 @@ def check_settings(
 
 
 def _dt_limit(method: str) -> ParamSpec:
-    """The dt limit as :data:`pendulab.validate.LIMITS` has it; for an adaptive method the words say
-    that dt is its first step and that None (leaving it out) lets the method choose it."""
+    """The dt limit as :data:`pendulab.validate.LIMITS` has it, in words naming the method: a fixed-step
+    method's step, None (leaving it out) for the default 1 ms; an adaptive method's first step, None
+    to let the method choose it."""
     spec = LIMITS["dt"]
-    if not _method_table()[method]["adaptive"]:
-        return spec
-    allowed = f"{spec['allowed']} (the first step of {method}), or None to let {method} choose it"
+    if _method_table()[method]["adaptive"]:
+        allowed = f"{spec['allowed']} (the first step of {method}), or None to let {method} choose it"
+    else:
+        allowed = f"{spec['allowed']} (the step of {method}), or None for {DEFAULTS['dt']:g} s"
     return spec | {"allowed": allowed}
 
 

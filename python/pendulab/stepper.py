@@ -9,7 +9,7 @@ from ._core import InvalidInputError, RunOptions
 from ._core import Stepper as _Stepper
 from .display import Row, html_table
 from .display import number as shown
-from .integrators import _U64, _check_conserve, _method_table, check_arithmetic, check_settings
+from .integrators import _U64, DEFAULTS, _check_conserve, _method_table, check_arithmetic, check_settings
 from .model import Pendulum, State, check_pendulum_state
 from .validate import LIMITS, integer, invalid, number, planned_steps
 
@@ -19,6 +19,21 @@ class Stepper:
 
     Same methods and options as :func:`simulate`; ``set_state`` replaces the state (e.g. after the
     user drags the bob).
+
+    Parameters
+    ----------
+    pendulum : the :class:`Pendulum` (model and parameters, SI units; no user ``force`` callable).
+    state : the start, a :class:`State` on TS² of this pendulum.
+    method : a name from :func:`methods` (default ``"rattle"``).
+    dt : step size [s] of a fixed-step method (default None: 1e-3 s); for the adaptive ``dop853`` its
+        first step (default None: chosen automatically, as :func:`simulate` does; never 0). A given dt
+        is a finite number in [1e-12, 1e6] s.
+    rtol, atol : tolerances of ``dop853`` (atol in m and m/s).
+    project : ``dop853`` only: project onto TS² after every step (default True).
+    t0 : the start time [s] of ``state`` (default 0.0).
+    conserve : ``dop853`` only: also hold E and J₃ at their initial values (as in :func:`simulate`).
+    arithmetic : the RATTLE family's multiply-adds, ``"auto"``, ``"fused"`` or ``"unfused"`` (as in
+        :func:`simulate`).
 
     Examples
     --------
@@ -38,7 +53,7 @@ class Stepper:
         state: State,
         *,
         method: str = "rattle",
-        dt: float = 1e-3,
+        dt: float | None = None,
         rtol: float = 1e-10,
         atol: float = 1e-12,
         project: bool = True,
@@ -50,8 +65,9 @@ class Stepper:
         method, dt_checked, rtol, atol, project, conserve, t0 = check_settings(
             method=method, dt=dt, rtol=rtol, atol=atol, project=project, conserve=conserve, t0=t0
         )
-        if dt_checked is None:
-            raise invalid("dt", dt, LIMITS["dt"]["allowed"])
+        self._adaptive = bool(_method_table()[method]["adaptive"])
+        if dt_checked is None:  # as pl.simulate: dop853 chooses its first step (0 to the core), else 1 ms
+            dt_checked = 0.0 if self._adaptive else float(DEFAULTS["dt"])
         dt = dt_checked
         _check_conserve(pendulum, conserve)
         arithmetic = check_arithmetic(arithmetic, method, pendulum.model)
@@ -61,7 +77,6 @@ class Stepper:
             )
         self._dt = dt
         self._method = method
-        self._adaptive = bool(_method_table()[method]["adaptive"])
         self.pendulum = pendulum
         run = RunOptions(
             t0=float(t0),
@@ -77,7 +92,9 @@ class Stepper:
 
     def __repr__(self) -> str:
         theta, phi = self.state.angles_deg()
-        step = "adaptive" if self._adaptive else f"dt={shown(self._dt)} s"
+        step = f"dt={shown(self._dt)} s"
+        if self._adaptive:  # its own steps; the first one given, or chosen automatically (dt 0)
+            step = f"adaptive, first step {shown(self._dt)} s" if self._dt > 0 else "adaptive"
         return (
             f"Stepper({self._method}, {step}, t={shown(self.t)} s, θ={shown(theta)}°, "
             f"φ={shown(phi)}°, steps={self._core.stats['steps']}; {self.pendulum!r})"
@@ -88,7 +105,7 @@ class Stepper:
         stats = self.stats
         rows: list[Row] = [
             ("method", self._method, ""),
-            ("step dt", "adaptive" if self._adaptive else self._dt, "" if self._adaptive else "s"),
+            self._step_row(),
             ("time t", self.t, "s"),
             ("polar angle θ", theta, "°"),
             ("azimuth φ", phi, "°"),
@@ -97,6 +114,14 @@ class Stepper:
             ("length l", self.pendulum.length, "m"),
         ]
         return html_table("Stepper", rows)
+
+    def _step_row(self) -> Row:
+        """The step of the HTML table: dt [s], or for dop853 "adaptive" and its first step if given."""
+        if not self._adaptive:
+            return ("step dt", self._dt, "s")
+        if self._dt > 0:
+            return ("adaptive, first step", self._dt, "s")
+        return ("step dt", "adaptive (first step automatic)", "")
 
     @property
     def t(self) -> float:

@@ -167,9 +167,10 @@ def test_crane_run_csv_has_the_metadata_line_of_every_pendulab_csv(tmp_path: Pat
 
 
 def test_crane_csvs_say_their_output_spacing_and_tolerances(tmp_path: Path) -> None:
-    """A crane run's ``[simulation] dt`` is the spacing of the rows of an adaptive (DOP853) run: its
-    metadata says ``output_spacing`` (it said ``dt``, which elsewhere is a step; read_metadata reads the
-    old form as the new). The grid's metadata said neither its sampling interval nor its tolerances."""
+    """A crane run's ``[simulation] output_spacing`` (``dt`` in older files) is the spacing of the rows of
+    an adaptive (DOP853) run: its metadata says ``output_spacing`` (it said ``dt``, which elsewhere is a
+    step; read_metadata reads the old form as the new). The grid's metadata said neither its sampling
+    interval nor its tolerances."""
     import json
 
     from pendulab.io import read_metadata

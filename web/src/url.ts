@@ -253,7 +253,7 @@ export function fromStatus(s: Status): UrlScenario {
     x: s.start.x,
     v: s.start.v,
   };
-  // an adaptive method's steps are its own (the session's dt is only its first): no dt then
+  // an adaptive method's steps are all its own (the session's dt is not one of them): no dt then
   if (!s.adaptive) u.dt = s.dt;
   if (s.scenario !== null) u.scenario = s.scenario;
   if (Object.keys(s.model_params).length > 0) u.modelParams = { ...s.model_params };

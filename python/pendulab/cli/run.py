@@ -82,7 +82,11 @@ def run(
         ),
     ] = None,
     dt: Annotated[
-        float | None, typer.Option(help="Step size in s (> 0); replaces the file's dt.", show_default=False)
+        float | None,
+        typer.Option(
+            help="Step size in s (> 0); replaces the file's dt (a crane file's output_spacing).",
+            show_default=False,
+        ),
     ] = None,
     t_end: Annotated[
         float | None,

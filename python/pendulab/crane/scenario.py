@@ -2,8 +2,9 @@
 rigging [m], damping [1/s], g [m/s²]), optional ``[move]`` (a straight pivot move: distance [m], v_max
 [m/s], a_max [m/s²], j_max [m/s³], direction, t_start [s]), ``[shaper]`` (kind, and the design as
 omega [rad/s] or rope [m]; default the crane's lowest sway mode), ``[hoist]`` (t [s], length [m]),
-``[wind]`` (the :class:`~pendulab.crane.system.Wind` fields) and ``[simulation]`` (t_end, dt [s],
-sway and rigging_sway [rad], rtol, atol). Unknown keys, wrong types, NaN/inf are errors naming the
+``[wind]`` (the :class:`~pendulab.crane.system.Wind` fields) and ``[simulation]`` (t_end [s],
+output_spacing [s]: the time between output rows — ``dt`` in older files, still read —, sway and
+rigging_sway [rad], rtol, atol). Unknown keys, wrong types, NaN/inf are errors naming the
 key; files above 1 MiB are refused. ``pendulab crane run FILE`` runs one. The tables are those of a
 scenario file with ``[crane]`` (:mod:`pendulab.scenario.crane_schema`): ``pl.load_scenario``,
 ``pendulab run`` and ``pendulab validate`` read the same files, building the crane with
@@ -33,13 +34,14 @@ MAX_BYTES = 1 << 20
 
 @dataclass(frozen=True)
 class CraneScenario:
-    """A loaded crane file: the ``crane``, its ``shaper`` (or None), the simulation settings and
-    the ``move_end`` time [s] (the pivot stops then; 0 without a move)."""
+    """A loaded crane file: the ``crane``, its ``shaper`` (or None), the simulation settings (t_end,
+    output_spacing [s], sway, rigging_sway [rad], rtol, atol) and the ``move_end`` time [s] (the
+    pivot stops then; 0 without a move)."""
 
     crane: Crane
     shaper: Shaper | None
     t_end: float
-    dt: float
+    output_spacing: float
     sway: tuple[float, float]
     rigging_sway: tuple[float, float] | None
     rtol: float
@@ -51,7 +53,7 @@ class CraneScenario:
     def run(self) -> CraneRun:
         """Simulates the file's crane (:meth:`Crane.simulate`)."""
         return self.crane.simulate(
-            self.t_end, self.sway, self.rigging_sway, dt=self.dt, rtol=self.rtol, atol=self.atol
+            self.t_end, self.sway, self.rigging_sway, dt=self.output_spacing, rtol=self.rtol, atol=self.atol
         )
 
     def metadata(self, run: CraneRun | None = None) -> dict[str, Any]:
@@ -86,9 +88,9 @@ class CraneScenario:
 
 
 def file_settings(file: dict[str, Any]) -> dict[str, Any]:
-    """A crane file's settings as a run's metadata says them (``file``): ``[simulation] dt``, the spacing
-    of the output rows of an adaptive run (DOP853 chooses its own steps), as ``output_spacing`` [s].
-    Older files' metadata said ``dt``: :func:`pendulab.io.read_metadata` reads them through here."""
+    """A crane file's settings as a run's metadata says them (``file``): ``[simulation] output_spacing``
+    [s], the spacing of the output rows of an adaptive run (DOP853 chooses its own steps). Older files
+    and their runs' metadata said ``dt``: :func:`pendulab.io.read_metadata` reads them through here."""
     sim = file.get("simulation")
     if not (isinstance(sim, dict) and "dt" in sim):
         return file
@@ -175,7 +177,7 @@ def _build(f: CraneSpec, source: str) -> CraneScenario:
         crane_obj,
         s,
         sim.t_end,
-        sim.dt,
+        sim.output_spacing,
         (sim.sway[0], sim.sway[1]),
         None if sim.rigging_sway is None else (sim.rigging_sway[0], sim.rigging_sway[1]),
         sim.rtol,

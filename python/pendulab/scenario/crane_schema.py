@@ -16,10 +16,15 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import AliasChoices, BaseModel, ConfigDict, Field, model_validator
+
+from .table_base import _show
 
 CRANE_SECTIONS = ("crane", "move", "shaper", "hoist", "wind", "simulation")
 """The crane file's tables, in the order :meth:`Scenario.to_toml` writes them."""
+
+OLD_SPACING_KEY = "dt"
+"""The older name of ``[simulation] output_spacing`` in a crane's file (read as it)."""
 
 _Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
 
@@ -96,10 +101,18 @@ class WindSection(_Section):
 
 
 class CraneSimulationSection(_Section):
-    """``[simulation]`` of a crane: the run's end, output step and start sway."""
+    """``[simulation]`` of a crane: the run's end, the spacing of its output rows and the start sway.
+    ``output_spacing`` was ``dt`` (the crane's DOP853 chooses its own steps, so it is no step): a file
+    with ``dt`` is read as before; one with both keys is refused naming both."""
 
     t_end: float = _pos("end time in s")
-    dt: float = _pos("output interval in s", 0.02)
+    output_spacing: float = Field(
+        0.02,
+        gt=0,
+        le=1e6,
+        validation_alias=AliasChoices("output_spacing", OLD_SPACING_KEY),
+        description="time between output rows in s, > 0 and <= 1e6 (DOP853 chooses its own steps)",
+    )
     sway: list[float] = Field(
         [0.0, 0.0], min_length=2, max_length=2, description="start sway of the rope [θ, φ] in rad"
     )
@@ -108,6 +121,17 @@ class CraneSimulationSection(_Section):
     )
     rtol: float = Field(1e-10, ge=1e-14, le=1e-3, description="relative tolerance, in [1e-14, 1e-3]")
     atol: float = Field(1e-10, gt=0, le=1.0, description="absolute tolerance, in (0, 1]")
+
+    @model_validator(mode="before")
+    @classmethod
+    def _one_spacing(cls, data: Any) -> Any:
+        if isinstance(data, dict) and "output_spacing" in data and OLD_SPACING_KEY in data:
+            new, old = _show(data["output_spacing"]), _show(data[OLD_SPACING_KEY])
+            raise ValueError(
+                f"output_spacing = {new} and dt = {old} both given: dt is the older name of "
+                "output_spacing (the time between output rows in s); keep one"
+            )
+        return data
 
 
 class CraneSpec(_Section):

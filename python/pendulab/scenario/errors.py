@@ -15,7 +15,8 @@ import tomllib
 import typing
 from typing import Any
 
-from pydantic import BaseModel
+from pydantic import AliasChoices, BaseModel
+from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from .._numbers import shown
@@ -100,7 +101,15 @@ def _allowed(loc: tuple[int | str, ...], root: type[BaseModel] = ScenarioSpec) -
     if model is None or not keys:
         return None
     info = model.model_fields.get(keys[-1])
+    if info is None:  # a key read under an older name (a crane's [simulation] dt: output_spacing)
+        info = next((f for f in model.model_fields.values() if _older_name(f, keys[-1])), None)
     return None if info is None else info.description
+
+
+def _older_name(info: FieldInfo, key: str) -> bool:
+    """True when ``key`` is one of the names a field is also read under (its ``validation_alias``)."""
+    alias = info.validation_alias
+    return isinstance(alias, AliasChoices) and key in alias.choices
 
 
 def _key(loc: tuple[int | str, ...]) -> str:

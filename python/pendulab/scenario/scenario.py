@@ -208,14 +208,16 @@ class Scenario:
         if self.is_crane and (wrong := sorted(set(given) - {"dt", "t_end", "rtol", "atol"})):
             raise ScenarioError(
                 self.source,
-                f"a crane run takes no {', '.join(wrong)} (its [simulation] has t_end, dt, sway, "
-                "rigging_sway, rtol, atol: the crane has its own adaptive integrator)",
+                f"a crane run takes no {', '.join(wrong)} (its [simulation] has t_end, output_spacing, "
+                "sway, rigging_sway, rtol, atol: the crane has its own adaptive integrator)",
             )
+        changes = ", ".join(f"{k} = {_show(v)}" for k, v in given.items())
+        if self.is_crane and "dt" in given:  # a crane's dt (--dt) is the spacing of its output rows
+            given = {("output_spacing" if k == "dt" else k): v for k, v in given.items()}
         data = self.to_dict()
         data["simulation"].update(given)
         if "save_every" in given:
             data["simulation"].pop("save_at", None)
-        changes = ", ".join(f"{k} = {_show(v)}" for k, v in given.items())
         return Scenario.from_dict(data, f"{self.source} (with {changes})")
 
     # --- what it describes ---
@@ -245,7 +247,7 @@ class Scenario:
     def expected_samples(self) -> int | None:
         """How many samples a run will save (``None`` when an adaptive method decides, with save_every)."""
         if isinstance(self.spec, CraneSpec):
-            return 1 + math.ceil(self.spec.simulation.t_end / self.spec.simulation.dt - 1e-9)
+            return 1 + math.ceil(self.spec.simulation.t_end / self.spec.simulation.output_spacing - 1e-9)
         sim = self.spec.simulation
         if sim.save_at is not None:
             return len(sim.save_at)
@@ -262,7 +264,8 @@ class Scenario:
 
         ``progress`` as in :func:`pendulab.simulate` (default: a bar only for long runs). Ctrl-C returns
         the samples computed so far with ``Trajectory.interrupted = True``. A crane's file returns the
-        crane's run (``pendulab.crane.CraneRun``; overrides: t_end, dt, rtol, atol).
+        crane's run (``pendulab.crane.CraneRun``; overrides: t_end, dt — the crane's output_spacing —,
+        rtol, atol).
         """
         sc = self.with_overrides(overrides, **fields)
         if sc._crane is not None:

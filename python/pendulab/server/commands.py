@@ -222,7 +222,9 @@ class SetMethod(_Command):
 
     type: Literal["set_method"]
     method: str | None = None
-    dt: float | None = Field(None, description="step size in s", **limit_bounds("dt"))
+    dt: float | None = Field(
+        None, description="step in s of fixed-step methods (dop853 chooses its own)", **limit_bounds("dt")
+    )
 
     @model_validator(mode="after")
     def _known(self) -> SetMethod:

@@ -58,8 +58,11 @@ class Setup:
         if isinstance(sc.spec, CraneFileSpec):  # sc.is_crane
             crane = crane_pendulum(sc.spec)
             sim_c = sc.spec.simulation
+            # the crane's output_spacing is no step: the session's dt, used if a fixed-step method is
+            # chosen after the crane mode, is the default step
+            dt_next = float(DEFAULTS["dt"])
             return cls(
-                name, sc.title, crane, crane_start(crane), "dop853", sim_c.dt, sim_c.rtol, sim_c.atol, 0.0
+                name, sc.title, crane, crane_start(crane), "dop853", dt_next, sim_c.rtol, sim_c.atol, 0.0
             )
         model = sc._pendulum_spec().pendulum.model
         if model not in MODEL_SPECS:

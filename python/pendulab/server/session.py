@@ -15,7 +15,8 @@ and the ``status`` notice. This module converts what crosses the border: a scena
 Pacing (docs/web.md, "Pacing"): while running, the simulated time advances by (wall-clock seconds
 elapsed) × ``time_scale``; fixed-step methods take whole steps of exactly ``dt``, so a live run is the
 same sequence of steps as ``pl.simulate`` with that ``dt`` and ``arithmetic="unfused"`` (the lab's
-arithmetic, in the server as in the page's engine); ``dop853`` lands on the target times. A
+arithmetic, in the server as in the page's engine); ``dop853`` lands on the target times, choosing all
+its steps (its first too: it takes no first step from ``dt``, which it keeps for a fixed-step method). A
 tick sends up to :data:`MAX_SUBSAMPLES` records; out of budget the simulation runs slower than asked
 and ``status.lagging`` says so. Times in seconds, SI units throughout.
 """
@@ -298,7 +299,8 @@ class Session:
 
     @property
     def dt(self) -> float:
-        """Step [s]."""
+        """Step [s] of a fixed-step method; with ``dop853`` unused (it chooses all its steps, the first
+        too) and kept as the step of a fixed-step method chosen next."""
         return self.core.dt
 
     @property

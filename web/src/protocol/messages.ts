@@ -42,8 +42,9 @@ export interface Status {
   time_scale: number;
   method: string;
   adaptive: boolean;
-  /** A fixed-step method's step [s]; for an adaptive method (dop853) only its live first step: neither
-   *  the URL nor the exported scenario carries it then, but the tolerances below. */
+  /** A fixed-step method's step [s]. An adaptive method (dop853) does not use it (it chooses all its
+   *  steps, the first too): then it is only the step of a fixed-step method chosen next, and neither
+   *  the URL nor the exported scenario carries it, but the tolerances below. */
   dt: number;
   /** The adaptive method's tolerances (relative; absolute in m and m/s). */
   rtol?: number;

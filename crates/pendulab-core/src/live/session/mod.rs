@@ -49,8 +49,8 @@ pub struct LiveSession {
     pub error: LiveError,
     /// Method.
     pub method: Method,
-    /// Step \[s\] of a fixed-step method; for `dop853` the live stepper's first step (a scenario
-    /// exported from an adaptive run carries its tolerances, not this).
+    /// Step \[s\] of a fixed-step method. `dop853` does not use it (its live stepper always chooses its
+    /// first step: `make` passes it 0); it is kept as the step of a fixed-step method chosen next.
     pub dt: f64,
     /// dop853 relative tolerance (in the `status` notice, as `atol`).
     pub rtol: f64,
