@@ -44,9 +44,9 @@ class _Deadline:
         self.late = 0
         polished, rise, safe = inference._polished, profile.Rise.__call__, Problem.safe_residuals
 
-        def keep(search: Any, u: Any, interrupted: bool) -> Any:
+        def keep(search: Any, *args: Any) -> Any:
             self.search = search
-            return polished(search, u, interrupted)
+            return polished(search, *args)
 
         def first(rise_self: Any, c: float, start: dict[str, float]) -> Any:
             if self.at == math.inf:
@@ -62,6 +62,14 @@ class _Deadline:
         monkeypatch.setattr(inference, "_polished", keep)
         monkeypatch.setattr(profile.Rise, "__call__", first)
         monkeypatch.setattr(Problem, "safe_residuals", counted)
+
+
+def _fit_through_ctrl_c(kw: dict[str, Any]) -> Any:
+    """pl.fit(**kw), a KeyboardInterrupt out of it a test failure (not the end of the pytest session)."""
+    try:
+        return pl.fit(**kw)
+    except KeyboardInterrupt:
+        pytest.fail("Ctrl-C in the error analysis left pl.fit as KeyboardInterrupt: the fit was lost")
 
 
 def _case_20() -> tuple[Any, dict[str, Any]]:
@@ -91,9 +99,8 @@ def test_the_time_limit_cuts_the_profiles_of_a_short_record(monkeypatch: pytest.
     assert not res.interrupted  # the search itself ran to its end: the limit fell in the profiles
     assert past < SLACK and deadline.late <= 2, (past, deadline.late)
     said = [str(w.message) for w in caught if "time limit of" in str(w.message)]
-    assert said and all("give pl.fit a larger time_limit" in s for s in said), [
-        str(w.message) for w in caught
-    ]
+    advice = "give a larger limit (pl.fit's time_limit=, pendulab fit's --time-limit)"
+    assert said and all(advice in s for s in said), [str(w.message) for w in caught]
     assert not any("the fit stopped" in why for why in res.reasons.values()), res.reasons
     cut = [n for n in res.names if "time limit" in res.reasons.get(n, "")]
     assert {"length", "g"} <= set(cut), res.reasons
@@ -101,9 +108,11 @@ def test_the_time_limit_cuts_the_profiles_of_a_short_record(monkeypatch: pytest.
         assert not res.determined[name] and res.stderr[name] == math.inf, name
 
 
-def test_ctrl_c_in_a_profile_still_interrupts_the_fit(monkeypatch: pytest.MonkeyPatch) -> None:
-    """Ctrl-C during a profile's refit (no time limit) is not taken for the time limit nor swallowed:
-    it leaves pl.fit as it came, at the refit's model run."""
+def test_ctrl_c_in_a_profile_returns_the_fit(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Ctrl-C during a profile's refit (no time limit) raised KeyboardInterrupt out of pl.fit and lost
+    the fit, where Ctrl-C in the search returns the best values: now the fit is returned, the
+    parameters whose profiles were not finished not determined with a reason and a warning naming
+    Ctrl-C (not the time limit), and no other profile is begun after it."""
     rise, safe = profile.Rise.__call__, Problem.safe_residuals
     profiling: list[float] = []
 
@@ -119,8 +128,63 @@ def test_ctrl_c_in_a_profile_still_interrupts_the_fit(monkeypatch: pytest.Monkey
     monkeypatch.setattr(profile.Rise, "__call__", first)
     monkeypatch.setattr(Problem, "safe_residuals", pressed)
     _, kw = _case_20()
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        with pytest.raises(KeyboardInterrupt):
-            pl.fit(**kw)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = _fit_through_ctrl_c(kw)
     assert len(profiling) == 1
+    why = "Ctrl-C stopped the fit before the profile likelihood was checked"
+    assert any(why in str(w.message) for w in caught), [str(w.message) for w in caught]
+    cut = [n for n in res.names if why in res.reasons.get(n, "")]
+    assert {"length", "g"} <= set(cut), res.reasons
+    assert not any("time limit" in r for r in res.reasons.values()), res.reasons
+    for name in cut:
+        assert not res.determined[name] and res.stderr[name] == math.inf, name
+    assert all(math.isfinite(v) for v in res.params.values()), res.params  # the search's optimum is kept
+
+
+def test_a_robust_loss_says_why_it_is_not_profiled() -> None:
+    """A short record fitted with a robust loss is never profiled, yet its reason said "the fit stopped
+    before the profile likelihood was checked", which it had not: it now says that the profile is not
+    computed with a robust loss and what to do."""
+    _, kw = _case_20()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = pl.fit(loss="soft_l1", **kw)
+    why = "the profile likelihood is not computed with a robust loss (soft_l1); to check these bars"
+    assert any(why in str(w.message) for w in caught), [str(w.message) for w in caught]
+    robust = [n for n in res.names if why in res.reasons.get(n, "")]
+    assert {"length", "g"} <= set(robust), res.reasons
+    assert not any("stopped" in r for r in res.reasons.values()), res.reasons
+
+
+@pytest.mark.parametrize(("step", "said"), [("polish", "the polish"), ("check_blocks", "the block check")])
+def test_ctrl_c_in_the_polish_or_the_block_check_returns_the_fit(
+    monkeypatch: pytest.MonkeyPatch, step: str, said: str
+) -> None:
+    """Ctrl-C in the polish or the block check of a misfit (inference.py) raised KeyboardInterrupt out
+    of pl.fit: now that step ends, the profiles are skipped (their parameters not determined, the
+    reason naming Ctrl-C, none begun) and a warning names Ctrl-C and the step."""
+
+    def pressed(*args: Any, **kwargs: Any) -> Any:
+        raise KeyboardInterrupt
+
+    profiling: list[float] = []
+    rise = profile.Rise.__call__
+
+    def counted(rise_self: Any, c: float, start: dict[str, float]) -> Any:
+        profiling.append(c)
+        return rise(rise_self, c, start)
+
+    monkeypatch.setattr(inference, step, pressed)
+    monkeypatch.setattr(inference, "misfit_found", lambda *a: True)  # the block check runs
+    monkeypatch.setattr(profile.Rise, "__call__", counted)
+    _, kw = _case_20()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = _fit_through_ctrl_c(kw)
+    texts = [str(w.message) for w in caught]
+    assert any(t.startswith(f"Ctrl-C stopped {said}") for t in texts), texts
+    assert not profiling
+    why = "Ctrl-C stopped the fit before the profile likelihood was checked"
+    assert {"length", "g"} <= {n for n in res.names if why in res.reasons.get(n, "")}, res.reasons
+    assert res.blocks is None

@@ -15,6 +15,7 @@ import pytest
 from pendulab.fitting.blocks import BlockCheck
 from pendulab.fitting.data import observations
 from pendulab.fitting.goodness import KindCheck, findings
+from pendulab.fitting.short_record import STOPS
 from pendulab.fitting.start import check_length_hint
 from pendulab.server.fit_words import CLAUSES, KEYS, NOTES, REASONS, keyed, report_items
 
@@ -166,3 +167,23 @@ def test_the_keys_are_those_the_server_uses() -> None:
     text = SOURCE.read_text(encoding="utf-8")
     assert all(f'"{k}"' in text for k in items)
     assert callable(report_items)
+
+
+@pytest.mark.parametrize(
+    ("key", "values"),
+    [("timeLimit", {"seconds": "20"}), ("ctrlC", {}), ("robust", {"loss": "huber"})],
+)
+def test_why_a_short_record_was_not_profiled_is_a_keyed_clause(key: str, values: dict[str, str]) -> None:
+    """The reason a short record's profile was not checked (short_record.STOPS) is a clause of the
+    finding and of the parameters' reasons: the page words it (the lab's fits stop after 20 s: it says
+    how to fit the file without that limit), not only the English text."""
+    why = STOPS[key].format(**values)
+    clause = [{"key": "stop" + key[0].upper() + key[1:], "values": values}]
+    reason = keyed(f"a record of 0.33 of a swing does not determine it ({why})", REASONS)
+    assert reason["key"] == "shortRecord" and reason["clauses"] == clause, reason
+    note = keyed(
+        "the record spans only 0.33 of a small-swing period 2π√(l/g) = 1.5 s: length, g are not "
+        f"determined (the curvature's error bars are too narrow along the valley where they trade off; {why})"
+        ". Record at least one full swing to determine them"
+    )
+    assert note["key"] == "shortUndetermined" and note["clauses"] == clause, note

@@ -5,7 +5,10 @@ scenario (TOML, which ``pendulab run`` and the lab accept) and optionally a figu
 
 ``--sigma`` is the noise of one measured value in its kind's SI unit: one number for every kind, or
 ``KIND=VALUE`` per kind (repeatable): positions, horizontal [m]; angles, planar_angle (or angle)
-[rad]; specific_force [m/s²]; angular_speed [rad/s]."""
+[rad]; specific_force [m/s²]; angular_speed [rad/s].
+
+``--time-limit`` bounds the whole fit, as pl.fit's ``time_limit`` [s]: a number of seconds, or
+``none`` (the default: no limit)."""
 
 from __future__ import annotations
 
@@ -96,6 +99,19 @@ def _number(text: str, what: str) -> float:
     return value
 
 
+def _time_limit(text: str) -> float | None:
+    """``--time-limit`` as pl.fit takes it: None for ``none``, else seconds in (0, 1e9)."""
+    if text.strip().lower() == "none":
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not 0.0 < value < 1e9:
+        _fail(f"--time-limit {text[:40]!r}: give a number of seconds > 0 and < 1e9, or none for no limit")
+    return value
+
+
 def _need_scipy() -> None:
     """pl.fit's least_squares: SciPy is an extra (``fit``, ``lab``), not a base dependency."""
     try:
@@ -146,6 +162,14 @@ def fit_cmd(
     plot: Annotated[
         Path | None, typer.Option(help="Save the data-and-fit figure here (.png, .svg, .pdf).")
     ] = None,
+    time_limit: Annotated[
+        str,
+        typer.Option(
+            "--time-limit",
+            metavar="SECONDS",
+            help="Bound the whole fit (search and error analysis) to this many seconds, or none.",
+        ),
+    ] = "none",
 ) -> None:
     """Fit a pendulum to measured data and print the report. Column names: t [s]; x, y, z [m] (or x, z
     seen along y, or x, y seen from above); theta, phi [rad]; angle [rad] (a planar swing);
@@ -153,6 +177,7 @@ def fit_cmd(
     Excel are read as they are (docs/fit.md)."""
     with _user_errors():
         _need_scipy()
+        limit = _time_limit(time_limit)
         if out is not None and out.suffix.lower() != ".toml":
             _fail(f"--out {str(out)!r}: the fitted scenario is written as TOML; give a name ending in .toml")
         if out is not None and not out.resolve().parent.is_dir():  # checked before the fit, as --plot
@@ -199,6 +224,7 @@ def fit_cmd(
                 loss=loss,
                 pivot=where,
                 progress=None,
+                time_limit=limit,
                 **kwargs,
             )
         for w in caught:

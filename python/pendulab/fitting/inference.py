@@ -14,6 +14,10 @@
 - for data blind to the mirror y → −y (positions seen as x, z) with the sideways motion near its
   plane, the bars of φ₀ and φ̇₀ from their profile likelihood, and a swing consistent with a planar
   one said (mirror.py).
+
+Ctrl-C during the polish or the block check ends that step and skips the profiles (their parameters
+not determined, the reason naming Ctrl-C), as Ctrl-C in the search returns the best values so far:
+the fit is returned, with a warning naming Ctrl-C.
 Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
 """
 
@@ -71,7 +75,8 @@ def conclude(
     """The polish, the error analysis (identify.py) with the goodness of fit (goodness.py), the
     warnings, and the :class:`FitResult`."""
     problem, free, sig = search.problem, search.free, search.sigma
-    u, r, jac, positive = _polished(search, u, interrupted)
+    stopped: list[str] = []  # the steps Ctrl-C cut short (module doc)
+    u, r, jac, positive = _polished(search, u, interrupted, stopped)
     final = problem.with_free(u)
     n_res, k = r.size, len(free)
     dof = max(n_res - k, 1)
@@ -95,11 +100,12 @@ def conclude(
     chi2_p = chi2_tails(chi2, dof, ar1_rho(checks))[0] if sigma_known else None
     said = findings(checks, chi2_p, chi2, dof, robust=search.loss != "linear")
     # a misfit: the record's blocks fitted on their own, the error bars widened by their disagreement
-    blocks = (
-        None
-        if interrupted or not misfit_found(checks, chi2_p)
-        else check_blocks(search, final, ident, sigma_known)
-    )
+    blocks = None
+    if not interrupted and not stopped and misfit_found(checks, chi2_p):
+        try:
+            blocks = check_blocks(search, final, ident, sigma_known)
+        except KeyboardInterrupt:
+            stopped.append("the block check of the misfit")
     said += blocks.findings() if blocks is not None else []
     g_fit = final["g"]
     if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
@@ -136,10 +142,16 @@ def conclude(
         blocks=blocks,
     )
     # a record shorter than a swing: the profile likelihood checks the bars of the length and g
-    checkable = not interrupted and search.loss == "linear"
-    said += check_short_record(res, search, checkable)
+    checkable = not interrupted and not stopped and search.loss == "linear"
+    said += check_short_record(res, search, checkable, ctrl_c=bool(stopped))
     # data blind to the mirror y -> -y near the plane: the profile likelihood gives φ₀'s and φ̇₀'s bars
     said += check_mirror(res, search, checkable)
+    if stopped:
+        warnings.warn(
+            f"Ctrl-C stopped {' and '.join(stopped)}: returning the fit without it",
+            RuntimeWarning,
+            stacklevel=3,
+        )
     for text in said:
         warnings.warn(text, UserWarning, stacklevel=3)
     if not converged and not interrupted:
@@ -152,11 +164,12 @@ def conclude(
 
 
 def _polished(
-    search: Search, u: FloatArray, interrupted: bool
+    search: Search, u: FloatArray, interrupted: bool, stopped: list[str]
 ) -> tuple[FloatArray, FloatArray, FloatArray, Any]:
     """The optimum ``u`` after the Gauss–Newton polish (search.py; not after an interruption nor with a
-    robust loss), its weighted residual r [1], the Jacobian of r (exact forward sensitivities where
-    the core has them, else difference quotients), and which unknowns took logarithmic steps."""
+    robust loss; Ctrl-C in it keeps the search's ``u`` and is noted in ``stopped``), its weighted
+    residual r [1], the Jacobian of r (exact forward sensitivities where the core has them, else
+    difference quotients), and which unknowns took logarithmic steps."""
     problem, free, sig = search.problem, search.free, search.sigma
 
     def weighted(uu: FloatArray) -> FloatArray:
@@ -175,7 +188,10 @@ def _polished(
     jac = exact if exact is not None else jacobian(weighted, u, steps, positive)
     if search.loss == "linear" and not interrupted:
         bounds = (search.lower, search.upper)
-        u, r, jac = polish(weighted, u, r, jac, steps, positive, *bounds, search.time_up, jac_of)
+        try:
+            u, r, jac = polish(weighted, u, r, jac, steps, positive, *bounds, search.time_up, jac_of)
+        except KeyboardInterrupt:
+            stopped.append("the polish")
     return u, r, jac, positive
 
 

@@ -64,13 +64,34 @@ ASYMMETRIC = 1.5
 LEVEL = 0.95
 
 
+STOPS = {
+    "timeLimit": (
+        "the fit's time limit of {seconds} s ran out before the profile likelihood was checked; give a "
+        "larger limit (pl.fit's time_limit=, pendulab fit's --time-limit) or none (time_limit=None, "
+        "--time-limit none)"
+    ),
+    "ctrlC": "Ctrl-C stopped the fit before the profile likelihood was checked",
+    "robust": (
+        "the profile likelihood is not computed with a robust loss ({loss}); to check these bars, fit "
+        "again with loss='linear' (pendulab fit --loss linear) once the outliers are removed"
+    ),
+}
+"""Why the profile likelihood was not checked -> the English words of the reason (server/fit_words.py
+keys them, the page has its own words)."""
+
+
 class _Late(Exception):
-    """The fit's time limit passed during the check."""
+    """The fit's time limit passed during the check, or (``ctrl_c``) Ctrl-C was pressed in it."""
+
+    def __init__(self, ctrl_c: bool = False) -> None:
+        super().__init__()
+        self.ctrl_c = ctrl_c
 
 
 class _TimedRise(Rise):
     """profile.py's rise of the misfit with every refit bounded by the fit's time limit (``clock``: the
-    fit's search), raising :class:`_Late` once it has passed, before a refit or during one."""
+    fit's search), raising :class:`_Late` once it has passed, before a refit or during one, and for
+    Ctrl-C in a refit (the fit then keeps its values, as Ctrl-C in the search does)."""
 
     def __init__(self, res: Any, name: str, period: float, clock: Search) -> None:
         super().__init__(res, name, period, clock)
@@ -82,16 +103,19 @@ class _TimedRise(Rise):
             return super().__call__(c, start)
         except TimeUp:
             raise _Late from None
+        except KeyboardInterrupt:
+            raise _Late(ctrl_c=True) from None
 
 
-def check_short_record(res: Any, clock: Search, checkable: bool = True) -> list[str]:
+def check_short_record(res: Any, clock: Search, checkable: bool = True, ctrl_c: bool = False) -> list[str]:
     """For a :class:`pendulab.FitResult` ``res`` of a record shorter than :data:`SHORT_PERIODS` periods:
     the bars of the length, g and the parameters correlated with them checked by their profile
     likelihood and widened, or the parameters reported not determined (``res`` is changed in place);
     the findings to warn. ``clock``: the fit's search, whose ``time_limit`` (from the fit's start)
-    bounds every refit of the profiles; once it has passed, or when not ``checkable`` (an interrupted
-    fit, a robust loss), the profiles not finished are not computed and their parameters are not
-    determined (the finding names the time limit): their curvature bars cannot be trusted."""
+    bounds every refit of the profiles; once it has passed, at Ctrl-C during them, or when not
+    ``checkable`` (an interrupted fit, a robust loss), the profiles not finished are not computed and
+    their parameters are not determined (the finding says why: :func:`_unchecked`; ``ctrl_c``: Ctrl-C
+    stopped the error analysis before the check): their curvature bars cannot be trusted."""
     values = {**res.fixed, **res.params}
     length, g = float(values.get("length", math.nan)), float(values.get("g", math.nan))
     if res.model == "spring" or not (length > 0.0 and math.isfinite(length) and math.isfinite(g) and g != 0):
@@ -101,22 +125,25 @@ def check_short_record(res: Any, clock: Search, checkable: bool = True) -> list[
     core = [n for n in ("length", "g") if n in res.params and res.determined[n]]
     if periods >= SHORT_PERIODS:
         return []
+    stop = "ctrl_c" if ctrl_c else ""
     if not core:  # the curvature left them not determined: the other bars hold them fixed
-        return _held(res, periods, period, clock, checkable)
+        return _held(res, periods, period, clock, checkable, why=_unchecked(res, clock, stop))
     linked = _linked(res, core)
     profiled: dict[str, tuple[float, float]] = {}
     unsettled: list[str] = []
     if not checkable:
-        said = _undetermined(res, core + linked, periods, period, profiled, _unchecked(res, clock))
-        return [said, *_held(res, periods, period, clock, checkable)]
+        why = _unchecked(res, clock, stop)
+        said = _undetermined(res, core + linked, periods, period, profiled, why)
+        return [said, *_held(res, periods, period, clock, checkable, why=why)]
     try:
         for name in (core + linked)[:MAX_PROFILES]:
             profiled[name] = _profile(res, name, period, clock, unsettled)
             if not all(map(math.isfinite, profiled[name])):
                 break  # an open profile: the valley is open
-    except _Late:
-        said = _undetermined(res, core + linked, periods, period, profiled, _unchecked(res, clock, True))
-        return [said, *_held(res, periods, period, clock, checkable)]
+    except _Late as e:
+        why = _unchecked(res, clock, "ctrl_c" if e.ctrl_c else "late")
+        said = _undetermined(res, core + linked, periods, period, profiled, why)
+        return [said, *_held(res, periods, period, clock, checkable and not e.ctrl_c, why=why)]
     if any(not all(map(math.isfinite, ends)) for ends in profiled.values()):
         said = _undetermined(res, core + linked, periods, period, profiled, _open(unsettled))
         return [said, *_held(res, periods, period, clock, checkable)]
@@ -131,6 +158,7 @@ def _held(
     clock: Search,
     checkable: bool,
     done: set[str] | None = None,
+    why: str | None = None,
 ) -> list[str]:
     """Length or g fitted and not determined by the curvature. identify.py computes the others' bars
     with them free, but only to first order: along the curved valley where they move, a third of a
@@ -141,19 +169,20 @@ def _held(
     narrower); one the time limit leaves unprofiled, not determined. With the length and g
     determined and their profiles closed (``done``: those profiled), the others are profiled too: the
     curvature's bars along the same valley were too narrow (case 20, seed 31: φ̇₀ = 3.03 ± 0.56 rad/s
-    for 0.8, 4 bars off, with length and g from their profiles)."""
+    for 0.8, 4 bars off, with length and g from their profiles). ``why``: the reason given to those
+    not profiled when the check was already stopped (default: :func:`_unchecked`)."""
     if done is None and not any(n in res.params and not res.determined[n] for n in ("length", "g")):
         return []
     determined = [n for n in res.names if res.determined[n] and n not in (done or set())]
     chosen = [n for n in determined if n not in STATE_NAMES] + [n for n in determined if n in STATE_NAMES]
     profiled: dict[str, tuple[float, float]] = {}
     unsettled: list[str] = []
-    why = _unchecked(res, clock)
+    why = why or _unchecked(res, clock)
     try:
         for name in chosen if checkable else []:
             profiled[name] = _profile(res, name, period, clock, unsettled)
-    except _Late:
-        why = _unchecked(res, clock, True)
+    except _Late as e:
+        why = _unchecked(res, clock, "ctrl_c" if e.ctrl_c else "late")
     closed = {n: e for n, e in profiled.items() if all(map(math.isfinite, e))}
     unchecked = [n for n in chosen if n not in profiled]
     said = [_undetermined(res, unchecked, periods, period, {}, why)] if unchecked else []
@@ -163,16 +192,18 @@ def _held(
     return said + (_widened(res, [], [], periods, period, closed) if closed else [])
 
 
-def _unchecked(res: Any, clock: Search, late: bool = False) -> str:
+def _unchecked(res: Any, clock: Search, stop: str = "") -> str:
     """Why a profile was not computed or not finished: the fit's time limit (named, with how to raise
-    it; ``late``: a refit stopped for it, maybe a Jacobian's run ahead of it), or the fit stopped
-    before the check (Ctrl-C, or a robust loss)."""
+    it in Python and on the command line; ``stop`` "late": a refit stopped for it, maybe a Jacobian's
+    run ahead of it), Ctrl-C (``stop`` "ctrl_c": in a refit; or in the search), or a robust loss,
+    with which the profiles are not computed (server/fit_words.py keys each: :data:`STOPS`)."""
     limit = clock.time_limit
-    if limit is not None and (late or clock.time_up() or "time limit" in str(res.message)):
-        return (
-            f"the fit's time limit of {limit:g} s ran out before the profile likelihood was checked; "
-            "give pl.fit a larger time_limit, or time_limit=None for none"
-        )
+    if clock.loss != "linear":  # never profiled, whatever else stopped the fit
+        return STOPS["robust"].format(loss=clock.loss)
+    if stop == "ctrl_c" or (stop != "late" and "Ctrl-C" in str(res.message)):
+        return STOPS["ctrlC"]
+    if limit is not None and (stop == "late" or clock.time_up() or "time limit" in str(res.message)):
+        return STOPS["timeLimit"].format(seconds=f"{limit:g}")
     return "the fit stopped before the profile likelihood was checked"
 
 

@@ -139,10 +139,15 @@ CLAUSES: list[tuple[str, re.Pattern[str]]] = [
     # blocks.BlockCheck.damping_law (pendulab/fitting/blocks.py): after the blocks' finding
     ("dampingDry", _p("as dry friction makes: fit '{param:w}' beside 'damping'")),
     ("dampingDrag", _p("as air drag makes: fit '{param:w}' beside 'damping'")),
+    # short_record.STOPS (pendulab/fitting/short_record.py): why a short record's profile was not checked,
+    # in its finding and in the parameters' reasons
+    ("stopTimeLimit", _p("the fit's time limit of {seconds} s ran out before the profile likelihood")),
+    ("stopCtrlC", _p("Ctrl-C stopped the fit before the profile likelihood was checked")),
+    ("stopRobust", _p("the profile likelihood is not computed with a robust loss ({loss:w})")),
 ]
 """Clauses a warning may carry after its own words (anywhere in it) -> the pattern of their English
-words: a note lists those it has as ``clauses``, each ``{"key", "values"}``, which the page words after
-the note's own words."""
+words: a note (and a parameter's reason) lists those it has as ``clauses``, each ``{"key", "values"}``,
+which the page words after the note's own words."""
 
 REASONS: list[tuple[str, re.Pattern[str]]] = [
     ("notFinite", _p("the model's response to it is not finite at the fit")),
@@ -168,15 +173,17 @@ def _values(m: re.Match[str]) -> dict[str, str]:
 def keyed(text: str, table: list[tuple[str, re.Pattern[str]]] = NOTES) -> dict[str, Any]:
     """``text`` (one warning, whitespace collapsed) as ``{"key", "values", "text"}``; ``key`` None when
     no pattern of ``table`` matches it. A warning (``table`` NOTES) also gets ``clauses``: those of
-    :data:`CLAUSES` it contains, in their order in it."""
+    :data:`CLAUSES` it contains, in their order in it, and so does a reason (``table`` REASONS) that has
+    any."""
     text = " ".join(text.split())
     for key, pattern in table:
         m = pattern.match(text)
         if m is not None:
             out: dict[str, Any] = {"key": key, "values": _values(m), "text": text}
-            if table is NOTES:
+            if table is NOTES or table is REASONS:
                 found = [(c.start(), k, _values(c)) for k, p in CLAUSES if (c := p.search(text)) is not None]
-                out["clauses"] = [{"key": k, "values": v} for _, k, v in sorted(found)]
+                if found or table is NOTES:
+                    out["clauses"] = [{"key": k, "values": v} for _, k, v in sorted(found)]
             return out
     return {"key": None, "values": {}, "text": text}
 

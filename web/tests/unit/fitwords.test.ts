@@ -72,4 +72,15 @@ describe('fit words', () => {
     setLanguage('en');
     expect(fitParamLine('mass', { value: 1, stderr: null, unit: 'kg', determined: false })).toBe('mass m = 1.00000 kg (not determined)');
   });
+
+  it("a short record's reason says, in the language of the page, how to fit it past the lab's time limit", () => {
+    const clause = { key: 'stopTimeLimit', values: { seconds: '20' } };
+    const length = { value: 0.4, stderr: null, unit: 'm', determined: false, reason: { key: 'shortRecord', values: { periods: '0.33' }, clauses: [clause] } };
+    setLanguage('de');
+    expect(fitParamLine('length', length)).toMatch(/enden nach 20 s, .*pendulab fit DATEI --time-limit none/);
+    setLanguage('fr');
+    expect(fitParamLine('length', length)).toMatch(/s’arrêtent après 20 s, .*pendulab fit FICHIER --time-limit none/);
+    setLanguage('en');
+    expect(fitParamLine('length', length)).toMatch(/does not determine it; the lab's fits stop after 20 s, .*pendulab fit FILE --time-limit none/);
+  });
 });
