@@ -122,7 +122,9 @@ class RunOptions:
     """How to run (keywords only; the method's dt [s], rtol, atol and projection default to the
     core's ``SolveOptions``): t0, t_end [s], conserve, the save rule, the saved-bytes cap, the spring's
     order (2 or 4), a cap on steps (the crane's runs), and the RATTLE family's ``arithmetic``
-    (``"unfused"``, the default, or ``"fused"``; ``Solver``, ``Stepper`` and ``EnsembleRun``)."""
+    (``"unfused"``, the default, or ``"fused"``; ``Solver``, ``Stepper`` and ``EnsembleRun``);
+    ``halved_steps``: every fixed step taken as two halves (``Solver``; the error estimate's dt/2
+    companion on a sampled pivot, docs/integrators.md)."""
 
     def __new__(
         cls,
@@ -141,6 +143,7 @@ class RunOptions:
         order: int = 2,
         max_steps: int | None = None,
         arithmetic: str = "unfused",
+        halved_steps: bool = False,
     ) -> Self: ...
     @property
     def arithmetic(self) -> str: ...

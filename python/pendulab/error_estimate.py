@@ -22,15 +22,16 @@ from .display import Row, html_table, number
 class ErrorEstimate:
     """Global errors at the saved samples.
 
-    ``position`` (N,) [m] and ``velocity`` (N,) [m/s]; ``how``: ``"richardson"`` (fixed-step methods,
-    p the method's order: the run against one at twice the step, divided by 2^p − 1, or — when that
-    coarse run is ruled out — against one at half the step, scaled by 2^p/(2^p − 1);
-    ``reference["companion"]`` is ``"2dt"`` or ``"dt/2"``, ``reference["why"]`` says why the coarse
-    run was ruled out), ``"companion"`` (DOP853: against a run at a 10× tighter tolerance, or a 10×
-    looser one at the tightest tolerance allowed) or ``"exact"`` (the true error against the exact
-    solution); ``reference`` the settings of the reference run; ``cost`` the work of the reference
-    runs relative to the plain run (right-hand side evaluations; 0.5 for "2dt", 2.5 for a "dt/2"
-    after a rejected 2dt run, 2 when the save times ruled 2dt out, ≈ 1.3 for DOP853).
+    ``position`` (N,) [m] and ``velocity`` (N,) [m/s]; ``how``: ``"richardson"`` (fixed-step methods, p
+    the method's order: the run against one at twice the step, divided by 2^p − 1, or — when that coarse
+    run is ruled out — against one at half the step, scaled by 2^p/(2^p − 1); ``reference["companion"]``
+    is ``"2dt"`` or ``"dt/2"``, ``reference["why"]`` says why the coarse run was ruled out; on a sampled
+    pivot ``reference["halved"]``: the dt/2 companion is the plain run with each (sub-)step taken as two
+    halves), ``"companion"`` (DOP853: against a run at a 10× tighter tolerance, or a 10× looser one at
+    the tightest tolerance allowed) or ``"exact"`` (the true error against the exact solution);
+    ``reference`` the settings of the reference run; ``cost`` the work of the reference runs relative to
+    the plain run (right-hand side evaluations; 0.5 for "2dt", 2.5 for a "dt/2" after a rejected 2dt
+    run, 2 when the save times ruled 2dt out, ≈ 1.3 for DOP853).
     """
 
     position: npt.NDArray[np.float64]

@@ -10,8 +10,9 @@ Saving is separate from stepping: 10⁸ steps with ``save_every=10_000`` keep on
 from __future__ import annotations
 
 import dataclasses
+import inspect
 import warnings
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -30,20 +31,7 @@ from .integrators import (
 from .memory import SAMPLE_BYTES, SAMPLE_COPIES, check_memory, saved_bytes_cap
 from .model import Pendulum, State, check_pendulum_state
 from .trajectory import Trajectory
-from .validate import (
-    LIMITS,
-    MAX_SAMPLES,
-    array,
-    choice,
-    flag,
-    integer,
-    invalid,
-    number,
-    planned_steps,
-)
-
-if TYPE_CHECKING:
-    pass
+from .validate import LIMITS, MAX_SAMPLES, array, choice, flag, integer, invalid, number, planned_steps
 
 DRIFT_TOLERANCE = 1e-2
 """The largest relative constraint error |(|x| − l)/l| an unprojected run (``rk4``, ``dop853`` with
@@ -191,7 +179,7 @@ def _with_error_estimate(
     tr = simulate(pendulum, state, t_end, **plain)
     if tr.interrupted:
         return tr
-    est = estimate(simulate, tr, state, plain | {"method": tr.method})
+    est = estimate(simulate, tr, state, plain | {"method": tr.method}, run_halved=_simulate_halved)
     return dataclasses.replace(tr, error_estimate=est, error=true_error(pendulum, state, tr))
 
 
@@ -304,9 +292,18 @@ def _run_string(pendulum: Pendulum, state: State, run: RunSettings) -> Trajector
     )
 
 
-def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajectory:
+def _simulate_halved(pendulum: Pendulum, state: State, t_end: float, **kwargs: Any) -> Trajectory:
+    """:func:`simulate` with every fixed step (each sub-step on a sampled pivot, each shortened one) taken
+    as two equal halves (``RunOptions.halved_steps``): the error estimate's dt/2 companion."""
+    given, skip = inspect.signature(simulate).parameters.items(), ("error_estimate", "accuracy")
+    defaults = {k: p.default for k, p in given if p.kind == p.KEYWORD_ONLY and k not in skip}
+    run = check_run(pendulum, t_end, **(defaults | kwargs))
+    return _run_in_core(pendulum, state, run, halved=True)
+
+
+def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings, halved: bool = False) -> Trajectory:
     """The run of a rod model in the core's ``Solver`` (``ForceSolver`` with a user force), in chunks
-    (progress bar, Ctrl-C), as a :class:`Trajectory`."""
+    (progress bar, Ctrl-C), as a :class:`Trajectory`; ``halved``: every fixed step as two halves."""
     method, t0, t_end, save_every, save_at = run.method, run.t0, run.t_end, run.save_every, run.save_at
     if pendulum.pivot_samples is not None:
         first, last = float(pendulum.pivot_samples[0][0]), float(pendulum.pivot_samples[0][-1])
@@ -346,6 +343,7 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings) -> Trajecto
         save_times=times,
         max_saved_bytes=saved_bytes_cap(run.max_saved_bytes),  # within the memory left (issue 30)
         arithmetic=run.arithmetic,
+        halved_steps=halved,
     )
     solver: Solver | ForceSolver
     if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)

@@ -139,8 +139,9 @@ pymethods_with_getters! {
             let (x0, v0) = start(&state)?;
             let s = State::on_tangent_bundle(base.params(), x0, v0).map_err(to_py)?;
             let model = Arc::new(PyForce { base, force, error: Mutex::new(None) });
-            let inner = Solver::new(Handle(model.clone()), o.t0, s, o.t_end()?, &o.solve, o.save.clone(), o.max_saved_bytes)
+            let mut inner = Solver::new(Handle(model.clone()), o.t0, s, o.t_end()?, &o.solve, o.save.clone(), o.max_saved_bytes)
                 .map_err(to_py)?;
+            inner.stepper_mut().set_halved_steps(o.halved_steps);
             if let Some(e) = model.take_error() {
                 return Err(e);
             }

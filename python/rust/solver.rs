@@ -29,6 +29,7 @@ pymethods_with_getters! {
                 .map_err(to_py)?;
             inner.stepper_mut().set_invariant_projection(o.conserve);
             inner.stepper_mut().set_arithmetic(o.arithmetic).map_err(to_py)?;
+            inner.stepper_mut().set_halved_steps(o.halved_steps);
             Ok(Self { inner })
         }
 

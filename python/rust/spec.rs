@@ -193,6 +193,9 @@ pub(crate) struct RunOptions {
     pub(crate) max_steps: Option<u64>,
     /// The RATTLE family's multiply-adds: unfused (default) or fused (`Solver`, `Stepper`).
     pub(crate) arithmetic: Arithmetic,
+    /// Every fixed step taken as two halves (`Stepper::set_halved_steps`: the error estimate's dt/2
+    /// companion on a sampled pivot; `Solver`, `ForceSolver`).
+    pub(crate) halved_steps: bool,
 }
 
 impl RunOptions {
@@ -203,7 +206,7 @@ impl RunOptions {
 }
 
 /// The keywords `RunOptions` takes, in the order of its signature (`_core.pyi`).
-const KEYWORDS: [&str; 14] = [
+const KEYWORDS: [&str; 15] = [
     "t0",
     "t_end",
     "method",
@@ -218,6 +221,7 @@ const KEYWORDS: [&str; 14] = [
     "order",
     "max_steps",
     "arithmetic",
+    "halved_steps",
 ];
 
 /// `RunOptions`' keywords as given (None: not given or None), read once from the call's keywords.
@@ -237,6 +241,7 @@ struct Keywords<'py> {
     order: Option<u32>,
     max_steps: Option<u64>,
     arithmetic: Option<String>,
+    halved_steps: Option<bool>,
 }
 
 impl<'py> Keywords<'py> {
@@ -262,6 +267,7 @@ impl<'py> Keywords<'py> {
                 "order" => k.order = Some(keyword(v, "order")?),
                 "max_steps" => k.max_steps = optional(v, "max_steps")?,
                 "arithmetic" => k.arithmetic = Some(keyword(v, "arithmetic")?),
+                "halved_steps" => k.halved_steps = Some(keyword(v, "halved_steps")?),
                 _ => {
                     return Err(PyTypeError::new_err(format!(
                         "RunOptions() got an unexpected keyword argument '{name}' (it takes {})",
@@ -303,7 +309,7 @@ impl RunOptions {
     #[new]
     #[pyo3(signature = (**keywords))]
     #[pyo3(
-        text_signature = "(*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=False, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None, arithmetic='unfused')"
+        text_signature = "(*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=False, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None, arithmetic='unfused', halved_steps=False)"
     )]
     fn new(keywords: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
         let k = Keywords::read(keywords)?;
@@ -338,6 +344,7 @@ impl RunOptions {
             order: k.order.unwrap_or(2),
             max_steps: k.max_steps,
             arithmetic,
+            halved_steps: k.halved_steps.unwrap_or(false),
         })
     }
 

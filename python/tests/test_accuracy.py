@@ -64,17 +64,30 @@ def test_the_coarse_companion_needs_save_times_on_its_grid() -> None:
     assert tr.error.max_position < 1e-4, tr.error.position
 
 
+def _sampled_pivot(t_end: float) -> tuple[pl.Pendulum, pl.State]:
+    """A pivot path sampled every 10 ms over [−0.1, t_end + 0.1] s (kinks in p̈ at the samples)."""
+    t = np.arange(-0.1, t_end + 0.105, 0.01)
+    path = np.stack([0.3 * np.sin(1.3 * t), 0.2 * np.sin(0.7 * t + 0.5), 0.1 * np.cos(2 * t)], axis=-1)
+    p = pl.Pendulum(length=1.0, g=9.81, pivot_samples=(t, path), damping=0.03)
+    return p, p.state_from_angles(theta=1.3, phi=0.9, theta_dot=0.6, phi_dot=2.5)
+
+
 def test_a_sampled_pivot_needs_its_samples_on_the_coarse_grid() -> None:
     """A fixed step holding a sample of a sampled pivot's path is split there, so a 2·dt run off the
     samples' grid splits its steps in another pattern than the plain run and the Richardson difference
     misjudges the error: at dt = 16 ms on samples every 10 ms the 2·dt estimate was 46× too low (0.022
-    of the true error; 0.64 at 3.7 ms). The samples count like save times: off the 2·dt grid, dt/2."""
-    t = np.arange(-0.1, 3.105, 0.01)
-    path = np.stack([0.3 * np.sin(1.3 * t), 0.2 * np.sin(0.7 * t + 0.5), 0.1 * np.cos(2 * t)], axis=-1)
-    p = pl.Pendulum(length=1.0, g=9.81, pivot_samples=(t, path), damping=0.03)
-    s0 = p.state_from_angles(theta=1.3, phi=0.9, theta_dot=0.6, phi_dot=2.5)
-    for dt, companion in ((1.6e-2, "dt/2"), (3.7e-3, "dt/2"), (1e-3, "2dt")):
-        tr = pl.simulate(p, s0, 3.0, method="rk4", dt=dt, save_every=10, error_estimate=True)
+    of the true error; 0.64 at 3.7 ms). The samples count like save times: off the 2·dt grid, dt/2 —
+    and that companion halves each of the plain run's (sub-)steps: a run at dt/2 splits on the samples
+    elsewhere, and with dt above the spacing its estimate read 0.70 (rk4), 0.57 (rattle) of the truth."""
+    p, s0 = _sampled_pivot(3.0)
+    cases = [
+        ("rk4", 1.6e-2, "dt/2"),
+        ("rk4", 3.7e-3, "dt/2"),
+        ("rk4", 1e-3, "2dt"),
+        ("rattle", 1.6e-2, "dt/2"),
+    ]
+    for method, dt, companion in cases:
+        tr = pl.simulate(p, s0, 3.0, method=method, dt=dt, save_every=10, error_estimate=True)
         # DOP853 ends its steps on the samples (to round-off of the independent reference, T-7.2)
         ref = pl.simulate(p, s0, 3.0, method="dop853", rtol=1e-13, atol=1e-14, save_at=tr.t)
         true = np.linalg.norm(tr.x - ref.x, axis=1)
@@ -82,10 +95,31 @@ def test_a_sampled_pivot_needs_its_samples_on_the_coarse_grid() -> None:
         est = tr.error_estimate
         assert est.reference["companion"] == companion, (dt, est.reference)
         if companion == "dt/2":
-            assert "pivot's samples" in est.reference["why"], est.reference
+            assert "pivot's samples" in est.reference["why"] and "halved" in est.reference, est.reference
         big = true > 0.1 * true.max()
         ratio = est.position[big] / true[big]
-        assert ratio.min() > 0.5 and ratio.max() < 2.0, (dt, ratio.min(), ratio.max())
+        assert ratio.min() > 0.95 and ratio.max() < 1.05, (method, dt, ratio.min(), ratio.max())
+
+
+def test_accuracy_on_a_sampled_pivot_steps_at_most_the_sample_spacing() -> None:
+    """``accuracy=`` on a sampled pivot starts RATTLE8 at most at the samples' spacing (a whole fraction
+    of it): the first guess 0.5·a^{1/8}/ω = 16 ms at a = 1e-8 split every step on the 10-ms samples
+    (1.6× the steps of dt = 10 ms, for no better accuracy), and every run of the search did so too."""
+    p, s0 = _sampled_pivot(10.0)
+    a = 1e-8
+    tr = pl.simulate(p, s0, 10.0, accuracy=a, save_every=10)
+    assert tr.method == "rattle8" and tr.options["dt"] == pytest.approx(0.01, rel=1e-12), tr.options
+    ref = pl.simulate(p, s0, 10.0, method="dop853", rtol=1e-13, atol=1e-14, save_at=tr.t)
+    true = float(np.max(np.linalg.norm(tr.x - ref.x, axis=1)))
+    assert true <= a * p.length, true
+    # honest: the estimate the search stopped on is about the true error (near the float64 floor)
+    assert 0.5 < tr.error_estimate.max_position / true < 2.0, (tr.error_estimate.max_position, true)
+    # the steps end on the samples: none split (the steps are the grid's), the run of the first guess
+    # (what the search ran before) splits each
+    assert tr.stats["steps"] == 1000, tr.stats
+    guess = 0.5 * a ** (1 / 8) / max(np.sqrt(9.81), float(np.linalg.norm(s0.v)))
+    before = pl.simulate(p, s0, 10.0, method="rattle8", dt=guess, save_every=10)
+    assert guess > 0.015 and before.stats["steps"] > 1.6 * tr.stats["steps"], (guess, before.stats)
 
 
 def test_an_unstable_coarse_run_falls_back_to_the_half_step() -> None:

@@ -14,7 +14,7 @@ use crate::integrate::rattle_kernel::Arithmetic;
 use crate::integrate::rk4::Rk4;
 use crate::integrate::rk4_angles::Rk4Angles;
 use crate::integrate::rkmk4::Rkmk4;
-use crate::integrate::{fixed_steps, FixedStep, Method, Stats, StepAcrossBreaks};
+use crate::integrate::{fixed_steps, FixedStep, Halved, Method, Stats, StepAcrossBreaks};
 use crate::model::Model;
 use crate::state::State;
 
@@ -78,6 +78,8 @@ pub struct Stepper<M: Model> {
     /// The time \[s\] the state was last known finite (the start, a new state, the last
     /// [`Stepper::check_finite`] passed): the time a divergence found later names.
     finite_at: f64,
+    /// Every fixed step taken as two halves ([`Stepper::set_halved_steps`]).
+    halved: bool,
 }
 
 impl<M: Model> Stepper<M> {
@@ -132,6 +134,7 @@ impl<M: Model> Stepper<M> {
             state,
             stats: Stats::default(),
             finite_at: t0,
+            halved: false,
         })
     }
 
@@ -172,6 +175,14 @@ impl<M: Model> Stepper<M> {
         });
     }
 
+    /// Takes every fixed step (each sub-step on a model with breaks, each shortened step) as two equal
+    /// halves ([`crate::integrate::Halved`]) when `on`: the run whose steps are exactly half of those of
+    /// the same run without, for a Richardson error estimate on a sampled pivot, whose steps split on
+    /// its samples. `stats.steps` counts the halves. No effect on `dop853`. Off by default.
+    pub fn set_halved_steps(&mut self, on: bool) {
+        self.halved = on;
+    }
+
     /// One step: `dt` for fixed-step methods, one accepted step for `dop853`.
     pub fn step(&mut self) -> Result<()> {
         self.step_towards(f64::INFINITY)
@@ -189,7 +200,7 @@ impl<M: Model> Stepper<M> {
     #[inline(always)]
     fn step_towards_here(&mut self, t_stop: f64) -> Result<()> {
         let (model, state, stats) = (&self.model, &mut self.state, &mut self.stats);
-        let t = self.t;
+        let (t, halved) = (self.t, self.halved);
         with_fixed!(&mut self.scheme, s => {
             // Full steps are exactly dt (as in `step_n`, so both paths give identical numbers); only
             // a step that would pass t_stop is shortened, and a grid point within 1e-9 dt of t_stop
@@ -205,12 +216,11 @@ impl<M: Model> Stepper<M> {
             }
             let full = t_next <= t_stop + slack;
             let h = if full { self.dt } else { t_stop - t };
-            // a model with breaks ahead splits the step on them (integrate::step_across_breaks)
-            let taken = if model.next_break(t) != f64::INFINITY {
-                model.visit(StepAcrossBreaks { scheme: s, t, h, state })?
+            let (taken, per_step) = if halved {
+                let mut halves = Halved(s);
+                (one_step(&mut halves, model, t, state, h)?, halves.evals_per_step())
             } else {
-                s.step(model, t, state, h)?;
-                1
+                (one_step(s, model, t, state, h)?, s.evals_per_step())
             };
             if full {
                 self.k += 1;
@@ -220,8 +230,8 @@ impl<M: Model> Stepper<M> {
                 self.t_anchor = t_stop;
                 self.k = 0;
             }
-            stats.steps += taken;
-            stats.rhs_evals += taken * s.evals_per_step();
+            stats.steps += taken * (1 + u64::from(halved));
+            stats.rhs_evals += taken * per_step;
             Ok(())
         }, {
             let Scheme::Dop853(d) = &mut self.scheme else { unreachable!() };
@@ -243,14 +253,21 @@ impl<M: Model> Stepper<M> {
 
     #[inline(always)]
     fn step_n_here(&mut self, n: u64) -> Result<()> {
-        let (model, state) = (&self.model, &mut self.state);
+        let (model, state, halved) = (&self.model, &mut self.state, self.halved);
         with_fixed!(&mut self.scheme, s => {
             let (k0, mut splits) = (self.k, 0);
-            let result = fixed_steps(model, s, (self.t_anchor, self.dt), n, (&mut self.k, &mut splits), state);
+            let grid = (self.t_anchor, self.dt);
+            let (result, per_step) = if halved {
+                let mut halves = Halved(s);
+                let r = fixed_steps(model, &mut halves, grid, n, (&mut self.k, &mut splits), state);
+                (r, halves.evals_per_step())
+            } else {
+                (fixed_steps(model, s, grid, n, (&mut self.k, &mut splits), state), s.evals_per_step())
+            };
             let taken = self.k - k0 + splits;
             self.t = self.t_anchor + self.k as f64 * self.dt;
-            self.stats.steps += taken;
-            self.stats.rhs_evals += taken * s.evals_per_step();
+            self.stats.steps += taken * (1 + u64::from(halved));
+            self.stats.rhs_evals += taken * per_step;
             result
         }, {
             // dop853: its step is inlined into this dispatched body (not `self.step()`, which
@@ -343,5 +360,23 @@ impl<M: Model> Stepper<M> {
         } else {
             Err(Error::Diverged { t: self.finite_at, method: self.method.info().name, dt: self.dt })
         }
+    }
+}
+
+/// One fixed step of `h` \[s\] from `t` \[s\] with `scheme`; a model with breaks ahead splits it on
+/// them ([`crate::integrate::step_across_breaks`]). Returns the (sub-)steps taken.
+#[inline(always)]
+fn one_step<M: Model, S: FixedStep>(
+    scheme: &mut S,
+    model: &M,
+    t: f64,
+    state: &mut State,
+    h: f64,
+) -> Result<u64> {
+    if model.next_break(t) != f64::INFINITY {
+        model.visit(StepAcrossBreaks { scheme, t, h, state })
+    } else {
+        scheme.step(model, t, state, h)?;
+        Ok(1)
     }
 }

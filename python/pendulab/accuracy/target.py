@@ -8,11 +8,17 @@ the error grow like t²: docs/integrators.md); when RATTLE8 stalls on round-off,
 pendulum with a user force (which the RATTLE family cannot take; the force does work).
 
 The step: a first guess dt = 0.5·a^{1/8}/ω from the motion's fastest rate ω = max(√(|g|/l), |v₀|/l)
-[1/s] (a tolerance a for DOP853), then runs with the error estimate of
+[1/s] (a tolerance a for DOP853), on a sampled pivot at most its samples' spacing Δ (the mean over the
+run) and a whole fraction Δ/n of it, then runs with the error estimate of
 :mod:`pendulab.accuracy.estimate`, each refining dt by (estimate/a)^{1/p} (times 0.8, at least ×1/2)
 until the estimate meets a. When refining no longer lowers the estimate — round-off, not truncation,
 dominates — it raises :class:`pendulab.InvalidInputError` with the best accuracy float64 reached for
 this motion. Work is bounded before every run: at most ``MAX_STEPS`` steps.
+
+A step longer than the samples' spacing is split on every sample it holds (``Model::next_break``): its
+sub-steps are as short as Δ allows, so it costs more steps than dt = Δ for no better accuracy (10 s at
+a = 1e-8, samples every 10 ms: dt = 16 ms took 1626 steps, dt = Δ 1000, with less error); Δ/n puts
+the steps' ends on uniformly spaced samples from a start on one, so no step splits at all.
 """
 
 from __future__ import annotations
@@ -20,6 +26,8 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from typing import Any
+
+import numpy as np
 
 from .._core import InvalidInputError
 from ..model import Pendulum, State
@@ -38,6 +46,23 @@ def _rate(pendulum: Pendulum, state: State) -> float:
     """The motion's fastest rate ω [1/s]: √(|g|/l) or |v₀|/l, whichever is larger."""
     speed = math.sqrt(float(sum(c * c for c in state.v)))
     return max(math.sqrt(abs(pendulum.g) / pendulum.length), speed / pendulum.length, 1e-12)
+
+
+def _spacing(pendulum: Pendulum, span: float, t0: float) -> float:
+    """A sampled pivot's sample spacing Δ [s] over the run [t0, t0 + span] (the mean, from the samples
+    next to the run: exact to round-off for uniform samples); +∞ for every other pivot."""
+    samples = pendulum.pivot_samples
+    if samples is None:
+        return math.inf
+    times = np.asarray(samples[0], dtype=float)
+    first, last = np.searchsorted(times, [t0, t0 + span])
+    lo, hi = max(int(first) - 1, 0), min(int(last), times.size - 1)
+    return float((times[hi] - times[lo]) / (hi - lo)) if hi > lo else math.inf
+
+
+def _on_samples(dt: float, spacing: float) -> float:
+    """``dt`` [s] capped at the samples' ``spacing`` [s] as its largest whole fraction Δ/n ≤ dt."""
+    return dt if not math.isfinite(spacing) else spacing / math.ceil(spacing / dt * (1 - 1e-12))
 
 
 def check_accuracy(accuracy: float) -> float:
@@ -77,7 +102,8 @@ def run_to_accuracy(
         if tr is not None:
             return tr
         raise _best(a, pendulum, history)
-    dt = 0.5 * a ** (1.0 / ORDER_RATTLE8) / _rate(pendulum, state)
+    spacing = _spacing(pendulum, span, float(kwargs.get("t0", 0.0)))
+    dt = _on_samples(0.5 * a ** (1.0 / ORDER_RATTLE8) / _rate(pendulum, state), spacing)
     for _ in range(MAX_ROUNDS):
         if span / dt > MAX_STEPS:
             raise InvalidInputError(
@@ -97,7 +123,7 @@ def run_to_accuracy(
             return _tagged(tr, a, history)
         if len(history) > 1 and err >= 0.5 * history[-2][1]:
             break  # refining no longer helps: round-off
-        dt *= min(0.5, 0.8 * (goal / err) ** (1.0 / ORDER_RATTLE8))
+        dt = _on_samples(dt * min(0.5, 0.8 * (goal / err) ** (1.0 / ORDER_RATTLE8)), spacing)
     # RATTLE8 stalled on round-off (e.g. next to the top, where each step's rounding of E becomes a
     # phase error): DOP853 with E and J₃ projected (conserve=True) from rtol 1e-12 down
     try:

@@ -77,6 +77,8 @@ struct Control {
     h: f64,
     rejected: bool,
     h_next: Option<f64>,
+    /// The start \[s\] of the last accepted step: the last time the state was known finite.
+    t_before: f64,
     /// The start's x₀, ½|v₀|² and J₃/m (invariant projection).
     targets: Option<(DVec3, f64, f64)>,
     steps: u64,
@@ -138,7 +140,9 @@ pub(super) fn run_chunk<M: Model>(job: &Job<'_, M>, first: usize, out: &mut [Sta
                     if s.is_finite() {
                         out[k * ns + ns - 1] = s;
                     } else {
-                        res.errors[k] = Some(diverged(settings, settings.t_end));
+                        // named by the last state known finite, the final step's start (its
+                        // integrator state passed the error test), not t_end
+                        res.errors[k] = Some(diverged(settings, run.ctl[l].t_before));
                     }
                 }
                 Err(err) => res.errors[k] = Some(err),
@@ -206,8 +210,16 @@ impl<'s> Lanes<'s> {
         put(&mut self.y, l, y0);
         put(&mut self.k[0], l, f0);
         let targets = set.conserve.then(|| (s.x, 0.5 * s.v.length_squared(), s.x.x * s.v.y - s.x.y * s.v.x));
-        self.ctl[l] =
-            Control { traj: Some(k), t: set.t0, h, rejected: false, h_next: None, targets, steps: 0 };
+        self.ctl[l] = Control {
+            traj: Some(k),
+            t: set.t0,
+            h,
+            rejected: false,
+            h_next: None,
+            t_before: set.t0,
+            targets,
+            steps: 0,
+        };
         Ok(())
     }
 
@@ -270,14 +282,14 @@ impl<'s> Lanes<'s> {
                 let h_new = StepControl::after_accept(h[l], root, ctl.rejected);
                 let t1 = if last[l] { stop[l] } else { ctl.t + h[l] };
                 let flags = (self.settings.options.project, self.settings.conserve, m.params().length);
-                match project_accepted(m, flags, ctl.targets, (t1, get(&y1, l)), h[l]) {
+                match project_accepted(m, flags, ctl.targets, (ctl.t, get(&y1, l)), h[l]) {
                     Ok(y) => {
                         put(&mut self.y, l, y);
                         put(&mut self.k[0], l, rhs(m, t1, y));
                         let keep = if last[l] && !ctl.rejected { ctl.h_next } else { None };
                         let h_next = keep.map_or(h_new, |p| p.max(h_new));
                         ctl.h_next = Some(h_next);
-                        (ctl.t, ctl.h, ctl.rejected) = (t1, h_next, false);
+                        (ctl.t_before, ctl.t, ctl.h, ctl.rejected) = (ctl.t, t1, h_next, false);
                         ctl.steps += 1;
                         if t1 >= t_end {
                             ended[l] = Some(Ok(y));

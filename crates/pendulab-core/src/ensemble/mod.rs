@@ -239,14 +239,21 @@ pub fn run_checked(
         }
         states.truncate(n * nt);
     }
-    if (0..n).any(|k| !states[k * nt + nt - 1].is_finite()) {
+    // a trajectory whose last sample is not finite diverged (the first such in the order of the
+    // starts): named, as a single run names it, by the time of its last finite state, not by where
+    // the run stopped
+    if let Some(k) = (0..n).find(|&k| !states[k * nt + nt - 1].is_finite()) {
+        let first_bad = states[k * nt..(k + 1) * nt].iter().position(|s| !s.is_finite()).unwrap_or(nt - 1);
         let method = match settings.method {
             Method::Rattle4 => "rattle4 (ensemble)",
             Method::Rattle6 => "rattle6 (ensemble)",
             Method::Rattle8 => "rattle8 (ensemble)",
             _ => "rattle (ensemble)",
         };
-        return Err(Error::Diverged { t: steps as f64 * dt, method, dt });
+        let last_saved = t[first_bad.saturating_sub(1)];
+        let t = single_divergence(starts[k], settings, k, (t[first_bad] / dt).round() as u64)
+            .unwrap_or(last_saved);
+        return Err(Error::Diverged { t, method, dt });
     }
     let summary = with_summary.then(|| outputs.iter().flat_map(|o| o.summary.iter().copied()).collect());
     let settle_time = plan.track.then(|| {
@@ -254,6 +261,29 @@ pub fn run_checked(
         settle_times(&last_out, steps, dt)
     });
     Ok(EnsembleResult { t, states, summary, settle_time, cancelled, steps })
+}
+
+/// The time the single run of trajectory `k` (its model, method and arithmetic: the ensemble's numbers
+/// bit for bit) names for its divergence within its first `steps` steps, checked after every step as
+/// [`crate::Solver`] checks it: the start of the step whose state was not finite. `None` when that run
+/// does not diverge there (the caller then names the last finite sample).
+fn single_divergence(start: State, settings: &RattleSettings<'_>, k: usize, steps: u64) -> Option<f64> {
+    let pick = |v: &[f64], default: f64| v.get(k.min(v.len().max(1) - 1)).copied().unwrap_or(default);
+    let params = crate::Params::new(pick(settings.length, 1.0), 1.0, pick(settings.g, 9.81)).ok()?;
+    let model =
+        crate::model::AnyModel::build("damped", params, &[("damping", pick(settings.damping, 0.0))]).ok()?;
+    let options =
+        crate::SolveOptions { method: settings.method, dt: settings.dt, ..crate::SolveOptions::default() };
+    let mut single = crate::Stepper::new(model, 0.0, start, &options).ok()?;
+    single.set_arithmetic(settings.arithmetic).ok()?;
+    for _ in 0..steps {
+        match single.step().and_then(|_| single.check_finite()) {
+            Ok(()) => {}
+            Err(Error::Diverged { t, .. }) => return Some(t),
+            Err(_) => return Some(single.t()),
+        }
+    }
+    None
 }
 
 /// What a worker keeps of a block after running it: its trajectories' summaries and settle records

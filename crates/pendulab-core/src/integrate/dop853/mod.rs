@@ -87,22 +87,24 @@ pub(crate) fn step_end<M: Model>(model: &M, t0: f64, t_stop: f64) -> f64 {
     }
 }
 
-/// The accepted y₁ at `t1` [s] after a step of `h` [s], projected onto TS² of length `length` [m]
+/// The accepted y₁ of a step of `h` [s] from `t0` [s], projected onto TS² of length `length` [m]
 /// when `project` is on, and then onto the start's energy and J₃ (`targets`, where the model keeps
-/// them) when `invariants` is on; shared with the vectorised ensemble.
+/// them) when `invariants` is on; shared with the vectorised ensemble. A y₁ that cannot be projected
+/// (|x| zero or not finite) is [`Error::Diverged`] naming `t0`, the time of the last good state (as
+/// every other divergence does), not the step's end.
 #[inline(always)]
 pub(crate) fn project_accepted<M: Model>(
     model: &M,
     (project, invariants, length): (bool, bool, f64),
     targets: Option<(DVec3, f64, f64)>,
-    (t1, y1): (f64, Y6),
+    (t0, y1): (f64, Y6),
     h: f64,
 ) -> Result<Y6> {
     if !project {
         return Ok(y1);
     }
     let mut p = project_onto_tangent_bundle(length, y1.x, y1.v).ok_or(Error::Diverged {
-        t: t1,
+        t: t0,
         method: "dop853",
         dt: h,
     })?;
@@ -347,7 +349,7 @@ impl Dop853 {
         stats: &mut Stats,
     ) -> Result<()> {
         let flags = (self.project, self.invariants, self.length);
-        let y1 = project_accepted(model, flags, self.targets, (t1, y1), h)?;
+        let y1 = project_accepted(model, flags, self.targets, (t0, y1), h)?;
         let f1 = rhs(model, t1, y1);
         stats.rhs_evals += 1;
         self.k[STAGES] = f1;
@@ -358,5 +360,33 @@ impl Dop853 {
         self.y_new = y1;
         self.dense = None;
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::model::IdealPendulum;
+
+    #[test]
+    fn a_step_that_cannot_be_projected_names_its_start_the_last_good_state() {
+        // |x| = 0 or not finite after an accepted step: no point of TS² to project to. Named was
+        // the step's end t1 (0.375 s here), a time no state was ever computed at; now its start,
+        // as the controller's own divergence (`StepControl::trial`) and every other method name it
+        let m = IdealPendulum::new(1.0, 1.0, 9.81).unwrap();
+        let mut d = Dop853::new(1e-10, 1e-12, true, f64::INFINITY, None).unwrap();
+        d.length = 1.0;
+        let y0 = Y6 { x: DVec3::new(0.0, 0.0, -1.0), v: DVec3::X };
+        for x in [DVec3::ZERO, DVec3::new(f64::INFINITY, 0.0, 0.0), DVec3::splat(1e300)] {
+            let y1 = Y6 { x, v: DVec3::X };
+            let e = d.accept(&m, (0.25, y0), (0.375, y1), 0.125, &mut Stats::default()).unwrap_err();
+            assert!(
+                matches!(e, Error::Diverged { t, method: "dop853", dt } if t == 0.25 && dt == 0.125),
+                "{e}"
+            );
+        }
+        // without projection nothing is checked here (the solver checks the saved state)
+        let y1 = Y6 { x: DVec3::ZERO, v: DVec3::X };
+        assert!(project_accepted(&m, (false, false, 1.0), None, (0.25, y1), 0.125).is_ok());
     }
 }
