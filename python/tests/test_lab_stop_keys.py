@@ -3,8 +3,9 @@
 computed, where the session pauses — keyed ``integration_stopped`` with its cause's key (the advice for the
 method that diverged: ``diverged``, ``diverged_rattle``, …); ``Session.advance()`` and
 ``take_pending_steps()`` called from Python raise that keyed error and leave nothing of the stop behind;
-an unknown model or parameter, a model that runs only offline and too many waiting steps are keyed in
-English, German and French. SI units: m, m/s, s, m/s²."""
+an unknown model or parameter, a model that runs only offline, too many waiting steps, a method the model
+does not run and a crane command outside the crane mode are keyed in English, German and French; a key's
+time is the English words' time (12 significant digits). SI units: m, m/s, s, m/s²."""
 
 from __future__ import annotations
 
@@ -152,3 +153,62 @@ def test_too_many_waiting_steps_are_keyed() -> None:
     assert (e.value.key, e.value.values) == ("still_stepping", {"waiting": "1000000", "most": "1000000"})
     assert str(e.value).startswith("still stepping: 1000000 steps are waiting")
     assert _page_words("fr", "still_stepping", e.value.values).startswith("calcul en cours : 1000000 pas")
+
+
+@pytest.mark.parametrize(
+    ("texts", "key", "values", "de", "fr"),
+    [
+        (
+            ['{"type": "set_model", "model": "spring"}', '{"type": "set_method", "method": "dop853"}'],
+            "method_not_for_spring",
+            {"method": "dop853", "model": "spring", "available": "rattle, rattle4"},
+            "das Verfahren dop853 kann das Modell spring nicht rechnen (es verlässt die Kugel: ",
+            "la méthode dop853 ne peut pas calculer le modèle spring (il quitte la sphère : ",
+        ),
+        (
+            ['{"type": "set_model", "model": "string"}', '{"type": "set_method", "method": "rk4"}'],
+            "method_not_for_string",
+            {"method": "rk4", "model": "string"},
+            "das Verfahren rk4 kann das Modell ",
+            "la méthode rk4 ne peut pas calculer le modèle ",
+        ),
+        (
+            ['{"type": "crane", "move": [1, 0]}'],
+            "not_crane",
+            {"model": "ideal"},
+            "nicht im Kranmodus (das Labor rechnet das Modell ",
+            "pas en mode grue (le labo calcule le modèle ",
+        ),
+    ],
+)
+def test_a_method_the_model_does_not_run_and_a_crane_command_outside_the_crane_mode_are_keyed(
+    texts: list[str], key: str, values: dict[str, str], de: str, fr: str
+) -> None:
+    # both were the core's English words alone (Error::Refused), left in English on a German or French page;
+    # the page shows the model by its name in the page's language (serverWords), filled raw here
+    with LabClient(create_app("rosette")).websocket_connect("/ws") as ws:
+        for text in texts:
+            ws.send_text(text)
+        n: dict[str, Any] = until(ws, lambda k, v: k == "json" and v["type"] == "error")
+    assert n.get("key") == key, n
+    assert values.items() <= n["values"].items(), n["values"]
+    assert "{" not in message(key, **n["values"])  # every placeholder of the English words filled
+    assert _page_words("de", key, n["values"]).startswith(de)
+    assert _page_words("fr", key, n["values"]).startswith(fr)
+
+
+def test_the_time_of_a_stop_is_the_same_in_every_language() -> None:
+    # a time off a round grid (dt = 0.0123457 s): the key's t was rounded to 4 decimals (0.0617 s where the
+    # English words said 0.0617285 s), so a German or French page named another time than the English one
+    s = Session(resolve_scenario("rosette"))
+    s.apply(parse_command('{"type": "set_params", "g": 1000}'))
+    s.apply(parse_command('{"type": "set_method", "method": "rk4_angles", "dt": 0.0123457}'))
+    with pytest.raises(CommandError) as e:
+        for _ in range(40):
+            s.advance(0.1)
+    t = e.value.values["t"]
+    assert (e.value.key, e.value.values["why"]) == ("integration_stopped", "diverged")
+    assert f"after t = {t} s " in str(e.value) and float(t) == pytest.approx(s.t, rel=1e-11)
+    assert len(t.split(".")[1]) > 4, t  # more digits than 4 decimals hold
+    for lang in ("en", "de", "fr"):
+        assert f"t = {t} s" in _page_words(lang, "diverged", e.value.values)

@@ -230,7 +230,8 @@ pub enum Error {
     Refused(String),
     /// A request a live session cannot carry out, said in full (`words`), with the message key and values
     /// a page words it by in its language (python/pendulab/server/messages.json: an unknown parameter, a
-    /// model the lab does not run, too many steps waiting).
+    /// model the lab does not run, too many steps waiting, a method the model does not run, a crane
+    /// command outside the crane mode).
     #[error("{words}")]
     RefusedKeyed {
         /// The English words.
@@ -245,10 +246,11 @@ pub enum Error {
 impl Error {
     /// The message key and values of an error of a common kind, for a page that words it in its
     /// language (the lab server's `messages.json`; docs/web.md, "Languages"), or None (the English
-    /// words alone). Times \[s\] to 4 decimals, step sizes \[s\] and residuals to 4 significant digits,
+    /// words alone). Times \[s\] as the English words write them ([`Time`]: 12 significant digits, so a
+    /// page in any language names the same time), step sizes \[s\] and residuals to 4 significant digits,
     /// the value of a parameter as given, each as a string written by [`Shown`].
     pub fn key(&self) -> Option<(&'static str, Vec<(&'static str, String)>)> {
-        let t = |t: f64| Shown((t * 1e4).round() / 1e4).to_string();
+        let t = |t: f64| Time(t).to_string();
         let e = |x: f64| Shown(format!("{x:.3e}").parse().unwrap_or(x)).to_string();
         Some(match self {
             Error::StepSizeUnderflow { t: at, h, .. } => {

@@ -99,3 +99,26 @@ fn a_stopped_run_is_keyed_with_its_cause() {
     let plain = Error::Stopped { cause: Box::new(Error::Crane { reason: "slack".into() }) };
     assert_eq!(plain.key().unwrap().1, vec![("detail", "crane: slack".to_string())]);
 }
+
+/// A message key's time is the time of the English words (12 significant digits, [`Time`]), so that a page
+/// in another language names the same time: it was rounded to 4 decimals (1000.0000001 s became 1000 s,
+/// 1.23456789 s 1.2346 s, 3e-5 s 0).
+#[test]
+fn a_keys_time_is_the_time_of_the_words() {
+    for t in [1000.0000001, 1.23456789, 3e-5, 0.1 + 0.05, 123456.7890123456] {
+        let shown = Time(t).to_string();
+        let cases = [
+            Error::Diverged { t, method: "rattle", dt: 0.01 },
+            Error::StepSizeUnderflow { t, h: 1e-15, rtol: 1e-9, atol: 1e-12 },
+            Error::PoleSingularity { t, theta: 1e-7, sin_theta: 1e-7, limit: 1e-6 },
+            Error::ReducedFlowPole { t, sigma1: 1.0 },
+        ];
+        for e in cases {
+            let values = e.key().unwrap().1;
+            assert_eq!(values.iter().find(|(k, _)| *k == "t").unwrap().1, shown, "{e}");
+            assert!(e.to_string().contains(&format!("t = {shown} s")), "{e}");
+            let stopped = Error::Stopped { cause: Box::new(e) }.key().unwrap().1;
+            assert!(stopped.contains(&("t", shown.clone())), "{stopped:?}");
+        }
+    }
+}

@@ -150,3 +150,59 @@ fn the_status_says_an_adaptive_runs_tolerances() {
     assert_eq!(status["adaptive"], true);
     assert_eq!((status["rtol"].as_f64(), status["atol"].as_f64()), (Some(1e-8), Some(1e-11)));
 }
+
+/// A method a model does not run in the lab, and a crane command outside the crane mode, are refused
+/// keyed (messages.json), with the reason's key for the model, so that a page words them in its
+/// language; they were plain English (`Error::Refused`), and the crane was told that "its taut phases need
+/// a fixed-step method" (the string's reason).
+#[test]
+fn a_method_the_model_does_not_run_and_a_crane_command_outside_the_crane_mode_are_keyed() {
+    use pendulab_core::live::wire::parse_command;
+    let mut session = LiveSession::new(setup("ideal", Method::Rattle, 1e-3)).unwrap();
+    let key = |e: pendulab_core::Error| {
+        let (key, values) = e.key().expect("keyed");
+        (
+            key,
+            values.into_iter().map(|(k, v)| format!("{k}={v}")).collect::<Vec<_>>().join("; "),
+            e.to_string(),
+        )
+    };
+    let crane = parse_command(r#"{"type": "crane", "move": [1, 0]}"#, &|_| Err(String::new())).unwrap();
+    let (k, values, words) = key(session.apply(crane.clone()).unwrap_err());
+    assert_eq!((k, values.as_str()), ("not_crane", "model=ideal"));
+    assert_eq!(
+        words,
+        r#"not in the crane mode (the session runs the "ideal" model): send {"type": "crane", "on": true} first"#
+    );
+    let dop853 = Command::SetMethod { method: Some(Method::Dop853), dt: None };
+    for (model, expected, reason) in [
+        ("spring", "method_not_for_spring", "(it leaves the sphere: "),
+        ("string", "method_not_for_string", "(its taut phases need a fixed-step method that keeps TS²)"),
+    ] {
+        session.apply(Command::SetModel { model: model.into(), params: vec![] }).unwrap();
+        let (k, values, words) = key(session.apply(dop853.clone()).unwrap_err());
+        let available = pendulab_core::live::methods_for(model).unwrap().join(", ");
+        assert_eq!(k, expected);
+        assert_eq!(values, format!("method=dop853; model={model}; available={available}"));
+        assert!(
+            words.starts_with(&format!("method \"dop853\" cannot run the \"{model}\" model {reason}")),
+            "{words}"
+        );
+        assert!(words.ends_with(&format!("; use one of {available}")), "{words}");
+        assert_eq!(session.method, Method::Rattle, "unchanged");
+    }
+    session
+        .apply(parse_command(r#"{"type": "crane", "on": true}"#, &|_| Err(String::new())).unwrap())
+        .unwrap();
+    let (k, values, words) =
+        key(session.apply(Command::SetMethod { method: Some(Method::Rattle), dt: None }).unwrap_err());
+    assert_eq!(
+        (k, values.as_str()),
+        ("method_not_for_crane", "method=rattle; model=crane; available=dop853")
+    );
+    assert!(
+        words.contains("crane integrator") && !words.contains("taut") && words.ends_with("; use dop853"),
+        "{words}"
+    );
+    assert!(session.apply(crane).unwrap().is_none(), "in the crane mode the move is taken");
+}

@@ -29,7 +29,6 @@ const EN = {
   residual: 'Residual sway (largest in the last 10 s)',
   readout: 'Trolley at x = {x} m, y = {y} m · rope {l} m',
   predicted: 'Last move: residual sway {u}° without shaping, {s}° with {shaper} (linear theory)',
-  notCrane: 'not in the crane mode',
 } as const;
 
 export type CraneWord = keyof typeof EN;
@@ -59,7 +58,6 @@ const DE: Table = {
   residual: 'Restpendeln (größter Winkel der letzten 10 s)',
   readout: 'Laufkatze bei x = {x} m, y = {y} m · Seil {l} m',
   predicted: 'Letzte Fahrt: Restpendeln {u}° ohne Formung, {s}° mit {shaper} (lineare Theorie)',
-  notCrane: 'nicht im Kranmodus',
 };
 
 const FR: Table = {
@@ -86,7 +84,6 @@ const FR: Table = {
   residual: 'Balancement résiduel (le plus grand des 10 dernières s)',
   readout: 'Chariot en x = {x} m, y = {y} m · câble {l} m',
   predicted: 'Dernier déplacement : balancement résiduel {u}° sans mise en forme, {s}° avec {shaper} (théorie linéaire)',
-  notCrane: 'pas en mode grue',
 };
 
 export const CRANE_WORDS: Record<Lang, Table> = { en: EN, de: DE, fr: FR };

@@ -5,6 +5,7 @@
 import { describe, expect, it } from 'vitest';
 import messages from '../../../python/pendulab/server/messages.json';
 import { LANGUAGES, httpProblem, scenarioWords, serverWords, setLanguage } from '../../src/i18n';
+import { CRANE_WORDS } from '../../src/i18n/cranewords';
 import { EN } from '../../src/i18n/en';
 import { parseNotice } from '../../src/protocol';
 
@@ -142,6 +143,35 @@ describe('advice and rarer refusals in every language', () => {
     setLanguage('fr');
     expect(serverWords(n('unknown_parameter', { model: 'damped', name: 'latitude', available: 'damping, amplitude' }))).toMatch(/n’a pas de paramètre .* ; ses paramètres : damping, amplitude$/);
     expect(serverWords(n('not_lab_model', { model: 'sampled_pivot', available: 'ideal' }))).toMatch(/ne tourne pas dans le labo \(utiliser pendulab run\) ; les modèles du labo : ideal$/);
+    setLanguage('en');
+  });
+
+  it('a method the model does not run (its reason for that model) and a crane command outside the crane mode', () => {
+    // as the core sends them (crates/pendulab-core/src/live: method_refused, LiveSession::crane); plain English before
+    const n = (key: string, values: Record<string, string>) => ({ message: 'English', key, values });
+    const spring = n('method_not_for_spring', { method: 'dop853', model: 'spring', available: 'rattle, rattle4' });
+    const string = n('method_not_for_string', { method: 'rk4', model: 'string', available: 'rattle, rkmk4' });
+    const crane = n('method_not_for_crane', { method: 'rattle', model: 'crane', available: 'dop853' });
+    const notCrane = n('not_crane', { model: 'ideal' });
+    const words = (lang: 'en' | 'de' | 'fr') => {
+      setLanguage(lang);
+      return [serverWords(spring), serverWords(string), serverWords(crane), serverWords(notCrane)];
+    };
+    const en = words('en');
+    expect(en[0]).toBe('method dop853 cannot run the spring model (it leaves the sphere: rattle runs Störmer–Verlet (order 2), rattle4 its triple jump (order 4)); use one of rattle, rattle4');
+    expect(en[3]).toBe('not in the crane mode (the lab runs the ideal model): switch it on first with the button “Crane mode”');
+    const de = words('de');
+    expect(de[0]).toBe('das Verfahren dop853 kann das Modell Schwingfeder nicht rechnen (es verlässt die Kugel: rattle rechnet Störmer–Verlet (Ordnung 2), rattle4 dessen Triple-Jump-Komposition (Ordnung 4)); eines von rattle, rattle4 wählen');
+    expect(de[1]).toMatch(/^das Verfahren rk4 kann das Modell .* nicht rechnen \(seine straffen Phasen brauchen ein Verfahren mit festem Schritt, das TS² einhält\); eines von rattle, rkmk4 wählen$/);
+    expect(de[2]).toMatch(/\(der Kranmodus rechnet seine Last mit dem Kran-Integrator, .*\); dop853 wählen$/);
+    const fr = words('fr');
+    expect(fr[1]).toMatch(/^la méthode rk4 ne peut pas calculer le modèle .* \(ses phases tendues demandent une méthode à pas fixe qui préserve TS²\) ; choisir parmi rattle, rkmk4$/);
+    expect(fr[2]).toContain('(le mode grue calcule sa charge avec l’intégrateur de grue');
+    // the crane's refusal names the button that switches the crane mode on, as the crane panel labels it
+    for (const [lang, said] of [['en', en[3]], ['de', de[3]], ['fr', fr[3]]] as const) expect(said).toContain(CRANE_WORDS[lang].on);
+    expect(de[3]).toMatch(/^nicht im Kranmodus \(das Labor rechnet das Modell .+\): ihn zuerst mit der Schaltfläche „Kranmodus“ einschalten$/);
+    expect(fr[3]).toMatch(/^pas en mode grue \(le labo calcule le modèle .+\) : l’activer d’abord avec le bouton « Mode grue »$/);
+    for (const said of [...de, ...fr]) expect(said).not.toMatch(/cannot run|not in the crane|\{/);
     setLanguage('en');
   });
 });

@@ -76,6 +76,34 @@ fn no_parameter(model: &'static str, key: &str, own: &[&str]) -> Error {
     }
 }
 
+/// The refusal of `method` for `model`, which runs only the methods `allowed` in the lab, keyed by why
+/// (messages.json: `method_not_for_spring`, `method_not_for_string`, `method_not_for_crane`; values
+/// method, model, available), so that a page words the reason in its language too.
+fn method_refused(model: &'static str, method: &str, allowed: &[&str]) -> Error {
+    let (key, what, use_) = match model {
+        "spring" => (
+            "method_not_for_spring",
+            "it leaves the sphere: rattle runs Störmer–Verlet (order 2), rattle4 its triple jump (order 4)",
+            "use one of",
+        ),
+        CRANE => (
+            "method_not_for_crane",
+            "the crane mode steps its load with the crane integrator, adaptive DOP853 with projection onto \
+             the rope",
+            "use",
+        ),
+        _ => {
+            ("method_not_for_string", "its taut phases need a fixed-step method that keeps TS²", "use one of")
+        }
+    };
+    let available = allowed.join(", ");
+    Error::RefusedKeyed {
+        words: format!("method {method:?} cannot run the {model:?} model ({what}); {use_} {available}"),
+        key,
+        values: vec![("method", method.to_string()), ("model", model.to_string()), ("available", available)],
+    }
+}
+
 impl LivePendulum {
     /// Model `name` with l \[m\], m \[kg\], g [m/s²] and own parameters by name (defaults for the rest);
     /// errors name an unknown model, an unknown parameter or a value outside the registry's limits.
@@ -242,16 +270,7 @@ impl LiveStepper {
         let name = method.info().name;
         if let Some(allowed) = methods_for(p.model) {
             if !allowed.contains(&name) {
-                let what = if p.model == "spring" {
-                    "it leaves the sphere: rattle runs Störmer–Verlet (order 2), rattle4 its triple jump (order 4)"
-                } else {
-                    "its taut phases need a fixed-step method that keeps TS²"
-                };
-                return Err(Error::Refused(format!(
-                    "method {name:?} cannot run the {:?} model ({what}); use one of {}",
-                    p.model,
-                    allowed.join(", ")
-                )));
+                return Err(method_refused(p.model, name, &allowed));
             }
         }
         Ok(match p.model {

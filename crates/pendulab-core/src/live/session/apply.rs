@@ -157,9 +157,15 @@ impl LiveSession {
             switched = Some(self.record());
         }
         let LiveStepper::Crane(crane) = &mut self.stepper else {
-            return Err(Error::Refused(
-                "not in the crane mode: send {\"type\": \"crane\", \"on\": true} first".into(),
-            ));
+            let model = self.pendulum.model;
+            return Err(Error::RefusedKeyed {
+                words: format!(
+                    "not in the crane mode (the session runs the {model:?} model): send \
+                     {{\"type\": \"crane\", \"on\": true}} first"
+                ),
+                key: "not_crane",
+                values: vec![("model", model.to_string())],
+            });
         };
         crane.apply(&c)?;
         if let Some(rope) = c.rope {
