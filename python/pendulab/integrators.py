@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 from ._core import InvalidInputError, fused_is_fast
 from ._core import methods as _methods
 from .model import Pendulum
-from .validate import LIMITS, abbreviate, choice, did_you_mean, finite, flag, number
+from .validate import LIMITS, choice, did_you_mean, finite, flag, number, show
 
 if TYPE_CHECKING:
     from ._core import MethodInfo, ParamSpec
@@ -52,10 +52,12 @@ def check_settings(
     t0: Any,
 ) -> tuple[str, float | None, float, float, bool, bool, float]:
     """The shared settings of :func:`simulate` and :class:`Stepper` checked against :mod:`pendulab.validate`:
-    method (a registered name), dt [s] (None or the dt limit, for every method: an adaptive method's
-    first step, never 0; None lets it choose), rtol, atol (finite; the core checks their ranges),
-    project and conserve (bools), t0 [s] (the time limit)."""
-    method = choice("method", method, method_names())
+    method (a registered name; any other value is refused with :func:`unknown_method`'s message, as at
+    every entry point), dt [s] (None or the dt limit, for every method: an adaptive method's first step,
+    never 0; None lets it choose), rtol, atol (finite; the core checks their ranges), project and
+    conserve (bools), t0 [s] (the time limit)."""
+    if not isinstance(method, str) or method not in method_names():  # the message of every entry point
+        raise InvalidInputError(unknown_method(method))
     if dt is not None:
         dt = number("dt", dt, _dt_limit(method))
     rtol = finite("rtol", rtol, "a finite relative tolerance (dop853)")
@@ -117,12 +119,12 @@ def method_names() -> list[str]:
     return [m["name"] for m in _methods()]
 
 
-def unknown_method(name: str) -> str:
-    """The message refusing a method ``name`` that is not registered: the nearest name (the same
-    but for case first; :func:`pendulab.validate.did_you_mean`) and the available ones."""
+def unknown_method(name: Any) -> str:
+    """The message refusing a method ``name`` that is not registered (or not a string): the nearest
+    name (the same but for case first; :func:`pendulab.validate.did_you_mean`) and the available ones."""
     names = method_names()
     hint = did_you_mean(name, names)
-    return f"unknown method {abbreviate(repr(name))}{hint}; available: {', '.join(names)}"
+    return f"unknown method {show(name)}{hint}; available: {', '.join(names)}"
 
 
 def check_arithmetic(arithmetic: Any, method: str, model: str | None = None) -> str:

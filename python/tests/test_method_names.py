@@ -47,11 +47,28 @@ START = np.array([[0.0, 0.0, -1.0, 1.0, 0.0, 0.0]])  # one start (x, v) [m, m/s]
     ("given", "hint"), [("RATTLE", "rattle"), ("Rattle4", "rattle4"), ("DOP853", "dop853")]
 )
 def test_simulate_names_the_method_in_the_right_case(given: str, hint: str) -> None:
+    """pl.simulate and pl.Stepper say what every other entry point says (integrators.unknown_method)."""
     p, s = pl.Pendulum(), pl.Pendulum().state_from_angles(theta=0.5, phi_dot=1.0)
-    with pytest.raises(pl.InvalidInputError, match=rf"invalid method = '{given}': .*did you mean '{hint}'\?"):
+    message = unknown_method(given)
+    assert message.startswith(f"unknown method '{given}' (did you mean '{hint}'?); available: rattle, ")
+    with pytest.raises(pl.InvalidInputError) as e:
         pl.simulate(p, s, 0.1, method=given)
-    with pytest.raises(pl.InvalidInputError, match=rf"did you mean '{hint}'\?"):
+    assert str(e.value) == message
+    with pytest.raises(pl.InvalidInputError) as e:
         pl.Stepper(p, s, method=given)
+    assert str(e.value) == message
+
+
+@pytest.mark.parametrize("given", [3, None, b"rattle", ["rattle"]])
+def test_stepper_and_simulate_word_a_method_that_is_no_string_as_everywhere(given: object) -> None:
+    p, s = pl.Pendulum(), pl.Pendulum().state_from_angles(theta=0.5, phi_dot=1.0)
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.Stepper(p, s, method=given)  # type: ignore[arg-type]
+    assert str(e.value) == f"unknown method {given!r}; available: {', '.join(pl.method_names())}"
+    if given is not None:  # simulate's None is its default method
+        with pytest.raises(pl.InvalidInputError) as e:
+            pl.simulate(p, s, 0.1, method=given)  # type: ignore[arg-type]
+        assert str(e.value) == unknown_method(given)
 
 
 def test_scenario_file_names_the_method_in_the_right_case() -> None:
