@@ -38,7 +38,7 @@ def test_hook_and_payload_modes_from_the_characteristic_equation() -> None:
     r = m2 / m1
     for w in modes:  # roots of L₁L₂ω⁴ − (1 + R) g (L₁ + L₂) ω² + (1 + R) g² = 0
         assert l1 * l2 * w**4 - (1 + r) * G * (l1 + l2) * w**2 + (1 + r) * G**2 == pytest.approx(0, abs=1e-9)
-    run = c.simulate(t_end=400.0, sway=(0.001, 0.0), rigging_sway=(0.002, math.pi), dt=0.05)
+    run = c.simulate(t_end=400.0, sway=(0.001, 0.0), rigging_sway=(0.002, math.pi), output_spacing=0.05)
     for w in modes:  # small swing: the nonlinear shift (∝ amplitude², 1e-3 at 0.02 rad) is ~1e-5 here
         assert _peak_frequency(run.t, run.payload[:, 0], 0.7 * w, 1.3 * w) == pytest.approx(w, rel=1e-4)
     # one body: √(g/l)
@@ -48,7 +48,7 @@ def test_hook_and_payload_modes_from_the_characteristic_equation() -> None:
 def test_adiabatic_hoisting_sway_scales_as_l_to_the_minus_three_quarters() -> None:
     hoist = crane.Hoist(t=[20.0, 620.0], length=[12.0, 4.0])
     c = crane.Crane(rope=12.0, payload_mass=1000.0, hoist=hoist)
-    run = c.simulate(t_end=680.0, sway=(0.03, 0.0), dt=0.02)
+    run = c.simulate(t_end=680.0, sway=(0.03, 0.0), output_spacing=0.02)
     before = run.sway[run.t < 20.0, 0].max()
     after = run.sway[run.t > 625.0, 0].max()
     assert before == pytest.approx(0.03, rel=1e-6)
@@ -60,7 +60,7 @@ def test_wind_step_equilibrium_and_first_peak() -> None:
     m, rope = 1000.0, 10.0
     wind = crane.Wind(velocity=(20.0, 0.0, 0.0), area=1.0, drag_coefficient=1.2, air_density=1.225)
     c = crane.Crane(rope=rope, payload_mass=m, wind=wind)
-    run = c.simulate(t_end=400.0, dt=0.01)
+    run = c.simulate(t_end=400.0, output_spacing=0.01)
     force = wind.force(20.0)
     alpha = math.atan(force / (m * G))
     theta = run.sway[:, 0]
@@ -86,7 +86,7 @@ def test_energy_balance_with_hoist_pivot_wind_and_damping(hooked: bool) -> None:
     )
     kw = {"hook_mass": 150.0, "rigging": 2.5} if hooked else {}
     c = crane.Crane(rope=9.0, pivot=path, payload_mass=800.0, wind=wind, damping=0.02, hoist=hoist, **kw)
-    run = c.simulate(t_end=30.0, sway=(0.1, 0.4), dt=0.05, rtol=1e-12, atol=1e-12)
+    run = c.simulate(t_end=30.0, sway=(0.1, 0.4), output_spacing=0.05, rtol=1e-12, atol=1e-12)
     scale = 800.0 * G * 9.0
     assert np.abs(run.energy_residual()).max() < 1e-9 * scale
     for k in ("hoist", "pivot", "wind", "damping"):
@@ -112,7 +112,7 @@ def test_residual_vibration_after_a_shaped_move_in_the_nonlinear_model() -> None
     def residual(shaper: crane.Shaper | None) -> float:
         path = crane.move(distance=5.0, v_max=0.5, a_max=0.5, shaper=shaper, t_start=1.0)
         run = crane.Crane(rope=rope, pivot=path, payload_mass=1000.0).simulate(
-            t_end=path.t_end + 30.0, dt=0.01
+            t_end=path.t_end + 30.0, output_spacing=0.01
         )
         after = run.t > path.t_end + 1.0
         x = run.offset()[after, 0]
@@ -154,10 +154,10 @@ def test_seeded_turbulence_has_its_intensity_and_repeats() -> None:
     assert w[:, 0].mean() == pytest.approx(10.0, abs=0.15)
     assert w[:, 1].std() == pytest.approx(2.0, rel=0.08)
     c = crane.Crane(rope=10.0, payload_mass=500.0, wind=wind)
-    a, b = c.simulate(t_end=20.0, dt=0.1), c.simulate(t_end=20.0, dt=0.1)
+    a, b = c.simulate(t_end=20.0, output_spacing=0.1), c.simulate(t_end=20.0, output_spacing=0.1)
     np.testing.assert_array_equal(a.payload, b.payload)
     other = crane.Crane(rope=10.0, payload_mass=500.0, wind=crane.Wind(**{**wind.__dict__, "seed": 8}))
-    assert np.abs(other.simulate(t_end=20.0, dt=0.1).payload - a.payload).max() > 1e-3
+    assert np.abs(other.simulate(t_end=20.0, output_spacing=0.1).payload - a.payload).max() > 1e-3
     assert np.abs(a.energy_residual()).max() < 1e-6 * 500 * G * 10
     with pytest.raises(InvalidInputError, match="steady wind"):
         crane.Wind(turbulence=1.0).modes()
@@ -174,7 +174,7 @@ def test_tower_and_luffing_cranes_keep_the_rope_and_the_energy_balance() -> None
         c = crane.Crane(
             rope=12.0, pivot=path, payload_mass=2000.0, hook_mass=200.0, rigging=3.0, damping=0.01
         )
-        run = c.simulate(t_end=40.0, dt=0.05, rtol=1e-11, atol=1e-11)
+        run = c.simulate(t_end=40.0, output_spacing=0.05, rtol=1e-11, atol=1e-11)
         assert np.abs(run.energy_residual()).max() < 1e-7 * 2200 * G * 12
         # the core follows the path's quintic Hermite interpolant (knots every 0.05 s): the rope ends there
         rope = np.linalg.norm(run.hook - run.pivot, axis=1)
@@ -190,7 +190,7 @@ def test_against_an_independent_planar_model_in_minimal_coordinates() -> None:
     path = crane.move(4.0, 0.6, 0.4, j_max=0.8, t_start=1.0)
     hoist = crane.Hoist(t=[2.0, 12.0], length=[10.0, 6.0])
     run = crane.Crane(rope=10.0, pivot=path, payload_mass=700.0, hoist=hoist).simulate(
-        t_end=25.0, sway=(0.05, 0.0), dt=0.05, rtol=1e-12, atol=1e-12
+        t_end=25.0, sway=(0.05, 0.0), output_spacing=0.05, rtol=1e-12, atol=1e-12
     )
 
     def rhs(t: float, y: np.ndarray) -> list[float]:

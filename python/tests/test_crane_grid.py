@@ -20,7 +20,7 @@ from pendulab.crane import grid as grid_module
 def test_grid_cells_equal_single_runs() -> None:
     zvd = crane.shaper("zvd", omega=math.sqrt(9.81 / 10.0))
     res = crane.residual_grid(
-        [8.0, 10.0, 12.0], [2.0, 10.0], [None, zvd], settle=15.0, dt=0.05, rtol=1e-10, atol=1e-10
+        [8.0, 10.0, 12.0], [2.0, 10.0], [None, zvd], settle=15.0, output_spacing=0.05, rtol=1e-10, atol=1e-10
     )
     assert res.sway.shape == (2, 3, 2) and res.labels == ("unshaped", "zvd")
     for i, s in enumerate((None, zvd)):
@@ -32,7 +32,9 @@ def test_grid_cells_equal_single_runs() -> None:
                 )
                 # start at rest before the move, on the grid's save times t_end + i dt
                 t0 = path.t_end - 0.05 * (math.ceil(path.t_end / 0.05) + 1)
-                run = c.simulate(t_end=path.t_end + 15.0, dt=0.05, t_start=t0, rtol=1e-10, atol=1e-10)
+                run = c.simulate(
+                    t_end=path.t_end + 15.0, output_spacing=0.05, t_start=t0, rtol=1e-10, atol=1e-10
+                )
                 after = run.t >= path.t_end - 1e-12
                 single = np.hypot(*run.offset()[after].T).max()
                 assert res.sway[i, j, k] == pytest.approx(single, rel=1e-6, abs=1e-9)

@@ -34,7 +34,7 @@ def test_closed_loop_moves_and_kills_the_sway_and_replays_in_3d() -> None:
     assert x[-1] == pytest.approx(5.0, abs=5e-3) and abs(v[-1]) < 5e-3
     assert np.abs(run.sway(t[t > 30])).max() < 2e-3
     replay = crane.Crane(rope=10.0, pivot=run, payload_mass=500.0).simulate(
-        t_end=40.0, dt=0.05, rtol=1e-11, atol=1e-11
+        t_end=40.0, output_spacing=0.05, rtol=1e-11, atol=1e-11
     )
     # the load's offset from the trolley is l sin θ in both models
     np.testing.assert_allclose(replay.offset()[:, 0], 10.0 * np.sin(run.sway(replay.t)), atol=1e-9)
@@ -55,7 +55,7 @@ def test_the_loop_path_has_breaks_where_its_acceleration_steps_or_kinks() -> Non
     assert u[0] == 0.6 and abs(u[1] - 0.6) < 1e-9 and u[2] < 0.6  # the clip lets go at the switch
     assert run.trolley(1.0, left=True)[2][0] == 0.0 and run.trolley(1.0)[2][0] == 0.6  # the step at t0
     c = crane.Crane(rope=10.0, pivot=run, payload_mass=500.0)
-    replay = c.simulate(t_end=30.0, dt=0.05, rtol=1e-11, atol=1e-11)
+    replay = c.simulate(t_end=30.0, output_spacing=0.05, rtol=1e-11, atol=1e-11)
     np.testing.assert_allclose(replay.offset()[:, 0], 10.0 * np.sin(run.sway(replay.t)), atol=1e-9)
     with pytest.raises(InvalidInputError, match=r"ends at t_end = 30 s, .* t_end = 40 s"):
         c.simulate(t_end=40.0)

@@ -122,8 +122,8 @@ def test_a_measured_path_from_csv(tmp_path) -> None:  # type: ignore[no-untyped-
     mid = np.linspace(0.5, 19.5, 97)
     np.testing.assert_allclose(sampled.position(mid), path.position(mid), atol=1e-9)
     np.testing.assert_allclose(sampled.acceleration(mid), path.acceleration(mid), atol=2e-3)
-    run = crane.Crane(rope=8.0, pivot=sampled).simulate(t_end=19.0, dt=0.1)
-    ref = crane.Crane(rope=8.0, pivot=path).simulate(t_end=19.0, dt=0.1)
+    run = crane.Crane(rope=8.0, pivot=sampled).simulate(t_end=19.0, output_spacing=0.1)
+    ref = crane.Crane(rope=8.0, pivot=path).simulate(t_end=19.0, output_spacing=0.1)
     np.testing.assert_allclose(run.payload, ref.payload, atol=1e-3)
     (tmp_path / "bad.csv").write_text("t,x,y,z\n0,0,0,0\n1,,0,0\n2,0,0,0\n3,0,0,0\n")
     with pytest.raises(pl.InvalidInputError, match="row 2"):
@@ -150,7 +150,7 @@ def test_a_measured_path_is_not_extrapolated_past_its_samples() -> None:
     c = crane.Crane(rope=5.0, pivot=sampled)
     with pytest.raises(pl.InvalidInputError, match=r"cover t = 0 … 2 s, .* t_end = 10 s"):
         c.simulate(t_end=10.0)
-    run = c.simulate(t_end=2.0, dt=0.5)
+    run = c.simulate(t_end=2.0, output_spacing=0.5)
     assert run.pivot[-1, 0] == pytest.approx(4.0, rel=1e-14)
     hoist = crane.Hoist([0.0, 2.0], [5.0, 4.0])
     np.testing.assert_allclose(hoist.length([2.0, 10.0]), [4.0, 4.0], rtol=1e-15)

@@ -27,13 +27,13 @@ def test_sensitivity_curves_are_the_residual_vibration(tmp_path: Path) -> None:
 
 def test_sway_top_view_and_grid(tmp_path: Path) -> None:
     path = crane.move(2.0, 0.5, 0.5, direction=(1, 1, 0))
-    run = crane.Crane(rope=5.0, pivot=path).simulate(t_end=10.0, dt=0.1)
+    run = crane.Crane(rope=5.0, pivot=path).simulate(t_end=10.0, output_spacing=0.1)
     fig = plot_sway({"run": run}, t_marks=[path.t_end])
     _, y = fig.axes[0].get_lines()[0].get_data()
     np.testing.assert_allclose(y, run.offset()[:, 0])
     top = plot_top_view({"run": run})
     np.testing.assert_allclose(top.axes[0].get_lines()[0].get_data()[1], run.payload[:, 1])
-    res = crane.residual_grid([4.0, 6.0], [2.0, 5.0], [None], settle=3.0, dt=0.1)
+    res = crane.residual_grid([4.0, 6.0], [2.0, 5.0], [None], settle=3.0, output_spacing=0.1)
     g = plot_grid(res)
     np.testing.assert_allclose(g.axes[0].get_lines()[0].get_data()[1], np.median(res.sway[0], axis=1))
     for name, f in (("s.png", fig), ("t.svg", top), ("g.pdf", g)):

@@ -39,7 +39,9 @@ def test_a_crane_scenario_runs_as_the_crane_module_runs_it() -> None:
     sc = pl.load_scenario(EXAMPLE).with_overrides(t_end=20.0)
     run = sc.run()
     direct = load_crane_file(EXAMPLE)
-    ref = direct.crane.simulate(20.0, dt=direct.output_spacing, rtol=direct.rtol, atol=direct.atol)
+    ref = direct.crane.simulate(
+        20.0, output_spacing=direct.output_spacing, rtol=direct.rtol, atol=direct.atol
+    )
     np.testing.assert_array_equal(run.payload, ref.payload)
     scale = direct.crane.payload_mass * 9.81 * 12.0
     assert np.abs(run.energy_residual()).max() < 1e-9 * scale

@@ -61,7 +61,7 @@ def test_a_trolley_move_sways_as_pendulab_crane_predicts(shaping: int) -> None:
     shaper = None if shaping == 0 else crane.shaper(("zv", "zvd")[shaping - 1], omega=omega)
     path = crane.move(distance=5.0, v_max=0.5, a_max=0.25, shaper=shaper, t_start=t0)
     run = crane.Crane(rope=ROPE, pivot=path, payload_mass=MASS, g=G).simulate(
-        t_end=last["end"] + 1.5 * period, t_start=t0, dt=0.05
+        t_end=last["end"] + 1.5 * period, t_start=t0, output_spacing=0.05
     )
     reference = run.sway[run.t >= last["end"], 0].max()
     assert records[-1, 14] == pytest.approx(5.0, abs=1e-9)  # the trolley stopped after 5 m

@@ -144,7 +144,7 @@ def residual_cmd(
             c = crane.Crane(
                 rope=rope, pivot=path, payload_mass=payload_mass, hook_mass=hook_mass, rigging=rigging, g=g
             )
-            run = c.simulate(t_end=path.t_end + settle, dt=0.02)
+            run = c.simulate(t_end=path.t_end + settle, output_spacing=0.02)
             after = run.t > path.t_end
             off = run.offset()[after]
             amps[label] = float(np.max(np.hypot(off[:, 0], off[:, 1])))

@@ -23,10 +23,13 @@ from numpy.typing import ArrayLike
 from .._core import InvalidInputError, RunOptions, crane_residual_grid
 from .._progress import tqdm
 from ..sweeps.backends import Threads, drive
+from . import _spacing
 from .paths import move
 from .shaper import FloatArray, Shaper
 
 MAX_CASES = 1_000_000
+DEFAULT_SPACING = 0.05
+"""The default ``output_spacing`` [s] of :func:`residual_grid` (its ``GridResult.sample_spacing``)."""
 CHUNK_CASES = 200
 """Cases per chunk (one shaper, a block of rope lengths × every ratio): a few tenths of a second."""
 
@@ -61,19 +64,23 @@ def residual_grid(
     rigging: float = 2.0,
     g: float = 9.81,
     settle: float = 20.0,
-    dt: float = 0.05,
+    output_spacing: float | None = None,
     rtol: float = 1e-8,
     atol: float = 1e-8,
     *,
     progress: bool | None = None,
     workers: int = 1,
+    dt: float | None = None,
 ) -> GridResult:
     """Moves the pivot by ``distance`` along x (limits ``v_max``, ``a_max``, ``j_max``), once per shaper
     (None: unshaped), for every rope length [m] × payload ratio m₂/m₁ (hook ``hook_mass`` [kg],
-    ``rigging`` [m]); the residual sway is measured every ``dt`` [s] for ``settle`` [s] after the move.
+    ``rigging`` [m]); the residual sway is sampled every ``output_spacing`` [s] (default 0.05 s; the
+    result's ``sample_spacing``) for ``settle`` [s] after the move. ``dt`` is the deprecated older name
+    of ``output_spacing`` (a DeprecationWarning; both given is an error).
     Runs in chunks (module doc): ``progress`` shows a bar (default: for more than 1000 cases),
     ``workers`` chunks run at once (each already parallel in the core). Ctrl-C returns what is done
     (NaN elsewhere, ``interrupted`` True) with a RuntimeWarning."""
+    name, spacing = _spacing.spacing("residual_grid", output_spacing, dt, DEFAULT_SPACING)
     lr = np.asarray(ropes, dtype=np.float64).ravel()
     rr = np.asarray(ratios, dtype=np.float64).ravel()
     n = len(shapers) * lr.size * rr.size
@@ -81,14 +88,18 @@ def residual_grid(
         raise InvalidInputError("give at least one rope length, one ratio and one shaper (None: unshaped)")
     if n > MAX_CASES:
         raise InvalidInputError(f"{n} cases exceed {MAX_CASES}; use a coarser grid")
-    if not (math.isfinite(settle) and 0 < settle <= 3600 and math.isfinite(dt) and 0 < dt <= settle):
-        raise InvalidInputError(f"need 0 < dt <= settle <= 3600 s, got dt = {dt!r}, settle = {settle!r}")
+    if not (
+        math.isfinite(settle) and 0 < settle <= 3600 and math.isfinite(spacing) and 0 < spacing <= settle
+    ):
+        raise InvalidInputError(
+            f"need 0 < {name} <= settle <= 3600 s, got {name} = {spacing!r}, settle = {settle!r}"
+        )
     if not (isinstance(workers, int) and 1 <= workers <= 64):
         raise InvalidInputError(f"workers = {workers!r}: an integer in [1, 64]")
     # every value checked once, up front, by the core (a bad rope or ratio fails before any work)
     crane = (hook_mass, rigging, g)
     crane_residual_grid(
-        [], lr.tolist(), rr.tolist(), crane, settle, RunOptions(dt=dt, rtol=rtol, atol=atol, max_steps=1)
+        [], lr.tolist(), rr.tolist(), crane, settle, RunOptions(dt=spacing, rtol=rtol, atol=atol, max_steps=1)
     )
     moves: list[Any] = []
     labels = []
@@ -105,7 +116,7 @@ def residual_grid(
         if cancel.is_set():
             return None
         ropes_block = lr[j : j + block].tolist()
-        options = RunOptions(dt=dt, rtol=rtol, atol=atol, max_steps=10_000_000)
+        options = RunOptions(dt=spacing, rtol=rtol, atol=atol, max_steps=10_000_000)
         return crane_residual_grid([moves[i]], ropes_block, rr.tolist(), crane, settle, options)
 
     def done(k: int, values: Any) -> None:
@@ -127,4 +138,4 @@ def residual_grid(
                 RuntimeWarning,
                 stacklevel=2,
             )
-    return GridResult(sway, lr, rr, tuple(labels), interrupted, float(dt), float(rtol), float(atol))
+    return GridResult(sway, lr, rr, tuple(labels), interrupted, float(spacing), float(rtol), float(atol))

@@ -53,7 +53,12 @@ class CraneScenario:
     def run(self) -> CraneRun:
         """Simulates the file's crane (:meth:`Crane.simulate`)."""
         return self.crane.simulate(
-            self.t_end, self.sway, self.rigging_sway, dt=self.output_spacing, rtol=self.rtol, atol=self.atol
+            self.t_end,
+            self.sway,
+            self.rigging_sway,
+            output_spacing=self.output_spacing,
+            rtol=self.rtol,
+            atol=self.atol,
         )
 
     def metadata(self, run: CraneRun | None = None) -> dict[str, Any]:

@@ -18,11 +18,14 @@ from scipy.interpolate import CubicSpline
 
 from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
 from ..validate import array
+from . import _spacing
 from .paths import Gantry, Path
 from .shaper import FloatArray
 
 MAX_SAVES = 500_000
 MAX_STEPS = 20_000_000
+DEFAULT_SPACING = 0.02
+"""The default ``output_spacing`` [s] of :meth:`Crane.simulate`."""
 
 
 class Hoist(Path):
@@ -271,26 +274,31 @@ class Crane:
         t_end: float,
         sway: tuple[float, float] = (0.0, 0.0),
         rigging_sway: tuple[float, float] | None = None,
-        dt: float = 0.02,
+        output_spacing: float | None = None,
         t_start: float = 0.0,
         rtol: float = 1e-10,
         atol: float = 1e-10,
+        *,
+        dt: float | None = None,
     ) -> CraneRun:
-        """Runs from ``t_start`` to ``t_end`` [s], saving every ``dt`` [s], from the rope at polar angle
+        """Runs from ``t_start`` to ``t_end`` [s], saving every ``output_spacing`` [s] (default 0.02 s;
+        the time between saved samples: DOP853 chooses its own steps), from the rope at polar angle
         ``sway`` = (θ₀, φ₀) [rad] and the rigging at ``rigging_sway`` (θ, φ) [rad] (default: in line
-        with the rope), moving with the pivot and the hoist.
+        with the rope), moving with the pivot and the hoist. ``dt`` is the deprecated older name of
+        ``output_spacing`` (a DeprecationWarning; both given is an error).
         Raises ``InvalidInputError`` for a slack rope or rigging, a rope length ≤ 0, bad parameters."""
+        name, spacing = _spacing.spacing("Crane.simulate", output_spacing, dt, DEFAULT_SPACING)
         t0, t1 = float(t_start), float(t_end)
         if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
             raise InvalidInputError(
                 f"t_end = {t_end!r} s must be finite and later than t_start = {t_start!r} s"
             )
         self.pivot.check_run(t0, t1)
-        dt = _positive("dt", dt, "s")
-        n = math.ceil((t1 - t0) / dt - 1e-9) + 1
+        spacing = _positive(name, spacing, "s")
+        n = math.ceil((t1 - t0) / spacing - 1e-9) + 1
         if n > MAX_SAVES:
-            raise InvalidInputError(f"{n} saved samples exceed {MAX_SAVES}; raise dt or shorten t_end")
-        save = np.minimum(t0 + dt * np.arange(n), t1)
+            raise InvalidInputError(f"{n} saved samples exceed {MAX_SAVES}; raise {name} or shorten t_end")
+        save = np.minimum(t0 + spacing * np.arange(n), t1)
         save[-1] = t1
         u = _direction("sway", sway)
         u2 = u if rigging_sway is None else _direction("rigging_sway", rigging_sway)

@@ -1,0 +1,105 @@
+"""``Crane.simulate`` and ``crane.residual_grid`` take the time between saved samples as
+``output_spacing`` [s] (it was ``dt``, read as the integrator's step: the crane's DOP853 chooses its own
+steps), as a crane file's ``[simulation] output_spacing``. ``dt=`` is still taken: the same run bit for
+bit, with a DeprecationWarning naming ``output_spacing`` at the caller's line; both given is refused
+naming both values; a bad spacing is named as written. docs/cranes.md "The crane model"."""
+
+from __future__ import annotations
+
+import warnings
+from typing import Any
+
+import numpy as np
+import pytest
+
+from pendulab import InvalidInputError, crane
+
+DEPRECATED = (
+    r"\(dt=\.\.\.\) is deprecated: dt is the older name of output_spacing .*; write output_spacing=0\.1"
+)
+
+
+def _crane() -> crane.Crane:
+    path = crane.move(distance=1.0, v_max=0.5, a_max=0.5, t_start=0.2)
+    return crane.Crane(rope=6.0, pivot=path, payload_mass=500.0, hook_mass=50.0, rigging=1.5)
+
+
+def _same_run(a: crane.CraneRun, b: crane.CraneRun) -> None:
+    for name in ("t", "payload", "hook", "pivot", "payload_velocity", "hook_velocity", "sway", "tension"):
+        x, y = getattr(a, name), getattr(b, name)
+        assert x.shape == y.shape and x.tobytes() == y.tobytes(), name
+    assert a.energy.tobytes() == b.energy.tobytes() and a.steps == b.steps
+    assert all(a.work[k].tobytes() == b.work[k].tobytes() for k in a.work)
+
+
+def _new_keyword_only() -> Any:
+    return warnings.catch_warnings(action="error")
+
+
+def test_simulate_takes_output_spacing_and_dt_gives_the_same_run_bit_for_bit_with_a_warning() -> None:
+    c = _crane()
+    with _new_keyword_only():
+        new = c.simulate(t_end=4.0, sway=(0.05, 0.3), output_spacing=0.1)
+        positional = c.simulate(4.0, (0.05, 0.3), None, 0.1)  # the old place of dt among the arguments
+        default = c.simulate(t_end=1.0)
+    assert new.t.size == 41 and np.allclose(np.diff(new.t), 0.1)
+    assert np.allclose(np.diff(default.t), 0.02) and default.t.size == 51  # the default kept, 0.02 s
+    _same_run(new, positional)
+    with pytest.warns(DeprecationWarning, match="Crane.simulate" + DEPRECATED) as caught:
+        old = c.simulate(t_end=4.0, sway=(0.05, 0.3), dt=0.1)
+    assert len(caught) == 1 and caught[0].filename == __file__  # points at the caller's line
+    _same_run(new, old)
+
+
+def test_residual_grid_takes_output_spacing_and_dt_gives_the_same_grid_bit_for_bit_with_a_warning() -> None:
+    shapers = [None, crane.shaper("zv", omega=1.2)]
+    args: Any = ([4.0, 7.0], [2.0, 5.0], shapers)
+    with _new_keyword_only():
+        new = crane.residual_grid(*args, settle=3.0, output_spacing=0.1)
+        positional = crane.residual_grid(*args, 5.0, 0.5, 0.5, None, 100.0, 2.0, 9.81, 3.0, 0.1)
+        default = crane.residual_grid(*args, settle=3.0)
+    assert new.sample_spacing == 0.1 and default.sample_spacing == 0.05
+    assert new.sway.tobytes() == positional.sway.tobytes() and np.all(new.sway > 0)
+    assert not np.array_equal(new.sway, default.sway)  # the spacing does reach the runs
+    with pytest.warns(DeprecationWarning, match="residual_grid" + DEPRECATED) as caught:
+        old = crane.residual_grid(*args, settle=3.0, dt=0.1)
+    assert len(caught) == 1 and caught[0].filename == __file__
+    assert old.sway.tobytes() == new.sway.tobytes() and old.sample_spacing == 0.1
+
+
+@pytest.mark.parametrize("call", ["Crane.simulate", "residual_grid"])
+def test_output_spacing_and_dt_together_are_refused_naming_both(call: str) -> None:
+    def run(**kw: float) -> Any:
+        if call == "Crane.simulate":
+            return _crane().simulate(t_end=2.0, **kw)
+        return crane.residual_grid([4.0], [2.0], [None], settle=3.0, **kw)
+
+    both = rf"{call}: output_spacing = 0\.1 and dt = 0\.2 both given: dt is the older name of output_spacing"
+    with _new_keyword_only(), pytest.raises(InvalidInputError, match=both):
+        run(output_spacing=0.1, dt=0.2)
+    with (
+        _new_keyword_only(),
+        pytest.raises(InvalidInputError, match=r"output_spacing = 0\.1 and dt = 0\.1 both"),
+    ):
+        run(output_spacing=0.1, dt=0.1)  # equal values too: one name only
+
+
+def test_a_bad_spacing_is_named_as_written() -> None:
+    c = _crane()
+    with pytest.raises(
+        InvalidInputError, match=r"^output_spacing = 0\.0 is not allowed: a finite number > 0 s"
+    ):
+        c.simulate(t_end=2.0, output_spacing=0.0)
+    with (
+        pytest.warns(DeprecationWarning),
+        pytest.raises(InvalidInputError, match=r"^dt = -1\.0 is not allowed"),
+    ):
+        c.simulate(t_end=2.0, dt=-1.0)
+    with pytest.raises(InvalidInputError, match=r"raise output_spacing or shorten t_end"):
+        c.simulate(t_end=1e4, output_spacing=1e-2)
+    with pytest.raises(
+        InvalidInputError, match=r"need 0 < output_spacing <= settle .* output_spacing = 5\.0"
+    ):
+        crane.residual_grid([4.0], [2.0], [None], settle=3.0, output_spacing=5.0)
+    with pytest.warns(DeprecationWarning), pytest.raises(InvalidInputError, match=r"need 0 < dt <= settle"):
+        crane.residual_grid([4.0], [2.0], [None], settle=3.0, dt=5.0)
