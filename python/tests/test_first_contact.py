@@ -111,7 +111,7 @@ def test_a_misspelt_or_misplaced_model_parameter_is_named_with_its_fix() -> None
             "the 'ideal' model has no parameter 'lenght' (did you mean 'length'?); "
             "its parameters: length, mass, g",
         ),
-        ({"model": "ideal", "damping": 0.1}, "(a parameter of 'damped', 'rotating', "),
+        ({"model": "ideal", "damping": 0.1}, "damping is a parameter of model 'damped' (and 'rotating', "),
     ]
     for keywords, message in cases:
         with pytest.raises(pl.InvalidInputError) as info:

@@ -48,9 +48,45 @@ def test_pendulum_keyword_the_model_has_not(given: str, expected: str | None) ->
     assert (_hint(expected) in str(e.value)) is (expected is not None), str(e.value)
 
 
-def test_pendulum_keyword_of_another_model_names_that_model() -> None:
-    with pytest.raises(pl.InvalidInputError, match=r"\(a parameter of 'damped', .*: model='damped'\?\)"):
-        pl.Pendulum(model="ideal", damping=0.1)
+DAMPING_OWNERS = "model 'damped' (and 'rotating', 'slewing', 'vibrating', 'hoisted', 'sampled_pivot')"
+
+
+@pytest.mark.parametrize(
+    ("model", "keyword", "message"),
+    [
+        (
+            "ideal",
+            "damping",
+            f"invalid parameter damping = 0.1: damping is a parameter of {DAMPING_OWNERS}, not of 'ideal'; "
+            "its parameters: length, mass, g",
+        ),
+        (  # the wrong case of another model's parameter: named, with that model (was: no hint at all)
+            "ideal",
+            "DAMPING",
+            "invalid parameter DAMPING = 0.1: the 'ideal' model has no parameter 'DAMPING' (did you mean "
+            f"'damping'?); damping is a parameter of {DAMPING_OWNERS}, not of 'ideal'; "
+            "its parameters: length, mass, g",
+        ),
+        (
+            "spring",
+            "Frame_Rate",
+            "invalid parameter Frame_Rate = 0.1: the 'spring' model has no parameter 'Frame_Rate' (did you "
+            "mean 'frame_rate'?); frame_rate is a parameter of model 'rotating', not of 'spring'; "
+            "its parameters: length, mass, g, stiffness",
+        ),
+        (  # the model's own parameter in the wrong case: only the hint, no other model
+            "rotating",
+            "DAMPING",
+            "invalid parameter DAMPING = 0.1: the 'rotating' model has no parameter 'DAMPING' (did you mean "
+            "'damping'?); its parameters: length, mass, g, ",
+        ),
+    ],
+)
+def test_pendulum_keyword_of_another_model_names_that_model(model: str, keyword: str, message: str) -> None:
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.Pendulum(model=model, **{keyword: 0.1})
+    assert str(e.value).startswith(message), str(e.value)
+    assert str(e.value).count("is a parameter of") == (model != "rotating"), str(e.value)
 
 
 @pytest.mark.parametrize(

@@ -93,17 +93,7 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
         names = [q["name"] for m in _models() if m["name"] == model for q in m["params"]]
         for key, value in extra.items():
             if key not in names:
-                others = [m["name"] for m in _models() if key in {q["name"] for q in m["params"]}]
-                hint = did_you_mean(key, names) or (
-                    f" (a parameter of {', '.join(map(repr, others))}: model={others[0]!r}?)"
-                    if others
-                    else ""
-                )
-                raise invalid(
-                    "parameter " + key,
-                    value,
-                    f"the {model!r} model has no parameter {key!r}{hint}; its parameters: {', '.join(names)}",
-                )
+                raise invalid("parameter " + key, value, _not_of_model(model, key, names))
     for key, value in extra.items():
         if len(key) > 64:
             raise invalid("parameter name", key, "a parameter of the model (pendulab.models())")
@@ -113,3 +103,21 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
             value,
             own[key]["allowed"] if key in own else f"a finite number (pendulab.models() lists {key!r})",
         )
+
+
+def _not_of_model(model: str, key: str, names: list[str]) -> str:
+    """Why ``model`` (whose parameters are ``names``) refuses the keyword ``key``: the nearest of its own
+    parameters (:func:`pendulab.validate.did_you_mean`), else the other models whose parameter ``key``
+    is, the same but for case (``DAMPING`` on ``'ideal'``: ``damping`` of ``'damped'``, …)."""
+    own = f"its parameters: {', '.join(names)}"
+    hint = did_you_mean(key, names)
+    fold = str(key).casefold()
+    target = next((q["name"] for m in _models() for q in m["params"] if q["name"].casefold() == fold), None)
+    if hint or target is None:
+        return f"the {model!r} model has no parameter {key!r}{hint}; {own}"
+    owners = [m["name"] for m in _models() if target in {q["name"] for q in m["params"]}]
+    also = f" (and {', '.join(map(repr, owners[1:]))})" if len(owners) > 1 else ""
+    where = f"{target} is a parameter of model {owners[0]!r}{also}, not of {model!r}"
+    if key != target:  # the wrong case: said first, the right name then placed
+        where = f"the {model!r} model has no parameter {key!r}{did_you_mean(key, [target])}; {where}"
+    return f"{where}; {own}"
