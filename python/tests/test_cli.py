@@ -144,6 +144,22 @@ def test_user_errors_are_one_line(args: list[str], needles: list[str]) -> None:
     assert_user_error(*invoke(*args), *needles)
 
 
+def test_run_names_the_file_as_typed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """typer made a Path of SCENARIO, so ``./nope.toml`` was named ``nope.toml``: now as typed, in the
+    missing file's error, a bad file's problems and the "running …" line."""
+    monkeypatch.chdir(tmp_path)
+    for typed in ("./nope.toml", "sub/../nope.toml", ".//nope.toml"):
+        code, out, err = invoke("run", typed)
+        assert_user_error(code, out, err, f"error: {typed}: No such file")
+    bad = (SCENARIOS / "rosette.toml").read_text().replace('method = "rattle"', 'method = "euler"')
+    Path("bad.toml").write_text(bad)
+    code, out, err = invoke("run", "./bad.toml")
+    assert_user_error(code, out, err, "error: ./bad.toml: simulation.method = 'euler': unknown method")
+    Path("good.toml").write_text((SCENARIOS / "rosette.toml").read_text())
+    code, out, err = invoke("run", "./good.toml", *SHORT)
+    assert code == 0 and err.startswith("running ./good.toml: "), err
+
+
 @pytest.mark.parametrize(
     ("args", "needles"),
     [

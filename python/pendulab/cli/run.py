@@ -57,7 +57,7 @@ def _settings(sc: Scenario) -> str:
 @app.command(short_help="Run a scenario file; print a summary, write the trajectory.")
 def run(
     scenario: Annotated[
-        Path,
+        str,  # not Path: typer would normalise ./x.toml to x.toml, and the messages name it as typed
         typer.Argument(
             metavar="SCENARIO",
             help="Scenario file (TOML; see docs/scenarios.md) or the name of a shipped example "
@@ -126,7 +126,7 @@ def run(
         overrides = RunOverrides(
             method=method, dt=dt, t_end=t_end, save_every=save_every, rtol=rtol, atol=atol
         )
-        sc = load_scenario(_scenario_file(scenario)).with_overrides(overrides)
+        sc = load_scenario(scenario).with_overrides(overrides)  # its messages name the file as typed
         if sc.is_crane:  # a [crane] file: the crane's run and report (pendulab crane run)
             if out is not None and out.suffix.lower() != ".csv":
                 _fail(f"--out {str(out)!r}: crane runs are written as .csv")
