@@ -51,7 +51,7 @@ class _Deadline:
         def first(rise_self: Any, c: float, start: dict[str, float]) -> Any:
             if self.at == math.inf:
                 self.at = time.perf_counter() + LEFT
-                self.search.time_limit = self.at - self.search.began
+                self.search.clock.time_limit = self.at - self.search.began
             return rise(rise_self, c, start)
 
         def counted(problem: Any, *args: Any, **kwargs: Any) -> Any:

@@ -201,10 +201,9 @@ def _fit_block(
         search.sigma,
         loss="linear",
         max_evaluations=BLOCK_EVALUATIONS,
-        time_limit=search.time_limit,
+        clock=search.clock,
         logged=search.logged,
     )
-    inner.began = search.began
     try:
         res = inner.run(np.array([start[n] for n in free], dtype=np.float64))
         u, r = res.x, res.fun[: res.fun.size - len(free)]  # the data's residuals at u (no anchor)

@@ -50,7 +50,7 @@ from .multistart import (
 from .noise import columns_for_noise, floor_of, spread_of
 from .problem import PIVOT_NAMES, POSITIVE, Problem, bounds_of, scale_of
 from .result import FitResult
-from .search import Search
+from .search import Clock, Search
 from .settings import (
     check_motion,
     check_settings,
@@ -144,7 +144,7 @@ def fit(
     }
     obs = observations(t, data, sigma)
     setup = _Setup.read(obs, pendulum, model, fit, state0, pivot, planar)
-    search, period = _search_of(setup, model, loss, max_evaluations, time_limit)
+    search, period = _search_of(setup, model, loss, max_evaluations, Clock(time_limit))
     show = progress if progress is not None else len(obs) * len(setup.starts) > 200_000
     interrupted, message, n_starts = run_starts(search, setup.starts, period, show)
     u, converged, message = _optimum(search, setup.start, interrupted, message)
@@ -243,7 +243,7 @@ def _noise_of(obs: Observations, free: list[str]) -> tuple[dict[str, float], dic
 
 
 def _search_of(
-    setup: _Setup, model: str, loss: str, max_evaluations: int, time_limit: float | None
+    setup: _Setup, model: str, loss: str, max_evaluations: int, clock: Clock
 ) -> tuple[Search, float]:
     """The search (search.py) over the free parameters from the start, with each one's scale, its
     bounds (model registry), logarithmic steps for positive ones, and σ per kind (the given one, else
@@ -267,7 +267,7 @@ def _search_of(
         sig,
         loss=loss,
         max_evaluations=max_evaluations,
-        time_limit=time_limit,
+        clock=clock,
         logged=logged,
     )
     return search, period

@@ -165,10 +165,9 @@ def nested_start(
             search.sigma,
             loss=search.loss,
             max_evaluations=search.max_evaluations,
-            time_limit=search.time_limit,
+            clock=search.clock,
             logged=search.logged[keep],
         )
-        inner.began = search.began
         try:
             res = inner.from_start(current, windows if k == 1 else [])
         finally:

@@ -28,7 +28,7 @@ import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
 from .problem import POSITIVE, Problem, bounds_of, scale_of
-from .search import Search, TimeUp
+from .search import Clock, Search, TimeUp
 
 #: Bisection steps of each end's crossing (the interval's end to 2⁻¹⁰ of the bracket).
 BISECTIONS = 10
@@ -90,7 +90,8 @@ class Rise:
     FitResult ``res`` held at c, the other unknowns refitted from ``start`` (inf where the model cannot
     be run there); ``period`` [s] sets the refit's scales. A call returns the rise, the refitted values
     and whether the refit converged (module doc). ``clock``: the fit's :class:`Search`, whose
-    ``time_limit`` then bounds every refit from the fit's start (checked before each round and at each
+    :class:`~pendulab.fitting.search.Clock` each refit's search is given, so that the fit's
+    ``time_limit`` bounds every refit from the fit's start (checked before each round and at each
     model run: :class:`pendulab.fitting.search.TimeUp` is raised); None: no limit (``FitResult.profile``)."""
 
     def __init__(self, res: Any, name: str, period: float, clock: Search | None = None) -> None:
@@ -119,11 +120,10 @@ class Rise:
                 sigma,
                 loss="linear",
                 max_evaluations=REFIT_EVALUATIONS,
-                time_limit=None if self.clock is None else self.clock.time_limit,
+                # the fit's clock: a refit is cut at a model run past its limit
+                clock=Clock(None) if self.clock is None else self.clock.clock,
                 logged=logged,
             )
-            if self.clock is not None:  # the fit's deadline: a refit is cut at a model run past it
-                search.began = self.clock.began
             u = np.array([held[n] for n in others], dtype=np.float64)
             for _ in range(REFIT_ROUNDS):
                 if search.time_up():

@@ -90,6 +90,25 @@ class TimeUp(Exception):
     """The search ran past ``time_limit``."""
 
 
+class Clock:
+    """The clock of one fit: ``time_limit`` [s] (None: no limit) counted from ``began``
+    (``time.perf_counter()`` when it was made, unless given). Every :class:`Search` of a fit — its
+    own, the nested models', the blocks', the profiles' refits — is given the same clock when it is
+    made, so that one limit bounds them all from the fit's start."""
+
+    def __init__(self, time_limit: float | None, began: float | None = None) -> None:
+        self.time_limit = time_limit
+        self.began = time.perf_counter() if began is None else began
+
+    def time_up(self, ahead: float = 0.0) -> bool:
+        """Whether ``time_limit`` [s] has passed since ``began``, or will have after ``ahead`` more
+        seconds of work (a Jacobian's run cannot be interrupted once begun)."""
+        return self.time_limit is not None and time.perf_counter() - self.began + ahead > self.time_limit
+
+    def __repr__(self) -> str:
+        return f"Clock(time_limit={self.time_limit!r}, elapsed={time.perf_counter() - self.began:.3g} s)"
+
+
 class _Abandoned(Exception):
     """A later start used more than its share of model runs while still worse than the best."""
 
@@ -106,7 +125,8 @@ class Search:
     clock, the record of the best values seen (what Ctrl-C or the time limit returns) and the window
     continuation (this module's doc). ``sigma``: kind → the scale of its residuals [its unit]
     (the given σ, or the noise floor read off the data: noise.py), so that the search and its anchor do
-    not depend on the units of the data."""
+    not depend on the units of the data. ``clock``: the fit's :class:`Clock`, shared by every search
+    of the fit (its ``time_limit`` and ``began`` are read from it)."""
 
     def __init__(
         self,
@@ -118,7 +138,7 @@ class Search:
         *,
         loss: str,
         max_evaluations: int,
-        time_limit: float | None,
+        clock: Clock,
         logged: FloatArray,
     ) -> None:
         self.problem = problem
@@ -129,9 +149,8 @@ class Search:
         self.sigma = sigma
         self.loss = loss
         self.max_evaluations = max_evaluations
-        self.time_limit = time_limit
+        self.clock = clock
         self.logged = logged
-        self.began = time.perf_counter()
         self.best_cost = math.inf
         self.best_u: FloatArray | None = None
         self.last_u: FloatArray | None = None
@@ -144,10 +163,19 @@ class Search:
         # (problem, point and σ, Jacobian): the problem held, so that its id is not reused
         self._last_jacobian: tuple[Problem, bytes, FloatArray | None] | None = None
 
+    @property
+    def time_limit(self) -> float | None:
+        """The fit's time limit [s] (its :class:`Clock`'s; None: no limit)."""
+        return self.clock.time_limit
+
+    @property
+    def began(self) -> float:
+        """When the fit's :class:`Clock` started (``time.perf_counter()``)."""
+        return self.clock.began
+
     def time_up(self, ahead: float = 0.0) -> bool:
-        """Whether ``time_limit`` [s] has passed since the search began, or will have after ``ahead``
-        more seconds of work (a Jacobian's run cannot be interrupted once begun)."""
-        return self.time_limit is not None and time.perf_counter() - self.began + ahead > self.time_limit
+        """Whether the fit's time limit has passed (:meth:`Clock.time_up`)."""
+        return self.clock.time_up(ahead)
 
     def anchor(self, u: FloatArray) -> FloatArray:
         """A faint pull towards the start (ANCHOR per unit of ln p or of the scale, in units of the
