@@ -105,6 +105,22 @@ def _idle_timeout(value: float) -> float:
         raise UsageError(f"--idle-timeout: {e}") from None
 
 
+def _fit_time_limit(value: float) -> float:
+    """``--fit-time-limit`` checked by ``create_app``'s own rule
+    (:func:`pendulab.server.fit.check_fit_time_limit`), as the command line is read. nan and ±inf
+    pass through to the one message every float option gives them (``cli.common._checked``)."""
+    if not math.isfinite(value):
+        return value
+    try:
+        from ..server.fit import check_fit_time_limit
+    except ImportError:  # serve names the missing extra itself
+        return value
+    try:
+        return check_fit_time_limit(value)
+    except ValueError as e:
+        raise UsageError(f"--fit-time-limit: {e}") from None
+
+
 def _open_when_up(server: object, url: str) -> None:
     for _ in range(200):  # up to 10 s
         if getattr(server, "started", False):
@@ -169,6 +185,16 @@ def serve(
             "by itself.",
         ),
     ] = 60.0,
+    fit_time_limit: Annotated[
+        float,
+        typer.Option(
+            callback=_fit_time_limit,
+            metavar="SECONDS",
+            help="Seconds a measured data file's fit may take (pl.fit's time_limit: from reading the data "
+            "to the error bars), > 0 and at most 600; then the best values reached are shown. Longer "
+            "fits: pendulab fit FILE --time-limit none.",
+        ),
+    ] = 20.0,
     allow_host: Annotated[
         list[str] | None,
         typer.Option(
@@ -233,6 +259,7 @@ def serve(
             token=secret,
             max_sessions_per_client=max_sessions_per_client,
             max_computations_per_client=max_computations_per_client,
+            fit_time_limit=fit_time_limit,
         )
     _check_port(host, port)
     url = url_for(host, port) if secret is None else lab_url(host, port, secret)

@@ -50,7 +50,16 @@ from .._core import InvalidInputError, __version__
 from ..scenario import ScenarioError, load_scenario
 from .access import LOOPBACK_HOSTS, guard
 from .api_docs import api_docs_page
-from .fit import FIT_OPENAPI, FIT_QUEUE, FIT_WALL_SECONDS, FIT_WORKERS, MAX_FIT_BODY, fit_endpoint
+from .fit import (
+    FIT_OPENAPI,
+    FIT_QUEUE,
+    FIT_SECONDS,
+    FIT_WORKERS,
+    MAX_FIT_BODY,
+    check_fit_time_limit,
+    fit_endpoint,
+    fit_wall_seconds,
+)
 from .hygiene import RequestBodies, SecurityHeaders
 from .live_socket import admit, loop_limiter, run_session
 from .notices import keyed_body
@@ -173,7 +182,8 @@ def create_app(
     max_sessions_per_client: int = MAX_SESSIONS_PER_CLIENT,
     max_computations_per_client: int = MAX_REQUESTS_PER_CLIENT,
     work_seconds: float = WORK_SECONDS,
-    fit_seconds: float = FIT_WALL_SECONDS,
+    fit_seconds: float | None = None,
+    fit_time_limit: float = FIT_SECONDS,
 ) -> FastAPI:
     """The lab application; every client starts with ``scenario`` (an example name or a file; default
     ``rosette``). At most ``max_sessions`` WebSockets are served at once: one more gets an ``error``
@@ -183,7 +193,11 @@ def create_app(
     request must carry it (classroom mode, :mod:`.access`). One client (address, a global IPv6 one's /64:
     :mod:`.room`) may hold ``max_sessions_per_client`` WebSockets and have
     ``max_computations_per_client`` computing requests under way or waiting (one more: 429, key
-    ``device_busy``). Raises :class:`pendulab.ScenarioError` for a bad scenario."""
+    ``device_busy``). A fit (``POST /api/fit``) is given ``fit_time_limit`` [s] (> 0, at most
+    :data:`~pendulab.server.fit.MAX_FIT_SECONDS`: else ``ValueError``), its request ``fit_seconds`` of
+    wall time in its worker (default :func:`~pendulab.server.fit.fit_wall_seconds` of the limit; the
+    fit then gets at most half of it). Raises :class:`pendulab.ScenarioError` for a bad scenario."""
+    fit_time_limit = check_fit_time_limit(fit_time_limit)
     default = resolve_scenario(scenario)
     app = FastAPI(title="Pendulab lab", version=__version__, docs_url=None, redoc_url=None)
     app.add_middleware(RequestBodies, larger={"/api/fit": MAX_FIT_BODY})
@@ -191,12 +205,14 @@ def create_app(
     app.add_middleware(SecurityHeaders)
     room = Room(max_sessions_per_client, computations=max_computations_per_client)
     analyses = shared_pool("analysis", WORK_WORKERS, REST_QUEUE, work_seconds)
-    fits = shared_pool("fit", FIT_WORKERS, FIT_QUEUE, fit_seconds)
-    app.state.room, app.state.pools = room, (analyses, fits)
+    wall = fit_wall_seconds(fit_time_limit) if fit_seconds is None else fit_seconds
+    fits = shared_pool("fit", FIT_WORKERS, FIT_QUEUE, wall)
+    app.state.room, app.state.pools, app.state.fit_time_limit = room, (analyses, fits), fit_time_limit
     _add_error_handlers(app)
     _add_gets(app, default)
     _add_posts(app, room, analyses)
-    app.add_api_route("/api/fit", fit_endpoint(fits, room), methods=["POST"], openapi_extra=FIT_OPENAPI)
+    post_fit = fit_endpoint(fits, room, fit_time_limit)
+    app.add_api_route("/api/fit", post_fit, methods=["POST"], openapi_extra=FIT_OPENAPI)
     _add_websocket(app, default, max_sessions, room)
     _add_front_end(app, STATIC_DIR if static_dir is None else static_dir)
     return app

@@ -20,9 +20,11 @@ docs/theory.md) and answers with
 
 Work is bounded: the body is at most :data:`MAX_FIT_BODY` (the server's body check, :mod:`.hygiene`), the
 fits run one at a time in a killable worker process of their own (:mod:`.worker`; :data:`FIT_WORKERS`,
-:data:`FIT_QUEUE`), the search at most :data:`FIT_SECONDS` of wall time (then the best values reached
-are returned, marked not converged), the whole request at most :data:`FIT_WALL_SECONDS` (then the
-worker is killed and the page told): no data file can hold the server.
+:data:`FIT_QUEUE`), each fit at most the server's time limit (:data:`FIT_SECONDS` unless ``pendulab
+serve --fit-time-limit`` sets another, at most :data:`MAX_FIT_SECONDS`; then the best values reached are
+returned, marked not converged), the whole request at most twice that plus 10 s
+(:func:`fit_wall_seconds`; then the worker is killed and the page told): no data file can hold the
+server.
 """
 
 from __future__ import annotations
@@ -30,6 +32,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import numbers
 import warnings
 from collections.abc import Awaitable, Callable
 from typing import Any
@@ -57,7 +60,13 @@ MAX_FIT_BYTES = 2 * 2**20
 """Largest body of ``POST /api/fit`` [bytes] (about 50 000 rows of t, x, z)."""
 
 FIT_SECONDS = 20.0
-"""Most wall-time seconds of one fit's search (the error analysis after it adds a few model runs)."""
+"""The fit's time limit [s] by default (``pl.fit``'s ``time_limit``: the whole fit, from reading the data
+to the error bars; the error analysis adds a few model runs past it); ``pendulab serve
+--fit-time-limit`` and ``create_app(fit_time_limit=…)`` set another."""
+
+MAX_FIT_SECONDS = 600.0
+"""The largest time limit a lab's fit may be given [s]: the fits run one at a time, so a long one holds
+up every other page's; longer fits belong to ``pendulab fit FILE --time-limit none``."""
 
 PATH_POINTS = 2000
 """Most points of the measured path sent to the page."""
@@ -231,10 +240,29 @@ seconds and a core, and must not hold up the quick analyses (:data:`pendulab.ser
 FIT_QUEUE = 4
 """Most fits waiting for the worker; more are answered 503 (busy, try again)."""
 
-FIT_WALL_SECONDS = 2 * FIT_SECONDS + 10
-"""Most wall-time seconds of one fit request in its worker, the error analysis and rendering included:
-past it the worker is killed and the page told (HTTP 503). The search itself is given half of it (at
-most :data:`FIT_SECONDS`)."""
+
+def check_fit_time_limit(seconds: Any) -> float:
+    """``seconds`` as the time limit of the lab's fits (``create_app(fit_time_limit=…)`` and ``pendulab
+    serve --fit-time-limit``, one rule for both): a number of seconds > 0 and at most
+    :data:`MAX_FIT_SECONDS`, else a ``ValueError`` naming it and what is allowed."""
+    ok = isinstance(seconds, numbers.Real) and not isinstance(seconds, bool)
+    if not (ok and 0.0 < seconds <= MAX_FIT_SECONDS):  # nan too
+        raise ValueError(
+            f"the lab's fit time limit must be a number of seconds > 0 and at most {MAX_FIT_SECONDS:g} "
+            f"(longer fits: pendulab fit FILE --time-limit none), got {seconds!r}"
+        )
+    return float(seconds)
+
+
+def fit_wall_seconds(time_limit: float) -> float:
+    """Most wall-time seconds of one fit request in its worker for a fit time limit of ``time_limit``
+    [s]: twice it plus 10 s, room for the error analysis and the rendering after the limit; past it
+    the worker is killed and the page told (HTTP 503)."""
+    return 2.0 * time_limit + 10.0
+
+
+FIT_WALL_SECONDS = fit_wall_seconds(FIT_SECONDS)
+"""Most wall-time seconds of one fit request with the default time limit (:func:`fit_wall_seconds`)."""
 
 FIT_OPENAPI = {
     "requestBody": {
@@ -256,17 +284,20 @@ def _problem(
     return JSONResponse(body, status_code=status)
 
 
-def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[Response]]:
-    """The handler of ``POST /api/fit`` for one app: its fits run in ``pool``'s worker processes, at
-    most ``room.computations`` (:data:`~pendulab.server.room.MAX_REQUESTS_PER_CLIENT`) computations per
-    client (``room``)."""
+def fit_endpoint(
+    pool: WorkerPool, room: Room, time_limit: float = FIT_SECONDS
+) -> Callable[[Request], Awaitable[Response]]:
+    """The handler of ``POST /api/fit`` for one app: its fits run in ``pool``'s worker processes with
+    ``time_limit`` [s] (at most half the pool's wall time), at most ``room.computations``
+    (:data:`~pendulab.server.room.MAX_REQUESTS_PER_CLIENT`) computations per client (``room``)."""
 
     async def post_fit(request: Request) -> Response:
         """``POST /api/fit`` (see the module doc): 200 with the fit; 422 a bad body or bad data (naming
         the problem), 429 when this client already has its computations under way, 503 when
-        :data:`FIT_QUEUE` fits already wait or the fit ran past :data:`FIT_WALL_SECONDS` (then it was
-        stopped). The server's :class:`.hygiene.RequestBodies` has already answered 415 to another
-        Content-Type than JSON and 413 to a body over :data:`MAX_FIT_BODY`."""
+        :data:`FIT_QUEUE` fits already wait or the fit ran past the pool's wall time
+        (:func:`fit_wall_seconds`; then it was stopped). The server's :class:`.hygiene.RequestBodies`
+        has already answered 415 to another Content-Type than JSON and 413 to a body over
+        :data:`MAX_FIT_BODY`."""
         body = await request.body()
         try:
             raw = json.loads(body)
@@ -281,7 +312,7 @@ def fit_endpoint(pool: WorkerPool, room: Room) -> Callable[[Request], Awaitable[
                 return JSONResponse(room.too_many_requests(), status_code=429, headers={"retry-after": "1"})
             seconds = pool.seconds
             try:
-                out = await pool.run(fit_data, req, min(FIT_SECONDS, 0.5 * seconds))
+                out = await pool.run(fit_data, req, min(time_limit, 0.5 * seconds))
             except Busy:
                 return JSONResponse(
                     keyed_body("busy", waiting=FIT_QUEUE), status_code=503, headers={"retry-after": "5"}
