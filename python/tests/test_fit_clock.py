@@ -5,13 +5,15 @@ patched afterwards). Units: s."""
 from __future__ import annotations
 
 import math
+import time
+import warnings
 from typing import Any
 
 import numpy as np
 import pytest
 
 import pendulab as pl
-from pendulab.fitting import profile
+from pendulab.fitting import estimator, profile
 from pendulab.fitting.search import Clock, Search
 
 
@@ -61,3 +63,42 @@ def test_a_clock_counts_from_its_start() -> None:
     clock = Clock(2.0, began=0.0)  # long ago
     assert clock.time_up() and not Clock(2.0).time_up() and Clock(2.0).time_up(ahead=3.0)
     assert not Clock(None, began=0.0).time_up(ahead=1e9)
+
+
+#: The data's preparation slowed by this much [s] ...
+SLOW = 2.5
+#: ... past a limit of this [s] (the fit of these data alone takes 0.15 s at load 15).
+LIMIT = 2.0
+
+
+def test_the_time_limit_counts_the_datas_reading(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The limit's clock started when the search was made, so reading and checking the data (and the
+    starting values read off them) did not count: a fit whose preparation alone took longer than the
+    limit still searched for the whole limit after it. Now the clock starts at pl.fit's entry: such a
+    fit stops at the search's first model runs, marked interrupted, with the time it took counted
+    from the call."""
+    read = estimator._Setup.read
+
+    def slow(*args: Any, **kwargs: Any) -> Any:
+        time.sleep(SLOW)
+        return read(*args, **kwargs)
+
+    import scipy.optimize  # noqa: F401  # imported first: the import cannot be interrupted (docs/fit.md)
+
+    monkeypatch.setattr(estimator._Setup, "read", slow)
+    began = time.perf_counter()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = pl.fit(**_swing(), time_limit=LIMIT)
+    took = time.perf_counter() - began
+    assert (
+        res.interrupted
+        and not res.converged
+        and res.message == f"interrupted (the time limit of {LIMIT:g} s)"
+    )
+    assert any(f"time limit of {LIMIT:g} s" in str(w.message) for w in caught), [
+        str(w.message) for w in caught
+    ]
+    assert SLOW <= res.seconds <= took, (res.seconds, took)  # counted from the call (was 0.15 s)
+    # the search ran its first model runs only, then the error analysis: 4 model runs (the fit: 19)
+    assert res.evaluations <= 10, res.evaluations

@@ -167,7 +167,7 @@ def fit_cmd(
         typer.Option(
             "--time-limit",
             metavar="SECONDS",
-            help="Bound the whole fit (search and error analysis) to this many seconds, or none.",
+            help="Bound the whole fit (checking the data, search, error bars) to this many seconds, or none.",
         ),
     ] = "none",
 ) -> None:

@@ -123,12 +123,15 @@ def fit(
     position it implies. At most ``max_evaluations`` runs of the model per start. Returns a
     :class:`FitResult` whose ``goodness`` says whether the model explains the data (each finding is
     also warned); Ctrl-C returns the best values so far (``converged`` False), and so does reaching
-    ``time_limit`` [s], which bounds the whole fit from its start: the search and, over a record
-    shorter than a swing, the profile likelihoods of the error analysis (each refit is cut at a model
-    run past the limit; what it leaves unprofiled is reported not determined, naming the limit); the
-    rest of the error analysis adds a few model runs per unknown. Raises
+    ``time_limit`` [s], which bounds the whole call, from reading the data to the error bars (its
+    clock starts as ``fit`` is called): the data's reading and checks, the starting values, the
+    search and, over a record shorter than a swing, the profile likelihoods of the error analysis
+    (each refit is cut at a model run past the limit; what it leaves unprofiled is reported not
+    determined, naming the limit); the rest of the error analysis adds a few model runs per unknown
+    past it. Raises
     :class:`pendulab.InvalidInputError` naming bad data or settings, and for data that show no motion
     above their noise; an ImportError without SciPy (``pip install 'pendulab[fit]'``)."""
+    clock = Clock(time_limit)  # time_limit bounds the whole call: the data's reading counts too
     need_scipy()
     if body is not None:
         pendulum = pendulum_of(body, pendulum)
@@ -144,7 +147,7 @@ def fit(
     }
     obs = observations(t, data, sigma)
     setup = _Setup.read(obs, pendulum, model, fit, state0, pivot, planar)
-    search, period = _search_of(setup, model, loss, max_evaluations, Clock(time_limit))
+    search, period = _search_of(setup, model, loss, max_evaluations, clock)
     show = progress if progress is not None else len(obs) * len(setup.starts) > 200_000
     interrupted, message, n_starts = run_starts(search, setup.starts, period, show)
     u, converged, message = _optimum(search, setup.start, interrupted, message)
@@ -247,7 +250,8 @@ def _search_of(
 ) -> tuple[Search, float]:
     """The search (search.py) over the free parameters from the start, with each one's scale, its
     bounds (model registry), logarithmic steps for positive ones, and σ per kind (the given one, else
-    the noise floor); and the small-swing period 2π√(l/|g|) [s] that sets its windows."""
+    the noise floor), on the fit's ``clock`` (started at the fit's entry); and the small-swing period
+    2π√(l/|g|) [s] that sets its windows."""
     start, free, obs = setup.start, setup.free, setup.obs
     problem = Problem(model, start, free, obs)
     period = 2.0 * math.pi * math.sqrt(start["length"] / max(abs(start["g"]), 1e-9))
