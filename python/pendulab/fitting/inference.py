@@ -17,7 +17,8 @@
 
 Ctrl-C during the polish or the block check ends that step and skips the profiles (their parameters
 not determined, the reason naming Ctrl-C), as Ctrl-C in the search returns the best values so far:
-the fit is returned, with a warning naming Ctrl-C.
+the fit is returned, with a warning naming Ctrl-C. A fit that Ctrl-C or the time limit stopped short
+anywhere — the search, the polish, the block check, a profile — is marked ``interrupted``.
 Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
 """
 
@@ -146,6 +147,8 @@ def conclude(
     said += check_short_record(res, search, checkable, ctrl_c=bool(stopped))
     # data blind to the mirror y -> -y near the plane: the profile likelihood gives φ₀'s and φ̇₀'s bars
     said += check_mirror(res, search, checkable)
+    # stopped short anywhere (Ctrl-C, or a step the time limit cut or skipped): some results incomplete
+    res.interrupted = interrupted or bool(stopped) or search.clock.ctrl_c or search.clock.ran_out
     if stopped:
         warnings.warn(
             f"Ctrl-C stopped {' and '.join(stopped)}: returning the fit without it",

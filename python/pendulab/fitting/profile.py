@@ -92,7 +92,8 @@ class Rise:
     and whether the refit converged (module doc). ``clock``: the fit's :class:`Search`, whose
     :class:`~pendulab.fitting.search.Clock` each refit's search is given, so that the fit's
     ``time_limit`` bounds every refit from the fit's start (checked before each round and at each
-    model run: :class:`pendulab.fitting.search.TimeUp` is raised); None: no limit (``FitResult.profile``)."""
+    model run: :class:`pendulab.fitting.search.TimeUp` is raised; Ctrl-C in a refit is noted on the
+    clock, ``ctrl_c``); None: no limit (``FitResult.profile``)."""
 
     def __init__(self, res: Any, name: str, period: float, clock: Search | None = None) -> None:
         self.res, self.name, self.period, self.clock = res, name, period, clock
@@ -100,6 +101,14 @@ class Rise:
         self.others = [n for n in res.names if n != name]
 
     def __call__(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float], bool]:
+        try:
+            return self._refit(c, start)
+        except KeyboardInterrupt:  # noted on the fit's clock: a fit that goes on is marked interrupted
+            if self.clock is not None:
+                self.clock.clock.ctrl_c = True
+            raise
+
+    def _refit(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float], bool]:
         res, problem, others = self.res, self.problem, self.others
         sigma = res._search_sigma
         held = dict(start)

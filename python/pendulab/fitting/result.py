@@ -42,7 +42,11 @@ class FitResult:
     probability, outliers) with its plain-language ``findings``; ``reasons``: why each undetermined
     parameter is; ``inflation``: the factor each error bar was widened by for correlated residuals;
     ``bounds``: each fitted parameter's allowed range (see :meth:`interval`); ``planar``: fitted as a
-    hinge (φ₀ = φ̇₀ = 0 held)."""
+    hinge (φ₀ = φ̇₀ = 0 held). ``interrupted``: the fit was stopped short — by Ctrl-C or its
+    ``time_limit`` — so some results are incomplete: stopped in the search, the values are the best
+    reached (``converged`` False, ``message`` says why); in the error analysis, the values are the
+    search's, the parameters whose profiles were cut are not determined (``reasons`` name Ctrl-C or
+    the limit), Ctrl-C in the polish or the block check is warned and after the limit both are skipped."""
 
     names: list[str]
     params: dict[str, float]
@@ -255,7 +259,9 @@ class FitResult:
             for n in self.names
             if n not in STATE_NAMES
         )
-        state = "converged" if self.converged else "NOT converged"
+        state = ("converged" if self.converged else "NOT converged") + (
+            ", interrupted" if self.interrupted else ""
+        )
         return f"FitResult({shown}; chi2/dof={self.reduced_chi2:.3g}, {state})"
 
     def _repr_html_(self) -> str:

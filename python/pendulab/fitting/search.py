@@ -94,16 +94,23 @@ class Clock:
     """The clock of one fit: ``time_limit`` [s] (None: no limit) counted from ``began``
     (``time.perf_counter()`` when it was made, unless given). Every :class:`Search` of a fit — its
     own, the nested models', the blocks', the profiles' refits — is given the same clock when it is
-    made, so that one limit bounds them all from the fit's start."""
+    made, so that one limit bounds them all from the fit's start. It also records what stopped the
+    fit short (the result's ``interrupted``): ``ran_out``, a check found the limit passed (every
+    check stops or skips a step: a search, the polish, the block check, a profile); ``ctrl_c``,
+    Ctrl-C in a profile's refit (profile.py), which the error analysis survives."""
 
     def __init__(self, time_limit: float | None, began: float | None = None) -> None:
         self.time_limit = time_limit
         self.began = time.perf_counter() if began is None else began
+        self.ran_out = False
+        self.ctrl_c = False
 
     def time_up(self, ahead: float = 0.0) -> bool:
         """Whether ``time_limit`` [s] has passed since ``began``, or will have after ``ahead`` more
-        seconds of work (a Jacobian's run cannot be interrupted once begun)."""
-        return self.time_limit is not None and time.perf_counter() - self.began + ahead > self.time_limit
+        seconds of work (a Jacobian's run cannot be interrupted once begun); once True, ``ran_out``."""
+        up = self.time_limit is not None and time.perf_counter() - self.began + ahead > self.time_limit
+        self.ran_out |= up
+        return up
 
     def __repr__(self) -> str:
         return f"Clock(time_limit={self.time_limit!r}, elapsed={time.perf_counter() - self.began:.3g} s)"
