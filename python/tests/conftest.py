@@ -1,6 +1,7 @@
 """Shared fixtures: the repository paths, a script of tools/ as a module (:func:`load_tool`), the lab
-page's words of a server message (:func:`page_words`, from ``web/src/i18n/*/refusals.ts``), the rosette
-start (l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s) and its exact solution."""
+page's words of a server message (:func:`page_words`, :func:`page_template`, from
+``web/src/i18n/*/refusals.ts``), the rosette start (l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s) and its
+exact solution."""
 
 from __future__ import annotations
 
@@ -40,13 +41,18 @@ def load_tool(name: str) -> types.ModuleType:
     return module
 
 
-def page_words(lang: str, key: str, values: dict[str, Any]) -> str:
-    """The page's words of message ``key`` in ``lang``, filled as its t() fills them."""
+def page_template(lang: str, key: str) -> str:
+    """The page's words of message ``key`` in ``lang`` as its table ``web/src/i18n/<lang>/refusals.ts``
+    writes them, placeholders (``{name}``) unfilled."""
     table = (I18N / lang / "refusals.ts").read_text(encoding="utf-8")
     line = re.search(rf"'server\.{key}': (['`\"])(.*)\1,", table)
     assert line is not None, (lang, key)
-    words = line.group(2).replace("\\'", "'")
-    return re.sub(r"\{(\w+)\}", lambda m: str(values[m.group(1)]), words)
+    return line.group(2).replace("\\'", "'")
+
+
+def page_words(lang: str, key: str, values: dict[str, Any]) -> str:
+    """The page's words of message ``key`` in ``lang``, filled as its t() fills them."""
+    return re.sub(r"\{(\w+)\}", lambda m: str(values[m.group(1)]), page_template(lang, key))
 
 
 @pytest.fixture

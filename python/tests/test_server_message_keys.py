@@ -6,9 +6,9 @@ the TypeScript tables' text, and in web/tests/unit/messages.test.ts against thei
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
+from conftest import I18N, REPO, page_template
 
 from pendulab.server.protocol import (
     MESSAGES,
@@ -18,8 +18,6 @@ from pendulab.server.protocol import (
     message,
     parse_command,
 )
-
-I18N = Path(__file__).resolve().parents[2] / "web" / "src" / "i18n"
 
 
 def _refusal(text: str) -> CommandError:
@@ -87,9 +85,8 @@ def test_every_key_is_in_every_page_table(lang: str) -> None:
     missing = [k for k in MESSAGES if f"'server.{k}'" not in table]
     assert not missing, f"{lang}/refusals.ts lacks server.{missing}"
     for k, words in MESSAGES.items():
-        line = re.search(rf"'server\.{k}': (['`\"])(.*)\1,", table)
-        assert line is not None, k
-        assert set(re.findall(r"\{(\w+)\}", line.group(2))) == set(re.findall(r"\{(\w+)\}", words)), (lang, k)
+        placeholders = set(re.findall(r"\{(\w+)\}", page_template(lang, k)))
+        assert placeholders == set(re.findall(r"\{(\w+)\}", words)), (lang, k)
 
 
 def test_a_fit_past_the_servers_time_limit_is_a_keyed_503() -> None:
@@ -102,7 +99,7 @@ def test_a_fit_past_the_servers_time_limit_is_a_keyed_503() -> None:
     from pendulab.server import create_app
     from pendulab.server.notices import keyed_body
 
-    filmed = Path(__file__).resolve().parents[2] / "examples" / "data" / "filmed_swing.csv"
+    filmed = REPO / "examples" / "data" / "filmed_swing.csv"
     # a limit far below any fit's time (0.5 of the pool's 0.02 s): the worker is stopped
     client = LabClient(create_app("rosette", fit_seconds=0.02))
     body = json.dumps({"csv": filmed.read_text(), "name": "filmed_swing.csv"})
@@ -120,7 +117,7 @@ def test_a_fit_past_the_servers_time_limit_is_a_keyed_503() -> None:
 def test_every_key_the_data_readers_and_the_fit_raise_is_worded() -> None:
     """Every key a ``KeyedInputError`` of pendulab/fitting and the fit endpoint raises is a key of
     messages.json (so that the page's tables word it), found in the sources."""
-    root = Path(__file__).resolve().parents[1] / "pendulab"
+    root = REPO / "python" / "pendulab"
     sources = [*(root / "fitting").glob("*.py"), root / "server" / "fit.py"]
     used = set()
     for path in sources:  # the keys are the only quoted strings of this form there
