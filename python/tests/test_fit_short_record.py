@@ -106,3 +106,32 @@ def test_with_length_and_g_not_determined_no_other_bar_holds_them_fixed() -> Non
     for name, off in r["off_in_stderr"].items():
         assert not r["determined"][name] or off <= 3.0, (name, r["params"][name], r["stderr"][name])
     assert not r["determined"]["phi_dot0"] or r["stderr"]["phi_dot0"] > 0.5
+
+
+def test_marking_a_parameter_not_determined_clears_its_bar_and_its_rows() -> None:
+    """short_record.mark_not_determined, which mirror.py shares (one copy of the marking): the named
+    parameter loses its bar (inf) and its rows and columns of the covariance (NaN, inf on the diagonal)
+    and of the correlation (NaN), gets the reason; the others' entries are left as they were."""
+    from types import SimpleNamespace
+
+    cov = np.array([[4.0, 0.5, 0.1], [0.5, 1.0, 0.2], [0.1, 0.2, 9.0]])
+    corr = cov / np.sqrt(np.outer(np.diag(cov), np.diag(cov)))
+    res = SimpleNamespace(
+        names=["a", "b", "c"],
+        determined={"a": True, "b": True, "c": True},
+        reasons={},
+        stderr={"a": 2.0, "b": 1.0, "c": 3.0},
+        covariance=cov.copy(),
+        correlation=corr.copy(),
+    )
+    short_record.mark_not_determined(res, ["b"], "why not")
+    assert res.determined == {"a": True, "b": False, "c": True} and res.reasons == {"b": "why not"}
+    assert res.stderr == {"a": 2.0, "b": np.inf, "c": 3.0}
+    assert res.covariance[1, 1] == np.inf
+    for m in (res.covariance, res.correlation):
+        assert np.isnan(np.delete(m[1], 1)).all() and np.isnan(np.delete(m[:, 1], 1)).all()
+    keep = np.ix_([0, 2], [0, 2])
+    assert np.array_equal(res.covariance[keep], cov[keep]) and np.array_equal(
+        res.correlation[keep], corr[keep]
+    )
+    assert np.isnan(res.correlation[1, 1])

@@ -39,7 +39,7 @@ from .identify import FLAT
 from .problem import bounds_of, scale_of
 from .profile import Rise, profile_end
 from .search import Search, TimeUp
-from .short_record import ASYMMETRIC, LEVEL, SHORT_PERIODS, WIDENED, shown_interval
+from .short_record import ASYMMETRIC, LEVEL, SHORT_PERIODS, WIDENED, mark_not_determined, shown_interval
 
 #: The sideways motion: the unknowns the mirror y → −y changes (to their negatives).
 SIDEWAYS = ("phi0", "phi_dot0")
@@ -112,7 +112,7 @@ def check_mirror(res: Any, clock: Search, checkable: bool = True) -> list[str]:
     if float(res.t[-1] - res.t[0]) < SHORT_PERIODS * period or _distance(res, names) > MIRROR_BARS:
         return []  # short records: short_record.py profiles every parameter
     if not (checkable and res.converged):  # no optimum to profile from
-        _undetermined(res, [n for n in names if n not in flat], UNCHECKED)
+        mark_not_determined(res, [n for n in names if n not in flat], UNCHECKED)
         return []
     from scipy import stats
 
@@ -124,10 +124,10 @@ def check_mirror(res: Any, clock: Search, checkable: bool = True) -> list[str]:
         plane_rise = rise(plane[held[0]], {**values, **plane})[0]
         ends = {n: _interval(res, n, values, period, clock, target) for n in names}
     except _Late:  # (one not determined by the curvature keeps its reason)
-        _undetermined(res, [n for n in names if n not in flat], UNCHECKED)
+        mark_not_determined(res, [n for n in names if n not in flat], UNCHECKED)
         return []
     closed = {n: e for n, e in ends.items() if all(map(math.isfinite, e))}
-    _undetermined(res, [n for n in ends if n not in closed and n not in flat], OPEN)
+    mark_not_determined(res, [n for n in ends if n not in closed and n not in flat], OPEN)
     return _widened(res, closed, plane_rise)
 
 
@@ -179,20 +179,6 @@ def _interval(
         return centre - half, centre + half
     lo, hi = sorted((inner, outer))
     return lo, hi
-
-
-def _undetermined(res: Any, names: list[str], why: str) -> None:
-    """``names`` marked not determined in ``res`` with the reason ``why``."""
-    i = {n: k for k, n in enumerate(res.names)}
-    for n in names:
-        res.determined[n] = False
-        res.reasons[n] = why
-        res.stderr[n] = math.inf
-        res.covariance[i[n], :] = math.nan
-        res.covariance[:, i[n]] = math.nan
-        res.covariance[i[n], i[n]] = math.inf
-        res.correlation[i[n], :] = math.nan
-        res.correlation[:, i[n]] = math.nan
 
 
 def _widened(res: Any, closed: dict[str, tuple[float, float]], plane_rise: float) -> list[str]:

@@ -263,17 +263,7 @@ def _undetermined(
 ) -> str:
     """``names`` marked not determined in ``res`` (``why``: the profile did not close, or was not
     computed); the finding."""
-    reason = f"a record of {periods:.2g} of a swing does not determine it ({why})"
-    i = {n: k for k, n in enumerate(res.names)}
-    for n in names:
-        res.determined[n] = False
-        res.reasons[n] = reason
-        res.stderr[n] = math.inf
-        res.covariance[i[n], :] = math.nan
-        res.covariance[:, i[n]] = math.nan
-        res.covariance[i[n], i[n]] = math.inf
-        res.correlation[i[n], :] = math.nan
-        res.correlation[:, i[n]] = math.nan
+    mark_not_determined(res, names, f"a record of {periods:.2g} of a swing does not determine it ({why})")
     shown = "; ".join(shown_interval(res, n, lo, hi) for n, (lo, hi) in profiled.items())
     return (
         f"the record spans only {periods:.2g} of a small-swing period 2π√(l/g) = {period:.3g} s: "
@@ -319,6 +309,23 @@ def _widened(
         f"({shown}; the error bar is the larger side over 1.96), which the curvature at the fit "
         "understates. Record at least one full swing to narrow them"
     ]
+
+
+def mark_not_determined(res: Any, names: list[str], reason: str) -> None:
+    """``names`` marked not determined in the :class:`pendulab.FitResult` ``res`` (in place) with the
+    ``reason``: no bar (stderr inf), their rows and columns of the covariance and correlation NaN, the
+    covariance's diagonal inf (as identify.py leaves a parameter the data do not determine; shared
+    with mirror.py)."""
+    i = {n: k for k, n in enumerate(res.names)}
+    for n in names:
+        res.determined[n] = False
+        res.reasons[n] = reason
+        res.stderr[n] = math.inf
+        res.covariance[i[n], :] = math.nan
+        res.covariance[:, i[n]] = math.nan
+        res.covariance[i[n], i[n]] = math.inf
+        res.correlation[i[n], :] = math.nan
+        res.correlation[:, i[n]] = math.nan
 
 
 def shown_interval(res: Any, name: str, lo: float, hi: float) -> str:
