@@ -8,17 +8,29 @@ nonzero) keeps its curvature bars. Units SI."""
 
 from __future__ import annotations
 
+import math
 import sys
+import time
+import warnings
 from pathlib import Path
+from typing import Any
 
 sys.path.append(str(Path(__file__).resolve().parents[2] / "bench"))  # last: bench/ has animate.py, compare.py
 import fit_validate as fv
+import numpy as np
+import pytest
+from fit_validate_cases import cases
 
-from pendulab.fitting import mirror
+import pendulab as pl
+from pendulab.fitting import inference, mirror, profile, short_record
+from pendulab.fitting.problem import Problem
 from pendulab.server.fit_words import REASONS, keyed
 
 PLANAR = 26  # the index of "video x,z, a planar swing fitted as a spherical one" in fit_validate_cases
 ELLIPSE = 27  # "video x,z, ellipse, the start's truth"
+
+#: The fit's time limit falls this long after the mirror check's first refit began [s].
+LEFT = 0.02
 
 
 def test_a_planar_swing_seen_from_the_side_has_honest_sideways_bars() -> None:
@@ -54,3 +66,90 @@ def test_the_reasons_of_the_sideways_motion_are_keyed() -> None:
         "bars of phi0 were taken from their 95 % profile-likelihood intervals (phi0 0.01 … 0.2; ...)"
     )
     assert (keyed(text)["key"], keyed(text)["values"]) == ("mirrorWidened", {"others": "phi0"})
+
+
+def _planar_fit(monkeypatch: pytest.MonkeyPatch, pressed: bool) -> tuple[Any, list[str], float | None]:
+    """Case 27, seed 15 (the mirror check profiles φ₀ and φ̇₀) fitted with the fit's time limit set to
+    fall LEFT s after the check's first refit began, or (``pressed``) Ctrl-C in that refit's first model
+    run; the result and the warnings."""
+    polished, rise, safe = inference._polished, profile.Rise.__call__, Problem.safe_residuals
+    searches: list[Any] = []
+    began: list[float] = []
+
+    def keep(search: Any, *args: Any) -> Any:
+        searches.append(search)
+        return polished(search, *args)
+
+    def first(rise_self: Any, c: float, start: dict[str, float]) -> Any:
+        if not began:
+            began.append(time.perf_counter())
+            if not pressed:
+                searches[-1].clock.time_limit = began[0] + LEFT - searches[-1].began
+        return rise(rise_self, c, start)
+
+    def run(problem: Any, *args: Any, **kwargs: Any) -> Any:
+        if pressed and began:
+            raise KeyboardInterrupt
+        return safe(problem, *args, **kwargs)
+
+    monkeypatch.setattr(inference, "_polished", keep)
+    monkeypatch.setattr(profile.Rise, "__call__", first)
+    monkeypatch.setattr(Problem, "safe_residuals", run)
+    case = cases()[PLANAR]
+    data = case.make(np.random.default_rng([PLANAR, 16]), 1.0)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            res = pl.fit(pendulum=pl.Pendulum(**case.pendulum), fit=case.fit, loss=case.loss, **data.kw)
+        except KeyboardInterrupt:
+            pytest.fail("Ctrl-C in the mirror check's profile left pl.fit as KeyboardInterrupt")
+    assert began, "the mirror check did not profile"
+    return res, [str(w.message) for w in caught], searches[-1].time_limit
+
+
+@pytest.mark.parametrize(("pressed", "stop"), [(False, "timeLimit"), (True, "ctrlC")])
+def test_the_time_limit_or_ctrl_c_in_the_mirror_check_leaves_the_sideways_motion_not_determined(
+    monkeypatch: pytest.MonkeyPatch, pressed: bool, stop: str
+) -> None:
+    """The mirror check's refits stopped by the time limit left φ₀ and φ̇₀ not determined with a reason
+    that said neither why nor what to do, and no warning; Ctrl-C in them raised KeyboardInterrupt out
+    of pl.fit and lost the fit. Now both end as a short record's profiles do (short_record.TimedRise,
+    why_unchecked): the fit is returned, φ₀ and φ̇₀ not determined, the reason and a warning naming the
+    time limit and how to raise it (or Ctrl-C), keyed for the page with the short record's clauses."""
+    res, said, limit = _planar_fit(monkeypatch, pressed)
+    values = {} if pressed else {"seconds": f"{limit:g}"}
+    why = short_record.STOPS[stop].format(**values)
+    clause = {"key": "stop" + stop[0].upper() + stop[1:], "values": values}
+    assert all(math.isfinite(v) for v in res.params.values()), res.params  # the search's optimum kept
+    assert res.interrupted  # stopped short in the error analysis (FitResult.interrupted)
+    for name in mirror.SIDEWAYS:
+        assert not res.determined[name] and res.stderr[name] == math.inf, (name, res.stderr)
+        reason = keyed(res.reasons[name], REASONS)
+        assert why in res.reasons[name] and reason["key"] == "mirrorUnchecked", res.reasons
+        assert reason["clauses"] == [clause], reason
+    note = next(w for w in said if w.startswith("seen from the side, phi0, phi_dot0 are not determined"))
+    assert why in note and keyed(note)["key"] == "mirrorUndetermined" and keyed(note)["clauses"] == [clause]
+    if not pressed:
+        assert "give a larger limit (pl.fit's time_limit=, pendulab fit's --time-limit)" in note
+
+
+def test_ctrl_c_before_the_mirror_check_names_ctrl_c(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Ctrl-C in the polish skips the mirror check (inference.py): φ₀ and φ̇₀ are not determined and
+    their reason and the finding name Ctrl-C (check_mirror's ``ctrl_c``), not a vague "the fit
+    stopped" as before."""
+
+    def pressed(*args: Any, **kwargs: Any) -> Any:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(inference, "polish", pressed)
+    case = cases()[PLANAR]
+    data = case.make(np.random.default_rng([PLANAR, 16]), 1.0)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = pl.fit(pendulum=pl.Pendulum(**case.pendulum), fit=case.fit, loss=case.loss, **data.kw)
+    why = short_record.STOPS["ctrlC"]
+    for name in mirror.SIDEWAYS:
+        assert not res.determined[name] and why in res.reasons[name], res.reasons
+    assert any(
+        str(w.message).startswith("seen from the side, phi0") and why in str(w.message) for w in caught
+    )

@@ -146,7 +146,7 @@ def conclude(
     checkable = not interrupted and not stopped and search.loss == "linear"
     said += check_short_record(res, search, checkable, ctrl_c=bool(stopped))
     # data blind to the mirror y -> -y near the plane: the profile likelihood gives φ₀'s and φ̇₀'s bars
-    said += check_mirror(res, search, checkable)
+    said += check_mirror(res, search, checkable, ctrl_c=bool(stopped))
     # stopped short anywhere (Ctrl-C, or a step the time limit cut or skipped): some results incomplete
     res.interrupted = interrupted or bool(stopped) or search.clock.ctrl_c or search.clock.ran_out
     if stopped:

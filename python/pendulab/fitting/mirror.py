@@ -20,8 +20,10 @@ wider of its two half-widths). The bar becomes the larger side over 1.96 (never 
 short_record.py shows its profile intervals. With both held at the plane (the other unknowns refitted)
 the misfit rising less than the χ²(2) 95 % quantile (5.99), the data are consistent with a planar swing,
 which is said (a finding naming the profile intervals); otherwise a bar widened by
-:data:`short_record.WIDENED` or more is said. An open profile, or one the time limit or an unfinished or
-unconverged fit leaves unchecked, makes the parameter not determined, with its reason. Records shorter
+:data:`short_record.WIDENED` or more is said. An open profile makes the parameter not determined, with
+its reason; so does a check the time limit or Ctrl-C in a refit stops, or an interrupted, unconverged or
+robust fit leaves undone, with a finding, both saying why and what to do as a short record's do (the
+same code: short_record.TimedRise, why_unchecked; Ctrl-C returns the fit). Records shorter
 than a swing are short_record.py's (every parameter profiled there); noise-free data fitted to round-off
 have no statistics to profile.
 Units: φ₀ [rad], φ̇₀ [rad/s]; times [s].
@@ -37,9 +39,20 @@ import numpy as np
 
 from .identify import FLAT
 from .problem import bounds_of, scale_of
-from .profile import Rise, profile_end
-from .search import Search, TimeUp
-from .short_record import ASYMMETRIC, LEVEL, SHORT_PERIODS, WIDENED, mark_not_determined, shown_interval
+from .profile import profile_end
+from .search import Search
+from .short_record import (
+    ASYMMETRIC,
+    LEVEL,
+    SHORT_PERIODS,
+    STOPPED,
+    WIDENED,
+    Late,
+    TimedRise,
+    mark_not_determined,
+    shown_interval,
+    why_unchecked,
+)
 
 #: The sideways motion: the unknowns the mirror y → −y changes (to their negatives).
 SIDEWAYS = ("phi0", "phi_dot0")
@@ -59,30 +72,14 @@ PLANAR_RISE = 5.991
 UNCHECKED = "the fit stopped before the profile likelihood of the sideways motion was checked"
 """Why φ₀, φ̇₀ are not determined when the profile was not computed (server/fit_words.py keys it)."""
 
+NARROW = (
+    "near its plane the sideways motion shows only at second order and the curvature's error bars are too "
+    "narrow"
+)
+"""Why the curvature's bars of φ₀, φ̇₀ are not kept when their profile was not checked."""
+
 OPEN = "seen from the side near its plane, the sideways motion's profile likelihood does not close"
 """Why φ₀ or φ̇₀ is not determined when its profile is open (server/fit_words.py keys it)."""
-
-
-class _Late(Exception):
-    """The fit's time limit passed during the check."""
-
-
-class _TimedRise(Rise):
-    """profile.py's rise with every refit bounded by the fit's time limit (``clock``: the fit's search),
-    raising :class:`_Late` once it has passed; ``held`` are the other sideways unknowns held at their
-    values in the start (the plane's rise: both held)."""
-
-    def __init__(self, res: Any, name: str, period: float, clock: Search, held: tuple[str, ...]) -> None:
-        super().__init__(res, name, period, clock)
-        self.others = [n for n in self.others if n not in held]
-
-    def __call__(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float], bool]:
-        if self.clock is not None and self.clock.time_up():
-            raise _Late
-        try:
-            return super().__call__(c, start)
-        except TimeUp:
-            raise _Late from None
 
 
 def plane_of(name: str, value: float) -> float:
@@ -90,12 +87,14 @@ def plane_of(name: str, value: float) -> float:
     return math.pi * round(value / math.pi) if name == "phi0" else 0.0
 
 
-def check_mirror(res: Any, clock: Search, checkable: bool = True) -> list[str]:
+def check_mirror(res: Any, clock: Search, checkable: bool = True, ctrl_c: bool = False) -> list[str]:
     """For a mirror-blind :class:`pendulab.FitResult` ``res`` whose fitted sideways motion lies within
     :data:`MIRROR_BARS` bars of its plane: the bars of φ₀ and φ̇₀ from their profile likelihood (or
     not determined), ``res`` changed in place; the findings to warn (module doc). ``clock``: the fit's
-    search, whose ``time_limit`` bounds every refit; not ``checkable`` (an interrupted fit, a robust
-    loss) or not converged: not determined."""
+    search, whose ``time_limit`` bounds every refit; once it has passed, at Ctrl-C in a refit, when not
+    ``checkable`` (an interrupted fit, a robust loss; ``ctrl_c``: Ctrl-C stopped the error analysis
+    before) or not converged: not determined, the reason and the finding saying why and what to do
+    (short_record.why_unchecked, as a short record's)."""
     names = [n for n in SIDEWAYS if n in res.params and res.determined[n]]
     flat = [n for n in SIDEWAYS if n in res.params and res.reasons.get(n, "").startswith(FLAT)]
     values = {**res.fixed, **res.params}
@@ -112,20 +111,18 @@ def check_mirror(res: Any, clock: Search, checkable: bool = True) -> list[str]:
     if float(res.t[-1] - res.t[0]) < SHORT_PERIODS * period or _distance(res, names) > MIRROR_BARS:
         return []  # short records: short_record.py profiles every parameter
     if not (checkable and res.converged):  # no optimum to profile from
-        mark_not_determined(res, [n for n in names if n not in flat], UNCHECKED)
-        return []
+        return _stopped(res, names, flat, why_unchecked(res, clock, "ctrl_c" if ctrl_c else ""))
     from scipy import stats
 
     target = float(stats.chi2.ppf(LEVEL, 1))
     try:
         held = tuple(n for n in SIDEWAYS if n in res.params)
         plane = {n: plane_of(n, values[n]) for n in SIDEWAYS}
-        rise = _TimedRise(res, held[0], period, clock, held)
+        rise = TimedRise(res, held[0], period, clock, held)
         plane_rise = rise(plane[held[0]], {**values, **plane})[0]
         ends = {n: _interval(res, n, values, period, clock, target) for n in names}
-    except _Late:  # (one not determined by the curvature keeps its reason)
-        mark_not_determined(res, [n for n in names if n not in flat], UNCHECKED)
-        return []
+    except Late as e:  # the time limit or Ctrl-C in a refit: the fit is returned
+        return _stopped(res, names, flat, why_unchecked(res, clock, "ctrl_c" if e.ctrl_c else "late"))
     closed = {n: e for n, e in ends.items() if all(map(math.isfinite, e))}
     mark_not_determined(res, [n for n in ends if n not in closed and n not in flat], OPEN)
     return _widened(res, closed, plane_rise)
@@ -155,7 +152,7 @@ def _interval(
 ) -> tuple[float, float]:
     """The 95 % profile interval of ``name`` [its unit] (module doc): ±inf for an end that does not
     close within DOUBLINGS doublings of the curvature's bar, reaches a bound, or is not settled."""
-    rise = _TimedRise(res, name, period, clock, ())
+    rise = TimedRise(res, name, period, clock)
     value, err = values[name], res.stderr[name]
     centre = plane_of(name, value)
     lo_b, hi_b = bounds_of(res._problem.model, name, value)
@@ -179,6 +176,21 @@ def _interval(
         return centre - half, centre + half
     lo, hi = sorted((inner, outer))
     return lo, hi
+
+
+def _stopped(res: Any, names: list[str], flat: list[str], why: str) -> list[str]:
+    """The check of ``names`` not done (``why``: short_record.why_unchecked): those determined by the
+    curvature marked not determined (its bars are too narrow near the plane; ``flat`` ones keep their
+    reason), the reason and the finding naming why and what to do, as a short record's (no finding
+    for a fit that did not converge: its own warning says so)."""
+    said = "" if why == STOPPED else f"; {why}"
+    mark_not_determined(res, [n for n in names if n not in flat], f"{UNCHECKED} ({NARROW}{said})")
+    if not said:  # not converged: the fit's own warning says so
+        return []
+    return [
+        f"seen from the side, {', '.join(names)} {'is' if len(names) == 1 else 'are'} not determined "
+        f"({NARROW}{said}). Fit planar=True for a swing in a plane"
+    ]
 
 
 def _widened(res: Any, closed: dict[str, tuple[float, float]], plane_rise: float) -> list[str]:

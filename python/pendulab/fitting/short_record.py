@@ -79,32 +79,39 @@ STOPS = {
 """Why the profile likelihood was not checked -> the English words of the reason (server/fit_words.py
 keys them, the page has its own words)."""
 
+STOPPED = "the fit stopped before the profile likelihood was checked"
+"""Why the profile likelihood was not checked when none of :data:`STOPS` is known to be the cause."""
 
-class _Late(Exception):
-    """The fit's time limit passed during the check, or (``ctrl_c``) Ctrl-C was pressed in it."""
+
+class Late(Exception):
+    """The fit's time limit passed during a profile's refits, or (``ctrl_c``) Ctrl-C was pressed in one
+    (shared with mirror.py)."""
 
     def __init__(self, ctrl_c: bool = False) -> None:
         super().__init__()
         self.ctrl_c = ctrl_c
 
 
-class _TimedRise(Rise):
+class TimedRise(Rise):
     """profile.py's rise of the misfit with every refit bounded by the fit's time limit (``clock``: the
-    fit's search), raising :class:`_Late` once it has passed, before a refit or during one, and for
-    Ctrl-C in a refit (the fit then keeps its values, as Ctrl-C in the search does)."""
+    fit's search), raising :class:`Late` once it has passed, before a refit or during one, and for
+    Ctrl-C in a refit (the fit then keeps its values, as Ctrl-C in the search does). ``held``: other
+    unknowns kept at their values in the start, not refitted (mirror.py: the sideways motion held at
+    its plane). Shared with mirror.py."""
 
-    def __init__(self, res: Any, name: str, period: float, clock: Search) -> None:
+    def __init__(self, res: Any, name: str, period: float, clock: Search, held: tuple[str, ...] = ()) -> None:
         super().__init__(res, name, period, clock)
+        self.others = [n for n in self.others if n not in held]
 
     def __call__(self, c: float, start: dict[str, float]) -> tuple[float, dict[str, float], bool]:
         if self.clock is not None and self.clock.time_up():
-            raise _Late
+            raise Late
         try:
             return super().__call__(c, start)
         except TimeUp:
-            raise _Late from None
+            raise Late from None
         except KeyboardInterrupt:
-            raise _Late(ctrl_c=True) from None
+            raise Late(ctrl_c=True) from None
 
 
 def check_short_record(res: Any, clock: Search, checkable: bool = True, ctrl_c: bool = False) -> list[str]:
@@ -114,7 +121,7 @@ def check_short_record(res: Any, clock: Search, checkable: bool = True, ctrl_c: 
     the findings to warn. ``clock``: the fit's search, whose ``time_limit`` (from the fit's start)
     bounds every refit of the profiles; once it has passed, at Ctrl-C during them, or when not
     ``checkable`` (an interrupted fit, a robust loss), the profiles not finished are not computed and
-    their parameters are not determined (the finding says why: :func:`_unchecked`; ``ctrl_c``: Ctrl-C
+    their parameters are not determined (the finding says why: :func:`why_unchecked`; ``ctrl_c``: Ctrl-C
     stopped the error analysis before the check): their curvature bars cannot be trusted."""
     values = {**res.fixed, **res.params}
     length, g = float(values.get("length", math.nan)), float(values.get("g", math.nan))
@@ -127,12 +134,12 @@ def check_short_record(res: Any, clock: Search, checkable: bool = True, ctrl_c: 
         return []
     stop = "ctrl_c" if ctrl_c else ""
     if not core:  # the curvature left them not determined: the other bars hold them fixed
-        return _held(res, periods, period, clock, checkable, why=_unchecked(res, clock, stop))
+        return _held(res, periods, period, clock, checkable, why=why_unchecked(res, clock, stop))
     linked = _linked(res, core)
     profiled: dict[str, tuple[float, float]] = {}
     unsettled: list[str] = []
     if not checkable:
-        why = _unchecked(res, clock, stop)
+        why = why_unchecked(res, clock, stop)
         said = _undetermined(res, core + linked, periods, period, profiled, why)
         return [said, *_held(res, periods, period, clock, checkable, why=why)]
     try:
@@ -140,8 +147,8 @@ def check_short_record(res: Any, clock: Search, checkable: bool = True, ctrl_c: 
             profiled[name] = _profile(res, name, period, clock, unsettled)
             if not all(map(math.isfinite, profiled[name])):
                 break  # an open profile: the valley is open
-    except _Late as e:
-        why = _unchecked(res, clock, "ctrl_c" if e.ctrl_c else "late")
+    except Late as e:
+        why = why_unchecked(res, clock, "ctrl_c" if e.ctrl_c else "late")
         said = _undetermined(res, core + linked, periods, period, profiled, why)
         return [said, *_held(res, periods, period, clock, checkable and not e.ctrl_c, why=why)]
     if any(not all(map(math.isfinite, ends)) for ends in profiled.values()):
@@ -170,19 +177,19 @@ def _held(
     determined and their profiles closed (``done``: those profiled), the others are profiled too: the
     curvature's bars along the same valley were too narrow (case 20, seed 31: φ̇₀ = 3.03 ± 0.56 rad/s
     for 0.8, 4 bars off, with length and g from their profiles). ``why``: the reason given to those
-    not profiled when the check was already stopped (default: :func:`_unchecked`)."""
+    not profiled when the check was already stopped (default: :func:`why_unchecked`)."""
     if done is None and not any(n in res.params and not res.determined[n] for n in ("length", "g")):
         return []
     determined = [n for n in res.names if res.determined[n] and n not in (done or set())]
     chosen = [n for n in determined if n not in STATE_NAMES] + [n for n in determined if n in STATE_NAMES]
     profiled: dict[str, tuple[float, float]] = {}
     unsettled: list[str] = []
-    why = why or _unchecked(res, clock)
+    why = why or why_unchecked(res, clock)
     try:
         for name in chosen if checkable else []:
             profiled[name] = _profile(res, name, period, clock, unsettled)
-    except _Late as e:
-        why = _unchecked(res, clock, "ctrl_c" if e.ctrl_c else "late")
+    except Late as e:
+        why = why_unchecked(res, clock, "ctrl_c" if e.ctrl_c else "late")
     closed = {n: e for n, e in profiled.items() if all(map(math.isfinite, e))}
     unchecked = [n for n in chosen if n not in profiled]
     said = [_undetermined(res, unchecked, periods, period, {}, why)] if unchecked else []
@@ -192,11 +199,12 @@ def _held(
     return said + (_widened(res, [], [], periods, period, closed) if closed else [])
 
 
-def _unchecked(res: Any, clock: Search, stop: str = "") -> str:
+def why_unchecked(res: Any, clock: Search, stop: str = "") -> str:
     """Why a profile was not computed or not finished: the fit's time limit (named, with how to raise
     it in Python and on the command line; ``stop`` "late": a refit stopped for it, maybe a Jacobian's
     run ahead of it), Ctrl-C (``stop`` "ctrl_c": in a refit; or in the search), or a robust loss,
-    with which the profiles are not computed (server/fit_words.py keys each: :data:`STOPS`)."""
+    with which the profiles are not computed (server/fit_words.py keys each: :data:`STOPS`); else
+    :data:`STOPPED`. Shared with mirror.py."""
     limit = clock.time_limit
     if clock.loss != "linear":  # never profiled, whatever else stopped the fit
         return STOPS["robust"].format(loss=clock.loss)
@@ -204,7 +212,7 @@ def _unchecked(res: Any, clock: Search, stop: str = "") -> str:
         return STOPS["ctrlC"]
     if limit is not None and (stop == "late" or clock.time_up() or "time limit" in str(res.message)):
         return STOPS["timeLimit"].format(seconds=f"{limit:g}")
-    return "the fit stopped before the profile likelihood was checked"
+    return STOPPED
 
 
 def _open(unsettled: list[str]) -> str:
@@ -236,7 +244,7 @@ def _profile(res: Any, name: str, period: float, clock: Search, unsettled: list[
     converged refit closes (profile.py; ``name`` is then added to ``unsettled``)."""
     from scipy import stats
 
-    rise = _TimedRise(res, name, period, clock)
+    rise = TimedRise(res, name, period, clock)
 
     values = {**res.fixed, **res.params}
     value, err = values[name], res.stderr[name]

@@ -122,6 +122,14 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
             "bars of {others:l} were taken from their 95 % profile-likelihood intervals"
         ),
     ),
+    (
+        "mirrorUndetermined",
+        _p("seen from the side, {others:l} are not determined (near its plane the sideways motion shows"),
+    ),
+    (
+        "mirrorUndetermined",
+        _p("seen from the side, {others:l} is not determined (near its plane the sideways motion shows"),
+    ),
     # pendulab/fitting/data.py
     ("dropped", _p("dropped {n} of {total} rows with NaN or inf")),
     ("sorted", _p("the times were not in increasing order: the rows were sorted")),
