@@ -116,29 +116,16 @@ def trial(index: int, seed: int, time_limit: float, sigma_given: bool = False) -
         else math.nan
     )
     out["truth"] = dict(data.truth)
-    if res.mirror_blind and out["params"].get("phi_dot0", 0.0) * out["truth"].get("phi_dot0", 0.0) < 0.0:
-        for n in ("phi0", "phi_dot0"):  # the data cannot tell the motion from its mirror image y -> -y
-            out["truth"][n] = -out["truth"][n]
+    _same_start(out["truth"], out["params"], bool(res.mirror_blind))
+    diff = {n: _difference(n, out["params"][n], v) for n, v in out["truth"].items() if n in out["params"]}
     out["rel_error"] = {
-        n: float(abs(out["params"][n] / v - 1.0)) if v else float(abs(out["params"][n]))
-        for n, v in out["truth"].items()
-        if n in out["params"]
+        n: float(abs(d / out["truth"][n]) if out["truth"][n] else abs(d)) for n, d in diff.items()
     }
-    out["off_in_stderr"] = {
-        n: float(abs(out["params"][n] - v) / out["stderr"][n])
-        for n, v in out["truth"].items()
-        if n in out["params"]
-    }
+    out["off_in_stderr"] = {n: float(abs(d) / out["stderr"][n]) for n, d in diff.items()}
     out["inside"] = {
-        n: bool(out["determined"][n] and abs(out["params"][n] - v) <= 2.0 * out["stderr"][n])
-        for n, v in out["truth"].items()
-        if n in out["params"]
+        n: bool(out["determined"][n] and abs(d) <= 2.0 * out["stderr"][n]) for n, d in diff.items()
     }
-    out["within3"] = {
-        n: bool(abs(out["params"][n] - v) <= 3.0 * out["stderr"][n])
-        for n, v in out["truth"].items()
-        if n in out["params"]
-    }
+    out["within3"] = {n: bool(abs(d) <= 3.0 * out["stderr"][n]) for n, d in diff.items()}
     if case.sort == "units":
         shift = {
             n: abs(res_mm.params[n] / MM_SCALE[n] - res.params[n]) / res.stderr[n]
@@ -149,6 +136,34 @@ def trial(index: int, seed: int, time_limit: float, sigma_given: bool = False) -
         out["units_shift_in_stderr"] = {n: float(v) for n, v in shift.items()}
         out["units_stderr_ratio"] = {n: float(v) for n, v in ratio.items()}
     return out
+
+
+#: The start's angles [rad]: compared modulo 2π (:func:`_difference`).
+ANGLES = ("theta0", "phi0")
+
+
+def _difference(name: str, fitted: float, truth: float) -> float:
+    """fitted − truth [the parameter's unit]; for an angle of :data:`ANGLES` wrapped to (−π, π], so
+    that φ₀ = −3.1 and 3.1 rad are 0.08 rad apart, not 6.2."""
+    d = fitted - truth
+    if name in ANGLES:
+        d -= 2.0 * math.pi * math.ceil((d - math.pi) / (2.0 * math.pi))
+    return d
+
+
+def _same_start(truth: dict[str, float], params: dict[str, float], mirror_blind: bool) -> None:
+    """The true start written as the fit writes it (in place): θ₀ is signed (problem.bounds_of), and
+    with φ₀ fitted (θ, φ, θ̇, φ̇) and (−θ, φ + π, −θ̇, φ̇) are the same start; data blind to the mirror
+    y → −y cannot tell (φ₀, φ̇₀) from (−φ₀, −φ̇₀): the truth takes the sign of the fit's φ̇₀."""
+    if "phi0" in params and truth.get("theta0", 0.0) * params.get("theta0", 0.0) < 0.0:
+        truth["theta0"] = -truth["theta0"]
+        for n, flip in (("phi0", lambda v: v + math.pi), ("theta_dot0", lambda v: -v)):
+            if n in truth:
+                truth[n] = flip(truth[n])
+    if mirror_blind and params.get("phi_dot0", 0.0) * truth.get("phi_dot0", 0.0) < 0.0:
+        for n in ("phi0", "phi_dot0"):  # the data cannot tell the motion from its mirror image y -> -y
+            if n in truth:
+                truth[n] = -truth[n]
 
 
 def _worker(conn: Any, time_limit: float, sigma_given: bool) -> None:

@@ -216,10 +216,10 @@ def _widened(res: Any, closed: dict[str, tuple[float, float]], plane_rise: float
     intervals = "; ".join(shown_interval(res, n, lo, hi) for n, (lo, hi) in closed.items())
     if plane_rise < PLANAR_RISE:
         return [
-            "the data are consistent with a planar swing: held in its plane (phi0 = 0 or π, phi_dot0 = 0) "
-            f"the misfit rises by only {max(plane_rise, 0.0):.2g} (95 % level for the two: "
-            f"{PLANAR_RISE:.3g}). Seen from the side, the sideways motion shows only at second order "
-            "near the plane"
+            f"the data are consistent with a planar swing: held in its plane (phi0 = {_plane_shown(res)}, "
+            f"phi_dot0 = 0: the x–z plane) the misfit rises by only {max(plane_rise, 0.0):.2g} (95 % level "
+            f"for the two: {PLANAR_RISE:.3g}). Seen from the side, the sideways motion shows only at second "
+            "order near the plane"
             + (
                 f"; the error bars of {', '.join(closed)} were taken from their 95 % profile-likelihood "
                 f"intervals ({intervals}; the error bar is the larger side over 1.96)"
@@ -236,6 +236,13 @@ def _widened(res: Any, closed: dict[str, tuple[float, float]], plane_rise: float
         f"({intervals}; the error bar is the larger side over 1.96), which the curvature at the fit "
         "understates"
     ]
+
+
+def _plane_shown(res: Any) -> str:
+    """φ₀ of the plane nearest the fit (:func:`plane_of`), as the data see it: 0 or π (mod 2π; −π and
+    3π are the same half-plane, x < 0)."""
+    phi = {**res.fixed, **res.params}.get("phi0", 0.0)
+    return "π" if round(plane_of("phi0", phi) / math.pi) % 2 else "0"
 
 
 def _from_profile(res: Any, name: str, err: float) -> None:

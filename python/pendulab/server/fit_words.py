@@ -111,8 +111,8 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
     (
         "mirrorPlanar",
         _p(
-            "the data are consistent with a planar swing: held in its plane (phi0 = 0 or π, phi_dot0 = 0) "
-            "the misfit rises by only {rise} (95 % level for the two: {level})"
+            "the data are consistent with a planar swing: held in its plane (phi0 = {plane:l}, phi_dot0 = 0: "
+            "the x–z plane) the misfit rises by only {rise} (95 % level for the two: {level})"
         ),
     ),
     (
