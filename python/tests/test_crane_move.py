@@ -92,7 +92,7 @@ def test_a_shaped_move_drives_the_moving_pivot_model() -> None:
     def residual(shaper: crane.Shaper | None) -> float:
         path = crane.move(distance=3.0, v_max=0.5, a_max=0.3, j_max=1.0, shaper=shaper, t_start=1.0)
         t_end = path.t_end + 25.0
-        pend = pl.Pendulum(length=rope, g=g, pivot_samples=path.pivot_samples(t_end + 1.0, dt=0.01))
+        pend = pl.Pendulum(length=rope, g=g, pivot_samples=path.pivot_samples(t_end + 1.0, spacing=0.01))
         tr = pl.simulate(
             pend,
             pend.state_from_angles(0.0, 0.0, 0.0, 0.0),
@@ -142,7 +142,7 @@ def test_a_measured_path_is_not_extrapolated_past_its_samples() -> None:
     with pytest.raises(pl.InvalidInputError, match=r"t = 10 s is outside .* t = 0 … 2 s"):
         sampled.position(10.0)
     with pytest.raises(
-        pl.InvalidInputError, match=r"t = nan s is not a finite number: a time \[s\] in 0 … 2"
+        pl.InvalidInputError, match=r"^invalid t = nan: a finite number in \[-1e12, 1e12\] s$"
     ):
         sampled.position(float("nan"))
     with pytest.raises(pl.InvalidInputError, match=r"t = -0.5 s is outside"):

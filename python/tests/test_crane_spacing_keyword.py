@@ -86,20 +86,45 @@ def test_output_spacing_and_dt_together_are_refused_naming_both(call: str) -> No
 
 def test_a_bad_spacing_is_named_as_written() -> None:
     c = _crane()
-    with pytest.raises(
-        InvalidInputError, match=r"^output_spacing = 0\.0 is not allowed: a finite number > 0 s"
-    ):
+    with pytest.raises(InvalidInputError, match=r"^invalid output_spacing = 0\.0: a finite number > 0 s$"):
         c.simulate(t_end=2.0, output_spacing=0.0)
     with (
         pytest.warns(DeprecationWarning),
-        pytest.raises(InvalidInputError, match=r"^dt = -1\.0 is not allowed"),
+        pytest.raises(InvalidInputError, match=r"^invalid dt = -1\.0: a finite number > 0 s$"),
     ):
         c.simulate(t_end=2.0, dt=-1.0)
     with pytest.raises(InvalidInputError, match=r"raise output_spacing or shorten t_end"):
         c.simulate(t_end=1e4, output_spacing=1e-2)
     with pytest.raises(
-        InvalidInputError, match=r"need 0 < output_spacing <= settle .* output_spacing = 5\.0"
+        InvalidInputError,
+        match=r"^invalid output_spacing = 5\.0: a finite number > 0 s, at most settle = 3\.0",
     ):
         crane.residual_grid([4.0], [2.0], [None], settle=3.0, output_spacing=5.0)
-    with pytest.warns(DeprecationWarning), pytest.raises(InvalidInputError, match=r"need 0 < dt <= settle"):
+    with (
+        pytest.warns(DeprecationWarning),
+        pytest.raises(InvalidInputError, match=r"^invalid dt = 5\.0: .* at most settle"),
+    ):
         crane.residual_grid([4.0], [2.0], [None], settle=3.0, dt=5.0)
+
+
+def test_pivot_samples_takes_spacing_and_dt_gives_the_same_samples_with_a_warning() -> None:
+    """``Path.pivot_samples``' spacing of the returned samples is ``spacing`` (it was ``dt``), by the same
+    mechanism (crane/_spacing.py): dt= warns at the caller's line and gives the same samples."""
+    path = crane.move(distance=1.0, v_max=0.5, a_max=0.5, t_start=0.2)
+    with _new_keyword_only():
+        t, p = path.pivot_samples(3.0, spacing=0.25)
+        positional = path.pivot_samples(3.0, 0.25)  # the old place of dt among the arguments
+        default, _ = path.pivot_samples(1.0)
+    assert t.size == 13 and np.allclose(np.diff(t), 0.25) and p.shape == (13, 3)
+    assert default.size == 101  # the default kept, 0.01 s
+    assert positional[0].tobytes() == t.tobytes() and positional[1].tobytes() == p.tobytes()
+    warned = r"Path\.pivot_samples\(dt=\.\.\.\) is deprecated: dt is the older name of spacing \(the time "
+    with pytest.warns(DeprecationWarning, match=warned + r".*\); write spacing=0\.25$") as caught:
+        old = path.pivot_samples(3.0, dt=0.25)
+    assert len(caught) == 1 and caught[0].filename == __file__
+    assert old[0].tobytes() == t.tobytes() and old[1].tobytes() == p.tobytes()
+    both = r"^Path\.pivot_samples: spacing = 0\.25 and dt = 0\.5 both given: dt is the older name of spacing"
+    with _new_keyword_only(), pytest.raises(InvalidInputError, match=both):
+        path.pivot_samples(3.0, spacing=0.25, dt=0.5)
+    with pytest.raises(InvalidInputError, match=r"^invalid spacing = '0\.25': a finite number > 0 s$"):
+        path.pivot_samples(3.0, spacing="0.25")

@@ -1,33 +1,44 @@
-"""The output spacing of the crane's Python calls (:meth:`pendulab.crane.Crane.simulate`,
-:func:`pendulab.crane.residual_grid`): the keyword ``output_spacing`` [s], the time between saved samples
-(the crane's DOP853 chooses its own steps). ``dt`` is its older name, still taken with a
-DeprecationWarning, as a crane file's ``[simulation] dt`` is still read (docs/cranes.md)."""
+"""The spacing keywords of the crane's Python calls: ``output_spacing`` [s] of
+:meth:`pendulab.crane.Crane.simulate` and :func:`pendulab.crane.residual_grid`, the time between saved
+samples (the crane's DOP853 chooses its own steps), and ``spacing`` [s] of
+:meth:`pendulab.crane.Path.pivot_samples`, the time between the returned samples. ``dt`` is their
+older name, still taken with a DeprecationWarning, as a crane file's ``[simulation] dt`` is still read
+(docs/cranes.md)."""
 
 from __future__ import annotations
 
 import warnings
 
 from .._core import InvalidInputError
+from ..validate import show
 
 OLD_NAME = "dt"
+SAVED = "the time between saved samples in s, not an integrator step"
+"""What ``output_spacing`` is, in the messages."""
 
 
-def spacing(where: str, output_spacing: float | None, dt: float | None, default: float) -> tuple[str, float]:
-    """(the name the spacing was given by, the spacing [s]) of the call ``where`` (e.g.
-    ``"Crane.simulate"``): ``output_spacing``, else the older ``dt`` (a DeprecationWarning naming
-    ``output_spacing``, pointing at the caller of ``where``), else ``default``. Both given is an
-    ``InvalidInputError`` naming both values. ``None`` is "not given"."""
+def spacing(
+    where: str,
+    output_spacing: object,
+    dt: object,
+    default: float,
+    new: str = "output_spacing",
+    what: str = SAVED,
+) -> tuple[str, object]:
+    """(the name the spacing was given by, the spacing as given) of the call ``where`` (e.g.
+    ``"Crane.simulate"``): ``output_spacing`` (the keyword ``new``, which is ``what``), else the older
+    ``dt`` (a DeprecationWarning naming ``new``, pointing at the caller of ``where``), else
+    ``default``. Both given is an ``InvalidInputError`` naming both values. ``None`` is "not given";
+    the caller checks the value (:mod:`pendulab.crane._checks`), naming it by the returned name."""
     if dt is None:
-        return "output_spacing", default if output_spacing is None else output_spacing
+        return new, default if output_spacing is None else output_spacing
     if output_spacing is not None:
         raise InvalidInputError(
-            f"{where}: output_spacing = {output_spacing!r} and dt = {dt!r} both given: dt is the older "
-            "name of output_spacing (the time between saved samples in s, not an integrator step); "
-            "give output_spacing only"
+            f"{where}: {new} = {show(output_spacing)} and dt = {show(dt)} both given: dt is the older "
+            f"name of {new} ({what}); give {new} only"
         )
     warnings.warn(
-        f"{where}(dt=...) is deprecated: dt is the older name of output_spacing (the time between saved "
-        f"samples in s, not an integrator step); write output_spacing={dt!r}",
+        f"{where}(dt=...) is deprecated: dt is the older name of {new} ({what}); write {new}={show(dt)}",
         DeprecationWarning,
         stacklevel=3,
     )

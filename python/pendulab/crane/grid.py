@@ -10,7 +10,6 @@ chunks in flight: the cases not computed are NaN and ``GridResult.interrupted`` 
 
 from __future__ import annotations
 
-import math
 import threading
 import warnings
 from collections.abc import Sequence
@@ -23,9 +22,11 @@ from numpy.typing import ArrayLike
 from .._core import InvalidInputError, RunOptions, crane_residual_grid
 from .._progress import tqdm
 from ..sweeps.backends import Threads, drive
+from ..validate import flag, integer, invalid
 from . import _spacing
+from ._checks import number, positive, positives, real, tolerances
 from .paths import move
-from .shaper import FloatArray, Shaper
+from .shaper import FloatArray, Shaper, check_shaper
 
 MAX_CASES = 1_000_000
 DEFAULT_SPACING = 0.05
@@ -80,24 +81,32 @@ def residual_grid(
     Runs in chunks (module doc): ``progress`` shows a bar (default: for more than 1000 cases),
     ``workers`` chunks run at once (each already parallel in the core). Ctrl-C returns what is done
     (NaN elsewhere, ``interrupted`` True) with a RuntimeWarning."""
-    name, spacing = _spacing.spacing("residual_grid", output_spacing, dt, DEFAULT_SPACING)
-    lr = np.asarray(ropes, dtype=np.float64).ravel()
-    rr = np.asarray(ratios, dtype=np.float64).ravel()
+    name, given = _spacing.spacing("residual_grid", output_spacing, dt, DEFAULT_SPACING)
+    lr = positives("ropes", ropes, "m").ravel()
+    rr = positives("ratios", ratios, "(m₂/m₁)").ravel()
+    if isinstance(shapers, str | bytes) or not isinstance(shapers, Sequence):
+        raise invalid("shapers", shapers, "a list of crane.Shaper or None (unshaped)")
+    for i, s in enumerate(shapers):
+        check_shaper(f"shapers[{i}]", s, none_ok=True)
+    settle = real("settle", settle, "a finite time in (0, 3600] s", lambda x: 0 < x <= 3600)
+    spacing = real(
+        name, given, f"a finite number > 0 s, at most settle = {settle!r} s", lambda x: 0 < x <= settle
+    )
+    crane = (
+        positive("hook_mass", hook_mass, "kg"),
+        positive("rigging", rigging, "m"),
+        number("g", g, "m/s²"),
+    )
+    rtol, atol = tolerances(rtol, atol)
+    if progress is not None:
+        flag("progress", progress)
+    workers = integer("workers", workers, 1, 64)
     n = len(shapers) * lr.size * rr.size
     if n == 0:
         raise InvalidInputError("give at least one rope length, one ratio and one shaper (None: unshaped)")
     if n > MAX_CASES:
         raise InvalidInputError(f"{n} cases exceed {MAX_CASES}; use a coarser grid")
-    if not (
-        math.isfinite(settle) and 0 < settle <= 3600 and math.isfinite(spacing) and 0 < spacing <= settle
-    ):
-        raise InvalidInputError(
-            f"need 0 < {name} <= settle <= 3600 s, got {name} = {spacing!r}, settle = {settle!r}"
-        )
-    if not (isinstance(workers, int) and 1 <= workers <= 64):
-        raise InvalidInputError(f"workers = {workers!r}: an integer in [1, 64]")
     # every value checked once, up front, by the core (a bad rope or ratio fails before any work)
-    crane = (hook_mass, rigging, g)
     crane_residual_grid(
         [], lr.tolist(), rr.tolist(), crane, settle, RunOptions(dt=spacing, rtol=rtol, atol=atol, max_steps=1)
     )

@@ -26,6 +26,8 @@ from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_are
 
 from .._core import InvalidInputError
+from ..validate import invalid
+from ._checks import later, number, numbers, positive, real, time, times
 from .paths import Path
 from .shaper import FloatArray
 
@@ -53,16 +55,20 @@ class LQR:
 
     def control(self, z: FloatArray) -> FloatArray:
         """u = clip(−K z, ±a_max) [m/s²] for states z (…, 4)."""
-        return np.asarray(np.clip(-(np.asarray(z) @ self.K[0]), -self.a_max, self.a_max), dtype=np.float64)
+        zz = numbers("z", z, "")
+        if zz.ndim == 0 or zz.shape[-1] != 4:
+            raise invalid(
+                "z", z, f"states (…, 4): x − x_target [m], ẋ [m/s], θ [rad], θ̇ [rad/s] (got {zz.shape})"
+            )
+        return np.asarray(np.clip(-(zz @ self.K[0]), -self.a_max, self.a_max), dtype=np.float64)
 
     def simulate(self, distance: float, t_end: float, t_start: float = 0.0, sway: float = 0.0) -> LQRRun:
         """The closed loop moving the trolley by ``distance`` [m] from rest at x = 0 at ``t_start`` [s]
         (the load at the angle ``sway`` [rad]) until ``t_end`` [s], in the nonlinear planar model."""
-        d, t0, t1 = float(distance), float(t_start), float(t_end)
-        if not (math.isfinite(d) and math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
-            raise InvalidInputError(
-                f"need a finite distance and t_end > t_start, got {distance!r}, {t_end!r}"
-            )
+        d = number("distance", distance, "m")
+        t0 = time("t_start", t_start)
+        t1 = later("t_end", t_end, t0)
+        theta0 = number("sway", sway, "rad")
         big_l, g, a_max, k = self.rope, self.g, self.a_max, self.K[0]
 
         # u = clip(−K z, ±a_max) kinks where the clip starts and stops acting: the loop is integrated
@@ -85,7 +91,7 @@ class LQR:
             ev.terminal, ev.direction = True, direction  # type: ignore[attr-defined]
             return ev
 
-        y: list[float] = [0.0, 0.0, float(sway), 0.0]
+        y: list[float] = [0.0, 0.0, theta0, 0.0]
         u0 = gain(np.array(y))
         mode = 1 if u0 > a_max else -1 if u0 < -a_max else 0
         pieces: list[tuple[float, Any]] = []
@@ -175,7 +181,7 @@ class LQRRun(Path):
     def trolley(self, t: Any, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
         """Trolley position [m], velocity [m/s], acceleration [m/s²] at times t [s] (at t_start those
         after it, or with ``left`` those before: at rest; at rest outside [t_start, t_end])."""
-        ts = np.atleast_1d(np.asarray(t, dtype=np.float64))
+        ts = np.atleast_1d(times("t", t))
         y = self._state(ts)
         z = y - np.array([self.distance, 0.0, 0.0, 0.0])
         a, b = self.span
@@ -184,7 +190,7 @@ class LQRRun(Path):
 
     def sway(self, t: Any) -> FloatArray:
         """The load's angle θ(t) [rad] in the planar model."""
-        return self._state(np.atleast_1d(np.asarray(t, dtype=np.float64)))[:, 2]
+        return self._state(np.atleast_1d(times("t", t)))[:, 2]
 
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
         x, v, a = self.trolley(t, left)
@@ -204,18 +210,19 @@ def lqr(
     """The LQR anti-sway controller for a trolley with a load on ``rope`` [m] (module doc): diagonal
     weights ``q`` on (x [m], ẋ [m/s], θ [rad], θ̇ [rad/s]) (≥ 0), ``r`` > 0 on u [m/s²], the
     acceleration limit ``a_max`` [m/s²] (> 0; inf: none)."""
-    big_l, gg, rr, am = float(rope), float(g), float(r), float(a_max)
-    if not (math.isfinite(big_l) and big_l > 0):
-        raise InvalidInputError(f"rope = {rope!r} is not allowed: a length > 0 m")
-    if not (math.isfinite(gg) and gg > 0):
-        raise InvalidInputError(f"g = {g!r} is not allowed: a gravity > 0 m/s²")
-    qq = np.asarray(q, dtype=float)
-    if qq.shape != (4,) or not np.all(np.isfinite(qq)) or np.any(qq < 0) or qq[0] == 0:
-        raise InvalidInputError(f"q = {q!r} is not allowed: four finite weights >= 0, the first > 0")
-    if not (math.isfinite(rr) and rr > 0):
-        raise InvalidInputError(f"r = {r!r} is not allowed: a weight > 0")
-    if not (am > 0) or math.isnan(am):
-        raise InvalidInputError(f"a_max = {a_max!r} is not allowed: > 0 m/s² (inf for no limit)")
+    big_l = positive("rope", rope, "m")
+    gg = positive("g", g, "m/s²")
+    qq = numbers("q", q, "", shape=(4,))
+    if np.any(qq < 0) or qq[0] == 0:
+        raise invalid("q", q, "four finite weights >= 0, the first > 0")
+    rr = positive("r", r, "")
+    # inf is the documented "no limit" (the default), the one non-finite value taken
+    unlimited = isinstance(a_max, float | np.floating) and a_max == math.inf
+    am = (
+        math.inf
+        if unlimited
+        else real("a_max", a_max, "a finite number > 0 m/s² (inf: no limit)", lambda x: x > 0)
+    )
     a, b = _matrices(big_l, gg)
     p = solve_continuous_are(a, b, np.diag(qq), np.array([[rr]]))
     k = (b.T @ p) / rr

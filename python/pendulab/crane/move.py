@@ -24,15 +24,8 @@ from typing import Any
 import numpy as np
 from scipy.optimize import brentq
 
-from .._core import InvalidInputError
-from .shaper import FloatArray, Shaper
-
-
-def _pos(name: str, value: Any, unit: str) -> float:
-    v = float(value)
-    if not (math.isfinite(v) and v > 0):
-        raise InvalidInputError(f"{name} = {value!r} is not allowed: a finite number > 0 {unit}")
-    return v
+from ._checks import number, positive, real, time, times
+from .shaper import FloatArray, Shaper, check_shaper
 
 
 @dataclass(frozen=True)
@@ -59,16 +52,16 @@ class Profile:
 
     def position(self, t: Any) -> FloatArray:
         """s(t) [m]."""
-        return self._eval(t, 0)
+        return self._eval(times("t", t), 0)
 
     def velocity(self, t: Any) -> FloatArray:
         """ṡ(t) [m/s]."""
-        return self._eval(t, 1)
+        return self._eval(times("t", t), 1)
 
     def acceleration(self, t: Any, left: bool = False) -> FloatArray:
         """s̈(t) [m/s²]: right-continuous at the steps of an acceleration-limited move (the left
         limits with ``left=True``)."""
-        return self._eval(t, 2, left)
+        return self._eval(times("t", t), 2, left)
 
     @property
     def t_end(self) -> float:
@@ -82,6 +75,7 @@ class Profile:
 
     def shaped(self, s: Shaper) -> Profile:
         """This profile convolved with the shaper ``s`` (T-11.3)."""
+        check_shaper("s", s)
         knots = (self.knots[:, None] + s.times[None, :]).ravel()
         coeffs = (self.coeffs[:, None] * s.amplitudes[None, :]).ravel()
         order = np.argsort(knots, kind="stable")
@@ -115,15 +109,13 @@ def profile(
     """The fastest rest-to-rest move over ``distance`` [m] (sign: direction) within the speed
     ``v_max`` [m/s], acceleration ``a_max`` [m/s²] and, if given, jerk ``j_max`` [m/s³] limits,
     starting at ``t_start`` [s] from ``start`` [m], convolved with ``shaper`` if given (module doc)."""
-    dist = float(distance)
-    if not (math.isfinite(dist) and dist != 0.0):
-        raise InvalidInputError(f"distance = {distance!r} is not allowed: a finite, nonzero distance in m")
-    v = _pos("v_max", v_max, "m/s")
-    a = _pos("a_max", a_max, "m/s²")
-    j = None if j_max is None else _pos("j_max", j_max, "m/s³")
-    t0 = float(t_start)
-    if not math.isfinite(t0):
-        raise InvalidInputError(f"t_start = {t_start!r} is not allowed: a finite time in s")
+    dist = real("distance", distance, "a finite, nonzero distance in m", lambda x: x != 0.0)
+    v = positive("v_max", v_max, "m/s")
+    a = positive("a_max", a_max, "m/s²")
+    j = None if j_max is None else positive("j_max", j_max, "m/s³")
+    t0 = time("t_start", t_start)
+    start = number("start", start, "m (or rad)")
+    check_shaper("shaper", shaper, none_ok=True)
     d = abs(dist)
     if v * _speed_up_time(v, a, j) > d:  # never reaches v_max: v T₁(v) = D
         v = brentq(lambda u: u * _speed_up_time(u, a, j) - d, 0.0, v, xtol=1e-15 * max(v, 1.0), rtol=1e-15)

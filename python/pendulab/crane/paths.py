@@ -10,8 +10,9 @@
 - samples (t_i, P_i), e.g. a measured path from a CSV file: the C² not-a-knot cubic spline (SciPy).
 
 Every path gives ``position/velocity/acceleration(t)`` (arrays (N, 3), m, m/s, m/s²), its jump times
-``breaks`` (where P̈ may step) and ``pivot_samples(dt)`` for ``pendulab.Pendulum(pivot_samples=...)``
-(the existing moving-pivot model, T-7.2), and ``knots`` for the crane dynamics (T-11.4).
+``breaks`` (where P̈ may step) and ``pivot_samples(t_end, spacing)`` for
+``pendulab.Pendulum(pivot_samples=...)`` (the existing moving-pivot model, T-7.2), and ``knots`` for
+the crane dynamics (T-11.4).
 """
 
 from __future__ import annotations
@@ -26,18 +27,32 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .._core import InvalidInputError
+from ..validate import integer, invalid
+from . import _spacing
+from ._checks import count, later, numbers, positive, time
+from ._checks import times as time_array
 from .move import Profile, profile
 from .shaper import FloatArray, Shaper
 
 Knots = tuple[FloatArray, FloatArray, FloatArray, FloatArray]
+SAMPLE_SPACING = 0.01
+"""The default ``spacing`` [s] of :meth:`Path.pivot_samples`."""
+RETURNED = "the time between the returned samples in s"
+"""What ``spacing`` of :meth:`Path.pivot_samples` is, in the messages."""
 
 
-def _unit(direction: Sequence[float]) -> FloatArray:
-    d = np.asarray(direction, dtype=np.float64)
-    n = float(np.linalg.norm(d)) if d.shape == (3,) else math.nan
+def _unit(direction: Sequence[float], name: str = "direction") -> FloatArray:
+    d = numbers(name, direction, "", shape=(3,))
+    n = float(np.linalg.norm(d))
     if not (math.isfinite(n) and n > 0):
-        raise InvalidInputError(f"direction = {direction!r} is not allowed: three finite numbers, not all 0")
+        raise invalid(name, direction, "three finite numbers, not all 0")
     return d / n
+
+
+def _profile_or_number(name: str, value: Any, unit: str) -> None:
+    """A :class:`Profile` or a constant (a finite number [``unit``])."""
+    if not isinstance(value, Profile):
+        numbers(name, value, unit, shape=())
 
 
 class Path:
@@ -55,15 +70,15 @@ class Path:
 
     def position(self, t: Any) -> FloatArray:
         """P(t) [m], shape (N, 3) for N times [s]."""
-        return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[0]
+        return self._pva(np.atleast_1d(time_array("t", t)))[0]
 
     def velocity(self, t: Any) -> FloatArray:
         """Ṗ(t) [m/s], shape (N, 3)."""
-        return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[1]
+        return self._pva(np.atleast_1d(time_array("t", t)))[1]
 
     def acceleration(self, t: Any) -> FloatArray:
         """P̈(t) [m/s²], shape (N, 3) (right-continuous at the breaks)."""
-        return self._pva(np.atleast_1d(np.asarray(t, dtype=np.float64)))[2]
+        return self._pva(np.atleast_1d(time_array("t", t)))[2]
 
     def check_run(self, t_start: float, t_end: float) -> None:
         """Refuses (``InvalidInputError``) a run over [t_start, t_end] [s] the path does not define;
@@ -76,6 +91,9 @@ class Path:
         (T-11.4) steps there and its integrator ends a step there rather than crossing a jump of P̈ or
         a kink (a node: P̈ continuous, P⃛ steps); between two knots the path is one cubic, which that
         interpolant is."""
+        t0 = time("t0", t0)
+        t1 = later("t1", t1, t0, "t0")
+        count("dt", t1 - t0, positive("dt", dt, "s"))
         jumps = np.union1d(self.breaks, self.nodes)
         inner = jumps[(jumps > t0) & (jumps < t1)]
         grid = np.union1d(np.linspace(t0, t1, max(2, math.ceil((t1 - t0) / dt) + 1)), inner)
@@ -91,14 +109,18 @@ class Path:
         return t_all, p_all, v_all, a_all
 
     def pivot_samples(
-        self, t_end: float, dt: float = 0.01, t_start: float = 0.0
+        self, t_end: float, spacing: float | None = None, t_start: float = 0.0, *, dt: float | None = None
     ) -> tuple[FloatArray, FloatArray]:
-        """(times [s], positions [m] (n, 3)) every ``dt`` on [t_start, t_end] for
+        """(times [s], positions [m] (n, 3)) on [t_start, t_end], ``spacing`` [s] apart at most
+        (default 0.01 s; the time between the returned samples), for
         ``pendulab.Pendulum(pivot_samples=...)``: the moving-pivot model then uses the cubic spline
-        through them (T-7.2), which smooths P̈'s steps over ~dt."""
-        if not (math.isfinite(dt) and dt > 0 and math.isfinite(t_end) and t_end > t_start):
-            raise InvalidInputError(f"need dt > 0 and t_end > t_start, got dt = {dt!r}, t_end = {t_end!r}")
-        t = np.linspace(t_start, t_end, math.ceil((t_end - t_start) / dt) + 1)
+        through them (T-7.2), which smooths P̈'s steps over ~spacing. ``dt`` is the deprecated older
+        name of ``spacing`` (a DeprecationWarning; both given is an error)."""
+        name, given = _spacing.spacing("Path.pivot_samples", spacing, dt, SAMPLE_SPACING, "spacing", RETURNED)
+        t0 = time("t_start", t_start)
+        t1 = later("t_end", t_end, t0)
+        n = count(name, t1 - t0, positive(name, given, "s"))
+        t = np.linspace(t0, t1, n)
         return t, self.position(t)
 
 
@@ -112,11 +134,19 @@ class Gantry(Path):
     trolley_axis: tuple[float, float, float] = (1.0, 0.0, 0.0)
     bridge_axis: tuple[float, float, float] = (0.0, 1.0, 0.0)
 
+    def __post_init__(self) -> None:
+        for name in ("trolley", "bridge"):
+            if not isinstance(getattr(self, name), Profile | None):
+                raise invalid(name, getattr(self, name), "a crane.Profile (crane.profile(...)) or None")
+        numbers("origin", self.origin, "m", shape=(3,))
+        _unit(self.trolley_axis, "trolley_axis")
+        _unit(self.bridge_axis, "bridge_axis")
+
     def _axes(self) -> list[tuple[Profile, FloatArray]]:
         out = []
         for prof, axis in ((self.trolley, self.trolley_axis), (self.bridge, self.bridge_axis)):
             if prof is not None:
-                out.append((prof, _unit(axis)))
+                out.append((prof, _unit(axis, "axis")))
         return out
 
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -148,6 +178,15 @@ class Tower(Path):
     height: float = 0.0
     luff: Profile | float | None = None
     boom: float | None = None
+
+    def __post_init__(self) -> None:
+        _profile_or_number("slew", self.slew, "rad")
+        _profile_or_number("radius", self.radius, "m")
+        numbers("height", self.height, "m", shape=())
+        if self.luff is not None:
+            _profile_or_number("luff", self.luff, "rad")
+        if self.boom is not None:
+            positive("boom", self.boom, "m")
 
     @staticmethod
     def _eval(prof: Profile | float, t: FloatArray, left: bool) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -199,10 +238,13 @@ class Sampled(Path):
     its clamped spline ends at rest, so holding it is the same smooth motion."""
 
     def __init__(self, times: Any, positions: Any) -> None:
-        t = np.asarray(times, dtype=np.float64).ravel()
-        p = np.asarray(positions, dtype=np.float64)
-        if t.size < 4 or p.shape != (t.size, 3) or not (np.all(np.isfinite(t)) and np.all(np.isfinite(p))):
-            raise InvalidInputError("pivot samples need n >= 4 finite times [s] and positions (n, 3) [m]")
+        t = time_array("times", times).ravel()
+        p = numbers("positions", positions, "m")
+        if t.size < 4 or p.shape != (t.size, 3):
+            raise InvalidInputError(
+                f"pivot samples need n >= 4 finite times [s] and positions (n, 3) [m], got {t.size} times "
+                f"and positions of shape {p.shape}"
+            )
         if np.any(np.diff(t) <= 0):
             raise InvalidInputError("pivot sample times must be strictly increasing")
         self._spline = CubicSpline(t, p, axis=0)
@@ -216,9 +258,11 @@ class Sampled(Path):
         ``skip_header`` lines (comments starting with # are skipped, and not counted when they lead the
         file: a Pendulab CSV's metadata line; at most 10⁶ rows). The pivot of a crane run written by
         ``pendulab crane run --out`` is columns (0, 1, 2, 3)."""
-        cols = tuple(int(c) for c in columns)
-        if len(cols) != 4:
-            raise InvalidInputError(f"columns = {columns!r}: four column indices (t, x, y, z)")
+        four = "four column indices >= 0 (t, x, y, z)"
+        if isinstance(columns, str | bytes) or not isinstance(columns, Sequence) or len(columns) != 4:
+            raise invalid("columns", columns, four)
+        cols = tuple(integer(f"columns[{i}]", c, 0, 2**31 - 1, four) for i, c in enumerate(columns))
+        skip_header = integer("skip_header", skip_header, 0, 2**31 - 1, "an integer >= 0 (lines)")
         try:
             with open(path, encoding="utf-8") as f:
                 lines = itertools.dropwhile(lambda line: line.startswith("#"), f)
@@ -252,7 +296,8 @@ class Sampled(Path):
 
     def knots(self, t0: float, t1: float, dt: float = 0.05) -> Knots:
         a, b = self.span
-        return super().knots(max(t0, a), min(t1, b), dt)
+        t0 = time("t0", t0)
+        return super().knots(max(t0, a), min(later("t1", t1, t0, "t0"), b), dt)
 
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
         a, b = self.span
@@ -285,9 +330,7 @@ def move(
     ``origin`` [m], starting at ``t_start`` [s], within ``v_max`` [m/s], ``a_max`` [m/s²] and, if
     given, ``j_max`` [m/s³], convolved with ``shaper`` (T-11.3): a :class:`Gantry` path."""
     prof = profile(distance, v_max, a_max, j_max=j_max, shaper=shaper, t_start=t_start)
-    o = np.asarray(origin, dtype=np.float64)
-    if o.shape != (3,) or not np.all(np.isfinite(o)):
-        raise InvalidInputError(f"origin = {origin!r} is not allowed: three finite numbers [m]")
+    o = numbers("origin", origin, "m", shape=(3,))
     e = _unit(direction)
     return Gantry(
         trolley=prof, origin=(float(o[0]), float(o[1]), float(o[2])), trolley_axis=(e[0], e[1], e[2])

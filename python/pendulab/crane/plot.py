@@ -12,7 +12,9 @@ from typing import Any
 import numpy as np
 
 from ..figure import new_figure
-from .shaper import Shaper, residual_vibration
+from ..validate import invalid
+from ._checks import numbers, real
+from .shaper import Shaper, check_shaper, residual_vibration
 from .system import CraneRun
 
 
@@ -25,9 +27,18 @@ def plot_sensitivity(
 ) -> Any:
     """V(ω, ζ) [%] against ω/ω₀ (ω₀ each shaper's design frequency) over ``ratio``, for a mode of
     damping ratio ``damping``; a dashed line at ``tolerance`` (a fraction; None: none)."""
+    lo, hi = numbers("ratio", ratio, "(ω/ω₀)", shape=(2,)).tolist()
+    if not 0 <= lo < hi:
+        raise invalid("ratio", ratio, "(lo, hi) with 0 <= lo < hi (ω/ω₀)")
+    if tolerance is not None:
+        tolerance = real(
+            "tolerance", tolerance, "a fraction in [0, 1] (None: no line)", lambda v: 0 <= v <= 1
+        )
+    for i, s in enumerate(shapers):
+        check_shaper(f"shapers[{i}]", s)
     fig = new_figure(figsize=(7, 4.2))
     ax = fig.add_subplot()
-    x = np.linspace(max(ratio[0], 1e-3), ratio[1], 1201)
+    x = np.linspace(max(lo, 1e-3), hi, 1201)
     for i, s in enumerate(shapers):
         label = labels[i] if labels is not None else s.kind.upper()
         ax.plot(x, 100 * residual_vibration(s, x * s.omega, damping), label=label)
@@ -46,6 +57,7 @@ def plot_sway(runs: Mapping[str, CraneRun], t_marks: Sequence[float] = ()) -> An
     """The payload's horizontal offset from the pivot [m] (both components) and its sway angle in the
     x–z plane, atan2(Δx, −Δz) [deg], against time [s], one line per run (label → run); vertical lines
     at ``t_marks`` [s]."""
+    marks = numbers("t_marks", t_marks, "s").ravel()
     fig = new_figure(figsize=(8, 5.5))
     ax1, ax2 = fig.subplots(2, 1, sharex=True)
     for label, run in runs.items():
@@ -55,7 +67,7 @@ def plot_sway(runs: Mapping[str, CraneRun], t_marks: Sequence[float] = ()) -> An
             ax1.plot(run.t, off[:, 1], ls=":", label=f"{label}: y")
         dz = run.payload[:, 2] - run.pivot[:, 2]
         ax2.plot(run.t, np.degrees(np.arctan2(off[:, 0], -dz)), label=label)
-    for t in t_marks:
+    for t in marks:
         for ax in (ax1, ax2):
             ax.axvline(t, color="grey", lw=0.7, ls="--")
     ax1.set_ylabel("payload − pivot [m]")

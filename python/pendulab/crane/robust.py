@@ -17,6 +17,8 @@ import math
 import numpy as np
 
 from .._core import InvalidInputError
+from ..validate import invalid
+from ._checks import positive, real
 from .shaper import Shaper, residual_vibration, shaper
 
 ORDER = ("zv", "zvd", "ei", "zvdd", "2hump_ei")
@@ -25,7 +27,8 @@ ORDER = ("zv", "zvd", "ei", "zvdd", "2hump_ei")
 
 def worst_vibration(s: Shaper, omega_min: float, omega_max: float, damping: float = 0.0) -> float:
     """The largest V(ω, ζ) of ``s`` over [omega_min, omega_max] [rad/s] (a fine grid, 2001 points)."""
-    grid = np.linspace(omega_min, omega_max, 2001)
+    lo, hi = _band("omega_min", omega_min, "omega_max", omega_max, "rad/s")
+    grid = np.linspace(lo, hi, 2001)
     return float(residual_vibration(s, grid, damping).max())
 
 
@@ -41,9 +44,9 @@ def shaper_for_range(
     largest V over the range is ≤ ``tolerance`` (a fraction). ``ei_tolerance`` is the EI kinds' V_tol.
     Without a kind and when no single kind meets the tolerance, the shortest product of 2 … 8 ZV or
     ZVD shapers spread over the range (module doc); ``InvalidInputError`` when none does."""
-    lo, hi = float(omega_min), float(omega_max)
-    if not (math.isfinite(lo) and math.isfinite(hi) and 0 < lo <= hi):
-        raise InvalidInputError(f"need 0 < omega_min <= omega_max (rad/s), got {omega_min!r}, {omega_max!r}")
+    lo, hi = _band("omega_min", omega_min, "omega_max", omega_max, "rad/s")
+    tolerance = real("tolerance", tolerance, "a fraction 0 < V < 1", lambda x: 0.0 < x < 1.0)
+    ei_tolerance = real("ei_tolerance", ei_tolerance, "a fraction 0 < V_tol < 1", lambda x: 0.0 < x < 1.0)
     mid = 0.5 * (lo + hi)
     if kind is not None:
         return shaper(kind, omega=mid, tolerance=ei_tolerance)
@@ -75,9 +78,15 @@ def shaper_for_range(
 def rope_range(rope_min: float, rope_max: float, g: float = 9.81) -> tuple[float, float]:
     """The sway frequencies (√(g/l_max), √(g/l_min)) [rad/s] of a rope between ``rope_min`` and
     ``rope_max`` [m]."""
-    a, b, gg = float(rope_min), float(rope_max), float(g)
-    if not (math.isfinite(a) and math.isfinite(b) and 0 < a <= b and math.isfinite(gg) and gg > 0):
-        raise InvalidInputError(
-            f"need 0 < rope_min <= rope_max (m) and g > 0, got {rope_min!r}, {rope_max!r}, {g!r}"
-        )
+    a, b = _band("rope_min", rope_min, "rope_max", rope_max, "m")
+    gg = positive("g", g, "m/s²")
     return math.sqrt(gg / b), math.sqrt(gg / a)
+
+
+def _band(lo_name: str, lo: object, hi_name: str, hi: object, unit: str) -> tuple[float, float]:
+    """``(lo, hi)``, finite numbers with 0 < lo <= hi [``unit``]; each bad one is named."""
+    a = positive(lo_name, lo, unit)
+    b = positive(hi_name, hi, unit)
+    if not a <= b:
+        raise invalid(hi_name, hi, f"a finite number >= {lo_name} = {a!r} {unit}")
+    return a, b

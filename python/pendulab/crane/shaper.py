@@ -28,6 +28,7 @@ frequencies. Shapers for several modes are convolved (``s1 * s2``). Units: t in 
 from __future__ import annotations
 
 import math
+import numbers as numbers_abc
 from dataclasses import dataclass
 from typing import Any
 
@@ -36,6 +37,8 @@ from numpy.typing import NDArray
 from scipy.optimize import fsolve
 
 from .._core import InvalidInputError
+from ..validate import invalid
+from ._checks import numbers, positive, positives, real
 
 FloatArray = NDArray[np.float64]
 
@@ -54,6 +57,23 @@ class Shaper:
     omega: float = math.nan
     damping: float = math.nan
     tolerance: float = math.nan
+
+    def __post_init__(self) -> None:
+        """Checks the impulses (``times`` increasing from ≥ 0 s, as many finite ``amplitudes``) and keeps
+        them as float64 arrays; the design fields are numbers or NaN (a convolved shaper's)."""
+        t = numbers("times", self.times, "s")
+        a = numbers("amplitudes", self.amplitudes, "")
+        if t.ndim != 1 or t.size == 0 or a.shape != t.shape or t[0] < 0 or np.any(np.diff(t) <= 0):
+            raise invalid(
+                "times", self.times, f"n >= 1 increasing times >= 0 s and as many amplitudes (got {a.shape})"
+            )
+        object.__setattr__(self, "times", t)
+        object.__setattr__(self, "amplitudes", a)
+        for name in ("omega", "damping", "tolerance"):
+            value = getattr(self, name)
+            if not (isinstance(value, numbers_abc.Real) and not isinstance(value, bool | np.bool_)):
+                raise invalid(name, value, "a number (NaN: none, for a convolved shaper)")
+            object.__setattr__(self, name, float(value))
 
     @property
     def duration(self) -> float:
@@ -84,11 +104,16 @@ class Shaper:
         return [(float(t), float(a)) for t, a in zip(self.times, self.amplitudes, strict=True)]
 
 
-def _check_positive(name: str, value: float, allowed: str) -> float:
-    v = float(value)
-    if not (math.isfinite(v) and v > 0):
-        raise InvalidInputError(f"{name} = {value!r} is not allowed: {allowed}")
-    return v
+def check_shaper(name: str, value: Any, none_ok: bool = False) -> None:
+    """Refuses anything but a :class:`Shaper` (or None when ``none_ok``), naming ``name``."""
+    if not (isinstance(value, Shaper) or (none_ok and value is None)):
+        allowed = "a crane.Shaper (crane.shaper(...))" + (" or None (unshaped)" if none_ok else "")
+        raise invalid(name, value, allowed)
+
+
+def _ratio(name: str, value: Any) -> float:
+    """A damping ratio ζ in [0, 1)."""
+    return real(name, value, "a damping ratio 0 <= ζ < 1", lambda x: 0.0 <= x < 1.0)
 
 
 def _closed_form(kind: str, w: float, z: float, vtol: float) -> tuple[FloatArray, FloatArray]:
@@ -190,15 +215,11 @@ def shaper(kind: str, omega: float, damping: float = 0.0, tolerance: float = 0.0
     key = _ALIASES.get(str(kind).lower(), str(kind).lower())
     if key not in KINDS:
         raise InvalidInputError(f"shaper kind {kind!r} is not known; allowed: {', '.join(KINDS)}")
-    w = _check_positive("omega", omega, "a finite angular frequency > 0 rad/s")
-    z = float(damping)
-    if not (math.isfinite(z) and 0.0 <= z < 1.0):
-        raise InvalidInputError(f"damping = {damping!r} is not allowed: a damping ratio 0 <= ζ < 1")
-    vtol = float(tolerance)
-    if not (math.isfinite(vtol) and 0.0 < vtol < 1.0):
-        raise InvalidInputError(f"tolerance = {tolerance!r} is not allowed: a fraction 0 < V_tol < 1")
+    w = positive("omega", omega, "rad/s")
+    z = _ratio("damping", damping)
+    vtol = real("tolerance", tolerance, "a fraction 0 < V_tol < 1", lambda x: 0.0 < x < 1.0)
     if key in ("ei", "2hump_ei") and z > 0.3:
-        raise InvalidInputError(f"damping = {damping!r} is not allowed for the {key} shaper: 0 <= ζ <= 0.3")
+        raise invalid("damping", damping, f"0 <= ζ <= 0.3 for the {key} shaper")
     if key in ("ei", "2hump_ei") and z > 0.0:
         times, amps = _solve_damped(key, w, z, vtol)
     else:
@@ -210,12 +231,9 @@ def residual_vibration(s: Shaper, omega: Any, damping: float = 0.0) -> FloatArra
     """V(ω, ζ) of T-11.1 at the angular frequencies ``omega`` [rad/s] (array, each > 0) for a mode of
     damping ratio ``damping`` (0 ≤ ζ < 1): the residual vibration with the shaper as a fraction of
     the unshaped command's (1 = no reduction)."""
-    w = np.asarray(omega, dtype=np.float64)
-    if w.size == 0 or not np.all(np.isfinite(w)) or np.any(w <= 0):
-        raise InvalidInputError("omega must be finite angular frequencies > 0 rad/s")
-    z = float(damping)
-    if not (math.isfinite(z) and 0.0 <= z < 1.0):
-        raise InvalidInputError(f"damping = {damping!r} is not allowed: a damping ratio 0 <= ζ < 1")
+    check_shaper("s", s)
+    w = positives("omega", omega, "rad/s")
+    z = _ratio("damping", damping)
     total, _ = _sums(s.times, s.amplitudes, np.atleast_1d(w), z)
     out = np.abs(total).reshape(w.shape)
     return np.asarray(out, dtype=np.float64)
@@ -226,7 +244,12 @@ def insensitivity(s: Shaper, level: float = 0.05, damping: float = 0.0) -> float
     design frequency (Singhose 2009: ZV 0.0637, ZVD 0.2871, EI 0.3994 at 5 %)."""
     from scipy.optimize import brentq
 
-    w0 = _check_positive("the shaper's design omega", s.omega, "a shaper made by crane.shaper")
+    check_shaper("s", s)
+    w0 = real(
+        "s.omega", s.omega, "a design frequency > 0 rad/s (a shaper made by crane.shaper)", lambda x: x > 0
+    )
+    level = real("level", level, "a fraction 0 < level < 1", lambda x: 0.0 < x < 1.0)
+    _ratio("damping", damping)
     grid = np.linspace(0.05, 1.95, 19001) * w0
     below = residual_vibration(s, grid, damping) <= level * (1 + 1e-9)
     i0 = int(np.argmin(np.abs(grid - w0)))

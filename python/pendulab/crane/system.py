@@ -17,8 +17,9 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
-from ..validate import array
+from ..validate import array, integer, invalid
 from . import _spacing
+from ._checks import later, nonnegative, number, numbers, positive, positives, time, times, tolerances
 from .paths import Gantry, Path
 from .shaper import FloatArray
 
@@ -34,14 +35,15 @@ class Hoist(Path):
     t₀ and t_n (breaks). Stored in the first component of a 3-vector for the core."""
 
     def __init__(self, t: Any, length: Any) -> None:
-        ts = np.asarray(t, dtype=np.float64).ravel()
-        ls = np.asarray(length, dtype=np.float64).ravel()
-        if ts.size < 2 or ls.shape != ts.shape or not (np.all(np.isfinite(ts)) and np.all(np.isfinite(ls))):
-            raise InvalidInputError("Hoist needs n >= 2 finite times t [s] and as many rope lengths [m]")
+        ts = times("t", t).ravel()
+        ls = positives("length", length, "m").ravel()
+        if ts.size < 2 or ls.shape != ts.shape:
+            raise InvalidInputError(
+                f"Hoist needs n >= 2 finite times t [s] and as many rope lengths [m], got {ts.size} times "
+                f"and {ls.size} lengths"
+            )
         if np.any(np.diff(ts) <= 0):
             raise InvalidInputError(f"Hoist times must be strictly increasing, got {ts.tolist()}")
-        if np.any(ls <= 0):
-            raise InvalidInputError(f"Hoist lengths must be > 0 m, got {ls.tolist()}")
         self._spline = CubicSpline(ts, ls, bc_type="clamped")
         self.span = (float(ts[0]), float(ts[-1]))
         self.breaks = np.array(self.span)
@@ -65,6 +67,16 @@ class Hoist(Path):
     def length(self, t: Any) -> FloatArray:
         """l(t) [m]."""
         return self.position(t)[:, 0]
+
+
+_WIND_NONNEGATIVE = (
+    ("area", "m²"),
+    ("drag_coefficient", ""),
+    ("air_density", "kg/m³"),
+    ("hook_area", "m²"),
+    ("hook_drag_coefficient", ""),
+    ("turbulence", "m/s"),
+)
 
 
 @dataclass(frozen=True)
@@ -91,9 +103,25 @@ class Wind:
     turbulence_modes: int = 64
     seed: int = 0
 
+    def __post_init__(self) -> None:
+        """Checks every field, named as a crane file's [wind] key (``wind.area``)."""
+        for name in ("velocity", "gust"):
+            _triple(f"wind.{name}", getattr(self, name))
+        for name, unit in _WIND_NONNEGATIVE:
+            nonnegative(f"wind.{name}", getattr(self, name), unit)
+        time("wind.gust_start", self.gust_start)
+        positive("wind.gust_duration", self.gust_duration, "s")
+        positive("wind.turbulence_scale", self.turbulence_scale, "m")
+        # the counts as Python ints (a float with an integer value is taken: 64.0; NumPy's seed needs an int)
+        object.__setattr__(
+            self, "turbulence_modes", integer("wind.turbulence_modes", self.turbulence_modes, 8, 4096)
+        )
+        object.__setattr__(self, "seed", integer("wind.seed", self.seed, 0, 2**63 - 1))
+
     def force(self, relative_speed: float) -> float:
         """The payload's drag ½ρ c_W A u² [N] at the air speed u [m/s] relative to it."""
-        return 0.5 * self.air_density * self.drag_coefficient * self.area * relative_speed**2
+        u = number("relative_speed", relative_speed, "m/s")
+        return 0.5 * self.air_density * self.drag_coefficient * self.area * u**2
 
     def modes(self) -> tuple[FloatArray, FloatArray, FloatArray]:
         """The turbulence as (ω_k [rad/s] (K,), amplitudes a_k [m/s] (K, 3), phases φ_k [rad] (K, 3)):
@@ -102,14 +130,10 @@ class Wind:
         if sigma == 0.0:
             return np.zeros(0), np.zeros((0, 3)), np.zeros((0, 3))
         speed = float(np.linalg.norm(self.velocity))
-        if not (math.isfinite(sigma) and sigma > 0):
-            raise InvalidInputError(f"turbulence = {self.turbulence!r} is not allowed: an intensity >= 0 m/s")
         if not speed > 0:
             raise InvalidInputError("turbulence needs a steady wind velocity (its time scale is L/|w₀|)")
-        scale = _positive("turbulence_scale", self.turbulence_scale, "m")
+        scale = float(self.turbulence_scale)
         k = int(self.turbulence_modes)
-        if not 8 <= k <= 4096:
-            raise InvalidInputError(f"turbulence_modes = {self.turbulence_modes!r}: between 8 and 4096")
         tau = scale / speed
         edges = np.geomspace(1e-3 / tau, 1e3 / tau, k + 1)
         om = np.sqrt(edges[:-1] * edges[1:])
@@ -121,7 +145,7 @@ class Wind:
 
     def velocity_at(self, t: Any) -> FloatArray:
         """w(t) [m/s], (N, 3): steady + gust + turbulence (as the core evaluates it)."""
-        ts = np.atleast_1d(np.asarray(t, dtype=np.float64))
+        ts = np.atleast_1d(times("t", t))
         w = np.tile(np.asarray(self.velocity, dtype=np.float64), (ts.size, 1))
         s = (ts - self.gust_start) / self.gust_duration
         inside = (s >= 0) & (s <= 1)
@@ -199,20 +223,11 @@ def _triple(name: str, v: Any) -> tuple[float, float, float]:
     return x, y, z
 
 
-def _direction(name: str, angles: tuple[float, float]) -> FloatArray:
-    th, ph = (float(a) for a in angles)
-    if not (math.isfinite(th) and math.isfinite(ph) and 0 <= th < math.pi):
-        raise InvalidInputError(f"{name} = {angles!r} is not allowed: θ in [0, π) and a finite φ [rad]")
+def _direction(name: str, angles: Any) -> FloatArray:
+    th, ph = numbers(name, angles, "rad", shape=(2,)).tolist()
+    if not 0 <= th < math.pi:
+        raise invalid(name, angles, "(θ, φ): θ in [0, π) and a finite φ [rad]")
     return np.array([math.sin(th) * math.cos(ph), math.sin(th) * math.sin(ph), -math.cos(th)])
-
-
-def _positive(name: str, value: Any, unit: str, zero_ok: bool = False) -> float:
-    v = float(value)
-    if not (math.isfinite(v) and (v >= 0 if zero_ok else v > 0)):
-        raise InvalidInputError(
-            f"{name} = {value!r} is not allowed: a finite number {'>=' if zero_ok else '>'} 0 {unit}"
-        )
-    return v
 
 
 class Crane:
@@ -234,22 +249,24 @@ class Crane:
         g: float = 9.81,
         hoist: Hoist | None = None,
     ) -> None:
-        self.rope = _positive("rope", rope, "m")
+        self.rope = positive("rope", rope, "m")
         self.pivot = pivot if pivot is not None else Gantry()
         if not isinstance(self.pivot, Path):
             raise InvalidInputError(
                 f"pivot must be a crane path (crane.move, crane.Gantry, ...), not {pivot!r}"
             )
-        self.payload_mass = _positive("payload_mass", payload_mass, "kg")
+        self.payload_mass = positive("payload_mass", payload_mass, "kg")
         if (hook_mass is None) != (rigging is None):
             raise InvalidInputError("give hook_mass [kg] and rigging [m] together (or neither)")
-        self.hook_mass = None if hook_mass is None else _positive("hook_mass", hook_mass, "kg")
-        self.rigging = None if rigging is None else _positive("rigging", rigging, "m")
+        self.hook_mass = None if hook_mass is None else positive("hook_mass", hook_mass, "kg")
+        self.rigging = None if rigging is None else positive("rigging", rigging, "m")
         self.wind = wind if wind is not None else Wind()
-        self.damping = _positive("damping", damping, "1/s", zero_ok=True)
-        self.g = float(g)
-        if not math.isfinite(self.g):
-            raise InvalidInputError(f"g = {g!r} is not allowed: a finite gravity in m/s²")
+        if not isinstance(self.wind, Wind):
+            raise invalid("wind", wind, "a crane.Wind (or None: no wind)")
+        if hoist is not None and not isinstance(hoist, Hoist):
+            raise invalid("hoist", hoist, "a crane.Hoist (or None: a constant rope)")
+        self.damping = nonnegative("damping", damping, "1/s")
+        self.g = number("g", g, "m/s²")
         l0 = float(hoist.length(0.0)[0]) if hoist is not None else self.rope
         if not math.isclose(l0, self.rope, rel_tol=1e-9):
             raise InvalidInputError(
@@ -260,7 +277,7 @@ class Crane:
     def modes(self, rope: float | None = None) -> FloatArray:
         """The small-sway angular frequencies [rad/s] (increasing) at rope length ``rope`` [m] (default
         the rope at t = 0): √(g/l), or the two roots of T-11.8 with a hook."""
-        big_l1 = self.rope if rope is None else _positive("rope", rope, "m")
+        big_l1 = self.rope if rope is None else positive("rope", rope, "m")
         if self.g <= 0:
             raise InvalidInputError(f"no sway modes for g = {self.g!r} <= 0 m/s²")
         if self.hook_mass is None or self.rigging is None:
@@ -287,17 +304,17 @@ class Crane:
         with the rope), moving with the pivot and the hoist. ``dt`` is the deprecated older name of
         ``output_spacing`` (a DeprecationWarning; both given is an error).
         Raises ``InvalidInputError`` for a slack rope or rigging, a rope length ≤ 0, bad parameters."""
-        name, spacing = _spacing.spacing("Crane.simulate", output_spacing, dt, DEFAULT_SPACING)
-        t0, t1 = float(t_start), float(t_end)
-        if not (math.isfinite(t0) and math.isfinite(t1) and t1 > t0):
-            raise InvalidInputError(
-                f"t_end = {t_end!r} s must be finite and later than t_start = {t_start!r} s"
-            )
+        name, given = _spacing.spacing("Crane.simulate", output_spacing, dt, DEFAULT_SPACING)
+        t0 = time("t_start", t_start)
+        t1 = later("t_end", t_end, t0)
+        spacing = positive(name, given, "s")
+        rtol, atol = tolerances(rtol, atol)
         self.pivot.check_run(t0, t1)
-        spacing = _positive(name, spacing, "s")
-        n = math.ceil((t1 - t0) / spacing - 1e-9) + 1
-        if n > MAX_SAVES:
-            raise InvalidInputError(f"{n} saved samples exceed {MAX_SAVES}; raise {name} or shorten t_end")
+        ratio = (t1 - t0) / spacing - 1e-9  # inf for a tiny spacing: refused before math.ceil
+        if not ratio + 1 <= MAX_SAVES:
+            many = math.ceil(ratio) + 1 if math.isfinite(ratio) else ratio
+            raise InvalidInputError(f"{many} saved samples exceed {MAX_SAVES}; raise {name} or shorten t_end")
+        n = math.ceil(ratio) + 1
         save = np.minimum(t0 + spacing * np.arange(n), t1)
         save[-1] = t1
         u = _direction("sway", sway)
