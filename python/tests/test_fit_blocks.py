@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 import warnings
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -170,3 +171,62 @@ def test_a_3d_swing_in_wind_gets_its_blocks_from_its_own_states() -> None:
     assert np.all(np.abs(lengths - res.params["length"]) < 2.0 * np.array(res.blocks.stderr["length"]))
     assert res.blocks.scale["length"] == 1.0
     assert not any("consecutive blocks" in str(w.message) for w in caught)
+
+
+def _unmade_case(monkeypatch: pytest.MonkeyPatch, where: str) -> tuple[pl.FitResult, list[str]]:
+    """A misfit (a hinge with dry and viscous friction fitted with viscous damping alone, whose blocks
+    widen the damping's bar 4x) under a 600 s time limit whose clock is made to run out at the block
+    check (``where`` "before": as it begins; "in": after the first block's fit), or ("") not at all."""
+    from pendulab.fitting import blocks, inference
+
+    check, fit_block = inference.check_blocks, blocks._fit_block
+
+    def late(search: Any, *args: Any) -> Any:
+        search.clock.began -= 1000.0  # the clock runs out here
+        return check(search, *args)
+
+    def after_first(search: Any, *args: Any) -> Any:
+        out = fit_block(search, *args)
+        search.clock.began -= 1000.0
+        return out
+
+    if where == "before":
+        monkeypatch.setattr(inference, "check_blocks", late)
+    elif where == "in":
+        monkeypatch.setattr(blocks, "_fit_block", after_first)
+    t = np.arange(0.0, 12.0, 0.01)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        res = pl.fit(
+            t,
+            planar_angle=encoder_decay(1.2, t, kappa=0.0),
+            pendulum=pl.Pendulum(model="damped", g=G, length=0.2),
+            fit=["length", "damping"],
+            time_limit=600.0,
+        )
+    return res, [str(w.message) for w in caught]
+
+
+@pytest.mark.parametrize("where", ["before", "in"])
+def test_a_block_check_the_time_limit_stops_says_it_was_not_made(
+    monkeypatch: pytest.MonkeyPatch, where: str
+) -> None:
+    """A misfit whose time limit ran out before or during its block check got no widening and no word
+    about it (check_blocks returned None; only res.interrupted showed it): the narrow bars of a model
+    that misses the data looked checked. Now a finding says the check was not made, that the bars are
+    not checked, and how to let it run; res.blocks records it (made False) and the report shows it."""
+    normal, said = _unmade_case(monkeypatch, "")
+    assert normal.blocks is not None and normal.blocks.made and not normal.interrupted
+    assert normal.blocks.scale["damping"] > 2.0
+    assert not any("was not made" in s for s in said), said
+    res, said = _unmade_case(monkeypatch, where)
+    unmade = [s for s in said if s.startswith("the block check of the misfit was not made")]
+    assert len(unmade) == 1, said
+    for words in ("time limit of 600 s", "not checked", "time_limit=", "--time-limit", "--fit-time-limit"):
+        assert words in unmade[0], unmade[0]
+    assert res.interrupted and res.blocks is not None and not res.blocks.made
+    assert res.blocks.unmade == unmade[0] and res.blocks.scale == {} and unmade[0] in res.findings
+    assert "WARNING: the block check of the misfit was not made" in res.report()
+    # not widened by the blocks: the bar is the normal fit's without its scale factor
+    widened = normal.stderr["damping"] / normal.blocks.scale["damping"]
+    assert res.stderr["damping"] == pytest.approx(widened, rel=1e-6)

@@ -75,3 +75,28 @@ def test_pendulab_serve_takes_the_fit_time_limit(monkeypatch: pytest.MonkeyPatch
         bad = CliRunner().invoke(cli, ["serve", "--no-browser", "--fit-time-limit", arg])
         assert bad.exit_code == 2 and "--fit-time-limit" in bad.output and repr(arg) in bad.output, bad.output
     assert len(ran) == 1  # none of them started a server
+
+
+def test_the_lab_says_when_its_time_limit_stopped_the_block_check(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A misfit (a decay with dry friction fitted with viscous damping alone) whose fit's clock runs out
+    at the block check: the lab's answer carries the finding that the check was not made, keyed with
+    the limit's seconds, and the report shows it (before: nothing said, only narrow bars)."""
+    import numpy as np
+    from test_fit_blocks import encoder_decay
+
+    from pendulab.fitting import inference
+    from pendulab.server.fit import FitRequest, fit_data
+
+    check = inference.check_blocks
+
+    def late(search: Any, *args: Any) -> Any:
+        search.clock.began -= 1000.0  # the clock runs out here
+        return check(search, *args)
+
+    monkeypatch.setattr(inference, "check_blocks", late)
+    t = np.arange(0.0, 12.0, 0.01)
+    rows = "\n".join(f"{a:.17g},{b:.17g}" for a, b in zip(t, encoder_decay(1.2, t, kappa=0.0), strict=True))
+    out = fit_data(FitRequest(csv="t,angle\n" + rows, name="decay.csv"), time_limit=20.0)
+    notes = [n for n in out["notes"] if n["key"] == "blocksTimeLimit"]
+    assert [n["values"] for n in notes] == [{"seconds": "20"}], out["notes"]
+    assert "the block check of the misfit was not made" in out["report"]

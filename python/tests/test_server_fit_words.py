@@ -187,3 +187,12 @@ def test_why_a_short_record_was_not_profiled_is_a_keyed_clause(key: str, values:
         ". Record at least one full swing to determine them"
     )
     assert note["key"] == "shortUndetermined" and note["clauses"] == clause, note
+
+
+def test_a_block_check_not_made_is_keyed() -> None:
+    """The finding that the block check of a misfit was not made (blocks.UNMADE: the time limit, which
+    the lab's fits have, or Ctrl-C) is keyed, so that the page words it, with the limit's seconds."""
+    got = [keyed(s) for s in BlockCheck.not_made("timeLimit", 20.0).findings()]
+    assert [(g["key"], g["values"]) for g in got] == [("blocksTimeLimit", {"seconds": "20"})]
+    got = [keyed(s) for s in BlockCheck.not_made("ctrlC").findings()]
+    assert [(g["key"], g["values"]) for g in got] == [("blocksCtrlC", {})]

@@ -30,7 +30,10 @@ them. The blocks measure that dependence directly:
 It runs only when the goodness of fit (goodness.py) has found a misfit — for a right model the blocks
 agree within their errors by construction, and scaling by a chance S > 1 would make honest bars
 too wide — and only for models without explicit time dependence (no forcing, no moving pivot, no
-time offset; AUTONOMOUS), where a block's motion is fixed by its own start. Units: SI, as the parameters'.
+time offset; AUTONOMOUS), where a block's motion is fixed by its own start. Where it is due but the
+fit's time limit or Ctrl-C stops the fit before it or during it, it is not made: ``res.blocks`` says so
+(``made`` False, ``unmade`` why) and its finding, warned, that the bars were not checked and how to
+let it run (:data:`UNMADE`). Units: SI, as the parameters'.
 """
 
 from __future__ import annotations
@@ -69,6 +72,22 @@ TREND_SHARE = 0.8
 #: damped model's forcing is checked separately).
 AUTONOMOUS = ("ideal", "damped", "rotating")
 
+UNMADE = {
+    "timeLimit": (
+        "the block check of the misfit was not made: the fit's time limit of {seconds} s ran out before it "
+        "was done. The error bars are not checked against the scatter of the record's blocks fitted on "
+        "their own, so for a model that misses the data they may be too narrow; give a larger limit "
+        "(pl.fit's time_limit=, pendulab fit's --time-limit, the lab's pendulab serve --fit-time-limit) or "
+        "none (time_limit=None, --time-limit none)"
+    ),
+    "ctrlC": (
+        "the block check of the misfit was not made: Ctrl-C stopped the fit before it was done. The error "
+        "bars are not checked against the scatter of the record's blocks fitted on their own, so for a "
+        "model that misses the data they may be too narrow; fit again and let it finish"
+    ),
+}
+"""Why the block check of a misfit was not made -> its finding (server/fit_words.py keys them)."""
+
 
 @dataclass
 class BlockCheck:
@@ -82,10 +101,26 @@ class BlockCheck:
     scale: dict[str, float] = field(default_factory=dict)
 
     units: dict[str, str] = field(default_factory=dict)
+    #: Why the check was not made (a finding of :data:`UNMADE`: no blocks, no widening); "" if it was.
+    unmade: str = ""
+
+    @property
+    def made(self) -> bool:
+        """Whether the blocks were fitted (False: the time limit or Ctrl-C stopped the fit first)."""
+        return not self.unmade
+
+    @classmethod
+    def not_made(cls, stop: str, seconds: float | None = None) -> BlockCheck:
+        """The check that Ctrl-C (``stop`` "ctrlC") or the time limit of ``seconds`` [s] ("timeLimit")
+        did not let run."""
+        return cls(starts=[], unmade=UNMADE[stop].format(seconds=f"{seconds:g}" if seconds else ""))
 
     def findings(self) -> list[str]:
         """The plain-language finding for the parameters whose blocks disagree: a scatter improbable
-        for blocks that agree (p < BLOCKS_ALARM; none if none do). A chance S > 1 still widens."""
+        for blocks that agree (p < BLOCKS_ALARM; none if none do). A chance S > 1 still widens. A check
+        not made says so."""
+        if self.unmade:
+            return [self.unmade]
         widened = [n for n, s in self.scale.items() if s > 1.0]
         apart = [
             n
@@ -189,8 +224,9 @@ def block_start(problem: Problem, values: dict[str, float], x: FloatArray, v: Fl
 def _fit_block(
     search: Search, block: Problem, start: dict[str, float], known: bool
 ) -> tuple[FloatArray, FloatArray] | None:
-    """One block's values and standard errors (inf where not determined), or None if it fails."""
-    from .search import Search, TimeUp
+    """One block's values and standard errors (inf where not determined), or None if it fails; the
+    time limit passing in its search raises :class:`search.TimeUp`."""
+    from .search import Search
 
     free = search.free
     inner = Search(
@@ -210,7 +246,7 @@ def _fit_block(
         jac = inner.exact_jacobian(block, u)
         if jac is None:
             jac = jacobian(lambda uu: block.safe_residuals(uu, search.sigma), u, 1e-7 * search.scales)
-    except (TimeUp, InvalidInputError, IntegrationError, OverflowError, ValueError):
+    except (InvalidInputError, IntegrationError, OverflowError, ValueError):
         return None
     if not (np.all(np.isfinite(r)) and np.all(np.isfinite(jac))):
         return None
@@ -282,15 +318,17 @@ def check_blocks(
 ) -> BlockCheck | None:
     """The block check of the module doc for the whole fit's ``values``; ``ident`` (the whole fit's
     analysis) has its covariance and inflation widened in place. ``known``: σ was given. None where
-    no check can be made (a robust loss, a timed model, blocks shorter than MIN_PERIODS swings)."""
+    no check can be made (a robust loss, a timed model, blocks shorter than MIN_PERIODS swings). The
+    fit's time limit passed before it or in a block's fit raises :class:`search.TimeUp` (nothing widened)."""
+    from .search import TimeUp
+
     problem = search.problem
-    if search.loss != "linear" or search.time_up():
+    plan = planned(search, values, ident)
+    if plan is None:
         return None
-    period = 2.0 * math.pi * math.sqrt(values["length"] / max(abs(values["g"]), 1e-9))
-    edges = applicable(problem, period)
-    physical = [n for n in search.free if n not in STATE_NAMES and ident.determined.get(n, False)]
-    if edges is None or not physical:
-        return None
+    edges, physical = plan
+    if search.time_up():
+        raise TimeUp
     _, x, v, _ = problem.motion(values)
     obs = problem.obs
     fits = []
@@ -326,6 +364,19 @@ def check_blocks(
         check.scale[n] = scale_factor(vals, errs)
     widen(ident, search.free, check.scale)
     return check
+
+
+def planned(
+    search: Search, values: dict[str, float], ident: Identifiability
+) -> tuple[list[int], list[str]] | None:
+    """The blocks' edges (:func:`applicable`) and the physical parameters the block check of the whole
+    fit's ``values`` would compare, or None where it cannot be made (:func:`check_blocks`)."""
+    if search.loss != "linear":
+        return None
+    period = 2.0 * math.pi * math.sqrt(values["length"] / max(abs(values["g"]), 1e-9))
+    edges = applicable(search.problem, period)
+    physical = [n for n in search.free if n not in STATE_NAMES and ident.determined.get(n, False)]
+    return (edges, physical) if edges is not None and physical else None
 
 
 def widen(ident: Identifiability, free: list[str], scale: dict[str, float]) -> None:

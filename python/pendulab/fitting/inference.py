@@ -17,8 +17,10 @@
 
 Ctrl-C during the polish or the block check ends that step and skips the profiles (their parameters
 not determined, the reason naming Ctrl-C), as Ctrl-C in the search returns the best values so far:
-the fit is returned, with a warning naming Ctrl-C. A fit that Ctrl-C or the time limit stopped short
-anywhere — the search, the polish, the block check, a profile — is marked ``interrupted``.
+the fit is returned, with a warning naming Ctrl-C. A block check that was due but that Ctrl-C or the
+time limit stopped before it or in it is not made: ``res.blocks`` says so and a finding warns that the
+bars were not checked and how to let it run (blocks.UNMADE). A fit that Ctrl-C or the time limit
+stopped short anywhere — the search, the polish, the block check, a profile — is marked ``interrupted``.
 Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
 """
 
@@ -33,7 +35,7 @@ from typing import Any
 import numpy as np
 
 from ..model import FloatArray
-from .blocks import check_blocks
+from .blocks import BlockCheck, check_blocks, planned
 from .data import KINDS, residual
 from .goodness import EXACT, Goodness, ar1_rho, check_kind, findings
 from .goodness import misfit as misfit_found
@@ -41,7 +43,7 @@ from .identify import Correlation, Identifiability, analyse, jacobian
 from .mirror import check_mirror
 from .problem import POSITIVE
 from .result import FitResult
-from .search import Search, polish
+from .search import Search, TimeUp, polish
 from .short_record import check_short_record
 from .whiteness import chi2_tails
 
@@ -102,11 +104,9 @@ def conclude(
     said = findings(checks, chi2_p, chi2, dof, robust=search.loss != "linear")
     # a misfit: the record's blocks fitted on their own, the error bars widened by their disagreement
     blocks = None
-    if not interrupted and not stopped and misfit_found(checks, chi2_p):
-        try:
-            blocks = check_blocks(search, final, ident, sigma_known)
-        except KeyboardInterrupt:
-            stopped.append("the block check of the misfit")
+    if misfit_found(checks, chi2_p):
+        ctrl_c = ("Ctrl-C" in message) if interrupted else None  # the search stopped short, and by what
+        blocks = _blocks(search, final, ident, sigma_known, ctrl_c, stopped)
     said += blocks.findings() if blocks is not None else []
     g_fit = final["g"]
     if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
@@ -196,6 +196,32 @@ def _polished(
         except KeyboardInterrupt:
             stopped.append("the polish")
     return u, r, jac, positive
+
+
+def _blocks(
+    search: Search,
+    final: Mapping[str, float],
+    ident: Identifiability,
+    known: bool,
+    ctrl_c: bool | None,
+    stopped: list[str],
+) -> BlockCheck | None:
+    """The block check of a misfit (blocks.py; ``known``: σ given), None where none can be made; where
+    it is due but the fit was stopped short before it (``ctrl_c``: the search was interrupted, by
+    Ctrl-C if True; ``stopped``: steps Ctrl-C cut) or during it (the time limit, or Ctrl-C: noted in
+    ``stopped``), a :class:`BlockCheck` that says it was not made."""
+    values = dict(final)
+    if ctrl_c is not None or stopped:
+        if planned(search, values, ident) is None:
+            return None
+        return BlockCheck.not_made("ctrlC" if ctrl_c or stopped else "timeLimit", search.clock.time_limit)
+    try:
+        return check_blocks(search, values, ident, known)
+    except KeyboardInterrupt:
+        stopped.append("the block check of the misfit")
+        return BlockCheck.not_made("ctrlC") if planned(search, values, ident) is not None else None
+    except TimeUp:
+        return BlockCheck.not_made("timeLimit", search.clock.time_limit)
 
 
 def _identified(

@@ -79,6 +79,12 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
             "(the blocks in time order), {scale}x their error bars apart"
         ),
     ),
+    # blocks.UNMADE (pendulab/fitting/blocks.py): the block check of a misfit not made
+    (
+        "blocksTimeLimit",
+        _p("the block check of the misfit was not made: the fit's time limit of {seconds} s ran out"),
+    ),
+    ("blocksCtrlC", _p("the block check of the misfit was not made: Ctrl-C stopped the fit")),
     # pendulab/fitting/: inference.py (gFar, notConverged), estimator.py (pivotFitted),
     # multistart.py (timeLimit)
     ("gFar", _p("the fitted g = {g} m/s² is far from any planet's")),
