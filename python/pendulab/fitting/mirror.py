@@ -25,7 +25,9 @@ its reason; so does a check the time limit or Ctrl-C in a refit stops, or an int
 robust fit leaves undone, with a finding, both saying why and what to do as a short record's do (the
 same code: short_record.TimedRise, why_unchecked; Ctrl-C returns the fit). Records shorter
 than a swing are short_record.py's (every parameter profiled there); noise-free data fitted to round-off
-have no statistics to profile.
+have no statistics to profile. The swinging spring (spring_model.py: a central force plus gravity, so
+the mirror image of a motion is one too, r₀ and ṙ₀ unchanged) is checked alike, its period that of the
+hanging length l₀ + m g/k (:func:`_hanging`); a spring record shorter than a swing by neither check.
 Units: φ₀ [rad], φ̇₀ [rad/s]; times [s].
 """
 
@@ -98,13 +100,13 @@ def check_mirror(res: Any, clock: Search, checkable: bool = True, ctrl_c: bool =
     names = [n for n in SIDEWAYS if n in res.params and res.determined[n]]
     flat = [n for n in SIDEWAYS if n in res.params and res.reasons.get(n, "").startswith(FLAT)]
     values = {**res.fixed, **res.params}
-    if not (res.mirror_blind and (names or flat)) or res.planar or res.model == "spring" or _exact(res):
+    if not (res.mirror_blind and (names or flat)) or res.planar or _exact(res):
         return []
     if not names:  # a fit at the plane itself: no first-order sensitivity, the profile gives the bars
         names = flat
     if any(n not in res.params and values.get(n, 0.0) != plane_of(n, values.get(n, 0.0)) for n in SIDEWAYS):
         return []  # a sideways value held off the plane: its mirror image is not a fit of these data
-    length, g = float(values["length"]), float(values["g"])
+    length, g = _hanging(values), float(values["g"])
     if not (length > 0.0 and math.isfinite(length) and math.isfinite(g) and g != 0.0):
         return []
     period = 2.0 * math.pi * math.sqrt(length / abs(g))
@@ -126,6 +128,15 @@ def check_mirror(res: Any, clock: Search, checkable: bool = True, ctrl_c: bool =
     closed = {n: e for n, e in ends.items() if all(map(math.isfinite, e))}
     mark_not_determined(res, [n for n in ends if n not in closed and n not in flat], OPEN)
     return _widened(res, closed, plane_rise)
+
+
+def _hanging(values: dict[str, float]) -> float:
+    """The length [m] the bob hangs at: a rod's ``length``; the swinging spring's rest length l₀ plus
+    its stretch m g/k (spring_model.py), whose small swings have the period 2π√((l₀ + m g/k)/g)."""
+    length = float(values["length"])
+    if float(values.get("stiffness", 0.0)) > 0.0:
+        length += float(values["mass"]) * abs(float(values["g"])) / float(values["stiffness"])
+    return length
 
 
 def _exact(res: Any) -> bool:
