@@ -5,13 +5,14 @@ them:
 
 - ``python`` blocks: the blocks of one page run in order, in one fresh namespace (names defined earlier
   on the page stay defined, as for a reader going down the page; nothing else is set up), in this
-  process (no second start-up of Python, NumPy and pendulab per page; warnings are printed, as for a
-  reader, not raised) with a temporary folder as the working folder, ``examples`` linked to the
-  checkout's (the pages are written for the top of the checkout). A block that is a script (``if
-  __name__ == "__main__":``) runs as its own file, in a child process. Matplotlib draws off screen
-  (``Agg``).
+  process (no second start-up of Python, NumPy and pendulab per page) with a temporary folder as the
+  working folder, ``examples`` linked to the checkout's (the pages are written for the top of the
+  checkout). A block that is a script (``if __name__ == "__main__":``) runs as its own file, in a child
+  process. Matplotlib draws off screen (``Agg``).
 - shell blocks (```` ```sh ````, ```` ```console ````, or untagged with a first line that is a command):
-  each command runs in bash there, with ``pendulab`` and ``python`` of this environment first on PATH.
+  each command runs there: a plain ``pendulab …`` line (no pipes, globs, variables or other shell
+  syntax) in this process (the same app as the ``pendulab`` script, through typer's CliRunner), any
+  other command in bash, with ``pendulab`` and ``python`` of this environment first on PATH.
   In a transcript (lines ``$ command`` followed by its output) a command whose shown output has
   lines starting with ``error:`` must fail with exit code 2 and print ``error:``; every other command
   must succeed. The output shown for a ``pendulab`` command must be what it prints: every shown line
@@ -29,6 +30,14 @@ them:
   too). A block whose first line is ``# examples/….toml (abridged)…`` shows part of that shipped file:
   each value it shows must be the file's.
 - other blocks (output, file trees) are text.
+
+What runs in this process warns as for a reader: warnings are printed, not raised (a page may show the
+fit's ``UserWarning`` on purpose), except a deprecation (``DeprecationWarning``,
+``PendingDeprecationWarning``, ``FutureWarning``) raised for a block's code or for pendulab's, which
+fails the test with the page, its line and the warning's text (:func:`no_deprecations`): a page must
+not teach a deprecated call such as ``Crane.simulate(dt=…)``. One page's python blocks, a script block
+and each shell command must finish within :data:`TIMEOUT` s (:func:`time_limit` for what runs in this
+process).
 
 A block preceded by ``<!-- docs-test: skip (reason) -->`` is not run; :data:`ALLOWED_SKIPS` keeps that
 list short and explicit. The README's wheel-install block (``<!-- wheel-install … -->``) is run by
@@ -59,6 +68,8 @@ from pathlib import Path
 import numpy as np
 from conftest import REPO
 
+import pendulab
+
 # The README and every page of the site (docs/ with its sub-folders: the tour's index, the reference),
 # but not the READMEs mkdocs.yml leaves out of it (exclude_docs).
 PAGES = [REPO / "README.md", *sorted(p for p in (REPO / "docs").rglob("*.md") if p.name != "README.md")]
@@ -67,7 +78,9 @@ COMMANDS = ("pendulab", "make", "python", "python3", "pip", ".", "source", "echo
 ALLOWED_SKIPS = {
     "README.md": {"make wheel": "run by tools/check_wheel.py (make test-wheel) against the built wheel"},
 }
-TIMEOUT = 300.0  # s, one page's python blocks or one shell command
+TIMEOUT = 300.0  # s, one page's python blocks or one shell command (in bash or in this process)
+# warnings a page must not make: it would teach a call that is deprecated (Crane.simulate(dt=…))
+DEPRECATIONS = (DeprecationWarning, PendingDeprecationWarning, FutureWarning)
 
 
 @dataclass(frozen=True)
@@ -186,33 +199,87 @@ def isolated() -> Iterator[None]:
             random.setstate(py_random)
 
 
+class TooLong(Exception):
+    """What runs in this process did not finish within :data:`TIMEOUT` s (not a ``TimeoutError``: that is
+    an ``OSError``, which the command line reports as a user's ``error:``, as a transcript may show)."""
+
+
+@contextmanager
+def time_limit(what: str) -> Iterator[None]:
+    """Raises :class:`TooLong` (naming ``what``) in this thread if the body runs longer than
+    :data:`TIMEOUT` s (``SIGALRM``: the main thread, on a POSIX system; the core gives Python a chance
+    to act on signals between its chunks of work)."""
+    limit = TIMEOUT
+
+    def too_long(signum: int, frame: object) -> None:
+        raise TooLong(f"{what} did not finish within {limit:g} s")
+
+    before = signal.signal(signal.SIGALRM, too_long)
+    signal.setitimer(signal.ITIMER_REAL, limit)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, before)
+
+
+_PACKAGE = str(Path(pendulab.__file__).parent)
+
+
+def taught(category: type[Warning], filename: str) -> bool:
+    """Whether a warning of ``category`` that Python attributes to ``filename`` is a deprecation the page
+    teaches: one of :data:`DEPRECATIONS` raised for a block's own code (a block's file name is its
+    :attr:`Block.where`; a deprecation's ``stacklevel`` points at its caller) or for pendulab's (what a
+    command calls; pendulab calling what another library deprecates). One that another library raises
+    for its own code (Matplotlib calling NumPy) is that library's, only printed."""
+    own = filename.startswith(_PACKAGE) or re.fullmatch(r".+\.md:\d+", filename) is not None
+    return own and issubclass(category, DEPRECATIONS)
+
+
+@contextmanager
+def no_deprecations(where: str) -> Iterator[None]:
+    """Warnings are shown as before (inside :func:`isolated`, which puts ``warnings.showwarning`` back); a
+    deprecation the page teaches (:func:`taught`) fails the test once the body has run, naming ``where``
+    and each such warning with its line (on the page, ``cranes.md:131``, for one a block makes)."""
+    show = warnings.showwarning
+    found: list[str] = []
+
+    def record(message, category, filename, lineno, file=None, line=None):  # type: ignore[no-untyped-def]
+        show(message, category, filename, lineno, file, line)
+        if taught(category, filename):
+            block = re.fullmatch(r"(.+\.md):(\d+)", filename)
+            at = f"{block[1]}:{int(block[2]) + lineno}" if block else f"{filename}:{lineno}"
+            found.append(f"{at}: {category.__name__}: {message}")
+
+    warnings.showwarning = record
+    try:
+        yield
+    finally:
+        warnings.showwarning = show
+    assert not found, f"{where} uses what is deprecated (write what the warning says):\n" + "\n".join(found)
+
+
 def exec_in_order(todo: list[Block], work: Path) -> None:
     """The blocks ``todo`` in order in one fresh namespace, in this process (:func:`isolated`), in the
     folder ``work``; each page within :data:`TIMEOUT` s. A failing block's error names it (``the block
-    at fit.md:8``)."""
+    at fit.md:8``); so does a deprecation a block makes (:func:`no_deprecations`): other warnings are
+    printed, as for a reader (the fit's ``UserWarning`` that a page shows on purpose)."""
     import matplotlib
 
     matplotlib.use("Agg")
     ns: dict[str, object] = {"__name__": "__docs__"}
-
-    def too_long(signum: int, frame: object) -> None:
-        raise TimeoutError(f"the python blocks of {todo[0].page} did not finish within {TIMEOUT:g} s")
-
-    before = signal.signal(signal.SIGALRM, too_long)
-    signal.setitimer(signal.ITIMER_REAL, TIMEOUT)
     try:
-        with isolated():
+        with time_limit(f"the python blocks of {todo[0].page}" if todo else "no blocks"), isolated():
             os.chdir(work)
             warnings.simplefilter("default")  # as for a reader: printed, not raised (pytest's "error")
             for b in todo:
                 try:
-                    exec(compile(b.text, b.where, "exec"), ns)
+                    with no_deprecations(f"the block at {b.where}"):
+                        exec(compile(b.text, b.where, "exec"), ns)
                 except BaseException as e:
                     e.add_note(f"FAILED: the block at {b.where}")
                     raise
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, before)
         if "matplotlib.pyplot" in sys.modules:  # a figure drawn with pyplot (xarray's .plot())
             sys.modules["matplotlib.pyplot"].close("all")
 

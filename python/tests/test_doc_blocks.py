@@ -9,15 +9,17 @@ import random
 import re
 import signal
 import sys
+import time
 import tomllib
 import warnings
 from pathlib import Path
 
+import doc_blocks
 import matplotlib
 import numpy as np
 import pytest
 from conftest import REPO
-from doc_blocks import ALL, ALLOWED_SKIPS, Block, check, exec_in_order, kind, skipped, workdir
+from doc_blocks import ALL, ALLOWED_SKIPS, Block, TooLong, check, exec_in_order, kind, skipped, workdir
 
 
 def test_skip_markers_are_few_and_listed() -> None:
@@ -98,6 +100,57 @@ def test_a_block_leaves_no_global_state_behind(fails: bool, tmp_path: Path) -> N
         exec_in_order([leaky], workdir(tmp_path))
     after = _state()
     assert [k for k in before if before[k] != after[k]] == []
+
+
+# A page that teaches a deprecated call (as its line on the page) fails; other warnings are printed.
+CRANE = "from pendulab import crane\nc = crane.Crane(10.0)\n"
+DEPRECATED = {
+    "Crane.simulate(dt=…)": (CRANE + "run = c.simulate(1.0, sway=(0.1, 0.0), dt=0.1)", 13, "Crane.simulate"),
+    "warn Deprecation": ("import warnings\nwarnings.warn('old', DeprecationWarning)", 12, "old"),
+    "warn PendingDeprecation": (
+        "import warnings\nwarnings.warn('old', PendingDeprecationWarning)",
+        12,
+        "old",
+    ),
+    "warn Future": ("import warnings\nwarnings.warn('old', FutureWarning)", 12, "old"),
+}
+
+
+@pytest.mark.parametrize("name", DEPRECATED)
+def test_a_block_that_uses_a_deprecated_call_fails(name: str, tmp_path: Path) -> None:
+    text, line, said = DEPRECATED[name]
+    todo = [Block("old.md", 4, "python", "x = 1", ""), Block("old.md", 10, "python", text, "")]
+    with pytest.raises(AssertionError, match=r"the block at old\.md:10 uses what is deprecated") as e:
+        exec_in_order(todo, workdir(tmp_path))
+    assert f"old.md:{line}: " in str(e.value) and said in str(e.value)
+    assert "FAILED: the block at old.md:10" in e.value.__notes__
+
+
+PRINTED = {
+    "UserWarning": "import warnings\nwarnings.warn('shown on purpose', UserWarning)",
+    "a library's own": "import warnings, numpy\n"
+    "warnings.warn_explicit('old', DeprecationWarning, numpy.__file__, 1)",  # Matplotlib calling NumPy
+    "Crane.simulate(output_spacing=…)": CRANE + "run = c.simulate(1.0, sway=(0.1, 0.0), output_spacing=0.1)",
+}
+
+
+@pytest.mark.parametrize("name", PRINTED)
+def test_a_block_with_other_warnings_passes(
+    name: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    with warnings.catch_warnings(record=True) as shown:
+        exec_in_order([Block("ok.md", 1, "python", PRINTED[name], "")], workdir(tmp_path))
+    assert len(shown) == (name != "Crane.simulate(output_spacing=…)")
+
+
+def test_the_python_blocks_of_a_page_have_a_time_limit(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    monkeypatch.setattr(doc_blocks, "TIMEOUT", 0.2)
+    start = time.perf_counter()
+    with pytest.raises(TooLong, match=r"the python blocks of slow\.md did not finish within 0\.2 s"):
+        exec_in_order([Block("slow.md", 1, "python", "import time\ntime.sleep(30)", "")], workdir(tmp_path))
+    assert time.perf_counter() - start < 10
 
 
 # -------------------------------------------------------------------------------------------- toml

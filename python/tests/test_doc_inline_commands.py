@@ -1,7 +1,8 @@
 """Every ``pendulab`` command written inline in the prose of README.md and docs/*.md (in backticks,
 outside code blocks: "`pendulab crane grid --ropes 5:30:50 --plot grid.png`") names options that its
-``--help`` lists. The code blocks are run by test_doc_blocks.py; these are only read, so that an option
-renamed or removed cannot stay in a sentence. Backticked text that is not a command of the app
+``--help`` lists. The code blocks are run by test_doc_blocks.py (python, toml) and
+test_doc_shell_blocks.py (shell); these are only read, so that an option renamed or removed cannot stay
+in a sentence. Backticked text that is not a command of the app
 ("`pendulab X.Y.Z`", a table's "`pendulab rattle (simulate)`") is not a command and is left alone."""
 
 from __future__ import annotations

@@ -7,21 +7,35 @@ checks its exit code and output against what the block shows, and finds the file
 
 from __future__ import annotations
 
+import builtins
 import hashlib
 import os
 import re
 import shlex
 import shutil
 import subprocess
+import time
 import warnings
 from collections import Counter
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
+import doc_blocks
 import pytest
 from conftest import REPO
-from doc_blocks import ALL, TIMEOUT, Block, env, isolated, kind, skipped, workdir
+from doc_blocks import (
+    ALL,
+    Block,
+    TooLong,
+    env,
+    isolated,
+    kind,
+    no_deprecations,
+    skipped,
+    time_limit,
+    workdir,
+)
 
 
 @dataclass(frozen=True)
@@ -121,22 +135,24 @@ def check_shown(c: Command, printed: str, where: str) -> None:
 def run(text: str, work: Path) -> tuple[int, str, str]:
     """Exit code, stderr and stdout of one command run in ``work``: a plain ``pendulab …`` line in this
     process (typer's CliRunner: the same app as the ``pendulab`` script, without a second of start-up per
-    line; :func:`isolated`), anything with shell syntax (pipes, globs, variables) in bash."""
+    line; :func:`isolated`, :func:`time_limit`; a deprecation it makes fails: :func:`no_deprecations`),
+    anything with shell syntax (pipes, globs, variables) in bash; each within :data:`TIMEOUT` s."""
     words = shlex.split(text, comments=True)
     if words[0] == "pendulab" and not _SHELL_SYNTAX.search(text):
         from typer.testing import CliRunner
 
         from pendulab import cli
 
-        with isolated():
+        with time_limit(f"`{text}`"), isolated():
             os.chdir(work)
             warnings.simplefilter("default")  # as for a user: printed, not raised (pytest's "error")
-            result = CliRunner().invoke(cli.app, words[1:])
+            with no_deprecations(f"`{text}`"):
+                result = CliRunner().invoke(cli.app, words[1:])
         if result.exception is not None and not isinstance(result.exception, SystemExit):
             raise result.exception
         return result.exit_code, result.stderr, result.stdout
     p = subprocess.run(
-        ["bash", "-c", text], cwd=work, env=env(), capture_output=True, text=True, timeout=TIMEOUT
+        ["bash", "-c", text], cwd=work, env=env(), capture_output=True, text=True, timeout=doc_blocks.TIMEOUT
     )
     return p.returncode, p.stderr, p.stdout
 
@@ -206,7 +222,11 @@ def test_shell_blocks_run_as_written(block: Block, tmp_path: Path) -> None:
         if is_synopsis(c.text):
             check_synopsis(c.text, block.where)
             continue
-        code, stderr, stdout = (run_once if c.text in REPEATED else run)(c.text, work)
+        try:
+            code, stderr, stdout = (run_once if c.text in REPEATED else run)(c.text, work)
+        except BaseException as e:
+            e.add_note(f"FAILED: the block at {block.where}")
+            raise
         if words[0] == "pendulab":
             check_shown(c, stdout + stderr, block.where)
         if c.expect_error:
@@ -247,3 +267,49 @@ def test_a_repeated_command_runs_once_and_leaves_its_files(tmp_path: Path) -> No
     assert (tmp_path / "b" / "examples").is_symlink()
     assert done["c"] != done["a"]  # other files in the folder (no gone.txt): run again
     assert runs.read_text() == "ran\nran\n"
+
+
+def _methods_then(then: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``pendulab methods`` does ``then`` first: warns as pendulab's code deprecating something would, or
+    takes 30 s."""
+    from pendulab.cli import run as cli_run
+
+    table = cli_run.method_table
+
+    def slow_or_old() -> object:
+        if then == "sleep":
+            time.sleep(30)
+        else:
+            warnings.warn_explicit(f"old {then}", getattr(builtins, then), cli_run.__file__, 1)
+        return table()
+
+    monkeypatch.setattr(cli_run, "method_table", slow_or_old)
+
+
+@pytest.mark.parametrize("category", ["DeprecationWarning", "PendingDeprecationWarning", "FutureWarning"])
+def test_a_command_that_makes_a_deprecation_warning_fails(
+    category: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _methods_then(category, monkeypatch)
+    with pytest.raises(
+        AssertionError, match=rf"`pendulab methods` uses what is deprecated.*\n.*{category}: old"
+    ):
+        run("pendulab methods", workdir(tmp_path))
+
+
+def test_a_command_that_makes_another_warning_passes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    _methods_then("UserWarning", monkeypatch)
+    with warnings.catch_warnings(record=True) as shown:
+        code, _, stdout = run("pendulab methods", workdir(tmp_path))
+    assert code == 0 and "rattle" in stdout and [str(w.message) for w in shown] == ["old UserWarning"]
+
+
+def test_a_command_run_in_this_process_has_a_time_limit(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _methods_then("sleep", monkeypatch)
+    monkeypatch.setattr(doc_blocks, "TIMEOUT", 0.2)
+    start = time.perf_counter()
+    with pytest.raises(TooLong, match=r"`pendulab methods` did not finish within 0\.2 s"):
+        run("pendulab methods", workdir(tmp_path))
+    assert time.perf_counter() - start < 10

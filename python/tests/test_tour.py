@@ -85,13 +85,75 @@ def test_notebook_is_stored_without_outputs(path: Path):
             assert cell.outputs == [] and cell.execution_count is None, f"{path.name}: clear the outputs"
 
 
+# Run first, in the kernel (a cell of its own, not stored): warnings are shown (deprecations too), and a
+# deprecation raised for a cell's code (where a deprecation's stacklevel points) or for pendulab's also
+# prints a line starting with DEPRECATED (on stderr, in the cell's output), which fails the notebook (as
+# doc_blocks.no_deprecations does for the pages).
+DEPRECATED = "pendulab-docs deprecated:"
+WATCH = f"""
+import os as _os, sys as _sys, warnings as _warnings
+import pendulab as _pendulab
+
+def _watch(show, package, cells):
+    def record(message, category, filename, lineno, file=None, line=None):
+        show(message, category, filename, lineno, file, line)
+        own = filename.startswith(package) or _os.path.dirname(filename) == cells
+        if own and issubclass(category, (DeprecationWarning, PendingDeprecationWarning, FutureWarning)):
+            print("{DEPRECATED}", f"line {{lineno}}: {{category.__name__}}: {{message}}", file=_sys.stderr)
+    return record
+
+for _category in (DeprecationWarning, PendingDeprecationWarning, FutureWarning):  # shown, not ignored
+    _warnings.filterwarnings("default", category=_category)
+_warnings.showwarning = _watch(
+    _warnings.showwarning,
+    _os.path.dirname(_pendulab.__file__),
+    _os.path.dirname(get_ipython().compile.get_code_name("", "", 0)),
+)
+del _watch, _category
+"""
+
+
+def deprecations(nb: nbformat.NotebookNode, folder: Path) -> list[str]:
+    """Runs ``nb`` in a fresh kernel in ``folder`` (raises ``CellExecutionError``, with the cell and
+    traceback, if a cell fails); returns a line for each deprecation a cell makes (:data:`WATCH`), naming
+    the cell (counted from 1) and the warning."""
+    nb.cells.insert(0, nbformat.v4.new_code_cell(WATCH))
+    client = nbclient.NotebookClient(
+        nb, timeout=CELL_TIMEOUT, kernel_name="python3", resources={"metadata": {"path": str(folder)}}
+    )
+    client.execute()
+    return [
+        f"cell {i}, {line.removeprefix(DEPRECATED).strip()}"
+        for i, cell in enumerate(nb.cells[1:], 1)
+        for out in cell.get("outputs", [])
+        if out.get("name") == "stderr"
+        for line in out.text.splitlines()
+        if line.startswith(DEPRECATED)
+    ]
+
+
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=[p.stem for p in NOTEBOOKS])
 def test_notebook_runs(path: Path, tmp_path: Path):
     nb = nbformat.read(path, as_version=4)
-    client = nbclient.NotebookClient(
-        nb, timeout=CELL_TIMEOUT, kernel_name="python3", resources={"metadata": {"path": str(tmp_path)}}
-    )
     start = time.perf_counter()
-    client.execute()  # raises CellExecutionError (with the cell and traceback) if any cell fails
+    found = deprecations(nb, tmp_path)
     seconds = time.perf_counter() - start
+    assert not found, f"{path.name} uses what is deprecated (write what the warning says):\n" + "\n".join(
+        found
+    )
     assert seconds < NOTEBOOK_LIMIT, f"{path.name} took {seconds:.0f} s (limit {NOTEBOOK_LIMIT} s)"
+
+
+def test_a_deprecated_call_in_a_notebook_is_found(tmp_path: Path):
+    cells = [
+        "import warnings\nfrom pendulab import crane\nc = crane.Crane(10.0)",
+        "warnings.warn('shown on purpose', UserWarning)\n"
+        "warnings.warn_explicit('theirs', FutureWarning, warnings.__file__, 1)",  # another library's own
+        "run = c.simulate(1.0, sway=(0.1, 0.0), dt=0.1)",
+        "warnings.warn('old', PendingDeprecationWarning)",
+    ]
+    nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
+    found = deprecations(nb, tmp_path)
+    assert [f.split(":")[0] for f in found] == ["cell 3, line 1", "cell 4, line 1"]
+    assert "DeprecationWarning: Crane.simulate(dt=...) is deprecated" in found[0]
+    assert found[1].endswith("PendingDeprecationWarning: old")
