@@ -52,7 +52,8 @@ pub struct Solver<M: Model> {
     saved_total: u64,
     max_samples: u64,
     done: bool,
-    /// The time of the last state saved \[s\], the last one known finite (named by a divergence).
+    /// The time \[s\] of the last state known finite (named by a divergence): the last one saved, for
+    /// `dop853` the start of its last step (every step's state is checked).
     last_finite: f64,
 }
 
@@ -218,8 +219,15 @@ impl<M: Model> Solver<M> {
         let mut taken = 0;
         if self.stepper.method().info().adaptive {
             while taken < n && self.stepper.t() < target {
+                // every accepted step is checked: a state not finite is named by the step's start
+                // (the last saved sample may lie many steps back), as dop853's own failures are
+                self.last_finite = self.stepper.t();
                 self.stepper.step_towards(self.t_end)?;
                 taken += 1;
+                if !self.stepper.state().is_finite() {
+                    let (t, dt) = (self.last_finite, self.stepper.t() - self.last_finite);
+                    return Err(Error::Diverged { t, method: self.stepper.method().info().name, dt });
+                }
             }
         } else {
             let dt = self.stepper.dt();

@@ -5,6 +5,7 @@
 mod common;
 
 use common::rosette;
+use pendulab_core::error::Time;
 use pendulab_core::integrate::dop853::Dop853;
 use pendulab_core::{IdealPendulum, Method, Model, SolveOptions, State, Stats, Stepper};
 
@@ -235,5 +236,67 @@ fn a_step_that_overflows_the_time_is_an_error_not_a_hang() {
             Ok(()) => assert!(st.t().is_finite(), "theta {theta}, dt {dt:e}: t = {}", st.t()),
             Err(e) => assert!(e.to_string().contains("dop853"), "{e}"),
         }
+    }
+}
+
+/// The ideal pendulum whose physical state ([`Model::to_physical`], as a hoisted rope's rate enters
+/// it) is not finite after `bad` [s]: the integrator's state stays finite, the state saved does not.
+#[derive(Debug, Clone)]
+struct NotFiniteAfter {
+    inner: IdealPendulum,
+    bad: f64,
+}
+
+impl Model for NotFiniteAfter {
+    fn name(&self) -> &'static str {
+        "not finite after"
+    }
+    fn params(&self) -> &pendulab_core::Params {
+        self.inner.params()
+    }
+    fn applied_acceleration(&self, t: f64, x: glam::DVec3, v: glam::DVec3) -> glam::DVec3 {
+        self.inner.applied_acceleration(t, x, v)
+    }
+    fn potential_per_mass(&self, x: glam::DVec3) -> f64 {
+        self.inner.potential_per_mass(x)
+    }
+    fn is_conservative(&self) -> bool {
+        true
+    }
+    fn is_axisymmetric(&self) -> bool {
+        true
+    }
+    fn to_physical(&self, t: f64, s: State) -> State {
+        if t > self.bad {
+            State { x: s.x, v: s.v * f64::NAN }
+        } else {
+            s
+        }
+    }
+}
+
+#[test]
+fn the_solver_names_the_start_of_the_step_whose_state_is_not_finite_not_its_last_sample() {
+    // saved every 100 steps (or at 0 and 2.5 s only), the first state not finite is the end of the
+    // step that crosses 1 s: named was the last saved sample (0 s), many steps back
+    use pendulab_core::{Error, SaveAt, Solver};
+    let m = NotFiniteAfter { inner: IdealPendulum::new(1.0, 1.0, 9.81).unwrap(), bad: 1.0 };
+    let s0 = State::from_angles(m.params(), 1.0, 0.0, 0.0, 1.0).unwrap();
+    let opts = SolveOptions { method: Method::Dop853, dt: 0.0, rtol: 1e-10, atol: 1e-12, project: true };
+    // the steps alone: the one that crosses 1 s
+    let mut st = Stepper::new(m.clone(), 0.0, s0, &opts).unwrap();
+    let mut start = 0.0;
+    while st.t() <= 1.0 {
+        start = st.t();
+        st.step().unwrap();
+    }
+    let (h, steps) = (st.t() - start, st.stats().steps);
+    assert!(steps > 20 && start > 0.9, "{steps} steps, the last from {start} s");
+    for save in [SaveAt::Every(100), SaveAt::Times(vec![0.0, 2.5])] {
+        let mut solver = Solver::new(m.clone(), 0.0, s0, 3.0, &opts, save.clone(), 1 << 30).unwrap();
+        let e = solver.advance(u64::MAX).unwrap_err();
+        let Error::Diverged { t, method: "dop853", dt } = e else { panic!("{save:?}: {e}") };
+        assert_eq!((t, dt), (start, h), "{save:?}: {e}");
+        assert!(e.to_string().starts_with(&format!("the integration diverged after t = {} s", Time(t))));
     }
 }
