@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from .. import memory
 from ..validate import MAX_SAMPLES, FloatArray, array, finite, invalid, spec
 from ..validate import number as number_within
 
@@ -76,9 +77,16 @@ def later(name: str, value: Any, start: float, start_name: str = "t_start") -> f
     return t
 
 
+SAMPLE_BYTES = 30 * 8
+"""Bytes one sample of a grid takes at the peak (:meth:`pendulab.crane.Path.knots`,
+:meth:`~pendulab.crane.Path.pivot_samples`): its time, P, Ṗ, P̈ (10 float64) and the work arrays
+beside them (about twice as many)."""
+
+
 def count(name: str, span: float, spacing: float) -> int:
     """The samples ⌈span/spacing⌉ + 1 of a grid, refused (naming the spacing ``name``) when more than
-    :data:`pendulab.validate.MAX_SAMPLES`."""
+    :data:`pendulab.validate.MAX_SAMPLES` or when their :data:`SAMPLE_BYTES` each exceed the memory
+    budget of one call (:func:`pendulab.memory.check_memory`: 80 % of what this process can get)."""
     ratio = span / spacing  # may be inf for a tiny spacing
     if not ratio + 1 <= MAX_SAMPLES:
         raise invalid(
@@ -87,6 +95,16 @@ def count(name: str, span: float, spacing: float) -> int:
             f"at most {MAX_SAMPLES} samples over {span!r} s ({ratio:.3g} asked): a larger spacing",
         )
     n = math.ceil(ratio) + 1
+    have = memory.available_bytes()
+    if have is not None and n * SAMPLE_BYTES > memory.USABLE_FRACTION * have:
+        most = int(memory.USABLE_FRACTION * have / SAMPLE_BYTES)
+        raise invalid(
+            name,
+            spacing,
+            f"at most {most} samples fit in the memory this process can get ({have / 2**30:.3g} GiB "
+            f"available, {memory.USABLE_FRACTION:.0%} of it usable, {SAMPLE_BYTES} B a sample); {n} "
+            f"asked over {span!r} s: a larger spacing or a shorter span",
+        )
     return n
 
 

@@ -25,14 +25,21 @@ import numpy.typing as npt
 from scipy.integrate import solve_ivp
 from scipy.linalg import solve_continuous_are
 
+from .. import memory
 from .._core import InvalidInputError
 from ..validate import invalid
 from ._checks import later, number, numbers, positive, real, time, times
 from .paths import Path
 from .shaper import FloatArray
+from .system import MAX_STEPS
 
 # switches of the control into and out of its limit a_max that one run may have (chattering beyond)
 MAX_SWITCHES = 10_000
+STABLE_STEP = 6.0
+"""h |p| of DOP853's steps where the loop has settled (its stability bound; 5.9–6.4 measured for
+ropes 0.5–50 m): the loop over a span [s] takes about span |p| / STABLE_STEP steps, p its fastest pole."""
+STEP_BYTES = 1024
+"""Bytes one step of the loop keeps (SciPy's dense output; 0.9 kB measured)."""
 
 
 def _matrices(rope: float, g: float) -> tuple[FloatArray, FloatArray]:
@@ -69,6 +76,7 @@ class LQR:
         t0 = time("t_start", t_start)
         t1 = later("t_end", t_end, t0)
         theta0 = number("sway", sway, "rad")
+        self._bound(t0, t1, t_end)
         big_l, g, a_max, k = self.rope, self.g, self.a_max, self.K[0]
 
         # u = clip(−K z, ±a_max) kinks where the clip starts and stops acting: the loop is integrated
@@ -132,6 +140,26 @@ class LQR:
             # out of saturation into the free mode, or from it into the limit on the side of u's sign
             mode = 0 if mode != 0 else (1 if gain(np.array(y)) > 0 else -1)
         return LQRRun(self, d, t0, t1, _Pieces(pieces), np.array(switches))
+
+    def _bound(self, t0: float, t1: float, t_end: Any) -> None:
+        """Refuses a loop over [t0, t1] [s] of more steps than :data:`~pendulab.crane.system.MAX_STEPS`
+        (a crane run's) or than fit in memory (:mod:`pendulab.memory`), before it starts."""
+        rate = float(np.max(np.abs(self.poles)))
+        steps = (t1 - t0) * rate / STABLE_STEP
+        most, why = MAX_STEPS, "a crane run's limit"
+        have = memory.available_bytes()
+        if have is not None and memory.USABLE_FRACTION * have / STEP_BYTES < most:
+            most = int(memory.USABLE_FRACTION * have / STEP_BYTES)
+            why = f"what fits in the {have / 2**30:.3g} GiB this process can get, {STEP_BYTES} B a step"
+        if steps > most:
+            raise invalid(
+                "t_end",
+                t_end,
+                f"at most {most} steps of the closed loop ({why}); over {t1 - t0:.6g} s from t_start = "
+                f"{t0:g} s it takes about {steps:.3g} (DOP853 steps of at most about {STABLE_STEP:g}/|p| = "
+                f"{STABLE_STEP / rate:.3g} s, |p| = {rate:.3g} 1/s its fastest pole): a shorter t_end "
+                f"(t_end - t_start <= {most * STABLE_STEP / rate:.3g} s)",
+            )
 
 
 class _Pieces:

@@ -27,7 +27,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .._core import InvalidInputError
-from ..validate import integer, invalid
+from ..validate import integer, invalid, show
 from . import _spacing
 from ._checks import count, later, numbers, positive, time
 from ._checks import times as time_array
@@ -187,6 +187,13 @@ class Tower(Path):
             _profile_or_number("luff", self.luff, "rad")
         if self.boom is not None:
             positive("boom", self.boom, "m")
+        if (self.luff is None) != (self.boom is None):  # one alone would be ignored: the radius would rule
+            given, missing = ("luff", "boom") if self.boom is None else ("boom", "luff")
+            raise InvalidInputError(
+                f"Tower: {given} = {show(getattr(self, given))} given without {missing}: a luffing boom "
+                "needs both luff (its angle β [rad] above the horizontal) and boom (its length L [m]); "
+                "give both, or neither for a trolley at radius"
+            )
 
     @staticmethod
     def _eval(prof: Profile | float, t: FloatArray, left: bool) -> tuple[FloatArray, FloatArray, FloatArray]:
