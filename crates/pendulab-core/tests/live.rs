@@ -206,3 +206,25 @@ fn a_method_the_model_does_not_run_and_a_crane_command_outside_the_crane_mode_ar
     );
     assert!(session.apply(crane).unwrap().is_none(), "in the crane mode the move is taken");
 }
+
+/// Every lab model that runs only some methods refuses the others with its own key and reason
+/// (`method_not_for_<model>`): the refusal is matched over these models with no catch-all arm, which
+/// gave any model but the spring and the crane the string's reason.
+#[test]
+fn every_model_that_runs_only_some_methods_refuses_the_others_with_its_own_key() {
+    use pendulab_core::live::{live_models, methods_for, LiveStepper};
+    let mut models = live_models();
+    models.push(pendulab_core::live::crane::CRANE);
+    let mut restricted = Vec::new();
+    for model in models {
+        let Some(allowed) = methods_for(model) else { continue };
+        let p = LivePendulum::new(model, 1.0, 1.0, 9.81, &[]).unwrap();
+        let state = p.state_from_angles(1.0, 0.0, 0.0, 0.0).unwrap();
+        for method in Method::ALL.iter().filter(|m| !allowed.contains(&m.info().name)) {
+            let e = LiveStepper::new(&p, state, 0.0, *method, 1e-3, 1e-8, 1e-10).unwrap_err();
+            assert_eq!(e.key().unwrap().0, format!("method_not_for_{model}"), "{e}");
+        }
+        restricted.push(model);
+    }
+    assert_eq!(restricted, ["spring", "string", "crane"]);
+}

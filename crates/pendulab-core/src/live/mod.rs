@@ -8,7 +8,8 @@
 //!
 //! - [`budget`]: [`budget::Clock`], [`budget::Budget`], [`budget::Slicer`].
 //! - [`frame`]: the record layout (`frame.json`) and the records of states.
-//! - [`pendulum`]: [`pendulum::LivePendulum`] (a lab model by registry name) and [`pendulum::LiveStepper`].
+//! - [`pendulum`]: [`pendulum::LivePendulum`] (a lab model by registry name) and [`pendulum::LiveStepper`];
+//!   `methods`: [`methods_for`] a model and the keyed refusal of the others.
 //! - [`error`]: [`error::LiveError`], the `error_x` column.
 //! - [`session`]: [`session::LiveSession`]: commands, pacing, ticks.
 //! - [`crane_plan`], [`crane`]: the crane mode (the trolley's shaped, acceleration-limited command, the
@@ -21,6 +22,7 @@ pub mod crane_plan;
 pub mod crane_wire;
 pub mod error;
 pub mod frame;
+mod methods;
 pub mod pendulum;
 pub mod session;
 pub mod wire;
@@ -30,5 +32,6 @@ mod crane_tests;
 
 pub use budget::{Budget, Clock, Slicer, TICK_BUDGET};
 pub use frame::{Record, FRAME_FIELDS, RECORD_LEN, UNKNOWN};
-pub use pendulum::{live_models, methods_for, LivePendulum, LiveStepper};
+pub use methods::methods_for;
+pub use pendulum::{live_models, LivePendulum, LiveStepper};
 pub use session::{Command, LiveSession, Out, Setup, StateSpec};

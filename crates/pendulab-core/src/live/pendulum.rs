@@ -5,6 +5,8 @@
 
 use super::crane::{LiveCrane, CRANE, CRANE_PARAMS};
 use super::frame::{rod_record, Record};
+use super::methods::{method_refused, Restricted};
+pub use super::methods::{SPRING_ORDERS, STRING_METHODS};
 use crate::elastic::{SpringStepper, SwingingSpring};
 use crate::error::{Error, Result};
 use crate::integrate::Method;
@@ -18,22 +20,8 @@ use crate::DVec3;
 
 /// The lab's models that step with their own core steppers, not [`Stepper`].
 pub const OWN_STEPPER_MODELS: [&str; 2] = ["spring", "string"];
-/// The spring's methods and their orders: Störmer–Verlet (2) and its triple jump (4).
-pub const SPRING_ORDERS: [(&str, u32); 2] = [("rattle", 2), ("rattle4", 4)];
-/// The string's methods: fixed step and keeping TS² in the taut phases.
-pub const STRING_METHODS: [&str; 5] = ["rattle", "rattle4", "rattle6", "rattle8", "rkmk4"];
 /// The method a session switches to when its method cannot run the spring or the string.
 pub const DEFAULT_METHOD: Method = Method::Rattle;
-
-/// The methods that can run `model` in the lab (None: every method of [`Stepper`]).
-pub fn methods_for(model: &str) -> Option<Vec<&'static str>> {
-    match model {
-        "spring" => Some(SPRING_ORDERS.iter().map(|(m, _)| *m).collect()),
-        "string" => Some(STRING_METHODS.to_vec()),
-        CRANE => Some(vec!["dop853"]),
-        _ => None,
-    }
-}
 
 /// The models a live session runs: the registry's `interactive` ones, the spring and the string.
 pub fn live_models() -> Vec<&'static str> {
@@ -73,34 +61,6 @@ fn no_parameter(model: &'static str, key: &str, own: &[&str]) -> Error {
         words: format!("{name} has no parameter '{key}'; its parameters: {}", own.join(", ")),
         key: "unknown_parameter",
         values,
-    }
-}
-
-/// The refusal of `method` for `model`, which runs only the methods `allowed` in the lab, keyed by why
-/// (messages.json: `method_not_for_spring`, `method_not_for_string`, `method_not_for_crane`; values
-/// method, model, available), so that a page words the reason in its language too.
-fn method_refused(model: &'static str, method: &str, allowed: &[&str]) -> Error {
-    let (key, what, use_) = match model {
-        "spring" => (
-            "method_not_for_spring",
-            "it leaves the sphere: rattle runs Störmer–Verlet (order 2), rattle4 its triple jump (order 4)",
-            "use one of",
-        ),
-        CRANE => (
-            "method_not_for_crane",
-            "the crane mode steps its load with the crane integrator, adaptive DOP853 with projection onto \
-             the rope",
-            "use",
-        ),
-        _ => {
-            ("method_not_for_string", "its taut phases need a fixed-step method that keeps TS²", "use one of")
-        }
-    };
-    let available = allowed.join(", ");
-    Error::RefusedKeyed {
-        words: format!("method {method:?} cannot run the {model:?} model ({what}); {use_} {available}"),
-        key,
-        values: vec![("method", method.to_string()), ("model", model.to_string()), ("available", available)],
     }
 }
 
@@ -268,9 +228,10 @@ impl LiveStepper {
         atol: f64,
     ) -> Result<Self> {
         let name = method.info().name;
-        if let Some(allowed) = methods_for(p.model) {
+        if let Some(which) = Restricted::of(p.model) {
+            let allowed = which.methods();
             if !allowed.contains(&name) {
-                return Err(method_refused(p.model, name, &allowed));
+                return Err(method_refused(which, p.model, name, &allowed));
             }
         }
         Ok(match p.model {

@@ -8,7 +8,8 @@ use crate::integrate::Method;
 use crate::live::crane::{CraneCommand, CRANE};
 use crate::live::error::LiveError;
 use crate::live::frame::Record;
-use crate::live::pendulum::{methods_for, LivePendulum, LiveStepper, DEFAULT_METHOD};
+use crate::live::methods_for;
+use crate::live::pendulum::{LivePendulum, LiveStepper, DEFAULT_METHOD};
 use crate::state::State;
 
 impl LiveSession {
