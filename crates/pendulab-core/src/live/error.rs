@@ -3,8 +3,11 @@
 //!
 //! - **exact** (the ideal pendulum): |x − x_exact(t)| against the exact solution from the same start
 //!   (T-4.1–T-4.6);
-//! - **richardson** (fixed-step methods of order p): a companion from the same start at dt/2, advanced
-//!   to the same grid points; e ≈ |x_h − x_{h/2}| · 2^p/(2^p − 1) (Hairer, Nørsett & Wanner I, §II.4);
+//! - **richardson** (fixed-step methods of order p): a companion from the same start whose every
+//!   (sub-)step is half of one of the run's ([`LiveStepper::halved`]: for the rod models the run itself
+//!   with each step taken as two halves, `Stepper::set_halved_steps`, as `simulate(...,
+//!   error_estimate=True)` does on a sampled pivot), advanced to the same grid points;
+//!   e ≈ |x_h − x_{h/2}| · 2^p/(2^p − 1) (Hairer, Nørsett & Wanner I, §II.4);
 //! - **companion** (`dop853`): a companion at rtol_c = rtol/10 (×10 when rtol is within 2× of 1e-15),
 //!   atol scaled alike, landing on the same times; e ≈ |x − x_c| / |1 − rtol_c/rtol|.
 //!
@@ -29,7 +32,7 @@ pub const RTOL_MIN: f64 = 1e-15;
 pub enum How {
     /// Against the exact solution.
     Exact,
-    /// Richardson extrapolation against a dt/2 companion.
+    /// Richardson extrapolation against a companion of halved steps.
     Richardson,
     /// A tighter-tolerance `dop853` companion.
     Companion,
@@ -51,7 +54,7 @@ impl How {
 pub enum Reference {
     /// None (exact, or no estimate).
     None,
-    /// A fixed step \[s\].
+    /// A fixed step \[s\]: dt/2, each step of the companion (half of one of the run's).
     Dt(f64),
     /// Tolerances.
     Tol {
@@ -80,6 +83,8 @@ pub struct LiveError {
     exact: Option<ExactSolution>,
     companion: Option<LiveStepper>,
     dt: f64,
+    /// The companion's steps per step of the run (fixed-step methods; [`LiveStepper::halved`]).
+    per_step: u64,
     steps: u64,
     slicer: Slicer,
     scale: f64,
@@ -101,6 +106,7 @@ impl LiveError {
             exact: None,
             companion: None,
             dt,
+            per_step: 0,
             steps: 0,
             slicer: Slicer::new(),
             scale: 1.0,
@@ -133,7 +139,10 @@ impl LiveError {
             e.reference = Reference::Dt(dt / 2.0);
             let q = 2f64.powi(info.order as i32);
             e.scale = q / (q - 1.0);
-            LiveStepper::new(p, start, t0, method, dt / 2.0, rtol, atol)
+            LiveStepper::halved(p, start, t0, method, dt).map(|(c, per_step)| {
+                e.per_step = per_step;
+                c
+            })
         };
         match made {
             Ok(c) => {
@@ -187,7 +196,7 @@ impl LiveError {
     /// Advances the companion to `t` [s] within `budget`; true once it is there.
     fn reach(&mut self, t: f64, budget: &Budget<'_>) -> Result<bool> {
         let Some(c) = self.companion.as_mut() else { return Ok(false) };
-        if self.reference != Reference::Dt(self.dt / 2.0) {
+        if self.per_step == 0 {
             if c.t() >= t {
                 return Ok(c.t() == t);
             }
@@ -196,8 +205,8 @@ impl LiveError {
             }
             return self.slicer.until(|cap| c.step_to_capped(t, cap), budget);
         }
-        // fixed step: the record is grid point n of the run, the companion's grid point 2n
-        let target = 2 * ((t - self.t0) / self.dt).round() as i64;
+        // fixed step: the record is grid point n of the run, the companion's grid point per_step·n
+        let target = self.per_step as i64 * ((t - self.t0) / self.dt).round() as i64;
         let want = target - self.steps as i64;
         if want < 0 {
             return Ok(false);

@@ -251,6 +251,28 @@ impl LiveStepper {
         })
     }
 
+    /// The Richardson companion of a fixed-step run of `p` from `state` at `t0` \[s\] with `method` and
+    /// step `dt` \[s\] ([`super::error`]): a stepper whose every (sub-)step is half of one of the run's,
+    /// and how many of its steps make one step of the run. The rod models: the run itself with every
+    /// step, and every sub-step a break splits it into, taken as two halves
+    /// ([`Stepper::set_halved_steps`]; a run at dt/2 splits on breaks elsewhere, and its errors are then
+    /// not the run's / 2ᵖ); without breaks (no lab model has any) it is the run at dt/2, bit for bit
+    /// where the model does not depend on t, else to the round-off of the step times. The spring (whole steps
+    /// of dt) and the string (a step shortened only at its own leave and snap events, a few per swing):
+    /// the run at dt/2, two steps per step.
+    pub fn halved(p: &LivePendulum, state: State, t0: f64, method: Method, dt: f64) -> Result<(Self, u64)> {
+        let SolveOptions { rtol, atol, .. } = SolveOptions::default(); // fixed step: not used
+        Ok(match Self::new(p, state, t0, method, dt, rtol, atol)? {
+            LiveStepper::Rod(mut s) => {
+                s.set_halved_steps(true);
+                (LiveStepper::Rod(s), 1)
+            }
+            LiveStepper::Spring(_) | LiveStepper::String(_) | LiveStepper::Crane(_) => {
+                (Self::new(p, state, t0, method, 0.5 * dt, rtol, atol)?, 2)
+            }
+        })
+    }
+
     /// Time reached \[s\].
     pub fn t(&self) -> f64 {
         match self {
