@@ -46,7 +46,9 @@ def test_a_start_off_the_sphere_is_keyed_with_its_residual() -> None:
     p = pl.Pendulum()
     e = _refusal(lambda: pl.simulate(p, pl.State(np.array([0.5, 0, -0.5]), np.zeros(3)), t_end=1.0))
     assert e.key == "off_sphere"  # type: ignore[attr-defined]
-    assert e.values == {"what": "(|x| - l)/l", "value": "-0.2929", "tolerance": "1e-9"}  # type: ignore[attr-defined]
+    # the residual as the English words write it (was rounded to 4 significant digits, -0.2929)
+    assert e.values == {"what": "(|x| - l)/l", "value": "-0.2928932188134524", "tolerance": "1e-9"}  # type: ignore[attr-defined]
+    assert "(|x| - l)/l = -0.2928932188134524 exceeds the tolerance 1e-9" in str(e)
 
 
 def test_a_parameter_out_of_range_is_keyed_with_name_value_and_range() -> None:

@@ -39,7 +39,7 @@ def _error(text: str) -> dict[str, Any]:
             OFF_SPHERE,
             "set_state",
             "off_sphere",
-            {"what": "(|x| - l)/l", "value": "-0.2929", "tolerance": "1e-9"},
+            {"what": "(|x| - l)/l", "value": "-0.2928932188134524", "tolerance": "1e-9"},
         ),
         (DAMPING, "set_model", "invalid_parameter", {"name": "damping", "value": "-1"}),
     ],
@@ -57,11 +57,13 @@ def test_a_command_the_core_refuses_reaches_the_page_keyed(
 def test_the_page_words_a_state_off_the_sphere_in_english_german_and_french() -> None:
     n = _error(OFF_SPHERE)
     words = {lang: _page_words(lang, n["key"], n["values"]) for lang in ("en", "de", "fr")}
+    r = "(|x| - l)/l = -0.2928932188134524"  # as the English words of the core write it
     assert words == {
-        "en": "the start is not on the sphere: (|x| - l)/l = -0.2929 exceeds the tolerance 1e-9",
-        "de": "der Start liegt nicht auf der Kugel: (|x| - l)/l = -0.2929 überschreitet die Toleranz 1e-9",
-        "fr": "le départ n’est pas sur la sphère : (|x| - l)/l = -0.2929 dépasse la tolérance 1e-9",
+        "en": f"the start is not on the sphere: {r} exceeds the tolerance 1e-9",
+        "de": f"der Start liegt nicht auf der Kugel: {r} überschreitet die Toleranz 1e-9",
+        "fr": f"le départ n’est pas sur la sphère : {r} dépasse la tolérance 1e-9",
     }
+    assert r in n["message"]
 
 
 def test_the_page_words_a_parameter_out_of_range_in_english_german_and_french() -> None:
@@ -77,7 +79,7 @@ def test_a_refusal_of_the_core_in_session_apply_is_keyed() -> None:
     with pytest.raises(CommandError) as e:
         s.apply(parse_command(OFF_SPHERE))
     assert (e.value.command, e.value.key) == ("set_state", "off_sphere")
-    assert e.value.values["value"] == "-0.2929"
+    assert e.value.values["value"] == "-0.2928932188134524"  # as the English words write it
     with pytest.raises(CommandError) as e:
         s.apply(parse_command('{"type": "load_scenario", "name": "nowhere"}'))
     assert e.value.key is None  # not a refusal of the core: its English words alone

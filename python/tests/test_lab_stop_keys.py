@@ -5,7 +5,8 @@ method that diverged: ``diverged``, ``diverged_rattle``, …); ``Session.advance
 ``take_pending_steps()`` called from Python raise that keyed error and leave nothing of the stop behind;
 an unknown model or parameter, a model that runs only offline, too many waiting steps, a method the model
 does not run and a crane command outside the crane mode are keyed in English, German and French; a key's
-time is the English words' time (12 significant digits). SI units: m, m/s, s, m/s²."""
+time is the English words' time (12 significant digits), its dt the English words' dt. SI units: m, m/s, s,
+m/s²."""
 
 from __future__ import annotations
 
@@ -202,3 +203,18 @@ def test_the_time_of_a_stop_is_the_same_in_every_language() -> None:
     assert len(t.split(".")[1]) > 4, t  # more digits than 4 decimals hold
     for lang in ("en", "de", "fr"):
         assert f"t = {t} s" in _page_words(lang, "diverged", e.value.values)
+
+
+def test_the_step_of_a_stop_is_the_same_in_every_language() -> None:
+    # dt = 0.0123457 s: the key's dt was rounded to 4 significant digits (0.01235 s where the English
+    # words said 0.0123457 s), so a German or French page named another step than the English one
+    s = Session(resolve_scenario("rosette"))
+    s.apply(parse_command('{"type": "set_params", "g": 1000}'))
+    s.apply(parse_command('{"type": "set_method", "method": "rk4_angles", "dt": 0.0123457}'))
+    with pytest.raises(CommandError) as e:
+        for _ in range(40):
+            s.advance(0.1)
+    assert (e.value.values["why"], e.value.values["dt"]) == ("diverged", "0.0123457")
+    assert "(dt = 0.0123457 s)" in str(e.value)
+    for lang in ("en", "de", "fr"):
+        assert "(dt = 0.0123457 s)" in _page_words(lang, "diverged", e.value.values)

@@ -246,12 +246,13 @@ pub enum Error {
 impl Error {
     /// The message key and values of an error of a common kind, for a page that words it in its
     /// language (the lab server's `messages.json`; docs/web.md, "Languages"), or None (the English
-    /// words alone). Times \[s\] as the English words write them ([`Time`]: 12 significant digits, so a
-    /// page in any language names the same time), step sizes \[s\] and residuals to 4 significant digits,
-    /// the value of a parameter as given, each as a string written by [`Shown`].
+    /// words alone). Every number as the English words write it, so that a page in any language names
+    /// the same value: times \[s\] by [`Time`] (12 significant digits), step sizes \[s\], residuals and
+    /// the value of a parameter by [`Shown`] (the digits that read back as the same f64; step sizes and
+    /// residuals were rounded to 4 significant digits, so de/fr could name another dt or h).
     pub fn key(&self) -> Option<(&'static str, Vec<(&'static str, String)>)> {
         let t = |t: f64| Time(t).to_string();
-        let e = |x: f64| Shown(format!("{x:.3e}").parse().unwrap_or(x)).to_string();
+        let e = |x: f64| Shown(x).to_string();
         Some(match self {
             Error::StepSizeUnderflow { t: at, h, .. } => {
                 ("step_too_small", vec![("t", t(*at)), ("h", e(*h))])

@@ -122,3 +122,37 @@ fn a_keys_time_is_the_time_of_the_words() {
         }
     }
 }
+
+/// A message key's step size (dt, h) and residual are the numbers of the English words ([`Shown`]), so
+/// that a page in another language names the same value: they were rounded to 4 significant digits (a
+/// dt of 0.0123457 s became 0.01235 s, an h of 1.23456789e-15 s 1.235e-15 s).
+#[test]
+fn a_keys_step_size_and_residual_are_those_of_the_words() {
+    for x in [0.0123457, 1.23456789e-15, 0.1 + 0.2, 1e-3, 2.5e20] {
+        let shown = Shown(x).to_string();
+        let cases = [
+            (Error::Diverged { t: 1.0, method: "rk4", dt: x }, "dt", format!("(dt = {shown} s)")),
+            (
+                Error::StepSizeUnderflow { t: 1.0, h: x, rtol: 1e-9, atol: 1e-12 },
+                "h",
+                format!("h = {shown} s"),
+            ),
+            (
+                Error::NotOnTangentBundle { what: "(|x| - l)/l", value: x, tolerance: 1e-9 },
+                "value",
+                format!("= {shown} exceeds"),
+            ),
+            (
+                Error::NotOnTangentBundle { what: "(|x| - l)/l", value: 1.0, tolerance: x },
+                "tolerance",
+                format!("the tolerance {shown};"),
+            ),
+        ];
+        for (e, name, words) in cases {
+            let values = e.key().unwrap().1;
+            assert_eq!(values.iter().find(|(k, _)| *k == name).unwrap().1, shown, "{e}");
+            assert!(e.to_string().contains(&words), "{e}");
+            assert_eq!(shown.parse::<f64>().unwrap(), x, "reads back");
+        }
+    }
+}
