@@ -206,6 +206,20 @@ def test_nan_rows_are_dropped_and_unsorted_rows_sorted(swing: tuple) -> None:
     assert res2.params["g"] == pytest.approx(9.79, rel=1e-8)
 
 
+def test_the_fits_warnings_name_the_callers_line(swing: tuple) -> None:
+    # pl.fit runs inside the one-BLAS-thread wrapper (_blas.py): a fixed stacklevel named that wrapper
+    _, _s, t, x = swing
+    xn = x.copy()
+    xn[[3, 50]] = np.nan
+    order = np.random.default_rng(1).permutation(len(t))
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        pl.fit(t[order], positions=xn[order], fit=["length", "g"])
+    said = [w for w in caught if issubclass(w.category, UserWarning)]
+    assert {str(w.message)[:7] for w in said} == {"dropped", "the tim"}
+    assert all(w.filename == __file__ for w in said), [(w.filename, w.lineno) for w in said]
+
+
 @pytest.mark.filterwarnings("ignore:positions. the:UserWarning")  # a search cut short misses the data
 def test_a_fit_that_does_not_converge_says_so() -> None:
     # a whirl over the top from a start with drag where there is none: exact Jacobians make an easy

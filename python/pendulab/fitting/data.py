@@ -29,7 +29,6 @@ underflow on them.
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
@@ -38,6 +37,7 @@ import numpy as np
 
 from .._core import InvalidInputError
 from .._numbers import shown
+from .._warn import warn_user
 from ..model import FloatArray
 from .keyed import KeyedInputError
 
@@ -181,9 +181,7 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
         good &= np.all(np.isfinite(a), axis=1)
     dropped = int(n - np.count_nonzero(good))
     if dropped:
-        warnings.warn(
-            f"dropped {dropped} of {n} rows with NaN or inf (in t or the data)", UserWarning, stacklevel=3
-        )
+        warn_user(f"dropped {dropped} of {n} rows with NaN or inf (in t or the data)", UserWarning)
     times = times[good]
     arrays = {k: a[good] for k, a in arrays.items()}
     if len(times) < MIN_SAMPLES:
@@ -195,9 +193,7 @@ def observations(t: Any, data: Mapping[str, Any], sigma: Any = None) -> Observat
         )
     order = np.argsort(times, kind="stable")
     if np.any(order != np.arange(len(times))):
-        warnings.warn(
-            "the times were not in increasing order: the rows were sorted", UserWarning, stacklevel=3
-        )
+        warn_user("the times were not in increasing order: the rows were sorted", UserWarning)
         times = times[order]
         arrays = {k: a[order] for k, a in arrays.items()}
     same = np.flatnonzero(np.diff(times) == 0.0)

@@ -23,7 +23,6 @@ Units: SI throughout (docs/fit.md).
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -32,6 +31,7 @@ import numpy as np
 
 from .._blas import one_blas_thread
 from .._core import InvalidInputError
+from .._warn import warn_user
 from ..model import FloatArray, Pendulum, State
 from ..variants.compound import CompoundPendulum
 from ..variants.spring import SwingingSpring
@@ -225,11 +225,10 @@ def _free_of(
     fit_names = fit_list(fit)
     if pivot is None and not (set(PIVOT_NAMES) | {"pivot"}) & set(fit_names) and off_origin(obs, model):
         fit_names.append("pivot")  # positions that do not hang from the origin: the pivot is unknown
-        warnings.warn(
+        warn_user(
             "the positions do not hang from the origin: the pivot's position is fitted too "
             "(give pivot=(x, y, z) [m] if you know it)",
             UserWarning,
-            stacklevel=4,
         )
     return free_names(fit_names, model, state0 is not None, obs.columns, planar)
 

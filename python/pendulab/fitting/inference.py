@@ -28,12 +28,12 @@ from __future__ import annotations
 
 import math
 import time
-import warnings
 from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
+from .._warn import warn_user
 from ..model import FloatArray
 from .blocks import BlockCheck, check_blocks, planned
 from .data import KINDS, residual
@@ -150,19 +150,11 @@ def conclude(
     # stopped short anywhere (Ctrl-C, or a step the time limit cut or skipped): some results incomplete
     res.interrupted = interrupted or bool(stopped) or search.clock.ctrl_c or search.clock.ran_out
     if stopped:
-        warnings.warn(
-            f"Ctrl-C stopped {' and '.join(stopped)}: returning the fit without it",
-            RuntimeWarning,
-            stacklevel=3,
-        )
+        warn_user(f"Ctrl-C stopped {' and '.join(stopped)}: returning the fit without it", RuntimeWarning)
     for text in said:
-        warnings.warn(text, UserWarning, stacklevel=3)
+        warn_user(text, UserWarning)
     if not converged and not interrupted:
-        warnings.warn(
-            f"the fit did not converge ({message}); the values are the best reached",
-            RuntimeWarning,
-            stacklevel=3,
-        )
+        warn_user(f"the fit did not converge ({message}); the values are the best reached", RuntimeWarning)
     return res
 
 

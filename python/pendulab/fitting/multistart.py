@@ -21,13 +21,13 @@ Units: σ and residuals in each data kind's unit (docs/fit.md); times in s.
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
 
 from .._progress import tqdm
+from .._warn import warn_user
 from .data import Observations, residual
 from .problem import Problem
 from .search import Search, TimeUp, windows_of
@@ -76,7 +76,7 @@ def run_starts(
     except (KeyboardInterrupt, TimeUp) as e:
         cause = "Ctrl-C" if isinstance(e, KeyboardInterrupt) else f"the time limit of {search.time_limit:g} s"
         why = f"interrupted ({cause})"
-        warnings.warn(f"fit {why}: returning the best values reached", RuntimeWarning, stacklevel=3)
+        warn_user(f"fit {why}: returning the best values reached", RuntimeWarning)
         return True, why, max(ran + (nested is not None), 1)
     finally:
         search.loss = robust

@@ -21,12 +21,12 @@ the level the steps go on, and an end that no checked refit closes is open (±in
 from __future__ import annotations
 
 import math
-import warnings
 from typing import Any
 
 import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
+from .._warn import warn_user
 from .problem import POSITIVE, Problem, bounds_of, scale_of
 from .search import Clock, Search, TimeUp
 
@@ -64,13 +64,12 @@ def profile_interval(res: Any, name: str, level: float, max_refits: int) -> tupl
     ends = [profile_end(rise, values, step0, bounds, d, max_refits // 2, target) for d in (-1.0, 1.0)]
     for (end, settled), side in zip(ends, ("lower", "upper"), strict=True):
         if not settled:
-            warnings.warn(
+            warn_user(
                 f"the profile of {name}: its {side} end is not determined (returned as {end:g}): a refit "
                 f"of the other unknowns did not converge in {REFIT_ROUNDS} x {REFIT_EVALUATIONS} model "
                 "runs or, refitted from nearer, fell below the level, and no refit within max_refits "
                 "closed the end",
                 RuntimeWarning,
-                stacklevel=3,
             )
     return ends[0][0], ends[1][0]
 

@@ -25,13 +25,13 @@ Units: SI (m, s, rad, m/s²).
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 
 from .._core import InvalidInputError
+from .._warn import warn_user
 from ..model import FloatArray
 from .data import Observations
 from .problem import PIVOT_NAMES
@@ -103,7 +103,7 @@ def check_length_hint(radius: float, length: float, free: bool) -> None:
     )
     if not free:
         raise InvalidInputError(said)
-    warnings.warn(said + " The fit starts from the data's distance instead.", UserWarning, stacklevel=5)
+    warn_user(said + " The fit starts from the data's distance instead.", UserWarning)
 
 
 def check_upright(rel: FloatArray, g: float) -> None:
