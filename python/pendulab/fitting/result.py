@@ -83,7 +83,9 @@ class FitResult:
     #: A compound pendulum's geometry, pivot torques and implied part position (body.py), or None.
     body: Any = None
     #: The block check (blocks.py): the record's consecutive blocks fitted on their own and the
-    #: scale factors the error bars were widened by, when the fit missed the data; else None.
+    #: scale factors the error bars were widened by, when the fit missed the data; a check with
+    #: ``made`` False (its ``unmade`` says why: the time limit or Ctrl-C) when it should have run
+    #: but did not, so the bars are not checked; else None (no misfit, or a check that does not apply).
     blocks: Any = None
     _problem: Any = field(default=None, repr=False)
     _search_sigma: dict[str, float] = field(default_factory=dict, repr=False)
