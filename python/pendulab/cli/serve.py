@@ -10,6 +10,7 @@ in use, missing extra).
 from __future__ import annotations
 
 import contextlib
+import importlib
 import ipaddress
 import math
 import os
@@ -18,6 +19,7 @@ import sys
 import threading
 import time
 import webbrowser
+from collections.abc import Callable
 from typing import Annotated
 
 import typer
@@ -89,36 +91,31 @@ def _check_proxies(value: str) -> None:
             _fail(f"--trust-proxy: {item!r} is not an IP address or network (e.g. 127.0.0.1, 10.0.0.0/8, *)")
 
 
-def _idle_timeout(value: float) -> float:
-    """``--idle-timeout`` checked by ``server_config``'s own rule
-    (:func:`pendulab.server.serving.check_idle_timeout`), as the command line is read. nan and ±inf
-    pass through to the one message every float option gives them (``cli.common._checked``)."""
-    if not math.isfinite(value):
-        return value
-    try:
-        from ..server.serving import check_idle_timeout
-    except ImportError:  # serve names the missing extra itself
-        return value
-    try:
-        return check_idle_timeout(value)
-    except ValueError as e:
-        raise UsageError(f"--idle-timeout: {e}") from None
+def _checked_by(option: str, module: str, rule: str) -> Callable[[float], float]:
+    """A typer callback checking ``option`` by the server's own rule ``module.rule`` (a function of the
+    value that raises ValueError naming what is allowed), as the command line is read. nan and ±inf pass
+    through to the one message every float option gives them (``cli.common._checked``); without the
+    ``lab`` extra the value passes too, and serve names the missing extra itself."""
+
+    def check(value: float) -> float:
+        if not math.isfinite(value):
+            return value
+        try:
+            rule_of = getattr(importlib.import_module(module, __package__), rule)
+        except ImportError:
+            return value
+        try:
+            return float(rule_of(value))
+        except ValueError as e:
+            raise UsageError(f"{option}: {e}") from None
+
+    return check
 
 
-def _fit_time_limit(value: float) -> float:
-    """``--fit-time-limit`` checked by ``create_app``'s own rule
-    (:func:`pendulab.server.fit.check_fit_time_limit`), as the command line is read. nan and ±inf
-    pass through to the one message every float option gives them (``cli.common._checked``)."""
-    if not math.isfinite(value):
-        return value
-    try:
-        from ..server.fit import check_fit_time_limit
-    except ImportError:  # serve names the missing extra itself
-        return value
-    try:
-        return check_fit_time_limit(value)
-    except ValueError as e:
-        raise UsageError(f"--fit-time-limit: {e}") from None
+#: ``--idle-timeout`` by :func:`pendulab.server.serving.check_idle_timeout`.
+_idle_timeout = _checked_by("--idle-timeout", "..server.serving", "check_idle_timeout")
+#: ``--fit-time-limit`` by :func:`pendulab.server.fit.check_fit_time_limit`.
+_fit_time_limit = _checked_by("--fit-time-limit", "..server.fit", "check_fit_time_limit")
 
 
 def _open_when_up(server: object, url: str) -> None:
