@@ -56,7 +56,7 @@ export async function checkWords(page, { check, WAIT }) {
       await odd.close();
     }
     // a command the core refuses (a state off the sphere): worded from the core's message key, as the server's
-    const sphere = { de: 'der Start liegt nicht auf der Kugel: (|x| - l)/l = -0.2929 überschreitet die Toleranz 1e-9', fr: 'le départ n’est pas sur la sphère : (|x| - l)/l = -0.2929 dépasse la tolérance 1e-9' }[lang];
+    const sphere = { de: 'der Start liegt nicht auf der Kugel: (|x| - l)/l = -0.2928932188134524 überschreitet die Toleranz 1e-9', fr: 'le départ n’est pas sur la sphère : (|x| - l)/l = -0.2928932188134524 dépasse la tolérance 1e-9' }[lang];
     await p.evaluate(() => window.pendulab.send({ type: 'set_state', x: [0.5, 0, -0.5], v: [0, 0, 0], project: false }));
     const core = await p
       .waitForFunction((w) => document.getElementById('message').textContent.trim() === w && w, sphere, { timeout: WAIT })
