@@ -176,10 +176,13 @@ def test_a_3d_swing_in_wind_gets_its_blocks_from_its_own_states() -> None:
 def _unmade_case(monkeypatch: pytest.MonkeyPatch, where: str) -> tuple[pl.FitResult, list[str]]:
     """A misfit (a hinge with dry and viscous friction fitted with viscous damping alone, whose blocks
     widen the damping's bar 4x) under a 600 s time limit whose clock is made to run out at the block
-    check (``where`` "before": as it begins; "in": after the first block's fit), or ("") not at all."""
-    from pendulab.fitting import blocks, inference
+    check (``where`` "before": as it begins; "in": after the first block's fit), in the search
+    ("search": after the nested models' start, before the first full search), or Ctrl-C pressed in
+    the block check ("ctrl_c": in the second block's fit), or ("") nothing."""
+    from pendulab.fitting import blocks, inference, multistart
 
-    check, fit_block = inference.check_blocks, blocks._fit_block
+    check, fit_block, nested = inference.check_blocks, blocks._fit_block, multistart.nested_start
+    fitted: list[Any] = []
 
     def late(search: Any, *args: Any) -> Any:
         search.clock.began -= 1000.0  # the clock runs out here
@@ -190,10 +193,25 @@ def _unmade_case(monkeypatch: pytest.MonkeyPatch, where: str) -> tuple[pl.FitRes
         search.clock.began -= 1000.0
         return out
 
+    def pressed(search: Any, *args: Any) -> Any:
+        if fitted:
+            raise KeyboardInterrupt  # Ctrl-C during the second block's fit
+        fitted.append(fit_block(search, *args))
+        return fitted[-1]
+
+    def cut(search: Any, *args: Any) -> Any:
+        out = nested(search, *args)
+        search.clock.began -= 1000.0  # the full search begins after the limit
+        return out
+
     if where == "before":
         monkeypatch.setattr(inference, "check_blocks", late)
     elif where == "in":
         monkeypatch.setattr(blocks, "_fit_block", after_first)
+    elif where == "ctrl_c":
+        monkeypatch.setattr(blocks, "_fit_block", pressed)
+    elif where == "search":
+        monkeypatch.setattr(multistart, "nested_start", cut)
     t = np.arange(0.0, 12.0, 0.01)
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -225,8 +243,71 @@ def test_a_block_check_the_time_limit_stops_says_it_was_not_made(
     for words in ("time limit of 600 s", "not checked", "time_limit=", "--time-limit", "--fit-time-limit"):
         assert words in unmade[0], unmade[0]
     assert res.interrupted and res.blocks is not None and not res.blocks.made
-    assert res.blocks.unmade == unmade[0] and res.blocks.scale == {} and unmade[0] in res.findings
+    assert res.blocks.unmade == unmade[0] and unmade[0] in res.findings
     assert "WARNING: the block check of the misfit was not made" in res.report()
     # not widened by the blocks: the bar is the normal fit's without its scale factor
     widened = normal.stderr["damping"] / normal.blocks.scale["damping"]
     assert res.stderr["damping"] == pytest.approx(widened, rel=1e-6)
+    _says_not_made(res, "timeLimit")
+
+
+def _says_not_made(res: pl.FitResult, stop: str) -> None:
+    """A check not made reads alike everywhere: ``stop`` names what stopped it, ``scale`` is NaN (not
+    measured; it was empty) for the parameters it would have compared, the report's rows and repr say
+    the bars were not widened by it, and the JSON form has null scales."""
+    assert res.blocks is not None and res.blocks.stop == stop and res.blocks.starts == []
+    assert set(res.blocks.scale) == {"length", "damping"}, res.blocks.scale
+    assert all(math.isnan(s) for s in res.blocks.scale.values()), res.blocks.scale
+    assert repr(res).endswith(", interrupted, block check not made)"), repr(res)
+    assert repr(res.blocks).startswith(f"BlockCheck(not made: {stop}; scale "), repr(res.blocks)
+    rows = [line for line in res.report().splitlines() if line.lstrip().startswith(("length ", "damping "))]
+    assert len(rows) == 2 and all("(block check not made: not widened by it)" in r for r in rows), rows
+    out = res.blocks.as_dict()
+    assert out["made"] is False and out["stop"] == stop
+    assert out["scale"] == {"length": None, "damping": None}, out
+
+
+def test_a_made_block_check_reads_alike_everywhere(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The report's row of a parameter the blocks widened said "(x4.2 for correlated residuals)": the
+    blocks' factor was folded into the correlation's. Now it names each: the blocks' S apart."""
+    res, _ = _unmade_case(monkeypatch, "")
+    assert res.blocks is not None and res.blocks.made and res.blocks.stop == ""
+    s = res.blocks.scale["damping"]
+    row = next(line for line in res.report().splitlines() if line.lstrip().startswith("damping "))
+    assert f"(x{s:.3g} by the record's blocks)" in row, row
+    assert not any(f"x{s:.3g} for correlated" in line for line in res.report().splitlines())
+    assert repr(res.blocks).startswith("BlockCheck(4 blocks from t = 0, 3, 6, 9 s; scale "), repr(res.blocks)
+    assert "block check" not in repr(res)
+    out = res.blocks.as_dict()
+    assert out["made"] is True and out["stop"] is None and out["scale"]["damping"] == pytest.approx(s)
+
+
+def test_ctrl_c_in_the_block_check_is_one_warning(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Ctrl-C during the block check of a misfit gave two warnings, "Ctrl-C stopped the block check of
+    the misfit: returning the fit without it" and "the block check of the misfit was not made: Ctrl-C
+    stopped the fit before it was done" (which it had not). Now one says what Ctrl-C stopped, that the
+    bars were not widened, and how to let it finish."""
+    res, said = _unmade_case(monkeypatch, "ctrl_c")
+    about = [s for s in said if "block check" in s]
+    assert len(about) == 1, said
+    assert about[0].startswith("Ctrl-C stopped the block check of the misfit (fits to the record's 4 blocks")
+    for words in ("not widened", "too narrow", "fit again and let it finish"):
+        assert words in about[0], about[0]
+    assert res.blocks is not None and not res.blocks.made and about[0] in res.findings
+    _says_not_made(res, "ctrlCIn")
+
+
+def test_a_search_the_time_limit_cut_says_the_misfit_may_be_its_own(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The time limit cutting the search itself left values short of the optimum, whose residual looks
+    like a misfit: the block check was said not made "for a model that misses the data", blaming the
+    model for what may be the unfinished search. Now one finding says the search was cut, so the misfit
+    may be the search's, the check not made, the bars not widened, and how to give it more time."""
+    res, said = _unmade_case(monkeypatch, "search")
+    assert not res.converged and res.message == "interrupted (the time limit of 600 s)", res.message
+    about = [s for s in said if "block check" in s]
+    assert len(about) == 1, said
+    assert about[0].startswith("the fit's time limit of 600 s cut the search short before it converged")
+    for words in ("may be the search's", "not the model's", "not widened", "--time-limit"):
+        assert words in about[0], about[0]
+    assert not any("was not made: the fit's time limit" in s for s in said), said
+    _says_not_made(res, "searchTimeLimit")

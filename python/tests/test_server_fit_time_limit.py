@@ -100,3 +100,8 @@ def test_the_lab_says_when_its_time_limit_stopped_the_block_check(monkeypatch: p
     notes = [n for n in out["notes"] if n["key"] == "blocksTimeLimit"]
     assert [n["values"] for n in notes] == [{"seconds": "20"}], out["notes"]
     assert "the block check of the misfit was not made" in out["report"]
+    # the answer's blocks: not made, what stopped it, the scale factors null (not measured, not widened)
+    blocks = out["blocks"]
+    assert blocks["made"] is False and blocks["stop"] == "timeLimit" and blocks["starts"] == []
+    assert blocks["scale"] == {"length": None, "damping": None}, blocks
+    json.dumps(out, allow_nan=False)  # JSON without NaN

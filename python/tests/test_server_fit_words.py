@@ -192,7 +192,15 @@ def test_why_a_short_record_was_not_profiled_is_a_keyed_clause(key: str, values:
 def test_a_block_check_not_made_is_keyed() -> None:
     """The finding that the block check of a misfit was not made (blocks.UNMADE: the time limit, which
     the lab's fits have, or Ctrl-C) is keyed, so that the page words it, with the limit's seconds."""
-    got = [keyed(s) for s in BlockCheck.not_made("timeLimit", 20.0).findings()]
+    units = {"length": "m", "damping": "1/s"}
+    got = [keyed(s) for s in BlockCheck.not_made("timeLimit", units, 20.0, 4).findings()]
     assert [(g["key"], g["values"]) for g in got] == [("blocksTimeLimit", {"seconds": "20"})]
-    got = [keyed(s) for s in BlockCheck.not_made("ctrlC").findings()]
+    got = [keyed(s) for s in BlockCheck.not_made("ctrlC", units, None, 4).findings()]
     assert [(g["key"], g["values"]) for g in got] == [("blocksCtrlC", {})]
+    # Ctrl-C in the check itself, and the time limit or Ctrl-C cutting the search (the misfit may be its)
+    got = [keyed(s) for s in BlockCheck.not_made("ctrlCIn", units, None, 4).findings()]
+    assert [(g["key"], g["values"]) for g in got] == [("blocksCtrlCIn", {"n": "4"})]
+    got = [keyed(s) for s in BlockCheck.not_made("searchTimeLimit", units, 20.0, 4).findings()]
+    assert [(g["key"], g["values"]) for g in got] == [("blocksSearchTimeLimit", {"seconds": "20"})]
+    got = [keyed(s) for s in BlockCheck.not_made("searchCtrlC", units, None, 4).findings()]
+    assert [(g["key"], g["values"]) for g in got] == [("blocksSearchCtrlC", {})]

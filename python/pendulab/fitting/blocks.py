@@ -32,21 +32,23 @@ agree within their errors by construction, and scaling by a chance S > 1 would m
 too wide — and only for models without explicit time dependence (no forcing, no moving pivot, no
 time offset; AUTONOMOUS), where a block's motion is fixed by its own start. Where it is due but the
 fit's time limit or Ctrl-C stops the fit before it or during it, it is not made: ``res.blocks`` says so
-(``made`` False, ``unmade`` why) and its finding, warned, that the bars were not checked and how to
-let it run (:data:`UNMADE`). Units: SI, as the parameters'.
+(``made`` False, ``stop`` what stopped it, ``unmade`` its finding, ``scale`` NaN: not measured, not
+widened) and its one finding, warned, what stopped it, that the bars were not widened and how to let it
+run (:data:`UNMADE`; where the search itself was cut, that the misfit may be the search's). The
+statistics are in block_stats.py. Units: SI, as the parameters'.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
 from ..model import FloatArray
-from .goodness import mean_lag1
+from .block_stats import disagreement_p, lag1_of, scale_factor, trend_z
 from .identify import Correlation, Identifiability, analyse, jacobian
 from .problem import POSITIVE, STATE_NAMES, Problem, unit_of
 from .settings import angles_of
@@ -65,35 +67,59 @@ BLOCK_EVALUATIONS = 60
 BLOCKS_ALARM = 0.05
 #: The damping's weighted slope over the blocks, in standard errors, from which a damping law is named.
 TREND_Z = 3.0
-#: ... and the share of the blocks' weighted scatter the slope must explain (R²; 4 blocks without a
-#: trend reach it by chance with p = 1 − √0.8 ≈ 0.11).
-TREND_SHARE = 0.8
 #: The models whose motion a block's own start fixes (no pivot path, hoist or other clock; the
 #: damped model's forcing is checked separately).
 AUTONOMOUS = ("ideal", "damped", "rotating")
 
+#: How to give a check the time limit cut more time, and how to let one Ctrl-C stopped finish.
+_LARGER = (
+    "give a larger limit (pl.fit's time_limit=, pendulab fit's --time-limit, the lab's pendulab serve "
+    "--fit-time-limit) or none (time_limit=None, --time-limit none)"
+)
+_FINISH = "fit again and let it finish"
+_UNCHECKED = (
+    "The error bars are not checked against the scatter of the record's blocks fitted on their own, so "
+    "for a model that misses the data they may be too narrow; "
+)
+_SEARCH_CUT = (
+    " before it converged, so the misfit found may be the search's (values short of the best fit), not "
+    "the model's; the block check of the misfit was not made and the error bars were not widened by it; "
+)
 UNMADE = {
     "timeLimit": (
         "the block check of the misfit was not made: the fit's time limit of {seconds} s ran out before it "
-        "was done. The error bars are not checked against the scatter of the record's blocks fitted on "
-        "their own, so for a model that misses the data they may be too narrow; give a larger limit "
-        "(pl.fit's time_limit=, pendulab fit's --time-limit, the lab's pendulab serve --fit-time-limit) or "
-        "none (time_limit=None, --time-limit none)"
+        "was done. " + _UNCHECKED + _LARGER
     ),
     "ctrlC": (
-        "the block check of the misfit was not made: Ctrl-C stopped the fit before it was done. The error "
-        "bars are not checked against the scatter of the record's blocks fitted on their own, so for a "
-        "model that misses the data they may be too narrow; fit again and let it finish"
+        "the block check of the misfit was not made: Ctrl-C stopped the fit before it was done. "
+        + _UNCHECKED
+        + _FINISH
     ),
+    "ctrlCIn": (
+        "Ctrl-C stopped the block check of the misfit (fits to the record's {blocks} blocks on their own) "
+        "before it was done: the error bars were not widened by the blocks' disagreement, so for a model "
+        "that misses the data they may be too narrow; " + _FINISH + " (the check takes up to "
+        f"{BLOCK_EVALUATIONS} model runs per block)"
+    ),
+    "searchTimeLimit": "the fit's time limit of {seconds} s cut the search short" + _SEARCH_CUT + _LARGER,
+    "searchCtrlC": "Ctrl-C cut the search short" + _SEARCH_CUT + _FINISH,
 }
-"""Why the block check of a misfit was not made -> its finding (server/fit_words.py keys them)."""
+"""Why the block check of a misfit was not made -> its finding (server/fit_words.py keys them): the time
+limit ran out after the search, before the check or in it; Ctrl-C stopped the fit before it (in the
+polish) or stopped the check itself; the time limit or Ctrl-C cut the search itself, so that the misfit
+may be the unfinished search's."""
 
 
 @dataclass
 class BlockCheck:
     """The blocks' fits: their first sample times ``starts`` [s], per physical parameter the blocks'
     values and standard errors (``nan`` where a block does not determine it; units of the parameter),
-    and the scale factor S ≥ 1 its error bar was multiplied by (module doc)."""
+    and the scale factor S ≥ 1 its error bar was multiplied by (module doc).
+
+    A check that was due but not made (``made`` False; ``stop`` the key of :data:`UNMADE` naming what
+    stopped it, ``unmade`` its finding) has no blocks (``starts``, ``values``, ``stderr`` empty) and
+    ``scale`` NaN for each parameter it would have compared: not measured, the bar not widened (NaN,
+    not 1, which would say the blocks agree). The report, ``repr`` and the lab's answer show it so."""
 
     starts: list[float]
     values: dict[str, list[float]] = field(default_factory=dict)
@@ -103,6 +129,9 @@ class BlockCheck:
     units: dict[str, str] = field(default_factory=dict)
     #: Why the check was not made (a finding of :data:`UNMADE`: no blocks, no widening); "" if it was.
     unmade: str = ""
+    #: The key of :data:`UNMADE` that stopped it ("timeLimit", "ctrlC", "ctrlCIn", "searchTimeLimit",
+    #: "searchCtrlC"); "" if it was made.
+    stop: str = ""
 
     @property
     def made(self) -> bool:
@@ -110,10 +139,38 @@ class BlockCheck:
         return not self.unmade
 
     @classmethod
-    def not_made(cls, stop: str, seconds: float | None = None) -> BlockCheck:
-        """The check that Ctrl-C (``stop`` "ctrlC") or the time limit of ``seconds`` [s] ("timeLimit")
-        did not let run."""
-        return cls(starts=[], unmade=UNMADE[stop].format(seconds=f"{seconds:g}" if seconds else ""))
+    def not_made(
+        cls, stop: str, units: dict[str, str], seconds: float | None = None, blocks: int = 0
+    ) -> BlockCheck:
+        """The check of the physical parameters of ``units`` (name -> unit) over ``blocks`` blocks that
+        ``stop`` (a key of :data:`UNMADE`: Ctrl-C, or the time limit of ``seconds`` [s]) did not let run."""
+        text = UNMADE[stop].format(seconds=f"{seconds:g}" if seconds else "", blocks=blocks)
+        return cls(starts=[], scale=dict.fromkeys(units, math.nan), units=units, unmade=text, stop=stop)
+
+    def __repr__(self) -> str:
+        scales = ", ".join(f"{n}={s:.3g}" for n, s in self.scale.items())
+        if not self.made:
+            return f"BlockCheck(not made: {self.stop}; scale {scales}: not widened)"
+        shown = ", ".join(f"{t:.4g}" for t in self.starts)
+        return f"BlockCheck({len(self.starts)} blocks from t = {shown} s; scale {scales})"
+
+    def as_dict(self) -> dict[str, Any]:
+        """JSON-ready (the lab's answer): ``made``, ``stop`` (None if made), ``starts`` [s], and per
+        parameter ``scale``, ``values``, ``stderr`` with None for NaN (a scale not measured, a block
+        that does not determine the parameter)."""
+
+        def shown(v: float) -> float | None:
+            return float(v) if math.isfinite(v) else None
+
+        return {
+            "made": self.made,
+            "stop": self.stop or None,
+            "starts": [float(t) for t in self.starts],
+            "scale": {n: shown(s) for n, s in self.scale.items()},
+            "values": {n: [shown(v) for v in vs] for n, vs in self.values.items()},
+            "stderr": {n: [shown(v) for v in vs] for n, vs in self.stderr.items()},
+            "units": dict(self.units),
+        }
 
     def findings(self) -> list[str]:
         """The plain-language finding for the parameters whose blocks disagree: a scatter improbable
@@ -146,7 +203,7 @@ class BlockCheck:
         to each block rises steadily along a free decay, as the swing dies down, where the real loss
         per swing falls more slowly than in proportion to the amplitude (dry friction: c ∝ 1/amplitude)
         and falls where it falls faster (drag: c ∝ amplitude). Steadily: a weighted slope over the blocks
-        of more than TREND_Z of its standard errors that explains TREND_SHARE of their scatter."""
+        of more than TREND_Z of its standard errors that explains block_stats.TREND_SHARE of their scatter."""
         if "damping" not in self.values:
             return ""
         z = trend_z(np.array(self.values["damping"]), np.array(self.stderr["damping"]))
@@ -161,22 +218,6 @@ class BlockCheck:
                 "more, as air drag makes: fit 'drag' beside 'damping'"
             )
         return ""
-
-
-def trend_z(values: FloatArray, errors: FloatArray) -> float:
-    """The weighted least-squares slope of ``values`` ± ``errors`` against their index in units of its
-    standard error; 0 unless there are at least three, all finite, and the line explains at least
-    TREND_SHARE of their weighted scatter (a steady change, not one odd block)."""
-    if values.size < 3 or not (np.all(np.isfinite(values)) and np.all(np.isfinite(errors) & (errors > 0.0))):
-        return 0.0
-    w = 1.0 / errors**2
-    x = np.arange(values.size, dtype=np.float64)
-    x = x - float(np.sum(w * x) / np.sum(w))
-    y = values - float(np.sum(w * values) / np.sum(w))
-    sxx, sxy, syy = float(np.sum(w * x * x)), float(np.sum(w * x * y)), float(np.sum(w * y * y))
-    if not (syy > 0.0 and sxy * sxy >= TREND_SHARE * sxx * syy):
-        return 0.0
-    return sxy / math.sqrt(sxx)
 
 
 def applicable(problem: Problem, period: float) -> list[int] | None:
@@ -255,7 +296,7 @@ def _fit_block(
     positive = {n for i, n in enumerate(free) if n in POSITIVE and u[i] > 0.01 * search.scales[i]}
     obs = block.obs
     sample = np.concatenate([np.repeat(np.arange(len(obs)), obs.columns[k]) for k in obs.values])
-    lag1 = _lag1(r, obs.columns, list(obs.values))
+    lag1 = lag1_of(r, obs.columns, list(obs.values))
     ident = analyse(free, block.with_free(u), jac, variance, positive, Correlation(r, sample, len(obs), lag1))
     cov = ident.covariance
     err = np.array(
@@ -265,52 +306,6 @@ def _fit_block(
         ]
     )
     return u, err
-
-
-def _lag1(r: FloatArray, columns: dict[str, int], kinds: list[str]) -> float:
-    """The largest over kinds of :func:`goodness.mean_lag1` of a kind's residual (``r`` holds each
-    kind's (N, columns) residual, raveled, one kind after another), as the whole fit's check reads it."""
-    out, at = 0.0, 0
-    n = r.size // max(sum(columns[k] for k in kinds), 1)
-    for k in kinds:
-        part = r[at : at + n * columns[k]].reshape(n, columns[k])
-        at += part.size
-        if n > 2:
-            out = max(out, mean_lag1(part))
-    return out
-
-
-def _chi2(values: FloatArray, errors: FloatArray) -> tuple[float, int]:
-    """χ² of the estimates ``values`` ± ``errors`` about their weighted mean and their number N, over
-    those with an error < 3√N σ̄ (module doc; a value that determines nothing is left out too)."""
-    ok = np.isfinite(values) & np.isfinite(errors) & (errors > 0.0)
-    x, e = values[ok], errors[ok]
-    if x.size < 2:
-        return 0.0, int(x.size)
-    mean_err = 1.0 / math.sqrt(float(np.sum(1.0 / e**2)))
-    keep = e < 3.0 * math.sqrt(x.size) * mean_err
-    x, e = x[keep], e[keep]
-    if x.size < 2:
-        return 0.0, int(x.size)
-    w = 1.0 / e**2
-    mean = float(np.sum(w * x) / np.sum(w))
-    return float(np.sum(w * (x - mean) ** 2)), int(x.size)
-
-
-def scale_factor(values: FloatArray, errors: FloatArray) -> float:
-    """The Particle Data Group's S = √(χ²/(N − 1)) of the estimates ``values`` ± ``errors`` (module
-    doc; those with an error ≥ 3√N σ̄ left out, at least 1; 1 with fewer than two usable)."""
-    chi2, n = _chi2(values, errors)
-    return max(1.0, math.sqrt(chi2 / (n - 1))) if n >= 2 else 1.0
-
-
-def disagreement_p(values: FloatArray, errors: FloatArray) -> float:
-    """The probability of a scatter at least as large among estimates that agree: the χ²(N − 1) tail
-    of :func:`scale_factor`'s χ² (1 with fewer than two usable)."""
-    chi2, n = _chi2(values, errors)
-    from scipy import stats
-
-    return float(stats.chi2.sf(chi2, n - 1)) if n >= 2 else 1.0
 
 
 def check_blocks(
@@ -377,6 +372,19 @@ def planned(
     edges = applicable(search.problem, period)
     physical = [n for n in search.free if n not in STATE_NAMES and ident.determined.get(n, False)]
     return (edges, physical) if edges is not None and physical else None
+
+
+def not_made(
+    search: Search, values: dict[str, float], ident: Identifiability, stop: str
+) -> BlockCheck | None:
+    """The block check of the whole fit's ``values`` said not made for ``stop`` (a key of :data:`UNMADE`),
+    or None where none would have been made (:func:`planned`)."""
+    plan = planned(search, values, ident)
+    if plan is None:
+        return None
+    edges, physical = plan
+    units = {n: unit_of(search.problem.model, n) for n in physical}
+    return BlockCheck.not_made(stop, units, search.clock.time_limit, len(edges) - 1)
 
 
 def widen(ident: Identifiability, free: list[str], scale: dict[str, float]) -> None:

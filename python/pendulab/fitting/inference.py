@@ -17,9 +17,11 @@
 
 Ctrl-C during the polish or the block check ends that step and skips the profiles (their parameters
 not determined, the reason naming Ctrl-C), as Ctrl-C in the search returns the best values so far:
-the fit is returned, with a warning naming Ctrl-C. A block check that was due but that Ctrl-C or the
-time limit stopped before it or in it is not made: ``res.blocks`` says so and a finding warns that the
-bars were not checked and how to let it run (blocks.UNMADE). A fit that Ctrl-C or the time limit
+the fit is returned, with one warning naming Ctrl-C and the step (for the block check, its finding).
+A block check that was due but that Ctrl-C or the time limit stopped before it or in it is not made:
+``res.blocks`` says so and one finding warns what stopped it, that the bars were not widened and how to
+let it run (blocks.UNMADE); where they cut the search itself, that the misfit may be the unfinished
+search's rather than the model's. A fit that Ctrl-C or the time limit
 stopped short anywhere — the search, the polish, the block check, a profile — is marked ``interrupted``.
 Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
 """
@@ -35,7 +37,7 @@ import numpy as np
 
 from .._warn import warn_user
 from ..model import FloatArray
-from .blocks import BlockCheck, check_blocks, planned
+from .blocks import BlockCheck, check_blocks, not_made
 from .data import KINDS, residual
 from .goodness import EXACT, Goodness, ar1_rho, check_kind, findings
 from .goodness import misfit as misfit_found
@@ -46,6 +48,9 @@ from .result import FitResult
 from .search import Search, TimeUp, polish
 from .short_record import check_short_record
 from .whiteness import chi2_tails
+
+#: The step Ctrl-C stopped when it stopped the block check (its finding, blocks.UNMADE "ctrlCIn", says so).
+IN_BLOCKS = "the block check of the misfit"
 
 
 def robust_weights(loss: str, z: FloatArray) -> FloatArray:
@@ -105,8 +110,8 @@ def conclude(
     # a misfit: the record's blocks fitted on their own, the error bars widened by their disagreement
     blocks = None
     if misfit_found(checks, chi2_p):
-        ctrl_c = ("Ctrl-C" in message) if interrupted else None  # the search stopped short, and by what
-        blocks = _blocks(search, final, ident, sigma_known, ctrl_c, stopped)
+        cut = ("searchCtrlC" if "Ctrl-C" in message else "searchTimeLimit") if interrupted else ""
+        blocks = _blocks(search, final, ident, sigma_known, cut, stopped)
     said += blocks.findings() if blocks is not None else []
     g_fit = final["g"]
     if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
@@ -149,8 +154,9 @@ def conclude(
     said += check_mirror(res, search, checkable, ctrl_c=bool(stopped))
     # stopped short anywhere (Ctrl-C, or a step the time limit cut or skipped): some results incomplete
     res.interrupted = interrupted or bool(stopped) or search.clock.ctrl_c or search.clock.ran_out
-    if stopped:
-        warn_user(f"Ctrl-C stopped {' and '.join(stopped)}: returning the fit without it", RuntimeWarning)
+    unsaid = [s for s in stopped if not (s == IN_BLOCKS and blocks is not None)]  # its finding says it
+    if unsaid:
+        warn_user(f"Ctrl-C stopped {' and '.join(unsaid)}: returning the fit without it", RuntimeWarning)
     for text in said:
         warn_user(text, UserWarning)
     if not converged and not interrupted:
@@ -195,25 +201,24 @@ def _blocks(
     final: Mapping[str, float],
     ident: Identifiability,
     known: bool,
-    ctrl_c: bool | None,
+    cut: str,
     stopped: list[str],
 ) -> BlockCheck | None:
     """The block check of a misfit (blocks.py; ``known``: σ given), None where none can be made; where
-    it is due but the fit was stopped short before it (``ctrl_c``: the search was interrupted, by
-    Ctrl-C if True; ``stopped``: steps Ctrl-C cut) or during it (the time limit, or Ctrl-C: noted in
-    ``stopped``), a :class:`BlockCheck` that says it was not made."""
+    it is due but the fit was stopped short a :class:`BlockCheck` that says it was not made and why
+    (blocks.UNMADE): ``cut`` the search ("searchTimeLimit", "searchCtrlC"; "" if it ran to its end),
+    so the misfit may be the search's; Ctrl-C before it (``stopped``: the polish); the time limit
+    before it or in it; Ctrl-C in it (:data:`IN_BLOCKS` added to ``stopped``)."""
     values = dict(final)
-    if ctrl_c is not None or stopped:
-        if planned(search, values, ident) is None:
-            return None
-        return BlockCheck.not_made("ctrlC" if ctrl_c or stopped else "timeLimit", search.clock.time_limit)
+    if cut or stopped:
+        return not_made(search, values, ident, cut or "ctrlC")
     try:
         return check_blocks(search, values, ident, known)
     except KeyboardInterrupt:
-        stopped.append("the block check of the misfit")
-        return BlockCheck.not_made("ctrlC") if planned(search, values, ident) is not None else None
+        stopped.append(IN_BLOCKS)
+        return not_made(search, values, ident, "ctrlCIn")
     except TimeUp:
-        return BlockCheck.not_made("timeLimit", search.clock.time_limit)
+        return not_made(search, values, ident, "timeLimit")
 
 
 def _identified(

@@ -45,13 +45,26 @@ def fit_rows(res: Any) -> list[tuple[str, str, str, str]]:
     for n in res.names:
         value, err = res.params[n], res.stderr[n]
         if res.determined[n]:
-            shown = f"± {number(err, 3)}" + bound_note(res, n)
-            if res.inflation.get(n, 1.0) > 1.05:
-                shown += f" (x{res.inflation[n]:.3g} for correlated residuals)"
+            shown = f"± {number(err, 3)}" + bound_note(res, n) + _widened(res, n)
         else:
             shown = "not determined: " + res.reasons.get(n, "by these data")
         rows.append((n, f"{value:.10g}", shown, res.units.get(n, "")))
     return rows
+
+
+def _widened(res: Any, name: str) -> str:
+    """What the error bar of ``name`` was widened by: correlated residuals (goodness.py) and the record's
+    blocks (blocks.py: their scale factor S, or that their check was not made, so not widened by it)."""
+    blocks = res.blocks
+    scale = blocks.scale.get(name, 1.0) if blocks is not None and blocks.made else 1.0
+    out = ""
+    if res.inflation.get(name, 1.0) / max(scale, 1.0) > 1.05:
+        out += f" (x{res.inflation[name] / max(scale, 1.0):.3g} for correlated residuals)"
+    if scale > 1.0:
+        out += f" (x{scale:.3g} by the record's blocks)"
+    if blocks is not None and not blocks.made and name in blocks.scale:
+        out += " (block check not made: not widened by it)"
+    return out
 
 
 def report_text(res: Any) -> str:

@@ -84,8 +84,9 @@ class FitResult:
     body: Any = None
     #: The block check (blocks.py): the record's consecutive blocks fitted on their own and the
     #: scale factors the error bars were widened by, when the fit missed the data; a check with
-    #: ``made`` False (its ``unmade`` says why: the time limit or Ctrl-C) when it should have run
-    #: but did not, so the bars are not checked; else None (no misfit, or a check that does not apply).
+    #: ``made`` False (its ``unmade`` says why: the time limit or Ctrl-C; ``stop`` its key; ``scale``
+    #: NaN for each parameter it would have compared: not measured, not widened) when it should have
+    #: run but did not, so the bars are not checked; else None (no misfit, or a check that does not apply).
     blocks: Any = None
     _problem: Any = field(default=None, repr=False)
     _search_sigma: dict[str, float] = field(default_factory=dict, repr=False)
@@ -264,6 +265,8 @@ class FitResult:
         state = ("converged" if self.converged else "NOT converged") + (
             ", interrupted" if self.interrupted else ""
         )
+        if self.blocks is not None and not self.blocks.made:
+            state += ", block check not made"
         return f"FitResult({shown}; chi2/dof={self.reduced_chi2:.3g}, {state})"
 
     def _repr_html_(self) -> str:

@@ -8,7 +8,10 @@ docs/theory.md) and answers with
 - ``report``: the text of :meth:`pendulab.FitResult.report`, and the ``warnings`` the fit gave;
   ``notes`` and ``items``: the warnings and the report as message keys with values (:mod:`.fit_words`);
 - ``params``: name → value, standard error (null where the data do not determine it), unit, and
-  ``determined``; ``combinations`` what the data determine instead; ``chi2``, ``dof``, ``converged``;
+  ``determined``; ``combinations`` what the data determine instead; ``blocks``: the block check of a
+  misfit (:meth:`pendulab.fitting.blocks.BlockCheck.as_dict`: ``made``, ``stop`` (what stopped one not
+  made), ``starts`` [s], ``scale`` per parameter (null: not made, so not measured and not widened),
+  the blocks' ``values``, ``stderr``, ``units``) or null where none was due; ``chi2``, ``dof``, ``converged``;
 - ``scenario_toml``: the fitted scenario (:meth:`pendulab.FitResult.to_scenario` as TOML) and
   ``lab``: the same scenario as the lab's scenarios are described (``GET /api/scenarios``), so that
   the page can load it into the running session;
@@ -217,6 +220,7 @@ def fit_data(req: FitRequest, time_limit: float = FIT_SECONDS) -> dict[str, Any]
             for n in res.names
         },
         "combinations": {k: {"value": v, "stderr": _finite(e)} for k, (v, e) in res.combinations.items()},
+        "blocks": res.blocks.as_dict() if res.blocks is not None else None,
         "chi2": _finite(res.chi2),
         "dof": res.dof,
         "converged": bool(res.converged),

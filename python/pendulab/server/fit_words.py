@@ -85,6 +85,9 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
         _p("the block check of the misfit was not made: the fit's time limit of {seconds} s ran out"),
     ),
     ("blocksCtrlC", _p("the block check of the misfit was not made: Ctrl-C stopped the fit")),
+    ("blocksCtrlCIn", _p("Ctrl-C stopped the block check of the misfit (fits to the record's {n} blocks")),
+    ("blocksSearchTimeLimit", _p("the fit's time limit of {seconds} s cut the search short before it")),
+    ("blocksSearchCtrlC", _p("Ctrl-C cut the search short before it converged, so the misfit found")),
     # pendulab/fitting/: inference.py (gFar, notConverged), estimator.py (pivotFitted),
     # multistart.py (timeLimit)
     ("gFar", _p("the fitted g = {g} m/s² is far from any planet's")),
