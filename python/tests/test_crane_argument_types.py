@@ -96,14 +96,14 @@ ENTRIES: list[tuple[str, Callable[..., Any], dict[str, Any], dict[str, list[Any]
     (
         "Tower",
         crane.Tower,
-        {"slew": 0.5, "radius": 10.0, "height": 20.0, "luff": 0.3, "boom": 30.0},
-        {
-            "slew": real(True, False),
-            "radius": real(True, False),
-            "height": real(True, False),
-            "luff": real(False, False),
-            "boom": real(),
-        },
+        {"slew": 0.5, "radius": 10.0, "height": 20.0},
+        {"slew": real(True, False), "radius": real(False, False), "height": real(True, False)},
+    ),
+    (
+        "Tower(luff)",
+        crane.Tower,
+        {"slew": 0.5, "height": 20.0, "luff": 0.3, "boom": 30.0},
+        {"luff": real(False, False), "boom": real()},
     ),
     (
         "Sampled",
@@ -123,9 +123,10 @@ ENTRIES: list[tuple[str, Callable[..., Any], dict[str, Any], dict[str, list[Any]
     (
         "Path.knots",
         MOVE.knots,
-        {"t0": 0.0, "t1": 5.0, "dt": 0.05},
-        {"t0": real(True, False), "t1": real(True), "dt": real(True)},
+        {"t0": 0.0, "t1": 5.0, "spacing": 0.05},
+        {"t0": real(True, False), "t1": real(True), "spacing": real()},
     ),
+    ("Path.knots(dt=)", MOVE.knots, {"t0": 0.0, "t1": 5.0}, {"dt": real()}),
     ("Sampled.knots", SAMPLED.knots, {"t0": 0.0, "t1": 4.0}, {"t0": real(True, False), "t1": real(True)}),
     (
         "Path.pivot_samples",
@@ -234,6 +235,7 @@ ENTRIES: list[tuple[str, Callable[..., Any], dict[str, Any], dict[str, list[Any]
             "t_end": real(True),
             "t_start": real(True, False),
             "sway": real(True, False),
+            "progress": ["yes", 1, NAN],
         },
     ),
     ("LQR.control", LQR.control, {"z": np.zeros(4)}, {"z": array()}),
@@ -279,7 +281,7 @@ CASES = [
 
 
 def _call(call: Callable[..., Any], kw: dict[str, Any]) -> Any:
-    if "dt" in kw and call.__name__ != "knots":  # the deprecated name warns first (warnings are errors)
+    if "dt" in kw:  # the deprecated name warns first (warnings are errors)
         with pytest.warns(DeprecationWarning, match="dt is the older name"):
             return call(**kw)
     return call(**kw)

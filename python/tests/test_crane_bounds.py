@@ -2,7 +2,8 @@
 ``Path.pivot_samples`` that would not fit in the memory this process can get, an ``LQR.simulate`` over
 more steps than allowed, refused up front naming the value, the samples or steps asked and the most
 allowed; a ``Tower`` given ``luff`` without ``boom`` (or ``boom`` without ``luff``), which the radius
-silently overrode, refused naming what is missing."""
+silently overrode, refused naming what is missing, and one given a ``radius`` with them, which they
+silently overrode, refused naming all three."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import pytest
 
 from pendulab import InvalidInputError, crane, memory
 from pendulab.crane._checks import SAMPLE_BYTES
+from pendulab.validate import show
 
 MOVE = crane.move(2.0, 0.5, 0.5)
 MIB = 2**20
@@ -26,12 +28,12 @@ def one_mib(monkeypatch: pytest.MonkeyPatch) -> int:
 
 def test_knots_beyond_memory_are_refused_up_front(one_mib: int) -> None:
     with pytest.raises(InvalidInputError) as err:
-        MOVE.knots(0.0, 10.0, dt=1e-3)
+        MOVE.knots(0.0, 10.0, spacing=1e-3)
     text = str(err.value)
-    assert text.startswith("invalid dt = 0.001:"), text
+    assert text.startswith("invalid spacing = 0.001:"), text
     assert f"at most {one_mib} samples fit" in text and "10001 asked over 10.0 s" in text, text
     assert "a larger spacing or a shorter span" in text
-    t, p, _, _ = MOVE.knots(0.0, 10.0, dt=10.0 / (one_mib - 20))  # fits (breaks add a few)
+    t, p, _, _ = MOVE.knots(0.0, 10.0, spacing=10.0 / (one_mib - 20))  # fits (breaks add a few)
     assert p.shape[0] == t.size > one_mib - 20
 
 
@@ -70,23 +72,40 @@ def test_tower_luff_profile_without_boom_is_refused() -> None:
 def test_tower_with_both_or_neither_is_taken() -> None:
     luffing = crane.Tower(luff=0.5, boom=30.0, height=2.0)
     assert luffing.position(0.0)[0, 2] == pytest.approx(2.0 + 30.0 * 0.479425538604203)
+    assert luffing.radius is None  # L cos β is the radius
     assert crane.Tower(radius=12.0).position(0.0)[0, 0] == pytest.approx(12.0)
+    assert crane.Tower().radius == 10.0 and crane.Tower().position(0.0)[0, 0] == 10.0  # the default
+
+
+@pytest.mark.parametrize("radius", [12.0, 10.0, crane.profile(2.0, 0.5, 0.5, start=10.0)])
+def test_tower_radius_with_luff_and_boom_is_refused(radius: float | crane.Profile) -> None:
+    """The boom's tip is at radius L cos β: a radius given beside luff and boom was silently ignored
+    (10 m, the default, too: given is given)."""
+    with pytest.raises(InvalidInputError) as err:
+        crane.Tower(radius=radius, luff=0.5, boom=30.0)
+    text = str(err.value)
+    assert text.startswith(f"Tower: radius = {show(radius)} given with"), text
+    assert "given with luff = 0.5 and boom = 30.0: a luffing boom's tip is at radius boom·cos(luff)" in text
+    assert "give radius for a trolley on a horizontal jib, or luff and boom for a luffing boom" in text
 
 
 CTRL = crane.lqr(rope=5.0)
 
 
-@pytest.mark.parametrize("t_end", [1e9, 1e12])
-def test_lqr_over_more_steps_than_a_crane_run_is_refused_up_front(
+@pytest.mark.parametrize("t_end", [1e6, 1e9, 1e12])
+def test_lqr_over_more_steps_than_minutes_is_refused_up_front(
     monkeypatch: pytest.MonkeyPatch, t_end: float
 ) -> None:
+    """SciPy's DOP853 steps in Python (~0.5 ms a step): 2e5 steps at most, a few minutes (1e6 s here is
+    ~2.3e5 steps, taken before under a crane run's 2e7 steps, which would be hours)."""
     monkeypatch.setattr(memory, "available_bytes", lambda: None)  # the step limit alone
     with pytest.raises(InvalidInputError) as err:
         CTRL.simulate(1.0, t_end=t_end)
     text = str(err.value)
-    assert text.startswith(f"invalid t_end = {t_end!r}: at most 20000000 steps of the closed loop"), text
-    steps = t_end * max(abs(CTRL.poles)) / 6.0
-    assert f"it takes about {steps:.3g}" in text and "a shorter t_end" in text, text
+    assert text.startswith(f"invalid t_end = {t_end!r}: at most 200000 steps of the closed loop (SciPy"), text
+    rate = max(abs(CTRL.poles))
+    assert f"it takes about {t_end * rate / 6.0:.3g}" in text and "a shorter t_end" in text, text
+    assert f"(t_end - t_start <= {2e5 * 6.0 / rate:.3g} s)" in text, text
 
 
 def test_lqr_beyond_memory_is_refused_and_within_runs(one_mib: int) -> None:

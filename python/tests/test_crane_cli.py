@@ -195,4 +195,4 @@ def test_crane_csvs_say_their_output_spacing_and_tolerances(tmp_path: Path) -> N
     assert (settings["sample_spacing"], settings["rtol"], settings["atol"]) == (0.05, 1e-8, 1e-8)
     assert read_metadata(grid)["units"]["sample_spacing"] == "s"
     res = crane.residual_grid([6.0], [2.0], [None], settle=5.0)
-    assert (res.sample_spacing, res.rtol, res.atol) == (0.05, 1e-8, 1e-8)
+    assert (res.output_spacing, res.rtol, res.atol) == (0.05, 1e-8, 1e-8)

@@ -85,3 +85,16 @@ def test_the_grid_runs_in_chunks_and_ctrl_c_keeps_what_is_done(monkeypatch: pyte
     flag, nan, size, messages = out.strip().split(" ", 3)
     assert flag == "True" and 0 < int(nan) < int(size) == 20_000, out
     assert "crane grid interrupted" in messages, out
+
+
+def test_the_interrupted_grid_warns_at_the_callers_line(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The RuntimeWarning names the first frame outside pendulab (``pendulab._warn.warn_user``)."""
+
+    def ctrl_c(*_args: object) -> None:
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(grid_module, "drive", ctrl_c)
+    with pytest.warns(RuntimeWarning, match=r"^crane grid interrupted: 0 of 4 cases computed") as caught:
+        res = crane.residual_grid([4.0, 5.0], [2.0, 3.0], [None], settle=3.0)
+    assert len(caught) == 1 and caught[0].filename == __file__
+    assert res.interrupted and np.isnan(res.sway).all()

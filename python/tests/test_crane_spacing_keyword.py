@@ -1,8 +1,10 @@
 """``Crane.simulate`` and ``crane.residual_grid`` take the time between saved samples as
 ``output_spacing`` [s] (it was ``dt``, read as the integrator's step: the crane's DOP853 chooses its own
-steps), as a crane file's ``[simulation] output_spacing``. ``dt=`` is still taken: the same run bit for
-bit, with a DeprecationWarning naming ``output_spacing`` at the caller's line; both given is refused
-naming both values; a bad spacing is named as written. docs/cranes.md "The crane model"."""
+steps), as a crane file's ``[simulation] output_spacing``, and ``GridResult`` says it as
+``output_spacing`` (``sample_spacing`` deprecated); ``Path.pivot_samples`` and ``Path.knots`` take
+``spacing``. ``dt=`` is still taken: the same run bit for bit, with a DeprecationWarning naming the new
+name at the caller's line; both given is refused naming both values; a bad spacing is named as
+written. docs/cranes.md "The crane model"."""
 
 from __future__ import annotations
 
@@ -58,13 +60,13 @@ def test_residual_grid_takes_output_spacing_and_dt_gives_the_same_grid_bit_for_b
         new = crane.residual_grid(*args, settle=3.0, output_spacing=0.1)
         positional = crane.residual_grid(*args, 5.0, 0.5, 0.5, None, 100.0, 2.0, 9.81, 3.0, 0.1)
         default = crane.residual_grid(*args, settle=3.0)
-    assert new.sample_spacing == 0.1 and default.sample_spacing == 0.05
+    assert new.output_spacing == 0.1 and default.output_spacing == 0.05
     assert new.sway.tobytes() == positional.sway.tobytes() and np.all(new.sway > 0)
     assert not np.array_equal(new.sway, default.sway)  # the spacing does reach the runs
     with pytest.warns(DeprecationWarning, match="residual_grid" + DEPRECATED) as caught:
         old = crane.residual_grid(*args, settle=3.0, dt=0.1)
     assert len(caught) == 1 and caught[0].filename == __file__
-    assert old.sway.tobytes() == new.sway.tobytes() and old.sample_spacing == 0.1
+    assert old.sway.tobytes() == new.sway.tobytes() and old.output_spacing == 0.1
 
 
 @pytest.mark.parametrize("call", ["Crane.simulate", "residual_grid"])
@@ -128,3 +130,47 @@ def test_pivot_samples_takes_spacing_and_dt_gives_the_same_samples_with_a_warnin
         path.pivot_samples(3.0, spacing=0.25, dt=0.5)
     with pytest.raises(InvalidInputError, match=r"^invalid spacing = '0\.25': a finite number > 0 s$"):
         path.pivot_samples(3.0, spacing="0.25")
+
+
+def test_grid_result_says_output_spacing_and_sample_spacing_is_deprecated() -> None:
+    """One number, one name: ``GridResult.output_spacing`` as ``residual_grid``'s keyword; the older
+    ``sample_spacing`` still reads it, with a DeprecationWarning at the caller's line."""
+    res = crane.residual_grid([4.0], [2.0], [None], settle=3.0, output_spacing=0.25)
+    assert res.output_spacing == 0.25 and "sample_spacing" not in crane.GridResult.__dataclass_fields__
+    warned = r"^GridResult\.sample_spacing is deprecated: it is the older name of output_spacing .*"
+    with pytest.warns(DeprecationWarning, match=warned) as caught:
+        old = res.sample_spacing
+    assert str(caught[0].message).endswith("; read output_spacing")
+    assert old == 0.25 and len(caught) == 1 and caught[0].filename == __file__
+
+
+@pytest.mark.parametrize("kind", ["move", "sampled"])
+def test_knots_take_spacing_and_dt_gives_the_same_knots_with_a_warning(kind: str) -> None:
+    """``Path.knots``' most time between two knots is ``spacing`` (it was ``dt``), by the same mechanism;
+    a measured path's ``knots`` (an override) warns at the caller's line too."""
+    path: crane.Path = crane.move(distance=1.0, v_max=0.5, a_max=0.5, t_start=0.2)
+    if kind == "sampled":
+        ts = np.linspace(0.0, 4.0, 9)
+        path = crane.Sampled(ts, np.stack([ts**2, ts, 0 * ts], axis=1))
+    with _new_keyword_only():
+        new = path.knots(0.0, 3.0, spacing=0.25)
+        positional = path.knots(0.0, 3.0, 0.25)  # the old place of dt among the arguments
+        default = path.knots(0.0, 3.0)
+    assert new[0][0] == 0.0 and new[0][-1] == 3.0 and np.diff(new[0]).max() <= 0.25 + 1e-15
+    assert np.diff(default[0]).max() <= 0.05 + 1e-15 < np.diff(new[0]).max()  # the default kept, 0.05 s
+    assert all(a.tobytes() == b.tobytes() for a, b in zip(new, positional, strict=True))
+    warned = r"^Path\.knots\(dt=\.\.\.\) is deprecated: dt is the older name of spacing \(the most time "
+    with pytest.warns(DeprecationWarning, match=warned + r".*\); write spacing=0\.25$") as caught:
+        old = path.knots(0.0, 3.0, dt=0.25)
+    assert len(caught) == 1 and caught[0].filename == __file__
+    assert all(a.tobytes() == b.tobytes() for a, b in zip(new, old, strict=True))
+    both = r"^Path\.knots: spacing = 0\.25 and dt = 0\.5 both given: dt is the older name of spacing"
+    with _new_keyword_only(), pytest.raises(InvalidInputError, match=both):
+        path.knots(0.0, 3.0, spacing=0.25, dt=0.5)
+    with pytest.raises(InvalidInputError, match=r"^invalid spacing = 0\.0: a finite number > 0 s$"):
+        path.knots(0.0, 3.0, spacing=0.0)
+    with (
+        pytest.warns(DeprecationWarning),
+        pytest.raises(InvalidInputError, match=r"^invalid dt = -1\.0: a finite number > 0 s$"),
+    ):
+        path.knots(0.0, 3.0, dt=-1.0)

@@ -298,7 +298,7 @@ def grid_cmd(
             settings = {"ropes": ropes, "ratios": ratios, "shapers": kinds, "design_rope": design}
             settings |= {"distance": distance, "v_max": v_max, "a_max": a_max, "j_max": j_max}
             settings |= {"hook_mass": hook_mass, "rigging": rigging, "g": g, "settle": settle}
-            settings |= {"sample_spacing": res.sample_spacing, "rtol": res.rtol, "atol": res.atol}
+            settings |= {"sample_spacing": res.output_spacing, "rtol": res.rtol, "atol": res.atol}
             _write_grid_csv(out, res, settings, w, [s for s in shs if s is not None])
             _say(f"wrote {out}")
         if plot is not None:

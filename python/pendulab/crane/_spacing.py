@@ -1,15 +1,15 @@
 """The spacing keywords of the crane's Python calls: ``output_spacing`` [s] of
 :meth:`pendulab.crane.Crane.simulate` and :func:`pendulab.crane.residual_grid`, the time between saved
 samples (the crane's DOP853 chooses its own steps), and ``spacing`` [s] of
-:meth:`pendulab.crane.Path.pivot_samples`, the time between the returned samples. ``dt`` is their
+:meth:`pendulab.crane.Path.pivot_samples`, the time between the returned samples, and of
+:meth:`pendulab.crane.Path.knots`, the most time between two knots. ``dt`` is their
 older name, still taken with a DeprecationWarning, as a crane file's ``[simulation] dt`` is still read
 (docs/cranes.md)."""
 
 from __future__ import annotations
 
-import warnings
-
 from .._core import InvalidInputError
+from .._warn import warn_user
 from ..validate import show
 
 OLD_NAME = "dt"
@@ -27,9 +27,10 @@ def spacing(
 ) -> tuple[str, object]:
     """(the name the spacing was given by, the spacing as given) of the call ``where`` (e.g.
     ``"Crane.simulate"``): ``output_spacing`` (the keyword ``new``, which is ``what``), else the older
-    ``dt`` (a DeprecationWarning naming ``new``, pointing at the caller of ``where``), else
-    ``default``. Both given is an ``InvalidInputError`` naming both values. ``None`` is "not given";
-    the caller checks the value (:mod:`pendulab.crane._checks`), naming it by the returned name."""
+    ``dt`` (a DeprecationWarning naming ``new``, at the first caller outside pendulab however many of
+    its frames lie between: :func:`pendulab._warn.warn_user`), else ``default``. Both given is an
+    ``InvalidInputError`` naming both values. ``None`` is "not given"; the caller checks the value
+    (:mod:`pendulab.crane._checks`), naming it by the returned name."""
     if dt is None:
         return new, default if output_spacing is None else output_spacing
     if output_spacing is not None:
@@ -37,9 +38,8 @@ def spacing(
             f"{where}: {new} = {show(output_spacing)} and dt = {show(dt)} both given: dt is the older "
             f"name of {new} ({what}); give {new} only"
         )
-    warnings.warn(
+    warn_user(
         f"{where}(dt=...) is deprecated: dt is the older name of {new} ({what}); write {new}={show(dt)}",
         DeprecationWarning,
-        stacklevel=3,
     )
     return OLD_NAME, dt

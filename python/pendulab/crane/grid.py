@@ -11,7 +11,6 @@ chunks in flight: the cases not computed are NaN and ``GridResult.interrupted`` 
 from __future__ import annotations
 
 import threading
-import warnings
 from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -21,6 +20,7 @@ from numpy.typing import ArrayLike
 
 from .._core import InvalidInputError, RunOptions, crane_residual_grid
 from .._progress import tqdm
+from .._warn import warn_user
 from ..sweeps.backends import Threads, drive
 from ..validate import flag, integer, invalid
 from . import _spacing
@@ -30,7 +30,7 @@ from .shaper import FloatArray, Shaper, check_shaper
 
 MAX_CASES = 1_000_000
 DEFAULT_SPACING = 0.05
-"""The default ``output_spacing`` [s] of :func:`residual_grid` (its ``GridResult.sample_spacing``)."""
+"""The default ``output_spacing`` [s] of :func:`residual_grid` (its ``GridResult.output_spacing``)."""
 CHUNK_CASES = 200
 """Cases per chunk (one shaper, a block of rope lengths × every ratio): a few tenths of a second."""
 
@@ -40,17 +40,28 @@ class GridResult:
     """``sway`` [m] (n_shapers, n_ropes, n_ratios): the payload's largest horizontal distance from the
     pivot after the move; ``ropes`` [m], ``ratios`` (m₂/m₁), ``labels`` (one per shaper, "unshaped"
     for None); ``interrupted`` when Ctrl-C stopped the grid (the cases not computed are NaN);
-    ``sample_spacing`` [s], the interval at which the sway was sampled after the move, and the DOP853
-    tolerances ``rtol``, ``atol`` of the runs."""
+    ``output_spacing`` [s], the interval at which the sway was sampled after the move (the
+    ``output_spacing`` of :func:`residual_grid`), and the DOP853 tolerances ``rtol``, ``atol`` of the
+    runs. ``sample_spacing`` is the deprecated older name of ``output_spacing``."""
 
     sway: FloatArray
     ropes: FloatArray
     ratios: FloatArray
     labels: tuple[str, ...]
     interrupted: bool = False
-    sample_spacing: float = 0.05
+    output_spacing: float = DEFAULT_SPACING
     rtol: float = 1e-8
     atol: float = 1e-8
+
+    @property
+    def sample_spacing(self) -> float:
+        """Deprecated: the older name of :attr:`output_spacing` [s] (a DeprecationWarning)."""
+        warn_user(
+            "GridResult.sample_spacing is deprecated: it is the older name of output_spacing (the time "
+            "between the sway's samples in s, as residual_grid's output_spacing); read output_spacing",
+            DeprecationWarning,
+        )
+        return self.output_spacing
 
 
 def residual_grid(
@@ -76,7 +87,7 @@ def residual_grid(
     """Moves the pivot by ``distance`` along x (limits ``v_max``, ``a_max``, ``j_max``), once per shaper
     (None: unshaped), for every rope length [m] × payload ratio m₂/m₁ (hook ``hook_mass`` [kg],
     ``rigging`` [m]); the residual sway is sampled every ``output_spacing`` [s] (default 0.05 s; the
-    result's ``sample_spacing``) for ``settle`` [s] after the move. ``dt`` is the deprecated older name
+    result's ``output_spacing``) for ``settle`` [s] after the move. ``dt`` is the deprecated older name
     of ``output_spacing`` (a DeprecationWarning; both given is an error).
     Runs in chunks (module doc): ``progress`` shows a bar (default: for more than 1000 cases),
     ``workers`` chunks run at once (each already parallel in the core). Ctrl-C returns what is done
@@ -142,9 +153,7 @@ def residual_grid(
         except KeyboardInterrupt:
             interrupted = True
             left = int(np.isnan(sway).sum())
-            warnings.warn(
-                f"crane grid interrupted: {n - left} of {n} cases computed, the rest are NaN",
-                RuntimeWarning,
-                stacklevel=2,
+            warn_user(
+                f"crane grid interrupted: {n - left} of {n} cases computed, the rest are NaN", RuntimeWarning
             )
     return GridResult(sway, lr, rr, tuple(labels), interrupted, float(spacing), float(rtol), float(atol))

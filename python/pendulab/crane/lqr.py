@@ -12,10 +12,18 @@ u = −K z minimises ∫ zᵀQz + R u² dt with K = R⁻¹BᵀP and P from the c
 equation AᵀP + PA − PBR⁻¹BᵀP + Q = 0 (SciPy ``solve_continuous_are``). The closed loop runs in the
 nonlinear planar model (SciPy DOP853); its trolley motion is a :class:`~pendulab.crane.paths.Path`
 that can be replayed in the 3-D crane (``Crane(pivot=run.path)``). Units: m, s, rad, m/s².
+
+SciPy's DOP853 steps in Python (about 0.5 ms a step, 0.4–0.7 ms measured), so the loop is bounded to
+:data:`MAX_LOOP_STEPS` steps (minutes) before it starts, and runs in chunks of :data:`CHUNK_STEPS`
+steps: a progress bar between chunks, and Ctrl-C returns the loop up to the last finished chunk's end
+(the chunk under way dropped) with a RuntimeWarning (``LQRRun.interrupted``), as ``pendulab.simulate``
+does. The core's ``ForceSolver`` is no faster path here: it calls a Python force for every evaluation
+too, pushes the bob of a fixed pivot, and has no state for the trolley's x, ẋ that u = −K z needs.
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
 from dataclasses import dataclass
 from typing import Any
@@ -27,11 +35,12 @@ from scipy.linalg import solve_continuous_are
 
 from .. import memory
 from .._core import InvalidInputError
-from ..validate import invalid
+from .._progress import tqdm
+from .._warn import warn_user
+from ..validate import flag, invalid
 from ._checks import later, number, numbers, positive, real, time, times
 from .paths import Path
 from .shaper import FloatArray
-from .system import MAX_STEPS
 
 # switches of the control into and out of its limit a_max that one run may have (chattering beyond)
 MAX_SWITCHES = 10_000
@@ -40,6 +49,16 @@ STABLE_STEP = 6.0
 ropes 0.5–50 m): the loop over a span [s] takes about span |p| / STABLE_STEP steps, p its fastest pole."""
 STEP_BYTES = 1024
 """Bytes one step of the loop keeps (SciPy's dense output; 0.9 kB measured)."""
+MAX_LOOP_STEPS = 200_000
+"""The most DOP853 steps one :meth:`LQR.simulate` may take: SciPy's DOP853 steps in Python at about
+0.5 ms a step, so a few minutes (1.9e5 steps took 142 s on a loaded machine; a crane run's 2e7 steps,
+its limit before, would be hours here)."""
+PROGRESS_AFTER_STEPS = 5_000
+"""Loops of more steps than this (a few seconds) show a progress bar unless told otherwise."""
+CHUNK_STEPS = 200
+"""Settled steps (:data:`STABLE_STEP`) of one chunk of the loop, a few tenths of a second of work (more
+in the loop's transient, where its steps are shorter): the bar moves, and Ctrl-C is answered, between
+chunks. The first chunk of a loop of fewer steps is the whole loop."""
 
 
 def _matrices(rope: float, g: float) -> tuple[FloatArray, FloatArray]:
@@ -69,84 +88,69 @@ class LQR:
             )
         return np.asarray(np.clip(-(zz @ self.K[0]), -self.a_max, self.a_max), dtype=np.float64)
 
-    def simulate(self, distance: float, t_end: float, t_start: float = 0.0, sway: float = 0.0) -> LQRRun:
+    def simulate(
+        self,
+        distance: float,
+        t_end: float,
+        t_start: float = 0.0,
+        sway: float = 0.0,
+        *,
+        progress: bool | None = None,
+    ) -> LQRRun:
         """The closed loop moving the trolley by ``distance`` [m] from rest at x = 0 at ``t_start`` [s]
-        (the load at the angle ``sway`` [rad]) until ``t_end`` [s], in the nonlinear planar model."""
+        (the load at the angle ``sway`` [rad]) until ``t_end`` [s], in the nonlinear planar model, at
+        most :data:`MAX_LOOP_STEPS` steps (refused before it starts). ``progress`` shows a bar (default:
+        for more than :data:`PROGRESS_AFTER_STEPS` steps); Ctrl-C returns the loop up to where it got
+        (its ``t_end`` there, ``interrupted`` True) with a RuntimeWarning."""
         d = number("distance", distance, "m")
         t0 = time("t_start", t_start)
         t1 = later("t_end", t_end, t0)
         theta0 = number("sway", sway, "rad")
-        self._bound(t0, t1, t_end)
-        big_l, g, a_max, k = self.rope, self.g, self.a_max, self.K[0]
-
-        # u = clip(−K z, ±a_max) kinks where the clip starts and stops acting: the loop is integrated
-        # piecewise in three modes (free: u = −K z; saturated: u = ±a_max), each smooth, switching at
-        # the roots of −K z ∓ a_max (terminal events); the switch times are the path's breaks
-        def gain(y: FloatArray) -> float:
-            return -float(k @ np.array([y[0] - d, y[1], y[2], y[3]]))
-
-        def rhs_of(mode: int) -> Any:
-            def rhs(_t: float, y: FloatArray) -> list[float]:
-                u = gain(y) if mode == 0 else mode * a_max
-                return [y[1], u, y[3], -(g * math.sin(y[2]) + u * math.cos(y[2])) / big_l]
-
-            return rhs
-
-        def event(level: float, direction: int) -> Any:
-            def ev(_t: float, y: FloatArray) -> float:
-                return gain(y) - level
-
-            ev.terminal, ev.direction = True, direction  # type: ignore[attr-defined]
-            return ev
-
+        if progress is not None:
+            flag("progress", progress)
+        steps = self._bound(t0, t1, t_end)
+        show = steps > PROGRESS_AFTER_STEPS if progress is None else progress
+        loop = _Loop(self, d)
         y: list[float] = [0.0, 0.0, theta0, 0.0]
-        u0 = gain(np.array(y))
-        mode = 1 if u0 > a_max else -1 if u0 < -a_max else 0
+        mode = loop.mode_at(y)
         pieces: list[tuple[float, Any]] = []
         switches: list[float] = []
         t = t0
-        while True:
-            if not math.isfinite(a_max):
-                events: list[Any] = []
-            elif mode == 0:  # leaves the free mode when −K z rises through a_max or falls through −a_max
-                events = [event(a_max, 1), event(-a_max, -1)]
-            else:  # leaves saturation when −K z comes back inside (−a_max, a_max)
-                events = [event(mode * a_max, -mode)]
-            sol = solve_ivp(
-                rhs_of(mode),
-                (t, t1),
-                y,
-                method="DOP853",
-                rtol=1e-11,
-                atol=1e-12,
-                dense_output=True,
-                events=events or None,
-            )
-            if not sol.success:
-                raise InvalidInputError(f"the closed loop could not be integrated: {sol.message}")
-            pieces.append((t, sol.sol))
-            if sol.status != 1:  # reached t_end
-                break
-            t, y = float(sol.t[-1]), sol.y[:, -1].tolist()
-            if t >= t1:
-                break
-            switches.append(t)
-            if len(switches) > MAX_SWITCHES:
-                raise InvalidInputError(
-                    f"the control switched into and out of its limit a_max = {a_max:g} m/s² more than "
-                    f"{MAX_SWITCHES} times before t = {t:g} s (chattering): use a smaller gain or a "
-                    "larger a_max"
+        # chunks of CHUNK_STEPS settled steps, one solve_ivp call each; their ends depend on the input
+        # alone (not on timing), so that the same call gives the same loop bit for bit
+        span = (t1 - t0) * CHUNK_STEPS / max(steps, CHUNK_STEPS)
+        interrupted = False
+        bar = tqdm(total=1000, unit="‰", desc="LQR loop", leave=False) if show else None
+        with bar if bar is not None else contextlib.nullcontext():
+            try:
+                while t < t1:
+                    sol = loop.piece(mode, t, t1 if t + span >= t1 else t + span, y)
+                    pieces.append((t, sol.sol))
+                    t, y = float(sol.t[-1]), sol.y[:, -1].tolist()
+                    if bar is not None:
+                        bar.update(int(1000 * (t - t0) / (t1 - t0)) - bar.n)
+                    if sol.status == 1 and t < t1:  # a switch (else the chunk's end, or t_end)
+                        switches.append(t)
+                        loop.check_switches(len(switches), t)
+                        mode = loop.next_mode(mode, y)
+            except KeyboardInterrupt:
+                interrupted = True
+                warn_user(
+                    f"LQR.simulate interrupted at t = {t:g} s of t_end = {t1:g} s; returning the loop up to "
+                    "there (the run's t_end)",
+                    RuntimeWarning,
                 )
-            # out of saturation into the free mode, or from it into the limit on the side of u's sign
-            mode = 0 if mode != 0 else (1 if gain(np.array(y)) > 0 else -1)
-        return LQRRun(self, d, t0, t1, _Pieces(pieces), np.array(switches))
+        if not pieces:  # stopped before the first chunk: the start state alone
+            rest = np.array([0.0, 0.0, theta0, 0.0])
+            pieces.append((t0, lambda ts: np.repeat(rest[:, None], np.size(ts), axis=1)))
+        return LQRRun(self, d, t0, t, _Pieces(pieces), np.array(switches), interrupted)
 
-    def _bound(self, t0: float, t1: float, t_end: Any) -> None:
-        """Refuses a loop over [t0, t1] [s] of more steps than :data:`~pendulab.crane.system.MAX_STEPS`
-        (a crane run's) or than fit in memory (:mod:`pendulab.memory`), before it starts."""
+    def _bound(self, t0: float, t1: float, t_end: Any) -> float:
+        """The steps a loop over [t0, t1] [s] takes, about; refuses more than :data:`MAX_LOOP_STEPS` or
+        than fit in memory (:mod:`pendulab.memory`), before it starts."""
         rate = float(np.max(np.abs(self.poles)))
         steps = (t1 - t0) * rate / STABLE_STEP
-        most, why = MAX_STEPS, "a crane run's limit"
+        most, why = MAX_LOOP_STEPS, "SciPy's DOP853 steps in Python, about 0.5 ms a step: minutes"
         have = memory.available_bytes()
         if have is not None and memory.USABLE_FRACTION * have / STEP_BYTES < most:
             most = int(memory.USABLE_FRACTION * have / STEP_BYTES)
@@ -159,6 +163,71 @@ class LQR:
                 f"{t0:g} s it takes about {steps:.3g} (DOP853 steps of at most about {STABLE_STEP:g}/|p| = "
                 f"{STABLE_STEP / rate:.3g} s, |p| = {rate:.3g} 1/s its fastest pole): a shorter t_end "
                 f"(t_end - t_start <= {most * STABLE_STEP / rate:.3g} s)",
+            )
+        return steps
+
+
+class _Loop:
+    """The closed loop to the target ``distance`` [m]. u = clip(−K z, ±a_max) kinks where the clip starts
+    and stops acting: the loop is integrated piecewise in three modes (0 free: u = −K z; ±1 saturated:
+    u = ±a_max), each smooth, switching at the roots of −K z ∓ a_max (terminal events); the switch
+    times are the path's breaks."""
+
+    def __init__(self, ctrl: LQR, distance: float) -> None:
+        self.rope, self.g, self.a_max, self.k, self.d = ctrl.rope, ctrl.g, ctrl.a_max, ctrl.K[0], distance
+
+    def gain(self, y: Any) -> float:
+        """−K z [m/s²] at the state y = (x, ẋ, θ, θ̇)."""
+        return -float(self.k @ np.array([y[0] - self.d, y[1], y[2], y[3]]))
+
+    def mode_at(self, y: Any) -> int:
+        u = self.gain(y)
+        return 1 if u > self.a_max else -1 if u < -self.a_max else 0
+
+    def next_mode(self, mode: int, y: Any) -> int:
+        """Out of saturation into the free mode, or from it into the limit on the side of u's sign."""
+        return 0 if mode != 0 else (1 if self.gain(y) > 0 else -1)
+
+    def _event(self, level: float, direction: int) -> Any:
+        def ev(_t: float, y: FloatArray) -> float:
+            return self.gain(y) - level
+
+        ev.terminal, ev.direction = True, direction  # type: ignore[attr-defined]
+        return ev
+
+    def piece(self, mode: int, t: float, stop: float, y: list[float]) -> Any:
+        """SciPy's DOP853 solution in ``mode`` from (t, y) to ``stop`` [s] or the next switch."""
+        big_l, g, a_max = self.rope, self.g, self.a_max
+
+        def rhs(_t: float, y: FloatArray) -> list[float]:
+            u = self.gain(y) if mode == 0 else mode * a_max
+            return [y[1], u, y[3], -(g * math.sin(y[2]) + u * math.cos(y[2])) / big_l]
+
+        if not math.isfinite(a_max):
+            events: list[Any] = []
+        elif mode == 0:  # leaves the free mode when −K z rises through a_max or falls through −a_max
+            events = [self._event(a_max, 1), self._event(-a_max, -1)]
+        else:  # leaves saturation when −K z comes back inside (−a_max, a_max)
+            events = [self._event(mode * a_max, -mode)]
+        sol = solve_ivp(
+            rhs,
+            (t, stop),
+            y,
+            method="DOP853",
+            rtol=1e-11,
+            atol=1e-12,
+            dense_output=True,
+            events=events or None,
+        )
+        if not sol.success:
+            raise InvalidInputError(f"the closed loop could not be integrated: {sol.message}")
+        return sol
+
+    def check_switches(self, n: int, t: float) -> None:
+        if n > MAX_SWITCHES:
+            raise InvalidInputError(
+                f"the control switched into and out of its limit a_max = {self.a_max:g} m/s² more than "
+                f"{MAX_SWITCHES} times before t = {t:g} s (chattering): use a smaller gain or a larger a_max"
             )
 
 
@@ -184,12 +253,21 @@ class LQRRun(Path):
     after t_end). Its ``breaks``: t_start (u steps from 0 to −K z₀) and ``switches``, the times [s]
     where the limit ±a_max starts or stops clipping u (P̈ kinks), so that the crane's integrator ends
     its steps there. A crane run past t_end is refused: the loop's trolley has not stopped then in
-    general, and the hold would stop it dead (simulate the loop as long as the crane run)."""
+    general, and the hold would stop it dead (simulate the loop as long as the crane run).
+    ``interrupted``: Ctrl-C stopped the loop, at its ``t_end``, before the t_end asked."""
 
     def __init__(
-        self, ctrl: LQR, distance: float, t0: float, t1: float, dense: Any, switches: Any = ()
+        self,
+        ctrl: LQR,
+        distance: float,
+        t0: float,
+        t1: float,
+        dense: Any,
+        switches: Any = (),
+        interrupted: bool = False,
     ) -> None:
         self.ctrl, self.distance, self._dense = ctrl, distance, dense
+        self.interrupted = interrupted
         self.span = (t0, t1)
         self.switches = np.asarray(switches, dtype=np.float64)
         self.breaks = np.union1d([t0], self.switches)

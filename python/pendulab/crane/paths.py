@@ -39,6 +39,12 @@ SAMPLE_SPACING = 0.01
 """The default ``spacing`` [s] of :meth:`Path.pivot_samples`."""
 RETURNED = "the time between the returned samples in s"
 """What ``spacing`` of :meth:`Path.pivot_samples` is, in the messages."""
+TOWER_RADIUS = 10.0
+"""The default ``radius`` [m] of a :class:`Tower` without a luffing boom."""
+KNOT_SPACING = 0.05
+"""The default ``spacing`` [s] of :meth:`Path.knots`."""
+BETWEEN_KNOTS = "the most time between two knots in s"
+"""What ``spacing`` of :meth:`Path.knots` is, in the messages."""
 
 
 def _unit(direction: Sequence[float], name: str = "direction") -> FloatArray:
@@ -85,18 +91,24 @@ class Path:
         the moves define all times (at rest outside their motion); :class:`Sampled` refuses times
         outside its samples, an ``LQRRun`` times after its loop's end."""
 
-    def knots(self, t0: float, t1: float, dt: float = 0.05) -> Knots:
-        """Knots (t, P, Ṗ, P̈) on [t0, t1] [s] every ≤ ``dt`` [s], and at every break and every node of a
-        spline twice (the values before and after), so that the quintic Hermite interpolant of the core
-        (T-11.4) steps there and its integrator ends a step there rather than crossing a jump of P̈ or
-        a kink (a node: P̈ continuous, P⃛ steps); between two knots the path is one cubic, which that
-        interpolant is."""
+    def knots(self, t0: float, t1: float, spacing: float | None = None, *, dt: float | None = None) -> Knots:
+        """Knots (t, P, Ṗ, P̈) on [t0, t1] [s] every ≤ ``spacing`` [s] (default 0.05 s), and at every
+        break and every node of a spline twice (the values before and after), so that the quintic
+        Hermite interpolant of the core (T-11.4) steps there and its integrator ends a step there rather
+        than crossing a jump of P̈ or a kink (a node: P̈ continuous, P⃛ steps); between two knots the
+        path is one cubic, which that interpolant is. ``dt`` is the deprecated older name of ``spacing``
+        (a DeprecationWarning; both given is an error)."""
+        name, given = _spacing.spacing("Path.knots", spacing, dt, KNOT_SPACING, "spacing", BETWEEN_KNOTS)
+        return self._knots(t0, t1, name, given)
+
+    def _knots(self, t0: Any, t1: Any, name: str, given: object) -> Knots:
         t0 = time("t0", t0)
         t1 = later("t1", t1, t0, "t0")
-        count("dt", t1 - t0, positive("dt", dt, "s"))
+        step = positive(name, given, "s")
+        count(name, t1 - t0, step)
         jumps = np.union1d(self.breaks, self.nodes)
         inner = jumps[(jumps > t0) & (jumps < t1)]
-        grid = np.union1d(np.linspace(t0, t1, max(2, math.ceil((t1 - t0) / dt) + 1)), inner)
+        grid = np.union1d(np.linspace(t0, t1, max(2, math.ceil((t1 - t0) / step) + 1)), inner)
         p, v, a = self._pva(grid)
         if inner.size == 0:
             return grid, p, v, a
@@ -170,18 +182,20 @@ class Gantry(Path):
 @dataclass(frozen=True, eq=False)
 class Tower(Path):
     """Tower crane: ``slew`` θ(t) [rad] and trolley ``radius`` r(t) [m] profiles (a Profile, or a
-    constant), jib ``height`` h [m]; boom luffing when ``boom`` L [m] is given and ``luff`` β(t) [rad]
-    replaces the radius (module doc)."""
+    constant; default 10 m), jib ``height`` h [m]; boom luffing when ``boom`` L [m] and ``luff`` β(t)
+    [rad] are given, which set the radius (L cos β: a ``radius`` given with them is refused, and the
+    field stays None) (module doc)."""
 
     slew: Profile | float = 0.0
-    radius: Profile | float = 10.0
+    radius: Profile | float | None = None
     height: float = 0.0
     luff: Profile | float | None = None
     boom: float | None = None
 
     def __post_init__(self) -> None:
         _profile_or_number("slew", self.slew, "rad")
-        _profile_or_number("radius", self.radius, "m")
+        if self.radius is not None:
+            _profile_or_number("radius", self.radius, "m")
         numbers("height", self.height, "m", shape=())
         if self.luff is not None:
             _profile_or_number("luff", self.luff, "rad")
@@ -194,6 +208,15 @@ class Tower(Path):
                 "needs both luff (its angle β [rad] above the horizontal) and boom (its length L [m]); "
                 "give both, or neither for a trolley at radius"
             )
+        if self.luff is not None and self.radius is not None:  # L cos β would silently rule
+            raise InvalidInputError(
+                f"Tower: radius = {show(self.radius)} given with luff = {show(self.luff)} and boom = "
+                f"{show(self.boom)}: a luffing boom's tip is at radius boom·cos(luff), which they set; "
+                "give radius for a trolley on a horizontal jib, or luff and boom for a luffing boom, "
+                "not both"
+            )
+        if self.luff is None and self.radius is None:
+            object.__setattr__(self, "radius", TOWER_RADIUS)
 
     @staticmethod
     def _eval(prof: Profile | float, t: FloatArray, left: bool) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -213,7 +236,7 @@ class Tower(Path):
             z, dz = self.height + big_l * np.sin(b), big_l * np.cos(b) * db
             ddz = big_l * (np.cos(b) * ddb - np.sin(b) * db**2)
         else:
-            r, dr, ddr = self._eval(self.radius, t, left)
+            r, dr, ddr = self._eval(TOWER_RADIUS if self.radius is None else self.radius, t, left)
             z, dz, ddz = np.full(t.size, float(self.height)), zero, zero
         c, s = np.cos(th), np.sin(th)
         er = np.stack([c, s, zero], axis=1)
@@ -301,10 +324,10 @@ class Sampled(Path):
                 "at later times)"
             )
 
-    def knots(self, t0: float, t1: float, dt: float = 0.05) -> Knots:
+    def _knots(self, t0: Any, t1: Any, name: str, given: object) -> Knots:
         a, b = self.span
         t0 = time("t0", t0)
-        return super().knots(max(t0, a), min(later("t1", t1, t0, "t0"), b), dt)
+        return super()._knots(max(t0, a), min(later("t1", t1, t0, "t0"), b), name, given)
 
     def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
         a, b = self.span
