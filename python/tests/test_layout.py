@@ -41,3 +41,11 @@ def test_no_public_name_shadows_a_module() -> None:
         value = getattr(pl, name)
         if name in modules:
             assert isinstance(value, types.ModuleType), f"pendulab.{name} is a module and a {type(value)}"
+
+
+def test_the_check_sees_the_servers_rules_that_pendulab_serve_reads_its_options_by() -> None:
+    """``pendulab serve`` checks --idle-timeout and --fit-time-limit by the server's own rules, imported
+    when the option is read: edges of the graph (they were reached by importlib with strings, unseen)."""
+    check = load_tool("check_imports")
+    serve = check.import_graph(Path(pl.__file__).parent)["pendulab.cli.serve"]
+    assert {"pendulab.server.serving", "pendulab.server.fit"} <= serve, serve

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import json
 import re
+import sys
 from pathlib import Path
 from typing import Any
 
@@ -105,3 +106,20 @@ def test_the_lab_says_when_its_time_limit_stopped_the_block_check(monkeypatch: p
     assert blocks["made"] is False and blocks["stop"] == "timeLimit" and blocks["starts"] == []
     assert blocks["scale"] == {"length": None, "damping": None}, blocks
     json.dumps(out, allow_nan=False)  # JSON without NaN
+
+
+@pytest.mark.parametrize("module", ["pendulab.server.fit", "pendulab.server.serving"])
+def test_without_the_lab_extra_serves_limits_pass_to_serves_own_message(
+    module: str, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """--fit-time-limit and --idle-timeout are checked by the server's rules as the command line is read;
+    where the server cannot be imported (no ``lab`` extra) the value passes, and serve then names the
+    missing extra (not an ImportError out of a typer callback)."""
+    from pendulab.cli import serve
+    from pendulab.cli.common import UsageError
+
+    check = serve._fit_time_limit if module.endswith(".fit") else serve._idle_timeout
+    with pytest.raises(UsageError, match="must be a number of seconds"):
+        check(1e9)
+    monkeypatch.setitem(sys.modules, module, None)  # `from … import` it: ImportError, as without FastAPI
+    assert check(1e9) == 1e9

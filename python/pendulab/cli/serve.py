@@ -10,7 +10,6 @@ in use, missing extra).
 from __future__ import annotations
 
 import contextlib
-import importlib
 import ipaddress
 import math
 import os
@@ -91,31 +90,44 @@ def _check_proxies(value: str) -> None:
             _fail(f"--trust-proxy: {item!r} is not an IP address or network (e.g. 127.0.0.1, 10.0.0.0/8, *)")
 
 
-def _checked_by(option: str, module: str, rule: str) -> Callable[[float], float]:
-    """A typer callback checking ``option`` by the server's own rule ``module.rule`` (a function of the
-    value that raises ValueError naming what is allowed), as the command line is read. nan and ±inf pass
-    through to the one message every float option gives them (``cli.common._checked``); without the
-    ``lab`` extra the value passes too, and serve names the missing extra itself."""
+def _checked_by(option: str, load_rule: Callable[[], Callable[[float], float]]) -> Callable[[float], float]:
+    """A typer callback checking ``option`` by the server's own rule, which ``load_rule()`` imports and
+    returns (a function of the value that raises ValueError naming what is allowed), as the command line
+    is read. nan and ±inf pass through to the one message every float option gives them
+    (``cli.common._checked``); without the ``lab`` extra (``load_rule`` raises ImportError) the value
+    passes too, and serve names the missing extra itself."""
 
     def check(value: float) -> float:
         if not math.isfinite(value):
             return value
         try:
-            rule_of = getattr(importlib.import_module(module, __package__), rule)
+            rule = load_rule()
         except ImportError:
             return value
         try:
-            return float(rule_of(value))
+            return rule(value)
         except ValueError as e:
             raise UsageError(f"{option}: {e}") from None
 
     return check
 
 
-#: ``--idle-timeout`` by :func:`pendulab.server.serving.check_idle_timeout`.
-_idle_timeout = _checked_by("--idle-timeout", "..server.serving", "check_idle_timeout")
-#: ``--fit-time-limit`` by :func:`pendulab.server.fit.check_fit_time_limit`.
-_fit_time_limit = _checked_by("--fit-time-limit", "..server.fit", "check_fit_time_limit")
+def _idle_timeout_rule() -> Callable[[float], float]:
+    """:func:`pendulab.server.serving.check_idle_timeout`, imported when ``--idle-timeout`` is read."""
+    from ..server.serving import check_idle_timeout
+
+    return check_idle_timeout
+
+
+def _fit_time_limit_rule() -> Callable[[float], float]:
+    """:func:`pendulab.server.fit.check_fit_time_limit`, imported when ``--fit-time-limit`` is read."""
+    from ..server.fit import check_fit_time_limit
+
+    return check_fit_time_limit
+
+
+_idle_timeout = _checked_by("--idle-timeout", _idle_timeout_rule)
+_fit_time_limit = _checked_by("--fit-time-limit", _fit_time_limit_rule)
 
 
 def _open_when_up(server: object, url: str) -> None:
