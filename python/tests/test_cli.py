@@ -161,6 +161,50 @@ def test_run_names_the_file_as_typed(tmp_path: Path, monkeypatch: pytest.MonkeyP
 
 
 @pytest.mark.parametrize(
+    ("command", "options"),
+    [
+        (["validate"], []),
+        (["exact"], []),
+        (["phases"], []),
+        (["reduced"], ["--out", "r.png"]),
+        (["plot"], ["--out", "p.png"]),
+        (["animate"], ["--out", "m.gif"]),
+        (["sweep"], ["--out", "s"]),
+        (["crane", "run"], []),
+    ],
+)
+def test_every_command_names_its_file_as_typed(
+    command: list[str], options: list[str], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """As ``pendulab run`` (above): typer's Path made ``./nope.toml`` ``nope.toml`` in the messages of
+    validate, sweep, exact, phases, reduced, plot, animate and crane run (crane.scenario.load names the
+    file by its Path too)."""
+    monkeypatch.chdir(tmp_path)
+    for typed in ("./nope.toml", ".//nope.toml"):
+        code, out, err = invoke(*command, typed, *options)
+        assert_user_error(code, out, err, f"error: {typed}: No such file")
+    Path("bad.toml").write_text("[pendulum]\nlength = -1.0\n")
+    code, out, err = invoke(*command, "./bad.toml", *options)
+    if command == ["validate"]:  # one line per problem
+        assert code == 2 and all(line.startswith("error: ./bad.toml: ") for line in err.splitlines()), err
+    else:
+        assert_user_error(code, out, err, "error: ./bad.toml: ")
+
+
+def test_validate_and_sweep_name_good_files_as_typed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    Path("good.toml").write_text((SCENARIOS / "rosette.toml").read_text())
+    code, out, err = invoke("validate", "./good.toml", ".//good.toml", "rosette")
+    assert code == 0 and out.startswith("./good.toml: OK (Rosette") and "\n.//good.toml: OK (" in out, out
+    sway = (SCENARIOS.parent / "sweeps" / "sway.toml").read_text()
+    Path("sweep.toml").write_text(
+        sway.replace("num = 40", "num = 2").replace("num = 25", "num = 1").replace("20.0", "0.1")
+    )
+    code, out, err = invoke("sweep", "./sweep.toml", "--out", "sweep")
+    assert code == 0 and err.startswith("sweep ./sweep.toml: Max sway"), (code, out, err)
+
+
+@pytest.mark.parametrize(
     ("args", "needles"),
     [
         (["run", ROSETTE, "--bogus"], ["pendulab run: no such option: --bogus", "'pendulab run --help'"]),

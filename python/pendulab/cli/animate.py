@@ -50,7 +50,7 @@ def _report(movie: Movie) -> str:
 @app.command(short_help="Make a movie of a scenario (.mp4, .webm, .gif).")
 def animate(
     scenario: Annotated[
-        Path,
+        str,  # not Path: the messages name the file as typed (./x.toml, not x.toml)
         typer.Argument(
             metavar="SCENARIO",
             help="Scenario file (TOML) or a shipped example's name (rosette); see docs/scenarios.md.",

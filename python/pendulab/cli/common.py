@@ -216,15 +216,43 @@ def _root(
     """Pendulab: the spherical pendulum, simulated right. SI units (m, kg, s, rad), z up."""
 
 
-def _scenario_file(arg: Path) -> Path:
-    """A SCENARIO argument: an existing file as given, else the shipped example of that name
-    (``rosette``); FileNotFoundError naming it and the examples (a user error) otherwise."""
-    return find_example(arg, "scenario")
+def _as_typed(arg: str | Path, kind: str) -> str:
+    """The file a SCENARIO or SWEEP argument names, for the loaders whose messages name it: ``arg`` as
+    typed when it is a file (``./x.toml``, not the ``x.toml`` of ``Path``: take such arguments as
+    ``str``, as typer normalises a ``Path``), else the shipped example ``kind`` of that name;
+    FileNotFoundError naming it as typed and the examples (a user error) otherwise."""
+    found = find_example(arg, kind)
+    return os.fspath(arg) if found == Path(arg) else os.fspath(found)
 
 
-def _sweep_file(arg: Path) -> Path:
-    """A SWEEP argument: an existing file as given, else the shipped example sweep of that name."""
-    return find_example(arg, "sweep")
+def _scenario_file(arg: str | Path) -> str:
+    """A SCENARIO argument: an existing file as typed, else the shipped example of that name
+    (``rosette``) — :func:`_as_typed`."""
+    return _as_typed(arg, "scenario")
+
+
+def _sweep_file(arg: str | Path) -> str:
+    """A SWEEP argument: an existing file as typed, else the shipped example sweep of that name."""
+    return _as_typed(arg, "sweep")
+
+
+@contextlib.contextmanager
+def _named_as_typed(arg: str) -> Iterator[None]:
+    """The errors of a reader that names the file ``arg`` by its ``Path`` (``x.toml`` for ``./x.toml``:
+    ``pendulab.crane.scenario.load``) name it as typed: that name opening an InvalidInputError's message
+    or as an OSError's file."""
+    shown = str(Path(arg))
+    try:
+        yield
+    except OSError as e:
+        if e.filename == shown:
+            e.filename = arg
+        raise
+    except InvalidInputError as e:
+        text = str(e)
+        if shown != arg and text.startswith(f"{shown}: "):
+            raise InvalidInputError(arg + text[len(shown) :]) from None
+        raise
 
 
 def _check_output(out: Path) -> None:

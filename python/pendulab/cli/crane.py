@@ -17,7 +17,7 @@ import numpy as np
 import typer
 
 from .._core import InvalidInputError
-from .common import _check_image, _check_output, _fail, _say, _user_errors, app
+from .common import _check_image, _check_output, _fail, _named_as_typed, _say, _user_errors, app
 
 crane_app = typer.Typer(
     help="Cranes: command shapers, their sensitivity, a move's residual sway (docs/cranes.md).",
@@ -165,8 +165,8 @@ def residual_cmd(
 
 @crane_app.command("run", short_help="Run a crane file ([crane], [move], [shaper], [hoist], [wind], ...).")
 def run_cmd(
-    file: Annotated[
-        Path, typer.Argument(help="Crane file (TOML; docs/cranes.md 'Crane files').", show_default=False)
+    file: Annotated[  # str, not Path: the messages name the file as typed (./x.toml, not x.toml)
+        str, typer.Argument(help="Crane file (TOML; docs/cranes.md 'Crane files').", show_default=False)
     ],
     out: Annotated[Path | None, typer.Option("--out", "-o", help="Write the run to this .csv file.")] = None,
     plot: Annotated[Path | None, typer.Option(help="Write sway vs time to this image.")] = None,
@@ -183,7 +183,9 @@ def run_cmd(
             _check_output(out)
         if plot is not None:
             _check_image("--plot", plot)
-        report(load(file), str(file), out, plot)
+        with _named_as_typed(file):
+            sc = load(file)
+        report(sc, file, out, plot)
 
 
 def report(

@@ -85,7 +85,7 @@ def _solution(sc: Scenario) -> ExactSolution:
     "exact", short_help="The exact solution of a scenario: summary; states at given times to a file."
 )
 def exact_cmd(
-    scenario: Annotated[Path, _SCENARIO],
+    scenario: Annotated[str, _SCENARIO],
     t: Annotated[
         str | None,
         typer.Option(
@@ -129,7 +129,7 @@ def exact_cmd(
 
 @app.command(short_help="Azimuthal advance per z-period: exact, its dynamic/geometric split, measured.")
 def phases(
-    scenario: Annotated[Path, _SCENARIO],
+    scenario: Annotated[str, _SCENARIO],
     periods: Annotated[
         int, typer.Option(min=1, max=10_000, help="z-periods of the RATTLE8 run that measures the advance.")
     ] = 5,
@@ -177,7 +177,7 @@ def phases(
         if plot is not None:
             from ..plot import plot_phases
 
-            plot_phases({scenario.stem: sol}, plot)
+            plot_phases({Path(scenario).stem: sol}, plot)
             _say(f"wrote {plot}")
 
 
@@ -292,7 +292,7 @@ def em_map_cmd(
 
 @app.command(short_help="Holm's Figure 2 for a scenario: C = 0, the energy plane and the orbit.")
 def reduced(
-    scenario: Annotated[Path, _SCENARIO],
+    scenario: Annotated[str, _SCENARIO],
     out: Annotated[
         Path, typer.Option("--out", "-o", help="Image file (.png, .svg, .pdf).", show_default=False)
     ],
@@ -322,7 +322,7 @@ def reduced(
 
 @app.command("plot", short_help="Draw a scenario: its path on the sphere, the top view, or the phase split.")
 def plot_cmd(
-    scenario: Annotated[Path, _SCENARIO],
+    scenario: Annotated[str, _SCENARIO],
     out: Annotated[
         Path, typer.Option("--out", "-o", help="Image file (.png, .svg, .pdf).", show_default=False)
     ],
@@ -363,7 +363,7 @@ def plot_cmd(
 
         if kind == "phases":
             sol = _solution(sc)
-            plotting.plot_phases({scenario.stem: sol}, out)
+            plotting.plot_phases({Path(scenario).stem: sol}, out)
             _say(f"phase split of {scenario} ({sol.kind}): dphi = {sol.phases().total:.15g} rad per z-period")
             _say(f"wrote {out}")
             return

@@ -269,7 +269,7 @@ def models(
 @app.command(short_help="Check scenario files without running them.")
 def validate(
     scenarios: Annotated[
-        list[Path],
+        list[str],  # not Path: the messages name each file as typed (./x.toml, not x.toml)
         typer.Argument(
             metavar="SCENARIO",
             help="Scenario files (TOML) or names of shipped examples to check.",

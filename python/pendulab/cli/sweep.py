@@ -68,7 +68,7 @@ def _done_so_far(out: Path) -> str:
 
 @app.command("sweep", short_help="Run a sweep file: a quantity over a grid or random design, to Parquet.")
 def sweep_cmd(
-    sweep_file: Annotated[Path, _SWEEP],
+    sweep_file: Annotated[str, _SWEEP],  # str: named as typed (./x.toml)
     out: Annotated[
         Path,
         typer.Option(
