@@ -90,6 +90,49 @@ def test_pendulum_keyword_of_another_model_names_that_model(model: str, keyword:
 
 
 @pytest.mark.parametrize(
+    ("model", "key", "where"),
+    [
+        ("ideal", "damping", f"damping is a parameter of {DAMPING_OWNERS}, not of 'ideal'"),
+        (
+            "ideal",
+            "DAMPING",
+            "the 'ideal' model has no parameter 'DAMPING' (did you mean 'damping'?); "
+            f"damping is a parameter of {DAMPING_OWNERS}, not of 'ideal'",
+        ),
+        ("spring", "frame_rate", "frame_rate is a parameter of model 'rotating', not of 'spring'"),
+    ],
+)
+def test_a_scenario_key_of_another_model_is_worded_as_pendulums_keyword(
+    model: str, key: str, where: str
+) -> None:
+    """A file's key of another model was ``(a parameter of the models 'damped', …, not of 'ideal': set model
+    = 'damped'?)``; now the words of ``pl.Pendulum(model=…, KEY=…)`` (registry.elsewhere), with the file's
+    own start (the key as written) and end (the keys the model takes in [pendulum])."""
+    with pytest.raises(pl.InvalidInputError) as python:
+        pl.Pendulum(model=model, **{key: 0.1})
+    assert f": {where}; its parameters: " in str(python.value), str(python.value)
+    text = SCENARIO.format(pendulum=f'model = "{model}"\n{key} = 0.1', initial="")
+    with pytest.raises(pl.ScenarioError) as e:
+        pl.Scenario.from_toml_str(text, "s.toml")
+    (problem,) = e.value.problems
+    keys = "model, length, mass, g" + (", stiffness" if model == "spring" else "")
+    assert problem == f"unknown key pendulum.{key} = 0.1: {where}; allowed keys in [pendulum] for model " + (
+        f"'{model}': {keys}"
+    ), problem
+
+
+def test_a_scenario_key_in_degrees_of_another_model_names_that_model() -> None:
+    text = SCENARIO.format(pendulum='model = "damped"\nlatitude_deg = 49.0', initial="")
+    with pytest.raises(pl.ScenarioError) as e:
+        pl.Scenario.from_toml_str(text, "s.toml")
+    (problem,) = e.value.problems
+    assert problem.startswith(
+        "unknown key pendulum.latitude_deg = 49.0: latitude_deg is a parameter of model 'rotating', not of "
+        "'damped'; allowed keys in [pendulum] for model 'damped': model, length, mass, g, damping, "
+    ), problem
+
+
+@pytest.mark.parametrize(
     ("pendulum", "initial", "needle", "expected"),
     [
         ("LENGTH = 2.0", "", "unknown key pendulum.LENGTH = 2.0", "length"),

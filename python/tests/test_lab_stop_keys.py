@@ -120,18 +120,34 @@ REFUSALS = [
         None,
     ),
     (
-        ['{"type": "set_model", "model": "damped", "params": {"latitude": 1}}'],
+        ['{"type": "set_model", "model": "damped", "params": {"lattitude": 1}}'],
         "unknown_parameter",
-        {"model": "damped", "name": "latitude"},
-        "das Modell damped hat keinen Parameter latitude; seine Parameter: ",
+        {"model": "damped", "name": "lattitude"},
+        "das Modell damped hat keinen Parameter lattitude; seine Parameter: ",
         None,
     ),
     (
-        ['{"type": "set_params", "params": {"damping": 0.1}}'],
+        ['{"type": "set_params", "params": {"dampling": 0.1}}'],
         "no_parameters",
-        {"model": "ideal", "name": "damping"},
-        "das Modell ideal hat keinen Parameter damping; es hat keine außer Länge, Masse, g",
+        {"model": "ideal", "name": "dampling"},
+        "das Modell ideal hat keinen Parameter dampling; es hat keine außer Länge, Masse, g",
         None,
+    ),
+    # another model's parameter: named with the models that have it, as pl.Pendulum words it (was the two
+    # above: "the 'damped' model has no parameter 'latitude'", no word of the rotating frame)
+    (
+        ['{"type": "set_model", "model": "damped", "params": {"latitude": 1}}'],
+        "parameter_of_other_model",
+        {"model": "damped", "name": "latitude", "owner": "rotating"},
+        "latitude ist ein Parameter des Modells rotating, nicht von damped; seine Parameter: length, ",
+        "latitude est un paramètre du modèle rotating, pas de damped ; ses paramètres : length, ",
+    ),
+    (
+        ['{"type": "set_params", "params": {"damping": 0.1}}'],
+        "parameter_of_other_models",
+        {"model": "ideal", "name": "damping", "owner": "damped", "available": "length, mass, g"},
+        "damping ist ein Parameter des Modells damped (und rotating, ",
+        "damping est un paramètre du modèle damped (et rotating, ",
     ),
     # a method the model does not run and a crane command outside the crane mode: both were the core's
     # English words alone (Error::Refused), left in English on a German or French page; the page shows the

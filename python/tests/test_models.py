@@ -205,7 +205,11 @@ def test_methods_and_solutions_of_the_ideal_pendulum_refuse_other_models() -> No
             "damping = -1.0\nframe_rate = 0.02 #",
             ["damping = -1:", "[0, 1e4] 1/s"],
         ),
-        ("frame_rate = 0.02    #", "radius = 5.0\nframe_rate = 0.02 #", ["radius", "model = 'slewing'"]),
+        (
+            "frame_rate = 0.02    #",
+            "radius = 5.0\nframe_rate = 0.02 #",
+            ["radius is a parameter of model 'slewing' (and 'hoisted'), not of 'rotating'"],
+        ),
         (
             "frame_rate = 0.02    #",
             "latitude = 0.9\nframe_rate = 0.02 #",
@@ -214,7 +218,11 @@ def test_methods_and_solutions_of_the_ideal_pendulum_refuse_other_models() -> No
         ("latitude_deg = 49.0", "latitude_deg = 100.0", ["latitude", "latitude_deg = 100.0 degrees"]),
         ("latitude_deg = 49.0", 'latitude_deg = "49 N"', ["pendulum.latitude_deg", "not a number"]),
         ("frame_rate = 0.02    #", "params = {frame_rate = 0.02} #", ["unknown key params", "frame_rate"]),
-        ('model = "rotating"', 'model = "ideal"', ["frame_rate", "model = 'rotating'"]),
+        (
+            'model = "rotating"',
+            'model = "ideal"',
+            ["frame_rate is a parameter of model 'rotating', not of 'ideal'"],
+        ),
     ],
 )
 def test_bad_model_keys_in_files_are_named(old: str, new: str, needles: list[str]) -> None:

@@ -166,7 +166,11 @@ def test_bad_parameters_of_the_spring_and_the_string_get_an_error_and_the_connec
         for cmd, needle in [
             ({"type": "set_params", "params": {"stiffness": -3.0}}, "stiffness = -3"),
             ({"type": "set_params", "params": {"stiffness": "stiff"}}, "valid number"),
-            ({"type": "set_params", "params": {"restitution": 0.5}}, "'spring' model has no parameter"),
+            (
+                {"type": "set_params", "params": {"restitution": 0.5}},
+                "restitution is a parameter of model 'string', not of 'spring'",
+            ),
+            ({"type": "set_params", "params": {"bounce": 0.5}}, "'spring' model has no parameter 'bounce'"),
             ({"type": "set_method", "method": "dop853"}, "use one of rattle, rattle4"),
             ({"type": "set_state", "x": [0, 0, 0], "v": [0, 0, 0]}, "x ≠ 0"),
         ]:

@@ -148,12 +148,21 @@ def test_set_model_switches_model_with_defaults_and_given_parameters() -> None:
         ('{"type": "set_model", "model": "spring", "params": {"stiffness": -1}}', "stiffness = -1:"),
         ('{"type": "set_model", "model": "string", "params": {"restitution": 2}}', "restitution"),
         ('{"type": "set_model", "model": "sprung"}', "unknown model 'sprung'; available: ideal, damped"),
-        ('{"type": "set_model", "model": "damped", "params": {"latitude": 1}}', "no parameter 'latitude'"),
+        ('{"type": "set_model", "model": "damped", "params": {"lattitude": 1}}', "no parameter 'lattitude'"),
+        (
+            '{"type": "set_model", "model": "damped", "params": {"latitude": 1}}',
+            "latitude is a parameter of model 'rotating', not of 'damped'; its parameters: length, mass, g, "
+            "damping, drag,",
+        ),
         ('{"type": "set_model", "model": "damped", "params": {"damping": -1}}', "damping = -1:"),
         ('{"type": "set_model", "model": "rotating", "params": {"latitude": 2}}', "latitude = 2:"),
         ('{"type": "set_model", "model": "damped", "params": {"damping": -0.01}}', "damping = -0.01:"),
         ('{"type": "set_model", "model": "damped", "params": {"damping": "a"}}', "valid number"),
-        ('{"type": "set_params", "params": {"damping": 0.1}}', "'ideal' model has no parameter 'damping'"),
+        ('{"type": "set_params", "params": {"dampling": 0.1}}', "'ideal' model has no parameter 'dampling'"),
+        (
+            '{"type": "set_params", "params": {"damping": 0.1}}',
+            "damping is a parameter of model 'damped' (and 'rotating', ",
+        ),
         ('{"type": "set_params", "params": {}}', "at least one"),
     ],
 )

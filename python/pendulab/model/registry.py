@@ -10,6 +10,8 @@ Length l [m], mass m [kg] and g [m/s²] come first in every model; the rest are 
 
 from __future__ import annotations
 
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from .._core import InvalidInputError
@@ -105,19 +107,52 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
         )
 
 
+@dataclass(frozen=True)
+class Elsewhere:
+    """A keyword ``key`` that ``model`` does not have but other models do, the same but for case:
+    ``name`` the parameter's own name, ``owners`` the models whose parameter it is (the registry's
+    order). ``str()`` is the one wording of it — ``pl.Pendulum``, scenario files and the lab's commands:
+    ``damping is a parameter of model 'damped' (and 'rotating', …), not of 'ideal'``, after ``the 'ideal'
+    model has no parameter 'DAMPING' (did you mean 'damping'?); `` for a key in another case."""
+
+    model: str
+    key: str
+    name: str
+    owners: tuple[str, ...]
+
+    def __str__(self) -> str:
+        also = f" (and {', '.join(map(repr, self.owners[1:]))})" if len(self.owners) > 1 else ""
+        where = f"{self.name} is a parameter of model {self.owners[0]!r}{also}, not of {self.model!r}"
+        if self.key != self.name:  # the wrong case: said first, the right name then placed
+            hint = did_you_mean(self.key, [self.name])
+            where = f"the {self.model!r} model has no parameter {self.key!r}{hint}; {where}"
+        return where
+
+
+def elsewhere(
+    model: str, key: str, names: Iterable[str], params: Mapping[str, Iterable[str]] | None = None
+) -> Elsewhere | None:
+    """The other models whose parameter the keyword ``key`` is, which ``model`` (whose keys are
+    ``names``) refuses — None when one of ``names`` is near ``key`` (:func:`pendulab.validate.did_you_mean`
+    says that one) or no other model has it. ``params``: each model's keys by name where the caller
+    takes other keys than the registry's parameters (a scenario file's ``<name>_deg``, the lab's
+    models only); default every model's parameters (:func:`models`)."""
+    if did_you_mean(key, names):
+        return None
+    if params is None:
+        params = {m["name"]: [q["name"] for q in m["params"]] for m in _models()}
+    fold = str(key).casefold()
+    name = next((q for qs in params.values() for q in qs if q.casefold() == fold), None)
+    owners = tuple(m for m, qs in params.items() if m != model and name in set(qs))
+    return Elsewhere(model, str(key), name, owners) if name is not None and owners else None
+
+
 def _not_of_model(model: str, key: str, names: list[str]) -> str:
     """Why ``model`` (whose parameters are ``names``) refuses the keyword ``key``: the nearest of its own
     parameters (:func:`pendulab.validate.did_you_mean`), else the other models whose parameter ``key``
-    is, the same but for case (``DAMPING`` on ``'ideal'``: ``damping`` of ``'damped'``, …)."""
+    is, the same but for case (:func:`elsewhere`)."""
     own = f"its parameters: {', '.join(names)}"
-    hint = did_you_mean(key, names)
-    fold = str(key).casefold()
-    target = next((q["name"] for m in _models() for q in m["params"] if q["name"].casefold() == fold), None)
-    if hint or target is None:
-        return f"the {model!r} model has no parameter {key!r}{hint}; {own}"
-    owners = [m["name"] for m in _models() if target in {q["name"] for q in m["params"]}]
-    also = f" (and {', '.join(map(repr, owners[1:]))})" if len(owners) > 1 else ""
-    where = f"{target} is a parameter of model {owners[0]!r}{also}, not of {model!r}"
-    if key != target:  # the wrong case: said first, the right name then placed
-        where = f"the {model!r} model has no parameter {key!r}{did_you_mean(key, [target])}; {where}"
-    return f"{where}; {own}"
+    other = elsewhere(model, key, names)
+    if other is None:
+        return f"the {model!r} model has no parameter {key!r}{did_you_mean(key, names)}; {own}"
+    return f"{other}; {own}"

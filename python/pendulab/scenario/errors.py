@@ -20,13 +20,15 @@ from pydantic.fields import FieldInfo
 from pydantic_core import ErrorDetails
 
 from .._numbers import shown
+from ..model.registry import elsewhere
 from ..validate import abbreviate, did_you_mean
 from .schema import (
+    _COMMON_KEYS,
+    MODELS,
     SECTIONS,
     ScenarioSpec,
     _degree_keys,
     _model_keys,
-    _models_with,
     _own_params,
     _show,
 )
@@ -127,14 +129,12 @@ def _pendulum_model(data: Any) -> str:
 
 
 def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
-    """An unknown key of ``[pendulum]``: the keys of the chosen model, and which models take it."""
+    """An unknown key of ``[pendulum]``: the nearest key of the chosen model, else the models whose key it
+    is in the words of ``pl.Pendulum`` (:func:`pendulab.model.registry.elsewhere`), and the model's keys."""
     keys = _model_keys(model)
     text = f"unknown key pendulum.{abbreviate(name)} = {_show(value)}"
-    if others := _models_with(name):
-        text += f" (a parameter of the model{'s' if len(others) > 1 else ''} {', '.join(map(repr, others))}"
-        text += f", not of {model!r}: set model = {others[0]!r}?)"
-    else:
-        text += did_you_mean(name, keys)
+    other = elsewhere(model, name, keys, {m: _model_keys(m)[len(_COMMON_KEYS) :] for m in MODELS})
+    text += f": {other}" if other is not None else did_you_mean(name, keys)
     return text + f"; allowed keys in [pendulum] for model {model!r}: {', '.join(keys)}"
 
 

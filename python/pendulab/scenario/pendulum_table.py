@@ -46,11 +46,6 @@ def _model_keys(model: str) -> list[str]:
     return [*_COMMON_KEYS, *own]
 
 
-def _models_with(key: str) -> list[str]:
-    """The models that take ``key`` in ``[pendulum]``."""
-    return [name for name in _MODEL_SPECS if key in _model_keys(name)[len(_COMMON_KEYS) :]]
-
-
 class PendulumSection(_Section):
     """``[pendulum]``: the model and its parameters. Besides length, mass and g, the keys of the chosen
     model are allowed (``pendulab models``; SI units, e.g. ``damping = 0.05`` in 1/s; an angle in rad

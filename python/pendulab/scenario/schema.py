@@ -30,7 +30,6 @@ from .pendulum_table import MODELS as MODELS
 from .pendulum_table import PendulumSection
 from .pendulum_table import _degree_keys as _degree_keys
 from .pendulum_table import _model_keys as _model_keys
-from .pendulum_table import _models_with as _models_with
 from .pendulum_table import _own_params as _own_params
 from .simulation_table import _U64_LIMIT as _U64_LIMIT
 from .simulation_table import SimulationSection

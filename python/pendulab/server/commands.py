@@ -20,6 +20,7 @@ from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError,
 from .._core import LiveSession, models
 from ..integrators import method_names, unknown_method
 from ..model import Pendulum, State
+from ..model.registry import Elsewhere, elsewhere
 from .live_models import OWN_STEPPER_MODELS
 from .notices import CommandError, KeyedValueError, show_value, validation_key, validation_problems
 
@@ -83,6 +84,18 @@ def own_params(model: str) -> list[ParamSpec]:
 def _check_param_names(model: str, names: Any) -> None:
     allowed = [p["name"] for p in own_params(model)]
     unknown = [n for n in names if n not in allowed]
+    if len(unknown) == 1 and (other := _elsewhere(model, unknown[0])) is not None:
+        every = [p["name"] for p in MODEL_SPECS[model]["params"]]
+        key = "parameter_of_other_models" if len(other.owners) > 1 else "parameter_of_other_model"
+        raise KeyedValueError(
+            f"{other}; its parameters: {', '.join(every)}",
+            key,
+            model=model,
+            name=other.name,
+            owner=other.owners[0],
+            available=", ".join(every),
+            **({"others": ", ".join(other.owners[1:])} if len(other.owners) > 1 else {}),
+        )
     if unknown:
         has = f"its parameters: {', '.join(allowed)}" if allowed else "it has none besides length, mass, g"
         words = f"the {model!r} model has no parameter {', '.join(map(repr, unknown))}; {has}"
@@ -90,6 +103,31 @@ def _check_param_names(model: str, names: Any) -> None:
         if allowed:
             raise KeyedValueError(words, "unknown_parameter", **named, available=", ".join(allowed))
         raise KeyedValueError(words, "no_parameters", **named)
+
+
+def of_other_model(words: str, key: str | None, values: dict[str, Any] | None) -> tuple[str, str | None, Any]:
+    """A refusal of the core (``words``, ``key``, ``values``) as the page gets it: the core's refusal of one
+    parameter the model does not have (``unknown_parameter``, ``no_parameters``: ``set_params``) that
+    another lab model has is worded as ``set_model``'s, naming those models (``parameter_of_other_model``,
+    ``parameter_of_other_models``); any other refusal as it is."""
+    if key not in ("unknown_parameter", "no_parameters") or not isinstance(values, dict):
+        return words, key, values
+    model, name = values.get("model"), values.get("name")
+    if not (isinstance(model, str) and model in MODEL_SPECS and isinstance(name, str)):
+        return words, key, values  # the crane mode's parameters: the core's words
+    try:
+        _check_param_names(model, [name])
+    except KeyedValueError as e:
+        if e.key.startswith("parameter_of_other_model"):
+            return str(e), e.key, e.values
+    return words, key, values
+
+
+def _elsewhere(model: str, key: str) -> Elsewhere | None:
+    """The lab's other models whose own parameter ``key`` is (the same but for case), in the words of
+    ``pl.Pendulum`` (:func:`pendulab.model.registry.elsewhere`); None if ``model`` has one like it."""
+    own = {name: [p["name"] for p in own_params(name)] for name in MODEL_SPECS}
+    return elsewhere(model, key, own[model], own)
 
 
 # --- commands -----------------------------------------------------------------------------------------

@@ -104,13 +104,16 @@ export function httpProblem(body: unknown, fallback: string): string {
 
 /** An error notice of the server in the page's language: `server.<key>` of the table filled with the
  *  notice's values when the server keyed it (python/pendulab/server/messages.json), else its English text.
- *  A `model` value (a model's code name) and a `name` that is a parameter's are shown in the page's words for
+ *  A `model` value (a model's code name; `owner` and `others` too) and a `name` that is a parameter's are shown in the page's words for
  *  them (a German page: "Länge l = -1: mindestens 0.001 erlaubt"). */
 export function serverWords(n: { message: string; key?: string; values?: Record<string, string | number> }): string {
   const key = `server.${n.key ?? ''}`;
   if (n.key === undefined || !Object.hasOwn(EN, key)) return n.message;
   const values = { ...(n.values ?? {}) };
   if (typeof values.model === 'string') values.model = modelWords(values.model, values.model);
+  // the models that have a parameter (parameter_of_other_model[s]): each in the page's words too
+  if (typeof values.owner === 'string') values.owner = modelWords(values.owner, values.owner);
+  if (typeof values.others === 'string') values.others = values.others.split(', ').map((m) => modelWords(m, m)).join(', ');
   if (typeof values.name === 'string') values.name = paramWords(values.name, values.name, '')[0];
   // a stopped integration whose cause the engine keyed (`why`: diverged, step_too_small, …): the cause in words too
   const why = `server.${String(values.why)}`;

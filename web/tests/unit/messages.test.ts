@@ -4,7 +4,7 @@
 // file of python/pendulab/examples/scenarios has a title in every table.
 import { describe, expect, it } from 'vitest';
 import messages from '../../../python/pendulab/server/messages.json';
-import { LANGUAGES, httpProblem, scenarioWords, serverWords, setLanguage } from '../../src/i18n';
+import { LANGUAGES, httpProblem, paramWords, scenarioWords, serverWords, setLanguage } from '../../src/i18n';
 import { CRANE_WORDS } from '../../src/i18n/cranewords';
 import { EN } from '../../src/i18n/en';
 import { parseNotice } from '../../src/protocol';
@@ -143,6 +143,20 @@ describe('advice and rarer refusals in every language', () => {
     setLanguage('fr');
     expect(serverWords(n('unknown_parameter', { model: 'damped', name: 'latitude', available: 'damping, amplitude' }))).toMatch(/n’a pas de paramètre .* ; ses paramètres : damping, amplitude$/);
     expect(serverWords(n('not_lab_model', { model: 'sampled_pivot', available: 'ideal' }))).toMatch(/ne tourne pas dans le labo \(utiliser pendulab run\) ; les modèles du labo : ideal$/);
+    setLanguage('en');
+  });
+
+  it('another model\'s parameter names the models that have it, each in the page\'s words', () => {
+    // as pl.Pendulum words it (python/pendulab/model/registry.py Elsewhere); the models as the menu names them
+    const n = (key: string, values: Record<string, string>) => ({ message: 'English', key, values });
+    const one = n('parameter_of_other_model', { model: 'damped', name: 'latitude', owner: 'rotating', available: 'length, mass, g, damping' });
+    const many = n('parameter_of_other_models', { model: 'ideal', name: 'damping', owner: 'damped', others: 'rotating, slewing', available: 'length, mass, g' });
+    expect(serverWords(one)).toBe("latitude is a parameter of model rotating, not of damped; its parameters: length, mass, g, damping");
+    setLanguage('de');
+    expect(serverWords(many)).toBe(`${paramWords('damping', 'damping', '')[0]} ist ein Parameter des Modells Gedämpft und angetrieben (und Auf der drehenden Erde (Foucault), Drehkran), nicht von Ideales Pendel; seine Parameter: length, mass, g`);
+    setLanguage('fr');
+    expect(serverWords(one)).toMatch(/ est un paramètre du modèle Sur la Terre qui tourne \(Foucault\), pas de Amorti et forcé ; ses paramètres : length, mass, g, damping$/);
+    expect(serverWords(one)).not.toMatch(/\{/);
     setLanguage('en');
   });
 

@@ -29,6 +29,8 @@ export const DE_REFUSALS: RefusalsWords = {
   'server.not_lab_model': 'das Modell {model} läuft nicht im Labor (pendulab run verwenden); die Modelle des Labors: {available}',
   'server.unknown_parameter': 'das Modell {model} hat keinen Parameter {name}; seine Parameter: {available}',
   'server.no_parameters': 'das Modell {model} hat keinen Parameter {name}; es hat keine außer Länge, Masse, g',
+  'server.parameter_of_other_model': '{name} ist ein Parameter des Modells {owner}, nicht von {model}; seine Parameter: {available}',
+  'server.parameter_of_other_models': '{name} ist ein Parameter des Modells {owner} (und {others}), nicht von {model}; seine Parameter: {available}',
   'server.still_stepping': 'es wird noch gerechnet: {waiting} Schritte warten (höchstens {most}); auf das Bild warten oder pausieren',
   'server.method_not_for_spring': 'das Verfahren {method} kann das Modell {model} nicht rechnen (es verlässt die Kugel: rattle rechnet Störmer–Verlet (Ordnung 2), rattle4 dessen Triple-Jump-Komposition (Ordnung 4)); eines von {available} wählen',
   'server.method_not_for_string': 'das Verfahren {method} kann das Modell {model} nicht rechnen (seine straffen Phasen brauchen ein Verfahren mit festem Schritt, das TS² einhält); eines von {available} wählen',

@@ -28,6 +28,8 @@ export const EN_REFUSALS = {
   'server.not_lab_model': 'model {model} does not run in the lab (use pendulab run); the lab\'s models: {available}',
   'server.unknown_parameter': 'the {model} model has no parameter {name}; its parameters: {available}',
   'server.no_parameters': 'the {model} model has no parameter {name}; it has none besides length, mass, g',
+  'server.parameter_of_other_model': '{name} is a parameter of model {owner}, not of {model}; its parameters: {available}',
+  'server.parameter_of_other_models': '{name} is a parameter of model {owner} (and {others}), not of {model}; its parameters: {available}',
   'server.still_stepping': 'still stepping: {waiting} steps are waiting to be taken (at most {most}); wait for the frame, or pause',
   'server.method_not_for_spring': 'method {method} cannot run the {model} model (it leaves the sphere: rattle runs Störmer–Verlet (order 2), rattle4 its triple jump (order 4)); use one of {available}',
   'server.method_not_for_string': 'method {method} cannot run the {model} model (its taut phases need a fixed-step method that keeps TS²); use one of {available}',

@@ -29,6 +29,8 @@ export const FR_REFUSALS: RefusalsWords = {
   'server.not_lab_model': 'le modèle {model} ne tourne pas dans le labo (utiliser pendulab run) ; les modèles du labo : {available}',
   'server.unknown_parameter': 'le modèle {model} n’a pas de paramètre {name} ; ses paramètres : {available}',
   'server.no_parameters': 'le modèle {model} n’a pas de paramètre {name} ; il n’en a pas d’autres que longueur, masse, g',
+  'server.parameter_of_other_model': '{name} est un paramètre du modèle {owner}, pas de {model} ; ses paramètres : {available}',
+  'server.parameter_of_other_models': '{name} est un paramètre du modèle {owner} (et {others}), pas de {model} ; ses paramètres : {available}',
   'server.still_stepping': 'calcul en cours : {waiting} pas attendent d’être faits (au plus {most}) ; attendre l’image, ou mettre en pause',
   'server.method_not_for_spring': 'la méthode {method} ne peut pas calculer le modèle {model} (il quitte la sphère : rattle y applique Störmer–Verlet (ordre 2), rattle4 sa composition triple jump (ordre 4)) ; choisir parmi {available}',
   'server.method_not_for_string': 'la méthode {method} ne peut pas calculer le modèle {model} (ses phases tendues demandent une méthode à pas fixe qui préserve TS²) ; choisir parmi {available}',
