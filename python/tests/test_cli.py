@@ -308,6 +308,17 @@ def test_examples_by_name(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> No
     assert code == 0 and out.strip() == "rosette: OK (my own)"
 
 
+def test_fit_help_shows_what_to_type_not_python_types() -> None:
+    """pendulab fit --help names the values of its repeatable and composite options by what to type
+    (typer showed ``--sigma <list[str]>`` and ``--param <list[str]>``)."""
+    code, out, _ = invoke("fit", "--help")
+    assert code == 0
+    flat = " ".join(out.split())
+    for shown in ("--sigma VALUE|KIND=VALUE", "--param NAME=VALUE", "--pivot X,Y,Z"):
+        assert shown in flat, (shown, out)
+    assert "list[" not in out, out
+
+
 def test_version_and_help() -> None:
     """--version prints the version; --help lists every command, run --help every option."""
     code, out, _ = invoke("--version")

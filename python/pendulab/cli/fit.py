@@ -140,18 +140,22 @@ def fit_cmd(
     sigma: Annotated[
         list[str] | None,
         typer.Option(
+            metavar="VALUE|KIND=VALUE",
             help="Noise of one measured value (SI): a number, or KIND=VALUE per data kind (repeatable, "
-            "e.g. positions=0.002, angle=0.01); default: from the residual."
+            "e.g. positions=0.002, angle=0.01); default: from the residual.",
         ),
     ] = None,
     param: Annotated[
         list[str] | None,
         typer.Option(
-            "--param", help="Start or fixed value of a model parameter, NAME=VALUE (SI), repeatable."
+            "--param",
+            metavar="NAME=VALUE",
+            help="Start or fixed value of a model parameter, NAME=VALUE (SI), repeatable.",
         ),
     ] = None,
     pivot: Annotated[
-        str | None, typer.Option(help="Known pivot position in the data's frame, x,y,z in m.")
+        str | None,
+        typer.Option(metavar="X,Y,Z", help="Known pivot position in the data's frame, x,y,z in m."),
     ] = None,
     loss: Annotated[
         str, typer.Option(help="linear, or a robust loss: soft_l1, huber, cauchy, arctan.")
