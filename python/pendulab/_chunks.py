@@ -8,11 +8,11 @@ from __future__ import annotations
 
 import contextlib
 import time
-import warnings
 from collections.abc import Callable
 from typing import Any, Protocol
 
 from ._progress import tqdm
+from ._warn import warn_user
 
 _CHUNK_SECONDS = 0.1
 _PROGRESS_AFTER_STEPS = 5_000_000
@@ -34,14 +34,12 @@ def run_in_chunks(
     solver: ChunkedRun,
     show: bool,
     desc: str,
-    stacklevel: int = 2,
     take_rest: Callable[[], Any] | None = None,
 ) -> tuple[list[Any], bool]:
     """Advances ``solver`` to its end in chunks of about 0.1 s of work (the GIL released inside each),
     updating a tqdm bar (``show``) between chunks. Ctrl-C stops after the current chunk: returns the
-    parts taken so far and True, with a RuntimeWarning (``stacklevel`` as if the caller of this
-    function called :func:`warnings.warn`). ``take_rest`` takes the last part after an interruption
-    (default ``solver.take_samples``)."""
+    parts taken so far and True, with a RuntimeWarning at the user's line (:func:`~._warn.warn_user`).
+    ``take_rest`` takes the last part after an interruption (default ``solver.take_samples``)."""
     parts: list[Any] = []
     interrupted = False
     budget = 10_000
@@ -61,9 +59,8 @@ def run_in_chunks(
         except KeyboardInterrupt:
             interrupted = True
             parts.append(take_rest() if take_rest is not None else solver.take_samples())
-            warnings.warn(
+            warn_user(
                 f"simulation interrupted at t = {solver.t:g} s; returning the samples computed so far",
                 RuntimeWarning,
-                stacklevel=stacklevel + 1,
             )
     return parts, interrupted

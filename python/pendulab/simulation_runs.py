@@ -6,13 +6,13 @@ kept its rod (``_check_drift``, :data:`DRIFT_TOLERANCE`). SI units: t [s], x [m]
 
 from __future__ import annotations
 
-import warnings
 from typing import Any
 
 import numpy as np
 
 from ._chunks import _PROGRESS_AFTER_STEPS, run_in_chunks
 from ._core import ForceSolver, IntegrationError, InvalidInputError, RunOptions, Solver
+from ._warn import warn_user
 from .integrators import DEFAULTS, _check_conserve, _method_table, unknown_method
 from .memory import SAMPLE_BYTES, SAMPLE_COPIES, check_memory, saved_bytes_cap
 from .model import Pendulum, State
@@ -42,7 +42,6 @@ def _run_string(pendulum: Pendulum, state: State, run: RunSettings) -> Trajector
         t0=run.t0,
         progress=run.progress,
         max_saved_bytes=run.max_saved_bytes,
-        _stacklevel=4,
     )
 
 
@@ -97,7 +96,7 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings, halved: boo
         solver = Solver(pendulum.spec, state.pair, options)
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = run.progress if run.progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
-    parts, interrupted = run_in_chunks(solver, show, f"{method} to t={t_end:g} s", stacklevel=3)
+    parts, interrupted = run_in_chunks(solver, show, f"{method} to t={t_end:g} s")
     t = np.concatenate([p[0] for p in parts])
     x = np.concatenate([p[1] for p in parts])
     v = np.concatenate([p[2] for p in parts])
@@ -138,6 +137,6 @@ def _check_drift(pendulum: Pendulum, t: Any, x: Any, v: Any, method: str, projec
         f"tolerance {DRIFT_TOLERANCE:g}; {how} (drift='warn' keeps the run with a warning)"
     )
     if drift == "warn":
-        warnings.warn(msg, RuntimeWarning, stacklevel=4)
+        warn_user(msg, RuntimeWarning)
         return
     raise IntegrationError(msg)

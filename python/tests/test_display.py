@@ -74,8 +74,11 @@ def test_degrees_on_request(pendulum: pl.Pendulum) -> None:
 
 
 def test_radians_stay_the_default_but_a_big_theta_is_warned_about(pendulum: pl.Pendulum) -> None:
-    with pytest.warns(UserWarning, match="theta_deg=60"):
+    with pytest.warns(UserWarning, match="theta_deg=60") as said:
         s = pendulum.state_from_angles(theta=60)
+    with pytest.warns(UserWarning, match="theta_deg=7.0") as more:
+        pl.states_from_angles(pendulum, theta=[0.5, 7.0])  # the same check, one start at a time
+    assert [w.filename for w in [*said, *more]] == [__file__, __file__]  # the caller's line
     assert s.angles()[0] == pytest.approx(abs(math.remainder(60.0, 2 * math.pi)), abs=1e-9)
     with warnings.catch_warnings():
         warnings.simplefilter("error")

@@ -167,8 +167,9 @@ def test_non_finite_rows_are_reported_per_row(pendulum: pl.Pendulum) -> None:
     bad = states.copy()
     bad[1, 4] = np.nan
     bad[3, 0] = np.inf
-    with pytest.warns(RuntimeWarning, match=r"2 of 4 start rows are not finite \(rows 1, 3\)"):
+    with pytest.warns(RuntimeWarning, match=r"2 of 4 start rows are not finite \(rows 1, 3\)") as said:
         res = pl.simulate_ensemble(pendulum, bad, t_end=0.5, settle_angle=0.1, damping=[0.1, 0.2, 0.3, 0.4])
+    assert [w.filename for w in said] == [__file__]  # the caller's line
     ref = pl.simulate_ensemble(pendulum, states[[0, 2]], t_end=0.5, settle_angle=0.1, damping=[0.1, 0.3])
     assert list(res.invalid_rows) == [1, 3] and res.x.shape == (4, 2, 3)
     assert np.isnan(res.x[[1, 3]]).all() and np.array_equal(res.x[[0, 2]], ref.x)

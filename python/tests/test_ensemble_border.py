@@ -157,8 +157,9 @@ def test_ctrl_c_stops_a_long_run_with_the_samples_reached(
         importlib.import_module("pendulab.ensemble.run"), "EnsembleRun", _InterruptedWhileWaiting
     )
     t0 = time.perf_counter()
-    with pytest.warns(RuntimeWarning, match="interrupted"):
+    with pytest.warns(RuntimeWarning, match="interrupted") as said:
         res = pl.simulate_ensemble(pendulum, states, total * dt, dt=dt, save_every=every, progress=False)
+    assert [w.filename for w in said] == [__file__]  # the caller's line
     assert time.perf_counter() - t0 < 60.0  # 2·10⁹ trajectory-steps would take far longer
     assert res.interrupted and res.steps < total
     assert len(res.t) == 1 + res.steps // every and np.all(np.isfinite(res.x))

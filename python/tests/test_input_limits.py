@@ -140,13 +140,18 @@ def test_an_unprojected_run_that_leaves_ts2_stops_with_advice() -> None:
     with pytest.raises(pl.IntegrationError, match="project=True") as e:
         pl.simulate(p, s, 1.0, method="dop853", project=False, rtol=1e-6, atol=1e-6)
     assert "1e-02" in str(e.value) or "0.01" in str(e.value)
-    with pytest.warns(RuntimeWarning, match="left TS²"):
+    with pytest.warns(RuntimeWarning, match="left TS²") as said:
         tr = pl.simulate(p, s, 1.0, method="dop853", project=False, rtol=1e-6, atol=1e-6, drift="warn")
+    assert [w.filename for w in said] == [__file__]  # the caller's line
     assert np.max(np.abs(tr.constraint_error)) > 1e-2
     with pytest.raises(pl.IntegrationError, match="'rattle'"):
         pl.simulate(
             pl.Pendulum(), pl.Pendulum().state_from_angles(2.0, phi_dot=3.0), 50.0, method="rk4", dt=0.1
         )
+    with pytest.warns(RuntimeWarning, match="left TS²") as said:  # simulate inside simulate: the same line
+        start = pl.Pendulum().state_from_angles(2.0, phi_dot=3.0)
+        pl.simulate(pl.Pendulum(), start, 50.0, method="rk4", dt=0.1, drift="warn", error_estimate=True)
+    assert [w.filename for w in said] == [__file__]
     # within the tolerance nothing is said: rk4 at a small step
     pl.simulate(pl.Pendulum(), pl.Pendulum().state_from_angles(1.0, phi_dot=1.0), 1.0, method="rk4", dt=1e-3)
 

@@ -95,15 +95,25 @@ def test_saving_is_separate_from_stepping(pendulum: pl.Pendulum, rosette: pl.Sta
     assert np.max(np.abs(tr.constraint_error)) < 1e-14
 
 
-def test_ctrl_c_returns_what_was_computed(pendulum: pl.Pendulum, rosette: pl.State) -> None:
+@pytest.mark.parametrize("estimate", [False, True], ids=["plain", "error_estimate"])
+def test_ctrl_c_returns_what_was_computed(pendulum: pl.Pendulum, rosette: pl.State, estimate: bool) -> None:
     """SIGINT during a long run stops it cleanly: a warning, interrupted=True, samples up to then."""
     timer = threading.Timer(0.3, lambda: os.kill(os.getpid(), signal.SIGINT))
     timer.start()
     try:
-        with pytest.warns(RuntimeWarning, match="interrupted"):
-            tr = pl.simulate(pendulum, rosette, t_end=1e6, dt=1e-4, save_every=10_000, progress=False)
+        with pytest.warns(RuntimeWarning, match="interrupted") as said:
+            tr = pl.simulate(
+                pendulum,
+                rosette,
+                t_end=1e6,
+                dt=1e-4,
+                save_every=10_000,
+                progress=False,
+                error_estimate=estimate,
+            )
     finally:
         timer.cancel()
+    assert [w.filename for w in said if "interrupted" in str(w.message)] == [__file__]  # the caller's line
     assert tr.interrupted
     assert 0 < tr.t[-1] < 1e6 and len(tr) > 1
     assert np.all(np.isfinite(tr.x))

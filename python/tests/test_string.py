@@ -197,8 +197,9 @@ def test_ctrl_c_returns_the_run_so_far_flagged_interrupted(monkeypatch: pytest.M
     p = pl.Pendulum(model="string", restitution=1.0)
     s0 = p.state_from_angles(0.2, 0.0, 5.5, 3.0)
     _patch_runner(monkeypatch, interrupt_after=4)
-    with pytest.warns(RuntimeWarning, match="interrupted at t = 13 s"):
+    with pytest.warns(RuntimeWarning, match="interrupted at t = 13 s") as said:
         tr = pl.simulate(p, s0, 20.0, method="rattle", dt=1e-3)
+    assert [w.filename for w in said] == [__file__]  # the caller's line
     assert tr.interrupted and tr.taut is not None and tr.events is not None
     # chunks of 10000, 1000, 1000, 1000 steps: to t = 13 s, the samples and events of the full run there
     one = _one_call(p, s0, 20.0, "rattle", 1e-3)

@@ -141,8 +141,11 @@ def test_a_sweep_that_records_no_arithmetic_resumes_with_a_warning(
     (out / "_manifest.json").write_text(json.dumps(m))
     drop_chunk(out, 3)
     calls = counting(monkeypatch)
-    with pytest.warns(RuntimeWarning, match=r"does not record the arithmetic .* the remaining chunks use"):
+    with pytest.warns(
+        RuntimeWarning, match=r"does not record the arithmetic .* the remaining chunks use"
+    ) as w:
         again = pl.sweep(GRID, QS, out=out, resume=True, **KW)
+    assert [x.filename for x in w if "does not record" in str(x.message)] == [__file__]  # the caller's line
     assert calls == [1] and same(first, again)  # written and resumed with this machine's "auto"
     assert "arithmetic" not in again.metadata["spec"] and "arithmetic" not in manifest(out)["spec"]
     assert pl.sweep(GRID, QS, out=out, resume=True, **KW).stats["computed"] == 0  # no warning: nothing to do

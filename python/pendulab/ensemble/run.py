@@ -17,7 +17,6 @@ with ``save_every`` the saved samples up to the stop, with the final states only
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import dataclass
 from typing import Any
 
@@ -26,6 +25,7 @@ import numpy as np
 from .. import validate as limits
 from .._core import EnsembleRun, EnsembleSpec, InvalidInputError, RunOptions
 from .._progress import tqdm
+from .._warn import warn_user
 from ..integrators import check_arithmetic, method_names, unknown_method
 from ..memory import check_memory
 from ..model import FloatArray, Pendulum
@@ -244,11 +244,10 @@ def _plan(
     settle = None if settle_angle is None else limits.number("settle_angle", settle_angle, _SETTLE)
     if invalid.size:
         rows = ", ".join(str(i) for i in invalid[:10]) + (", …" if invalid.size > 10 else "")
-        warnings.warn(
+        warn_user(
             f"{invalid.size} of {n} start rows are not finite (rows {rows}): not integrated, their "
             "results are NaN (EnsembleResult.invalid_rows)",
             RuntimeWarning,
-            stacklevel=3,
         )
     summary = True if summary is None else bool(summary)
     return _Plan(
@@ -320,7 +319,7 @@ def _result(
     """The kernel's output as an ``EnsembleResult``: the summary with its drifts and sway, the run's
     metadata."""
     if interrupted:
-        warnings.warn("interrupted: returning the states reached so far", RuntimeWarning, stacklevel=3)
+        warn_user("interrupted: returning the states reached so far", RuntimeWarning)
     summ = None
     if plan.summary:
         summ = {k: out[k] for k in ("z_min", "z_max", "e_min", "e_max", "j3_min", "j3_max", "crossings")}

@@ -12,7 +12,6 @@ power [W].
 from __future__ import annotations
 
 import math
-import warnings
 from collections.abc import Callable
 from typing import Any
 
@@ -21,6 +20,7 @@ import numpy as np
 from .._core import InvalidInputError, ModelSpec
 from .._core import diagnostics as _diagnostics
 from .._core import models as _models
+from .._warn import warn_user
 from ..display import Row, html_table
 from ..validate import COMMON, array, invalid
 from ..validate import number as checked
@@ -291,11 +291,10 @@ class Pendulum:
             )
         )
         if theta is not None and abs(values[0]) > 2.0 * math.pi:
-            warnings.warn(
+            warn_user(
                 f"theta = {theta!r} rad is more than 2π; angles are in radians (use theta_deg={theta!r} "
                 "for degrees)",
                 UserWarning,
-                stacklevel=2,
             )
         return state_from_angle_values(self._spec, values)
 

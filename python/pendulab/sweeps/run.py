@@ -32,7 +32,6 @@ from __future__ import annotations
 import math
 import os
 import time
-import warnings
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -41,6 +40,7 @@ import numpy as np
 from .. import _core
 from .. import validate as limits
 from .._progress import tqdm
+from .._warn import warn_user
 from ..model import Pendulum
 from .backends import Dask, Threads, connect, drive
 from .compute import (
@@ -219,7 +219,7 @@ def sweep(
     n_chunks = math.ceil(d.n / size)
     todo = [i for i in range(n_chunks) if not target.has(i)]
     if todo and unrecorded is not None:
-        warnings.warn(unrecorded, RuntimeWarning, stacklevel=2)
+        warn_user(unrecorded, RuntimeWarning)
     stats: dict[str, Any] = {"chunks": n_chunks, "chunk_size": size, "skipped": n_chunks - len(todo)}
     stats["computed"] = 0
     if progress is None:

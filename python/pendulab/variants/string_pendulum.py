@@ -65,7 +65,6 @@ def simulate_string(
     t0: float = 0.0,
     progress: bool | None = None,
     max_saved_bytes: int | None = None,
-    _stacklevel: int = 2,
 ) -> Trajectory:
     """Simulates a ``model="string"`` pendulum (called by :func:`pendulab.simulate`) with step ``dt``
     [s] of the grid t0 + k·dt in the taut phases (default 1e-3 s). Samples: every ``save_every``-th
@@ -101,7 +100,6 @@ def simulate_string(
         runner,
         show,
         f"{method} to t={t_end:g} s",
-        stacklevel=_stacklevel,
         take_rest=lambda: runner.take_samples(all=True),
     )
     options: dict[str, Any] = {"dt": dt, "t0": t0, "t_end": t_end}
