@@ -6,7 +6,11 @@ to bottom in that environment's kernel (nbclient, from the extra) — not the de
 
 Each notebook must finish within ``--limit`` seconds (default 20, issue 31), measured from its first
 cell to the end of its last (the kernel's start, 2–3 s, is printed apart and not counted); a slower
-notebook fails the run with its name, its time and its slowest cell. Every notebook is run and reported
+notebook fails the run with its name, its time and its slowest cell. So does a deprecation a notebook
+teaches (as pytest's warnings-as-errors would, and test_tour.py does in the development environment): a
+``DeprecationWarning``, ``PendingDeprecationWarning`` or ``FutureWarning`` raised for a cell's code or
+for pendulab's (:data:`WATCH`, run first in the kernel) names the cell, its line and the warning; one
+that another library raises for its own code is only shown. Every notebook is run and reported
 before the verdict, so one run names every failure. What is compared with the limit is the wall time,
 unless the machine is busier than its CPUs (load average, ``os.getloadavg``, above the CPU count, before
 or after the notebook): then the wall time measures the other work, and the kernel's CPU time (all its
@@ -30,12 +34,39 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+from typing import Any
 
 REPO = Path(__file__).resolve().parents[1]
 TOUR = REPO / "docs" / "tour"
 INSTALL_TIMEOUT = 900.0  # s, the README's install line (pip, from a warm cache about a minute)
 CELL_TIMEOUT = 60  # s, one cell (nbclient stops the notebook there)
 INSTALL_LINE = 'pip install "$(ls dist/pendulab-*.whl)[tour]"'
+# Run first in the kernel (in the cell that reads the CPU time before the notebook's first): warnings are
+# shown (deprecations too), and a deprecation raised for a cell's code (where a deprecation's stacklevel
+# points) or for pendulab's also prints a line starting with DEPRECATED (on stderr, in the cell's
+# output), which fails the notebook (test_tour.py uses the same two).
+DEPRECATED = "pendulab-docs deprecated:"
+WATCH = f"""
+import os as _os, sys as _sys, warnings as _warnings
+import pendulab as _pendulab
+
+def _watch(show, package, cells):
+    def record(message, category, filename, lineno, file=None, line=None):
+        show(message, category, filename, lineno, file, line)
+        own = filename.startswith(package) or _os.path.dirname(filename) == cells
+        if own and issubclass(category, (DeprecationWarning, PendingDeprecationWarning, FutureWarning)):
+            print("{DEPRECATED}", f"line {{lineno}}: {{category.__name__}}: {{message}}", file=_sys.stderr)
+    return record
+
+for _category in (DeprecationWarning, PendingDeprecationWarning, FutureWarning):  # shown, not ignored
+    _warnings.filterwarnings("default", category=_category)
+_warnings.showwarning = _watch(
+    _warnings.showwarning,
+    _os.path.dirname(_pendulab.__file__) + _os.sep,
+    _os.path.dirname(get_ipython().compile.get_code_name("", "", 0)),
+)
+del _watch, _category
+"""
 WORDS = {"wall": "(wall time)", "cpu": "(the kernel's CPU time: the machine is busier than its CPUs)"}
 
 # Run by the fresh environment's python: one notebook, timed cell by cell; prints one JSON line.
@@ -46,14 +77,15 @@ from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError
 
 path, work, cell_timeout = sys.argv[1], sys.argv[2], float(sys.argv[3])
+watch, marker = sys.argv[4], sys.argv[5]  # WATCH and DEPRECATED
 nb = nbformat.read(path, as_version=4)
 # the kernel's CPU time (all its threads, and its children that have ended: a Dask cluster's workers)
-# read by a cell before the notebook's first and one after its last
+# read by a cell before the notebook's first and one after its last; the first also runs WATCH
 PROBE = ("import resource as _r\n"
          "print(sum(getattr(_r.getrusage(w), f) for w in (_r.RUSAGE_SELF, _r.RUSAGE_CHILDREN) "
          "for f in ('ru_utime', 'ru_stime')))")
 n = len(nb.cells)
-nb.cells = [nbformat.v4.new_code_cell(PROBE)] + nb.cells + [nbformat.v4.new_code_cell(PROBE)]
+nb.cells = [nbformat.v4.new_code_cell(watch + PROBE)] + nb.cells + [nbformat.v4.new_code_cell(PROBE)]
 marks = {}
 def started(cell, cell_index, **_):
     marks[cell_index] = time.perf_counter()
@@ -71,12 +103,18 @@ except CellExecutionError as e:
 except Exception as e:  # a timeout, a dead kernel: named, not a traceback of nbclient
     error = f"{type(e).__name__}: {e}"[-3000:]
 t1 = time.perf_counter()
+taught = [f"cell {i}, {line.removeprefix(marker).strip()}" for i, cell in enumerate(nb.cells[1 : n + 1], 1)
+          for out in cell.get("outputs", []) if out.get("name") == "stderr"
+          for line in out.get("text", "").splitlines() if line.startswith(marker)]
+if taught:
+    said = "uses what is deprecated (write what the warning says):\n" + "\n".join(taught)
+    error = said if error is None else f"{error}\n{said}"
 cells = {i: marks[("end", i)] - marks[i] for i in range(1, n + 1) if i in marks and ("end", i) in marks}
 first, last = marks.get(1, t1), marks.get(("end", n), t1)
-def cpu(cell):
+def cpu(cell):  # its stdout (a warning the first cell shows goes to stderr)
     try:
-        return float(cell.outputs[0]["text"])
-    except (IndexError, KeyError, ValueError):
+        return float(next(o for o in cell.outputs if o.get("name") == "stdout")["text"])
+    except (StopIteration, KeyError, ValueError):
         return float("nan")
 slow = max(cells, key=cells.get) if cells else None
 print(json.dumps({"seconds": last - first, "cpu": cpu(nb.cells[-1]) - cpu(nb.cells[0]),
@@ -120,6 +158,26 @@ def install(wheel: Path, tmp: Path, env: dict[str, str]) -> Path:
     return venv
 
 
+def run_notebook(py: str, path: Path, env: dict[str, str]) -> dict[str, Any]:
+    """The notebook ``path`` run by :data:`RUNNER` in ``py``'s environment, in its folder: its times,
+    slowest cell and ``error`` (None, or what failed: a cell, a timeout, a deprecation it teaches)."""
+    p = subprocess.run(
+        [py, "-c", RUNNER, str(path), str(path.parent), str(CELL_TIMEOUT), WATCH, DEPRECATED],
+        cwd=path.parent,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=30 * CELL_TIMEOUT,
+        check=False,
+    )
+    lines = [line for line in p.stdout.splitlines() if line.startswith("{")]
+    if p.returncode != 0 or not lines:
+        nan = float("nan")
+        return {"seconds": nan, "cpu": nan, "kernel_start": nan, "error": p.stderr[-3000:] or "no result"}
+    out: dict[str, Any] = json.loads(lines[-1])
+    return out
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("dist", nargs="?", type=Path, default=REPO / "dist")
@@ -161,26 +219,7 @@ def main() -> None:
             work.mkdir(parents=True)
             shutil.copy2(nb, work / nb.name)
             load = os.getloadavg()[0]
-            p = subprocess.run(
-                [py, "-c", RUNNER, str(work / nb.name), str(work), str(CELL_TIMEOUT)],
-                cwd=work,
-                env=env,
-                capture_output=True,
-                text=True,
-                timeout=30 * CELL_TIMEOUT,
-                check=False,
-            )
-            lines = [line for line in p.stdout.splitlines() if line.startswith("{")]
-            if p.returncode != 0 or not lines:
-                nan = float("nan")
-                r = {
-                    "seconds": nan,
-                    "cpu": nan,
-                    "kernel_start": nan,
-                    "error": p.stderr[-3000:] or "no result",
-                }
-            else:
-                r = json.loads(lines[-1])
+            r = run_notebook(py, work / nb.name, env)
             load = max(load, os.getloadavg()[0])
             by = args.measure if args.measure != "auto" else ("cpu" if load > cpus else "wall")
             r |= {"name": nb.name, "load": load, "by": by, "time": r["cpu"] if by == "cpu" else r["seconds"]}

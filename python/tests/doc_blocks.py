@@ -53,12 +53,14 @@ imported stay imported: NumPy, SciPy and the core cannot be loaded twice in one 
 
 from __future__ import annotations
 
+import ctypes
 import os
 import random
 import re
 import signal
 import subprocess
 import sys
+import threading
 import warnings
 from collections.abc import Iterator
 from contextlib import ExitStack, contextmanager
@@ -193,7 +195,8 @@ def isolated() -> Iterator[None]:
             sys.path[:] = path
             sys.stdin, sys.stdout, sys.stderr = streams
             for s, handler in handlers.items():
-                signal.signal(s, handler)
+                if signal.getsignal(s) is not handler:  # signal.signal: the main thread only
+                    signal.signal(s, handler)
             os.umask(umask)
             np.random.set_state(np_random)
             random.setstate(py_random)
@@ -204,23 +207,64 @@ class TooLong(Exception):
     an ``OSError``, which the command line reports as a user's ``error:``, as a transcript may show)."""
 
 
+def _expired(message: str) -> type[TooLong]:
+    """A :class:`TooLong` that says ``message`` when raised without arguments (as
+    ``PyThreadState_SetAsyncExc`` raises the class it is given)."""
+
+    class Expired(TooLong):
+        def __init__(self, *args: object) -> None:
+            super().__init__(*(args or (message,)))
+
+    Expired.__name__ = Expired.__qualname__ = "TooLong"
+    return Expired
+
+
 @contextmanager
 def time_limit(what: str) -> Iterator[None]:
     """Raises :class:`TooLong` (naming ``what``) in this thread if the body runs longer than
-    :data:`TIMEOUT` s (``SIGALRM``: the main thread, on a POSIX system; the core gives Python a chance
-    to act on signals between its chunks of work)."""
+    :data:`TIMEOUT` s. In the main thread by ``SIGALRM`` (on a POSIX system), which also ends a blocking
+    call such as ``time.sleep`` (the core gives Python a chance to act on signals between its chunks of
+    work). In any other thread (a runner that runs tests in threads; signals only reach the main thread)
+    a timer thread raises it in this one (``PyThreadState_SetAsyncExc``) at the next line of Python it
+    runs: a blocking call ends first."""
     limit = TIMEOUT
+    message = f"{what} did not finish within {limit:g} s"
+    if threading.current_thread() is threading.main_thread():
 
-    def too_long(signum: int, frame: object) -> None:
-        raise TooLong(f"{what} did not finish within {limit:g} s")
+        def too_long(signum: int, frame: object) -> None:
+            raise TooLong(message)
 
-    before = signal.signal(signal.SIGALRM, too_long)
-    signal.setitimer(signal.ITIMER_REAL, limit)
+        before = signal.signal(signal.SIGALRM, too_long)
+        signal.setitimer(signal.ITIMER_REAL, limit)
+        try:
+            yield
+        finally:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, before)
+        return
+    me, lock, state = threading.get_ident(), threading.Lock(), {"running": True, "fired": False}
+
+    def expire() -> None:
+        with lock:  # not once the body has ended: the exception would land in whatever runs next
+            if state["running"]:
+                state["fired"] = True
+                ctypes.pythonapi.PyThreadState_SetAsyncExc(
+                    ctypes.c_ulong(me), ctypes.py_object(_expired(message))
+                )
+
+    timer = threading.Timer(limit, expire)
+    timer.daemon = True
+    timer.start()
     try:
         yield
     finally:
-        signal.setitimer(signal.ITIMER_REAL, 0)
-        signal.signal(signal.SIGALRM, before)
+        with lock:
+            state["running"] = False
+        timer.cancel()
+        if state["fired"]:  # still pending if the body ended in between: taken back (NULL), raised below
+            ctypes.pythonapi.PyThreadState_SetAsyncExc(ctypes.c_ulong(me), None)
+    if state["fired"]:
+        raise TooLong(message)
 
 
 _PACKAGE = str(Path(pendulab.__file__).parent)

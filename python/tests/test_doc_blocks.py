@@ -9,6 +9,7 @@ import random
 import re
 import signal
 import sys
+import threading
 import time
 import tomllib
 import warnings
@@ -151,6 +152,54 @@ def test_the_python_blocks_of_a_page_have_a_time_limit(
     with pytest.raises(TooLong, match=r"the python blocks of slow\.md did not finish within 0\.2 s"):
         exec_in_order([Block("slow.md", 1, "python", "import time\ntime.sleep(30)", "")], workdir(tmp_path))
     assert time.perf_counter() - start < 10
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["while True:\n    pass", "import time\nwhile True:\n    time.sleep(0.01)"],
+    ids=["busy", "sleeps"],
+)
+def test_the_time_limit_holds_off_the_main_thread(
+    text: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    # a runner that runs tests in threads: SIGALRM reaches the main thread only (signal.signal refuses)
+    monkeypatch.setattr(doc_blocks, "TIMEOUT", 0.2)
+    said: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            exec_in_order([Block("slow.md", 3, "python", text, "")], workdir(tmp_path))
+        except BaseException as e:
+            said.append(e)
+
+    start = time.perf_counter()
+    thread = threading.Thread(target=run)
+    thread.start()
+    thread.join(30)
+    assert not thread.is_alive() and time.perf_counter() - start < 10
+    assert len(said) == 1 and isinstance(said[0], TooLong), said
+    assert str(said[0]) == "the python blocks of slow.md did not finish within 0.2 s"
+    assert "FAILED: the block at slow.md:3" in said[0].__notes__
+
+
+def test_a_body_that_ends_in_time_off_the_main_thread_is_not_interrupted_later(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    monkeypatch.setattr(doc_blocks, "TIMEOUT", 0.2)
+    said: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            with doc_blocks.time_limit("quick"):
+                pass
+            time.sleep(0.5)  # past the limit: the timer was stopped with the body
+        except BaseException as e:
+            said.append(e)
+
+    thread = threading.Thread(target=run)
+    thread.start()
+    thread.join(30)
+    assert said == []
 
 
 # -------------------------------------------------------------------------------------------- toml

@@ -12,13 +12,15 @@ environment with the wheel's ``tour`` extra, each within 20 s (``tools/check_tou
 
 from __future__ import annotations
 
+import os
 import re
+import sys
 import time
 import tomllib
 from pathlib import Path
 
 import pytest
-from conftest import REPO
+from conftest import REPO, load_tool
 
 nbformat = pytest.importorskip("nbformat")
 nbclient = pytest.importorskip("nbclient")
@@ -86,31 +88,11 @@ def test_notebook_is_stored_without_outputs(path: Path):
 
 
 # Run first, in the kernel (a cell of its own, not stored): warnings are shown (deprecations too), and a
-# deprecation raised for a cell's code (where a deprecation's stacklevel points) or for pendulab's also
-# prints a line starting with DEPRECATED (on stderr, in the cell's output), which fails the notebook (as
-# doc_blocks.no_deprecations does for the pages).
-DEPRECATED = "pendulab-docs deprecated:"
-WATCH = f"""
-import os as _os, sys as _sys, warnings as _warnings
-import pendulab as _pendulab
-
-def _watch(show, package, cells):
-    def record(message, category, filename, lineno, file=None, line=None):
-        show(message, category, filename, lineno, file, line)
-        own = filename.startswith(package) or _os.path.dirname(filename) == cells
-        if own and issubclass(category, (DeprecationWarning, PendingDeprecationWarning, FutureWarning)):
-            print("{DEPRECATED}", f"line {{lineno}}: {{category.__name__}}: {{message}}", file=_sys.stderr)
-    return record
-
-for _category in (DeprecationWarning, PendingDeprecationWarning, FutureWarning):  # shown, not ignored
-    _warnings.filterwarnings("default", category=_category)
-_warnings.showwarning = _watch(
-    _warnings.showwarning,
-    _os.path.dirname(_pendulab.__file__),
-    _os.path.dirname(get_ipython().compile.get_code_name("", "", 0)),
-)
-del _watch, _category
-"""
+# deprecation raised for a cell's code or for pendulab's prints a line starting with DEPRECATED, which
+# fails the notebook (as doc_blocks.no_deprecations does for the pages). The same two as
+# tools/check_tour.py, which runs the tour against the wheel.
+CHECK_TOUR = load_tool("check_tour")
+WATCH, DEPRECATED = CHECK_TOUR.WATCH, CHECK_TOUR.DEPRECATED
 
 
 def deprecations(nb: nbformat.NotebookNode, folder: Path) -> list[str]:
@@ -157,3 +139,21 @@ def test_a_deprecated_call_in_a_notebook_is_found(tmp_path: Path):
     assert [f.split(":")[0] for f in found] == ["cell 3, line 1", "cell 4, line 1"]
     assert "DeprecationWarning: Crane.simulate(dt=...) is deprecated" in found[0]
     assert found[1].endswith("PendingDeprecationWarning: old")
+
+
+def test_the_wheels_tour_run_fails_a_notebook_that_uses_a_deprecated_call(tmp_path: Path):
+    # tools/check_tour.py's run of one notebook (here in this environment, not a fresh one with the wheel)
+    cells = [
+        "import warnings\nfrom pendulab import crane\nc = crane.Crane(10.0)",
+        "warnings.warn('shown on purpose', UserWarning)\n"
+        "warnings.warn_explicit('theirs', FutureWarning, warnings.__file__, 1)",  # another library's own
+        "x = 1\nrun = c.simulate(1.0, sway=(0.1, 0.0), dt=0.1)",
+    ]
+    path = tmp_path / "old.ipynb"
+    nbformat.write(nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells]), path)
+    r = CHECK_TOUR.run_notebook(sys.executable, path, {**os.environ, "MPLBACKEND": "Agg"})
+    assert r["error"] is not None and r["error"].startswith("uses what is deprecated"), r["error"]
+    said = r["error"].splitlines()[1:]
+    assert len(said) == 1 and said[0].startswith("cell 3, line 2: DeprecationWarning: Crane.simulate(dt=")
+    path.write_text(path.read_text().replace("dt=0.1", "output_spacing=0.1"))
+    assert CHECK_TOUR.run_notebook(sys.executable, path, {**os.environ, "MPLBACKEND": "Agg"})["error"] is None
