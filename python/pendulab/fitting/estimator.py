@@ -38,6 +38,7 @@ from ..variants.spring import SwingingSpring
 from .body import BodyFit, pendulum_of
 from .data import Observations, observations
 from .inference import conclude, robust_weights
+from .mirror_sign import broken_by
 from .multistart import (
     DISSIPATION,
     FLOOR_CHI2,
@@ -160,6 +161,7 @@ def fit(
         interrupted=interrupted,
         message=message,
         mirror_blind=setup.mirror_blind,
+        mirror_told=setup.mirror_told,
         planar=setup.planar,
         n_starts=n_starts,
     )
@@ -173,7 +175,8 @@ class _Setup:
     """What the search needs from the data and the settings: the free parameters' names, whether the
     pendulum is a hinge, the noise floor [each kind's unit] and spread of every data kind, the starting
     values (SI units, every parameter) and the starts of the search, and whether the data are blind
-    to the mirror y → −y."""
+    to the mirror y → −y (``mirror_told``: the data blind to y, what tells the motion from its image
+    where the model is no symmetric one: mirror_sign.py)."""
 
     obs: Observations
     free: list[str]
@@ -183,6 +186,7 @@ class _Setup:
     start: dict[str, Any]
     starts: list[dict[str, Any]]
     mirror_blind: bool
+    mirror_told: str = ""
 
     @classmethod
     def read(
@@ -208,8 +212,9 @@ class _Setup:
         start = starting_values(obs, values, set(free))
         if planar and "planar_angle" in obs.values:
             start |= signed_start(obs, start, set(free))
-        starts, mirror_blind = search_starts(obs, start, free)
-        return cls(obs, free, planar, floors, spreads, start, starts, mirror_blind)
+        starts, blind = search_starts(obs, start, free)
+        told = broken_by(model, start, free) if blind else ""  # the model's own mirror symmetry
+        return cls(obs, free, planar, floors, spreads, start, starts, blind and not told, told)
 
 
 def _free_of(

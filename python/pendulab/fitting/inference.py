@@ -13,7 +13,9 @@
   taken from it, or the parameters not determined (short_record.py), warned;
 - for data blind to the mirror y → −y (positions seen as x, z) with the sideways motion near its
   plane, the bars of φ₀ and φ̇₀ from their profile likelihood, and a swing consistent with a planar
-  one said (mirror.py).
+  one said (mirror.py); with a model the mirror is no symmetry of (a rotating frame, a pivot moving
+  along y: mirror_sign.py), the refit of the fit's mirror image decides whether the sign of the
+  sideways motion is determined.
 
 Ctrl-C during the polish or the block check ends that step and skips the profiles (their parameters
 not determined, the reason naming Ctrl-C), as Ctrl-C in the search returns the best values so far:
@@ -43,6 +45,7 @@ from .goodness import EXACT, Goodness, ar1_rho, check_kind, findings
 from .goodness import misfit as misfit_found
 from .identify import Correlation, Identifiability, analyse, jacobian
 from .mirror import check_mirror
+from .mirror_sign import check_sign
 from .problem import POSITIVE
 from .result import FitResult
 from .search import Search, TimeUp, polish
@@ -78,6 +81,7 @@ def conclude(
     message: str,
     mirror_blind: bool,
     planar: bool,
+    mirror_told: str = "",
     n_starts: int,
 ) -> FitResult:
     """The polish, the error analysis (identify.py) with the goodness of fit (goodness.py), the
@@ -152,6 +156,8 @@ def conclude(
     said += check_short_record(res, search, checkable, ctrl_c=bool(stopped))
     # data blind to the mirror y -> -y near the plane: the profile likelihood gives φ₀'s and φ̇₀'s bars
     said += check_mirror(res, search, checkable, ctrl_c=bool(stopped))
+    # x, z data and a model the mirror is no symmetry of: does the term that breaks it tell the sign?
+    said += check_sign(res, search, mirror_told, checkable, ctrl_c=bool(stopped))
     # stopped short anywhere (Ctrl-C, or a step the time limit cut or skipped): some results incomplete
     res.interrupted = interrupted or bool(stopped) or search.clock.ctrl_c or search.clock.ran_out
     unsaid = [s for s in stopped if not (s == IN_BLOCKS and blocks is not None)]  # its finding says it

@@ -27,7 +27,11 @@ same code: short_record.TimedRise, why_unchecked; Ctrl-C returns the fit). Recor
 than a swing are short_record.py's (every parameter profiled there); noise-free data fitted to round-off
 have no statistics to profile. The swinging spring (spring_model.py: a central force plus gravity, so
 the mirror image of a motion is one too, r₀ and ṙ₀ unchanged) is checked alike, its period that of the
-hanging length l₀ + m g/k (:func:`_hanging`); a spring record shorter than a swing by neither check.
+hanging length l₀ + m g/k (short_record.hanging_length); a spring record shorter than a swing, as a
+rod's, by short_record.py. Only models the mirror is a symmetry of are checked: estimator.py leaves
+``mirror_blind`` False where a held term breaks it (a rotating frame with Ω_z ≠ 0, a pivot moving along
+y, a gravity or forcing direction or a perspective with a y part: mirror_sign.py derives which), and
+mirror_sign.check_sign decides there whether the data tell the sign of the sideways motion.
 Units: φ₀ [rad], φ̇₀ [rad/s]; times [s].
 """
 
@@ -51,6 +55,7 @@ from .short_record import (
     WIDENED,
     Late,
     TimedRise,
+    hanging_length,
     mark_not_determined,
     shown_interval,
     why_unchecked,
@@ -106,7 +111,7 @@ def check_mirror(res: Any, clock: Search, checkable: bool = True, ctrl_c: bool =
         names = flat
     if any(n not in res.params and values.get(n, 0.0) != plane_of(n, values.get(n, 0.0)) for n in SIDEWAYS):
         return []  # a sideways value held off the plane: its mirror image is not a fit of these data
-    length, g = _hanging(values), float(values["g"])
+    length, g = hanging_length(values), float(values["g"])
     if not (length > 0.0 and math.isfinite(length) and math.isfinite(g) and g != 0.0):
         return []
     period = 2.0 * math.pi * math.sqrt(length / abs(g))
@@ -128,15 +133,6 @@ def check_mirror(res: Any, clock: Search, checkable: bool = True, ctrl_c: bool =
     closed = {n: e for n, e in ends.items() if all(map(math.isfinite, e))}
     mark_not_determined(res, [n for n in ends if n not in closed and n not in flat], OPEN)
     return _widened(res, closed, plane_rise)
-
-
-def _hanging(values: dict[str, float]) -> float:
-    """The length [m] the bob hangs at: a rod's ``length``; the swinging spring's rest length l₀ plus
-    its stretch m g/k (spring_model.py), whose small swings have the period 2π√((l₀ + m g/k)/g)."""
-    length = float(values["length"])
-    if float(values.get("stiffness", 0.0)) > 0.0:
-        length += float(values["mass"]) * abs(float(values["g"])) / float(values["stiffness"])
-    return length
 
 
 def _exact(res: Any) -> bool:

@@ -37,7 +37,9 @@ class FitResult:
     order of ``names``; ``residuals``: kind → measured − fitted (N, columns) in the data's unit;
     ``chi2`` = Σ r², ``dof`` = values − unknowns, ``sigma``: the noise per kind (given or estimated);
     ``mirror_blind``: the data cannot tell the motion from its mirror image y → −y (positions seen as
-    x, z; a phone's frame-free scalars), so the sign of φ₀ and φ̇₀ is a choice. ``goodness``: whether
+    x, z; a phone's frame-free scalars) and the model is symmetric under it (not a rotating frame with
+    Ω_z ≠ 0 or a pivot moving along y: fitting/mirror_sign.py), so the sign of φ₀ and φ̇₀ is a
+    choice. ``goodness``: whether
     the fitted motion explains the data (residual against the noise floor, autocorrelation, runs, χ²
     probability, outliers) with its plain-language ``findings``; ``reasons``: why each undetermined
     parameter is; ``inflation``: the factor each error bar was widened by for correlated residuals;

@@ -1,7 +1,8 @@
 """Error bars of a record shorter than one swing (docs/fit.md, "A record shorter than a swing").
 
 Over less than one small-swing period 2π√(l/|g|) of the result (:data:`SHORT_PERIODS`, as
-multistart.FLOOR_PERIODS) the length, g and the pivot's height trade off along a curved valley of the
+multistart.FLOOR_PERIODS; l the hanging length, l₀ + m g/k for the swinging spring:
+:func:`hanging_length`) the length, g and the pivot's height trade off along a curved valley of the
 misfit, and the linearised error bars from its curvature at the optimum are far too narrow there: a
 third of a swing (bench/fit_validate.py case 20, seed 38) gave l = 0.384 ± 0.050 m for a truth of
 0.6 m (4.3 stderr off) with no warning. For such a record the profile likelihood (profile.py) of the
@@ -124,8 +125,8 @@ def check_short_record(res: Any, clock: Search, checkable: bool = True, ctrl_c: 
     their parameters are not determined (the finding says why: :func:`why_unchecked`; ``ctrl_c``: Ctrl-C
     stopped the error analysis before the check): their curvature bars cannot be trusted."""
     values = {**res.fixed, **res.params}
-    length, g = float(values.get("length", math.nan)), float(values.get("g", math.nan))
-    if res.model == "spring" or not (length > 0.0 and math.isfinite(length) and math.isfinite(g) and g != 0):
+    length, g = hanging_length(values), float(values.get("g", math.nan))
+    if not (length > 0.0 and math.isfinite(length) and math.isfinite(g) and g != 0):
         return []
     period = 2.0 * math.pi * math.sqrt(length / abs(g))
     periods = float(res.t[-1] - res.t[0]) / period
@@ -156,6 +157,16 @@ def check_short_record(res: Any, clock: Search, checkable: bool = True, ctrl_c: 
         return [said, *_held(res, periods, period, clock, checkable)]
     widened = _widened(res, core, linked, periods, period, profiled)
     return widened + _held(res, periods, period, clock, checkable, done=set(profiled))
+
+
+def hanging_length(values: dict[str, float]) -> float:
+    """The length [m] the bob hangs at: a rod's ``length``; the swinging spring's rest length l₀ plus
+    its stretch m g/k (spring_model.py), whose small swings have the period 2π√((l₀ + m g/k)/g)
+    (shared with mirror.py)."""
+    length = float(values.get("length", math.nan))
+    if float(values.get("stiffness", 0.0)) > 0.0:
+        length += float(values["mass"]) * abs(float(values["g"])) / float(values["stiffness"])
+    return length
 
 
 def _held(

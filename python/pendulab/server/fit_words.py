@@ -139,6 +139,14 @@ NOTES: list[tuple[str, re.Pattern[str]]] = [
         "mirrorUndetermined",
         _p("seen from the side, {others:l} is not determined (near its plane the sideways motion shows"),
     ),
+    # pendulab/fitting/mirror_sign.py: x, z data, a model the mirror y -> -y is no symmetry of
+    (
+        "mirrorSignUndetermined",
+        _p(
+            "seen from the side, only {told:l} tells the motion from its mirror image y → −y, and the image "
+            "fits as well: its misfit is higher by only {rise} (95 % level {level})"
+        ),
+    ),
     # pendulab/fitting/data.py
     ("dropped", _p("dropped {n} of {total} rows with NaN or inf")),
     ("sorted", _p("the times were not in increasing order: the rows were sorted")),
@@ -179,6 +187,14 @@ REASONS: list[tuple[str, re.Pattern[str]]] = [
         "mirrorOpen",
         _p("seen from the side near its plane, the sideways motion's profile likelihood does not close"),
     ),
+    (
+        "mirrorSign",
+        _p(
+            "seen from the side, only {told:l} tells the motion from its mirror image y → −y, and the image "
+            "fits as well: its misfit is higher by only {rise} (95 % level {level})"
+        ),
+    ),
+    ("mirrorSignUnchecked", _p("the refit of the motion's mirror image y → −y was not finished")),
 ]
 """Why a parameter is not determined (pendulab/fitting/identify.py) -> key."""
 
