@@ -236,25 +236,6 @@ def _sweep_file(arg: str | Path) -> str:
     return _as_typed(arg, "sweep")
 
 
-@contextlib.contextmanager
-def _named_as_typed(arg: str) -> Iterator[None]:
-    """The errors of a reader that names the file ``arg`` by its ``Path`` (``x.toml`` for ``./x.toml``:
-    ``pendulab.crane.scenario.load``) name it as typed: that name opening an InvalidInputError's message
-    or as an OSError's file."""
-    shown = str(Path(arg))
-    try:
-        yield
-    except OSError as e:
-        if e.filename == shown:
-            e.filename = arg
-        raise
-    except InvalidInputError as e:
-        text = str(e)
-        if shown != arg and text.startswith(f"{shown}: "):
-            raise InvalidInputError(arg + text[len(shown) :]) from None
-        raise
-
-
 def _check_output(out: Path) -> None:
     """Everything about --out that can be checked before the run: suffix, writer, directory."""
     try:

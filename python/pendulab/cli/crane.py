@@ -17,7 +17,7 @@ import numpy as np
 import typer
 
 from .._core import InvalidInputError
-from .common import _check_image, _check_output, _fail, _named_as_typed, _say, _user_errors, app
+from .common import _check_image, _check_output, _fail, _say, _user_errors, app
 
 crane_app = typer.Typer(
     help="Cranes: command shapers, their sensitivity, a move's residual sway (docs/cranes.md).",
@@ -183,8 +183,7 @@ def run_cmd(
             _check_output(out)
         if plot is not None:
             _check_image("--plot", plot)
-        with _named_as_typed(file):
-            sc = load(file)
+        sc = load(file)
         report(sc, file, out, plot)
 
 

@@ -27,9 +27,8 @@ from ..fitting import fit
 from ..fitting.problem import FITTABLE_MODELS, model_params
 from ..fitting.table import read_table_notes
 from ..model import Pendulum
-from ..scenario.examples import find as find_example
 from ..variants.spring import SwingingSpring
-from .common import _check_image, _fail, _say, _user_errors, app
+from .common import _as_typed, _check_image, _fail, _say, _user_errors, app
 
 SIGMA_KINDS = {
     "positions": "positions",
@@ -122,8 +121,8 @@ def _need_scipy() -> None:
 
 @app.command("fit", short_help="Fit length, g, damping and the start to measured data (CSV).")
 def fit_cmd(
-    data: Annotated[
-        Path,
+    data: Annotated[  # str, not Path: the messages name the file as typed (./x.csv, not x.csv)
+        str,
         typer.Argument(
             metavar="DATA",
             help="CSV file of measurements (SI units), or a shipped data set: example:filmed_swing.",
@@ -208,7 +207,7 @@ def fit_cmd(
             # **base (l, g, m) and **values (own parameters): floats by name, no model/force/pivot_samples
             pendulum = Pendulum(**base, model=model, **values)  # type: ignore[arg-type]
         names = [c.strip() for c in columns.split(",")] if columns else None
-        kwargs, notes = read_table_notes(find_example(data, "data"), names)
+        kwargs, notes = read_table_notes(_as_typed(data, "data"), names)
         for note in notes:
             _say(f"data: {note}", err=True)
         kinds = [k for k in kwargs if k != "t"]

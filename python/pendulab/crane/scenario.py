@@ -14,6 +14,7 @@ scenario file with ``[crane]`` (:mod:`pendulab.scenario.crane_schema`): ``pl.loa
 from __future__ import annotations
 
 import math
+import os
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
@@ -194,16 +195,18 @@ def _build(f: CraneSpec, source: str) -> CraneScenario:
 
 
 def load(path: str | Path) -> CraneScenario:
-    """Reads a crane file (module doc); ``InvalidInputError`` naming the file and key on bad contents,
-    ``OSError`` if it cannot be read."""
-    p = Path(path)
-    size = p.stat().st_size
+    """Reads a crane file (module doc); ``InvalidInputError`` naming the file as given (``./x.toml``
+    stays ``./x.toml``, as typed on a command line) and the key on bad contents, ``OSError`` naming it
+    so if it cannot be read."""
+    name = os.fspath(path)
+    size = os.stat(name).st_size
     if size > MAX_BYTES:
-        raise InvalidInputError(f"{p}: {size} bytes; crane files are at most {MAX_BYTES} bytes")
+        raise InvalidInputError(f"{name}: {size} bytes; crane files are at most {MAX_BYTES} bytes")
     try:  # a BOM dropped, nesting checked (deep nesting was a RecursionError), long integers refused
-        data = parse_toml(p.read_text(encoding="utf-8"))
+        with open(name, encoding="utf-8") as fh:
+            data = parse_toml(fh.read())
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as e:
-        raise InvalidInputError(f"{p}: not valid TOML: {e}") from None
+        raise InvalidInputError(f"{name}: not valid TOML: {e}") from None
     except InvalidInputError as e:
-        raise InvalidInputError(f"{p}: {e}") from None
-    return parse(data, str(p))
+        raise InvalidInputError(f"{name}: {e}") from None
+    return parse(data, name)

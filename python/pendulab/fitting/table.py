@@ -80,22 +80,22 @@ def read_table_notes(
     """:func:`read_table` and notes on how the file was read (:func:`parse_table_notes`). The text
     is UTF-8 (with or without a BOM), UTF-16 with a BOM (Excel's "Unicode text"), or else Windows-1252
     (older Windows exports: ``°`` as one byte), said in a note."""
-    p = Path(path)
+    p, name = Path(path), os.fspath(path)  # named as given: ./x.csv, not the x.csv of Path
     try:
         size = p.stat().st_size
         if not p.is_file():
-            raise InvalidInputError(f"{p}: not a regular file")
+            raise InvalidInputError(f"{name}: not a regular file")
         if size > MAX_BYTES:
-            raise InvalidInputError(f"{p}: {size} bytes, more than the {MAX_BYTES} a data file may have")
+            raise InvalidInputError(f"{name}: {size} bytes, more than the {MAX_BYTES} a data file may have")
         with p.open("rb") as fh:
             raw = fh.read(MAX_BYTES + 1)
     except OSError as e:
-        raise InvalidInputError(f"{p}: cannot read: {e.strerror or e}") from e
+        raise InvalidInputError(f"{name}: cannot read: {e.strerror or e}") from e
     if len(raw) > MAX_BYTES:
-        raise InvalidInputError(f"{p}: more than {MAX_BYTES} bytes")
-    text, note = _decode(raw, str(p))
+        raise InvalidInputError(f"{name}: more than {MAX_BYTES} bytes")
+    text, note = _decode(raw, name)
     del raw
-    kwargs, notes = parse_table_notes(text, columns, str(p))
+    kwargs, notes = parse_table_notes(text, columns, name)
     return kwargs, ([note] if note else []) + notes
 
 
