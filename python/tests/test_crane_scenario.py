@@ -64,6 +64,54 @@ def test_bad_files(patch: dict, needle: str) -> None:
         parse({**BASE, **patch})
 
 
+ROPE = r"allowed: rope length at t = 0 in m, > 0 and <= 1e\+06"
+
+
+@pytest.mark.parametrize(
+    ("patch", "message"),
+    [
+        ({"crane": {"rope": -1.0}}, r"crane\.rope = -1\.0: must be > 0; " + ROPE),
+        (
+            {"crane": {"rope": float("nan")}},
+            r"crane\.rope = nan is not a finite number \(nan and inf are not "
+            r"allowed\); " + ROPE,
+        ),
+        ({"crane": {"rope": "10"}}, r"crane\.rope = '10' is not a number; " + ROPE),
+        (
+            {"crane": {"rope": 10.0, "ropes": 3.0}},
+            r"unknown key crane\.ropes = 3\.0 \(did you mean 'rope'\?\); allowed keys in \[crane\]: rope, "
+            r"payload_mass, hook_mass, rigging, damping, g",
+        ),
+        (
+            {"simulation": {"t_end": 5.0, "output_spacing": 0.0}},
+            r"simulation\.output_spacing = 0\.0: must be > 0; allowed: time between output rows in s, > 0 "
+            r"and <= 1e6 \(DOP853 chooses its own steps\)",
+        ),
+        (
+            {"crane": {"rope": -1.0, "g": "x"}},
+            r"2 problems: \(1\) crane\.rope = -1\.0: must be > 0; "
+            + ROPE
+            + r" \(2\) crane\.g = 'x' is not a "
+            r"number; allowed: gravitational acceleration in m/s², > 0 and <= 1000",
+        ),
+    ],
+)
+def test_bad_values_name_the_key_the_value_and_what_is_allowed(patch: dict, message: str) -> None:
+    """Crane file errors were pydantic's words (``[crane.rope]: Input should be greater than 0``): now a
+    pendulum scenario file's (pendulab.scenario.errors), naming the key, the value and what is allowed."""
+    with pytest.raises(InvalidInputError, match="^<crane file>: " + message + "$"):
+        parse({**BASE, **patch})
+
+
+def test_cli_names_the_file_as_typed_and_the_key(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(tmp_path)
+    Path("bad.toml").write_text("[crane]\nrope = -1.0\n[simulation]\nt_end = 5.0\n")
+    message = "error: ./bad.toml: crane.rope = -1.0: must be > 0; allowed: rope length at t = 0 in m"
+    assert_user_error(*invoke("crane", "run", "./bad.toml"), message)
+    Path("bad.toml").write_text("[crane\n")
+    assert_user_error(*invoke("crane", "run", ".//bad.toml"), "error: .//bad.toml: not valid TOML: ")
+
+
 def test_cli_user_errors(tmp_path: Path) -> None:
     bad = tmp_path / "bad.toml"
     bad.write_text("[crane]\nrope = 10.0\n")

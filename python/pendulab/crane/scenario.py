@@ -24,6 +24,7 @@ from pydantic import ValidationError
 
 from .._core import InvalidInputError
 from ..scenario.crane_schema import CraneSpec
+from ..scenario.errors import _problem
 from ..validate import parse_toml
 from .paths import Gantry, move
 from .paths import Path as CranePath
@@ -104,17 +105,16 @@ def file_settings(file: dict[str, Any]) -> dict[str, Any]:
     return file | {"simulation": sim}
 
 
-def _describe(e: ValidationError) -> str:
-    parts = []
-    for err in e.errors()[:5]:
-        where = ".".join(str(p) for p in err["loc"])
-        if err["type"] == "extra_forbidden":
-            parts.append(f"unknown key {where}")
-        elif err["type"] == "missing":  # pydantic's "Field required" says neither table nor key
-            parts.append(f"the table [{where}] is missing" if len(err["loc"]) == 1 else f"{where} is missing")
-        else:
-            parts.append(f"[{where}]: {err['msg']}")
-    return "; ".join(parts)
+def _describe(e: ValidationError, data: dict[str, Any], most: int = 5) -> str:
+    """The problems of a crane file in the words of the pendulum's scenario files
+    (:func:`pendulab.scenario.errors._problem`): the key, the bad value and what is allowed (with its
+    unit), unknown keys first with a did-you-mean; at most ``most`` of them, numbered when several."""
+    errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
+    problems = [_problem(err, data, CraneSpec) for err in errors[:most]]
+    if len(problems) == 1:
+        return problems[0]
+    more = f" (and {len(errors) - most} more)" if len(errors) > most else ""
+    return f"{len(errors)} problems: " + " ".join(f"({k}) {p}" for k, p in enumerate(problems, 1)) + more
 
 
 def parse(data: dict[str, Any], source: str = "<crane file>") -> CraneScenario:
@@ -122,7 +122,7 @@ def parse(data: dict[str, Any], source: str = "<crane file>") -> CraneScenario:
     try:
         f = CraneSpec.model_validate(data)
     except ValidationError as e:
-        raise InvalidInputError(f"{source}: {_describe(e)}") from None
+        raise InvalidInputError(f"{source}: {_describe(e, data)}") from None
     return from_spec(f, source)
 
 
