@@ -144,6 +144,34 @@ def test_grid_result_says_output_spacing_and_sample_spacing_is_deprecated() -> N
     assert old == 0.25 and len(caught) == 1 and caught[0].filename == __file__
 
 
+def test_grid_result_takes_sample_spacing_as_a_deprecated_keyword() -> None:
+    """``GridResult(..., sample_spacing=...)`` (the field's older name) was a TypeError once the field
+    became ``output_spacing``: it builds the same result, with a DeprecationWarning at the caller's line;
+    both names given is refused naming both values; positions and the default are unchanged."""
+    cells: Any = (np.ones((1, 1, 1)), np.array([4.0]), np.array([2.0]), ("unshaped",))
+    with _new_keyword_only():
+        new = crane.GridResult(*cells, output_spacing=0.25)
+        positional = crane.GridResult(*cells, True, 0.25, 1e-6, 1e-7)
+        default = crane.GridResult(*cells)
+    assert new.output_spacing == 0.25 and default.output_spacing == 0.05 and not new.interrupted
+    assert (positional.interrupted, positional.output_spacing, positional.rtol, positional.atol) == (
+        True,
+        0.25,
+        1e-6,
+        1e-7,
+    )
+    warned = r"^GridResult\(sample_spacing=\.\.\.\) is deprecated: sample_spacing is the older name of "
+    with pytest.warns(
+        DeprecationWarning, match=warned + r"output_spacing .*; write output_spacing=0\.25$"
+    ) as w:
+        old = crane.GridResult(*cells, sample_spacing=0.25)
+    assert len(w) == 1 and w[0].filename == __file__
+    assert old == new and old.output_spacing == 0.25
+    both = r"^GridResult: output_spacing = 0\.25 and sample_spacing = 0\.5 both given: sample_spacing is"
+    with _new_keyword_only(), pytest.raises(InvalidInputError, match=both):
+        crane.GridResult(*cells, output_spacing=0.25, sample_spacing=0.5)
+
+
 @pytest.mark.parametrize("kind", ["move", "sampled"])
 def test_knots_take_spacing_and_dt_gives_the_same_knots_with_a_warning(kind: str) -> None:
     """``Path.knots``' most time between two knots is ``spacing`` (it was ``dt``), by the same mechanism;

@@ -24,22 +24,21 @@ def spacing(
     default: float,
     new: str = "output_spacing",
     what: str = SAVED,
+    old: str = OLD_NAME,
 ) -> tuple[str, object]:
     """(the name the spacing was given by, the spacing as given) of the call ``where`` (e.g.
     ``"Crane.simulate"``): ``output_spacing`` (the keyword ``new``, which is ``what``), else the older
-    ``dt`` (a DeprecationWarning naming ``new``, at the first caller outside pendulab however many of
-    its frames lie between: :func:`pendulab._warn.warn_user`), else ``default``. Both given is an
-    ``InvalidInputError`` naming both values. ``None`` is "not given"; the caller checks the value
-    (:mod:`pendulab.crane._checks`), naming it by the returned name."""
+    ``dt`` (by the keyword ``old``: a DeprecationWarning naming ``new``, at the first caller outside
+    pendulab however many of its frames lie between: :func:`pendulab._warn.warn_user`), else
+    ``default``. Both given is an ``InvalidInputError`` naming both values. ``None`` is "not given";
+    the caller checks the value (:mod:`pendulab.crane._checks`), naming it by the returned name."""
     if dt is None:
         return new, default if output_spacing is None else output_spacing
     if output_spacing is not None:
         raise InvalidInputError(
-            f"{where}: {new} = {show(output_spacing)} and dt = {show(dt)} both given: dt is the older "
+            f"{where}: {new} = {show(output_spacing)} and {old} = {show(dt)} both given: {old} is the older "
             f"name of {new} ({what}); give {new} only"
         )
-    warn_user(
-        f"{where}(dt=...) is deprecated: dt is the older name of {new} ({what}); write {new}={show(dt)}",
-        DeprecationWarning,
-    )
-    return OLD_NAME, dt
+    text = f"{where}({old}=...) is deprecated: {old} is the older name of {new} ({what})"
+    warn_user(f"{text}; write {new}={show(dt)}", DeprecationWarning)
+    return old, dt

@@ -31,18 +31,20 @@ from .shaper import FloatArray, Shaper, check_shaper
 MAX_CASES = 1_000_000
 DEFAULT_SPACING = 0.05
 """The default ``output_spacing`` [s] of :func:`residual_grid` (its ``GridResult.output_spacing``)."""
+_SAMPLED = "the time between the sway's samples in s, as residual_grid's output_spacing"
 CHUNK_CASES = 200
 """Cases per chunk (one shaper, a block of rope lengths × every ratio): a few tenths of a second."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class GridResult:
     """``sway`` [m] (n_shapers, n_ropes, n_ratios): the payload's largest horizontal distance from the
     pivot after the move; ``ropes`` [m], ``ratios`` (m₂/m₁), ``labels`` (one per shaper, "unshaped"
     for None); ``interrupted`` when Ctrl-C stopped the grid (the cases not computed are NaN);
     ``output_spacing`` [s], the interval at which the sway was sampled after the move (the
     ``output_spacing`` of :func:`residual_grid`), and the DOP853 tolerances ``rtol``, ``atol`` of the
-    runs. ``sample_spacing`` is the deprecated older name of ``output_spacing``."""
+    runs. ``sample_spacing`` is the deprecated older name of ``output_spacing``, read and (as a keyword)
+    given with a DeprecationWarning."""
 
     sway: FloatArray
     ropes: FloatArray
@@ -52,6 +54,30 @@ class GridResult:
     output_spacing: float = DEFAULT_SPACING
     rtol: float = 1e-8
     atol: float = 1e-8
+
+    def __init__(
+        self,
+        sway: FloatArray,
+        ropes: FloatArray,
+        ratios: FloatArray,
+        labels: tuple[str, ...],
+        interrupted: bool = False,
+        output_spacing: float | None = None,
+        rtol: float = 1e-8,
+        atol: float = 1e-8,
+        *,
+        sample_spacing: float | None = None,
+    ) -> None:
+        """The fields in order; ``output_spacing`` [s] defaults to :data:`DEFAULT_SPACING`.
+        ``sample_spacing=`` is its deprecated older name (a DeprecationWarning at the caller's line;
+        both given is an ``InvalidInputError`` naming both values)."""
+        _, spacing = _spacing.spacing(
+            "GridResult", output_spacing, sample_spacing, DEFAULT_SPACING, what=_SAMPLED, old="sample_spacing"
+        )
+        values = {"sway": sway, "ropes": ropes, "ratios": ratios, "labels": labels}
+        values |= {"interrupted": interrupted, "output_spacing": spacing, "rtol": rtol, "atol": atol}
+        for name, value in values.items():
+            object.__setattr__(self, name, value)  # frozen: as the generated __init__ sets them
 
     @property
     def sample_spacing(self) -> float:
