@@ -11,7 +11,7 @@ import time
 from collections.abc import Callable
 from typing import Any, Protocol
 
-from ._progress import tqdm
+from ._progress import seconds_bar
 from ._warn import warn_user
 
 _CHUNK_SECONDS = 0.1
@@ -35,16 +35,21 @@ def run_in_chunks(
     show: bool,
     desc: str,
     take_rest: Callable[[], Any] | None = None,
+    *,
+    span: tuple[float, float],
 ) -> tuple[list[Any], bool]:
     """Advances ``solver`` to its end in chunks of about 0.1 s of work (the GIL released inside each),
     updating a tqdm bar (``show``) between chunks. Ctrl-C stops after the current chunk: returns the
     parts taken so far and True, with a RuntimeWarning at the user's line (:func:`~._warn.warn_user`).
-    ``take_rest`` takes the last part after an interruption (default ``solver.take_samples``)."""
+    ``take_rest`` takes the last part after an interruption (default ``solver.take_samples``). The bar
+    counts seconds of simulated time over ``span`` = (t_start, t_end) [s] (``solver.progress`` is the
+    fraction of it done)."""
     parts: list[Any] = []
     interrupted = False
     budget = 10_000
     # no bar object at all when it is not shown: a disabled tqdm still costs ~10 µs per call
-    bar = tqdm(total=1000, unit="‰", desc=desc, leave=False) if show else None
+    seconds = span[1] - span[0]
+    bar = seconds_bar(seconds, f"{desc}, simulated s from t={span[0]:g}") if show else None
     with bar if bar is not None else contextlib.nullcontext():
         try:
             done = False
@@ -55,7 +60,7 @@ def run_in_chunks(
                 budget = int(min(max(budget * _CHUNK_SECONDS / max(elapsed, 1e-6), 1_000), 1e9))
                 parts.append(solver.take_samples())
                 if bar is not None:
-                    bar.update(int(1000 * solver.progress) - bar.n)
+                    bar.update(seconds * solver.progress - bar.n)
         except KeyboardInterrupt:
             interrupted = True
             parts.append(take_rest() if take_rest is not None else solver.take_samples())

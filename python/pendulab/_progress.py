@@ -15,4 +15,11 @@ if importlib.util.find_spec("ipywidgets") is not None:  # pragma: no cover - dep
 else:
     tqdm = _text_bar
 
-__all__ = ["tqdm"]
+
+def seconds_bar(seconds: float, desc: str) -> _text_bar[Any]:
+    """A bar counting ``seconds`` [s] of simulated time: n and total in s (3 digits, SI prefixes), the
+    rate in simulated s per s of wall time."""
+    return tqdm(total=seconds, unit="s", unit_scale=True, desc=desc, leave=False)
+
+
+__all__ = ["seconds_bar", "tqdm"]

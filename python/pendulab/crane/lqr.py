@@ -35,7 +35,7 @@ from scipy.linalg import solve_continuous_are
 
 from .. import memory
 from .._core import InvalidInputError
-from .._progress import tqdm
+from .._progress import seconds_bar
 from .._warn import warn_user
 from ..validate import flag, invalid
 from ._checks import later, number, numbers, positive, real, time, times
@@ -120,7 +120,8 @@ class LQR:
         # alone (not on timing), so that the same call gives the same loop bit for bit
         span = (t1 - t0) * CHUNK_STEPS / max(steps, CHUNK_STEPS)
         interrupted = False
-        bar = tqdm(total=1000, unit="‰", desc="LQR loop", leave=False) if show else None
+        # the bar counts seconds of simulated time (n, total in s; the rate in simulated s per s)
+        bar = seconds_bar(t1 - t0, f"LQR loop, simulated s from t={t0:g}") if show else None
         with bar if bar is not None else contextlib.nullcontext():
             try:
                 while t < t1:
@@ -128,7 +129,7 @@ class LQR:
                     pieces.append((t, sol.sol))
                     t, y = float(sol.t[-1]), sol.y[:, -1].tolist()
                     if bar is not None:
-                        bar.update(int(1000 * (t - t0) / (t1 - t0)) - bar.n)
+                        bar.update((t - t0) - bar.n)
                     if sol.status == 1 and t < t1:  # a switch (else the chunk's end, or t_end)
                         switches.append(t)
                         loop.check_switches(len(switches), t)

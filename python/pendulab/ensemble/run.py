@@ -290,18 +290,31 @@ def _run_kernel(plan: _Plan, progress: bool | None, arithmetic: str) -> tuple[di
     show = progress if progress is not None else n * plan.steps * SUBSTEPS[plan.method] > _PROGRESS_AFTER
     interrupted = False
     # no bar object at all when none is shown (a short run's call is ~5 ms: every 10 µs counts)
-    bar = tqdm(total=1000, unit="‰", desc=f"{n} trajectories", leave=False) if show else None
+    # the bar counts trajectory-steps (the core's counter; run.progress is the fraction of them done)
+    n_run, steps = n - plan.invalid.size, int(plan.steps)
+    total = n_run * steps
+    bar = (
+        tqdm(
+            total=total,
+            unit="step",
+            unit_scale=True,
+            desc=f"{n_run} trajectories × {steps} steps",
+            leave=False,
+        )
+        if show
+        else None
+    )
     try:
         # wait returns the moment the run ends; the bar (and Ctrl-C) are served every _POLL_SECONDS
         while not run.wait(_POLL_SECONDS):
             if bar is not None:
-                bar.update(int(run.progress * 1000) - bar.n)
+                bar.update(round(run.progress * total) - bar.n)
     except KeyboardInterrupt:
         run.cancel()
         interrupted = True
     finally:
         if bar is not None:
-            bar.update(int(run.progress * 1000) - bar.n)
+            bar.update(round(run.progress * total) - bar.n)
             bar.close()
     out = run.result()
     if plan.invalid.size:  # back to the input's rows, NaN where the start was not finite

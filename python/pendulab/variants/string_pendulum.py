@@ -99,8 +99,9 @@ def simulate_string(
     parts, interrupted = run_in_chunks(
         runner,
         show,
-        f"{method} to t={t_end:g} s",
+        method,
         take_rest=lambda: runner.take_samples(all=True),
+        span=(float(t0), float(t_end)),
     )
     options: dict[str, Any] = {"dt": dt, "t0": t0, "t_end": t_end}
     if save_every is not None:
