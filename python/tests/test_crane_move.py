@@ -155,3 +155,20 @@ def test_a_measured_path_is_not_extrapolated_past_its_samples() -> None:
     hoist = crane.Hoist([0.0, 2.0], [5.0, 4.0])
     np.testing.assert_allclose(hoist.length([2.0, 10.0]), [4.0, 4.0], rtol=1e-15)
     assert hoist.velocity(10.0)[0, 0] == 0.0
+
+
+def test_adding_profiles_of_two_kinds_says_which_and_what_is_allowed() -> None:
+    """An acceleration-limited move plus a jerk-limited one was a bare "unsupported operand type(s)"."""
+    plain, smooth = crane.profile(5.0, 0.5, 0.5), crane.profile(5.0, 0.5, 0.5, j_max=1.0)
+    for a, b, first, second in (
+        (plain, smooth, "acceleration", "jerk"),
+        (smooth, plain, "jerk", "acceleration"),
+    ):
+        with pytest.raises(TypeError) as err:
+            a + b
+        text = str(err.value)
+        assert f"two kinds, {first}-limited + {second}-limited; " in text, text
+        assert "allowed: two profiles of one kind" in text and "j_max" in text, text
+    assert (plain + plain).distance == pytest.approx(10.0, rel=1e-12)  # one kind: their sum
+    with pytest.raises(TypeError, match="unsupported operand"):  # not a profile: Python's own words
+        plain + 1.0  # type: ignore[operator]

@@ -11,6 +11,7 @@ import pytest
 from conftest import REPO
 
 import pendulab as pl
+from pendulab import crane
 
 MAX_REPR = 300  # characters
 
@@ -21,7 +22,7 @@ def _objects(tmp_path) -> dict[str, object]:
     tr = pl.simulate(p, s0, t_end=2.0, save_every=10, error_estimate=True)
     sol = pl.exact(p, s0)
     ensemble = pl.simulate_ensemble(p, pl.states_from_angles(p, theta=np.linspace(0.1, 1, 5)), t_end=1.0)
-    crane = pl.Pendulum(model="slewing", radius=0.02, rate=0.5)
+    slewing = pl.Pendulum(model="slewing", radius=0.02, rate=0.5)
     stepper = pl.Stepper(pl.Pendulum(model="damped", damping=0.2), s0, method="rattle4", dt=1e-3)
     stepper.step(100)
     return {
@@ -41,9 +42,23 @@ def _objects(tmp_path) -> dict[str, object]:
         "SpringTrajectory": pl.simulate_spring(
             pl.SwingingSpring.resonant(1.0), [0.1, 0, -1.0], [0, 0.1, 0], t_end=1.0
         ),
-        "SlewingSway": pl.slewing_sway(crane, np.linspace(0, 1, 500)),
+        "SlewingSway": pl.slewing_sway(slewing, np.linspace(0, 1, 500)),
         "Movie": sol.animate(tmp_path / "m.gif", t=(0.0, 1.0), fps=10, size=(96, 64), progress=False),
         "Comparison": pl.compare_fits([_fit(["length"]), _fit(["length", "damping"])]),
+        **_crane_objects(),
+    }
+
+
+def _crane_objects() -> dict[str, object]:
+    """The crane's results (their dataclass reprs printed every array)."""
+    s = crane.shaper("zvd", omega=1.0)
+    path = crane.move(distance=2.0, v_max=0.5, a_max=0.5, shaper=s)
+    ropes, ratios = np.linspace(5.0, 10.0, 3), np.array([0.1, 0.2])
+    return {
+        "crane.Shaper": s,
+        "crane.Profile": crane.profile(5.0, 0.5, 0.5, j_max=1.0, shaper=s),
+        "crane.CraneRun": crane.Crane(rope=8.0, pivot=path, payload_mass=500.0).simulate(t_end=10.0),
+        "crane.GridResult": crane.residual_grid(ropes, ratios, [None, s], progress=False),
     }
 
 
@@ -66,7 +81,7 @@ def objects(tmp_path_factory) -> dict[str, object]:
 NAMES = [
     "Scenario", "Stepper", "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases",
     "Reduced", "EMMap", "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway",
-    "Movie", "Comparison",
+    "Movie", "Comparison", "crane.Shaper", "crane.Profile", "crane.CraneRun", "crane.GridResult",
 ]  # fmt: skip
 
 
@@ -138,3 +153,13 @@ def test_plot_methods_take_the_path_first_or_as_a_keyword(tmp_path, objects):
     assert (tmp_path / "a.png").stat().st_size > 0 and (tmp_path / "b.png").stat().st_size > 0
     with pytest.raises(pl.InvalidInputError, match="give the times as t="):
         sol.plot(np.linspace(0.0, 1.0, 5))
+
+
+def test_a_shaper_shows_its_tolerance_only_where_it_was_designed_to_one() -> None:
+    """ZV-family shapers have no V_tol (it was shown as ``tolerance=nan``); the EI kinds do."""
+    zv = repr(crane.shaper("zv", omega=1.0))
+    assert zv == "Shaper(kind=zv, impulses=2, duration=3.142 s, omega=1 rad/s, damping=0)", zv
+    assert "tolerance=0.05," not in zv and "nan" not in zv
+    assert "tolerance=0.05" in repr(crane.shaper("ei", omega=1.0))
+    both = crane.shaper("zv", omega=1.0) * crane.shaper("zv", omega=2.0)
+    assert "nan" not in repr(both) and "omega" not in repr(both), repr(both)

@@ -25,6 +25,7 @@ from ..sweeps.backends import Threads, drive
 from ..validate import flag, integer, invalid
 from . import _spacing
 from ._checks import number, positive, positives, real, tolerances
+from ._display import Row, Shown, grid_rows
 from .paths import move
 from .shaper import FloatArray, Shaper, check_shaper
 
@@ -36,8 +37,8 @@ CHUNK_CASES = 200
 """Cases per chunk (one shaper, a block of rope lengths × every ratio): a few tenths of a second."""
 
 
-@dataclass(frozen=True, init=False)
-class GridResult:
+@dataclass(frozen=True, init=False, repr=False)
+class GridResult(Shown):
     """``sway`` [m] (n_shapers, n_ropes, n_ratios): the payload's largest horizontal distance from the
     pivot after the move; ``ropes`` [m], ``ratios`` (m₂/m₁), ``labels`` (one per shaper, "unshaped"
     for None); ``interrupted`` when Ctrl-C stopped the grid (the cases not computed are NaN);
@@ -78,6 +79,9 @@ class GridResult:
         values |= {"interrupted": interrupted, "output_spacing": spacing, "rtol": rtol, "atol": atol}
         for name, value in values.items():
             object.__setattr__(self, name, value)  # frozen: as the generated __init__ sets them
+
+    def _rows(self) -> list[Row]:
+        return grid_rows(self)
 
     @property
     def sample_spacing(self) -> float:

@@ -25,11 +25,12 @@ import numpy as np
 from scipy.optimize import brentq
 
 from ._checks import number, positive, real, time, times
+from ._display import Row, Shown, profile_kind, profile_rows
 from .shaper import FloatArray, Shaper, check_shaper
 
 
-@dataclass(frozen=True)
-class Profile:
+@dataclass(frozen=True, repr=False)
+class Profile(Shown):
     """A scalar motion s(t) [m] (or [rad] for a slew) made of steps ``coeffs`` c_k at ``knots`` τ_k [s]
     of its ``order``-th derivative (2: acceleration, 3: jerk); see the module doc. ``start`` is s at
     t → −∞ (the axis's start value)."""
@@ -39,6 +40,9 @@ class Profile:
     order: int
     start: float = 0.0
     shaper: Shaper | None = field(default=None, compare=False)
+
+    def _rows(self) -> list[Row]:
+        return profile_rows(self)
 
     def _eval(self, t: Any, deriv: int, left: bool = False) -> FloatArray:
         ts = np.asarray(t, dtype=np.float64)
@@ -82,9 +86,17 @@ class Profile:
         return Profile(knots[order], coeffs[order], self.order, self.start, s)
 
     def __add__(self, other: object) -> Profile:
-        """Two moves of the same axis one after the other (or overlapping): their sum."""
-        if not isinstance(other, Profile) or other.order != self.order:
+        """Two moves of the same axis one after the other (or overlapping): their sum; both of one kind
+        (acceleration-limited, or jerk-limited: ``profile(..., j_max=...)``), else a TypeError."""
+        if not isinstance(other, Profile):
             return NotImplemented
+        if other.order != self.order:
+            kinds = f"{profile_kind(self.order)} + {profile_kind(other.order)}"
+            raise TypeError(
+                f"cannot add profiles of two kinds, {kinds}; "
+                "allowed: two profiles of one kind (both acceleration-limited, or both jerk-limited: "
+                "give both or neither j_max)"
+            )
         knots = np.concatenate([self.knots, other.knots])
         coeffs = np.concatenate([self.coeffs, other.coeffs])
         order = np.argsort(knots, kind="stable")

@@ -39,6 +39,7 @@ from scipy.optimize import fsolve
 from .._core import InvalidInputError
 from ..validate import invalid
 from ._checks import numbers, positive, positives, real
+from ._display import Row, Shown, shaper_rows
 
 FloatArray = NDArray[np.float64]
 
@@ -46,10 +47,11 @@ KINDS = ("zv", "zvd", "zvdd", "ei", "2hump_ei")
 _ALIASES = {"two_hump_ei": "2hump_ei", "2-hump-ei": "2hump_ei", "2hei": "2hump_ei", "ei2": "2hump_ei"}
 
 
-@dataclass(frozen=True)
-class Shaper:
+@dataclass(frozen=True, repr=False)
+class Shaper(Shown):
     """Impulse ``times`` [s] (t₁ = 0, increasing) and ``amplitudes`` (sum 1); ``kind`` and the design
-    ``omega`` [rad/s], ``damping`` ζ and ``tolerance`` V_tol (NaN for convolved shapers)."""
+    ``omega`` [rad/s], ``damping`` ζ (NaN for convolved shapers) and ``tolerance`` V_tol (NaN but for the
+    EI kinds, which alone are designed to one)."""
 
     times: FloatArray
     amplitudes: FloatArray
@@ -57,6 +59,9 @@ class Shaper:
     omega: float = math.nan
     damping: float = math.nan
     tolerance: float = math.nan
+
+    def _rows(self) -> list[Row]:
+        return shaper_rows(self)
 
     def __post_init__(self) -> None:
         """Checks the impulses (``times`` increasing from ≥ 0 s, as many finite ``amplitudes``) and keeps

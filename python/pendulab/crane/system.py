@@ -20,6 +20,7 @@ from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
 from ..validate import array, integer, invalid
 from . import _spacing
 from ._checks import later, nonnegative, number, numbers, positive, positives, time, times, tolerances
+from ._display import Row, Shown, run_rows
 from .paths import Gantry, Path
 from .shaper import FloatArray
 
@@ -158,8 +159,8 @@ class Wind:
         return w
 
 
-@dataclass(frozen=True)
-class CraneRun:
+@dataclass(frozen=True, repr=False)
+class CraneRun(Shown):
     """A simulated crane: ``t`` [s] (N,); ``payload``, ``hook`` (the rope's end: the payload itself
     without a separate hook) and ``pivot`` positions [m] (N, 3) with velocities ``payload_velocity``,
     ``hook_velocity`` [m/s]; ``sway``
@@ -183,6 +184,9 @@ class CraneRun:
     work: dict[str, FloatArray] = field(default_factory=dict)
     power: dict[str, FloatArray] = field(default_factory=dict)
     steps: int = 0
+
+    def _rows(self) -> list[Row]:
+        return run_rows(self)
 
     def energy_residual(self) -> FloatArray:
         """E(t) − E(0) − (sum of the works) [J]: zero up to the integration error (T-11.6)."""
