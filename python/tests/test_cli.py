@@ -319,6 +319,14 @@ def test_fit_help_shows_what_to_type_not_python_types() -> None:
     assert "list[" not in out, out
 
 
+def test_serve_help_names_the_host_not_a_python_type() -> None:
+    """pendulab serve --help shows ``--allow-host HOST`` (typer showed ``--allow-host <list[str]>``)."""
+    code, out, _ = invoke("serve", "--help")
+    assert code == 0
+    assert "--allow-host HOST" in " ".join(out.split()), out
+    assert "list[" not in out, out
+
+
 def test_version_and_help() -> None:
     """--version prints the version; --help lists every command, run --help every option."""
     code, out, _ = invoke("--version")

@@ -207,6 +207,7 @@ def serve(
     allow_host: Annotated[
         list[str] | None,
         typer.Option(
+            metavar="HOST",
             help="Another Host name the lab answers to (repeatable; '*.example.org' a domain, '*' any). "
             "Always: the loopback names, the --host address and, bound elsewhere, this machine's names.",
             show_default=False,
