@@ -95,3 +95,7 @@ def test_the_blocks_name_a_damping_law_only_for_a_steady_trend() -> None:
     assert "air drag" in said([0.0117, 0.0115, 0.0108, 0.0104])
     odd = said([0.0110, 0.0110, 0.0125, 0.0110])
     assert "disagree" in odd and "dry friction" not in odd and "air drag" not in odd
+    # the hint is a sentence of its own (was "...; res.blocks) The damping fitted...")
+    for trend in ([0.0104, 0.0108, 0.0115, 0.0117], [0.0117, 0.0115, 0.0108, 0.0104]):
+        assert "; res.blocks). The damping fitted to the blocks " in said(trend), said(trend)
+    assert odd.endswith("; res.blocks)"), odd

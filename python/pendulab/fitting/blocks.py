@@ -189,13 +189,15 @@ class BlockCheck:
         worst = max(apart, key=lambda n: self.scale[n])
         shown = ", ".join(f"{v:.6g}" if math.isfinite(v) else "-" for v in self.values[worst])
         names = ", ".join(f"{n} ×{self.scale[n]:.3g}" for n in widened)
+        law = self.damping_law()  # a sentence of its own: after a full stop
         return [
             f"the record's {len(self.starts)} consecutive blocks, fitted on their own, disagree: {worst} = "
             f"{shown} {self.units.get(worst, '')} (the blocks in time order), {self.scale[worst]:.3g}x "
             "their error bars apart. The model misses something that changes along the record "
             "(friction or stiffness that depend on the amplitude, a drifting sensor, a hinge that is "
             f"not ideal), so the error bars are widened by the blocks' scale factor: {names} "
-            "(the Particle Data Group's rule for inconsistent measurements; res.blocks)" + self.damping_law()
+            "(the Particle Data Group's rule for inconsistent measurements; res.blocks)"
+            + (f".{law}" if law else "")
         ]
 
     def damping_law(self) -> str:
