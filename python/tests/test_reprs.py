@@ -59,6 +59,20 @@ def _crane_objects() -> dict[str, object]:
         "crane.Profile": crane.profile(5.0, 0.5, 0.5, j_max=1.0, shaper=s),
         "crane.CraneRun": crane.Crane(rope=8.0, pivot=path, payload_mass=500.0).simulate(t_end=10.0),
         "crane.GridResult": crane.residual_grid(ropes, ratios, [None, s], progress=False),
+        **_crane_inputs(),
+    }
+
+
+def _crane_inputs() -> dict[str, object]:
+    """The crane's controller, its run, a gantry path and a crane (LQR printed its K and poles arrays,
+    Gantry its axes as np.float64(...), LQRRun and Crane ``<... object at 0x...>``)."""
+    ctrl = crane.lqr(8.0, a_max=0.5)
+    gantry = crane.Gantry(trolley=crane.profile(4.0, 0.5, 0.5), origin=(0.0, 0.0, 12.0))
+    return {
+        "crane.LQR": ctrl,
+        "crane.LQRRun": ctrl.simulate(3.0, t_end=8.0, progress=False),
+        "crane.Gantry": gantry,
+        "crane.Crane": crane.Crane(rope=8.0, pivot=gantry, payload_mass=500.0, hook_mass=50.0, rigging=1.5),
     }
 
 
@@ -82,6 +96,7 @@ NAMES = [
     "Scenario", "Stepper", "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases",
     "Reduced", "EMMap", "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway",
     "Movie", "Comparison", "crane.Shaper", "crane.Profile", "crane.CraneRun", "crane.GridResult",
+    "crane.LQR", "crane.LQRRun", "crane.Gantry", "crane.Crane",
 ]  # fmt: skip
 
 
@@ -163,3 +178,40 @@ def test_a_shaper_shows_its_tolerance_only_where_it_was_designed_to_one() -> Non
     assert "tolerance=0.05" in repr(crane.shaper("ei", omega=1.0))
     both = crane.shaper("zv", omega=1.0) * crane.shaper("zv", omega=2.0)
     assert "nan" not in repr(both) and "omega" not in repr(both), repr(both)
+
+
+def test_an_lqr_names_its_rope_poles_and_slowest_pole(objects) -> None:
+    """Its dataclass repr printed the K and poles arrays; now the rope, the poles' count and the
+    least damped pole (smallest |Re p|, here computed from the poles directly), and a_max."""
+    ctrl = objects["crane.LQR"]
+    text = repr(ctrl)
+    poles = np.linalg.eigvals(np.array([[0, 1, 0, 0], [0, 0, 0, 0], [0, 0, 0, 1], [0, 0, -9.81 / 8.0, 0]])
+                              - np.array([[0.0], [1.0], [0.0], [-1.0 / 8.0]]) @ ctrl.K)  # fmt: skip
+    slow = poles[np.argmin(np.abs(poles.real))]
+    assert text.startswith("LQR(rope=8 m, poles=4, slowest_pole="), text
+    assert f"slowest_pole={slow.real:.4g} ± {abs(slow.imag):.4g}j 1/s" in text, text
+    assert text.endswith("a_max=0.5 m/s²)"), text
+    assert "inf" not in repr(crane.lqr(8.0)) and "a_max" not in repr(crane.lqr(8.0))
+
+
+def test_an_lqr_run_names_its_distance_and_span(objects) -> None:
+    run = objects["crane.LQRRun"]
+    text = repr(run)
+    assert text == f"LQRRun(distance=3 m, t=0 … 8 s, switches={run.switches.size})", text
+    assert run.switches.size > 0  # a_max = 0.5 m/s² clips the first push of a 3 m move
+
+
+def test_a_gantry_names_its_travel_and_end(objects) -> None:
+    text = repr(objects["crane.Gantry"])
+    t_end = objects["crane.Gantry"].trolley.t_end
+    assert text == f"Gantry(trolley=4 m, bridge=—, origin=[0, 0, 12] m, t_end={t_end:.4g} s)", text
+    assert "np.float64" not in text
+    tilted = repr(crane.Gantry(bridge=crane.profile(2.0, 0.5, 0.5), bridge_axis=(0.0, 0.6, 0.8)))
+    assert "bridge=2 m, bridge_axis=[0, 0.6, 0.8]" in tilted, tilted
+
+
+def test_a_crane_names_its_rope_masses_and_pivot(objects) -> None:
+    text = repr(objects["crane.Crane"])
+    assert text == "Crane(rope=8 m, payload_mass=500 kg, hook_mass=50 kg, rigging=1.5 m, pivot=Gantry)", text
+    hoisted = crane.Crane(rope=8.0, hoist=crane.Hoist([0.0, 5.0], [8.0, 4.0]), damping=0.1)
+    assert repr(hoisted) == "Crane(rope=4 … 8 m, payload_mass=1000 kg, damping=0.1 1/s, pivot=Gantry)"

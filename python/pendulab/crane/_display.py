@@ -1,4 +1,5 @@
-"""How the crane's results show themselves (``Shaper``, ``Profile``, ``CraneRun``, ``GridResult``): a
+"""How the crane's objects show themselves (``Shaper``, ``Profile``, ``CraneRun``, ``GridResult``, ``LQR``,
+``LQRRun``, ``Gantry``, ``Crane``): a
 one-line ``repr`` of the key numbers and, in notebooks, a small HTML table of them with their SI units
 (:func:`pendulab.display.html_table`), like the package's other results; never the arrays."""
 
@@ -8,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from ..display import Row, html_table, number, with_unit
+from ..display import Row, html_table, number, vector, with_unit
 
 
 class Shown:
@@ -92,4 +93,67 @@ def grid_rows(g: Any) -> list[Row]:
     ]
     if g.interrupted:
         rows.append(("interrupted", True, ""))
+    return rows
+
+
+def _span(a: float, b: float) -> str:
+    return f"{number(a)} … {number(b)}"
+
+
+def lqr_rows(c: Any) -> list[Row]:
+    """rope, the poles' count and the slowest (least damped: smallest |Re p|), a_max where finite."""
+    poles = np.asarray(c.poles)
+    rows: list[Row] = [("rope", c.rope, "m"), ("poles", int(poles.size), "")]
+    if poles.size:
+        p = complex(poles[np.argmin(np.abs(poles.real))])
+        text = number(p.real, 4) + (f" ± {number(abs(p.imag), 4)}j" if p.imag != 0 else "")
+        rows.append(("slowest_pole", text, "1/s"))
+    if np.isfinite(c.a_max):
+        rows.append(("a_max", c.a_max, "m/s²"))
+    return rows
+
+
+def lqr_run_rows(r: Any) -> list[Row]:
+    """distance, the time span, the limit's switches, the interruption."""
+    rows: list[Row] = [
+        ("distance", r.distance, "m"),
+        ("t", _span(*r.span), "s"),
+        ("switches", int(r.switches.size), ""),
+    ]
+    if r.interrupted:
+        rows.append(("interrupted", True, ""))
+    return rows
+
+
+def gantry_rows(g: Any) -> list[Row]:
+    """each axis's travel (its profile's distance) and t_end; origin and axes only where not the default."""
+    rows: list[Row] = []
+    for name, default in (("trolley", (1.0, 0.0, 0.0)), ("bridge", (0.0, 1.0, 0.0))):
+        prof, axis = getattr(g, name), getattr(g, f"{name}_axis")
+        rows.append((name, "—" if prof is None else number(prof.distance, 4), "" if prof is None else "m"))
+        if tuple(float(v) for v in axis) != default:
+            rows.append((f"{name}_axis", vector(axis, 4), ""))
+    if any(float(v) != 0.0 for v in g.origin):
+        rows.append(("origin", vector(g.origin, 4), "m"))
+    rows.append(("t_end", g.t_end, "s"))
+    return rows
+
+
+def crane_rows(c: Any, default_wind: Any) -> list[Row]:
+    """rope (its range when hoisted), payload, hook and rigging, damping, wind, g where not 9.81, pivot."""
+    lengths = c.hoist.length(c.hoist.nodes)  # at its samples
+    lo, hi = float(np.min(lengths)), float(np.max(lengths))
+    rows: list[Row] = [
+        ("rope", number(lo) if lo == hi else _span(lo, hi), "m"),
+        ("payload_mass", c.payload_mass, "kg"),
+    ]
+    if c.hook_mass is not None:
+        rows += [("hook_mass", c.hook_mass, "kg"), ("rigging", c.rigging, "m")]
+    if c.damping:
+        rows.append(("damping", c.damping, "1/s"))
+    if c.wind != default_wind:
+        rows.append(("wind", True, ""))
+    if c.g != 9.81:
+        rows.append(("g", c.g, "m/s²"))
+    rows.append(("pivot", type(c.pivot).__name__, ""))
     return rows

@@ -39,6 +39,7 @@ from .._progress import seconds_bar
 from .._warn import warn_user
 from ..validate import flag, invalid
 from ._checks import later, number, numbers, positive, real, time, times
+from ._display import Row, Shown, lqr_rows, lqr_run_rows
 from .paths import Path
 from .shaper import FloatArray
 
@@ -67,8 +68,8 @@ def _matrices(rope: float, g: float) -> tuple[FloatArray, FloatArray]:
     return a, b
 
 
-@dataclass(frozen=True)
-class LQR:
+@dataclass(frozen=True, repr=False)
+class LQR(Shown):
     """The LQR gain ``K`` (1, 4) for z = (x − x_target [m], ẋ [m/s], θ [rad], θ̇ [rad/s]), the closed-loop
     ``poles`` [1/s], the ``rope`` [m], ``g`` [m/s²] and the acceleration limit ``a_max`` [m/s²] (u is
     clipped to ±a_max; inf for none)."""
@@ -78,6 +79,9 @@ class LQR:
     rope: float
     g: float
     a_max: float
+
+    def _rows(self) -> list[Row]:
+        return lqr_rows(self)
 
     def control(self, z: FloatArray) -> FloatArray:
         """u = clip(−K z, ±a_max) [m/s²] for states z (…, 4)."""
@@ -248,7 +252,7 @@ class _Pieces:
         return out
 
 
-class LQRRun(Path):
+class LQRRun(Path, Shown):
     """A closed-loop run: ``trolley(t)`` (x, ẋ, u), ``sway(t)`` θ [rad]; as a :class:`Path` along e₁ the
     trolley position [m], velocity and acceleration u (at rest at x = 0 before t_start, held at rest
     after t_end). Its ``breaks``: t_start (u steps from 0 to −K z₀) and ``switches``, the times [s]
@@ -273,6 +277,9 @@ class LQRRun(Path):
         self.switches = np.asarray(switches, dtype=np.float64)
         self.breaks = np.union1d([t0], self.switches)
         self.t_end = t1
+
+    def _rows(self) -> list[Row]:
+        return lqr_run_rows(self)
 
     def check_run(self, t_start: float, t_end: float) -> None:
         if t_end > self.span[1]:

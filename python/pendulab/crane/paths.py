@@ -31,6 +31,7 @@ from ..validate import integer, invalid, show
 from . import _spacing
 from ._checks import count, later, numbers, positive, time
 from ._checks import times as time_array
+from ._display import Row, Shown, gantry_rows
 from .move import Profile, profile
 from .shaper import FloatArray, Shaper
 
@@ -136,8 +137,8 @@ class Path:
         return t, self.position(t)
 
 
-@dataclass(frozen=True, eq=False)
-class Gantry(Path):
+@dataclass(frozen=True, eq=False, repr=False)
+class Gantry(Path, Shown):
     """Overhead / gantry crane: trolley and bridge profiles [m] along their axes from ``origin`` [m]."""
 
     trolley: Profile | None = None
@@ -153,6 +154,9 @@ class Gantry(Path):
         numbers("origin", self.origin, "m", shape=(3,))
         _unit(self.trolley_axis, "trolley_axis")
         _unit(self.bridge_axis, "bridge_axis")
+
+    def _rows(self) -> list[Row]:
+        return gantry_rows(self)
 
     def _axes(self) -> list[tuple[Profile, FloatArray]]:
         out = []

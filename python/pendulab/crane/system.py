@@ -20,7 +20,7 @@ from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
 from ..validate import array, integer, invalid
 from . import _spacing
 from ._checks import later, nonnegative, number, numbers, positive, positives, time, times, tolerances
-from ._display import Row, Shown, run_rows
+from ._display import Row, Shown, crane_rows, run_rows
 from .paths import Gantry, Path
 from .shaper import FloatArray
 
@@ -234,7 +234,7 @@ def _direction(name: str, angles: Any) -> FloatArray:
     return np.array([math.sin(th) * math.cos(ph), math.sin(th) * math.sin(ph), -math.cos(th)])
 
 
-class Crane:
+class Crane(Shown):
     """A crane (module doc): ``rope`` length [m] (the hoist's length at t = 0 when ``hoist`` is given),
     ``pivot`` path (a :mod:`pendulab.crane.paths` path; default fixed at the origin), ``payload_mass``
     [kg], ``hook_mass`` [kg] and ``rigging`` [m] (both or neither: the hook + payload double
@@ -277,6 +277,9 @@ class Crane:
                 f"rope = {rope!r} m but the hoist's length at t = 0 is {l0!r} m; give the same"
             )
         self.hoist = hoist if hoist is not None else Hoist([0.0, 1.0], [self.rope, self.rope])
+
+    def _rows(self) -> list[Row]:
+        return crane_rows(self, Wind())
 
     def modes(self, rope: float | None = None) -> FloatArray:
         """The small-sway angular frequencies [rad/s] (increasing) at rope length ``rope`` [m] (default
