@@ -3,6 +3,9 @@
 
 use thiserror::Error;
 
+mod hint;
+pub use hint::did_you_mean;
+
 /// Everything that can go wrong in `pendulab-core`.
 #[derive(Debug, Clone, PartialEq, Error)]
 pub enum Error {
@@ -44,8 +47,8 @@ pub enum Error {
     /// The state cannot be projected onto TS² (x = 0 has no direction).
     #[error("cannot project x = 0 onto the sphere |x| = l: the position has no direction")]
     DegeneratePosition,
-    /// An unknown integrator name.
-    #[error("unknown method {name:?}; available: {available}")]
+    /// An unknown integrator name, with the nearest registered one ([`did_you_mean`]) and all of them.
+    #[error("unknown method {name:?}{}; available: {available}", did_you_mean(name, available.split(", ")))]
     UnknownMethod {
         /// The name that was asked for.
         name: String,

@@ -156,3 +156,31 @@ fn a_keys_step_size_and_residual_are_those_of_the_words() {
         }
     }
 }
+
+/// An unknown method names the nearest registered one (the same but for case first) and all of them; it
+/// said only "unknown method \"RATTLE\"; available: …", unlike the Python layer's message.
+#[test]
+fn an_unknown_method_names_the_nearest_and_the_registered_ones() {
+    use crate::integrate::Method;
+    let available = "rattle, rattle4, rattle6, rattle8, dop853, rkmk4, rk4, rk4_angles";
+    let message = |name: &str| Method::from_name(name).unwrap_err().to_string();
+    for (given, hint) in [
+        ("RATTLE", Some("rattle")),
+        ("Rk4", Some("rk4")), // the same but for case, not the closer-looking 'rkmk4'
+        ("ratle", Some("rattle")),
+        ("rk5", Some("rk4")),
+        ("RK-4", Some("rk4")),
+        ("dop85", Some("dop853")),
+        ("rk4_angle", Some("rk4_angles")),
+        ("euler", None),
+        ("zzzz", None),
+        ("", None),
+    ] {
+        let hint = hint.map_or(String::new(), |h| format!(" (did you mean {h:?}?)"));
+        assert_eq!(message(given), format!("unknown method {given:?}{hint}; available: {available}"));
+    }
+    let long = "r".repeat(100_000); // no hint, and no 10⁵-by-10 distance table
+    assert_eq!(message(&long), format!("unknown method {long:?}; available: {available}"));
+    assert_eq!(did_you_mean("rattle10", ["rattle", "rattle4"]), " (did you mean \"rattle\"?)");
+    assert_eq!(did_you_mean("x", std::iter::empty()), "");
+}
