@@ -172,6 +172,9 @@ fn an_unknown_method_names_the_nearest_and_the_registered_ones() {
         ("RK-4", Some("rk4")),
         ("dop85", Some("dop853")),
         ("rk4_angle", Some("rk4_angles")),
+        ("rattl6", Some("rattle6")),  // as near as 'rattle', and more alike
+        ("rattel4", Some("rattle4")), // two neighbours swapped: one edit
+        ("kr4", Some("rk4")),
         ("euler", None),
         ("zzzz", None),
         ("", None),

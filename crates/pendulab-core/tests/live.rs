@@ -228,3 +228,27 @@ fn every_model_that_runs_only_some_methods_refuses_the_others_with_its_own_key()
     }
     assert_eq!(restricted, ["spring", "string", "crane"]);
 }
+
+/// The lab's set_method refuses an unknown method with the words of `Method::from_name` (the name as
+/// sent, the nearest registered one: `error::did_you_mean`, and all of them); it had no hint.
+#[test]
+fn set_method_names_the_nearest_method_as_the_core_does() {
+    use pendulab_core::live::wire::parse_command;
+    let available = "rattle, rattle4, rattle6, rattle8, dop853, rkmk4, rk4, rk4_angles";
+    let refuse = |method: &str| {
+        let text = format!(r#"{{"type": "set_method", "method": {method}}}"#);
+        parse_command(&text, &|_| Err(String::new())).unwrap_err()
+    };
+    for (name, hint) in
+        [("RATTLE", Some("rattle")), ("ratle", Some("rattle")), ("Rk4", Some("rk4")), ("euler", None)]
+    {
+        let hint = hint.map_or(String::new(), |h| format!(" (did you mean {h:?}?)"));
+        let (words, kind) = refuse(&format!("{name:?}"));
+        assert_eq!(words, format!("unknown method {name:?}{hint}; available: {available}"));
+        assert_eq!(words, Method::from_name(name).unwrap_err().to_string());
+        assert_eq!(kind, Some("set_method"));
+    }
+    for sent in ["3", "true", "[\"rattle\"]"] {
+        assert_eq!(refuse(sent).0, format!("unknown method {sent}; available: {available}"));
+    }
+}

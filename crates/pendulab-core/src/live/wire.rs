@@ -8,7 +8,7 @@
 
 use super::pendulum::LivePendulum;
 use super::session::{Command, LiveSession, Setup, StateSpec};
-use crate::error::Shown;
+use crate::error::{did_you_mean, Shown};
 use crate::string_run::{EventKind, StringEvent};
 use crate::{DVec3, Method};
 use serde_json::{json, Map, Value};
@@ -219,8 +219,15 @@ pub fn parse_command(
                 Some(v) => match v.as_str().map(Method::from_name) {
                     Some(Ok(m)) => Some(m),
                     _ => {
+                        // the words of Error::UnknownMethod, the name as sent (JSON, abbreviated)
                         let names: Vec<_> = crate::integrate::all().iter().map(|m| m.name).collect();
-                        problems.push(format!("unknown method {}; available: {}", show(v), names.join(", ")));
+                        let hint =
+                            v.as_str().map_or_else(String::new, |s| did_you_mean(s, names.iter().copied()));
+                        problems.push(format!(
+                            "unknown method {}{hint}; available: {}",
+                            show(v),
+                            names.join(", ")
+                        ));
                         None
                     }
                 },
