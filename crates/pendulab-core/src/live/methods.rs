@@ -1,6 +1,6 @@
 //! Which methods a lab model runs, and the keyed refusal of the others (docs/web.md, "Languages").
 //! Matched over every [`Restricted`] model: a model added there must say which methods it runs and
-//! why not the others, at compile time.
+//! why not the others, at compile time; and a model added to the registry must say whether it is one.
 
 use super::crane::CRANE;
 use crate::error::Error;
@@ -21,16 +21,29 @@ pub(super) enum Restricted {
     Crane,
 }
 
+/// Every model of the registry and the lab's crane, each with the methods it runs in the lab: every
+/// method of [`crate::Stepper`] (`None`: the rod models; `hoisted` and `sampled_pivot` run in no lab)
+/// or only some. No catch-all: a model added to the registry does not compile until it has its row
+/// here (the length below), and `every_model_has_its_row` checks the names.
+const MODELS: [(&str, Option<Restricted>); 10] = [
+    ("ideal", None),
+    ("damped", None),
+    ("rotating", None),
+    ("slewing", None),
+    ("vibrating", None),
+    ("hoisted", None),
+    ("sampled_pivot", None),
+    ("spring", Some(Restricted::Spring)),
+    ("string", Some(Restricted::String)),
+    (CRANE, Some(Restricted::Crane)),
+];
+const _: () = assert!(MODELS.len() == crate::model::registry::MODELS.len() + 1, "a model without its row");
+
 impl Restricted {
-    /// The model of registry name `model` if it runs only some methods (None: a rod model, which
-    /// runs every method of [`crate::Stepper`]).
+    /// The model of name `model` if it runs only some methods (None: a rod model, which runs every
+    /// method of [`crate::Stepper`], or a name that is no model).
     pub(super) fn of(model: &str) -> Option<Self> {
-        match model {
-            "spring" => Some(Self::Spring),
-            "string" => Some(Self::String),
-            CRANE => Some(Self::Crane),
-            _ => None,
-        }
+        MODELS.iter().find(|(name, _)| *name == model).and_then(|(_, which)| *which)
     }
 
     /// The methods it runs, by registry name.
@@ -79,5 +92,22 @@ pub(super) fn method_refused(
         words: format!("method {method:?} cannot run the {model:?} model ({what}); {use_} {available}"),
         key,
         values: vec![("method", method.to_string()), ("model", model.to_string()), ("available", available)],
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The rows of [`MODELS`] are the registry's models and the crane, each once.
+    #[test]
+    fn every_model_has_its_row() {
+        let mut rows: Vec<&str> = MODELS.iter().map(|(name, _)| *name).collect();
+        let mut models: Vec<&str> = crate::model::registry::MODELS.iter().map(|m| m.name).collect();
+        models.push(CRANE);
+        rows.sort_unstable();
+        models.sort_unstable();
+        assert_eq!(rows, models);
+        assert_eq!(Restricted::of("no such model"), None);
     }
 }
