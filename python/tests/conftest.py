@@ -1,14 +1,16 @@
 """Shared fixtures: the repository paths, a script of tools/ as a module (:func:`load_tool`), the lab
 page's words of a server message (:func:`page_words`, :func:`page_template`, from
 ``web/src/i18n/*/refusals.ts``), the rosette start (l = 1 m, g = 9.81 m/s², θ₀ = 60°, φ̇₀ = 2 rad/s) and its
-exact solution."""
+exact solution, and a real Ctrl-C sent to a child process (:func:`ctrl_c_after`)."""
 
 from __future__ import annotations
 
 import importlib.util
 import re
 import signal
+import subprocess
 import sys
+import time
 import types
 from pathlib import Path
 from typing import Any
@@ -39,6 +41,27 @@ def load_tool(name: str) -> types.ModuleType:
     sys.modules[name] = module
     spec.loader.exec_module(module)
     return module
+
+
+def ctrl_c_after(
+    cmd: list[str], ready: str, *, stream: str = "stdout", wait: float = 1.0, timeout: float = 60.0
+) -> subprocess.CompletedProcess[str]:
+    """Runs ``cmd``, waits for the first line of its ``stream`` ("stdout" or "stderr"), which must start
+    with ``ready`` (the child prints it just before its long work begins), sends a real SIGINT (Ctrl-C
+    as the user sends it) ``wait`` seconds later, and returns the finished process with its output after
+    that first line. The child is killed if it has not ended ``timeout`` seconds after the signal."""
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        pipe = proc.stdout if stream == "stdout" else proc.stderr
+        assert pipe is not None
+        first = pipe.readline()
+        assert first.startswith(ready), first
+        time.sleep(wait)
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=timeout)
+    finally:
+        proc.kill()
+    return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
 
 
 def page_template(lang: str, key: str) -> str:

@@ -4,15 +4,12 @@ and the error contract (one ``error: …`` line on stderr, exit code 2, no trace
 from __future__ import annotations
 
 import json
-import signal
-import subprocess
 import sys
-import time
 from pathlib import Path
 
 import numpy as np
 import pytest
-from conftest import SCENARIOS
+from conftest import SCENARIOS, ctrl_c_after
 from typer.testing import CliRunner
 
 import pendulab as pl
@@ -365,18 +362,9 @@ def test_ctrl_c_writes_what_was_computed(tmp_path: Path) -> None:
     """SIGINT during a long run: the samples so far are written, stderr says so, exit code 130."""
     out = tmp_path / "long.csv"
     cmd = [sys.executable, "-m", "pendulab.cli", "run", ROSETTE, "--t-end", "1e6", "--save-every", "1000"]
-    proc = subprocess.Popen(
-        [*cmd, "--out", str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
-    )
-    try:
-        assert proc.stderr is not None
-        first = proc.stderr.readline()  # "running …" is printed just before the run starts
-        assert first.startswith("running"), first
-        time.sleep(0.3)
-        proc.send_signal(signal.SIGINT)
-        stdout, stderr = proc.communicate(timeout=20)
-    finally:
-        proc.kill()
+    # "running …" is printed just before the run starts
+    proc = ctrl_c_after([*cmd, "--out", str(out)], "running", stream="stderr", wait=0.3, timeout=20)
+    stdout, stderr = proc.stdout, proc.stderr
     assert proc.returncode == 130, stderr
     assert "interrupted (Ctrl-C) at t = " in stderr and f"to {out}" in stderr
     assert "Traceback" not in stderr and "INTERRUPTED" in stdout

@@ -4,13 +4,10 @@ one ``error:`` line and exit code 2."""
 from __future__ import annotations
 
 import re
-import signal
-import subprocess
 import sys
-import time
 
 import pytest
-from conftest import SCENARIOS
+from conftest import SCENARIOS, ctrl_c_after
 from PIL import Image
 from typer.testing import CliRunner
 
@@ -81,16 +78,9 @@ def test_ctrl_c_stops_the_movie_and_leaves_no_file(tmp_path):
     out = tmp_path / "long.mp4"
     cmd = [sys.executable, "-m", "pendulab.cli", "animate", str(SCENARIOS / "rosette.toml"), "--exact"]
     cmd += ["--out", str(out), "--size", "320x180", "--t-end", "1000", "--no-progress"]  # 30001 frames
-    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    try:
-        assert proc.stderr is not None
-        first = proc.stderr.readline()  # "exact solution of …" is printed just before the frames start
-        assert first.startswith("exact solution of"), first
-        time.sleep(1.0)
-        proc.send_signal(signal.SIGINT)
-        _, stderr = proc.communicate(timeout=30)
-    finally:
-        proc.kill()
+    # "exact solution of …" is printed just before the frames start
+    proc = ctrl_c_after(cmd, "exact solution of", stream="stderr", wait=1.0, timeout=30)
+    stderr = proc.stderr
     assert proc.returncode == 130, stderr
     assert stderr.strip().endswith("error: interrupted (Ctrl-C)") and "Traceback" not in stderr
     assert list(tmp_path.iterdir()) == []

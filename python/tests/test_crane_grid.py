@@ -5,13 +5,11 @@ grids are refused before any work."""
 from __future__ import annotations
 
 import math
-import signal
-import subprocess
 import sys
-import time
 
 import numpy as np
 import pytest
+from conftest import ctrl_c_after
 
 from pendulab import InvalidInputError, crane
 from pendulab.crane import grid as grid_module
@@ -70,17 +68,8 @@ def test_the_grid_runs_in_chunks_and_ctrl_c_keeps_what_is_done(monkeypatch: pyte
         "    r = crane.residual_grid(ropes, ratios, [None], progress=False)\n"
         "print(r.interrupted, int(np.isnan(r.sway).sum()), r.sway.size, [str(x.message) for x in w])\n"
     )
-    proc = subprocess.Popen(
-        [sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
-    )
-    try:
-        assert proc.stdout is not None
-        assert proc.stdout.readline().strip() == "start"
-        time.sleep(1.5)
-        proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=60)
-    finally:
-        proc.kill()
+    proc = ctrl_c_after([sys.executable, "-c", script], "start", wait=1.5)
+    out, err = proc.stdout, proc.stderr
     assert proc.returncode == 0, err
     flag, nan, size, messages = out.strip().split(" ", 3)
     assert flag == "True" and 0 < int(nan) < int(size) == 20_000, out

@@ -6,14 +6,12 @@ there) with a RuntimeWarning at the caller's line, as ``pendulab.simulate`` does
 
 from __future__ import annotations
 
-import signal
-import subprocess
 import sys
-import time
 from typing import Any
 
 import numpy as np
 import pytest
+from conftest import ctrl_c_after
 
 from pendulab import InvalidInputError, crane
 
@@ -111,17 +109,8 @@ def test_sigint_stops_a_long_loop_cleanly() -> None:
         "    r = c.simulate(1.0, t_end=4e4, progress=False)\n"
         "print(r.interrupted, r.t_end, [str(x.message) for x in w])\n"
     )
-    proc = subprocess.Popen(
-        [sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
-    )
-    try:
-        assert proc.stdout is not None
-        assert proc.stdout.readline().strip() == "start"
-        time.sleep(1.5)
-        proc.send_signal(signal.SIGINT)
-        out, err = proc.communicate(timeout=60)
-    finally:
-        proc.kill()
+    proc = ctrl_c_after([sys.executable, "-c", script], "start", wait=1.5)
+    out, err = proc.stdout, proc.stderr
     assert proc.returncode == 0, err
     flag, t_end, messages = out.strip().split(" ", 2)
     assert flag == "True" and 0 < float(t_end) < 4e4, out
