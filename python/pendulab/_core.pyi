@@ -124,7 +124,8 @@ class RunOptions:
     order (2 or 4), a cap on steps (the crane's runs), and the RATTLE family's ``arithmetic``
     (``"unfused"``, the default, or ``"fused"``; ``Solver``, ``Stepper`` and ``EnsembleRun``);
     ``halved_steps``: every fixed step taken as two halves (``Solver``; the error estimate's dt/2
-    companion on a sampled pivot, docs/integrators.md)."""
+    companion on a sampled pivot, docs/integrators.md); ``steps_on_samples``: dt the longest fixed step,
+    the steps landing on every sample of a sampled pivot (``Solver``; ``accuracy=``)."""
 
     def __new__(
         cls,
@@ -144,6 +145,7 @@ class RunOptions:
         max_steps: int | None = None,
         arithmetic: str = "unfused",
         halved_steps: bool = False,
+        steps_on_samples: bool = False,
     ) -> Self: ...
     @property
     def arithmetic(self) -> str: ...

@@ -45,6 +45,7 @@ def simulate(
     accuracy: float | None = None,
     drift: str = "raise",
     arithmetic: str = "auto",
+    steps_on_samples: bool = False,
 ) -> Trajectory:
     """Integrates from ``state`` at time ``t0`` [s] to ``t_end`` [s].
 
@@ -92,6 +93,10 @@ def simulate(
         one of them by name for results that are bit-identical across machines; a fused run says so in
         ``metadata["arithmetic"]`` (docs/performance.md, "No CPU left behind").
         ``simulate_ensemble`` gives each trajectory these numbers bit for bit.
+    steps_on_samples : a sampled pivot's fixed-step runs: ``dt`` is the longest step and the steps land
+        on every sample, each interval between samples taken in ⌈span/dt⌉ equal steps; ``accuracy=``
+        runs so (default False). Without, the steps are dt, one that holds a sample split there
+        (docs/integrators.md, "Sampled pivot"). No effect on ``dop853`` or without pivot samples.
 
     Every argument is checked against :mod:`pendulab.validate` before any work starts (docs/limits.md).
 
@@ -130,6 +135,7 @@ def simulate(
             "max_saved_bytes": max_saved_bytes,
             "drift": drift,
             "arithmetic": arithmetic,
+            "steps_on_samples": steps_on_samples,
         }
         return _with_error_estimate(pendulum, state, t_end, accuracy, plain)
     run = check_run(
@@ -148,6 +154,7 @@ def simulate(
         max_saved_bytes=max_saved_bytes,
         drift=drift,
         arithmetic=arithmetic,
+        steps_on_samples=steps_on_samples,
     )
     if pendulum.model == "string":  # hybrid: taut phases, events, analytic flight (string_pendulum.py)
         return _run_string(pendulum, state, run)

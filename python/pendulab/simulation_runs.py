@@ -88,6 +88,7 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings, halved: boo
         max_saved_bytes=saved_bytes_cap(run.max_saved_bytes),  # within the memory left (issue 30)
         arithmetic=run.arithmetic,
         halved_steps=halved,
+        steps_on_samples=run.steps_on_samples,
     )
     solver: Solver | ForceSolver
     if pendulum.force is not None:  # the slow path: the core calls back into Python (force.rs)
@@ -108,6 +109,8 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings, halved: boo
         meta = {k: v for k, v in meta.items() if k != "first_step" or dt > 0}
     if save_every is not None:
         meta["save_every"] = int(save_every)
+    if run.steps_on_samples and pendulum.pivot_samples is not None and not info["adaptive"]:
+        meta["steps_on_samples"] = True
     if times is not None:
         meta["save_at_times"] = int(times.size)  # how many save_at times were asked for
     if not info["preserves_ts2"] and not (info["adaptive"] and run.project):

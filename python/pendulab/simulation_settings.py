@@ -1,8 +1,8 @@
 """The arguments of :func:`pendulab.simulate` checked into one :class:`RunSettings` before any work
 starts (:func:`check_run`; docs/limits.md): the method and its settings (``integrators.check_settings``),
 t_end [s] after t0 [s], progress, the memory limit [bytes], save_every or save_at [s], the planned
-steps, the user force with ``conserve``, and the arithmetic. The runs that take the settings:
-``simulation_runs.py``."""
+steps, the user force with ``conserve``, the arithmetic, and ``steps_on_samples``. The runs that take
+the settings: ``simulation_runs.py``."""
 
 from __future__ import annotations
 
@@ -35,6 +35,7 @@ class RunSettings:
     max_saved_bytes: int | None
     drift: str
     arithmetic: str = "unfused"
+    steps_on_samples: bool = False
 
 
 def check_run(
@@ -54,6 +55,7 @@ def check_run(
     max_saved_bytes: Any,
     drift: str,
     arithmetic: Any = "auto",
+    steps_on_samples: Any = False,
 ) -> RunSettings:
     """Every argument of :func:`pendulab.simulate` checked against :mod:`pendulab.validate` before any work
     starts (docs/limits.md), as one :class:`RunSettings`."""
@@ -102,4 +104,5 @@ def check_run(
         max_saved_bytes,
         drift,
         arithmetic,
+        flag("steps_on_samples", steps_on_samples),
     )

@@ -142,6 +142,7 @@ pymethods_with_getters! {
             let mut inner = Solver::new(Handle(model.clone()), o.t0, s, o.t_end()?, &o.solve, o.save.clone(), o.max_saved_bytes)
                 .map_err(to_py)?;
             inner.stepper_mut().set_halved_steps(o.halved_steps);
+            inner.stepper_mut().set_steps_on_breaks(o.steps_on_samples);
             if let Some(e) = model.take_error() {
                 return Err(e);
             }

@@ -30,6 +30,7 @@ pymethods_with_getters! {
             inner.stepper_mut().set_invariant_projection(o.conserve);
             inner.stepper_mut().set_arithmetic(o.arithmetic).map_err(to_py)?;
             inner.stepper_mut().set_halved_steps(o.halved_steps);
+            inner.stepper_mut().set_steps_on_breaks(o.steps_on_samples);
             Ok(Self { inner })
         }
 

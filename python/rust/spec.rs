@@ -196,6 +196,9 @@ pub(crate) struct RunOptions {
     /// Every fixed step taken as two halves (`Stepper::set_halved_steps`: the error estimate's dt/2
     /// companion on a sampled pivot; `Solver`, `ForceSolver`).
     pub(crate) halved_steps: bool,
+    /// A sampled pivot's fixed steps land on every sample, dt the longest (`Stepper::set_steps_on_breaks`;
+    /// `Solver`, `ForceSolver`).
+    pub(crate) steps_on_samples: bool,
 }
 
 impl RunOptions {
@@ -206,7 +209,7 @@ impl RunOptions {
 }
 
 /// The keywords `RunOptions` takes, in the order of its signature (`_core.pyi`).
-const KEYWORDS: [&str; 15] = [
+const KEYWORDS: [&str; 16] = [
     "t0",
     "t_end",
     "method",
@@ -222,6 +225,7 @@ const KEYWORDS: [&str; 15] = [
     "max_steps",
     "arithmetic",
     "halved_steps",
+    "steps_on_samples",
 ];
 
 /// `RunOptions`' keywords as given (None: not given or None), read once from the call's keywords.
@@ -242,6 +246,7 @@ struct Keywords<'py> {
     max_steps: Option<u64>,
     arithmetic: Option<String>,
     halved_steps: Option<bool>,
+    steps_on_samples: Option<bool>,
 }
 
 impl<'py> Keywords<'py> {
@@ -268,6 +273,7 @@ impl<'py> Keywords<'py> {
                 "max_steps" => k.max_steps = optional(v, "max_steps")?,
                 "arithmetic" => k.arithmetic = Some(keyword(v, "arithmetic")?),
                 "halved_steps" => k.halved_steps = Some(keyword(v, "halved_steps")?),
+                "steps_on_samples" => k.steps_on_samples = Some(keyword(v, "steps_on_samples")?),
                 _ => {
                     return Err(PyTypeError::new_err(format!(
                         "RunOptions() got an unexpected keyword argument '{name}' (it takes {})",
@@ -309,7 +315,7 @@ impl RunOptions {
     #[new]
     #[pyo3(signature = (**keywords))]
     #[pyo3(
-        text_signature = "(*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=False, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None, arithmetic='unfused', halved_steps=False)"
+        text_signature = "(*, t0=0.0, t_end=None, method=None, dt=None, rtol=None, atol=None, project=None, conserve=False, save_every=None, save_times=None, max_saved_bytes=None, order=2, max_steps=None, arithmetic='unfused', halved_steps=False, steps_on_samples=False)"
     )]
     fn new(keywords: Option<&Bound<'_, PyDict>>) -> PyResult<Self> {
         let k = Keywords::read(keywords)?;
@@ -345,6 +351,7 @@ impl RunOptions {
             max_steps: k.max_steps,
             arithmetic,
             halved_steps: k.halved_steps.unwrap_or(false),
+            steps_on_samples: k.steps_on_samples.unwrap_or(false),
         })
     }
 

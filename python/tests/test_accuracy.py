@@ -122,6 +122,33 @@ def test_accuracy_on_a_sampled_pivot_steps_at_most_the_sample_spacing() -> None:
     assert guess > 0.015 and before.stats["steps"] > 1.6 * tr.stats["steps"], (guess, before.stats)
 
 
+def test_accuracy_on_unevenly_spaced_samples_steps_on_every_sample() -> None:
+    """On samples 7 … 13 ms apart ``accuracy=`` takes each interval between samples in ⌈span/dt⌉ equal
+    steps (``steps_on_samples``): none holds a sample, where p̈ is kinked. The plain grid at the same dt
+    splits nearly every step on a sample (more steps)."""
+    rng = np.random.default_rng(7)
+    gaps = 0.01 * (1.0 + 0.6 * (rng.random(330) - 0.5))
+    t = np.concatenate([[-0.1, -0.05], np.cumsum(np.concatenate([[0.0], gaps]))])
+    path = np.stack([0.3 * np.sin(1.3 * t), 0.2 * np.sin(0.7 * t + 0.5), 0.1 * np.cos(2 * t)], axis=-1)
+    p = pl.Pendulum(length=1.0, g=9.81, pivot_samples=(t, path), damping=0.03)
+    s0 = p.state_from_angles(theta=1.3, phi=0.9, theta_dot=0.6, phi_dot=2.5)
+    a = 1e-8
+    tr = pl.simulate(p, s0, 3.0, accuracy=a, save_every=10)
+    dt = tr.options["dt"]
+    assert tr.method == "rattle8" and tr.options["steps_on_samples"] is True, tr.options
+    ref = pl.simulate(p, s0, 3.0, method="dop853", rtol=1e-13, atol=1e-14, save_at=tr.t)
+    true = float(np.max(np.linalg.norm(tr.x - ref.x, axis=1)))
+    assert true <= a * p.length, true
+    # the steps: ⌈span/dt⌉ per interval, the one holding t_end = 3 s up to it
+    starts = t[(t >= 0.0) & (t < 3.0)]
+    ends = np.append(starts[1:], t[t > starts[-1]][0])
+    n = np.ceil((ends - starts) / dt)
+    n[-1] = np.ceil((3.0 - starts[-1]) / ((ends[-1] - starts[-1]) / n[-1]) - 1e-9)
+    assert tr.stats["steps"] == int(n.sum()), (tr.stats, n.sum())
+    plain = pl.simulate(p, s0, 3.0, method="rattle8", dt=dt, save_every=10)
+    assert plain.stats["steps"] > 1.3 * tr.stats["steps"], (plain.stats, tr.stats)
+
+
 def test_an_unstable_coarse_run_falls_back_to_the_half_step() -> None:
     # RATTLE8 at 0.15/ω is stable, at 0.3/ω (the 2·dt run) it blows up next to the top
     s0 = IDEAL.state_from_angles(theta=np.radians(150), phi_dot=0.3)

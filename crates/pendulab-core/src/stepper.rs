@@ -3,8 +3,10 @@
 //!
 //! Fixed-step methods take steps of `dt` on the grid t = t_anchor + k·dt (computed by
 //! multiplication, so 10⁸ steps accumulate no round-off in t); [`Stepper::step_to`] shortens the
-//! last step to land exactly on a requested time and re-anchors the grid there. The adaptive
-//! `dop853` takes one accepted step per call and interpolates with its dense output.
+//! last step to land exactly on a requested time and re-anchors the grid there; with
+//! [`Stepper::set_steps_on_breaks`] dt is the longest step and the steps land on a sampled pivot's
+//! samples (`integrate/stretches.rs`). The adaptive `dop853` takes one accepted step per call
+//! and interpolates with its dense output.
 
 use crate::error::{require_positive, Error, Result};
 use crate::integrate::composition::Composition;
@@ -14,9 +16,11 @@ use crate::integrate::rattle_kernel::Arithmetic;
 use crate::integrate::rk4::Rk4;
 use crate::integrate::rk4_angles::Rk4Angles;
 use crate::integrate::rkmk4::Rkmk4;
-use crate::integrate::{fixed_steps, FixedStep, Halved, Method, Stats, StepAcrossBreaks};
+use crate::integrate::{fixed_steps, one_step, FixedStep, Halved, Method, Stats};
 use crate::model::Model;
 use crate::state::State;
+
+mod breaks;
 
 /// How to integrate: the method and its step-size or tolerance settings.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -69,7 +73,8 @@ pub struct Stepper<M: Model> {
     model: M,
     scheme: Scheme,
     method: Method,
-    dt: f64,
+    /// The grid's step \[s\]: `dt`, or a stretch's with [`Stepper::set_steps_on_breaks`].
+    h: f64,
     t_anchor: f64,
     k: u64,
     t: f64,
@@ -80,6 +85,12 @@ pub struct Stepper<M: Model> {
     finite_at: f64,
     /// Every fixed step taken as two halves ([`Stepper::set_halved_steps`]).
     halved: bool,
+    /// The dt given \[s\] (the longest step with [`Stepper::set_steps_on_breaks`]).
+    dt: f64,
+    /// Steps land on the model's breaks ([`Stepper::set_steps_on_breaks`]).
+    on_breaks: bool,
+    /// With `on_breaks`: the end \[s\] of the stretch the grid is planned for (−∞: plan again).
+    stretch_end: f64,
 }
 
 impl<M: Model> Stepper<M> {
@@ -127,7 +138,7 @@ impl<M: Model> Stepper<M> {
             model,
             scheme,
             method: options.method,
-            dt: options.dt,
+            h: options.dt,
             t_anchor: t0,
             k: 0,
             t: t0,
@@ -135,6 +146,9 @@ impl<M: Model> Stepper<M> {
             stats: Stats::default(),
             finite_at: t0,
             halved: false,
+            dt: options.dt,
+            on_breaks: false,
+            stretch_end: f64::NEG_INFINITY,
         })
     }
 
@@ -158,7 +172,8 @@ impl<M: Model> Stepper<M> {
     pub fn stats(&self) -> Stats {
         self.stats
     }
-    /// Fixed step size \[s\] (for `dop853`: the initial step guess).
+    /// Fixed step size \[s\] as given (the longest with [`Stepper::set_steps_on_breaks`]; for
+    /// `dop853`: the initial step guess).
     pub fn dt(&self) -> f64 {
         self.dt
     }
@@ -169,18 +184,11 @@ impl<M: Model> Stepper<M> {
         self.t_anchor = self.t;
         self.k = 0;
         self.finite_at = self.t;
+        self.stretch_end = f64::NEG_INFINITY;
         with_fixed!(&mut self.scheme, s => s.reset(), {
             let Scheme::Dop853(d) = &mut self.scheme else { unreachable!() };
             d.reset()
         });
-    }
-
-    /// Takes every fixed step (each sub-step on a model with breaks, each shortened step) as two equal
-    /// halves ([`crate::integrate::Halved`]) when `on`: the run whose steps are exactly half of those of
-    /// the same run without, for a Richardson error estimate on a sampled pivot, whose steps split on
-    /// its samples. `stats.steps` counts the halves. No effect on `dop853`. Off by default.
-    pub fn set_halved_steps(&mut self, on: bool) {
-        self.halved = on;
     }
 
     /// One step: `dt` for fixed-step methods, one accepted step for `dop853`.
@@ -199,23 +207,27 @@ impl<M: Model> Stepper<M> {
 
     #[inline(always)]
     fn step_towards_here(&mut self, t_stop: f64) -> Result<()> {
+        if !matches!(self.scheme, Scheme::Dop853(_)) {
+            self.plan_stretch();
+        }
         let (model, state, stats) = (&self.model, &mut self.state, &mut self.stats);
         let (t, halved) = (self.t, self.halved);
         with_fixed!(&mut self.scheme, s => {
             // Full steps are exactly dt (as in `step_n`, so both paths give identical numbers); only
             // a step that would pass t_stop is shortened, and a grid point within 1e-9 dt of t_stop
             // counts as t_stop.
-            let t_next = self.t_anchor + (self.k + 1) as f64 * self.dt;
-            let slack = 1e-9 * self.dt;
+            let t_next = self.t_anchor + (self.k + 1) as f64 * self.h;
+            let slack = 1e-9 * self.h;
             if t_stop - t <= slack {
                 // Already there up to round-off of the grid: a step this short would only add noise.
                 self.t = t_stop;
                 self.t_anchor = t_stop;
                 self.k = 0;
+                self.stretch_end = f64::NEG_INFINITY;
                 return Ok(());
             }
             let full = t_next <= t_stop + slack;
-            let h = if full { self.dt } else { t_stop - t };
+            let h = if full { self.h } else { t_stop - t };
             let (taken, per_step) = if halved {
                 let mut halves = Halved(s);
                 (one_step(&mut halves, model, t, state, h)?, halves.evals_per_step())
@@ -229,6 +241,7 @@ impl<M: Model> Stepper<M> {
                 self.t = t_stop;
                 self.t_anchor = t_stop;
                 self.k = 0;
+                self.stretch_end = f64::NEG_INFINITY;
             }
             stats.steps += taken * (1 + u64::from(halved));
             stats.rhs_evals += taken * per_step;
@@ -253,10 +266,19 @@ impl<M: Model> Stepper<M> {
 
     #[inline(always)]
     fn step_n_here(&mut self, n: u64) -> Result<()> {
+        if !self.on_breaks || matches!(self.scheme, Scheme::Dop853(_)) {
+            return self.grid_steps(n);
+        }
+        self.stretch_steps(n)
+    }
+
+    /// `n` full steps on the current grid (`step_n`'s loop).
+    #[inline(always)]
+    fn grid_steps(&mut self, n: u64) -> Result<()> {
         let (model, state, halved) = (&self.model, &mut self.state, self.halved);
         with_fixed!(&mut self.scheme, s => {
             let (k0, mut splits) = (self.k, 0);
-            let grid = (self.t_anchor, self.dt);
+            let grid = (self.t_anchor, self.h);
             let (result, per_step) = if halved {
                 let mut halves = Halved(s);
                 let r = fixed_steps(model, &mut halves, grid, n, (&mut self.k, &mut splits), state);
@@ -265,7 +287,7 @@ impl<M: Model> Stepper<M> {
                 (fixed_steps(model, s, grid, n, (&mut self.k, &mut splits), state), s.evals_per_step())
             };
             let taken = self.k - k0 + splits;
-            self.t = self.t_anchor + self.k as f64 * self.dt;
+            self.t = self.t_anchor + self.k as f64 * self.h;
             self.stats.steps += taken * (1 + u64::from(halved));
             self.stats.rhs_evals += taken * per_step;
             result
@@ -360,23 +382,5 @@ impl<M: Model> Stepper<M> {
         } else {
             Err(Error::Diverged { t: self.finite_at, method: self.method.info().name, dt: self.dt })
         }
-    }
-}
-
-/// One fixed step of `h` \[s\] from `t` \[s\] with `scheme`; a model with breaks ahead splits it on
-/// them ([`crate::integrate::step_across_breaks`]). Returns the (sub-)steps taken.
-#[inline(always)]
-fn one_step<M: Model, S: FixedStep>(
-    scheme: &mut S,
-    model: &M,
-    t: f64,
-    state: &mut State,
-    h: f64,
-) -> Result<u64> {
-    if model.next_break(t) != f64::INFINITY {
-        model.visit(StepAcrossBreaks { scheme, t, h, state })
-    } else {
-        scheme.step(model, t, state, h)?;
-        Ok(1)
     }
 }

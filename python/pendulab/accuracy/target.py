@@ -15,10 +15,14 @@ until the estimate meets a. When refining no longer lowers the estimate — roun
 dominates — it raises :class:`pendulab.InvalidInputError` with the best accuracy float64 reached for
 this motion. Work is bounded before every run: at most ``MAX_STEPS`` steps.
 
-A step longer than the samples' spacing is split on every sample it holds (``Model::next_break``): its
-sub-steps are as short as Δ allows, so it costs more steps than dt = Δ for no better accuracy (10 s at
-a = 1e-8, samples every 10 ms: dt = 16 ms took 1626 steps, dt = Δ 1000, with less error); Δ/n puts
-the steps' ends on uniformly spaced samples from a start on one, so no step splits at all.
+On a sampled pivot the runs take their steps on the samples (``steps_on_samples=True``): dt is the
+longest step, and each interval between samples is taken in ⌈span/dt⌉ equal steps, so that no step
+holds a sample, where p̈ is kinked. A plain step that holds one is split there: on unevenly spaced
+samples nearly every step splits in two of uneven length, more steps for the same dt whose error
+does not fall as dt^p when dt is refined near the spacing (docs/integrators.md). On evenly spaced
+samples Δ/n puts the plain grid on every sample from a start on one, and the run is the plain run
+bit for bit (a step longer than Δ split on every sample: dt = 16 ms on 10-ms samples took 1626
+steps for 10 s at a = 1e-8, dt = Δ 1000, with less error).
 """
 
 from __future__ import annotations
@@ -103,6 +107,8 @@ def run_to_accuracy(
             return tr
         raise _best(a, pendulum, history)
     spacing = _spacing(pendulum, span, float(kwargs.get("t0", 0.0)))
+    if pendulum.pivot_samples is not None:
+        base["steps_on_samples"] = True
     dt = _on_samples(0.5 * a ** (1.0 / ORDER_RATTLE8) / _rate(pendulum, state), spacing)
     for _ in range(MAX_ROUNDS):
         if span / dt > MAX_STEPS:

@@ -20,6 +20,7 @@ pub mod rattle_vertical;
 pub mod rk4;
 pub mod rk4_angles;
 pub mod rkmk4;
+pub(crate) mod stretches;
 
 use crate::error::{Error, Result};
 use crate::model::{Model, ModelVisitor};
@@ -148,6 +149,24 @@ impl<S: FixedStep> FixedStep for Halved<'_, S> {
     }
     fn reset(&mut self) {
         self.0.reset()
+    }
+}
+
+/// One fixed step of `h` \[s\] from `t` \[s\] with `scheme`; a model with breaks ahead splits it on
+/// them ([`step_across_breaks`]). Returns the (sub-)steps taken.
+#[inline(always)]
+pub(crate) fn one_step<M: Model, S: FixedStep>(
+    scheme: &mut S,
+    model: &M,
+    t: f64,
+    state: &mut State,
+    h: f64,
+) -> Result<u64> {
+    if model.next_break(t) != f64::INFINITY {
+        model.visit(StepAcrossBreaks { scheme, t, h, state })
+    } else {
+        scheme.step(model, t, state, h)?;
+        Ok(1)
     }
 }
 
