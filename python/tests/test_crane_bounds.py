@@ -3,12 +3,15 @@
 more steps than allowed, refused up front naming the value, the samples or steps asked and the most
 allowed; a ``Tower`` given ``luff`` without ``boom`` (or ``boom`` without ``luff``), which the radius
 silently overrode, refused naming what is missing, and one given a ``radius`` with them, which they
-silently overrode, refused naming all three."""
+silently overrode, refused naming all three; its ``radius_at(t)``, the radius as a number [m] when the
+``radius`` field is None (luffing) or a profile."""
 
 from __future__ import annotations
 
+import math
 import re
 
+import numpy as np
 import pytest
 
 from pendulab import InvalidInputError, crane, memory
@@ -75,6 +78,29 @@ def test_tower_with_both_or_neither_is_taken() -> None:
     assert luffing.radius is None  # L cos β is the radius
     assert crane.Tower(radius=12.0).position(0.0)[0, 0] == pytest.approx(12.0)
     assert crane.Tower().radius == 10.0 and crane.Tower().position(0.0)[0, 0] == 10.0  # the default
+
+
+def test_tower_radius_at_is_a_number_luffing_or_not() -> None:
+    """A luffing tower's ``radius`` is None (and a radius profile no number): callers reading it as a
+    number broke. ``radius_at(t)`` [m] is the radius at any time: L cos β(t) on a luffing boom (here
+    checked against the tip's horizontal distance from the axis, from the position), the profile, or
+    the constant."""
+    luff = crane.profile(-0.3, 0.05, 0.03, start=1.0)
+    t = np.array([0.0, 3.0, 8.0, 40.0])
+    for tower in (
+        crane.Tower(slew=0.7, luff=luff, boom=35.0, height=5.0),
+        crane.Tower(slew=crane.profile(1.0, 0.1, 0.05), radius=crane.profile(5.0, 0.5, 0.2, start=12.0)),
+    ):
+        p = tower.position(t)
+        np.testing.assert_allclose(tower.radius_at(t), np.hypot(p[:, 0], p[:, 1]), rtol=1e-14)
+    assert crane.Tower(luff=0.5, boom=30.0).radius_at(0.0)[0] == pytest.approx(
+        30.0 * math.cos(0.5), rel=1e-15
+    )
+    assert crane.Tower(luff=luff, boom=35.0).radius_at(0.0)[0] == pytest.approx(35.0 * math.cos(1.0))
+    assert crane.Tower(radius=12.0).radius_at([0.0, 5.0]).tolist() == [12.0, 12.0]
+    assert crane.Tower().radius_at(0.0).tolist() == [10.0]  # the default
+    with pytest.raises(InvalidInputError, match="invalid t = nan"):
+        crane.Tower(luff=0.5, boom=30.0).radius_at(math.nan)
 
 
 @pytest.mark.parametrize("radius", [12.0, 10.0, crane.profile(2.0, 0.5, 0.5, start=10.0)])

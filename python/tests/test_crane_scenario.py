@@ -128,3 +128,32 @@ def test_pendulab_run_quiet_prints_nothing_for_a_crane_file(tmp_path: Path) -> N
     assert out.stat().st_size > 0
     code, text, _ = invoke("run", str(EXAMPLE))
     assert code == 0 and "sway modes 0.91, 7.9949 rad/s; shaper zvd" in text
+
+
+def test_more_than_five_problems_say_how_many_more_and_the_error_holds_all() -> None:
+    """The message showed five problems and "(and 2 more)", but the other two were lost: the error
+    (``crane.CraneFileError``, an ``InvalidInputError``) now holds every one in ``problems``."""
+    bad = {
+        "crane": {"rope": -1.0, "payload_mass": -2.0, "damping": "x", "g": "y", "ropes": 1.0},
+        "simulation": {"t_end": -5.0, "rtol": "z"},
+    }
+    with pytest.raises(crane.CraneFileError) as err:
+        parse(bad, "many.toml")
+    e = err.value
+    assert isinstance(e, InvalidInputError) and e.source == "many.toml"
+    assert len(e.problems) == 7 and e.problems[0].startswith("unknown key crane.ropes = 1.0")
+    keys = (
+        "crane.rope",
+        "crane.payload_mass",
+        "crane.damping",
+        "crane.g",
+        "simulation.t_end",
+        "simulation.rtol",
+    )
+    assert all(any(p.startswith(f"{k} = ") for p in e.problems) for k in keys), e.problems
+    shown = " ".join(f"({k}) {p}" for k, p in enumerate(e.problems[:5], 1))
+    assert str(e) == f"many.toml: 7 problems: {shown} (and 2 more)", str(e)
+    assert e.problems[5] not in str(e) and e.problems[6] not in str(e)
+    with pytest.raises(crane.CraneFileError) as two:
+        parse({"crane": {"rope": -1.0, "g": "x"}, "simulation": {"t_end": 5.0}})
+    assert len(two.value.problems) == 2 and "more)" not in str(two.value)

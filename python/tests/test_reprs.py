@@ -73,6 +73,10 @@ def _crane_inputs() -> dict[str, object]:
         "crane.LQRRun": ctrl.simulate(3.0, t_end=8.0, progress=False),
         "crane.Gantry": gantry,
         "crane.Crane": crane.Crane(rope=8.0, pivot=gantry, payload_mass=500.0, hook_mass=50.0, rigging=1.5),
+        "crane.Hoist": crane.Hoist([2.0, 12.0], [10.0, 8.0]),
+        "crane.Wind": crane.Wind(
+            velocity=(0.0, 10.0, 0.0), area=1.5, gust=(0.0, 5.0, 0.0), gust_start=20.0, gust_duration=4.0
+        ),
     }
 
 
@@ -96,7 +100,7 @@ NAMES = [
     "Scenario", "Stepper", "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases",
     "Reduced", "EMMap", "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway",
     "Movie", "Comparison", "crane.Shaper", "crane.Profile", "crane.CraneRun", "crane.GridResult",
-    "crane.LQR", "crane.LQRRun", "crane.Gantry", "crane.Crane",
+    "crane.LQR", "crane.LQRRun", "crane.Gantry", "crane.Crane", "crane.Hoist", "crane.Wind",
 ]  # fmt: skip
 
 
@@ -215,3 +219,44 @@ def test_a_crane_names_its_rope_masses_and_pivot(objects) -> None:
     assert text == "Crane(rope=8 m, payload_mass=500 kg, hook_mass=50 kg, rigging=1.5 m, pivot=Gantry)", text
     hoisted = crane.Crane(rope=8.0, hoist=crane.Hoist([0.0, 5.0], [8.0, 4.0]), damping=0.1)
     assert repr(hoisted) == "Crane(rope=4 … 8 m, payload_mass=1000 kg, damping=0.1 1/s, pivot=Gantry)"
+
+
+def test_a_hoist_names_its_samples_span_and_length_range(objects) -> None:
+    """Hoist had no repr of its own (``<pendulab.crane.system.Hoist object at 0x…>``)."""
+    assert repr(objects["crane.Hoist"]) == "Hoist(samples=2, t=2 … 12 s, length=8 … 10 m)"
+    html = objects["crane.Hoist"]._repr_html_()
+    assert "<th style='text-align:left;padding-right:1em'>length</th>" in html and ">m</td>" in html
+
+
+def test_a_wind_names_its_velocity_and_what_differs_from_the_defaults(objects) -> None:
+    """Wind's dataclass repr listed all 13 fields without units (248 characters for the default)."""
+    text = repr(objects["crane.Wind"])
+    assert text == (
+        "Wind(velocity=[0, 10, 0] m/s, area=1.5 m², gust=[0, 5, 0] m/s, gust_start=20 s, gust_duration=4 s)"
+    ), text
+    assert repr(crane.Wind()) == "Wind(velocity=[0, 0, 0] m/s)"
+    gusty = crane.Wind(velocity=(10.0, 0.0, 0.0), turbulence=2.0, seed=7, air_density=1.2, hook_area=0.5)
+    assert repr(gusty) == (
+        "Wind(velocity=[10, 0, 0] m/s, air_density=1.2 kg/m³, hook_area=0.5 m², turbulence=2 m/s, "
+        "turbulence_scale=50 m, seed=7)"
+    ), repr(gusty)
+    every = crane.Wind(
+        velocity=(12.5, -3.25, 0.5), area=2.5, drag_coefficient=1.05, air_density=1.18, gust=(1.5, 2.5, 0.25),
+        gust_start=12.5, gust_duration=3.5, hook_area=0.75, hook_drag_coefficient=0.9, turbulence=1.5,
+        turbulence_scale=80.0, turbulence_modes=128, seed=123456,
+    )  # fmt: skip
+    assert len(repr(every)) <= MAX_REPR and "\n" not in repr(every), repr(every)
+    assert "m²" in crane.Wind(area=1.0)._repr_html_()
+
+
+def test_a_run_shows_the_hoists_true_rope_range_not_its_saved_samples() -> None:
+    """The run's rope range came from the saved samples; a spline overshooting between them (here
+    above 10 m between t = 0 and 10 s, below 5 m between 20 and 30 s) was not shown."""
+    hoist = crane.Hoist([0.0, 10.0, 20.0, 30.0], [10.0, 10.0, 5.0, 5.0])
+    lo, hi = hoist.length_range()
+    assert lo < 5.0 and hi > 10.0
+    c = crane.Crane(rope=10.0, hoist=hoist)
+    assert repr(c).startswith(f"Crane(rope={lo:.6g} … {hi:.6g} m,"), repr(c)
+    run = c.simulate(t_end=30.0, output_spacing=10.0)  # saved at the samples only
+    assert run.rope.min() == pytest.approx(5.0) and run.rope.max() == pytest.approx(10.0)
+    assert run.rope_range == (lo, hi) and f"rope={lo:.6g} … {hi:.6g} m" in repr(run), repr(run)

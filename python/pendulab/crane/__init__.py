@@ -19,17 +19,20 @@ except ImportError as exc:  # pragma: no cover - exercised only without SciPy
     raise ImportError("pendulab.crane needs SciPy: pip install 'pendulab[crane]' (or scipy>=1.11)") from exc
 
 from .grid import GridResult, residual_grid
+from .hoist import Hoist
 from .lqr import LQR, LQRRun, lqr
 from .move import Profile, profile
 from .paths import Gantry, Path, Sampled, Tower, move
 from .robust import rope_range, shaper_for_range, worst_vibration
+from .scenario import CraneFileError
 from .shaper import KINDS, Shaper, insensitivity, residual_vibration, shaper
-from .system import Crane, CraneRun, Hoist, Wind
+from .system import Crane, CraneRun, Wind
 
 __all__ = [
     "KINDS",
     "LQR",
     "Crane",
+    "CraneFileError",
     "CraneRun",
     "Gantry",
     "GridResult",

@@ -1,10 +1,11 @@
 """How the crane's objects show themselves (``Shaper``, ``Profile``, ``CraneRun``, ``GridResult``, ``LQR``,
-``LQRRun``, ``Gantry``, ``Crane``): a
+``LQRRun``, ``Gantry``, ``Crane``, ``Hoist``, ``Wind``): a
 one-line ``repr`` of the key numbers and, in notebooks, a small HTML table of them with their SI units
 (:func:`pendulab.display.html_table`), like the package's other results; never the arrays."""
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import numpy as np
@@ -69,15 +70,21 @@ def profile_rows(p: Any) -> list[Row]:
     return rows
 
 
+def _range(lo: float, hi: float) -> str:
+    """A length range ``lo … hi`` (one number when they are equal)."""
+    return number(lo) if lo == hi else _span(lo, hi)
+
+
 def run_rows(r: Any) -> list[Row]:
-    """samples, the time span, steps, the largest rope sway θ and the rope's length range."""
+    """samples, the time span, steps, the largest rope sway θ and the rope's length range (the hoist's
+    true range over the run, ``r.rope_range``, where known; else the saved samples')."""
     n = int(r.t.shape[0])
     rows: list[Row] = [("samples", n, "")]
     if n:
         rows.append(("t", f"{number(r.t[0])} … {number(r.t[-1])}", "s"))
         rows.append(("max_sway", _largest(r.sway[:, 0]), "rad"))
-        lo, hi = float(np.min(r.rope)), float(np.max(r.rope))
-        rows.append(("rope", number(lo) if lo == hi else f"{number(lo)} … {number(hi)}", "m"))
+        lo, hi = r.rope_range if r.rope_range is not None else (float(np.min(r.rope)), float(np.max(r.rope)))
+        rows.append(("rope", _range(lo, hi), "m"))
     rows += [("hook", r.rigging_sway is not None, ""), ("steps", int(r.steps), "")]
     return rows
 
@@ -140,11 +147,10 @@ def gantry_rows(g: Any) -> list[Row]:
 
 
 def crane_rows(c: Any, default_wind: Any) -> list[Row]:
-    """rope (its range when hoisted), payload, hook and rigging, damping, wind, g where not 9.81, pivot."""
-    lengths = c.hoist.length(c.hoist.nodes)  # at its samples
-    lo, hi = float(np.min(lengths)), float(np.max(lengths))
+    """rope (its range when hoisted: the spline's true least and largest length, which may lie between
+    its samples), payload, hook and rigging, damping, wind, g where not 9.81, pivot."""
     rows: list[Row] = [
-        ("rope", number(lo) if lo == hi else _span(lo, hi), "m"),
+        ("rope", _range(*c.hoist.length_range()), "m"),
         ("payload_mass", c.payload_mass, "kg"),
     ]
     if c.hook_mass is not None:
@@ -156,4 +162,47 @@ def crane_rows(c: Any, default_wind: Any) -> list[Row]:
     if c.g != 9.81:
         rows.append(("g", c.g, "m/s²"))
     rows.append(("pivot", type(c.pivot).__name__, ""))
+    return rows
+
+
+def hoist_rows(h: Any) -> list[Row]:
+    """the samples' count and time span, and the rope's true length range (the spline's extremes)."""
+    return [
+        ("samples", int(h.nodes.size), ""),
+        ("t", _span(*h.span), "s"),
+        ("length", _range(*h.length_range()), "m"),
+    ]
+
+
+_WIND_UNITS = {
+    "area": "m²",
+    "air_density": "kg/m³",
+    "gust_start": "s",
+    "gust_duration": "s",
+    "hook_area": "m²",
+    "turbulence": "m/s",
+    "turbulence_scale": "m",
+}
+"""The units of the :class:`~pendulab.crane.Wind` fields shown as numbers (the others: none)."""
+
+
+def wind_rows(w: Any) -> list[Row]:
+    """the steady velocity [m/s], then the fields that differ from their defaults; a gust with its
+    start and duration, turbulence with its scale and seed (and these only with a gust, turbulence)."""
+    rows: list[Row] = [("velocity", vector(w.velocity, 4), "m/s")]
+    gust = any(float(v) != 0.0 for v in w.gust)
+    for f in dataclasses.fields(w):
+        value = getattr(w, f.name)
+        hidden = (f.name.startswith("gust") and not gust) or (
+            f.name in ("turbulence_scale", "turbulence_modes", "seed") and not w.turbulence
+        )
+        shown = (gust and f.name.startswith("gust")) or (
+            bool(w.turbulence) and f.name in ("turbulence_scale", "seed")
+        )
+        if f.name == "velocity" or hidden or (not shown and value == f.default):
+            continue
+        if f.name == "gust":
+            rows.append(("gust", vector(value, 4), "m/s"))
+        else:
+            rows.append((f.name, value, _WIND_UNITS.get(f.name, "")))
     return rows

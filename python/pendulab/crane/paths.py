@@ -188,7 +188,8 @@ class Tower(Path):
     """Tower crane: ``slew`` θ(t) [rad] and trolley ``radius`` r(t) [m] profiles (a Profile, or a
     constant; default 10 m), jib ``height`` h [m]; boom luffing when ``boom`` L [m] and ``luff`` β(t)
     [rad] are given, which set the radius (L cos β: a ``radius`` given with them is refused, and the
-    field stays None) (module doc)."""
+    field stays None) (module doc). ``radius`` is the input (a Profile, a number or None): the radius
+    in metres at any time, luffing or not, is :meth:`radius_at`."""
 
     slew: Profile | float = 0.0
     radius: Profile | float | None = None
@@ -221,6 +222,17 @@ class Tower(Path):
             )
         if self.luff is None and self.radius is None:
             object.__setattr__(self, "radius", TOWER_RADIUS)
+
+    def radius_at(self, t: Any) -> FloatArray:
+        """The pivot's horizontal distance from the tower's axis r(t) [m], shape (N,) for N times t [s]:
+        the ``radius`` (a profile or a constant), or on a luffing tower (``radius`` None) the boom
+        tip's L cos β(t) (module doc); ``radius_at(0.0)[0]`` is the radius at the start."""
+        ts = np.atleast_1d(time_array("t", t)).ravel()
+        if self.luff is not None and self.boom is not None:
+            return np.asarray(
+                float(self.boom) * np.cos(self._eval(self.luff, ts, False)[0]), dtype=np.float64
+            )
+        return self._eval(TOWER_RADIUS if self.radius is None else self.radius, ts, False)[0]
 
     @staticmethod
     def _eval(prof: Profile | float, t: FloatArray, left: bool) -> tuple[FloatArray, FloatArray, FloatArray]:

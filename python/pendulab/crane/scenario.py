@@ -26,10 +26,11 @@ from .._core import InvalidInputError
 from ..scenario.crane_schema import CraneSpec
 from ..scenario.errors import _problem
 from ..validate import parse_toml
+from .hoist import Hoist
 from .paths import Gantry, move
 from .paths import Path as CranePath
 from .shaper import Shaper, shaper
-from .system import Crane, CraneRun, Hoist, Wind
+from .system import Crane, CraneRun, Wind
 
 MAX_BYTES = 1 << 20
 
@@ -105,24 +106,41 @@ def file_settings(file: dict[str, Any]) -> dict[str, Any]:
     return file | {"simulation": sim}
 
 
-def _describe(e: ValidationError, data: dict[str, Any], most: int = 5) -> str:
-    """The problems of a crane file in the words of the pendulum's scenario files
-    (:func:`pendulab.scenario.errors._problem`): the key, the bad value and what is allowed (with its
-    unit), unknown keys first with a did-you-mean; at most ``most`` of them, numbered when several."""
-    errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
-    problems = [_problem(err, data, CraneSpec) for err in errors[:most]]
+MOST_SHOWN = 5
+"""The most problems a crane file's error message shows (:class:`CraneFileError` keeps them all)."""
+
+
+class CraneFileError(InvalidInputError):
+    """A crane file whose tables do not validate: ``source`` names the file, ``problems`` lists every
+    problem (the key, the bad value and what is allowed; unknown keys first). The message shows the
+    first :data:`MOST_SHOWN`, numbered when several, and says how many more there are:
+    ``<source>: 7 problems: (1) … (5) … (and 2 more)``. An ``InvalidInputError``, as before."""
+
+    def __init__(self, source: str, problems: list[str]) -> None:
+        self.source = source
+        self.problems = list(problems)
+        super().__init__(f"{source}: {_describe(self.problems)}")
+
+
+def _describe(problems: list[str], most: int = MOST_SHOWN) -> str:
+    """The problems of a crane file as one message: at most ``most`` of them, numbered when several,
+    with how many more there are."""
     if len(problems) == 1:
         return problems[0]
-    more = f" (and {len(errors) - most} more)" if len(errors) > most else ""
-    return f"{len(errors)} problems: " + " ".join(f"({k}) {p}" for k, p in enumerate(problems, 1)) + more
+    more = f" (and {len(problems) - most} more)" if len(problems) > most else ""
+    shown = " ".join(f"({k}) {p}" for k, p in enumerate(problems[:most], 1))
+    return f"{len(problems)} problems: {shown}{more}"
 
 
 def parse(data: dict[str, Any], source: str = "<crane file>") -> CraneScenario:
-    """A :class:`CraneScenario` from the parsed TOML ``data``; errors name ``source`` and the key."""
+    """A :class:`CraneScenario` from the parsed TOML ``data``; errors name ``source`` and the key
+    (:class:`CraneFileError`, its ``problems`` all of them: the message shows at most five), in the
+    words of the pendulum's scenario files (:func:`pendulab.scenario.errors._problem`)."""
     try:
         f = CraneSpec.model_validate(data)
     except ValidationError as e:
-        raise InvalidInputError(f"{source}: {_describe(e, data)}") from None
+        errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
+        raise CraneFileError(source, [_problem(err, data, CraneSpec) for err in errors]) from None
     return from_spec(f, source)
 
 

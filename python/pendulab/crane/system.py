@@ -14,13 +14,13 @@ from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
-from scipy.interpolate import CubicSpline
 
 from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
 from ..validate import array, integer, invalid
 from . import _spacing
-from ._checks import later, nonnegative, number, numbers, positive, positives, time, times, tolerances
-from ._display import Row, Shown, crane_rows, run_rows
+from ._checks import later, nonnegative, number, numbers, positive, time, times, tolerances
+from ._display import Row, Shown, crane_rows, run_rows, wind_rows
+from .hoist import Hoist
 from .paths import Gantry, Path
 from .shaper import FloatArray
 
@@ -28,46 +28,6 @@ MAX_SAVES = 500_000
 MAX_STEPS = 20_000_000
 DEFAULT_SPACING = 0.02
 """The default ``output_spacing`` [s] of :meth:`Crane.simulate`."""
-
-
-class Hoist(Path):
-    """The rope length l(t) [m] through samples (``t`` [s] increasing, ``length`` [m] > 0, n ≥ 2): the
-    C² cubic spline with l̇ = 0 at both ends (clamped), held constant outside [t₀, t_n]; l̈ steps at
-    t₀ and t_n (breaks). Stored in the first component of a 3-vector for the core."""
-
-    def __init__(self, t: Any, length: Any) -> None:
-        ts = times("t", t).ravel()
-        ls = positives("length", length, "m").ravel()
-        if ts.size < 2 or ls.shape != ts.shape:
-            raise InvalidInputError(
-                f"Hoist needs n >= 2 finite times t [s] and as many rope lengths [m], got {ts.size} times "
-                f"and {ls.size} lengths"
-            )
-        if np.any(np.diff(ts) <= 0):
-            raise InvalidInputError(f"Hoist times must be strictly increasing, got {ts.tolist()}")
-        self._spline = CubicSpline(ts, ls, bc_type="clamped")
-        self.span = (float(ts[0]), float(ts[-1]))
-        self.breaks = np.array(self.span)
-        self.nodes = ts
-        self.t_end = self.span[1]
-        fine = np.linspace(ts[0], ts[-1], 64 * ts.size)
-        if np.any(self._spline(fine) <= 0):
-            raise InvalidInputError("the Hoist spline through the lengths dips to <= 0 m; give more samples")
-
-    def _pva(self, t: FloatArray, left: bool = False) -> tuple[FloatArray, FloatArray, FloatArray]:
-        a, b = self.span
-        inside = (t > a) & (t < b) | ((t == a) & (not left)) | ((t == b) & left)
-        tc = np.clip(t, a, b)
-        s = self._spline
-        q, dq, ddq = np.zeros((t.size, 3)), np.zeros((t.size, 3)), np.zeros((t.size, 3))
-        q[:, 0] = s(tc)
-        dq[:, 0] = np.where(inside, s(tc, 1), 0.0)
-        ddq[:, 0] = np.where(inside, s(tc, 2), 0.0)
-        return q, dq, ddq
-
-    def length(self, t: Any) -> FloatArray:
-        """l(t) [m]."""
-        return self.position(t)[:, 0]
 
 
 _WIND_NONNEGATIVE = (
@@ -80,8 +40,8 @@ _WIND_NONNEGATIVE = (
 )
 
 
-@dataclass(frozen=True)
-class Wind:
+@dataclass(frozen=True, repr=False)
+class Wind(Shown):
     """Wind on the load (T-11.7): steady ``velocity`` w₀ [m/s] plus a (1 − cos) gust of peak ``gust``
     [m/s] from ``gust_start`` [s] lasting ``gust_duration`` [s], plus seeded turbulence of intensity
     ``turbulence`` σ [m/s] per axis and length scale ``turbulence_scale`` L [m] (Dryden-type spectrum
@@ -118,6 +78,9 @@ class Wind:
             self, "turbulence_modes", integer("wind.turbulence_modes", self.turbulence_modes, 8, 4096)
         )
         object.__setattr__(self, "seed", integer("wind.seed", self.seed, 0, 2**63 - 1))
+
+    def _rows(self) -> list[Row]:
+        return wind_rows(self)
 
     def force(self, relative_speed: float) -> float:
         """The payload's drag ½ρ c_W A u² [N] at the air speed u [m/s] relative to it."""
@@ -168,7 +131,9 @@ class CraneRun(Shown):
     or → payload without a hook); ``rigging_sway`` (N, 2) [rad] of hook → payload; ``rope`` l(t)
     [m]; ``tension`` (N, 2) [N] rope, rigging; ``energy`` E = Σ ½m|v|² + m g z [J]; ``work`` the
     works [J] done since the start by the hoist, the pivot, the wind and the damping (dict of (N,));
-    ``power`` the hoist's −T₁ l̇ and the pivot's −T₁ (r₁/l)·Ṗ [W] at the saved times (dict of (N,))."""
+    ``power`` the hoist's −T₁ l̇ and the pivot's −T₁ (r₁/l)·Ṗ [W] at the saved times (dict of (N,));
+    ``rope_range`` the rope's true (least, largest) length [m] over the run, from the hoist's spline
+    (:meth:`Hoist.length_range`: it may lie between the saved times; None: the saved ``rope``'s)."""
 
     t: FloatArray
     payload: FloatArray
@@ -184,6 +149,7 @@ class CraneRun(Shown):
     work: dict[str, FloatArray] = field(default_factory=dict)
     power: dict[str, FloatArray] = field(default_factory=dict)
     steps: int = 0
+    rope_range: tuple[float, float] | None = None
 
     def _rows(self) -> list[Row]:
         return run_rows(self)
@@ -364,7 +330,7 @@ class Crane(Shown):
         if hook is not None:
             energy += 0.5 * hook[0] * np.sum(v1 * v1, axis=1) + hook[0] * self.g * x1[:, 2]
         work = {k: y[:, 12 + i] for i, k in enumerate(("hoist", "pivot", "wind", "damping"))}
-        rope = self.hoist.length(t)
+        rope, rope_range = self.hoist.length(t), self.hoist.length_range(t0, float(t[-1]))
         t1 = out["tension"][:, 0]
         u1 = (x1 - piv) / rope[:, None]
         power = {
@@ -386,4 +352,5 @@ class Crane(Shown):
             work=work,
             power=power,
             steps=int(out["steps"]),
+            rope_range=rope_range,
         )
