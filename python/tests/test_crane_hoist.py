@@ -90,6 +90,6 @@ def test_a_hoisted_crane_file_with_a_dipping_hoist_names_the_file() -> None:
         "simulation": {"t_end": 5.0},
     }
     with pytest.raises(
-        InvalidInputError, match=r"^h\.toml: the Hoist spline .* dips to -0\.226667 m at t = 2\.33333 s"
+        InvalidInputError, match=r"^h\.toml: the Hoist spline .* dips to -0\.226667 m at t = 2\.333333333 s"
     ):
         parse(data, "h.toml")

@@ -49,8 +49,8 @@ class Hoist(Path, Shown):
         if not low > 0:
             i = min(int(np.searchsorted(ts, t_low, side="right")), ts.size - 1)
             raise InvalidInputError(
-                f"the Hoist spline through the lengths dips to {low:.6g} m at t = {t_low:.6g} s, between "
-                f"the samples ({ts[i - 1]:.6g} s, {ls[i - 1]:.6g} m) and ({ts[i]:.6g} s, {ls[i]:.6g} m): "
+                f"the Hoist spline through the lengths dips to {low:.6g} m at t = {t_low:.10g} s, between "
+                f"the samples ({ts[i - 1]:.10g} s, {ls[i - 1]:.6g} m) and ({ts[i]:.10g} s, {ls[i]:.6g} m): "
                 "the rope length must stay > 0 m; give more samples there or a gentler change"
             )
 
