@@ -311,3 +311,25 @@ def test_a_search_the_time_limit_cut_says_the_misfit_may_be_its_own(monkeypatch:
         assert words in about[0], about[0]
     assert not any("was not made: the fit's time limit" in s for s in said), said
     _says_not_made(res, "searchTimeLimit")
+
+
+@pytest.mark.parametrize("planned", [True, False])
+def test_a_cut_search_gives_one_finding_about_its_misfit(
+    monkeypatch: pytest.MonkeyPatch, planned: bool
+) -> None:
+    """With the search cut by the time limit, the goodness findings still said "the fit misses the data
+    systematically … Either the model lacks something … or the noise itself is correlated" beside the
+    finding that the misfit may be the cut search's: two warnings that contradict. Now the one finding
+    is the cut search's, also where no block check was due (``planned`` False: none is said not made by
+    blocks.py, the finding is said all the same); res.findings has it once."""
+    from pendulab.fitting import inference
+
+    if not planned:
+        monkeypatch.setattr(inference, "not_made", lambda *args: None)
+    res, said = _unmade_case(monkeypatch, "search")
+    assert res.interrupted and not res.converged, res.message
+    blaming = ("lacks something", "misses the data systematically", "noise itself is correlated")
+    assert not any(b in s for s in said for b in blaming), said
+    cut = [s for s in said if s.startswith("the fit's time limit of 600 s cut the search short")]
+    assert len(cut) == 1 and "may be the search's" in cut[0], said
+    assert res.findings.count(cut[0]) == 1 and (res.blocks is not None) == planned

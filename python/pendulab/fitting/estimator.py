@@ -213,8 +213,17 @@ class _Setup:
         if planar and "planar_angle" in obs.values:
             start |= signed_start(obs, start, set(free))
         starts, blind = search_starts(obs, start, free)
-        told = broken_by(model, start, free) if blind else ""  # the model's own mirror symmetry
+        told = broken_by(model, seen_by(obs, start), free) if blind else ""  # the model's own symmetry
         return cls(obs, free, planar, floors, spreads, start, starts, blind and not told, told)
+
+
+def seen_by(obs: Observations, values: Mapping[str, Any]) -> dict[str, Any]:
+    """``values`` as the data ``obs`` see them, for mirror_sign.broken_by: a camera's ``perspective``
+    [1/m] acts on positions (x, z) only, so for data without them (a phone's |a − g⃗|, |ω|) a held
+    perspective ≠ 0 cannot break the mirror y → −y and is dropped."""
+    return (
+        dict(values) if "positions" in obs.values else {k: v for k, v in values.items() if k != "perspective"}
+    )
 
 
 def _free_of(

@@ -81,19 +81,26 @@ def jacobian(
     u: FloatArray,
     steps: FloatArray,
     logged: FloatArray | None = None,
+    centre: FloatArray | None = None,
 ) -> FloatArray:
     """Central differences of ``residuals`` at ``u`` (error O(h²)), in parameter units. Where
     ``logged`` is True the step is multiplicative, u·e^{±h}: equal steps in ln p for every positive
-    parameter, so that an exact scale symmetry (g and l together) gives exactly dependent columns."""
+    parameter, so that an exact scale symmetry (g and l together) gives exactly dependent columns.
+    Given ``centre`` = residuals(u), forward differences instead (error O(h), one run per column, not
+    two: inference.py's Jacobian after the time limit), backward where the model refuses the step."""
     columns = []
-    centre: FloatArray | None = None
+    forward = centre is not None
     for k, h in enumerate(steps):
         up, down = u.copy(), u.copy()
         if logged is not None and logged[k]:
             up[k], down[k] = u[k] * math.exp(h), u[k] * math.exp(-h)
         else:
             up[k], down[k] = u[k] + h, u[k] - h
-        r_up, r_down = _try(residuals, up), _try(residuals, down)
+        r_up = _try(residuals, up)
+        if forward and centre is not None and r_up is not None:  # forward: one run
+            columns.append((r_up - centre) / (up[k] - u[k]))
+            continue
+        r_down = _try(residuals, down)
         width = up[k] - down[k]
         if r_up is None or r_down is None:  # the model refuses one side (a limit): one-sided there
             if centre is None:

@@ -23,7 +23,9 @@ the fit is returned, with one warning naming Ctrl-C and the step (for the block 
 A block check that was due but that Ctrl-C or the time limit stopped before it or in it is not made:
 ``res.blocks`` says so and one finding warns what stopped it, that the bars were not widened and how to
 let it run (blocks.UNMADE); where they cut the search itself, that the misfit may be the unfinished
-search's rather than the model's. A fit that Ctrl-C or the time limit
+search's rather than the model's — the one finding about the misfit then: goodness.py's that put it down
+to the model or the noise are left out (:func:`_said`), and where no block check was due it is said all
+the same. A fit that Ctrl-C or the time limit
 stopped short anywhere — the search, the polish, the block check, a profile — is marked ``interrupted``.
 Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times [s].
 """
@@ -39,9 +41,9 @@ import numpy as np
 
 from .._warn import warn_user
 from ..model import FloatArray
-from .blocks import BlockCheck, check_blocks, not_made
+from .blocks import UNMADE, BlockCheck, check_blocks, not_made
 from .data import KINDS, residual
-from .goodness import EXACT, Goodness, ar1_rho, check_kind, findings
+from .goodness import EXACT, MISFIT_VERDICTS, P_ALARM, Goodness, ar1_rho, check_kind, findings
 from .goodness import misfit as misfit_found
 from .identify import Correlation, Identifiability, analyse, jacobian
 from .mirror import check_mirror
@@ -110,13 +112,16 @@ def conclude(
     chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
     # with σ given, χ² against its distribution (widened for a residual that is AR(1) noise)
     chi2_p = chi2_tails(chi2, dof, ar1_rho(checks))[0] if sigma_known else None
-    said = findings(checks, chi2_p, chi2, dof, robust=search.loss != "linear")
+    cut = ("searchCtrlC" if "Ctrl-C" in message else "searchTimeLimit") if interrupted else ""
+    said, dropped = _said(checks, chi2_p, chi2, dof, search.loss != "linear", cut)
     # a misfit: the record's blocks fitted on their own, the error bars widened by their disagreement
     blocks = None
     if misfit_found(checks, chi2_p):
-        cut = ("searchCtrlC" if "Ctrl-C" in message else "searchTimeLimit") if interrupted else ""
         blocks = _blocks(search, final, ident, sigma_known, cut, stopped)
     said += blocks.findings() if blocks is not None else []
+    if cut and blocks is None and (dropped or misfit_found(checks, chi2_p)):  # no block check was due
+        limit = search.clock.time_limit
+        said.append(UNMADE[cut].format(seconds=f"{limit:g}" if limit else "", blocks=0))
     g_fit = final["g"]
     if "g" in free and ident.determined["g"] and not 0.01 <= abs(g_fit) <= 1000.0:
         said.append(
@@ -170,13 +175,28 @@ def conclude(
     return res
 
 
+def _said(
+    checks: Mapping[str, Any], chi2_p: float | None, chi2: float, dof: int, robust: bool, cut: str
+) -> tuple[list[str], bool]:
+    """goodness.findings, and whether any were left out: where the time limit or Ctrl-C cut the search
+    (``cut`` a key of blocks.UNMADE, "" if it ran to its end) without those that put a misfit down to
+    the model or the noise (:data:`goodness.MISFIT_VERDICTS`' kinds, an improbable χ²): the values are
+    short of the best fit, so the misfit may be the search's, and one finding (UNMADE[cut]) says so."""
+    if not cut:
+        return findings(checks, chi2_p, chi2, dof, robust=robust), False
+    kept = {k: c for k, c in checks.items() if c.verdict(robust) not in MISFIT_VERDICTS}
+    chi2_kept = None if chi2_p is not None and chi2_p < P_ALARM and not robust else chi2_p
+    return findings(kept, chi2_kept, chi2, dof, robust=robust), len(kept) < len(checks) or chi2_kept != chi2_p
+
+
 def _polished(
     search: Search, u: FloatArray, interrupted: bool, stopped: list[str]
 ) -> tuple[FloatArray, FloatArray, FloatArray, Any]:
     """The optimum ``u`` after the Gauss–Newton polish (search.py; not after an interruption nor with a
     robust loss; Ctrl-C in it keeps the search's ``u`` and is noted in ``stopped``), its weighted
     residual r [1], the Jacobian of r (exact forward sensitivities where the core has them, else
-    difference quotients), and which unknowns took logarithmic steps."""
+    difference quotients: central, forward once the time limit has passed, so that the overrun is one
+    run of the whole record per unknown, not two), and which unknowns took logarithmic steps."""
     problem, free, sig = search.problem, search.free, search.sigma
 
     def weighted(uu: FloatArray) -> FloatArray:
@@ -192,7 +212,9 @@ def _polished(
         return search.exact_jacobian(problem, uu)  # forward sensitivities (sensitivity.py) or None
 
     exact = jac_of(u)
-    jac = exact if exact is not None else jacobian(weighted, u, steps, positive)
+    # past the time limit, forward differences: k runs of the whole record instead of 2k (docs/fit.md)
+    late = exact is None and search.time_up()
+    jac = exact if exact is not None else jacobian(weighted, u, steps, positive, r if late else None)
     if search.loss == "linear" and not interrupted:
         bounds = (search.lower, search.upper)
         try:

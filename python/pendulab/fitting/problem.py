@@ -15,7 +15,8 @@ Parameter names (SI units):
   ``angle_offset`` [rad] is added to a planar angle and to θ (an encoder's zero); ``force_bias``
   [m/s²] to the specific force and ``rate_bias`` [rad/s] to the angular speed (a sensor's bias);
   ``perspective`` κ = 1/D [1/m] is a camera at distance D in front of the pivot looking along +y, which
-  sees the bob's offset from the pivot shrunk by 1/(1 + κ y) (a pinhole; 0: the far-away camera). A
+  sees the bob's offset from the pivot shrunk by 1/(1 + κ y) (a pinhole; 0: the far-away camera; it acts
+  on ``positions`` only, no other data kind is seen through a camera). A
   clock rate is not among them: a clock running fast by a factor κ is indistinguishable from g/l
   larger by κ², so only an independent time reference could tell.
 - the swinging spring (``model = "spring"``, a :class:`pendulab.SwingingSpring`): ``length`` is its
@@ -183,15 +184,16 @@ class Problem:
         scale = values.get("scale", 1.0)
         seen = x if scale == 1.0 else scale * x
         kappa = values.get("perspective", 0.0)
-        if kappa != 0.0:  # a pinhole camera at distance 1/κ in front of the pivot, looking along +y
+        camera = seen  # the positions (x, z) a camera sees; no other kind is seen through it
+        if kappa != 0.0 and "positions" in self.obs.values:  # a pinhole at 1/κ before the pivot, along +y
             depth = 1.0 + kappa * x[:, 1]
             if not np.all(depth > 0.0):
                 raise InvalidInputError(f"perspective = {kappa!r} 1/m puts the bob behind the camera")
-            seen = seen / depth[:, None]
-        out = {
-            kind: predict(kind, self.obs.columns[kind], seen, v, accel, gravity, pivot)
-            for kind in self.obs.values
-        }
+            camera = seen / depth[:, None]
+        out = {}
+        for kind in self.obs.values:
+            shown = camera if kind == "positions" else seen
+            out[kind] = predict(kind, self.obs.columns[kind], shown, v, accel, gravity, pivot)
         return _with_offsets(out, values)
 
     def residuals(
