@@ -9,9 +9,10 @@ Three sorts of case (docs/fit.md, "Validation"):
   outliers with a robust loss, mid-swing starts, elliptical swings seen from the side, a pivot off the
   origin; cases 22–24: the sensor's offset, bias or scale fitted as a systematic term; 25: dry
   friction fitted; 26: a swing that starts on the negative side; 27: a swing released in the x–z
-  plane, fitted as a spherical one; 28: case 1 with the start's truth). Measured: how often each true
-  parameter lies within ±2 stderr (target 90–98 %) and how often a warning is raised anyway (false
-  alarms).
+  plane, fitted as a spherical one; 28: case 1 with the start's truth; 29, 30: a turntable's rotating
+  frame and a slewing boom's pivot, x, z seen from the side: fit_validate_frames.py). Measured: how
+  often each true parameter lies within ±2 stderr (target 90–98 %) and how often a warning is raised
+  anyway (false alarms).
 - ``wrong``: the data contain physics or sensor effects the fitted model lacks (wind, dry pivot
   friction, a wrong damping law, an accelerometer bias, an encoder zero offset, a camera scale error
   with g fixed, outliers with the plain loss). Measured: how often the fit warns (target ≥ 95 %).
@@ -35,6 +36,7 @@ from typing import Any
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "testdata" / "generate"))
 import independent_pendulum as ip
 from fit_validate_data import Case, also, angles, constant, encoder, phone, pure_noise, video
+from fit_validate_frames import slewing, turning
 
 VIDEO = ip.Truth(length=0.6, g=9.81, damping=0.010)
 VIDEO_FIT = ["length", "g", "damping", "pivot"]
@@ -304,6 +306,23 @@ def cases() -> list[Case]:
             DAMPED,
             video(VIDEO, start_truth=True),
             "case 1 with the start at the first sample in the truth: φ̇₀ clearly nonzero",
+        ),
+        # --- a rotating frame and a slewing pivot, filmed as x, z (fit_validate_frames.py) -------
+        Case(
+            "turntable x,z, Omega 0.4 rad/s at latitude 0.9, damped",
+            "right",
+            VIDEO_FIT,
+            {"model": "rotating", "frame_rate": 0.4, "latitude": 0.9},
+            turning(),
+            "Ω_z = 0.31 rad/s: Coriolis shows the sideways motion at first order (not mirror-blind)",
+        ),
+        Case(
+            "slewing boom x,z, R 0.3 m, omega 0.5 rad/s",
+            "right",
+            ["length", "g", "pivot"],
+            {"model": "slewing", "radius": 0.3, "rate": 0.5, "height": 0.0},
+            slewing(),
+            "the pivot moves along y: the camera sees p(t) + x, p from the record's first frame",
         ),
     ]
 
