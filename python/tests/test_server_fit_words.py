@@ -163,6 +163,7 @@ def test_the_keys_are_those_the_server_uses() -> None:
     items = {"header", "droppedRows", "combinationValue", "mirror", "planar", "residual", "chi2"}
     items |= {"chi2Estimated", "noise", "fixed", "converged", "notConvergedItem", "aicBic"}
     items |= {"compound", "compoundLengthHeld", "compoundLength", "compoundTorque"}
+    items |= {"mirrorSignTold", "mirrorSignNotTold", "mirrorSignNotChecked"}
     assert used | items == set(KEYS)
     text = SOURCE.read_text(encoding="utf-8")
     assert all(f'"{k}"' in text for k in items)

@@ -89,6 +89,8 @@ def report_text(res: Any) -> str:
             "  the data cannot tell this motion from its mirror image y -> -y "
             "(phi0, phi_dot0 -> -phi0, -phi_dot0): the sign of the sideways motion is a choice"
         )
+    if res.mirror_sign is not None:
+        lines.append(f"  {res.mirror_sign.line()}")
     noise = ", ".join(f"{k}: {number(s, 3)} {KINDS[k]}" for k, s in res.sigma.items())
     if res.sigma_estimated:
         noise += " (estimated from the residual, so chi2/dof = 1 by construction)"
@@ -128,6 +130,8 @@ def report_html(res: Any) -> str:
         (f"{label} (determined)", f"{value:.10g} ± {number(err, 3)}", "")
         for label, (value, err) in res.combinations.items()
     ]
+    if res.mirror_sign is not None:
+        rows.append(("sign of phi0, phi_dot0", res.mirror_sign.short(), ""))
     rows.append(("χ²/dof", res.reduced_chi2, ""))
     return html_table("Fit", rows, note="res.report(), res.plot(), res.save('fitted.toml')")
 

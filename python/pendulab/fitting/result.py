@@ -39,7 +39,10 @@ class FitResult:
     ``mirror_blind``: the data cannot tell the motion from its mirror image y → −y (positions seen as
     x, z; a phone's frame-free scalars) and the model is symmetric under it (not a rotating frame with
     Ω_z ≠ 0 or a pivot moving along y: fitting/mirror_sign.py), so the sign of φ₀ and φ̇₀ is a
-    choice. ``goodness``: whether
+    choice. ``mirror_sign``: where the data are blind to y but the model is not symmetric (a held term
+    breaks the mirror), whether the data tell the sign of φ₀, φ̇₀ and by how much the mirror image's
+    misfit rises (fitting/mirror_sign.py's ``SignCheck``; ``line()`` the report's sentence), else None.
+    ``goodness``: whether
     the fitted motion explains the data (residual against the noise floor, autocorrelation, runs, χ²
     probability, outliers) with its plain-language ``findings``; ``reasons``: why each undetermined
     parameter is; ``inflation``: the factor each error bar was widened by for correlated residuals;
@@ -90,6 +93,7 @@ class FitResult:
     #: NaN for each parameter it would have compared: not measured, not widened) when it should have
     #: run but did not, so the bars are not checked; else None (no misfit, or a check that does not apply).
     blocks: Any = None
+    mirror_sign: Any = None
     _problem: Any = field(default=None, repr=False)
     _search_sigma: dict[str, float] = field(default_factory=dict, repr=False)
     _variance: float = field(default=1.0, repr=False)

@@ -243,6 +243,20 @@ def report_items(res: FitResult) -> list[dict[str, Any]]:
         items.append(_item("combinationValue", label=label, value=_g(value, 10), err=_g(err)))
     if res.mirror_blind and {"phi0", "phi_dot0"} & set(res.names):
         items.append(_item("mirror"))
+    sign = res.mirror_sign
+    if sign is not None:  # fitting/mirror_sign.py: x, z data, a held term that breaks the mirror
+        if sign.told is None:
+            items.append(_item("mirrorSignNotChecked"))
+        else:
+            key = "mirrorSignTold" if sign.told else "mirrorSignNotTold"
+            items.append(
+                _item(
+                    key,
+                    rise=_g(max(sign.rise, 0.0), 3),
+                    threshold=_g(sign.threshold, 3),
+                    level=_g(sign.level, 3),
+                )
+            )
     items.append(_item("aicBic", aic=_g(res.aic, 6), bic=_g(res.bic, 6)))
     if res.body is not None:
         items += _body_items(res)
