@@ -4,20 +4,12 @@
 //! above the sample spacing its error is the plain run's / 2ᵖ, where a run at dt/2 is not.
 //! SI units: l = 1 m, g = 9.81 m/s², samples every 10 ms.
 
+mod common;
+
+use common::fixed;
+use common::sampled::{path, start};
 use pendulab_core::model::registry::AnyModel;
-use pendulab_core::{DVec3, IdealPendulum, Method, Params, SolveOptions, State, Stepper};
-
-fn params() -> Params {
-    Params::new(1.0, 1.0, 9.81).unwrap()
-}
-
-fn start() -> State {
-    State::from_angles(&params(), 1.3, 0.9, 0.6, 2.5).unwrap()
-}
-
-fn fixed(method: Method, dt: f64) -> SolveOptions {
-    SolveOptions { method, dt, ..SolveOptions::default() }
-}
+use pendulab_core::{IdealPendulum, Method, SolveOptions, Stepper};
 
 #[test]
 fn halved_steps_are_the_half_step_run_bit_for_bit_without_breaks() {
@@ -43,11 +35,7 @@ fn halved_steps_are_the_half_step_run_bit_for_bit_without_breaks() {
 /// The path (0.3 sin 1.3t, 0.2 sin(0.7t + 0.5), 0.1 cos 2t) m sampled every 10 ms, damping 0.03 1/s.
 fn sampled() -> AnyModel {
     let times: Vec<f64> = (0..=320).map(|k| -0.1 + 0.01 * k as f64).collect();
-    let positions: Vec<DVec3> = times
-        .iter()
-        .map(|&t| DVec3::new(0.3 * (1.3 * t).sin(), 0.2 * (0.7 * t + 0.5).sin(), 0.1 * (2.0 * t).cos()))
-        .collect();
-    AnyModel::sampled_pivot(params(), &times, &positions, 0.03).unwrap()
+    path(&times)
 }
 
 #[test]

@@ -7,6 +7,10 @@
 //! grid t₀ + k·dt, and a run without breaks takes exactly the bare method's steps (bits unchanged).
 //! SI units: l = 1 m, g = 9.81 m/s², samples every 50 ms.
 
+mod common;
+
+use common::fixed;
+use common::sampled::{params, path, start};
 use pendulab_core::integrate::composition::Composition;
 use pendulab_core::integrate::rattle::Rattle;
 use pendulab_core::integrate::rk4::Rk4;
@@ -14,31 +18,15 @@ use pendulab_core::integrate::rkmk4::Rkmk4;
 use pendulab_core::integrate::FixedStep;
 use pendulab_core::model::registry::AnyModel;
 use pendulab_core::model::ModelVisitor;
-use pendulab_core::{DVec3, Method, Model, Params, SolveOptions, State, Stepper};
+use pendulab_core::{DVec3, Method, Model, SolveOptions, State, Stepper};
 
 const T_END: f64 = 4.0;
-
-fn params() -> Params {
-    Params::new(1.0, 1.0, 9.81).unwrap()
-}
 
 /// A smooth 3-D path (0.3 sin 1.3t, 0.2 sin(0.7t + 0.5), 0.1 cos 2t) m sampled every 50 ms on
 /// [−0.1, 14.9] s, damping 0.03 1/s.
 fn sampled() -> AnyModel {
     let times: Vec<f64> = (0..=300).map(|k| -0.1 + 0.05 * k as f64).collect();
-    let positions: Vec<DVec3> = times
-        .iter()
-        .map(|&t| DVec3::new(0.3 * (1.3 * t).sin(), 0.2 * (0.7 * t + 0.5).sin(), 0.1 * (2.0 * t).cos()))
-        .collect();
-    AnyModel::sampled_pivot(params(), &times, &positions, 0.03).unwrap()
-}
-
-fn start() -> State {
-    State::from_angles(&params(), 1.3, 0.9, 0.6, 2.5).unwrap()
-}
-
-fn fixed(method: Method, dt: f64) -> SolveOptions {
-    SolveOptions { method, dt, ..SolveOptions::default() }
+    path(&times)
 }
 
 /// The state at T_END after n = T_END/dt full steps (`step_n`, the bulk loop).

@@ -2,29 +2,12 @@
 //! sampled pivot (each interval between samples in ⌈span/dt⌉ equal steps), as `accuracy=` runs them
 //! (docs/integrators.md, *Sampled pivot*). SI units: l = 1 m, g = 9.81 m/s², samples about 10 ms apart.
 
+mod common;
+
+use common::fixed;
+use common::sampled::{path as sampled, start};
 use pendulab_core::model::registry::AnyModel;
-use pendulab_core::{DVec3, Method, Params, SolveOptions, State, Stepper};
-
-fn params() -> Params {
-    Params::new(1.0, 1.0, 9.81).unwrap()
-}
-
-fn start() -> State {
-    State::from_angles(&params(), 1.3, 0.9, 0.6, 2.5).unwrap()
-}
-
-fn fixed(method: Method, dt: f64) -> SolveOptions {
-    SolveOptions { method, dt, ..SolveOptions::default() }
-}
-
-/// The path (0.3 sin 1.3t, 0.2 sin(0.7t + 0.5), 0.1 cos 2t) m at `times` [s], damping 0.03 1/s.
-fn sampled(times: &[f64]) -> AnyModel {
-    let positions: Vec<DVec3> = times
-        .iter()
-        .map(|&t| DVec3::new(0.3 * (1.3 * t).sin(), 0.2 * (0.7 * t + 0.5).sin(), 0.1 * (2.0 * t).cos()))
-        .collect();
-    AnyModel::sampled_pivot(params(), times, &positions, 0.03).unwrap()
-}
+use pendulab_core::{DVec3, Method, SolveOptions, Stepper};
 
 /// Samples 10 ms ± 30 % apart (7 … 13 ms, golden-ratio sequence) from −0.05 s past 3.3 s, with one at
 /// t = 0 (the runs' start, as `accuracy=` starts on a sample when one is there).

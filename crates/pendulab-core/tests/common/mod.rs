@@ -1,6 +1,8 @@
 //! Shared helpers of the integration tests: the scenarios' initial states and a runner.
 #![allow(dead_code)]
 
+pub mod sampled;
+
 use pendulab_core::{IdealPendulum, Method, Model, SolveOptions, State, Stepper};
 
 /// The rosette start of `examples/scenarios/rosette.toml`: l = 1 m, g = 9.81 m/s², θ₀ = 60°,
