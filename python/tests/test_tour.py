@@ -126,14 +126,17 @@ def test_notebook_runs(path: Path, tmp_path: Path):
     assert seconds < NOTEBOOK_LIMIT, f"{path.name} took {seconds:.0f} s (limit {NOTEBOOK_LIMIT} s)"
 
 
+OLD_CALL_CELLS = [
+    "import warnings\nfrom pendulab import crane\nc = crane.Crane(10.0)",
+    "warnings.warn('shown on purpose', UserWarning)\n"
+    "warnings.warn_explicit('theirs', FutureWarning, warnings.__file__, 1)",  # another library's own
+    "run = c.simulate(1.0, sway=(0.1, 0.0), dt=0.1)",
+]
+"""A notebook whose third cell makes a deprecated call (line 1), after warnings that are not deprecations."""
+
+
 def test_a_deprecated_call_in_a_notebook_is_found(tmp_path: Path):
-    cells = [
-        "import warnings\nfrom pendulab import crane\nc = crane.Crane(10.0)",
-        "warnings.warn('shown on purpose', UserWarning)\n"
-        "warnings.warn_explicit('theirs', FutureWarning, warnings.__file__, 1)",  # another library's own
-        "run = c.simulate(1.0, sway=(0.1, 0.0), dt=0.1)",
-        "warnings.warn('old', PendingDeprecationWarning)",
-    ]
+    cells = [*OLD_CALL_CELLS, "warnings.warn('old', PendingDeprecationWarning)"]
     nb = nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells])
     found = deprecations(nb, tmp_path)
     assert [f.split(":")[0] for f in found] == ["cell 3, line 1", "cell 4, line 1"]
@@ -143,12 +146,7 @@ def test_a_deprecated_call_in_a_notebook_is_found(tmp_path: Path):
 
 def test_the_wheels_tour_run_fails_a_notebook_that_uses_a_deprecated_call(tmp_path: Path):
     # tools/check_tour.py's run of one notebook (here in this environment, not a fresh one with the wheel)
-    cells = [
-        "import warnings\nfrom pendulab import crane\nc = crane.Crane(10.0)",
-        "warnings.warn('shown on purpose', UserWarning)\n"
-        "warnings.warn_explicit('theirs', FutureWarning, warnings.__file__, 1)",  # another library's own
-        "x = 1\nrun = c.simulate(1.0, sway=(0.1, 0.0), dt=0.1)",
-    ]
+    cells = [*OLD_CALL_CELLS[:2], "x = 1\n" + OLD_CALL_CELLS[2]]  # the call on line 2
     path = tmp_path / "old.ipynb"
     nbformat.write(nbformat.v4.new_notebook(cells=[nbformat.v4.new_code_cell(c) for c in cells]), path)
     r = CHECK_TOUR.run_notebook(sys.executable, path, {**os.environ, "MPLBACKEND": "Agg"})
