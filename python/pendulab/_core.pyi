@@ -125,7 +125,8 @@ class RunOptions:
     (``"unfused"``, the default, or ``"fused"``; ``Solver``, ``Stepper`` and ``EnsembleRun``);
     ``halved_steps``: every fixed step taken as two halves (``Solver``; the error estimate's dt/2
     companion on a sampled pivot, docs/integrators.md); ``steps_on_samples``: dt the longest fixed step,
-    the steps landing on every sample of a sampled pivot (``Solver``; ``accuracy=``)."""
+    the steps landing on every sample of a sampled pivot (``Solver``, ``ForceSolver``, ``Stepper``;
+    ``accuracy=``; ``pl.Stepper(steps_on_samples=True)``)."""
 
     def __new__(
         cls,

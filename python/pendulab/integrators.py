@@ -142,3 +142,18 @@ def check_arithmetic(arithmetic: Any, method: str, model: str | None = None) -> 
             f"not to method {method!r}"
         )
     return resolved
+
+
+def check_steps_on_samples(steps_on_samples: Any, pendulum: Pendulum) -> bool:
+    """``steps_on_samples`` checked (a bool) for ``simulate`` and ``Stepper``: True only with a sampled
+    pivot (``Pendulum(pivot_samples=...)``), whose samples the fixed steps then land on; without samples
+    there is nothing to land on, so it is refused rather than ignored (docs/integrators.md, "Sampled
+    pivot"). ``dop853`` takes it and steps as before (its steps end on the samples anyway)."""
+    on = flag("steps_on_samples", steps_on_samples)
+    if on and pendulum.pivot_samples is None:
+        raise InvalidInputError(
+            f"steps_on_samples=True lands the fixed steps on a sampled pivot's samples, but this "
+            f"{pendulum.model!r} pendulum has no pivot_samples; give Pendulum(pivot_samples=(times, "
+            "positions)) or leave steps_on_samples=False"
+        )
+    return on

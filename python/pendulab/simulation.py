@@ -96,7 +96,8 @@ def simulate(
     steps_on_samples : a sampled pivot's fixed-step runs: ``dt`` is the longest step and the steps land
         on every sample, each interval between samples taken in ⌈span/dt⌉ equal steps; ``accuracy=``
         runs so (default False). Without, the steps are dt, one that holds a sample split there
-        (docs/integrators.md, "Sampled pivot"). No effect on ``dop853`` or without pivot samples.
+        (docs/integrators.md, "Sampled pivot"). No effect on ``dop853``; True without pivot samples is
+        an ``InvalidInputError``. ``pl.Stepper`` takes it too, with the same steps bit for bit.
 
     Every argument is checked against :mod:`pendulab.validate` before any work starts (docs/limits.md).
 

@@ -10,7 +10,7 @@ import dataclasses
 from typing import Any
 
 from ._core import InvalidInputError
-from .integrators import _U64, _method_table, check_arithmetic, check_settings
+from .integrators import _U64, _method_table, check_arithmetic, check_settings, check_steps_on_samples
 from .model import Pendulum
 from .validate import LIMITS, MAX_SAMPLES, array, flag, integer, invalid, number, planned_steps
 
@@ -104,5 +104,5 @@ def check_run(
         max_saved_bytes,
         drift,
         arithmetic,
-        flag("steps_on_samples", steps_on_samples),
+        check_steps_on_samples(steps_on_samples, pendulum),
     )

@@ -9,7 +9,15 @@ from ._core import InvalidInputError, RunOptions
 from ._core import Stepper as _Stepper
 from .display import Row, html_table
 from .display import number as shown
-from .integrators import _U64, DEFAULTS, _check_conserve, _method_table, check_arithmetic, check_settings
+from .integrators import (
+    _U64,
+    DEFAULTS,
+    _check_conserve,
+    _method_table,
+    check_arithmetic,
+    check_settings,
+    check_steps_on_samples,
+)
 from .model import Pendulum, State, check_pendulum_state
 from .validate import LIMITS, integer, invalid, number, planned_steps
 
@@ -34,6 +42,12 @@ class Stepper:
     conserve : ``dop853`` only: also hold E and J₃ at their initial values (as in :func:`simulate`).
     arithmetic : the RATTLE family's multiply-adds, ``"auto"``, ``"fused"`` or ``"unfused"`` (as in
         :func:`simulate`).
+    steps_on_samples : a sampled pivot's fixed steps: ``dt`` [s] is the longest step and the steps land
+        on every sample, each interval between samples in ⌈span/dt⌉ equal steps (default False: steps
+        of dt, one that holds a sample split there). As in :func:`simulate`, whose run it reproduces
+        bit for bit (``step_to`` each save time, or ``step(n)`` for ``save_every=n``); after
+        ``set_state`` the steps go on landing on the samples. No effect on ``dop853``; True without
+        pivot samples is an ``InvalidInputError`` (docs/integrators.md, "Sampled pivot").
 
     Examples
     --------
@@ -60,6 +74,7 @@ class Stepper:
         t0: float = 0.0,
         conserve: bool = False,
         arithmetic: str = "auto",
+        steps_on_samples: bool = False,
     ) -> None:
         check_pendulum_state(pendulum, state)
         method, dt_checked, rtol, atol, project, conserve, t0 = check_settings(
@@ -71,12 +86,14 @@ class Stepper:
         dt = dt_checked
         _check_conserve(pendulum, conserve)
         arithmetic = check_arithmetic(arithmetic, method, pendulum.model)
+        steps_on_samples = check_steps_on_samples(steps_on_samples, pendulum)
         if pendulum.force is not None:
             raise InvalidInputError(
                 "the incremental Stepper does not take a user force callable; use pendulab.simulate"
             )
         self._dt = dt
         self._method = method
+        self._on_samples = steps_on_samples and not self._adaptive  # dt then the longest step
         self.pendulum = pendulum
         run = RunOptions(
             t0=float(t0),
@@ -87,12 +104,13 @@ class Stepper:
             project=bool(project),
             conserve=bool(conserve),
             arithmetic=arithmetic,
+            steps_on_samples=steps_on_samples,
         )
         self._core = _Stepper(pendulum.spec, state.pair, run)
 
     def __repr__(self) -> str:
         theta, phi = self.state.angles_deg()
-        step = f"dt={shown(self._dt)} s"
+        step = f"dt={shown(self._dt)} s" + (" at most, on the samples" if self._on_samples else "")
         if self._adaptive:  # its own steps; the first one given, or chosen automatically (dt 0)
             step = f"adaptive, first step {shown(self._dt)} s" if self._dt > 0 else "adaptive"
         return (
@@ -118,7 +136,7 @@ class Stepper:
     def _step_row(self) -> Row:
         """The step of the HTML table: dt [s], or for dop853 "adaptive" and its first step if given."""
         if not self._adaptive:
-            return ("step dt", self._dt, "s")
+            return ("longest step dt, on the samples" if self._on_samples else "step dt", self._dt, "s")
         if self._dt > 0:
             return ("adaptive, first step", self._dt, "s")
         return ("step dt", "adaptive (first step automatic)", "")

@@ -197,7 +197,7 @@ pub(crate) struct RunOptions {
     /// companion on a sampled pivot; `Solver`, `ForceSolver`).
     pub(crate) halved_steps: bool,
     /// A sampled pivot's fixed steps land on every sample, dt the longest (`Stepper::set_steps_on_breaks`;
-    /// `Solver`, `ForceSolver`).
+    /// `Solver`, `ForceSolver`, `Stepper`).
     pub(crate) steps_on_samples: bool,
 }
 

@@ -136,7 +136,8 @@ def simulate_ensemble(
     save_at=[0, t_end])`` with trajectory k's ``length[k]``, ``g[k]`` and ``damping[k]`` (each one
     value or N; ``damping`` only for models that have it); vectorised across trajectories (each its
     own step size) on all cores; final states only (t = 0 and t_end), no summary (``dt`` is not
-    used).
+    used). No ``steps_on_samples``: the fixed-step kernel refuses a sampled pivot, and ``dop853``'s
+    steps end on its samples anyway (docs/integrators.md, "Sampled pivot").
 
     Examples
     --------
