@@ -5,7 +5,7 @@
 
 use crate::convert::{model, to_py};
 use pendulab_core::integrate::rattle_kernel::Arithmetic;
-use pendulab_core::model::registry::{ParamSpec, COMMON, MODELS};
+use pendulab_core::model::registry::{common_for, ParamSpec, MODELS};
 use pendulab_core::Method;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -42,7 +42,8 @@ fn models(py: Python<'_>) -> PyResult<Vec<Bound<'_, PyDict>>> {
             d.set_item("label", m.label)?;
             d.set_item("summary", m.summary)?;
             d.set_item("interactive", m.interactive)?;
-            let params: PyResult<Vec<_>> = COMMON.iter().chain(m.params).map(|p| param_dict(py, p)).collect();
+            let common = common_for(m.name);
+            let params: PyResult<Vec<_>> = common.iter().chain(m.params).map(|p| param_dict(py, p)).collect();
             d.set_item("params", params?)?;
             Ok(d)
         })

@@ -4,7 +4,7 @@
 use thiserror::Error;
 
 mod hint;
-pub use hint::did_you_mean;
+pub use hint::{did_you_mean, Quoted};
 
 /// Everything that can go wrong in `pendulab-core`.
 #[derive(Debug, Clone, PartialEq, Error)]
@@ -48,7 +48,7 @@ pub enum Error {
     #[error("cannot project x = 0 onto the sphere |x| = l: the position has no direction")]
     DegeneratePosition,
     /// An unknown integrator name, with the nearest registered one ([`did_you_mean`]) and all of them.
-    #[error("unknown method {name:?}{}; available: {available}", did_you_mean(name, available.split(", ")))]
+    #[error("unknown method {}{}; available: {available}", Quoted(name), did_you_mean(name, available.split(", ")))]
     UnknownMethod {
         /// The name that was asked for.
         name: String,
@@ -136,7 +136,7 @@ pub enum Error {
         sigma1: f64,
     },
     /// An unknown model name.
-    #[error("unknown model {name:?}; available: {available}")]
+    #[error("unknown model {}; available: {available}", Quoted(name))]
     UnknownModel {
         /// The name that was asked for.
         name: String,
@@ -145,7 +145,8 @@ pub enum Error {
     },
     /// A parameter the model does not have.
     #[error(
-        "the '{model}' model has no parameter {name:?}; its parameters: length, mass, g{}{available}",
+        "the '{model}' model has no parameter {}; its parameters: length, mass, g{}{available}",
+        Quoted(name),
         if available.is_empty() { "" } else { ", " }
     )]
     UnknownParameter {
@@ -157,7 +158,7 @@ pub enum Error {
         available: String,
     },
     /// An unknown arithmetic name (`integrate::rattle_kernel::Arithmetic`).
-    #[error("unknown arithmetic {name:?}; available: unfused (default: the same bits on every CPU and in WebAssembly), fused (f64::mul_add: faster on CPUs with FMA)")]
+    #[error("unknown arithmetic {}; available: unfused (default: the same bits on every CPU and in WebAssembly), fused (f64::mul_add: faster on CPUs with FMA)", Quoted(name))]
     UnknownArithmetic {
         /// The name that was asked for.
         name: String,

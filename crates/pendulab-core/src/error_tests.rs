@@ -158,7 +158,8 @@ fn a_keys_step_size_and_residual_are_those_of_the_words() {
 }
 
 /// An unknown method names the nearest registered one (the same but for case first) and all of them; it
-/// said only "unknown method \"RATTLE\"; available: …", unlike the Python layer's message.
+/// said only "unknown method \"RATTLE\"; available: …", unlike the Python layer's message (whose
+/// quotes it has now: 'RATTLE').
 #[test]
 fn an_unknown_method_names_the_nearest_and_the_registered_ones() {
     use crate::integrate::Method;
@@ -179,11 +180,37 @@ fn an_unknown_method_names_the_nearest_and_the_registered_ones() {
         ("zzzz", None),
         ("", None),
     ] {
-        let hint = hint.map_or(String::new(), |h| format!(" (did you mean {h:?}?)"));
-        assert_eq!(message(given), format!("unknown method {given:?}{hint}; available: {available}"));
+        let hint = hint.map_or(String::new(), |h| format!(" (did you mean '{h}'?)"));
+        assert_eq!(message(given), format!("unknown method '{given}'{hint}; available: {available}"));
     }
     let long = "r".repeat(100_000); // no hint, and no 10⁵-by-10 distance table
-    assert_eq!(message(&long), format!("unknown method {long:?}; available: {available}"));
-    assert_eq!(did_you_mean("rattle10", ["rattle", "rattle4"]), " (did you mean \"rattle\"?)");
+    assert_eq!(message(&long), format!("unknown method '{long}'; available: {available}"));
+    assert_eq!(did_you_mean("rattle10", ["rattle", "rattle4"]), " (did you mean 'rattle'?)");
     assert_eq!(did_you_mean("x", std::iter::empty()), "");
+}
+
+/// Names in the core's refusals are quoted as Python's `repr` quotes them (the Python layer's
+/// messages): 'x'; "it's" for a name with a single quote; backslash, quote and control characters
+/// escaped. The model, parameter and arithmetic refusals quote so too.
+#[test]
+fn names_are_quoted_as_python_quotes_them() {
+    use super::Quoted;
+    for (name, python) in [
+        ("rattle", "'rattle'"),
+        ("it's", "\"it's\""),
+        ("say \"x\" 'y'", "'say \"x\" \\'y\\''"),
+        ("a\\b\n\t\u{1}\u{7f}", "'a\\\\b\\n\\t\\x01\\x7f'"),
+        ("φ", "'φ'"),
+        ("", "''"),
+    ] {
+        assert_eq!(Quoted(name).to_string(), python, "{name:?}");
+    }
+    let ideal = crate::state::Params::new(1.0, 1.0, 9.81).unwrap();
+    let build = crate::model::any_model::AnyModel::build("ideal", ideal, &[("dampin", 1.0)]);
+    let parameter = build.map(|_| ()).unwrap_err().to_string();
+    assert_eq!(parameter, "the 'ideal' model has no parameter 'dampin'; its parameters: length, mass, g");
+    let model = crate::model::registry::spec("sprung").unwrap_err().to_string();
+    assert!(model.starts_with("unknown model 'sprung'; available: ideal, damped"), "{model}");
+    let arithmetic = crate::integrate::rattle_kernel::Arithmetic::from_name("fast").map(|_| ()).unwrap_err().to_string();
+    assert!(arithmetic.starts_with("unknown arithmetic 'fast'; available: unfused"), "{arithmetic}");
 }

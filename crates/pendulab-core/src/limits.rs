@@ -83,7 +83,7 @@ pub const COMMON: &[ParamSpec] = &[
         default: 1.0,
         min: 1e-6,
         max: 1e4,
-        description: "length of the rod from the pivot to the bob (the spring's rest length l₀)",
+        description: "length of the rod from the pivot to the bob",
         allowed: "a number in [1e-6, 1e4] m",
     },
     ParamSpec {
@@ -107,6 +107,31 @@ pub const COMMON: &[ParamSpec] = &[
         allowed: "a number in [-1e4, 1e4] m/s^2 (any sign, 0 allowed)",
     },
 ];
+
+/// The shared parameters as `model` (a registry name) reads them: [`COMMON`], with length and mass
+/// described for what holds its bob — a rod, the hoisted model's rope (l at t = 0, T-11.10), the
+/// swinging spring (its rest length l₀, T-7.4) or the string (the bob's largest distance) — for
+/// `pendulab models`, `pl.models()` and the lab's tooltips. Any other name: [`COMMON`] as it is.
+pub fn common_for(model: &str) -> [ParamSpec; 3] {
+    let [mut length, mut mass, g] = [COMMON[0], COMMON[1], COMMON[2]];
+    let (l, m) = match model {
+        "hoisted" => (
+            "rope length at t = 0: the rope is l(t) = l + r t + a sin(ν t) long (T-11.10)",
+            "mass of the bob (the rope is massless)",
+        ),
+        "spring" => (
+            "rest length l₀ of the spring (T-7.4): the bob rests at l₀ + m|g|/k from the pivot",
+            "mass of the bob (the spring is massless)",
+        ),
+        "string" => (
+            "length of the string: the bob's largest distance from the pivot (slack when closer)",
+            "mass of the bob (the string is massless)",
+        ),
+        _ => (length.description, mass.description),
+    };
+    (length.description, mass.description) = (l, m);
+    [length, mass, g]
+}
 
 /// The bounds of everything else a run is made of — states, times, steps, samples, bytes, files —
 /// shared by the Python API, scenario and sweep files, the CLI and the lab (`pl.limits()`, `pendulab.validate`,

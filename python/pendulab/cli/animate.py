@@ -25,23 +25,25 @@ from ..variants.spring import SpringTrajectory
 from .common import EXIT_INTERRUPTED, _fail, _say, _scenario_file, _user_errors, app
 
 
-def _check_movie_path(out: Path) -> str:
-    """The format of --out, and that its directory can be written (before any work)."""
-    fmt = format_of(out)
+def _check_movie_path(typed: str) -> str:
+    """The format of --out, and that its directory can be written (before any work); named as typed."""
+    fmt = format_of(typed)
+    out = Path(typed)
     if out.is_dir():
-        _fail(f"--out {str(out)!r} is a directory; give a file name ending in .mp4, .webm or .gif")
+        _fail(f"--out {typed!r} is a directory; give a file name ending in .mp4, .webm or .gif")
     parent = out.resolve().parent
     while not parent.exists():
         parent = parent.parent
     if not parent.is_dir() or not os.access(parent, os.W_OK | os.X_OK):
-        _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")
+        _fail(f"--out {typed!r}: cannot write to the directory {str(parent)!r}")
     return fmt
 
 
-def _report(movie: Movie) -> str:
+def _report(movie: Movie, out: str) -> str:
+    """What was written, the movie named ``out`` as typed."""
     w, h = movie.size
     return (
-        f"wrote {movie.path}: {movie.frames} frames, {movie.duration:.3g} s at {movie.fps:.3g} frames/s, "
+        f"wrote {out}: {movie.frames} frames, {movie.duration:.3g} s at {movie.fps:.3g} frames/s, "
         f"{w}x{h}, t = {movie.t_start:g} .. {movie.t_end:.6g} s, {movie.bytes / 1e6:.2f} MB "
         f"({movie.frames_per_second:.0f} frames/s)"
     )
@@ -58,8 +60,14 @@ def animate(
         ),
     ],
     out: Annotated[
-        Path,
-        typer.Option("--out", "-o", help="The movie: .mp4 (H.264), .webm (VP9) or .gif.", show_default=False),
+        str,  # not Path: the messages name it as typed (./m.gif, not m.gif)
+        typer.Option(
+            "--out",
+            "-o",
+            metavar="FILE",
+            help="The movie: .mp4 (H.264), .webm (VP9) or .gif.",
+            show_default=False,
+        ),
     ],
     exact_: Annotated[
         bool,
@@ -178,4 +186,4 @@ def animate(
                 raise typer.Exit(EXIT_INTERRUPTED)
             movie = tr.animate(out, settings)
         if not quiet:
-            _say(_report(movie))
+            _say(_report(movie, out))

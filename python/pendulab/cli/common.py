@@ -138,17 +138,37 @@ def _checked(param: Any) -> Any:
     return process_value
 
 
+_METAVARS = {float: "NUMBER", int: "INTEGER", str: "TEXT", Path: "PATH"}
+
+
 def _tidy(command: Any) -> None:
     """Once per command line, on every parameter of every command under ``command``: the messages of
-    :func:`_checked`; arguments named by an upper-case metavar in usage lines and errors alike."""
+    :func:`_checked`; arguments named by an upper-case metavar in usage lines, ``--help`` and errors
+    alike (``SCENARIO...`` for a list), an option's value by a word (``--dt NUMBER``), never by typer's
+    Python type (``SCENARIO <list[str]>``, ``--dt <float>``)."""
     for sub in getattr(command, "commands", {}).values():
         _tidy(sub)
     for param in command.params:
-        if hasattr(param, "type_descriptor") and not getattr(param, "is_flag", False):
+        typed = hasattr(param, "type_descriptor")
+        if typed and not getattr(param, "is_flag", False):
             param.process_value = _checked(param)
         if param.param_type_name == "argument":
             param.metavar = param.metavar or param.name.upper()
             param._usage_display_name = functools.partial(_usage_name, param)
+            param._rich_display_name = functools.partial(_listed_name, param)
+            param.display_type_rich = _no_type
+        elif typed and param.metavar is None and not getattr(param, "is_flag", False):
+            param.metavar = _METAVARS.get(param.type_descriptor.annotation, "VALUE")
+
+
+def _no_type(ctx: Context) -> None:
+    """No type after an argument's name in ``--help`` (typer wrote ``SCENARIO <str>``)."""
+    return None
+
+
+def _listed_name(param: Any) -> str:
+    """An argument in ``--help``'s list: ``SCENARIO``, ``SCENARIO...`` if repeatable."""
+    return str(param.metavar) + ("..." if param.nargs != 1 else "")
 
 
 def _usage_name(param: Any) -> str:
@@ -236,10 +256,12 @@ def _sweep_file(arg: str | Path) -> str:
     return _as_typed(arg, "sweep")
 
 
-def _check_output(out: Path) -> None:
-    """Everything about --out that can be checked before the run: suffix, writer, directory."""
+def _check_output(out: str | Path) -> None:
+    """Everything about --out that can be checked before the run: suffix, writer, directory; the
+    messages name ``out`` as typed (take such options as ``str``: typer normalises a ``Path``)."""
+    typed, out = os.fspath(out), Path(out)
     try:
-        fmt = io.format_of(out)
+        fmt = io.format_of(typed)
     except ValueError as e:
         _fail(str(e))
     if fmt == "parquet":
@@ -248,24 +270,25 @@ def _check_output(out: Path) -> None:
         io._require("xarray")
         io._require("scipy")
     if out.is_dir():
-        _fail(f"--out {str(out)!r} is a directory; give a file name ending in .csv, .parquet or .nc")
+        _fail(f"--out {typed!r} is a directory; give a file name ending in .csv, .parquet or .nc")
     parent = out.resolve().parent
     if not parent.is_dir():  # --out does not create directories (docs/cli.md)
-        _fail(f"--out {str(out)!r}: the directory {str(parent)!r} does not exist; create it first")
+        _fail(f"--out {typed!r}: the directory {str(parent)!r} does not exist; create it first")
     if not os.access(parent, os.W_OK | os.X_OK):
-        _fail(f"--out {str(out)!r}: cannot write to the directory {str(parent)!r}")
+        _fail(f"--out {typed!r}: cannot write to the directory {str(parent)!r}")
 
 
 IMAGE_SUFFIXES = (".png", ".svg", ".pdf")
 
 
-def _check_image(option: str, path: Path) -> None:
+def _check_image(option: str, path: str | Path) -> None:
     """An image path (--plot, --out of a figure) checked before any work: a suffix matplotlib writes,
-    not a directory, in a directory that exists (it is not created, docs/limits.md)."""
+    not a directory, in a directory that exists (it is not created, docs/limits.md); named as typed."""
+    typed, path = os.fspath(path), Path(path)
     if path.suffix.lower() not in IMAGE_SUFFIXES:
-        _fail(f"{option}: unknown image suffix {path.suffix!r} in {str(path)!r}; use .png, .svg or .pdf")
+        _fail(f"{option}: unknown image suffix {path.suffix!r} in {typed!r}; use .png, .svg or .pdf")
     if path.is_dir():
-        _fail(f"{option} {str(path)!r} is a directory; give a file name ending in .png, .svg or .pdf")
+        _fail(f"{option} {typed!r} is a directory; give a file name ending in .png, .svg or .pdf")
     parent = path.resolve().parent
     if not parent.is_dir():
-        _fail(f"{option} {str(path)!r}: the directory {str(parent)!r} does not exist; create it first")
+        _fail(f"{option} {typed!r}: the directory {str(parent)!r} does not exist; create it first")

@@ -68,14 +68,14 @@ def shaper_cmd(
 
 @crane_app.command("sensitivity", short_help="V(ω/ω₀) of shapers: a table, or a plot (--plot).")
 def sensitivity_cmd(
-    kinds: Annotated[list[str], typer.Argument(help=_KIND_HELP, show_default=False)],
+    kinds: Annotated[list[str], typer.Argument(metavar="KIND", help=_KIND_HELP, show_default=False)],
     damping: Annotated[float, typer.Option(help="Damping ratio ζ (design and plant).")] = 0.0,
     tolerance: Annotated[float, typer.Option(help="V_tol of the EI kinds (a fraction).")] = 0.05,
     lo: Annotated[float, typer.Option(help="Smallest ω/ω₀.")] = 0.5,
     hi: Annotated[float, typer.Option(help="Largest ω/ω₀.")] = 1.5,
     points: Annotated[int, typer.Option(min=2, max=100_001, help="Rows of the table.")] = 11,
-    plot: Annotated[
-        Path | None, typer.Option(help="Write the curves to this image (.png/.svg/.pdf).")
+    plot: Annotated[  # str, not Path: named as typed in the messages (./v.png, not v.png)
+        str | None, typer.Option(metavar="FILE", help="Write the curves to this image (.png/.svg/.pdf).")
     ] = None,
 ) -> None:
     """The residual vibration V [%] of each shaper kind against ω/ω₀ (T-11.1)."""
@@ -119,7 +119,7 @@ def residual_cmd(
         float, typer.Option(help="Time after the move [s] over which the sway is measured.")
     ] = 30.0,
     plot: Annotated[
-        Path | None, typer.Option(help="Write sway vs time (shaped, unshaped) to this image.")
+        str | None, typer.Option(metavar="FILE", help="Write sway vs time (shaped, unshaped) to this image.")
     ] = None,
 ) -> None:
     """Simulates the move unshaped and shaped (the shaper designed for the lowest sway mode of the
@@ -168,8 +168,10 @@ def run_cmd(
     file: Annotated[  # str, not Path: the messages name the file as typed (./x.toml, not x.toml)
         str, typer.Argument(help="Crane file (TOML; docs/cranes.md 'Crane files').", show_default=False)
     ],
-    out: Annotated[Path | None, typer.Option("--out", "-o", help="Write the run to this .csv file.")] = None,
-    plot: Annotated[Path | None, typer.Option(help="Write sway vs time to this image.")] = None,
+    out: Annotated[
+        str | None, typer.Option("--out", "-o", metavar="FILE", help="Write the run to this .csv file.")
+    ] = None,
+    plot: Annotated[str | None, typer.Option(metavar="FILE", help="Write sway vs time to this image.")] = None,
 ) -> None:
     """Runs the crane of FILE and prints its sway modes [rad/s], the residual sway after the move [m],
     the largest rope tension [N] and the energy balance E − E₀ − ΣW [J]; --out writes t [s], pivot,
@@ -178,8 +180,8 @@ def run_cmd(
         from ..crane.scenario import load
 
         if out is not None:
-            if out.suffix.lower() != ".csv":
-                _fail(f"--out {str(out)!r}: crane runs are written as .csv")
+            if Path(out).suffix.lower() != ".csv":
+                _fail(f"--out {out!r}: crane runs are written as .csv")
             _check_output(out)
         if plot is not None:
             _check_image("--plot", plot)
@@ -188,11 +190,11 @@ def run_cmd(
 
 
 def report(
-    sc: Any, name: str, out: Path | None = None, plot: Path | None = None, quiet: bool = False
+    sc: Any, name: str, out: str | None = None, plot: str | None = None, quiet: bool = False
 ) -> None:
     """Runs the crane scenario ``sc`` (``pendulab.crane.scenario.CraneScenario``) and prints its
     modes [rad/s], residual sway [m], largest tension [N] and energy balance [J]; writes ``out``
-    (.csv) and ``plot`` (an image) when given (``pendulab crane run`` and ``pendulab run``). ``quiet``
+    (.csv) and ``plot`` (an image) when given, named as typed, (``pendulab crane run`` and ``pendulab run``). ``quiet``
     (``pendulab run -q``) prints nothing."""
 
     def say(text: str) -> None:
@@ -218,7 +220,7 @@ def report(
         say(f"wrote {plot}")
 
 
-def _write_csv(sc: Any, run: object, out: Path) -> None:
+def _write_csv(sc: Any, run: object, out: str) -> None:
     """The run as CSV: the ``#`` metadata line of every Pendulab CSV (the crane file's settings, the
     shaper's impulses, the sway modes, units), the column names with units, one row per sample."""
     from ..crane.system import CraneRun
@@ -260,8 +262,10 @@ def grid_cmd(
     settle: Annotated[
         float, typer.Option(help="Time after the move [s] over which the sway is measured.")
     ] = 20.0,
-    out: Annotated[Path | None, typer.Option("--out", "-o", help="Write the grid to this .csv file.")] = None,
-    plot: Annotated[Path | None, typer.Option(help="Write the chart to this image.")] = None,
+    out: Annotated[
+        str | None, typer.Option("--out", "-o", metavar="FILE", help="Write the grid to this .csv file.")
+    ] = None,
+    plot: Annotated[str | None, typer.Option(metavar="FILE", help="Write the chart to this image.")] = None,
 ) -> None:
     """Simulates every rope length × payload ratio × shaper (hook + payload cranes in the core, in
     parallel) and prints the median and largest residual sway [m] per shaper; --out writes every case
@@ -272,8 +276,8 @@ def grid_cmd(
         from .. import crane
 
         if out is not None:
-            if out.suffix.lower() != ".csv":
-                _fail(f"--out {str(out)!r}: the grid is written as .csv")
+            if Path(out).suffix.lower() != ".csv":
+                _fail(f"--out {out!r}: the grid is written as .csv")
             _check_output(out)
         if plot is not None:
             _check_image("--plot", plot)
@@ -330,7 +334,7 @@ GRID_UNITS = {
 }
 
 
-def _write_grid_csv(out: Path, res: Any, settings: dict[str, Any], omega: float, shapers: list[Any]) -> None:
+def _write_grid_csv(out: str, res: Any, settings: dict[str, Any], omega: float, shapers: list[Any]) -> None:
     """The grid as CSV: the ``#`` metadata line of every Pendulab CSV (``# pendulab crane grid; metadata
     (JSON): {...}``: the command's settings, ``ropes`` linear and ``ratios`` geometric START:STOP:N, the
     design ω [rad/s], each shaper's impulses, units), the header ``shaper,rope [m],ratio,sway [m]`` and

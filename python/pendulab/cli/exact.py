@@ -48,6 +48,9 @@ _SCENARIO = typer.Argument(
     help="Scenario file (TOML; see docs/scenarios.md) or the name of a shipped example (rosette, ...).",
     show_default=False,
 )
+_IMAGE_OUT = typer.Option(  # taken as str, not Path: the messages name the file as typed (./a.png)
+    "--out", "-o", metavar="FILE", help="Image file (.png, .svg, .pdf).", show_default=False
+)
 
 
 def parse_times(spec: str) -> np.ndarray:
@@ -96,9 +99,13 @@ def exact_cmd(
         ),
     ] = None,
     out: Annotated[
-        Path | None,
+        str | None,  # not Path: the messages name the file as typed (./out.csv, not out.csv)
         typer.Option(
-            "--out", "-o", help="Write the states to this file (.csv, .parquet or .nc).", show_default=False
+            "--out",
+            "-o",
+            metavar="FILE",
+            help="Write the states to this file (.csv, .parquet or .nc).",
+            show_default=False,
         ),
     ] = None,
     quiet: Annotated[bool, typer.Option("--quiet", "-q", help="Print nothing but errors.")] = False,
@@ -140,9 +147,10 @@ def phases(
         ),
     ] = None,
     plot: Annotated[
-        Path | None,
+        str | None,  # named as typed, as --out
         typer.Option(
             "--plot",
+            metavar="FILE",
             help="Also draw the split and the reduced orbit to this image (.png, .svg, .pdf).",
             show_default=False,
         ),
@@ -223,9 +231,13 @@ def _grid(spec: str) -> tuple[int, int]:
 @app.command("em-map", short_help="The energy–momentum map with the rotation number W (image or data).")
 def em_map_cmd(
     out: Annotated[
-        Path,
+        str,  # named as typed, as --out of run
         typer.Option(
-            "--out", "-o", help="Image (.png, .svg, .pdf) or data (.nc, .csv: E, J3, W).", show_default=False
+            "--out",
+            "-o",
+            metavar="FILE",
+            help="Image (.png, .svg, .pdf) or data (.nc, .csv: E, J3, W).",
+            show_default=False,
         ),
     ],
     grid: Annotated[str, typer.Option(metavar="N_J3xN_E", help="Grid points along J3 and E.")] = "400x400",
@@ -257,10 +269,10 @@ def em_map_cmd(
     from ..model import Pendulum
 
     with _user_errors():
-        suffix = out.suffix.lower()
+        suffix = Path(out).suffix.lower()
         if suffix not in (*IMAGE_SUFFIXES, ".nc", ".csv"):
             _fail(
-                f"unknown output suffix {suffix!r} in {str(out)!r}; "
+                f"unknown output suffix {suffix!r} in {out!r}; "
                 "use .png, .svg, .pdf (image) or .nc, .csv (data)"
             )
         if suffix in IMAGE_SUFFIXES:
@@ -293,9 +305,7 @@ def em_map_cmd(
 @app.command(short_help="Holm's Figure 2 for a scenario: C = 0, the energy plane and the orbit.")
 def reduced(
     scenario: Annotated[str, _SCENARIO],
-    out: Annotated[
-        Path, typer.Option("--out", "-o", help="Image file (.png, .svg, .pdf).", show_default=False)
-    ],
+    out: Annotated[str, _IMAGE_OUT],
     periods: Annotated[
         float, typer.Option(min=0.01, max=1000.0, help="z-periods of the orbit to draw.")
     ] = 1.0,
@@ -323,9 +333,7 @@ def reduced(
 @app.command("plot", short_help="Draw a scenario: its path on the sphere, the top view, or the phase split.")
 def plot_cmd(
     scenario: Annotated[str, _SCENARIO],
-    out: Annotated[
-        Path, typer.Option("--out", "-o", help="Image file (.png, .svg, .pdf).", show_default=False)
-    ],
+    out: Annotated[str, _IMAGE_OUT],
     kind: Annotated[
         str,
         typer.Option(

@@ -159,11 +159,12 @@ def fit_cmd(
     loss: Annotated[
         str, typer.Option(help="linear, or a robust loss: soft_l1, huber, cauchy, arctan.")
     ] = "linear",
-    out: Annotated[
-        Path | None, typer.Option("--out", "-o", help="Write the fitted scenario (TOML) here.")
+    out: Annotated[  # str, not Path: the messages name the files as typed (./fit.toml, not fit.toml)
+        str | None, typer.Option("--out", "-o", metavar="FILE", help="Write the fitted scenario (TOML) here.")
     ] = None,
     plot: Annotated[
-        Path | None, typer.Option(help="Save the data-and-fit figure here (.png, .svg, .pdf).")
+        str | None,
+        typer.Option(metavar="FILE", help="Save the data-and-fit figure here (.png, .svg, .pdf)."),
     ] = None,
     time_limit: Annotated[
         str,
@@ -181,11 +182,11 @@ def fit_cmd(
     with _user_errors():
         _need_scipy()
         limit = _time_limit(time_limit)
-        if out is not None and out.suffix.lower() != ".toml":
-            _fail(f"--out {str(out)!r}: the fitted scenario is written as TOML; give a name ending in .toml")
-        if out is not None and not out.resolve().parent.is_dir():  # checked before the fit, as --plot
-            folder = str(out.resolve().parent)
-            _fail(f"--out {str(out)!r}: the directory {folder!r} does not exist; create it first")
+        if out is not None and Path(out).suffix.lower() != ".toml":
+            _fail(f"--out {out!r}: the fitted scenario is written as TOML; give a name ending in .toml")
+        if out is not None and not Path(out).resolve().parent.is_dir():  # checked before the fit, as --plot
+            folder = str(Path(out).resolve().parent)
+            _fail(f"--out {out!r}: the directory {folder!r} does not exist; create it first")
         if plot is not None:
             _check_image("--plot", plot)
         if model not in FITTABLE_MODELS:

@@ -14,7 +14,7 @@ import json
 import math
 import warnings
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
@@ -38,6 +38,9 @@ from .common import (
     app,
 )
 from .crane import report
+
+if TYPE_CHECKING:
+    from .._core import ModelInfo, ParamSpec
 
 
 def _settings(sc: Scenario) -> str:
@@ -66,10 +69,11 @@ def run(
         ),
     ],
     out: Annotated[
-        Path | None,
+        str | None,  # not Path: the messages name the file as typed (./out.csv, not out.csv)
         typer.Option(
             "--out",
             "-o",
+            metavar="FILE",
             help="Write the trajectory to this file; the format comes from the suffix: "
             ".csv, .parquet or .nc. Checked before the run.",
             show_default=False,
@@ -128,8 +132,8 @@ def run(
         )
         sc = load_scenario(scenario).with_overrides(overrides)  # its messages name the file as typed
         if sc.is_crane:  # a [crane] file: the crane's run and report (pendulab crane run)
-            if out is not None and out.suffix.lower() != ".csv":
-                _fail(f"--out {str(out)!r}: crane runs are written as .csv")
+            if out is not None and Path(out).suffix.lower() != ".csv":
+                _fail(f"--out {out!r}: crane runs are written as .csv")
             if not quiet:
                 _say(f"running {scenario}" + (f": {sc.title}" if sc.title else ""), err=True)
             report(sc.crane(), str(scenario), out, quiet=quiet)
@@ -252,7 +256,7 @@ def models(
             else "  [not interactive (no live stepper): pendulab run]"
         )
         _say(f"{m['name']}: {m['label']} — {m['summary']}{batch}")
-        own = [p for p in m["params"] if name is not None or p["name"] not in common]
+        own = [p for p in m["params"] if name is not None or p["name"] not in common or _own_sense(p, table)]
         if not own:
             _say("    (no parameters of its own)")
         rows = [(p["name"], f"[{p['unit']}]", f"default {p['default']:g}", p) for p in own]
@@ -264,6 +268,13 @@ def models(
     if degrees:
         _say("")
         _say(f"Scenario files take an angle in rad also in degrees as <name>_deg ({', '.join(degrees)}).")
+
+
+def _own_sense(param: ParamSpec, table: list[ModelInfo]) -> bool:
+    """True when a shared parameter means something else in this model (the spring's length is its
+    rest length l₀): listed with the model's own then."""
+    first = next(p for p in table[0]["params"] if p["name"] == param["name"])
+    return param["description"] != first["description"]
 
 
 @app.command(short_help="Check scenario files without running them.")

@@ -70,10 +70,11 @@ def _done_so_far(out: Path) -> str:
 def sweep_cmd(
     sweep_file: Annotated[str, _SWEEP],  # str: named as typed (./x.toml)
     out: Annotated[
-        Path,
+        str,  # not Path: the messages name it as typed (./runs, not runs)
         typer.Option(
             "--out",
             "-o",
+            metavar="PATH",
             help="A directory (one Parquet file per chunk + _manifest.json) or a FILE.parquet.",
             show_default=False,
         ),
@@ -164,7 +165,7 @@ def sweep_cmd(
         except ResumeConflict as e:  # the fix spelled as this command's options
             _fail(e.for_cli())
         except KeyboardInterrupt:
-            where = _done_so_far(out)
+            where = _done_so_far(Path(out))
             _fail(
                 f"interrupted (Ctrl-C){': ' + where if where else ''}; run again with --resume to finish",
                 EXIT_INTERRUPTED,

@@ -1,8 +1,37 @@
 //! The hint of an unknown name: the nearest of the names allowed ([`did_you_mean`]), by edit distance
-//! (the `strsim` crate).
+//! (the `strsim` crate); and [`Quoted`], a name in a message quoted as the Python layer quotes it.
 
-/// `` (did you mean "x"?)`` for the option nearest to `name`, or `""`: an option equal to it but for case
-/// first, else the one at the smallest edit distance from it in lower case if that distance is at most
+use std::fmt;
+
+/// A name in a message, quoted as Python's `repr` quotes a string — `'x'`, or `"it's"` for a name
+/// with a single quote and no double one; the quote, backslash and control characters escaped — so
+/// that the core's refusals (`unknown method 'RATTLE' (did you mean 'rattle'?)`) read as the Python
+/// layer's, where names are quoted `'x'` everywhere (and the CLI's usage errors, and the lab's).
+#[derive(Debug, Clone, Copy)]
+pub struct Quoted<'a>(pub &'a str);
+
+impl fmt::Display for Quoted<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        use fmt::Write;
+        let q = if self.0.contains('\'') && !self.0.contains('"') { '"' } else { '\'' };
+        f.write_char(q)?;
+        for c in self.0.chars() {
+            match c {
+                '\\' => f.write_str("\\\\")?,
+                '\n' => f.write_str("\\n")?,
+                '\r' => f.write_str("\\r")?,
+                '\t' => f.write_str("\\t")?,
+                c if c == q => write!(f, "\\{c}")?,
+                c if c.is_control() || c == '\u{a0}' || c == '\u{ad}' => write!(f, "\\x{:02x}", c as u32)?,
+                c => f.write_char(c)?,
+            }
+        }
+        f.write_char(q)
+    }
+}
+
+/// `` (did you mean 'x'?)`` (the name [`Quoted`]) for the option nearest to `name`, or `""`: an option
+/// equal to it but for case first, else the one at the smallest edit distance from it in lower case if that distance is at most
 /// half the longer name's length (`strsim::osa_distance`: a letter changed, added or left out, or two
 /// neighbours swapped, is one edit), of equals the one more alike by `strsim::jaro_winkler` (`rattl6`:
 /// `rattle6`, not `rattle`), then the first. The hint of Python's `pendulab.validate.did_you_mean`
@@ -23,5 +52,5 @@ pub fn did_you_mean<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) 
         near.min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2))).map(|(o, ..)| o)
     };
     let same_but_case = options.iter().find(|o| o.to_lowercase() == lower);
-    same_but_case.or_else(closest).map_or_else(String::new, |o| format!(" (did you mean {o:?}?)"))
+    same_but_case.or_else(closest).map_or_else(String::new, |o| format!(" (did you mean {}?)", Quoted(o)))
 }

@@ -6,7 +6,7 @@
 pub use super::any_model::AnyModel;
 use super::Model;
 use crate::error::{Error, Result};
-pub use crate::limits::{check_limits, limit, ParamSpec, COMMON, LIMITS, STATE};
+pub use crate::limits::{check_limits, common_for, limit, ParamSpec, COMMON, LIMITS, STATE};
 use crate::state::State;
 
 /// A registered model.
