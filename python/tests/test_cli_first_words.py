@@ -113,3 +113,32 @@ def test_models_describe_length_per_model() -> None:
     assert "rest length l₀ of the spring" in lines[spring + 1], lines[spring : spring + 3]
     ideal = lines.index(next(line for line in lines if line.startswith("ideal:")))
     assert lines[ideal + 1].strip() == "(no parameters of its own)"
+
+
+def test_several_unknown_parameters_are_each_named_as_one_is() -> None:
+    """Several unknown parameters: each with its did-you-mean, then the model's parameters once, in
+    pl.Pendulum and ``pendulab fit --param`` alike (Pendulum named the first only; fit said "give
+    NAME=VALUE with NAME one of ..." without a hint). Scenario files name each key as one problem."""
+    import pendulab as pl
+
+    damped = "the 'damped' model has no parameter"
+    want = (
+        f"invalid parameters dampin = 1, drg = 2: {damped} 'dampin' (did you mean 'damping'?); "
+        f"{damped} 'drg' (did you mean 'drag'?); its parameters: length, mass, g, damping, drag,"
+    )
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.Pendulum(model="damped", dampin=1, drg=2)
+    assert str(e.value).startswith(want), e.value
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.Pendulum(foo=1, bar=2)
+    assert str(e.value).startswith(
+        "invalid parameters foo = 1, bar = 2: no model has a parameter 'foo'; no model has a parameter 'bar'; "
+        "Pendulum takes length"
+    ), e.value
+    with pytest.raises(pl.InvalidInputError) as e:
+        pl.Pendulum(model="damped", dampin=1)
+    one = f"invalid parameter dampin = 1: {damped} 'dampin' (did you mean 'damping'?); its parameters:"
+    assert str(e.value).startswith(one), e.value
+    code, out, err = invoke("fit", "d.csv", "--model", "damped", "--param", "dampin=1.5", "--param", "drg=x")
+    fit = want.replace("dampin = 1, drg = 2", "dampin = 1.5, drg = 'x'")
+    assert_user_error(code, out, err, "error: --param: " + fit)

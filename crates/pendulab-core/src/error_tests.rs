@@ -211,6 +211,7 @@ fn names_are_quoted_as_python_quotes_them() {
     assert_eq!(parameter, "the 'ideal' model has no parameter 'dampin'; its parameters: length, mass, g");
     let model = crate::model::registry::spec("sprung").unwrap_err().to_string();
     assert!(model.starts_with("unknown model 'sprung'; available: ideal, damped"), "{model}");
-    let arithmetic = crate::integrate::rattle_kernel::Arithmetic::from_name("fast").map(|_| ()).unwrap_err().to_string();
+    let arithmetic =
+        crate::integrate::rattle_kernel::Arithmetic::from_name("fast").map(|_| ()).unwrap_err().to_string();
     assert!(arithmetic.starts_with("unknown arithmetic 'fast'; available: unfused"), "{arithmetic}");
 }

@@ -27,6 +27,7 @@ from ..fitting import fit
 from ..fitting.problem import FITTABLE_MODELS, model_params
 from ..fitting.table import read_table_notes
 from ..model import Pendulum
+from ..model.registry import not_of_model, refused
 from ..variants.spring import SwingingSpring
 from .common import _as_typed, _check_image, _fail, _say, _user_errors, app
 
@@ -193,11 +194,20 @@ def fit_cmd(
             raise InvalidInputError(f"--model {model!r}: use one of {', '.join(FITTABLE_MODELS)}")
         own = model_params(model)
         values: dict[str, float] = {}
+        unknown: dict[str, object] = {}
         for item in param or []:
             name, sep, text = item.partition("=")
-            if not sep or name.strip() not in own:
+            if not sep:
                 _fail(f"--param {item!r}: give NAME=VALUE with NAME one of {', '.join(own)}")
+            if name.strip() not in own:  # all of them, in the words of pl.Pendulum (did you mean ...)
+                try:  # the value shown as a number when it is one
+                    unknown[name.strip()] = float(text)
+                except ValueError:
+                    unknown[name.strip()] = text
+                continue
             values[name.strip()] = _number(text, f"--param {name.strip()}")
+        if unknown:
+            _fail(f"--param: {refused(unknown, not_of_model(model, list(unknown), list(own)))}")
         base = {k: values.pop(k) for k in ("length", "g", "mass") if k in values}
         pendulum: Pendulum | SwingingSpring
         if model == "spring":  # length: the rest length l0; stiffness k [N/m]

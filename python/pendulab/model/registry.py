@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from .._core import InvalidInputError
 from .._core import models as _models
@@ -66,15 +66,14 @@ def infer_model(extra: dict[str, float]) -> str:
     for m in _models():
         for q in m["params"]:
             owners[q["name"]].append(m["name"])
-    for key, value in extra.items():
-        if key not in owners:
-            hint = did_you_mean(key, [*owners, "model", "pivot_samples", "force"])
-            raise invalid(
-                "parameter " + key,
-                value,
-                f"no model has a parameter {key!r}{hint}; Pendulum takes length, g, mass, model, "
-                "pivot_samples, force and the models' own parameters (pendulab.models(), `pendulab models`)",
-            )
+    unknown = {k: v for k, v in extra.items() if k not in owners}
+    if unknown:
+        each = "; ".join(
+            f"no model has a parameter {k!r}{did_you_mean(k, [*owners, 'model', 'pivot_samples', 'force'])}"
+            for k in unknown
+        )
+        takes = "Pendulum takes length, g, mass, model, pivot_samples, force and the models' own parameters"
+        raise refused(unknown, f"{each}; {takes} (pendulab.models(), `pendulab models`)")
     model = _infer_model(set(extra))
     if not set(extra) <= {p["name"] for m in _models() if m["name"] == model for p in m["params"]}:
         given = ", ".join(f"{k} = {show(v)}" for k, v in extra.items())
@@ -93,9 +92,9 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
     if model is not None:
         choice("model", model, [m["name"] for m in _models()])
         names = [q["name"] for m in _models() if m["name"] == model for q in m["params"]]
-        for key, value in extra.items():
-            if key not in names:
-                raise invalid("parameter " + key, value, _not_of_model(model, key, names))
+        unknown = {k: v for k, v in extra.items() if k not in names}
+        if unknown:
+            raise refused(unknown, not_of_model(model, list(unknown), names))
     for key, value in extra.items():
         if len(key) > 64:
             raise invalid("parameter name", key, "a parameter of the model (pendulab.models())")
@@ -147,12 +146,25 @@ def elsewhere(
     return Elsewhere(model, str(key), name, owners) if name is not None and owners else None
 
 
-def _not_of_model(model: str, key: str, names: list[str]) -> str:
-    """Why ``model`` (whose parameters are ``names``) refuses the keyword ``key``: the nearest of its own
-    parameters (:func:`pendulab.validate.did_you_mean`), else the other models whose parameter ``key``
-    is, the same but for case (:func:`elsewhere`)."""
-    own = f"its parameters: {', '.join(names)}"
-    other = elsewhere(model, key, names)
-    if other is None:
-        return f"the {model!r} model has no parameter {key!r}{did_you_mean(key, names)}; {own}"
-    return f"{other}; {own}"
+def not_of_model(model: str, keys: list[str], names: list[str]) -> str:
+    """Why ``model`` (whose parameters are ``names``) refuses the keywords ``keys``: for each, the nearest
+    of its own parameters (:func:`pendulab.validate.did_you_mean`), else the other models whose parameter
+    it is, the same but for case (:func:`elsewhere`); then the model's parameters, once."""
+    each = []
+    for key in keys:
+        other = elsewhere(model, key, names)
+        each.append(
+            str(other) if other is not None else f"the {model!r} model has no parameter {key!r}"
+            f"{did_you_mean(key, names)}"
+        )
+    return f"{'; '.join(each)}; its parameters: {', '.join(names)}"
+
+
+def refused(unknown: Mapping[str, Any], why: str) -> InvalidInputError:
+    """The refusal of the keywords ``unknown`` (name → value): ``invalid parameter foo = 1: <why>`` for
+    one, ``invalid parameters foo = 1, bar = 2: <why>`` for several (``why`` words each of them)."""
+    if len(unknown) == 1:
+        ((key, value),) = unknown.items()
+        return invalid("parameter " + key, value, why)
+    given = ", ".join(f"{k} = {show(v)}" for k, v in unknown.items())
+    return InvalidInputError(f"invalid parameters {given}: {why}")
