@@ -16,7 +16,9 @@ from pendulab import cli
 ROSETTE = str(SCENARIOS / "rosette.toml")
 
 
-def test_run_and_exact_name_the_written_file_as_typed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+def test_run_and_exact_name_the_written_file_as_typed(
+    tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
     """``--out ./o.csv`` was reported as ``wrote o.csv`` (typer's Path); the inputs were already as typed."""
     monkeypatch.chdir(tmp_path)
     code, out, err = invoke("run", ROSETTE, "--t-end", "0.1", "--save-every", "50", "--out", "./o.csv")
@@ -131,10 +133,9 @@ def test_several_unknown_parameters_are_each_named_as_one_is() -> None:
     assert str(e.value).startswith(want), e.value
     with pytest.raises(pl.InvalidInputError) as e:
         pl.Pendulum(foo=1, bar=2)
-    assert str(e.value).startswith(
-        "invalid parameters foo = 1, bar = 2: no model has a parameter 'foo'; no model has a parameter 'bar'; "
-        "Pendulum takes length"
-    ), e.value
+    nowhere = "no model has a parameter"
+    two = f"invalid parameters foo = 1, bar = 2: {nowhere} 'foo'; {nowhere} 'bar'; Pendulum takes length"
+    assert str(e.value).startswith(two), e.value
     with pytest.raises(pl.InvalidInputError) as e:
         pl.Pendulum(model="damped", dampin=1)
     one = f"invalid parameter dampin = 1: {damped} 'dampin' (did you mean 'damping'?); its parameters:"

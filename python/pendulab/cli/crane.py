@@ -171,7 +171,9 @@ def run_cmd(
     out: Annotated[
         str | None, typer.Option("--out", "-o", metavar="FILE", help="Write the run to this .csv file.")
     ] = None,
-    plot: Annotated[str | None, typer.Option(metavar="FILE", help="Write sway vs time to this image.")] = None,
+    plot: Annotated[
+        str | None, typer.Option(metavar="FILE", help="Write sway vs time to this image.")
+    ] = None,
 ) -> None:
     """Runs the crane of FILE and prints its sway modes [rad/s], the residual sway after the move [m],
     the largest rope tension [N] and the energy balance E − E₀ − ΣW [J]; --out writes t [s], pivot,
@@ -189,13 +191,11 @@ def run_cmd(
         report(sc, file, out, plot)
 
 
-def report(
-    sc: Any, name: str, out: str | None = None, plot: str | None = None, quiet: bool = False
-) -> None:
+def report(sc: Any, name: str, out: str | None = None, plot: str | None = None, quiet: bool = False) -> None:
     """Runs the crane scenario ``sc`` (``pendulab.crane.scenario.CraneScenario``) and prints its
     modes [rad/s], residual sway [m], largest tension [N] and energy balance [J]; writes ``out``
-    (.csv) and ``plot`` (an image) when given, named as typed, (``pendulab crane run`` and ``pendulab run``). ``quiet``
-    (``pendulab run -q``) prints nothing."""
+    (.csv) and ``plot`` (an image) when given, named as typed (``pendulab crane run`` and
+    ``pendulab run``). ``quiet`` (``pendulab run -q``) prints nothing."""
 
     def say(text: str) -> None:
         if not quiet:

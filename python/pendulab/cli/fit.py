@@ -120,6 +120,27 @@ def _need_scipy() -> None:
         _fail("pendulab fit needs SciPy: pip install 'pendulab[fit]' (or scipy>=1.11)")
 
 
+def _params(model: str, own: list[str], items: list[str]) -> dict[str, float]:
+    """The values of ``--param NAME=VALUE`` by name; unknown names all refused at once, in the words of
+    ``pl.Pendulum`` (each with its did-you-mean, then the model's parameters ``own``)."""
+    values: dict[str, float] = {}
+    unknown: dict[str, object] = {}
+    for item in items:
+        name, sep, text = item.partition("=")
+        if not sep:
+            _fail(f"--param {item!r}: give NAME=VALUE with NAME one of {', '.join(own)}")
+        if name.strip() not in own:
+            try:  # the value shown as a number when it is one
+                unknown[name.strip()] = float(text)
+            except ValueError:
+                unknown[name.strip()] = text
+            continue
+        values[name.strip()] = _number(text, f"--param {name.strip()}")
+    if unknown:
+        _fail(f"--param: {refused(unknown, not_of_model(model, list(unknown), own))}")
+    return values
+
+
 @app.command("fit", short_help="Fit length, g, damping and the start to measured data (CSV).")
 def fit_cmd(
     data: Annotated[  # str, not Path: the messages name the file as typed (./x.csv, not x.csv)
@@ -193,21 +214,7 @@ def fit_cmd(
         if model not in FITTABLE_MODELS:
             raise InvalidInputError(f"--model {model!r}: use one of {', '.join(FITTABLE_MODELS)}")
         own = model_params(model)
-        values: dict[str, float] = {}
-        unknown: dict[str, object] = {}
-        for item in param or []:
-            name, sep, text = item.partition("=")
-            if not sep:
-                _fail(f"--param {item!r}: give NAME=VALUE with NAME one of {', '.join(own)}")
-            if name.strip() not in own:  # all of them, in the words of pl.Pendulum (did you mean ...)
-                try:  # the value shown as a number when it is one
-                    unknown[name.strip()] = float(text)
-                except ValueError:
-                    unknown[name.strip()] = text
-                continue
-            values[name.strip()] = _number(text, f"--param {name.strip()}")
-        if unknown:
-            _fail(f"--param: {refused(unknown, not_of_model(model, list(unknown), list(own)))}")
+        values = _params(model, list(own), param or [])
         base = {k: values.pop(k) for k in ("length", "g", "mass") if k in values}
         pendulum: Pendulum | SwingingSpring
         if model == "spring":  # length: the rest length l0; stiffness k [N/m]

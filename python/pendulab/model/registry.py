@@ -154,8 +154,9 @@ def not_of_model(model: str, keys: list[str], names: list[str]) -> str:
     for key in keys:
         other = elsewhere(model, key, names)
         each.append(
-            str(other) if other is not None else f"the {model!r} model has no parameter {key!r}"
-            f"{did_you_mean(key, names)}"
+            str(other)
+            if other is not None
+            else f"the {model!r} model has no parameter {key!r}{did_you_mean(key, names)}"
         )
     return f"{'; '.join(each)}; its parameters: {', '.join(names)}"
 
