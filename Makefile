@@ -109,6 +109,7 @@ lint: venv
 	$(PY) tools/check_rust_modules.py crates/pendulab-core/src
 	$(PY) tools/check_rust_modules.py python/rust
 	$(PY) tools/check_rust_modules.py crates/pendulab-wasm/src
+	$(PY) tools/check_file_length.py   # at most 400 lines per source file (ARCHITECTURE.md, "File length")
 	RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --quiet
 
 # The hand-written stub of the compiled core, python/pendulab/_core.pyi, against the core itself (mypy's
