@@ -77,11 +77,12 @@ pub enum Error {
     },
     /// The adaptive integrator could not meet the tolerance.
     #[error(
-        "step size underflow at t = {} s: h = {} s is too small for rtol = {}, atol = {}",
+        "step size underflow at t = {} s: h = {} s is too small for rtol = {}, atol = {}{}",
         Time(*t),
         Shown(*h),
         Shown(*rtol),
-        Shown(*atol)
+        Shown(*atol),
+        crate::integrate::dop853_control::drift_advice(*off_sphere)
     )]
     StepSizeUnderflow {
         /// Time at which it happened \[s\].
@@ -92,6 +93,9 @@ pub enum Error {
         rtol: f64,
         /// Absolute tolerance in force.
         atol: f64,
+        /// `dop853` with `project = false` only: (|x| − l)/l and x·v/(l·|v|) of the state at t when it
+        /// had left TS² by more than 100·rtol (the likely cause, T-2.4); else None.
+        off_sphere: Option<(f64, f64)>,
     },
     /// The state the integrator computed (not one the user gave) became NaN or infinite, or left the
     /// bounds of a state ([`crate::limits::STATE`]): the integration diverged. `t` is the time of the

@@ -109,7 +109,7 @@ fn a_keys_time_is_the_time_of_the_words() {
         let shown = Time(t).to_string();
         let cases = [
             Error::Diverged { t, method: "rattle", dt: 0.01 },
-            Error::StepSizeUnderflow { t, h: 1e-15, rtol: 1e-9, atol: 1e-12 },
+            Error::StepSizeUnderflow { t, h: 1e-15, rtol: 1e-9, atol: 1e-12, off_sphere: None },
             Error::PoleSingularity { t, theta: 1e-7, sin_theta: 1e-7, limit: 1e-6 },
             Error::ReducedFlowPole { t, sigma1: 1.0 },
         ];
@@ -133,7 +133,7 @@ fn a_keys_step_size_and_residual_are_those_of_the_words() {
         let cases = [
             (Error::Diverged { t: 1.0, method: "rk4", dt: x }, "dt", format!("(dt = {shown} s)")),
             (
-                Error::StepSizeUnderflow { t: 1.0, h: x, rtol: 1e-9, atol: 1e-12 },
+                Error::StepSizeUnderflow { t: 1.0, h: x, rtol: 1e-9, atol: 1e-12, off_sphere: None },
                 "h",
                 format!("h = {shown} s"),
             ),

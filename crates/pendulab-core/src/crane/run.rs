@@ -167,7 +167,8 @@ pub fn run(sys: &CraneSystem, t0: f64, y0: Y, save: &[f64], tol: Tolerances) -> 
             let last = t + 1.01 * h >= stop;
             let step = if last { stop - t } else { h };
             if step < 10.0 * f64::EPSILON * span_scale {
-                return Err(Error::StepSizeUnderflow { t, h: step, rtol: tol.rtol, atol: tol.atol });
+                let (rtol, atol) = (tol.rtol, tol.atol);
+                return Err(Error::StepSizeUnderflow { t, h: step, rtol, atol, off_sphere: None });
             }
             k[0] = sys.eval(t, t + 0.5 * step, &y).dy;
             let (mut y1, err) = attempt(sys, t, &y, step, &mut k, &weight, &tol);

@@ -26,7 +26,7 @@
 use super::adaptive_settings::{AdaptiveSettings, Models};
 use crate::error::{Error, Result};
 use crate::integrate::dop853::{initial_step, project_accepted, rhs, step_end, Y6};
-use crate::integrate::dop853_control::StepControl;
+use crate::integrate::dop853_control::{off_sphere, StepControl};
 use crate::integrate::dop853_tableau::{A, B, C, E3, E5, STAGES};
 use crate::integrate::Stats;
 use crate::model::Model;
@@ -245,7 +245,10 @@ impl<'s> Lanes<'s> {
             stop[l] = step_end(model(l), self.ctl[l].t, t_end);
             match self.control.trial(self.ctl[l].h, self.ctl[l].t, stop[l]) {
                 Ok((hl, la)) => (h[l], last[l], busy[l]) = (hl, la, true),
-                Err(e) => ended[l] = Some(Err(e)),
+                Err(e) => {
+                    let (y, length) = (get(&self.y, l), model(l).params().length);
+                    ended[l] = Some(Err(off_sphere(e, self.settings.options.project, (y.x, y.v), length)));
+                }
             }
         }
         // stages 1‥11: yᵢ = y + Σⱼ kⱼ (h aᵢⱼ) in the order of `Dop853::attempt`, then f per lane

@@ -7,8 +7,14 @@
 //! without growth right after a rejection; a rejected step is retried with h / min(1/0.333,
 //! err^{1/8} / 0.9). The trial step is capped by h_max, stretched to land on the stop time when within
 //! 1.01 h of it, and refused below round-off of t. Times and steps in s.
+//!
+//! Without projection the state drifts off TS², and T-2.4 is unstable there wherever the rod pushes
+//! (the bob high and slow, g z > |v|², docs/theory.md T-2.4: the error δ = |x|²/l² − 1 obeys
+//! l² δ̈ = 2 (g z − |v|²) δ), so near the top the drift grows until no step meets the tolerance. An
+//! underflow then names the drift ([`off_sphere`]) and says to project ([`drift_advice`]).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Shown};
+use glam::DVec3;
 
 const SAFETY: f64 = 0.9;
 /// Largest step shrink (1/FAC_MIN) and growth (1/FAC_MAX) factors, as in dop853.f.
@@ -45,7 +51,13 @@ impl StepControl {
         }
         let h_floor = 10.0 * (t0.abs().max(span.min(1.0)) * f64::EPSILON).max(f64::MIN_POSITIVE);
         if h.is_nan() || h < h_floor {
-            return Err(Error::StepSizeUnderflow { t: t0, h, rtol: self.rtol, atol: self.atol });
+            return Err(Error::StepSizeUnderflow {
+                t: t0,
+                h,
+                rtol: self.rtol,
+                atol: self.atol,
+                off_sphere: None,
+            });
         }
         Ok((h, last))
     }
@@ -73,5 +85,66 @@ impl StepControl {
     #[inline(always)]
     pub(crate) fn after_reject(h: f64, root: f64) -> f64 {
         h / (1.0 / FAC_MIN).min(root / SAFETY)
+    }
+}
+
+/// `e` with the constraint residuals of the state (`x` [m], `v` [m/s]) at the start of the failed step
+/// when it is a [`Error::StepSizeUnderflow`] of an unprojected run (`project` off) whose state had left
+/// TS² of length `length` [m] by more than 100·rtol (a projected step leaves it by about rtol at most):
+/// (|x| − l)/l and x·v/(l·|v|) (0 at rest). Any other error, or a state still on TS², is left as it is.
+pub(crate) fn off_sphere(e: Error, project: bool, (x, v): (DVec3, DVec3), length: f64) -> Error {
+    match e {
+        Error::StepSizeUnderflow { t, h, rtol, atol, off_sphere: None } if !project => {
+            let radial = x.length() / length - 1.0;
+            let speed = v.length();
+            let tangential = if speed > 0.0 { x.dot(v) / (length * speed) } else { 0.0 };
+            let far = [radial, tangential].iter().any(|r| r.is_nan() || r.abs() > 100.0 * rtol);
+            let off_sphere = far.then_some((radial, tangential));
+            Error::StepSizeUnderflow { t, h, rtol, atol, off_sphere }
+        }
+        other => other,
+    }
+}
+
+/// The end of a step size underflow's message: nothing, or for an unprojected run that had left TS²
+/// ([`off_sphere`]) its residuals, why, and what to do.
+pub(crate) fn drift_advice(off_sphere: Option<(f64, f64)>) -> String {
+    let Some((radial, tangential)) = off_sphere else { return String::new() };
+    format!(
+        "; the run is not projected (project=False) and had left TS² there, (|x| - l)/l = {} and \
+         x·v/(l·|v|) = {}: off TS² the equations T-2.4 are unstable wherever the rod pushes (the bob \
+         high and slow, near the top), so the drift grows until no step meets the tolerance; use \
+         project=True (the default) or a method that keeps TS² such as 'rattle'",
+        Shown(radial),
+        Shown(tangential)
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Only the underflow of an unprojected run whose state left TS² by more than 100·rtol names it.
+    #[test]
+    fn an_underflow_names_the_drift_only_of_an_unprojected_run_off_ts2() {
+        let e = Error::StepSizeUnderflow { t: 0.5, h: 1e-17, rtol: 1e-10, atol: 1e-12, off_sphere: None };
+        let (on, off) = ((DVec3::new(0.0, 0.0, 1.0), DVec3::X), (DVec3::new(0.0, 0.0, 1.5), DVec3::X));
+        assert_eq!(off_sphere(e.clone(), true, off, 1.0), e);
+        assert_eq!(off_sphere(e.clone(), false, on, 1.0), e);
+        assert_eq!(
+            e.to_string(),
+            "step size underflow at t = 0.5 s: h = 1e-17 s is too small for rtol = 1e-10, atol = 1e-12"
+        );
+        let named = off_sphere(e.clone(), false, (DVec3::new(0.0, 0.0, 1.5), DVec3::Z), 1.0);
+        assert!(
+            matches!(named, Error::StepSizeUnderflow { off_sphere: Some((r, c)), .. } if r == 0.5 && c == 1.5)
+        );
+        let words = named.to_string();
+        assert!(words.contains("(|x| - l)/l = 0.5 and x·v/(l·|v|) = 1.5"), "{words}");
+        assert!(words.contains("use project=True (the default)"), "{words}");
+        let rest = off_sphere(e, false, (DVec3::new(0.0, 0.0, 1.5), DVec3::ZERO), 1.0);
+        assert!(rest.to_string().contains("x·v/(l·|v|) = 0:"), "{rest}");
+        let other = Error::Diverged { t: 0.5, method: "dop853", dt: 0.1 };
+        assert_eq!(off_sphere(other.clone(), false, off, 1.0), other);
     }
 }

@@ -22,7 +22,7 @@
 //! of R⁶, its right-hand side and error weights), `dense.rs` (the dense output of order 7),
 //! `invariants.rs` (`conserve=True`: ½|v|² and J₃ imposed after the step, T-8.5).
 
-use super::dop853_control::StepControl;
+use super::dop853_control::{off_sphere, StepControl};
 use super::dop853_tableau::{A, B, C, E3, E5, STAGES, STAGES_DENSE};
 use super::Stats;
 use crate::error::{Error, Result};
@@ -282,7 +282,9 @@ impl Dop853 {
         let mut rejected_last = false;
         self.k[0] = self.f_current;
         loop {
-            let (h_trial, last) = control.trial(h, t0, t_stop)?;
+            let (h_trial, last) = control
+                .trial(h, t0, t_stop)
+                .map_err(|e| off_sphere(e, self.project, (y0.x, y0.v), self.length))?;
             h = h_trial;
             let (y1, err) = self.attempt(model, t0, y0, h);
             stats.rhs_evals += (STAGES - 1) as u64;
