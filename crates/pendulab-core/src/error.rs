@@ -93,8 +93,7 @@ pub enum Error {
         rtol: f64,
         /// Absolute tolerance in force.
         atol: f64,
-        /// `dop853` with `project = false` only: (|x| − l)/l and x·v/(l·|v|) of the state at t when it
-        /// had left TS² by more than 100·rtol (the likely cause, T-2.4); else None.
+        /// Unprojected `dop853`: (|x| − l)/l, x·v/(l·|v|) at t when above 100·rtol (T-2.4); else None.
         off_sphere: Option<(f64, f64)>,
     },
     /// The state the integrator computed (not one the user gave) became NaN or infinite, or left the
