@@ -3,7 +3,7 @@
 //! and bad input. SI units; ideal pendulum.
 
 use pendulab_core::ensemble::{
-    check, run, run_checked, tile_lanes, EnsembleSave, RattleSettings, LANES, TILE,
+    check, per_lane_tile_lanes, run, run_checked, tile_lanes, EnsembleSave, RattleSettings, LANES, TILE,
 };
 use pendulab_core::integrate::rattle_kernel::{Arithmetic, PositionQuadratic, Unfused};
 use pendulab_core::isa::Level;
@@ -89,8 +89,9 @@ fn lanes_beyond_the_series_range_take_the_closed_form_and_still_match_bit_for_bi
     // and some tile of lanes stepped together in registers too, at every level's tile size
     // (ensemble/block.rs; this run's is tile_lanes(isa::current(), Unfused))
     let levels = [Level::Baseline, Level::V3, Level::V4];
-    let tiles =
-        levels.iter().flat_map(|&l| [Arithmetic::Unfused, Arithmetic::Fused].map(|a| tile_lanes(l, a)));
+    let tiles = levels.iter().flat_map(|&l| {
+        [tile_lanes(l, Arithmetic::Unfused), tile_lanes(l, Arithmetic::Fused), per_lane_tile_lanes(l)]
+    });
     for tile in tiles {
         assert!(LANES.is_multiple_of(tile) && tile <= TILE);
         let mixed = s.chunks(tile).any(|t| t.iter().any(in_series) && !t.iter().all(in_series));

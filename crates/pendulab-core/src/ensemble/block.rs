@@ -17,13 +17,20 @@
 //! | level (registers) | unfused: tile 4 / 8 / 16 | fused: tile 4 / 8 / 16 | tile chosen |
 //! |---|---|---|---|
 //! | x86-64-v4 (32 zmm, 8 lanes) | – / – / **2.8–3.4** | – / – / **1.9** | 16 (fused: 24) |
-//! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / **3.6** / 2.7 or 4.1 | 8 |
+//! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / 3.6 / **2.7 or 4.1** | 8 (fused: 16) |
 //! | baseline SSE2 (16 xmm, 2 lanes) | **7.5** / 13.3 / 13.5 | 80 / 81 / 81 (software fma) | 4 |
 //!
-//! At x86-64-v3 the fused 16-lane tile ran at 2.7 ns in some processes and 4.1 in others (the same
-//! binary; not the stack's address: also with address randomisation off), the 8-lane one at 3.6 in
-//! all: 8 is taken. Before the frames were aligned the unfused 8-lane tile measured 6.6–6.8 there
-//! (its spills straddling cache lines), and 4 lanes were taken.
+//! The table's v3 row was measured on an AMD Zen 4 restricted to AVX2 (`isa::set_max_level`): there
+//! the fused 16-lane tile ran at 2.7 ns in some processes and 4.1 in others (the same binary; not the
+//! stack's address: also with address randomisation off), the 8-lane one at 3.6 in all, and 8 was
+//! taken. On a CPU that has AVX2 and no AVX-512, an AMD Zen 3 (EPYC, family 25 model 1; 2026-11-28,
+//! CPU time, fused, one thread, `examples/ensemble_forms.rs`, 4 processes each, interleaved, the
+//! machine loaded by builds), 16 lanes are faster in every form but one, in every process: one
+//! pendulum 4.0–4.1 → 3.3–3.5 ns, lengths per trajectory 3.9–4.2 → 3.35–3.5 (one process 5.3), one
+//! damping rate 4.5–4.6 → 3.8–3.9, damping per trajectory 4.6–4.7 → 3.9–4.1; every parameter a row
+//! 4.7–4.9 → 7.4–7.5 (its rows spill), so that form keeps 8 (`per_lane_tile_lanes`). Unfused, 8
+//! stays (4.6–5.3 at 8 lanes, 4.7–5.6 at 16). Before the frames were aligned the unfused 8-lane
+//! tile measured 6.6–6.8 there (its spills straddling cache lines), and 4 lanes were taken.
 //!
 //! 16 lanes are two AVX-512 registers per quantity: two independent dependency chains, so that the
 //! step's latency (the division 1/b and the multiply-add chains) overlaps the other chain's work;
@@ -61,15 +68,27 @@ enum Sharing {
 }
 
 /// Lanes stepped together in registers at instruction-set level `level` with `arithmetic` (module
-/// doc: 24 fused and 16 unfused at x86-64-v4, 8 at x86-64-v3, 4 at the baseline), each a divisor of
-/// [`LANES`]. Every parameter per lane takes 16 where this says 24 (`Block::steps`). Only the
-/// speed depends on it, never a bit of the results.
+/// doc: 24 fused and 16 unfused at x86-64-v4, 16 fused and 8 unfused at x86-64-v3, 4 at the
+/// baseline), each a divisor of [`LANES`]. A block whose every parameter is a row takes
+/// [`per_lane_tile_lanes`] instead. Only the speed depends on it, never a bit of the results.
 pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
     match (level, arithmetic) {
         (Level::V4, Arithmetic::Fused) => 24,
-        (Level::V4, Arithmetic::Unfused) => 16,
-        (Level::V3, _) => 8,
+        (Level::V4, Arithmetic::Unfused) | (Level::V3, Arithmetic::Fused) => 16,
+        (Level::V3, Arithmetic::Unfused) => 8,
         (Level::Baseline, _) => 4,
+    }
+}
+
+/// [`tile_lanes`] for a block whose lanes share neither their lengths nor their g or damping (every
+/// parameter a row, `PerLane`): its rows take registers the state needs, so 16 lanes at x86-64-v4
+/// (24 spill), 8 at x86-64-v3 (16 spill: 7.4 ns per trajectory-step against 4.7 on an AMD Zen 3,
+/// module doc) and 4 at the baseline.
+pub fn per_lane_tile_lanes(level: Level) -> usize {
+    match level {
+        Level::V4 => 16,
+        Level::V3 => 8,
+        Level::Baseline => 4,
     }
 }
 
@@ -102,7 +121,14 @@ impl Block {
         track: Track,
     ) {
         let arithmetic = if A::FUSED { Arithmetic::Fused } else { Arithmetic::Unfused };
-        match (tile_lanes(isa::current(), arithmetic), self.sharing()) {
+        let level = isa::current();
+        match (tile_lanes(level, arithmetic), self.sharing()) {
+            // every parameter a row: its own width (`per_lane_tile_lanes`)
+            (_, Sharing::Some) => match per_lane_tile_lanes(level) {
+                16 => self.steps_at::<A, 16, PerLane<16>, COMPOSED>(chunk, stages, first, track),
+                8 => self.steps_at::<A, 8, PerLane<8>, COMPOSED>(chunk, stages, first, track),
+                _ => self.steps_at::<A, 4, PerLane<4>, COMPOSED>(chunk, stages, first, track),
+            },
             (24, Sharing::All) => self.steps_at::<A, 24, Shared<24>, COMPOSED>(chunk, stages, first, track),
             (24, Sharing::AllButLengths) => {
                 self.steps_at::<A, 24, Lengths<24>, COMPOSED>(chunk, stages, first, track)
@@ -110,8 +136,6 @@ impl Block {
             (24, Sharing::AllButDamping) => {
                 self.steps_at::<A, 24, Damping<24>, COMPOSED>(chunk, stages, first, track)
             }
-            // every parameter a row: its 16 rows of state and parameters spill at 24 lanes (module doc)
-            (24, _) => self.steps_at::<A, 16, PerLane<16>, COMPOSED>(chunk, stages, first, track),
             (16, Sharing::All) => self.steps_at::<A, 16, Shared<16>, COMPOSED>(chunk, stages, first, track),
             (16, Sharing::AllButLengths) => {
                 self.steps_at::<A, 16, Lengths<16>, COMPOSED>(chunk, stages, first, track)
@@ -119,12 +143,13 @@ impl Block {
             (16, Sharing::AllButDamping) => {
                 self.steps_at::<A, 16, Damping<16>, COMPOSED>(chunk, stages, first, track)
             }
-            (16, _) => self.steps_at::<A, 16, PerLane<16>, COMPOSED>(chunk, stages, first, track),
             (8, Sharing::All) => self.steps_at::<A, 8, Shared<8>, COMPOSED>(chunk, stages, first, track),
             (8, Sharing::AllButLengths) => {
                 self.steps_at::<A, 8, Lengths<8>, COMPOSED>(chunk, stages, first, track)
             }
-            (8, _) => self.steps_at::<A, 8, PerLane<8>, COMPOSED>(chunk, stages, first, track),
+            (8, Sharing::AllButDamping) => {
+                self.steps_at::<A, 8, PerLane<8>, COMPOSED>(chunk, stages, first, track)
+            }
             (_, Sharing::All) => self.steps_at::<A, 4, Shared<4>, COMPOSED>(chunk, stages, first, track),
             (_, _) => self.steps_at::<A, 4, PerLane<4>, COMPOSED>(chunk, stages, first, track),
         }

@@ -52,7 +52,7 @@ mod plan;
 mod stages;
 mod tile;
 mod tile_params;
-pub use block::{tile_lanes, TILE};
+pub use block::{per_lane_tile_lanes, tile_lanes, TILE};
 use block_state::Block;
 use output::{sample_count, sample_times, settle_times, summaries};
 use plan::{BlockRun, Plan};
