@@ -28,6 +28,8 @@ class ChunkedRun(Protocol):
     def progress(self) -> float: ...
     @property
     def t(self) -> float: ...
+    @property
+    def t_end(self) -> float: ...
 
 
 def run_in_chunks(
@@ -35,21 +37,20 @@ def run_in_chunks(
     show: bool,
     desc: str,
     take_rest: Callable[[], Any] | None = None,
-    *,
-    span: tuple[float, float],
 ) -> tuple[list[Any], bool]:
     """Advances ``solver`` to its end in chunks of about 0.1 s of work (the GIL released inside each),
     updating a tqdm bar (``show``) between chunks. Ctrl-C stops after the current chunk: returns the
     parts taken so far and True, with a RuntimeWarning at the user's line (:func:`~._warn.warn_user`).
     ``take_rest`` takes the last part after an interruption (default ``solver.take_samples``). The bar
-    counts seconds of simulated time over ``span`` = (t_start, t_end) [s] (``solver.progress`` is the
-    fraction of it done)."""
+    counts seconds of simulated time from the solver's start ``solver.t`` (it has not advanced yet) to
+    its ``solver.t_end`` [s] (``solver.progress`` is the fraction of it done)."""
     parts: list[Any] = []
     interrupted = False
     budget = 10_000
     # no bar object at all when it is not shown: a disabled tqdm still costs ~10 µs per call
-    seconds = span[1] - span[0]
-    bar = seconds_bar(seconds, f"{desc}, simulated s from t={span[0]:g}") if show else None
+    t_start = solver.t
+    seconds = solver.t_end - t_start
+    bar = seconds_bar(seconds, f"{desc}, simulated s from t={t_start:g}") if show else None
     with bar if bar is not None else contextlib.nullcontext():
         try:
             done = False

@@ -97,7 +97,7 @@ def _run_in_core(pendulum: Pendulum, state: State, run: RunSettings, halved: boo
         solver = Solver(pendulum.spec, state.pair, options)
     expected_steps = (t_end - t0) / dt if dt > 0 and not info["adaptive"] else 0.0
     show = run.progress if run.progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
-    parts, interrupted = run_in_chunks(solver, show, method, span=(float(t0), float(t_end)))
+    parts, interrupted = run_in_chunks(solver, show, method)
     t = np.concatenate([p[0] for p in parts])
     x = np.concatenate([p[1] for p in parts])
     v = np.concatenate([p[2] for p in parts])

@@ -9,6 +9,7 @@
 //! | `x`, `v` | current position [m], velocity [m/s]: numpy (3,) from a `DVec3` |
 //! | `stats` | work counters so far: dict steps, rejected, rhs_evals, from `Stats` |
 //! | `progress` | fraction of [t0, t_end] done, in [0, 1] (float) |
+//! | `t_end` | the end of the run [s] (float) |
 //! | `done` | True once t_end is reached (bool) |
 //!
 //! ```ignore
@@ -75,6 +76,15 @@ macro_rules! pymethods_with_getters {
             /// Fraction of the run done, in [0, 1].
             #[getter]
             fn progress(&$this) -> f64 {
+                $e
+            }
+        ], $($rest)*);
+    };
+    (@munch $class:ident, $this:ident, [$($acc:tt)*], t_end = $e:expr; $($rest:tt)*) => {
+        pymethods_with_getters!(@munch $class, $this, [$($acc)*
+            /// The end of the run, t_end [s].
+            #[getter]
+            fn t_end(&$this) -> f64 {
                 $e
             }
         ], $($rest)*);

@@ -48,6 +48,7 @@ pymethods_with_getters! {
     getters(&self) {
         progress = self.inner.progress();
         t = self.inner.stepper().t();
+        t_end = self.inner.t_end();
         done = self.inner.is_done();
         stats = self.inner.stats();
     }

@@ -117,6 +117,7 @@ pymethods_with_getters! {
     getters(&self) {
         progress = self.inner.progress();
         t = self.inner.stepper().t();
+        t_end = self.inner.t_end();
         stats = self.inner.stepper().stats();
     }
 }

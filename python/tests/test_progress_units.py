@@ -51,6 +51,18 @@ def test_a_chunked_simulate_bar_counts_simulated_seconds(bars: list[text_bar[Any
     assert "2.00/2.00" in str(bar)  # 2 s of 2 s, not "1000/1000"
 
 
+def test_a_string_pendulum_bar_counts_simulated_seconds(bars: list[text_bar[Any]]) -> None:
+    # the span comes from the core's runner: its start t0 and its t_end
+    p = pl.Pendulum(model="string", restitution=0.5)
+    pl.simulate(
+        p, p.state_from_angles(2.0, phi_dot=1.0), 2.5, t0=-0.5, method="rattle", dt=1e-3, progress=True
+    )
+    (bar,) = bars
+    assert (bar.unit, bar.desc) == ("s", "rattle, simulated s from t=-0.5")
+    assert bar.total == pytest.approx(3.0, abs=1e-12)
+    assert bar.n == pytest.approx(3.0, abs=1e-12)
+
+
 def test_the_lqr_loop_bar_counts_simulated_seconds(bars: list[text_bar[Any]]) -> None:
     control = crane.lqr(0.5, q=(1.0, 1.0, 50.0, 1.0), a_max=0.6)
     control.simulate(3.0, t_end=300.0, t_start=100.0, sway=0.1, progress=True)

@@ -151,6 +151,10 @@ impl<M: Model> Solver<M> {
     pub fn is_done(&self) -> bool {
         self.done
     }
+    /// The end of the run, t_end \[s\].
+    pub fn t_end(&self) -> f64 {
+        self.t_end
+    }
     /// Fraction of [t₀, t_end] covered so far, in [0, 1].
     pub fn progress(&self) -> f64 {
         ((self.stepper.t() - self.t0) / (self.t_end - self.t0)).clamp(0.0, 1.0)

@@ -96,13 +96,7 @@ def simulate_string(
     runner = StringRunner(pendulum.spec, state.pair, run)
     expected_steps = (t_end - t0) / dt
     show = progress if progress is not None else expected_steps > _PROGRESS_AFTER_STEPS
-    parts, interrupted = run_in_chunks(
-        runner,
-        show,
-        method,
-        take_rest=lambda: runner.take_samples(all=True),
-        span=(float(t0), float(t_end)),
-    )
+    parts, interrupted = run_in_chunks(runner, show, method, take_rest=lambda: runner.take_samples(all=True))
     options: dict[str, Any] = {"dt": dt, "t0": t0, "t_end": t_end}
     if save_every is not None:
         options["save_every"] = int(save_every)

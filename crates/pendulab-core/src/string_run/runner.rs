@@ -174,6 +174,11 @@ impl StringRunner {
         StringRun { t, states, taut, events: self.stepper.take_events(), stats: self.stepper.stats() }
     }
 
+    /// The end of the run, t_end \[s\].
+    pub fn t_end(&self) -> f64 {
+        self.t_end
+    }
+
     /// The fraction of [t₀, t_end] done, in [0, 1].
     pub fn progress(&self) -> f64 {
         ((self.stepper.t() - self.t_start) / (self.t_end - self.t_start)).clamp(0.0, 1.0)
