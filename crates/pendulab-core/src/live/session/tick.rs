@@ -283,7 +283,7 @@ mod tests {
         let Out::Keyed(message, _, "unknown_model", values) = s.error_out(e, Some("set_model")) else {
             panic!("not keyed")
         };
-        assert!(message.starts_with("unknown model \"sprung\""), "{message}");
+        assert!(message.starts_with("unknown model 'sprung'"), "{message}");
         assert_eq!(values["model"], json!("sprung"));
     }
 }
