@@ -27,7 +27,8 @@
 //! and every parameter a row the two halves' temporaries and the rows do not fit in the registers,
 //! and that form takes the step in one pass instead, its result kept aside and committed when every
 //! lane was in range (`Tile::rattle_vertical_one_pass`; 2.3–2.5 ns per trajectory-step against
-//! 2.1–2.8 in two halves, depending on the process). Measured with aligned frames (`isa::align_frame`),
+//! 2.1–2.8 in two halves, depending on the process; in the 8-lane tiles of x86-64-v3 two halves are
+//! faster, `TileParams::TWO_HALVES`). Measured with aligned frames (`isa::align_frame`),
 //! fused, one thread, 4096 starts × 2000 steps: one pendulum 1.9 ns, lengths per trajectory 1.95,
 //! damping per trajectory 2.05, one damping rate 2.07.
 //! SI units: \[m\], [m/s], [1/s], [m/s²].

@@ -65,6 +65,7 @@ pub(super) trait TileParams: Copy {
     /// parameter a row, `block::per_lane_tile_lanes`), where four rows fit too: on an AMD Zen 3, one
     /// thread, CPU time, 3 interleaved process runs, 5.24–5.32 ns per trajectory-step in one pass
     /// against 4.92–4.95 in two halves (2026-11-28). Only the speed depends on it, never a bit.
+    const TWO_HALVES: bool;
     /// Lanes o…o + T of the block's parameters (the damping factors of the first sub-step size).
     fn load(b: &Block, o: usize) -> Self;
     /// Takes the damping factors of the block's row `d` (sub-step sizes: `stages.rs`).
