@@ -17,19 +17,21 @@
 //! | level (registers) | unfused: tile 4 / 8 / 16 | fused: tile 4 / 8 / 16 | tile chosen |
 //! |---|---|---|---|
 //! | x86-64-v4 (32 zmm, 8 lanes) | – / – / **2.8–3.4** | – / – / **1.9** | 16 (fused: 24) |
-//! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / 3.6 / **2.7 or 4.1** | 8 (fused: 16) |
+//! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / **3.6** / 2.7 or 4.1 | 8 |
 //! | baseline SSE2 (16 xmm, 2 lanes) | **7.5** / 13.3 / 13.5 | 80 / 81 / 81 (software fma) | 4 |
 //!
 //! The table's v3 row was measured on an AMD Zen 4 restricted to AVX2 (`isa::set_max_level`): there
 //! the fused 16-lane tile ran at 2.7 ns in some processes and 4.1 in others (the same binary; not the
 //! stack's address: also with address randomisation off), the 8-lane one at 3.6 in all, and 8 was
 //! taken. On a CPU that has AVX2 and no AVX-512, an AMD Zen 3 (EPYC, family 25 model 1; 2026-11-28,
-//! CPU time, fused, one thread, `examples/ensemble_forms.rs`, 4 processes each, interleaved, the
-//! machine loaded by builds), 16 lanes are faster in every form but one, in every process: one
-//! pendulum 4.0–4.1 → 3.3–3.5 ns, lengths per trajectory 3.9–4.2 → 3.35–3.5 (one process 5.3), one
-//! damping rate 4.5–4.6 → 3.8–3.9, damping per trajectory 4.6–4.7 → 3.9–4.1; every parameter a row
-//! 4.7–4.9 → 7.4–7.5 (its rows spill), so that form keeps 8 (`per_lane_tile_lanes`). Unfused, 8
-//! stays (4.6–5.3 at 8 lanes, 4.7–5.6 at 16). Before the frames were aligned the unfused 8-lane
+//! CPU time, fused, one thread), the example `examples/ensemble_forms.rs` ran 16 lanes faster in every
+//! form but one, in 4 of 4 processes (one pendulum 4.0–4.1 → 3.3–3.5 ns, lengths per trajectory
+//! 3.9–4.2 → 3.35–3.5, damping per trajectory 4.6–4.7 → 3.9–4.1; every parameter a row 4.7–4.9 →
+//! 7.4–7.5, its rows spill, `per_lane_tile_lanes`). But through `pl.simulate_ensemble` (one thread,
+//! 4096 × 10³ steps, best of 9 per process, 9 processes per build alternating) the 16-lane build ran
+//! at 3.4 ns in 2 processes and at 4.8–5.6 in the other 7, where the 8-lane one ran at 4.1–5.1: the
+//! same two speeds by process as on the Zen 4, so 8 stays. Unfused, 8 is the faster in the example
+//! too (4.6–5.3 ns at 8 lanes, 4.7–5.6 at 16). Before the frames were aligned the unfused 8-lane
 //! tile measured 6.6–6.8 there (its spills straddling cache lines), and 4 lanes were taken.
 //!
 //! 16 lanes are two AVX-512 registers per quantity: two independent dependency chains, so that the
@@ -68,14 +70,14 @@ enum Sharing {
 }
 
 /// Lanes stepped together in registers at instruction-set level `level` with `arithmetic` (module
-/// doc: 24 fused and 16 unfused at x86-64-v4, 16 fused and 8 unfused at x86-64-v3, 4 at the
-/// baseline), each a divisor of [`LANES`]. A block whose every parameter is a row takes
+/// doc: 24 fused and 16 unfused at x86-64-v4, 8 at x86-64-v3, 4 at the baseline), each a divisor
+/// of [`LANES`]. A block whose every parameter is a row takes
 /// [`per_lane_tile_lanes`] instead. Only the speed depends on it, never a bit of the results.
 pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
     match (level, arithmetic) {
         (Level::V4, Arithmetic::Fused) => 24,
-        (Level::V4, Arithmetic::Unfused) | (Level::V3, Arithmetic::Fused) => 16,
-        (Level::V3, Arithmetic::Unfused) => 8,
+        (Level::V4, Arithmetic::Unfused) => 16,
+        (Level::V3, _) => 8,
         (Level::Baseline, _) => 4,
     }
 }
