@@ -82,7 +82,7 @@ pub enum Error {
         Shown(*h),
         Shown(*rtol),
         Shown(*atol),
-        crate::integrate::dop853_control::drift_advice(*off_sphere)
+        hint::drift_advice(*off_sphere)
     )]
     StepSizeUnderflow {
         /// Time at which it happened \[s\].

@@ -1,6 +1,8 @@
 //! The hint of an unknown name: the nearest of the names allowed ([`did_you_mean`]), by edit distance
-//! (the `strsim` crate); and [`Quoted`], a name in a message quoted as the Python layer quotes it.
+//! (the `strsim` crate); [`Quoted`], a name in a message quoted as the Python layer quotes it; and
+//! [`drift_advice`], what a step size underflow of an unprojected run says to do (T-2.4).
 
+use super::Shown;
 use std::fmt;
 
 /// A name in a message, quoted as Python's `repr` quotes a string — `'x'`, or `"it's"` for a name
@@ -53,4 +55,18 @@ pub fn did_you_mean<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) 
     };
     let same_but_case = options.iter().find(|o| o.to_lowercase() == lower);
     same_but_case.or_else(closest).map_or_else(String::new, |o| format!(" (did you mean {}?)", Quoted(o)))
+}
+
+/// The end of a step size underflow's message: nothing, or for an unprojected run that had left TS²
+/// (`integrate::dop853_control::off_sphere`) its residuals, why, and what to do.
+pub(crate) fn drift_advice(off_sphere: Option<(f64, f64)>) -> String {
+    let Some((radial, tangential)) = off_sphere else { return String::new() };
+    format!(
+        "; the run is not projected (project=False) and had left TS² there, (|x| - l)/l = {} and \
+         x·v/(l·|v|) = {}: off TS² the equations T-2.4 are unstable wherever the rod pushes (the bob \
+         high and slow, near the top), so the drift grows until no step meets the tolerance; use \
+         project=True (the default) or a method that keeps TS² such as 'rattle'",
+        Shown(radial),
+        Shown(tangential)
+    )
 }

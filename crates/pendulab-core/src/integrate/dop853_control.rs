@@ -11,9 +11,9 @@
 //! Without projection the state drifts off TS², and T-2.4 is unstable there wherever the rod pushes
 //! (the bob high and slow, g z > |v|², docs/theory.md T-2.4: the error δ = |x|²/l² − 1 obeys
 //! l² δ̈ = 2 (g z − |v|²) δ), so near the top the drift grows until no step meets the tolerance. An
-//! underflow then names the drift ([`off_sphere`]) and says to project ([`drift_advice`]).
+//! underflow then names the drift ([`off_sphere`]) and says to project (`error::hint::drift_advice`).
 
-use crate::error::{Error, Result, Shown};
+use crate::error::{Error, Result};
 use glam::DVec3;
 
 const SAFETY: f64 = 0.9;
@@ -104,20 +104,6 @@ pub(crate) fn off_sphere(e: Error, project: bool, (x, v): (DVec3, DVec3), length
         }
         other => other,
     }
-}
-
-/// The end of a step size underflow's message: nothing, or for an unprojected run that had left TS²
-/// ([`off_sphere`]) its residuals, why, and what to do.
-pub(crate) fn drift_advice(off_sphere: Option<(f64, f64)>) -> String {
-    let Some((radial, tangential)) = off_sphere else { return String::new() };
-    format!(
-        "; the run is not projected (project=False) and had left TS² there, (|x| - l)/l = {} and \
-         x·v/(l·|v|) = {}: off TS² the equations T-2.4 are unstable wherever the rod pushes (the bob \
-         high and slow, near the top), so the drift grows until no step meets the tolerance; use \
-         project=True (the default) or a method that keeps TS² such as 'rattle'",
-        Shown(radial),
-        Shown(tangential)
-    )
 }
 
 #[cfg(test)]
