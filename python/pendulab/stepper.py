@@ -43,7 +43,7 @@ class Stepper:
     arithmetic : the RATTLE family's multiply-adds, ``"auto"``, ``"fused"`` or ``"unfused"`` (as in
         :func:`simulate`).
     steps_on_samples : a sampled pivot's fixed steps: ``dt`` [s] is the longest step and the steps land
-        on every sample, each interval between samples in ⌈span/dt⌉ equal steps (default False: steps
+        on every sample, each interval between samples in ⌈span/dt⌉ equal steps (default False; steps
         of dt, one that holds a sample split there). As in :func:`simulate`, whose run it reproduces
         bit for bit (``step_to`` each save time, or ``step(n)`` for ``save_every=n``); after
         ``set_state`` the steps go on landing on the samples. No effect on ``dop853``; True without
