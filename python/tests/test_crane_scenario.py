@@ -64,7 +64,7 @@ def test_bad_files(patch: dict, needle: str) -> None:
         parse({**BASE, **patch})
 
 
-ROPE = r"allowed: rope length at t = 0 in m, > 0 and <= 1e\+06"
+ROPE = r"allowed: rope length at t = 0 in m, > 0 and <= 10000"
 
 
 @pytest.mark.parametrize(

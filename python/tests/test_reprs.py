@@ -72,6 +72,7 @@ def _crane_inputs() -> dict[str, object]:
         "crane.LQR": ctrl,
         "crane.LQRRun": ctrl.simulate(3.0, t_end=8.0, progress=False),
         "crane.Gantry": gantry,
+        "crane.Tower": crane.Tower(slew=crane.profile(1.5, 0.2, 0.1), height=30.0),
         "crane.Crane": crane.Crane(rope=8.0, pivot=gantry, payload_mass=500.0, hook_mass=50.0, rigging=1.5),
         "crane.Hoist": crane.Hoist([2.0, 12.0], [10.0, 8.0]),
         "crane.Wind": crane.Wind(
@@ -100,7 +101,8 @@ NAMES = [
     "Scenario", "Stepper", "Pendulum", "State", "Trajectory", "ErrorEstimate", "ExactSolution", "Phases",
     "Reduced", "EMMap", "MeasuredAdvance", "EnsembleResult", "SweepResult", "SpringTrajectory", "SlewingSway",
     "Movie", "Comparison", "crane.Shaper", "crane.Profile", "crane.CraneRun", "crane.GridResult",
-    "crane.LQR", "crane.LQRRun", "crane.Gantry", "crane.Crane", "crane.Hoist", "crane.Wind",
+    "crane.LQR", "crane.LQRRun", "crane.Gantry", "crane.Tower", "crane.Crane", "crane.Hoist",
+    "crane.Wind",
 ]  # fmt: skip
 
 
@@ -212,6 +214,18 @@ def test_a_gantry_names_its_travel_and_end(objects) -> None:
     assert "np.float64" not in text
     tilted = repr(crane.Gantry(bridge=crane.profile(2.0, 0.5, 0.5), bridge_axis=(0.0, 0.6, 0.8)))
     assert "bridge=2 m, bridge_axis=[0, 0.6, 0.8]" in tilted, tilted
+
+
+def test_a_tower_names_its_slew_radius_height_and_end(objects) -> None:
+    """Tower had the dataclass repr: its profiles' knots and coefficients as arrays."""
+    tower = objects["crane.Tower"]
+    assert repr(tower) == f"Tower(slew=0 … 1.5 rad, radius=10 m, height=30 m, t_end={tower.t_end:.4g} s)"
+    luffing = crane.Tower(luff=crane.profile(0.25, 0.1, 0.1, start=0.5), boom=40.0, height=25.0)
+    end = f"{luffing.t_end:.4g}"
+    assert repr(luffing) == f"Tower(slew=0 rad, luff=0.5 … 0.75 rad, boom=40 m, height=25 m, t_end={end} s)"
+    trolley = crane.Tower(radius=crane.profile(5.0, 0.5, 0.5, start=10.0))
+    assert "radius=10 … 15 m" in repr(trolley) and "array" not in repr(trolley), repr(trolley)
+    assert ">rad</td>" in tower._repr_html_()
 
 
 def test_a_crane_names_its_rope_masses_and_pivot(objects) -> None:

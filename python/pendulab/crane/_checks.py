@@ -13,8 +13,16 @@ from typing import Any
 import numpy as np
 
 from .. import memory
-from ..validate import MAX_SAMPLES, FloatArray, array, finite, invalid, spec
+from ..validate import COMMON, MAX_SAMPLES, FloatArray, array, finite, invalid, spec
 from ..validate import number as number_within
+
+LONGEST = float(COMMON["length"]["max"])
+"""The longest rope [m] (a crane's ``rope`` and ``rigging``, a hoist's lengths and its spline between
+them): a pendulum's length limit, ``pl.limits()`` ``length`` (1e4 m; docs/limits.md)."""
+LONGEST_TEXT = f"{LONGEST:.0e}".replace("e+0", "e")
+""":data:`LONGEST` as the messages write it (``1e4``)."""
+ROPE_ALLOWED = f"> 0 and <= {LONGEST_TEXT} m (the longest pendulum, pl.limits() length)"
+"""What a rope length [m] may be, in the messages (after "a finite number" or "finite numbers")."""
 
 
 def real(name: str, value: Any, allowed: str, ok: Callable[[float], bool] = lambda _x: True) -> float:
@@ -29,6 +37,23 @@ def real(name: str, value: Any, allowed: str, ok: Callable[[float], bool] = lamb
 def positive(name: str, value: Any, unit: str) -> float:
     """A finite number > 0 [``unit``]."""
     return real(name, value, f"a finite number > 0 {unit}".rstrip(), lambda x: x > 0)
+
+
+def rope(name: str, value: Any) -> float:
+    """A rope length: a finite number > 0 and ≤ :data:`LONGEST` [m]."""
+    return real(name, value, f"a finite number {ROPE_ALLOWED}", lambda x: 0 < x <= LONGEST)
+
+
+def ropes(name: str, value: Any) -> FloatArray:
+    """Rope lengths (a hoist's samples): finite numbers > 0 and ≤ :data:`LONGEST` [m]; the first bad
+    entry is named."""
+    allowed = f"finite numbers {ROPE_ALLOWED}"
+    a = positives(name, value, "m", allowed)
+    too_long = a > LONGEST
+    if np.any(too_long):
+        i = np.unravel_index(int(np.argmax(too_long)), a.shape) if a.ndim else ()
+        raise invalid(name + "".join(f"[{k}]" for k in i), a[i] if a.ndim else a.item(), allowed)
+    return a
 
 
 def nonnegative(name: str, value: Any, unit: str) -> float:
@@ -47,9 +72,10 @@ def numbers(name: str, value: Any, unit: str, shape: tuple[int, ...] | None = No
     return array(name, value, spec(name, unit, -np.inf, np.inf, allowed), shape=shape)
 
 
-def positives(name: str, value: Any, unit: str) -> FloatArray:
-    """A non-empty float64 array of finite numbers > 0 [``unit``]; the first bad entry is named."""
-    allowed = f"finite numbers > 0 {unit}".rstrip()
+def positives(name: str, value: Any, unit: str, allowed: str | None = None) -> FloatArray:
+    """A non-empty float64 array of finite numbers > 0 [``unit``]; the first bad entry is named with
+    ``allowed`` (default "finite numbers > 0 ``unit``")."""
+    allowed = allowed or f"finite numbers > 0 {unit}".rstrip()
     a = array(name, value, spec(name, unit, 0.0, np.inf, allowed))
     if a.size == 0:
         raise invalid(name, value, f"at least one of {allowed}")

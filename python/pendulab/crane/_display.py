@@ -1,5 +1,5 @@
 """How the crane's objects show themselves (``Shaper``, ``Profile``, ``CraneRun``, ``GridResult``, ``LQR``,
-``LQRRun``, ``Gantry``, ``Crane``, ``Hoist``, ``Wind``): a
+``LQRRun``, ``Gantry``, ``Tower``, ``Crane``, ``Hoist``, ``Wind``): a
 one-line ``repr`` of the key numbers and, in notebooks, a small HTML table of them with their SI units
 (:func:`pendulab.display.html_table`), like the package's other results; never the arrays."""
 
@@ -144,6 +144,24 @@ def gantry_rows(g: Any) -> list[Row]:
         rows.append(("origin", vector(g.origin, 4), "m"))
     rows.append(("t_end", g.t_end, "s"))
     return rows
+
+
+def _axis(value: Any) -> str:
+    """A tower's axis: a constant, or a profile's start … end (its start plus its distance)."""
+    if not hasattr(value, "distance"):
+        return number(float(value), 4)
+    return _range(value.start, value.start + value.distance)
+
+
+def tower_rows(w: Any) -> list[Row]:
+    """slew [rad]; the radius [m], or on a luffing tower the luff [rad] and the boom [m]; height [m];
+    t_end [s]: a profile as its start … end value, a constant as itself."""
+    rows: list[Row] = [("slew", _axis(w.slew), "rad")]
+    if w.luff is not None:
+        rows += [("luff", _axis(w.luff), "rad"), ("boom", w.boom, "m")]
+    else:
+        rows.append(("radius", _axis(w.radius), "m"))
+    return [*rows, ("height", w.height, "m"), ("t_end", w.t_end, "s")]
 
 
 def crane_rows(c: Any, default_wind: Any) -> list[Row]:

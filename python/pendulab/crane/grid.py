@@ -25,6 +25,7 @@ from ..sweeps.backends import Threads, drive
 from ..validate import flag, integer, invalid
 from . import _spacing
 from ._checks import number, positive, positives, real, tolerances
+from ._checks import ropes as rope_lengths
 from ._display import Row, Shown, grid_rows
 from .paths import move
 from .shaper import FloatArray, Shaper, check_shaper
@@ -123,7 +124,7 @@ def residual_grid(
     ``workers`` chunks run at once (each already parallel in the core). Ctrl-C returns what is done
     (NaN elsewhere, ``interrupted`` True) with a RuntimeWarning."""
     name, given = _spacing.spacing("residual_grid", output_spacing, dt, DEFAULT_SPACING)
-    lr = positives("ropes", ropes, "m").ravel()
+    lr = rope_lengths("ropes", ropes).ravel()
     rr = positives("ratios", ratios, "(m₂/m₁)").ravel()
     if isinstance(shapers, str | bytes) or not isinstance(shapers, Sequence):
         raise invalid("shapers", shapers, "a list of crane.Shaper or None (unshaped)")

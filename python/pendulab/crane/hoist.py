@@ -7,7 +7,12 @@ l(t) = c₀ + c₁ s + c₂ s² + c₃ s³ (s = t − t_i), whose extremes on th
 roots of l̇ = c₁ + 2c₂ s + 3c₃ s² inside it. :meth:`Hoist.length_range` takes them from the spline's
 piecewise polynomials (SciPy's ``PPoly``): the true least and largest rope over a run, not the least
 and largest sample. A spline that dips to ≤ 0 m anywhere between its samples is refused, naming the
-time and the length there (the core would stop there: the rope length must stay > 0 m).
+time and the length there (the core would stop there: the rope length must stay > 0 m); so is one
+rising above the longest rope, 1e4 m (a pendulum's ``length`` limit, ``pl.limits()``; each sample too),
+and one overshooting the samples' range [l_min, l_max] by more than their spread l_max − l_min: a
+step between evenly spaced samples overshoots by 4/45 of it, by more than all of it only between
+samples about 7.4 times closer in time than their neighbours (docs/cranes.md). Refused, not clamped:
+a clamped length would no longer be the C² spline the core runs.
 """
 
 from __future__ import annotations
@@ -18,7 +23,7 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .._core import InvalidInputError
-from ._checks import positives, time, times
+from ._checks import LONGEST, LONGEST_TEXT, ropes, time, times
 from ._display import Row, Shown, hoist_rows
 from .paths import Path
 from .shaper import FloatArray
@@ -27,12 +32,13 @@ from .shaper import FloatArray
 class Hoist(Path, Shown):
     """The rope length l(t) [m] through samples (``t`` [s] increasing, ``length`` [m] > 0, n ≥ 2): the
     C² cubic spline with l̇ = 0 at both ends (clamped), held constant outside [t₀, t_n]; l̈ steps at
-    t₀ and t_n (breaks). Refused when the spline dips to ≤ 0 m between the samples (module doc).
+    t₀ and t_n (breaks); lengths ≤ 1e4 m. Refused when the spline dips to ≤ 0 m between the samples,
+    rises above 1e4 m or overshoots them by more than their spread (module doc).
     Stored in the first component of a 3-vector for the core."""
 
     def __init__(self, t: Any, length: Any) -> None:
         ts = times("t", t).ravel()
-        ls = positives("length", length, "m").ravel()
+        ls = ropes("length", length).ravel()
         if ts.size < 2 or ls.shape != ts.shape:
             raise InvalidInputError(
                 f"Hoist needs n >= 2 finite times t [s] and as many rope lengths [m], got {ts.size} times "
@@ -45,14 +51,40 @@ class Hoist(Path, Shown):
         self.breaks = np.array(self.span)
         self.nodes = ts
         self.t_end = self.span[1]
-        (t_low, low), _ = self.extremes()
+        self._check_range(ts, ls)
+
+    def _check_range(self, ts: FloatArray, ls: FloatArray) -> None:
+        """Refuses a spline whose true range (:meth:`extremes`) leaves what a rope may be: ≤ 0 m, above
+        the longest rope (:data:`~pendulab.crane._checks.LONGEST`), or beyond the samples' own range by
+        more than their spread (module doc), naming the time, the length and the samples around it."""
+        (t_low, low), (t_high, high) = self.extremes()
+        top, bottom = float(ls.max()), float(ls.min())
+        spread = top - bottom
         if not low > 0:
-            i = min(int(np.searchsorted(ts, t_low, side="right")), ts.size - 1)
-            raise InvalidInputError(
-                f"the Hoist spline through the lengths dips to {low:.6g} m at t = {t_low:.10g} s, between "
-                f"the samples ({ts[i - 1]:.10g} s, {ls[i - 1]:.6g} m) and ({ts[i]:.10g} s, {ls[i]:.6g} m): "
-                "the rope length must stay > 0 m; give more samples there or a gentler change"
+            where, problem = t_low, f"dips to {low:.6g} m"
+            why = "the rope length must stay > 0 m"
+        elif high > LONGEST:
+            where, problem = t_high, f"rises to {high:.6g} m"
+            why = f"the rope length must stay <= {LONGEST_TEXT} m (the longest pendulum, pl.limits() length)"
+        elif high - top > spread or bottom - low > spread:
+            up = high - top >= bottom - low
+            where, problem = (t_high, f"rises to {high:.6g} m") if up else (t_low, f"dips to {low:.6g} m")
+            beyond = (
+                f"{high - top:.6g} m above the largest" if up else f"{bottom - low:.6g} m below the least"
             )
+            why = (
+                f"{beyond} sample ({top if up else bottom:.6g} m), more than the samples' spread "
+                f"({spread:.6g} m): a spline overshoots so far between samples much closer in time than "
+                "their neighbours"
+            )
+        else:
+            return
+        i = min(max(int(np.searchsorted(ts, where, side="right")), 1), ts.size - 1)
+        raise InvalidInputError(
+            f"the Hoist spline through the lengths {problem} at t = {where:.10g} s, between the samples "
+            f"({ts[i - 1]:.10g} s, {ls[i - 1]:.6g} m) and ({ts[i]:.10g} s, {ls[i]:.6g} m): {why}; give "
+            "more samples there or a gentler change"
+        )
 
     def _rows(self) -> list[Row]:
         return hoist_rows(self)

@@ -39,6 +39,7 @@ from .._progress import seconds_bar
 from .._warn import warn_user
 from ..validate import flag, invalid
 from ._checks import later, number, numbers, positive, real, time, times
+from ._checks import rope as rope_length
 from ._display import Row, Shown, lqr_rows, lqr_run_rows
 from .paths import Path
 from .shaper import FloatArray
@@ -324,7 +325,7 @@ def lqr(
     """The LQR anti-sway controller for a trolley with a load on ``rope`` [m] (module doc): diagonal
     weights ``q`` on (x [m], ẋ [m/s], θ [rad], θ̇ [rad/s]) (≥ 0), ``r`` > 0 on u [m/s²], the
     acceleration limit ``a_max`` [m/s²] (> 0; inf: none)."""
-    big_l = positive("rope", rope, "m")
+    big_l = rope_length("rope", rope)
     gg = positive("g", g, "m/s²")
     qq = numbers("q", q, "", shape=(4,))
     if np.any(qq < 0) or qq[0] == 0:

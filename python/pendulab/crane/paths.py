@@ -31,7 +31,7 @@ from ..validate import integer, invalid, show
 from . import _spacing
 from ._checks import count, later, numbers, positive, time
 from ._checks import times as time_array
-from ._display import Row, Shown, gantry_rows
+from ._display import Row, Shown, gantry_rows, tower_rows
 from .move import Profile, profile
 from .shaper import FloatArray, Shaper
 
@@ -183,8 +183,8 @@ class Gantry(Path, Shown):
         return max([0.0] + [p.t_end for p, _ in self._axes()])
 
 
-@dataclass(frozen=True, eq=False)
-class Tower(Path):
+@dataclass(frozen=True, eq=False, repr=False)
+class Tower(Path, Shown):
     """Tower crane: ``slew`` θ(t) [rad] and trolley ``radius`` r(t) [m] profiles (a Profile, or a
     constant; default 10 m), jib ``height`` h [m]; boom luffing when ``boom`` L [m] and ``luff`` β(t)
     [rad] are given, which set the radius (L cos β: a ``radius`` given with them is refused, and the
@@ -222,6 +222,9 @@ class Tower(Path):
             )
         if self.luff is None and self.radius is None:
             object.__setattr__(self, "radius", TOWER_RADIUS)
+
+    def _rows(self) -> list[Row]:
+        return tower_rows(self)
 
     def radius_at(self, t: Any) -> FloatArray:
         """The pivot's horizontal distance from the tower's axis r(t) [m], shape (N,) for N times t [s]:

@@ -24,7 +24,7 @@ from pydantic import ValidationError
 
 from .._core import InvalidInputError
 from ..scenario.crane_schema import CraneSpec
-from ..scenario.errors import _problem
+from ..scenario.errors import _problem, describe
 from ..validate import parse_toml
 from .hoist import Hoist
 from .paths import Gantry, move
@@ -106,30 +106,17 @@ def file_settings(file: dict[str, Any]) -> dict[str, Any]:
     return file | {"simulation": sim}
 
 
-MOST_SHOWN = 5
-"""The most problems a crane file's error message shows (:class:`CraneFileError` keeps them all)."""
-
-
 class CraneFileError(InvalidInputError):
     """A crane file whose tables do not validate: ``source`` names the file, ``problems`` lists every
     problem (the key, the bad value and what is allowed; unknown keys first). The message shows the
-    first :data:`MOST_SHOWN`, numbered when several, and says how many more there are:
+    first :data:`pendulab.scenario.errors.MOST_SHOWN` (five), numbered when several, and says how many
+    more there are:
     ``<source>: 7 problems: (1) … (5) … (and 2 more)``. An ``InvalidInputError``, as before."""
 
     def __init__(self, source: str, problems: list[str]) -> None:
         self.source = source
         self.problems = list(problems)
-        super().__init__(f"{source}: {_describe(self.problems)}")
-
-
-def _describe(problems: list[str], most: int = MOST_SHOWN) -> str:
-    """The problems of a crane file as one message: at most ``most`` of them, numbered when several,
-    with how many more there are."""
-    if len(problems) == 1:
-        return problems[0]
-    more = f" (and {len(problems) - most} more)" if len(problems) > most else ""
-    shown = " ".join(f"({k}) {p}" for k, p in enumerate(problems[:most], 1))
-    return f"{len(problems)} problems: {shown}{more}"
+        super().__init__(f"{source}: {describe(self.problems)}")
 
 
 def parse(data: dict[str, Any], source: str = "<crane file>") -> CraneScenario:

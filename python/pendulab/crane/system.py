@@ -19,6 +19,7 @@ from .._core import CraneSpec, InvalidInputError, RunOptions, crane_simulate
 from ..validate import array, integer, invalid
 from . import _spacing
 from ._checks import later, nonnegative, number, numbers, positive, time, times, tolerances
+from ._checks import rope as _rope
 from ._display import Row, Shown, crane_rows, run_rows, wind_rows
 from .hoist import Hoist
 from .paths import Gantry, Path
@@ -201,7 +202,8 @@ def _direction(name: str, angles: Any) -> FloatArray:
 
 
 class Crane(Shown):
-    """A crane (module doc): ``rope`` length [m] (the hoist's length at t = 0 when ``hoist`` is given),
+    """A crane (module doc): ``rope`` length [m] (> 0 and ≤ 1e4 m, a pendulum's ``length`` limit, as
+    ``rigging``; the hoist's length at t = 0 when ``hoist`` is given),
     ``pivot`` path (a :mod:`pendulab.crane.paths` path; default fixed at the origin), ``payload_mass``
     [kg], ``hook_mass`` [kg] and ``rigging`` [m] (both or neither: the hook + payload double
     pendulum), ``wind`` (:class:`Wind`), linear ``damping`` [1/s] relative to the pivot, ``g`` [m/s²],
@@ -219,7 +221,7 @@ class Crane(Shown):
         g: float = 9.81,
         hoist: Hoist | None = None,
     ) -> None:
-        self.rope = positive("rope", rope, "m")
+        self.rope = _rope("rope", rope)
         self.pivot = pivot if pivot is not None else Gantry()
         if not isinstance(self.pivot, Path):
             raise InvalidInputError(
@@ -229,7 +231,7 @@ class Crane(Shown):
         if (hook_mass is None) != (rigging is None):
             raise InvalidInputError("give hook_mass [kg] and rigging [m] together (or neither)")
         self.hook_mass = None if hook_mass is None else positive("hook_mass", hook_mass, "kg")
-        self.rigging = None if rigging is None else positive("rigging", rigging, "m")
+        self.rigging = None if rigging is None else _rope("rigging", rigging)
         self.wind = wind if wind is not None else Wind()
         if not isinstance(self.wind, Wind):
             raise invalid("wind", wind, "a crane.Wind (or None: no wind)")
@@ -250,7 +252,7 @@ class Crane(Shown):
     def modes(self, rope: float | None = None) -> FloatArray:
         """The small-sway angular frequencies [rad/s] (increasing) at rope length ``rope`` [m] (default
         the rope at t = 0): √(g/l), or the two roots of T-11.8 with a hook."""
-        big_l1 = self.rope if rope is None else positive("rope", rope, "m")
+        big_l1 = self.rope if rope is None else _rope("rope", rope)
         if self.g <= 0:
             raise InvalidInputError(f"no sway modes for g = {self.g!r} <= 0 m/s²")
         if self.hook_mass is None or self.rigging is None:

@@ -33,26 +33,36 @@ from .schema import (
     _show,
 )
 
+MOST_SHOWN = 5
+"""The most problems the message of a scenario file's error shows (:class:`ScenarioError`, and a crane
+file's ``pendulab.crane.CraneFileError``); the error's ``problems`` keeps them all."""
+
+
+def describe(problems: list[str], most: int = MOST_SHOWN) -> str:
+    """The problems of a file as one message: at most ``most`` of them, numbered when several, with
+    how many more there are: ``7 problems: (1) … (5) … (and 2 more)``."""
+    if len(problems) == 1:
+        return problems[0]
+    more = f" (and {len(problems) - most} more)" if len(problems) > most else ""
+    shown = " ".join(f"({k}) {p}" for k, p in enumerate(problems[:most], 1))
+    return f"{len(problems)} problems: {shown}{more}"
+
 
 class ScenarioError(ValueError):
     """A scenario file (or string) cannot be used.
 
     ``source`` names the file, ``line`` the line of a TOML syntax error (else ``None``) and
-    ``problems`` lists one readable message per problem, each naming the key, the bad value and
-    what is allowed. ``str(error)`` is a single line: ``"<source>: <problem>"``.
+    ``problems`` lists one readable message per problem (all of them), each naming the key, the bad
+    value and what is allowed. ``str(error)`` is a single line: ``"<source>: <problem>"``, or with
+    several the first :data:`MOST_SHOWN` numbered and how many more there are (:func:`describe`;
+    ``pendulab validate`` prints every one).
     """
 
     def __init__(self, source: str, problems: str | list[str], line: int | None = None) -> None:
         self.source = source
         self.line = line
         self.problems = [problems] if isinstance(problems, str) else list(problems)
-        where = self.location
-        if len(self.problems) == 1:
-            text = f"{where}: {self.problems[0]}"
-        else:
-            numbered = " ".join(f"({k}) {p}" for k, p in enumerate(self.problems, 1))
-            text = f"{where}: {len(self.problems)} problems: {numbered}"
-        super().__init__(text)
+        super().__init__(f"{self.location}: {describe(self.problems)}")
 
     @property
     def location(self) -> str:
