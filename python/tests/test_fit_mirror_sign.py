@@ -14,6 +14,7 @@ import warnings
 from typing import Any
 
 import numpy as np
+import pytest
 from scipy.integrate import solve_ivp
 
 import pendulab as pl
@@ -223,3 +224,32 @@ def test_a_check_not_finished_is_said_in_the_report_line() -> None:
     )
     assert "(Ctrl-C); only the frame's rotation" in sign.line()
     assert sign.short() == "not checked (the mirror image's refit was not finished)"
+
+
+def test_a_released_refit_that_stays_on_the_images_side_decides_with_its_lower_rise(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    """The Earth's slow turn (as above): the image's refit with one of φ₀, φ̇₀ held at its image value
+    is an upper bound of the image's valley; released (every unknown free), it stays on the image's
+    side — nearer the image than the fit in the bars of φ₀, φ̇₀ — and lower, a valley of its own, so
+    its lower rise decides and is the one reported (the branch the intermediate rotation, which slides
+    back to the fit, never reaches)."""
+    image_rise = mirror_sign._image_rise
+    seen: list[tuple[float, tuple[float, bool], dict[str, float]]] = []
+
+    def recorded(res: Any, held: str, period: float, clock: Search, image: dict[str, float]) -> Any:
+        alone, _, _ = TimedRise(res, held, period, clock)(image[held], image)  # held only
+        out = image_rise(res, held, period, clock, image)
+        seen.append((alone, out, image))
+        return out
+
+    monkeypatch.setattr(mirror_sign, "_image_rise", recorded)
+    t = np.linspace(0.0, 30.0, 901)
+    v0 = np.array([0.0, 0.4, 0.0])
+    pendulum = pl.Pendulum(L, G, model="rotating", frame_rate=7.292e-5, latitude=0.855)
+    res, said = _fit(t, _foucault(t, v0, 7.292e-5, 0.855), pendulum, seed=2)
+    assert len(seen) == 1, said
+    held_rise, (rise, settled), _ = seen[0]
+    assert settled and rise < held_rise, seen  # the released refit's valley, not the held bound
+    sign = res.mirror_sign
+    assert sign is not None and sign.rise == rise and sign.told is False, sign

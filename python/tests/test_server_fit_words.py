@@ -15,6 +15,7 @@ import pytest
 from pendulab.fitting.blocks import BlockCheck
 from pendulab.fitting.data import observations
 from pendulab.fitting.goodness import KindCheck, findings
+from pendulab.fitting.inference import LATE_REASON
 from pendulab.fitting.short_record import STOPS
 from pendulab.fitting.start import check_length_hint
 from pendulab.server.fit_words import CLAUSES, KEYS, NOTES, REASONS, keyed, report_items
@@ -151,6 +152,7 @@ def test_every_reason_for_an_undetermined_parameter_is_keyed() -> None:
         ("the model's response to it is not finite at the fit", "notFinite"),
         ("the residuals do not change with it at the fit (a symmetry of the data, or ...)", "flat"),
         ("the data determine only a combination of it with g, pivot_z", "combination"),
+        (LATE_REASON, "lateBars"),
     ]:
         assert keyed(text, REASONS)["key"] == key
     assert keyed("the data determine only a combination of it with g, pivot_z", REASONS)["values"] == {

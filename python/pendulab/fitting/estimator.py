@@ -109,9 +109,10 @@ def fit(
     length and ``stiffness`` k [N/m]); ``fit``: the parameters to fit (``pl.models()`` names,
     ``"state"``, ``"pivot"`` or single ``theta0``, ``phi0``, ``theta_dot0``, ``phi_dot0``, the
     spring's ``r0`` [m] and ``r_dot0`` [m/s], ``pivot_x/y/z``, ``t_offset`` [s], and the systematic
-    terms ``scale`` [1] (positions' scale bar), ``angle_offset`` [rad] (an encoder's zero),
-    ``force_bias`` [m/s²], ``rate_bias`` [rad/s], ``perspective`` [1/m]: 1/(a camera's distance));
-    the start at the first time is fitted too unless ``state0`` is given. ``pivot`` [m]: the pivot in
+    terms ``scale`` [1] (the scale bar of positions and horizontal, no other kind), ``angle_offset``
+    [rad] (an encoder's zero), ``force_bias`` [m/s²], ``rate_bias`` [rad/s], ``perspective`` [1/m]:
+    1/(a camera's distance)); the start at the first time is fitted too unless ``state0`` is given.
+    ``pivot`` [m]: the pivot in
     the data's frame when known (default: the origin,
     or fitted when the positions do not hang from it). ``sigma``: the noise of one value (a number,
     or kind → number; for angles that of θ and of the arc sin θ·φ; None: the search runs in units of
@@ -128,8 +129,9 @@ def fit(
     clock starts as ``fit`` is called): the data's reading and checks, the starting values, the
     search and, over a record shorter than a swing, the profile likelihoods of the error analysis
     (each refit is cut at a model run past the limit; what it leaves unprofiled is reported not
-    determined, naming the limit); the rest of the error analysis adds a few model runs per unknown
-    past it. Raises
+    determined, naming the limit); the rest of the error analysis adds one run of the record and its
+    Jacobian past it: one run of the exact sensitivities, or differences for at most 1 s
+    (``fitting.search.LATE_SECONDS``), else the parameters are reported not determined. Raises
     :class:`pendulab.InvalidInputError` naming bad data or settings, and for data that show no motion
     above their noise; an ImportError without SciPy (``pip install 'pendulab[fit]'``)."""
     clock = Clock(time_limit)  # time_limit bounds the whole call: the data's reading counts too

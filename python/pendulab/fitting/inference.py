@@ -33,8 +33,7 @@ Units: σ and residuals in each data kind's unit (docs/fit.md); g [m/s²]; times
 from __future__ import annotations
 
 import math
-import time
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from typing import Any
 
 import numpy as np
@@ -56,6 +55,13 @@ from .whiteness import chi2_tails
 
 #: The step Ctrl-C stopped when it stopped the block check (its finding, blocks.UNMADE "ctrlCIn", says so).
 IN_BLOCKS = "the block check of the misfit"
+LATE_REASON = "the fit's time limit ran out before its error bars were computed"
+"""Every parameter's reason where the Jacobian past the time limit would not end within
+:data:`search.LATE_SECONDS` of it (:func:`_late_jacobian`; server/fit_words.py keys it)."""
+CUT_VERDICTS = MISFIT_VERDICTS | {"unexplained"}
+"""The verdicts a cut search leaves unsaid (:func:`_said`): a misfit put down to the model or the noise,
+and "the fitted motion explains only … %", put down to the data, the model or the start — values short
+of the best fit explain less, so the one finding is that the search was cut."""
 
 
 def robust_weights(loss: str, z: FloatArray) -> FloatArray:
@@ -108,6 +114,8 @@ def conclude(
     }
     logged = {n for i, n in enumerate(free) if positive[i]}
     ident = _identified(search, final, (r, jac), variance, logged, checks)
+    if search.bars_late:  # the late Jacobian did not fit in LATE_SECONDS: no error bars at all
+        ident.reasons.update(dict.fromkeys(free, LATE_REASON))
     misfit = chi2  # Σ r² in units of the search's σ (the data's own floor when σ is not given)
     chi2 /= variance  # with σ estimated from the residual, χ²/dof = 1 by construction
     # with σ given, χ² against its distribution (widened for a residual that is AR(1) noise)
@@ -143,7 +151,7 @@ def conclude(
         ident=ident,
         converged=converged,
         message=message if message else "interrupted",
-        seconds=time.perf_counter() - search.began,
+        seconds=search.clock.elapsed(),
         starts=n_starts,
         interrupted=interrupted,
         kinds=KINDS,
@@ -180,11 +188,11 @@ def _said(
 ) -> tuple[list[str], bool]:
     """goodness.findings, and whether any were left out: where the time limit or Ctrl-C cut the search
     (``cut`` a key of blocks.UNMADE, "" if it ran to its end) without those that put a misfit down to
-    the model or the noise (:data:`goodness.MISFIT_VERDICTS`' kinds, an improbable χ²): the values are
+    the model, the noise or the start (:data:`CUT_VERDICTS`' kinds, an improbable χ²): the values are
     short of the best fit, so the misfit may be the search's, and one finding (UNMADE[cut]) says so."""
     if not cut:
         return findings(checks, chi2_p, chi2, dof, robust=robust), False
-    kept = {k: c for k, c in checks.items() if c.verdict(robust) not in MISFIT_VERDICTS}
+    kept = {k: c for k, c in checks.items() if c.verdict(robust) not in CUT_VERDICTS}
     chi2_kept = None if chi2_p is not None and chi2_p < P_ALARM and not robust else chi2_p
     return findings(kept, chi2_kept, chi2, dof, robust=robust), len(kept) < len(checks) or chi2_kept != chi2_p
 
@@ -202,7 +210,9 @@ def _polished(
     def weighted(uu: FloatArray) -> FloatArray:
         return problem.residuals(problem.with_free(uu), sig)
 
+    began = search.clock.elapsed()
     r = weighted(u)
+    run = search.clock.elapsed() - began  # one run of the whole record [s]: the late Jacobian's unit
     # logarithmic steps for positive parameters well away from 0 (a damping at its bound 0 gets
     # additive ones, one-sided there: jacobian())
     positive = np.array([n in POSITIVE and u[i] > 0.01 * search.scales[i] for i, n in enumerate(free)])
@@ -212,9 +222,15 @@ def _polished(
         return search.exact_jacobian(problem, uu)  # forward sensitivities (sensitivity.py) or None
 
     exact = jac_of(u)
-    # past the time limit, forward differences: k runs of the whole record instead of 2k (docs/fit.md)
+    # past the time limit, forward differences: k runs of the whole record instead of 2k, and only
+    # while each ends within LATE_SECONDS of the limit (docs/fit.md, "The time limit")
     late = exact is None and search.time_up()
-    jac = exact if exact is not None else jacobian(weighted, u, steps, positive, r if late else None)
+    if exact is not None:
+        jac = exact
+    elif not late:
+        jac = jacobian(weighted, u, steps, positive)
+    else:
+        jac = _late_jacobian(search, weighted, u, (steps, positive), r, run)
     if search.loss == "linear" and not interrupted:
         bounds = (search.lower, search.upper)
         try:
@@ -222,6 +238,32 @@ def _polished(
         except KeyboardInterrupt:
             stopped.append("the polish")
     return u, r, jac, positive
+
+
+def _late_jacobian(
+    search: Search,
+    weighted: Callable[[FloatArray], FloatArray],
+    u: FloatArray,
+    steps: tuple[FloatArray, FloatArray],
+    r: FloatArray,
+    run: float,
+) -> FloatArray:
+    """The Jacobian past the time limit: forward differences from ``r`` (identify.jacobian's
+    ``centre``), each model run begun only if, at ``run`` [s] per run (the last run of the whole
+    record), it ends within :data:`search.LATE_SECONDS` of the limit. Otherwise none of it: a
+    Jacobian with columns missing would give the others' bars as if those parameters were held, so
+    every column is NaN, ``search.bars_late`` is set, and each parameter gets :data:`LATE_REASON`."""
+
+    def bounded(uu: FloatArray) -> FloatArray:
+        if search.clock.late_time_up(run):
+            raise TimeUp
+        return weighted(uu)
+
+    try:
+        return jacobian(bounded, u, steps[0], steps[1], r)
+    except TimeUp:
+        search.bars_late = True
+        return np.full((r.size, len(search.free)), math.nan)
 
 
 def _blocks(

@@ -11,7 +11,8 @@ Parameter names (SI units):
 - ``t_offset`` [s]: the model's clock runs from t₀ + t_offset (ideal pendulum only: the exact solution
   runs backward in time as well);
 - systematic terms of the measurement (:data:`SYSTEMATIC_NAMES`, neutral by default): ``scale`` [1]
-  multiplies the positions about the pivot (a camera's scale bar: measured = pivot + scale·x);
+  multiplies the positions about the pivot (a camera's scale bar: measured = pivot + scale·x) and the
+  ``horizontal`` ones, the kinds that are lengths (:data:`LENGTH_KINDS`), no other kind;
   ``angle_offset`` [rad] is added to a planar angle and to θ (an encoder's zero); ``force_bias``
   [m/s²] to the specific force and ``rate_bias`` [rad/s] to the angular speed (a sensor's bias);
   ``perspective`` κ = 1/D [1/m] is a camera at distance D in front of the pivot looking along +y, which
@@ -78,6 +79,10 @@ UNITS_EXTRA = {
     "r0": "m",
     "r_dot0": "m/s",
 }
+LENGTH_KINDS = ("positions", "horizontal")
+"""The data kinds that are lengths read off a scale (a camera's, a ruler's): ``scale`` multiplies
+these only. Angles are the same for a scaled x; a phone's |ω| = |x × v|/l² and |a − g⃗| are not
+measured against any scale bar."""
 RTOL = 1e-12
 ATOL = 1e-14
 
@@ -182,7 +187,7 @@ class Problem:
             assert isinstance(p, Pendulum)
             pivot = pivot + p.diagnostics(x, v, tau)["pivot"]
         scale = values.get("scale", 1.0)
-        seen = x if scale == 1.0 else scale * x
+        seen = x if scale == 1.0 else scale * x  # lengths on a scale bar: LENGTH_KINDS only
         kappa = values.get("perspective", 0.0)
         camera = seen  # the positions (x, z) a camera sees; no other kind is seen through it
         if kappa != 0.0 and "positions" in self.obs.values:  # a pinhole at 1/κ before the pivot, along +y
@@ -192,7 +197,7 @@ class Problem:
             camera = seen / depth[:, None]
         out = {}
         for kind in self.obs.values:
-            shown = camera if kind == "positions" else seen
+            shown = camera if kind == "positions" else seen if kind in LENGTH_KINDS else x
             out[kind] = predict(kind, self.obs.columns[kind], shown, v, accel, gravity, pivot)
         return _with_offsets(out, values)
 

@@ -90,9 +90,21 @@ class TimeUp(Exception):
     """The search ran past ``time_limit``."""
 
 
+def wall_clock() -> float:
+    """The time every fit's :class:`Clock` reads [s] (``time.perf_counter()``): one place, so that a
+    test can put a clock of its own here and check the time limit without measuring time."""
+    return time.perf_counter()
+
+
+#: After the time limit, the error analysis may run on for at most this long [s] (docs/fit.md, "The
+#: time limit"): its Jacobian over the whole record is computed only if that fits, one run per
+#: unknown estimated from the last run of the record; otherwise the error bars are not determined.
+LATE_SECONDS = 1.0
+
+
 class Clock:
     """The clock of one fit: ``time_limit`` [s] (None: no limit) counted from ``began``
-    (``time.perf_counter()`` when it was made, unless given). Every :class:`Search` of a fit — its
+    (:func:`wall_clock` when it was made, unless given). Every :class:`Search` of a fit — its
     own, the nested models', the blocks', the profiles' refits — is given the same clock when it is
     made, so that one limit bounds them all from the fit's start. It also records what stopped the
     fit short (the result's ``interrupted``): ``ran_out``, a check found the limit passed (every
@@ -101,19 +113,28 @@ class Clock:
 
     def __init__(self, time_limit: float | None, began: float | None = None) -> None:
         self.time_limit = time_limit
-        self.began = time.perf_counter() if began is None else began
+        self.began = wall_clock() if began is None else began
         self.ran_out = False
         self.ctrl_c = False
+
+    def elapsed(self) -> float:
+        """Seconds since ``began`` by :func:`wall_clock`."""
+        return wall_clock() - self.began
 
     def time_up(self, ahead: float = 0.0) -> bool:
         """Whether ``time_limit`` [s] has passed since ``began``, or will have after ``ahead`` more
         seconds of work (a Jacobian's run cannot be interrupted once begun); once True, ``ran_out``."""
-        up = self.time_limit is not None and time.perf_counter() - self.began + ahead > self.time_limit
+        up = self.time_limit is not None and self.elapsed() + ahead > self.time_limit
         self.ran_out |= up
         return up
 
+    def late_time_up(self, ahead: float) -> bool:
+        """Whether ``ahead`` more seconds of work would end more than :data:`LATE_SECONDS` past
+        ``time_limit`` (the bound of the error analysis after the limit)."""
+        return self.time_limit is not None and self.elapsed() + ahead > self.time_limit + LATE_SECONDS
+
     def __repr__(self) -> str:
-        return f"Clock(time_limit={self.time_limit!r}, elapsed={time.perf_counter() - self.began:.3g} s)"
+        return f"Clock(time_limit={self.time_limit!r}, elapsed={self.elapsed():.3g} s)"
 
 
 class _Abandoned(Exception):
@@ -167,6 +188,7 @@ class Search:
         self.first_calls = 0
         self.start_cost = math.inf
         self.jacobian_seconds = 0.0  # the wall time of the last exact Jacobian [s]
+        self.bars_late = False  # the Jacobian past the time limit was not computed (inference.py)
         # (problem, point and σ, Jacobian): the problem held, so that its id is not reused
         self._last_jacobian: tuple[Problem, bytes, FloatArray | None] | None = None
 
@@ -177,7 +199,7 @@ class Search:
 
     @property
     def began(self) -> float:
-        """When the fit's :class:`Clock` started (``time.perf_counter()``)."""
+        """When the fit's :class:`Clock` started (:func:`wall_clock`)."""
         return self.clock.began
 
     def time_up(self, ahead: float = 0.0) -> bool:
@@ -214,7 +236,7 @@ class Search:
         if last is not None and last[0] is on and last[1] == key:
             cached = last[2]
             return None if cached is None else cached.copy()
-        began = time.perf_counter()
+        began = wall_clock()
         before = on.evaluations  # its cheap re-evaluations of the predictions are not model runs
         try:
             j = exact_jacobian(on, on.with_free(u), self.sigma)
@@ -225,7 +247,7 @@ class Search:
         self.calls += 1
         ok = j is not None and bool(np.all(np.isfinite(j)))
         j = self._flat_columns_one_sided(on, u, j) if ok and j is not None else None
-        self.jacobian_seconds = time.perf_counter() - began
+        self.jacobian_seconds = wall_clock() - began
         self._last_jacobian = (on, key, None if j is None else j.copy())
         return j
 

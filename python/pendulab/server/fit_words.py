@@ -195,6 +195,7 @@ REASONS: list[tuple[str, re.Pattern[str]]] = [
         ),
     ),
     ("mirrorSignUnchecked", _p("the refit of the motion's mirror image y → −y was not finished")),
+    ("lateBars", _p("the fit's time limit ran out before its error bars were computed")),
 ]
 """Why a parameter is not determined (pendulab/fitting/identify.py) -> key."""
 
