@@ -187,6 +187,9 @@ def run_cmd(
             _check_output(out)
         if plot is not None:
             _check_image("--plot", plot)
+        if not Path(file).exists() or Path(file).is_dir():
+            what = "a directory, not a crane file" if Path(file).is_dir() else "No such file"
+            _fail(f"{file}: {what}; give a crane file: TOML with [crane] and [simulation] (docs/cranes.md)")
         sc = load(file)
         report(sc, file, out, plot)
 

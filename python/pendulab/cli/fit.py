@@ -15,9 +15,9 @@ from __future__ import annotations
 import contextlib
 import math
 import warnings
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from pathlib import Path
-from typing import Annotated
+from typing import Annotated, Any
 
 import numpy as np
 import typer
@@ -120,25 +120,69 @@ def _need_scipy() -> None:
         _fail("pendulab fit needs SciPy: pip install 'pendulab[fit]' (or scipy>=1.11)")
 
 
-def _params(model: str, own: list[str], items: list[str]) -> dict[str, float]:
-    """The values of ``--param NAME=VALUE`` by name; unknown names all refused at once, in the words of
-    ``pl.Pendulum`` (each with its did-you-mean, then the model's parameters ``own``)."""
+class _AsTyped:
+    """A ``--param`` value in a message as the user typed it (``1``, not ``1.0``; ``2e-3``, not
+    ``0.002``); text that is not a number quoted."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text.strip()
+
+    def __repr__(self) -> str:
+        try:
+            float(self.text)
+        except ValueError:
+            return repr(self.text[:60])
+        return self.text[:60]
+
+
+def _params(
+    model: str, own: Mapping[str, Mapping[str, Any]], items: list[str]
+) -> tuple[dict[str, float], dict[str, str]]:
+    """The values of ``--param NAME=VALUE`` by name (floats, for the fit) and their texts as typed (for
+    the messages and the report); unknown names all refused at once, in the words of ``pl.Pendulum``
+    (each with its did-you-mean, then the model's parameters ``own``), a value outside its parameter's
+    range refused naming the value as typed and the range (SI units)."""
     values: dict[str, float] = {}
+    typed: dict[str, str] = {}
     unknown: dict[str, object] = {}
     for item in items:
         name, sep, text = item.partition("=")
+        name = name.strip()
         if not sep:
             _fail(f"--param {item!r}: give NAME=VALUE with NAME one of {', '.join(own)}")
-        if name.strip() not in own:
-            try:  # the value shown as a number when it is one
-                unknown[name.strip()] = float(text)
-            except ValueError:
-                unknown[name.strip()] = text
+        if name not in own:
+            unknown[name] = _AsTyped(text)
             continue
-        values[name.strip()] = _number(text, f"--param {name.strip()}")
+        spec = own[name]
+        why = "not a number"
+        try:
+            value = float(text)
+            why = "out of range" if math.isfinite(value) else "not a finite number"
+        except ValueError:
+            value = math.nan
+        if not spec["min"] <= value <= spec["max"]:
+            shown = f"{name}={text.strip()[:40]}"
+            _fail(f"--param {shown}: {why}; allowed: {spec['allowed']} ({spec['label']})")
+        values[name], typed[name] = value, text.strip()
     if unknown:
-        _fail(f"--param: {refused(unknown, not_of_model(model, list(unknown), own))}")
-    return values
+        _fail(f"--param: {refused(unknown, not_of_model(model, list(unknown), list(own)))}")
+    return values, typed
+
+
+def _typed_in_report(report: str, typed: Mapping[str, str]) -> str:
+    """The report with the held values given by ``--param`` shown as typed on its ``fixed:`` line
+    (``length = 1.50 m``, not ``length = 1.5 m``); the fit computed with the parsed numbers."""
+    lines = report.split("\n")
+    for i, line in enumerate(lines):
+        if line.startswith("  fixed: "):
+            entries = line.removeprefix("  fixed: ").split(", ")
+            for j, entry in enumerate(entries):
+                name, sep, rest = entry.partition(" = ")
+                if sep and name in typed:
+                    unit = rest.partition(" ")[2]
+                    entries[j] = f"{name} = {typed[name]}" + (f" {unit}" if unit else "")
+            lines[i] = "  fixed: " + ", ".join(entries)
+    return "\n".join(lines)
 
 
 @app.command("fit", short_help="Fit length, g, damping and the start to measured data (CSV).")
@@ -214,7 +258,7 @@ def fit_cmd(
         if model not in FITTABLE_MODELS:
             raise InvalidInputError(f"--model {model!r}: use one of {', '.join(FITTABLE_MODELS)}")
         own = model_params(model)
-        values = _params(model, list(own), param or [])
+        values, typed = _params(model, own, param or [])
         base = {k: values.pop(k) for k in ("length", "g", "mass") if k in values}
         pendulum: Pendulum | SwingingSpring
         if model == "spring":  # length: the rest length l0; stiffness k [N/m]
@@ -250,7 +294,7 @@ def fit_cmd(
             )
         for w in caught:
             _say(f"warning: {w.message}", err=True)
-        _say(res.report())
+        _say(_typed_in_report(res.report(), typed))
         if out is not None:
             res.save(out)
             _say(f"wrote {out}")

@@ -24,7 +24,7 @@ from pydantic import ValidationError
 
 from .._core import InvalidInputError
 from ..scenario.crane_schema import CraneSpec
-from ..scenario.errors import _problem, describe
+from ..scenario.errors import EMPTY_FILE, describe, file_problems
 from ..validate import parse_toml
 from .hoist import Hoist
 from .paths import Gantry, move
@@ -122,12 +122,11 @@ class CraneFileError(InvalidInputError):
 def parse(data: dict[str, Any], source: str = "<crane file>") -> CraneScenario:
     """A :class:`CraneScenario` from the parsed TOML ``data``; errors name ``source`` and the key
     (:class:`CraneFileError`, its ``problems`` all of them: the message shows at most five), in the
-    words of the pendulum's scenario files (:func:`pendulab.scenario.errors._problem`)."""
+    words of the pendulum's scenario files (:func:`pendulab.scenario.errors.file_problems`)."""
     try:
         f = CraneSpec.model_validate(data)
     except ValidationError as e:
-        errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
-        raise CraneFileError(source, [_problem(err, data, CraneSpec) for err in errors]) from None
+        raise CraneFileError(source, file_problems(e.errors(), data, CraneSpec)) from None
     return from_spec(f, source)
 
 
@@ -214,4 +213,6 @@ def load(path: str | Path) -> CraneScenario:
         raise InvalidInputError(f"{name}: not valid TOML: {e}") from None
     except InvalidInputError as e:
         raise InvalidInputError(f"{name}: {e}") from None
+    if not data:
+        raise CraneFileError(name, [EMPTY_FILE])
     return parse(data, name)

@@ -21,13 +21,14 @@ from pydantic_core import ErrorDetails
 
 from .._numbers import shown
 from ..model.registry import elsewhere
-from ..validate import abbreviate, did_you_mean
+from ..validate import abbreviate, did_you_mean, nearest
 from .schema import (
     _COMMON_KEYS,
     MODELS,
     SECTIONS,
     ScenarioSpec,
     _degree_keys,
+    _file_keys,
     _model_keys,
     _own_params,
     _show,
@@ -141,7 +142,7 @@ def _pendulum_model(data: Any) -> str:
 def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
     """An unknown key of ``[pendulum]``: the nearest key of the chosen model, else the models whose key it
     is in the words of ``pl.Pendulum`` (:func:`pendulab.model.registry.elsewhere`), and the model's keys."""
-    keys = _model_keys(model)
+    keys = _file_keys(model)
     text = f"unknown key pendulum.{abbreviate(name)} = {_show(value)}"
     other = elsewhere(model, name, keys, {m: _model_keys(m)[len(_COMMON_KEYS) :] for m in MODELS})
     text += f": {other}" if other is not None else did_you_mean(name, keys)
@@ -196,6 +197,52 @@ def _problem(err: ErrorDetails, data: Any = None, root: type[BaseModel] = Scenar
         f"{key} = {_show(value)} {reason}" if kind in _TYPE_PROBLEMS else f"{key} = {_show(value)}: {reason}"
     )
     return f"{text}; allowed: {allowed}" if allowed else text
+
+
+EMPTY_FILE = (
+    "nothing in it (an empty file, or only comments): a scenario file has the tables [pendulum], [initial] "
+    "and [simulation], a crane file [crane] and [simulation] (docs/scenarios.md; `pendulab scenarios` "
+    "lists the examples)"
+)
+"""The problem of a scenario or crane file without a key: what such a file holds, not each missing table."""
+
+
+def file_problems(
+    errors: list[ErrorDetails], data: Any = None, root: type[BaseModel] = ScenarioSpec
+) -> list[str]:
+    """One readable line per problem of a file (:func:`_problem`), unknown keys first. A typo of a
+    required key is one problem, not two: when an unknown key's did-you-mean is a key (or table) that is
+    missing in the same table, the unknown key's line says so (``unknown key pendulum.lenght = 2 (did
+    you mean 'length'? so the required pendulum.length is missing)``) and the missing key is not listed
+    again."""
+    ordered = sorted(errors, key=lambda err: err["type"] != "extra_forbidden")
+    missing = {tuple(err["loc"]): err for err in ordered if err["type"] == "missing"}
+    said: set[tuple[int | str, ...]] = set()
+    out: list[str] = []
+    for err in ordered:
+        loc = tuple(err["loc"])
+        if err["type"] == "missing" and loc in said:
+            continue
+        text = _problem(err, data, root)
+        if err["type"] == "extra_forbidden" and isinstance(loc[-1], str):
+            near = nearest(loc[-1], _keys_of(loc[:-1], data, root))
+            lost = (*loc[:-1], near or "")
+            hint = did_you_mean(loc[-1], [near or ""])
+            if near is not None and lost in missing and lost not in said and hint in text:
+                said.add(lost)
+                what = _problem(missing[lost], data, root).split(" is missing")[0].removeprefix("the ")
+                text = text.replace(hint, f"{hint[:-2]}? so the required {what} is missing)", 1)
+        out.append(text)
+    return out
+
+
+def _keys_of(table: tuple[int | str, ...], data: Any, root: type[BaseModel]) -> list[str]:
+    """The keys the table at ``table`` takes (the top level for ``()``), as its unknown keys' did-you-mean
+    chooses among them (``[pendulum]``: the keys of the file's model)."""
+    if table == ("pendulum",) and root is ScenarioSpec:
+        return _file_keys(_pendulum_model(data))
+    model = _model_at((*table, ""), root)
+    return list(model.model_fields) if model is not None else []
 
 
 def _syntax_error(source: str, text: str, err: tomllib.TOMLDecodeError) -> ScenarioError:

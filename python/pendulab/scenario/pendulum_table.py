@@ -46,6 +46,12 @@ def _model_keys(model: str) -> list[str]:
     return [*_COMMON_KEYS, *own]
 
 
+def _file_keys(model: str) -> list[str]:
+    """Every key ``[pendulum]`` takes for ``model`` (:func:`_model_keys`, and the ``sampled_pivot``
+    model's pivot_times [s] and pivot_positions [m]): the allowed keys an error lists."""
+    return [*_model_keys(model), *(("pivot_times", "pivot_positions") if model == "sampled_pivot" else ())]
+
+
 class PendulumSection(_Section):
     """``[pendulum]``: the model and its parameters. Besides length, mass and g, the keys of the chosen
     model are allowed (``pendulab models``; SI units, e.g. ``damping = 0.05`` in 1/s; an angle in rad
@@ -82,7 +88,7 @@ class PendulumSection(_Section):
                 raise ValueError(
                     f"unknown key params = {_show(data['params'])}: write the model's parameters directly "
                     f"in [pendulum] (e.g. damping = 0.05); keys of model {data.get('model', 'ideal')!r}: "
-                    f"{', '.join(_model_keys(str(data.get('model', 'ideal'))))}"
+                    f"{', '.join(_file_keys(str(data.get('model', 'ideal'))))}"
                 )
             own = set(_model_keys(str(data.get("model", "ideal")))[len(_COMMON_KEYS) :])
             moved = {k: v for k, v in data.items() if k in own}

@@ -62,7 +62,7 @@ from ..validate import check_depth, parse_toml, read_file_capped
 from ..variants.spring import SpringTrajectory, SwingingSpring, simulate_spring
 from .build import SPRING_ORDERS, build_pendulum, build_spring, check_run_settings, start_state
 from .crane_schema import CRANE_SECTIONS, CraneSpec, is_crane
-from .errors import ScenarioError, _problem, _syntax_error
+from .errors import EMPTY_FILE, ScenarioError, _syntax_error, file_problems
 from .examples import find as find_example
 from .overrides import RunOverrides, run_overrides
 from .scenario_text import _toml_value as _toml_value
@@ -179,8 +179,7 @@ class Scenario:
         except InvalidInputError as e:
             raise ScenarioError(source, str(e)) from None
         except ValidationError as e:
-            errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
-            raise ScenarioError(source, [_problem(err, data, root) for err in errors]) from None
+            raise ScenarioError(source, file_problems(e.errors(), data, root)) from None
         return cls(spec, source)
 
     @classmethod
@@ -193,6 +192,8 @@ class Scenario:
             raise _syntax_error(source, text, e) from None
         except InvalidInputError as e:
             raise ScenarioError(source, str(e)) from None
+        if not data:
+            raise ScenarioError(source, EMPTY_FILE)
         return cls.from_dict(data, source)
 
     def with_overrides(self, overrides: RunOverrides | None = None, **fields: Any) -> Scenario:

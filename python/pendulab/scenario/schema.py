@@ -29,6 +29,7 @@ from .pendulum_table import _MODEL_SPECS as _MODEL_SPECS
 from .pendulum_table import MODELS as MODELS
 from .pendulum_table import PendulumSection
 from .pendulum_table import _degree_keys as _degree_keys
+from .pendulum_table import _file_keys as _file_keys
 from .pendulum_table import _model_keys as _model_keys
 from .pendulum_table import _own_params as _own_params
 from .simulation_table import _U64_LIMIT as _U64_LIMIT

@@ -85,15 +85,21 @@ def flag(name: str, value: Any) -> bool:
 
 
 def did_you_mean(value: Any, options: Iterable[str]) -> str:
-    """`` (did you mean 'x'?)`` for the option nearest to the string ``value``, or ``""``: an option
-    equal to it but for case first, else the closest by :func:`difflib.get_close_matches`. Only a hint:
-    the wrong case is never accepted."""
+    """`` (did you mean 'x'?)`` for the option nearest to the string ``value`` (:func:`nearest`), or
+    ``""``. Only a hint: the wrong case is never accepted."""
+    near = nearest(value, options)
+    return f" (did you mean {near!r}?)" if near is not None else ""
+
+
+def nearest(value: Any, options: Iterable[str]) -> str | None:
+    """The option nearest to the string ``value``, or None: an option equal to it but for case first,
+    else the closest by :func:`difflib.get_close_matches` (what :func:`did_you_mean` suggests)."""
     if not isinstance(value, str):
-        return ""
+        return None
     opts = list(options)
     near = [o for o in opts if o.casefold() == value.casefold()]
     near = near or difflib.get_close_matches(value[:100], opts, n=1)
-    return f" (did you mean {near[0]!r}?)" if near else ""
+    return near[0] if near else None
 
 
 def choice(name: str, value: Any, options: Iterable[str]) -> str:
