@@ -1,7 +1,8 @@
-"""The one chunk loop every long run shares: ``simulate``, the string and spring drivers and the
-ensemble advance a core runner in chunks of about 0.1 s of work (the GIL released inside each chunk),
-update one tqdm progress bar between chunks, and stop cleanly on Ctrl-C after the current chunk,
-returning what was computed so far with a warning. Times in s.
+"""The chunk loop of :func:`pendulab.simulate` (its ``Solver`` and ``ForceSolver``) and of the string
+pendulum's run (``StringRunner``): a core runner advanced in chunks of about 0.1 s of work (the GIL
+released inside each chunk), one tqdm progress bar updated between chunks, and a clean stop on Ctrl-C
+after the current chunk, returning what was computed so far with a warning. Times in s. (The spring
+driver runs in one core call; the ensembles and the crane loops have loops of their own.)
 """
 
 from __future__ import annotations

@@ -3,6 +3,9 @@
 //! power balance with the pivot's inertial force, and Kapitza's stabilised inverted pendulum for
 //! (Aν)² > 2 g l. SI units; l = 1 m, g = 9.81 m/s².
 
+mod common;
+
+use common::sampled;
 use pendulab_core::model::registry::{power_balance_residual, AnyModel};
 use pendulab_core::{DVec3, Method, Model, Params, SolveOptions, State, Stepper};
 
@@ -149,14 +152,8 @@ fn dop853_ends_its_steps_on_the_samples_of_a_sampled_pivot() {
     // was ~1e4 × its tolerance off. It now lands on every sample (Model::next_break): each accepted
     // step lies inside one sample interval, and the run at rtol 1e-8 agrees with the run at 1e-13 to
     // its tolerance (measured 1.4e-10 m; before, steps crossed the samples).
-    let pv = Params::new(1.0, 1.0, 9.81).unwrap();
     let times: Vec<f64> = (0..=300).map(|k| -0.1 + 0.05 * k as f64).collect();
-    let positions: Vec<DVec3> = times
-        .iter()
-        .map(|&t| DVec3::new(0.3 * (1.3 * t).sin(), 0.2 * (0.7 * t + 0.5).sin(), 0.1 * (2.0 * t).cos()))
-        .collect();
-    let m = AnyModel::sampled_pivot(pv, &times, &positions, 0.03).unwrap();
-    let s0 = State::from_angles(&pv, 1.3, 0.9, 0.6, 2.5).unwrap();
+    let (m, s0) = (sampled::path(&times), sampled::start());
     let run = |rtol: f64, check: bool| {
         let o = SolveOptions { method: Method::Dop853, dt: 0.0, rtol, atol: rtol, project: true };
         let mut st = Stepper::new(m.clone(), 0.0, s0, &o).unwrap();

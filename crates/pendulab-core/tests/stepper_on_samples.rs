@@ -5,30 +5,13 @@
 //! inside an interval between samples, in ⌈span/dt⌉ equal steps (docs/integrators.md, *Sampled
 //! pivot*). SI units: l = 1 m, g = 9.81 m/s², samples 7 … 13 ms apart.
 
+mod common;
+
+use common::fixed;
+use common::sampled::{params, path, start};
 use pendulab_core::model::registry::AnyModel;
 use pendulab_core::solve::DEFAULT_MAX_SAVED_BYTES;
-use pendulab_core::{DVec3, Method, Params, SaveAt, SolveOptions, Solver, State, Stepper};
-
-fn params() -> Params {
-    Params::new(1.0, 1.0, 9.81).unwrap()
-}
-
-fn start() -> State {
-    State::from_angles(&params(), 1.3, 0.9, 0.6, 2.5).unwrap()
-}
-
-fn fixed(method: Method, dt: f64) -> SolveOptions {
-    SolveOptions { method, dt, ..SolveOptions::default() }
-}
-
-/// The path (0.3 sin 1.3t, 0.2 sin(0.7t + 0.5), 0.1 cos 2t) m at `times` [s], damping 0.03 1/s.
-fn sampled(times: &[f64]) -> AnyModel {
-    let positions: Vec<DVec3> = times
-        .iter()
-        .map(|&t| DVec3::new(0.3 * (1.3 * t).sin(), 0.2 * (0.7 * t + 0.5).sin(), 0.1 * (2.0 * t).cos()))
-        .collect();
-    AnyModel::sampled_pivot(params(), times, &positions, 0.03).unwrap()
-}
+use pendulab_core::{Method, SaveAt, Solver, State, Stepper};
 
 /// Samples 10 ms ± 30 % apart (7 … 13 ms, golden-ratio sequence) from −0.05 s past 3.3 s, one at t = 0.
 fn uneven() -> Vec<f64> {
@@ -53,7 +36,7 @@ fn on_samples(m: &AnyModel, method: Method, dt: f64) -> Stepper<AnyModel> {
 #[test]
 fn steps_by_hand_give_the_solvers_run_saved_at_the_times_reached_bit_for_bit() {
     let times = uneven();
-    let m = sampled(&times);
+    let m = path(&times);
     let dt = 0.004;
     for method in [Method::Rk4, Method::Rattle, Method::Rattle4, Method::Rattle8] {
         let mut st = on_samples(&m, method, dt);
@@ -116,7 +99,7 @@ fn after_set_state_the_steps_land_on_every_sample_again() {
     // step_n) and on a sample: each time the steps go on to the next sample in equal steps of at
     // most dt, and on from there
     let times = uneven();
-    let m = sampled(&times);
+    let m = path(&times);
     let dt = 0.004;
     for method in [Method::Rk4, Method::Rattle4] {
         let mut st = on_samples(&m, method, dt);
