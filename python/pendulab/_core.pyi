@@ -123,10 +123,10 @@ class RunOptions:
     core's ``SolveOptions``): t0, t_end [s], conserve, the save rule, the saved-bytes cap, the spring's
     order (2 or 4), a cap on steps (the crane's runs), and the RATTLE family's ``arithmetic``
     (``"unfused"``, the default, or ``"fused"``; ``Solver``, ``Stepper`` and ``EnsembleRun``);
-    ``halved_steps``: every fixed step taken as two halves (``Solver``; the error estimate's dt/2
-    companion on a sampled pivot, docs/integrators.md); ``steps_on_samples``: dt the longest fixed step,
-    the steps landing on every sample of a sampled pivot (``Solver``, ``ForceSolver``, ``Stepper``;
-    ``accuracy=``; ``pl.Stepper(steps_on_samples=True)``)."""
+    ``halved_steps``: every fixed step as two halves (``Solver``, ``ForceSolver``, ``Stepper``; the error
+    estimate's dt/2 companion on a sampled pivot, docs/integrators.md); ``steps_on_samples``: dt the
+    longest fixed step, the steps landing on every sample of a sampled pivot (``Solver``,
+    ``ForceSolver``, ``Stepper``; ``accuracy=``; ``pl.Stepper(steps_on_samples=True)``)."""
 
     def __new__(
         cls,

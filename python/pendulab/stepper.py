@@ -19,7 +19,7 @@ from .integrators import (
     check_steps_on_samples,
 )
 from .model import Pendulum, State, check_pendulum_state
-from .validate import LIMITS, integer, invalid, number, planned_steps
+from .validate import LIMITS, flag, integer, invalid, number, planned_steps
 
 
 class Stepper:
@@ -48,6 +48,11 @@ class Stepper:
         bit for bit (``step_to`` each save time, or ``step(n)`` for ``save_every=n``); after
         ``set_state`` the steps go on landing on the samples. No effect on ``dop853``; True without
         pivot samples is an ``InvalidInputError`` (docs/integrators.md, "Sampled pivot").
+    halved_steps : every fixed step (each sub-step between a sampled pivot's samples, each step
+        shortened onto a ``step_to`` time) taken as two equal halves (default False; whole steps): the
+        run of the error estimate's dt/2 companion on a sampled pivot, as :func:`simulate` runs it
+        (``RunOptions(halved_steps=True)``). ``stats["steps"]`` counts the halves. No effect on
+        ``dop853`` (docs/integrators.md, "Error estimates and asking for accuracy").
 
     Examples
     --------
@@ -75,6 +80,7 @@ class Stepper:
         conserve: bool = False,
         arithmetic: str = "auto",
         steps_on_samples: bool = False,
+        halved_steps: bool = False,
     ) -> None:
         check_pendulum_state(pendulum, state)
         method, dt_checked, rtol, atol, project, conserve, t0 = check_settings(
@@ -87,6 +93,7 @@ class Stepper:
         _check_conserve(pendulum, conserve)
         arithmetic = check_arithmetic(arithmetic, method, pendulum.model)
         steps_on_samples = check_steps_on_samples(steps_on_samples, pendulum)
+        halved_steps = flag("halved_steps", halved_steps)
         if pendulum.force is not None:
             raise InvalidInputError(
                 "the incremental Stepper does not take a user force callable; use pendulab.simulate"
@@ -105,6 +112,7 @@ class Stepper:
             conserve=bool(conserve),
             arithmetic=arithmetic,
             steps_on_samples=steps_on_samples,
+            halved_steps=halved_steps,
         )
         self._core = _Stepper(pendulum.spec, state.pair, run)
 

@@ -70,6 +70,7 @@ pymethods_with_getters! {
             let mut inner = Stepper::new(m, options.t0, s, &options.solve).map_err(to_py)?;
             inner.set_invariant_projection(options.conserve);
             inner.set_arithmetic(options.arithmetic).map_err(to_py)?;
+            inner.set_halved_steps(options.halved_steps);
             inner.set_steps_on_breaks(options.steps_on_samples);
             Ok(Self { inner })
         }

@@ -194,7 +194,7 @@ pub(crate) struct RunOptions {
     /// The RATTLE family's multiply-adds: unfused (default) or fused (`Solver`, `Stepper`).
     pub(crate) arithmetic: Arithmetic,
     /// Every fixed step taken as two halves (`Stepper::set_halved_steps`: the error estimate's dt/2
-    /// companion on a sampled pivot; `Solver`, `ForceSolver`).
+    /// companion on a sampled pivot; `Solver`, `ForceSolver`, `Stepper`).
     pub(crate) halved_steps: bool,
     /// A sampled pivot's fixed steps land on every sample, dt the longest (`Stepper::set_steps_on_breaks`;
     /// `Solver`, `ForceSolver`, `Stepper`).

@@ -1,6 +1,7 @@
-"""The sampled pivots of the ``steps_on_samples`` tests (``test_steps_on_samples.py``,
-``test_stepper_steps_on_samples.py``): unevenly spaced sample times, a path the spline reproduces
-exactly (an independent reference: ``pl.exact`` under g + its acceleration) and a kinked one. SI units:
+"""The sampled pivots of the ``steps_on_samples`` and ``halved_steps`` tests (``test_steps_on_samples.py``,
+``test_stepper_steps_on_samples.py``, ``test_stepper_halved_steps.py``): unevenly spaced sample times,
+a path the spline reproduces exactly (an independent reference: ``pl.exact`` under g + its
+acceleration) and a kinked one. SI units:
 l = 1 m, g = 9.81 m/s², samples about 10 ms apart.
 """
 
