@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING, Any
 from ._core import InvalidInputError, fused_is_fast
 from ._core import methods as _methods
 from .model import Pendulum
-from .validate import LIMITS, choice, did_you_mean, finite, flag, number, show
+from .validate import LIMITS, abbreviate, choice, did_you_mean, finite, flag, nearest, number, show
 
 if TYPE_CHECKING:
     from ._core import MethodInfo, ParamSpec
@@ -125,6 +125,17 @@ def unknown_method(name: Any) -> str:
     names = method_names()
     hint = did_you_mean(name, names)
     return f"unknown method {show(name)}{hint}; available: {', '.join(names)}"
+
+
+def unknown_method_key(name: str) -> tuple[str, dict[str, str]]:
+    """The message key and values of :func:`unknown_method` for a page that words it in its language
+    (``pendulab/server/messages.json``; the core's lab engine keys it alike, ``live::wire::unknown_method``):
+    ``unknown_method`` (method: the name, abbreviated; available) or, with the nearest name,
+    ``unknown_method_hint`` (the same and nearest)."""
+    names = method_names()
+    values = {"method": abbreviate(name), "available": ", ".join(names)}
+    near = nearest(name, names)
+    return ("unknown_method", values) if near is None else ("unknown_method_hint", values | {"nearest": near})
 
 
 def check_arithmetic(arithmetic: Any, method: str, model: str | None = None) -> str:

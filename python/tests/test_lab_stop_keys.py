@@ -3,10 +3,10 @@
 computed, where the session pauses — keyed ``integration_stopped`` with its cause's key (the advice for the
 method that diverged: ``diverged``, ``diverged_rattle``, …); ``Session.advance()`` and
 ``take_pending_steps()`` called from Python raise that keyed error and leave nothing of the stop behind;
-an unknown model or parameter, a model that runs only offline, too many waiting steps, a method the model
-does not run and a crane command outside the crane mode are keyed in English, German and French; a key's
-time is the English words' time (12 significant digits), its dt the English words' dt. SI units: m, m/s, s,
-m/s²."""
+an unknown model, parameter or method, a model that runs only offline, too many waiting steps, a method the
+model does not run and a crane command outside the crane mode are keyed in English, German and French; a
+key's time is the English words' time (12 significant digits), its dt the English words' dt. SI units: m,
+m/s, s, m/s²."""
 
 from __future__ import annotations
 
@@ -148,6 +148,22 @@ REFUSALS = [
         {"model": "ideal", "name": "damping", "owner": "damped", "available": "length, mass, g"},
         "damping ist ein Parameter des Modells damped (und rotating, ",
         "damping est un paramètre du modèle damped (et rotating, ",
+    ),
+    # an unknown method, with the nearest name when there is one: Python's words alone before (the in-page
+    # engine keys it alike: crates/pendulab-wasm/tests/engine.rs)
+    (
+        ['{"type": "set_method", "method": "RATTLE"}'],
+        "unknown_method_hint",
+        {"method": "RATTLE", "nearest": "rattle"},
+        "unbekanntes Verfahren RATTLE (vielleicht rattle?); verfügbar: rattle, rattle4, ",
+        "méthode inconnue RATTLE (rattle peut-être ?) ; disponibles : rattle, rattle4, ",
+    ),
+    (
+        ['{"type": "set_method", "method": "euler"}'],
+        "unknown_method",
+        {"method": "euler"},
+        "unbekanntes Verfahren euler; verfügbar: rattle, ",
+        "méthode inconnue euler ; disponibles : rattle, ",
     ),
     # a method the model does not run and a crane command outside the crane mode: both were the core's
     # English words alone (Error::Refused), left in English on a German or French page; the page shows the

@@ -17,7 +17,7 @@ from ws_session import LabClient, status_with, until
 import pendulab as pl
 from pendulab._core import InvalidInputError
 from pendulab.server import FRAME_FIELDS, Session, create_app
-from pendulab.server.protocol import LIMITS, CommandError, parse_command
+from pendulab.server.protocol import LIMITS, MODEL_SPECS, CommandError, own_params, parse_command
 from pendulab.server.session import resolve_scenario
 
 F = {name: i for i, name in enumerate(FRAME_FIELDS)}
@@ -173,6 +173,27 @@ def test_bad_models_and_parameters_are_refused_naming_the_value(text: str, needl
         apply(s, text)
     assert needle in str(e.value), str(e.value)
     assert s.status() == before  # unchanged
+
+
+def test_the_cores_refusal_of_a_parameter_is_worded_as_set_models() -> None:
+    """``set_params`` with a parameter the model lacks is refused by the core
+    (``crates/pendulab-core/src/live/no_parameter.rs``: the server's sessions and the one-file lab alike;
+    the server rewrote it before), ``set_model`` by the server's check: for every lab model and every
+    own parameter of the lab's models the same words, key and values — another model's parameter named
+    with the models that have it, as ``pl.Pendulum`` words it. (In another case the two did-you-mean rules
+    may differ: the core's finds forcing_amplitude near AMPLITUDE, difflib does not.)"""
+    for model in MODEL_SPECS:
+        s = Session(resolve_scenario("rosette"))
+        apply(s, json.dumps({"type": "set_model", "model": model}))
+        mine = {p["name"] for p in own_params(model)}
+        for key in sorted({p["name"] for other in MODEL_SPECS for p in own_params(other)} - mine):
+            for sent in (key,):
+                with pytest.raises(CommandError) as core:
+                    apply(s, json.dumps({"type": "set_params", "params": {sent: 0.5}}))
+                with pytest.raises(CommandError) as server:
+                    parse_command(json.dumps({"type": "set_model", "model": model, "params": {sent: 0.5}}))
+                got, want = core.value, server.value
+                assert (str(got), got.key, got.values) == (str(want), want.key, want.values), (model, sent)
 
 
 def test_a_method_that_refuses_the_model_leaves_the_session_unchanged() -> None:

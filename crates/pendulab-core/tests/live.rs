@@ -254,3 +254,77 @@ fn set_method_names_the_nearest_method_as_the_core_does() {
         assert_eq!(refuse(sent).0, format!("unknown method {sent}; available: {available}"));
     }
 }
+
+/// The unknown method of set_method is keyed for a page (`unknown_method`, with the nearest name
+/// `unknown_method_hint`): it was the English words alone. A value that is not a string is not keyed.
+#[test]
+fn an_unknown_method_is_keyed_with_the_nearest_name() {
+    use pendulab_core::live::wire::unknown_method;
+    use serde_json::{json, Value};
+    let available = "rattle, rattle4, rattle6, rattle8, dop853, rkmk4, rk4, rk4_angles";
+    let (words, key) = unknown_method(&json!("RATTLE"));
+    assert_eq!(words, Method::from_name("RATTLE").unwrap_err().to_string());
+    let values = json!({"method": "RATTLE", "nearest": "rattle", "available": available});
+    assert_eq!(key, Some(("unknown_method_hint", values)));
+    let (words, key) = unknown_method(&json!("euler"));
+    assert_eq!(words, format!("unknown method \"euler\"; available: {available}"));
+    assert_eq!(key, Some(("unknown_method", json!({"method": "euler", "available": available}))));
+    assert_eq!(unknown_method(&json!(3)), (format!("unknown method 3; available: {available}"), None));
+    // a long name: abbreviated in the words, its middle elided in the value (as the server's)
+    let (words, key) = unknown_method(&Value::String("x".repeat(500)));
+    let shown = key.unwrap().1["method"].as_str().unwrap().to_string();
+    assert_eq!(shown, format!("{} ... {}", "x".repeat(37), "x".repeat(37)));
+    assert!(words.starts_with(&format!("unknown method \"{}...", "x".repeat(76))), "{words}");
+}
+
+/// A parameter of another lab model is refused as the Python layer words it
+/// (`pendulab.model.registry.Elsewhere`: `pl.Pendulum`, scenario files, the server's set_model), naming the
+/// models that have it, keyed `parameter_of_other_model(s)`; it was "the 'ideal' model has no parameter
+/// 'damping'" (the server rewrote it, the one-file lab showed it). Any other key keeps its refusal.
+#[test]
+fn another_models_parameter_names_the_models_that_have_it() {
+    let refuse = |model: &str, key: &str| {
+        let e = LivePendulum::new(model, 1.0, 1.0, 9.81, &[(key.to_string(), 0.1)]).unwrap_err();
+        let (k, values) = e.key().unwrap();
+        let values: Vec<(String, String)> = values.into_iter().map(|(n, v)| (n.to_string(), v)).collect();
+        (e.to_string(), k, values)
+    };
+    let value = |values: &[(String, String)], name: &str| {
+        values.iter().find(|(n, _)| n == name).map(|(_, v)| v.clone()).unwrap_or_default()
+    };
+    let (words, key, values) = refuse("ideal", "damping");
+    assert_eq!(
+        words,
+        "damping is a parameter of model 'damped' (and 'rotating', 'slewing', 'vibrating'), not of 'ideal'; \
+         its parameters: length, mass, g"
+    );
+    assert_eq!(key, "parameter_of_other_models");
+    assert_eq!(
+        (value(&values, "owner"), value(&values, "others")),
+        ("damped".into(), "rotating, slewing, vibrating".into())
+    );
+    assert_eq!((value(&values, "model"), value(&values, "name")), ("ideal".into(), "damping".into()));
+    assert_eq!(value(&values, "available"), "length, mass, g");
+    let (words, key, values) = refuse("damped", "latitude");
+    assert!(words.starts_with("latitude is a parameter of model 'rotating', not of 'damped'; its parameters: length, mass, g, damping, drag"), "{words}");
+    assert_eq!((key, value(&values, "others")), ("parameter_of_other_model", String::new()));
+    let (words, key, _) = refuse("spring", "restitution");
+    assert!(words.starts_with("restitution is a parameter of model 'string', not of 'spring'; "), "{words}");
+    assert_eq!(key, "parameter_of_other_model");
+    // another case: the hint first, then the models; the value named is the parameter's own name
+    let (words, key, values) = refuse("ideal", "DAMPING");
+    assert!(
+        words.starts_with(
+            "the 'ideal' model has no parameter 'DAMPING' (did you mean 'damping'?); damping is a parameter \
+             of model 'damped' (and "
+        ),
+        "{words}"
+    );
+    assert_eq!((key, value(&values, "name")), ("parameter_of_other_models", "damping".into()));
+    // no other model has it, or the model has one near it, or the crane: the refusals as they were
+    assert_eq!(refuse("ideal", "dampling").1, "no_parameters");
+    assert_eq!(refuse("damped", "lattitude").1, "unknown_parameter");
+    let (words, key, _) = refuse("crane", "damping");
+    assert!(words.starts_with("the crane has no parameter 'damping'; its parameters: "), "{words}");
+    assert_eq!(key, "unknown_parameter");
+}

@@ -78,8 +78,12 @@ impl Engine {
 /// A refusal's words and its message key and values (`None`: not keyed).
 type Keyed = (String, Option<(&'static str, Value)>);
 
-/// The message key of refused command `text` refused with `words` (one problem: no "; " in them).
+/// The message key of refused command `text` refused with `words`: an unknown method alone, else one
+/// problem (no "; " in the words).
 fn refusal_key(text: &str, words: &str) -> Option<(&'static str, Value)> {
+    if let Some(key) = crate::refusal::unknown_method_key(text, words) {
+        return Some(key);
+    }
     if words.contains("; ") {
         return None;
     }

@@ -6,9 +6,12 @@
 //! module finds the same one problem in the command's JSON (the core's `wire::parse_command` has already
 //! refused it, with the English words the notice keeps as its `message`). Limits are the lab's
 //! (`wire::LIMITS`, the server's `LIMITS`: inclusive, so never the `_strict` keys): length \[m\], mass
-//! \[kg\], g [m/s²], dt \[s\], time_scale (a ratio), step's n (steps).
+//! \[kg\], g [m/s²], dt \[s\], time_scale (a ratio), step's n (steps). And `set_method`'s unknown method
+//! ([`unknown_method_key`]), keyed as the server keys its own check of it: `unknown_method`,
+//! `unknown_method_hint` (method, available, and the nearest name).
 
-use crate::wire::LIMITS;
+use crate::wire::{unknown_method, LIMITS};
+use pendulab_core::Method;
 use serde_json::{json, Map, Value};
 
 /// The fields each command may carry, and the one it must carry (the server's pydantic models).
@@ -116,4 +119,20 @@ fn params_problems(o: &Map<String, Value>, problems: &mut Vec<Problem>) {
         }
         Some(_) => problems.push(None),
     }
+}
+
+/// The message key and values of the `set_method` command `text` refused with `words` for its `method`
+/// alone, a string that names no registered method (`wire::unknown_method`: `unknown_method`, or
+/// `unknown_method_hint` with the nearest name); `None` for any other refusal, or when another problem
+/// was found besides (the words are then more than that refusal's).
+pub fn unknown_method_key(text: &str, words: &str) -> Option<(&'static str, Value)> {
+    let Ok(Value::Object(o)) = serde_json::from_str::<Value>(text) else {
+        return None;
+    };
+    let v = o.get("method").filter(|_| o.get("type").and_then(Value::as_str) == Some("set_method"))?;
+    if v.as_str().is_none_or(|m| Method::from_name(m).is_ok()) {
+        return None; // not a string (not keyed), or a method: refused for something else
+    }
+    let (own, key) = unknown_method(v);
+    key.filter(|_| own == words)
 }

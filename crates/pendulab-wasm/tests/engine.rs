@@ -192,12 +192,17 @@ fn the_reduced_orbit_keeps_the_casimir_and_the_energy_plane() {
 /// The refusals carry the server's message keys and values (python/pendulab/server/messages.json; the
 /// server's pydantic check keys exactly one problem of these kinds), so the page translates them; two
 /// problems, or one of another kind, carry none (the page shows the English words), as on the server.
+/// The registered methods as a refusal lists them.
+fn methods() -> String {
+    pendulab_core::integrate::all().iter().map(|m| m.name).collect::<Vec<_>>().join(", ")
+}
+
 #[test]
 fn refusals_carry_the_servers_message_keys() {
     let messages_json: Value =
         serde_json::from_str(include_str!("../../../python/pendulab/server/messages.json")).unwrap();
     let mut e = Engine::new(CONFIG).unwrap();
-    let cases: [(&str, Option<(&str, Value)>); 16] = [
+    let cases: [(&str, Option<(&str, Value)>); 19] = [
         (
             r#"{"type": "set_params", "length": 5000}"#,
             Some(("too_large", serde_json::json!({"name": "length", "value": "5000", "limit": 1000.0}))),
@@ -243,8 +248,21 @@ fn refusals_carry_the_servers_message_keys() {
         // two problems, or a problem the server does not key: no key
         (r#"{"type": "set_params", "length": 5000, "mass": 0}"#, None),
         (r#"{"type": "set_params", "length": "a"}"#, None),
-        (r#"{"type": "set_method", "method": "euler"}"#, None),
+        (r#"{"type": "set_method", "method": "euler", "dt": 1}"#, None),
+        (r#"{"type": "set_method", "method": 3}"#, None),
         (r#"{"type": "step", "n": 2.5}"#, None),
+        // an unknown method, with the nearest name when there is one (was the English words alone)
+        (
+            r#"{"type": "set_method", "method": "euler"}"#,
+            Some(("unknown_method", serde_json::json!({"method": "euler", "available": methods()}))),
+        ),
+        (
+            r#"{"type": "set_method", "method": "RATTLE", "dt": 0.01}"#,
+            Some((
+                "unknown_method_hint",
+                serde_json::json!({"method": "RATTLE", "nearest": "rattle", "available": methods()}),
+            )),
+        ),
     ];
     let sent: Vec<String> = cases.iter().map(|(c, _)| c.to_string()).collect();
     let (notices, _) = messages(&e.tick(&sent, 0.0, &clock, 1.0));

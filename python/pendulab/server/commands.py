@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING, Annotated, Any, Literal, TypedDict
 from pydantic import BaseModel, ConfigDict, Field, TypeAdapter, ValidationError, model_validator
 
 from .._core import LiveSession, models
-from ..integrators import method_names, unknown_method
+from ..integrators import method_names, unknown_method, unknown_method_key
 from ..model import Pendulum, State
 from ..model.registry import Elsewhere, elsewhere
 from .live_models import OWN_STEPPER_MODELS
@@ -103,24 +103,6 @@ def _check_param_names(model: str, names: Any) -> None:
         if allowed:
             raise KeyedValueError(words, "unknown_parameter", **named, available=", ".join(allowed))
         raise KeyedValueError(words, "no_parameters", **named)
-
-
-def of_other_model(words: str, key: str | None, values: dict[str, Any] | None) -> tuple[str, str | None, Any]:
-    """A refusal of the core (``words``, ``key``, ``values``) as the page gets it: the core's refusal of one
-    parameter the model does not have (``unknown_parameter``, ``no_parameters``: ``set_params``) that
-    another lab model has is worded as ``set_model``'s, naming those models (``parameter_of_other_model``,
-    ``parameter_of_other_models``); any other refusal as it is."""
-    if key not in ("unknown_parameter", "no_parameters") or not isinstance(values, dict):
-        return words, key, values
-    model, name = values.get("model"), values.get("name")
-    if not (isinstance(model, str) and model in MODEL_SPECS and isinstance(name, str)):
-        return words, key, values  # the crane mode's parameters: the core's words
-    try:
-        _check_param_names(model, [name])
-    except KeyedValueError as e:
-        if e.key.startswith("parameter_of_other_model"):
-            return str(e), e.key, e.values
-    return words, key, values
 
 
 def _elsewhere(model: str, key: str) -> Elsewhere | None:
@@ -269,7 +251,8 @@ class SetMethod(_Command):
         if self.method is None and self.dt is None:
             raise ValueError("give method, dt (s) or both")
         if self.method is not None and self.method not in method_names():
-            raise ValueError(unknown_method(self.method))
+            key, values = unknown_method_key(self.method)
+            raise KeyedValueError(unknown_method(self.method), key, **values)
         return self
 
 

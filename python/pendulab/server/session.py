@@ -34,7 +34,6 @@ from .._core import IntegrationError, InvalidInputError
 from .._core import LiveSession as _LiveSession
 from ..model import Pendulum, State
 from ..scenario import ScenarioError
-from .commands import of_other_model
 from .crane_setup import CRANE_MODEL
 from .live_models import LabPendulum, SpringPendulum
 from .protocol import Command, CommandError, LoadScenario, decode_records, error_notice_of, own_params
@@ -105,22 +104,11 @@ def _message(m: bytes | str) -> Message:
 def _refused(e: Exception, command: str | None) -> CommandError:
     """A refusal of the core (or of a scenario file) as a :class:`CommandError` in one line, keyed as the
     core keyed it (``key`` and ``values`` of its exception: ``messages.json``) for a page that words it in
-    its language; a refusal the core did not key keeps its English words alone. Another lab model's
-    parameter is named with those models (:func:`.commands.of_other_model`)."""
-    words, key, values = of_other_model(
-        " ".join(str(e).split()), getattr(e, "key", None), getattr(e, "values", None)
-    )
-    return CommandError(words, command=command, key=key, values=values)
-
-
-def _notice(m: bytes | str) -> Message:
-    """A message of the core's tick; its refusal of another lab model's parameter worded as ``set_model``'s
-    (:func:`.commands.of_other_model`)."""
-    message = _message(m)
-    if isinstance(message, dict) and message.get("type") == "error" and "key" in message:
-        words, key, values = of_other_model(message["message"], message["key"], message.get("values"))
-        message |= {"message": words, "key": key, "values": values}
-    return message
+    its language; a refusal the core did not key keeps its English words alone. The core words another
+    lab model's parameter as ``set_model`` does here, naming those models (``parameter_of_other_model``,
+    ``crates/pendulab-core/src/live/no_parameter.rs``)."""
+    key, values = getattr(e, "key", None), getattr(e, "values", None)
+    return CommandError(" ".join(str(e).split()), command=command, key=key, values=values)
 
 
 class Session:
@@ -177,7 +165,7 @@ class Session:
             except CommandError as e:
                 refused.append(error_notice_of(e))
         raw, taken, debt = self.core.tick(items, elapsed, budget_seconds, dropped + len(refused), debt)
-        return refused + [_notice(m) for m in raw], passed[taken:], debt
+        return refused + [_message(m) for m in raw], passed[taken:], debt
 
     def first_messages(self) -> list[Message]:
         """What a new connection gets first: the status and the current state's frame."""

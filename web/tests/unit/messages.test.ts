@@ -160,6 +160,22 @@ describe('advice and rarer refusals in every language', () => {
     setLanguage('en');
   });
 
+  it('an unknown method, with the nearest name when there is one, in de and fr', () => {
+    // as the server's command check and the in-page engine key it (live::wire::unknown_method): English alone before
+    const n = (key: string, values: Record<string, string>) => ({ message: 'English', key, values });
+    const available = 'rattle, rattle4, dop853';
+    const hint = n('unknown_method_hint', { method: 'RATTLE', nearest: 'rattle', available });
+    const none = n('unknown_method', { method: 'euler', available });
+    expect(serverWords(hint)).toBe('unknown method RATTLE (did you mean rattle?); available: rattle, rattle4, dop853');
+    setLanguage('de');
+    expect(serverWords(hint)).toBe('unbekanntes Verfahren RATTLE (vielleicht rattle?); verfügbar: rattle, rattle4, dop853');
+    expect(serverWords(none)).toBe('unbekanntes Verfahren euler; verfügbar: rattle, rattle4, dop853');
+    setLanguage('fr');
+    expect(serverWords(hint)).toBe('méthode inconnue RATTLE (rattle peut-être ?) ; disponibles : rattle, rattle4, dop853');
+    expect(serverWords(none)).toBe('méthode inconnue euler ; disponibles : rattle, rattle4, dop853');
+    setLanguage('en');
+  });
+
   it('a method the model does not run (its reason for that model) and a crane command outside the crane mode', () => {
     // as the core sends them (crates/pendulab-core/src/live: method_refused, LiveSession::crane); plain English before
     const n = (key: string, values: Record<string, string>) => ({ message: 'English', key, values });

@@ -41,6 +41,12 @@ impl fmt::Display for Quoted<'_> {
 /// wrong case is never accepted. A name of more than 64 characters gets none (no option is near it; the
 /// distance stays cheap).
 pub fn did_you_mean<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) -> String {
+    nearest(name, options).map_or_else(String::new, |o| format!(" (did you mean {}?)", Quoted(o)))
+}
+
+/// The option [`did_you_mean`] names for `name`, or None: for a message key's value (`nearest`), which a
+/// page words in its language.
+pub fn nearest<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     let options: Vec<&str> = options.into_iter().collect();
     let lower = name.to_lowercase();
     let n = lower.chars().count();
@@ -54,7 +60,7 @@ pub fn did_you_mean<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) 
         near.min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2))).map(|(o, ..)| o)
     };
     let same_but_case = options.iter().find(|o| o.to_lowercase() == lower);
-    same_but_case.or_else(closest).map_or_else(String::new, |o| format!(" (did you mean {}?)", Quoted(o)))
+    same_but_case.or_else(closest).copied()
 }
 
 /// The end of a step size underflow's message: nothing, or for an unprojected run that had left TS²

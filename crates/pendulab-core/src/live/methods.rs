@@ -1,8 +1,9 @@
 //! Which methods a lab model runs, and the keyed refusal of the others (docs/web.md, "Languages").
 //! Matched over every [`Restricted`] model: a model added there must say which methods it runs and
-//! why not the others, at compile time; and a model added to the registry must say whether it is one.
+//! why not the others, at compile time; and a model added to the registry must say how the lab runs
+//! it ([`Kind`]), and so whether it is one.
 
-use super::crane::CRANE;
+use super::kinds::Kind;
 use crate::error::Error;
 
 /// The spring's methods and their orders: Störmer–Verlet (2) and its triple jump (4).
@@ -21,29 +22,17 @@ pub(super) enum Restricted {
     Crane,
 }
 
-/// Every model of the registry and the lab's crane, each with the methods it runs in the lab: every
-/// method of [`crate::Stepper`] (`None`: the rod models; `hoisted` and `sampled_pivot` run in no lab)
-/// or only some. No catch-all: a model added to the registry does not compile until it has its row
-/// here (the length below), and `every_model_has_its_row` checks the names.
-const MODELS: [(&str, Option<Restricted>); 10] = [
-    ("ideal", None),
-    ("damped", None),
-    ("rotating", None),
-    ("slewing", None),
-    ("vibrating", None),
-    ("hoisted", None),
-    ("sampled_pivot", None),
-    ("spring", Some(Restricted::Spring)),
-    ("string", Some(Restricted::String)),
-    (CRANE, Some(Restricted::Crane)),
-];
-const _: () = assert!(MODELS.len() == crate::model::registry::MODELS.len() + 1, "a model without its row");
-
 impl Restricted {
     /// The model of name `model` if it runs only some methods (None: a rod model, which runs every
-    /// method of [`crate::Stepper`], or a name that is no model).
+    /// method of [`crate::Stepper`], a model that runs in no lab, or a name that is no model), by how the
+    /// lab runs it ([`Kind`]: every model of the registry and the crane, no catch-all).
     pub(super) fn of(model: &str) -> Option<Self> {
-        MODELS.iter().find(|(name, _)| *name == model).and_then(|(_, which)| *which)
+        match Kind::of(model)? {
+            Kind::Rod | Kind::Offline => None,
+            Kind::Spring => Some(Self::Spring),
+            Kind::String => Some(Self::String),
+            Kind::Crane => Some(Self::Crane),
+        }
     }
 
     /// The methods it runs, by registry name.
@@ -99,15 +88,15 @@ pub(super) fn method_refused(
 mod tests {
     use super::*;
 
-    /// The rows of [`MODELS`] are the registry's models and the crane, each once.
+    /// The spring, the string and the crane run some methods; the rod models, the offline ones and a
+    /// name that is no model are not restricted.
     #[test]
-    fn every_model_has_its_row() {
-        let mut rows: Vec<&str> = MODELS.iter().map(|(name, _)| *name).collect();
-        let mut models: Vec<&str> = crate::model::registry::MODELS.iter().map(|m| m.name).collect();
-        models.push(CRANE);
-        rows.sort_unstable();
-        models.sort_unstable();
-        assert_eq!(rows, models);
-        assert_eq!(Restricted::of("no such model"), None);
+    fn restricted_models() {
+        assert_eq!(Restricted::of("spring"), Some(Restricted::Spring));
+        assert_eq!(Restricted::of("string"), Some(Restricted::String));
+        assert_eq!(Restricted::of(super::super::crane::CRANE), Some(Restricted::Crane));
+        for model in ["ideal", "damped", "hoisted", "no such model"] {
+            assert_eq!(Restricted::of(model), None, "{model}");
+        }
     }
 }

@@ -9,7 +9,9 @@
 //! - [`budget`]: [`budget::Clock`], [`budget::Budget`], [`budget::Slicer`].
 //! - [`frame`]: the record layout (`frame.json`) and the records of states.
 //! - [`pendulum`]: [`pendulum::LivePendulum`] (a lab model by registry name) and [`pendulum::LiveStepper`];
-//!   `methods`: [`methods_for`] a model and the keyed refusal of the others.
+//!   `kinds`: how the lab runs each model (one table of the registry's models and the crane);
+//!   `methods`: [`methods_for`] a model and the keyed refusal of the others; `no_parameter`: the
+//!   refusal of a parameter the model does not have (another lab model's: the models that have it).
 //! - [`error`]: [`error::LiveError`], the `error_x` column.
 //! - [`session`]: [`session::LiveSession`]: commands, pacing, ticks.
 //! - [`crane_plan`], [`crane`]: the crane mode (the trolley's shaped, acceleration-limited command, the
@@ -22,7 +24,9 @@ pub mod crane_plan;
 pub mod crane_wire;
 pub mod error;
 pub mod frame;
+mod kinds;
 mod methods;
+mod no_parameter;
 pub mod pendulum;
 pub mod session;
 pub mod wire;

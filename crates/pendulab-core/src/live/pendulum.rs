@@ -5,8 +5,11 @@
 
 use super::crane::{LiveCrane, CRANE, CRANE_PARAMS};
 use super::frame::{rod_record, Record};
+use super::kinds::Kind;
+pub use super::kinds::{live_models, OWN_STEPPER_MODELS};
 use super::methods::{method_refused, Restricted};
 pub use super::methods::{SPRING_ORDERS, STRING_METHODS};
+use super::no_parameter::no_parameter;
 use crate::elastic::{SpringStepper, SwingingSpring};
 use crate::error::{Error, Result};
 use crate::integrate::Method;
@@ -18,19 +21,8 @@ use crate::stepper::{SolveOptions, Stepper};
 use crate::string_run::{StringEvent, StringStepper};
 use crate::DVec3;
 
-/// The lab's models that step with their own core steppers, not [`Stepper`].
-pub const OWN_STEPPER_MODELS: [&str; 2] = ["spring", "string"];
 /// The method a session switches to when its method cannot run the spring or the string.
 pub const DEFAULT_METHOD: Method = Method::Rattle;
-
-/// The models a live session runs: the registry's `interactive` ones, the spring and the string.
-pub fn live_models() -> Vec<&'static str> {
-    crate::model::registry::MODELS
-        .iter()
-        .filter(|m| m.interactive || OWN_STEPPER_MODELS.contains(&m.name))
-        .map(|m| m.name)
-        .collect()
-}
 
 /// A pendulum of a lab model: the registry name, l, m, g ([`Params`]; for the spring l is the rest
 /// length l₀) and every own parameter of the model (the given ones, else the registry's defaults).
@@ -44,24 +36,21 @@ pub struct LivePendulum {
     pub own: Vec<(&'static str, f64)>,
 }
 
-/// The refusal of a parameter `key` that `model` does not have (`own`: the parameters it has besides
-/// length, mass, g), keyed `unknown_parameter` (`no_parameters` when it has none of its own).
-fn no_parameter(model: &'static str, key: &str, own: &[&str]) -> Error {
-    let name = if model == CRANE { "the crane".to_string() } else { format!("the '{model}' model") };
-    let mut values = vec![("model", model.to_string()), ("name", key.to_string())];
-    if own.is_empty() {
-        return Error::RefusedKeyed {
-            words: format!("{name} has no parameter '{key}'; it has none besides length, mass, g"),
-            key: "no_parameters",
-            values,
-        };
-    }
-    values.push(("available", own.join(", ")));
+/// The refusal of `model`, a model of the registry that runs only in `pendulab run` ([`Kind::Offline`]).
+fn not_lab_model(model: &str) -> Error {
+    let available = live_models().join(", ");
     Error::RefusedKeyed {
-        words: format!("{name} has no parameter '{key}'; its parameters: {}", own.join(", ")),
-        key: "unknown_parameter",
-        values,
+        words: format!(
+            "model {model:?} does not run in the lab (use pendulab run); the lab's models: {available}"
+        ),
+        key: "not_lab_model",
+        values: vec![("model", model.to_string()), ("available", available)],
     }
+}
+
+/// The refusal of a pendulum whose model runs in no lab, or is no model ([`Kind::of`] None).
+fn not_in_lab(model: &str) -> Error {
+    spec(model).map_or_else(|e| e, |_| not_lab_model(model))
 }
 
 impl LivePendulum {
@@ -73,15 +62,7 @@ impl LivePendulum {
         }
         let ms = spec(name)?;
         if !live_models().contains(&ms.name) {
-            let available = live_models().join(", ");
-            return Err(Error::RefusedKeyed {
-                words: format!(
-                    "model {:?} does not run in the lab (use pendulab run); the lab's models: {available}",
-                    ms.name
-                ),
-                key: "not_lab_model",
-                values: vec![("model", ms.name.to_string()), ("available", available)],
-            });
+            return Err(not_lab_model(ms.name));
         }
         let params = Params::new(length, mass, g)?;
         let mut own: Vec<(&'static str, f64)> = ms.params.iter().map(|p| (p.name, p.default)).collect();
@@ -113,12 +94,15 @@ impl LivePendulum {
         Ok(p)
     }
 
+    /// The model's own check of l, m, g and its parameters, by how the lab runs it ([`Kind`]: every
+    /// model of the registry and the crane, no catch-all).
     fn check(&self) -> Result<()> {
-        match self.model {
-            CRANE => super::crane::check(&self.params),
-            "spring" => self.spring().map(|_| ()),
-            "string" => StringPendulum::new(self.params, self.get("restitution")).map(|_| ()),
-            _ => self.rod_model().map(|_| ()),
+        match Kind::of(self.model) {
+            Some(Kind::Crane) => super::crane::check(&self.params),
+            Some(Kind::Spring) => self.spring().map(|_| ()),
+            Some(Kind::String) => StringPendulum::new(self.params, self.get("restitution")).map(|_| ()),
+            Some(Kind::Rod) => self.rod_model().map(|_| ()),
+            Some(Kind::Offline) | None => Err(not_in_lab(self.model)),
         }
     }
 
@@ -217,7 +201,8 @@ pub enum LiveStepper {
 
 impl LiveStepper {
     /// A stepper of `p` from `state` at `t0` \[s\] with `method`, step `dt` \[s\] (0 for `dop853`: automatic)
-    /// and, for `dop853`, `rtol`, `atol`.
+    /// and, for `dop853`, `rtol`, `atol`: the one of how the lab runs its model (`live::kinds`: every model
+    /// of the registry and the crane, no catch-all).
     pub fn new(
         p: &LivePendulum,
         state: State,
@@ -234,20 +219,23 @@ impl LiveStepper {
                 return Err(method_refused(which, p.model, name, &allowed));
             }
         }
-        Ok(match p.model {
-            CRANE => LiveStepper::Crane(Box::new(LiveCrane::new(p.params, &p.own, state, t0, rtol, atol)?)),
-            "spring" => {
+        Ok(match Kind::of(p.model) {
+            Some(Kind::Crane) => {
+                LiveStepper::Crane(Box::new(LiveCrane::new(p.params, &p.own, state, t0, rtol, atol)?))
+            }
+            Some(Kind::Spring) => {
                 let order = SPRING_ORDERS.iter().find(|(m, _)| *m == name).map_or(2, |(_, o)| *o);
                 LiveStepper::Spring(SpringStepper::new(p.spring()?, state, t0, dt, order)?)
             }
-            "string" => {
+            Some(Kind::String) => {
                 let model = StringPendulum::new(p.params, p.get("restitution"))?;
                 LiveStepper::String(Box::new(StringStepper::new(model, t0, state, method, dt)?))
             }
-            _ => {
+            Some(Kind::Rod) => {
                 let options = SolveOptions { method, dt, rtol, atol, project: true };
                 LiveStepper::Rod(Box::new(Stepper::new(p.rod_model()?, t0, state, &options)?))
             }
+            Some(Kind::Offline) | None => return Err(not_in_lab(p.model)),
         })
     }
 

@@ -8,7 +8,7 @@
 
 use super::pendulum::LivePendulum;
 use super::session::{Command, LiveSession, Setup, StateSpec};
-use crate::error::{did_you_mean, Shown};
+use crate::error::{nearest, Shown};
 use crate::string_run::{EventKind, StringEvent};
 use crate::{DVec3, Method};
 use serde_json::{json, Map, Value};
@@ -106,6 +106,37 @@ fn params(o: &Map<String, Value>, problems: &mut Vec<String>) -> Vec<(String, f6
             Vec::new()
         }
     }
+}
+
+/// The refusal of `set_method`'s `method` = `v`, no registered method: the words of
+/// [`crate::Error::UnknownMethod`] (the name as sent: JSON, abbreviated) with the nearest registered name
+/// ([`crate::error::did_you_mean`]), and for a string the message key and values a page words it by
+/// (python/pendulab/server/messages.json, as the server keys its own check of the command):
+/// `unknown_method` (method: the name, at most 80 characters; available) or
+/// `unknown_method_hint` (the same and nearest); a value that is not a string gets no key and no hint.
+pub fn unknown_method(v: &Value) -> (String, Option<(&'static str, Value)>) {
+    let names: Vec<_> = crate::integrate::all().iter().map(|m| m.name).collect();
+    let available = names.join(", ");
+    let Some(name) = v.as_str() else {
+        return (format!("unknown method {}; available: {available}", show(v)), None);
+    };
+    let near = nearest(name, names.iter().copied());
+    let hint = near.map_or_else(String::new, |o| format!(" (did you mean {o:?}?)"));
+    // over 80 characters, the middle elided as the server's value (`pendulab.validate.abbreviate`)
+    let chars: Vec<char> = name.chars().collect();
+    let shown = if chars.len() <= 80 {
+        name.to_string()
+    } else {
+        let (head, tail): (String, String) =
+            (chars[..37].iter().collect(), chars[chars.len() - 37..].iter().collect());
+        format!("{head} ... {tail}")
+    };
+    let words = format!("unknown method {}{hint}; available: {available}", show(v));
+    let key = match near {
+        Some(o) => ("unknown_method_hint", json!({ "method": shown, "nearest": o, "available": available })),
+        None => ("unknown_method", json!({ "method": shown, "available": available })),
+    };
+    (words, Some(key))
 }
 
 /// A command from one message, or what is wrong with it; `resolve` finds a scenario by name.
@@ -219,15 +250,7 @@ pub fn parse_command(
                 Some(v) => match v.as_str().map(Method::from_name) {
                     Some(Ok(m)) => Some(m),
                     _ => {
-                        // the words of Error::UnknownMethod, the name as sent (JSON, abbreviated)
-                        let names: Vec<_> = crate::integrate::all().iter().map(|m| m.name).collect();
-                        let hint =
-                            v.as_str().map_or_else(String::new, |s| did_you_mean(s, names.iter().copied()));
-                        problems.push(format!(
-                            "unknown method {}{hint}; available: {}",
-                            show(v),
-                            names.join(", ")
-                        ));
+                        problems.push(unknown_method(v).0);
                         None
                     }
                 },

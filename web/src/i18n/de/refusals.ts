@@ -35,6 +35,8 @@ export const DE_REFUSALS: RefusalsWords = {
   'server.method_not_for_spring': 'das Verfahren {method} kann das Modell {model} nicht rechnen (es verlässt die Kugel: rattle rechnet Störmer–Verlet (Ordnung 2), rattle4 dessen Triple-Jump-Komposition (Ordnung 4)); eines von {available} wählen',
   'server.method_not_for_string': 'das Verfahren {method} kann das Modell {model} nicht rechnen (seine straffen Phasen brauchen ein Verfahren mit festem Schritt, das TS² einhält); eines von {available} wählen',
   'server.method_not_for_crane': 'das Verfahren {method} kann das Modell {model} nicht rechnen (der Kranmodus rechnet seine Last mit dem Kran-Integrator, adaptivem DOP853 mit Projektion auf das Seil); {available} wählen',
+  'server.unknown_method': 'unbekanntes Verfahren {method}; verfügbar: {available}',
+  'server.unknown_method_hint': 'unbekanntes Verfahren {method} (vielleicht {nearest}?); verfügbar: {available}',
   'server.not_crane': 'nicht im Kranmodus (das Labor rechnet das Modell {model}): ihn zuerst mit der Schaltfläche „Kranmodus“ einschalten',
   'server.internal_error': 'interner Fehler des Servers (ein Fehler der Software: bitte melden); Details (englisch): {detail}',
   'server.busy': 'beschäftigt: {waiting} Berechnungen warten schon; gleich noch einmal versuchen',

@@ -34,6 +34,8 @@ export const EN_REFUSALS = {
   'server.method_not_for_spring': 'method {method} cannot run the {model} model (it leaves the sphere: rattle runs Störmer–Verlet (order 2), rattle4 its triple jump (order 4)); use one of {available}',
   'server.method_not_for_string': 'method {method} cannot run the {model} model (its taut phases need a fixed-step method that keeps TS²); use one of {available}',
   'server.method_not_for_crane': 'method {method} cannot run the {model} model (the crane mode steps its load with the crane integrator, adaptive DOP853 with projection onto the rope); use {available}',
+  'server.unknown_method': 'unknown method {method}; available: {available}',
+  'server.unknown_method_hint': 'unknown method {method} (did you mean {nearest}?); available: {available}',
   'server.not_crane': 'not in the crane mode (the lab runs the {model} model): switch it on first with the button “Crane mode”',
   'server.internal_error': 'internal error of the server (a fault of the software: please report it); details: {detail}',
   'server.busy': 'busy: {waiting} computations are waiting; try again in a moment',

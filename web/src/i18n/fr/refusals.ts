@@ -35,6 +35,8 @@ export const FR_REFUSALS: RefusalsWords = {
   'server.method_not_for_spring': 'la méthode {method} ne peut pas calculer le modèle {model} (il quitte la sphère : rattle y applique Störmer–Verlet (ordre 2), rattle4 sa composition triple jump (ordre 4)) ; choisir parmi {available}',
   'server.method_not_for_string': 'la méthode {method} ne peut pas calculer le modèle {model} (ses phases tendues demandent une méthode à pas fixe qui préserve TS²) ; choisir parmi {available}',
   'server.method_not_for_crane': 'la méthode {method} ne peut pas calculer le modèle {model} (le mode grue calcule sa charge avec l’intégrateur de grue, DOP853 adaptatif avec projection sur le câble) ; choisir {available}',
+  'server.unknown_method': 'méthode inconnue {method} ; disponibles : {available}',
+  'server.unknown_method_hint': 'méthode inconnue {method} ({nearest} peut-être ?) ; disponibles : {available}',
   'server.not_crane': 'pas en mode grue (le labo calcule le modèle {model}) : l’activer d’abord avec le bouton « Mode grue »',
   'server.internal_error': 'erreur interne du serveur (un défaut du logiciel : merci de le signaler) ; détails (en anglais) : {detail}',
   'server.busy': 'occupé : {waiting} calculs attendent déjà ; réessayer dans un instant',
