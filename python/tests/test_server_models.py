@@ -180,20 +180,59 @@ def test_the_cores_refusal_of_a_parameter_is_worded_as_set_models() -> None:
     (``crates/pendulab-core/src/live/no_parameter.rs``: the server's sessions and the one-file lab alike;
     the server rewrote it before), ``set_model`` by the server's check: for every lab model and every
     own parameter of the lab's models the same words, key and values — another model's parameter named
-    with the models that have it, as ``pl.Pendulum`` words it. (In another case the two did-you-mean rules
-    may differ: the core's finds forcing_amplitude near AMPLITUDE, difflib does not.)"""
+    with the models that have it, as ``pl.Pendulum`` words it; in its case, in upper case and for keys no
+    model has (the two decide "near one of the model's own parameters" by one rule, difflib's:
+    ``error::close_match`` in the core)."""
     for model in MODEL_SPECS:
         s = Session(resolve_scenario("rosette"))
         apply(s, json.dumps({"type": "set_model", "model": model}))
         mine = {p["name"] for p in own_params(model)}
         for key in sorted({p["name"] for other in MODEL_SPECS for p in own_params(other)} - mine):
-            for sent in (key,):
+            for sent in (key, key.upper(), "lenght", "dampnig", "Frame_Rate", "zzzz"):
                 with pytest.raises(CommandError) as core:
                     apply(s, json.dumps({"type": "set_params", "params": {sent: 0.5}}))
                 with pytest.raises(CommandError) as server:
                     parse_command(json.dumps({"type": "set_model", "model": model, "params": {sent: 0.5}}))
                 got, want = core.value, server.value
                 assert (str(got), got.key, got.values) == (str(want), want.key, want.values), (model, sent)
+
+
+@pytest.mark.parametrize(
+    ("key", "refusal", "words"),
+    [
+        # near friction by difflib: the hint of pl.Pendulum, so not the string's (the core named it)
+        ("restitution", "unknown_parameter", "the 'damped' model has no parameter 'restitution'; "),
+        # near no own parameter by difflib: the vibrating pendulum's (the core found forcing_amplitude)
+        (
+            "AMPLITUDE",
+            "parameter_of_other_model",
+            "the 'damped' model has no parameter 'AMPLITUDE' (did you mean 'amplitude'?); amplitude is a "
+            "parameter of model 'vibrating', not of 'damped'; ",
+        ),
+        ("lenght", "unknown_parameter", "the 'damped' model has no parameter 'lenght'; "),
+        (
+            "stiffness",
+            "parameter_of_other_model",
+            "stiffness is a parameter of model 'spring', not of 'damped'; ",
+        ),
+    ],
+)
+def test_near_one_of_the_models_own_parameters_by_one_rule(key: str, refusal: str, words: str) -> None:
+    """The lab's engine (``set_params``: crates/pendulab-core/tests/live.rs checks the same cases) and
+    ``pl.Pendulum`` decide alike whether a key is near one of the model's own parameters (then only that
+    hint) or another model's parameter (then that model named): ``validate.did_you_mean``'s rule."""
+    s = Session(resolve_scenario("rosette"))
+    apply(s, json.dumps({"type": "set_model", "model": "damped"}))
+    with pytest.raises(CommandError) as core:
+        apply(s, json.dumps({"type": "set_params", "params": {key: 0.5}}))
+    assert str(core.value).startswith(words + "its parameters: "), str(core.value)
+    assert core.value.key == refusal
+    with pytest.raises(InvalidInputError) as python:
+        pl.Pendulum(model="damped", **{key: 0.5})
+    named = refusal.startswith("parameter_of")
+    assert ("is a parameter of model" in str(python.value)) is named, python.value
+    if named:
+        assert f"invalid parameter {key} = 0.5: {words}its parameters: " in str(python.value), python.value
 
 
 def test_a_method_that_refuses_the_model_leaves_the_session_unchanged() -> None:

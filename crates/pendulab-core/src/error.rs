@@ -4,7 +4,7 @@
 use thiserror::Error;
 
 mod hint;
-pub use hint::{did_you_mean, nearest, Quoted};
+pub use hint::{close_match, did_you_mean, nearest, Quoted};
 
 /// Everything that can go wrong in `pendulab-core`.
 #[derive(Debug, Clone, PartialEq, Error)]

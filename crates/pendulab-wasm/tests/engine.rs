@@ -67,10 +67,10 @@ fn commands_are_checked_as_the_server_checks_them() {
     assert_eq!(errors.len(), sent.len(), "{errors:?}");
     for (got, want) in errors.iter().zip([
         "not JSON",
-        "unknown command type \"fly\"",
+        "unknown command type 'fly'",
         "unknown key 'extra'",
         "length = 5000: must be between 0.001 and 1000 m",
-        "unknown method \"euler\"",
+        "unknown method 'euler'",
         "unknown scenario \"nowhere\"; available: rosette, damped_swing",
         "n = 0: an integer from 1 to 100000",
         "invalid damping",

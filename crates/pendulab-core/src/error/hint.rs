@@ -1,9 +1,14 @@
 //! The hint of an unknown name: the nearest of the names allowed ([`did_you_mean`]), by edit distance
-//! (the `strsim` crate); [`Quoted`], a name in a message quoted as the Python layer quotes it; and
-//! [`drift_advice`], what a step size underflow of an unprojected run says to do (T-2.4).
+//! (the `strsim` crate); [`close_match`], the Python layer's rule (difflib's), which decides for the lab
+//! whether a key is near one of a model's own parameters; [`Quoted`], a name in a message quoted as the
+//! Python layer quotes it; and [`drift_advice`], what a step size underflow of an unprojected run says
+//! to do (T-2.4).
 
 use super::Shown;
 use std::fmt;
+
+mod close;
+pub use close::close_match;
 
 /// A name in a message, quoted as Python's `repr` quotes a string — `'x'`, or `"it's"` for a name
 /// with a single quote and no double one; the quote, backslash and control characters escaped — so

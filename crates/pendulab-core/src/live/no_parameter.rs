@@ -7,7 +7,7 @@
 
 use super::crane::CRANE;
 use super::kinds::live_models;
-use crate::error::{nearest, Error};
+use crate::error::{close_match, Error, Quoted};
 use crate::model::registry::spec;
 
 /// The refusal of a parameter `key` that `model` does not have (`own`: the parameters it has besides
@@ -17,33 +17,35 @@ pub(super) fn no_parameter(model: &'static str, key: &str, own: &[&str]) -> Erro
     if let Some(refusal) = elsewhere(model, key, own) {
         return refusal;
     }
-    let name = if model == CRANE { "the crane".to_string() } else { format!("the '{model}' model") };
+    let name = if model == CRANE { "the crane".to_string() } else { format!("the {} model", Quoted(model)) };
     let mut values = vec![("model", model.to_string()), ("name", key.to_string())];
     if own.is_empty() {
         return Error::RefusedKeyed {
-            words: format!("{name} has no parameter '{key}'; it has none besides length, mass, g"),
+            words: format!("{name} has no parameter {}; it has none besides length, mass, g", Quoted(key)),
             key: "no_parameters",
             values,
         };
     }
     values.push(("available", own.join(", ")));
     Error::RefusedKeyed {
-        words: format!("{name} has no parameter '{key}'; its parameters: {}", own.join(", ")),
+        words: format!("{name} has no parameter {}; its parameters: {}", Quoted(key), own.join(", ")),
         key: "unknown_parameter",
         values,
     }
 }
 
 /// The refusal of `key` for the lab model `model` (own parameters `own`) when `key` is, the same but for
-/// case, a parameter of other lab models and near none of `own` (then [`crate::error::did_you_mean`]'s
-/// hint says more): `damping is a parameter of model 'damped' (and 'rotating', …), not of 'ideal'; its
-/// parameters: length, mass, g`, after `the 'ideal' model has no parameter 'DAMPING' (did you mean
+/// case, a parameter of other lab models and near none of `own` by the Python layer's rule
+/// ([`crate::error::close_match`], as `registry.elsewhere` decides with `validate.did_you_mean`: so
+/// `restitution` on `damped` is near `friction`, and `AMPLITUDE` near none, the vibrating pendulum's):
+/// `damping is a parameter of model 'damped' (and 'rotating', …), not of 'ideal'; its parameters:
+/// length, mass, g`, after `the 'ideal' model has no parameter 'DAMPING' (did you mean
 /// 'damping'?); ` for a key in another case. Keyed `parameter_of_other_model` (one model has it) or
 /// `parameter_of_other_models` (values model, name: the parameter's own name, owner: the first model in
 /// the registry's order, others: the further ones, available: every parameter of `model`). None for the
 /// crane (its parameters are no model's) and for any other key.
 fn elsewhere(model: &'static str, key: &str, own: &[&str]) -> Option<Error> {
-    if model == CRANE || nearest(key, own.iter().copied()).is_some() {
+    if model == CRANE || close_match(key, own.iter().copied()).is_some() {
         return None;
     }
     let lab: Vec<_> = live_models().into_iter().filter_map(|m| spec(m).ok()).collect();
@@ -55,11 +57,17 @@ fn elsewhere(model: &'static str, key: &str, own: &[&str]) -> Option<Error> {
         .map(|m| m.name)
         .collect();
     let (owner, others) = owners.split_first()?;
-    let quoted: Vec<String> = others.iter().map(|m| format!("'{m}'")).collect();
+    let quoted: Vec<String> = others.iter().map(|m| Quoted(m).to_string()).collect();
     let also = if others.is_empty() { String::new() } else { format!(" (and {})", quoted.join(", ")) };
-    let mut words = format!("{name} is a parameter of model '{owner}'{also}, not of '{model}'");
+    let mut words =
+        format!("{name} is a parameter of model {}{also}, not of {}", Quoted(owner), Quoted(model));
     if key != name {
-        words = format!("the '{model}' model has no parameter '{key}' (did you mean '{name}'?); {words}");
+        words = format!(
+            "the {} model has no parameter {} (did you mean {}?); {words}",
+            Quoted(model),
+            Quoted(key),
+            Quoted(name)
+        );
     }
     let available = ["length", "mass", "g"].iter().chain(own).copied().collect::<Vec<_>>().join(", ");
     let mut values = vec![

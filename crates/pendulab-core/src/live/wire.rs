@@ -8,7 +8,7 @@
 
 use super::pendulum::LivePendulum;
 use super::session::{Command, LiveSession, Setup, StateSpec};
-use crate::error::{nearest, Shown};
+use crate::error::{did_you_mean, nearest, Quoted, Shown};
 use crate::string_run::{EventKind, StringEvent};
 use crate::{DVec3, Method};
 use serde_json::{json, Map, Value};
@@ -45,8 +45,10 @@ pub use super::session::{DEFAULT_ATOL, DEFAULT_RTOL};
 /// A refused message: its text and the command type when it could be read.
 pub type Refusal = (String, Option<&'static str>);
 
+/// A value of a command in a refusal: a string quoted as the Python layer quotes it ([`Quoted`]: `'RATTLE'`,
+/// as the server and the core's own errors say), any other value as JSON; at most 80 characters.
 fn show(v: &Value) -> String {
-    let t = v.to_string();
+    let t = v.as_str().map_or_else(|| v.to_string(), |s| Quoted(s).to_string());
     if t.chars().count() <= 80 {
         t
     } else {
@@ -109,10 +111,10 @@ fn params(o: &Map<String, Value>, problems: &mut Vec<String>) -> Vec<(String, f6
 }
 
 /// The refusal of `set_method`'s `method` = `v`, no registered method: the words of
-/// [`crate::Error::UnknownMethod`] (the name as sent: JSON, abbreviated) with the nearest registered name
-/// ([`crate::error::did_you_mean`]), and for a string the message key and values a page words it by
-/// (python/pendulab/server/messages.json, as the server keys its own check of the command):
-/// `unknown_method` (method: the name, at most 80 characters; available) or
+/// [`crate::Error::UnknownMethod`] (the name [`Quoted`], abbreviated; another value as JSON) with the
+/// nearest registered name ([`crate::error::did_you_mean`]), and for a string the message key and values
+/// a page words it by (python/pendulab/server/messages.json, as the server keys its own check of the
+/// command): `unknown_method` (method: the name, at most 80 characters; available) or
 /// `unknown_method_hint` (the same and nearest); a value that is not a string gets no key and no hint.
 pub fn unknown_method(v: &Value) -> (String, Option<(&'static str, Value)>) {
     let names: Vec<_> = crate::integrate::all().iter().map(|m| m.name).collect();
@@ -121,7 +123,7 @@ pub fn unknown_method(v: &Value) -> (String, Option<(&'static str, Value)>) {
         return (format!("unknown method {}; available: {available}", show(v)), None);
     };
     let near = nearest(name, names.iter().copied());
-    let hint = near.map_or_else(String::new, |o| format!(" (did you mean {o:?}?)"));
+    let hint = did_you_mean(name, names.iter().copied());
     // over 80 characters, the middle elided as the server's value (`pendulab.validate.abbreviate`)
     let chars: Vec<char> = name.chars().collect();
     let shown = if chars.len() <= 80 {
