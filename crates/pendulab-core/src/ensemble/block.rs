@@ -17,7 +17,7 @@
 //! | level (registers) | unfused: tile 4 / 8 / 16 | fused: tile 4 / 8 / 16 | tile chosen |
 //! |---|---|---|---|
 //! | x86-64-v4 (32 zmm, 8 lanes) | – / – / **2.8–3.4** | – / – / **1.9** | 16 (fused: 24) |
-//! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / **3.6** / 2.7 or 4.1 | 8 |
+//! | x86-64-v3 (16 ymm, 4 lanes) | 7.2 / **3.7** / 3.8–4.7 | – / 3.6 / **2.7 or 4.1** | 8 (fused: 16) |
 //! | baseline SSE2 (16 xmm, 2 lanes) | **7.5** / 13.3 / 13.5 | 80 / 81 / 81 (software fma) | 4 |
 //!
 //! The table's v3 row was measured on an AMD Zen 4 restricted to AVX2 (`isa::set_max_level`): there
@@ -29,8 +29,20 @@
 //! 3.9–4.2 → 3.35–3.5, damping per trajectory 4.6–4.7 → 3.9–4.1; every parameter a row 4.7–4.9 →
 //! 7.4–7.5, its rows spill, `per_lane_tile_lanes`). But through `pl.simulate_ensemble` (one thread,
 //! 4096 × 10³ steps, best of 9 per process, 9 processes per build alternating) the 16-lane build ran
-//! at 3.4 ns in 2 processes and at 4.8–5.6 in the other 7, where the 8-lane one ran at 4.1–5.1: the
-//! same two speeds by process as on the Zen 4, so 8 stays. Unfused, 8 is the faster in the example
+//! at 3.4 ns in 2 processes and at 4.8–5.6 in the other 7, where the 8-lane one ran at 4.1–5.1, and
+//! 8 was kept. Measured again on the same Zen 3 host (2026-11-28, 23:34–23:36 UTC, load 12–15 from
+//! other users' builds) with both widths in one binary, the width chosen at every call (an experiment
+//! build, not kept) and the two alternated call by call in each process (CPU time, 4096 × 10³ steps,
+//! median of 9 calls each): one thread, one pendulum, 16 lanes at 3.38–3.49 ns against 4.17–4.31 at
+//! 8 in 10 processes of 10 (ratio 0.805–0.821); lengths per trajectory 3.48–3.50 against 3.96 (0.88,
+//! 3 of 3), one damping rate 3.91–4.02 against 4.58–4.65 (0.85–0.87, 3 of 3), damping per trajectory
+//! 4.02–4.14 against 4.56–4.59 (0.88–0.90, 3 of 3); two threads, one pendulum, 0.82–0.93 (4 of 4).
+//! No process ran 16 lanes slower: the two speeds by process did not come back when the widths were
+//! compared in the same process and minute, so they came from when and beside whom each process
+//! ran (a shared virtual machine: docs/performance.md, "The host's own speed moved"), not from the
+//! process's addresses (the starts' array was at 0, 16, 32 or 48 mod 64 in fast processes alike).
+//! So the fused arithmetic takes 16 lanes at x86-64-v3 (the build with 16 as its constant was not
+//! timed again process by process). Unfused, 8 is the faster in the example
 //! too (4.6–5.3 ns at 8 lanes, 4.7–5.6 at 16). Before the frames were aligned the unfused 8-lane
 //! tile measured 6.6–6.8 there (its spills straddling cache lines), and 4 lanes were taken.
 //!
@@ -70,14 +82,15 @@ enum Sharing {
 }
 
 /// Lanes stepped together in registers at instruction-set level `level` with `arithmetic` (module
-/// doc: 24 fused and 16 unfused at x86-64-v4, 8 at x86-64-v3, 4 at the baseline), each a divisor
-/// of [`LANES`]. A block whose every parameter is a row takes
+/// doc: 24 fused and 16 unfused at x86-64-v4, 16 fused and 8 unfused at x86-64-v3, 4 at the
+/// baseline), each a divisor of [`LANES`]. A block whose every parameter is a row takes
 /// [`per_lane_tile_lanes`] instead. Only the speed depends on it, never a bit of the results.
 pub fn tile_lanes(level: Level, arithmetic: Arithmetic) -> usize {
     match (level, arithmetic) {
         (Level::V4, Arithmetic::Fused) => 24,
         (Level::V4, Arithmetic::Unfused) => 16,
-        (Level::V3, _) => 8,
+        (Level::V3, Arithmetic::Fused) => 16,
+        (Level::V3, Arithmetic::Unfused) => 8,
         (Level::Baseline, _) => 4,
     }
 }
