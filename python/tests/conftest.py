@@ -64,6 +64,25 @@ def ctrl_c_after(
     return subprocess.CompletedProcess(cmd, proc.returncode, out, err)
 
 
+def fit_run_clock(monkeypatch: pytest.MonkeyPatch, step: float) -> list[int]:
+    """Makes the fit's clock (``search.wall_clock``) the test's: it reads ``step`` [s] per model run
+    (``Problem.residuals`` call) and nothing else, so a time limit passes at a fixed run whatever the
+    machine's load. Returns the run counter, a one-element list updated as the fit runs."""
+    from pendulab.fitting import search
+    from pendulab.fitting.problem import Problem
+
+    runs = [0]
+    residuals = Problem.residuals
+
+    def counted(self: Problem, *args: Any, **kwargs: Any) -> Any:
+        runs[0] += 1
+        return residuals(self, *args, **kwargs)
+
+    monkeypatch.setattr(Problem, "residuals", counted)
+    monkeypatch.setattr(search, "wall_clock", lambda: step * runs[0])
+    return runs
+
+
 def page_template(lang: str, key: str) -> str:
     """The page's words of message ``key`` in ``lang`` as its table ``web/src/i18n/<lang>/refusals.ts``
     writes them, placeholders (``{name}``) unfilled."""

@@ -9,16 +9,15 @@ from __future__ import annotations
 import math
 import time
 import warnings
-from collections.abc import Mapping
 from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import fit_run_clock
 from scipy.integrate import solve_ivp
 
 import pendulab as pl
 from pendulab.fitting.identify import analyse
-from pendulab.model import FloatArray
 
 
 def cartesian(
@@ -310,20 +309,7 @@ def test_the_time_limit_stops_the_fit_after_a_bounded_number_of_runs(monkeypatch
     passes at the 200th run whatever the machine's load, and the fit must stop within a fixed number
     of runs after it (the late Jacobian: one sensitivity run, its cheap re-evaluations of the
     predictions, which this clock counts too, and the run at the values reached)."""
-    from pendulab.fitting import search
-    from pendulab.fitting.problem import Motion, Problem
-
-    runs = [0]
-    residuals = Problem.residuals
-
-    def counted(
-        self: Problem, values: Mapping[str, float], sigma: Mapping[str, float], motion: Motion | None = None
-    ) -> FloatArray:
-        runs[0] += 1
-        return residuals(self, values, sigma, motion)
-
-    monkeypatch.setattr(Problem, "residuals", counted)
-    monkeypatch.setattr(search, "wall_clock", lambda: 0.005 * runs[0])
+    runs = fit_run_clock(monkeypatch, 0.005)
     path = Path(__file__).resolve().parents[2] / "testdata" / "real" / "multiarm_single_large_decay.csv"
     d = np.loadtxt(path, delimiter=",", comments="#", skiprows=4)
     with warnings.catch_warnings():

@@ -10,17 +10,15 @@ from __future__ import annotations
 
 import math
 import warnings
-from collections.abc import Mapping
 
 import numpy as np
 import pytest
+from conftest import fit_run_clock
 from scipy.integrate import solve_ivp
 
 import pendulab as pl
 from pendulab.fitting import search
 from pendulab.fitting.inference import LATE_REASON
-from pendulab.fitting.problem import Motion, Problem
-from pendulab.model import FloatArray
 
 K_OVER_M, REST, G = 4.0 * 9.81, 0.75, 9.81  # 1/s², m, m/s²: the 1:1:2 resonance of a 1 m hang
 
@@ -43,17 +41,7 @@ def _spring() -> tuple[np.ndarray, np.ndarray]:
 def _fit(monkeypatch: pytest.MonkeyPatch, step: float, limit: float) -> tuple[pl.FitResult, int, int]:
     """The spring fitted under ``limit`` [s] on a clock that advances ``step`` [s] per model run: the
     result, the runs made, and the run at which the clock passed the limit."""
-    runs = [0]
-    residuals = Problem.residuals
-
-    def counted(
-        self: Problem, values: Mapping[str, float], sigma: Mapping[str, float], motion: Motion | None = None
-    ) -> FloatArray:
-        runs[0] += 1
-        return residuals(self, values, sigma, motion)
-
-    monkeypatch.setattr(Problem, "residuals", counted)
-    monkeypatch.setattr(search, "wall_clock", lambda: step * runs[0])
+    runs = fit_run_clock(monkeypatch, step)
     t, x = _spring()
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
