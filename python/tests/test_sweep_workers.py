@@ -319,9 +319,11 @@ def test_asking_many_dask_workers_takes_no_thread_per_worker(
     cluster: Any, monkeypatch: pytest.MonkeyPatch
 ) -> None:
     """A cluster of 500 workers (the real client, its scheduler's answers made up: each worker answers
-    after 20 ms, three hang for 3 s): every worker is asked at once, without a thread per worker (before,
+    after 20 ms, three hang for 6 s): every worker is asked at once, without a thread per worker (before,
     500 threads, one ``Client.run`` each), the answers all come back, and the hung ones are named after
-    the timeout (0.5 s) without waiting for them."""
+    the timeout (1.5 s: 75 answer times, so that a loaded machine still answers the others in time; it
+    failed once at 0.5 s with 448 of 500 late while a browser test ran beside it) without waiting for
+    them."""
     workers = [f"tcp://10.0.{k // 200}.{k % 200}:40211" for k in range(500)]
     hung = {workers[7], workers[123], workers[321]}
     peak = 0
@@ -329,7 +331,7 @@ def test_asking_many_dask_workers_takes_no_thread_per_worker(
     async def answer(function: Any, *args: Any, workers: list[str], **kwargs: Any) -> dict[str, Any]:
         nonlocal peak
         peak = max(peak, threading.active_count())
-        await asyncio.sleep(3.0 if hung & set(workers) else 0.02)
+        await asyncio.sleep(6.0 if hung & set(workers) else 0.02)
         return {addr: function(*args) for addr in workers}
 
     monkeypatch.setattr(cluster, "nthreads", lambda: dict.fromkeys(workers, 1))
@@ -338,12 +340,12 @@ def test_asking_many_dask_workers_takes_no_thread_per_worker(
     before = threading.active_count()
     t0 = time.perf_counter()
     with pytest.raises(TimeoutError) as e:
-        runner.ask(abs, -2, timeout=0.5)
+        runner.ask(abs, -2, timeout=1.5)
     took = time.perf_counter() - t0
     assert str(e.value).startswith(
-        f"the Dask worker {workers[123]} (and 2 others of the cluster's 500) did not answer within 0.5 s"
+        f"the Dask worker {workers[123]} (and 2 others of the cluster's 500) did not answer within 1.5 s"
     ), str(e.value)
-    assert took < 2.0 and peak <= before + 1, (took, peak, before)
+    assert took < 4.0 and peak <= before + 1, (took, peak, before)
     hung.clear()
     assert runner.ask(abs, -2, timeout=5.0) == dict.fromkeys(workers, 2)
     assert peak <= before + 1, (peak, before)
