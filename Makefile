@@ -42,8 +42,12 @@ $(VENV)/.docs-deps: $(VENV)/.deps
 # The core is compiled for the baseline of the CPU architecture (x86-64: SSE2); its hot loops pick
 # AVX2 + FMA or AVX-512 at run time (crates/pendulab-core/src/isa.rs), so a build runs on any CPU of its
 # kind. RUSTFLAGS="-C target-cpu=native" make build gives a build for this machine only (docs/performance.md).
+# BUILD_PROFILE: the Cargo profile, release (link-time optimised) for the lab and the benchmarks; `make test`
+# builds with test-opt (Cargo.toml: the same numbers bit for bit, no link-time optimisation), which the Rust
+# tests then reuse; the wheel that test-wheel installs is a release build.
+BUILD_PROFILE ?= release
 build: venv
-	VIRTUAL_ENV=$(CURDIR)/$(VENV) $(VENV)/bin/maturin develop --release --quiet -m python/Cargo.toml
+	VIRTUAL_ENV=$(CURDIR)/$(VENV) $(VENV)/bin/maturin develop --profile $(BUILD_PROFILE) --quiet -m python/Cargo.toml
 	@echo "built: run '. $(VENV)/bin/activate' for 'pendulab' and 'import pendulab' in this shell, or use $(VENV)/bin/pendulab"
 
 # A wheel for other machines and an sdist, in dist/ (README "Install"): abi3 (CPython >= 3.11),
@@ -125,8 +129,11 @@ fmt: venv
 	$(VENV)/bin/ruff format python bench testdata/generate tools docs/gallery
 	$(VENV)/bin/ruff check --fix python bench testdata/generate tools docs/gallery
 
+# The core's tests (its unit tests, and tests/suite.rs: every file of crates/pendulab-core/tests as one test
+# binary) in the test-opt profile: optimised like release, without its link-time optimisation (Cargo.toml).
+# --tests: the examples are not built here (clippy --all-targets in lint checks that they compile).
 test-rust:
-	cargo test --release -p pendulab-core
+	cargo test --profile test-opt -p pendulab-core --tests
 
 # The lab's engine as WebAssembly (crates/pendulab-wasm, plain C ABI; docs/lab.md): needs the target,
 # `rustup target add wasm32-unknown-unknown` (.ci/run installs it). Two builds of the same code: with
@@ -144,18 +151,21 @@ wasm:
 	@rustc --print target-libdir --target wasm32-unknown-unknown >/dev/null 2>&1 && \
 		test -d "$$(rustc --print target-libdir --target wasm32-unknown-unknown)" || { \
 		echo "error: the Rust target wasm32-unknown-unknown is not installed: run 'rustup target add wasm32-unknown-unknown'" >&2; exit 1; }
-	cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm
-	CARGO_TARGET_DIR=$(CURDIR)/target/wasm-simd128 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+simd128" \
-		cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm
+	@# the two builds side by side (each links the whole engine in one codegen unit: one core each)
+	cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm & plain=$$!; \
+		CARGO_TARGET_DIR=$(CURDIR)/target/wasm-simd128 CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="-C target-feature=+simd128" \
+		cargo build --profile wasm --target wasm32-unknown-unknown -p pendulab-wasm & simd=$$!; \
+		wait $$plain; a=$$?; wait $$simd; b=$$?; test $$a -eq 0 && test $$b -eq 0
 	@mkdir -p target/wasm
-	@set -e; if [ -n "$(WASM_OPT)" ]; then how="$$($(WASM_OPT) --version) -O3"; else how=unoptimised; fi; \
+	@set -e; pids=""; if [ -n "$(WASM_OPT)" ]; then how="$$($(WASM_OPT) --version) -O3"; else how=unoptimised; fi; \
 		for pair in target/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm:$(WASM) \
 		target/wasm-simd128/wasm32-unknown-unknown/wasm/pendulab_wasm.wasm:$(WASM_SIMD); do \
 		src=$${pair%%:*}; dst=$${pair#*:}; \
 		if [ "$$dst" -nt "$$src" ] && [ "$$(cat $$dst.opt 2>/dev/null)" = "$$how" ]; then continue; fi; \
-		if [ -n "$(WASM_OPT)" ]; then echo "wasm-opt -O3 $$src -> $$dst"; $(WASM_OPT) -O3 $$src -o $$dst.tmp; \
+		( set -e; if [ -n "$(WASM_OPT)" ]; then echo "wasm-opt -O3 $$src -> $$dst"; $(WASM_OPT) -O3 $$src -o $$dst.tmp; \
 		else echo "warning: wasm-opt not found (apt-get install binaryen): $$dst is not optimised (slower)" >&2; cp $$src $$dst.tmp; fi; \
-		rm -f $$dst.opt; mv $$dst.tmp $$dst; echo "$$how" > $$dst.opt; done
+		rm -f $$dst.opt; mv $$dst.tmp $$dst; echo "$$how" > $$dst.opt ) & pids="$$pids $$!"; done; \
+		for pid in $$pids; do wait $$pid; done
 	@ls -l $(WASM) $(WASM_SIMD)
 
 # The lab with nothing to install (docs/lab.md): one HTML file with the engine (.wasm: raw DEFLATE, base64), its Web
@@ -203,14 +213,14 @@ bench-wasm: wasm
 # The engine's tests: natively (cargo test), then the .wasm in node against the native build's
 # trajectories of every lab model and method (bit for bit, or 1e-12 l where libm differs).
 test-wasm: wasm
-	cargo test --release -p pendulab-wasm
-	cargo build --release -p pendulab-wasm --example trajectory
-	node crates/pendulab-wasm/tests/parity.mjs $(WASM_SIMD) target/release/examples/trajectory
-	node crates/pendulab-wasm/tests/parity.mjs $(WASM) target/release/examples/trajectory
+	cargo test --profile test-opt -p pendulab-wasm
+	cargo build --profile test-opt -p pendulab-wasm --example trajectory
+	node crates/pendulab-wasm/tests/parity.mjs $(WASM_SIMD) target/test-opt/examples/trajectory
+	node crates/pendulab-wasm/tests/parity.mjs $(WASM) target/test-opt/examples/trajectory
 
 # PYTEST_ARGS: `make test` leaves out the tour's runs in .venv (test-tour-wheel runs them as a user would).
 test-python: build
-	$(VENV)/bin/pytest python/tests -q $(PYTEST_ARGS)
+	$(VENV)/bin/pytest python/tests -q --durations=15 $(PYTEST_ARGS)
 
 # The guided tour alone (docs/tour/*.ipynb run by nbclient in .venv; also part of test-python): 70 s to 2 min.
 test-tour: build
@@ -239,6 +249,7 @@ docs-serve: build $(VENV)/.docs-deps lab-html
 	$(VENV)/bin/mkdocs serve --strict -a 127.0.0.1:8001
 
 test: DOCS_EXECUTE := false
+test: BUILD_PROFILE := test-opt
 test: PYTEST_ARGS := --deselect python/tests/test_tour.py::test_notebook_runs
 test: lint lint-stubs test-rust test-wasm test-python test-web test-e2e test-lab-html docs test-wheel test-tour-wheel
 
@@ -250,10 +261,10 @@ test: lint lint-stubs test-rust test-wasm test-python test-web test-e2e test-lab
 FUZZ_CASES ?= 10000
 FUZZ_FILES ?= 2500
 fuzz: build
-	PROPTEST_CASES=$(FUZZ_CASES) cargo test --release -p pendulab-core --test fuzz_props -- --nocapture
+	PROPTEST_CASES=$(FUZZ_CASES) cargo test --profile test-opt -p pendulab-core --test suite fuzz_props:: -- --nocapture
 	FUZZ_EXAMPLES=$(FUZZ_CASES) $(VENV)/bin/pytest python/tests/test_fuzz_api.py python/tests/test_fuzz_api_derived.py -q -s
 	$(PY) tools/fuzz_scenarios.py --files $(FUZZ_FILES) --seed 13
-	PROPTEST_CASES=$(FUZZ_CASES) cargo test --release -p pendulab-core --test exact_degenerate
+	PROPTEST_CASES=$(FUZZ_CASES) cargo test --profile test-opt -p pendulab-core --test suite exact_degenerate::
 	PENDULAB_LONG=1 $(VENV)/bin/pytest python/tests/test_exact_degenerate.py -q
 
 bench:

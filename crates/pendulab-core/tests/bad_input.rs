@@ -1,6 +1,6 @@
 //! Every public entry point validates: the error names the parameter, its value and what is allowed.
 
-mod common;
+use crate::common;
 
 use common::{fixed, rosette};
 use pendulab_core::error::Time;

@@ -6,7 +6,7 @@
 //! of the declared order. Case: the rosette (θ₀ = 60°, φ̇₀ = 2 rad/s) to t = 1 s, and for the angle
 //! method a start that stays away from the poles.
 
-mod common;
+use crate::common;
 
 use common::{fixed, fixed_step_methods, rosette, run_to, state_distance};
 use pendulab_core::{Method, Model, State};

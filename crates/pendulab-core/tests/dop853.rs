@@ -2,7 +2,7 @@
 //! same time, projection onto TS², step-size control with a bad first step, and its input checks.
 //! Reference: the great circle of g = 0, x(t) = x₀ cos ωt + (v₀/ω) sin ωt with ω = |v₀|/l (SI units).
 
-mod common;
+use crate::common;
 
 use common::rosette;
 use pendulab_core::error::Time;

@@ -3,8 +3,6 @@
 //! motion T-2.2) and in every special case of T-4.6. Units: SI; error measure as in `golden.rs`,
 //! max(|Δx|/l, |Δv|/(l ω₀ + |v|)).
 
-mod common;
-
 use pendulab_core::exact::{ExactSolution, Kind};
 use pendulab_core::model::acceleration;
 use pendulab_core::{DVec3, IdealPendulum, Method, Model, Params, SolveOptions, State, Stepper};

@@ -4,7 +4,7 @@
 //! above the sample spacing its error is the plain run's / 2ᵖ, where a run at dt/2 is not.
 //! SI units: l = 1 m, g = 9.81 m/s², samples every 10 ms.
 
-mod common;
+use crate::common;
 
 use common::fixed;
 use common::sampled::{path, start};

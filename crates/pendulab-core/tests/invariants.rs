@@ -8,7 +8,7 @@
 //! is far above round-off, so the drift test sees the method, not the arithmetic. The unprojected
 //! RK4 on T-2.4 fails the same checks (it drifts off TS²), which shows the diagnostics are real.
 
-mod common;
+use crate::common;
 
 use common::{fixed, rosette};
 use pendulab_core::model::{energy, j3};

@@ -3,7 +3,7 @@
 //! the RATTLE splitting (conformal structure), the splitting's observed orders, tilted gravity as a
 //! rotated ideal pendulum, Foucault's precession −Ω sin λ (T-7.3), and bad parameters. SI units.
 
-mod common;
+use crate::common;
 
 use common::rosette;
 use pendulab_core::model::registry::{power_balance_residual, AnyModel};

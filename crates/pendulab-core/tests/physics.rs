@@ -7,7 +7,7 @@
 //! - T-4.6: g = 0 moves along a great circle at constant speed.
 //! - T-2.5: the angle method refuses near a pole instead of returning garbage.
 
-mod common;
+use crate::common;
 
 use common::{fixed, rosette};
 use pendulab_core::{DVec3, Error, IdealPendulum, Method, Model, State, Stepper};

@@ -3,7 +3,7 @@
 //! power balance with the pivot's inertial force, and Kapitza's stabilised inverted pendulum for
 //! (Aν)² > 2 g l. SI units; l = 1 m, g = 9.81 m/s².
 
-mod common;
+use crate::common;
 
 use common::sampled;
 use pendulab_core::model::registry::{power_balance_residual, AnyModel};

@@ -7,7 +7,7 @@
 //! grid t₀ + k·dt, and a run without breaks takes exactly the bare method's steps (bits unchanged).
 //! SI units: l = 1 m, g = 9.81 m/s², samples every 50 ms.
 
-mod common;
+use crate::common;
 
 use common::fixed;
 use common::sampled::{params, path, start};

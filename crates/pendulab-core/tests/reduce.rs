@@ -3,7 +3,7 @@
 //! oscillator T-3.5, and the reduced flow with reconstruction T-3.6 as a third path to x(t).
 //! Units: l = 1 m, g = 9.81 m/s² (rosette: θ₀ = 60°, φ̇₀ = 2 rad/s), σ in units of l.
 
-mod common;
+use crate::common;
 
 use common::rosette;
 use pendulab_core::model::acceleration;

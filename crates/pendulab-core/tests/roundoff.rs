@@ -11,7 +11,7 @@
 //! steps the errors are ~1e-13 and ~1e-14 at both steps. Reference: the exact solution.
 //! Error measure: max(|Δx|/l, |Δv|/(l ω₀ + |v|)).
 
-mod common;
+use crate::common;
 
 use common::{fixed, run_to};
 use pendulab_core::exact::ExactSolution;

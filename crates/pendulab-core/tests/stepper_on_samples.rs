@@ -5,7 +5,7 @@
 //! inside an interval between samples, in ⌈span/dt⌉ equal steps (docs/integrators.md, *Sampled
 //! pivot*). SI units: l = 1 m, g = 9.81 m/s², samples 7 … 13 ms apart.
 
-mod common;
+use crate::common;
 
 use common::fixed;
 use common::sampled::{params, path, start};

@@ -2,7 +2,7 @@
 //! sampled pivot (each interval between samples in ⌈span/dt⌉ equal steps), as `accuracy=` runs them
 //! (docs/integrators.md, *Sampled pivot*). SI units: l = 1 m, g = 9.81 m/s², samples about 10 ms apart.
 
-mod common;
+use crate::common;
 
 use common::fixed;
 use common::sampled::{path as sampled, start};

@@ -4,7 +4,7 @@
 //! parabola and ends on the sphere after τ* = 4 v_z/g; an elastic snap keeps E, an inelastic one loses
 //! exactly the radial kinetic energy ½ m (x̂·v)²; J₃ survives every event. SI units, l = 1 m.
 
-mod common;
+use crate::common;
 
 use common::rosette;
 use pendulab_core::model::{energy, j3, AnyModel, StringPendulum};
