@@ -109,7 +109,14 @@ def format_of(path: str | os.PathLike[str]) -> str:
     """The file format from the suffix: .csv, .parquet or .nc; a clear error otherwise."""
     suffix = Path(path).suffix.lower()
     if suffix not in FORMATS:
-        raise ValueError(f"unknown output suffix {suffix!r} in {str(path)!r}; use one of .csv, .parquet, .nc")
+        text = str(path)
+        if text.endswith(("/", os.sep)) or os.path.isdir(path):
+            example = os.path.join(text, "run.csv")
+            raise ValueError(
+                f"{text!r} is a directory: give a file name ending in .csv, .parquet or .nc"
+                f" (e.g. {example!r})"
+            )
+        raise ValueError(f"unknown output suffix {suffix!r} in {text!r}; use one of .csv, .parquet, .nc")
     return FORMATS[suffix]
 
 

@@ -33,7 +33,11 @@ def test_run_and_exact_name_the_written_file_as_typed(
     [
         (["run", ROSETTE, "--out", "./o.txt"], "unknown output suffix '.txt' in './o.txt'"),
         (["run", ROSETTE, "--out", "./nodir/o.csv"], "--out './nodir/o.csv': the directory"),
-        (["run", ROSETTE, "--out", "./"], "unknown output suffix '' in './'"),
+        (["run", ROSETTE, "--out", "./"], "'./' is a directory: give a file name ending in .csv"),
+        (
+            ["run", ROSETTE, "--out", "."],
+            "'.' is a directory: give a file name ending in .csv, .parquet or .nc (e.g. './run.csv')",
+        ),
         (["exact", ROSETTE, "--out", "./o.txt"], "in './o.txt'"),
         (["phases", ROSETTE, "--plot", "./p.bmp"], "--plot: unknown image suffix '.bmp' in './p.bmp'"),
         (["plot", ROSETTE, "--out", "./nodir/p.png"], "--out './nodir/p.png': the directory"),

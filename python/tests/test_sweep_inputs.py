@@ -18,7 +18,7 @@ from test_cli import assert_user_error, invoke
 
 import pendulab as pl
 from pendulab.sweeps import sinks as sweep_io
-from pendulab.sweeps.file import SweepFileError, load_sweep_file, sweep_file_from_dict
+from pendulab.sweeps.file import SweepFileError, SweepSpecFile, load_sweep_file, sweep_file_from_dict
 
 EXAMPLES = REPO / "examples" / "sweeps"
 
@@ -206,6 +206,11 @@ def test_bad_outputs_and_sizes(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) 
             ["random.n = 2000000000: must be less than or equal to 1000000000"],
         ),
         ('quantity = "period"\n[grid\n', ["invalid TOML"]),
+        ("# only a comment", ["nothing in it (an empty file, or only comments): a sweep file has quantity"]),
+        (  # a typo of the required key is one problem
+            'quantitty = "period"\n[grid]\ntheta0 = [1.0]',
+            ["unknown key quantitty (did you mean 'quantity'? so the required quantity is missing)"],
+        ),
     ],
 )
 def test_bad_sweep_files(tmp_path: Path, text: str, needles: list[str]) -> None:
@@ -220,3 +225,13 @@ def test_bad_sweep_files(tmp_path: Path, text: str, needles: list[str]) -> None:
     assert_user_error(code, out, err, needles[0])
     with pytest.raises(SweepFileError):
         sweep_file_from_dict({"quantity": "period"})
+
+
+def test_a_typo_of_the_required_key_is_said_once() -> None:
+    """The misspelt key's line names the missing one, which is not listed again."""
+    with pytest.raises(SweepFileError) as e:
+        sweep_file_from_dict({"Quantity": "period", "grid": {"theta0": [0.1]}}, "s.toml")
+    assert e.value.problems == [
+        "unknown key Quantity (did you mean 'quantity'? so the required quantity is missing); "
+        f"allowed keys in the top level: {', '.join(SweepSpecFile.model_fields)}"
+    ], e.value.problems

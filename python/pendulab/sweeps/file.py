@@ -52,7 +52,7 @@ from ..scenario.schema import (
     _show,  # a value as it looks in TOML, as scenario errors show it
     printable,
 )
-from ..validate import MAX_SAMPLES, did_you_mean, parse_toml, read_file_capped
+from ..validate import MAX_SAMPLES, did_you_mean, nearest, parse_toml, read_file_capped
 from . import design as sweep_design
 from .compute import QUANTITIES, make_spec
 from .design import Design
@@ -199,17 +199,52 @@ def _key(loc: tuple[int | str, ...]) -> str:
     return out
 
 
+EMPTY_SWEEP_FILE = (
+    'nothing in it (an empty file, or only comments): a sweep file has quantity = "..." and one of the '
+    "tables [grid] and [random] (docs/sweeps.md)"
+)
+"""The problem of a sweep file without a key: what such a file holds, not each missing key."""
+
+
+def _names_at(table: tuple[int | str, ...]) -> list[str]:
+    """The keys the table at ``table`` takes (the top level for ``()``)."""
+    model: Any = SweepSpecFile
+    for part in table:
+        model = getattr(model, "model_fields", {}).get(part)
+        model = getattr(model, "annotation", None)
+    return list(getattr(model, "model_fields", {}))
+
+
+def _problems(errors: list[ErrorDetails]) -> list[str]:
+    """One line per problem, unknown keys first; a typo of a required key is one problem, as in a
+    scenario file (``unknown key quantitty (did you mean 'quantity'? so the required quantity is
+    missing)``), and the missing key is not listed again."""
+    ordered = sorted(errors, key=lambda err: err["type"] != "extra_forbidden")
+    missing = {tuple(err["loc"]) for err in ordered if err["type"] == "missing"}
+    said: set[tuple[int | str, ...]] = set()
+    out: list[str] = []
+    for err in ordered:
+        loc = tuple(err["loc"])
+        if err["type"] == "missing" and loc in said:
+            continue
+        text = _problem(err)
+        near = nearest(loc[-1], _names_at(loc[:-1])) if err["type"] == "extra_forbidden" and loc else None
+        lost = (*loc[:-1], near or "")
+        hint = did_you_mean(near, [near]) if near is not None else ""
+        if hint and hint in text and lost in missing and lost not in said:
+            said.add(lost)
+            text = text.replace(hint, f"{hint[:-2]}? so the required {_key(lost)} is missing)", 1)
+        out.append(text)
+    return out
+
+
 def _problem(err: ErrorDetails) -> str:
     loc = tuple(err["loc"])
     key, kind, value = _key(loc), err["type"], err.get("input")
     if kind == "missing":
         return f"{key} is missing"
     if kind == "extra_forbidden":
-        model: Any = SweepSpecFile
-        for part in loc[:-1]:
-            model = getattr(model, "model_fields", {}).get(part)
-            model = getattr(model, "annotation", None)
-        names = list(getattr(model, "model_fields", {}))
+        names = _names_at(loc[:-1])
         did = did_you_mean(str(loc[-1]), names)
         where = f"[{_key(loc[:-1])}]" if len(loc) > 1 else "the top level"
         return f"unknown key {key}{did}; allowed keys in {where}: {', '.join(names)}"
@@ -246,11 +281,12 @@ def _axis_values(name: str, spec: Any) -> np.ndarray:
 
 def sweep_file_from_dict(data: dict[str, Any], source: str = "<dict>") -> SweepFile:
     """A sweep file from its parsed TOML (nested dicts); :class:`SweepFileError` if it is not valid."""
+    if not data:
+        raise SweepFileError(source, EMPTY_SWEEP_FILE)
     try:
         spec = SweepSpecFile.model_validate(data)
     except ValidationError as e:
-        errors = sorted(e.errors(), key=lambda err: err["type"] != "extra_forbidden")
-        raise SweepFileError(source, [_problem(err) for err in errors]) from None
+        raise SweepFileError(source, _problems(e.errors())) from None
     try:
         if spec.grid is not None:
             design = sweep_design.grid({k: _axis_values(k, v) for k, v in spec.grid.items()})
