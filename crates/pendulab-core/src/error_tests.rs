@@ -170,11 +170,12 @@ fn an_unknown_method_names_the_nearest_and_the_registered_ones() {
         ("Rk4", Some("rk4")), // the same but for case, not the closer-looking 'rkmk4'
         ("ratle", Some("rattle")),
         ("rk5", Some("rk4")),
-        ("RK-4", Some("rk4")),
+        ("RK-4", None), // difflib compares the letters as written: no hint, as in Python
         ("dop85", Some("dop853")),
         ("rk4_angle", Some("rk4_angles")),
-        ("rattl6", Some("rattle6")),  // as near as 'rattle', and more alike
-        ("rattel4", Some("rattle4")), // two neighbours swapped: one edit
+        ("rattl6", Some("rattle6")),   // as near as 'rattle', and more alike
+        ("rattle46", Some("rattle6")), // of equal ratios, the greatest name (difflib's)
+        ("rattel4", Some("rattle4")),  // two neighbours swapped: one edit
         ("kr4", Some("rk4")),
         ("euler", None),
         ("zzzz", None),

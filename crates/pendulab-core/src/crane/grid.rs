@@ -96,7 +96,7 @@ pub fn residual_grid(
     #[cfg(feature = "parallel")]
     let out: Vec<Result<f64>> = {
         use rayon::prelude::*;
-        cases.par_iter().map(work).collect()
+        cases.par_iter().with_max_len(1).map(work).collect() // every case its own task (costs differ)
     };
     #[cfg(not(feature = "parallel"))]
     let out: Vec<Result<f64>> = cases.iter().map(work).collect();

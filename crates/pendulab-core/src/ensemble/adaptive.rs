@@ -102,7 +102,9 @@ pub fn run_adaptive_models<M: Model + Clone + Send + Sync>(
     #[cfg(feature = "parallel")]
     let outputs: Vec<_> = {
         use rayon::prelude::*;
-        states.par_chunks_mut(CHUNK * ns).enumerate().map(work).collect()
+        // every chunk its own task: their costs differ (adaptive steps), and an idle core steals one
+        // chunk at a time (rayon's own split leaves pieces only their thread runs)
+        states.par_chunks_mut(CHUNK * ns).enumerate().with_max_len(1).map(work).collect()
     };
     #[cfg(not(feature = "parallel"))]
     let outputs: Vec<_> = states.chunks_mut(CHUNK * ns).enumerate().map(work).collect();
@@ -188,7 +190,8 @@ pub fn run_adaptive_serial<M: Model + Clone + Send + Sync>(
     #[cfg(feature = "parallel")]
     let outputs: Vec<Result<(u64, bool)>> = {
         use rayon::prelude::*;
-        starts.par_iter().zip(states.par_chunks_mut(ns.max(1))).enumerate().map(work).collect()
+        let each = starts.par_iter().zip(states.par_chunks_mut(ns.max(1))).enumerate();
+        each.with_max_len(1).map(work).collect() // every trajectory its own task (costs differ)
     };
     #[cfg(not(feature = "parallel"))]
     let outputs: Vec<Result<(u64, bool)>> =

@@ -1,8 +1,8 @@
-//! The hint of an unknown name: the nearest of the names allowed ([`did_you_mean`]), by edit distance
-//! (the `strsim` crate); [`close_match`], the Python layer's rule (difflib's), which decides for the lab
-//! whether a key is near one of a model's own parameters; [`Quoted`], a name in a message quoted as the
-//! Python layer quotes it; and [`drift_advice`], what a step size underflow of an unprojected run says
-//! to do (T-2.4).
+//! The hint of an unknown name: the nearest of the names allowed ([`did_you_mean`], [`nearest`]), by
+//! one rule, the Python layer's ([`close_match`], a port of difflib's `get_close_matches`), so that the
+//! one-file lab (this core in WebAssembly) and the server (the Python layer) hint alike; [`Quoted`], a
+//! name in a message quoted as the Python layer quotes it; and [`drift_advice`], what a step size
+//! underflow of an unprojected run says to do (T-2.4).
 
 use super::Shown;
 use std::fmt;
@@ -37,35 +37,17 @@ impl fmt::Display for Quoted<'_> {
     }
 }
 
-/// `` (did you mean 'x'?)`` (the name [`Quoted`]) for the option nearest to `name`, or `""`: an option
-/// equal to it but for case first, else the one at the smallest edit distance from it in lower case if that distance is at most
-/// half the longer name's length (`strsim::osa_distance`: a letter changed, added or left out, or two
-/// neighbours swapped, is one edit), of equals the one more alike by `strsim::jaro_winkler` (`rattl6`:
-/// `rattle6`, not `rattle`), then the first. The hint of Python's `pendulab.validate.did_you_mean`
-/// (difflib's nearest) for the case and for one such slip, but for ties (`rattle46`). Only a hint: the
-/// wrong case is never accepted. A name of more than 64 characters gets none (no option is near it; the
-/// distance stays cheap).
+/// `` (did you mean 'x'?)`` (the name [`Quoted`]) for the option [`nearest`] to `name`, or `""`. Only a
+/// hint: the wrong case is never accepted.
 pub fn did_you_mean<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) -> String {
     nearest(name, options).map_or_else(String::new, |o| format!(" (did you mean {}?)", Quoted(o)))
 }
 
-/// The option [`did_you_mean`] names for `name`, or None: for a message key's value (`nearest`), which a
-/// page words in its language.
+/// The option [`did_you_mean`] names for `name`, or None (for a message key's value, which a page words
+/// in its language): Python's `pendulab.validate.nearest`, [`close_match`] — an option equal to it but
+/// for case first, else difflib's closest of ratio ≥ 0.6 (of the first 100 characters of `name`).
 pub fn nearest<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
-    let options: Vec<&str> = options.into_iter().collect();
-    let lower = name.to_lowercase();
-    let n = lower.chars().count();
-    let closest = || {
-        let scored = options.iter().filter(|_| n <= 64).map(|o| {
-            let other = o.to_lowercase();
-            let distance = strsim::osa_distance(&lower, &other);
-            (o, distance, strsim::jaro_winkler(&lower, &other), 2 * distance <= n.max(other.chars().count()))
-        });
-        let near = scored.filter(|(.., near)| *near);
-        near.min_by(|a, b| a.1.cmp(&b.1).then(b.2.total_cmp(&a.2))).map(|(o, ..)| o)
-    };
-    let same_but_case = options.iter().find(|o| o.to_lowercase() == lower);
-    same_but_case.or_else(closest).copied()
+    close_match(name, options)
 }
 
 /// The end of a step size underflow's message: nothing, or for an unprojected run that had left TS²
