@@ -18,6 +18,7 @@ from typing import Annotated, Any
 
 from pydantic import AliasChoices, BaseModel, ConfigDict, Field, model_validator
 
+from .._numbers import shown
 from ..validate import COMMON
 from .table_base import _show
 
@@ -35,7 +36,7 @@ _Vec3 = Annotated[list[float], Field(min_length=3, max_length=3)]
 
 
 def _pos(description: str, default: Any = ..., le: float = 1e6) -> Any:
-    return Field(default, gt=0, le=le, description=f"{description}, > 0 and <= {le:g}")
+    return Field(default, gt=0, le=le, description=f"{description}, > 0 and <= {shown(le)}")
 
 
 def _nonneg(description: str, default: Any = 0.0) -> Any:
@@ -87,7 +88,7 @@ class HoistSection(_Section):
     length: list[Annotated[float, Field(gt=0, le=LONGEST)]] = Field(
         min_length=2,
         max_length=100_000,
-        description=f"rope lengths in m at those times, > 0 and <= {LONGEST:g}",
+        description=f"rope lengths in m at those times, > 0 and <= {shown(LONGEST)}",
     )
 
 
