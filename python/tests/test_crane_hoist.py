@@ -67,7 +67,8 @@ def test_a_spline_dipping_to_zero_between_samples_is_refused_naming_time_and_len
     m = re.fullmatch(
         r"the Hoist spline through the lengths dips to (\S+) m at t = (\S+) s, between the samples "
         + re.escape(between)
-        + r": the rope length must stay > 0 m; give more samples there or a gentler change",
+        + r": the rope length must stay >= 1e-6 m \(the shortest pendulum, pl\.limits\(\) length\); "
+        r"give more samples there or a gentler change",
         text,
     )
     assert m is not None, text

@@ -1,4 +1,4 @@
-"""A crane's rope lengths bounded as a pendulum's length is (``pl.limits()`` ``length``, 1e4 m;
+"""A crane's rope lengths bounded as a pendulum's length is (``pl.limits()`` ``length``, 1e-6 to 1e4 m;
 docs/limits.md, docs/cranes.md): ``Crane(rope=…)``, ``rigging``, ``Crane.modes(rope=…)``,
 ``crane.lqr(rope)``, ``residual_grid(ropes)``, a ``Hoist``'s samples and the true range of its spline
 (which overshoots far above samples of ≤ 40 m between samples much closer in time than their
@@ -18,14 +18,20 @@ from pendulab import InvalidInputError, crane
 from pendulab.crane.scenario import parse
 
 LONGEST = {row["name"]: row for row in pl.limits()}["length"]["max"]
-ALLOWED = "> 0 and <= 1e4 m (the longest pendulum, pl.limits() length)"
+ALLOWED = "in [1e-6, 1e4] m (a pendulum's length, pl.limits() length)"
+SHORTEST = {row["name"]: row for row in pl.limits()}["length"]["min"]
 
 
-def test_the_cap_is_the_pendulums() -> None:
-    assert LONGEST == 1e4
+def test_the_bounds_are_the_pendulums() -> None:
+    assert (SHORTEST, LONGEST) == (1e-6, 1e4)
     pl.Pendulum(length=LONGEST)
-    crane.Crane(rope=LONGEST)  # the longest itself is allowed, as for a pendulum
+    pl.Pendulum(length=SHORTEST)
+    crane.Crane(rope=LONGEST)  # the longest and the shortest themselves are allowed, as for a pendulum
+    crane.Crane(rope=SHORTEST)
     crane.Hoist([0.0, 10.0], [LONGEST, 10.0])
+    crane.Hoist([0.0, 10.0], [SHORTEST, 10.0])
+    with pytest.raises(InvalidInputError, match="length"):
+        pl.Pendulum(length=1e-9)  # and what a pendulum refuses, a crane refuses too (below)
 
 
 @pytest.mark.parametrize(
@@ -37,9 +43,18 @@ def test_the_cap_is_the_pendulums() -> None:
         (lambda: crane.lqr(2e4), "rope = 20000.0"),
         (lambda: crane.residual_grid([5.0, 3e4], [0.1], [None], progress=False), r"ropes\[1\] = 30000.0"),
         (lambda: crane.Hoist([0.0, 1.0, 2.0], [5.0, 1e4, 2e4]), r"length\[2\] = 20000.0"),
+        (lambda: crane.rope_range(1.0, 2e4), "rope_max = 20000.0"),
+        # below the shortest pendulum (a 1e-9 m rope had built and simulated)
+        (lambda: crane.Crane(rope=1e-9), "rope = 1e-09"),
+        (lambda: crane.Crane(rope=5.0, hook_mass=50.0, rigging=5e-7), "rigging = 5e-07"),
+        (lambda: crane.Crane(rope=5.0).modes(rope=1e-7), "rope = 1e-07"),
+        (lambda: crane.lqr(1e-8), "rope = 1e-08"),
+        (lambda: crane.residual_grid([5.0, 1e-9], [0.1], [None], progress=False), r"ropes\[1\] = 1e-09"),
+        (lambda: crane.Hoist([0.0, 1.0, 2.0], [5.0, 1e-9, 5.0]), r"length\[1\] = 1e-09"),
+        (lambda: crane.rope_range(1e-9, 2.0), "rope_min = 1e-09"),
     ],
 )
-def test_a_rope_above_the_cap_is_refused_naming_it(make, named: str) -> None:
+def test_a_rope_outside_a_pendulums_lengths_is_refused_naming_it(make, named: str) -> None:
     with pytest.raises(
         InvalidInputError, match=f"^invalid {named}: (a )?finite numbers? {re.escape(ALLOWED)}$"
     ):
@@ -87,12 +102,32 @@ def test_a_spline_rising_above_the_cap_between_samples_below_it_is_refused() -> 
     assert "the rope length must stay <= 1e4 m (the longest pendulum, pl.limits() length)" in text
 
 
+def test_a_spline_dipping_below_the_shortest_rope_is_refused() -> None:
+    """Samples ≥ 1e-6 m whose spline's undershoot (a ninth of the spread at even times) ends below
+    1e-6 m, though above 0."""
+    t, length = [0.0, 1.0, 2.0, 3.0], [1e-5, 1e-5, 1.1e-6, 1.1e-6]
+    dense = CubicSpline(t, length, bc_type="clamped")(np.linspace(0.0, 3.0, 300_001))
+    assert 0 < dense.min() < SHORTEST
+    with pytest.raises(
+        InvalidInputError, match=r"the rope length must stay >= 1e-6 m \(the shortest pendulum"
+    ):
+        crane.Hoist(t, length)
+
+
 def test_a_crane_file_names_the_key_or_the_file() -> None:
     with pytest.raises(InvalidInputError, match=r"^r\.toml: crane\.rope = 20000\.0: must be <= 10000"):
         parse({"crane": {"rope": 2e4}, "simulation": {"t_end": 5.0}}, "r.toml")
     hoist = {"t": [0.0, 1.0], "length": [5.0, 2e4]}
     with pytest.raises(InvalidInputError, match=r"^h\.toml: hoist\.length\[1\] = 20000\.0: must be <= 10000"):
         parse({"crane": {"rope": 5.0}, "hoist": hoist, "simulation": {"t_end": 5.0}}, "h.toml")
+    for key in ("rope", "rigging"):
+        extra = {"hook_mass": 50.0} if key == "rigging" else {}
+        data = {"crane": {"rope": 5.0, key: 1e-9, **extra}, "simulation": {"t_end": 5.0}}
+        with pytest.raises(InvalidInputError, match=rf"^r\.toml: crane\.{key} = 1e-09: must be >= 1e-6; "):
+            parse(data, "r.toml")
+    tiny = {"t": [0.0, 1.0], "length": [5.0, 1e-9]}
+    with pytest.raises(InvalidInputError, match=r"^h\.toml: hoist\.length\[1\] = 1e-09: must be >= 1e-6"):
+        parse({"crane": {"rope": 5.0}, "hoist": tiny, "simulation": {"t_end": 5.0}}, "h.toml")
     hoist = {"t": [0.0, 1.0, 2.0, 28.0], "length": [10.0, 10.0, 40.0, 40.0]}
     with pytest.raises(pl.ScenarioError, match=r"^s: the Hoist spline .* rises to 182\.316 m"):
         pl.Scenario.from_dict({"crane": {"rope": 10.0}, "hoist": hoist, "simulation": {"t_end": 5.0}}, "s")

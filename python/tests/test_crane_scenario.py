@@ -64,13 +64,13 @@ def test_bad_files(patch: dict, needle: str) -> None:
         parse({**BASE, **patch})
 
 
-ROPE = r"allowed: rope length at t = 0 in m, > 0 and <= 10000"
+ROPE = r"allowed: rope length at t = 0 in m, >= 1e-6 and <= 10000"
 
 
 @pytest.mark.parametrize(
     ("patch", "message"),
     [
-        ({"crane": {"rope": -1.0}}, r"crane\.rope = -1\.0: must be > 0; " + ROPE),
+        ({"crane": {"rope": -1.0}}, r"crane\.rope = -1\.0: must be >= 1e-6; " + ROPE),
         (
             {"crane": {"rope": float("nan")}},
             r"crane\.rope = nan is not a finite number \(nan and inf are not "
@@ -89,7 +89,7 @@ ROPE = r"allowed: rope length at t = 0 in m, > 0 and <= 10000"
         ),
         (
             {"crane": {"rope": -1.0, "g": "x"}},
-            r"2 problems: \(1\) crane\.rope = -1\.0: must be > 0; "
+            r"2 problems: \(1\) crane\.rope = -1\.0: must be >= 1e-6; "
             + ROPE
             + r" \(2\) crane\.g = 'x' is not a "
             r"number; allowed: gravitational acceleration in m/s², > 0 and <= 1000",
@@ -106,7 +106,7 @@ def test_bad_values_name_the_key_the_value_and_what_is_allowed(patch: dict, mess
 def test_cli_names_the_file_as_typed_and_the_key(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.chdir(tmp_path)
     Path("bad.toml").write_text("[crane]\nrope = -1.0\n[simulation]\nt_end = 5.0\n")
-    message = "error: ./bad.toml: crane.rope = -1.0: must be > 0; allowed: rope length at t = 0 in m"
+    message = "error: ./bad.toml: crane.rope = -1.0: must be >= 1e-6; allowed: rope length at t = 0 in m"
     assert_user_error(*invoke("crane", "run", "./bad.toml"), message)
     Path("bad.toml").write_text("[crane\n")
     assert_user_error(*invoke("crane", "run", ".//bad.toml"), "error: .//bad.toml: not valid TOML: ")

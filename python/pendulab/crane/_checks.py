@@ -21,7 +21,11 @@ LONGEST = float(COMMON["length"]["max"])
 them): a pendulum's length limit, ``pl.limits()`` ``length`` (1e4 m; docs/limits.md)."""
 LONGEST_TEXT = f"{LONGEST:.0e}".replace("e+0", "e")
 """:data:`LONGEST` as the messages write it (``1e4``)."""
-ROPE_ALLOWED = f"> 0 and <= {LONGEST_TEXT} m (the longest pendulum, pl.limits() length)"
+SHORTEST = float(COMMON["length"]["min"])
+"""The shortest rope [m]: a pendulum's least length, ``pl.limits()`` ``length`` (1e-6 m)."""
+SHORTEST_TEXT = f"{SHORTEST:.0e}".replace("e-0", "e-")
+""":data:`SHORTEST` as the messages write it (``1e-6``)."""
+ROPE_ALLOWED = f"in [{SHORTEST_TEXT}, {LONGEST_TEXT}] m (a pendulum's length, pl.limits() length)"
 """What a rope length [m] may be, in the messages (after "a finite number" or "finite numbers")."""
 
 
@@ -40,18 +44,18 @@ def positive(name: str, value: Any, unit: str) -> float:
 
 
 def rope(name: str, value: Any) -> float:
-    """A rope length: a finite number > 0 and ≤ :data:`LONGEST` [m]."""
-    return real(name, value, f"a finite number {ROPE_ALLOWED}", lambda x: 0 < x <= LONGEST)
+    """A rope length: a finite number in [:data:`SHORTEST`, :data:`LONGEST`] [m]."""
+    return real(name, value, f"a finite number {ROPE_ALLOWED}", lambda x: SHORTEST <= x <= LONGEST)
 
 
 def ropes(name: str, value: Any) -> FloatArray:
-    """Rope lengths (a hoist's samples): finite numbers > 0 and ≤ :data:`LONGEST` [m]; the first bad
-    entry is named."""
+    """Rope lengths (a hoist's samples): finite numbers in [:data:`SHORTEST`, :data:`LONGEST`] [m];
+    the first bad entry is named."""
     allowed = f"finite numbers {ROPE_ALLOWED}"
     a = positives(name, value, "m", allowed)
-    too_long = a > LONGEST
-    if np.any(too_long):
-        i = np.unravel_index(int(np.argmax(too_long)), a.shape) if a.ndim else ()
+    outside = (a < SHORTEST) | (a > LONGEST)
+    if np.any(outside):
+        i = np.unravel_index(int(np.argmax(outside)), a.shape) if a.ndim else ()
         raise invalid(name + "".join(f"[{k}]" for k in i), a[i] if a.ndim else a.item(), allowed)
     return a
 

@@ -6,8 +6,8 @@ A spline can overshoot its samples: between t_i and t_{i+1} it is a cubic
 l(t) = c₀ + c₁ s + c₂ s² + c₃ s³ (s = t − t_i), whose extremes on the piece are at its ends or at the
 roots of l̇ = c₁ + 2c₂ s + 3c₃ s² inside it. :meth:`Hoist.length_range` takes them from the spline's
 piecewise polynomials (SciPy's ``PPoly``): the true least and largest rope over a run, not the least
-and largest sample. A spline that dips to ≤ 0 m anywhere between its samples is refused, naming the
-time and the length there (the core would stop there: the rope length must stay > 0 m); so is one
+and largest sample. A spline that dips below 1e-6 m (the shortest pendulum, ``pl.limits()``) anywhere
+between its samples is refused, naming the time and the length there; so is one
 rising above the longest rope, 1e4 m (a pendulum's ``length`` limit, ``pl.limits()``; each sample too),
 and one overshooting the samples' range [l_min, l_max] by more than their spread l_max − l_min: a
 step between evenly spaced samples overshoots by 4/45 of it, by more than all of it only between
@@ -23,16 +23,16 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .._core import InvalidInputError
-from ._checks import LONGEST, LONGEST_TEXT, ropes, time, times
+from ._checks import LONGEST, LONGEST_TEXT, SHORTEST, SHORTEST_TEXT, ropes, time, times
 from ._display import Row, Shown, hoist_rows
 from .paths import Path
 from .shaper import FloatArray
 
 
 class Hoist(Path, Shown):
-    """The rope length l(t) [m] through samples (``t`` [s] increasing, ``length`` [m] > 0, n ≥ 2): the
-    C² cubic spline with l̇ = 0 at both ends (clamped), held constant outside [t₀, t_n]; l̈ steps at
-    t₀ and t_n (breaks); lengths ≤ 1e4 m. Refused when the spline dips to ≤ 0 m between the samples,
+    """The rope length l(t) [m] through samples (``t`` [s] increasing, ``length`` [m] in [1e-6, 1e4],
+    n ≥ 2): the C² cubic spline with l̇ = 0 at both ends (clamped), held constant outside [t₀, t_n];
+    l̈ steps at t₀ and t_n (breaks). Refused when the spline dips below 1e-6 m between the samples,
     rises above 1e4 m or overshoots them by more than their spread (module doc).
     Stored in the first component of a 3-vector for the core."""
 
@@ -54,15 +54,18 @@ class Hoist(Path, Shown):
         self._check_range(ts, ls)
 
     def _check_range(self, ts: FloatArray, ls: FloatArray) -> None:
-        """Refuses a spline whose true range (:meth:`extremes`) leaves what a rope may be: ≤ 0 m, above
-        the longest rope (:data:`~pendulab.crane._checks.LONGEST`), or beyond the samples' own range by
-        more than their spread (module doc), naming the time, the length and the samples around it."""
+        """Refuses a spline whose true range (:meth:`extremes`) leaves what a rope may be: below the
+        shortest rope (:data:`~pendulab.crane._checks.SHORTEST`), above the longest
+        (:data:`~pendulab.crane._checks.LONGEST`), or beyond the samples' own range by more than their
+        spread (module doc), naming the time, the length and the samples around it."""
         (t_low, low), (t_high, high) = self.extremes()
         top, bottom = float(ls.max()), float(ls.min())
         spread = top - bottom
-        if not low > 0:
+        if not low >= SHORTEST:
             where, problem = t_low, f"dips to {low:.6g} m"
-            why = "the rope length must stay > 0 m"
+            why = (
+                f"the rope length must stay >= {SHORTEST_TEXT} m (the shortest pendulum, pl.limits() length)"
+            )
         elif high > LONGEST:
             where, problem = t_high, f"rises to {high:.6g} m"
             why = f"the rope length must stay <= {LONGEST_TEXT} m (the longest pendulum, pl.limits() length)"

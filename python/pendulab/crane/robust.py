@@ -18,7 +18,7 @@ import numpy as np
 
 from .._core import InvalidInputError
 from ..validate import invalid
-from ._checks import positive, real
+from ._checks import positive, real, rope
 from .shaper import Shaper, residual_vibration, shaper
 
 ORDER = ("zv", "zvd", "ei", "zvdd", "2hump_ei")
@@ -77,8 +77,10 @@ def shaper_for_range(
 
 def rope_range(rope_min: float, rope_max: float, g: float = 9.81) -> tuple[float, float]:
     """The sway frequencies (√(g/l_max), √(g/l_min)) [rad/s] of a rope between ``rope_min`` and
-    ``rope_max`` [m]."""
-    a, b = _band("rope_min", rope_min, "rope_max", rope_max, "m")
+    ``rope_max`` [m], each a rope length (in [1e-6, 1e4] m, a pendulum's, ``pl.limits()``)."""
+    a, b = rope("rope_min", rope_min), rope("rope_max", rope_max)
+    if not a <= b:
+        raise invalid("rope_max", rope_max, f"a finite number >= rope_min = {a!r} m")
     gg = positive("g", g, "m/s²")
     return math.sqrt(gg / b), math.sqrt(gg / a)
 

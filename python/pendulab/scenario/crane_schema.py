@@ -25,6 +25,8 @@ from .table_base import _show
 LONGEST = float(COMMON["length"]["max"])
 """The longest rope [m] (``rope``, ``rigging``, ``[shaper] rope``, ``[hoist] length``): a pendulum's
 length limit (``pl.limits()`` ``length``, 1e4 m), as :class:`pendulab.crane.Crane` checks it."""
+SHORTEST = float(COMMON["length"]["min"])
+"""The shortest rope [m]: a pendulum's least length (``pl.limits()`` ``length``, 1e-6 m)."""
 
 CRANE_SECTIONS = ("crane", "move", "shaper", "hoist", "wind", "simulation")
 """The crane file's tables, in the order :meth:`Scenario.to_toml` writes them."""
@@ -39,6 +41,16 @@ def _pos(description: str, default: Any = ..., le: float = 1e6) -> Any:
     return Field(default, gt=0, le=le, description=f"{description}, > 0 and <= {shown(le)}")
 
 
+def _rope(description: str, default: Any = ...) -> Any:
+    """A rope length [m]: a pendulum's length range, [:data:`SHORTEST`, :data:`LONGEST`]."""
+    return Field(
+        default,
+        ge=SHORTEST,
+        le=LONGEST,
+        description=f"{description}, >= {shown(SHORTEST)} and <= {shown(LONGEST)}",
+    )
+
+
 def _nonneg(description: str, default: Any = 0.0) -> Any:
     return Field(default, ge=0, le=1e6, description=f"{description}, >= 0 and <= 1e6")
 
@@ -50,10 +62,10 @@ class _Section(BaseModel):
 class CraneSection(_Section):
     """``[crane]``: the rope, the load (and a hook on rigging), damping and gravity."""
 
-    rope: float = _pos("rope length at t = 0 in m", le=LONGEST)
+    rope: float = _rope("rope length at t = 0 in m")
     payload_mass: float = _pos("payload mass in kg", 1000.0)
     hook_mass: float | None = _pos("hook mass in kg (with rigging: hook + payload)", None)
-    rigging: float | None = _pos("rigging length hook to payload in m (with hook_mass)", None, le=LONGEST)
+    rigging: float | None = _rope("rigging length hook to payload in m (with hook_mass)", None)
     damping: float = _nonneg("linear damping of the sway in 1/s")
     g: float = _pos("gravitational acceleration in m/s²", 9.81, le=1e3)
 
@@ -74,9 +86,7 @@ class ShaperSection(_Section):
 
     kind: str = Field(description="a shaper kind: zv, zvd, zvdd, ei, 2hump_ei (docs/cranes.md)")
     omega: float | None = _pos("design frequency in rad/s (or rope)", None)
-    rope: float | None = _pos(
-        "design rope length in m (or omega); default: the crane's lowest mode", None, le=LONGEST
-    )
+    rope: float | None = _rope("design rope length in m (or omega); default: the crane's lowest mode", None)
     damping: float = Field(0.0, ge=0, lt=1, description="design damping ratio, in [0, 1)")
     tolerance: float = Field(0.05, gt=0, lt=1, description="EI tolerance V, in (0, 1)")
 
@@ -85,10 +95,10 @@ class HoistSection(_Section):
     """``[hoist]``: the rope length through time (piecewise, smooth between the given points)."""
 
     t: list[float] = Field(min_length=2, max_length=100_000, description="times in s, increasing (2 to 1e5)")
-    length: list[Annotated[float, Field(gt=0, le=LONGEST)]] = Field(
+    length: list[Annotated[float, Field(ge=SHORTEST, le=LONGEST)]] = Field(
         min_length=2,
         max_length=100_000,
-        description=f"rope lengths in m at those times, > 0 and <= {shown(LONGEST)}",
+        description=f"rope lengths in m at those times, >= {shown(SHORTEST)} and <= {shown(LONGEST)}",
     )
 
 

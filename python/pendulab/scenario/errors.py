@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 import tomllib
 import typing
+from collections.abc import Callable
 from typing import Any
 
 from pydantic import AliasChoices, BaseModel
@@ -210,11 +211,28 @@ EMPTY_FILE = (
 def file_problems(
     errors: list[ErrorDetails], data: Any = None, root: type[BaseModel] = ScenarioSpec
 ) -> list[str]:
-    """One readable line per problem of a file (:func:`_problem`), unknown keys first. A typo of a
-    required key is one problem, not two: when an unknown key's did-you-mean is a key (or table) that is
-    missing in the same table, the unknown key's line says so (``unknown key pendulum.lenght = 2 (did
-    you mean 'length'? so the required pendulum.length is missing)``) and the missing key is not listed
-    again."""
+    """One readable line per problem of a file (:func:`_problem`), unknown keys first, a typo of a
+    required key one problem (:func:`merge_typos`: ``unknown key pendulum.lenght = 2 (did you mean
+    'length'? so the required pendulum.length is missing)``)."""
+    return merge_typos(
+        errors,
+        problem=lambda err: _problem(err, data, root),
+        keys_of=lambda table: _keys_of(table, data, root),
+        missing_name=lambda err: _problem(err, data, root).split(" is missing")[0].removeprefix("the "),
+    )
+
+
+def merge_typos(
+    errors: list[ErrorDetails],
+    problem: Callable[[ErrorDetails], str],
+    keys_of: Callable[[tuple[int | str, ...]], list[str]],
+    missing_name: Callable[[ErrorDetails], str],
+) -> list[str]:
+    """``problem(err)`` for each error, unknown keys first. A typo of a required key is one problem, not
+    two: when an unknown key's did-you-mean (among ``keys_of(its table)``) is a key or table that is
+    missing in the same table, the unknown key's line says so (``... (did you mean 'length'? so the
+    required <missing_name(the missing key's error)> is missing)``) and the missing key is not listed
+    again. Scenario, crane and sweep files share this rule."""
     ordered = sorted(errors, key=lambda err: err["type"] != "extra_forbidden")
     missing = {tuple(err["loc"]): err for err in ordered if err["type"] == "missing"}
     said: set[tuple[int | str, ...]] = set()
@@ -223,15 +241,15 @@ def file_problems(
         loc = tuple(err["loc"])
         if err["type"] == "missing" and loc in said:
             continue
-        text = _problem(err, data, root)
-        if err["type"] == "extra_forbidden" and isinstance(loc[-1], str):
-            near = nearest(loc[-1], _keys_of(loc[:-1], data, root))
+        text = problem(err)
+        if err["type"] == "extra_forbidden" and loc and isinstance(loc[-1], str):
+            near = nearest(loc[-1], keys_of(loc[:-1]))
             lost = (*loc[:-1], near or "")
             hint = did_you_mean(loc[-1], [near or ""])
             if near is not None and lost in missing and lost not in said and hint in text:
                 said.add(lost)
-                what = _problem(missing[lost], data, root).split(" is missing")[0].removeprefix("the ")
-                text = text.replace(hint, f"{hint[:-2]}? so the required {what} is missing)", 1)
+                required = f"{hint[:-2]}? so the required {missing_name(missing[lost])} is missing)"
+                text = text.replace(hint, required, 1)
         out.append(text)
     return out
 

@@ -48,11 +48,12 @@ from pydantic_core import ErrorDetails
 from .._core import InvalidInputError
 from ..model import Pendulum
 from ..scenario import ScenarioError
+from ..scenario.errors import merge_typos
 from ..scenario.schema import (
     _show,  # a value as it looks in TOML, as scenario errors show it
     printable,
 )
-from ..validate import MAX_SAMPLES, did_you_mean, nearest, parse_toml, read_file_capped
+from ..validate import MAX_SAMPLES, did_you_mean, parse_toml, read_file_capped
 from . import design as sweep_design
 from .compute import QUANTITIES, make_spec
 from .design import Design
@@ -218,24 +219,10 @@ def _names_at(table: tuple[int | str, ...]) -> list[str]:
 def _problems(errors: list[ErrorDetails]) -> list[str]:
     """One line per problem, unknown keys first; a typo of a required key is one problem, as in a
     scenario file (``unknown key quantitty (did you mean 'quantity'? so the required quantity is
-    missing)``), and the missing key is not listed again."""
-    ordered = sorted(errors, key=lambda err: err["type"] != "extra_forbidden")
-    missing = {tuple(err["loc"]) for err in ordered if err["type"] == "missing"}
-    said: set[tuple[int | str, ...]] = set()
-    out: list[str] = []
-    for err in ordered:
-        loc = tuple(err["loc"])
-        if err["type"] == "missing" and loc in said:
-            continue
-        text = _problem(err)
-        near = nearest(loc[-1], _names_at(loc[:-1])) if err["type"] == "extra_forbidden" and loc else None
-        lost = (*loc[:-1], near or "")
-        hint = did_you_mean(near, [near]) if near is not None else ""
-        if hint and hint in text and lost in missing and lost not in said:
-            said.add(lost)
-            text = text.replace(hint, f"{hint[:-2]}? so the required {_key(lost)} is missing)", 1)
-        out.append(text)
-    return out
+    missing)``, :func:`~pendulab.scenario.errors.merge_typos`)."""
+    return merge_typos(
+        errors, problem=_problem, keys_of=_names_at, missing_name=lambda err: _key(tuple(err["loc"]))
+    )
 
 
 def _problem(err: ErrorDetails) -> str:

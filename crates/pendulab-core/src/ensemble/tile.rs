@@ -7,7 +7,7 @@
 //!   v½ = v₀ − (h/2) g e₃ + μ x₀ (|x₁| = l),  x₁ = x₀ + h v½,  v₁ = v½ − (h/2) g e₃ − x₁ (x₁·u)/l²,
 //!
 //! with Kahan-compensated updates and the exact damping flow v ↦ e^{−c h/2} v (T-7.1) on either
-//! side when a lane is damped.
+//! side when a lane is damped (in place, or where the step reads v₀ and writes v₁: `inline_flow`).
 //!
 //! A step goes in two halves over the lanes: first every lane's position quadratic and multiplier μ
 //! (`Tile::multipliers`: with the fused arithmetic the Catalan series up to y³ for every lane, which
@@ -15,10 +15,8 @@
 //! it, and for the rest of the chunk, the full series, which takes the same short polynomial in the
 //! lanes within it; in the rare step where some lane is outside the full series' range, large h|v|,
 //! `PositionQuadratic::multiplier` for every lane — each lane gets its single path's bits whichever
-//! pass gave them), then the rest of the step, written over the tile's state in place. Measured
-//! against one pass that kept the new state aside and committed it when every lane was in range (4096
-//! starts × 2000 steps, one thread, x86-64-v4, CPU time, best and median of 5 interleaved): unfused
-//! 3.97 → 3.13 ns per trajectory-step, fused 2.31 → 2.18 (docs/performance.md).
+//! pass gave them), then the rest of the step, written over the tile's state in place: against one
+//! pass, 3.97 → 3.13 ns per trajectory-step unfused, 2.31 → 2.18 fused (docs/performance.md).
 //!
 //! The parameters l², 1/l², g and e^{−c dt/2} are held per form (`tile_params.rs`): one number each
 //! when every lane of the block has the same (`Shared`: one pendulum, many starts, the usual
@@ -28,9 +26,7 @@
 //! and that form takes the step in one pass instead, its result kept aside and committed when every
 //! lane was in range (`Tile::rattle_vertical_one_pass`; 2.3–2.5 ns per trajectory-step against
 //! 2.1–2.8 in two halves, depending on the process; in the 8-lane tiles of x86-64-v3 two halves are
-//! faster, `TileParams::TWO_HALVES`). Measured with aligned frames (`isa::align_frame`),
-//! fused, one thread, 4096 starts × 2000 steps: one pendulum 1.9 ns, lengths per trajectory 1.95,
-//! damping per trajectory 2.05, one damping rate 2.07.
+//! faster, `TileParams::TWO_HALVES`).
 //! SI units: \[m\], [m/s], [1/s], [m/s²].
 
 use crate::integrate::rattle_kernel::{
@@ -120,37 +116,73 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     #[inline(always)]
     pub(super) fn step<A: MulAdd, const COMPOSED: bool>(&mut self, h: f64, damped: bool) {
         if damped {
-            self.decay();
-        }
-        if A::FUSED && !P::TWO_HALVES {
-            // rows of parameters and the fused step's temporaries do not all fit in the registers
-            // at once: one pass, its result kept aside (module doc)
-            let short =
-                !self.long && self.rattle_vertical_one_pass(h, Multiplier::Series(SeriesTerms::Short));
-            if !short {
-                self.long = true;
-                if !self.rattle_vertical_one_pass(h, Multiplier::Series(SeriesTerms::Full)) {
-                    self.rattle_vertical_one_pass(h, Multiplier::Closed);
-                }
-            }
-        } else if A::FUSED {
-            self.rattle_vertical(h);
+            self.step_flow::<A, COMPOSED, true>(h);
         } else {
-            self.rattle::<A, COMPOSED>(h);
-        }
-        if damped {
-            self.decay();
+            self.step_flow::<A, COMPOSED, false>(h);
         }
     }
 
-    /// The exact flow of linear damping for dt/2: v ↦ e^{−c dt/2} v (the `damped` model's
-    /// `velocity_flow` without drag or frame rotation, same arithmetic).
+    /// [`Tile::step`] with the damping flow v ↦ e^{−c h/2} v on either side when `DAMPED`: in place
+    /// around the step, or where the step reads v₀ and writes v₁ ([`Tile::inline_flow`]).
+    #[inline(always)]
+    fn step_flow<A: MulAdd, const COMPOSED: bool, const DAMPED: bool>(&mut self, h: f64) {
+        if A::FUSED && !P::TWO_HALVES {
+            // rows of parameters and the fused step's temporaries do not all fit in the registers
+            // at once: one pass, its result kept aside (module doc)
+            let short = !self.long
+                && self.rattle_vertical_one_pass::<DAMPED>(h, Multiplier::Series(SeriesTerms::Short));
+            if !short {
+                self.long = true;
+                if !self.rattle_vertical_one_pass::<DAMPED>(h, Multiplier::Series(SeriesTerms::Full)) {
+                    self.rattle_vertical_one_pass::<DAMPED>(h, Multiplier::Closed);
+                }
+            }
+        } else {
+            // two passes over the lanes read v₀ twice: the flow taken in each when its factors are a
+            // row, else in place before and after them (`TileParams::DECAY_ROW`)
+            let in_place = DAMPED && !Self::inline_flow(DAMPED, A::FUSED);
+            if in_place {
+                self.decay();
+            }
+            if A::FUSED {
+                self.rattle_vertical::<DAMPED>(h);
+            } else {
+                self.rattle::<A, COMPOSED, DAMPED>(h);
+            }
+            if in_place {
+                self.decay();
+            }
+        }
+    }
+
+    /// Whether the damping flow is taken where a step in two halves reads v₀ and writes v₁ (the same
+    /// products, so the same bits): with the fused arithmetic and the factors in a row
+    /// (`TileParams::DECAY_ROW`); else in place before and after. Counted at x86-64-v3 (cachegrind,
+    /// docs/performance.md, "The damping flow in the step"): damping per trajectory 6 % fewer
+    /// instructions and 11 % fewer memory accesses; one rate and the unfused tiles 1–3 % more.
+    #[inline(always)]
+    const fn inline_flow(damped: bool, fused: bool) -> bool {
+        damped && fused && P::DECAY_ROW
+    }
+
+    /// The damping flow for dt/2 in place over the tile: v ↦ v e^{−c dt/2} ([`Tile::decayed`]).
     #[inline(always)]
     fn decay(&mut self) {
         for c in 0..3 {
             for i in 0..T {
                 self.v[c][i] *= self.params.decay_half(i);
             }
+        }
+    }
+
+    /// v [m/s] after the damping flow for dt/2 when `DAMPED`: v e^{−c dt/2} (the `damped` model's
+    /// `velocity_flow` without drag or frame rotation, same arithmetic), else v.
+    #[inline(always)]
+    fn decayed(&self, i: usize, v: DVec3, damped: bool) -> DVec3 {
+        if damped {
+            v * self.params.decay_half(i)
+        } else {
+            v
         }
     }
 
@@ -163,11 +195,12 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         VerticalField { h, kick0: kick, kick1: kick, l2, inv_l2 }
     }
 
-    /// x₀ [m], v₀ [m/s] of lane `i`.
+    /// x₀ [m], v₀ [m/s] of lane `i`, v₀ after the damping flow when `DAMPED`.
     #[inline(always)]
-    fn lane(&self, i: usize) -> (DVec3, DVec3) {
+    fn lane(&self, i: usize, damped: bool) -> (DVec3, DVec3) {
         let (x, v) = (&self.x, &self.v);
-        (DVec3::new(x[0][i], x[1][i], x[2][i]), DVec3::new(v[0][i], v[1][i], v[2][i]))
+        let v0 = DVec3::new(v[0][i], v[1][i], v[2][i]);
+        (DVec3::new(x[0][i], x[1][i], x[2][i]), self.decayed(i, v0, damped))
     }
 
     /// The first half of a step: every lane's position quadratic (its rows kept in `quads`) and
@@ -224,7 +257,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     /// every lane first ([`Tile::multipliers`]), then the rest of the step in place.
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
-    fn rattle<A: MulAdd, const COMPOSED: bool>(&mut self, h: f64) {
+    fn rattle<A: MulAdd, const COMPOSED: bool, const DAMPED: bool>(&mut self, h: f64) {
         let half = 0.5 * h;
         // (0, 0, −g)·(h/2) as the single path computes it: 0·(h/2) is +0 for RATTLE's dt > 0 (the
         // constant, which the compiler folds: 8 % fewer instructions than the product at
@@ -236,12 +269,12 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         let kick = |t: &Self, i: usize| DVec3::new(zero, zero, -t.params.g(i) * half);
         let mut quads = Quads::new();
         let mu = self.multipliers::<A>(h, &mut quads, |t, i| {
-            let (x0, v0) = t.lane(i);
+            let (x0, v0) = t.lane(i, Self::inline_flow(DAMPED, A::FUSED));
             let w = v0 + kick(t, i);
             (w, PositionQuadratic::new::<A>(x0, w, h, t.params.l2(i)))
         });
         for i in 0..T {
-            let (x0, v0) = self.lane(i);
+            let (x0, v0) = self.lane(i, Self::inline_flow(DAMPED, A::FUSED));
             let k = kick(self, i);
             let w = v0 + k;
             let quad = quads.get(i);
@@ -250,7 +283,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
             let mut cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
             let x1 = advance_position::<A>(x0, fmadd3::<A>(x0, mu[i], w), h, &mut cx);
             let v1 = advance_velocity::<A>(v0, k + k, x0, mu[i], x1, p, &mut cv);
-            self.set(i, [x1, v1, cx, cv]);
+            self.set(Self::inline_flow(DAMPED, A::FUSED), i, [x1, v1, cx, cv]);
         }
     }
 
@@ -258,20 +291,20 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     /// (`integrate/rattle_vertical.rs`, as the single path takes it for a vertical field).
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of several arrays at once: the loop the compiler vectorises
-    fn rattle_vertical(&mut self, h: f64) {
+    fn rattle_vertical<const DAMPED: bool>(&mut self, h: f64) {
         let mut quads = Quads::new();
         let mu = self.multipliers::<Fused>(h, &mut quads, |t, i| {
-            let (x0, v0) = t.lane(i);
+            let (x0, v0) = t.lane(i, Self::inline_flow(DAMPED, true));
             t.vertical_field(i, h).quadratic(x0, v0)
         });
         for i in 0..T {
-            let (x0, v0) = self.lane(i);
+            let (x0, v0) = self.lane(i, Self::inline_flow(DAMPED, true));
             let f = self.vertical_field(i, h);
             let w = DVec3::new(v0.x, v0.y, v0.z + f.kick0); // as VerticalField::quadratic
             let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
             let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
             let end = f.finish((x0, v0), (w, &quads.get(i)), mu[i], (cx, cv));
-            self.set(i, [end.x, end.v, end.comp_x, end.comp_v]);
+            self.set(Self::inline_flow(DAMPED, true), i, [end.x, end.v, end.comp_x, end.comp_v]);
         }
     }
 
@@ -281,11 +314,11 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     /// (module doc).
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
-    fn rattle_vertical_one_pass(&mut self, h: f64, how: Multiplier) -> bool {
+    fn rattle_vertical_one_pass<const DAMPED: bool>(&mut self, h: f64, how: Multiplier) -> bool {
         let mut next = [[[0.0; T]; 3]; 4];
         let mut ok = true;
         for i in 0..T {
-            let (x0, v0) = self.lane(i);
+            let (x0, v0) = self.lane(i, DAMPED);
             let field = self.vertical_field(i, h);
             let (w, quad) = field.quadratic(x0, v0);
             let mu = match how {
@@ -299,9 +332,10 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
             let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
             let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
             let end = field.finish((x0, v0), (w, &quad), mu, (cx, cv));
+            let v1 = self.decayed(i, end.v, DAMPED);
             for c in 0..3 {
                 next[0][c][i] = end.x[c];
-                next[1][c][i] = end.v[c];
+                next[1][c][i] = v1[c];
                 next[2][c][i] = end.comp_x[c];
                 next[3][c][i] = end.comp_v[c];
             }
@@ -312,9 +346,10 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         ok
     }
 
-    /// Lane `i`'s new x₁ [m], v₁ [m/s] and their compensations.
+    /// Lane `i`'s new x₁ [m], v₁ [m/s] (after the damping flow when `DAMPED`) and their compensations.
     #[inline(always)]
-    fn set(&mut self, i: usize, [x, v, cx, cv]: [DVec3; 4]) {
+    fn set(&mut self, damped: bool, i: usize, [x, v, cx, cv]: [DVec3; 4]) {
+        let v = self.decayed(i, v, damped);
         for c in 0..3 {
             self.x[c][i] = x[c];
             self.v[c][i] = v[c];

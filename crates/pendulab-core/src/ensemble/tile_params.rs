@@ -68,6 +68,10 @@ pub(super) trait TileParams: Copy {
     /// × 10³ steps, 9 processes per build alternating) 19.99–23.16 ms → 18.79–21.20 ms (medians 22.1
     /// and 21.0). Only the speed depends on it, never a bit.
     const TWO_HALVES: bool;
+    /// Whether e^{−c dt/2} is a row (damping per lane): then a step taken in two halves applies the
+    /// damping flow to v₀ where each half reads it; one number is applied once, in place, before
+    /// them (`Tile::step_flow`). Only the speed depends on it, never a bit.
+    const DECAY_ROW: bool;
     /// Lanes o…o + T of the block's parameters (the damping factors of the first sub-step size).
     fn load(b: &Block, o: usize) -> Self;
     /// Takes the damping factors of the block's row `d` (sub-step sizes: `stages.rs`).
@@ -89,6 +93,7 @@ pub(super) struct Params<const T: usize, L, G, D> {
 
 impl<const T: usize, L: Lane<T>, G: Lane<T>, D: Lane<T>> TileParams for Params<T, L, G, D> {
     const TWO_HALVES: bool = 2 * L::ROWS + G::ROWS + D::ROWS <= 2 || T == 8;
+    const DECAY_ROW: bool = D::ROWS == 1;
     #[inline(always)]
     fn load(b: &Block, o: usize) -> Self {
         Self {
