@@ -150,6 +150,25 @@ def _unknown_pendulum_key(name: str, value: Any, model: str) -> str:
     return text + f"; allowed keys in [pendulum] for model {model!r}: {', '.join(keys)}"
 
 
+def _shown_loc(loc: tuple[int | str, ...]) -> tuple[int | str, ...]:
+    """``loc`` as a line shows it: a model parameter ``("pendulum", "params", name)`` as written in the
+    file, ``("pendulum", name)``."""
+    return ("pendulum", str(loc[2])) if loc[:2] == ("pendulum", "params") and len(loc) == 3 else loc
+
+
+def _is_table(loc: tuple[int | str, ...], root: type[BaseModel]) -> bool:
+    """Whether ``loc`` (as shown) is a whole table of the file (``[pendulum]``, ``[crane]``, …)."""
+    return len(loc) == 1 and (loc[0] in SECTIONS or loc[0] in root.model_fields)
+
+
+def _missing_name(loc: tuple[int | str, ...], root: type[BaseModel]) -> str:
+    """How :func:`_problem` names a missing key: ``table [simulation]`` or the dotted key
+    (``pendulum.length``)."""
+    shown_loc = _shown_loc(loc)
+    key = abbreviate(_key(shown_loc))
+    return f"table [{key}]" if _is_table(shown_loc, root) else key
+
+
 def _problem(err: ErrorDetails, data: Any = None, root: type[BaseModel] = ScenarioSpec) -> str:
     """One readable line for one pydantic error: the dotted key, the bad value, what is allowed.
     ``data`` is the raw input (it names the model whose keys ``[pendulum]`` takes); ``root`` the
@@ -166,9 +185,9 @@ def _problem(err: ErrorDetails, data: Any = None, root: type[BaseModel] = Scenar
         if spec is not None:
             unit = "degrees" if name.endswith("_deg") else spec["unit"]
             allowed = f"{spec['allowed']} (in {unit}; {spec['description']})"
-        loc = ("pendulum", name)
+    loc = _shown_loc(loc)
     key = abbreviate(_key(loc))
-    if kind == "missing" and len(loc) == 1 and (loc[0] in SECTIONS or loc[0] in root.model_fields):
+    if kind == "missing" and _is_table(loc, root):
         return f"the table [{key}] is missing"
     if kind == "missing":
         return f"{key} is missing; expected {allowed}" if allowed else f"{key} is missing"
@@ -218,7 +237,7 @@ def file_problems(
         errors,
         problem=lambda err: _problem(err, data, root),
         keys_of=lambda table: _keys_of(table, data, root),
-        missing_name=lambda err: _problem(err, data, root).split(" is missing")[0].removeprefix("the "),
+        missing_name=lambda err: _missing_name(tuple(err["loc"]), root),
     )
 
 
