@@ -81,7 +81,10 @@ BASE = "[crane]\nrope = 10.0\n[simulation]\nt_end = 5.0\n"
             ["shaper kind 'zzz'", "zv, zvd, zvdd, ei, 2hump_ei"],
         ),
         (BASE + "[shaper]\nkind = 'zv'\n", ["needs a [move]"]),
-        (BASE + "[hoist]\nt = [0.0, 1.0]\nlength = [10.0, -1.0]\n", ["hoist.length[1] = -1.0: must be >= 1e-6"]),
+        (
+            BASE + "[hoist]\nt = [0.0, 1.0]\nlength = [10.0, -1.0]\n",
+            ["hoist.length[1] = -1.0: must be >= 1e-6"],
+        ),
         (BASE + "[wind]\nvelocity = [1.0, 2.0]\n", ["wind.velocity = [1.0, 2.0]", "3 items"]),
         (BASE + "[simulation2]\nx = 1\n", ["unknown key simulation2", "allowed keys in the top level"]),
     ],
