@@ -2,18 +2,19 @@
 //! one rule of the parameters' hints: `pl.Pendulum`, scenario files, the server's `set_model`), computed
 //! as Python computes it, so that the lab's engine decides as the Python layer whether a key is near one
 //! of a model's own parameters (`live::no_parameter`: else another model's parameter is named with its
-//! models). An option equal to the name but for case first, else `difflib.get_close_matches(name[:100],
-//! options, n=1, cutoff=0.6)`: the option of the largest Ratcliff–Obershelp ratio 2 M / (|a| + |b|) ≥ 0.6
-//! (M: the characters of the matching blocks, found as `difflib.SequenceMatcher` finds them, the longest
-//! common block first, then recursively left and right of it), of equal ratios the greater name.
+//! models). An option equal to the name but for case first (`str.casefold`'s rule, `casefold`), else
+//! `difflib.get_close_matches(name[:100], options, n=1, cutoff=0.6)`: the option of the largest
+//! Ratcliff–Obershelp ratio 2 M / (|a| + |b|) ≥ 0.6 (M: the characters of the matching blocks, found as
+//! `difflib.SequenceMatcher` finds them, the longest common block first, then recursively left and right
+//! of it), of equal ratios the greater name.
 
 /// The option equal to `name` but for case, else the one `difflib.get_close_matches(name[:100],
 /// options, n=1)` gives, else None (see the module's doc). Case-sensitive but for the first rule:
 /// `AMPLITUDE` is near no parameter of `damped` (`forcing_amplitude`), `restitution` is near `friction`.
 pub fn close_match<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     let options: Vec<&str> = options.into_iter().collect();
-    let lower = name.to_lowercase();
-    if let Some(o) = options.iter().find(|o| o.to_lowercase() == lower) {
+    let folded = casefold(name);
+    if let Some(o) = options.iter().find(|o| casefold(o) == folded) {
         return Some(o);
     }
     let word: Vec<char> = name.chars().take(100).collect();
@@ -24,6 +25,28 @@ pub fn close_match<'a>(name: &str, options: impl IntoIterator<Item = &'a str>) -
         _ => Some((r, o)),
     });
     best.map(|(_, o)| o)
+}
+
+/// `str.casefold` as far as it can make a name equal to an ASCII option: the lower case, and the full
+/// foldings that end in ASCII letters where the lower case does not (ß and ẞ → ss, ſ → s, the
+/// ligatures ﬀ ﬁ ﬂ ﬃ ﬄ ﬅ ﬆ → ff fi fl ffi ffl st st; Unicode's CaseFolding.txt, status F and C). The
+/// other foldings only map letters to other non-ASCII letters, which no option of the core holds.
+fn casefold(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            'ß' | 'ẞ' => out.push_str("ss"),
+            'ſ' => out.push('s'),
+            'ﬀ' => out.push_str("ff"),
+            'ﬁ' => out.push_str("fi"),
+            'ﬂ' => out.push_str("fl"),
+            'ﬃ' => out.push_str("ffi"),
+            'ﬄ' => out.push_str("ffl"),
+            'ﬅ' | 'ﬆ' => out.push_str("st"),
+            _ => out.extend(c.to_lowercase()),
+        }
+    }
+    out
 }
 
 /// A range of indices, start and end (exclusive).
@@ -117,5 +140,18 @@ mod tests {
         assert_eq!(close_match("ab", ["ax", "ay"]), None);
         assert_eq!(close_match("abc", ["abx", "aby"]), Some("aby"));
         assert!((ratio(&['a', 'b', 'c', 'd'], &['b', 'c', 'd', 'e']) - 0.75).abs() < 1e-15);
+    }
+
+    /// Equal but for case as Python's `str.casefold` decides it (CPython 3.11: `"MAẞ".casefold() ==
+    /// "mass"`, `"ﬁnal".casefold() == "final"`, `"ſtep".casefold() == "step"`), where the lower case
+    /// alone (`"maß"`) is not.
+    #[test]
+    fn equal_but_for_case_as_python_casefolds() {
+        assert_eq!(close_match("MAẞ", ["g", "length", "mass"]), Some("mass"));
+        assert_eq!(close_match("maß", ["g", "mass"]), Some("mass"));
+        assert_eq!(close_match("ﬁnal", ["final", "first"]), Some("final"));
+        assert_eq!(close_match("ſtep", ["step", "steps"]), Some("step"));
+        assert_eq!(casefold("DaMpInG"), "damping");
+        assert_eq!(casefold("Ünïcode"), "ünïcode");
     }
 }
