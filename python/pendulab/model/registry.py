@@ -89,16 +89,17 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
     """``model`` (when given) is a registered name, and each keyword parameter a short name with a
     finite value (within the model's limits when it is one of ``model``'s parameters; the core then
     checks names and ranges against the model inferred or given)."""
+    table = _models()  # once: a fitted model is built for every residual (1700 times in one fit)
+    own = {p["name"]: p for m in table if m["name"] == model for p in m["params"]}
     if model is not None:
-        choice("model", model, [m["name"] for m in _models()])
-        names = [q["name"] for m in _models() if m["name"] == model for q in m["params"]]
+        choice("model", model, [m["name"] for m in table])
+        names = list(own)
         unknown = {k: v for k, v in extra.items() if k not in names}
         if unknown:
             raise refused(unknown, not_of_model(model, list(unknown), names))
     for key, value in extra.items():
         if len(key) > 64:
             raise invalid("parameter name", key, "a parameter of the model (pendulab.models())")
-        own = {p["name"]: p for m in _models() if m["name"] == model for p in m["params"]}
         finite(
             str(key),
             value,
