@@ -64,7 +64,7 @@ def test_bad_files(patch: dict, needle: str) -> None:
         parse({**BASE, **patch})
 
 
-ROPE = r"allowed: rope length at t = 0 in m, >= 1e-6 and <= 10000"
+ROPE = r"allowed: rope length at t = 0 in m, >= 1e-6 and <= 1e4"
 
 
 @pytest.mark.parametrize(

@@ -57,6 +57,25 @@ def test_models_lists_the_registry_with_units_and_sane_defaults() -> None:
     assert damped["forcing_amplitude"]["unit"] == "m/s^2" and damped["forcing_omega"]["unit"] == "rad/s"
 
 
+def test_the_callers_copy_of_the_registry_is_the_callers_own() -> None:
+    """The checks read one shared table (fetched once, a fit builds a model per residual); changing the
+    list pl.models() returned changes neither them nor the next pl.models(), and the fit's per-model
+    view of the table is read-only."""
+    from pendulab.fitting.problem import model_params
+
+    mine = pl.models()
+    mine[1]["params"][3]["max"] = 0.0  # damping [1/s]
+    mine[0]["params"].clear()
+    assert pl.Pendulum(1.0, model="damped", damping=0.5).params()["damping"] == 0.5
+    assert pl.models() == pl._core.models() != mine
+    own = model_params("damped")
+    assert own["damping"]["max"] > 0.5 and model_params("damped") is own
+    with pytest.raises(TypeError):
+        own["damping"]["max"] = 0.0  # type: ignore[index]
+    with pytest.raises(pl.InvalidInputError, match=r"unknown model 'dampd': use one of ideal, damped"):
+        model_params("dampd")
+
+
 @pytest.mark.parametrize("name", [m["name"] for m in pl.models() if m["name"] != "spring"])
 def test_every_model_is_constructible_from_python_and_from_a_scenario_file(name: str) -> None:
     """Each model with every own parameter given (at its default) builds from Python and from a file;

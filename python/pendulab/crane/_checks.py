@@ -13,18 +13,20 @@ from typing import Any
 import numpy as np
 
 from .. import memory
-from ..validate import COMMON, MAX_SAMPLES, FloatArray, array, finite, invalid, spec
+from ..validate import (
+    LONGEST,
+    LONGEST_TEXT,
+    MAX_SAMPLES,
+    SHORTEST,
+    SHORTEST_TEXT,
+    FloatArray,
+    array,
+    finite,
+    invalid,
+    spec,
+)
 from ..validate import number as number_within
 
-LONGEST = float(COMMON["length"]["max"])
-"""The longest rope [m] (a crane's ``rope`` and ``rigging``, a hoist's lengths and its spline between
-them): a pendulum's length limit, ``pl.limits()`` ``length`` (1e4 m; docs/limits.md)."""
-LONGEST_TEXT = f"{LONGEST:.0e}".replace("e+0", "e")
-""":data:`LONGEST` as the messages write it (``1e4``)."""
-SHORTEST = float(COMMON["length"]["min"])
-"""The shortest rope [m]: a pendulum's least length, ``pl.limits()`` ``length`` (1e-6 m)."""
-SHORTEST_TEXT = f"{SHORTEST:.0e}".replace("e-0", "e-")
-""":data:`SHORTEST` as the messages write it (``1e-6``)."""
 ROPE_ALLOWED = f"in [{SHORTEST_TEXT}, {LONGEST_TEXT}] m (a pendulum's length, pl.limits() length)"
 """What a rope length [m] may be, in the messages (after "a finite number" or "finite numbers")."""
 

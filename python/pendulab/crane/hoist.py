@@ -23,7 +23,8 @@ import numpy as np
 from scipy.interpolate import CubicSpline
 
 from .._core import InvalidInputError
-from ._checks import LONGEST, LONGEST_TEXT, SHORTEST, SHORTEST_TEXT, ropes, time, times
+from ..validate import LONGEST, LONGEST_TEXT, SHORTEST, SHORTEST_TEXT
+from ._checks import ropes, time, times
 from ._display import Row, Shown, hoist_rows
 from .paths import Path
 from .shaper import FloatArray
@@ -55,8 +56,8 @@ class Hoist(Path, Shown):
 
     def _check_range(self, ts: FloatArray, ls: FloatArray) -> None:
         """Refuses a spline whose true range (:meth:`extremes`) leaves what a rope may be: below the
-        shortest rope (:data:`~pendulab.crane._checks.SHORTEST`), above the longest
-        (:data:`~pendulab.crane._checks.LONGEST`), or beyond the samples' own range by more than their
+        shortest rope (:data:`~pendulab.validate.SHORTEST`), above the longest
+        (:data:`~pendulab.validate.LONGEST`), or beyond the samples' own range by more than their
         spread (module doc), naming the time, the length and the samples around it."""
         (t_low, low), (t_high, high) = self.extremes()
         top, bottom = float(ls.max()), float(ls.min())

@@ -19,10 +19,9 @@ import numpy as np
 
 from .._core import InvalidInputError, ModelSpec
 from .._core import diagnostics as _diagnostics
-from .._core import models as _models
 from .._warn import warn_user
 from ..display import Row, html_table
-from ..validate import COMMON, array, invalid
+from ..validate import COMMON, array, invalid, model_table
 from ..validate import number as checked
 from .registry import _infer_model, check_model_keywords, infer_model
 from .state import (
@@ -217,7 +216,7 @@ class Pendulum:
             ("gravity g", self._g, "m/s²"),
             ("mass m", self._mass, "kg"),
         ]
-        units = {p["name"]: p["unit"] for m in _models() if m["name"] == self.model for p in m["params"]}
+        units = {p["name"]: p["unit"] for m in model_table() if m["name"] == self.model for p in m["params"]}
         rows += [(k, v, units.get(k, "")) for k, v in self._extra.items()]
         if self._g != 0.0:
             omega0 = math.sqrt(abs(self._g) / self._length)

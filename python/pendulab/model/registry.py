@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._core import InvalidInputError
 from .._core import models as _models
-from ..validate import choice, did_you_mean, finite, invalid, show
+from ..validate import choice, did_you_mean, finite, invalid, model_table, show
 
 if TYPE_CHECKING:
     from .._core import ModelInfo
@@ -51,7 +51,7 @@ def _infer_model(keys: set[str]) -> str:
     ``"damped"`` when none has them all (the core then names the parameter it does not know)."""
     if not keys:
         return "ideal"
-    for m in _models():
+    for m in model_table():
         if keys <= {p["name"] for p in m["params"]}:
             return m["name"]
     return "damped"
@@ -62,8 +62,8 @@ def infer_model(extra: dict[str, float]) -> str:
     no model has, or keywords that no one model has together, is an :class:`InvalidInputError` naming
     them (with the nearest name, or the models that have each) — not "the 'damped' model has no
     parameter", a model the caller never named."""
-    owners: dict[str, list[str]] = {p["name"]: [] for m in _models() for p in m["params"]}
-    for m in _models():
+    owners: dict[str, list[str]] = {p["name"]: [] for m in model_table() for p in m["params"]}
+    for m in model_table():
         for q in m["params"]:
             owners[q["name"]].append(m["name"])
     unknown = {k: v for k, v in extra.items() if k not in owners}
@@ -75,7 +75,7 @@ def infer_model(extra: dict[str, float]) -> str:
         takes = "Pendulum takes length, g, mass, model, pivot_samples, force and the models' own parameters"
         raise refused(unknown, f"{each}; {takes} (pendulab.models(), `pendulab models`)")
     model = _infer_model(set(extra))
-    if not set(extra) <= {p["name"] for m in _models() if m["name"] == model for p in m["params"]}:
+    if not set(extra) <= {p["name"] for m in model_table() if m["name"] == model for p in m["params"]}:
         given = ", ".join(f"{k} = {show(v)}" for k, v in extra.items())
         which = "; ".join(f"{k}: {', '.join(owners[k])}" for k in extra)
         raise InvalidInputError(
@@ -89,7 +89,7 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
     """``model`` (when given) is a registered name, and each keyword parameter a short name with a
     finite value (within the model's limits when it is one of ``model``'s parameters; the core then
     checks names and ranges against the model inferred or given)."""
-    table = _models()  # once: a fitted model is built for every residual (1700 times in one fit)
+    table = model_table()
     own = {p["name"]: p for m in table if m["name"] == model for p in m["params"]}
     if model is not None:
         choice("model", model, [m["name"] for m in table])
@@ -140,7 +140,7 @@ def elsewhere(
     if did_you_mean(key, names):
         return None
     if params is None:
-        params = {m["name"]: [q["name"] for q in m["params"]] for m in _models()}
+        params = {m["name"]: [q["name"] for q in m["params"]] for m in model_table()}
     fold = str(key).casefold()
     name = next((q for qs in params.values() for q in qs if q.casefold() == fold), None)
     owners = tuple(m for m, qs in params.items() if m != model and name in set(qs))

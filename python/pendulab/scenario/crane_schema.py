@@ -19,14 +19,8 @@ from typing import Annotated, Any
 from pydantic import AliasChoices, BaseModel, ConfigDict, Field, model_validator
 
 from .._numbers import shown
-from ..validate import COMMON
+from ..validate import LONGEST, LONGEST_TEXT, SHORTEST, SHORTEST_TEXT
 from .table_base import _show
-
-LONGEST = float(COMMON["length"]["max"])
-"""The longest rope [m] (``rope``, ``rigging``, ``[shaper] rope``, ``[hoist] length``): a pendulum's
-length limit (``pl.limits()`` ``length``, 1e4 m), as :class:`pendulab.crane.Crane` checks it."""
-SHORTEST = float(COMMON["length"]["min"])
-"""The shortest rope [m]: a pendulum's least length (``pl.limits()`` ``length``, 1e-6 m)."""
 
 CRANE_SECTIONS = ("crane", "move", "shaper", "hoist", "wind", "simulation")
 """The crane file's tables, in the order :meth:`Scenario.to_toml` writes them."""
@@ -47,7 +41,7 @@ def _rope(description: str, default: Any = ...) -> Any:
         default,
         ge=SHORTEST,
         le=LONGEST,
-        description=f"{description}, >= {shown(SHORTEST)} and <= {shown(LONGEST)}",
+        description=f"{description}, >= {SHORTEST_TEXT} and <= {LONGEST_TEXT}",
     )
 
 
@@ -98,7 +92,7 @@ class HoistSection(_Section):
     length: list[Annotated[float, Field(ge=SHORTEST, le=LONGEST)]] = Field(
         min_length=2,
         max_length=100_000,
-        description=f"rope lengths in m at those times, >= {shown(SHORTEST)} and <= {shown(LONGEST)}",
+        description=f"rope lengths in m at those times, >= {SHORTEST_TEXT} and <= {LONGEST_TEXT}",
     )
 
 

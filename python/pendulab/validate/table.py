@@ -12,6 +12,7 @@ characters (:func:`invalid`).
 
 from __future__ import annotations
 
+from functools import cache
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -21,7 +22,7 @@ from .._core import limits as _core_limits
 from .._core import models as _models
 
 if TYPE_CHECKING:
-    from .._core import ParamSpec
+    from .._core import ModelInfo, ParamSpec
 
 SHOW_CHARS = 80
 """The longest a bad value is echoed in an error message (characters)."""
@@ -30,8 +31,25 @@ LIMITS: dict[str, ParamSpec] = {p["name"]: p for p in _core_limits()}
 """The core's limits by name: position, velocity, angle, angle_rate, time, dt, steps, samples,
 saved_bytes, file_bytes, file_nesting (each with unit, min, max, description = the reason, allowed)."""
 
-COMMON: dict[str, ParamSpec] = {p["name"]: p for p in _models()[0]["params"][:3]}
+
+@cache
+def model_table() -> tuple[ModelInfo, ...]:
+    """The core's model registry (:func:`pendulab.models`), fetched once: it is compiled into the core,
+    and a fit builds a model for every residual (each build checks its keywords against the table).
+    Shared, so only read it; ``pendulab.models()`` gives a caller a fresh copy to keep."""
+    return tuple(_models())
+
+
+COMMON: dict[str, ParamSpec] = {p["name"]: p for p in model_table()[0]["params"][:3]}
 """The parameters every model shares: length [m], mass [kg], g [m/s²] with their limits."""
+SHORTEST = float(COMMON["length"]["min"])
+"""The shortest pendulum, or crane rope [m]: ``pl.limits()`` ``length`` (1e-6 m; docs/limits.md)."""
+LONGEST = float(COMMON["length"]["max"])
+"""The longest pendulum, or crane rope [m]: ``pl.limits()`` ``length`` (1e4 m; docs/limits.md)."""
+SHORTEST_TEXT = f"{SHORTEST:.0e}".replace("e-0", "e-")
+""":data:`SHORTEST` as the messages write it (``1e-6``)."""
+LONGEST_TEXT = f"{LONGEST:.0e}".replace("e+0", "e")
+""":data:`LONGEST` as the messages write it (``1e4``)."""
 
 FILE_BYTES = int(LIMITS["file_bytes"]["max"])
 """The largest scenario or sweep file read [B] (checked before parsing)."""
@@ -86,7 +104,7 @@ def invalid(name: str, value: Any, allowed: str) -> InvalidInputError:
 
 def param_spec(model: str, name: str) -> ParamSpec:
     """The registry's spec of parameter ``name`` of ``model`` (units, limits)."""
-    return next(p for m in _models() if m["name"] == model for p in m["params"] if p["name"] == name)
+    return next(p for m in model_table() if m["name"] == model for p in m["params"] if p["name"] == name)
 
 
 def spec(name: str, unit: str, lo: float, hi: float, allowed: str) -> ParamSpec:

@@ -175,7 +175,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         }
     }
 
-    /// v [m/s] after the damping flow for dt/2 when `DAMPED`: v e^{−c dt/2} (the `damped` model's
+    /// v [m/s] after the damping flow for dt/2 when `damped`: v e^{−c dt/2} (the `damped` model's
     /// `velocity_flow` without drag or frame rotation, same arithmetic), else v.
     #[inline(always)]
     fn decayed(&self, i: usize, v: DVec3, damped: bool) -> DVec3 {
@@ -195,7 +195,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         VerticalField { h, kick0: kick, kick1: kick, l2, inv_l2 }
     }
 
-    /// x₀ [m], v₀ [m/s] of lane `i`, v₀ after the damping flow when `DAMPED`.
+    /// x₀ [m], v₀ [m/s] of lane `i`, v₀ after the damping flow when `damped`.
     #[inline(always)]
     fn lane(&self, i: usize, damped: bool) -> (DVec3, DVec3) {
         let (x, v) = (&self.x, &self.v);
@@ -259,6 +259,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     #[allow(clippy::needless_range_loop)] // lane i of a dozen arrays at once: the loop the compiler vectorises
     fn rattle<A: MulAdd, const COMPOSED: bool, const DAMPED: bool>(&mut self, h: f64) {
         let half = 0.5 * h;
+        let flow = Self::inline_flow(DAMPED, A::FUSED);
         // (0, 0, −g)·(h/2) as the single path computes it: 0·(h/2) is +0 for RATTLE's dt > 0 (the
         // constant, which the compiler folds: 8 % fewer instructions than the product at
         // x86-64-v3), and −0 for a composition's backward sub-steps. That −0 never shows in a
@@ -269,12 +270,12 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         let kick = |t: &Self, i: usize| DVec3::new(zero, zero, -t.params.g(i) * half);
         let mut quads = Quads::new();
         let mu = self.multipliers::<A>(h, &mut quads, |t, i| {
-            let (x0, v0) = t.lane(i, Self::inline_flow(DAMPED, A::FUSED));
+            let (x0, v0) = t.lane(i, flow);
             let w = v0 + kick(t, i);
             (w, PositionQuadratic::new::<A>(x0, w, h, t.params.l2(i)))
         });
         for i in 0..T {
-            let (x0, v0) = self.lane(i, Self::inline_flow(DAMPED, A::FUSED));
+            let (x0, v0) = self.lane(i, flow);
             let k = kick(self, i);
             let w = v0 + k;
             let quad = quads.get(i);
@@ -283,7 +284,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
             let mut cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
             let x1 = advance_position::<A>(x0, fmadd3::<A>(x0, mu[i], w), h, &mut cx);
             let v1 = advance_velocity::<A>(v0, k + k, x0, mu[i], x1, p, &mut cv);
-            self.set(Self::inline_flow(DAMPED, A::FUSED), i, [x1, v1, cx, cv]);
+            self.set(flow, i, [x1, v1, cx, cv]);
         }
     }
 
@@ -292,19 +293,20 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
     #[inline(always)]
     #[allow(clippy::needless_range_loop)] // lane i of several arrays at once: the loop the compiler vectorises
     fn rattle_vertical<const DAMPED: bool>(&mut self, h: f64) {
+        let flow = Self::inline_flow(DAMPED, true);
         let mut quads = Quads::new();
         let mu = self.multipliers::<Fused>(h, &mut quads, |t, i| {
-            let (x0, v0) = t.lane(i, Self::inline_flow(DAMPED, true));
+            let (x0, v0) = t.lane(i, flow);
             t.vertical_field(i, h).quadratic(x0, v0)
         });
         for i in 0..T {
-            let (x0, v0) = self.lane(i, Self::inline_flow(DAMPED, true));
+            let (x0, v0) = self.lane(i, flow);
             let f = self.vertical_field(i, h);
             let w = DVec3::new(v0.x, v0.y, v0.z + f.kick0); // as VerticalField::quadratic
             let cx = DVec3::new(self.cx[0][i], self.cx[1][i], self.cx[2][i]);
             let cv = DVec3::new(self.cv[0][i], self.cv[1][i], self.cv[2][i]);
             let end = f.finish((x0, v0), (w, &quads.get(i)), mu[i], (cx, cv));
-            self.set(Self::inline_flow(DAMPED, true), i, [end.x, end.v, end.comp_x, end.comp_v]);
+            self.set(flow, i, [end.x, end.v, end.comp_x, end.comp_v]);
         }
     }
 
@@ -346,7 +348,7 @@ impl<const T: usize, P: TileParams> Tile<T, P> {
         ok
     }
 
-    /// Lane `i`'s new x₁ [m], v₁ [m/s] (after the damping flow when `DAMPED`) and their compensations.
+    /// Lane `i`'s new x₁ [m], v₁ [m/s] (after the damping flow when `damped`) and their compensations.
     #[inline(always)]
     fn set(&mut self, damped: bool, i: usize, [x, v, cx, cv]: [DVec3; 4]) {
         let v = self.decayed(i, v, damped);
