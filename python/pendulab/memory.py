@@ -9,18 +9,29 @@ need is estimated first and refused with :class:`pendulab.InvalidInputError` whe
 the memory the operating system reports available (``MemAvailable``), the room left under the
 process's address-space limit (``ulimit -v``, RLIMIT_AS) and under its cgroup's memory limit
 (containers). All sizes in bytes.
+
+Asking the operating system reads four files (about 0.5 ms), more than a short run costs, and a fit
+or a sweep runs thousands. So a reading is kept for :data:`FRESH_FOR` seconds and reused for a need
+below 1/:data:`SMALL_SHARE` of it, and for the cap on saved samples; a larger need, or one that would
+be refused, always reads afresh.
 """
 
 from __future__ import annotations
 
 import os
 import resource
+import time
 from pathlib import Path
 
 from ._core import InvalidInputError
 
 USABLE_FRACTION = 0.8
 """The share of the available memory one call may plan to fill."""
+FRESH_FOR = 0.5
+"""How long a reading of the available memory is reused [s] (module doc)."""
+SMALL_SHARE = 64
+"""A need below 1/SMALL_SHARE of a recent reading is checked against it without asking again."""
+_recent: tuple[float, int | None] | None = None
 
 
 def _meminfo(key: str) -> int | None:
@@ -75,12 +86,26 @@ def available_bytes() -> int | None:
     room = _cgroup_room()
     if room is not None:
         known.append(room)
-    return max(0, min(known)) if known else None
+    have = max(0, min(known)) if known else None
+    global _recent
+    _recent = (time.monotonic(), have)
+    return have
+
+
+def recent_available_bytes() -> int | None:
+    """:func:`available_bytes` as read within the last :data:`FRESH_FOR` seconds, else afresh."""
+    if _recent is not None and time.monotonic() - _recent[0] < FRESH_FOR:
+        return _recent[1]
+    return available_bytes()
 
 
 def check_memory(what: str, need: float, hint: str) -> None:
     """Raises :class:`pendulab.InvalidInputError` when ``need`` bytes for ``what`` exceed
-    :data:`USABLE_FRACTION` of :func:`available_bytes`; ``hint`` says how to ask for less."""
+    :data:`USABLE_FRACTION` of :func:`available_bytes`; ``hint`` says how to ask for less. A need
+    below 1/:data:`SMALL_SHARE` of a recent reading is passed on it (module doc)."""
+    recent = recent_available_bytes()
+    if recent is None or need * SMALL_SHARE <= recent:
+        return
     have = available_bytes()
     if have is None or need <= USABLE_FRACTION * have:
         return
@@ -108,7 +133,7 @@ def saved_bytes_cap(given: int | None) -> int | None:
     limit instead of aborting the process when an allocation fails. None: the core's default."""
     if given is not None:
         return given
-    have = available_bytes()
+    have = recent_available_bytes()
     if have is None:
         return None
     return max(SAMPLE_BYTES, min(DEFAULT_SAVED_BYTES, int(USABLE_FRACTION * have / SAMPLE_COPIES)))

@@ -18,6 +18,9 @@ export const HISTORY_MAX = 4000;
 export const TRAJECTORY_MAX = 200_000;
 /** Most simulated time the playhead trails the newest frame, in ticks of the server. */
 export const MAX_LAG_TICKS = 3;
+/** Most wall-clock time [s] (times the time scale: simulated time) the playhead waits for a pendulum drawn
+ *  beside this one (`LabStore.advancePlayhead`'s `holdAt`). */
+export const MAX_HOLD_SECONDS = 1;
 
 /** How the lab's engine rounds a·b + c, both the page's and `pendulab serve`'s (the live session steps with
  *  the core's default, `Arithmetic::Unfused`: docs/lab.md, "Against the Python package"); `pl.simulate(...,
@@ -297,20 +300,27 @@ export class LabStore {
   }
 
   /** Moves the playhead by wallDt seconds of wall clock × time scale, kept within MAX_LAG_TICKS ticks of the
-   *  newest frame (and at it while paused). Returns the time shown, or null without frames. */
-  advancePlayhead(wallDt: number): number | null {
+   *  newest frame (and at it while paused). `holdAt` [s]: the newest time of the pendulums drawn beside
+   *  this one (the two-pendulum panel); a session started after this one's restart runs a constant time
+   *  behind it (about 0.17 s in the one-file lab, where its engine starts), so the playhead waits there,
+   *  and all are drawn at one time, unless that is more than MAX_HOLD_SECONDS × time scale behind this
+   *  one's newest frame (a stalled session does not stop this one). Returns the time shown, or null
+   *  without frames. */
+  advancePlayhead(wallDt: number, holdAt: number | null = null): number | null {
     const latest = this.latest();
     const first = this.frames[0];
     if (latest === undefined || latest === null || first === undefined) return (this.playT = null);
     const s = this.status;
-    if (s === null || s.paused || this.playT === null) {
-      this.playT = latest.t;
-      return this.playT;
+    let t: number;
+    if (s === null || s.paused || this.playT === null) t = latest.t;
+    else {
+      const maxLag = (MAX_LAG_TICKS * s.time_scale) / this.tickHz;
+      t = this.playT + Math.max(0, wallDt) * s.time_scale;
+      t = Math.min(t, latest.t);
+      t = Math.max(t, latest.t - maxLag, first.t);
     }
-    const maxLag = (MAX_LAG_TICKS * s.time_scale) / this.tickHz;
-    let t = this.playT + Math.max(0, wallDt) * s.time_scale;
-    t = Math.min(t, latest.t);
-    t = Math.max(t, latest.t - maxLag, first.t);
+    const hold = MAX_HOLD_SECONDS * (s?.time_scale ?? 1);
+    if (holdAt !== null && holdAt < t && holdAt >= latest.t - hold) t = Math.max(holdAt, first.t);
     this.playT = t;
     return t;
   }

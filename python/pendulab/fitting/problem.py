@@ -34,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from functools import cache
 from types import MappingProxyType
 from typing import Any
@@ -87,6 +87,8 @@ these only. Angles are the same for a scaled x; a phone's |ω| = |x × v|/l² an
 measured against any scale bar."""
 RTOL = 1e-12
 ATOL = 1e-14
+BUILT_KEPT = 64
+"""The pendulums a :class:`Problem` keeps built (:meth:`Problem.pendulum`)."""
 
 
 def model_params(model: str) -> Mapping[str, Mapping[str, Any]]:
@@ -122,6 +124,11 @@ class Problem:
     free: list[str]
     obs: Observations
     evaluations: int = 0
+    built: dict[tuple[float, ...], Pendulum | SwingingSpring] = field(
+        default_factory=dict, init=False, repr=False, compare=False
+    )
+    """The pendulums built, by their parameter values (:meth:`pendulum`; at most :data:`BUILT_KEPT`);
+    a copy (``dataclasses.replace``, :meth:`restricted`) starts with none."""
 
     @property
     def t0(self) -> float:
@@ -140,6 +147,18 @@ class Problem:
         return out
 
     def pendulum(self, values: Mapping[str, float]) -> Pendulum | SwingingSpring:
+        """The model with ``values`` (SI units). A fit asks for the same one many times (every column
+        of the exact Jacobian whose parameter does not move the motion, a refit's start), and a
+        pendulum is immutable, so each is built once and kept (the last :data:`BUILT_KEPT`)."""
+        key = tuple(float(values[k]) for k in model_params(self.model))
+        made = self.built.get(key)
+        if made is None:
+            if len(self.built) >= BUILT_KEPT:
+                self.built.clear()
+            made = self.built[key] = self._build(values)
+        return made
+
+    def _build(self, values: Mapping[str, float]) -> Pendulum | SwingingSpring:
         if self.model == "spring":
             return SwingingSpring(
                 values["stiffness"] / values["mass"], values["length"], values["g"], values["mass"]

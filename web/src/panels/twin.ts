@@ -261,6 +261,15 @@ export class TwinPanel {
     if (cmd.type === 'pause' || cmd.type === 'resume' || cmd.type === 'reset' || cmd.type === 'step') this.conn.send(cmd);
   }
 
+  /** The least newest time [s] of the pendulums drawn beside the first (the second, and 3 and 4 in mode
+   *  `own`): the first's playhead waits there (`LabStore.advancePlayhead`); null when none is running. */
+  newest(): number | null {
+    if (this.conn === null) return null;
+    const times = [this.store, ...(this.extras?.running() ?? [])].map((s) => s.latest()?.t ?? null);
+    const known = times.filter((x): x is number => x !== null);
+    return known.length > 0 ? Math.min(...known) : null;
+  }
+
   /** The second pendulum at the first one's drawn time `t` [s] with its trail (null: not shown). */
   drawn(t: number | null, trailSeconds: number): { frame: ReturnType<LabStore['displayed']>; trail: TrailSlice } | null {
     if (this.conn === null) return null;

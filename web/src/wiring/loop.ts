@@ -111,7 +111,7 @@ export function startLoop(lab: LabCore, panels: DrawnPanels, link: SharedLink, c
   const gate = new ChangeGate();
   const frame = (now: number) => {
     mark('loop');
-    lab.store.advancePlayhead((now - lastWall) / 1000);
+    lab.store.advancePlayhead((now - lastWall) / 1000, lab.session.twin?.newest() ?? null);
     lastWall = now;
     if (drawScene(lab, gate, costs)) {
       drawn++;

@@ -1,6 +1,6 @@
 import { beforeEach, describe, expect, it } from 'vitest';
 import type { Frame, Status } from '../../src/protocol';
-import { BUFFER_MAX, HISTORY_MAX, LabStore, TRAIL_MAX, interpolateFrames, startsNewTrajectory } from '../../src/state';
+import { BUFFER_MAX, HISTORY_MAX, LabStore, MAX_HOLD_SECONDS, TRAIL_MAX, interpolateFrames, startsNewTrajectory } from '../../src/state';
 
 function status(over: Partial<Status> = {}): Status {
   return {
@@ -70,6 +70,24 @@ describe('LabStore', () => {
     store.onFrames([frame(10)]);
     // max lag = 3 ticks × time scale 1 / 60 Hz
     expect(store.advancePlayhead(0)).toBeCloseTo(10 - 3 / 60, 12);
+  });
+
+  it('waits for a pendulum drawn beside it, at most MAX_HOLD_SECONDS behind the newest frame', () => {
+    // the second session started 0.17 s after this one's restart: both are drawn at its newest time
+    store.onFrames([frame(0), frame(5), frame(10)]);
+    expect(store.advancePlayhead(0, 9.83)).toBe(9.83);
+    expect(store.advancePlayhead(1 / 60, 9.85)).toBe(9.85); // where the max-lag rule alone gives 10 − 3/60
+    expect(store.advancePlayhead(1 / 60, 12)).toBeCloseTo(10 - 3 / 60, 12); // ahead of this one: no hold
+    expect(store.advancePlayhead(0, 10 - MAX_HOLD_SECONDS - 0.01)).toBeCloseTo(10 - 3 / 60, 12); // stalled: not held
+    store.onStatus(status({ paused: true, t: 10 }));
+    expect(store.advancePlayhead(0, 9.9)).toBe(9.9); // paused: both shown at one time too
+    expect(store.advancePlayhead(0, null)).toBe(10);
+    store.onStatus(status({ paused: false, t: 10, time_scale: 4 })); // the hold scales with the time scale
+    expect(store.advancePlayhead(0, 10 - 2 * MAX_HOLD_SECONDS)).toBe(10 - 2 * MAX_HOLD_SECONDS);
+    const young = new LabStore();
+    young.onStatus(status());
+    young.onFrames([frame(1), frame(1.5)]);
+    expect(young.advancePlayhead(0, 0.75)).toBe(1); // never before this one's first frame
   });
 
   it('shows the newest frame while paused', () => {
