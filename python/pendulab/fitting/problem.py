@@ -35,16 +35,15 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field, replace
-from functools import cache
-from types import MappingProxyType
 from typing import Any
 
 import numpy as np
 
 from .._core import IntegrationError, InvalidInputError
-from ..model import FloatArray, Pendulum, State, models
+from ..model import FloatArray, Pendulum, State
 from ..simulation import simulate
 from ..theory.exact import exact
+from ..validate import model_params_of
 from ..variants.spring import SwingingSpring
 from . import spring_model
 from .data import Observations, predict, residual
@@ -92,22 +91,13 @@ BUILT_KEPT = 64
 
 
 def model_params(model: str) -> Mapping[str, Mapping[str, Any]]:
-    """The registry's parameters of ``model`` (name → spec with unit, default, min, max), read-only.
-
-    The registry is compiled into the core, so the table is built once per model and shared: a fit
-    asks for it for every residual (about 1850 times in the tour's encoder-decay fit)."""
-    table = _params_of(model)
+    """The registry's parameters of ``model`` (name → spec with unit, default, min, max), read-only
+    and shared (:func:`pendulab.validate.model_params_of`): a fit asks for them for every residual
+    (about 1850 times in the tour's encoder-decay fit)."""
+    table = model_params_of(model)
     if table is None:
         raise InvalidInputError(f"unknown model {model!r}: use one of {', '.join(FITTABLE_MODELS)}")
     return table
-
-
-@cache
-def _params_of(model: str) -> Mapping[str, Mapping[str, Any]] | None:
-    for m in models():
-        if m["name"] == model:
-            return MappingProxyType({p["name"]: MappingProxyType(dict(p)) for p in m["params"]})
-    return None
 
 
 Motion = tuple[Pendulum | SwingingSpring, FloatArray, FloatArray, FloatArray]

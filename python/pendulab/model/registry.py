@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._core import InvalidInputError
 from .._core import models as _models
-from ..validate import choice, did_you_mean, finite, invalid, model_table, show
+from ..validate import choice, did_you_mean, finite, invalid, model_params_of, model_table, show
 
 if TYPE_CHECKING:
     from .._core import ModelInfo
@@ -89,10 +89,10 @@ def check_model_keywords(model: str | None, extra: dict[str, float]) -> None:
     """``model`` (when given) is a registered name, and each keyword parameter a short name with a
     finite value (within the model's limits when it is one of ``model``'s parameters; the core then
     checks names and ranges against the model inferred or given)."""
-    table = model_table()
-    own = {p["name"]: p for m in table if m["name"] == model for p in m["params"]}
+    own: Mapping[str, Mapping[str, Any]] = {}
     if model is not None:
-        choice("model", model, [m["name"] for m in table])
+        choice("model", model, [m["name"] for m in model_table()])
+        own = model_params_of(model) or {}
         names = list(own)
         unknown = {k: v for k, v in extra.items() if k not in names}
         if unknown:

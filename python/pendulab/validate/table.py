@@ -12,7 +12,9 @@ characters (:func:`invalid`).
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from functools import cache
+from types import MappingProxyType
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -38,6 +40,16 @@ def model_table() -> tuple[ModelInfo, ...]:
     and a fit builds a model for every residual (each build checks its keywords against the table).
     Shared, so only read it; ``pendulab.models()`` gives a caller a fresh copy to keep."""
     return tuple(_models())
+
+
+@cache
+def model_params_of(model: str) -> Mapping[str, Mapping[str, Any]] | None:
+    """The parameters of ``model`` by name (each spec with unit, default, min, max, allowed) from
+    :func:`model_table`, read-only and built once per model; None for a name the registry lacks."""
+    for m in model_table():
+        if m["name"] == model:
+            return MappingProxyType({p["name"]: MappingProxyType(dict(p)) for p in m["params"]})
+    return None
 
 
 COMMON: dict[str, ParamSpec] = {p["name"]: p for p in model_table()[0]["params"][:3]}
