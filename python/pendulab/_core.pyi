@@ -17,6 +17,7 @@ ENSEMBLE_LANES: int
 """Trajectories per block of the RATTLE ensemble (48): the unit of its parallel work."""
 
 FloatArray = npt.NDArray[np.float64]
+Steps = npt.NDArray[np.uint64]
 
 class InvalidInputError(ValueError):
     """Bad input: the message names the value and what is allowed."""
@@ -76,6 +77,13 @@ def sensitivity_params() -> list[str]:
     """theta0, phi0, theta_dot0, phi_dot0, length, g, damping, drag, friction: the last axis of
     ``sensitivities``."""
 
+def spring_sensitivities(
+    spec: ModelSpec, state: StateArrays, tangents: StateArrays, keep: Steps, options: RunOptions
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray, FloatArray]:
+    """x, v (n, 3) at the step numbers ``keep``; dx, dv, da (n, 3, m + 3) by the start tangents (dx0, dv0),
+    (m, 3) each, then ``spring_sensitivity_params()`` (T-10.8, python/rust/sensitivity.rs)."""
+
+def spring_sensitivity_params() -> list[str]: ...
 def state_on_ts2(spec: ModelSpec, x: FloatArray, v: FloatArray) -> tuple[FloatArray, FloatArray]: ...
 def project_state(
     spec: ModelSpec, x: FloatArray, v: FloatArray

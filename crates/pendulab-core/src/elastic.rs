@@ -11,6 +11,11 @@
 //! order 2, and keeps J₃ exactly (the force is central about the e₃ axis plus a vertical force);
 //! the triple-jump composition gives order 4 with the same properties. Units SI.
 
+mod sensitivity;
+pub use sensitivity::{
+    SpringSensitivities, Tangent, MAX_DIRECTIONS, MAX_SPRING_SENSITIVITY_STEPS, SPRING_PARAMS,
+};
+
 use crate::error::{require_finite, require_positive, Error, Result};
 use crate::state::State;
 use glam::DVec3;

@@ -13,6 +13,7 @@ mod conserve_conditioning;
 mod convergence;
 mod dop853;
 mod elastic;
+mod elastic_sensitivity;
 mod elliptic;
 mod elliptic_complement;
 mod elliptic_properties;

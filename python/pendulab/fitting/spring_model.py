@@ -21,18 +21,31 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+import numpy.typing as npt
 
-from .._core import InvalidInputError, ModelSpec, RunOptions, spring_simulate
+from .._core import InvalidInputError, ModelSpec, RunOptions, spring_sensitivities, spring_simulate
+from ..memory import check_memory
 from ..model import FloatArray
 
+IntArray = npt.NDArray[np.int64]
 SPRING_STATE = ("r0", "r_dot0")
+#: The start quantities the spring's tangents are carried for (their derivatives of x₀, v₀:
+#: :func:`start_tangents`).
+START_DIRECTIONS = ("theta0", "phi0", "theta_dot0", "phi_dot0", *SPRING_STATE)
+#: The last axis of :func:`motion_tangents`: the start quantities, then the spring's parameters.
+TANGENT_NAMES = (*START_DIRECTIONS, "stiffness", "mass", "length", "g")
 #: The triple jump's step is this fraction of the fastest time scale 1/ω.
 STEP = 2e-3
 #: At most this many steps per forward run (memory: 48 bytes per step).
 MAX_STEPS = 4_000_000
+#: Bytes per sample of :func:`motion_tangents` at its peak: the core's states, tangents and
+#: acceleration derivatives at up to two steps per sample ((6 + 3 · 3 · 9) float64 each) and the
+#: interpolation's (N, 3, 10) arrays and their temporaries.
+TANGENT_BYTES_PER_SAMPLE = 3000
 
 
 def start_vectors(values: Mapping[str, float]) -> tuple[FloatArray, FloatArray]:
@@ -55,8 +68,23 @@ def acceleration(x: FloatArray, k_over_m: float, rest: float, g: float) -> Float
     return a
 
 
-def motion(values: Mapping[str, float], tau: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """x [m], v [m/s] (N, 3) at the model times ``tau`` [s] (≥ 0, ascending)."""
+@dataclass(frozen=True)
+class _Run:
+    """The fixed-step run a motion needs: the spring, its start, step dt [s] and step count."""
+
+    spec: ModelSpec
+    k_over_m: float
+    rest: float
+    g: float
+    x0: FloatArray
+    v0: FloatArray
+    dt: float
+    n: int
+
+
+def _plan(values: Mapping[str, float], tau: FloatArray) -> _Run:
+    """The run to the last model time ``tau[-1]`` [s] at the step of the module doc (at most
+    :data:`MAX_STEPS`)."""
     k_over_m = values["stiffness"] / values["mass"]
     rest, g = values["length"], values["g"]
     x0, v0 = start_vectors(values)
@@ -72,20 +100,111 @@ def motion(values: Mapping[str, float], tau: FloatArray) -> tuple[FloatArray, Fl
         )
     dt = span / n if span > 0.0 else 1.0
     spec = ModelSpec.spring_model(float(k_over_m), float(rest), float(g), float(values["mass"]))
-    out = spring_simulate(spec, (x0, v0), RunOptions(dt=dt, save_every=1, order=4), int(n))
+    return _Run(spec, k_over_m, rest, g, x0, v0, dt, n)
+
+
+def _hermite(
+    tau: FloatArray, run: _Run, steps: int
+) -> tuple[IntArray, FloatArray, FloatArray, FloatArray, FloatArray]:
+    """For each model time: the step i before it (the interval [i, i + 1] of ``steps + 1`` states) and
+    the cubic Hermite weights h00, h10, h01, h11 (N, 1) at its fraction of the step."""
+    i = np.minimum((tau / run.dt).astype(np.int64), steps - 1)
+    s = (tau / run.dt - i)[:, None]
+    return i, (1 + 2 * s) * (1 - s) ** 2, s * (1 - s) ** 2, s**2 * (3 - 2 * s), s**2 * (s - 1)
+
+
+def motion(values: Mapping[str, float], tau: FloatArray) -> tuple[FloatArray, FloatArray]:
+    """x [m], v [m/s] (N, 3) at the model times ``tau`` [s] (≥ 0, ascending)."""
+    run = _plan(values, tau)
+    out = spring_simulate(run.spec, (run.x0, run.v0), RunOptions(dt=run.dt, save_every=1, order=4), run.n)
     xs, vs = out["x"], out["v"]
     if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(vs))):
         raise InvalidInputError("the spring's motion diverged at these parameters")
-    i = np.minimum((tau / dt).astype(np.int64), len(xs) - 2)
-    s = (tau / dt - i)[:, None]
-    h00, h10 = (1 + 2 * s) * (1 - s) ** 2, s * (1 - s) ** 2
-    h01, h11 = s**2 * (3 - 2 * s), s**2 * (s - 1)
+    i, h00, h10, h01, h11 = _hermite(tau, run, len(xs) - 1)
+    dt = run.dt
     x = h00 * xs[i] + h10 * dt * vs[i] + h01 * xs[i + 1] + h11 * dt * vs[i + 1]
     # the accelerations at the two steps around each sample only (row by row, the same numbers as of
     # every step: a fine run has ~40 steps per sample, and this was a fifth of the fit's time)
-    acc0, acc1 = acceleration(xs[i], k_over_m, rest, g), acceleration(xs[i + 1], k_over_m, rest, g)
+    acc0, acc1 = (
+        acceleration(xs[i], run.k_over_m, run.rest, run.g),
+        acceleration(xs[i + 1], run.k_over_m, run.rest, run.g),
+    )
     v = h00 * vs[i] + h10 * dt * acc0 + h01 * vs[i + 1] + h11 * dt * acc1
     return x, v
+
+
+def start_tangents(values: Mapping[str, float]) -> tuple[FloatArray, FloatArray]:
+    """∂x₀/∂q [m per unit of q] and ∂v₀/∂q [m/s per unit] (6, 3) of :func:`start_vectors` for q in
+    :data:`START_DIRECTIONS` (θ₀, φ₀ [rad], θ̇₀, φ̇₀ [rad/s], r₀ [m], ṙ₀ [m/s])."""
+    th, ph = values["theta0"], values["phi0"]
+    thd, phd = values["theta_dot0"], values["phi_dot0"]
+    r, rd = values["r0"], values["r_dot0"]
+    st, ct, sp, cp = math.sin(th), math.cos(th), math.sin(ph), math.cos(ph)
+    e_r, e_theta = np.array([st * cp, st * sp, -ct]), np.array([ct * cp, ct * sp, st])
+    e_phi, de_phi = np.array([-sp, cp, 0.0]), np.array([-cp, -sp, 0.0])  # de_phi = ∂e_φ/∂φ
+    zero = np.zeros(3)
+    dx = np.array([r * e_theta, r * st * e_phi, zero, zero, e_r, zero])
+    # ∂e_r/∂θ = e_θ, ∂e_θ/∂θ = −e_r; ∂e_r/∂φ = sin θ e_φ, ∂e_θ/∂φ = cos θ e_φ
+    dv = np.array(
+        [
+            rd * e_theta + r * (-thd * e_r + ct * phd * e_phi),
+            rd * st * e_phi + r * (thd * ct * e_phi + st * phd * de_phi),
+            r * e_theta,
+            r * st * e_phi,
+            thd * e_theta + st * phd * e_phi,
+            e_r,
+        ]
+    )
+    return dx, dv
+
+
+def motion_tangents(
+    values: Mapping[str, float], tau: FloatArray
+) -> tuple[FloatArray, FloatArray, FloatArray, FloatArray]:
+    """x [m], v [m/s] (N, 3) at the model times ``tau`` [s] as :func:`motion` gives them (the same
+    numbers), and their exact derivatives dx, dv (N, 3, 10) by :data:`TANGENT_NAMES`: the core runs the
+    triple jump with its tangents (T-10.8) and gives them and the acceleration's derivatives at the
+    steps around each sample, and the Hermite interpolation, linear in them, carries them there. The
+    step count, a whole number, is held: the derivative is the run's at its dt."""
+    run = _plan(values, tau)
+    check_memory(
+        f"the spring's sensitivities at {tau.size} samples",
+        TANGENT_BYTES_PER_SAMPLE * tau.size,
+        "fit fewer samples (thin the data)",
+    )
+    steps_at = np.minimum((tau / run.dt).astype(np.int64), run.n - 1)
+    keep = np.unique(np.concatenate([steps_at, steps_at + 1])).astype(np.uint64)
+    dx0, dv0 = start_tangents(values)
+    options = RunOptions(dt=run.dt, save_every=1, order=4)
+    xs, vs, dxs, dvs, das = spring_sensitivities(run.spec, (run.x0, run.v0), (dx0, dv0), keep, options)
+    i, h00, h10, h01, h11 = _hermite(tau, run, run.n)
+    a, b = np.searchsorted(keep, i), np.searchsorted(keep, i + 1)
+    dt = run.dt
+    x = h00 * xs[a] + h10 * dt * vs[a] + h01 * xs[b] + h11 * dt * vs[b]
+    acc0, acc1 = (
+        acceleration(xs[a], run.k_over_m, run.rest, run.g),
+        acceleration(xs[b], run.k_over_m, run.rest, run.g),
+    )
+    v = h00 * vs[a] + h10 * dt * acc0 + h01 * vs[b] + h11 * dt * acc1
+    w00, w10, w01, w11 = (h[:, :, None] for h in (h00, h10, h01, h11))
+    dx = w00 * dxs[a] + w10 * dt * dvs[a] + w01 * dxs[b] + w11 * dt * dvs[b]
+    dv = w00 * dvs[a] + w10 * dt * das[a] + w01 * dvs[b] + w11 * dt * das[b]
+    # k/m = stiffness/mass: ∂/∂stiffness = (1/m) ∂/∂κ, ∂/∂mass = −(κ/m) ∂/∂κ
+    first, mass = len(START_DIRECTIONS), values["mass"]
+
+    def by_names(d: FloatArray) -> FloatArray:
+        kappa = d[:, :, first]
+        return np.concatenate(
+            [
+                d[:, :, :first],
+                (kappa / mass)[:, :, None],
+                (-run.k_over_m / mass * kappa)[:, :, None],
+                d[:, :, first + 1 :],
+            ],
+            axis=2,
+        )
+
+    return x, v, by_names(dx), by_names(dv)
 
 
 def specific_force(x: FloatArray, values: Mapping[str, float]) -> FloatArray:
