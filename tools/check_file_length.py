@@ -29,8 +29,9 @@ SKIPPED = {"target", "node_modules", "__pycache__", "dist", "build"}
 
 ALLOWED: dict[str, int] = {
     # the hand-written stub of the whole compiled module pendulab._core, one file because mypy's
-    # stubtest checks it against that one module (make lint-stubs)
-    "python/pendulab/_core.pyi": 481,  # 473 until the spring's sensitivities (T-10.8) got their binding
+    # stubtest checks it against that one module (make lint-stubs); 473 before the spring's bindings
+    # spring_sensitivities and spring_states_at (2026-11-29)
+    "python/pendulab/_core.pyi": 484,
     "python/pendulab/fitting/blocks.py": 401,
 }
 """Files longer than :data:`LIMIT` today → their length in lines, which they may not exceed."""

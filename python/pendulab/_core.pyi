@@ -288,6 +288,9 @@ class AdaptiveEnsembleRun:
 def spring_simulate(
     spec: ModelSpec, state: StateArrays, options: RunOptions, n_steps: int
 ) -> dict[str, Any]: ...
+def spring_states_at(
+    spec: ModelSpec, state: StateArrays, keep: Steps, options: RunOptions
+) -> tuple[FloatArray, FloatArray]: ...
 
 @final
 class SpringStepper:

@@ -4,7 +4,7 @@ use crate::convert::{arr3, to_py, InvalidInputError};
 use crate::getters::pymethods_with_getters;
 use crate::spec::{start, ModelSpec, RunOptions, StateArrays};
 use numpy::ndarray::{Array1, Array2};
-use numpy::{IntoPyArray, PyArray1, PyArray2};
+use numpy::{IntoPyArray, PyArray1, PyArray2, PyReadonlyArray1};
 use pendulab_core::elastic::SpringStepper;
 use pendulab_core::{SaveAt, State};
 use pyo3::prelude::*;
@@ -56,6 +56,35 @@ pub fn spring_simulate<'py>(
     Ok(d)
 }
 
+/// An (n, 3) array of vectors.
+type Rows<'py> = Bound<'py, PyArray2<f64>>;
+
+/// The states x, v (n, 3) [m, m/s] after the step numbers `keep` (ascending) of the run of the spring
+/// (`ModelSpec.spring_model`) from (x0, v0) with steps of the options' `dt` [s] of `order` 2 or 4:
+/// `spring_simulate`'s states without keeping every step (a fit's forward model).
+#[pyfunction]
+pub fn spring_states_at<'py>(
+    py: Python<'py>,
+    spec: &ModelSpec,
+    state: StateArrays<'py>,
+    keep: PyReadonlyArray1<'py, u64>,
+    options: &RunOptions,
+) -> PyResult<(Rows<'py>, Rows<'py>)> {
+    let sp = spec.spring()?;
+    let (x, v) = start(&state)?;
+    let keep: Vec<u64> = keep.as_array().iter().copied().collect();
+    let (dt, order) = (options.solve.dt, options.order);
+    let states = py.allow_threads(|| sp.states_at(State { x, v }, dt, order, &keep)).map_err(to_py)?;
+    let (mut xs, mut vs) = (Array2::<f64>::zeros((states.len(), 3)), Array2::<f64>::zeros((states.len(), 3)));
+    for (i, s) in states.iter().enumerate() {
+        for k in 0..3 {
+            xs[[i, k]] = s.x[k];
+            vs[[i, k]] = s.v[k];
+        }
+    }
+    Ok((xs.into_pyarray(py), vs.into_pyarray(py)))
+}
+
 /// The swinging spring stepped incrementally (the lab): the spring's spec, the start x0, v0 [m, m/s],
 /// the options' t0 [s], step dt [s] and order 2 (Störmer–Verlet) or 4 (triple jump).
 #[pyclass(module = "pendulab._core", name = "SpringStepper")]
@@ -103,5 +132,6 @@ pymethods_with_getters! {
 /// Registers the function and the class.
 pub fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(spring_simulate, m)?)?;
+    m.add_function(wrap_pyfunction!(spring_states_at, m)?)?;
     m.add_class::<SpringStepper_>()
 }

@@ -1,7 +1,8 @@
 """The swinging spring's exact Jacobian (docs/theory.md T-10.8; fitting/spring_model.py
 ``motion_tangents``, fitting/sensitivity.py): the motion it carries is :func:`spring_model.motion`'s to
 the bit; its tangents by the start (θ₀, φ₀, θ̇₀, φ̇₀, r₀, ṙ₀) and by stiffness, mass, rest length and g
-agree with central differences of plain runs (no tangent code on that side); the fit's Jacobian agrees
+agree with central differences of plain runs (no tangent code on that side); the forward model's
+states, kept around the samples only, are the full run's; the fit's Jacobian agrees
 with central differences of the residuals for positions and an accelerometer, t_offset and a pivot
 offset included, for one model run; bad input to the core is named. SI units: the 1:1:2 resonance at
 an equilibrium length of 1 m (k/m = 39.24 1/s², l₀ = 0.75 m), g = 9.81 m/s², m = 1 kg."""
@@ -37,6 +38,23 @@ def test_the_motion_is_the_plain_motion_to_the_bit() -> None:
     x2, v2, dx, dv = spring_model.motion_tangents(VALUES, TAU)
     assert np.array_equal(x, x2) and np.array_equal(v, v2)
     assert dx.shape == dv.shape == (TAU.size, 3, len(spring_model.TANGENT_NAMES))
+
+
+def test_the_forward_models_states_are_the_full_runs_at_the_steps_it_keeps() -> None:
+    """``spring_states_at`` keeps only the steps around the samples; those states are the full run's
+    (``spring_simulate``, every step kept) to the bit, and a step list out of order is refused."""
+    spec = _core.ModelSpec.spring_model(39.24, 0.75, 9.81, 1.0)
+    state = spring_model.start_vectors(VALUES)
+    full = _core.spring_simulate(spec, state, _core.RunOptions(dt=1e-3, save_every=1, order=4), 3000)
+    keep = np.array([0, 0, 1, 17, 18, 2999, 3000], dtype=np.uint64)
+    x, v = _core.spring_states_at(spec, state, keep, _core.RunOptions(dt=1e-3, order=4))
+    assert np.array_equal(x, full["x"][keep.astype(np.int64)]) and np.array_equal(
+        v, full["v"][keep.astype(np.int64)]
+    )
+    with pytest.raises(pl.InvalidInputError, match="ascending"):
+        _core.spring_states_at(
+            spec, state, np.array([3, 2], dtype=np.uint64), _core.RunOptions(dt=1e-3, order=4)
+        )
 
 
 def test_the_start_tangents_are_the_derivatives_of_the_start() -> None:

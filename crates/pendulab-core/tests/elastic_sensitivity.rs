@@ -66,6 +66,22 @@ fn the_states_are_the_plain_runs_bit_for_bit() {
 }
 
 #[test]
+fn the_states_at_step_numbers_are_the_plain_runs_bit_for_bit() {
+    let sp = spring();
+    let keep = [0, 0, 1, 2, 500, 501, 1999, 2000];
+    for order in [2, 4] {
+        let at = sp.states_at(start(), 1e-3, order, &keep).unwrap();
+        let states = plain(&sp, start(), 1e-3, 2000, order);
+        let expected: Vec<State> = keep.iter().map(|&k| states[k as usize]).collect();
+        assert_eq!(at, expected, "order {order}");
+    }
+    let err = sp.states_at(start(), 1e-3, 4, &[3, 2]).unwrap_err();
+    assert!(matches!(err, Error::InvalidParameter { name: "keep", .. }), "{err}");
+    let stiff = SwingingSpring::new(1e12, 1.0, 9.81, 1.0).unwrap();
+    assert!(matches!(stiff.states_at(start(), 1.0, 2, &[10_000]).unwrap_err(), Error::Diverged { .. }));
+}
+
+#[test]
 fn every_tangent_and_acceleration_derivative_is_that_of_the_plain_run() {
     let sp = spring();
     let (dt, n) = (2e-3, 5000); // 10 s: about five swings and ten bounces at the resonance

@@ -7,7 +7,11 @@ spring of stiffness k [N/m] and rest length l₀ [m], gravity g [m/s²] along �
 - The motion: the core's triple jump (order 4, symplectic; T-7.4) at a step of 2e-3 / ω, ω the
   fastest of √(k/m), √(g/l) and the start's angular rate, then cubic Hermite interpolation to the
   sample times — positions from (x, v), velocities from (v, a) with a = −(k/m)(|x| − l₀) x̂ + g⃗ — so
-  that the model's own error (~1e-11 relative over a hundred swings) stays far below any noise.
+  that the model's own error (~1e-11 relative over a hundred swings) stays far below any noise. The
+  core keeps only the states of the two steps around each sample (``spring_states_at``): memory in
+  proportion to the samples, not to the ~40 steps per sample.
+- The exact Jacobian (:func:`motion_tangents`, T-10.8): the same run with the tangents by the start
+  and the parameters, interpolated the same way.
 - The specific force an accelerometer on the bob reads is the spring's pull per mass,
   |a − g⃗| = (k/m) | |x| − l₀ |.
 - Starting values from 3-D positions (:func:`spring_start`): along e_r the equation of motion is
@@ -27,7 +31,7 @@ from typing import Any
 import numpy as np
 import numpy.typing as npt
 
-from .._core import InvalidInputError, ModelSpec, RunOptions, spring_sensitivities, spring_simulate
+from .._core import InvalidInputError, ModelSpec, RunOptions, spring_sensitivities, spring_states_at
 from ..memory import check_memory
 from ..model import FloatArray
 
@@ -40,7 +44,7 @@ START_DIRECTIONS = ("theta0", "phi0", "theta_dot0", "phi_dot0", *SPRING_STATE)
 TANGENT_NAMES = (*START_DIRECTIONS, "stiffness", "mass", "length", "g")
 #: The triple jump's step is this fraction of the fastest time scale 1/ω.
 STEP = 2e-3
-#: At most this many steps per forward run (memory: 48 bytes per step).
+#: At most this many steps per forward run (its work; the memory is that of the ≤ 2 states per sample kept).
 MAX_STEPS = 4_000_000
 #: Bytes per sample of :func:`motion_tangents` at its peak: the core's states, tangents and
 #: acceleration derivatives at up to two steps per sample ((6 + 3 · 3 · 9) float64 each) and the
@@ -104,32 +108,35 @@ def _plan(values: Mapping[str, float], tau: FloatArray) -> _Run:
 
 
 def _hermite(
-    tau: FloatArray, run: _Run, steps: int
-) -> tuple[IntArray, FloatArray, FloatArray, FloatArray, FloatArray]:
-    """For each model time: the step i before it (the interval [i, i + 1] of ``steps + 1`` states) and
-    the cubic Hermite weights h00, h10, h01, h11 (N, 1) at its fraction of the step."""
-    i = np.minimum((tau / run.dt).astype(np.int64), steps - 1)
+    tau: FloatArray, run: _Run
+) -> tuple[IntArray, IntArray, FloatArray, FloatArray, FloatArray, FloatArray]:
+    """The steps the model times ``tau`` [s] need and how to interpolate there: ``keep``, the step
+    numbers i and i + 1 around each time (ascending, unique), the rows a, b of ``keep`` that hold them
+    per time, and the cubic Hermite weights h00, h10, h01, h11 (N, 1) at its fraction of the step."""
+    i = np.minimum((tau / run.dt).astype(np.int64), run.n - 1)
     s = (tau / run.dt - i)[:, None]
-    return i, (1 + 2 * s) * (1 - s) ** 2, s * (1 - s) ** 2, s**2 * (3 - 2 * s), s**2 * (s - 1)
+    keep = np.unique(np.concatenate([i, i + 1]))
+    a, b = np.searchsorted(keep, i), np.searchsorted(keep, i + 1)
+    weights = ((1 + 2 * s) * (1 - s) ** 2, s * (1 - s) ** 2, s**2 * (3 - 2 * s), s**2 * (s - 1))
+    return keep, np.stack([a, b]), *weights
 
 
 def motion(values: Mapping[str, float], tau: FloatArray) -> tuple[FloatArray, FloatArray]:
-    """x [m], v [m/s] (N, 3) at the model times ``tau`` [s] (≥ 0, ascending)."""
+    """x [m], v [m/s] (N, 3) at the model times ``tau`` [s] (≥ 0, ascending): the core keeps the states
+    of the steps around each time only (``spring_states_at``), and they are interpolated (module doc)."""
     run = _plan(values, tau)
-    out = spring_simulate(run.spec, (run.x0, run.v0), RunOptions(dt=run.dt, save_every=1, order=4), run.n)
-    xs, vs = out["x"], out["v"]
+    keep, (a, b), h00, h10, h01, h11 = _hermite(tau, run)
+    options = RunOptions(dt=run.dt, order=4)
+    xs, vs = spring_states_at(run.spec, (run.x0, run.v0), keep.astype(np.uint64), options)
     if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(vs))):
         raise InvalidInputError("the spring's motion diverged at these parameters")
-    i, h00, h10, h01, h11 = _hermite(tau, run, len(xs) - 1)
     dt = run.dt
-    x = h00 * xs[i] + h10 * dt * vs[i] + h01 * xs[i + 1] + h11 * dt * vs[i + 1]
-    # the accelerations at the two steps around each sample only (row by row, the same numbers as of
-    # every step: a fine run has ~40 steps per sample, and this was a fifth of the fit's time)
+    x = h00 * xs[a] + h10 * dt * vs[a] + h01 * xs[b] + h11 * dt * vs[b]
     acc0, acc1 = (
-        acceleration(xs[i], run.k_over_m, run.rest, run.g),
-        acceleration(xs[i + 1], run.k_over_m, run.rest, run.g),
+        acceleration(xs[a], run.k_over_m, run.rest, run.g),
+        acceleration(xs[b], run.k_over_m, run.rest, run.g),
     )
-    v = h00 * vs[i] + h10 * dt * acc0 + h01 * vs[i + 1] + h11 * dt * acc1
+    v = h00 * vs[a] + h10 * dt * acc0 + h01 * vs[b] + h11 * dt * acc1
     return x, v
 
 
@@ -172,13 +179,12 @@ def motion_tangents(
         TANGENT_BYTES_PER_SAMPLE * tau.size,
         "fit fewer samples (thin the data)",
     )
-    steps_at = np.minimum((tau / run.dt).astype(np.int64), run.n - 1)
-    keep = np.unique(np.concatenate([steps_at, steps_at + 1])).astype(np.uint64)
-    dx0, dv0 = start_tangents(values)
-    options = RunOptions(dt=run.dt, save_every=1, order=4)
-    xs, vs, dxs, dvs, das = spring_sensitivities(run.spec, (run.x0, run.v0), (dx0, dv0), keep, options)
-    i, h00, h10, h01, h11 = _hermite(tau, run, run.n)
-    a, b = np.searchsorted(keep, i), np.searchsorted(keep, i + 1)
+    keep, (a, b), h00, h10, h01, h11 = _hermite(tau, run)
+    options = RunOptions(dt=run.dt, order=4)
+    tangents = start_tangents(values)
+    xs, vs, dxs, dvs, das = spring_sensitivities(
+        run.spec, (run.x0, run.v0), tangents, keep.astype(np.uint64), options
+    )
     dt = run.dt
     x = h00 * xs[a] + h10 * dt * vs[a] + h01 * xs[b] + h11 * dt * vs[b]
     acc0, acc1 = (

@@ -13,7 +13,8 @@
 //! v ← v + (h/2) a(r) and drift r ← r + h v of a Verlet step has the derivative V ← V + (h/2)(A X + ∂a/∂p),
 //! X ← X + h V: the tangent is stepped by the same composition, so it is the exact derivative of the
 //! discrete run (not an approximation of the continuous one), and the states are those of
-//! [`SwingingSpring::step`] to the bit. Units SI.
+//! [`SwingingSpring::step`] to the bit. [`SwingingSpring::states_at`] is the same run without tangents,
+//! keeping the states at given step numbers only (a fit's forward model). Units SI.
 
 use super::SwingingSpring;
 use crate::error::{Error, Result};
@@ -154,6 +155,24 @@ impl SwingingSpring {
             out.accelerations.extend(
                 tangents.iter().enumerate().map(|(d, (x, _))| at.derivative(*x, d.checked_sub(first_param))),
             );
+        }
+        Ok(out)
+    }
+
+    /// The states after each step number in `keep` (ascending, at most
+    /// [`MAX_SPRING_SENSITIVITY_STEPS`]) of the run from `start` with steps of `dt` \[s\] of `order` 2 or
+    /// 4: the states of [`SwingingSpring::simulate`] (the same steps) without keeping every one, so
+    /// that a fit's forward model holds the states around its samples only. A state that stops being
+    /// finite is [`Error::Diverged`].
+    pub fn states_at(&self, start: State, dt: f64, order: u32, keep: &[u64]) -> Result<Vec<State>> {
+        check_request(&[], keep)?;
+        let mut stepper = super::SpringStepper::new(*self, start, 0.0, dt, order)?;
+        let mut done = 0u64;
+        let mut out = Vec::with_capacity(keep.len());
+        for &want in keep {
+            stepper.step(want - done)?;
+            done = want;
+            out.push(stepper.state());
         }
         Ok(out)
     }
