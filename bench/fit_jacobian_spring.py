@@ -20,10 +20,10 @@ import argparse
 import os
 import time
 import warnings
-from collections.abc import Callable
 
 import numpy as np
 import pendulab as pl
+from fit_jacobian import best_of  # bench/ is the script's directory, on sys.path
 from pendulab.fitting import sensitivity
 from pendulab.fitting.data import observations
 from pendulab.fitting.identify import jacobian
@@ -34,15 +34,6 @@ from scipy.integrate import solve_ivp
 K_OVER_M, REST, G = 4.0 * 9.81, 0.75, 9.81  # 1/s², m, m/s²
 START = {"theta0": 0.35, "phi0": 0.3, "theta_dot0": 0.0, "phi_dot0": 0.6, "r0": 1.03, "r_dot0": 0.0}
 FREE = ["stiffness", "length", "g", *START]
-
-
-def best_of(fn: Callable[[], object], repeat: int) -> tuple[float, object]:
-    best, out = float("inf"), None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def positions(seconds: float) -> tuple[np.ndarray, np.ndarray]:

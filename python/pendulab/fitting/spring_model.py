@@ -130,14 +130,32 @@ def motion(values: Mapping[str, float], tau: FloatArray) -> tuple[FloatArray, Fl
     xs, vs = spring_states_at(run.spec, (run.x0, run.v0), keep.astype(np.uint64), options)
     if not (np.all(np.isfinite(xs)) and np.all(np.isfinite(vs))):
         raise InvalidInputError("the spring's motion diverged at these parameters")
-    dt = run.dt
-    x = h00 * xs[a] + h10 * dt * vs[a] + h01 * xs[b] + h11 * dt * vs[b]
+    return _interpolated(run, (h00, h10, h01, h11), a, b, xs, vs)
+
+
+def _cubic(
+    w: tuple[FloatArray, ...],
+    dt: float,
+    q_a: FloatArray,
+    rate_a: FloatArray,
+    q_b: FloatArray,
+    rate_b: FloatArray,
+) -> FloatArray:
+    """The cubic Hermite interpolant of q from its values and rates at the steps a and b around each
+    time, with the weights ``w`` = (h00, h10, h01, h11) of :func:`_hermite` and the step dt [s]."""
+    return w[0] * q_a + w[1] * dt * rate_a + w[2] * q_b + w[3] * dt * rate_b
+
+
+def _interpolated(
+    run: _Run, w: tuple[FloatArray, ...], a: IntArray, b: IntArray, xs: FloatArray, vs: FloatArray
+) -> tuple[FloatArray, FloatArray]:
+    """x [m] from (x, v) and v [m/s] from (v, a) at the steps around each time (module doc): the
+    accelerations at those two steps only (a fine run has ~40 steps per sample)."""
     acc0, acc1 = (
         acceleration(xs[a], run.k_over_m, run.rest, run.g),
         acceleration(xs[b], run.k_over_m, run.rest, run.g),
     )
-    v = h00 * vs[a] + h10 * dt * acc0 + h01 * vs[b] + h11 * dt * acc1
-    return x, v
+    return _cubic(w, run.dt, xs[a], vs[a], xs[b], vs[b]), _cubic(w, run.dt, vs[a], acc0, vs[b], acc1)
 
 
 def start_tangents(values: Mapping[str, float]) -> tuple[FloatArray, FloatArray]:
@@ -185,16 +203,10 @@ def motion_tangents(
     xs, vs, dxs, dvs, das = spring_sensitivities(
         run.spec, (run.x0, run.v0), tangents, keep.astype(np.uint64), options
     )
-    dt = run.dt
-    x = h00 * xs[a] + h10 * dt * vs[a] + h01 * xs[b] + h11 * dt * vs[b]
-    acc0, acc1 = (
-        acceleration(xs[a], run.k_over_m, run.rest, run.g),
-        acceleration(xs[b], run.k_over_m, run.rest, run.g),
-    )
-    v = h00 * vs[a] + h10 * dt * acc0 + h01 * vs[b] + h11 * dt * acc1
-    w00, w10, w01, w11 = (h[:, :, None] for h in (h00, h10, h01, h11))
-    dx = w00 * dxs[a] + w10 * dt * dvs[a] + w01 * dxs[b] + w11 * dt * dvs[b]
-    dv = w00 * dvs[a] + w10 * dt * das[a] + w01 * dvs[b] + w11 * dt * das[b]
+    x, v = _interpolated(run, (h00, h10, h01, h11), a, b, xs, vs)
+    w = tuple(h[:, :, None] for h in (h00, h10, h01, h11))  # over the directions too
+    dx = _cubic(w, run.dt, dxs[a], dvs[a], dxs[b], dvs[b])
+    dv = _cubic(w, run.dt, dvs[a], das[a], dvs[b], das[b])
     # k/m = stiffness/mass: ∂/∂stiffness = (1/m) ∂/∂κ, ∂/∂mass = −(κ/m) ∂/∂κ
     first, mass = len(START_DIRECTIONS), values["mass"]
 
