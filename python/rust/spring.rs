@@ -32,14 +32,7 @@ pub fn spring_simulate<'py>(
     let (dt, order) = (options.solve.dt, options.order);
     let (t, states) =
         py.allow_threads(|| sp.simulate(State { x, v }, dt, n_steps, save_every, order)).map_err(to_py)?;
-    let n = states.len();
-    let (mut x, mut v) = (Array2::<f64>::zeros((n, 3)), Array2::<f64>::zeros((n, 3)));
-    for (i, s) in states.iter().enumerate() {
-        for k in 0..3 {
-            x[[i, k]] = s.x[k];
-            v[[i, k]] = s.v[k];
-        }
-    }
+    let (x, v) = positions_and_velocities(&states);
     let e: Vec<f64> = states.iter().map(|s| sp.energy(s)).collect();
     let j: Vec<f64> = states.iter().map(|s| sp.j3(s)).collect();
     let d = PyDict::new(py);
@@ -75,14 +68,21 @@ pub fn spring_states_at<'py>(
     let keep: Vec<u64> = keep.as_array().iter().copied().collect();
     let (dt, order) = (options.solve.dt, options.order);
     let states = py.allow_threads(|| sp.states_at(State { x, v }, dt, order, &keep)).map_err(to_py)?;
-    let (mut xs, mut vs) = (Array2::<f64>::zeros((states.len(), 3)), Array2::<f64>::zeros((states.len(), 3)));
+    let (xs, vs) = positions_and_velocities(&states);
+    Ok((xs.into_pyarray(py), vs.into_pyarray(py)))
+}
+
+/// The positions x [m] and velocities v [m/s] of `states` as two (n, 3) arrays.
+fn positions_and_velocities(states: &[State]) -> (Array2<f64>, Array2<f64>) {
+    let n = states.len();
+    let (mut x, mut v) = (Array2::<f64>::zeros((n, 3)), Array2::<f64>::zeros((n, 3)));
     for (i, s) in states.iter().enumerate() {
         for k in 0..3 {
-            xs[[i, k]] = s.x[k];
-            vs[[i, k]] = s.v[k];
+            x[[i, k]] = s.x[k];
+            v[[i, k]] = s.v[k];
         }
     }
-    Ok((xs.into_pyarray(py), vs.into_pyarray(py)))
+    (x, v)
 }
 
 /// The swinging spring stepped incrementally (the lab): the spring's spec, the start x0, v0 [m, m/s],

@@ -33,13 +33,11 @@ pub const MAX_DIRECTIONS: usize = 64;
 /// A tangent (X, V) = (∂r/∂p \[m/unit of p\], ∂v/∂p [m/s per unit of p]).
 pub type Tangent = (DVec3, DVec3);
 
-/// The run at the kept steps: `states[j]` after `steps[j]` steps, its tangents
+/// The run at the kept steps: `states[j]` after `keep[j]` steps (the request's step numbers), its tangents
 /// `tangents[j * directions + d]` (the start directions first, then [`SPRING_PARAMS`]) and the
 /// acceleration's derivatives there, `accelerations[j * directions + d]` = A X + ∂a/∂p.
 #[derive(Debug, Clone, Default)]
 pub struct SpringSensitivities {
-    /// The kept step numbers (ascending, as asked).
-    pub steps: Vec<u64>,
     /// The states there.
     pub states: Vec<State>,
     /// Number of directions per state: the start tangents given, plus 3.
@@ -128,7 +126,6 @@ impl SwingingSpring {
         let mut tangents: Vec<Tangent> = start_tangents.to_vec();
         tangents.resize(directions, (DVec3::ZERO, DVec3::ZERO));
         let mut out = SpringSensitivities {
-            steps: keep.to_vec(),
             states: Vec::with_capacity(keep.len()),
             directions,
             tangents: Vec::with_capacity(keep.len() * directions),
